@@ -1,0 +1,67 @@
+#pragma once
+
+#include <QtCore/QString>
+#include <QtCore/QtGlobal>
+
+#include <array>
+#include <optional>
+
+namespace lk::protocol {
+
+/// The 28 commands of the LK RS485 protocol V2.3, by their wire code.
+enum class Command : quint8 {
+    ReadModel = 0x12,
+    WriteZeroRom = 0x19,
+    ReadPid = 0x30,
+    WritePidRam = 0x31,
+    WritePidRom = 0x32,
+    ReadAccel = 0x33,
+    WriteAccelRam = 0x34,
+    MotorOff = 0x80,
+    MotorStop = 0x81,
+    MotorRun = 0x88,
+    ReadEncoder = 0x90,
+    WriteEncoderOffset = 0x91,
+    ReadMultiTurn = 0x92,
+    ReadSingleTurn = 0x94,
+    ClearAngle = 0x95,
+    ReadState1 = 0x9A,
+    ClearErrors = 0x9B,
+    ReadState2 = 0x9C,
+    ReadState3 = 0x9D,
+    OpenLoop = 0xA0,
+    Torque = 0xA1,
+    Speed = 0xA2,
+    MultiPosition = 0xA3,
+    MultiPositionLimited = 0xA4,
+    SinglePosition = 0xA5,
+    SinglePositionLimited = 0xA6,
+    IncrementPosition = 0xA7,
+    IncrementPositionLimited = 0xA8,
+};
+
+/// Static facts about one command: canonical name (CLI.md) and the data lengths it allows.
+struct CommandInfo {
+    Command command;
+    const char *name;        ///< snake_case name from CLI.md, used in JSON, lkctl and the UI
+    quint8 requestLength;    ///< LEN of the request the host sends
+    quint8 replyLength;      ///< LEN of the drive's reply
+    qint16 altReplyLength;   ///< a second accepted reply LEN (0x12: 58, 0x19: 2), or -1
+    bool replyEchoesRequest; ///< the reply repeats the request byte for byte
+    bool movesMotor;         ///< sending it can make the shaft move (0xA0..0xA8, 0x88)
+    bool writesFlash;        ///< writes the drive's ROM (0x32, 0x19): ask first, never loop
+};
+
+/// The command table: lookup by code or by name.
+class CommandTable {
+public:
+    static constexpr int kCount = 28;
+    static const std::array<CommandInfo, kCount> &all();
+    static const CommandInfo *find(quint8 code);
+    static const CommandInfo &info(Command command);
+    static std::optional<Command> fromName(const QString &name);
+    static QString name(Command command);
+    static QString codeText(quint8 code); ///< "0xA2"
+};
+
+} // namespace lk::protocol

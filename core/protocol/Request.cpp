@@ -1,0 +1,146 @@
+#include "Request.h"
+
+#include "WireBytes.h"
+
+namespace lk::protocol {
+
+namespace {
+
+QByteArray pidBytes(const PidGains &g)
+{
+    return WireWriter(6)
+        .put(g.angleKp)
+        .put(g.angleKi)
+        .put(g.speedKp)
+        .put(g.speedKi)
+        .put(g.iqKp)
+        .put(g.iqKi)
+        .bytes();
+}
+
+struct PayloadEncoder {
+    QByteArray operator()(const NoPayload &) const { return {}; }
+    QByteArray operator()(const PidGains &g) const { return pidBytes(g); }
+    QByteArray operator()(const Acceleration &a) const { return WireWriter().put(a.dps2).bytes(); }
+    QByteArray operator()(const EncoderOffset &o) const
+    {
+        return WireWriter().put(o.offset).bytes();
+    }
+    QByteArray operator()(const OpenLoopCommand &c) const
+    {
+        return WireWriter().put(c.power).bytes();
+    }
+    QByteArray operator()(const TorqueCommand &c) const
+    {
+        return WireWriter().put(c.iqRaw).bytes();
+    }
+    QByteArray operator()(const SpeedCommand &c) const
+    {
+        return WireWriter().put(c.speedRaw).bytes();
+    }
+    QByteArray operator()(const MultiPositionCommand &c) const
+    {
+        WireWriter w;
+        w.put(c.angleRaw);
+        if (c.maxSpeedRaw)
+            w.put(*c.maxSpeedRaw);
+        return w.bytes();
+    }
+    QByteArray operator()(const SinglePositionCommand &c) const
+    {
+        // direction, uint16 angle, one 0x00 pad (ERRATA), then the optional max speed.
+        WireWriter w;
+        w.put(static_cast<quint8>(c.direction)).put(c.angleRaw).put(quint8(0));
+        if (c.maxSpeedRaw)
+            w.put(*c.maxSpeedRaw);
+        return w.bytes();
+    }
+    QByteArray operator()(const IncrementPositionCommand &c) const
+    {
+        WireWriter w;
+        w.put(c.angleRaw);
+        if (c.maxSpeedRaw)
+            w.put(*c.maxSpeedRaw);
+        return w.bytes();
+    }
+};
+
+PidGains readPid(const QByteArray &d)
+{
+    PidGains g;
+    g.angleKp = static_cast<quint8>(d[0]);
+    g.angleKi = static_cast<quint8>(d[1]);
+    g.speedKp = static_cast<quint8>(d[2]);
+    g.speedKi = static_cast<quint8>(d[3]);
+    g.iqKp = static_cast<quint8>(d[4]);
+    g.iqKi = static_cast<quint8>(d[5]);
+    return g;
+}
+
+// Decodes the payload of a request whose LEN has already been checked against the table.
+RequestPayload decodePayload(Command cmd, const QByteArray &d)
+{
+    const WireReader r(d);
+    switch (cmd) {
+    case Command::WritePidRam:
+    case Command::WritePidRom:
+        return readPid(d);
+    case Command::WriteAccelRam:
+        return Acceleration{r.get<qint32>(0)};
+    case Command::WriteEncoderOffset:
+        return EncoderOffset{r.get<quint16>(0)};
+    case Command::OpenLoop:
+        return OpenLoopCommand{r.get<qint16>(0)};
+    case Command::Torque:
+        return TorqueCommand{r.get<qint16>(0)};
+    case Command::Speed:
+        return SpeedCommand{r.get<qint32>(0)};
+    case Command::MultiPosition:
+        return MultiPositionCommand{r.get<qint64>(0), std::nullopt};
+    case Command::MultiPositionLimited:
+        return MultiPositionCommand{r.get<qint64>(0), r.get<quint32>(8)};
+    case Command::SinglePosition:
+    case Command::SinglePositionLimited: {
+        SinglePositionCommand c;
+        c.direction =
+            static_cast<quint8>(d[0]) ? SpinDirection::CounterClockwise : SpinDirection::Clockwise;
+        c.angleRaw = r.get<quint16>(1);
+        if (cmd == Command::SinglePositionLimited)
+            c.maxSpeedRaw = r.get<quint32>(4);
+        return c;
+    }
+    case Command::IncrementPosition:
+        return IncrementPositionCommand{r.get<qint32>(0), std::nullopt};
+    case Command::IncrementPositionLimited:
+        return IncrementPositionCommand{r.get<qint32>(0), r.get<quint32>(4)};
+    default:
+        return NoPayload{};
+    }
+}
+
+} // namespace
+
+Frame Request::toFrame() const
+{
+    return Frame{static_cast<quint8>(command), id, std::visit(PayloadEncoder{}, payload)};
+}
+
+RequestDecodeResult decodeRequest(const Frame &frame)
+{
+    RequestDecodeResult result;
+    const CommandInfo *info = CommandTable::find(frame.command);
+    if (!info) {
+        result.error = DecodeError::UnknownCommand;
+        return result;
+    }
+    if (frame.data.size() != info->requestLength) {
+        const auto len = frame.data.size();
+        const bool isReply = len == info->replyLength || len == info->altReplyLength;
+        result.error = isReply ? DecodeError::WrongDirection : DecodeError::BadLength;
+        return result;
+    }
+    result.request = Request{info->command, frame.id, decodePayload(info->command, frame.data)};
+    return result;
+}
+
+} // namespace lk::protocol

@@ -1,0 +1,49 @@
+#pragma once
+
+#include "Command.h"
+#include "FieldError.h"
+#include "Frame.h"
+#include "Values.h"
+
+#include <optional>
+#include <variant>
+
+namespace lk::protocol {
+
+struct NoPayload {};
+
+/// The payload of a request, by command: empty for reads and off/stop/run.
+using RequestPayload =
+    std::variant<NoPayload, PidGains, Acceleration, EncoderOffset, OpenLoopCommand, TorqueCommand,
+                 SpeedCommand, MultiPositionCommand, SinglePositionCommand,
+                 IncrementPositionCommand>;
+
+/// A validated host -> drive request. Build it with the functions in RequestBuilder.h;
+/// every instance in circulation has passed the wire ranges of the spec and ERRATA.
+struct Request {
+    Command command = Command::ReadState2;
+    quint8 id = 1;
+    RequestPayload payload;
+
+    Frame toFrame() const;
+    QByteArray encode() const { return toFrame().encode(); }
+};
+
+/// Outcome of building a request: the request, or the field that was out of range.
+struct BuildResult {
+    std::optional<Request> request;
+    FieldError error;
+    bool ok() const { return request.has_value(); }
+};
+
+/// Why a frame could not be read as a typed request or reply.
+enum class DecodeError { None, UnknownCommand, BadLength, WrongDirection };
+
+/// A request frame read back into its typed form (the simulator and `lkctl decode` use it).
+struct RequestDecodeResult {
+    std::optional<Request> request;
+    DecodeError error = DecodeError::None;
+};
+RequestDecodeResult decodeRequest(const Frame &frame);
+
+} // namespace lk::protocol

@@ -1,0 +1,55 @@
+#pragma once
+
+#include <QtCore/QByteArray>
+#include <QtCore/QObject>
+#include <QtCore/QString>
+
+namespace lk::transport {
+
+/// Why a transport failed, in terms a technician can act on.
+struct TransportError {
+    enum class Kind {
+        None,
+        NoSuchPort,       ///< the device does not exist (unplugged, wrong name)
+        PermissionDenied, ///< not in the dialout/uucp group
+        PortBusy,         ///< another program holds the port
+        Unplugged,        ///< the device vanished while open
+        BadSettings,      ///< baud or framing refused by the driver
+        IoError,          ///< any other read/write failure
+    };
+    Kind kind = Kind::None;
+    QString message; ///< English, complete sentence with the fix where there is one
+};
+
+/// Moves bytes to and from one RS485 bus and reports its connection state; nothing more.
+/// Framing, matching and timing live above it (BusWorker). An implementation lives on the
+/// bus thread and is used only from there.
+class Transport : public QObject {
+    Q_OBJECT
+public:
+    enum class State { Closed, Open, Disconnected };
+    Q_ENUM(State)
+
+    using QObject::QObject;
+    ~Transport() override = default;
+
+    /// Open the link. On failure returns false, stays Closed and emits errorOccurred.
+    virtual bool open() = 0;
+    virtual void close() = 0;
+    /// Queue bytes for sending; a closed or disconnected transport drops them.
+    virtual void write(const QByteArray &bytes) = 0;
+    virtual State state() const = 0;
+    /// Bits per second on the wire (used for timeouts and the bus limit).
+    virtual int baud() const = 0;
+    /// "/dev/ttyUSB0 @ 115200", "Simulated bus (3 drives)".
+    virtual QString description() const = 0;
+
+signals:
+    void bytesReceived(const QByteArray &bytes);
+    void stateChanged(lk::transport::Transport::State state);
+    void errorOccurred(const lk::transport::TransportError &error);
+};
+
+} // namespace lk::transport
+
+Q_DECLARE_METATYPE(lk::transport::TransportError)
