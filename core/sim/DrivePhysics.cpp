@@ -1,0 +1,245 @@
+#include "DrivePhysics.h"
+
+#include <QtCore/QtGlobal>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lk::sim {
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kRadPerDeg = kPi / 180.0;
+
+// Gain scaling: the defaults (angle 100/100, speed 50/40, iq 50/50) give a current loop of
+// about 2000 rad/s, a speed loop of about 200 rad/s and a position loop of about 50 rad/s.
+constexpr double kDefaultIqGain = 50.0;
+constexpr double kCurrentBandwidth = 2000.0;   // rad/s at the default iq gains
+constexpr double kSpeedBandwidthPerUnit = 4.0; // rad/s per unit of speed Kp
+constexpr double kSpeedKiPerUnit = 250.0;      // rad/s^2 per unit of speed Ki
+constexpr double kPosKpPerUnit = 0.5;          // 1/s per unit of angle Kp
+constexpr double kPosKiPerUnit = 0.2;          // 1/s^2 per unit of angle Ki
+
+// Longest interval simulated in one call: a caller that forgets the simulator for hours must
+// not stall its thread for seconds catching up.
+constexpr double kMaxCatchUpSeconds = 60.0;
+// Decelerating towards a position target with no acceleration limit uses this share of the
+// peak acceleration, so that friction and the current loop lag do not make it overshoot.
+constexpr double kDecelMargin = 0.5;
+
+double clampAbs(double v, double limit)
+{
+    return std::clamp(v, -limit, limit);
+}
+} // namespace
+
+DrivePhysics::DrivePhysics(const RotorParams &params, double currentLimitA, double speedLimitDps)
+    : m_params(params), m_currentLimit(currentLimitA), m_speedLimit(speedLimitDps * kRadPerDeg)
+{
+    setGains({});
+}
+
+void DrivePhysics::setGains(const protocol::PidGains &g)
+{
+    const double inertiaPerKt = m_params.inertia / m_params.torqueConstant;
+    m_kpIq = g.iqKp / kDefaultIqGain * m_params.inductance * kCurrentBandwidth;
+    m_kiIq = g.iqKi / kDefaultIqGain * m_params.resistance * kCurrentBandwidth;
+    m_kpSpeed = g.speedKp * kSpeedBandwidthPerUnit * inertiaPerKt;
+    m_kiSpeed = g.speedKi * kSpeedKiPerUnit * inertiaPerKt;
+    m_kpPos = g.angleKp * kPosKpPerUnit;
+    m_kiPos = g.angleKi * kPosKiPerUnit;
+}
+
+void DrivePhysics::setAccelerationDps2(double accel)
+{
+    m_accel = accel > 0 ? accel * kRadPerDeg : 0.0;
+}
+
+void DrivePhysics::setTarget(const LoopTarget &target)
+{
+    if (target.mode != m_target.mode) {
+        resetIntegrators();
+        m_omegaRef = m_omega; // bumpless start from the present speed
+    }
+    m_target = target;
+}
+
+void DrivePhysics::setPositionDeg(double deg)
+{
+    m_theta = deg * kRadPerDeg;
+}
+
+double DrivePhysics::positionDeg() const
+{
+    return m_theta / kRadPerDeg;
+}
+
+double DrivePhysics::speedDps() const
+{
+    return m_omega / kRadPerDeg;
+}
+
+double DrivePhysics::electricalAngleRad() const
+{
+    const double e = std::fmod(m_theta * m_params.polePairs, 2.0 * kPi);
+    return e < 0 ? e + 2.0 * kPi : e;
+}
+
+void DrivePhysics::resetIntegrators()
+{
+    m_iqIntegral = 0;
+    m_speedIntegral = 0;
+    m_posIntegral = 0;
+}
+
+bool DrivePhysics::atRest() const
+{
+    return m_target.mode == LoopMode::Off && m_omega == 0.0 && m_current == 0.0 &&
+           (m_locked || std::abs(m_loadTorque) <= m_params.coulombFriction);
+}
+
+void DrivePhysics::advance(double seconds)
+{
+    if (!(seconds > 0))
+        return; // also refuses NaN
+    seconds = std::min(seconds, kMaxCatchUpSeconds);
+    m_pendingTime += seconds;
+    auto steps = static_cast<qint64>(std::floor(m_pendingTime / kStepSeconds + 1e-9));
+    m_pendingTime = std::max(0.0, m_pendingTime - static_cast<double>(steps) * kStepSeconds);
+    while (steps > 0 && !atRest()) {
+        step(kStepSeconds);
+        --steps;
+    }
+    if (steps > 0) {
+        // Nothing moves: only the winding cools, which has a closed form.
+        const double tau = m_params.thermalCapacity * m_params.thermalResistance;
+        const double t = static_cast<double>(steps) * kStepSeconds;
+        m_temperature = kAmbientC + (m_temperature - kAmbientC) * std::exp(-t / tau);
+        m_voltage = 0;
+    }
+}
+
+void DrivePhysics::step(double dt)
+{
+    switch (m_target.mode) {
+    case LoopMode::Off:
+        m_current = 0;
+        m_voltage = 0;
+        m_omegaRef = m_omega;
+        resetIntegrators();
+        break;
+    case LoopMode::OpenLoop:
+        openWinding(std::clamp(m_target.voltageFraction, -1.0, 1.0) * std::max(0.0, m_supplyV), dt);
+        break;
+    case LoopMode::Torque:
+        currentLoop(m_target.currentA, dt); // not limited by the drive (ERRATA)
+        break;
+    case LoopMode::Speed:
+    case LoopMode::Position:
+        currentLoop(outerLoops(dt), dt);
+        break;
+    }
+    mechanics(dt);
+    thermal(dt);
+}
+
+double DrivePhysics::outerLoops(double dt)
+{
+    const double limit = std::min(std::max(0.0, m_target.maxSpeedDps) * kRadPerDeg, m_speedLimit);
+    double command = 0;
+    if (m_target.mode == LoopMode::Speed) {
+        command = clampAbs(m_target.speedDps * kRadPerDeg, limit);
+    } else {
+        const double error = m_target.positionDeg * kRadPerDeg - m_theta;
+        const double raw = m_kpPos * error + m_kiPos * m_posIntegral;
+        const double peakAccel =
+            m_params.torqueConstant * m_currentLimit / m_params.inertia * kDecelMargin;
+        const double decel = m_accel > 0 ? std::min(m_accel, peakAccel) : peakAccel;
+        // Never faster than what still allows stopping at the target with the allowed
+        // deceleration: a trapezoidal profile without planning ahead.
+        const double bound = std::min(limit, std::sqrt(2.0 * decel * std::abs(error)));
+        command = clampAbs(raw, bound);
+        if (std::abs(raw) < bound)
+            m_posIntegral += error * dt;
+    }
+    return speedLoop(slewSpeedReference(command, dt), dt);
+}
+
+double DrivePhysics::slewSpeedReference(double omegaCmd, double dt)
+{
+    if (m_accel <= 0) {
+        m_omegaRef = omegaCmd;
+    } else {
+        m_omegaRef += clampAbs(omegaCmd - m_omegaRef, m_accel * dt);
+    }
+    return m_omegaRef;
+}
+
+double DrivePhysics::speedLoop(double omegaRef, double dt)
+{
+    const double error = omegaRef - m_omega;
+    const double out = m_kpSpeed * error + m_kiSpeed * (m_speedIntegral + error * dt);
+    if (std::abs(out) > m_currentLimit)
+        return clampAbs(out, m_currentLimit); // saturated: integrator frozen (anti-windup)
+    m_speedIntegral += error * dt;
+    return out;
+}
+
+void DrivePhysics::currentLoop(double iRef, double dt)
+{
+    // Backward Euler on L di/dt = v - R i - Ke w with v = PI(iRef - i): unconditionally
+    // stable for any non-negative gains, whatever the substep.
+    const double a = m_params.inductance / dt;
+    const double emf = m_params.torqueConstant * m_omega;
+    const double denom = a + m_params.resistance + m_kpIq + m_kiIq * dt;
+    double i = (a * m_current + m_kpIq * iRef + m_kiIq * (m_iqIntegral + dt * iRef) - emf) / denom;
+    double v = m_kpIq * (iRef - i) + m_kiIq * (m_iqIntegral + dt * (iRef - i));
+    const double vMax = std::max(0.0, m_supplyV);
+    if (std::abs(v) > vMax) {
+        v = clampAbs(v, vMax); // voltage-limited: integrator frozen
+        i = (a * m_current + v - emf) / (a + m_params.resistance);
+    } else {
+        m_iqIntegral += dt * (iRef - i);
+    }
+    m_current = i;
+    m_voltage = v;
+}
+
+void DrivePhysics::openWinding(double volts, double dt)
+{
+    const double a = m_params.inductance / dt;
+    const double emf = m_params.torqueConstant * m_omega;
+    m_current = (a * m_current + volts - emf) / (a + m_params.resistance);
+    m_voltage = volts;
+}
+
+void DrivePhysics::mechanics(double dt)
+{
+    if (m_locked) {
+        m_omega = 0;
+        return;
+    }
+    const double j = m_params.inertia;
+    const double torque = m_params.torqueConstant * m_current - m_loadTorque;
+    double w = (m_omega + dt * torque / j) / (1.0 + dt * m_params.viscousFriction / j);
+    // Coulomb friction never reverses the motion within a step: that is what makes it stick.
+    const double dw = m_params.coulombFriction * dt / j;
+    if (w > dw)
+        w -= dw;
+    else if (w < -dw)
+        w += dw;
+    else
+        w = 0;
+    w = clampAbs(w, m_speedLimit);
+    m_theta += w * dt;
+    m_omega = w;
+}
+
+void DrivePhysics::thermal(double dt)
+{
+    const double heat = m_current * m_current * m_params.resistance;
+    const double cooling = (m_temperature - kAmbientC) / m_params.thermalResistance;
+    m_temperature += dt * (heat - cooling) / m_params.thermalCapacity;
+}
+
+} // namespace lk::sim

@@ -1,0 +1,76 @@
+#include "SimBusSpec.h"
+
+#include "protocol/Checksum.h"
+
+#include <QtCore/QSet>
+#include <QtCore/QStringList>
+
+namespace lk::sim {
+
+namespace {
+
+std::optional<SimDriveModel> modelFor(const QString &token)
+{
+    if (const auto series = protocol::seriesFromName(token))
+        return SimDriveModel::forSeries(*series);
+    return SimDriveModel::forMotorName(token);
+}
+
+} // namespace
+
+std::optional<SimBusSpec> SimBusSpec::parse(const QString &text, QString *error)
+{
+    auto fail = [error](const QString &message) -> std::optional<SimBusSpec> {
+        if (error)
+            *error = message;
+        return std::nullopt;
+    };
+    const QString trimmed = text.trimmed();
+    if (trimmed.isEmpty())
+        return fail(QStringLiteral("no drives given: expected ID:SERIES[,ID:SERIES...], "
+                                   "e.g. 1:MF,2:MG"));
+    SimBusSpec spec;
+    QSet<int> seen;
+    const QStringList items = trimmed.split(QLatin1Char(','));
+    for (const QString &raw : items) {
+        const QString item = raw.trimmed();
+        if (item.isEmpty())
+            return fail(QStringLiteral("empty entry in '%1': expected ID:SERIES between "
+                                       "the commas")
+                            .arg(trimmed));
+        const qsizetype colon = item.indexOf(QLatin1Char(':'));
+        if (colon < 0)
+            return fail(QStringLiteral("'%1' is not ID:SERIES (e.g. 3:MF)").arg(item));
+        const QString idText = item.left(colon).trimmed();
+        const QString seriesText = item.mid(colon + 1).trimmed();
+        bool ok = false;
+        const int id = idText.toInt(&ok);
+        if (!ok || id < protocol::kMinId || id > protocol::kMaxId)
+            return fail(
+                QStringLiteral("'%1': the ID must be a number 1..32, got '%2'").arg(item, idText));
+        if (seen.contains(id))
+            return fail(QStringLiteral("'%1': ID %2 is given twice").arg(item).arg(id));
+        const auto model = modelFor(seriesText);
+        if (!model)
+            return fail(QStringLiteral("'%1': unknown series '%2' (expected MS, MF, MG, MH "
+                                       "or a motor name such as MG5010E-i10)")
+                            .arg(item, seriesText));
+        seen.insert(id);
+        spec.drives.append(Entry{id, *model});
+    }
+    return spec;
+}
+
+QString SimBusSpec::toString() const
+{
+    QStringList parts;
+    for (const Entry &e : drives) {
+        const bool standard =
+            e.model.motorName == SimDriveModel::forSeries(e.model.series).motorName;
+        parts << QStringLiteral("%1:%2").arg(e.id).arg(
+            standard ? protocol::seriesName(e.model.series) : e.model.motorName);
+    }
+    return parts.join(QLatin1Char(','));
+}
+
+} // namespace lk::sim

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "SimDriveModel.h"
+
+#include <QtCore/QList>
+#include <QtCore/QString>
+
+#include <optional>
+
+namespace lk::sim {
+
+/// The drives of a simulated bus, from the `--motors`/`--sim` syntax "3:MF,17:MS,32:MG".
+///
+/// Each entry is ID:SERIES (ID 1..32, series MS/MF/MG/MH, case-insensitive) or ID:MOTOR with
+/// a motor name that starts with a series ("5:MG5010E-i36", "6:MF4015-18bit").
+struct SimBusSpec {
+    struct Entry {
+        int id = 1;
+        SimDriveModel model;
+    };
+    QList<Entry> drives; ///< in the order given
+
+    /// Parse; on failure returns nullopt and, if `error` is set, one sentence naming the
+    /// offending entry (bad ID, duplicate ID, unknown series, empty entry).
+    static std::optional<SimBusSpec> parse(const QString &text, QString *error = nullptr);
+    /// Back to text ("3:MF,17:MS" or "5:MG5010E-i36" where the motor is not the default).
+    QString toString() const;
+};
+
+} // namespace lk::sim

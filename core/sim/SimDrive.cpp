@@ -1,0 +1,394 @@
+#include "SimDrive.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lk::sim {
+
+using protocol::Command;
+using protocol::Reply;
+using protocol::Request;
+
+namespace {
+constexpr quint8 kLowVoltageBit = 0x01;
+constexpr quint8 kOverTemperatureBit = 0x08;
+constexpr double kProtectionCheckSeconds = 0.01; // protection reacts within 10 ms
+constexpr double kMaxAdvanceSeconds = 60.0;
+constexpr double kPi = 3.14159265358979323846;
+
+double positiveMod(double v, double m)
+{
+    const double r = std::fmod(v, m);
+    return r < 0 ? r + m : r;
+}
+
+template <typename T> T clampRound(double v, double lo, double hi)
+{
+    return static_cast<T>(std::lround(std::clamp(v, lo, hi)));
+}
+} // namespace
+
+SimDrive::SimDrive(int id, const SimDriveModel &model, const SimRom &rom)
+    : m_id(id), m_model(model), m_limits(motor::seriesLimits(model.series)),
+      m_physics(RotorParams::forSeries(model.series), m_limits.maxCurrentA, m_limits.maxSpeedDps()),
+      m_rom(rom)
+{
+    const motor::ModelNameInfo info = model.nameInfo();
+    m_gearRatio = info.gearRatio;
+    m_counts = info.countsPerTurn();
+    m_physics.setSupplyVoltage(m_limits.nominalSupplyV);
+    // Spread the drives' initial shaft angles (golden angle) so that a bus does not look
+    // cloned; deterministic for tests.
+    m_physics.setPositionDeg(positiveMod(id * 137.508, 360.0));
+    restart();
+}
+
+void SimDrive::restart()
+{
+    m_ramPid = m_rom.pid;
+    m_ramAccel = m_rom.accelDps2;
+    m_encoderOffset = static_cast<quint16>(m_rom.encoderZero % m_counts);
+    m_physics.setGains(m_ramPid);
+    m_physics.setAccelerationDps2(m_ramAccel);
+    m_runState = RunState::Off;
+    m_command = LoopTarget{};
+    m_activeCommand.reset();
+    m_errorState = 0;
+    checkProtection();
+    applyOutput();
+    resetAngleReference();
+}
+
+void SimDrive::resetAngleReference()
+{
+    // At power-on the multi-turn angle is the encoder angle: the zero is the last encoder
+    // zero crossing below the present position.
+    const double offsetDeg = 360.0 * m_encoderOffset / m_counts;
+    const double pos = m_physics.positionDeg();
+    m_refDeg = pos - positiveMod(pos - offsetDeg, 360.0);
+}
+
+void SimDrive::setSupplyVoltage(double volts)
+{
+    m_physics.setSupplyVoltage(volts);
+    checkProtection();
+}
+
+void SimDrive::advance(double seconds)
+{
+    if (!(seconds > 0))
+        return;
+    seconds = std::min(seconds, kMaxAdvanceSeconds);
+    while (seconds > 0) {
+        const double chunk = std::min(seconds, kProtectionCheckSeconds);
+        m_physics.advance(chunk);
+        checkProtection();
+        seconds -= chunk;
+    }
+}
+
+void SimDrive::checkProtection()
+{
+    quint8 causes = 0;
+    if (m_physics.supplyVoltage() < m_limits.minSupplyV)
+        causes |= kLowVoltageBit;
+    if (m_physics.temperatureC() > kOverTemperatureC)
+        causes |= kOverTemperatureBit;
+    // Flags latch until 0x9B; a tripped protection switches the output off, like 0x80.
+    if (causes & ~m_errorState) {
+        m_errorState |= causes;
+        switchOff();
+    }
+}
+
+void SimDrive::clearErrors()
+{
+    if ((m_errorState & kLowVoltageBit) && m_physics.supplyVoltage() >= m_limits.minSupplyV)
+        m_errorState &= ~kLowVoltageBit;
+    if ((m_errorState & kOverTemperatureBit) && m_physics.temperatureC() < kOverTemperatureClearC)
+        m_errorState &= ~kOverTemperatureBit;
+}
+
+void SimDrive::switchOff()
+{
+    m_runState = RunState::Off;
+    m_command = LoopTarget{};
+    m_activeCommand.reset();
+    applyOutput();
+}
+
+void SimDrive::applyOutput()
+{
+    const bool on = m_runState == RunState::Running && m_errorState == 0;
+    m_physics.setTarget(on ? m_command : LoopTarget{});
+}
+
+void SimDrive::writeRom()
+{
+    if (m_romWritten)
+        m_romWritten(m_id, series(), m_rom);
+}
+
+std::optional<Reply> SimDrive::handle(const Request &r)
+{
+    if (r.id != m_id || !motor::supports(series(), r.command))
+        return std::nullopt;
+    if (auto reply = handleParameter(r))
+        return reply;
+    if (auto reply = handleRead(r))
+        return reply;
+    if (auto reply = handleRunState(r))
+        return reply;
+    return handleMotion(r);
+}
+
+std::optional<Reply> SimDrive::handleParameter(const Request &r)
+{
+    switch (r.command) {
+    case Command::WritePidRam:
+    case Command::WritePidRom: {
+        const auto gains = std::get<protocol::PidGains>(r.payload);
+        m_ramPid = gains;
+        m_physics.setGains(gains);
+        if (r.command == Command::WritePidRom) {
+            m_rom.pid = gains; // 0x32 writes ROM and RAM (ERRATA: the spec's "RAM" is a typo)
+            writeRom();
+        }
+        return Reply{r.command, r.id, gains};
+    }
+    case Command::WriteAccelRam: {
+        const auto accel = std::get<protocol::Acceleration>(r.payload);
+        m_ramAccel = accel.dps2; // RAM only: V2.3 has no command that writes accel to ROM
+        m_physics.setAccelerationDps2(accel.dps2);
+        return Reply{r.command, r.id, accel};
+    }
+    case Command::WriteEncoderOffset: {
+        const auto offset = std::get<protocol::EncoderOffset>(r.payload);
+        m_encoderOffset = static_cast<quint16>(offset.offset % m_counts);
+        return Reply{r.command, r.id, offset}; // the drive echoes what it received
+    }
+    case Command::WriteZeroRom: {
+        // Effective only after a power cycle (spec): RAM offset and angles stay as they are.
+        m_rom.encoderZero = encoderRaw();
+        writeRom();
+        protocol::ZeroWritten z;
+        if (m_zeroReplyWithOffset)
+            z.encoderOffset = m_rom.encoderZero;
+        return Reply{r.command, r.id, z};
+    }
+    case Command::ClearAngle:
+        m_refDeg = m_physics.positionDeg(); // until power-off (ERRATA)
+        return Reply{r.command, r.id, protocol::Acknowledged{}};
+    case Command::ClearErrors:
+        clearErrors();
+        return Reply{r.command, r.id, state1()};
+    default:
+        return std::nullopt;
+    }
+}
+
+std::optional<Reply> SimDrive::handleRead(const Request &r)
+{
+    switch (r.command) {
+    case Command::ReadPid:
+        return Reply{r.command, r.id, m_ramPid};
+    case Command::ReadAccel:
+        return Reply{r.command, r.id, protocol::Acceleration{m_ramAccel}};
+    case Command::ReadEncoder:
+        return Reply{r.command, r.id, encoderReading()};
+    case Command::ReadMultiTurn:
+        return Reply{r.command, r.id, protocol::MultiTurnAngle{multiTurnRaw()}};
+    case Command::ReadSingleTurn:
+        return Reply{r.command, r.id, protocol::SingleTurnAngle{singleTurnRaw()}};
+    case Command::ReadState1:
+        return Reply{r.command, r.id, state1()};
+    case Command::ReadState2:
+        return Reply{r.command, r.id, state2()};
+    case Command::ReadState3:
+        return Reply{r.command, r.id, state3()};
+    case Command::ReadModel:
+        return Reply{r.command, r.id, modelInfo()};
+    default:
+        return std::nullopt;
+    }
+}
+
+std::optional<Reply> SimDrive::handleRunState(const Request &r)
+{
+    switch (r.command) {
+    case Command::MotorOff: // clears the running state and the stored command
+        switchOff();
+        break;
+    case Command::MotorStop: // output off, command kept for 0x88
+        if (m_runState == RunState::Running)
+            m_runState = RunState::Stopped;
+        applyOutput();
+        break;
+    case Command::MotorRun:
+        if (m_errorState == 0)
+            m_runState = RunState::Running;
+        applyOutput();
+        break;
+    default:
+        return std::nullopt;
+    }
+    return Reply{r.command, r.id, protocol::Acknowledged{}};
+}
+
+Reply SimDrive::handleMotion(const Request &r)
+{
+    // A drive in protection answers with its state but does not move until 0x9B clears it.
+    if (m_errorState == 0) {
+        if (const auto target = motionTarget(r)) {
+            m_command = *target;
+            m_activeCommand = r.command;
+            m_runState = RunState::Running;
+            applyOutput();
+        }
+    }
+    return Reply{r.command, r.id, state2()};
+}
+
+double SimDrive::maxSpeedFor(const std::optional<quint32> &maxSpeedRaw) const
+{
+    const double seriesMax = m_limits.maxSpeedDps();
+    return maxSpeedRaw ? std::min(seriesMax, *maxSpeedRaw * protocol::kCentiUnits) : seriesMax;
+}
+
+double SimDrive::singleTurnTargetDeg(const protocol::SinglePositionCommand &c) const
+{
+    const double pos = m_physics.positionDeg();
+    const double current = positiveMod(pos - m_refDeg, 360.0);
+    const double target = c.angleRaw * protocol::kCentiUnits;
+    const double delta = c.direction == protocol::SpinDirection::Clockwise
+                             ? positiveMod(target - current, 360.0)
+                             : -positiveMod(current - target, 360.0);
+    return pos + delta;
+}
+
+std::optional<LoopTarget> SimDrive::motionTarget(const Request &r) const
+{
+    LoopTarget t;
+    t.maxSpeedDps = m_limits.maxSpeedDps();
+    if (const auto *c = std::get_if<protocol::OpenLoopCommand>(&r.payload)) {
+        t.mode = LoopMode::OpenLoop;
+        t.voltageFraction = c->power / 1000.0; // not limited by the drive (ERRATA)
+    } else if (const auto *c = std::get_if<protocol::TorqueCommand>(&r.payload)) {
+        t.mode = LoopMode::Torque;
+        t.currentA = c->iqA(); // not limited by the drive (ERRATA)
+    } else if (const auto *c = std::get_if<protocol::SpeedCommand>(&r.payload)) {
+        t.mode = LoopMode::Speed;
+        t.speedDps = c->speedDps();
+    } else if (const auto *c = std::get_if<protocol::MultiPositionCommand>(&r.payload)) {
+        t.mode = LoopMode::Position;
+        t.positionDeg = m_refDeg + static_cast<double>(c->angleRaw) * protocol::kCentiUnits;
+        t.maxSpeedDps = maxSpeedFor(c->maxSpeedRaw);
+    } else if (const auto *c = std::get_if<protocol::SinglePositionCommand>(&r.payload)) {
+        t.mode = LoopMode::Position;
+        t.positionDeg = singleTurnTargetDeg(*c);
+        t.maxSpeedDps = maxSpeedFor(c->maxSpeedRaw);
+    } else if (const auto *c = std::get_if<protocol::IncrementPositionCommand>(&r.payload)) {
+        // Increments add to a running position target, so that quick jog steps do not lose
+        // distance; otherwise they start from where the shaft is.
+        const bool chained =
+            m_runState == RunState::Running && m_command.mode == LoopMode::Position;
+        const double base = chained ? m_command.positionDeg : m_physics.positionDeg();
+        t.mode = LoopMode::Position;
+        t.positionDeg = base + c->angleRaw * protocol::kCentiUnits;
+        t.maxSpeedDps = maxSpeedFor(c->maxSpeedRaw);
+    } else {
+        return std::nullopt;
+    }
+    return t;
+}
+
+quint16 SimDrive::encoderRaw() const
+{
+    const double turn = positiveMod(m_physics.positionDeg(), 360.0) / 360.0;
+    const auto counts = static_cast<qint64>(std::floor(turn * m_counts));
+    return static_cast<quint16>(std::clamp<qint64>(counts, 0, m_counts - 1));
+}
+
+quint16 SimDrive::encoder() const
+{
+    return static_cast<quint16>((encoderRaw() - m_encoderOffset + m_counts) % m_counts);
+}
+
+qint64 SimDrive::multiTurnRaw() const
+{
+    return std::llround((m_physics.positionDeg() - m_refDeg) / protocol::kCentiUnits);
+}
+
+quint32 SimDrive::singleTurnRaw() const
+{
+    const qint64 range = std::max<qint64>(1, std::llround(36000.0 * m_gearRatio));
+    const qint64 v = multiTurnRaw() % range;
+    return static_cast<quint32>(v < 0 ? v + range : v);
+}
+
+qint16 SimDrive::iqRaw() const
+{
+    return clampRound<qint16>(iqA() / protocol::kIqReplyAmpsPerLsb, -2048, 2048);
+}
+
+qint16 SimDrive::powerRaw() const
+{
+    const double supply = m_physics.supplyVoltage();
+    if (supply <= 0)
+        return 0;
+    return clampRound<qint16>(m_physics.voltage() / supply * 1000.0, -1000, 1000);
+}
+
+protocol::State1 SimDrive::state1() const
+{
+    protocol::State1 s;
+    s.temperatureC = clampRound<qint8>(temperatureC(), -128, 127);
+    s.voltageRaw = clampRound<quint16>(busVoltage() * 10.0, 0, 65535);
+    s.errorState = m_errorState;
+    return s;
+}
+
+protocol::State2 SimDrive::state2() const
+{
+    protocol::State2 s;
+    s.temperatureC = clampRound<qint8>(temperatureC(), -128, 127);
+    s.isPower = m_limits.repliesCarryPower;
+    s.torqueRaw = s.isPower ? powerRaw() : iqRaw();
+    s.speedDps = clampRound<qint16>(speedDps(), -32768, 32767);
+    s.encoder = encoder();
+    return s;
+}
+
+protocol::State3 SimDrive::state3() const
+{
+    // Phase currents of a sinusoidal FOC drive with id = 0.
+    const double theta = m_physics.electricalAngleRad();
+    const double iq = iqA();
+    auto raw = [](double amps) {
+        return clampRound<qint16>(amps / protocol::kPhaseAmpsPerLsb, -32768, 32767);
+    };
+    protocol::State3 s;
+    s.temperatureC = clampRound<qint8>(temperatureC(), -128, 127);
+    s.iaRaw = raw(-iq * std::sin(theta));
+    s.ibRaw = raw(-iq * std::sin(theta - 2.0 * kPi / 3.0));
+    s.icRaw = raw(-iq * std::sin(theta + 2.0 * kPi / 3.0));
+    return s;
+}
+
+protocol::EncoderReading SimDrive::encoderReading() const
+{
+    return protocol::EncoderReading{encoder(), encoderRaw(), m_encoderOffset};
+}
+
+protocol::ModelInfo SimDrive::modelInfo() const
+{
+    protocol::ModelInfo m;
+    m.driverName = m_model.driverName;
+    m.motorName = m_model.motorName;
+    m.hardwareRaw = m_model.hardwareRaw;
+    m.firmwareRaw = m_model.firmwareRaw;
+    m.generation = protocol::Generation::V2_3;
+    return m;
+}
+
+} // namespace lk::sim

@@ -1,0 +1,116 @@
+#pragma once
+
+#include "DrivePhysics.h"
+#include "SimDriveModel.h"
+#include "SimRomStore.h"
+#include "motor/SeriesLimits.h"
+#include "protocol/Reply.h"
+#include "protocol/Request.h"
+
+#include <functional>
+#include <optional>
+
+namespace lk::sim {
+
+/// One simulated LK drive (V2.3 protocol): parameters in RAM and ROM, motion state, error
+/// flags and the physics behind them. Answers typed requests the way the spec and ERRATA.md
+/// say a drive does. Plain value logic: not thread-safe, owned by one thread.
+class SimDrive {
+public:
+    enum class RunState { Off, Running, Stopped };
+    static constexpr double kOverTemperatureC = 85.0;      ///< protection trips above this
+    static constexpr double kOverTemperatureClearC = 80.0; ///< 0x9B clears bit3 below this
+
+    using RomWrittenHandler = std::function<void(int id, protocol::Series, const SimRom &)>;
+
+    SimDrive(int id, const SimDriveModel &model, const SimRom &rom = {});
+
+    int id() const { return m_id; }
+    const SimDriveModel &model() const { return m_model; }
+    protocol::Series series() const { return m_model.series; }
+    const motor::SeriesLimits &limits() const { return m_limits; }
+    double gearRatio() const { return m_gearRatio; }
+    int encoderCountsPerTurn() const { return m_counts; }
+
+    /// Answer one request addressed to this drive. nullopt = the drive stays silent (the
+    /// series does not implement the command, or the request is for another ID).
+    std::optional<protocol::Reply> handle(const protocol::Request &request);
+    /// Let simulated time pass (any interval; long gaps are capped at one minute).
+    void advance(double seconds);
+    /// Power cycle: RAM reloads from ROM (0x19 zero applied), angles restart from the encoder,
+    /// the drive is off with no command, error flags show only present causes.
+    void restart();
+
+    // What the protocol exposes.
+    RunState runState() const { return m_runState; }
+    std::optional<protocol::Command> activeCommand() const { return m_activeCommand; }
+    const LoopTarget &commandTarget() const { return m_command; }
+    protocol::PidGains ramPid() const { return m_ramPid; }
+    qint32 accelerationDps2() const { return m_ramAccel; }
+    const SimRom &rom() const { return m_rom; }
+    quint8 errorState() const { return m_errorState; }
+    quint16 encoderRaw() const;
+    quint16 encoder() const;
+    quint16 encoderOffset() const { return m_encoderOffset; }
+    qint64 multiTurnRaw() const;   ///< 0.01 deg
+    quint32 singleTurnRaw() const; ///< 0.01 deg, 0 .. 36000 x ratio - 1
+    double speedDps() const { return m_physics.speedDps(); }
+    double iqA() const { return m_physics.currentA(); }
+    qint16 iqRaw() const;
+    qint16 powerRaw() const; ///< MS output power -1000..1000 (duty of the supply)
+    double temperatureC() const { return m_physics.temperatureC(); }
+    double busVoltage() const { return m_physics.supplyVoltage(); }
+
+    protocol::State1 state1() const;
+    protocol::State2 state2() const;
+    protocol::State3 state3() const;
+    protocol::EncoderReading encoderReading() const;
+    protocol::ModelInfo modelInfo() const;
+
+    // Bench knobs for tests, demos and lksim options.
+    void setSupplyVoltage(double volts);
+    void setTemperatureC(double celsius) { m_physics.setTemperatureC(celsius); }
+    void setLoadTorque(double nm) { m_physics.setLoadTorque(nm); }
+    void setRotorLocked(bool locked) { m_physics.setRotorLocked(locked); }
+    /// Newer firmware answers 0x19 with LEN 2 (the new zero); V2.3 echoes (default).
+    void setZeroReplyCarriesOffset(bool on) { m_zeroReplyWithOffset = on; }
+    void setRomWrittenHandler(RomWrittenHandler handler) { m_romWritten = std::move(handler); }
+    const DrivePhysics &physics() const { return m_physics; }
+
+private:
+    std::optional<protocol::Reply> handleParameter(const protocol::Request &r);
+    std::optional<protocol::Reply> handleRead(const protocol::Request &r);
+    std::optional<protocol::Reply> handleRunState(const protocol::Request &r);
+    protocol::Reply handleMotion(const protocol::Request &r);
+    std::optional<LoopTarget> motionTarget(const protocol::Request &r) const;
+    double singleTurnTargetDeg(const protocol::SinglePositionCommand &c) const;
+    double maxSpeedFor(const std::optional<quint32> &maxSpeedRaw) const;
+    void clearErrors();
+    void checkProtection();
+    void switchOff();
+    void applyOutput();
+    void resetAngleReference();
+    void writeRom();
+
+    int m_id;
+    SimDriveModel m_model;
+    const motor::SeriesLimits &m_limits;
+    double m_gearRatio = 1.0;
+    int m_counts = 16384;
+    DrivePhysics m_physics;
+
+    SimRom m_rom;
+    protocol::PidGains m_ramPid;
+    qint32 m_ramAccel = 0;
+    quint16 m_encoderOffset = 0;
+    double m_refDeg = 0; ///< physics angle where multi-turn and single-turn angles are zero
+
+    RunState m_runState = RunState::Off;
+    LoopTarget m_command; ///< the stored control command (kept by 0x81, cleared by 0x80)
+    std::optional<protocol::Command> m_activeCommand;
+    quint8 m_errorState = 0;
+    bool m_zeroReplyWithOffset = false;
+    RomWrittenHandler m_romWritten;
+};
+
+} // namespace lk::sim

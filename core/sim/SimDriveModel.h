@@ -1,0 +1,31 @@
+#pragma once
+
+#include "motor/ModelNameInfo.h"
+#include "protocol/Series.h"
+
+#include <QtCore/QString>
+
+#include <optional>
+
+namespace lk::sim {
+
+/// Identity of a simulated drive, as its 0x12 reply shows it (V2.3 layout).
+struct SimDriveModel {
+    protocol::Series series = protocol::Series::MF;
+    QString driverName;      ///< at most 20 Latin-1 characters, e.g. "LK-MF4015-DRV"
+    QString motorName;       ///< e.g. "MF4015"; gear ratio and encoder bits are read from it
+    quint8 hardwareRaw = 10; ///< shown /10: 1.0
+    quint8 firmwareRaw = 23; ///< shown /10: 2.3
+
+    /// Gear ratio and encoder resolution implied by the motor name (series default otherwise).
+    motor::ModelNameInfo nameInfo() const;
+
+    /// A typical model of the series: MS5005 (12 bit), MF4015 (14 bit), MG5010E-i10 (18 bit),
+    /// MH7015 (14 bit).
+    static SimDriveModel forSeries(protocol::Series series);
+    /// A model from a motor name with a series prefix ("MG5010E-i36", "MF4015-18bit");
+    /// nullopt when the name names no series.
+    static std::optional<SimDriveModel> forMotorName(const QString &motorName);
+};
+
+} // namespace lk::sim

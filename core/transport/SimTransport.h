@@ -1,0 +1,79 @@
+#pragma once
+
+#include "Transport.h"
+
+#include <QtCore/QElapsedTimer>
+
+#include <deque>
+#include <memory>
+
+class QTimer;
+
+namespace lk::sim {
+class SimBus;
+}
+
+namespace lk::transport {
+
+/// A Transport over an in-process simulated bus (sim::SimBus), for the embedded default
+/// bus of lkstudio, for tests and for benchmarks.
+///
+/// write() feeds the bus at once (physics advanced to a QElapsedTimer clock); each reply
+/// arrives through bytesReceived after the bus's reply delay (0.2 ms by default) plus, if
+/// enabled, the 8N1 wire time of request and reply at the emulated baud. Replies are never
+/// delivered inside write(). A FaultInjector disconnect turns the link Disconnected with an
+/// Unplugged error; open() reconnects. Lives on the bus thread like every Transport.
+class SimTransport : public Transport {
+    Q_OBJECT
+public:
+    static constexpr int kDefaultBaud = 115200;
+
+    explicit SimTransport(std::unique_ptr<sim::SimBus> bus, QObject *parent = nullptr);
+    ~SimTransport() override;
+
+    bool open() override;
+    void close() override;
+    void write(const QByteArray &bytes) override;
+    State state() const override { return m_state; }
+    int baud() const override { return m_baud; }
+    QString description() const override;
+
+    /// The baud that baud() reports and wire-time emulation uses.
+    void setBaud(int baud);
+    /// Delay replies by the time request and reply bytes take on the wire at baud().
+    void setWireTimeEmulation(bool on) { m_wireTime = on; }
+    bool wireTimeEmulation() const { return m_wireTime; }
+    /// Drive turnaround (seconds) before each reply; forwards to the bus.
+    void setReplyDelay(double seconds);
+    double replyDelay() const;
+
+    /// The simulated bus: drives, faults, counters. Use it only from this object's thread.
+    sim::SimBus &bus() { return *m_bus; }
+    int pendingReplies() const { return static_cast<int>(m_pending.size()); }
+
+private:
+    struct Pending {
+        QByteArray bytes;
+        qint64 dueNs = 0;
+    };
+    qint64 wireNs(qsizetype bytes) const;
+    void schedule();
+    void postCheck();
+    void deliverDue();
+    void housekeeping();
+    void goDisconnected();
+    void setState(State state);
+
+    std::unique_ptr<sim::SimBus> m_bus;
+    QElapsedTimer m_clock;
+    QTimer *m_timer = nullptr;        ///< precise single-shot for waits of 1 ms or more
+    QTimer *m_housekeeping = nullptr; ///< disconnect flag and idle physics, 10 Hz while open
+    std::deque<Pending> m_pending;    ///< in due order
+    qint64 m_wireFreeNs = 0;          ///< when the emulated wire is next idle
+    bool m_checkPosted = false;
+    State m_state = State::Closed;
+    int m_baud = kDefaultBaud;
+    bool m_wireTime = false;
+};
+
+} // namespace lk::transport
