@@ -1,0 +1,47 @@
+#pragma once
+
+#include "SoftLimits.h"
+
+#include <protocol/Request.h>
+#include <protocol/Series.h>
+
+#include <QtCore/QString>
+
+#include <optional>
+
+namespace lk::safety {
+
+/// Which limit stopped a command (the UI translates from this, the CLI prints `message`).
+enum class LimitKind {
+    None,          ///< allowed
+    UnknownSeries, ///< torque/open loop need a known series
+    Unsupported,   ///< the series does not implement the command
+    SeriesCurrent, ///< |iq| over the series' rated current
+    SoftTorque,    ///< |iq| over the user's torque limit
+    SoftPower,     ///< |power| over the user's open-loop limit
+    SeriesSpeed,   ///< speed or max speed over the series' top speed
+    SoftSpeed,     ///< speed or max speed over the user's speed limit
+    AngleBelowMin, ///< multi-turn target under the user's range
+    AngleAboveMax, ///< multi-turn target over the user's range
+    SoftIncrement, ///< incremental move larger than the user allows
+};
+
+/// The outcome of a check: allowed, or the limit that refused it with both numbers.
+struct Verdict {
+    LimitKind kind = LimitKind::None;
+    double value = 0; ///< what was asked (A, power, dps or deg)
+    double limit = 0; ///< the limit it broke, same unit
+    QString message;  ///< English sentence naming the limit
+    bool allowed() const { return kind == LimitKind::None; }
+};
+
+/// The one gate every command that can move a motor passes before it is sent: series
+/// capabilities and hard limits first, then the user's soft limits. Reads and writes that
+/// cannot move the shaft always pass.
+class MotionGuard {
+public:
+    static Verdict check(const protocol::Request &request, std::optional<protocol::Series> series,
+                         const SoftLimits &limits);
+};
+
+} // namespace lk::safety
