@@ -1,0 +1,54 @@
+#pragma once
+
+#include <QtCore/QByteArray>
+
+#include <atomic>
+#include <deque>
+
+namespace lk::sim {
+class SimBus;
+}
+
+namespace lk::app {
+
+class PtyDevice;
+
+/// Serves a SimBus on a pseudo-terminal with sub-millisecond reply timing.
+///
+/// Qt timers have millisecond resolution, too coarse for a 1 Mbps bus (a whole transaction
+/// takes ~0.7 ms), so this is a plain ppoll() loop on a monotonic clock. With wire-time
+/// emulation a reply's last byte leaves at: request written + request wire time + the
+/// drive's turnaround + reply wire time, and replies never overlap (half duplex).
+class PtyBusServer {
+public:
+    struct Options {
+        int baud = 115200;
+        bool emulateWireTime = false;
+        bool verbose = false; ///< log every frame to standard error
+    };
+
+    PtyBusServer(PtyDevice &pty, sim::SimBus &bus, const Options &options);
+
+    /// Serve until `stop` becomes true. Returns 0, or 1 after an I/O error.
+    int run(const std::atomic<bool> &stop);
+
+    static double monotonicSeconds();
+
+private:
+    struct Pending {
+        double due = 0; ///< monotonic seconds at which the bytes are written
+        QByteArray bytes;
+    };
+    void onInput(const QByteArray &bytes, double now);
+    bool flushDue(double now);
+    double requestWireSeconds(quint8 command) const;
+    void log(const char *direction, const QByteArray &bytes) const;
+
+    PtyDevice &m_pty;
+    sim::SimBus &m_bus;
+    Options m_options;
+    std::deque<Pending> m_pending; ///< in due order
+    double m_wireFreeAt = 0;       ///< when the last scheduled reply finishes on the wire
+};
+
+} // namespace lk::app

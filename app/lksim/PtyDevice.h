@@ -1,0 +1,41 @@
+#pragma once
+
+#include <QtCore/QByteArray>
+#include <QtCore/QString>
+
+namespace lk::app {
+
+/// The master side of a new pseudo-terminal in raw 8N1 mode: the slave is a serial device
+/// that any program (QSerialPort, minicom, lkctl) can open.
+class PtyDevice {
+public:
+    PtyDevice() = default;
+    ~PtyDevice();
+    PtyDevice(const PtyDevice &) = delete;
+    PtyDevice &operator=(const PtyDevice &) = delete;
+
+    /// Create the pty; on failure returns false and sets errorString().
+    bool open();
+    /// Make `path` a symlink to the slave device (an existing symlink is replaced, any other
+    /// file is left alone and reported as an error).
+    bool linkTo(const QString &path);
+    void close();
+
+    int masterFd() const { return m_master; }
+    QString slavePath() const { return m_slavePath; }
+    QString errorString() const { return m_error; }
+
+    /// Read what the client wrote; empty when nothing is there.
+    QByteArray readAvailable();
+    /// Write all bytes (blocking until the kernel took them); false on error.
+    bool writeAll(const QByteArray &bytes);
+
+private:
+    int m_master = -1;
+    int m_slaveKeepAlive = -1; ///< keeps the pty alive while no client has it open
+    QString m_slavePath;
+    QString m_linkPath;
+    QString m_error;
+};
+
+} // namespace lk::app

@@ -1,0 +1,154 @@
+// lksim: a simulated bus of LK drives served on a new pseudo-terminal (CLI.md "lksim").
+
+#include "PtyBusServer.h"
+#include "PtyDevice.h"
+
+#include <sim/SimBus.h>
+#include <sim/SimBusSpec.h>
+
+#include <QtCore/QCommandLineParser>
+#include <QtCore/QCoreApplication>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <sys/prctl.h>
+
+namespace {
+
+std::atomic<bool> g_stop{false};
+
+void onSignal(int)
+{
+    g_stop.store(true);
+}
+
+void installSignalHandlers()
+{
+    struct sigaction sa {};
+    sa.sa_handler = onSignal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = 0; // no SA_RESTART: ppoll must return EINTR so the loop sees the flag
+    sigaction(SIGINT, &sa, nullptr);
+    sigaction(SIGTERM, &sa, nullptr);
+    signal(SIGPIPE, SIG_IGN);
+}
+
+int fail(const QString &message)
+{
+    std::fprintf(stderr, "lksim: %s\n", qPrintable(message));
+    return 2;
+}
+
+bool isLkBaud(int baud)
+{
+    for (int b : {9600, 19200, 38400, 57600, 115200, 230400, 460800, 1000000, 2000000}) {
+        if (b == baud)
+            return true;
+    }
+    return false;
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("lksim"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(LK_VERSION));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "Serves a simulated RS485 bus of LK-TECH drives on a new pseudo-terminal.\n"
+        "The device path is printed as the first line of standard output; open it with\n"
+        "lkctl --port PATH, lkstudio --port PATH or any serial program. Runs until SIGINT or\n"
+        "SIGTERM.\n\n"
+        "Example:\n"
+        "  lksim --motors 3:MF,17:MS,32:MG --link /tmp/lkbus --wire-time --baud 115200\n"
+        "  lkctl scan --port /tmp/lkbus"));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption motors(
+        QStringLiteral("motors"),
+        QStringLiteral("Drives on the bus: ID:SERIES[,ID:SERIES...], ID 1..32, series MS, MF, "
+                       "MG or MH; a motor name may stand for the series (5:MG5010E-i36)."),
+        QStringLiteral("spec"));
+    const QCommandLineOption link(QStringLiteral("link"),
+                                  QStringLiteral("Also make PATH a symlink to the device."),
+                                  QStringLiteral("path"));
+    const QCommandLineOption baud(QStringLiteral("baud"),
+                                  QStringLiteral("Baud for wire-time emulation (default 115200)."),
+                                  QStringLiteral("n"), QStringLiteral("115200"));
+    const QCommandLineOption wireTime(
+        QStringLiteral("wire-time"),
+        QStringLiteral("Delay replies by the time request and reply take on a real 8N1 wire "
+                       "at --baud, so that timing resembles a real bus."));
+    const QCommandLineOption replyDelay(
+        QStringLiteral("reply-delay-us"),
+        QStringLiteral("The drives' turnaround before replying, microseconds (default 200; "
+                       "real drives answer within 500)."),
+        QStringLiteral("us"), QStringLiteral("200"));
+    const QCommandLineOption romDir(
+        QStringLiteral("rom-dir"),
+        QStringLiteral("Persist each drive's ROM (PID, zero) in DIR, so ROM writes survive a "
+                       "restart of lksim. Without it ROM lives in memory only."),
+        QStringLiteral("dir"));
+    const QCommandLineOption faults(
+        QStringLiteral("faults"),
+        QStringLiteral("Inject faults: comma-separated drop=P, corrupt=P, length=P, garbage=P, "
+                       "delay=P (P = probability 0..1 per reply), delay_ms=N, silent=ID "
+                       "(repeatable), seed=N. Example: drop=0.01,corrupt=0.01,silent=17"),
+        QStringLiteral("spec"));
+    const QCommandLineOption verbose(QStringLiteral("verbose"),
+                                     QStringLiteral("Log every frame in and out on stderr."));
+    parser.addOptions({motors, link, baud, wireTime, replyDelay, romDir, faults, verbose});
+    parser.process(app);
+
+    if (!parser.isSet(motors))
+        return fail(QStringLiteral("--motors is required, e.g. --motors 1:MF,2:MS"));
+    QString error;
+    const std::optional<lk::sim::SimBusSpec> spec =
+        lk::sim::SimBusSpec::parse(parser.value(motors), &error);
+    if (!spec)
+        return fail(error);
+    bool ok = false;
+    const int baudValue = parser.value(baud).toInt(&ok);
+    if (!ok || !isLkBaud(baudValue))
+        return fail(QStringLiteral("--baud must be one of 9600, 19200, 38400, 57600, 115200, "
+                                   "230400, 460800, 1000000, 2000000"));
+    const int delayUs = parser.value(replyDelay).toInt(&ok);
+    if (!ok || delayUs < 0 || delayUs > 1000000)
+        return fail(QStringLiteral("--reply-delay-us must be 0..1000000"));
+
+    std::unique_ptr<lk::sim::SimBus> bus = lk::sim::SimBus::fromSpec(*spec, parser.value(romDir));
+    bus->setReplyDelay(delayUs * 1e-6);
+    for (const QString &e : bus->romStore().errors())
+        std::fprintf(stderr, "lksim: %s\n", qPrintable(e));
+    if (parser.isSet(faults) && !bus->faults().configure(parser.value(faults), &error))
+        return fail(QStringLiteral("--faults: %1").arg(error));
+
+    lk::app::PtyDevice pty;
+    if (!pty.open())
+        return fail(pty.errorString());
+    if (parser.isSet(link) && !pty.linkTo(parser.value(link)))
+        return fail(pty.errorString());
+
+    std::printf("%s\n", qPrintable(pty.slavePath()));
+    std::fflush(stdout);
+    std::fprintf(
+        stderr, "lksim: %s on %s%s\n", qPrintable(spec->toString()), qPrintable(pty.slavePath()),
+        parser.isSet(wireTime) ? qPrintable(QStringLiteral(", wire time at %1 baud").arg(baudValue))
+                               : "");
+
+    installSignalHandlers();
+    prctl(PR_SET_TIMERSLACK, 1UL); // sub-millisecond reply timing needs a tight timer slack
+
+    lk::app::PtyBusServer::Options options;
+    options.baud = baudValue;
+    options.emulateWireTime = parser.isSet(wireTime);
+    options.verbose = parser.isSet(verbose);
+    lk::app::PtyBusServer server(pty, *bus, options);
+    const int rc = server.run(g_stop);
+    pty.close();
+    return rc;
+}
