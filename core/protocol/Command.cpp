@@ -66,7 +66,12 @@ const CommandInfo *CommandTable::find(quint8 code)
 
 const CommandInfo &CommandTable::info(Command command)
 {
-    return *find(static_cast<quint8>(command));
+    // A Command outside the table can only come from a cast; answer with an entry that
+    // allows nothing rather than crash (movesMotor false, no lengths that match a frame).
+    static const CommandInfo kUnknown{
+        Command::ReadState2, "unknown", 0xFF, 0xFF, -1, false, false, false};
+    const CommandInfo *i = find(static_cast<quint8>(command));
+    return i ? *i : kUnknown;
 }
 
 std::optional<Command> CommandTable::fromName(const QString &name)
@@ -80,7 +85,8 @@ std::optional<Command> CommandTable::fromName(const QString &name)
 
 QString CommandTable::name(Command command)
 {
-    return QString::fromLatin1(info(command).name);
+    const CommandInfo *i = find(static_cast<quint8>(command));
+    return i ? QString::fromLatin1(i->name) : codeText(static_cast<quint8>(command));
 }
 
 QString CommandTable::codeText(quint8 code)

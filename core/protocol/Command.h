@@ -58,7 +58,10 @@ public:
     static constexpr int kCount = 28;
     static const std::array<CommandInfo, kCount> &all();
     static const CommandInfo *find(quint8 code);
+    /// Facts about a command; a value outside the table (a cast) gets an entry named
+    /// "unknown" whose lengths match no frame.
     static const CommandInfo &info(Command command);
+    /// The CLI.md name, or "0x93" for a value outside the table.
     static std::optional<Command> fromName(const QString &name);
     static QString name(Command command);
     static QString codeText(quint8 code); ///< "0xA2"

@@ -7,6 +7,8 @@ namespace lk::protocol {
 
 QByteArray encodeFrame(quint8 command, quint8 id, const QByteArray &data)
 {
+    // Typed requests and replies never exceed 58 bytes; the LEN byte could not say more.
+    Q_ASSERT(data.size() <= kMaxDataLength);
     const auto len = static_cast<quint8>(data.size());
     QByteArray out;
     out.reserve(kHeaderSize + data.size() + 1);

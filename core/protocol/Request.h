@@ -18,8 +18,9 @@ using RequestPayload =
                  SpeedCommand, MultiPositionCommand, SinglePositionCommand,
                  IncrementPositionCommand>;
 
-/// A validated host -> drive request. Build it with the functions in RequestBuilder.h;
-/// every instance in circulation has passed the wire ranges of the spec and ERRATA.
+/// A host -> drive request. Built with the functions in RequestBuilder.h it has passed the
+/// wire ranges of the spec and ERRATA; read back with decodeRequest() it holds the values as
+/// received, unchecked (a drive, or the simulator, must not trust them).
 struct Request {
     Command command = Command::ReadState2;
     quint8 id = 1;
@@ -40,6 +41,7 @@ struct BuildResult {
 enum class DecodeError { None, UnknownCommand, BadLength, WrongDirection };
 
 /// A request frame read back into its typed form (the simulator and `lkctl decode` use it).
+/// Only the LEN is checked; a single-turn direction byte other than 0 reads as CCW.
 struct RequestDecodeResult {
     std::optional<Request> request;
     DecodeError error = DecodeError::None;

@@ -68,7 +68,11 @@ BuildResult plain(Command command, int id)
 {
     if (auto e = checkId(id))
         return fail(e->field, e->range, e->problem);
-    if (CommandTable::info(command).requestLength != 0)
+    const CommandInfo *info = CommandTable::find(static_cast<quint8>(command));
+    if (!info)
+        return fail(QStringLiteral("command"), QStringLiteral("the 28 commands of the protocol"),
+                    QStringLiteral("unknown code %1").arg(CommandTable::codeText(quint8(command))));
+    if (info->requestLength != 0)
         return fail(QStringLiteral("command"), QStringLiteral("commands without data"),
                     QStringLiteral("%1 needs data").arg(CommandTable::name(command)));
     return done(command, id, NoPayload{});

@@ -49,15 +49,45 @@ void StreamParser::feed(const char *data, qsizetype size, const Sink &sink)
 void StreamParser::finish(const Sink &sink)
 {
     process(sink);
-    if (!m_buf.isEmpty()) {
-        // process() leaves only a partial frame starting at 0x3E behind.
-        emitError(ParseError::Truncated, 0, m_buf.size(), sink);
-        m_buf.clear();
+    while (!m_buf.isEmpty()) {
+        // process() leaves only a partial frame starting at 0x3E behind. Its header may have
+        // promised more than ever came, so only the bytes up to the next 0x3E are truncated:
+        // a complete frame after them is still found.
+        const auto next = m_buf.indexOf(static_cast<char>(kFrameHead), 1);
+        const qsizetype cut = next < 0 ? m_buf.size() : next;
+        emitError(ParseError::Truncated, 0, cut, sink);
+        m_buf.remove(0, cut);
+        process(sink);
     }
+    flushGarbage(sink);
+}
+
+void StreamParser::addGarbage(qsizetype from, qsizetype count, const Sink &sink)
+{
+    m_garbage.append(m_buf.constData() + from, count);
+    while (m_garbage.size() >= kSlice) {
+        ParseEvent ev;
+        ev.error = ParseError::Garbage;
+        ev.bytes = m_garbage.left(kSlice);
+        m_garbage.remove(0, kSlice);
+        sink(ev);
+    }
+}
+
+void StreamParser::flushGarbage(const Sink &sink)
+{
+    if (m_garbage.isEmpty())
+        return;
+    ParseEvent ev;
+    ev.error = ParseError::Garbage;
+    ev.bytes = m_garbage;
+    m_garbage.clear();
+    sink(ev);
 }
 
 void StreamParser::emitError(ParseError error, qsizetype from, qsizetype count, const Sink &sink)
 {
+    flushGarbage(sink); // keep stream order: the garbage run came first
     ParseEvent ev;
     ev.isFrame = false;
     ev.error = error;
@@ -72,7 +102,15 @@ qsizetype StreamParser::consumeBadHeader(qsizetype pos, ParseError error, const 
     qsizetype k = 1;
     while (k < kHeaderSize && at(m_buf, pos + k) != kFrameHead)
         ++k;
-    emitError(error, pos, k, sink);
+    flushGarbage(sink);
+    ParseEvent ev;
+    ev.error = error;
+    ev.bytes = m_buf.mid(pos, k);
+    if (error == ParseError::BadLength) { // the header checksum held: its fields are real
+        ev.frame.command = at(m_buf, pos + 1);
+        ev.frame.id = at(m_buf, pos + 2);
+    }
+    sink(ev);
     return pos + k;
 }
 
@@ -86,10 +124,11 @@ void StreamParser::process(const Sink &sink)
             const char *start = m_buf.constData() + pos;
             const void *head = memchr(start, kFrameHead, static_cast<size_t>(n() - pos));
             const qsizetype end = head ? static_cast<const char *>(head) - m_buf.constData() : n();
-            emitError(ParseError::Garbage, pos, end - pos, sink);
+            addGarbage(pos, end - pos, sink);
             pos = end;
             continue;
         }
+        flushGarbage(sink); // a frame head ends the garbage run
         if (n() - pos < kHeaderSize)
             break; // wait for the rest of the header
         const quint8 cmd = at(m_buf, pos + 1);

@@ -32,8 +32,11 @@ struct ParseEvent {
 ///
 /// Feed it chunks of any size; it calls the sink for every frame or fault, in stream order,
 /// and resynchronises on the next 0x3E after any fault. Every input byte is reported exactly
-/// once (in a frame or in an error). It holds at most one partial frame between calls, never
-/// reads past its buffer, and never decodes a short frame.
+/// once (in a frame or in an error). It holds at most one partial frame and one 4 KiB run of
+/// garbage between calls, never reads past its buffer, and never decodes a short frame.
+/// A run of garbage is reported when the next 0x3E ends it (or at 4 KiB, or at finish()), so
+/// the events do not depend on how the input was chunked. Events for BadLength,
+/// UnknownCommand and BadDataChecksum carry the frame's command and ID.
 class StreamParser {
 public:
     using Sink = std::function<void(const ParseEvent &)>;
@@ -46,15 +49,22 @@ public:
     /// End of stream: a pending partial frame is reported as Truncated.
     void finish(const Sink &sink);
     /// Drop pending bytes without reporting them (e.g. after reopening a port).
-    void reset() { m_buf.clear(); }
-    qsizetype pendingBytes() const { return m_buf.size(); }
+    void reset()
+    {
+        m_buf.clear();
+        m_garbage.clear();
+    }
+    qsizetype pendingBytes() const { return m_buf.size() + m_garbage.size(); }
 
 private:
     void process(const Sink &sink);
     qsizetype consumeBadHeader(qsizetype pos, ParseError error, const Sink &sink);
     void emitError(ParseError error, qsizetype from, qsizetype count, const Sink &sink);
+    void addGarbage(qsizetype from, qsizetype count, const Sink &sink);
+    void flushGarbage(const Sink &sink);
 
-    QByteArray m_buf; ///< unconsumed bytes: at most one partial frame plus one input slice
+    QByteArray m_buf;     ///< unconsumed bytes: at most one partial frame plus one input slice
+    QByteArray m_garbage; ///< the current run of garbage, reported when it ends (or per 4 KiB)
 };
 
 } // namespace lk::protocol
