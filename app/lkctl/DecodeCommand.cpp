@@ -1,0 +1,233 @@
+#include "DecodeCommand.h"
+
+#include "Console.h"
+#include "HexText.h"
+
+#include "protocol/FieldJson.h"
+
+namespace lk::lkctl {
+
+using protocol::FieldJson;
+using protocol::ParseEvent;
+
+QString DecodeCommand::name() const
+{
+    return QStringLiteral("decode");
+}
+
+QString DecodeCommand::summary() const
+{
+    return QStringLiteral("decode captured bus bytes into one JSON object per frame");
+}
+
+QString DecodeCommand::example() const
+{
+    return QStringLiteral("lkctl decode 3E 80 01 00 BF");
+}
+
+QString DecodeCommand::usage() const
+{
+    return QStringLiteral(
+        "Usage: lkctl decode [--series MS|MF|MG|MH] HEX...\n"
+        "       lkctl decode [--series S] -            hex text on standard input\n"
+        "       lkctl decode [--series S] --binary -   raw bytes on standard input\n"
+        "\n"
+        "Decode LK RS485 bytes as captured on a bus: many frames, both directions, garbage\n"
+        "between them. Prints one compact JSON object per line, in stream order:\n"
+        "  {\"direction\":\"request\",\"command\":\"speed\",\"code\":\"0xA2\",\"id\":1,"
+        "\"fields\":{\"speed_dps\":100.0,\"speed_raw\":10000}}\n"
+        "  {\"direction\":\"echo\",\"command\":\"motor_off\",\"code\":\"0x80\",\"id\":1,"
+        "\"fields\":{}}\n"
+        "  {\"error\":\"bad_data_checksum\",\"bytes\":\"3E A4 01 07 EA 21 00 00 0A 00 2C 19 73\"}\n"
+        "direction is request or reply where the frame's length tells them apart, echo where\n"
+        "both directions carry the same bytes (an echo's fields are the values written).\n"
+        "Field names and units follow CLI.md; scaled values also come as <field>_raw.\n"
+        "Errors: bad_header_checksum, bad_data_checksum, bad_length, unknown_command,\n"
+        "garbage (bytes skipped while resynchronising), truncated (input ended in a frame).\n"
+        "\n"
+        "Options:\n"
+        "  --series S   drive series: MS replies carry power instead of iq (default MF)\n"
+        "  --binary     standard input holds raw bytes, not hex text (implies -)\n"
+        "  -            read standard input; frames are printed as they arrive, so a live\n"
+        "               pipe is decoded live\n"
+        "  -h, --help   show this help\n"
+        "\n"
+        "Hex text (arguments and standard input):\n"
+        "  Bytes are pairs of hex digits in either case; a group of digits may carry a 0x\n"
+        "  prefix. Spaces, tabs, newlines, ',', ';' and ':' separate groups but are not\n"
+        "  needed: \"3E800100BF\", \"3E 80 01 00 BF\" and \"0x3E,0x80,0x01,0x00,0xBF\" are\n"
+        "  the same five bytes. '#' starts a comment that runs to the end of the line:\n"
+        "  timestamps, directions and notes (as in the GUI's traffic export) go after '#'.\n"
+        "  A group with an odd number of digits or any other character is refused with\n"
+        "  its line (or argument) and column; on standard input the lines before it have\n"
+        "  already been decoded and printed.\n"
+        "\n"
+        "Examples:\n"
+        "  lkctl decode 3E 80 01 00 BF\n"
+        "  lkctl decode --series MS 3E9C01 00DB 3E9C0107E2 1F F4 01 68 01 00 30 AD\n"
+        "  lkctl decode - < capture.txt\n"
+        "  cat /dev/ttyUSB0 | lkctl decode --binary -\n"
+        "\n"
+        "Exit status:\n"
+        "  0  every byte belonged to a valid frame\n"
+        "  3  some bytes did not (each fault is printed as an error object)\n"
+        "  2  unusable arguments or hex text (message on standard error)\n");
+}
+
+std::optional<DecodeCommand::Options> DecodeCommand::parseOptions(const QStringList &args,
+                                                                  QString *problem)
+{
+    Options o;
+    bool optionsEnded = false;
+    for (qsizetype i = 0; i < args.size(); ++i) {
+        const QString &a = args.at(i);
+        if (optionsEnded || !a.startsWith(QLatin1Char('-'))) {
+            o.hex.append(a);
+        } else if (a == QLatin1String("-")) {
+            o.fromStdin = true;
+        } else if (a == QLatin1String("--")) {
+            optionsEnded = true;
+        } else if (a == QLatin1String("--binary")) {
+            o.binary = o.fromStdin = true;
+        } else if (a == QLatin1String("--series") || a.startsWith(QLatin1String("--series="))) {
+            QString value = a.mid(int(qstrlen("--series=")));
+            if (!a.contains(QLatin1Char('='))) {
+                if (i + 1 >= args.size()) {
+                    *problem = QStringLiteral("--series needs a value: MS, MF, MG or MH");
+                    return std::nullopt;
+                }
+                value = args.at(++i);
+            }
+            const auto series = protocol::seriesFromName(value);
+            if (!series) {
+                *problem = QStringLiteral("unknown series '%1' (MS, MF, MG or MH)").arg(value);
+                return std::nullopt;
+            }
+            o.context.series = *series;
+        } else {
+            *problem = QStringLiteral("unknown option '%1'").arg(a);
+            return std::nullopt;
+        }
+    }
+    if (o.fromStdin && !o.hex.isEmpty()) {
+        *problem = QStringLiteral("give HEX arguments or read standard input, not both");
+        return std::nullopt;
+    }
+    if (!o.fromStdin && o.hex.isEmpty()) {
+        *problem = QStringLiteral("no input: give HEX bytes, or - to read standard input");
+        return std::nullopt;
+    }
+    return o;
+}
+
+int DecodeCommand::usageError(const QString &problem, Console &console) const
+{
+    console.errLine(QStringLiteral("lkctl decode: %1").arg(problem));
+    return kExitUsage;
+}
+
+void DecodeCommand::feed(const QByteArray &bytes, Console &console)
+{
+    m_parser.feed(bytes, [this, &console](const ParseEvent &event) {
+        const QJsonObject object = FieldJson::eventObject(event, m_context);
+        m_sawFault = m_sawFault || FieldJson::isError(object);
+        console.out(FieldJson::toJsonLine(object) + '\n');
+    });
+}
+
+int DecodeCommand::finish(Console &console)
+{
+    m_parser.finish([this, &console](const ParseEvent &event) {
+        const QJsonObject object = FieldJson::eventObject(event, m_context);
+        m_sawFault = m_sawFault || FieldJson::isError(object);
+        console.out(FieldJson::toJsonLine(object) + '\n');
+    });
+    console.flush();
+    return m_sawFault ? kExitBadData : kExitOk;
+}
+
+int DecodeCommand::decodeArguments(const Options &options, Console &console)
+{
+    // Every argument is checked before anything is printed: bad hex yields no output at all.
+    QByteArray bytes;
+    for (qsizetype i = 0; i < options.hex.size(); ++i) {
+        HexError error;
+        const auto part = HexText::parse(options.hex.at(i).toUtf8(), &error);
+        if (!part)
+            return usageError(QStringLiteral("bad hex in argument %1, column %2: %3")
+                                  .arg(i + 1)
+                                  .arg(error.column)
+                                  .arg(error.problem),
+                              console);
+        bytes += *part;
+    }
+    feed(bytes, console);
+    return finish(console);
+}
+
+int DecodeCommand::decodeStdinText(Console &console)
+{
+    // Line by line as input arrives: positions are exact, output is live, and the lines before
+    // a bad one are decoded and printed before the refusal.
+    QByteArray pending;
+    int line = 1;
+    for (;;) {
+        const QByteArray chunk = console.readSome();
+        pending += chunk;
+        qsizetype start = 0;
+        for (;;) {
+            qsizetype end = pending.indexOf('\n', start);
+            if (end < 0 && (!chunk.isEmpty() || start >= pending.size()))
+                break; // wait for the rest of the line (or nothing is left at the end)
+            end = end < 0 ? pending.size() : end + 1;
+            HexError error;
+            const auto bytes = HexText::parse(pending.mid(start, end - start), &error, line);
+            if (!bytes) {
+                console.flush();
+                return usageError(QStringLiteral("bad hex on standard input, line %1, column "
+                                                 "%2: %3")
+                                      .arg(error.line)
+                                      .arg(error.column)
+                                      .arg(error.problem),
+                                  console);
+            }
+            feed(*bytes, console);
+            ++line;
+            start = end;
+        }
+        pending.remove(0, start);
+        console.flush();
+        if (chunk.isEmpty())
+            break;
+    }
+    if (console.inputFailed())
+        return usageError(QStringLiteral("cannot read standard input"), console);
+    return finish(console);
+}
+
+int DecodeCommand::decodeStdinBinary(Console &console)
+{
+    for (QByteArray chunk = console.readSome(); !chunk.isEmpty(); chunk = console.readSome()) {
+        feed(chunk, console);
+        console.flush();
+    }
+    if (console.inputFailed())
+        return usageError(QStringLiteral("cannot read standard input"), console);
+    return finish(console);
+}
+
+int DecodeCommand::run(const QStringList &args, Console &console)
+{
+    QString problem;
+    const std::optional<Options> options = parseOptions(args, &problem);
+    if (!options)
+        return usageError(problem + QStringLiteral(" (see lkctl decode --help)"), console);
+    m_parser.reset();
+    m_context = options->context;
+    m_sawFault = false;
+    if (!options->fromStdin)
+        return decodeArguments(*options, console);
+    return options->binary ? decodeStdinBinary(console) : decodeStdinText(console);
+}
+
+} // namespace lk::lkctl

@@ -1,0 +1,43 @@
+#pragma once
+
+#include "Subcommand.h"
+
+#include "protocol/Series.h"
+#include "protocol/StreamParser.h"
+
+#include <QtCore/QByteArray>
+
+namespace lk::lkctl {
+
+/// `lkctl decode`: bus bytes (hex arguments, hex text or raw bytes on stdin) to one CLI.md
+/// JSON object per frame or fault, in stream order.
+class DecodeCommand : public Subcommand {
+public:
+    QString name() const override;
+    QString summary() const override;
+    QString example() const override;
+    QString usage() const override;
+    int run(const QStringList &args, Console &console) override;
+
+private:
+    struct Options {
+        protocol::DecodeContext context;
+        bool binary = false;
+        bool fromStdin = false;
+        QStringList hex;
+    };
+    static std::optional<Options> parseOptions(const QStringList &args, QString *problem);
+
+    int decodeArguments(const Options &options, Console &console);
+    int decodeStdinText(Console &console);
+    int decodeStdinBinary(Console &console);
+    void feed(const QByteArray &bytes, Console &console);
+    int finish(Console &console);
+    int usageError(const QString &problem, Console &console) const;
+
+    protocol::StreamParser m_parser;
+    protocol::DecodeContext m_context;
+    bool m_sawFault = false;
+};
+
+} // namespace lk::lkctl
