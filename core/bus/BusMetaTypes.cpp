@@ -1,0 +1,41 @@
+#include "BusMetaTypes.h"
+
+#include "BusConfig.h"
+#include "BusStatistics.h"
+#include "ConnectionStatus.h"
+#include "KnownMotor.h"
+#include "PollPlan.h"
+#include "RequestResult.h"
+#include "ScanTypes.h"
+#include "TelemetrySample.h"
+#include "TrafficEvent.h"
+
+#include <QtCore/QVector>
+
+#include <mutex>
+
+namespace lk::bus {
+
+void registerBusMetaTypes()
+{
+    static std::once_flag once;
+    std::call_once(once, [] {
+        qRegisterMetaType<RequestResult>("lk::bus::RequestResult");
+        qRegisterMetaType<TelemetrySample>("lk::bus::TelemetrySample");
+        qRegisterMetaType<TelemetryBatch>("lk::bus::TelemetryBatch");
+        qRegisterMetaType<BusStatistics>("lk::bus::BusStatistics");
+        qRegisterMetaType<ScanProgress>("lk::bus::ScanProgress");
+        qRegisterMetaType<FoundMotor>("lk::bus::FoundMotor");
+        qRegisterMetaType<ScanSummary>("lk::bus::ScanSummary");
+        qRegisterMetaType<KnownMotors>("lk::bus::KnownMotors");
+        qRegisterMetaType<ConnectionStatus>("lk::bus::ConnectionStatus");
+        qRegisterMetaType<TrafficEvent>("lk::bus::TrafficEvent");
+        qRegisterMetaType<TrafficBatch>("lk::bus::TrafficBatch");
+        qRegisterMetaType<PollPlan>("lk::bus::PollPlan");
+        qRegisterMetaType<BusConfig>("lk::bus::BusConfig");
+        qRegisterMetaType<transport::TransportError>("lk::transport::TransportError");
+        qRegisterMetaType<QVector<int>>("QVector<int>");
+    });
+}
+
+} // namespace lk::bus

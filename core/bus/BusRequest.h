@@ -1,0 +1,36 @@
+#pragma once
+
+#include "Priority.h"
+#include "RequestResult.h"
+
+#include <protocol/Request.h>
+
+#include <QtCore/QByteArray>
+
+#include <functional>
+
+namespace lk::bus {
+
+/// Where a queued request came from: decides who hears about its end.
+enum class RequestOrigin { User, Emergency, Poll, Scan };
+
+/// A request as queued on the bus thread.
+struct BusRequest {
+    quint64 ticket = 0;
+    protocol::Request request;
+    Priority priority = Priority::Operator;
+    int retries = -1; ///< < 0: BusConfig::retries
+    RequestOrigin origin = RequestOrigin::User;
+};
+
+/// A request waiting in a queue or on the wire, with its progress and its listener.
+struct PendingRequest {
+    using Completion = std::function<void(const RequestResult &)>;
+    BusRequest req;
+    QByteArray bytes; ///< the encoded frame
+    int attempts = 0;
+    bool noRetry = false; ///< set by emergency stop on an in-flight motion command
+    Completion done;      ///< empty: BusWorker::requestCompleted
+};
+
+} // namespace lk::bus

@@ -1,0 +1,238 @@
+#include "BusSession.h"
+
+#include "BusLog.h"
+#include "BusWorker.h"
+
+#include <QtCore/QCoreApplication>
+#include <QtCore/QMetaObject>
+#include <QtCore/QThread>
+
+namespace lk::bus {
+
+namespace {
+constexpr unsigned long kJoinTimeoutMs = 5000;
+} // namespace
+
+BusSession::BusSession(QObject *parent) : QObject(parent)
+{
+    registerBusMetaTypes();
+}
+
+BusSession::~BusSession()
+{
+    // Listeners may be half destroyed now: nothing is delivered from here on.
+    ++m_generation;
+    join();
+}
+
+template <typename F> void BusSession::post(F &&f)
+{
+    if (m_worker)
+        QMetaObject::invokeMethod(m_worker, std::forward<F>(f), Qt::QueuedConnection);
+}
+
+template <typename... Args>
+void BusSession::relay(void (BusWorker::*from)(Args...), void (BusSession::*to)(Args...))
+{
+    const quint64 gen = m_generation;
+    connect(m_worker, from, this, [this, gen, to](Args... args) {
+        if (gen == m_generation)
+            (this->*to)(args...);
+    });
+}
+
+void BusSession::connectWorker()
+{
+    const quint64 gen = m_generation;
+    connect(m_worker, &BusWorker::connectionChanged, this, [this, gen](const ConnectionStatus &s) {
+        if (gen != m_generation)
+            return;
+        m_connection = s;
+        emit connectionChanged(s);
+    });
+    connect(m_worker, &BusWorker::knownMotorsChanged, this, [this, gen](const KnownMotors &m) {
+        if (gen != m_generation)
+            return;
+        m_motors = m;
+        emit knownMotorsChanged(m);
+    });
+    relay(&BusWorker::errorOccurred, &BusSession::errorOccurred);
+    relay(&BusWorker::requestCompleted, &BusSession::requestCompleted);
+    relay(&BusWorker::emergencyStopFinished, &BusSession::emergencyStopFinished);
+    relay(&BusWorker::scanProgress, &BusSession::scanProgress);
+    relay(&BusWorker::motorFound, &BusSession::motorFound);
+    relay(&BusWorker::scanFinished, &BusSession::scanFinished);
+    relay(&BusWorker::pollingChanged, &BusSession::pollingChanged);
+    relay(&BusWorker::telemetryReceived, &BusSession::telemetryReceived);
+    relay(&BusWorker::statisticsUpdated, &BusSession::statisticsUpdated);
+    relay(&BusWorker::trafficCaptured, &BusSession::trafficCaptured);
+}
+
+void BusSession::open(TransportFactory factory, int baud, const BusConfig &config)
+{
+    close();
+    m_config = config;
+    m_thread = new QThread; // no parent: a thread that will not stop must not be deleted
+    m_thread->setObjectName(QStringLiteral("lk-bus"));
+    m_worker = new BusWorker(std::move(factory), baud, config);
+    m_worker->moveToThread(m_thread);
+    // The worker (and with it the transport) dies on its own thread once the loop has ended.
+    connect(m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
+    connectWorker();
+    m_thread->start();
+    post([w = m_worker] { w->start(); });
+}
+
+void BusSession::join()
+{
+    if (!m_thread)
+        return;
+    BusWorker *w = m_worker;
+    QThread *t = m_thread;
+    m_worker = nullptr;
+    m_thread = nullptr;
+    QMetaObject::invokeMethod(
+        w,
+        [w] {
+            w->shutdown(QStringLiteral("session closed"));
+            QThread::currentThread()->quit();
+        },
+        Qt::QueuedConnection);
+    if (t->wait(kJoinTimeoutMs)) {
+        delete t;
+        return;
+    }
+    // Never terminate(): a stuck driver call must not take the process down with it.
+    qCCritical(lcBus) << "bus thread did not stop within" << kJoinTimeoutMs << "ms; detached";
+    connect(t, &QThread::finished, t, &QObject::deleteLater);
+}
+
+void BusSession::close()
+{
+    if (!m_thread)
+        return;
+    join();
+    // Deliver what the worker said on its way out (Cancelled completions, Closed state) now,
+    // then ignore anything else the old worker may have queued.
+    QCoreApplication::sendPostedEvents(this, QEvent::MetaCall);
+    ++m_generation;
+    if (m_connection.state != transport::Transport::State::Closed) {
+        m_connection.state = transport::Transport::State::Closed;
+        m_connection.reason = QStringLiteral("session closed");
+        emit connectionChanged(m_connection);
+    }
+}
+
+bool BusSession::isRunning() const
+{
+    return m_thread != nullptr;
+}
+
+void BusSession::reconnect()
+{
+    post([w = m_worker] { w->reconnect(); });
+}
+
+void BusSession::setConfig(const BusConfig &config)
+{
+    m_config = config;
+    post([w = m_worker, config] { w->setConfig(config); });
+}
+
+quint64 BusSession::send(const protocol::Request &request, Priority priority, int retries)
+{
+    const quint64 ticket = m_nextTicket++;
+    if (!m_worker) {
+        RequestResult r;
+        r.ticket = ticket;
+        r.request = request;
+        r.priority = priority;
+        r.status = RequestStatus::Disconnected;
+        r.reason = QStringLiteral("the bus is not open");
+        // Queued, so that the caller holds the ticket before the result arrives.
+        QMetaObject::invokeMethod(
+            this, [this, r] { emit requestCompleted(r); }, Qt::QueuedConnection);
+        return ticket;
+    }
+    BusRequest b;
+    b.ticket = ticket;
+    b.request = request;
+    b.priority = priority;
+    b.retries = retries;
+    b.origin = RequestOrigin::User;
+    post([w = m_worker, b] { w->submit(b); });
+    return ticket;
+}
+
+quint64 BusSession::emergencyStop(const QVector<int> &ids)
+{
+    const quint64 ticket = m_nextTicket++;
+    if (!m_worker) {
+        QMetaObject::invokeMethod(
+            this, [this, ticket, ids] { emit emergencyStopFinished(ticket, {}, ids); },
+            Qt::QueuedConnection);
+        return ticket;
+    }
+    post([w = m_worker, ticket, ids] { w->emergencyStop(ticket, ids); });
+    return ticket;
+}
+
+void BusSession::scan(const ScanOptions &options)
+{
+    if (!m_worker) {
+        ScanSummary s;
+        s.error = QStringLiteral("the bus is not open");
+        QMetaObject::invokeMethod(
+            this, [this, s] { emit scanFinished(s); }, Qt::QueuedConnection);
+        return;
+    }
+    post([w = m_worker, options] { w->scan(options); });
+}
+
+void BusSession::cancelScan()
+{
+    post([w = m_worker] { w->cancelScan(); });
+}
+
+void BusSession::startPolling(const PollPlan &plan)
+{
+    post([w = m_worker, plan] { w->startPolling(plan); });
+}
+
+void BusSession::stopPolling()
+{
+    post([w = m_worker] { w->stopPolling(); });
+}
+
+void BusSession::setSeries(int id, protocol::Series series)
+{
+    // Update the local copy at once so that series() answers before the worker echoes it.
+    KnownMotor &m = m_motors[id];
+    m.id = id;
+    m.series = series;
+    post([w = m_worker, id, series] { w->setSeries(id, series); });
+}
+
+void BusSession::forgetMotors()
+{
+    m_motors.clear();
+    post([w = m_worker] { w->forgetMotors(); });
+}
+
+std::optional<protocol::Series> BusSession::series(int id) const
+{
+    const auto it = m_motors.constFind(id);
+    return it == m_motors.cend() ? std::nullopt : it->series;
+}
+
+void BusSession::setTrafficCapture(bool enabled)
+{
+    post([w = m_worker, enabled] { w->setTrafficCapture(enabled); });
+}
+
+void BusSession::resetStatistics()
+{
+    post([w = m_worker] { w->resetStatistics(); });
+}
+
+} // namespace lk::bus

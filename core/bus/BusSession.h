@@ -1,0 +1,120 @@
+#pragma once
+
+#include "BusConfig.h"
+#include "BusMetaTypes.h"
+#include "BusStatistics.h"
+#include "ConnectionStatus.h"
+#include "KnownMotor.h"
+#include "PollPlan.h"
+#include "Priority.h"
+#include "RequestResult.h"
+#include "ScanTypes.h"
+#include "TelemetrySample.h"
+#include "TrafficEvent.h"
+#include "TransportFactory.h"
+
+#include <transport/Transport.h>
+
+#include <QtCore/QObject>
+#include <QtCore/QVector>
+
+#include <optional>
+
+class QThread;
+
+namespace lk::bus {
+
+class BusWorker;
+
+/// The thread-safe face of one RS485 bus for the GUI and the CLI.
+///
+/// Lives in the caller's thread; owns a QThread on which a BusWorker and its transport run.
+/// Every call returns at once and is forwarded as a queued invocation; every result comes
+/// back as a signal carrying plain values. Call it only from the thread it lives in.
+/// Several sessions (several adapters) may be open at once.
+///
+/// Safety: the session does not apply soft limits. Every motion request (torque, speed,
+/// position, open loop, motor_run) must pass lk::safety::MotionGuard::check() (with
+/// series(id) and the user's soft limits) before send(); knownMotors()/series() say what
+/// each ID supports. emergencyStop() is the one motion-related call that needs no check.
+class BusSession : public QObject {
+    Q_OBJECT
+public:
+    explicit BusSession(QObject *parent = nullptr);
+    ~BusSession() override; ///< close(): pending requests end Cancelled, thread joined
+
+    /// Start the bus thread, create the transport there with `factory(baud)` and open it.
+    /// An open session is closed first. Progress arrives as connectionChanged/errorOccurred.
+    void open(TransportFactory factory, int baud = 115200, const BusConfig &config = {});
+    /// Reopen the existing transport after a disconnect (or a failed open).
+    void reconnect();
+    /// Close the transport, end pending requests as Cancelled, join the thread (bounded).
+    /// The final completions and the Closed state are delivered before it returns.
+    void close();
+    bool isRunning() const; ///< the bus thread exists (open() called, close() not yet)
+    ConnectionStatus connection() const { return m_connection; } ///< last reported state
+
+    void setConfig(const BusConfig &config);
+
+    /// Queue a request; returns its ticket, repeated in the requestCompleted it ends with.
+    /// `retries` < 0 uses BusConfig::retries. A closed session completes it as Disconnected.
+    quint64 send(const protocol::Request &request, Priority priority = Priority::Operator,
+                 int retries = -1);
+    /// Motor off to every ID in `ids` plus every known ID (all of 1..32 when none is known),
+    /// ahead of everything queued; queued motion commands are cancelled. Each motor_off ends
+    /// with a requestCompleted carrying the returned ticket, then emergencyStopFinished.
+    quint64 emergencyStop(const QVector<int> &ids = {});
+
+    void scan(const ScanOptions &options = {});
+    void cancelScan();
+
+    void startPolling(const PollPlan &plan);
+    void stopPolling();
+
+    /// Tell the bus how to decode replies from `id` (iq vs power); also makes `id` known.
+    void setSeries(int id, protocol::Series series);
+    /// Forget every known ID (e.g. before telling the bus a new set by hand).
+    void forgetMotors();
+    KnownMotors knownMotors() const { return m_motors; } ///< last reported by the worker
+    std::optional<protocol::Series> series(int id) const;
+
+    /// Deliver raw traffic (trafficCaptured) while enabled. Off by default.
+    void setTrafficCapture(bool enabled);
+    void resetStatistics();
+
+signals:
+    void connectionChanged(const lk::bus::ConnectionStatus &status);
+    /// Once per connect cycle for an unplug; once per failed open.
+    void errorOccurred(const lk::transport::TransportError &error);
+    /// The end of a send() or of one emergency motor_off. Polls and scan probes do not
+    /// report here: their replies arrive as telemetry and scan signals.
+    void requestCompleted(const lk::bus::RequestResult &result);
+    void emergencyStopFinished(quint64 ticket, const QVector<int> &acknowledged,
+                               const QVector<int> &silent);
+    void scanProgress(const lk::bus::ScanProgress &progress);
+    void motorFound(const lk::bus::FoundMotor &motor);
+    void scanFinished(const lk::bus::ScanSummary &summary);
+    void knownMotorsChanged(const lk::bus::KnownMotors &motors);
+    void pollingChanged(bool active); ///< polling started, stopped, suspended or resumed
+    /// Samples from every reply that carries telemetry (polls and operator commands alike).
+    void telemetryReceived(const lk::bus::TelemetryBatch &batch);
+    void statisticsUpdated(const lk::bus::BusStatistics &statistics);
+    void trafficCaptured(const lk::bus::TrafficBatch &batch);
+
+private:
+    void connectWorker();
+    void join();
+    template <typename F> void post(F &&f);
+    template <typename... Args>
+    void relay(void (BusWorker::*from)(Args...), void (BusSession::*to)(Args...));
+
+    QThread *m_thread = nullptr;
+    BusWorker *m_worker = nullptr; ///< lives on m_thread; touched only through post()
+    quint64 m_nextTicket = 1;
+    quint64 m_generation = 0; ///< signals of a worker from an earlier open() are ignored
+    ConnectionStatus m_connection;
+    KnownMotors m_motors;
+    BusConfig m_config;
+};
+
+} // namespace lk::bus

@@ -1,0 +1,612 @@
+#include "BusWorker.h"
+
+#include "BusLog.h"
+#include "BusTiming.h"
+#include "EmergencyStop.h"
+#include "Scanner.h"
+
+#include <protocol/Checksum.h>
+
+#include <QtCore/QMetaObject>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lk::bus {
+
+using protocol::Command;
+using protocol::CommandTable;
+using transport::Transport;
+
+namespace {
+constexpr int kTrafficIntervalMs = 50;
+
+bool movesMotor(Command c)
+{
+    return CommandTable::info(c).movesMotor;
+}
+
+QString commandText(const protocol::Request &r)
+{
+    return QStringLiteral("%1 (ID %2)").arg(CommandTable::name(r.command)).arg(r.id);
+}
+} // namespace
+
+BusWorker::BusWorker(TransportFactory factory, int baud, const BusConfig &config, QObject *parent)
+    : QObject(parent), m_factory(std::move(factory)), m_baud(baud), m_config(config),
+      m_timeout(config)
+{
+    m_clock.start();
+    m_matcher.setLocalEcho(config.localEcho);
+    m_replyTimer.setSingleShot(true);
+    m_replyTimer.setTimerType(Qt::PreciseTimer);
+    m_pollTimer.setSingleShot(true);
+    m_pollTimer.setTimerType(Qt::PreciseTimer);
+    m_telemetryTimer.setSingleShot(true);
+    connect(&m_replyTimer, &QTimer::timeout, this, &BusWorker::onTimeout);
+    connect(&m_pollTimer, &QTimer::timeout, this, &BusWorker::pump);
+    connect(&m_telemetryTimer, &QTimer::timeout, this, &BusWorker::flushTelemetry);
+    connect(&m_statsTimer, &QTimer::timeout, this, &BusWorker::emitStatistics);
+    connect(&m_trafficTimer, &QTimer::timeout, this, &BusWorker::flushTraffic);
+    m_poller.setSeriesLookup([this](int id) { return seriesOf(id); });
+    m_reported.baud = baud;
+}
+
+BusWorker::~BusWorker()
+{
+    shutdown(QStringLiteral("bus closed"));
+}
+
+void BusWorker::start()
+{
+    m_statsTimer.start(static_cast<int>(1000.0 / std::max(0.1, m_config.statisticsHz)));
+    attachTransport(m_factory ? m_factory(m_baud) : nullptr);
+    openTransport();
+}
+
+void BusWorker::attachTransport(std::unique_ptr<Transport> t)
+{
+    dropTransport();
+    m_transport = std::move(t);
+    if (!m_transport)
+        return;
+    connect(m_transport.get(), &Transport::bytesReceived, this, &BusWorker::onBytes);
+    connect(m_transport.get(), &Transport::stateChanged, this, &BusWorker::onTransportState);
+    connect(m_transport.get(), &Transport::errorOccurred, this, &BusWorker::onTransportError);
+}
+
+void BusWorker::dropTransport()
+{
+    if (!m_transport)
+        return;
+    // Silence it first: closing on purpose is not a disconnect to report or to fail on.
+    disconnect(m_transport.get(), nullptr, this, nullptr);
+    m_transport->close();
+    m_transport.reset();
+}
+
+bool BusWorker::openTransport()
+{
+    if (!m_transport) {
+        m_lastError = QStringLiteral("No transport: the transport factory returned nothing.");
+        reportConnection(m_lastError);
+        return false;
+    }
+    m_lastError.clear();
+    m_parser.reset();
+    const bool ok = m_transport->state() == Transport::State::Open || m_transport->open();
+    if (ok)
+        onTransportState(Transport::State::Open);
+    else
+        reportConnection(m_lastError);
+    return ok;
+}
+
+void BusWorker::reconnect()
+{
+    if (m_shutDown)
+        return;
+    if (!m_transport)
+        attachTransport(m_factory ? m_factory(m_baud) : nullptr);
+    openTransport();
+}
+
+bool BusWorker::reopenAt(int baud)
+{
+    if (m_shutDown)
+        return false;
+    abortInflight(RequestStatus::Cancelled,
+                  QStringLiteral("the port was reopened at another baud"));
+    m_matcher.reset();
+    m_baud = baud;
+    attachTransport(m_factory ? m_factory(baud) : nullptr);
+    return openTransport();
+}
+
+void BusWorker::shutdown(const QString &reason)
+{
+    if (m_shutDown)
+        return;
+    m_shutDown = true;
+    if (m_scanner)
+        m_scanner->cancel();
+    m_poller.clear();
+    failAll(RequestStatus::Cancelled, reason);
+    dropTransport();
+    for (QTimer *t :
+         {&m_replyTimer, &m_pollTimer, &m_telemetryTimer, &m_statsTimer, &m_trafficTimer})
+        t->stop();
+    flushTelemetry();
+    m_reported.state = Transport::State::Closed;
+    m_reported.reason = reason;
+    emit connectionChanged(m_reported);
+}
+
+Transport::State BusWorker::state() const
+{
+    return m_transport ? m_transport->state() : Transport::State::Closed;
+}
+
+int BusWorker::baud() const
+{
+    return m_transport ? m_transport->baud() : m_baud;
+}
+
+double BusWorker::now() const
+{
+    return static_cast<double>(m_clock.nsecsElapsed()) * 1e-9;
+}
+
+void BusWorker::onTransportError(const transport::TransportError &error)
+{
+    m_lastError = error.message;
+    recordTraffic(TrafficEvent::Kind::Note, {}, 0, 0, error.message);
+    emit errorOccurred(error);
+}
+
+void BusWorker::onTransportState(Transport::State state)
+{
+    if (m_shutDown)
+        return;
+    if (state == Transport::State::Open) {
+        m_parser.reset();
+        m_matcher.reset();
+        reportConnection();
+        if (m_pollSuspended && (m_config.resumePollingOnReconnect || !m_poller.isActive()))
+            setPollingSuspended(false);
+        schedulePump();
+        return;
+    }
+    const QString reason =
+        m_lastError.isEmpty() ? (state == Transport::State::Closed ? QStringLiteral("closed")
+                                                                   : QStringLiteral("disconnected"))
+                              : m_lastError;
+    if (m_scanner && m_scanner->isRunning() && !m_scanner->isReopening())
+        m_scanner->abort(reason);
+    failAll(RequestStatus::Disconnected, reason);
+    setPollingSuspended(true);
+    reportConnection(reason);
+}
+
+void BusWorker::reportConnection(const QString &reason)
+{
+    ConnectionStatus s;
+    s.state = state();
+    s.description = m_transport ? m_transport->description() : QString();
+    s.baud = baud();
+    s.reason = s.state == Transport::State::Open ? QString() : reason;
+    if (s.state == m_reported.state && s.description == m_reported.description &&
+        s.baud == m_reported.baud && s.reason == m_reported.reason)
+        return;
+    m_reported = s;
+    recordTraffic(TrafficEvent::Kind::Note, {}, 0, 0,
+                  QStringLiteral("%1: %2").arg(s.description,
+                                               s.isOpen() ? QStringLiteral("open") : s.reason));
+    emit connectionChanged(s);
+}
+
+void BusWorker::setConfig(const BusConfig &config)
+{
+    m_config = config;
+    m_timeout.setConfig(config);
+    m_matcher.setLocalEcho(config.localEcho);
+    if (m_statsTimer.isActive())
+        m_statsTimer.setInterval(static_cast<int>(1000.0 / std::max(0.1, config.statisticsHz)));
+}
+
+int BusWorker::retriesFor(const BusRequest &r) const
+{
+    return r.retries >= 0 ? r.retries : m_config.retries;
+}
+
+void BusWorker::submit(BusRequest request, Completion done)
+{
+    if (request.priority == Priority::Emergency && request.request.command != Command::MotorOff &&
+        request.request.command != Command::MotorStop)
+        request.priority = Priority::Operator; // nothing moves a motor from the emergency lane
+    Pending p;
+    p.req = request;
+    p.done = std::move(done);
+    if (m_shutDown || !isOpen()) {
+        const QString why =
+            m_lastError.isEmpty() ? QStringLiteral("the bus is not open") : m_lastError;
+        complete(std::move(p), RequestStatus::Disconnected, std::nullopt, why, 0);
+        return;
+    }
+    p.bytes = request.request.encode();
+    m_queue.push(std::move(p));
+    schedulePump();
+}
+
+int BusWorker::queuedCount() const
+{
+    return m_queue.size();
+}
+
+void BusWorker::schedulePump()
+{
+    if (m_pumpPosted || m_shutDown)
+        return;
+    m_pumpPosted = true;
+    // Posted, not called: completions may run inside the parser's callback or a transport
+    // signal, and the next write must not happen re-entrantly from there.
+    QMetaObject::invokeMethod(
+        this, [this] { pump(); }, Qt::QueuedConnection);
+}
+
+std::optional<BusWorker::Pending> BusWorker::takeNext()
+{
+    if (std::optional<Pending> p = m_queue.takeNext())
+        return p;
+    if (!m_poller.isActive() || m_pollSuspended || isScanning())
+        return std::nullopt;
+    const double t = now();
+    if (std::optional<protocol::Request> r = m_poller.next(t)) {
+        Pending p;
+        p.req.request = *r;
+        p.req.priority = Priority::Background;
+        p.req.retries = 0; // a missed sample is read again next cycle
+        p.req.origin = RequestOrigin::Poll;
+        p.bytes = r->encode();
+        p.done = [this](const RequestResult &res) { onPollDone(res); };
+        return p;
+    }
+    const double due = m_poller.nextDueTime(t);
+    if (std::isfinite(due))
+        m_pollTimer.start(std::max(0, static_cast<int>(std::ceil((due - t) * 1e3))));
+    return std::nullopt;
+}
+
+void BusWorker::pump()
+{
+    m_pumpPosted = false;
+    if (m_inflight || m_shutDown || !isOpen())
+        return;
+    if (std::optional<Pending> p = takeNext())
+        sendAttempt(std::move(*p));
+}
+
+void BusWorker::sendAttempt(Pending p)
+{
+    ++p.attempts;
+    const protocol::Request &r = p.req.request;
+    m_stats.requestSent(r.id, p.attempts > 1);
+    m_sentNs = m_clock.nsecsElapsed();
+    m_matcher.expect(r, p.bytes, m_sentNs);
+    recordTraffic(TrafficEvent::Kind::Sent, p.bytes, r.id, static_cast<quint8>(r.command));
+    const double timeoutS = m_timeout.timeoutS(r.command, baud());
+    const QByteArray bytes = p.bytes;
+    m_inflight = std::move(p);
+    m_replyTimer.start(std::max(1, static_cast<int>(std::ceil(timeoutS * 1e3))));
+    m_transport->write(bytes);
+}
+
+void BusWorker::onTimeout()
+{
+    if (!m_inflight)
+        return;
+    const protocol::Request &r = m_inflight->req.request;
+    m_stats.timedOut(r.id);
+    m_matcher.timedOut();
+    recordTraffic(TrafficEvent::Kind::Timeout, {}, r.id, static_cast<quint8>(r.command));
+    failAttempt(RequestStatus::Timeout, QStringLiteral("no reply to %1 after %2 attempt(s)")
+                                            .arg(commandText(r))
+                                            .arg(m_inflight->attempts));
+}
+
+void BusWorker::failAttempt(RequestStatus status, const QString &reason)
+{
+    Pending p = std::move(*m_inflight);
+    m_inflight.reset();
+    m_matcher.clear();
+    m_replyTimer.stop();
+    if (!p.noRetry && p.attempts <= retriesFor(p.req)) {
+        // Back to the head of its own lane: an emergency stop still overtakes a retry.
+        m_queue.pushFront(std::move(p));
+    } else {
+        complete(std::move(p), status, std::nullopt, reason, 0);
+    }
+    schedulePump();
+}
+
+void BusWorker::complete(Pending p, RequestStatus status, std::optional<protocol::Reply> reply,
+                         const QString &reason, double latencyS)
+{
+    RequestResult r;
+    r.ticket = p.req.ticket;
+    r.request = p.req.request;
+    r.priority = p.req.priority;
+    r.status = status;
+    r.reply = std::move(reply);
+    r.reason = reason;
+    r.latencyMs = latencyS * 1e3;
+    r.attempts = p.attempts;
+    if (p.done)
+        p.done(r);
+    else
+        emit requestCompleted(r);
+}
+
+void BusWorker::cancelQueued(const std::function<bool(const Pending &)> &which,
+                             RequestStatus status, const QString &reason)
+{
+    std::vector<Pending> out = m_queue.takeIf(which);
+    // Completions run after the queues are consistent: they may submit again.
+    for (Pending &p : out)
+        complete(std::move(p), status, std::nullopt, reason, 0);
+}
+
+void BusWorker::abortInflight(RequestStatus status, const QString &reason)
+{
+    if (!m_inflight)
+        return;
+    Pending p = std::move(*m_inflight);
+    m_inflight.reset();
+    m_matcher.clear();
+    m_replyTimer.stop();
+    complete(std::move(p), status, std::nullopt, reason, 0);
+}
+
+void BusWorker::failAll(RequestStatus status, const QString &reason)
+{
+    abortInflight(status, reason);
+    cancelQueued([](const Pending &) { return true; }, status, reason);
+}
+
+void BusWorker::onBytes(const QByteArray &bytes)
+{
+    m_parser.feed(bytes, [this](const protocol::ParseEvent &ev) { onParseEvent(ev); });
+}
+
+void BusWorker::onParseEvent(const protocol::ParseEvent &ev)
+{
+    recordParseEvent(ev);
+    using V = ReplyMatcher::Verdict;
+    const protocol::Frame &f = ev.frame;
+    ReplyMatcher::Outcome out =
+        m_matcher.classify(ev, m_motors.decodeContext(f.id), m_clock.nsecsElapsed());
+    switch (out.verdict) {
+    case V::Fault:
+        m_stats.parseFault(ev);
+        return;
+    case V::CorruptReply:
+        // Retry now rather than wait for the timeout.
+        m_stats.parseFault(ev);
+        failAttempt(RequestStatus::Error, QStringLiteral("corrupt reply to %1 (bad data checksum)")
+                                              .arg(commandText(m_inflight->req.request)));
+        return;
+    case V::LocalEcho:
+        m_stats.localEcho();
+        return;
+    case V::Undecodable:
+        m_stats.undecodable(f.id);
+        failAttempt(
+            RequestStatus::Error,
+            QStringLiteral("undecodable reply to %1").arg(commandText(m_inflight->req.request)));
+        return;
+    case V::LateReply:
+        // The link is slower than the margin assumed: let the margin learn from it.
+        m_stats.lateReply(f.id);
+        m_timeout.addReply(static_cast<Command>(f.command), baud(), out.lateLatencyS);
+        return;
+    case V::Unexpected:
+        m_stats.unexpectedFrame(f.id);
+        return;
+    case V::Reply:
+        completeWithReply(std::move(*out.reply));
+        return;
+    }
+}
+
+void BusWorker::completeWithReply(protocol::Reply reply)
+{
+    const double latency = static_cast<double>(m_clock.nsecsElapsed() - m_sentNs) * 1e-9;
+    m_stats.replyReceived(reply.id, latency);
+    m_timeout.addReply(reply.command, baud(), latency);
+    Pending p = std::move(*m_inflight);
+    m_inflight.reset();
+    m_matcher.clear();
+    m_replyTimer.stop();
+    noteReply(reply, now());
+    complete(std::move(p), RequestStatus::Ok, std::move(reply), {}, latency);
+    schedulePump();
+}
+
+void BusWorker::noteReply(const protocol::Reply &reply, double time)
+{
+    if (m_motors.noteSeen(reply.id))
+        emit knownMotorsChanged(m_motors.all());
+    std::optional<TelemetrySample> s = TelemetrySample::fromReply(reply, time);
+    if (!s)
+        return;
+    m_telemetry.append(*s);
+    if (!m_telemetryTimer.isActive())
+        m_telemetryTimer.start(static_cast<int>(1000.0 / std::max(1.0, m_config.telemetryHz)));
+}
+
+void BusWorker::flushTelemetry()
+{
+    if (m_telemetry.isEmpty())
+        return;
+    TelemetryBatch batch;
+    batch.swap(m_telemetry);
+    emit telemetryReceived(batch);
+}
+
+void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids)
+{
+    auto stop = std::make_shared<EmergencyStop>(ticket, m_motors.emergencyTargets(ids),
+                                                m_config.emergencyRetries);
+    const QVector<BusRequest> offs = stop->requests();
+    qCInfo(lcBus) << "emergency stop to" << offs.size() << "ID(s)";
+    cancelQueued([](const Pending &p) { return movesMotor(p.req.request.command); },
+                 RequestStatus::Cancelled, QStringLiteral("cancelled by emergency stop"));
+    if (m_inflight && movesMotor(m_inflight->req.request.command))
+        m_inflight->noRetry = true; // it may finish, but it is not sent again
+    for (const BusRequest &r : offs) {
+        submit(r, [this, stop](const RequestResult &res) {
+            emit requestCompleted(res);
+            if (stop->record(res))
+                emit emergencyStopFinished(stop->ticket(), stop->acknowledged(), stop->silent());
+        });
+    }
+}
+
+void BusWorker::scan(const ScanOptions &options)
+{
+    if (!m_scanner) {
+        m_scanner = new Scanner(*this, this);
+        connect(m_scanner, &Scanner::progress, this, &BusWorker::scanProgress);
+        connect(m_scanner, &Scanner::found, this, &BusWorker::motorFound);
+        connect(m_scanner, &Scanner::finished, this, [this](const ScanSummary &s) {
+            emit scanFinished(s);
+            schedulePump(); // polling paused for the scan resumes
+        });
+    }
+    m_scanner->start(options);
+}
+
+void BusWorker::cancelScan()
+{
+    if (m_scanner)
+        m_scanner->cancel();
+    cancelQueued([](const Pending &p) { return p.req.origin == RequestOrigin::Scan; },
+                 RequestStatus::Cancelled, QStringLiteral("scan cancelled"));
+}
+
+bool BusWorker::isScanning() const
+{
+    return m_scanner && m_scanner->isRunning();
+}
+
+void BusWorker::startPolling(const PollPlan &plan)
+{
+    m_poller.setPlan(plan, now());
+    m_pollSuspended = !isOpen();
+    emit pollingChanged(m_poller.isActive() && !m_pollSuspended);
+    schedulePump();
+}
+
+void BusWorker::stopPolling()
+{
+    const bool was = m_poller.isActive() && !m_pollSuspended;
+    m_poller.clear();
+    m_pollTimer.stop();
+    m_pollSuspended = false;
+    if (was)
+        emit pollingChanged(false);
+}
+
+void BusWorker::setPollingSuspended(bool suspended)
+{
+    if (!m_poller.isActive() || m_pollSuspended == suspended)
+        return;
+    m_pollSuspended = suspended;
+    if (suspended)
+        m_pollTimer.stop();
+    emit pollingChanged(!suspended);
+}
+
+void BusWorker::onPollDone(const RequestResult &r)
+{
+    m_poller.completed(r.request.id, r.request.command);
+    schedulePump();
+}
+
+std::optional<protocol::Series> BusWorker::seriesOf(int id) const
+{
+    return m_motors.series(id);
+}
+
+void BusWorker::setSeries(int id, protocol::Series series)
+{
+    if (m_motors.setSeries(id, series))
+        emit knownMotorsChanged(m_motors.all());
+}
+
+void BusWorker::learnModel(int id, const protocol::ModelInfo &model,
+                           std::optional<protocol::Series> series)
+{
+    if (m_motors.learnModel(id, model, series))
+        emit knownMotorsChanged(m_motors.all());
+}
+
+void BusWorker::forgetMotors()
+{
+    forgetMotors(protocol::kMinId, protocol::kMaxId);
+}
+
+void BusWorker::forgetMotors(int firstId, int lastId)
+{
+    if (m_motors.forget(firstId, lastId))
+        emit knownMotorsChanged(m_motors.all());
+}
+
+void BusWorker::resetStatistics()
+{
+    m_stats.reset();
+}
+
+BusStatistics BusWorker::statisticsSnapshot()
+{
+    BusStatistics s = m_stats.snapshot(now());
+    s.baud = baud();
+    s.timeoutMarginMs = currentMarginMs();
+    s.pollLimitPerSecond = m_poller.isActive() ? m_poller.busLimitPerSecond(baud()) : 0;
+    return s;
+}
+
+void BusWorker::emitStatistics()
+{
+    emit statisticsUpdated(statisticsSnapshot());
+}
+
+void BusWorker::setTrafficCapture(bool enabled)
+{
+    m_traffic.setEnabled(enabled);
+    if (enabled)
+        m_trafficTimer.start(kTrafficIntervalMs);
+    else
+        m_trafficTimer.stop();
+}
+
+void BusWorker::flushTraffic()
+{
+    if (m_traffic.hasPending())
+        emit trafficCaptured(m_traffic.take(now()));
+}
+
+void BusWorker::recordParseEvent(const protocol::ParseEvent &ev)
+{
+    if (m_traffic.isEnabled())
+        m_traffic.recordParseEvent(ev, now());
+}
+
+void BusWorker::recordTraffic(TrafficEvent::Kind kind, const QByteArray &bytes, int id,
+                              quint8 command, const QString &text)
+{
+    if (m_traffic.isEnabled())
+        m_traffic.record(kind, now(), bytes, id, command, text);
+}
+
+} // namespace lk::bus

@@ -1,0 +1,178 @@
+#pragma once
+
+#include "AdaptiveTimeout.h"
+#include "BusConfig.h"
+#include "BusRequest.h"
+#include "BusStatistics.h"
+#include "ConnectionStatus.h"
+#include "KnownMotor.h"
+#include "MotorRegistry.h"
+#include "PollPlan.h"
+#include "PollScheduler.h"
+#include "Priority.h"
+#include "ReplyMatcher.h"
+#include "RequestQueue.h"
+#include "RequestResult.h"
+#include "ScanTypes.h"
+#include "StatisticsCollector.h"
+#include "TelemetrySample.h"
+#include "TrafficEvent.h"
+#include "TrafficRecorder.h"
+#include "TransportFactory.h"
+
+#include <protocol/StreamParser.h>
+#include <transport/Transport.h>
+
+#include <QtCore/QElapsedTimer>
+#include <QtCore/QObject>
+#include <QtCore/QTimer>
+
+#include <functional>
+#include <memory>
+#include <optional>
+
+namespace lk::bus {
+
+class Scanner;
+
+/// The bus engine. Lives on the bus thread and owns the transport (made by the factory on
+/// that thread). Half duplex: exactly one request on the wire; replies are matched by command
+/// and ID; the timeout comes from BusTiming plus an adaptive margin; queues run Emergency >
+/// Operator > Background, then the poll scheduler fills idle time. Every request completes
+/// exactly once: through its callback when it has one, else through requestCompleted.
+///
+/// Local echo: a frame byte-identical to the request just sent is skipped when its layout is
+/// a request's (it cannot be the reply). For commands whose reply is an echo of the request
+/// (motor_off, ...) the first identical frame is taken as the reply, unless
+/// BusConfig::localEcho says the adapter echoes, in which case the first one is skipped.
+///
+/// All public functions must be called on the worker's thread (BusSession posts them).
+class BusWorker : public QObject {
+    Q_OBJECT
+public:
+    using Completion = PendingRequest::Completion;
+
+    BusWorker(TransportFactory factory, int baud, const BusConfig &config,
+              QObject *parent = nullptr);
+    ~BusWorker() override;
+
+    /// Create the transport at the initial baud and open it.
+    void start();
+    /// Reopen the current transport (after a disconnect or a failed open).
+    void reconnect();
+    /// Replace the transport by a new one from the factory at `baud` and open it.
+    bool reopenAt(int baud);
+    /// Cancel everything, close and delete the transport, stop timers. Idempotent.
+    void shutdown(const QString &reason);
+
+    void setConfig(const BusConfig &config);
+    void submit(BusRequest request, Completion done = {});
+    void emergencyStop(quint64 ticket, const QVector<int> &ids);
+    void scan(const ScanOptions &options);
+    void cancelScan();
+    bool isScanning() const;
+    void startPolling(const PollPlan &plan);
+    void stopPolling();
+    void setSeries(int id, protocol::Series series);
+    void learnModel(int id, const protocol::ModelInfo &model,
+                    std::optional<protocol::Series> series);
+    void forgetMotors();
+    void forgetMotors(int firstId, int lastId);
+    void setTrafficCapture(bool enabled);
+    void resetStatistics();
+
+    const KnownMotors &knownMotors() const { return m_motors.all(); }
+    std::optional<protocol::Series> seriesOf(int id) const;
+    transport::Transport::State state() const;
+    bool isOpen() const { return state() == transport::Transport::State::Open; }
+    int baud() const;
+    double now() const; ///< seconds since the worker was made (the session clock)
+    int queuedCount() const;
+    bool isBusy() const { return m_inflight.has_value(); }
+    double currentMarginMs() const { return m_timeout.marginS() * 1e3; }
+    /// The statistics now (also emitted by statisticsUpdated at BusConfig::statisticsHz).
+    BusStatistics statisticsSnapshot();
+
+signals:
+    void connectionChanged(const lk::bus::ConnectionStatus &status);
+    void errorOccurred(const lk::transport::TransportError &error);
+    void requestCompleted(const lk::bus::RequestResult &result);
+    void emergencyStopFinished(quint64 ticket, const QVector<int> &acknowledged,
+                               const QVector<int> &silent);
+    void scanProgress(const lk::bus::ScanProgress &progress);
+    void motorFound(const lk::bus::FoundMotor &motor);
+    void scanFinished(const lk::bus::ScanSummary &summary);
+    void knownMotorsChanged(const lk::bus::KnownMotors &motors);
+    void pollingChanged(bool active);
+    void telemetryReceived(const lk::bus::TelemetryBatch &batch);
+    void statisticsUpdated(const lk::bus::BusStatistics &statistics);
+    void trafficCaptured(const lk::bus::TrafficBatch &batch);
+
+private:
+    using Pending = PendingRequest;
+
+    bool openTransport();
+    void attachTransport(std::unique_ptr<transport::Transport> t);
+    void dropTransport();
+    void onBytes(const QByteArray &bytes);
+    void onParseEvent(const protocol::ParseEvent &ev);
+    void completeWithReply(protocol::Reply reply);
+    void recordParseEvent(const protocol::ParseEvent &ev);
+    void onTransportState(transport::Transport::State state);
+    void onTransportError(const transport::TransportError &error);
+    void reportConnection(const QString &reason = {});
+    void schedulePump();
+    void pump();
+    std::optional<Pending> takeNext();
+    void sendAttempt(Pending p);
+    void onTimeout();
+    void failAttempt(RequestStatus status, const QString &reason);
+    void complete(Pending p, RequestStatus status, std::optional<protocol::Reply> reply,
+                  const QString &reason, double latencyS);
+    void cancelQueued(const std::function<bool(const Pending &)> &which, RequestStatus status,
+                      const QString &reason);
+    void abortInflight(RequestStatus status, const QString &reason);
+    void failAll(RequestStatus status, const QString &reason);
+    void onPollDone(const RequestResult &r);
+    void noteReply(const protocol::Reply &reply, double time);
+    void flushTelemetry();
+    void emitStatistics();
+    void flushTraffic();
+    void recordTraffic(TrafficEvent::Kind kind, const QByteArray &bytes, int id, quint8 command,
+                       const QString &text = {});
+    void setPollingSuspended(bool suspended);
+    int retriesFor(const BusRequest &r) const;
+
+    TransportFactory m_factory;
+    int m_baud;
+    BusConfig m_config;
+    std::unique_ptr<transport::Transport> m_transport;
+    protocol::StreamParser m_parser;
+    QElapsedTimer m_clock;
+
+    RequestQueue m_queue;
+    std::optional<Pending> m_inflight;
+    qint64 m_sentNs = 0;
+    ReplyMatcher m_matcher;
+    bool m_pumpPosted = false;
+    bool m_shutDown = false;
+
+    AdaptiveTimeout m_timeout;
+    StatisticsCollector m_stats;
+    TrafficRecorder m_traffic;
+    PollScheduler m_poller;
+    bool m_pollSuspended = false;
+    Scanner *m_scanner = nullptr;
+    MotorRegistry m_motors;
+    TelemetryBatch m_telemetry;
+    ConnectionStatus m_reported;
+    QString m_lastError;
+
+    QTimer m_replyTimer{this}; // children: they move to the bus thread with the worker
+    QTimer m_pollTimer{this};
+    QTimer m_telemetryTimer{this};
+    QTimer m_statsTimer{this};
+    QTimer m_trafficTimer{this};
+};
+
+} // namespace lk::bus

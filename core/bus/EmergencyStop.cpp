@@ -1,0 +1,35 @@
+#include "EmergencyStop.h"
+
+#include <algorithm>
+
+namespace lk::bus {
+
+EmergencyStop::EmergencyStop(quint64 ticket, QVector<int> targets, int retries)
+    : m_ticket(ticket), m_targets(std::move(targets)), m_retries(std::max(0, retries)),
+      m_remaining(m_targets.size())
+{
+}
+
+QVector<BusRequest> EmergencyStop::requests() const
+{
+    QVector<BusRequest> out;
+    for (int id : m_targets) {
+        BusRequest r;
+        r.ticket = m_ticket;
+        r.request.command = protocol::Command::MotorOff;
+        r.request.id = static_cast<quint8>(id);
+        r.priority = Priority::Emergency;
+        r.retries = m_retries;
+        r.origin = RequestOrigin::Emergency;
+        out.append(r);
+    }
+    return out;
+}
+
+bool EmergencyStop::record(const RequestResult &result)
+{
+    (result.ok() ? m_acknowledged : m_silent).append(result.request.id);
+    return --m_remaining == 0;
+}
+
+} // namespace lk::bus

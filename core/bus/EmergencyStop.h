@@ -1,0 +1,32 @@
+#pragma once
+
+#include "BusRequest.h"
+#include "RequestResult.h"
+
+#include <QtCore/QVector>
+
+namespace lk::bus {
+
+/// One emergency stop: the motor_off requests it sends (Emergency lane) and the tally of
+/// which IDs acknowledged and which stayed silent.
+class EmergencyStop {
+public:
+    EmergencyStop(quint64 ticket, QVector<int> targets, int retries);
+
+    QVector<BusRequest> requests() const;
+    /// Count one motor_off result; true when it was the last one.
+    bool record(const RequestResult &result);
+
+    quint64 ticket() const { return m_ticket; }
+    const QVector<int> &acknowledged() const { return m_acknowledged; }
+    const QVector<int> &silent() const { return m_silent; }
+
+private:
+    quint64 m_ticket;
+    QVector<int> m_targets;
+    int m_retries;
+    int m_remaining;
+    QVector<int> m_acknowledged, m_silent;
+};
+
+} // namespace lk::bus

@@ -1,0 +1,93 @@
+#include "MotorRegistry.h"
+
+#include <protocol/Checksum.h>
+
+#include <algorithm>
+
+namespace lk::bus {
+
+namespace {
+bool validId(int id)
+{
+    return id >= protocol::kMinId && id <= protocol::kMaxId;
+}
+} // namespace
+
+std::optional<protocol::Series> MotorRegistry::series(int id) const
+{
+    const auto it = m_motors.constFind(id);
+    return it == m_motors.cend() ? std::nullopt : it->series;
+}
+
+protocol::DecodeContext MotorRegistry::decodeContext(int id) const
+{
+    protocol::DecodeContext c;
+    const auto it = m_motors.constFind(id);
+    if (it != m_motors.cend()) {
+        c.series = it->series.value_or(protocol::Series::MF);
+        c.generation = it->generation;
+    }
+    return c;
+}
+
+QVector<int> MotorRegistry::emergencyTargets(const QVector<int> &ids) const
+{
+    QVector<int> targets;
+    for (int id : ids) {
+        if (validId(id))
+            targets.append(id);
+    }
+    targets.append(m_motors.keys().toVector());
+    if (targets.isEmpty()) {
+        for (int id = protocol::kMinId; id <= protocol::kMaxId; ++id)
+            targets.append(id);
+    }
+    std::sort(targets.begin(), targets.end());
+    targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+    return targets;
+}
+
+bool MotorRegistry::noteSeen(int id)
+{
+    if (!validId(id) || m_motors.contains(id))
+        return false;
+    KnownMotor m;
+    m.id = id;
+    m_motors.insert(id, m);
+    return true;
+}
+
+bool MotorRegistry::setSeries(int id, protocol::Series series)
+{
+    if (!validId(id))
+        return false;
+    KnownMotor &m = m_motors[id];
+    const bool changed = m.id != id || m.series != series;
+    m.id = id;
+    m.series = series;
+    return changed;
+}
+
+bool MotorRegistry::learnModel(int id, const protocol::ModelInfo &model,
+                               std::optional<protocol::Series> series)
+{
+    if (!validId(id))
+        return false;
+    KnownMotor &m = m_motors[id];
+    m.id = id;
+    m.model = model;
+    m.generation = model.generation;
+    if (series)
+        m.series = series;
+    return true;
+}
+
+bool MotorRegistry::forget(int firstId, int lastId)
+{
+    bool changed = false;
+    for (int id = firstId; id <= lastId; ++id)
+        changed = m_motors.remove(id) > 0 || changed;
+    return changed;
+}
+
+} // namespace lk::bus

@@ -1,0 +1,37 @@
+#pragma once
+
+#include "KnownMotor.h"
+
+#include <protocol/Series.h>
+
+#include <QtCore/QVector>
+
+#include <optional>
+
+namespace lk::bus {
+
+/// The IDs a bus knows (scan, setSeries, any reply) and how to decode each one's replies.
+/// Mutators return whether anything changed, so the owner signals only real changes.
+class MotorRegistry {
+public:
+    const KnownMotors &all() const { return m_motors; }
+    bool contains(int id) const { return m_motors.contains(id); }
+    std::optional<protocol::Series> series(int id) const;
+    /// Series and generation for the decoder; unknown IDs decode as MF (iq), V2.3.
+    protocol::DecodeContext decodeContext(int id) const;
+
+    /// Who an emergency stop must reach: `ids` (valid ones) plus every known ID, ascending;
+    /// every ID 1..32 when that is empty, because reaching all beats reaching none.
+    QVector<int> emergencyTargets(const QVector<int> &ids) const;
+
+    bool noteSeen(int id);
+    bool setSeries(int id, protocol::Series series);
+    bool learnModel(int id, const protocol::ModelInfo &model,
+                    std::optional<protocol::Series> series);
+    bool forget(int firstId, int lastId);
+
+private:
+    KnownMotors m_motors;
+};
+
+} // namespace lk::bus

@@ -1,0 +1,73 @@
+#pragma once
+
+#include <protocol/Reply.h>
+#include <protocol/Request.h>
+#include <protocol/StreamParser.h>
+
+#include <QtCore/QByteArray>
+
+#include <optional>
+
+namespace lk::bus {
+
+/// Decides what a parsed frame or fault means for the one request on the wire: its reply,
+/// our own bytes read back (local echo), a corrupt or undecodable reply, a late reply to the
+/// request that timed out before, or an unexpected frame. Pure logic, no I/O; times are
+/// nanoseconds of the worker's clock.
+///
+/// Local echo: a frame byte-identical to the request is skipped when its layout is a request's
+/// (it cannot be the reply). For commands whose reply is an echo (motor_off, write_pid_ram...)
+/// the first identical frame is the reply, unless localEcho is set (the adapter echoes), in
+/// which case the first is skipped and the second taken.
+class ReplyMatcher {
+public:
+    enum class Verdict {
+        Reply,
+        LocalEcho,
+        CorruptReply,
+        Undecodable,
+        LateReply,
+        Unexpected,
+        Fault
+    };
+    struct Outcome {
+        Verdict verdict = Verdict::Fault;
+        std::optional<protocol::Reply> reply; ///< Reply only
+        double lateLatencyS = 0;              ///< LateReply only: since the timed-out send
+    };
+    static constexpr qint64 kLateWindowNs = 1'000'000'000; ///< later than 1 s is noise
+
+    void setLocalEcho(bool on) { m_localEcho = on; }
+    /// A request went on the wire at `sentNs`.
+    void expect(const protocol::Request &request, const QByteArray &bytes, qint64 sentNs);
+    /// The request ended (reply, failure or cancellation): nothing is expected any more.
+    void clear() { m_expected.reset(); }
+    /// The request on the wire timed out: a reply to it may still arrive late.
+    void timedOut();
+    /// The link was reopened: nothing old can arrive any more.
+    void reset();
+    bool isExpecting() const { return m_expected.has_value(); }
+
+    Outcome classify(const protocol::ParseEvent &event, const protocol::DecodeContext &context,
+                     qint64 nowNs);
+
+private:
+    struct Expected {
+        quint8 command = 0;
+        quint8 id = 0;
+        QByteArray bytes;
+        qint64 sentNs = 0;
+        bool echoSkipped = false;
+    };
+    bool matches(const std::optional<Expected> &e, const protocol::Frame &f) const
+    {
+        return e && e->id == f.id && e->command == f.command;
+    }
+    bool isLocalEcho(const protocol::ParseEvent &event);
+
+    std::optional<Expected> m_expected;
+    std::optional<Expected> m_timedOut;
+    bool m_localEcho = false;
+};
+
+} // namespace lk::bus

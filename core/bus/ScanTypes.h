@@ -1,0 +1,57 @@
+#pragma once
+
+#include <protocol/Series.h>
+#include <protocol/Values.h>
+
+#include <QtCore/QMetaType>
+#include <QtCore/QString>
+#include <QtCore/QVector>
+
+#include <optional>
+
+namespace lk::bus {
+
+/// What to scan. IDs and bauds are checked (1..32, the nine LK bauds).
+struct ScanOptions {
+    int firstId = 1;
+    int lastId = 32;
+    bool sweepBauds = false; ///< reopen the transport at each baud in `bauds`
+    QVector<int> bauds;      ///< empty: all nine LK bauds, fastest last
+    /// Extra read_model attempts for a silent ID. Silence means "absent", so 0 keeps a scan
+    /// fast; a corrupt reply (someone is there) is always probed again, up to twice.
+    int retries = 0;
+    bool readState = true; ///< also read_state1 from each ID that answers
+};
+
+/// Where a scan is (BusSession::scanProgress), after each probed ID.
+struct ScanProgress {
+    int baud = 0;
+    int id = 0;    ///< the ID just probed
+    int done = 0;  ///< probes finished, over all bauds
+    int total = 0; ///< probes planned, over all bauds
+    int found = 0; ///< drives found so far
+};
+
+/// A drive that answered read_model.
+struct FoundMotor {
+    int id = 0;
+    int baud = 0;
+    protocol::ModelInfo model;
+    std::optional<protocol::Series> series; ///< inferred from the model names; nullopt: unknown
+    std::optional<protocol::State1> state1; ///< from read_state1, when it answered
+};
+
+/// The end of a scan (BusSession::scanFinished); always emitted once per scan().
+struct ScanSummary {
+    QVector<FoundMotor> motors; ///< ascending baud then ID
+    bool cancelled = false;
+    QString error;     ///< why the scan could not run or stopped (empty when it ran)
+    int finalBaud = 0; ///< the transport's baud after the scan
+    double elapsedS = 0;
+};
+
+} // namespace lk::bus
+
+Q_DECLARE_METATYPE(lk::bus::ScanProgress)
+Q_DECLARE_METATYPE(lk::bus::FoundMotor)
+Q_DECLARE_METATYPE(lk::bus::ScanSummary)

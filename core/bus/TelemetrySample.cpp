@@ -1,0 +1,73 @@
+#include "TelemetrySample.h"
+
+#include <type_traits>
+
+namespace lk::bus {
+
+namespace {
+void fill(TelemetrySample &s, const protocol::State1 &v)
+{
+    s.temperatureC = v.temperatureC;
+    s.voltageV = v.voltageV();
+    s.errorState = v.errorState;
+    s.fields |= TelemetryField::Temperature | TelemetryField::Voltage | TelemetryField::ErrorState;
+}
+
+void fill(TelemetrySample &s, const protocol::State2 &v)
+{
+    s.temperatureC = v.temperatureC;
+    s.speedDps = v.speedDps;
+    s.encoder = v.encoder;
+    s.fields |= TelemetryField::Temperature | TelemetryField::Speed | TelemetryField::Encoder;
+    if (v.isPower) {
+        s.power = v.torqueRaw;
+        s.fields |= TelemetryField::Power;
+    } else {
+        s.iqA = v.iqA();
+        s.fields |= TelemetryField::IqA;
+    }
+}
+
+void fill(TelemetrySample &s, const protocol::State3 &v)
+{
+    s.temperatureC = v.temperatureC;
+    s.iaA = v.iaA();
+    s.ibA = v.ibA();
+    s.icA = v.icA();
+    s.fields |= TelemetryField::Temperature | TelemetryField::PhaseCurrents;
+}
+
+void fill(TelemetrySample &s, const protocol::MultiTurnAngle &v)
+{
+    s.multiTurnDeg = v.degrees();
+    s.fields |= TelemetryField::MultiTurn;
+}
+
+void fill(TelemetrySample &s, const protocol::SingleTurnAngle &v)
+{
+    s.singleTurnDeg = v.degrees();
+    s.fields |= TelemetryField::SingleTurn;
+}
+
+void fill(TelemetrySample &s, const protocol::EncoderReading &v)
+{
+    s.encoder = v.encoder;
+    s.fields |= TelemetryField::Encoder;
+}
+
+template <typename T> void fill(TelemetrySample &, const T &) {} // no telemetry in it
+} // namespace
+
+std::optional<TelemetrySample> TelemetrySample::fromReply(const protocol::Reply &reply, double time)
+{
+    TelemetrySample s;
+    s.id = reply.id;
+    s.time = time;
+    s.source = reply.command;
+    std::visit([&s](const auto &v) { fill(s, v); }, reply.payload);
+    if (!s.fields)
+        return std::nullopt;
+    return s;
+}
+
+} // namespace lk::bus

@@ -1,0 +1,58 @@
+#pragma once
+
+#include <protocol/Reply.h>
+
+#include <QtCore/QFlags>
+#include <QtCore/QMetaType>
+#include <QtCore/QVector>
+
+#include <optional>
+
+namespace lk::bus {
+
+/// Which fields of a TelemetrySample carry a value.
+enum class TelemetryField : quint16 {
+    Temperature = 0x0001,
+    IqA = 0x0002,   ///< MF/MG/MH torque current
+    Power = 0x0004, ///< MS: relative power -1000..1000 instead of iq
+    Speed = 0x0008,
+    Encoder = 0x0010,
+    Voltage = 0x0020,
+    ErrorState = 0x0040,
+    MultiTurn = 0x0080,
+    PhaseCurrents = 0x0100,
+    SingleTurn = 0x0200,
+};
+Q_DECLARE_FLAGS(TelemetryFields, TelemetryField)
+Q_DECLARE_OPERATORS_FOR_FLAGS(TelemetryFields)
+
+/// One reply's worth of telemetry from one drive, in physical units, with a host timestamp.
+/// Only the fields named in `fields` are meaningful.
+struct TelemetrySample {
+    int id = 0;
+    double time = 0; ///< seconds since the session started (steady clock, host side)
+    protocol::Command source = protocol::Command::ReadState2; ///< the reply it came from
+    TelemetryFields fields;
+    int temperatureC = 0;
+    double iqA = 0;
+    int power = 0;
+    double speedDps = 0;
+    int encoder = 0;
+    double voltageV = 0;
+    int errorState = 0;
+    double multiTurnDeg = 0; ///< rotor degrees
+    double singleTurnDeg = 0;
+    double iaA = 0, ibA = 0, icA = 0;
+    bool has(TelemetryField f) const { return fields.testFlag(f); }
+
+    /// The sample a reply carries, or nullopt for replies without telemetry (model, PID, ack).
+    static std::optional<TelemetrySample> fromReply(const protocol::Reply &reply, double time);
+};
+
+/// Samples delivered together (at most ~60 batches per second), in arrival order.
+using TelemetryBatch = QVector<TelemetrySample>;
+
+} // namespace lk::bus
+
+Q_DECLARE_METATYPE(lk::bus::TelemetrySample)
+Q_DECLARE_METATYPE(lk::bus::TelemetryBatch)

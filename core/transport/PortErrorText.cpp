@@ -1,0 +1,51 @@
+#include "PortErrorText.h"
+
+namespace lk::transport {
+
+namespace {
+QString baseText(TransportError::Kind kind, const QString &port, int baud)
+{
+    using Kind = TransportError::Kind;
+    switch (kind) {
+    case Kind::None:
+        return {};
+    case Kind::NoSuchPort:
+        return QStringLiteral("No serial port %1. Is the adapter plugged in?").arg(port);
+    case Kind::PermissionDenied:
+        return QStringLiteral(
+                   "No permission to open %1. Add your user to the serial port group "
+                   "(`sudo usermod -aG dialout $USER` on Debian/Ubuntu, group `uucp` on Arch), "
+                   "then log out and in again.")
+            .arg(port);
+    case Kind::PortBusy:
+        return QStringLiteral("%1 is in use by another program (a terminal, another lkstudio, "
+                              "ModemManager?). Close it and try again; `fuser %1` shows who "
+                              "holds it.")
+            .arg(port);
+    case Kind::Unplugged:
+        return QStringLiteral("The serial adapter %1 was disconnected (unplugged or reset). "
+                              "Plug it back in and reconnect.")
+            .arg(port);
+    case Kind::BadSettings:
+        return QStringLiteral("%1 refused %2 baud 8N1. Try another baud or another adapter.")
+            .arg(port)
+            .arg(baud);
+    case Kind::IoError:
+        return QStringLiteral("Serial port %1 failed.").arg(port);
+    }
+    return {};
+}
+} // namespace
+
+TransportError portError(TransportError::Kind kind, const QString &port, int baud,
+                         const QString &detail)
+{
+    TransportError e;
+    e.kind = kind;
+    e.message = baseText(kind, port, baud);
+    if (kind != TransportError::Kind::None && !detail.isEmpty())
+        e.message += QStringLiteral(" (%1)").arg(detail);
+    return e;
+}
+
+} // namespace lk::transport

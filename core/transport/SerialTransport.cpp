@@ -1,0 +1,244 @@
+#include "SerialTransport.h"
+
+#include "PortErrorText.h"
+
+#include <QtCore/QFileInfo>
+#include <QtCore/QLoggingCategory>
+#include <QtCore/QStringList>
+#include <QtSerialPort/QSerialPortInfo>
+
+#ifdef Q_OS_LINUX
+#include <linux/serial.h>
+#include <sys/ioctl.h>
+#endif
+#include <unistd.h>
+
+namespace lk::transport {
+
+namespace {
+Q_LOGGING_CATEGORY(lcSerial, "lk.transport.serial")
+
+QString availablePortsText()
+{
+    QStringList names;
+    for (const QSerialPortInfo &info : QSerialPortInfo::availablePorts())
+        names << info.systemLocation();
+    return names.isEmpty()
+               ? QStringLiteral("no serial ports found")
+               : QStringLiteral("ports found: %1").arg(names.join(QStringLiteral(", ")));
+}
+} // namespace
+
+SerialTransport::SerialTransport(const SerialSettings &settings, QObject *parent)
+    : Transport(parent), m_settings(settings), m_path(systemPath(settings.portName)),
+      m_port(new QSerialPort(this))
+{
+    m_reopenTimer.setInterval(kReopenPollMs);
+    connect(&m_reopenTimer, &QTimer::timeout, this, &SerialTransport::onReopenPoll);
+    connect(m_port, &QSerialPort::readyRead, this, &SerialTransport::onReadyRead);
+    connect(m_port, &QSerialPort::errorOccurred, this, &SerialTransport::onPortError);
+}
+
+SerialTransport::~SerialTransport()
+{
+    m_reopenTimer.stop();
+    if (m_port->isOpen())
+        m_port->close();
+}
+
+QString SerialTransport::systemPath(const QString &portName)
+{
+    return portName.startsWith(QLatin1Char('/')) ? portName : QStringLiteral("/dev/") + portName;
+}
+
+std::function<std::unique_ptr<Transport>(int)> SerialTransport::factory(SerialSettings settings)
+{
+    return [settings](int baud) {
+        SerialSettings s = settings;
+        s.baud = baud;
+        return std::make_unique<SerialTransport>(s);
+    };
+}
+
+QString SerialTransport::description() const
+{
+    return QStringLiteral("%1 @ %2").arg(m_path).arg(m_settings.baud);
+}
+
+bool SerialTransport::open()
+{
+    m_reopenTimer.stop();
+    if (m_state == State::Open)
+        return true;
+    m_errorReported = false;
+    const bool ok = openPort(true);
+    if (!ok && m_state == State::Disconnected)
+        setState(State::Closed);
+    return ok;
+}
+
+bool SerialTransport::openPort(bool reportErrors)
+{
+    const auto fail = [&](const TransportError &e) {
+        if (reportErrors)
+            report(e);
+        else
+            qCDebug(lcSerial) << "reopen failed:" << e.message;
+        return false;
+    };
+    if (m_settings.baud <= 0)
+        return fail(portError(TransportError::Kind::BadSettings, m_path, m_settings.baud));
+    if (!QFileInfo::exists(m_path))
+        return fail(portError(TransportError::Kind::NoSuchPort, m_path, 0, availablePortsText()));
+
+    m_port->setPortName(m_path);
+    m_port->setBaudRate(m_settings.baud);
+    m_port->setDataBits(QSerialPort::Data8);
+    m_port->setParity(QSerialPort::NoParity);
+    m_port->setStopBits(QSerialPort::OneStop);
+    m_port->setFlowControl(QSerialPort::NoFlowControl);
+    m_opening = true;
+    const bool ok = m_port->open(QIODevice::ReadWrite);
+    m_opening = false;
+    if (!ok) {
+        const TransportError e = openFailure(m_port->error(), m_port->errorString());
+        m_port->clearError();
+        return fail(e);
+    }
+    // QSerialPort applies the settings at open(); a driver may still refuse the baud later.
+    if (m_port->baudRate() != m_settings.baud) {
+        m_port->close();
+        return fail(portError(TransportError::Kind::BadSettings, m_path, m_settings.baud,
+                              QStringLiteral("driver set %1").arg(m_port->baudRate())));
+    }
+    m_port->clear();
+    enableLowLatency();
+    m_errorReported = false;
+    setState(State::Open);
+    return true;
+}
+
+TransportError SerialTransport::openFailure(QSerialPort::SerialPortError error,
+                                            const QString &detail) const
+{
+    using Kind = TransportError::Kind;
+    switch (error) {
+    case QSerialPort::DeviceNotFoundError:
+        return portError(Kind::NoSuchPort, m_path, 0, availablePortsText());
+    case QSerialPort::PermissionError:
+        // Qt reports both EACCES and "held by someone else" (EBUSY, TIOCEXCL, a lock file) as
+        // PermissionError; if we may read and write the node, someone else holds it.
+        if (::access(m_path.toLocal8Bit().constData(), R_OK | W_OK) == 0)
+            return portError(Kind::PortBusy, m_path);
+        return portError(Kind::PermissionDenied, m_path);
+    case QSerialPort::UnsupportedOperationError:
+        return portError(Kind::BadSettings, m_path, m_settings.baud, detail);
+    default:
+        return portError(Kind::IoError, m_path, 0, detail);
+    }
+}
+
+void SerialTransport::enableLowLatency()
+{
+    m_lowLatency = false;
+    if (!m_settings.lowLatency)
+        return;
+#ifdef Q_OS_LINUX
+    // Best effort: ptys and some USB drivers have no serial_struct; that is not an error.
+    const int fd = static_cast<int>(m_port->handle());
+    serial_struct ss{};
+    if (fd < 0 || ::ioctl(fd, TIOCGSERIAL, &ss) != 0)
+        return;
+    if (!(ss.flags & ASYNC_LOW_LATENCY)) {
+        ss.flags |= ASYNC_LOW_LATENCY;
+        if (::ioctl(fd, TIOCSSERIAL, &ss) != 0)
+            return;
+    }
+    m_lowLatency = true;
+#endif
+}
+
+void SerialTransport::close()
+{
+    m_reopenTimer.stop();
+    if (m_port->isOpen())
+        m_port->close();
+    m_lowLatency = false;
+    setState(State::Closed);
+}
+
+void SerialTransport::write(const QByteArray &bytes)
+{
+    if (m_state != State::Open)
+        return;
+    if (m_port->write(bytes) != bytes.size())
+        lostPort(TransportError::Kind::IoError, m_port->errorString());
+}
+
+void SerialTransport::onReadyRead()
+{
+    const QByteArray bytes = m_port->readAll();
+    if (!bytes.isEmpty())
+        emit bytesReceived(bytes);
+}
+
+void SerialTransport::onPortError(QSerialPort::SerialPortError error)
+{
+    if (error == QSerialPort::NoError || m_opening || m_state != State::Open)
+        return;
+    if (error == QSerialPort::TimeoutError)
+        return; // only blocking waits produce it; not a fault of the link
+    // An unplugged adapter shows up as ResourceError (EIO/ENXIO), sometimes as a read or
+    // write error; the device node vanishing tells them apart from a mere I/O hiccup.
+    const bool gone = error == QSerialPort::ResourceError || !QFileInfo::exists(m_path);
+    lostPort(gone ? TransportError::Kind::Unplugged : TransportError::Kind::IoError,
+             m_port->errorString());
+}
+
+void SerialTransport::lostPort(TransportError::Kind kind, const QString &detail)
+{
+    const TransportError e =
+        portError(kind, m_path, 0, kind == TransportError::Kind::Unplugged ? QString() : detail);
+    m_port->clearError();
+    if (m_port->isOpen())
+        m_port->close();
+    m_lowLatency = false;
+    report(e);
+    setState(State::Disconnected);
+    if (m_settings.autoReopen)
+        m_reopenTimer.start();
+}
+
+void SerialTransport::onReopenPoll()
+{
+    if (m_state != State::Disconnected) {
+        m_reopenTimer.stop();
+        return;
+    }
+    if (!QFileInfo::exists(m_path))
+        return;
+    // The node may exist before udev has set its permissions: keep trying quietly.
+    if (openPort(false)) {
+        m_reopenTimer.stop();
+        qCInfo(lcSerial) << m_path << "is back";
+    }
+}
+
+void SerialTransport::report(const TransportError &error)
+{
+    if (m_errorReported)
+        return;
+    m_errorReported = true;
+    qCWarning(lcSerial) << error.message;
+    emit errorOccurred(error);
+}
+
+void SerialTransport::setState(State state)
+{
+    if (m_state == state)
+        return;
+    m_state = state;
+    emit stateChanged(state);
+}
+
+} // namespace lk::transport

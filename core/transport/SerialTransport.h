@@ -1,0 +1,71 @@
+#pragma once
+
+#include "Transport.h"
+
+#include <QtCore/QString>
+#include <QtCore/QTimer>
+#include <QtSerialPort/QSerialPort>
+
+#include <functional>
+#include <memory>
+
+namespace lk::transport {
+
+/// How to open a serial port: a plain value, as in Qt's serialport examples.
+struct SerialSettings {
+    QString portName;        ///< "/dev/ttyUSB0" or "ttyUSB0"
+    int baud = 115200;       ///< any of the nine LK bauds (others are passed to the driver)
+    bool autoReopen = false; ///< after an unplug, reopen when the device node returns
+    bool lowLatency = true;  ///< ask the Linux driver for ASYNC_LOW_LATENCY (FTDI: 16 -> 1 ms)
+};
+
+/// A Transport over QSerialPort: 8N1, no flow control. Construct it on the thread that uses
+/// it (the bus thread). An unplug while open becomes state Disconnected plus one Unplugged
+/// error per connect cycle; with autoReopen the device node is polled every 500 ms and the
+/// port reopens by itself when it returns.
+class SerialTransport : public Transport {
+    Q_OBJECT
+public:
+    static constexpr int kReopenPollMs = 500;
+
+    explicit SerialTransport(const SerialSettings &settings, QObject *parent = nullptr);
+    ~SerialTransport() override;
+
+    bool open() override;
+    void close() override;
+    void write(const QByteArray &bytes) override;
+    State state() const override { return m_state; }
+    int baud() const override { return m_settings.baud; }
+    QString description() const override;
+
+    const SerialSettings &settings() const { return m_settings; }
+    /// The low_latency flag is set on the open port (false on ptys and non-Linux systems).
+    bool lowLatencyActive() const { return m_lowLatency; }
+
+    /// "ttyUSB0" -> "/dev/ttyUSB0"; absolute paths unchanged.
+    static QString systemPath(const QString &portName);
+    /// A transport factory for BusSession: a new SerialTransport per (re)open at `baud`.
+    static std::function<std::unique_ptr<Transport>(int baud)> factory(SerialSettings settings);
+
+private:
+    bool openPort(bool reportErrors);
+    void onPortError(QSerialPort::SerialPortError error);
+    void onReadyRead();
+    void onReopenPoll();
+    void lostPort(TransportError::Kind kind, const QString &detail);
+    void setState(State state);
+    void report(const TransportError &error);
+    TransportError openFailure(QSerialPort::SerialPortError error, const QString &detail) const;
+    void enableLowLatency();
+
+    SerialSettings m_settings;
+    QString m_path;
+    QSerialPort *m_port;
+    QTimer m_reopenTimer{this};
+    State m_state = State::Closed;
+    bool m_opening = false;
+    bool m_errorReported = false; ///< one error per connect cycle
+    bool m_lowLatency = false;
+};
+
+} // namespace lk::transport

@@ -1,0 +1,109 @@
+#pragma once
+
+#include "FakeTransport.h"
+
+#include <bus/BusWorker.h>
+#include <protocol/Reply.h>
+
+#include <QtCore/QObject>
+#include <QtCore/QVector>
+
+#include <functional>
+#include <memory>
+
+namespace lk::bustest {
+
+/// Timeouts generous enough for a loaded 2-core machine: a reply that is on its way is never
+/// mistaken for silence, and a silent drive still costs only ~0.1 s.
+inline bus::BusConfig relaxedConfig()
+{
+    bus::BusConfig c;
+    c.minMarginMs = 100;
+    c.initialMarginMs = 100;
+    c.maxMarginMs = 400;
+    return c;
+}
+
+inline protocol::Request plainRequest(protocol::Command c, int id)
+{
+    protocol::Request r;
+    r.command = c;
+    r.id = static_cast<quint8>(id);
+    return r;
+}
+
+/// A BusWorker on the test thread over a FakeTransport, collecting completions.
+class WorkerRig {
+public:
+    using Setup = std::function<void(FakeTransport &)>;
+
+    explicit WorkerRig(Setup setup = {}, bus::BusConfig config = relaxedConfig(), int baud = 115200)
+        : m_setup(std::move(setup))
+    {
+        worker = std::make_unique<bus::BusWorker>(
+            [this](int b) {
+                {
+                    QMutexLocker lock(&log->mutex);
+                    log->bauds.append(b);
+                }
+                auto t = std::make_unique<FakeTransport>(b, log);
+                transport = t.get();
+                if (m_setup)
+                    m_setup(*t);
+                return t;
+            },
+            baud, config);
+        QObject::connect(worker.get(), &bus::BusWorker::requestCompleted, worker.get(),
+                         [this](const bus::RequestResult &r) { results.append(r); });
+        worker->start();
+    }
+    ~WorkerRig() { worker.reset(); } // its last completions still land in `results`
+
+    quint64 send(const protocol::Request &r, bus::Priority p = bus::Priority::Operator,
+                 int retries = -1)
+    {
+        bus::BusRequest b;
+        b.ticket = ++m_ticket;
+        b.request = r;
+        b.priority = p;
+        b.retries = retries;
+        worker->submit(b);
+        return b.ticket;
+    }
+
+    const bus::RequestResult *result(quint64 ticket) const
+    {
+        for (const bus::RequestResult &r : results) {
+            if (r.ticket == ticket)
+                return &r;
+        }
+        return nullptr;
+    }
+    int resultCount(quint64 ticket) const
+    {
+        int n = 0;
+        for (const bus::RequestResult &r : results)
+            n += r.ticket == ticket ? 1 : 0;
+        return n;
+    }
+
+    /// The written frames, decoded as (command, id).
+    QVector<QPair<protocol::Command, int>> writtenRequests() const
+    {
+        QVector<QPair<protocol::Command, int>> out;
+        for (const QByteArray &b : log->writtenCopy())
+            out.append({static_cast<protocol::Command>(quint8(b.at(1))), int(quint8(b.at(2)))});
+        return out;
+    }
+
+    std::shared_ptr<FakeLog> log = std::make_shared<FakeLog>();
+    FakeTransport *transport = nullptr; ///< the current one (the worker owns it)
+    std::unique_ptr<bus::BusWorker> worker;
+    QVector<bus::RequestResult> results;
+
+private:
+    Setup m_setup;
+    quint64 m_ticket = 0;
+};
+
+} // namespace lk::bustest

@@ -1,0 +1,231 @@
+#include <bus/AdaptiveTimeout.h>
+#include <bus/BusTiming.h>
+#include <bus/LatencyWindow.h>
+#include <bus/TelemetrySample.h>
+
+#include <QtTest/QTest>
+
+using namespace lk;
+using namespace lk::bus;
+using protocol::Command;
+
+Q_DECLARE_METATYPE(protocol::Command)
+Q_DECLARE_METATYPE(protocol::Reply)
+
+/// The bus-limit formula, latency statistics, adaptive timeouts and telemetry extraction.
+class tst_BusTiming : public QObject {
+    Q_OBJECT
+private slots:
+    void wireTime_data();
+    void wireTime();
+    void workedExample();
+    void frameBytes_data();
+    void frameBytes();
+    void mixLimit();
+    void replyTimeout();
+    void standardBauds();
+    void latencyQuantiles();
+    void latencyWindowIsBounded();
+    void adaptiveMargin_data();
+    void adaptiveMargin();
+    void telemetryFromReply_data();
+    void telemetryFromReply();
+};
+
+void tst_BusTiming::wireTime_data()
+{
+    QTest::addColumn<int>("requestBytes");
+    QTest::addColumn<int>("replyBytes");
+    QTest::addColumn<int>("baud");
+    QTest::addColumn<double>("seconds");
+    QTest::newRow("read_state2 @115200") << 5 << 13 << 115200 << 0.0015625;
+    QTest::newRow("read_state2 @9600") << 5 << 13 << 9600 << 0.01875;
+    QTest::newRow("read_model @1M") << 5 << 48 << 1000000 << 0.00053;
+    QTest::newRow("motor_off @2M") << 5 << 5 << 2000000 << 0.00005;
+    QTest::newRow("zero baud") << 5 << 13 << 0 << 0.0;
+}
+
+void tst_BusTiming::wireTime()
+{
+    QFETCH(int, requestBytes);
+    QFETCH(int, replyBytes);
+    QFETCH(int, baud);
+    QFETCH(double, seconds);
+    QVERIFY(qAbs(BusTiming::wireTimeS(requestBytes, replyBytes, baud) - seconds) < 1e-12);
+}
+
+void tst_BusTiming::workedExample()
+{
+    // ARCHITECTURE.md: Read State 2, 5 + 13 bytes at 115200 = 1.5625 ms on the wire; with
+    // 0.5 ms turnaround at most ~485 transactions/s.
+    QCOMPARE(BusTiming::requestBytes(Command::ReadState2), 5);
+    QCOMPARE(BusTiming::replyBytes(Command::ReadState2), 13);
+    const double t = BusTiming::transactionTimeS(Command::ReadState2, 115200);
+    QVERIFY(qAbs(t - 0.0020625) < 1e-12);
+    const double perSecond = BusTiming::transactionsPerSecond({Command::ReadState2}, 115200);
+    QCOMPARE(qRound(perSecond), 485);
+}
+
+void tst_BusTiming::frameBytes_data()
+{
+    QTest::addColumn<Command>("command");
+    QTest::addColumn<int>("request");
+    QTest::addColumn<int>("reply");
+    QTest::addColumn<int>("maxReply");
+    QTest::newRow("read_state2") << Command::ReadState2 << 5 << 13 << 13;
+    QTest::newRow("read_model 42 or 58") << Command::ReadModel << 5 << 48 << 64;
+    QTest::newRow("motor_off echo") << Command::MotorOff << 5 << 5 << 5;
+    QTest::newRow("write_pid_ram echo") << Command::WritePidRam << 12 << 12 << 12;
+    QTest::newRow("speed") << Command::Speed << 10 << 13 << 13;
+    QTest::newRow("multi_position_limited") << Command::MultiPositionLimited << 18 << 13 << 13;
+    QTest::newRow("increment_position (LEN 4)") << Command::IncrementPosition << 10 << 13 << 13;
+    QTest::newRow("write_zero_rom 0 or 2") << Command::WriteZeroRom << 5 << 5 << 8;
+    QTest::newRow("read_multi_turn") << Command::ReadMultiTurn << 5 << 14 << 14;
+}
+
+void tst_BusTiming::frameBytes()
+{
+    QFETCH(Command, command);
+    QFETCH(int, request);
+    QFETCH(int, reply);
+    QFETCH(int, maxReply);
+    QCOMPARE(BusTiming::requestBytes(command), request);
+    QCOMPARE(BusTiming::replyBytes(command), reply);
+    QCOMPARE(BusTiming::maxReplyBytes(command), maxReply);
+}
+
+void tst_BusTiming::mixLimit()
+{
+    // The dashboard mix: 9C, 9A, 92, 9D, each 5-byte requests; replies 13, 13, 14, 13.
+    const QVector<Command> mix{Command::ReadState2, Command::ReadState1, Command::ReadMultiTurn,
+                               Command::ReadState3};
+    const double cycle = (18 + 18 + 19 + 18) * 10.0 / 115200 + 4 * 0.0005;
+    QVERIFY(qAbs(BusTiming::transactionsPerSecond(mix, 115200) - 4 / cycle) < 1e-9);
+    QCOMPARE(BusTiming::transactionsPerSecond({}, 115200), 0.0);
+    // Faster baud, more transactions, but never past the turnaround bound of 2000/s.
+    QVERIFY(BusTiming::transactionsPerSecond(mix, 1000000) >
+            BusTiming::transactionsPerSecond(mix, 115200));
+    QVERIFY(BusTiming::transactionsPerSecond(mix, 2000000) < 2000);
+}
+
+void tst_BusTiming::replyTimeout()
+{
+    const double expected = (5 + 64) * 10.0 / 115200 + 0.0005 + 0.002;
+    QVERIFY(qAbs(BusTiming::replyTimeoutS(Command::ReadModel, 115200, 0.002) - expected) < 1e-12);
+}
+
+void tst_BusTiming::standardBauds()
+{
+    QCOMPARE(int(BusTiming::standardBauds().size()), 9);
+    for (int b : {9600, 19200, 38400, 57600, 115200, 230400, 460800, 1000000, 2000000})
+        QVERIFY(BusTiming::isStandardBaud(b));
+    QVERIFY(!BusTiming::isStandardBaud(4000000));
+    QVERIFY(!BusTiming::isStandardBaud(0));
+}
+
+void tst_BusTiming::latencyQuantiles()
+{
+    LatencyWindow w(1000);
+    QCOMPARE(w.median(), 0.0);
+    for (int i = 100; i >= 1; --i)
+        w.add(i);
+    QCOMPARE(w.min(), 1.0);
+    QCOMPARE(w.median(), 50.0);
+    QCOMPARE(w.p95(), 95.0);
+    QCOMPARE(w.max(), 100.0);
+    const LatencySummary s = w.summaryMs();
+    QCOMPARE(s.samples, 100);
+    QCOMPARE(s.maxMs, 100000.0);
+}
+
+void tst_BusTiming::latencyWindowIsBounded()
+{
+    LatencyWindow w(10);
+    for (int i = 1; i <= 25; ++i)
+        w.add(i);
+    QCOMPARE(w.size(), 10);
+    QCOMPARE(w.min(), 16.0); // only the last ten remain
+    QCOMPARE(w.max(), 25.0);
+    w.clear();
+    QVERIFY(w.isEmpty());
+}
+
+void tst_BusTiming::adaptiveMargin_data()
+{
+    QTest::addColumn<int>("replies");
+    QTest::addColumn<double>("extraMs");
+    QTest::addColumn<double>("marginMs");
+    QTest::newRow("no replies yet: initial margin") << 0 << 0.0 << 20.0;
+    QTest::newRow("warming up: at least the initial margin") << 3 << 1.0 << 20.0;
+    QTest::newRow("fast link: minimum margin") << 20 << 0.1 << 2.0;
+    QTest::newRow("FTDI-like 10 ms: 3 x p95") << 20 << 10.0 << 30.0;
+    QTest::newRow("pathological link: bounded") << 20 << 1000.0 << 200.0;
+}
+
+void tst_BusTiming::adaptiveMargin()
+{
+    QFETCH(int, replies);
+    QFETCH(double, extraMs);
+    QFETCH(double, marginMs);
+    AdaptiveTimeout t; // defaults: min 2, initial 20, max 200 ms
+    const double wire = BusTiming::transactionTimeS(Command::ReadState2, 115200);
+    for (int i = 0; i < replies; ++i)
+        t.addReply(Command::ReadState2, 115200, wire + extraMs * 1e-3);
+    QVERIFY2(qAbs(t.marginS() * 1e3 - marginMs) < 1e-6, qPrintable(QString::number(t.marginS())));
+    QVERIFY(qAbs(t.timeoutS(Command::ReadState2, 115200) - (wire + t.marginS())) < 1e-12);
+}
+
+void tst_BusTiming::telemetryFromReply_data()
+{
+    QTest::addColumn<protocol::Reply>("reply");
+    QTest::addColumn<int>("fields");
+    const auto make = [](Command c, protocol::ReplyPayload p) {
+        protocol::Reply r;
+        r.command = c;
+        r.id = 4;
+        r.payload = std::move(p);
+        return r;
+    };
+    using F = TelemetryField;
+    QTest::newRow("state2 iq") << make(Command::ReadState2,
+                                       protocol::State2{30, 2048, false, -5, 7})
+                               << int(F::Temperature | F::IqA | F::Speed | F::Encoder);
+    QTest::newRow("state2 power (MS)")
+        << make(Command::Speed, protocol::State2{30, -500, true, 5, 7})
+        << int(F::Temperature | F::Power | F::Speed | F::Encoder);
+    QTest::newRow("state1") << make(Command::ReadState1, protocol::State1{25, 240, 0x08})
+                            << int(F::Temperature | F::Voltage | F::ErrorState);
+    QTest::newRow("state3") << make(Command::ReadState3, protocol::State3{25, 64, 0, -64})
+                            << int(F::Temperature | F::PhaseCurrents);
+    QTest::newRow("multi turn") << make(Command::ReadMultiTurn, protocol::MultiTurnAngle{36000})
+                                << int(F::MultiTurn);
+    QTest::newRow("model: none") << make(Command::ReadModel, protocol::ModelInfo{}) << 0;
+    QTest::newRow("ack: none") << make(Command::MotorOff, protocol::Acknowledged{}) << 0;
+}
+
+void tst_BusTiming::telemetryFromReply()
+{
+    QFETCH(protocol::Reply, reply);
+    QFETCH(int, fields);
+    const std::optional<TelemetrySample> s = TelemetrySample::fromReply(reply, 1.5);
+    QCOMPARE(s.has_value(), fields != 0);
+    if (!s)
+        return;
+    QCOMPARE(int(s->fields), fields);
+    QCOMPARE(s->id, 4);
+    QCOMPARE(s->time, 1.5);
+    QCOMPARE(s->source, reply.command);
+    if (s->has(TelemetryField::IqA))
+        QCOMPARE(s->iqA, 33.0);
+    if (s->has(TelemetryField::Power))
+        QCOMPARE(s->power, -500);
+    if (s->has(TelemetryField::Voltage))
+        QCOMPARE(s->voltageV, 24.0);
+    if (s->has(TelemetryField::PhaseCurrents))
+        QCOMPARE(s->icA, -1.0);
+    if (s->has(TelemetryField::MultiTurn))
+        QCOMPARE(s->multiTurnDeg, 360.0);
+}
+
+QTEST_APPLESS_MAIN(tst_BusTiming)
+#include "tst_bustiming.moc"

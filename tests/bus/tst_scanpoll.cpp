@@ -1,0 +1,307 @@
+#include "BusTestUtil.h"
+
+#include <bus/BusMetaTypes.h>
+#include <bus/BusWorker.h>
+#include <bus/Scanner.h>
+
+#include <QtCore/QElapsedTimer>
+#include <QtCore/QSet>
+#include <QtTest/QSignalSpy>
+#include <QtTest/QTest>
+
+using namespace lk;
+using namespace lk::bus;
+using namespace lk::bustest;
+using protocol::Command;
+using protocol::Series;
+
+namespace {
+/// Scans cost a timeout per silent ID: keep the margin modest; tests that must find every
+/// drive also allow one retry, so a loaded machine cannot make a drive look absent.
+BusConfig scanConfig()
+{
+    BusConfig c = relaxedConfig();
+    c.minMarginMs = c.initialMarginMs = 30;
+    return c;
+}
+
+void addDrives(FakeTransport &t)
+{
+    t.drives().add(3, Series::MF);
+    t.drives().add(17, Series::MS);
+    t.drives().add(32, Series::MG);
+}
+
+int samplesIn(const QSignalSpy &spy, int id, TelemetryField field)
+{
+    int n = 0;
+    for (const auto &args : spy) {
+        for (const TelemetrySample &s : args.at(0).value<TelemetryBatch>())
+            n += (s.id == id && s.has(field)) ? 1 : 0;
+    }
+    return n;
+}
+} // namespace
+
+/// Scanner and polling on a BusWorker over a scripted FakeTransport.
+class tst_ScanPoll : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { registerBusMetaTypes(); }
+    void seriesInference_data();
+    void seriesInference();
+    void scanFindsExactlyTheAnsweringIds();
+    void scanHonoursCancel();
+    void scanBaudSweepStaysWhereDrivesAnswer();
+    void scanRejectsBadRange();
+    void scanReprobesACorruptReply();
+    void pollingSkipsUnsupportedAndBatches();
+    void pollingContinuesPastSilentCommands();
+    void pollingHonoursRateAndStops();
+};
+
+void tst_ScanPoll::seriesInference_data()
+{
+    QTest::addColumn<QString>("driver");
+    QTest::addColumn<QString>("motor");
+    QTest::addColumn<QString>("series");
+    QTest::newRow("motor name") << ""
+                                << "MG6010E-i10"
+                                << "MG";
+    QTest::newRow("driver name when motor is blank") << "MS4015"
+                                                     << ""
+                                                     << "MS";
+    QTest::newRow("motor wins") << "MF4015"
+                                << "MH7015"
+                                << "MH";
+    QTest::newRow("lower case") << ""
+                                << "mf4010v2"
+                                << "MF";
+    QTest::newRow("unknown") << "DRV-1"
+                             << "X"
+                             << "";
+}
+
+void tst_ScanPoll::seriesInference()
+{
+    QFETCH(QString, driver);
+    QFETCH(QString, motor);
+    QFETCH(QString, series);
+    protocol::ModelInfo m;
+    m.driverName = driver;
+    m.motorName = motor;
+    const auto s = Scanner::inferSeries(m);
+    QCOMPARE(s ? protocol::seriesName(*s) : QString(), series);
+}
+
+void tst_ScanPoll::scanFindsExactlyTheAnsweringIds()
+{
+    WorkerRig rig(addDrives, scanConfig());
+    rig.worker->setSeries(5, Series::MF); // known before, silent now: forgotten by the scan
+    QSignalSpy found(rig.worker.get(), &BusWorker::motorFound);
+    QSignalSpy progress(rig.worker.get(), &BusWorker::scanProgress);
+    QSignalSpy finished(rig.worker.get(), &BusWorker::scanFinished);
+    ScanOptions o;
+    o.retries = 1; // a loaded machine may delay a reply past the margin once
+    rig.worker->scan(o);
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 60000);
+    const auto summary = finished.at(0).at(0).value<ScanSummary>();
+    QVERIFY(!summary.cancelled);
+    QVERIFY(summary.error.isEmpty());
+    QCOMPARE(summary.motors.size(), 3);
+    QMap<int, Series> expected{{3, Series::MF}, {17, Series::MS}, {32, Series::MG}};
+    for (const FoundMotor &m : summary.motors) {
+        QVERIFY(expected.contains(m.id));
+        QCOMPARE(m.series, std::optional<Series>(expected.value(m.id)));
+        QVERIFY(m.state1);
+        QCOMPARE(m.state1->voltageRaw, quint16(240));
+        QCOMPARE(m.baud, 115200);
+    }
+    QCOMPARE(found.size(), 3);
+    QCOMPARE(progress.last().at(0).value<ScanProgress>().done, 32);
+    QCOMPARE(progress.last().at(0).value<ScanProgress>().total, 32);
+    QCOMPARE(rig.worker->knownMotors().keys(), (QList<int>{3, 17, 32}));
+    QCOMPARE(rig.worker->seriesOf(17), std::optional<Series>(Series::MS));
+    // Every ID was asked for its model; only the answering ones for state1.
+    QSet<int> asked;
+    int state1 = 0;
+    for (const auto &w : rig.writtenRequests()) {
+        if (w.first == Command::ReadModel)
+            asked.insert(w.second);
+        state1 += w.first == Command::ReadState1 ? 1 : 0;
+    }
+    QCOMPARE(asked.size(), 32);
+    QCOMPARE(state1, 3);
+}
+
+void tst_ScanPoll::scanHonoursCancel()
+{
+    WorkerRig rig(addDrives, scanConfig());
+    QSignalSpy progress(rig.worker.get(), &BusWorker::scanProgress);
+    QSignalSpy finished(rig.worker.get(), &BusWorker::scanFinished);
+    ScanOptions o;
+    o.retries = 1; // a loaded machine may delay a reply past the margin once
+    rig.worker->scan(o);
+    QTRY_VERIFY_WITH_TIMEOUT(progress.size() >= 2, 20000);
+    rig.worker->cancelScan();
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 20000);
+    const auto summary = finished.at(0).at(0).value<ScanSummary>();
+    QVERIFY(summary.cancelled);
+    QVERIFY(progress.last().at(0).value<ScanProgress>().done < 32);
+    const int writes = rig.log->writtenCopy().size();
+    QTest::qWait(300);
+    QCOMPARE(rig.log->writtenCopy().size(), writes); // nothing more goes out
+    QVERIFY(!rig.worker->isScanning());
+}
+
+void tst_ScanPoll::scanBaudSweepStaysWhereDrivesAnswer()
+{
+    // The drive is set to 38400 baud: at any other baud it hears only noise and stays silent.
+    WorkerRig rig(
+        [](FakeTransport &t) {
+            t.drives().add(2, Series::MF);
+            FakeTransport *tp = &t;
+            t.setResponder([tp](const protocol::Frame &req, int) {
+                return tp->baud() == 38400 ? tp->defaultReply(req) : QByteArray();
+            });
+        },
+        scanConfig());
+    QSignalSpy finished(rig.worker.get(), &BusWorker::scanFinished);
+    ScanOptions o;
+    o.firstId = 1;
+    o.lastId = 4;
+    o.sweepBauds = true;
+    o.bauds = {9600, 38400, 115200};
+    o.retries = 1;
+    rig.worker->scan(o);
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 60000);
+    const auto summary = finished.at(0).at(0).value<ScanSummary>();
+    QVERIFY2(summary.error.isEmpty(), qPrintable(summary.error));
+    QCOMPARE(summary.motors.size(), 1);
+    QCOMPARE(summary.motors.at(0).id, 2);
+    QCOMPARE(summary.motors.at(0).baud, 38400);
+    QCOMPARE(summary.finalBaud, 38400);
+    QCOMPARE(rig.worker->baud(), 38400);
+    QVERIFY(rig.worker->isOpen());
+    QMutexLocker lock(&rig.log->mutex);
+    QVERIFY(rig.log->bauds.contains(9600));
+    QVERIFY(rig.log->bauds.contains(115200));
+    QCOMPARE(rig.log->bauds.last(), 38400);
+}
+
+void tst_ScanPoll::scanRejectsBadRange()
+{
+    WorkerRig rig(addDrives, scanConfig());
+    QSignalSpy finished(rig.worker.get(), &BusWorker::scanFinished);
+    ScanOptions o;
+    o.firstId = 0;
+    rig.worker->scan(o);
+    QCOMPARE(finished.size(), 1);
+    QVERIFY(!finished.at(0).at(0).value<ScanSummary>().error.isEmpty());
+    QVERIFY(rig.log->writtenCopy().isEmpty());
+}
+
+void tst_ScanPoll::scanReprobesACorruptReply()
+{
+    // A noisy line spoils the first read_model reply: the drive is there and must be found.
+    WorkerRig rig(
+        [](FakeTransport &t) {
+            t.drives().add(2, Series::MH);
+            FakeTransport *tp = &t;
+            auto spoiled = std::make_shared<bool>(false);
+            t.setResponder([tp, spoiled](const protocol::Frame &req, int) {
+                QByteArray reply = tp->defaultReply(req);
+                if (!reply.isEmpty() && !*spoiled) {
+                    *spoiled = true;
+                    reply[reply.size() - 1] = char(reply.at(reply.size() - 1) ^ 0x01);
+                }
+                return reply;
+            });
+        },
+        scanConfig());
+    QSignalSpy finished(rig.worker.get(), &BusWorker::scanFinished);
+    ScanOptions o;
+    o.lastId = 3;
+    o.retries = 0;
+    rig.worker->scan(o);
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 20000);
+    const auto summary = finished.at(0).at(0).value<ScanSummary>();
+    QCOMPARE(summary.motors.size(), 1);
+    QCOMPARE(summary.motors.at(0).id, 2);
+    QCOMPARE(summary.motors.at(0).series, std::optional<Series>(Series::MH));
+    QCOMPARE(rig.worker->statisticsSnapshot().bus.checksumErrors, quint64(1));
+}
+
+void tst_ScanPoll::pollingSkipsUnsupportedAndBatches()
+{
+    WorkerRig rig([](FakeTransport &t) {
+        t.drives().add(1, Series::MF);
+        t.drives().add(2, Series::MS);
+    });
+    rig.worker->setSeries(1, Series::MF);
+    rig.worker->setSeries(2, Series::MS);
+    QSignalSpy batches(rig.worker.get(), &BusWorker::telemetryReceived);
+    QElapsedTimer clock;
+    clock.start();
+    rig.worker->startPolling(PollPlan::standard({1, 2}));
+    QTRY_VERIFY_WITH_TIMEOUT(samplesIn(batches, 2, TelemetryField::MultiTurn) >= 20, 30000);
+    rig.worker->stopPolling();
+    const double elapsed = clock.nsecsElapsed() * 1e-9;
+
+    QVERIFY(samplesIn(batches, 1, TelemetryField::IqA) > 0);
+    QVERIFY(samplesIn(batches, 1, TelemetryField::PhaseCurrents) > 0);
+    QVERIFY(samplesIn(batches, 2, TelemetryField::Power) > 0);
+    QCOMPARE(samplesIn(batches, 2, TelemetryField::IqA), 0);
+    QCOMPARE(samplesIn(batches, 2, TelemetryField::PhaseCurrents), 0);
+    for (const auto &w : rig.writtenRequests())
+        QVERIFY(!(w.first == Command::ReadState3 && w.second == 2)); // skipped on MS
+    QCOMPARE(rig.worker->statisticsSnapshot().bus.timeouts, quint64(0));
+    // At most ~60 batches a second, however fast the samples come.
+    QVERIFY2(batches.size() <= elapsed * 60 * 1.5 + 2,
+             qPrintable(QStringLiteral("%1 batches in %2 s").arg(batches.size()).arg(elapsed)));
+    double last = -1;
+    for (const auto &args : batches) {
+        for (const TelemetrySample &s : args.at(0).value<TelemetryBatch>()) {
+            QVERIFY(s.time >= last); // host timestamps, monotonic
+            last = s.time;
+        }
+    }
+}
+
+void tst_ScanPoll::pollingContinuesPastSilentCommands()
+{
+    // Series not declared: read_state3 is polled, the MS drive stays silent, polling goes on.
+    WorkerRig rig([](FakeTransport &t) { t.drives().add(5, Series::MS); });
+    QSignalSpy batches(rig.worker.get(), &BusWorker::telemetryReceived);
+    PollPlan p = PollPlan::standard({5});
+    p.commands = {Command::ReadState3, Command::ReadState2};
+    rig.worker->startPolling(p);
+    QTRY_VERIFY_WITH_TIMEOUT(samplesIn(batches, 5, TelemetryField::Speed) >= 3, 30000);
+    QVERIFY(rig.worker->statisticsSnapshot().perId.value(5).timeouts >= 2);
+}
+
+void tst_ScanPoll::pollingHonoursRateAndStops()
+{
+    WorkerRig rig([](FakeTransport &t) { t.drives().add(1, Series::MF); });
+    QSignalSpy polling(rig.worker.get(), &BusWorker::pollingChanged);
+    QElapsedTimer clock;
+    clock.start();
+    PollPlan p = PollPlan::standard({1}, 20);
+    p.commands = {Command::ReadState2};
+    rig.worker->startPolling(p);
+    QTRY_VERIFY_WITH_TIMEOUT(rig.log->writtenCopy().size() >= 5, 20000);
+    QTest::qWait(200);
+    const double elapsed = clock.nsecsElapsed() * 1e-9;
+    const int polls = rig.log->writtenCopy().size();
+    QVERIFY2(polls <= elapsed * 20 + 2,
+             qPrintable(QStringLiteral("%1 polls in %2 s").arg(polls).arg(elapsed)));
+    rig.worker->stopPolling();
+    QCOMPARE(polling.last().at(0).toBool(), false);
+    QTest::qWait(100); // a poll already on the wire may still complete
+    const int after = rig.log->writtenCopy().size();
+    QTest::qWait(300);
+    QCOMPARE(rig.log->writtenCopy().size(), after);
+}
+
+QTEST_GUILESS_MAIN(tst_ScanPoll)
+#include "tst_scanpoll.moc"
