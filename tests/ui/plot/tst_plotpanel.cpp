@@ -1,0 +1,582 @@
+#include <plot/CursorReadout.h>
+#include <plot/PlotPanel.h>
+#include <plot/PollRateControl.h>
+#include <plot/StripChart.h>
+
+#include <QtCharts/QLineSeries>
+#include <QtCharts/QValueAxis>
+#include <QtCore/QElapsedTimer>
+#include <QtCore/QFile>
+#include <QtCore/QTemporaryDir>
+#include <QtGui/QAction>
+#include <QtGui/QImage>
+#include <QtTest/QSignalSpy>
+#include <QtTest/QTest>
+#include <QtWidgets/QApplication>
+#include <QtWidgets/QCheckBox>
+#include <QtWidgets/QComboBox>
+#include <QtWidgets/QDoubleSpinBox>
+
+#include <cmath>
+
+using lk::bus::TelemetryBatch;
+using lk::bus::TelemetryField;
+using lk::bus::TelemetrySample;
+using lk::ui::PlotPanel;
+using lk::ui::Quantity;
+using lk::ui::StripChart;
+using lk::ui::TelemetryChannel;
+using lk::ui::TelemetryStore;
+
+namespace {
+
+TelemetrySample sample(int id, double t, double iq, double speed, int encoder)
+{
+    TelemetrySample s;
+    s.id = id;
+    s.time = t;
+    s.fields = TelemetryField::IqA | TelemetryField::Speed | TelemetryField::Encoder |
+               TelemetryField::MultiTurn;
+    s.iqA = iq;
+    s.speedDps = speed;
+    s.encoder = encoder;
+    s.multiTurnDeg = speed * 2;
+    return s;
+}
+
+// `count` samples of drive `id` from `t0` every `dt` seconds: a sine with a ramp.
+TelemetryBatch batch(int id, double t0, int count, double dt)
+{
+    TelemetryBatch b;
+    for (int i = 0; i < count; ++i) {
+        const double t = t0 + i * dt;
+        b.append(sample(id, t, std::sin(t * 7), 100 * std::sin(t), int(t * 100) % 16384));
+    }
+    return b;
+}
+
+void showPanel(PlotPanel &panel)
+{
+    panel.resize(1000, 700);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+}
+
+// Waits until no redraw has happened for a while (a loaded machine may delay a due tick).
+void waitUntilIdle(const PlotPanel &panel)
+{
+    QElapsedTimer timer;
+    timer.start();
+    quint64 last = 0;
+    do {
+        last = panel.redrawCount();
+        QTest::qWait(10 * PlotPanel::kRedrawIntervalMs);
+    } while (panel.redrawCount() != last && timer.elapsed() < 10000);
+}
+
+QAction *actionNamed(PlotPanel &panel, const QString &text)
+{
+    for (QAction *a : panel.findChildren<QAction *>()) {
+        if (a->text() == text) {
+            return a;
+        }
+    }
+    return nullptr;
+}
+
+// The newest x a series shows, NaN while it is empty (QTRY_ evaluates before any redraw).
+double lastX(const QLineSeries *series)
+{
+    return series->count() > 0 ? series->at(series->count() - 1).x() : qQNaN();
+}
+
+QPoint plotCentre(StripChart *chart)
+{
+    const QRectF area = chart->chart()->plotArea();
+    return chart->mapFromScene(chart->chart()->mapToScene(area.center()));
+}
+
+QList<QStringList> readCsv(const QString &path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        return {};
+    }
+    QList<QStringList> rows;
+    for (const QByteArray &line : file.readAll().split('\n')) {
+        if (!line.isEmpty()) {
+            rows.append(QString::fromUtf8(line).split(','));
+        }
+    }
+    return rows;
+}
+
+} // namespace
+
+class tst_PlotPanel : public QObject {
+    Q_OBJECT
+private slots:
+    void seriesHoldDecimatedPoints();
+    void pauseFreezesChartsButStoreGrows();
+    void windowComboChangesRange_data();
+    void windowComboChangesRange();
+    void hiddenPanelDoesNotRedraw();
+    void msDriveShowsPower();
+    void overlaidModeHasAxisPerUnit();
+    void signalPickerChangesCharts();
+    void wheelZoomsAndFollowLiveReturns();
+    void dragPans();
+    void cursorReadoutShowsValues();
+    void autoscaleHoldsThenGrows();
+    void manualScaleIsKept();
+    void exportCsvWritesPlottedColumns();
+    void exportCsvVisibleRange();
+    void exportPngWritesImage();
+    void exportReportsErrors();
+    void pollRateControl();
+};
+
+void tst_PlotPanel::seriesHoldDecimatedPoints()
+{
+    TelemetryStore store;
+    PlotPanel panel(&store);
+    panel.setDrives({1, 2});
+    showPanel(panel);
+    for (int k = 0; k < 20; ++k) { // 20 s at 1 kHz for two drives, in 1 s batches
+        store.append(batch(1, k, 1000, 0.001));
+        store.append(batch(2, k, 1000, 0.001));
+    }
+    QCOMPARE(panel.charts().size(), 3); // iq, speed, encoder stacked
+    QTRY_VERIFY(!panel.charts().first()->lineSeries().first()->points().isEmpty());
+    for (StripChart *chart : panel.charts()) {
+        QCOMPARE(chart->lineSeries().size(), 2);
+        for (QLineSeries *series : chart->lineSeries()) {
+            QTRY_VERIFY(series->count() > 0);
+            QVERIFY2(series->count() <= 2 * chart->width(),
+                     qPrintable(QString::number(series->count())));
+            // The live edge is the real newest sample.
+            QCOMPARE(lastX(series), 19.999);
+        }
+        QCOMPARE(chart->timeAxis()->max(), 19.999);
+        QCOMPARE(chart->timeAxis()->max() - chart->timeAxis()->min(), 10.0);
+    }
+}
+
+void tst_PlotPanel::pauseFreezesChartsButStoreGrows()
+{
+    TelemetryStore store;
+    PlotPanel panel(&store);
+    panel.setDrives({1});
+    showPanel(panel);
+    store.append(batch(1, 0, 10000, 0.001));
+    QLineSeries *series = panel.charts().first()->lineSeries().first();
+    QTRY_COMPARE(lastX(series), 9.999);
+    waitUntilIdle(panel);
+    const quint64 settled = panel.redrawCount();
+    QTest::qWait(20 * PlotPanel::kRedrawIntervalMs);
+    QCOMPARE(panel.redrawCount(), settled); // idle: nothing changed, nothing drawn
+
+    QAction *pause = actionNamed(panel, "Pause");
+    QVERIFY(pause);
+    pause->trigger();
+    QVERIFY(panel.isPaused());
+    const QList<QPointF> frozen = series->points();
+    const double frozenEnd = panel.charts().first()->timeAxis()->max();
+    const quint64 redraws = panel.redrawCount();
+    store.append(batch(1, 10, 2000, 0.001));
+    QCOMPARE(store.count(1, TelemetryChannel::Torque), 12000); // still recording
+    QTest::qWait(20 * PlotPanel::kRedrawIntervalMs);
+    QCOMPARE(panel.redrawCount(), redraws);
+    QCOMPARE(series->points(), frozen);
+    QCOMPARE(panel.charts().first()->timeAxis()->max(), frozenEnd);
+
+    pause->trigger();
+    QVERIFY(!panel.isPaused());
+    QTRY_COMPARE(lastX(series), 11.999);
+}
+
+void tst_PlotPanel::windowComboChangesRange_data()
+{
+    QTest::addColumn<double>("seconds");
+    QTest::addColumn<double>("begin");
+    QTest::addColumn<double>("end");
+    QTest::newRow("5 s") << 5.0 << 15.0 << 20.0;
+    QTest::newRow("10 s") << 10.0 << 10.0 << 20.0;
+    QTest::newRow("30 s starts at zero") << 30.0 << 0.0 << 30.0;
+    QTest::newRow("10 min") << 600.0 << 0.0 << 600.0;
+}
+
+void tst_PlotPanel::windowComboChangesRange()
+{
+    QFETCH(double, seconds);
+    QFETCH(double, begin);
+    QFETCH(double, end);
+    TelemetryStore store;
+    PlotPanel panel(&store);
+    panel.setDrives({1});
+    showPanel(panel);
+    store.append(batch(1, 0, 201, 0.1)); // 0 .. 20 s
+    auto *combo = panel.findChild<QComboBox *>();
+    QVERIFY(combo);
+    QCOMPARE(combo->count(), 6);
+    const int index = combo->findData(seconds);
+    QVERIFY(index >= 0);
+    combo->setCurrentIndex(index);
+    QCOMPARE(panel.windowSeconds(), seconds);
+    QValueAxis *axis = panel.charts().last()->timeAxis();
+    QTRY_VERIFY(qFuzzyCompare(axis->min() + 1, begin + 1) && qFuzzyCompare(axis->max(), end));
+}
+
+void tst_PlotPanel::hiddenPanelDoesNotRedraw()
+{
+    TelemetryStore store;
+    PlotPanel panel(&store);
+    panel.setDrives({1});
+    showPanel(panel);
+    store.append(batch(1, 0, 100, 0.01));
+    QTRY_VERIFY(panel.redrawCount() > 0);
+    waitUntilIdle(panel);
+    panel.hide();
+    const quint64 redraws = panel.redrawCount();
+    for (int k = 1; k <= 5; ++k) {
+        store.append(batch(1, k, 100, 0.01));
+        QTest::qWait(4 * PlotPanel::kRedrawIntervalMs);
+    }
+    QCOMPARE(panel.redrawCount(), redraws);
+    panel.show();
+    QTRY_VERIFY(panel.redrawCount() > redraws);
+    QTRY_COMPARE(lastX(panel.charts().first()->lineSeries().first()), 5.99);
+}
+
+void tst_PlotPanel::msDriveShowsPower()
+{
+    TelemetryStore store;
+    PlotPanel panel(&store);
+    panel.setDriveSeries(2, lk::protocol::Series::MS);
+    panel.setDrives({2});
+    showPanel(panel);
+    StripChart *torque = panel.charts().first();
+    QTRY_VERIFY(torque->valueAxis(Quantity::Power) != nullptr);
+    QCOMPARE(torque->valueAxis(Quantity::Current), nullptr);
+    QVERIFY(torque->lineSeries().first()->name().contains("Power"));
+
+    TelemetrySample s;
+    s.id = 2;
+    s.time = 1.0;
+    s.fields = TelemetryField::Power | TelemetryField::Speed;
+    s.power = -300;
+    store.append({s});
+    QTRY_COMPARE(torque->lineSeries().first()->count(), 1);
+    QCOMPARE(torque->lineSeries().first()->at(0).y(), -300.0);
+
+    // A drive that sends iq is labelled iq whatever it was declared as: the data decides.
+    panel.setDriveSeries(4, lk::protocol::Series::MS);
+    panel.setDrives({4});
+    store.append({sample(4, 1.0, 0.25, 0, 0)});
+    QTRY_VERIFY(panel.charts().first()->valueAxis(Quantity::Current) != nullptr);
+}
+
+void tst_PlotPanel::overlaidModeHasAxisPerUnit()
+{
+    TelemetryStore store;
+    PlotPanel panel(&store);
+    panel.setDrives({1, 3});
+    showPanel(panel);
+    store.append(batch(1, 0, 500, 0.01));
+    store.append(batch(3, 0, 500, 0.01));
+    QAction *overlay = actionNamed(panel, "Overlay");
+    QVERIFY(overlay);
+    overlay->trigger();
+    QCOMPARE(panel.layoutMode(), PlotPanel::Layout::Overlaid);
+    QTRY_COMPARE(panel.charts().size(), 1);
+    StripChart *chart = panel.charts().first();
+    QTRY_COMPARE(chart->lineSeries().size(), 6);
+    QVERIFY(chart->valueAxis(Quantity::Current));
+    QVERIFY(chart->valueAxis(Quantity::Speed));
+    QVERIFY(chart->valueAxis(Quantity::Encoder));
+    QCOMPARE(chart->valueAxis(Quantity::Current)->alignment(), Qt::AlignLeft);
+    QCOMPARE(chart->valueAxis(Quantity::Speed)->alignment(), Qt::AlignRight);
+    QTRY_VERIFY(chart->lineSeries().last()->count() > 0);
+    overlay->trigger();
+    QTRY_COMPARE(panel.charts().size(), 3);
+}
+
+void tst_PlotPanel::signalPickerChangesCharts()
+{
+    TelemetryStore store;
+    PlotPanel panel(&store);
+    panel.setDrives({1});
+    showPanel(panel);
+    QCheckBox *multiTurn = nullptr;
+    QCheckBox *speed = nullptr;
+    for (QCheckBox *box : panel.findChildren<QCheckBox *>()) {
+        if (box->text() == "Multi-turn angle") {
+            multiTurn = box;
+        } else if (box->text() == "Speed") {
+            speed = box;
+        }
+    }
+    QVERIFY(multiTurn && speed);
+    multiTurn->setChecked(true);
+    speed->setChecked(false);
+    QVERIFY(panel.isChannelVisible(TelemetryChannel::MultiTurn));
+    QVERIFY(!panel.isChannelVisible(TelemetryChannel::Speed));
+    QTRY_COMPARE(panel.charts().size(), 3);
+    QCOMPARE(panel.charts().at(0)->traces().first().channel, TelemetryChannel::Torque);
+    QCOMPARE(panel.charts().at(1)->traces().first().channel, TelemetryChannel::Encoder);
+    QCOMPARE(panel.charts().at(2)->traces().first().channel, TelemetryChannel::MultiTurn);
+    QVERIFY(panel.charts().at(2)->valueAxis(Quantity::Angle));
+}
+
+void tst_PlotPanel::wheelZoomsAndFollowLiveReturns()
+{
+    TelemetryStore store;
+    PlotPanel panel(&store);
+    panel.setDrives({1});
+    showPanel(panel);
+    store.append(batch(1, 0, 3001, 0.01)); // 0 .. 30 s
+    StripChart *chart = panel.charts().first();
+    QTRY_COMPARE(chart->timeAxis()->max(), 30.0);
+    QVERIFY(panel.isFollowingLive());
+
+    const QPoint at = plotCentre(chart);
+    QWheelEvent wheel(at, chart->viewport()->mapToGlobal(at), QPoint(), QPoint(0, 120),
+                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(chart->viewport(), &wheel);
+    QVERIFY(!panel.isFollowingLive());
+    QVERIFY(qFuzzyCompare(panel.visibleRange().length(), 8.0)); // one notch: 80 %
+    QTRY_VERIFY(qFuzzyCompare(chart->timeAxis()->max() - chart->timeAxis()->min(), 8.0));
+    // Every stacked chart shows the same time.
+    for (StripChart *other : panel.charts()) {
+        QTRY_COMPARE(other->timeAxis()->min(), chart->timeAxis()->min());
+    }
+
+    QAction *follow = actionNamed(panel, "Follow live");
+    QVERIFY(follow && follow->isEnabled());
+    store.append(batch(1, 30.01, 100, 0.01));
+    follow->trigger();
+    QVERIFY(panel.isFollowingLive());
+    QVERIFY(!follow->isEnabled());
+    QTRY_VERIFY(qFuzzyCompare(chart->timeAxis()->max(), 31.0));
+}
+
+void tst_PlotPanel::dragPans()
+{
+    TelemetryStore store;
+    PlotPanel panel(&store);
+    panel.setDrives({1});
+    showPanel(panel);
+    store.append(batch(1, 0, 3001, 0.01));
+    StripChart *chart = panel.charts().first();
+    QTRY_COMPARE(chart->timeAxis()->max(), 30.0);
+    const QPoint from = plotCentre(chart);
+    const QPoint to = from + QPoint(100, 0);
+    const double secondsPerPixel = 10.0 / chart->chart()->plotArea().width();
+    QTest::mousePress(chart->viewport(), Qt::LeftButton, {}, from);
+    QTest::mouseMove(chart->viewport(), to);
+    QTest::mouseRelease(chart->viewport(), Qt::LeftButton, {}, to);
+    QVERIFY(!panel.isFollowingLive());
+    QVERIFY(std::abs(panel.visibleRange().end - (30 - 100 * secondsPerPixel)) < 1e-6);
+    QTRY_VERIFY(std::abs(chart->timeAxis()->max() - panel.visibleRange().end) < 1e-9);
+}
+
+void tst_PlotPanel::cursorReadoutShowsValues()
+{
+    TelemetryStore store;
+    PlotPanel panel(&store);
+    panel.setDrives({1});
+    showPanel(panel);
+    store.append(batch(1, 0, 1001, 0.01));
+    auto *readout = panel.findChild<lk::ui::CursorReadout *>();
+    QVERIFY(readout);
+    QTRY_VERIFY(readout->text().startsWith("Latest"));
+    StripChart *chart = panel.charts().first();
+    QTest::mouseMove(chart->viewport(), plotCentre(chart));
+    QTRY_VERIFY(chart->cursorTime().has_value());
+    QVERIFY(std::abs(*chart->cursorTime() - 5.0) < 0.1); // the centre of 0 .. 10 s
+    for (StripChart *other : panel.charts()) {
+        QCOMPARE(other->cursorTime(), chart->cursorTime());
+    }
+    QVERIFY(readout->text().startsWith("t = "));
+    QVERIFY(readout->text().contains("ID 1:"));
+    const double iq = *store.valueAt(1, TelemetryChannel::Torque, *chart->cursorTime());
+    QVERIFY2(readout->text().contains(QString::number(iq, 'f', 3)), qPrintable(readout->text()));
+}
+
+void tst_PlotPanel::autoscaleHoldsThenGrows()
+{
+    TelemetryStore store;
+    PlotPanel panel(&store);
+    panel.setDrives({1});
+    showPanel(panel);
+    store.append(batch(1, 0, 1000, 0.01)); // iq = sin: -1 .. 1
+    QValueAxis *axis = panel.charts().first()->valueAxis(Quantity::Current);
+    QVERIFY(axis);
+    QTRY_VERIFY(axis->min() <= -0.99 && axis->max() >= 0.99);
+    const double min = axis->min(), max = axis->max();
+    QVERIFY2(max - min < 4, "the range fits the data");
+    const quint64 redraws = panel.redrawCount();
+    store.append(batch(1, 10, 100, 0.01)); // more of the same: the scale holds still
+    QTRY_VERIFY(panel.redrawCount() > redraws);
+    QCOMPARE(axis->min(), min);
+    QCOMPARE(axis->max(), max);
+    store.append({sample(1, 11.5, 25.0, 0, 0)}); // a spike beyond the range: it grows
+    QTRY_VERIFY(axis->max() >= 25.0);
+}
+
+void tst_PlotPanel::manualScaleIsKept()
+{
+    TelemetryStore store;
+    PlotPanel panel(&store);
+    panel.setDrives({1});
+    showPanel(panel);
+    store.append(batch(1, 0, 1000, 0.01));
+    StripChart *chart = panel.charts().first();
+    QValueAxis *axis = chart->valueAxis(Quantity::Current);
+    QVERIFY(axis);
+    QTRY_VERIFY(panel.redrawCount() > 0 && axis->min() <= -0.99 && axis->max() >= 0.99);
+    waitUntilIdle(panel);
+    const double span = axis->max() - axis->min();
+    const QPoint at = plotCentre(chart);
+    QWheelEvent wheel(at, chart->viewport()->mapToGlobal(at), QPoint(), QPoint(0, -120),
+                      Qt::NoButton, Qt::ControlModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(chart->viewport(), &wheel); // Ctrl+wheel: scale values by hand
+    QVERIFY(!panel.autoscale());
+    QVERIFY(qFuzzyCompare(axis->max() - axis->min(), span * 1.25));
+    const double min = axis->min(), max = axis->max();
+    const quint64 redraws = panel.redrawCount();
+    store.append({sample(1, 10.5, 50.0, 0, 0)});
+    QTRY_VERIFY(panel.redrawCount() > redraws);
+    QCOMPARE(axis->min(), min);
+    QCOMPARE(axis->max(), max);
+    panel.setAutoscale(true);
+    QTRY_VERIFY(axis->max() >= 50.0);
+}
+
+void tst_PlotPanel::exportCsvWritesPlottedColumns()
+{
+    TelemetryStore store;
+    for (int k = 0; k < 10; ++k) {
+        store.append({sample(3, k * 0.01, k * 0.5, k * 10, k)});
+        store.append({sample(4, 0.005 + k * 0.01, -k, k, k)});
+    }
+    PlotPanel panel(&store);
+    panel.setDrives({3, 4});
+    panel.setChannelVisible(TelemetryChannel::Encoder, false);
+    QTemporaryDir dir;
+    const QString path = dir.filePath("plot.csv");
+    QCOMPARE(panel.exportCsv(path, PlotPanel::ExportScope::Everything), QString());
+    const QList<QStringList> rows = readCsv(path);
+    QCOMPARE(rows.size(), 21);
+    QCOMPARE(rows.first().join(','),
+             QString("time_s,id3_iq_a,id3_speed_dps,id4_iq_a,id4_speed_dps"));
+    double previous = -1;
+    for (int r = 1; r < rows.size(); ++r) {
+        const QStringList &cells = rows.at(r);
+        QCOMPARE(cells.size(), 5);
+        const double t = cells.at(0).toDouble();
+        QVERIFY(t > previous);
+        previous = t;
+        const int k = (r - 1) / 2;
+        const bool drive3 = (r - 1) % 2 == 0; // drive 3 at 0, 0.01, ...; drive 4 in between
+        QCOMPARE(cells.at(0), QString::number(drive3 ? k * 0.01 : 0.005 + k * 0.01, 'f', 6));
+        QCOMPARE(cells.at(1).isEmpty(), !drive3);
+        QCOMPARE(cells.at(3).isEmpty(), drive3);
+        if (drive3) {
+            QCOMPARE(cells.at(1).toDouble(), k * 0.5);
+            QCOMPARE(cells.at(2).toDouble(), k * 10.0);
+        } else {
+            QCOMPARE(cells.at(3).toDouble(), double(-k));
+            QCOMPARE(cells.at(4).toDouble(), double(k));
+        }
+    }
+}
+
+void tst_PlotPanel::exportCsvVisibleRange()
+{
+    TelemetryStore store;
+    store.append(batch(1, 0, 201, 0.1)); // 0 .. 20 s at 10 Hz
+    PlotPanel panel(&store);
+    panel.setDrives({1});
+    panel.setWindowSeconds(5);
+    QTemporaryDir dir;
+    const QString path = dir.filePath("visible.csv");
+    QCOMPARE(panel.exportCsv(path, PlotPanel::ExportScope::VisibleRange), QString());
+    const QList<QStringList> rows = readCsv(path);
+    QCOMPARE(rows.first().join(','), QString("time_s,id1_iq_a,id1_speed_dps,id1_encoder_counts"));
+    QCOMPARE(rows.size(), 1 + 51); // 15.0 .. 20.0 inclusive
+    QCOMPARE(rows.at(1).at(0), QString("15.000000"));
+    QCOMPARE(rows.last().at(0), QString("20.000000"));
+    QCOMPARE(rows.last().at(3), QString::number(int(20.0 * 100) % 16384));
+}
+
+void tst_PlotPanel::exportPngWritesImage()
+{
+    TelemetryStore store;
+    PlotPanel panel(&store);
+    panel.setDrives({1});
+    showPanel(panel);
+    store.append(batch(1, 0, 1000, 0.01));
+    QTRY_VERIFY(panel.charts().first()->lineSeries().first()->count() > 0);
+    QTemporaryDir dir;
+    const QString path = dir.filePath("plot.png");
+    QCOMPARE(panel.exportPng(path), QString());
+    const QImage image(path);
+    QVERIFY(!image.isNull());
+    QCOMPARE(image.size(), panel.charts().first()->parentWidget()->size());
+    // Not a blank picture: the plotted lines and axes use more than one colour.
+    const QRgb first = image.pixel(0, 0);
+    bool varied = false;
+    for (int y = 0; y < image.height() && !varied; y += 3) {
+        for (int x = 0; x < image.width() && !varied; x += 3) {
+            varied = image.pixel(x, y) != first;
+        }
+    }
+    QVERIFY(varied);
+}
+
+void tst_PlotPanel::exportReportsErrors()
+{
+    TelemetryStore store;
+    store.append(batch(1, 0, 10, 0.1));
+    PlotPanel panel(&store);
+    panel.setDrives({1});
+    showPanel(panel);
+    QVERIFY(!panel.exportCsv("/nonexistent-lk-dir/a.csv", PlotPanel::ExportScope::Everything)
+                 .isEmpty());
+    QVERIFY(!panel.exportPng("/nonexistent-lk-dir/a.png").isEmpty());
+}
+
+void tst_PlotPanel::pollRateControl()
+{
+    TelemetryStore store;
+    PlotPanel panel(&store);
+    auto *control = panel.findChild<lk::ui::PollRateControl *>();
+    QVERIFY(control);
+    auto *spin = control->findChild<QDoubleSpinBox *>();
+    auto *max = control->findChild<QCheckBox *>();
+    QVERIFY(spin && max);
+    QSignalSpy spy(&panel, &PlotPanel::pollRateRequested);
+    spin->setValue(200);
+    QCOMPARE(spy.count(), 1);
+    QCOMPARE(spy.last().at(0).toDouble(), 200.0);
+    max->setChecked(true);
+    QCOMPARE(spy.count(), 2);
+    QCOMPARE(spy.last().at(0).toDouble(), 0.0);
+    QVERIFY(!spin->isEnabled());
+
+    panel.setPollRate(50); // shows the rate in use: no request
+    QCOMPARE(spy.count(), 2);
+    QCOMPARE(control->pollRate(), 50.0);
+    QVERIFY(!max->isChecked());
+
+    panel.setBusLimit(485.0, 242.5);
+    QVERIFY(control->busLimitText().contains("485"));
+    QVERIFY(control->busLimitText().contains("242.5"));
+    QVERIFY(!control->busLimitText().contains("above"));
+    spin->setValue(300);
+    QVERIFY(control->busLimitText().contains("above"));
+}
+
+QTEST_MAIN(tst_PlotPanel)
+#include "tst_plotpanel.moc"

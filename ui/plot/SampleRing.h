@@ -1,0 +1,97 @@
+#pragma once
+
+#include "DecimatedSeries.h"
+#include "MinMax.h"
+
+#include <QtCore/QList>
+#include <QtCore/QPointF>
+#include <QtCore/QtGlobal>
+
+#include <vector>
+
+namespace lk::ui {
+
+/// How a time window is reduced to pixel columns.
+enum class DecimationMethod {
+    Auto,    ///< Pyramid when the window holds many points per column, else Scan
+    Scan,    ///< read every point in the window: O(points in window)
+    Pyramid, ///< min/max blocks of 2^k points: O(columns x log(points per column))
+};
+
+/// A fixed-capacity ring of (time, value) points, times non-decreasing, with a min/max
+/// pyramid over aligned blocks of 2^k slots (k = 3..16) so that a long window decimates
+/// without reading every point. Storage is reserved once: appending never allocates (on
+/// Linux the reservation costs address space; pages become resident when first written).
+class SampleRing {
+public:
+    explicit SampleRing(qsizetype capacity);
+
+    /// Appends a point; refuses (returns false) one older than the newest point or not finite.
+    bool append(double time, double value);
+    void clear();
+
+    qsizetype size() const { return m_size; }
+    qsizetype capacity() const { return m_capacity; }
+    bool isEmpty() const { return m_size == 0; }
+    quint64 totalAppended() const { return m_total; }
+
+    /// Point `index`, 0 being the oldest point held.
+    double timeAt(qsizetype index) const { return m_times[size_t(physical(index))]; }
+    double valueAt(qsizetype index) const { return m_values[size_t(physical(index))]; }
+    QPointF pointAt(qsizetype index) const { return {timeAt(index), valueAt(index)}; }
+
+    qsizetype lowerBound(double time) const; ///< first index with time >= `time`, or size()
+    qsizetype upperBound(double time) const; ///< first index with time > `time`, or size()
+    /// Min/max of values [begin, end) from whole pyramid blocks plus at most 14 single points
+    /// at each end: O(log(end - begin)).
+    MinMax minMax(qsizetype begin, qsizetype end) const;
+
+    /// Calls f(const double *times, const double *values, qsizetype n) for the at most two
+    /// contiguous stretches that hold [begin, end).
+    template <typename F> void forEachSpan(qsizetype begin, qsizetype end, F f) const;
+
+    /// The window [t0, t1] reduced to at most 2 points per column (see DecimatedSeries),
+    /// plus the nearest point outside each edge so that the line reaches the edges.
+    QList<QPointF> decimate(double t0, double t1, int columns,
+                            DecimationMethod method = DecimationMethod::Auto) const;
+
+private:
+    struct Level {
+        int shift = 0; // blocks of 2^shift slots at physical positions: no modulo anywhere
+        std::vector<double> min, max;
+    };
+
+    qsizetype physical(qsizetype index) const
+    {
+        const qsizetype p = m_oldest + index;
+        return p >= m_capacity ? p - m_capacity : p;
+    }
+    void minMaxSlots(qsizetype begin, qsizetype end, MinMax &result) const;
+    qsizetype columnEnd(qsizetype begin, qsizetype end, qsizetype guess,
+                        const ColumnMap &columnOf) const;
+    QList<QPointF> decimatePyramid(qsizetype i0, qsizetype i1, double t0, double t1,
+                                   int columns) const;
+
+    qsizetype m_capacity;
+    qsizetype m_size = 0;
+    qsizetype m_oldest = 0; // physical slot of index 0
+    qsizetype m_head = 0;   // physical slot the next point goes to
+    quint64 m_total = 0;    // points ever appended
+    std::vector<double> m_times, m_values;
+    std::vector<Level> m_levels;
+};
+
+template <typename F> void SampleRing::forEachSpan(qsizetype begin, qsizetype end, F f) const
+{
+    if (begin >= end) {
+        return;
+    }
+    const qsizetype start = physical(begin);
+    const qsizetype first = std::min(end - begin, m_capacity - start);
+    f(m_times.data() + start, m_values.data() + start, first);
+    if (first < end - begin) {
+        f(m_times.data(), m_values.data(), end - begin - first);
+    }
+}
+
+} // namespace lk::ui

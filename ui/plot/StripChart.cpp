@@ -1,0 +1,278 @@
+#include "StripChart.h"
+
+#include <QtCharts/QChart>
+#include <QtCharts/QLegend>
+#include <QtCharts/QLineSeries>
+#include <QtCharts/QValueAxis>
+
+#include <array>
+#include <cmath>
+
+namespace lk::ui {
+
+namespace {
+
+constexpr int kBaseMargin = 6;
+constexpr double kScalePadding = 0.05; // share of the range left free above and below
+constexpr int kTimeTicks = 8;
+constexpr int kValueTicks = 5;
+
+const std::array<QColor, 8> &seriesColors()
+{
+    static const std::array<QColor, 8> colors{QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28),
+                                              QColor(0x2c, 0xa0, 0x2c), QColor(0x94, 0x67, 0xbd),
+                                              QColor(0xff, 0x7f, 0x0e), QColor(0x8c, 0x56, 0x4b),
+                                              QColor(0xe3, 0x77, 0xc2), QColor(0x17, 0xbe, 0xcf)};
+    return colors;
+}
+
+int decimalsFor(double step)
+{
+    return std::clamp(int(std::ceil(-std::log10(step) - 1e-9)), 0, 6);
+}
+
+void setNiceTicks(QValueAxis *axis, double span, int ticks)
+{
+    const double step = niceStep(span / ticks);
+    axis->setTickType(QValueAxis::TicksDynamic);
+    axis->setTickAnchor(0);
+    axis->setTickInterval(step);
+    axis->setLabelFormat(QStringLiteral("%.%1f").arg(decimalsFor(step)));
+}
+
+// Autoscale keeps the value axis while the data stays inside it and fills at least this share
+// of it: the axis then changes a few times a second at most instead of every frame, which
+// spares QtCharts a relayout per frame and the user a jittering scale.
+constexpr double kMinFill = 0.5;
+
+bool keepsRange(std::pair<double, double> range, const MinMax &data)
+{
+    return data.min >= range.first && data.max <= range.second &&
+           (data.max - data.min) >= kMinFill * (range.second - range.first);
+}
+
+} // namespace
+
+std::pair<double, double> scaledRange(const MinMax &data)
+{
+    const double span = data.max - data.min;
+    const double pad = std::max(span * kScalePadding, std::max(std::abs(data.max), 1.0) * 1e-3);
+    // Rounded out to whole ticks so that the labels stay put while the range does.
+    const double step = niceStep((span + 2 * pad) / kValueTicks);
+    return {std::floor((data.min - pad) / step) * step, std::ceil((data.max + pad) / step) * step};
+}
+
+double niceStep(double raw)
+{
+    if (!(raw > 0) || !std::isfinite(raw)) {
+        return 1;
+    }
+    const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+    for (double m : {1.0, 2.0, 5.0, 10.0}) {
+        if (m * decade >= raw * (1 - 1e-9)) {
+            return m * decade;
+        }
+    }
+    return 10 * decade;
+}
+
+StripChart::StripChart(QWidget *parent) : TimeChartView(parent)
+{
+    // The view's own chart: setChart() would release (and so leak) the one it made.
+    QChart *c = chart();
+    c->setAnimationOptions(QChart::NoAnimation);
+    c->setBackgroundRoundness(0);
+    c->setMargins(QMargins(kBaseMargin, kBaseMargin, kBaseMargin, kBaseMargin));
+    c->legend()->setAlignment(Qt::AlignTop);
+    c->legend()->hide();
+    m_time = new QValueAxis(c);
+    m_time->setRange(0, 10);
+    setNiceTicks(m_time, 10, kTimeTicks);
+    c->addAxis(m_time, Qt::AlignBottom);
+}
+
+void StripChart::clearChart()
+{
+    chart()->removeAllSeries(); // deletes them
+    m_series.clear();
+    for (auto &[quantity, axis] : m_valueAxes) {
+        chart()->removeAxis(axis);
+        delete axis;
+    }
+    m_valueAxes.clear();
+}
+
+QColor StripChart::traceColor(int index) const
+{
+    const PlotTrace &trace = m_traces.at(index);
+    if (m_coloring == Coloring::ByChannel) {
+        return seriesColors()[size_t(trace.channel) % seriesColors().size()];
+    }
+    QVector<int> drives;
+    for (const PlotTrace &t : m_traces) {
+        if (!drives.contains(t.driveId)) {
+            drives.append(t.driveId);
+        }
+    }
+    return seriesColors()[size_t(drives.indexOf(trace.driveId)) % seriesColors().size()];
+}
+
+void StripChart::setTraces(const QVector<PlotTrace> &traces, Coloring coloring)
+{
+    if (traces == m_traces && coloring == m_coloring && m_series.size() == traces.size()) {
+        return;
+    }
+    clearChart();
+    m_traces = traces;
+    m_coloring = coloring;
+    QVector<int> drives;
+    for (int i = 0; i < m_traces.size(); ++i) {
+        const PlotTrace &trace = m_traces.at(i);
+        if (!drives.contains(trace.driveId)) {
+            drives.append(trace.driveId);
+        }
+        QValueAxis *&axis = m_valueAxes[trace.quantity()];
+        if (!axis) {
+            axis = new QValueAxis(chart());
+            axis->setTitleText(quantityTitle(trace.quantity()));
+            const bool left = m_valueAxes.size() % 2 == 1;
+            chart()->addAxis(axis, left ? Qt::AlignLeft : Qt::AlignRight);
+            if (m_coloring == Coloring::ByChannel) {
+                axis->setLabelsColor(traceColor(i));
+                axis->setTitleBrush(traceColor(i));
+            }
+        }
+        auto *series = new QLineSeries(chart());
+        series->setUseOpenGL(false); // raster: works offscreen and on any remote display
+        series->setName(
+            tr("ID %1 %2").arg(trace.driveId).arg(channelLabel(trace.channel, trace.power)));
+        QPen pen(traceColor(i), 1);
+        if (m_coloring == Coloring::ByChannel) {
+            // Several drives in one overlaid chart: the drive shows as the dash pattern.
+            static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine,
+                                                  Qt::DashDotLine, Qt::DashDotDotLine};
+            pen.setStyle(styles[drives.indexOf(trace.driveId) % 5]);
+        }
+        series->setPen(pen);
+        chart()->addSeries(series);
+        series->attachAxis(m_time);
+        series->attachAxis(axis);
+        m_series.append(series);
+    }
+    chart()->legend()->setVisible(drives.size() > 1 || m_valueAxes.size() > 1);
+    m_needsScale = true;
+}
+
+QValueAxis *StripChart::valueAxis(Quantity quantity) const
+{
+    const auto it = m_valueAxes.find(quantity);
+    return it == m_valueAxes.end() ? nullptr : it->second;
+}
+
+void StripChart::setTimeLabelsVisible(bool visible)
+{
+    m_time->setLabelsVisible(visible);
+    m_time->setTitleText(visible ? tr("Time (s)") : QString());
+}
+
+int StripChart::plotColumns() const
+{
+    const double width = chart()->plotArea().width();
+    return std::max(1, int(width > 0 ? width : this->width()));
+}
+
+void StripChart::refresh(const TelemetryStore &store, TimeSpan span, bool autoscale,
+                         DecimationMethod method)
+{
+    if (!(span.end > span.begin)) {
+        span.end = span.begin + TimeViewport::kMinSpan;
+    }
+    const int columns = plotColumns();
+    QVector<QList<QPointF>> points(m_traces.size());
+    std::map<Quantity, MinMax> inWindow, anywhere;
+    for (int i = 0; i < m_traces.size(); ++i) {
+        const PlotTrace &trace = m_traces.at(i);
+        points[i] =
+            store.decimated(trace.driveId, trace.channel, span.begin, span.end, columns, method);
+        MinMax &inside = inWindow[trace.quantity()];
+        MinMax &all = anywhere[trace.quantity()];
+        for (const QPointF &p : std::as_const(points[i])) {
+            all.add(p.y());
+            if (p.x() >= span.begin && p.x() <= span.end) {
+                inside.add(p.y());
+            }
+        }
+    }
+    std::map<Quantity, std::pair<double, double>> ranges;
+    if (autoscale || m_needsScale) {
+        bool scaled = false;
+        for (const auto &[quantity, axis] : m_valueAxes) {
+            // Only neighbours outside the window: scale on them rather than on nothing.
+            const MinMax mm =
+                inWindow[quantity].isValid() ? inWindow[quantity] : anywhere[quantity];
+            if (!mm.isValid()) {
+                continue;
+            }
+            const std::pair<double, double> target = scaledRange(mm);
+            const std::pair<double, double> current{axis->min(), axis->max()};
+            if (m_needsScale || (target != current && !keepsRange(current, mm))) {
+                ranges[quantity] = target;
+            }
+            scaled = true;
+        }
+        m_needsScale = m_needsScale && !scaled;
+    }
+    const bool timeMoves = m_time->min() != span.begin || m_time->max() != span.end;
+    if (timeMoves || !ranges.empty()) {
+        // QtCharts rebuilds every line (path and hover outline) on each axis change: empty
+        // the lines first so that only the final replace() below pays for that.
+        for (QLineSeries *series : std::as_const(m_series)) {
+            series->clear();
+        }
+    }
+    if (timeMoves) {
+        m_time->setRange(span.begin, span.end);
+        setNiceTicks(m_time, span.length(), kTimeTicks);
+    }
+    for (const auto &[quantity, range] : ranges) {
+        QValueAxis *axis = m_valueAxes.at(quantity);
+        axis->setRange(range.first, range.second);
+        setNiceTicks(axis, range.second - range.first, kValueTicks);
+    }
+    for (int i = 0; i < m_traces.size(); ++i) {
+        m_series.at(i)->replace(points.at(i));
+    }
+}
+
+void StripChart::scaleValueAxes(double factor)
+{
+    for (auto &[quantity, axis] : m_valueAxes) {
+        const double mid = (axis->min() + axis->max()) / 2;
+        const double half = (axis->max() - axis->min()) / 2 * factor;
+        axis->setRange(mid - half, mid + half);
+        setNiceTicks(axis, 2 * half, kValueTicks);
+    }
+}
+
+double StripChart::axisInsetLeft() const
+{
+    return chart()->plotArea().left() - chart()->margins().left();
+}
+
+double StripChart::axisInsetRight() const
+{
+    return chart()->size().width() - chart()->plotArea().right() - chart()->margins().right();
+}
+
+void StripChart::setAlignmentPadding(double left, double right)
+{
+    if (qFuzzyCompare(left + 1, m_padLeft + 1) && qFuzzyCompare(right + 1, m_padRight + 1)) {
+        return;
+    }
+    m_padLeft = left;
+    m_padRight = right;
+    chart()->setMargins(
+        QMargins(kBaseMargin + int(left), kBaseMargin, kBaseMargin + int(right), kBaseMargin));
+}
+
+} // namespace lk::ui

@@ -1,0 +1,69 @@
+#pragma once
+
+#include "PlotTrace.h"
+#include "SampleRing.h"
+#include "TelemetryStore.h"
+#include "TimeChartView.h"
+#include "TimeViewport.h"
+
+#include <QtCore/QList>
+#include <QtCore/QVector>
+
+#include <map>
+
+class QLineSeries;
+class QValueAxis;
+
+namespace lk::ui {
+
+/// One chart of the plot panel: a time axis, one value axis per quantity (alternating left
+/// and right) and one line per trace, refreshed from the store decimated to its pixel width.
+class StripChart : public TimeChartView {
+    Q_OBJECT
+public:
+    enum class Coloring { ByDrive, ByChannel };
+
+    explicit StripChart(QWidget *parent = nullptr);
+
+    /// Rebuilds series and axes when the traces or the colouring changed; else does nothing.
+    void setTraces(const QVector<PlotTrace> &traces, Coloring coloring);
+    const QVector<PlotTrace> &traces() const { return m_traces; }
+    QList<QLineSeries *> lineSeries() const { return m_series; }
+    QValueAxis *valueAxis(Quantity quantity) const;
+
+    void setTimeLabelsVisible(bool visible);
+    /// Decimates every trace over `span` to the plot's pixel width and hands the points to
+    /// the series; rescales value axes when `autoscale` (or on the first data after a
+    /// rebuild), else keeps their ranges.
+    void refresh(const TelemetryStore &store, TimeSpan span, bool autoscale,
+                 DecimationMethod method = DecimationMethod::Auto);
+    /// Pixel columns of the plot area: the decimation width.
+    int plotColumns() const;
+    /// Scales every value axis around its centre (factor < 1 zooms in).
+    void scaleValueAxes(double factor);
+
+    /// Room the axes take left and right of the plot area, margins excluded: stacked charts
+    /// pad to the widest so that their time axes line up.
+    double axisInsetLeft() const;
+    double axisInsetRight() const;
+    void setAlignmentPadding(double left, double right);
+
+private:
+    void clearChart();
+    QColor traceColor(int index) const;
+
+    QVector<PlotTrace> m_traces;
+    Coloring m_coloring = Coloring::ByDrive;
+    QList<QLineSeries *> m_series;
+    std::map<Quantity, QValueAxis *> m_valueAxes;
+    QValueAxis *m_time = nullptr;
+    bool m_needsScale = true;
+    double m_padLeft = 0, m_padRight = 0;
+};
+
+/// A step of 1, 2 or 5 x 10^k at least `raw`, for tick intervals.
+double niceStep(double raw);
+/// The autoscaled value range for data spanning `data`: padded and rounded out to ticks.
+std::pair<double, double> scaledRange(const MinMax &data);
+
+} // namespace lk::ui

@@ -1,0 +1,158 @@
+#include "TelemetryStore.h"
+
+#include <limits>
+
+namespace lk::ui {
+
+using lk::bus::TelemetryField;
+
+TelemetryStore::TelemetryStore(QObject *parent) : TelemetryStore(kDefaultCapacity, parent) {}
+
+TelemetryStore::TelemetryStore(qsizetype capacityPerChannel, QObject *parent)
+    : QObject(parent), m_capacity(std::max<qsizetype>(1, capacityPerChannel))
+{
+    m_notify.setSingleShot(true);
+    m_notify.setInterval(0);
+    connect(&m_notify, &QTimer::timeout, this, &TelemetryStore::dataAppended);
+}
+
+TelemetryStore::~TelemetryStore() = default;
+
+void TelemetryStore::append(const lk::bus::TelemetryBatch &batch)
+{
+    if (batch.isEmpty()) {
+        return;
+    }
+    for (const lk::bus::TelemetrySample &sample : batch) {
+        appendSample(sample);
+    }
+    ++m_revision;
+    if (!m_notify.isActive()) {
+        m_notify.start();
+    }
+}
+
+void TelemetryStore::appendSample(const lk::bus::TelemetrySample &sample)
+{
+    Drive &drive = m_drives[sample.id];
+    const double t = sample.time;
+    if (sample.has(TelemetryField::IqA) || sample.has(TelemetryField::Power)) {
+        const bool power = sample.has(TelemetryField::Power);
+        auto &torque = drive.rings[size_t(TelemetryChannel::Torque)];
+        if (drive.torqueIsPower.has_value() && *drive.torqueIsPower != power) {
+            torque.reset(); // another unit: the old points would be read as the new one
+        }
+        drive.torqueIsPower = power;
+        put(drive, TelemetryChannel::Torque, t, power ? double(sample.power) : sample.iqA);
+    }
+    if (sample.has(TelemetryField::Speed)) {
+        put(drive, TelemetryChannel::Speed, t, sample.speedDps);
+    }
+    if (sample.has(TelemetryField::Encoder)) {
+        put(drive, TelemetryChannel::Encoder, t, sample.encoder);
+    }
+    if (sample.has(TelemetryField::MultiTurn)) {
+        put(drive, TelemetryChannel::MultiTurn, t, sample.multiTurnDeg);
+    }
+    if (sample.has(TelemetryField::SingleTurn)) {
+        put(drive, TelemetryChannel::SingleTurn, t, sample.singleTurnDeg);
+    }
+    if (sample.has(TelemetryField::Temperature)) {
+        put(drive, TelemetryChannel::Temperature, t, sample.temperatureC);
+    }
+    if (sample.has(TelemetryField::Voltage)) {
+        put(drive, TelemetryChannel::Voltage, t, sample.voltageV);
+    }
+    if (sample.has(TelemetryField::PhaseCurrents)) {
+        put(drive, TelemetryChannel::PhaseA, t, sample.iaA);
+        put(drive, TelemetryChannel::PhaseB, t, sample.ibA);
+        put(drive, TelemetryChannel::PhaseC, t, sample.icA);
+    }
+}
+
+void TelemetryStore::put(Drive &drive, TelemetryChannel channel, double time, double value)
+{
+    auto &ring = drive.rings[size_t(channel)];
+    if (!ring) {
+        ring = std::make_unique<SampleRing>(m_capacity);
+    }
+    if (!ring->append(time, value)) {
+        ++m_rejected;
+    }
+}
+
+void TelemetryStore::clear()
+{
+    m_drives.clear();
+    ++m_revision;
+    m_notify.stop();
+    emit cleared();
+}
+
+QVector<int> TelemetryStore::driveIds() const
+{
+    QVector<int> ids;
+    ids.reserve(qsizetype(m_drives.size()));
+    for (const auto &entry : m_drives) {
+        ids.append(entry.first);
+    }
+    return ids;
+}
+
+std::optional<bool> TelemetryStore::torqueIsPower(int id) const
+{
+    const auto it = m_drives.find(id);
+    return it == m_drives.end() ? std::nullopt : it->second.torqueIsPower;
+}
+
+const SampleRing *TelemetryStore::ring(int id, TelemetryChannel channel) const
+{
+    const auto it = m_drives.find(id);
+    return it == m_drives.end() ? nullptr : it->second.rings[size_t(channel)].get();
+}
+
+qsizetype TelemetryStore::count(int id, TelemetryChannel channel) const
+{
+    const SampleRing *r = ring(id, channel);
+    return r ? r->size() : 0;
+}
+
+std::optional<TimeSpan> TelemetryStore::timeSpan() const
+{
+    TimeSpan span{std::numeric_limits<double>::infinity(),
+                  -std::numeric_limits<double>::infinity()};
+    for (const auto &entry : m_drives) {
+        for (const auto &ring : entry.second.rings) {
+            if (ring && !ring->isEmpty()) {
+                span.begin = std::min(span.begin, ring->timeAt(0));
+                span.end = std::max(span.end, ring->timeAt(ring->size() - 1));
+            }
+        }
+    }
+    if (span.begin > span.end) {
+        return std::nullopt;
+    }
+    return span;
+}
+
+std::optional<double> TelemetryStore::valueAt(int id, TelemetryChannel channel, double time) const
+{
+    const SampleRing *r = ring(id, channel);
+    if (!r) {
+        return std::nullopt;
+    }
+    const qsizetype after = r->upperBound(time);
+    if (after == 0) {
+        return std::nullopt;
+    }
+    return r->valueAt(after - 1);
+}
+
+QList<QPointF> TelemetryStore::decimated(int id, TelemetryChannel channel, double t0, double t1,
+                                         int columns, DecimationMethod method) const
+{
+    const SampleRing *r = ring(id, channel);
+    return r ? r->decimate(t0, t1, columns, method) : QList<QPointF>{};
+}
+
+} // namespace lk::ui

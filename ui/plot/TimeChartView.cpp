@@ -1,0 +1,197 @@
+#include "TimeChartView.h"
+
+#include <QtCharts/QValueAxis>
+#include <QtGui/QMouseEvent>
+#include <QtGui/QPainter>
+#include <QtGui/QWheelEvent>
+#include <QtWidgets/QRubberBand>
+
+#include <cmath>
+
+namespace lk::ui {
+
+namespace {
+
+constexpr double kWheelZoomPerNotch = 0.8; // one wheel notch shows 80 % of the span
+constexpr int kMinSelectPixels = 4;        // a shorter drag is a click, not a selection
+
+} // namespace
+
+TimeChartView::TimeChartView(QWidget *parent) : QChartView(parent)
+{
+    setMouseTracking(true);
+    setRubberBand(QChartView::NoRubberBand); // zoom is ours: every chart must zoom alike
+    setDragMode(QGraphicsView::NoDrag);
+}
+
+void TimeChartView::setCursorTime(std::optional<double> time)
+{
+    if (time == m_cursorTime) {
+        return;
+    }
+    // Repaint only the strips under the old and the new line, not the whole chart: the
+    // mouse moves far more often than the data changes.
+    viewport()->update(cursorStrip(m_cursorTime));
+    m_cursorTime = time;
+    viewport()->update(cursorStrip(m_cursorTime));
+}
+
+std::optional<double> TimeChartView::cursorX(double time) const
+{
+    const QValueAxis *axis = timeAxis();
+    if (!chart() || !axis || axis->max() <= axis->min()) {
+        return std::nullopt;
+    }
+    const double share = (time - axis->min()) / (axis->max() - axis->min());
+    if (share < 0 || share > 1) {
+        return std::nullopt;
+    }
+    const QRectF area = chart()->plotArea();
+    return area.left() + share * area.width(); // chart coordinates
+}
+
+QRect TimeChartView::cursorStrip(std::optional<double> time) const
+{
+    const std::optional<double> x = time ? cursorX(*time) : std::nullopt;
+    if (!x) {
+        return {};
+    }
+    const QRectF area = chart()->plotArea();
+    const QRectF strip(*x - 2, area.top(), 4, area.height());
+    return mapFromScene(chart()->mapToScene(strip)).boundingRect().adjusted(-1, -1, 1, 1);
+}
+
+QRectF TimeChartView::plotAreaInView() const
+{
+    return mapFromScene(chart()->mapToScene(chart()->plotArea())).boundingRect();
+}
+
+QValueAxis *TimeChartView::timeAxis() const
+{
+    const QList<QAbstractAxis *> axes = chart()->axes(Qt::Horizontal);
+    return axes.isEmpty() ? nullptr : qobject_cast<QValueAxis *>(axes.first());
+}
+
+double TimeChartView::timeAtX(double viewX) const
+{
+    const QRectF area = plotAreaInView();
+    const QValueAxis *axis = timeAxis();
+    if (!axis || area.width() <= 0) {
+        return 0;
+    }
+    return axis->min() + (viewX - area.left()) / area.width() * (axis->max() - axis->min());
+}
+
+double TimeChartView::secondsPerPixel() const
+{
+    const QRectF area = chart()->plotArea();
+    const QValueAxis *axis = timeAxis();
+    if (!axis || area.width() <= 0) {
+        return 0;
+    }
+    return (axis->max() - axis->min()) / area.width();
+}
+
+void TimeChartView::mousePressEvent(QMouseEvent *event)
+{
+    const bool select =
+        event->button() == Qt::RightButton ||
+        (event->button() == Qt::LeftButton && event->modifiers().testFlag(Qt::ShiftModifier));
+    if (select) {
+        m_drag = Drag::Select;
+        m_selectStartX = event->position().x();
+        if (!m_band) {
+            m_band = new QRubberBand(QRubberBand::Rectangle, viewport());
+        }
+        const QRectF area = plotAreaInView();
+        m_band->setGeometry(QRect(int(m_selectStartX), int(area.top()), 0, int(area.height())));
+        m_band->show();
+    } else if (event->button() == Qt::LeftButton) {
+        m_drag = Drag::Pan;
+        m_lastX = event->position().x();
+        setCursor(Qt::ClosedHandCursor);
+    }
+    event->accept();
+}
+
+void TimeChartView::mouseMoveEvent(QMouseEvent *event)
+{
+    const double x = event->position().x();
+    if (m_drag == Drag::Pan) {
+        const double dx = x - m_lastX;
+        m_lastX = x;
+        if (dx != 0) {
+            emit panRequested(-dx * secondsPerPixel()); // dragging right shows earlier times
+        }
+    } else if (m_drag == Drag::Select && m_band) {
+        const QRectF area = plotAreaInView();
+        const double left = std::min(x, m_selectStartX);
+        m_band->setGeometry(QRect(int(left), int(area.top()), int(std::abs(x - m_selectStartX)),
+                                  int(area.height())));
+    }
+    if (plotAreaInView().contains(event->position())) {
+        emit cursorMoved(timeAtX(x));
+    } else {
+        emit cursorLeft();
+    }
+    event->accept();
+}
+
+void TimeChartView::mouseReleaseEvent(QMouseEvent *event)
+{
+    if (m_drag == Drag::Select && m_band) {
+        m_band->hide();
+        const double x = event->position().x();
+        if (std::abs(x - m_selectStartX) >= kMinSelectPixels) {
+            emit rangeSelected(timeAtX(m_selectStartX), timeAtX(x));
+        }
+    }
+    if (m_drag == Drag::Pan) {
+        unsetCursor();
+    }
+    m_drag = Drag::None;
+    event->accept();
+}
+
+void TimeChartView::wheelEvent(QWheelEvent *event)
+{
+    const double notches = event->angleDelta().y() / 120.0;
+    if (notches == 0) {
+        event->ignore();
+        return;
+    }
+    const double factor = std::pow(kWheelZoomPerNotch, notches);
+    if (event->modifiers().testFlag(Qt::ControlModifier)) {
+        emit valueZoomRequested(factor);
+    } else {
+        emit zoomRequested(factor, timeAtX(event->position().x()));
+    }
+    event->accept();
+}
+
+void TimeChartView::leaveEvent(QEvent *event)
+{
+    emit cursorLeft();
+    QChartView::leaveEvent(event);
+}
+
+void TimeChartView::drawForeground(QPainter *painter, const QRectF &rect)
+{
+    QChartView::drawForeground(painter, rect);
+    if (!m_cursorTime || !chart()) {
+        return;
+    }
+    const std::optional<double> x = cursorX(*m_cursorTime);
+    if (!x) {
+        return;
+    }
+    const QRectF area = chart()->plotArea();
+    const QPointF top = chart()->mapToScene(QPointF(*x, area.top()));
+    const QPointF bottom = chart()->mapToScene(QPointF(*x, area.bottom()));
+    painter->save();
+    painter->setPen(QPen(palette().color(QPalette::WindowText), 0, Qt::DashLine));
+    painter->drawLine(top, bottom);
+    painter->restore();
+}
+
+} // namespace lk::ui
