@@ -40,6 +40,22 @@ void setNiceTicks(QValueAxis *axis, double span, int ticks)
     axis->setLabelFormat(QStringLiteral("%.%1f").arg(decimalsFor(step)));
 }
 
+// QtCharts lays the ticks out on every setter. Going from a flat signal (range ~0.001) to a
+// real one with the old interval would lay out millions of ticks and freeze the GUI, and the
+// reverse order has the same problem when the range shrinks; so a growing interval is set
+// before the range and a shrinking one after it.
+void setAxisRange(QValueAxis *axis, double min, double max, int ticks)
+{
+    const double step = niceStep((max - min) / ticks);
+    // A fixed-count axis lays out only its few ticks whatever the range: range first, then.
+    const bool grows = axis->tickType() == QValueAxis::TicksDynamic && step >= axis->tickInterval();
+    if (grows)
+        setNiceTicks(axis, max - min, ticks);
+    axis->setRange(min, max);
+    if (!grows)
+        setNiceTicks(axis, max - min, ticks);
+}
+
 // Autoscale keeps the value axis while the data stays inside it and fills at least this share
 // of it: the axis then changes a few times a second at most instead of every frame, which
 // spares QtCharts a relayout per frame and the user a jittering scale.
@@ -86,8 +102,7 @@ StripChart::StripChart(QWidget *parent) : TimeChartView(parent)
     c->legend()->setAlignment(Qt::AlignTop);
     c->legend()->hide();
     m_time = new QValueAxis(c);
-    m_time->setRange(0, 10);
-    setNiceTicks(m_time, 10, kTimeTicks);
+    setAxisRange(m_time, 0, 10, kTimeTicks);
     c->addAxis(m_time, Qt::AlignBottom);
 }
 
@@ -231,13 +246,11 @@ void StripChart::refresh(const TelemetryStore &store, TimeSpan span, bool autosc
         }
     }
     if (timeMoves) {
-        m_time->setRange(span.begin, span.end);
-        setNiceTicks(m_time, span.length(), kTimeTicks);
+        setAxisRange(m_time, span.begin, span.end, kTimeTicks);
     }
     for (const auto &[quantity, range] : ranges) {
         QValueAxis *axis = m_valueAxes.at(quantity);
-        axis->setRange(range.first, range.second);
-        setNiceTicks(axis, range.second - range.first, kValueTicks);
+        setAxisRange(axis, range.first, range.second, kValueTicks);
     }
     for (int i = 0; i < m_traces.size(); ++i) {
         m_series.at(i)->replace(points.at(i));
@@ -249,8 +262,7 @@ void StripChart::scaleValueAxes(double factor)
     for (auto &[quantity, axis] : m_valueAxes) {
         const double mid = (axis->min() + axis->max()) / 2;
         const double half = (axis->max() - axis->min()) / 2 * factor;
-        axis->setRange(mid - half, mid + half);
-        setNiceTicks(axis, 2 * half, kValueTicks);
+        setAxisRange(axis, mid - half, mid + half, kValueTicks);
     }
 }
 

@@ -134,6 +134,7 @@ private slots:
     void exportPngWritesImage();
     void exportReportsErrors();
     void pollRateControl();
+    void flatSignalThenJumpKeepsTicksBounded();
 };
 
 void tst_PlotPanel::seriesHoldDecimatedPoints()
@@ -576,6 +577,39 @@ void tst_PlotPanel::pollRateControl()
     QVERIFY(!control->busLimitText().contains("above"));
     spin->setValue(300);
     QVERIFY(control->busLimitText().contains("above"));
+}
+
+// A motor at rest gives a near-flat trace (axis range ~0.001); a jump to a real range must not
+// make QtCharts lay out one tick per old interval (millions: the GUI froze), and neither must
+// the jump back.
+void tst_PlotPanel::flatSignalThenJumpKeepsTicksBounded()
+{
+    TelemetryStore store;
+    PlotPanel panel(&store);
+    panel.setDrives({1});
+    showPanel(panel);
+    TelemetryBatch flat;
+    for (int i = 0; i < 200; ++i)
+        flat.append(sample(1, i * 0.01, 0.0, (i % 2) * 0.001, 0));
+    store.append(flat);
+    StripChart *chart = panel.charts().at(1); // speed
+    QTRY_VERIFY(chart->valueAxis(Quantity::Speed) != nullptr);
+    QTRY_VERIFY(chart->lineSeries().first()->count() > 0);
+    TelemetryBatch jump;
+    for (int i = 0; i < 200; ++i)
+        jump.append(sample(1, 2 + i * 0.01, 0.0, 5000.0 * (i % 2), 0));
+    store.append(jump);
+    QValueAxis *axis = chart->valueAxis(Quantity::Speed);
+    QTRY_VERIFY(axis->max() >= 5000.0);
+    QVERIFY(axis->tickType() == QValueAxis::TicksDynamic);
+    QVERIFY((axis->max() - axis->min()) / axis->tickInterval() < 50);
+    TelemetryBatch back;
+    for (int i = 0; i < 2000; ++i)
+        back.append(sample(1, 4 + i * 0.01, 0.0, (i % 2) * 0.001, 0));
+    store.append(back);
+    panel.setWindowSeconds(5);
+    QTRY_VERIFY(axis->max() < 1.0);
+    QVERIFY((axis->max() - axis->min()) / axis->tickInterval() < 50);
 }
 
 QTEST_MAIN(tst_PlotPanel)
