@@ -1,0 +1,156 @@
+// lkstudio: parse the command line, build the main window, connect, and (for the
+// documentation) optionally save a screenshot and quit.
+
+#include "DemoMotion.h"
+
+#include <main/AppSettings.h>
+#include <main/BusController.h>
+#include <main/MainWindow.h>
+#include <main/StartupOptions.h>
+#include <panels/BusModel.h>
+#include <panels/MessageBanner.h>
+
+#include <main/SimulatedBus.h>
+#include <motor/SeriesLimits.h>
+#include <sim/SimBus.h>
+#include <transport/SerialTransport.h>
+
+#include <QtCore/QFile>
+#include <QtCore/QTimer>
+#include <QtWidgets/QApplication>
+
+#include <cstdio>
+#include <optional>
+
+namespace {
+
+/// After the first scan, select the drive asked for with --select.
+void selectWhenFound(lk::ui::MainWindow &window, int id)
+{
+    auto *model = window.busModel();
+    QObject::connect(model, &lk::ui::BusModel::drivesChanged, &window, [model, id] {
+        if (model->drive(id))
+            model->setCurrentId(id);
+    });
+}
+
+/// --sim-low-voltage: once drive `id` is found on the simulator, its supply sags below the
+/// series minimum, so that the low-voltage warning can be seen (demos, documentation).
+void lowerSupplyWhenFound(lk::ui::MainWindow &window, int id)
+{
+    auto *model = window.busModel();
+    auto *controller = window.controller();
+    QObject::connect(model, &lk::ui::BusModel::drivesChanged, &window, [model, controller, id] {
+        const auto *d = model->drive(id);
+        const auto sim = controller->simulator();
+        if (!d || !d->series || !sim)
+            return;
+        const double volts = lk::motor::seriesLimits(*d->series).minSupplyV * 0.75;
+        sim->withBus([id, volts](lk::sim::SimBus &bus) {
+            if (auto *drive = bus.drive(id))
+                drive->setSupplyVoltage(volts);
+        });
+    });
+}
+
+/// Save the window to `file` after `delayMs`, then quit (exit code 1 if it could not).
+void screenshotLater(lk::ui::MainWindow &window, const QString &file, int delayMs)
+{
+    QTimer::singleShot(delayMs, &window, [&window, file] {
+        const bool ok = window.grab().save(file, "PNG");
+        if (!ok)
+            std::fprintf(stderr, "lkstudio: cannot write %s\n", qPrintable(file));
+        QCoreApplication::exit(ok ? 0 : 1);
+    });
+}
+
+/// --help and --version print text only: they must work without a display (man pages, SSH).
+bool wantsTextOnly(int argc, char *argv[])
+{
+    for (int i = 1; i < argc; ++i) {
+        const QByteArray a(argv[i]);
+        if (a == "-h" || a == "--help" || a == "--help-all" || a == "-v" || a == "--version")
+            return true;
+    }
+    return false;
+}
+
+void setNames()
+{
+    QCoreApplication::setApplicationName(QStringLiteral("lkstudio"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(LK_STUDIO_VERSION));
+    QCoreApplication::setOrganizationName(QStringLiteral("lkstudio"));
+}
+
+std::optional<lk::ui::StartupOptions> parseOptions()
+{
+    QString error;
+    auto options = lk::ui::StartupOptions::parse(QCoreApplication::arguments(), &error);
+    if (!options)
+        std::fprintf(stderr, "lkstudio: %s\n", qPrintable(error));
+    return options;
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    if (wantsTextOnly(argc, argv)) {
+        QCoreApplication app(argc, argv);
+        setNames();
+        return parseOptions() ? 0 : 2;
+    }
+    QApplication app(argc, argv);
+    setNames();
+    QApplication::setApplicationDisplayName(QStringLiteral("LK Servo Studio"));
+    const auto options = parseOptions();
+    if (!options)
+        return 2;
+
+    lk::ui::AppSettings settings(options->settingsFile);
+    lk::ui::MainWindow window(&settings);
+    if (options->sim)
+        window.controller()->setSimulatorSpec(*options->sim);
+    window.controller()->setSimulatorFaults(options->simFaults);
+    window.controller()->setScanOnConnect(options->scan);
+    if (!options->view.isEmpty() && !window.showView(options->view)) {
+        std::fprintf(stderr, "lkstudio: no view named %s (%s)\n", qPrintable(options->view),
+                     qPrintable(window.viewNames().join(QStringLiteral(", "))));
+        return 2;
+    }
+    if (options->selectId > 0)
+        selectWhenFound(window, options->selectId);
+    if (options->simLowVoltageId > 0)
+        lowerSupplyWhenFound(window, options->simLowVoltageId);
+    if (options->windowSize.isValid())
+        window.resize(options->windowSize);
+    window.show();
+
+    const auto present = [](const QString &port) {
+        return QFile::exists(lk::transport::SerialTransport::systemPath(port));
+    };
+    const lk::ui::ConnectionChoice choice = options->initialChoice(settings, present);
+    const bool fellBack = options->fellBackToSimulator(settings, present);
+    const QString rememberedPort = settings.connection().port;
+    // A fallback to the simulator must not overwrite the port the user chose last time.
+    window.connectTo(choice, !fellBack);
+    if (fellBack) {
+        window.banner()->showMessage(
+            lk::ui::MessageBanner::Level::Info,
+            QApplication::translate("main", "%1 is not plugged in: showing the built-in simulated "
+                                            "bus. Pick the port and press Connect when the "
+                                            "adapter is in.")
+                .arg(rememberedPort));
+    }
+    DemoMotion demo(window.controller());
+    if (options->simMotion) {
+        if (!choice.isSimulator()) {
+            std::fprintf(stderr, "lkstudio: --sim-motion works only on the simulated bus\n");
+            return 2;
+        }
+        demo.start();
+    }
+    if (!options->screenshotFile.isEmpty())
+        screenshotLater(window, options->screenshotFile, options->screenshotDelayMs);
+    return QApplication::exec();
+}

@@ -1,0 +1,560 @@
+#include "DriveTestRig.h"
+
+#include <drive/ControlModePanel.h>
+#include <drive/ControlView.h>
+#include <drive/DriveSettingsStore.h>
+#include <drive/JogPanel.h>
+#include <drive/SetpointGenerator.h>
+#include <drive/SoftLimitsEditor.h>
+
+#include <QtCore/QTemporaryDir>
+#include <QtGui/QShortcut>
+#include <QtTest/QtTest>
+#include <QtWidgets/QCheckBox>
+#include <QtWidgets/QComboBox>
+#include <QtWidgets/QDoubleSpinBox>
+#include <QtWidgets/QPushButton>
+#include <QtWidgets/QVBoxLayout>
+
+#include <cmath>
+
+using lk::drivetest::kWaitMs;
+using lk::drivetest::SimRig;
+using lk::protocol::Command;
+using lk::protocol::Series;
+using lk::protocol::SpinDirection;
+using lk::safety::LimitKind;
+using lk::ui::ControlMode;
+using lk::ui::ControlView;
+using lk::ui::SetpointGenerator;
+
+namespace {
+
+std::unique_ptr<ControlView> openView(SimRig &rig, int id)
+{
+    auto view = std::make_unique<ControlView>();
+    view->resize(1200, 800);
+    view->setSession(&rig.session);
+    view->setConnected(true);
+    view->setDrive(id, rig.motor(id));
+    view->show();
+    return view;
+}
+
+QPushButton *button(QWidget &view, const char *name)
+{
+    return view.findChild<QPushButton *>(QLatin1String(name));
+}
+
+// Angles differ by at most `tol` degrees on a circle of `turn` degrees.
+bool nearOnCircle(double a, double b, double tol, double turn = 360)
+{
+    const double d = std::fmod(std::fabs(a - b), turn);
+    return std::min(d, turn - d) <= tol;
+}
+
+} // namespace
+
+class tst_ControlView : public QObject {
+    Q_OBJECT
+private slots:
+    void modesOfferedPerSeries_data();
+    void modesOfferedPerSeries();
+    void eachModeMoves_data();
+    void eachModeMoves();
+    void refusedCommandSendsNothing_data();
+    void refusedCommandSendsNothing();
+    void softLimitsPersistPerDrive();
+    void offStopRun();
+    void jogHoldAndRelease();
+    void jogStep();
+    void keyboardJogNotInTextField();
+    void generatorStartsAndStopStops();
+    void generatorStopsOnEscape();
+    void generatorStopsOnEscapeUnderWindowShortcut();
+    void generatorStopsOnDriveChange();
+    void generatorWaveforms_data();
+    void generatorWaveforms();
+};
+
+void tst_ControlView::modesOfferedPerSeries_data()
+{
+    QTest::addColumn<int>("id");
+    QTest::addColumn<bool>("openLoop");
+    QTest::addColumn<bool>("torque");
+    QTest::newRow("MF") << 1 << false << true;
+    QTest::newRow("MG") << 2 << false << true;
+    QTest::newRow("MS") << 3 << true << false;
+    QTest::newRow("MH") << 4 << false << true;
+}
+
+void tst_ControlView::modesOfferedPerSeries()
+{
+    QFETCH(int, id);
+    QFETCH(bool, openLoop);
+    QFETCH(bool, torque);
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, id);
+    auto *modes = view->modePanel();
+    QCOMPARE(modes->isOffered(ControlMode::OpenLoop), openLoop);
+    QCOMPARE(modes->isOffered(ControlMode::Torque), torque);
+    for (ControlMode m : {ControlMode::Speed, ControlMode::MultiPosition,
+                          ControlMode::SinglePosition, ControlMode::IncrementPosition})
+        QVERIFY(modes->isOffered(m));
+    QCOMPARE(modes->setMode(ControlMode::OpenLoop), openLoop);
+    auto *combo = view->findChild<QComboBox *>(QStringLiteral("mode"));
+    QCOMPARE(combo->count(), 5); // four common modes plus torque or open loop
+    // Unknown series: neither torque nor open loop.
+    lk::bus::KnownMotor unknown;
+    unknown.id = 9;
+    view->setDrive(9, unknown);
+    QVERIFY(!modes->isOffered(ControlMode::Torque));
+    QVERIFY(!modes->isOffered(ControlMode::OpenLoop));
+}
+
+void tst_ControlView::eachModeMoves_data()
+{
+    QTest::addColumn<int>("id");
+    QTest::addColumn<int>("mode");
+    QTest::addColumn<double>("value");
+    QTest::addColumn<double>("maxSpeed"); // 0: without max speed
+    QTest::addColumn<QString>("check");
+    QTest::newRow("open loop MS") << 3 << int(ControlMode::OpenLoop) << 150.0 << 0.0 << "spins";
+    QTest::newRow("torque MF") << 1 << int(ControlMode::Torque) << 0.5 << 0.0 << "spins";
+    QTest::newRow("speed dps") << 1 << int(ControlMode::Speed) << 360.0 << 0.0 << "speed";
+    QTest::newRow("speed rpm") << 4 << int(ControlMode::Speed) << -60.0 << 0.0 << "rpm";
+    QTest::newRow("multi") << 1 << int(ControlMode::MultiPosition) << 400.0 << 0.0 << "multi";
+    QTest::newRow("multi limited")
+        << 2 << int(ControlMode::MultiPosition) << -300.0 << 720.0 << "multi";
+    QTest::newRow("single") << 1 << int(ControlMode::SinglePosition) << 90.0 << 0.0 << "single";
+    QTest::newRow("single limited")
+        << 4 << int(ControlMode::SinglePosition) << 270.0 << 360.0 << "single";
+    QTest::newRow("increment") << 1 << int(ControlMode::IncrementPosition) << 45.0 << 0.0
+                               << "increment";
+    QTest::newRow("increment limited")
+        << 3 << int(ControlMode::IncrementPosition) << -120.0 << 360.0 << "increment";
+}
+
+void tst_ControlView::eachModeMoves()
+{
+    QFETCH(int, id);
+    QFETCH(int, mode);
+    QFETCH(double, value);
+    QFETCH(double, maxSpeed);
+    QFETCH(QString, check);
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, id);
+    if (mode == int(ControlMode::Torque) || mode == int(ControlMode::OpenLoop)) {
+        lk::safety::SoftLimits limits = view->softLimits();
+        limits.maxTorqueA = 1;
+        view->setSoftLimits(limits);
+    }
+    auto *modes = view->modePanel();
+    QVERIFY(modes->setMode(ControlMode(mode)));
+    const std::optional<double> max = maxSpeed > 0 ? std::optional<double>(maxSpeed) : std::nullopt;
+    const double startDeg = rig.multiTurnDeg(id);
+    switch (ControlMode(mode)) {
+    case ControlMode::OpenLoop:
+        modes->setPower(int(value));
+        break;
+    case ControlMode::Torque:
+        modes->setTorqueA(value);
+        break;
+    case ControlMode::Speed:
+        if (check == QLatin1String("rpm"))
+            modes->setSpeedUnit(lk::ui::ControlModePanel::SpeedUnit::Rpm);
+        modes->setSpeed(value);
+        break;
+    case ControlMode::MultiPosition:
+        modes->setMultiAngle(value, max);
+        break;
+    case ControlMode::SinglePosition:
+        modes->setSingleAngle(value, SpinDirection::Clockwise, max);
+        break;
+    case ControlMode::IncrementPosition:
+        modes->setIncrement(value, max);
+        break;
+    }
+    QTest::mouseClick(button(*view, "send"), Qt::LeftButton);
+    QVERIFY2(view->lastOutcome().sent, qPrintable(view->statusText()));
+
+    if (check == QLatin1String("spins")) {
+        QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.speedDps(id)) > 30, kWaitMs);
+    } else if (check == QLatin1String("speed")) {
+        QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.speedDps(id) - value) < 0.05 * std::fabs(value),
+                                 kWaitMs);
+    } else if (check == QLatin1String("rpm")) {
+        QTRY_VERIFY_WITH_TIMEOUT(
+            std::fabs(rig.speedDps(id) - value * 6) < 0.05 * std::fabs(value * 6), kWaitMs);
+    } else if (check == QLatin1String("multi")) {
+        QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.multiTurnDeg(id) - value) < 2, kWaitMs);
+    } else if (check == QLatin1String("single")) {
+        QTRY_VERIFY_WITH_TIMEOUT(nearOnCircle(rig.singleTurnDeg(id), value, 2), kWaitMs);
+    } else if (check == QLatin1String("increment")) {
+        QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.multiTurnDeg(id) - (startDeg + value)) < 2, kWaitMs);
+    }
+    view->motorOff();
+    QVERIFY(rig.barrier(id));
+    QCOMPARE(rig.count(id, Command::MotorOff), 1);
+}
+
+void tst_ControlView::refusedCommandSendsNothing_data()
+{
+    QTest::addColumn<int>("id");
+    QTest::addColumn<int>("mode");
+    QTest::addColumn<double>("value");
+    QTest::addColumn<QString>("softLimit"); // which soft limit the row sets first
+    QTest::addColumn<int>("limit");         // LimitKind, or -1 for a builder (FieldError) refusal
+    QTest::addColumn<int>("command");
+    QTest::newRow("torque over soft") << 1 << int(ControlMode::Torque) << 3.0 << ""
+                                      << int(LimitKind::SoftTorque) << int(Command::Torque);
+    QTest::newRow("torque over series") << 4 << int(ControlMode::Torque) << 5.0 << "torque 20"
+                                        << int(LimitKind::SeriesCurrent) << int(Command::Torque);
+    QTest::newRow("torque out of range")
+        << 1 << int(ControlMode::Torque) << 40.0 << "" << -1 << int(Command::Torque);
+    QTest::newRow("power over soft") << 3 << int(ControlMode::OpenLoop) << 500.0 << ""
+                                     << int(LimitKind::SoftPower) << int(Command::OpenLoop);
+    QTest::newRow("power out of range")
+        << 3 << int(ControlMode::OpenLoop) << 1500.0 << "" << -1 << int(Command::OpenLoop);
+    QTest::newRow("speed over series") << 3 << int(ControlMode::Speed) << 7000.0 << "speed 0"
+                                       << int(LimitKind::SeriesSpeed) << int(Command::Speed);
+    QTest::newRow("speed over soft") << 1 << int(ControlMode::Speed) << 500.0 << "speed 100"
+                                     << int(LimitKind::SoftSpeed) << int(Command::Speed);
+    QTest::newRow("angle above range")
+        << 1 << int(ControlMode::MultiPosition) << 200.0 << "angle 100"
+        << int(LimitKind::AngleAboveMax) << int(Command::MultiPosition);
+    QTest::newRow("single angle out of range") << 1 << int(ControlMode::SinglePosition) << 400.0
+                                               << "" << -1 << int(Command::SinglePosition);
+    QTest::newRow("step over soft")
+        << 1 << int(ControlMode::IncrementPosition) << 90.0 << "step 10"
+        << int(LimitKind::SoftIncrement) << int(Command::IncrementPosition);
+}
+
+void tst_ControlView::refusedCommandSendsNothing()
+{
+    QFETCH(int, id);
+    QFETCH(int, mode);
+    QFETCH(double, value);
+    QFETCH(QString, softLimit);
+    QFETCH(int, limit);
+    QFETCH(int, command);
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, id);
+    lk::safety::SoftLimits limits = view->softLimits();
+    const QStringList parts = softLimit.split(QLatin1Char(' '), Qt::SkipEmptyParts);
+    if (parts.size() == 2) {
+        const double v = parts[1].toDouble();
+        if (parts[0] == QLatin1String("torque"))
+            limits.maxTorqueA = v;
+        else if (parts[0] == QLatin1String("speed"))
+            limits.maxSpeedDps = v;
+        else if (parts[0] == QLatin1String("angle"))
+            limits.maxAngleDeg = v;
+        else if (parts[0] == QLatin1String("step"))
+            limits.maxIncrementDeg = v;
+        view->setSoftLimits(limits);
+    }
+    auto *modes = view->modePanel();
+    QVERIFY(modes->setMode(ControlMode(mode)));
+    modes->setPower(int(value));
+    modes->setTorqueA(value);
+    modes->setSpeed(value);
+    modes->setMultiAngle(value);
+    modes->setSingleAngle(value, SpinDirection::Clockwise);
+    modes->setIncrement(value);
+    QSignalSpy refused(view.get(), &ControlView::commandRefused);
+    QTest::mouseClick(button(*view, "send"), Qt::LeftButton);
+    const lk::ui::MotionOutcome out = view->lastOutcome();
+    QVERIFY(!out.sent);
+    QCOMPARE(refused.count(), 1);
+    if (limit < 0)
+        QVERIFY(out.fieldError.has_value());
+    else
+        QCOMPARE(int(out.limit), limit);
+    QVERIFY(!view->statusText().isEmpty());
+    QVERIFY(view->statusText().startsWith(QStringLiteral("Refused")));
+    QVERIFY(rig.barrier(id));
+    QCOMPARE(rig.count(id, Command(command)), 0);
+}
+
+void tst_ControlView::softLimitsPersistPerDrive()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    QTemporaryDir dir;
+    const QString ini = dir.filePath(QStringLiteral("limits.ini"));
+    {
+        lk::ui::IniDriveStore store(ini);
+        auto view = openView(rig, 1);
+        view->setSettingsStore(&store);
+        // Defaults: a quarter of the MF's 9 A.
+        QCOMPARE(view->softLimits(), lk::safety::SoftLimits::defaults(Series::MF));
+        auto *torque = view->findChild<QDoubleSpinBox *>(QStringLiteral("limitTorque"));
+        torque->setValue(1.5);
+        view->findChild<QCheckBox *>(QStringLiteral("limitMaxAngleOn"))->setChecked(true);
+        view->findChild<QDoubleSpinBox *>(QStringLiteral("limitMaxAngle"))->setValue(3600);
+        QTest::mouseClick(button(*view, "applyLimits"), Qt::LeftButton);
+        QCOMPARE(view->softLimits().maxTorqueA, 1.5);
+        store.sync();
+    }
+    lk::ui::IniDriveStore store(ini);
+    auto view = openView(rig, 1);
+    view->setSettingsStore(&store);
+    QCOMPARE(view->softLimits().maxTorqueA, 1.5);
+    QCOMPARE(view->softLimits().maxAngleDeg, std::optional<double>(3600));
+    // Another drive keeps its own defaults.
+    view->setDrive(4, rig.motor(4));
+    QCOMPARE(view->softLimits(), lk::safety::SoftLimits::defaults(Series::MH));
+}
+
+void tst_ControlView::offStopRun()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    view->modePanel()->setMode(ControlMode::Speed);
+    view->modePanel()->setSpeed(180);
+    QTest::mouseClick(button(*view, "send"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.speedDps(1) - 180) < 10, kWaitMs);
+    using RunState = lk::sim::SimDrive::RunState;
+    auto state = [&] {
+        return rig.read<RunState>(1, [](const lk::sim::SimDrive &d) { return d.runState(); });
+    };
+    QTest::mouseClick(button(*view, "motorStop"), Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(state(), RunState::Stopped, kWaitMs);
+    QTest::mouseClick(button(*view, "motorRun"), Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(state(), RunState::Running, kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.speedDps(1) - 180) < 10, kWaitMs);
+    QTest::mouseClick(button(*view, "motorOff"), Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(state(), RunState::Off, kWaitMs);
+}
+
+void tst_ControlView::jogHoldAndRelease()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    view->jogPanel()->setSpeedDps(120);
+    QPushButton *hold = view->jogPanel()->holdButton(+1);
+    QTest::mousePress(hold, Qt::LeftButton);
+    QVERIFY(view->isJogging());
+    QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.speedDps(1) - 120) < 10, kWaitMs);
+    QTest::mouseRelease(hold, Qt::LeftButton);
+    QVERIFY(!view->isJogging());
+    QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.speedDps(1)) < 2, kWaitMs);
+    QCOMPARE(rig.count(1, Command::Speed), 2); // run, then speed 0
+
+    // Counter-clockwise, and a jog over the soft speed limit is refused outright.
+    QTest::mousePress(view->jogPanel()->holdButton(-1), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(rig.speedDps(1) < -100, kWaitMs);
+    QTest::mouseRelease(view->jogPanel()->holdButton(-1), Qt::LeftButton);
+    lk::safety::SoftLimits limits = view->softLimits();
+    limits.maxSpeedDps = 50;
+    view->setSoftLimits(limits);
+    QTest::mousePress(hold, Qt::LeftButton);
+    QVERIFY(!view->isJogging());
+    QCOMPARE(view->lastOutcome().limit, LimitKind::SoftSpeed);
+    QTest::mouseRelease(hold, Qt::LeftButton);
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::Speed), 4);
+}
+
+void tst_ControlView::jogStep()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    view->jogPanel()->setStepDeg(30);
+    view->jogPanel()->setSpeedDps(360);
+    const double start = rig.multiTurnDeg(1);
+    QTest::mouseClick(view->jogPanel()->stepButton(+1), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.multiTurnDeg(1) - (start + 30)) < 2, kWaitMs);
+    QTest::mouseClick(view->jogPanel()->stepButton(-1), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.multiTurnDeg(1) - start) < 2, kWaitMs);
+    QCOMPARE(rig.count(1, Command::IncrementPositionLimited), 2);
+}
+
+void tst_ControlView::keyboardJogNotInTextField()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    QApplication::setActiveWindow(view.get());
+    QVERIFY(QTest::qWaitForWindowActive(view.get()));
+    view->jogPanel()->setSpeedDps(100);
+    view->jogPanel()->setKeyboardJog(true);
+
+    // Focus in a text field: arrows edit the field, the motor stays put.
+    auto *speedField = view->findChild<QDoubleSpinBox *>(QStringLiteral("jogSpeed"));
+    speedField->setFocus();
+    QTRY_VERIFY(speedField->hasFocus());
+    QTest::keyPress(QApplication::focusWidget(), Qt::Key_Right);
+    QTest::keyRelease(QApplication::focusWidget(), Qt::Key_Right);
+    QVERIFY(!view->isJogging());
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::Speed), 0);
+
+    // Focus on the view itself: Right runs while held, release stops.
+    view->setFocus();
+    QTRY_VERIFY(view->hasFocus());
+    QTest::keyPress(view.get(), Qt::Key_Right);
+    QVERIFY(view->isJogging());
+    QTRY_VERIFY_WITH_TIMEOUT(rig.speedDps(1) > 80, kWaitMs);
+    QTest::keyRelease(view.get(), Qt::Key_Right);
+    QVERIFY(!view->isJogging());
+    QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.speedDps(1)) < 2, kWaitMs);
+
+    // Off by default: a fresh switch-off ignores arrows.
+    view->jogPanel()->setKeyboardJog(false);
+    QTest::keyPress(view.get(), Qt::Key_Left);
+    QTest::keyRelease(view.get(), Qt::Key_Left);
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::Speed), 2);
+}
+
+void tst_ControlView::generatorStartsAndStopStops()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    SetpointGenerator::Settings s;
+    s.waveform = SetpointGenerator::Waveform::Square;
+    s.target = SetpointGenerator::Target::Speed;
+    s.amplitude = 90;
+    s.periodS = 0.5;
+    s.rateHz = 20;
+    view->startGenerator(s);
+    QVERIFY(view->generator()->isRunning());
+    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::Speed) >= 3, kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.speedDps(1)) > 30, kWaitMs);
+    QTest::mouseClick(view->findChild<QPushButton *>(QStringLiteral("stopGenerator")),
+                      Qt::LeftButton);
+    QVERIFY(!view->generator()->isRunning());
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::MotorStop), 1);
+    const int sent = rig.count(1, Command::Speed);
+    QTest::qWait(300); // several generator periods: nothing more may be sent
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::Speed), sent);
+}
+
+void tst_ControlView::generatorStopsOnEscape()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    SetpointGenerator::Settings s;
+    s.target = SetpointGenerator::Target::Position;
+    s.waveform = SetpointGenerator::Waveform::Sine;
+    s.offset = rig.multiTurnDeg(1);
+    s.amplitude = 20;
+    view->startGenerator(s);
+    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::MultiPosition) >= 2, kWaitMs);
+    // Esc with nobody else taking it: the view halts the generator and sends the stop.
+    QTest::keyClick(view.get(), Qt::Key_Escape);
+    QVERIFY(!view->generator()->isRunning());
+    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::MotorOff) >= 1, kWaitMs);
+    QVERIFY(rig.barrier(1));
+    const int sent = rig.count(1, Command::MultiPosition);
+    QTest::qWait(300);
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::MultiPosition), sent);
+}
+
+void tst_ControlView::generatorStopsOnEscapeUnderWindowShortcut()
+{
+    // lkstudio takes Esc with an application-wide shortcut: the generator must stop anyway,
+    // and the shortcut must still fire (the view never swallows Esc).
+    SimRig rig;
+    QVERIFY(rig.open());
+    QWidget window;
+    auto *layout = new QVBoxLayout(&window);
+    auto *view = new ControlView(&window);
+    layout->addWidget(view);
+    auto *escape = new QShortcut(QKeySequence(Qt::Key_Escape), &window);
+    escape->setContext(Qt::ApplicationShortcut);
+    int fired = 0;
+    QObject::connect(escape, &QShortcut::activated, &window, [&] {
+        ++fired;
+        rig.session.emergencyStop();
+    });
+    view->setSession(&rig.session);
+    view->setConnected(true);
+    view->setDrive(1, rig.motor(1));
+    window.resize(1200, 800);
+    window.show();
+    QApplication::setActiveWindow(&window);
+    QVERIFY(QTest::qWaitForWindowActive(&window));
+    SetpointGenerator::Settings s;
+    s.target = SetpointGenerator::Target::Speed;
+    view->startGenerator(s);
+    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::Speed) >= 2, kWaitMs);
+    view->setFocus();
+    QTest::keyClick(&window, Qt::Key_Escape);
+    QVERIFY(!view->generator()->isRunning());
+    QCOMPARE(fired, 1);
+    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::MotorOff) >= 1, kWaitMs);
+}
+
+void tst_ControlView::generatorStopsOnDriveChange()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    SetpointGenerator::Settings s;
+    s.target = SetpointGenerator::Target::Speed;
+    view->startGenerator(s);
+    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::Speed) >= 2, kWaitMs);
+    view->setDrive(2, rig.motor(2));
+    QVERIFY(!view->generator()->isRunning());
+    QTRY_COMPARE_WITH_TIMEOUT(rig.count(1, Command::MotorStop), 1, kWaitMs);
+    QVERIFY(rig.barrier(2));
+    QCOMPARE(rig.count(2, Command::Speed), 0);
+
+    view->setDrive(1, rig.motor(1));
+    view->startGenerator(s);
+    QVERIFY(view->generator()->isRunning());
+    view->setConnected(false);
+    QVERIFY(!view->generator()->isRunning());
+}
+
+void tst_ControlView::generatorWaveforms_data()
+{
+    QTest::addColumn<int>("waveform");
+    QTest::addColumn<double>("t");
+    QTest::addColumn<double>("expected");
+    using W = SetpointGenerator::Waveform;
+    // amplitude 10, offset 5, period 2 s
+    QTest::newRow("step before") << int(W::Step) << 0.5 << 5.0;
+    QTest::newRow("step after") << int(W::Step) << 1.5 << 15.0;
+    QTest::newRow("step stays") << int(W::Step) << 9.0 << 15.0;
+    QTest::newRow("square high") << int(W::Square) << 0.2 << 15.0;
+    QTest::newRow("square low") << int(W::Square) << 1.2 << -5.0;
+    QTest::newRow("sine 0") << int(W::Sine) << 0.0 << 5.0;
+    QTest::newRow("sine peak") << int(W::Sine) << 0.5 << 15.0;
+    QTest::newRow("sine trough") << int(W::Sine) << 1.5 << -5.0;
+    QTest::newRow("ramp 0") << int(W::Ramp) << 0.0 << 5.0;
+    QTest::newRow("ramp up") << int(W::Ramp) << 0.25 << 10.0;
+    QTest::newRow("ramp top") << int(W::Ramp) << 0.5 << 15.0;
+    QTest::newRow("ramp bottom") << int(W::Ramp) << 1.5 << -5.0;
+    QTest::newRow("ramp next cycle") << int(W::Ramp) << 2.5 << 15.0;
+}
+
+void tst_ControlView::generatorWaveforms()
+{
+    QFETCH(int, waveform);
+    QFETCH(double, t);
+    QFETCH(double, expected);
+    SetpointGenerator::Settings s;
+    s.waveform = SetpointGenerator::Waveform(waveform);
+    s.amplitude = 10;
+    s.offset = 5;
+    s.periodS = 2;
+    QVERIFY(std::fabs(SetpointGenerator::valueAt(s, t) - expected) < 1e-9);
+}
+
+QTEST_MAIN(tst_ControlView)
+#include "tst_controlview.moc"

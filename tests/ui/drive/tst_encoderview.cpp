@@ -1,0 +1,251 @@
+#include "DriveTestRig.h"
+
+#include <drive/ConfirmDialog.h>
+#include <drive/DriveSettingsStore.h>
+#include <drive/EncoderView.h>
+
+#include <QtCore/QTemporaryDir>
+#include <QtTest/QtTest>
+#include <QtWidgets/QPushButton>
+
+#include <cmath>
+
+using lk::drivetest::kWaitMs;
+using lk::drivetest::SimRig;
+using lk::protocol::Command;
+using lk::ui::AngleCheck;
+using lk::ui::ConfirmDialog;
+using lk::ui::ConfirmRequest;
+using lk::ui::EncoderView;
+
+namespace {
+
+std::unique_ptr<EncoderView> openView(SimRig &rig, int id)
+{
+    auto view = std::make_unique<EncoderView>();
+    view->resize(1100, 650);
+    view->setSession(&rig.session);
+    view->setConnected(true);
+    view->setDrive(id, rig.motor(id));
+    view->show();
+    return view;
+}
+
+int circularDistance(int a, int b, int counts)
+{
+    const int d = std::abs(a - b) % counts;
+    return std::min(d, counts - d);
+}
+
+} // namespace
+
+class tst_EncoderView : public QObject {
+    Q_OBJECT
+private slots:
+    void readsLiveWhileVisible();
+    void resolutionAndGearFromName_data();
+    void resolutionAndGearFromName();
+    void resolutionAndGearPersist();
+    void writeOffset();
+    void offsetOutOfRangeSendsNothing();
+    void clearAngleZeroesTheAngle();
+    void angleCheckOutcomes_data();
+    void angleCheckOutcomes();
+    void zeroToRomAppliesAfterRestart();
+    void declinedZeroSendsNothing();
+};
+
+void tst_EncoderView::readsLiveWhileVisible()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    QTRY_VERIFY_WITH_TIMEOUT(view->lastEncoder().has_value(), kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(view->lastMultiTurnDeg().has_value(), kWaitMs);
+    const quint16 raw =
+        rig.read<quint16>(1, [](const lk::sim::SimDrive &d) { return d.encoderRaw(); });
+    QVERIFY(circularDistance(view->lastEncoder()->encoderRaw, raw, 16384) <= 2);
+    QVERIFY(std::fabs(*view->lastMultiTurnDeg() - rig.multiTurnDeg(1)) < 1);
+    // Hidden: the live reads stop.
+    view->hide();
+    QVERIFY(rig.barrier(1));
+    const int reads = rig.count(1, Command::ReadEncoder);
+    QTest::qWait(400); // four poll periods
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::ReadEncoder), reads);
+}
+
+void tst_EncoderView::resolutionAndGearFromName_data()
+{
+    QTest::addColumn<QString>("spec");
+    QTest::addColumn<int>("bits");
+    QTest::addColumn<double>("ratio");
+    QTest::newRow("MF default") << "1:MF" << 14 << 1.0;
+    QTest::newRow("MF 18-bit by name") << "1:MF4015-18bit" << 18 << 1.0;
+    QTest::newRow("MG geared") << "1:MG" << 18 << 10.0;
+    QTest::newRow("MG i36") << "1:MG5010E-i36" << 18 << 36.0;
+    QTest::newRow("MS") << "1:MS" << 12 << 1.0;
+}
+
+void tst_EncoderView::resolutionAndGearFromName()
+{
+    QFETCH(QString, spec);
+    QFETCH(int, bits);
+    QFETCH(double, ratio);
+    SimRig rig(spec);
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    QCOMPARE(view->encoderBits(), bits);
+    QCOMPARE(view->gearRatio(), ratio);
+    QCOMPARE(view->countsPerTurn(), 1 << std::min(bits, 16));
+}
+
+void tst_EncoderView::resolutionAndGearPersist()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    QTemporaryDir dir;
+    const QString ini = dir.filePath(QStringLiteral("drives.ini"));
+    {
+        lk::ui::IniDriveStore store(ini);
+        auto view = openView(rig, 1);
+        view->setSettingsStore(&store);
+        view->setEncoderBits(16);
+        view->setGearRatio(6);
+        store.sync();
+    }
+    lk::ui::IniDriveStore store(ini);
+    auto view = openView(rig, 1);
+    view->setSettingsStore(&store);
+    QCOMPARE(view->encoderBits(), 16);
+    QCOMPARE(view->gearRatio(), 6.0);
+    view->setDrive(4, rig.motor(4)); // other drive: its own inference
+    QCOMPARE(view->encoderBits(), 14);
+    QCOMPARE(view->gearRatio(), 1.0);
+}
+
+void tst_EncoderView::writeOffset()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    QStringList asked;
+    ConfirmDialog::ScopedPolicy yes([&](const ConfirmRequest &q) {
+        asked << q.key;
+        return true;
+    });
+    QSignalSpy done(view.get(), &EncoderView::offsetWriteFinished);
+    view->writeOffset(1234);
+    QCOMPARE(asked, QStringList{QStringLiteral("write_encoder_offset")});
+    QTRY_COMPARE_WITH_TIMEOUT(done.count(), 1, kWaitMs);
+    QCOMPARE(done.first().first().toBool(), true);
+    QCOMPARE(rig.read<quint16>(1, [](const lk::sim::SimDrive &d) { return d.encoderOffset(); }),
+             quint16(1234));
+    QCOMPARE(view->lastEncoder()->encoderOffset, quint16(1234));
+}
+
+void tst_EncoderView::offsetOutOfRangeSendsNothing()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1); // MF: 14 bit, 0..16383
+    int asked = 0;
+    ConfirmDialog::ScopedPolicy yes([&](const ConfirmRequest &) {
+        ++asked;
+        return true;
+    });
+    view->writeOffset(16384);
+    QCOMPARE(asked, 0);
+    QVERIFY(view->statusText().contains(QStringLiteral("0..16383")));
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::WriteEncoderOffset), 0);
+}
+
+void tst_EncoderView::clearAngleZeroesTheAngle()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    const double before = rig.multiTurnDeg(1);
+    QVERIFY(std::fabs(before) > 10); // the simulator starts drives at different angles
+    ConfirmDialog::ScopedPolicy yes([](const ConfirmRequest &) { return true; });
+    QSignalSpy checked(view.get(), &EncoderView::angleCheckFinished);
+    QTest::mouseClick(view->findChild<QPushButton *>(QStringLiteral("clearAngle")), Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(checked.count(), 1, kWaitMs);
+    QCOMPARE(view->lastAngleCheck()->outcome, AngleCheck::Outcome::Cleared);
+    QVERIFY(std::fabs(rig.multiTurnDeg(1)) < 1);
+    QCOMPARE(rig.count(1, Command::ClearAngle), 1);
+    QVERIFY(view->statusText().contains(QStringLiteral("cleared")));
+}
+
+void tst_EncoderView::angleCheckOutcomes_data()
+{
+    QTest::addColumn<double>("before");
+    QTest::addColumn<double>("after");
+    QTest::addColumn<int>("outcome");
+    QTest::newRow("cleared") << 137.5 << 0.0 << int(AngleCheck::Outcome::Cleared);
+    QTest::newRow("cleared within tolerance") << -500.0 << 0.4 << int(AngleCheck::Outcome::Cleared);
+    QTest::newRow("ignored by firmware") << 137.5 << 137.5 << int(AngleCheck::Outcome::Unchanged);
+    QTest::newRow("already zero") << 0.2 << 0.0 << int(AngleCheck::Outcome::AlreadyZero);
+    QTest::newRow("moving") << 100.0 << 40.0 << int(AngleCheck::Outcome::ChangedNotZero);
+}
+
+void tst_EncoderView::angleCheckOutcomes()
+{
+    QFETCH(double, before);
+    QFETCH(double, after);
+    QFETCH(int, outcome);
+    QCOMPARE(int(AngleCheck::classify(before, after).outcome), outcome);
+}
+
+void tst_EncoderView::zeroToRomAppliesAfterRestart()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    QList<ConfirmRequest> asked;
+    ConfirmDialog::ScopedPolicy yes([&](const ConfirmRequest &q) {
+        asked << q;
+        return true;
+    });
+    QSignalSpy done(view.get(), &EncoderView::zeroWriteFinished);
+    const quint16 raw =
+        rig.read<quint16>(1, [](const lk::sim::SimDrive &d) { return d.encoderRaw(); });
+    QVERIFY(circularDistance(raw, 0, 16384) > 100); // not at zero already
+    view->writeZeroToRom();
+    QCOMPARE(asked.size(), 1);
+    QVERIFY(asked.first().reason.contains(QStringLiteral("power")));
+    QVERIFY(asked.first().reason.contains(QStringLiteral("wears")));
+    QTRY_COMPARE_WITH_TIMEOUT(done.count(), 1, kWaitMs);
+    QCOMPARE(done.first().first().toBool(), true);
+    QVERIFY(view->statusText().contains(QStringLiteral("Power the drive off and on")));
+    // Not applied before the power cycle...
+    QCOMPARE(rig.read<quint16>(1, [](const lk::sim::SimDrive &d) { return d.encoderOffset(); }),
+             quint16(0));
+    // ...and applied after it: the present position reads as encoder zero.
+    rig.restartDrive(1);
+    const quint16 encoder =
+        rig.read<quint16>(1, [](const lk::sim::SimDrive &d) { return d.encoder(); });
+    QVERIFY2(circularDistance(encoder, 0, 16384) <= 2, qPrintable(QString::number(encoder)));
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::WriteZeroRom), 1);
+}
+
+void tst_EncoderView::declinedZeroSendsNothing()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    ConfirmDialog::ScopedPolicy no([](const ConfirmRequest &) { return false; });
+    view->writeZeroToRom();
+    view->clearAngle();
+    view->writeOffset(10);
+    QVERIFY(view->statusText().contains(QStringLiteral("nothing was sent")));
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::WriteZeroRom), 0);
+    QCOMPARE(rig.count(1, Command::ClearAngle), 0);
+    QCOMPARE(rig.count(1, Command::WriteEncoderOffset), 0);
+}
+
+QTEST_MAIN(tst_EncoderView)
+#include "tst_encoderview.moc"

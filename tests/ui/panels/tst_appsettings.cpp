@@ -1,0 +1,165 @@
+#include <main/AppSettings.h>
+
+#include <QtCore/QSettings>
+#include <QtCore/QTemporaryDir>
+#include <QtTest/QtTest>
+
+using lk::ui::AppSettings;
+using lk::ui::ConnectionChoice;
+
+class tst_AppSettings : public QObject {
+    Q_OBJECT
+private slots:
+    void init();
+    void defaults();
+    void roundTrip_data();
+    void roundTrip();
+    void migratesUnversioned_data();
+    void migratesUnversioned();
+    void leavesNewerFileAlone();
+    void clampsScanRange();
+
+private:
+    QString file() const { return m_dir.filePath(QStringLiteral("lkstudio.ini")); }
+    QTemporaryDir m_dir;
+};
+
+void tst_AppSettings::init()
+{
+    QFile::remove(file());
+}
+
+void tst_AppSettings::defaults()
+{
+    AppSettings s(file());
+    QCOMPARE(s.loadedVersion(), 0);
+    const ConnectionChoice c = s.connection();
+    QVERIFY(c.isSimulator());
+    QCOMPARE(c.baud, 115200);
+    QVERIFY(c.autoReconnect);
+    QCOMPARE(s.scanFirstId(), 1);
+    QCOMPARE(s.scanLastId(), 32);
+    QCOMPARE(s.pollRateHz(), 0.0);
+}
+
+void tst_AppSettings::roundTrip_data()
+{
+    QTest::addColumn<bool>("simulator");
+    QTest::addColumn<QString>("port");
+    QTest::addColumn<int>("baud");
+    QTest::addColumn<bool>("autoReconnect");
+    QTest::newRow("serial") << false << QStringLiteral("/dev/ttyUSB0") << 1000000 << false;
+    QTest::newRow("simulator") << true << QString() << 9600 << true;
+    QTest::newRow("pty") << false << QStringLiteral("/dev/pts/7") << 2000000 << true;
+}
+
+void tst_AppSettings::roundTrip()
+{
+    QFETCH(bool, simulator);
+    QFETCH(QString, port);
+    QFETCH(int, baud);
+    QFETCH(bool, autoReconnect);
+    ConnectionChoice c;
+    c.kind = simulator ? ConnectionChoice::Kind::Simulator : ConnectionChoice::Kind::Serial;
+    c.port = port;
+    c.baud = baud;
+    c.autoReconnect = autoReconnect;
+    {
+        AppSettings s(file());
+        s.setConnection(c);
+        s.setScanRange(3, 9, true);
+        s.setPollRateHz(50);
+        s.setCurrentView(QStringLiteral("traffic"));
+        s.setWindow(QByteArray("geo"), QByteArray("state"));
+    }
+    AppSettings s(file());
+    QCOMPARE(s.loadedVersion(), AppSettings::kVersion);
+    QCOMPARE(s.connection(), c);
+    QCOMPARE(s.scanFirstId(), 3);
+    QCOMPARE(s.scanLastId(), 9);
+    QVERIFY(s.scanSweepBauds());
+    QCOMPARE(s.pollRateHz(), 50.0);
+    QCOMPARE(s.currentView(), QStringLiteral("traffic"));
+    QCOMPARE(s.windowGeometry(), QByteArray("geo"));
+    QCOMPARE(s.windowState(), QByteArray("state"));
+}
+
+void tst_AppSettings::migratesUnversioned_data()
+{
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<QString>("value");
+    QTest::addColumn<bool>("kept");
+    QTest::newRow("good baud") << "connection/baud"
+                               << "460800" << true;
+    QTest::newRow("odd baud") << "connection/baud"
+                              << "12345" << false;
+    QTest::newRow("text baud") << "connection/baud"
+                               << "fast" << false;
+    QTest::newRow("good kind") << "connection/kind"
+                               << "serial" << true;
+    QTest::newRow("bad kind") << "connection/kind"
+                              << "bluetooth" << false;
+    QTest::newRow("good id") << "scan/firstId"
+                             << "5" << true;
+    QTest::newRow("id 0") << "scan/firstId"
+                          << "0" << false;
+    QTest::newRow("id 33") << "scan/lastId"
+                           << "33" << false;
+    QTest::newRow("bad bool") << "connection/autoReconnect"
+                              << "maybe" << false;
+    QTest::newRow("negative rate") << "poll/rateHz"
+                                   << "-3" << false;
+    QTest::newRow("port kept") << "connection/port"
+                               << "ttyACM0" << true;
+}
+
+void tst_AppSettings::migratesUnversioned()
+{
+    QFETCH(QString, key);
+    QFETCH(QString, value);
+    QFETCH(bool, kept);
+    {
+        QSettings raw(file(), QSettings::IniFormat);
+        raw.setValue(key, value);
+    }
+    {
+        AppSettings s(file());
+        QCOMPARE(s.loadedVersion(), 0);
+    }
+    QSettings raw(file(), QSettings::IniFormat);
+    QCOMPARE(raw.value(QStringLiteral("settingsVersion")).toInt(), AppSettings::kVersion);
+    QCOMPARE(raw.contains(key), kept);
+    if (kept)
+        QCOMPARE(raw.value(key).toString(), value);
+}
+
+void tst_AppSettings::leavesNewerFileAlone()
+{
+    const int future = AppSettings::kVersion + 1;
+    {
+        QSettings raw(file(), QSettings::IniFormat);
+        raw.setValue(QStringLiteral("settingsVersion"), future);
+        raw.setValue(QStringLiteral("connection/baud"), QStringLiteral("3000000"));
+    }
+    {
+        AppSettings s(file());
+        QVERIFY(s.isFromNewerRelease());
+        QCOMPARE(s.connection().baud, 115200); // unknown here: read as the default
+    }
+    QSettings raw(file(), QSettings::IniFormat);
+    QCOMPARE(raw.value(QStringLiteral("settingsVersion")).toInt(), future);
+    QCOMPARE(raw.value(QStringLiteral("connection/baud")).toString(), QStringLiteral("3000000"));
+}
+
+void tst_AppSettings::clampsScanRange()
+{
+    AppSettings s(file());
+    s.setScanRange(20, 40, false);
+    QCOMPARE(s.scanFirstId(), 20);
+    QCOMPARE(s.scanLastId(), 32);
+    s.setScanRange(12, 4, false);
+    QCOMPARE(s.scanLastId(), 12); // last never before first
+}
+
+QTEST_GUILESS_MAIN(tst_AppSettings)
+#include "tst_appsettings.moc"

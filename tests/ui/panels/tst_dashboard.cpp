@@ -1,0 +1,202 @@
+#include <panels/BusModel.h>
+#include <panels/DashboardPanel.h>
+#include <panels/DriveTree.h>
+#include <panels/OverviewModel.h>
+#include <panels/Readout.h>
+
+#include <QtTest/QtTest>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QPushButton>
+
+using lk::bus::TelemetryField;
+using lk::bus::TelemetrySample;
+using lk::ui::BusModel;
+using lk::ui::DashboardPanel;
+namespace protocol = lk::protocol;
+
+namespace {
+
+lk::bus::FoundMotor found(int id, protocol::Series series, const QString &motor, int errors = 0)
+{
+    lk::bus::FoundMotor m;
+    m.id = id;
+    m.baud = 115200;
+    m.model.driverName = QStringLiteral("DRV-") + protocol::seriesName(series);
+    m.model.motorName = motor;
+    m.model.firmwareRaw = 23;
+    m.model.hardwareRaw = 10;
+    m.series = series;
+    protocol::State1 s1;
+    s1.temperatureC = 35;
+    s1.voltageRaw = 240;
+    s1.errorState = quint8(errors);
+    m.state1 = s1;
+    return m;
+}
+
+TelemetrySample motion(int id, bool power)
+{
+    TelemetrySample s;
+    s.id = id;
+    s.fields = TelemetryField::Temperature | TelemetryField::Speed | TelemetryField::Encoder |
+               TelemetryField::MultiTurn | TelemetryField::SingleTurn |
+               (power ? TelemetryField::Power : TelemetryField::IqA);
+    s.temperatureC = 41;
+    s.iqA = 1.25;
+    s.power = 300;
+    s.speedDps = 3600;
+    s.encoder = 8192;
+    s.multiTurnDeg = 7200;
+    s.singleTurnDeg = 1800;
+    return s;
+}
+
+} // namespace
+
+class tst_Dashboard : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        QLocale::setDefault(QLocale::c()); // numbers as the rows below write them
+    }
+    void showsValues_data();
+    void showsValues();
+    void greysStaleValues();
+    void errorFlagsAndClearButton();
+    void selectionFollowsEveryView();
+};
+
+void tst_Dashboard::showsValues_data()
+{
+    QTest::addColumn<int>("series");
+    QTest::addColumn<QString>("motor");
+    QTest::addColumn<QString>("torque");
+    QTest::addColumn<QString>("speedRpm");
+    QTest::addColumn<QString>("multiTurn");
+    QTest::addColumn<QString>("phase");
+    QTest::addColumn<QString>("angleCaption");
+    // Numbers use the C locale under QTest.
+    QTest::newRow("MF rotor") << int(protocol::Series::MF) << "MF4015"
+                              << "1.25 A"
+                              << "600.0 rpm"
+                              << "7200.00 \u00b0"
+                              << ""
+                              << "rotor";
+    QTest::newRow("MG geared") << int(protocol::Series::MG) << "MG5010E-i10"
+                               << "1.25 A"
+                               << "60.0 rpm"
+                               << "720.00 \u00b0"
+                               << ""
+                               << "output shaft";
+    QTest::newRow("MS power") << int(protocol::Series::MS) << "MS5005"
+                              << "300"
+                              << "600.0 rpm"
+                              << "7200.00 \u00b0"
+                              << "not on MS"
+                              << "rotor";
+}
+
+void tst_Dashboard::showsValues()
+{
+    QFETCH(int, series);
+    QFETCH(QString, motor);
+    QFETCH(QString, torque);
+    QFETCH(QString, speedRpm);
+    QFETCH(QString, multiTurn);
+    QFETCH(QString, phase);
+    QFETCH(QString, angleCaption);
+    const auto s = protocol::Series(series);
+    BusModel model;
+    DashboardPanel dash(&model);
+    dash.resize(1000, 700);
+    dash.show();
+    model.addFound(found(7, s, motor));
+    model.applyTelemetry({motion(7, s == protocol::Series::MS)});
+    dash.refresh();
+    QCOMPARE(dash.readout(QStringLiteral("torque"))->value(), torque);
+    QCOMPARE(dash.readout(QStringLiteral("speedRpm"))->value(), speedRpm);
+    QCOMPARE(dash.readout(QStringLiteral("multiTurn"))->value(), multiTurn);
+    QCOMPARE(dash.readout(QStringLiteral("voltage"))->value(), QStringLiteral("24.0 V"));
+    QCOMPARE(dash.readout(QStringLiteral("temperature"))->value(), QStringLiteral("41 \u00b0C"));
+    QVERIFY(!dash.readout(QStringLiteral("torque"))->isStale());
+    if (!phase.isEmpty())
+        QCOMPARE(dash.readout(QStringLiteral("phaseA"))->value(), phase);
+    auto *note = dash.findChild<QLabel *>(QStringLiteral("angleNote"));
+    QVERIFY(note->text().contains(angleCaption == QLatin1String("rotor") ? "rotor values"
+                                                                         : "output shaft"));
+}
+
+void tst_Dashboard::greysStaleValues()
+{
+    BusModel model;
+    DashboardPanel dash(&model);
+    dash.show();
+    model.addFound(found(1, protocol::Series::MF, QStringLiteral("MF4015")));
+    model.applyTelemetry({motion(1, false)});
+    dash.refresh();
+    auto *speed = dash.readout(QStringLiteral("speedDps"));
+    QVERIFY(!speed->isStale());
+    // No update for over a second: greyed, value kept on screen.
+    QTRY_VERIFY_WITH_TIMEOUT(speed->isStale(), 10000);
+    QCOMPARE(speed->value(), QStringLiteral("3600 dps"));
+    model.applyTelemetry({motion(1, false)});
+    QTRY_VERIFY_WITH_TIMEOUT(!speed->isStale(), 5000);
+}
+
+void tst_Dashboard::errorFlagsAndClearButton()
+{
+    BusModel model;
+    DashboardPanel dash(&model);
+    dash.show();
+    QSignalSpy clear(&dash, &DashboardPanel::clearErrorsRequested);
+    model.addFound(found(3, protocol::Series::MF, QStringLiteral("MF4015"), 0x09));
+    lk::bus::ConnectionStatus open;
+    open.state = lk::transport::Transport::State::Open;
+    model.setConnection(open, true);
+    dash.refresh();
+    auto *flags = dash.findChild<QLabel *>(QStringLiteral("errorFlags"));
+    QVERIFY(flags->text().contains(QStringLiteral("Low voltage")));
+    QVERIFY(flags->text().contains(QStringLiteral("Over temperature")));
+    auto *button = dash.findChild<QPushButton *>(QStringLiteral("clearErrorsButton"));
+    QVERIFY(button->isEnabled());
+    QTest::mouseClick(button, Qt::LeftButton);
+    QCOMPARE(clear.count(), 1);
+    QCOMPARE(clear.at(0).at(0).toInt(), 3);
+    lk::bus::ConnectionStatus gone;
+    gone.state = lk::transport::Transport::State::Disconnected;
+    model.setConnection(gone, true);
+    dash.refresh();
+    QVERIFY(!button->isEnabled()); // nothing that sends while the link is down
+}
+
+void tst_Dashboard::selectionFollowsEveryView()
+{
+    BusModel model;
+    lk::ui::DriveTree tree(&model);
+    DashboardPanel dash(&model);
+    tree.resize(800, 300);
+    tree.show();
+    dash.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&tree));
+    model.addFound(found(1, protocol::Series::MF, QStringLiteral("MF4015")));
+    model.addFound(found(2, protocol::Series::MG, QStringLiteral("MG5010E-i10"), 0x01));
+    QCOMPARE(model.currentId(), 1); // the first drive found is selected
+    QTreeWidgetItem *item = tree.itemForId(2);
+    QVERIFY(item);
+    QTest::mouseClick(tree.viewport(), Qt::LeftButton, {}, tree.visualItemRect(item).center());
+    QCOMPARE(model.currentId(), 2);
+    dash.refresh();
+    QVERIFY(dash.findChild<QLabel *>(QStringLiteral("driveIdentity"))
+                ->text()
+                .contains(QStringLiteral("Drive 2")));
+    // Warnings you cannot miss: the row says it in words.
+    QCOMPARE(item->text(lk::ui::DriveTree::ErrorsCol), QStringLiteral("Low voltage"));
+    lk::ui::OverviewModel overview(&model);
+    QCOMPARE(overview.rowCount(), 2);
+    QCOMPARE(overview.data(overview.index(1, lk::ui::OverviewModel::Errors)).toString(),
+             QStringLiteral("Low voltage"));
+}
+
+QTEST_MAIN(tst_Dashboard)
+#include "tst_dashboard.moc"

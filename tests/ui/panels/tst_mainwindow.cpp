@@ -1,0 +1,436 @@
+// The whole window against the in-process simulated bus: connect, scan, select, live values,
+// plots, traffic and its export, emergency stop (checked on the simulator's side), unplug.
+
+#include <drive/ControlView.h>
+#include <drive/DriveInfoView.h>
+#include <drive/EncoderView.h>
+#include <drive/TuningView.h>
+#include <main/AppSettings.h>
+#include <main/BusController.h>
+#include <main/DriveViews.h>
+#include <main/MainWindow.h>
+#include <main/SimulatedBus.h>
+#include <panels/BusModel.h>
+#include <panels/BusPanel.h>
+#include <panels/ConnectionBar.h>
+#include <panels/DashboardPanel.h>
+#include <panels/DriveTree.h>
+#include <panels/EmergencyStopButton.h>
+#include <panels/MessageBanner.h>
+#include <panels/OverviewPanel.h>
+#include <panels/Readout.h>
+#include <panels/StatisticsView.h>
+#include <panels/StatusSummary.h>
+#include <panels/TrafficModel.h>
+#include <panels/TrafficPanel.h>
+#include <plot/PlotPanel.h>
+#include <plot/TelemetryStore.h>
+
+#include <protocol/StreamParser.h>
+#include <sim/SimBus.h>
+
+#include <QtCore/QTemporaryDir>
+#include <QtTest/QtTest>
+#include <QtWidgets/QCheckBox>
+#include <QtWidgets/QDialog>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QLineEdit>
+#include <QtWidgets/QProgressBar>
+#include <QtWidgets/QPushButton>
+#include <QtWidgets/QSpinBox>
+#include <QtWidgets/QTableView>
+#include <QtWidgets/QVBoxLayout>
+
+#include <memory>
+
+using lk::protocol::Command;
+using lk::ui::ConnectionChoice;
+using lk::ui::MainWindow;
+
+namespace {
+constexpr int kWaitMs = 20000; // generous: a loaded 2-core CI machine
+const QVector<int> kSimIds{1, 2, 3, 4};
+} // namespace
+
+class tst_MainWindow : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase();
+    void cleanupTestCase();
+    void connectsToSimulator();
+    void scanFindsSimulatedIds();
+    void baudSweepKeepsOneBaud();
+    void scanCanBeCancelled();
+    void selectingADriveSelectsItEverywhere();
+    void dashboardValuesUpdate();
+    void plotReceivesPoints();
+    void trafficFillsAndExportParses();
+    void escapeSendsMotorOffToAllDrives();
+    void escapeWorksFromAModalDialog();
+    void clearErrorsSendsClearErrors();
+    void lowVoltageIsAWarningYouCannotMiss();
+    void unplugShowsDisconnectedAndDisablesSending();
+    void reconnectsWhenAllowed();
+    void openFailureIsExplainedInABanner();
+
+private:
+    lk::ui::BusModel *model() const { return m_window->busModel(); }
+    std::shared_ptr<lk::ui::SimulatedBus> sim() const
+    {
+        return m_window->controller()->simulator();
+    }
+    QVector<int> motorOffCounts() const;
+
+    QTemporaryDir m_dir;
+    std::unique_ptr<lk::ui::AppSettings> m_settings;
+    std::unique_ptr<MainWindow> m_window;
+};
+
+void tst_MainWindow::initTestCase()
+{
+    QVERIFY(m_dir.isValid());
+    m_settings = std::make_unique<lk::ui::AppSettings>(m_dir.filePath("lkstudio.ini"));
+    m_window = std::make_unique<MainWindow>(m_settings.get());
+    m_window->resize(1400, 900);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+}
+
+void tst_MainWindow::cleanupTestCase()
+{
+    m_window.reset();
+}
+
+QVector<int> tst_MainWindow::motorOffCounts() const
+{
+    QVector<int> counts;
+    for (int id : kSimIds)
+        counts << sim()->requestCount(id, Command::MotorOff);
+    return counts;
+}
+
+void tst_MainWindow::connectsToSimulator()
+{
+    ConnectionChoice c;
+    c.kind = ConnectionChoice::Kind::Simulator;
+    c.autoReconnect = false;
+    m_window->connectTo(c);
+    QTRY_VERIFY_WITH_TIMEOUT(model()->canSend(), kWaitMs);
+    QVERIFY(model()->isSimulated());
+    QVERIFY(m_window->statusSummary()->isSimulatedBadgeShown());
+    QVERIFY(m_window->statusSummary()->linkText().contains(QStringLiteral("Simulated bus")));
+    QVERIFY(sim());
+    QCOMPARE(m_settings->connection().kind, ConnectionChoice::Kind::Simulator); // remembered
+}
+
+void tst_MainWindow::scanFindsSimulatedIds()
+{
+    // Scanning on connect is on by default; the scan of IDs 1..32 finds the four drives.
+    QTRY_COMPARE_WITH_TIMEOUT(model()->ids(), kSimIds, kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(model()->isPolling(), kWaitMs);
+    const QList<lk::protocol::Series> series{lk::protocol::Series::MF, lk::protocol::Series::MG,
+                                             lk::protocol::Series::MS, lk::protocol::Series::MH};
+    for (int i = 0; i < kSimIds.size(); ++i) {
+        const auto *d = model()->drive(kSimIds[i]);
+        QVERIFY(d && d->model);
+        QCOMPARE(d->series, std::optional(series[i]));
+    }
+    QCOMPARE(m_window->busPanel()->tree()->topLevelItem(0)->childCount(), 4);
+    QCOMPARE(m_window->controller()->session()->series(3), std::optional(lk::protocol::Series::MS));
+
+    // A second scan from the button, with a narrower range, finds the same drives again.
+    auto *first = m_window->findChild<QSpinBox *>(QStringLiteral("scanFirstId"));
+    auto *last = m_window->findChild<QSpinBox *>(QStringLiteral("scanLastId"));
+    first->setValue(2);
+    last->setValue(3);
+    QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("scanButton")),
+                      Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(model()->ids(), (QVector<int>{2, 3}), kWaitMs);
+    QCOMPARE(m_settings->scanFirstId(), 2);
+    first->setValue(1);
+    last->setValue(32);
+    QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("scanButton")),
+                      Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(model()->ids(), kSimIds, kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(model()->isPolling(), kWaitMs);
+}
+
+void tst_MainWindow::baudSweepKeepsOneBaud()
+{
+    // The simulated bus answers at every baud: a sweep finds each drive nine times, and the
+    // list must still hold each drive once, at the baud the port stays at.
+    auto *last = m_window->findChild<QSpinBox *>(QStringLiteral("scanLastId"));
+    auto *sweep = m_window->findChild<QCheckBox *>(QStringLiteral("scanSweepBauds"));
+    last->setValue(4);
+    sweep->setChecked(true);
+    QSignalSpy finished(m_window->controller()->session(), &lk::bus::BusSession::scanFinished);
+    QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("scanButton")),
+                      Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kWaitMs * 3);
+    const auto summary = finished.at(0).at(0).value<lk::bus::ScanSummary>();
+    QCOMPARE(summary.motors.size(), 4 * 9);
+    QCOMPARE(model()->ids(), kSimIds);
+    for (int id : kSimIds)
+        QCOMPARE(model()->drive(id)->baud, summary.finalBaud);
+    QCOMPARE(m_window->connectionBar()->choice().baud, summary.finalBaud);
+    sweep->setChecked(false);
+    last->setValue(32);
+    QTRY_VERIFY_WITH_TIMEOUT(model()->isPolling(), kWaitMs);
+}
+
+void tst_MainWindow::scanCanBeCancelled()
+{
+    // A sweep over nine bauds takes seconds: long enough to cancel it half way.
+    auto *sweep = m_window->findChild<QCheckBox *>(QStringLiteral("scanSweepBauds"));
+    auto *cancel = m_window->findChild<QPushButton *>(QStringLiteral("scanCancelButton"));
+    auto *progress = m_window->findChild<QProgressBar *>(QStringLiteral("scanProgress"));
+    sweep->setChecked(true);
+    QSignalSpy finished(m_window->controller()->session(), &lk::bus::BusSession::scanFinished);
+    QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("scanButton")),
+                      Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(progress->value() > 2, kWaitMs);
+    QVERIFY(cancel->isEnabled());
+    QCOMPARE(progress->maximum(), 32 * 9); // the progress covers every baud
+    QTest::mouseClick(cancel, Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kWaitMs);
+    QVERIFY(finished.at(0).at(0).value<lk::bus::ScanSummary>().cancelled);
+    QVERIFY(m_window->findChild<QLabel *>(QStringLiteral("scanStatus"))
+                ->text()
+                .contains(QStringLiteral("cancelled")));
+    QVERIFY(!cancel->isEnabled());
+    sweep->setChecked(false);
+    QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("scanButton")),
+                      Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(model()->ids(), kSimIds, kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(model()->isPolling(), kWaitMs);
+}
+
+void tst_MainWindow::selectingADriveSelectsItEverywhere()
+{
+    m_window->showView(QStringLiteral("dashboard"));
+    auto *tree = m_window->busPanel()->tree();
+    QTreeWidgetItem *item = tree->itemForId(2);
+    QVERIFY(item);
+    tree->scrollToItem(item);
+    const QRect rect = tree->visualItemRect(item);
+    // The ID column, which is always in view (the row may be wider than the dock).
+    QTest::mouseClick(tree->viewport(), Qt::LeftButton, {},
+                      QPoint(rect.left() + 4, rect.center().y()));
+    QCOMPARE(model()->currentId(), 2);
+    QCOMPARE(m_window->plots()->drives(), QVector<int>{2});
+    QCOMPARE(m_window->overview()->view()->currentIndex().row(), 1);
+    // The views that change a drive follow the selection too.
+    QTRY_COMPARE(m_window->driveViews()->tuning()->driveId(), 2);
+    QCOMPARE(m_window->driveViews()->control()->driveId(), 2);
+    QCOMPARE(m_window->driveViews()->encoder()->driveId(), 2);
+    QCOMPARE(m_window->driveViews()->info()->driveId(), 2);
+    m_window->dashboard()->refresh();
+    QVERIFY(m_window->dashboard()
+                ->findChild<QLabel *>(QStringLiteral("driveIdentity"))
+                ->text()
+                .contains(QStringLiteral("Drive 2")));
+}
+
+void tst_MainWindow::dashboardValuesUpdate()
+{
+    auto *dash = m_window->dashboard();
+    for (const char *name : {"temperature", "voltage", "torque", "speedDps", "encoder", "multiTurn",
+                             "singleTurn", "phaseA"}) {
+        auto *r = dash->readout(QLatin1String(name));
+        QVERIFY2(r, name);
+        QTRY_VERIFY2_WITH_TIMEOUT(!r->isStale(), name, kWaitMs);
+    }
+    // The values keep coming: the statistics show replies from the selected drive.
+    auto *stats = dash->statisticsView();
+    QTRY_VERIFY_WITH_TIMEOUT(stats->figure(QStringLiteral("rate"), 1).toDouble() > 0, kWaitMs);
+    QCOMPARE(stats->figure(QStringLiteral("timeouts"), 1), QStringLiteral("0"));
+    QTRY_VERIFY_WITH_TIMEOUT(model()->statistics().pollLimitPerSecond > 0, kWaitMs);
+}
+
+void tst_MainWindow::plotReceivesPoints()
+{
+    m_window->showView(QStringLiteral("plots"));
+    auto *store = m_window->telemetryStore();
+    const qsizetype before = store->count(2, lk::ui::TelemetryChannel::Speed);
+    QTRY_VERIFY_WITH_TIMEOUT(store->count(2, lk::ui::TelemetryChannel::Speed) > before + 10,
+                             kWaitMs);
+    QVERIFY(store->count(3, lk::ui::TelemetryChannel::Torque) > 0);
+    QCOMPARE(store->torqueIsPower(3), std::optional(true)); // MS reports power
+    QTRY_VERIFY_WITH_TIMEOUT(m_window->plots()->redrawCount() > 0, kWaitMs);
+}
+
+void tst_MainWindow::trafficFillsAndExportParses()
+{
+    auto *traffic = m_window->traffic();
+    QVERIFY(!traffic->wantsCapture());
+    m_window->showView(QStringLiteral("traffic"));
+    QVERIFY(traffic->wantsCapture());
+    QTRY_VERIFY_WITH_TIMEOUT(traffic->trafficModel()->rowCount() > 50, kWaitMs);
+    const auto *m = traffic->trafficModel();
+    bool sawReply = false;
+    for (int row = 0; row < m->rowCount() && !sawReply; ++row)
+        sawReply = m->directionText(row) == QLatin1String("RX") && !m->fieldsText(row).isEmpty();
+    QVERIFY(sawReply);
+
+    const QString file = m_dir.filePath("traffic.txt");
+    traffic->flush();
+    QVERIFY(traffic->exportTo(file));
+    QFile in(file);
+    QVERIFY(in.open(QIODevice::ReadOnly | QIODevice::Text));
+    QByteArray bytes;
+    int lines = 0;
+    while (!in.atEnd()) {
+        QByteArray line = in.readLine();
+        const int hash = line.indexOf('#');
+        if (hash >= 0)
+            line.truncate(hash);
+        bytes += QByteArray::fromHex(line.simplified().replace(' ', QByteArray()));
+        ++lines;
+    }
+    QVERIFY(lines > 50);
+    int frames = 0;
+    int faults = 0;
+    lk::protocol::StreamParser parser;
+    const auto sink = [&](const lk::protocol::ParseEvent &e) { (e.isFrame ? frames : faults)++; };
+    parser.feed(bytes, sink);
+    parser.finish(sink);
+    QVERIFY(frames > 50);
+    QCOMPARE(faults, 0); // the simulator injects no faults here
+
+    m_window->showView(QStringLiteral("dashboard"));
+    QVERIFY(!traffic->wantsCapture()); // capture runs only while the view is shown
+}
+
+void tst_MainWindow::escapeSendsMotorOffToAllDrives()
+{
+    const QVector<int> before = motorOffCounts();
+    QSignalSpy stops(m_window->controller(), &lk::ui::BusController::emergencyStopDone);
+    // Esc typed into a child widget that has nothing to do with stopping.
+    auto *first = m_window->findChild<QSpinBox *>(QStringLiteral("scanFirstId"));
+    first->setFocus();
+    QTest::keyClick(first, Qt::Key_Escape);
+    for (int i = 0; i < kSimIds.size(); ++i)
+        QTRY_VERIFY_WITH_TIMEOUT(sim()->requestCount(kSimIds[i], Command::MotorOff) > before[i],
+                                 kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(m_window->banner()->text().contains(QStringLiteral("1, 2, 3, 4")),
+                             kWaitMs);
+    QTest::qWait(300);
+    QCOMPARE(stops.count(), 1); // one press, one stop
+}
+
+void tst_MainWindow::escapeWorksFromAModalDialog()
+{
+    const QVector<int> before = motorOffCounts();
+    QSignalSpy stops(m_window->controller(), &lk::ui::BusController::emergencyStopDone);
+    QDialog dialog(m_window.get());
+    auto *edit = new QLineEdit(&dialog);
+    auto *layout = new QVBoxLayout(&dialog);
+    layout->addWidget(edit);
+    dialog.setModal(true);
+    dialog.open();
+    QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+    edit->setFocus();
+    QTest::keyClick(edit, Qt::Key_Escape);
+    for (int i = 0; i < kSimIds.size(); ++i)
+        QTRY_VERIFY_WITH_TIMEOUT(sim()->requestCount(kSimIds[i], Command::MotorOff) > before[i],
+                                 kWaitMs);
+    // One press, one stop: never a second one from the key propagating to parent widgets.
+    QTRY_COMPARE_WITH_TIMEOUT(stops.count(), 1, kWaitMs);
+    QTest::qWait(300);
+    QCOMPARE(stops.count(), 1);
+    QVERIFY(!dialog.isVisible()); // and the dialog still closes on Esc
+}
+
+void tst_MainWindow::clearErrorsSendsClearErrors()
+{
+    const int before = sim()->requestCount(2, Command::ClearErrors);
+    auto *button = m_window->findChild<QPushButton *>(QStringLiteral("clearErrorsButton"));
+    QVERIFY(button->isEnabled());
+    QTest::mouseClick(button, Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(sim()->requestCount(2, Command::ClearErrors), before + 1, kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(m_window->banner()->text().contains(QStringLiteral("Drive 2")),
+                             kWaitMs);
+}
+
+void tst_MainWindow::lowVoltageIsAWarningYouCannotMiss()
+{
+    // Drive 4 (MH, 12..24 V) loses its supply: the drive raises its low-voltage flag.
+    QVERIFY(sim()->withBus([](lk::sim::SimBus &bus) { bus.drive(4)->setSupplyVoltage(9.0); }));
+    auto *tree = m_window->busPanel()->tree();
+    QTRY_COMPARE_WITH_TIMEOUT(tree->itemForId(4)->text(lk::ui::DriveTree::ErrorsCol),
+                              QStringLiteral("Low voltage"), kWaitMs);
+    QVERIFY(!tree->itemForId(4)->icon(lk::ui::DriveTree::ErrorsCol).isNull());
+    QCOMPARE(tree->itemForId(1)->text(lk::ui::DriveTree::ErrorsCol), QStringLiteral("No errors"));
+    auto *summary = m_window->overview()->findChild<QLabel *>(QStringLiteral("overviewSummary"));
+    m_window->showView(QStringLiteral("overview"));
+    QTRY_VERIFY_WITH_TIMEOUT(
+        summary->text().contains(QStringLiteral("1 drive(s) with error flags")), kWaitMs);
+    // Supply back: Clear Errors on drive 4 clears the flag.
+    QVERIFY(sim()->withBus([](lk::sim::SimBus &bus) { bus.drive(4)->setSupplyVoltage(24.0); }));
+    model()->setCurrentId(4);
+    m_window->showView(QStringLiteral("dashboard"));
+    QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("clearErrorsButton")),
+                      Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(tree->itemForId(4)->text(lk::ui::DriveTree::ErrorsCol),
+                              QStringLiteral("No errors"), kWaitMs);
+    model()->setCurrentId(2);
+}
+
+void tst_MainWindow::unplugShowsDisconnectedAndDisablesSending()
+{
+    auto *dash = m_window->dashboard();
+    dash->refresh();
+    const QString temperature = dash->readout(QStringLiteral("temperature"))->value();
+    QVERIFY(sim()->requestDisconnect());
+    QTRY_COMPARE_WITH_TIMEOUT(model()->connection().state,
+                              lk::transport::Transport::State::Disconnected, kWaitMs);
+    QVERIFY(!model()->canSend());
+    QTRY_VERIFY_WITH_TIMEOUT(
+        !m_window->findChild<QPushButton *>(QStringLiteral("clearErrorsButton"))->isEnabled(),
+        kWaitMs);
+    QVERIFY(!m_window->findChild<QPushButton *>(QStringLiteral("scanButton"))->isEnabled());
+    QVERIFY(m_window->statusSummary()->linkText().startsWith(QStringLiteral("Disconnected")));
+    QCOMPARE(m_window->banner()->level(), lk::ui::MessageBanner::Level::Warning);
+    QVERIFY(m_window->banner()->isVisible());
+    // Everything stays on screen, greyed once stale.
+    QCOMPARE(model()->ids(), kSimIds);
+    QCOMPARE(dash->readout(QStringLiteral("temperature"))->value(), temperature);
+    QTRY_VERIFY_WITH_TIMEOUT(dash->readout(QStringLiteral("temperature"))->isStale(), kWaitMs);
+    // Auto-reconnect is off in this test: it stays down.
+    QTest::qWait(1500);
+    QCOMPARE(model()->connection().state, lk::transport::Transport::State::Disconnected);
+    QVERIFY(m_window->emergencyStopButton()->isEnabled()); // never disabled
+}
+
+void tst_MainWindow::reconnectsWhenAllowed()
+{
+    auto *box = m_window->findChild<QCheckBox *>(QStringLiteral("autoReconnect"));
+    QVERIFY(!box->isChecked());
+    QTest::mouseClick(box, Qt::LeftButton);
+    QVERIFY(box->isChecked());
+    QTRY_VERIFY_WITH_TIMEOUT(model()->canSend(), kWaitMs);
+    // Polling resumes by itself: values come back to life.
+    QTRY_VERIFY_WITH_TIMEOUT(
+        !m_window->dashboard()->readout(QStringLiteral("temperature"))->isStale(), kWaitMs);
+    QVERIFY(m_window->findChild<QPushButton *>(QStringLiteral("clearErrorsButton"))->isEnabled());
+    QCOMPARE(model()->ids(), kSimIds);
+}
+
+void tst_MainWindow::openFailureIsExplainedInABanner()
+{
+    ConnectionChoice c;
+    c.kind = ConnectionChoice::Kind::Serial;
+    c.port = m_dir.filePath("no-such-adapter");
+    c.autoReconnect = false;
+    m_window->connectTo(c);
+    QTRY_VERIFY_WITH_TIMEOUT(m_window->banner()->isVisible(), kWaitMs);
+    QCOMPARE(m_window->banner()->level(), lk::ui::MessageBanner::Level::Error);
+    QVERIFY2(m_window->banner()->text().contains(QStringLiteral("does not exist")),
+             qPrintable(m_window->banner()->text()));
+    QVERIFY(!model()->canSend());
+    QVERIFY(!m_window->statusSummary()->isSimulatedBadgeShown());
+    QVERIFY(model()->ids().isEmpty());
+}
+
+QTEST_MAIN(tst_MainWindow)
+#include "tst_mainwindow.moc"

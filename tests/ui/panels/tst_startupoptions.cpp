@@ -1,0 +1,123 @@
+#include <main/AppSettings.h>
+#include <main/StartupOptions.h>
+
+#include <QtCore/QTemporaryDir>
+#include <QtTest/QtTest>
+
+using lk::ui::AppSettings;
+using lk::ui::ConnectionChoice;
+using lk::ui::StartupOptions;
+
+class tst_StartupOptions : public QObject {
+    Q_OBJECT
+private slots:
+    void parse_data();
+    void parse();
+    void initialChoice_data();
+    void initialChoice();
+
+private:
+    QTemporaryDir m_dir;
+};
+
+void tst_StartupOptions::parse_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<bool>("ok");
+    QTest::addColumn<QString>("port");
+    QTest::addColumn<int>("baud");
+    QTest::addColumn<int>("simDrives");
+    QTest::newRow("none") << QStringList{} << true << QString() << 115200 << 0;
+    QTest::newRow("port and baud") << QStringList{"--port", "/dev/ttyUSB0", "--baud", "1000000"}
+                                   << true << "/dev/ttyUSB0" << 1000000 << 0;
+    QTest::newRow("sim") << QStringList{"--sim", "1:MF,2:MG,3:MS"} << true << QString() << 115200
+                         << 3;
+    QTest::newRow("sim motor name")
+        << QStringList{"--sim", "5:MG5010E-i36"} << true << QString() << 115200 << 1;
+    QTest::newRow("bad baud") << QStringList{"--baud", "12345"} << false << QString() << 0 << 0;
+    QTest::newRow("text baud") << QStringList{"--baud", "fast"} << false << QString() << 0 << 0;
+    QTest::newRow("bad sim id") << QStringList{"--sim", "40:MF"} << false << QString() << 0 << 0;
+    QTest::newRow("bad sim series") << QStringList{"--sim", "1:XX"} << false << QString() << 0 << 0;
+    QTest::newRow("port and sim") << QStringList{"--port", "COM3", "--sim", "1:MF"} << false
+                                  << QString() << 0 << 0;
+    QTest::newRow("stray argument") << QStringList{"ttyUSB0"} << false << QString() << 0 << 0;
+    QTest::newRow("unknown option") << QStringList{"--frobnicate"} << false << QString() << 0 << 0;
+    QTest::newRow("select 33") << QStringList{"--select", "33"} << false << QString() << 0 << 0;
+    QTest::newRow("sim faults") << QStringList{"--sim-faults", "corrupt=0.01,garbage=0.02"} << true
+                                << QString() << 115200 << 0;
+    QTest::newRow("bad sim faults")
+        << QStringList{"--sim-faults", "corrupt=2"} << false << QString() << 0 << 0;
+    QTest::newRow("sim faults on a port")
+        << QStringList{"--port", "/dev/ttyUSB0", "--sim-faults", "drop=0.1"} << false << QString()
+        << 0 << 0;
+    QTest::newRow("negative delay")
+        << QStringList{"--screenshot-delay-ms", "-1"} << false << QString() << 0 << 0;
+}
+
+void tst_StartupOptions::parse()
+{
+    QFETCH(QStringList, args);
+    QFETCH(bool, ok);
+    QFETCH(QString, port);
+    QFETCH(int, baud);
+    QFETCH(int, simDrives);
+    args.prepend(QStringLiteral("lkstudio"));
+    QString error;
+    const auto o = StartupOptions::parse(args, &error);
+    QCOMPARE(o.has_value(), ok);
+    if (!ok) {
+        QVERIFY2(!error.isEmpty(), "a refusal says why");
+        return;
+    }
+    QCOMPARE(o->port.value_or(QString()), port);
+    QCOMPARE(o->baud, baud);
+    QCOMPARE(o->sim ? int(o->sim->drives.size()) : 0, simDrives);
+}
+
+void tst_StartupOptions::initialChoice_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<bool>("rememberedSerial");
+    QTest::addColumn<bool>("portPlugged");
+    QTest::addColumn<bool>("expectSimulator");
+    QTest::addColumn<QString>("expectPort");
+    QTest::addColumn<bool>("fellBack");
+    QTest::newRow("first run") << QStringList{} << false << false << true << QString() << false;
+    QTest::newRow("remembered port present")
+        << QStringList{} << true << true << false << "/dev/ttyUSB3" << false;
+    QTest::newRow("remembered port away")
+        << QStringList{} << true << false << true << "/dev/ttyUSB3" << true;
+    QTest::newRow("--port wins") << QStringList{"--port", "/dev/pts/4"} << false << false << false
+                                 << "/dev/pts/4" << false;
+    QTest::newRow("--sim wins") << QStringList{"--sim", "1:MF"} << true << true << true
+                                << "/dev/ttyUSB3" << false;
+}
+
+void tst_StartupOptions::initialChoice()
+{
+    QFETCH(QStringList, args);
+    QFETCH(bool, rememberedSerial);
+    QFETCH(bool, portPlugged);
+    QFETCH(bool, expectSimulator);
+    QFETCH(QString, expectPort);
+    QFETCH(bool, fellBack);
+    const QString file = m_dir.filePath(QString::fromLatin1(QTest::currentDataTag()) + ".ini");
+    AppSettings settings(file);
+    if (rememberedSerial) {
+        ConnectionChoice c;
+        c.kind = ConnectionChoice::Kind::Serial;
+        c.port = QStringLiteral("/dev/ttyUSB3");
+        settings.setConnection(c);
+    }
+    args.prepend(QStringLiteral("lkstudio"));
+    const auto o = StartupOptions::parse(args, nullptr);
+    QVERIFY(o);
+    const auto exists = [portPlugged](const QString &) { return portPlugged; };
+    const ConnectionChoice c = o->initialChoice(settings, exists);
+    QCOMPARE(c.isSimulator(), expectSimulator);
+    QCOMPARE(c.port, expectPort);
+    QCOMPARE(o->fellBackToSimulator(settings, exists), fellBack);
+}
+
+QTEST_GUILESS_MAIN(tst_StartupOptions)
+#include "tst_startupoptions.moc"

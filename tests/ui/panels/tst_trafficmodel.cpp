@@ -1,0 +1,295 @@
+#include <panels/BusModel.h>
+#include <panels/TrafficFilter.h>
+#include <panels/TrafficModel.h>
+#include <panels/TrafficPanel.h>
+
+#include <protocol/Reply.h>
+#include <protocol/RequestBuilder.h>
+#include <protocol/StreamParser.h>
+
+#include <QtCore/QTemporaryDir>
+#include <QtTest/QtTest>
+#include <QtWidgets/QToolButton>
+
+using lk::bus::TrafficBatch;
+using lk::bus::TrafficEvent;
+using lk::ui::TrafficModel;
+namespace protocol = lk::protocol;
+
+namespace {
+
+TrafficEvent sent(double t, const protocol::Request &r)
+{
+    TrafficEvent e;
+    e.kind = TrafficEvent::Kind::Sent;
+    e.time = t;
+    e.bytes = r.encode();
+    e.id = r.id;
+    e.command = quint8(r.command);
+    return e;
+}
+
+TrafficEvent received(double t, const protocol::Reply &r)
+{
+    TrafficEvent e;
+    e.kind = TrafficEvent::Kind::Frame;
+    e.time = t;
+    e.bytes = r.encode();
+    e.id = r.id;
+    e.command = quint8(r.command);
+    return e;
+}
+
+TrafficEvent fault(double t, protocol::ParseError error, const QByteArray &bytes)
+{
+    TrafficEvent e;
+    e.kind = TrafficEvent::Kind::Fault;
+    e.time = t;
+    e.error = error;
+    e.bytes = bytes;
+    return e;
+}
+
+TrafficEvent timeout(double t, int id, protocol::Command c)
+{
+    TrafficEvent e;
+    e.kind = TrafficEvent::Kind::Timeout;
+    e.time = t;
+    e.id = id;
+    e.command = quint8(c);
+    return e;
+}
+
+protocol::Reply state2Reply(int id, qint16 speed)
+{
+    protocol::State2 s;
+    s.temperatureC = 31;
+    s.torqueRaw = 100;
+    s.speedDps = speed;
+    s.encoder = 1234;
+    return protocol::Reply{protocol::Command::ReadState2, quint8(id), s};
+}
+
+/// A small exchange: two polls, a speed command, a timeout and a corrupt frame.
+TrafficBatch sampleTraffic()
+{
+    TrafficBatch b;
+    b << sent(0.001, *protocol::build::plain(protocol::Command::ReadState2, 1).request)
+      << received(0.002, state2Reply(1, 360))
+      << sent(0.003, *protocol::build::speed(2, 100.0).request)
+      << received(0.004, state2Reply(2, 100))
+      << sent(0.005, *protocol::build::plain(protocol::Command::ReadState1, 3).request)
+      << timeout(0.010, 3, protocol::Command::ReadState1);
+    QByteArray bad = state2Reply(1, 7).encode();
+    bad[bad.size() - 1] = char(bad.at(bad.size() - 1) ^ 0x55); // data checksum broken
+    b << fault(0.011, protocol::ParseError::BadDataChecksum, bad);
+    return b;
+}
+
+/// Bytes of a text export, read the way `lkctl decode -` does: hex pairs, '#' comments.
+QByteArray hexOf(const QString &text)
+{
+    QByteArray out;
+    const auto lines = text.split(QLatin1Char('\n'));
+    for (QString line : lines) {
+        const int hash = line.indexOf(QLatin1Char('#'));
+        if (hash >= 0)
+            line.truncate(hash);
+        out += QByteArray::fromHex(line.remove(QLatin1Char(' ')).toLatin1());
+    }
+    return out;
+}
+
+} // namespace
+
+class tst_TrafficModel : public QObject {
+    Q_OBJECT
+private slots:
+    void columns();
+    void boundedRing_data();
+    void boundedRing();
+    void countsFaultsByKind();
+    void filterByIdAndCommand_data();
+    void filterByIdAndCommand();
+    void exportParsesBack();
+    void pauseKeepsCounting();
+    void exportReadByLkctl();
+};
+
+void tst_TrafficModel::columns()
+{
+    TrafficModel m;
+    m.append(sampleTraffic());
+    QCOMPARE(m.rowCount(), 7);
+    QCOMPARE(m.data(m.index(0, TrafficModel::Command)).toString(), QStringLiteral("read_state2"));
+    QCOMPARE(m.data(m.index(0, TrafficModel::Direction)).toString(), QStringLiteral("TX"));
+    QCOMPARE(m.data(m.index(1, TrafficModel::Direction)).toString(), QStringLiteral("RX"));
+    QCOMPARE(m.data(m.index(0, TrafficModel::Raw)).toString(), QStringLiteral("3E 9C 01 00 DB"));
+    QVERIFY(m.data(m.index(1, TrafficModel::Fields)).toString().contains(QStringLiteral("360")));
+    QVERIFY(m.data(m.index(2, TrafficModel::Fields)).toString().contains(QStringLiteral("100")));
+    QCOMPARE(m.data(m.index(2, TrafficModel::Id)).toInt(), 2);
+    QCOMPARE(m.data(m.index(5, TrafficModel::Direction)).toString(), QStringLiteral("timeout"));
+    QCOMPARE(m.data(m.index(6, TrafficModel::Command)).toString(),
+             QStringLiteral("bad_data_checksum"));
+}
+
+void tst_TrafficModel::boundedRing_data()
+{
+    QTest::addColumn<int>("capacity");
+    QTest::addColumn<int>("batches");
+    QTest::newRow("fits") << 100 << 10;
+    QTest::newRow("wraps") << 20 << 10;
+    QTest::newRow("one batch larger than the ring") << 5 << 1;
+}
+
+void tst_TrafficModel::boundedRing()
+{
+    QFETCH(int, capacity);
+    QFETCH(int, batches);
+    TrafficModel m(nullptr, capacity);
+    int total = 0;
+    for (int b = 0; b < batches; ++b) {
+        TrafficBatch batch = sampleTraffic();
+        for (auto &e : batch)
+            e.time += b;
+        m.append(batch);
+        total += batch.size();
+    }
+    QCOMPARE(m.rowCount(), qMin(capacity, total));
+    QCOMPARE(qint64(m.droppedRows()), qint64(total - m.rowCount()));
+    // The newest event is always the last row.
+    QCOMPARE(m.event(m.rowCount() - 1).time, 0.011 + batches - 1);
+    QCOMPARE(m.counts().sent, quint64(3 * batches)); // counted even when dropped
+}
+
+void tst_TrafficModel::countsFaultsByKind()
+{
+    TrafficModel m;
+    m.append(sampleTraffic());
+    m.append({fault(1, protocol::ParseError::Garbage, QByteArray("\x01\x02", 2))});
+    const auto &c = m.counts();
+    QCOMPARE(c.timeouts, quint64(1));
+    QCOMPARE(c.faults[size_t(protocol::ParseError::BadDataChecksum)], quint64(1));
+    QCOMPARE(c.faults[size_t(protocol::ParseError::Garbage)], quint64(1));
+    QCOMPARE(c.faultTotal(), quint64(2));
+    QCOMPARE(c.frames, quint64(2));
+}
+
+void tst_TrafficModel::filterByIdAndCommand_data()
+{
+    QTest::addColumn<int>("id");
+    QTest::addColumn<int>("command");
+    QTest::addColumn<bool>("faultsOnly");
+    QTest::addColumn<int>("rows");
+    QTest::newRow("all") << 0 << -1 << false << 7;
+    QTest::newRow("id 1") << 1 << -1 << false << 2;
+    QTest::newRow("id 3") << 3 << -1 << false << 2;
+    QTest::newRow("speed") << 0 << int(protocol::Command::Speed) << false << 1;
+    QTest::newRow("read_state2") << 0 << int(protocol::Command::ReadState2) << false << 3;
+    QTest::newRow("id 2, read_state2") << 2 << int(protocol::Command::ReadState2) << false << 1;
+    QTest::newRow("faults") << 0 << -1 << true << 2;
+}
+
+void tst_TrafficModel::filterByIdAndCommand()
+{
+    QFETCH(int, id);
+    QFETCH(int, command);
+    QFETCH(bool, faultsOnly);
+    QFETCH(int, rows);
+    TrafficModel m;
+    lk::ui::TrafficFilter f;
+    f.setSourceModel(&m);
+    m.append(sampleTraffic());
+    f.setIdFilter(id);
+    f.setCommandFilter(command);
+    f.setFaultsOnly(faultsOnly);
+    QCOMPARE(f.rowCount(), rows);
+    m.append(sampleTraffic()); // new rows go through the same filter
+    QCOMPARE(f.rowCount(), 2 * rows);
+}
+
+void tst_TrafficModel::exportParsesBack()
+{
+    lk::ui::BusModel bus;
+    lk::ui::TrafficPanel panel(&bus);
+    const TrafficBatch traffic = sampleTraffic();
+    panel.appendTraffic(traffic);
+    panel.flush();
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("traffic.txt"));
+    QString error;
+    QVERIFY2(panel.exportTo(file, &error), qPrintable(error));
+    QFile in(file);
+    QVERIFY(in.open(QIODevice::ReadOnly | QIODevice::Text));
+    const QString text = QString::fromUtf8(in.readAll());
+
+    // Every byte on the wire comes back, in order, and parses to the same frames and faults.
+    QByteArray expected;
+    for (const auto &e : traffic)
+        expected += e.bytes;
+    const QByteArray bytes = hexOf(text);
+    QCOMPARE(bytes, expected);
+    int frames = 0;
+    int faults = 0;
+    protocol::StreamParser parser;
+    auto sink = [&](const protocol::ParseEvent &e) { (e.isFrame ? frames : faults)++; };
+    parser.feed(bytes, sink);
+    parser.finish(sink);
+    QCOMPARE(frames, 5); // three requests, two replies
+    QCOMPARE(faults, 1);
+    QVERIFY(text.contains(QStringLiteral("# 0.010000 timeout id 3 read_state1")));
+
+    // The export follows the filter: only ID 2's rows.
+    panel.filter()->setIdFilter(2);
+    QVERIFY(panel.exportTo(file, &error));
+    QVERIFY(in.seek(0));
+    in.close();
+    QVERIFY(in.open(QIODevice::ReadOnly | QIODevice::Text));
+    QCOMPARE(hexOf(QString::fromUtf8(in.readAll())), traffic[2].bytes + traffic[3].bytes);
+}
+
+void tst_TrafficModel::pauseKeepsCounting()
+{
+    lk::ui::BusModel bus;
+    lk::ui::TrafficPanel panel(&bus);
+    auto *pause = panel.findChild<QToolButton *>(QStringLiteral("trafficPause"));
+    QVERIFY(pause);
+    panel.appendTraffic(sampleTraffic());
+    panel.flush();
+    QCOMPARE(panel.trafficModel()->rowCount(), 7);
+    QTest::mouseClick(pause, Qt::LeftButton);
+    QVERIFY(panel.isPaused());
+    panel.appendTraffic(sampleTraffic());
+    panel.flush();
+    QCOMPARE(panel.trafficModel()->rowCount(), 7); // frozen
+    QCOMPARE(panel.trafficModel()->counts().timeouts, quint64(2));
+    QVERIFY(panel.countsText().contains(QStringLiteral("bad_data_checksum 2")));
+}
+
+void tst_TrafficModel::exportReadByLkctl()
+{
+    const QString lkctl =
+        qEnvironmentVariable("LK_TEST_BINARY_DIR") + QStringLiteral("/app/lkctl/lkctl");
+    if (!QFileInfo::exists(lkctl))
+        QSKIP("lkctl is not built in this tree");
+    lk::ui::BusModel bus;
+    lk::ui::TrafficPanel panel(&bus);
+    panel.appendTraffic(sampleTraffic());
+    panel.flush();
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("traffic.txt"));
+    QVERIFY(panel.exportTo(file));
+    QProcess p;
+    p.setStandardInputFile(file);
+    p.start(lkctl, {QStringLiteral("decode"), QStringLiteral("-")});
+    QVERIFY(p.waitForFinished(30000));
+    const QList<QByteArray> lines = p.readAllStandardOutput().trimmed().split('\n');
+    QCOMPARE(p.exitCode(), 3); // the corrupt frame is reported, as on the bus
+    QCOMPARE(lines.size(), 6);
+    QVERIFY(lines[0].contains("\"command\":\"read_state2\""));
+    QVERIFY(lines[2].contains("\"speed_dps\":100"));
+    QVERIFY(lines[5].contains("bad_data_checksum"));
+}
+
+QTEST_MAIN(tst_TrafficModel)
+#include "tst_trafficmodel.moc"

@@ -1,0 +1,105 @@
+#include "ConfirmDialog.h"
+
+#include <bus/BusSession.h>
+
+#include <QtGui/QKeyEvent>
+#include <QtWidgets/QApplication>
+#include <QtWidgets/QDialogButtonBox>
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QPushButton>
+#include <QtWidgets/QStyle>
+#include <QtWidgets/QVBoxLayout>
+
+namespace lk::ui {
+
+namespace {
+ConfirmDialog::Policy &policySlot()
+{
+    static ConfirmDialog::Policy policy;
+    return policy;
+}
+bool &forwardSlot()
+{
+    static bool forward = true;
+    return forward;
+}
+constexpr int kIconSize = 48;
+constexpr int kTextWidth = 420;
+} // namespace
+
+ConfirmDialog::ConfirmDialog(const ConfirmRequest &request, bus::BusSession *session,
+                             QWidget *parent)
+    : QDialog(parent), m_session(session)
+{
+    setObjectName(QStringLiteral("confirm_") + request.key);
+    setWindowTitle(request.title);
+    setModal(true);
+
+    auto *icon = new QLabel(this);
+    icon->setPixmap(style()->standardIcon(QStyle::SP_MessageBoxWarning).pixmap(kIconSize));
+    icon->setAlignment(Qt::AlignTop);
+
+    auto *question = new QLabel(request.question, this);
+    question->setWordWrap(true);
+    question->setMinimumWidth(kTextWidth);
+    QFont bold = question->font();
+    bold.setBold(true);
+    question->setFont(bold);
+    auto *reason = new QLabel(request.reason, this);
+    reason->setObjectName(QStringLiteral("reason"));
+    reason->setWordWrap(true);
+    reason->setMinimumWidth(kTextWidth);
+
+    auto *buttons = new QDialogButtonBox(this);
+    QPushButton *accept = buttons->addButton(request.acceptText, QDialogButtonBox::AcceptRole);
+    QPushButton *cancel = buttons->addButton(QDialogButtonBox::Cancel);
+    accept->setAutoDefault(false);
+    cancel->setDefault(true); // Enter must never write flash by accident
+    cancel->setFocus();
+    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+
+    auto *text = new QVBoxLayout;
+    text->addWidget(question);
+    text->addWidget(reason);
+    text->addStretch();
+    auto *top = new QHBoxLayout;
+    top->addWidget(icon);
+    top->addLayout(text, 1);
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(top);
+    layout->addWidget(buttons);
+}
+
+bool ConfirmDialog::ask(QWidget *parent, const ConfirmRequest &request, bus::BusSession *session)
+{
+    if (policySlot())
+        return policySlot()(request);
+    ConfirmDialog dialog(request, session, parent);
+    return dialog.exec() == QDialog::Accepted;
+}
+
+void ConfirmDialog::setPolicy(Policy policy)
+{
+    policySlot() = std::move(policy);
+}
+
+void ConfirmDialog::setForwardEscape(bool on)
+{
+    forwardSlot() = on;
+}
+
+bool ConfirmDialog::forwardEscape()
+{
+    return forwardSlot();
+}
+
+void ConfirmDialog::keyPressEvent(QKeyEvent *event)
+{
+    if (event->key() == Qt::Key_Escape && forwardSlot() && m_session)
+        m_session->emergencyStop();
+    QDialog::keyPressEvent(event); // Esc also rejects: nothing is written
+}
+
+} // namespace lk::ui

@@ -1,0 +1,66 @@
+#pragma once
+
+#include <QtCore/QPointer>
+#include <QtCore/QString>
+#include <QtWidgets/QDialog>
+
+#include <functional>
+
+namespace lk::bus {
+class BusSession;
+}
+
+namespace lk::ui {
+
+/// What a confirmation asks: the action, why it needs asking, and the button that goes ahead.
+struct ConfirmRequest {
+    QString key;        ///< stable name for policies and tests, e.g. "write_pid_rom"
+    QString title;      ///< window title
+    QString question;   ///< "Write these gains to the ROM of drive 3?"
+    QString reason;     ///< why it is asked: "ROM writes wear the drive's flash ..."
+    QString acceptText; ///< the button that goes ahead, e.g. "Write to ROM"
+};
+
+/// Asks before a write that cannot be taken back (flash wear, power cycle). Cancel is the
+/// default button, so Enter never writes by accident. Tests install a Policy that answers
+/// instead of the user, so they never block on a modal dialog.
+///
+/// Esc rejects the dialog and, when a session is known and forwarding is on, also sends an
+/// emergency stop: Esc means "stop" everywhere in lkstudio. The event is never swallowed.
+class ConfirmDialog : public QDialog {
+    Q_OBJECT
+public:
+    using Policy = std::function<bool(const ConfirmRequest &)>;
+
+    ConfirmDialog(const ConfirmRequest &request, bus::BusSession *session,
+                  QWidget *parent = nullptr);
+
+    /// Shows the dialog modally (or asks the installed policy) and returns the answer.
+    static bool ask(QWidget *parent, const ConfirmRequest &request,
+                    bus::BusSession *session = nullptr);
+
+    /// Answer every question with `policy` instead of a dialog (tests); empty: ask the user.
+    static void setPolicy(Policy policy);
+    /// Whether Esc in the dialog sends BusSession::emergencyStop (default on). A window that
+    /// already reacts to Esc application-wide (lkstudio's EmergencyKeyFilter) turns it off so
+    /// that one key press sends one emergency stop.
+    static void setForwardEscape(bool on);
+    static bool forwardEscape();
+
+    /// Installs a policy for the lifetime of the object (tests).
+    class ScopedPolicy {
+    public:
+        explicit ScopedPolicy(Policy policy) { setPolicy(std::move(policy)); }
+        ~ScopedPolicy() { setPolicy({}); }
+        ScopedPolicy(const ScopedPolicy &) = delete;
+        ScopedPolicy &operator=(const ScopedPolicy &) = delete;
+    };
+
+protected:
+    void keyPressEvent(QKeyEvent *event) override;
+
+private:
+    QPointer<bus::BusSession> m_session;
+};
+
+} // namespace lk::ui

@@ -1,0 +1,526 @@
+#include "ControlView.h"
+
+#include "ControlModePanel.h"
+#include "DriveSettingsStore.h"
+#include "DriveText.h"
+#include "JogPanel.h"
+#include "LoopPlot.h"
+#include "RequestTracker.h"
+#include "SetpointPanel.h"
+#include "SoftLimitsEditor.h"
+
+#include <bus/BusSession.h>
+#include <protocol/RequestBuilder.h>
+
+#include <QtGui/QKeyEvent>
+#include <QtWidgets/QAbstractSpinBox>
+#include <QtWidgets/QApplication>
+#include <QtWidgets/QComboBox>
+#include <QtWidgets/QGroupBox>
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QLineEdit>
+#include <QtWidgets/QPlainTextEdit>
+#include <QtWidgets/QPushButton>
+#include <QtWidgets/QTextEdit>
+#include <QtWidgets/QVBoxLayout>
+
+namespace lk::ui {
+
+namespace {
+constexpr int kRightColumnWidth = 380;
+using protocol::Command;
+namespace build = protocol::build;
+
+bool isEscape(QEvent *event)
+{
+    if (event->type() != QEvent::KeyPress && event->type() != QEvent::ShortcutOverride)
+        return false;
+    return static_cast<QKeyEvent *>(event)->key() == Qt::Key_Escape;
+}
+} // namespace
+
+ControlView::ControlView(QWidget *parent)
+    : DriveView(parent), m_ownStore(std::make_unique<MemoryDriveStore>()),
+      m_store(m_ownStore.get()), m_generator(new SetpointGenerator(this))
+{
+    setObjectName(QStringLiteral("control"));
+    setFocusPolicy(Qt::StrongFocus);
+    m_title = new QLabel(this);
+    QFont big = m_title->font();
+    big.setPointSizeF(big.pointSizeF() * 1.2);
+    big.setBold(true);
+    m_title->setFont(big);
+    m_readout = new QLabel(this);
+    m_readout->setObjectName(QStringLiteral("readout"));
+    m_status = new QLabel(this);
+    m_status->setObjectName(QStringLiteral("status"));
+    m_status->setWordWrap(true);
+    m_jog = new JogPanel(this);
+    m_limitsEditor = new SoftLimitsEditor(this);
+    m_setpointPanel = new SetpointPanel(this);
+
+    auto *left = new QVBoxLayout;
+    left->addWidget(m_title);
+    left->addWidget(buildCommandBox());
+    left->addWidget(buildRunButtons());
+    left->addWidget(m_jog);
+    left->addWidget(m_readout);
+    left->addWidget(m_status);
+    m_plot = new LoopPlot(this);
+    left->addWidget(m_plot, 1);
+    auto *right = new QVBoxLayout;
+    right->addWidget(m_limitsEditor);
+    right->addWidget(m_setpointPanel);
+    right->addStretch();
+    auto *rightWidget = new QWidget(this);
+    rightWidget->setLayout(right);
+    rightWidget->setFixedWidth(kRightColumnWidth);
+    auto *layout = new QHBoxLayout(this);
+    layout->addLayout(left, 1);
+    layout->addWidget(rightWidget);
+
+    wire();
+    // Sees Esc everywhere (also when a window-wide shortcut takes it) and never consumes it.
+    qApp->installEventFilter(this);
+    contextChanged(Change::Session | Change::Drive);
+}
+
+ControlView::~ControlView()
+{
+    qApp->removeEventFilter(this);
+}
+
+QWidget *ControlView::buildCommandBox()
+{
+    auto *box = new QGroupBox(tr("Command"), this);
+    m_modes = new ControlModePanel(box);
+    m_send = new QPushButton(tr("Send"), box);
+    m_send->setObjectName(QStringLiteral("send"));
+    m_send->setToolTip(tr("Checked against the series and your soft limits before sending"));
+    auto *row = new QHBoxLayout;
+    row->addStretch();
+    row->addWidget(m_send);
+    auto *layout = new QVBoxLayout(box);
+    layout->addWidget(m_modes);
+    layout->addLayout(row);
+    return box;
+}
+
+QWidget *ControlView::buildRunButtons()
+{
+    auto *w = new QWidget(this);
+    auto make = [w](const QString &name, const QString &text, const QString &tip) {
+        auto *b = new QPushButton(text, w);
+        b->setObjectName(name);
+        b->setToolTip(tip);
+        return b;
+    };
+    m_off = make(QStringLiteral("motorOff"), tr("Motor Off"),
+                 tr("0x80: output off, the stored command is cleared"));
+    m_stop = make(QStringLiteral("motorStop"), tr("Stop"),
+                  tr("0x81: output off, the stored command is kept for Run"));
+    m_run = make(QStringLiteral("motorRun"), tr("Run"), tr("0x88: resume after Stop"));
+    m_off->setStyleSheet(QStringLiteral("font-weight:bold;color:#b71c1c;"));
+    auto *row = new QHBoxLayout(w);
+    row->setContentsMargins(0, 0, 0, 0);
+    row->addWidget(m_off);
+    row->addWidget(m_stop);
+    row->addWidget(m_run);
+    return w;
+}
+
+void ControlView::wire()
+{
+    connect(m_send, &QPushButton::clicked, this, [this] { sendCommand(); });
+    connect(m_modes, &ControlModePanel::sendRequested, this, [this] { sendCommand(); });
+    connect(m_off, &QPushButton::clicked, this, &ControlView::motorOff);
+    connect(m_stop, &QPushButton::clicked, this, &ControlView::motorStop);
+    connect(m_run, &QPushButton::clicked, this, &ControlView::motorRun);
+    connect(m_jog, &JogPanel::holdStarted, this, &ControlView::startJog);
+    connect(m_jog, &JogPanel::holdEnded, this, &ControlView::endJog);
+    connect(m_jog, &JogPanel::stepRequested, this, &ControlView::step);
+    connect(m_limitsEditor, &SoftLimitsEditor::limitsApplied, this, &ControlView::setSoftLimits);
+    connect(m_setpointPanel, &SetpointPanel::startRequested, this, &ControlView::startGenerator);
+    connect(m_setpointPanel, &SetpointPanel::stopRequested, this, &ControlView::stopGenerator);
+    connect(m_generator, &SetpointGenerator::setpointDue, this, &ControlView::onSetpoint);
+    // The plot follows what the command moves: angle for positions, iq for torque.
+    connect(m_modes, &ControlModePanel::modeChanged, this, [this](ControlMode mode) {
+        switch (mode) {
+        case ControlMode::OpenLoop:
+        case ControlMode::Torque:
+            m_plot->setLoop(TunedLoop::Current);
+            break;
+        case ControlMode::Speed:
+            m_plot->setLoop(TunedLoop::Speed);
+            break;
+        default:
+            m_plot->setLoop(TunedLoop::Angle);
+            break;
+        }
+    });
+    connect(m_generator, &SetpointGenerator::started, this,
+            [this] { m_setpointPanel->setRunning(true); });
+    connect(m_generator, &SetpointGenerator::stopped, this,
+            [this](const QString &reason) { m_setpointPanel->setRunning(false, reason); });
+}
+
+void ControlView::setTelemetryStore(TelemetryStore *store)
+{
+    m_plot->setStore(store);
+}
+
+void ControlView::setSettingsStore(DriveSettingsStore *store)
+{
+    m_store = store ? store : m_ownStore.get();
+    loadLimits();
+}
+
+void ControlView::loadLimits()
+{
+    const auto s = series();
+    const safety::SoftLimits defaults = s ? safety::SoftLimits::defaults(*s) : safety::SoftLimits{};
+    m_limits = defaults;
+    if (hasDrive()) {
+        if (auto stored =
+                m_store->softLimits(DriveSettingsStore::driveKey(driveId(), motor()), defaults))
+            m_limits = *stored;
+    }
+    m_limitsEditor->setLimits(m_limits, s);
+}
+
+void ControlView::setSoftLimits(const safety::SoftLimits &limits)
+{
+    m_limits = limits;
+    if (hasDrive())
+        m_store->setSoftLimits(DriveSettingsStore::driveKey(driveId(), motor()), limits);
+    if (!(m_limitsEditor->limits() == limits))
+        m_limitsEditor->setLimits(limits, series());
+    setStatus(tr("Soft limits of %1 applied and saved.").arg(driveTitle()));
+}
+
+void ControlView::contextChanged(Changes changes)
+{
+    if (changes & Change::Session) {
+        disconnect(m_telemetryConnection);
+        disconnect(m_stopConnection);
+        if (session()) {
+            m_telemetryConnection = connect(session(), &bus::BusSession::telemetryReceived, this,
+                                            [this](const bus::TelemetryBatch &batch) {
+                                                m_plot->appendTelemetry(batch);
+                                                onTelemetry(batch);
+                                            });
+            m_stopConnection =
+                connect(session(), &bus::BusSession::emergencyStopFinished, this,
+                        [this] { haltLocalMotion(tr("Stopped by the emergency stop.")); });
+        }
+    }
+    if (changes & (Change::Session | Change::Drive | Change::Connection)) {
+        // Whatever drove the previous drive must not keep driving it.
+        const bool moving = m_generator->isRunning() || m_jogging;
+        const int previous = m_motionId;
+        haltLocalMotion(tr("Stopped: the drive or the connection changed."));
+        if (moving && !(changes & Change::Session))
+            stopMotionOf(previous);
+        m_readout->clear();
+    }
+    if (changes & (Change::Session | Change::Drive | Change::MotorInfo)) {
+        m_modes->setSeries(series());
+        m_setpointPanel->setSeries(series());
+        m_plot->setDrive(driveId(), series() == protocol::Series::MS);
+        loadLimits();
+    }
+    m_title->setText(driveTitle());
+    if (!isConnected() && hasDrive())
+        setStatus(tr("Disconnected: nothing can be sent."));
+    else if (changes & Change::Drive)
+        setStatus(QString());
+    refreshEnabled();
+}
+
+void ControlView::refreshEnabled()
+{
+    const bool can = canSend();
+    for (QWidget *w : {static_cast<QWidget *>(m_send), static_cast<QWidget *>(m_off),
+                       static_cast<QWidget *>(m_stop), static_cast<QWidget *>(m_run),
+                       static_cast<QWidget *>(m_jog)})
+        w->setEnabled(can);
+    m_setpointPanel->setStartEnabled(can);
+    m_limitsEditor->setEnabled(hasDrive());
+    m_modes->setEnabled(hasDrive());
+}
+
+QString ControlView::statusText() const
+{
+    return m_status->text();
+}
+
+void ControlView::setStatus(const QString &text, bool error)
+{
+    m_status->setText(text);
+    m_status->setStyleSheet(error ? QStringLiteral("color:#c62828;font-weight:bold;") : QString());
+}
+
+void ControlView::report(const MotionOutcome &outcome, const QString &sentText)
+{
+    m_last = outcome;
+    if (outcome.sent) {
+        setStatus(sentText);
+        return;
+    }
+    setStatus(outcome.refusal, true);
+    emit commandRefused(outcome.refusal);
+}
+
+MotionOutcome ControlView::sendMotion(const protocol::BuildResult &built)
+{
+    if (!canSend()) {
+        MotionOutcome none;
+        none.refusal = tr("Not connected or no drive selected: nothing sent.");
+        report(none, {});
+        return none;
+    }
+    const int id = driveId();
+    MotionOutcome out =
+        MotionGate::submit(*tracker(), built, series(), m_limits,
+                           [this](const bus::RequestResult &r) { onMotionResult(r); });
+    const QString sent =
+        out.sent
+            ? tr("Sent %1 to drive %2.").arg(DriveText::command(built.request->command)).arg(id)
+            : QString();
+    report(out, sent);
+    return out;
+}
+
+void ControlView::onMotionResult(const bus::RequestResult &result)
+{
+    if (result.ok())
+        return;
+    // The bus cancels queued motion on an emergency stop: nothing here may send more.
+    if (result.status == bus::RequestStatus::Cancelled)
+        haltLocalMotion(tr("Stopped: the bus cancelled motion commands (emergency stop)."));
+    setStatus(DriveText::failure(result), true);
+}
+
+MotionOutcome ControlView::sendCommand()
+{
+    return sendMotion(m_modes->buildRequest(driveId()));
+}
+
+void ControlView::sendRunState(Command command)
+{
+    if (!canSend())
+        return;
+    // Off and stop jump ahead of queued work; run resumes motion, so it passes the gate.
+    if (command == Command::MotorRun) {
+        sendMotion(build::plain(command, driveId()));
+        return;
+    }
+    tracker()->send(
+        *build::plain(command, driveId()).request,
+        [this](const bus::RequestResult &r) {
+            if (!r.ok())
+                setStatus(DriveText::failure(r), true);
+        },
+        bus::Priority::Emergency);
+    setStatus(tr("Sent %1 to drive %2.").arg(DriveText::command(command)).arg(driveId()));
+}
+
+void ControlView::motorOff()
+{
+    haltLocalMotion(tr("Stopped by Motor Off."));
+    sendRunState(Command::MotorOff);
+}
+
+void ControlView::motorStop()
+{
+    haltLocalMotion(tr("Stopped by Stop."));
+    sendRunState(Command::MotorStop);
+}
+
+void ControlView::motorRun()
+{
+    sendRunState(Command::MotorRun);
+}
+
+void ControlView::stopMotionOf(int id)
+{
+    // The drive is no longer selected: reach it directly, ahead of queued work.
+    if (session() && isConnected() && id > 0)
+        session()->send(*build::plain(Command::MotorStop, id).request, bus::Priority::Emergency);
+}
+
+void ControlView::startJog(int direction)
+{
+    if (m_generator->isRunning())
+        m_generator->stop(tr("Stopped: jog took over."));
+    const MotionOutcome out = sendMotion(build::speed(driveId(), direction * m_jog->speedDps()));
+    m_jogging = out.sent;
+    if (out.sent) {
+        m_motionId = driveId();
+        setStatus(tr("Jogging at %1 dps: release to stop.").arg(direction * m_jog->speedDps()));
+    }
+}
+
+void ControlView::endJog()
+{
+    if (!m_jogging)
+        return;
+    m_jogging = false;
+    m_keyJogging = false;
+    if (m_motionId == driveId() && canSend()) {
+        sendMotion(build::speed(driveId(), 0));
+        setStatus(tr("Jog released: speed 0 sent."));
+    }
+}
+
+void ControlView::step(int direction)
+{
+    const double delta = direction * m_jog->stepDeg();
+    const double speed = m_jog->speedDps();
+    const MotionOutcome out =
+        sendMotion(speed > 0 ? build::incrementPosition(driveId(), delta, speed)
+                             : build::incrementPosition(driveId(), delta));
+    if (out.sent)
+        setStatus(tr("Step of %1\u00b0 sent.").arg(delta));
+}
+
+void ControlView::startGenerator(const SetpointGenerator::Settings &settings)
+{
+    if (!canSend())
+        return;
+    endJog();
+    m_motionId = driveId();
+    m_generatorTicket = 0;
+    m_generatorSkipped = 0;
+    m_generator->start(settings);
+}
+
+void ControlView::stopGenerator()
+{
+    if (!m_generator->isRunning())
+        return;
+    m_generator->stop(tr("Stopped by the user."));
+    if (m_motionId == driveId())
+        sendRunState(Command::MotorStop);
+}
+
+void ControlView::haltLocalMotion(const QString &reason)
+{
+    m_generator->stop(reason);
+    m_jogging = false;
+    m_keyJogging = false;
+}
+
+void ControlView::onSetpoint(double value)
+{
+    if (!canSend() || m_motionId != driveId()) {
+        m_generator->stop(tr("Stopped: the drive or the connection changed."));
+        return;
+    }
+    // One command in flight at most: a slow bus gets fewer setpoints, never a backlog.
+    if (m_generatorTicket && tracker()->isPending(m_generatorTicket)) {
+        ++m_generatorSkipped;
+        return;
+    }
+    const int id = driveId();
+    protocol::BuildResult built;
+    switch (m_generator->settings().target) {
+    case SetpointGenerator::Target::Speed:
+        built = build::speed(id, value);
+        break;
+    case SetpointGenerator::Target::Position:
+        built = build::multiPosition(id, value);
+        break;
+    case SetpointGenerator::Target::Torque:
+        built = build::torque(id, value);
+        break;
+    }
+    const MotionOutcome out = sendMotion(built);
+    if (!out.sent) {
+        m_generator->stop(out.refusal);
+        return;
+    }
+    m_generatorTicket = out.ticket;
+}
+
+void ControlView::onTelemetry(const bus::TelemetryBatch &batch)
+{
+    for (auto it = batch.crbegin(); it != batch.crend(); ++it) {
+        if (it->id != driveId() || !it->has(bus::TelemetryField::Speed))
+            continue;
+        QString text = tr("Now: %1 dps").arg(it->speedDps, 0, 'f', 0);
+        if (it->has(bus::TelemetryField::IqA))
+            text += tr(", iq %1 A").arg(it->iqA, 0, 'f', 2);
+        if (it->has(bus::TelemetryField::Power))
+            text += tr(", power %1").arg(it->power);
+        m_readout->setText(text);
+        return;
+    }
+}
+
+bool ControlView::focusInTextField() const
+{
+    for (QWidget *w = QApplication::focusWidget(); w; w = w->parentWidget()) {
+        if (qobject_cast<QLineEdit *>(w) || qobject_cast<QAbstractSpinBox *>(w) ||
+            qobject_cast<QTextEdit *>(w) || qobject_cast<QPlainTextEdit *>(w))
+            return true;
+        if (auto *combo = qobject_cast<QComboBox *>(w); combo && combo->isEditable())
+            return true;
+    }
+    return false;
+}
+
+bool ControlView::handleJogKey(QKeyEvent *event)
+{
+    const int key = event->key();
+    if (key != Qt::Key_Left && key != Qt::Key_Right && key != Qt::Key_Up && key != Qt::Key_Down)
+        return false;
+    if (event->type() == QEvent::KeyRelease) {
+        // Always honour a release of the key that started the jog, wherever the focus went.
+        if (m_keyJogging && !event->isAutoRepeat() && (key == Qt::Key_Left || key == Qt::Key_Right))
+            endJog();
+        return m_keyJogging;
+    }
+    QWidget *focus = QApplication::focusWidget();
+    const bool focusHere = focus && (focus == this || isAncestorOf(focus));
+    if (!m_jog->keyboardJog() || !canSend() || !focusHere || focusInTextField())
+        return false;
+    if (event->isAutoRepeat())
+        return true; // held key: the jog is already running
+    if (key == Qt::Key_Left || key == Qt::Key_Right) {
+        startJog(key == Qt::Key_Left ? -1 : +1);
+        m_keyJogging = m_jogging;
+    } else {
+        step(key == Qt::Key_Down ? -1 : +1);
+    }
+    return true;
+}
+
+bool ControlView::eventFilter(QObject *watched, QEvent *event)
+{
+    if (isEscape(event)) {
+        haltLocalMotion(tr("Stopped by Esc (emergency stop)."));
+        return false; // never consumed: the emergency stop itself is the window's job
+    }
+    if ((event->type() == QEvent::KeyPress || event->type() == QEvent::KeyRelease) &&
+        watched->isWidgetType() && handleJogKey(static_cast<QKeyEvent *>(event)))
+        return true;
+    if (event->type() == QEvent::ApplicationDeactivate && m_keyJogging)
+        endJog(); // the key release will never arrive here
+    return DriveView::eventFilter(watched, event);
+}
+
+void ControlView::keyPressEvent(QKeyEvent *event)
+{
+    // Reaches here only when nothing above took Esc (no window-wide shortcut): stop anyway.
+    if (event->key() == Qt::Key_Escape && session()) {
+        session()->emergencyStop();
+        setStatus(tr("Emergency stop sent (Esc)."), true);
+        event->accept();
+        return;
+    }
+    DriveView::keyPressEvent(event);
+}
+
+} // namespace lk::ui

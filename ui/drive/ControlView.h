@@ -1,0 +1,130 @@
+#pragma once
+
+#include "DriveView.h"
+#include "MotionGate.h"
+#include "SetpointGenerator.h"
+
+#include <bus/RequestResult.h>
+#include <bus/TelemetrySample.h>
+#include <safety/SoftLimits.h>
+
+#include <memory>
+
+class QLabel;
+class QPushButton;
+
+namespace lk::ui {
+
+class ControlModePanel;
+class DriveSettingsStore;
+class JogPanel;
+class LoopPlot;
+class SetpointPanel;
+class SoftLimitsEditor;
+class TelemetryStore;
+
+/// Commands a drive in every control mode of protocol V2.3 (modes the series lacks are not
+/// offered), with Motor Off / Stop / Run, jog (hold-to-run speed, step moves, optional arrow
+/// keys) and a setpoint generator for tuning. Every motion command passes the protocol
+/// builders and MotionGuard (series and the drive's soft limits, editable and persisted)
+/// before it is sent; a refusal sends nothing and says which limit stopped it.
+///
+/// Esc anywhere in the application (seen by a non-consuming application event filter), an
+/// emergency stop on the session, a drive or connection change and Motor Off/Stop all halt
+/// the generator and the jog. Esc that reaches this view unhandled also sends the session's
+/// emergency stop (lkstudio's window-wide shortcut normally does that).
+class ControlView : public DriveView {
+    Q_OBJECT
+public:
+    explicit ControlView(QWidget *parent = nullptr);
+    ~ControlView() override;
+
+    /// lkstudio's shared telemetry for the live plot (not owned); without one the plot
+    /// records its own from the session.
+    void setTelemetryStore(TelemetryStore *store);
+    /// Where soft limits persist, per drive (not owned; default: kept for this process).
+    void setSettingsStore(DriveSettingsStore *store);
+    safety::SoftLimits softLimits() const { return m_limits; }
+    /// Applies and persists the drive's soft limits.
+    void setSoftLimits(const safety::SoftLimits &limits);
+
+    /// Sends the command of the current mode and inputs through the gate.
+    MotionOutcome sendCommand();
+    /// Any motion request through the gate (builder error, MotionGuard, then the bus).
+    MotionOutcome sendMotion(const protocol::BuildResult &built);
+    void motorOff();              ///< 0x80, ahead of queued work; halts generator and jog
+    void motorStop();             ///< 0x81, ahead of queued work; halts generator and jog
+    void motorRun();              ///< 0x88 through the gate
+    void startJog(int direction); ///< speed command at the jog speed, sign = direction
+    void endJog();                ///< speed 0 when a jog is running
+    void step(int direction);     ///< one incremental move of the jog step
+    void startGenerator(const SetpointGenerator::Settings &settings);
+    /// Stops the generator and sends motor_stop (the last setpoint must not stay active).
+    void stopGenerator();
+    /// Stops generator and jog without sending anything (emergency stop is under way).
+    /// lkstudio's emergency stop (button or Esc) should call it before stopping the bus, so
+    /// that no setpoint can follow the emergency motor_off.
+    void haltLocalMotion(const QString &reason);
+
+    ControlModePanel *modePanel() const { return m_modes; }
+    SoftLimitsEditor *limitsEditor() const { return m_limitsEditor; }
+    JogPanel *jogPanel() const { return m_jog; }
+    SetpointPanel *setpointPanel() const { return m_setpointPanel; }
+    SetpointGenerator *generator() const { return m_generator; }
+    LoopPlot *plot() const { return m_plot; }
+    bool isJogging() const { return m_jogging; }
+    QString statusText() const;
+    MotionOutcome lastOutcome() const { return m_last; }
+
+signals:
+    /// A command was refused before sending (reason translated).
+    void commandRefused(const QString &reason);
+
+protected:
+    void contextChanged(Changes changes) override;
+    bool eventFilter(QObject *watched, QEvent *event) override;
+    void keyPressEvent(QKeyEvent *event) override;
+
+private:
+    QWidget *buildCommandBox();
+    QWidget *buildRunButtons();
+    void wire();
+    void loadLimits();
+    void onSetpoint(double value);
+    void onMotionResult(const bus::RequestResult &result);
+    bool handleJogKey(QKeyEvent *event);
+    bool focusInTextField() const;
+    void sendRunState(protocol::Command command);
+    void stopMotionOf(int id);
+    void onTelemetry(const bus::TelemetryBatch &batch);
+    void report(const MotionOutcome &outcome, const QString &sentText);
+    void setStatus(const QString &text, bool error = false);
+    void refreshEnabled();
+
+    std::unique_ptr<DriveSettingsStore> m_ownStore;
+    DriveSettingsStore *m_store;
+    safety::SoftLimits m_limits;
+    ControlModePanel *m_modes = nullptr;
+    SoftLimitsEditor *m_limitsEditor = nullptr;
+    JogPanel *m_jog = nullptr;
+    SetpointPanel *m_setpointPanel = nullptr;
+    SetpointGenerator *m_generator = nullptr;
+    LoopPlot *m_plot = nullptr;
+    QLabel *m_title = nullptr;
+    QLabel *m_readout = nullptr;
+    QLabel *m_status = nullptr;
+    QPushButton *m_send = nullptr;
+    QPushButton *m_off = nullptr;
+    QPushButton *m_stop = nullptr;
+    QPushButton *m_run = nullptr;
+    QMetaObject::Connection m_telemetryConnection;
+    QMetaObject::Connection m_stopConnection;
+    MotionOutcome m_last;
+    int m_motionId = 0;        ///< drive the generator or jog commands
+    bool m_jogging = false;    ///< a hold-to-run speed command is active
+    bool m_keyJogging = false; ///< ... started by an arrow key
+    quint64 m_generatorTicket = 0;
+    qint64 m_generatorSkipped = 0;
+};
+
+} // namespace lk::ui

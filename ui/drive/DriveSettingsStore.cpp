@@ -1,0 +1,139 @@
+#include "DriveSettingsStore.h"
+
+#include <QtCore/QJsonDocument>
+#include <QtCore/QRegularExpression>
+#include <QtCore/QSettings>
+
+#include <algorithm>
+#include <iterator>
+
+namespace lk::ui {
+
+namespace {
+constexpr int kResolutions[] = {12, 14, 15, 16, 18}; // what LK encoders are sold with
+constexpr double kMaxGearRatio = 1000;
+
+QString keyPath(const QString &driveKey, const char *name)
+{
+    return QStringLiteral("drives/%1/%2").arg(driveKey, QLatin1String(name));
+}
+
+bool validBits(int bits)
+{
+    return std::find(std::begin(kResolutions), std::end(kResolutions), bits) !=
+           std::end(kResolutions);
+}
+
+bool validRatio(double ratio)
+{
+    return ratio >= 1.0 && ratio <= kMaxGearRatio;
+}
+} // namespace
+
+QString DriveSettingsStore::driveKey(int id, const bus::KnownMotor &motor)
+{
+    static const QRegularExpression unsafe(QStringLiteral("[^A-Za-z0-9_.-]+"));
+    QString key = QStringLiteral("id%1").arg(id);
+    if (motor.model && !motor.model->motorName.trimmed().isEmpty())
+        key += QLatin1Char('-') +
+               motor.model->motorName.trimmed().replace(unsafe, QStringLiteral("_"));
+    return key;
+}
+
+std::optional<safety::SoftLimits> MemoryDriveStore::softLimits(const QString &driveKey,
+                                                               const safety::SoftLimits &)
+{
+    const auto it = m_limits.constFind(driveKey);
+    if (it == m_limits.constEnd())
+        return std::nullopt;
+    return *it;
+}
+
+void MemoryDriveStore::setSoftLimits(const QString &driveKey, const safety::SoftLimits &limits)
+{
+    m_limits.insert(driveKey, limits);
+}
+
+std::optional<int> MemoryDriveStore::encoderBits(const QString &driveKey)
+{
+    const auto it = m_bits.constFind(driveKey);
+    return it == m_bits.constEnd() ? std::nullopt : std::optional<int>(*it);
+}
+
+void MemoryDriveStore::setEncoderBits(const QString &driveKey, int bits)
+{
+    if (validBits(bits))
+        m_bits.insert(driveKey, bits);
+}
+
+std::optional<double> MemoryDriveStore::gearRatio(const QString &driveKey)
+{
+    const auto it = m_ratios.constFind(driveKey);
+    return it == m_ratios.constEnd() ? std::nullopt : std::optional<double>(*it);
+}
+
+void MemoryDriveStore::setGearRatio(const QString &driveKey, double ratio)
+{
+    if (validRatio(ratio))
+        m_ratios.insert(driveKey, ratio);
+}
+
+IniDriveStore::IniDriveStore(const QString &iniFile)
+    : m_settings(iniFile.isEmpty() ? std::make_unique<QSettings>()
+                                   : std::make_unique<QSettings>(iniFile, QSettings::IniFormat))
+{
+}
+
+IniDriveStore::~IniDriveStore() = default;
+
+std::optional<safety::SoftLimits> IniDriveStore::softLimits(const QString &driveKey,
+                                                            const safety::SoftLimits &fallback)
+{
+    const QByteArray text = m_settings->value(keyPath(driveKey, "softLimits")).toByteArray();
+    if (text.isEmpty())
+        return std::nullopt;
+    const QJsonDocument doc = QJsonDocument::fromJson(text);
+    if (!doc.isObject())
+        return std::nullopt;
+    return safety::SoftLimits::fromJson(doc.object(), fallback);
+}
+
+void IniDriveStore::setSoftLimits(const QString &driveKey, const safety::SoftLimits &limits)
+{
+    m_settings->setValue(
+        keyPath(driveKey, "softLimits"),
+        QString::fromUtf8(QJsonDocument(limits.toJson()).toJson(QJsonDocument::Compact)));
+}
+
+std::optional<int> IniDriveStore::encoderBits(const QString &driveKey)
+{
+    bool ok = false;
+    const int bits = m_settings->value(keyPath(driveKey, "encoderBits")).toInt(&ok);
+    return ok && validBits(bits) ? std::optional<int>(bits) : std::nullopt;
+}
+
+void IniDriveStore::setEncoderBits(const QString &driveKey, int bits)
+{
+    if (validBits(bits))
+        m_settings->setValue(keyPath(driveKey, "encoderBits"), bits);
+}
+
+std::optional<double> IniDriveStore::gearRatio(const QString &driveKey)
+{
+    bool ok = false;
+    const double ratio = m_settings->value(keyPath(driveKey, "gearRatio")).toDouble(&ok);
+    return ok && validRatio(ratio) ? std::optional<double>(ratio) : std::nullopt;
+}
+
+void IniDriveStore::setGearRatio(const QString &driveKey, double ratio)
+{
+    if (validRatio(ratio))
+        m_settings->setValue(keyPath(driveKey, "gearRatio"), ratio);
+}
+
+void IniDriveStore::sync()
+{
+    m_settings->sync();
+}
+
+} // namespace lk::ui

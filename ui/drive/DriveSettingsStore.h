@@ -1,0 +1,75 @@
+#pragma once
+
+#include <bus/KnownMotor.h>
+#include <safety/SoftLimits.h>
+
+#include <QtCore/QHash>
+#include <QtCore/QString>
+
+#include <memory>
+#include <optional>
+
+class QSettings;
+
+namespace lk::ui {
+
+/// Per-drive settings the drive views keep between sessions: soft limits, encoder
+/// resolution and gear ratio, by drive key (see driveKey()). An interface so that lkstudio's
+/// settings class can take it over; IniDriveStore keeps them in a QSettings file.
+class DriveSettingsStore {
+public:
+    virtual ~DriveSettingsStore() = default;
+
+    /// The limits stored for the drive, read over `fallback` (missing keys keep its values);
+    /// nullopt when none are stored or they are unusable.
+    virtual std::optional<safety::SoftLimits> softLimits(const QString &driveKey,
+                                                         const safety::SoftLimits &fallback) = 0;
+    virtual void setSoftLimits(const QString &driveKey, const safety::SoftLimits &limits) = 0;
+    virtual std::optional<int> encoderBits(const QString &driveKey) = 0;
+    virtual void setEncoderBits(const QString &driveKey, int bits) = 0;
+    virtual std::optional<double> gearRatio(const QString &driveKey) = 0;
+    virtual void setGearRatio(const QString &driveKey, double ratio) = 0;
+
+    /// "id3-MF4015": the ID and the motor name, so that settings follow a drive and do not
+    /// apply to another motor that later sits at the same ID.
+    static QString driveKey(int id, const bus::KnownMotor &motor);
+};
+
+/// Settings kept for this process only (the default when a view is given no store).
+class MemoryDriveStore : public DriveSettingsStore {
+public:
+    std::optional<safety::SoftLimits> softLimits(const QString &driveKey,
+                                                 const safety::SoftLimits &fallback) override;
+    void setSoftLimits(const QString &driveKey, const safety::SoftLimits &limits) override;
+    std::optional<int> encoderBits(const QString &driveKey) override;
+    void setEncoderBits(const QString &driveKey, int bits) override;
+    std::optional<double> gearRatio(const QString &driveKey) override;
+    void setGearRatio(const QString &driveKey, double ratio) override;
+
+private:
+    QHash<QString, safety::SoftLimits> m_limits;
+    QHash<QString, int> m_bits;
+    QHash<QString, double> m_ratios;
+};
+
+/// Settings in a QSettings INI file (group "drives/<key>"); values read back are validated.
+class IniDriveStore : public DriveSettingsStore {
+public:
+    /// `iniFile` empty: the user's lkstudio settings file.
+    explicit IniDriveStore(const QString &iniFile = {});
+    ~IniDriveStore() override;
+
+    std::optional<safety::SoftLimits> softLimits(const QString &driveKey,
+                                                 const safety::SoftLimits &fallback) override;
+    void setSoftLimits(const QString &driveKey, const safety::SoftLimits &limits) override;
+    std::optional<int> encoderBits(const QString &driveKey) override;
+    void setEncoderBits(const QString &driveKey, int bits) override;
+    std::optional<double> gearRatio(const QString &driveKey) override;
+    void setGearRatio(const QString &driveKey, double ratio) override;
+    void sync();
+
+private:
+    std::unique_ptr<QSettings> m_settings;
+};
+
+} // namespace lk::ui

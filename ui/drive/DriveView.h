@@ -1,0 +1,74 @@
+#pragma once
+
+#include <bus/KnownMotor.h>
+#include <protocol/Series.h>
+
+#include <QtCore/QFlags>
+#include <QtCore/QPointer>
+#include <QtWidgets/QWidget>
+
+#include <optional>
+
+namespace lk::bus {
+class BusSession;
+}
+
+namespace lk::ui {
+
+class RequestTracker;
+
+/// Common face of the drive views (tuning, control, encoder, info) towards the main window:
+/// a session, the selected drive (or none) and whether the link is up. Everything that sends
+/// is disabled unless all three are there (canSend()).
+class DriveView : public QWidget {
+    Q_OBJECT
+public:
+    enum class Change {
+        Session = 0x1,    ///< another session (or none)
+        Drive = 0x2,      ///< another drive ID (or none)
+        MotorInfo = 0x4,  ///< same ID, new model or series information
+        Connection = 0x8, ///< the link came up or went down
+    };
+    Q_DECLARE_FLAGS(Changes, Change)
+
+    explicit DriveView(QWidget *parent = nullptr);
+
+    /// The bus to talk to; not owned. Pending requests of the previous one are forgotten.
+    void setSession(lk::bus::BusSession *session);
+    lk::bus::BusSession *session() const;
+    /// Select a drive by ID with what the bus knows about it (series, model).
+    void setDrive(int id, const lk::bus::KnownMotor &motor);
+    /// No drive selected: the view shows nothing to act on.
+    void clearDrive();
+    /// Whether the bus is connected; sending controls are disabled while it is not.
+    void setConnected(bool connected);
+
+    int driveId() const { return m_id; } ///< 0 when no drive is selected
+    bool hasDrive() const { return m_id > 0; }
+    const lk::bus::KnownMotor &motor() const { return m_motor; }
+    bool isConnected() const { return m_connected; }
+    /// The drive's series: from the KnownMotor given, else what the session knows.
+    std::optional<protocol::Series> series() const;
+    /// A session, a connected link and a drive: sending is possible.
+    bool canSend() const;
+    /// "Drive 3 (MF4015)" or "no drive selected".
+    QString driveTitle() const;
+
+protected:
+    RequestTracker *tracker() const { return m_tracker; }
+    /// Called after any change of session, drive or connection; refresh and enable here.
+    virtual void contextChanged(Changes changes) = 0;
+
+private:
+    void notify(Changes changes);
+
+    QPointer<lk::bus::BusSession> m_session;
+    RequestTracker *m_tracker;
+    int m_id = 0;
+    lk::bus::KnownMotor m_motor;
+    bool m_connected = false;
+};
+
+} // namespace lk::ui
+
+Q_DECLARE_OPERATORS_FOR_FLAGS(lk::ui::DriveView::Changes)

@@ -1,0 +1,73 @@
+#include "EncoderLiveBox.h"
+
+#include "EncoderDial.h"
+
+#include <QtWidgets/QFormLayout>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QVBoxLayout>
+
+namespace lk::ui {
+
+namespace {
+QLabel *readout(const QString &name, QWidget *parent)
+{
+    auto *l = new QLabel(QStringLiteral("\u2013"), parent);
+    l->setObjectName(name);
+    l->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    QFont f = l->font();
+    f.setPointSizeF(f.pointSizeF() * 1.25);
+    f.setBold(true);
+    l->setFont(f);
+    return l;
+}
+} // namespace
+
+EncoderLiveBox::EncoderLiveBox(QWidget *parent)
+    : QGroupBox(tr("Live (read while this view is shown)"), parent),
+      m_encoder(readout(QStringLiteral("encoderValue"), this)),
+      m_raw(readout(QStringLiteral("encoderRaw"), this)),
+      m_offset(readout(QStringLiteral("encoderOffset"), this)),
+      m_multi(readout(QStringLiteral("multiTurn"), this)),
+      m_output(readout(QStringLiteral("outputShaft"), this)),
+      m_single(readout(QStringLiteral("singleTurn"), this)), m_dial(new EncoderDial(this))
+{
+    auto *form = new QFormLayout;
+    form->addRow(tr("Encoder (raw \u2212 offset):"), m_encoder);
+    form->addRow(tr("Raw encoder:"), m_raw);
+    form->addRow(tr("Encoder offset:"), m_offset);
+    form->addRow(tr("Multi-turn angle (rotor):"), m_multi);
+    form->addRow(tr("Output shaft:"), m_output);
+    form->addRow(tr("Single-turn angle:"), m_single);
+    auto *legend = new QLabel(tr("Dial: the blue needle is the raw position, the red mark the "
+                                 "offset (where the encoder reads 0); the centre shows the "
+                                 "encoder angle."),
+                              this);
+    legend->setWordWrap(true);
+    auto *column = new QVBoxLayout(this);
+    column->addLayout(form);
+    column->addWidget(m_dial, 1);
+    column->addWidget(legend);
+}
+
+void EncoderLiveBox::setValues(const std::optional<protocol::EncoderReading> &encoder,
+                               const std::optional<double> &multiTurnDeg,
+                               const std::optional<double> &singleTurnDeg, int counts, double ratio)
+{
+    const QString none = QStringLiteral("\u2013");
+    auto countText = [counts](int v) {
+        return tr("%1  (%2\u00b0)").arg(v).arg(360.0 * v / counts, 0, 'f', 2);
+    };
+    auto degText = [](double deg) { return tr("%1\u00b0").arg(deg, 0, 'f', 2); };
+    m_encoder->setText(encoder ? countText(encoder->encoder) : none);
+    m_raw->setText(encoder ? countText(encoder->encoderRaw) : none);
+    m_offset->setText(encoder ? countText(encoder->encoderOffset) : none);
+    m_multi->setText(multiTurnDeg ? degText(*multiTurnDeg) : none);
+    m_output->setText(
+        multiTurnDeg ? tr("%1 (\u00f7 %2)").arg(degText(*multiTurnDeg / ratio)).arg(ratio) : none);
+    m_single->setText(singleTurnDeg ? degText(*singleTurnDeg) : none);
+    m_dial->setReading(encoder ? std::optional<int>(encoder->encoder) : std::nullopt,
+                       encoder ? std::optional<int>(encoder->encoderRaw) : std::nullopt,
+                       encoder ? std::optional<int>(encoder->encoderOffset) : std::nullopt, counts);
+}
+
+} // namespace lk::ui

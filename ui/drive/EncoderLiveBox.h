@@ -1,0 +1,37 @@
+#pragma once
+
+#include <protocol/Values.h>
+
+#include <QtWidgets/QGroupBox>
+
+#include <optional>
+
+class QLabel;
+
+namespace lk::ui {
+
+class EncoderDial;
+
+/// The live readouts of the encoder view: encoder, raw encoder and offset (counts and
+/// degrees), multi-turn angle of the rotor and the output shaft, single-turn angle, and the
+/// encoder dial. It shows what it is given; the view does the reading.
+class EncoderLiveBox : public QGroupBox {
+    Q_OBJECT
+public:
+    explicit EncoderLiveBox(QWidget *parent = nullptr);
+
+    void setValues(const std::optional<protocol::EncoderReading> &encoder,
+                   const std::optional<double> &multiTurnDeg,
+                   const std::optional<double> &singleTurnDeg, int countsPerTurn, double gearRatio);
+
+private:
+    QLabel *m_encoder;
+    QLabel *m_raw;
+    QLabel *m_offset;
+    QLabel *m_multi;
+    QLabel *m_output;
+    QLabel *m_single;
+    EncoderDial *m_dial;
+};
+
+} // namespace lk::ui

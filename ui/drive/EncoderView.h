@@ -1,0 +1,121 @@
+#pragma once
+
+#include "AngleCheck.h"
+#include "DriveView.h"
+
+#include <bus/RequestResult.h>
+#include <protocol/Values.h>
+
+#include <QtCore/QTimer>
+
+#include <functional>
+#include <memory>
+#include <optional>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPlainTextEdit;
+class QPushButton;
+class QSpinBox;
+
+namespace lk::ui {
+
+class DriveSettingsStore;
+class EncoderLiveBox;
+
+/// Encoder and zero tools of one drive: encoder, raw encoder, offset and angles read live
+/// while the view is visible; encoder offset write (0x91); clear motor angle (0x95) verified
+/// with read_multi_turn (firmware that acknowledges and ignores it is named); current
+/// position to ROM as zero (0x19) after a confirmation (power cycle, flash wear). Encoder
+/// resolution and gear ratio are inferred from the model name, editable and kept per drive.
+class EncoderView : public DriveView {
+    Q_OBJECT
+public:
+    static constexpr int kDefaultPollMs = 100;
+    static const QList<int> &resolutions(); ///< 12, 14, 15, 16, 18 bit
+
+    explicit EncoderView(QWidget *parent = nullptr);
+    ~EncoderView() override;
+
+    /// Where resolution and gear ratio persist per drive (not owned; default: this process).
+    void setSettingsStore(DriveSettingsStore *store);
+    int encoderBits() const { return m_bits; }
+    void setEncoderBits(int bits); ///< one of resolutions(); persisted for the drive
+    double gearRatio() const { return m_ratio; }
+    void setGearRatio(double ratio); ///< >= 1; persisted for the drive
+    /// Counts per turn on the wire for the chosen resolution (18-bit reports 16 bits).
+    int countsPerTurn() const;
+    void setPollInterval(int ms);
+
+    /// One read of encoder and angles now (the live poll does the same while visible).
+    void refreshNow();
+    /// Asks, then writes `offset` (0..countsPerTurn()-1) with 0x91 and reads it back.
+    void writeOffset(int offset);
+    /// Asks, then clears the angle (0x95) and checks it with read_multi_turn before/after.
+    void clearAngle();
+    /// Asks, then writes the current position to ROM as zero (0x19, once, never retried).
+    void writeZeroToRom();
+
+    std::optional<protocol::EncoderReading> lastEncoder() const { return m_encoder; }
+    std::optional<double> lastMultiTurnDeg() const { return m_multiTurnDeg; }
+    std::optional<AngleCheck> lastAngleCheck() const { return m_angleCheck; }
+    QString statusText() const;
+
+signals:
+    void angleCheckFinished(const lk::ui::AngleCheck &check);
+    void offsetWriteFinished(bool ok);
+    void zeroWriteFinished(bool ok);
+
+protected:
+    void contextChanged(Changes changes) override;
+    void showEvent(QShowEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
+
+private:
+    QWidget *buildSetupBox();
+    QWidget *buildOffsetBox();
+    QWidget *buildZeroBox();
+    void loadDriveSettings();
+    void poll();
+    quint64 readEncoder(bus::Priority priority);
+    quint64 readMultiTurn(bus::Priority priority, std::function<void(double)> then = {});
+    void readBackOffset(int offset);
+    void onClearAcknowledged(int id, double before);
+    void showAngleCheck(const AngleCheck &check);
+    void refreshReadouts();
+    void refreshEnabled();
+    void setStatus(const QString &text, bool error = false);
+    bool confirm(const QString &key, const QString &title, const QString &question,
+                 const QString &reason, const QString &accept);
+
+    std::unique_ptr<DriveSettingsStore> m_ownStore;
+    DriveSettingsStore *m_store;
+    QTimer m_poll;
+    int m_bits = 14;
+    double m_ratio = 1.0;
+    QString m_bitsSource;
+    QString m_ratioSource;
+    std::optional<protocol::EncoderReading> m_encoder;
+    std::optional<double> m_multiTurnDeg;
+    std::optional<double> m_singleTurnDeg;
+    std::optional<AngleCheck> m_angleCheck;
+    quint64 m_pollTicket = 0;
+    bool m_busy = false; ///< an offset, clear or zero sequence is running
+
+    QLabel *m_title = nullptr;
+    EncoderLiveBox *m_live = nullptr;
+    QComboBox *m_bitsCombo = nullptr;
+    QLabel *m_bitsNote = nullptr;
+    QDoubleSpinBox *m_ratioSpin = nullptr;
+    QLabel *m_ratioNote = nullptr;
+    QSpinBox *m_offsetSpin = nullptr;
+    QPushButton *m_useRaw = nullptr;
+    QPushButton *m_writeOffset = nullptr;
+    QPushButton *m_clearAngle = nullptr;
+    QPushButton *m_zeroRom = nullptr;
+    QLabel *m_status = nullptr;
+    QPlainTextEdit *m_log = nullptr;
+};
+
+} // namespace lk::ui

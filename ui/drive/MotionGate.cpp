@@ -1,0 +1,36 @@
+#include "MotionGate.h"
+
+#include "DriveText.h"
+
+namespace lk::ui {
+
+MotionOutcome MotionGate::submit(RequestTracker &tracker, const protocol::BuildResult &built,
+                                 std::optional<protocol::Series> series,
+                                 const safety::SoftLimits &limits,
+                                 RequestTracker::Callback callback)
+{
+    MotionOutcome out;
+    if (!built.ok()) {
+        out.fieldError = built.error;
+        out.refusal = DriveText::fieldError(built.error);
+        return out;
+    }
+    const protocol::Request &request = *built.request;
+    const safety::Verdict verdict = safety::MotionGuard::check(request, series, limits);
+    if (!verdict.allowed()) {
+        out.limit = verdict.kind;
+        out.refusal = DriveText::verdict(verdict, series);
+        return out;
+    }
+    // A relative move repeated after a lost reply would move twice: never retry it.
+    const bool relative = request.command == protocol::Command::IncrementPosition ||
+                          request.command == protocol::Command::IncrementPositionLimited;
+    out.ticket =
+        tracker.send(request, std::move(callback), bus::Priority::Operator, relative ? 0 : -1);
+    out.sent = out.ticket != 0;
+    if (!out.sent)
+        out.refusal = QCoreApplication::translate("lk::ui::MotionGate", "Not connected.");
+    return out;
+}
+
+} // namespace lk::ui

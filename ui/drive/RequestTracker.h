@@ -1,0 +1,56 @@
+#pragma once
+
+#include <bus/Priority.h>
+#include <bus/RequestResult.h>
+#include <protocol/Request.h>
+
+#include <QtCore/QHash>
+#include <QtCore/QObject>
+#include <QtCore/QPointer>
+
+#include <functional>
+
+namespace lk::bus {
+class BusSession;
+}
+
+namespace lk::ui {
+
+/// Sends requests through a BusSession and hands each completion to the callback given with
+/// it, so a view reacts only to its own requests. Never waits: completions arrive later
+/// through BusSession::requestCompleted.
+class RequestTracker : public QObject {
+    Q_OBJECT
+public:
+    using Callback = std::function<void(const bus::RequestResult &)>;
+
+    explicit RequestTracker(QObject *parent = nullptr);
+
+    /// Switches sessions; callbacks of requests sent on the old one are dropped.
+    void setSession(bus::BusSession *session);
+    bus::BusSession *session() const;
+
+    /// Queues `request`; `callback` runs once with its result. Returns the ticket, or 0 when
+    /// there is no session (nothing sent, the callback never runs).
+    quint64 send(const protocol::Request &request, Callback callback = {},
+                 bus::Priority priority = bus::Priority::Operator, int retries = -1);
+    /// Forget every pending callback (the drive or the connection changed): late results
+    /// of those requests are ignored.
+    void forgetAll();
+
+    int pendingCount() const { return static_cast<int>(m_pending.size()); }
+    bool isPending(quint64 ticket) const { return m_pending.contains(ticket); }
+
+signals:
+    /// The number of requests still awaited changed (e.g. to disable buttons meanwhile).
+    void pendingChanged(int count);
+
+private:
+    void onCompleted(const bus::RequestResult &result);
+
+    QPointer<bus::BusSession> m_session;
+    QMetaObject::Connection m_connection;
+    QHash<quint64, Callback> m_pending;
+};
+
+} // namespace lk::ui

@@ -1,0 +1,50 @@
+#pragma once
+
+#include "SetpointGenerator.h"
+
+#include <protocol/Series.h>
+
+#include <QtWidgets/QGroupBox>
+
+#include <optional>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+
+namespace lk::ui {
+
+/// The setpoint generator's settings and Start/Stop. Torque is offered only where the
+/// series has a torque loop. Start emits startRequested; the control view runs the generator.
+class SetpointPanel : public QGroupBox {
+    Q_OBJECT
+public:
+    explicit SetpointPanel(QWidget *parent = nullptr);
+
+    void setSeries(std::optional<protocol::Series> series);
+    SetpointGenerator::Settings settings() const;
+    void setSettings(const SetpointGenerator::Settings &settings);
+    /// Shows running/stopped and the last message.
+    void setRunning(bool running, const QString &message = {});
+    void setStartEnabled(bool enabled);
+
+signals:
+    void startRequested(const lk::ui::SetpointGenerator::Settings &settings);
+    void stopRequested();
+
+private:
+    void refreshUnits();
+
+    QComboBox *m_waveform;
+    QComboBox *m_target;
+    QDoubleSpinBox *m_amplitude;
+    QDoubleSpinBox *m_offset;
+    QDoubleSpinBox *m_period;
+    QDoubleSpinBox *m_rate;
+    QPushButton *m_start;
+    QPushButton *m_stop;
+    QLabel *m_state;
+};
+
+} // namespace lk::ui

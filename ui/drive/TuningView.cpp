@@ -1,0 +1,520 @@
+#include "TuningView.h"
+
+#include "ConfirmDialog.h"
+#include "DriveText.h"
+#include "LoopPlot.h"
+#include "ParameterTable.h"
+#include "RequestTracker.h"
+
+#include <bus/BusSession.h>
+#include <protocol/RequestBuilder.h>
+#include <record/ParameterSet.h>
+
+#include <QtCore/QDateTime>
+#include <QtCore/QTime>
+#include <QtWidgets/QFileDialog>
+#include <QtWidgets/QGridLayout>
+#include <QtWidgets/QGroupBox>
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QPushButton>
+#include <QtWidgets/QVBoxLayout>
+
+namespace lk::ui {
+
+namespace {
+constexpr int kLeftColumnWidth = 470;
+
+QString gainsText(const protocol::PidGains &p)
+{
+    return QStringLiteral("%1/%2, %3/%4, %5/%6")
+        .arg(p.angleKp)
+        .arg(p.angleKi)
+        .arg(p.speedKp)
+        .arg(p.speedKi)
+        .arg(p.iqKp)
+        .arg(p.iqKi);
+}
+
+QLabel *banner(const QString &name, const QString &style, QWidget *parent)
+{
+    auto *label = new QLabel(parent);
+    label->setObjectName(name);
+    label->setWordWrap(true);
+    label->setStyleSheet(style);
+    label->hide();
+    return label;
+}
+} // namespace
+
+TuningView::TuningView(QWidget *parent) : DriveView(parent)
+{
+    setObjectName(QStringLiteral("tuning"));
+    buildUi();
+    connect(tracker(), &RequestTracker::pendingChanged, this, &TuningView::refreshEnabled);
+    connect(m_table, &ParameterTable::loopFocused, m_plot, &LoopPlot::setLoop);
+    connect(m_table, &ParameterTable::edited, this, &TuningView::refreshEnabled);
+    contextChanged(Change::Session | Change::Drive);
+}
+
+TuningView::~TuningView() = default;
+
+void TuningView::buildUi()
+{
+    m_title = new QLabel(this);
+    m_title->setObjectName(QStringLiteral("driveTitle"));
+    QFont big = m_title->font();
+    big.setPointSizeF(big.pointSizeF() * 1.2);
+    big.setBold(true);
+    m_title->setFont(big);
+
+    auto *box = new QGroupBox(tr("PID gains and acceleration"), this);
+    m_table = new ParameterTable(box);
+    auto *accelNote = new QLabel(
+        tr("Gains go to RAM (try: lost at power-off) or ROM (keep). Acceleration is RAM only: "
+           "protocol V2.3 has no command that stores it."),
+        box);
+    accelNote->setWordWrap(true);
+    auto *boxLayout = new QVBoxLayout(box);
+    boxLayout->addWidget(m_table);
+    boxLayout->addWidget(accelNote);
+
+    m_romWarning =
+        banner(QStringLiteral("romWarning"),
+               QStringLiteral("background:#fff1c2;border:1px solid #d9a400;padding:4px;"), this);
+    m_mismatch =
+        banner(QStringLiteral("mismatch"),
+               QStringLiteral("background:#ffd9d6;border:1px solid #c62828;padding:4px;"), this);
+    m_status = new QLabel(this);
+    m_status->setObjectName(QStringLiteral("status"));
+    m_status->setWordWrap(true);
+
+    auto *left = new QVBoxLayout;
+    left->addWidget(m_title);
+    left->addWidget(box);
+    left->addWidget(buildButtons());
+    left->addWidget(m_romWarning);
+    left->addWidget(m_mismatch);
+    left->addWidget(m_status);
+    left->addStretch();
+    auto *leftWidget = new QWidget(this);
+    leftWidget->setLayout(left);
+    leftWidget->setFixedWidth(kLeftColumnWidth);
+
+    m_plot = new LoopPlot(this);
+    auto *layout = new QHBoxLayout(this);
+    layout->addWidget(leftWidget);
+    layout->addWidget(m_plot, 1);
+}
+
+QWidget *TuningView::buildButtons()
+{
+    auto make = [this](const QString &name, const QString &text, const QString &tip) {
+        auto *b = new QPushButton(text, this);
+        b->setObjectName(name);
+        b->setToolTip(tip);
+        return b;
+    };
+    m_read = make(QStringLiteral("read"), tr("Read from drive"),
+                  tr("read_pid (0x30) and read_accel (0x33)"));
+    m_writeRam = make(QStringLiteral("writeRam"), tr("Write to RAM"),
+                      tr("Try the pending edit: 0x31 and 0x34, lost at power-off; read back."));
+    m_writeRom = make(QStringLiteral("writeRom"), tr("Write to ROM\u2026"),
+                      tr("Keep the gains: 0x32 writes flash (asks first); read back."));
+    m_undo = make(QStringLiteral("undo"), tr("Undo to selection"),
+                  tr("Write the values read when this drive was first selected back to RAM."));
+    m_save = make(QStringLiteral("save"), tr("Save to file\u2026"),
+                  tr("Save what the drive holds, with model, firmware and time, as JSON."));
+    m_load = make(QStringLiteral("load"), tr("Load from file\u2026"),
+                  tr("Load a parameter file into the pending edit; nothing is written."));
+    connect(m_read, &QPushButton::clicked, this, &TuningView::readFromDrive);
+    connect(m_writeRam, &QPushButton::clicked, this, &TuningView::writeToRam);
+    connect(m_writeRom, &QPushButton::clicked, this, &TuningView::writeToRom);
+    connect(m_undo, &QPushButton::clicked, this, &TuningView::undoToSelection);
+    connect(m_save, &QPushButton::clicked, this, [this] {
+        const QString suggestion =
+            QStringLiteral("%1-parameters.json")
+                .arg(QStringLiteral("drive%1").arg(driveId()) +
+                     (motor().model ? QLatin1Char('-') + motor().model->motorName : QString()));
+        const QString path = QFileDialog::getSaveFileName(
+            this, tr("Save drive parameters"), suggestion, tr("Parameter files (*.json)"));
+        if (!path.isEmpty())
+            saveParameters(path);
+    });
+    connect(m_load, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Load drive parameters"), {},
+                                                          tr("Parameter files (*.json)"));
+        if (!path.isEmpty())
+            loadParameters(path);
+    });
+    auto *w = new QWidget(this);
+    auto *grid = new QGridLayout(w);
+    grid->setContentsMargins(0, 0, 0, 0);
+    grid->addWidget(m_read, 0, 0);
+    grid->addWidget(m_writeRam, 0, 1);
+    grid->addWidget(m_writeRom, 0, 2);
+    grid->addWidget(m_undo, 1, 0);
+    grid->addWidget(m_save, 1, 1);
+    grid->addWidget(m_load, 1, 2);
+    return w;
+}
+
+void TuningView::setTelemetryStore(TelemetryStore *store)
+{
+    m_plot->setStore(store);
+}
+
+bool TuningView::romWarningShown() const
+{
+    return m_romWarningActive;
+}
+
+QString TuningView::mismatchText() const
+{
+    return m_mismatch->isHidden() ? QString() : m_mismatch->text();
+}
+
+QString TuningView::statusText() const
+{
+    return m_status->text();
+}
+
+bool TuningView::isBusy() const
+{
+    return tracker()->pendingCount() > 0;
+}
+
+void TuningView::contextChanged(Changes changes)
+{
+    if (changes & Change::Session) {
+        m_memory.clear();
+        disconnect(m_telemetry);
+        if (session())
+            m_telemetry = connect(session(), &bus::BusSession::telemetryReceived, m_plot,
+                                  &LoopPlot::appendTelemetry);
+    }
+    if (tracker()->pendingCount() == 0)
+        m_readsOutstanding = 0; // the tracker forgot them with the drive or the link
+    if (changes & (Change::Session | Change::Drive)) {
+        m_holdsPid.reset();
+        m_holdsAccel.reset();
+        m_expected.reset();
+        m_mismatch->hide();
+        const DriveMemory mem = m_memory.value(driveId());
+        m_table->setHolds(std::nullopt, std::nullopt);
+        m_table->setOriginal(mem.originalPid, mem.originalAccel);
+        setStatus(QString());
+    }
+    m_plot->setDrive(driveId(), series() == protocol::Series::MS);
+    m_title->setText(driveTitle());
+    if (canSend() && (changes & (Change::Session | Change::Drive | Change::Connection)))
+        startRead(!m_holdsPid || !m_table->anyChanged());
+    if ((changes & Change::Connection) && !isConnected() && hasDrive())
+        setStatus(tr("Disconnected: the values shown are the last ones read."));
+    refreshWarnings();
+    refreshEnabled();
+}
+
+void TuningView::readFromDrive()
+{
+    if (!canSend() || isBusy())
+        return;
+    setStatus(QString());
+    startRead(!m_holdsPid || !m_table->anyChanged());
+}
+
+void TuningView::startRead(bool takePending)
+{
+    const int id = driveId();
+    m_takePending = takePending;
+    m_readsOutstanding += 2;
+    tracker()->send(*protocol::build::plain(protocol::Command::ReadPid, id).request,
+                    [this, id](const bus::RequestResult &r) {
+                        const auto *pid =
+                            r.reply ? std::get_if<protocol::PidGains>(&r.reply->payload) : nullptr;
+                        if (r.ok() && pid)
+                            m_holdsPid = *pid;
+                        else
+                            failed(r);
+                        onReadDone(id);
+                    });
+    tracker()->send(*protocol::build::plain(protocol::Command::ReadAccel, id).request,
+                    [this, id](const bus::RequestResult &r) {
+                        const auto *a = r.reply
+                                            ? std::get_if<protocol::Acceleration>(&r.reply->payload)
+                                            : nullptr;
+                        if (r.ok() && a)
+                            m_holdsAccel = a->dps2;
+                        else
+                            failed(r);
+                        onReadDone(id);
+                    });
+}
+
+void TuningView::onReadDone(int id)
+{
+    if (--m_readsOutstanding > 0 || id != driveId())
+        return;
+    m_readsOutstanding = 0;
+    DriveMemory &mem = m_memory[id];
+    if (!mem.originalRead && m_holdsPid) {
+        mem.originalRead = true;
+        mem.originalPid = m_holdsPid;
+        mem.originalAccel = m_holdsAccel;
+    }
+    m_table->setOriginal(mem.originalPid, mem.originalAccel);
+    m_table->setHolds(m_holdsPid, m_holdsAccel);
+    if (m_takePending && m_holdsPid)
+        m_table->setPending(*m_holdsPid, m_holdsAccel.value_or(0));
+    m_takePending = false;
+    if (!m_expected && m_status->text().isEmpty())
+        setStatus(m_holdsPid ? tr("Read from drive %1 at %2.")
+                                   .arg(id)
+                                   .arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")))
+                             : QString());
+    checkReadBack();
+    refreshWarnings();
+    refreshEnabled();
+    emit parametersRead(id);
+}
+
+void TuningView::writeToRam()
+{
+    writeParameters(false);
+}
+
+void TuningView::writeToRom()
+{
+    writeParameters(true);
+}
+
+void TuningView::undoToSelection()
+{
+    const DriveMemory mem = m_memory.value(driveId());
+    if (!canSend() || isBusy() || !mem.originalPid)
+        return;
+    m_table->setPending(*mem.originalPid, mem.originalAccel.value_or(m_table->pendingAccel()));
+    writeParameters(false);
+}
+
+bool TuningView::confirmRomWrite(int id)
+{
+    ConfirmRequest q;
+    q.key = QStringLiteral("write_pid_rom");
+    q.title = tr("Write gains to ROM");
+    q.question = tr("Write these PID gains to the ROM of drive %1?\n%2 (angle, speed, iq Kp/Ki)")
+                     .arg(id)
+                     .arg(gainsText(m_table->pendingPid()));
+    q.reason = tr("ROM is the drive's flash memory: each write wears it, and the gains stay "
+                  "after power-off. Try them in RAM first; write to ROM once you are satisfied. "
+                  "Acceleration is written to RAM only (V2.3 has no ROM command for it).");
+    q.acceptText = tr("Write to ROM");
+    return ConfirmDialog::ask(this, q, session());
+}
+
+void TuningView::writeParameters(bool rom)
+{
+    if (!canSend() || isBusy())
+        return;
+    const int id = driveId();
+    if (rom && !confirmRomWrite(id)) {
+        setStatus(tr("ROM write cancelled: nothing was sent."));
+        return;
+    }
+    // The dialog ran an event loop: the drive or the link may have changed meanwhile.
+    if (!canSend() || driveId() != id || isBusy()) {
+        setStatus(tr("The drive or the connection changed: nothing was sent."), true);
+        return;
+    }
+    Expected expected;
+    expected.rom = rom;
+    expected.pid = m_table->pendingPid();
+    m_writeFailed = false;
+    m_mismatch->hide();
+    sendWrite(protocol::build::writePid(id, *expected.pid, rom), rom);
+    const qint32 accel = m_table->pendingAccel();
+    if (!m_holdsAccel || *m_holdsAccel != accel) {
+        expected.accel = accel;
+        sendWrite(protocol::build::writeAcceleration(id, accel), false);
+    }
+    m_expected = expected;
+    setStatus(rom ? tr("Writing gains to the ROM of drive %1\u2026").arg(id)
+                  : tr("Writing to the RAM of drive %1\u2026").arg(id));
+    startRead(false);
+}
+
+void TuningView::sendWrite(const protocol::BuildResult &built, bool rom)
+{
+    if (!built.ok()) {
+        setStatus(DriveText::fieldError(built.error), true);
+        m_writeFailed = true;
+        return;
+    }
+    const int id = built.request->id;
+    const protocol::Command command = built.request->command;
+    const auto *gains = std::get_if<protocol::PidGains>(&built.request->payload);
+    const std::optional<protocol::PidGains> pid =
+        gains ? std::optional<protocol::PidGains>(*gains) : std::nullopt;
+    // A flash write is sent exactly once: a lost reply is reported, never retried.
+    tracker()->send(
+        *built.request,
+        [this, id, command, pid](const bus::RequestResult &r) {
+            if (!r.ok()) {
+                m_writeFailed = true;
+                failed(r);
+                return;
+            }
+            DriveMemory &mem = m_memory[id];
+            if (command == protocol::Command::WritePidRom) {
+                mem.lastRomPid = pid;
+                mem.ramWritten = false;
+            } else if (command == protocol::Command::WritePidRam) {
+                mem.ramWritten = true;
+            }
+        },
+        bus::Priority::Operator, rom ? 0 : -1);
+}
+
+void TuningView::checkReadBack()
+{
+    if (!m_expected)
+        return;
+    const Expected e = *m_expected;
+    m_expected.reset();
+    QStringList problems;
+    if (e.pid && m_holdsPid && *m_holdsPid != *e.pid)
+        problems << tr("The drive holds gains %1 after %2 was written.")
+                        .arg(gainsText(*m_holdsPid), gainsText(*e.pid));
+    if (e.accel && m_holdsAccel && *m_holdsAccel != *e.accel)
+        problems << tr("The drive reports acceleration %1 dps/s after %2 dps/s was written: "
+                       "some firmware ignores 0x34 or reads 0 with 0x33 (see ERRATA), so the "
+                       "acceleration in effect is not known.")
+                        .arg(*m_holdsAccel)
+                        .arg(*e.accel);
+    if (!m_holdsPid || (e.accel && !m_holdsAccel))
+        problems << tr("The read-back did not complete: what the drive holds is not known.");
+    if (!problems.isEmpty()) {
+        m_mismatch->setText(problems.join(QLatin1Char('\n')));
+        m_mismatch->show();
+    }
+    if (m_writeFailed)
+        return; // the failure is in the status line
+    if (!problems.isEmpty())
+        setStatus(tr("Written, but the read-back differs (below)."), true);
+    else if (e.rom)
+        setStatus(tr("Gains written to ROM of drive %1 and read back: they survive power-off.")
+                      .arg(driveId()));
+    else
+        setStatus(tr("Written to RAM of drive %1 and read back: lost at power-off unless "
+                     "written to ROM.")
+                      .arg(driveId()));
+}
+
+void TuningView::refreshWarnings()
+{
+    const DriveMemory mem = m_memory.value(driveId());
+    QString text;
+    if (mem.lastRomPid && m_holdsPid && *m_holdsPid != *mem.lastRomPid)
+        text = tr("RAM gains differ from what was last written to ROM (%1): a power cycle "
+                  "brings back the ROM values.")
+                   .arg(gainsText(*mem.lastRomPid));
+    else if (!mem.lastRomPid && mem.ramWritten)
+        text = tr("RAM gains were changed in this session and not written to ROM: they are lost "
+                  "at power-off.");
+    m_romWarningActive = hasDrive() && !text.isEmpty();
+    if (!m_romWarningActive && hasDrive()) {
+        if (mem.lastRomPid)
+            text = tr("RAM holds the gains last written to ROM in this session.");
+        else
+            text = tr("Nothing written to this drive in this session: RAM holds what the drive "
+                      "loaded from ROM at power-on (unless another tool changed it).");
+    }
+    m_romWarning->setText(tr("RAM and ROM: %1").arg(text));
+    m_romWarning->setStyleSheet(
+        m_romWarningActive
+            ? QStringLiteral("background:#fff1c2;border:1px solid #d9a400;padding:4px;")
+            : QStringLiteral("background:#eef3f8;border:1px solid #b0c4d8;padding:4px;"));
+    m_romWarning->setVisible(hasDrive());
+}
+
+void TuningView::refreshEnabled()
+{
+    const bool can = canSend() && !isBusy();
+    m_read->setEnabled(can);
+    m_writeRam->setEnabled(can);
+    m_writeRom->setEnabled(can);
+    m_undo->setEnabled(can && m_memory.value(driveId()).originalPid.has_value());
+    m_save->setEnabled(hasDrive() && m_holdsPid.has_value());
+    m_load->setEnabled(hasDrive());
+    m_table->setEditable(hasDrive());
+}
+
+void TuningView::setStatus(const QString &text, bool error)
+{
+    m_status->setText(text);
+    m_status->setStyleSheet(error ? QStringLiteral("color:#c62828;") : QString());
+}
+
+void TuningView::failed(const bus::RequestResult &result)
+{
+    setStatus(DriveText::failure(result), true);
+}
+
+QString TuningView::saveParameters(const QString &path)
+{
+    if (!hasDrive() || !m_holdsPid) {
+        const QString error = tr("Nothing to save: read the drive's parameters first.");
+        setStatus(error, true);
+        return error;
+    }
+    record::ParameterSet set;
+    set.driveId = driveId();
+    if (const auto &m = motor().model) {
+        set.driverName = m->driverName;
+        set.motorName = m->motorName;
+        set.hardwareVersion = m->hardwareVersion();
+        set.firmwareVersion = m->firmwareVersion();
+    }
+    set.series = series();
+    set.savedAt = QDateTime::currentDateTimeUtc();
+    set.pid = *m_holdsPid;
+    set.accelDps2 = m_holdsAccel;
+    const QString error = set.save(path);
+    if (error.isEmpty())
+        setStatus(tr("Saved the parameters of drive %1 to %2.").arg(driveId()).arg(path));
+    else
+        setStatus(tr("Could not save: %1").arg(error), true);
+    return error;
+}
+
+QString TuningView::loadParameters(const QString &path)
+{
+    if (!hasDrive()) {
+        const QString error = tr("Select a drive first.");
+        setStatus(error, true);
+        return error;
+    }
+    QString error;
+    const std::optional<record::ParameterSet> set = record::ParameterSet::load(path, &error);
+    if (!set) {
+        setStatus(tr("Could not load %1: %2. Nothing was changed.").arg(path, error), true);
+        return error.isEmpty() ? tr("unreadable file") : error;
+    }
+    m_table->setPending(set->pid, set->accelDps2.value_or(m_table->pendingAccel()));
+    QString text = tr("Loaded the parameters of drive %1 (%2, firmware %3, saved %4) into the "
+                      "pending edit: nothing is written until you write to RAM or ROM.")
+                       .arg(set->driveId)
+                       .arg(set->motorName.isEmpty() ? tr("unknown motor") : set->motorName)
+                       .arg(set->firmwareVersion)
+                       .arg(QLocale().toString(set->savedAt.toLocalTime(), QLocale::ShortFormat));
+    const QString here = motor().model ? motor().model->motorName : QString();
+    if (!set->motorName.isEmpty() && !here.isEmpty() && set->motorName != here)
+        text +=
+            QLatin1Char(' ') +
+            tr("Careful: the file comes from a %1, this drive is a %2.").arg(set->motorName, here);
+    setStatus(text);
+    refreshEnabled();
+    return QString();
+}
+
+} // namespace lk::ui

@@ -1,0 +1,211 @@
+#include "AppSettings.h"
+
+#include <bus/BusTiming.h>
+
+#include <QtCore/QSettings>
+#include <QtCore/QStringList>
+
+namespace lk::ui {
+
+namespace {
+
+// Every key of the file, once. Groups mirror the panels that own the values.
+namespace key {
+const char kVersion[] = "settingsVersion";
+const char kConnectionKind[] = "connection/kind";
+const char kConnectionPort[] = "connection/port";
+const char kConnectionBaud[] = "connection/baud";
+const char kAutoReconnect[] = "connection/autoReconnect";
+const char kScanFirstId[] = "scan/firstId";
+const char kScanLastId[] = "scan/lastId";
+const char kScanSweepBauds[] = "scan/sweepBauds";
+const char kPollRateHz[] = "poll/rateHz";
+const char kCurrentView[] = "window/currentView";
+const char kWindowGeometry[] = "window/geometry";
+const char kWindowState[] = "window/state";
+} // namespace key
+
+const char kKindSerial[] = "serial";
+const char kKindSimulator[] = "simulator";
+constexpr int kMinId = 1;
+constexpr int kMaxId = 32;
+constexpr double kMaxPollRateHz = 10000;
+
+bool validId(const QVariant &v)
+{
+    bool ok = false;
+    const int id = v.toInt(&ok);
+    return ok && id >= kMinId && id <= kMaxId;
+}
+
+bool validBaud(const QVariant &v)
+{
+    bool ok = false;
+    const int baud = v.toInt(&ok);
+    return ok && bus::BusTiming::isStandardBaud(baud);
+}
+
+bool validKind(const QVariant &v)
+{
+    const QString s = v.toString();
+    return s == QLatin1String(kKindSerial) || s == QLatin1String(kKindSimulator);
+}
+
+bool validRate(const QVariant &v)
+{
+    bool ok = false;
+    const double hz = v.toDouble(&ok);
+    return ok && hz >= 0 && hz <= kMaxPollRateHz;
+}
+
+bool validBool(const QVariant &v)
+{
+    const QString s = v.toString().toLower();
+    return s == QLatin1String("true") || s == QLatin1String("false") || s == QLatin1String("1") ||
+           s == QLatin1String("0");
+}
+
+void removeIf(QSettings &s, const char *k, bool (*valid)(const QVariant &))
+{
+    if (s.contains(QLatin1String(k)) && !valid(s.value(QLatin1String(k))))
+        s.remove(QLatin1String(k));
+}
+
+// Step 0 -> 1: files without a version key come from development builds that wrote the
+// same key names without checking them; keep what is valid, drop the rest.
+void migrateFrom0(QSettings &s)
+{
+    removeIf(s, key::kConnectionKind, validKind);
+    removeIf(s, key::kConnectionBaud, validBaud);
+    removeIf(s, key::kAutoReconnect, validBool);
+    removeIf(s, key::kScanFirstId, validId);
+    removeIf(s, key::kScanLastId, validId);
+    removeIf(s, key::kScanSweepBauds, validBool);
+    removeIf(s, key::kPollRateHz, validRate);
+}
+
+} // namespace
+
+AppSettings::AppSettings(const QString &iniFile)
+    : m_settings(iniFile.isEmpty() ? std::make_unique<QSettings>(
+                                         QSettings::IniFormat, QSettings::UserScope,
+                                         QStringLiteral("lkstudio"), QStringLiteral("lkstudio"))
+                                   : std::make_unique<QSettings>(iniFile, QSettings::IniFormat))
+{
+    m_loadedVersion = migrate(*m_settings);
+}
+
+AppSettings::~AppSettings()
+{
+    m_settings->sync();
+}
+
+QString AppSettings::fileName() const
+{
+    return m_settings->fileName();
+}
+
+int AppSettings::migrate(QSettings &settings)
+{
+    const int found = settings.value(QLatin1String(key::kVersion), 0).toInt();
+    if (found > kVersion)
+        return found; // a newer release wrote it: its layout is unknown here, leave it be
+    if (found < 1)
+        migrateFrom0(settings);
+    // Future steps go here in order: if (found < 2) migrateFrom1(settings); ...
+    settings.setValue(QLatin1String(key::kVersion), kVersion);
+    return found;
+}
+
+ConnectionChoice AppSettings::connection() const
+{
+    const QSettings &s = *m_settings;
+    ConnectionChoice c;
+    const QString kind = s.value(QLatin1String(key::kConnectionKind)).toString();
+    c.kind = kind == QLatin1String(kKindSerial) ? ConnectionChoice::Kind::Serial
+                                                : ConnectionChoice::Kind::Simulator;
+    c.port = s.value(QLatin1String(key::kConnectionPort)).toString();
+    const QVariant baud = s.value(QLatin1String(key::kConnectionBaud));
+    c.baud = validBaud(baud) ? baud.toInt() : bus::BusTiming::kDefaultBaud;
+    c.autoReconnect = s.value(QLatin1String(key::kAutoReconnect), true).toBool();
+    return c;
+}
+
+void AppSettings::setConnection(const ConnectionChoice &choice)
+{
+    QSettings &s = *m_settings;
+    s.setValue(QLatin1String(key::kConnectionKind),
+               QLatin1String(choice.isSimulator() ? kKindSimulator : kKindSerial));
+    s.setValue(QLatin1String(key::kConnectionPort), choice.port);
+    s.setValue(QLatin1String(key::kConnectionBaud), choice.baud);
+    s.setValue(QLatin1String(key::kAutoReconnect), choice.autoReconnect);
+}
+
+int AppSettings::scanFirstId() const
+{
+    const QVariant v = m_settings->value(QLatin1String(key::kScanFirstId));
+    return validId(v) ? v.toInt() : kMinId;
+}
+
+int AppSettings::scanLastId() const
+{
+    const QVariant v = m_settings->value(QLatin1String(key::kScanLastId));
+    const int last = validId(v) ? v.toInt() : kMaxId;
+    return qMax(last, scanFirstId());
+}
+
+bool AppSettings::scanSweepBauds() const
+{
+    return m_settings->value(QLatin1String(key::kScanSweepBauds), false).toBool();
+}
+
+void AppSettings::setScanRange(int firstId, int lastId, bool sweepBauds)
+{
+    m_settings->setValue(QLatin1String(key::kScanFirstId), qBound(kMinId, firstId, kMaxId));
+    m_settings->setValue(QLatin1String(key::kScanLastId), qBound(kMinId, lastId, kMaxId));
+    m_settings->setValue(QLatin1String(key::kScanSweepBauds), sweepBauds);
+}
+
+double AppSettings::pollRateHz() const
+{
+    const QVariant v = m_settings->value(QLatin1String(key::kPollRateHz));
+    return validRate(v) ? v.toDouble() : 0.0;
+}
+
+void AppSettings::setPollRateHz(double hz)
+{
+    m_settings->setValue(QLatin1String(key::kPollRateHz), qBound(0.0, hz, kMaxPollRateHz));
+}
+
+QString AppSettings::currentView() const
+{
+    return m_settings->value(QLatin1String(key::kCurrentView)).toString();
+}
+
+void AppSettings::setCurrentView(const QString &name)
+{
+    m_settings->setValue(QLatin1String(key::kCurrentView), name);
+}
+
+QByteArray AppSettings::windowGeometry() const
+{
+    return m_settings->value(QLatin1String(key::kWindowGeometry)).toByteArray();
+}
+
+QByteArray AppSettings::windowState() const
+{
+    return m_settings->value(QLatin1String(key::kWindowState)).toByteArray();
+}
+
+void AppSettings::setWindow(const QByteArray &geometry, const QByteArray &state)
+{
+    m_settings->setValue(QLatin1String(key::kWindowGeometry), geometry);
+    m_settings->setValue(QLatin1String(key::kWindowState), state);
+}
+
+void AppSettings::sync()
+{
+    m_settings->sync();
+}
+
+} // namespace lk::ui

@@ -1,0 +1,64 @@
+#pragma once
+
+#include <panels/ConnectionChoice.h>
+
+#include <QtCore/QByteArray>
+#include <QtCore/QString>
+
+#include <memory>
+
+class QSettings;
+
+namespace lk::ui {
+
+/// The one place lkstudio's settings live: every key is defined once (AppSettings.cpp), read
+/// through typed getters that validate what they read, and versioned with a migration step
+/// per release so that an upgrade never misreads an older file.
+class AppSettings {
+public:
+    /// Layout version written by this build. Bump it and add a step to migrate() whenever a
+    /// key changes meaning or name.
+    static constexpr int kVersion = 1;
+
+    /// Settings in `iniFile` (tests, --settings), or the user's default file when empty.
+    explicit AppSettings(const QString &iniFile = {});
+    ~AppSettings();
+    AppSettings(const AppSettings &) = delete;
+    AppSettings &operator=(const AppSettings &) = delete;
+
+    QString fileName() const;
+    /// The version of the file as found on disk before migration (0: unversioned or new).
+    int loadedVersion() const { return m_loadedVersion; }
+    /// The file was written by a newer lkstudio: it is read, never migrated downwards.
+    bool isFromNewerRelease() const { return m_loadedVersion > kVersion; }
+
+    ConnectionChoice connection() const;
+    void setConnection(const ConnectionChoice &choice);
+
+    int scanFirstId() const;
+    int scanLastId() const;
+    bool scanSweepBauds() const;
+    void setScanRange(int firstId, int lastId, bool sweepBauds);
+
+    double pollRateHz() const; ///< 0 = as fast as the bus allows
+    void setPollRateHz(double hz);
+
+    QString currentView() const; ///< object name of the last central view shown
+    void setCurrentView(const QString &name);
+
+    QByteArray windowGeometry() const;
+    QByteArray windowState() const;
+    void setWindow(const QByteArray &geometry, const QByteArray &state);
+
+    void sync();
+
+    /// Bring `settings` to kVersion in place; returns the version found before. Unknown or
+    /// out-of-range values are removed so that the typed getters fall back to defaults.
+    static int migrate(QSettings &settings);
+
+private:
+    std::unique_ptr<QSettings> m_settings;
+    int m_loadedVersion = 0;
+};
+
+} // namespace lk::ui

@@ -1,0 +1,366 @@
+#include "BusController.h"
+
+#include "SimulatedBus.h"
+
+#include <panels/BusModel.h>
+#include <panels/Format.h>
+
+#include <bus/BusTiming.h>
+#include <protocol/RequestBuilder.h>
+#include <transport/SerialTransport.h>
+
+#include <QtCore/QFile>
+#include <QtCore/QTimer>
+
+namespace lk::ui {
+
+namespace {
+constexpr int kReconnectMs = 1000; // adapters enumerate within a second of being plugged in
+
+QString idList(const QVector<int> &ids)
+{
+    QStringList parts;
+    for (int id : ids)
+        parts << QString::number(id);
+    return parts.join(QStringLiteral(", "));
+}
+} // namespace
+
+BusController::BusController(BusModel *model, QObject *parent)
+    : QObject(parent), m_model(model), m_session(new bus::BusSession(this)),
+      m_reconnectTimer(new QTimer(this))
+{
+    m_simSpec = *sim::SimBusSpec::parse(SimulatedBus::defaultSpecText());
+    m_reconnectTimer->setInterval(kReconnectMs);
+    connect(m_reconnectTimer, &QTimer::timeout, this, &BusController::tryReconnect);
+    wireSession();
+}
+
+BusController::~BusController()
+{
+    // The model and the panels may be half destroyed: nothing more is delivered to them.
+    m_session->disconnect(this);
+    m_session->disconnect(m_model);
+    m_session->close();
+}
+
+void BusController::wireSession()
+{
+    using S = bus::BusSession;
+    connect(m_session, &S::connectionChanged, this, &BusController::onConnectionChanged);
+    connect(m_session, &S::errorOccurred, this, &BusController::onError);
+    connect(m_session, &S::motorFound, m_model, &BusModel::addFound);
+    connect(m_session, &S::scanFinished, this, &BusController::onScanFinished);
+    connect(m_session, &S::requestCompleted, this, &BusController::onRequestCompleted);
+    connect(m_session, &S::emergencyStopFinished, this, &BusController::onEmergencyStopFinished);
+    connect(m_session, &S::telemetryReceived, m_model, &BusModel::applyTelemetry);
+    connect(m_session, &S::telemetryReceived, this, &BusController::telemetryReceived);
+    connect(m_session, &S::trafficCaptured, this, &BusController::trafficCaptured);
+    connect(m_session, &S::statisticsUpdated, m_model, &BusModel::setStatistics);
+    connect(m_session, &S::pollingChanged, this,
+            [this](bool active) { m_model->setPolling(m_model->pollPlan(), active); });
+}
+
+void BusController::setSimulatorSpec(const sim::SimBusSpec &spec)
+{
+    m_simSpec = spec;
+}
+
+bus::PollPlan BusController::pollPlanFor(const QVector<int> &ids, double rateHz)
+{
+    bus::PollPlan plan = bus::PollPlan::standard(ids, rateHz);
+    plan.commands << protocol::Command::ReadSingleTurn; // the dashboard shows both angles
+    return plan;
+}
+
+void BusController::busLimit(const bus::PollPlan &plan, int baud, double *perSecond,
+                             double *cycleHz) const
+{
+    double cycleS = 0;
+    int transactions = 0;
+    for (int id : plan.ids) {
+        const DriveRecord *d = m_model->drive(id);
+        for (auto c : plan.commands) {
+            if (c == protocol::Command::ReadState3 && d && !d->hasPhaseCurrents())
+                continue; // the poller skips it for MS
+            cycleS += bus::BusTiming::transactionTimeS(c, baud);
+            ++transactions;
+        }
+    }
+    *perSecond = cycleS > 0 ? transactions / cycleS : 0;
+    *cycleHz = cycleS > 0 ? 1.0 / cycleS : 0;
+}
+
+void BusController::connectTo(const ConnectionChoice &choice)
+{
+    m_reconnectTimer->stop();
+    m_reconnecting = false;
+    m_choice = choice;
+    bus::TransportFactory factory;
+    if (choice.isSimulator()) {
+        m_sim = std::make_shared<SimulatedBus>(m_simSpec);
+        m_sim->setFaultSpec(m_simFaults);
+        factory = SimulatedBus::factory(m_sim);
+    } else {
+        m_sim.reset();
+        transport::SerialSettings s;
+        s.portName = choice.port;
+        s.baud = choice.baud;
+        s.autoReopen = false; // reconnecting is this class's job, so that it can be switched live
+        factory = transport::SerialTransport::factory(s);
+    }
+    m_model->clearDrives();
+    m_model->setPolling(bus::PollPlan{}, false);
+    m_awaitingFirstOpen = true;
+    m_wasOpen = false;
+    m_session->open(std::move(factory), choice.baud);
+    m_session->setTrafficCapture(m_traffic);
+}
+
+void BusController::disconnectBus()
+{
+    m_reconnectTimer->stop();
+    m_reconnecting = false;
+    m_awaitingFirstOpen = false;
+    m_session->close();
+}
+
+void BusController::setAutoReconnect(bool on)
+{
+    m_choice.autoReconnect = on;
+    if (!on) {
+        m_reconnectTimer->stop();
+        m_reconnecting = false;
+    } else if (m_model->connection().state == transport::Transport::State::Disconnected) {
+        m_reconnecting = true;
+        m_reconnectTimer->start();
+    }
+}
+
+void BusController::onPortsChanged(const QList<PortEntry> &)
+{
+    // An adapter came back: try at once instead of waiting for the next timer tick.
+    if (m_reconnecting && portPresent())
+        tryReconnect();
+}
+
+bool BusController::portPresent() const
+{
+    if (m_choice.isSimulator())
+        return true;
+    return QFile::exists(transport::SerialTransport::systemPath(m_choice.port));
+}
+
+void BusController::tryReconnect()
+{
+    if (!m_reconnecting || !m_session->isRunning())
+        return;
+    if (portPresent())
+        m_session->reconnect();
+}
+
+void BusController::onConnectionChanged(const bus::ConnectionStatus &status)
+{
+    using St = transport::Transport::State;
+    m_model->setConnection(status, m_choice.isSimulator() && m_session->isRunning());
+    if (status.state == St::Open) {
+        const bool first = m_awaitingFirstOpen;
+        m_awaitingFirstOpen = false;
+        if (m_reconnecting)
+            emit message(MessageBanner::Level::Info, tr("Reconnected: %1").arg(status.description));
+        m_reconnecting = false;
+        m_reconnectTimer->stop();
+        m_wasOpen = true;
+        publishBusLimit();
+        if (first && m_scanOnConnect)
+            emit readyToScan();
+        return;
+    }
+    if (status.state == St::Disconnected && m_wasOpen && !m_reconnecting) {
+        const QString what =
+            m_choice.autoReconnect
+                ? tr("Lost the link to %1. %2 Sending is disabled and the data stays on screen; "
+                     "lkstudio reconnects when the adapter is back.")
+                : tr("Lost the link to %1. %2 Sending is disabled and the data stays on screen; "
+                     "press Disconnect, then Connect, once the adapter is back.");
+        emit message(MessageBanner::Level::Warning,
+                     what.arg(status.description, Format::sentence(status.reason)));
+        if (m_choice.autoReconnect) {
+            m_reconnecting = true;
+            m_reconnectTimer->start();
+        }
+    }
+}
+
+void BusController::onError(const transport::TransportError &error)
+{
+    if (m_reconnecting)
+        return; // the banner already says we are waiting for the adapter: no flood per retry
+    if (error.kind == transport::TransportError::Kind::Unplugged)
+        return; // reported as a state change (onConnectionChanged), with what happens next
+    emit message(MessageBanner::Level::Error,
+                 tr("Cannot use %1: %2")
+                     .arg(m_choice.isSimulator() ? tr("the simulator") : m_choice.port,
+                          Format::transportError(error)));
+}
+
+void BusController::scan(const bus::ScanOptions &options)
+{
+    if (!m_model->canSend())
+        return;
+    m_session->stopPolling();
+    m_session->forgetMotors();
+    m_model->clearDrives();
+    m_model->setPolling(bus::PollPlan{}, false);
+    m_session->scan(options);
+    emit scanStarted();
+}
+
+void BusController::cancelScan()
+{
+    m_session->cancelScan();
+}
+
+void BusController::onScanFinished(const bus::ScanSummary &summary)
+{
+    if (!summary.error.isEmpty())
+        emit message(MessageBanner::Level::Warning, tr("Scan stopped: %1").arg(summary.error));
+    else if (summary.motors.isEmpty() && !summary.cancelled)
+        emit message(MessageBanner::Level::Warning,
+                     tr("No drive answered. Check the baud (or tick \"Try every baud\"), the "
+                        "A/B wiring, the drives' supply and the 120-ohm termination."));
+    keepDrivesAt(summary);
+    // The scan's silent IDs are timeouts by design: start the figures afresh for polling.
+    m_session->resetStatistics();
+    for (const auto &m : summary.motors) {
+        if (m.series)
+            m_session->setSeries(m.id, *m.series);
+        else if (const DriveRecord *d = m_model->drive(m.id); d && d->series)
+            m_session->setSeries(m.id, *d->series);
+    }
+    startPolling();
+}
+
+void BusController::keepDrivesAt(const bus::ScanSummary &summary)
+{
+    // After a baud sweep the port stays at one baud: drives found at another are unreachable.
+    QVector<bus::FoundMotor> here;
+    QStringList elsewhere;
+    for (const auto &m : summary.motors) {
+        if (summary.finalBaud <= 0 || m.baud == summary.finalBaud)
+            here << m;
+        else
+            elsewhere << tr("ID %1 at %2 baud").arg(m.id).arg(m.baud);
+    }
+    if (elsewhere.isEmpty())
+        return;
+    m_model->clearDrives();
+    for (const auto &m : here)
+        m_model->addFound(m);
+    if (!m_choice.isSimulator()) // the simulated bus answers at every baud
+        emit message(MessageBanner::Level::Warning,
+                     tr("Drives answered at different bauds (%1). The port stays at %2 baud; "
+                        "give every drive on a bus the same baud.")
+                         .arg(elsewhere.join(QStringLiteral(", ")))
+                         .arg(summary.finalBaud));
+}
+
+void BusController::startPolling()
+{
+    const QVector<int> ids = m_model->ids();
+    if (ids.isEmpty()) {
+        m_session->stopPolling();
+        m_model->setPolling(bus::PollPlan{}, false);
+        return;
+    }
+    const bus::PollPlan plan = pollPlanFor(ids, m_pollRateHz);
+    m_model->setPolling(plan, m_model->isPolling());
+    m_session->startPolling(plan);
+    publishBusLimit();
+}
+
+void BusController::publishBusLimit()
+{
+    double perSecond = 0;
+    double cycleHz = 0;
+    busLimit(pollPlanFor(m_model->ids(), 0), m_model->connection().baud, &perSecond, &cycleHz);
+    emit busLimitChanged(perSecond, cycleHz);
+}
+
+void BusController::setPollRate(double hz)
+{
+    m_pollRateHz = qMax(0.0, hz);
+    if (!m_model->ids().isEmpty() && m_model->pollPlan().ids == m_model->ids())
+        startPolling();
+}
+
+void BusController::setTrafficCapture(bool on)
+{
+    m_traffic = on;
+    m_session->setTrafficCapture(on);
+}
+
+void BusController::emergencyStop()
+{
+    m_session->emergencyStop(m_model->ids());
+}
+
+void BusController::onEmergencyStopFinished(quint64, const QVector<int> &ack,
+                                            const QVector<int> &silent)
+{
+    emit emergencyStopDone(ack, silent);
+    if (m_model->ids().isEmpty()) {
+        // No scan yet: the session tried every ID, and silence from absent IDs means nothing.
+        emit message(ack.isEmpty() ? MessageBanner::Level::Warning : MessageBanner::Level::Info,
+                     ack.isEmpty() ? tr("Emergency stop: Motor Off sent to IDs 1-32; no drive "
+                                        "answered.")
+                                   : tr("Emergency stop: Motor Off sent to IDs 1-32; "
+                                        "acknowledged by %1.")
+                                         .arg(idList(ack)));
+        return;
+    }
+    if (silent.isEmpty()) {
+        emit message(MessageBanner::Level::Info,
+                     tr("Emergency stop: Motor Off acknowledged by drive(s) %1.").arg(idList(ack)));
+        return;
+    }
+    const QString text = ack.isEmpty()
+                             ? tr("Emergency stop: Motor Off sent, but no drive acknowledged it "
+                                  "(IDs %1). Check the drives and cut their power if needed.")
+                                   .arg(idList(silent))
+                             : tr("Emergency stop: acknowledged by %1; NO answer from %2. Check "
+                                  "those drives and cut their power if needed.")
+                                   .arg(idList(ack), idList(silent));
+    emit message(MessageBanner::Level::Error, text);
+}
+
+void BusController::clearErrors(int id)
+{
+    const auto built = protocol::build::plain(protocol::Command::ClearErrors, id);
+    if (!built.ok() || !m_model->canSend())
+        return;
+    m_clearTickets.insert(m_session->send(*built.request));
+}
+
+void BusController::onRequestCompleted(const bus::RequestResult &result)
+{
+    if (!m_clearTickets.remove(result.ticket))
+        return;
+    const int id = result.request.id;
+    if (!result.ok()) {
+        emit message(MessageBanner::Level::Warning,
+                     tr("Drive %1 did not confirm Clear Errors (%2).").arg(id).arg(result.reason));
+        return;
+    }
+    const auto *state = std::get_if<protocol::State1>(&result.reply->payload);
+    if (state && state->errorState != 0)
+        emit message(MessageBanner::Level::Warning,
+                     tr("Drive %1 still reports: %2. The cause is still there (supply voltage, "
+                        "temperature); fix it, then clear again.")
+                         .arg(id)
+                         .arg(Format::errorFlagsText(state->errorState)));
+    else
+        emit message(MessageBanner::Level::Info, tr("Drive %1: errors cleared.").arg(id));
+}
+
+} // namespace lk::ui

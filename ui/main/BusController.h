@@ -1,0 +1,102 @@
+#pragma once
+
+#include <panels/ConnectionBar.h>
+#include <panels/ConnectionChoice.h>
+#include <panels/MessageBanner.h>
+
+#include <bus/BusSession.h>
+#include <sim/SimBusSpec.h>
+
+#include <QtCore/QObject>
+#include <QtCore/QSet>
+
+#include <memory>
+
+class QTimer;
+
+namespace lk::ui {
+
+class BusModel;
+class SimulatedBus;
+
+/// Runs one bus for the GUI: opens the chosen link (serial port or the built-in simulator),
+/// scans, tells the session each drive's series and polls what it found, reconnects after an
+/// unplug when allowed, and sends the operator's one-off commands (clear errors, emergency
+/// stop). It writes BusModel, which the panels read; it never draws anything.
+class BusController : public QObject {
+    Q_OBJECT
+public:
+    explicit BusController(BusModel *model, QObject *parent = nullptr);
+    ~BusController() override;
+
+    bus::BusSession *session() const { return m_session; }
+    BusModel *model() const { return m_model; }
+
+    /// The drives of the built-in simulated bus (before connecting to it).
+    void setSimulatorSpec(const sim::SimBusSpec &spec);
+    /// Faults the built-in simulated bus injects (FaultInjector syntax; empty: none).
+    void setSimulatorFaults(const QString &spec) { m_simFaults = spec; }
+    /// The simulated bus of the current connection; null when on a serial port.
+    std::shared_ptr<SimulatedBus> simulator() const { return m_sim; }
+    /// Scan by itself once each new connection is open (default on).
+    void setScanOnConnect(bool on) { m_scanOnConnect = on; }
+    ConnectionChoice currentChoice() const { return m_choice; }
+    double pollRateHz() const { return m_pollRateHz; }
+    /// Commands of the poll plan the dashboard needs (standard mix plus single-turn angle).
+    static bus::PollPlan pollPlanFor(const QVector<int> &ids, double rateHz);
+    /// Bus limit for a plan: transactions/s, and full cycles/s over every ID.
+    void busLimit(const bus::PollPlan &plan, int baud, double *perSecond, double *cycleHz) const;
+
+public slots:
+    void connectTo(const lk::ui::ConnectionChoice &choice);
+    void disconnectBus();
+    void setAutoReconnect(bool on);
+    void onPortsChanged(const QList<lk::ui::PortEntry> &ports);
+    void scan(const lk::bus::ScanOptions &options);
+    void cancelScan();
+    void emergencyStop();
+    void clearErrors(int id);
+    void setPollRate(double hz);
+    void setTrafficCapture(bool on);
+
+signals:
+    void message(lk::ui::MessageBanner::Level level, const QString &text);
+    /// A new connection came up: a good moment to scan (when scanning on connect).
+    void readyToScan();
+    void scanStarted();
+    void telemetryReceived(const lk::bus::TelemetryBatch &batch);
+    void trafficCaptured(const lk::bus::TrafficBatch &batch);
+    void busLimitChanged(double transactionsPerSecond, double cycleLimitHz);
+    void emergencyStopDone(const QVector<int> &acknowledged, const QVector<int> &silent);
+
+private:
+    void wireSession();
+    void onConnectionChanged(const bus::ConnectionStatus &status);
+    void onError(const transport::TransportError &error);
+    void onScanFinished(const bus::ScanSummary &summary);
+    void onRequestCompleted(const bus::RequestResult &result);
+    void onEmergencyStopFinished(quint64 ticket, const QVector<int> &ack,
+                                 const QVector<int> &silent);
+    void keepDrivesAt(const bus::ScanSummary &summary);
+    void startPolling();
+    void tryReconnect();
+    bool portPresent() const;
+    void publishBusLimit();
+
+    BusModel *m_model;
+    bus::BusSession *m_session;
+    QTimer *m_reconnectTimer;
+    ConnectionChoice m_choice;
+    sim::SimBusSpec m_simSpec;
+    QString m_simFaults;
+    std::shared_ptr<SimulatedBus> m_sim;
+    double m_pollRateHz = 0;
+    bool m_scanOnConnect = true;
+    bool m_awaitingFirstOpen = false;
+    bool m_wasOpen = false;
+    bool m_reconnecting = false;
+    bool m_traffic = false;
+    QSet<quint64> m_clearTickets;
+};
+
+} // namespace lk::ui

@@ -1,0 +1,93 @@
+#include "DriveViews.h"
+
+#include "BusController.h"
+
+#include <bus/BusSession.h>
+#include <drive/ConfirmDialog.h>
+#include <drive/ControlView.h>
+#include <drive/DriveInfoView.h>
+#include <drive/DriveSettingsStore.h>
+#include <drive/EncoderView.h>
+#include <drive/TuningView.h>
+#include <panels/BusModel.h>
+
+#include <QtCore/QCoreApplication>
+
+namespace lk::ui {
+
+DriveViews::DriveViews(BusModel *model, BusController *controller, TelemetryStore *store,
+                       const QString &settingsFile, QWidget *parentWidget)
+    : QObject(parentWidget), m_model(model), m_controller(controller),
+      m_settings(std::make_unique<IniDriveStore>(settingsFile)),
+      m_tuning(new TuningView(parentWidget)), m_control(new ControlView(parentWidget)),
+      m_encoder(new EncoderView(parentWidget)), m_info(new DriveInfoView(parentWidget))
+{
+    // The main window's application-wide shortcut and key filter already turn Esc into an
+    // emergency stop inside dialogs; forwarding it again would stop the bus twice.
+    ConfirmDialog::setForwardEscape(false);
+    m_tuning->setTelemetryStore(store);
+    m_control->setTelemetryStore(store);
+    m_control->setSettingsStore(m_settings.get());
+    m_encoder->setSettingsStore(m_settings.get());
+    m_info->setToolVersion(QCoreApplication::applicationVersion());
+    bus::BusSession *session = m_controller->session();
+    m_tuning->setSession(session);
+    m_control->setSession(session);
+    m_encoder->setSession(session);
+    m_info->setSession(session);
+
+    connect(m_model, &BusModel::currentDriveChanged, this, &DriveViews::syncDrive);
+    connect(m_model, &BusModel::drivesChanged, this, &DriveViews::syncDrive);
+    connect(m_model, &BusModel::connectionChanged, this, &DriveViews::syncConnection);
+    syncConnection();
+    syncDrive();
+}
+
+DriveViews::~DriveViews() = default;
+
+void DriveViews::haltLocalMotion(const QString &reason)
+{
+    m_control->haltLocalMotion(reason);
+}
+
+void DriveViews::syncDrive()
+{
+    const int id = m_model->currentId();
+    const bus::KnownMotors motors = m_controller->session()->knownMotors();
+    if (id == 0 || !motors.contains(id)) {
+        if (m_shownId != 0) {
+            m_tuning->clearDrive();
+            m_control->clearDrive();
+            m_encoder->clearDrive();
+            m_info->clearDrive();
+        }
+        m_shownId = 0;
+        m_shownKey.clear();
+        return;
+    }
+    // A rescan that finds the same drive must not throw away pending edits or undo history;
+    // another motor at the same ID is a new drive.
+    const bus::KnownMotor &motor = motors.value(id);
+    const QString key = DriveSettingsStore::driveKey(id, motor);
+    if (key == m_shownKey)
+        return;
+    m_shownId = id;
+    m_shownKey = key;
+    m_tuning->setDrive(id, motor);
+    m_control->setDrive(id, motor);
+    m_encoder->setDrive(id, motor);
+    m_info->setDrive(id, motor);
+}
+
+void DriveViews::syncConnection()
+{
+    const bool open = m_model->canSend();
+    m_tuning->setConnected(open);
+    m_control->setConnected(open);
+    m_encoder->setConnected(open);
+    m_info->setConnected(open);
+    if (!open)
+        m_control->haltLocalMotion(tr("The bus is not connected."));
+}
+
+} // namespace lk::ui

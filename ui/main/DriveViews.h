@@ -1,0 +1,55 @@
+#pragma once
+
+#include <QtCore/QObject>
+#include <QtCore/QString>
+
+#include <memory>
+
+namespace lk::ui {
+
+class BusController;
+class BusModel;
+class ControlView;
+class DriveInfoView;
+class DriveSettingsStore;
+class EncoderView;
+class TelemetryStore;
+class TuningView;
+
+/// The views that change a drive (Tuning, Control, Encoder, Info), kept pointed at the
+/// current session, the selected drive and the connection state, so that MainWindow only
+/// places them.
+class DriveViews : public QObject {
+    Q_OBJECT
+public:
+    /// `settingsFile`: the INI file where per-drive soft limits, encoder resolution and gear
+    /// ratio persist (the application's settings file).
+    DriveViews(BusModel *model, BusController *controller, TelemetryStore *store,
+               const QString &settingsFile, QWidget *parentWidget);
+    ~DriveViews() override;
+
+    TuningView *tuning() const { return m_tuning; }
+    ControlView *control() const { return m_control; }
+    EncoderView *encoder() const { return m_encoder; }
+    DriveInfoView *info() const { return m_info; }
+
+    /// Stop what the views send by themselves (jog, setpoint generator) at once, before the
+    /// emergency stop reaches the bus: a generator tick must not restart a motor after it.
+    void haltLocalMotion(const QString &reason);
+
+private:
+    void syncDrive();
+    void syncConnection();
+
+    BusModel *m_model;
+    BusController *m_controller;
+    std::unique_ptr<DriveSettingsStore> m_settings;
+    TuningView *m_tuning;
+    ControlView *m_control;
+    EncoderView *m_encoder;
+    DriveInfoView *m_info;
+    int m_shownId = 0;
+    QString m_shownKey; ///< DriveSettingsStore::driveKey of the drive the views show
+};
+
+} // namespace lk::ui

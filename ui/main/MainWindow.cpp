@@ -1,0 +1,321 @@
+#include "MainWindow.h"
+
+#include "AppSettings.h"
+#include "BusController.h"
+#include "DriveViews.h"
+#include "EmergencyKeyFilter.h"
+
+#include <drive/ControlView.h>
+#include <drive/DriveInfoView.h>
+#include <drive/EncoderView.h>
+#include <drive/TuningView.h>
+#include <panels/BusModel.h>
+#include <panels/BusPanel.h>
+#include <panels/ConnectionBar.h>
+#include <panels/DashboardPanel.h>
+#include <panels/EmergencyStopButton.h>
+#include <panels/MessageBanner.h>
+#include <panels/OverviewPanel.h>
+#include <panels/ScanControls.h>
+#include <panels/StatusSummary.h>
+#include <panels/TrafficPanel.h>
+#include <plot/PlotPanel.h>
+#include <plot/TelemetryStore.h>
+
+#include <QtCore/QCoreApplication>
+#include <QtCore/QTimer>
+#include <QtGui/QCloseEvent>
+#include <QtGui/QIcon>
+#include <QtGui/QShortcut>
+#include <QtWidgets/QApplication>
+#include <QtWidgets/QDockWidget>
+#include <QtWidgets/QMenuBar>
+#include <QtWidgets/QMessageBox>
+#include <QtWidgets/QStatusBar>
+#include <QtWidgets/QTabWidget>
+#include <QtWidgets/QToolBar>
+#include <QtWidgets/QVBoxLayout>
+
+namespace lk::ui {
+
+namespace {
+const QSize kDefaultSize(1400, 900);
+} // namespace
+
+MainWindow::MainWindow(AppSettings *settings, QWidget *parent)
+    : QMainWindow(parent), m_settings(settings)
+{
+    setObjectName(QStringLiteral("mainWindow"));
+    setWindowTitle(tr("LK Servo Studio"));
+    setWindowIcon(QIcon(QStringLiteral(":/icons/lkstudio.svg")));
+    m_model = new BusModel(this);
+    m_controller = new BusController(m_model, this);
+    m_store = new TelemetryStore(this);
+    buildPanels();
+    buildToolbar();
+    buildMenus();
+    wirePanels();
+    wirePlots();
+    restoreSettings();
+}
+
+MainWindow::~MainWindow()
+{
+    // Join the bus thread while every panel still exists: its last signals reach them safely.
+    m_controller->disconnectBus();
+}
+
+void MainWindow::buildPanels()
+{
+    auto *central = new QWidget(this);
+    auto *layout = new QVBoxLayout(central);
+    layout->setContentsMargins(4, 4, 4, 4);
+    m_banner = new MessageBanner(central);
+    m_views = new QTabWidget(central);
+    m_views->setObjectName(QStringLiteral("views"));
+    m_views->setDocumentMode(true);
+    layout->addWidget(m_banner);
+    layout->addWidget(m_views, 1);
+    setCentralWidget(central);
+
+    m_dashboard = new DashboardPanel(m_model, m_views);
+    m_overview = new OverviewPanel(m_model, m_views);
+    m_plots = new PlotPanel(m_store, m_views);
+    m_traffic = new TrafficPanel(m_model, m_views);
+    addView(m_dashboard, QStringLiteral("dashboard"), tr("Dashboard"),
+            QIcon(QStringLiteral(":/icons/dashboard.svg")));
+    addView(m_overview, QStringLiteral("overview"), tr("Overview"),
+            QIcon(QStringLiteral(":/icons/overview.svg")));
+    addView(m_plots, QStringLiteral("plots"), tr("Plots"),
+            QIcon(QStringLiteral(":/icons/plot.svg")));
+    addView(m_traffic, QStringLiteral("traffic"), tr("Traffic"),
+            QIcon(QStringLiteral(":/icons/traffic.svg")));
+    m_driveViews = new DriveViews(m_model, m_controller, m_store, m_settings->fileName(), m_views);
+    addView(m_driveViews->tuning(), QStringLiteral("tuning"), tr("Tuning"),
+            QIcon(QStringLiteral(":/icons/motor.svg")));
+    addView(m_driveViews->control(), QStringLiteral("control"), tr("Control"),
+            QIcon(QStringLiteral(":/icons/connect.svg")));
+    addView(m_driveViews->encoder(), QStringLiteral("encoder"), tr("Encoder"),
+            QIcon(QStringLiteral(":/icons/port.svg")));
+    addView(m_driveViews->info(), QStringLiteral("info"), tr("Drive info"),
+            QIcon(QStringLiteral(":/icons/info.svg")));
+
+    m_busPanel = new BusPanel(m_model, this);
+    m_busDock = new QDockWidget(tr("Bus"), this);
+    m_busDock->setObjectName(QStringLiteral("busDock"));
+    m_busDock->setWidget(m_busPanel);
+    m_busDock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+    addDockWidget(Qt::LeftDockWidgetArea, m_busDock);
+
+    m_status = new StatusSummary(m_model, this);
+    statusBar()->addPermanentWidget(m_status, 1);
+}
+
+void MainWindow::buildToolbar()
+{
+    auto *bar = new QToolBar(tr("Connection"), this);
+    bar->setObjectName(QStringLiteral("connectionToolbar"));
+    bar->setMovable(false);
+    bar->setFloatable(false);
+    bar->toggleViewAction()->setEnabled(false); // the emergency stop must never be hidden
+    m_connectionBar = new ConnectionBar(bar);
+    m_stop = new EmergencyStopButton(bar);
+    bar->addWidget(m_connectionBar);
+    bar->addWidget(m_stop);
+    addToolBar(Qt::TopToolBarArea, bar);
+
+    // Esc anywhere: the window shortcut covers every child; the filter covers modal dialogs
+    // and pop-ups, where a window's shortcut is blocked.
+    m_escape = new QShortcut(QKeySequence(Qt::Key_Escape), this);
+    m_escape->setContext(Qt::ApplicationShortcut);
+    connect(m_escape, &QShortcut::activated, this, &MainWindow::emergencyStop);
+    auto *filter = new EmergencyKeyFilter(this);
+    qApp->installEventFilter(filter);
+    connect(filter, &EmergencyKeyFilter::escapePressed, this, &MainWindow::emergencyStop);
+    connect(m_stop, &QPushButton::clicked, this, &MainWindow::emergencyStop);
+}
+
+void MainWindow::buildMenus()
+{
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    file->addAction(QIcon(QStringLiteral(":/icons/export.svg")), tr("Export &traffic log\u2026"),
+                    m_traffic, &TrafficPanel::exportWithDialog);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu *busMenu = menuBar()->addMenu(tr("&Bus"));
+    busMenu->addAction(QIcon(QStringLiteral(":/icons/scan.svg")), tr("&Scan"),
+                       QKeySequence(Qt::Key_F5), m_busPanel->scanControls(),
+                       &ScanControls::startScan);
+    busMenu->addAction(tr("&Disconnect"), m_controller, &BusController::disconnectBus);
+    busMenu->addSeparator();
+    busMenu->addAction(QIcon(QStringLiteral(":/icons/stop.svg")), tr("&Emergency stop (Esc)"), this,
+                       &MainWindow::emergencyStop);
+
+    QMenu *view = menuBar()->addMenu(tr("&View"));
+    view->addAction(m_busDock->toggleViewAction());
+    for (int i = 0; i < m_views->count(); ++i) {
+        QWidget *w = m_views->widget(i);
+        auto *a = view->addAction(m_views->tabIcon(i), m_views->tabText(i),
+                                  [this, w] { m_views->setCurrentWidget(w); });
+        a->setShortcut(QKeySequence(Qt::CTRL | Qt::Key(Qt::Key_1 + i)));
+    }
+
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About LK Servo Studio"), this, [this] {
+        QMessageBox::about(
+            this, tr("About LK Servo Studio"),
+            tr("<b>LK Servo Studio %1</b><p>Tuning and diagnostics for LK-TECH MS/MF/MG/MH servo "
+               "drives on RS485 (protocol V2.3).</p><p>Esc sends Motor Off to every drive from "
+               "anywhere in the program.</p>")
+                .arg(QCoreApplication::applicationVersion()));
+    });
+}
+
+void MainWindow::wirePanels()
+{
+    auto *bar = m_connectionBar;
+    auto *scan = m_busPanel->scanControls();
+    connect(bar, &ConnectionBar::connectRequested, this,
+            [this](const ConnectionChoice &c) { connectTo(c); });
+    connect(bar, &ConnectionBar::disconnectRequested, m_controller, &BusController::disconnectBus);
+    connect(bar, &ConnectionBar::portsChanged, m_controller, &BusController::onPortsChanged);
+    connect(bar, &ConnectionBar::choiceChanged, this, [this](const ConnectionChoice &c) {
+        m_controller->setAutoReconnect(c.autoReconnect);
+        m_settings->setConnection(c);
+    });
+    connect(m_model, &BusModel::connectionChanged, this,
+            [this] { m_connectionBar->setConnectionStatus(m_model->connection()); });
+
+    connect(scan, &ScanControls::scanRequested, m_controller, &BusController::scan);
+    connect(scan, &ScanControls::cancelRequested, m_controller, &BusController::cancelScan);
+    connect(scan, &ScanControls::rangeChanged, this, [this](int first, int last, bool sweep) {
+        m_settings->setScanRange(first, last, sweep);
+    });
+    connect(m_controller, &BusController::scanStarted, scan, &ScanControls::onScanStarted);
+    connect(m_controller->session(), &bus::BusSession::scanProgress, scan,
+            &ScanControls::onScanProgress);
+    connect(m_controller->session(), &bus::BusSession::scanFinished, scan,
+            &ScanControls::onScanFinished);
+    connect(m_controller, &BusController::readyToScan, scan, &ScanControls::startScan);
+
+    connect(m_dashboard, &DashboardPanel::clearErrorsRequested, m_controller,
+            &BusController::clearErrors);
+    connect(m_traffic, &TrafficPanel::captureWanted, m_controller,
+            &BusController::setTrafficCapture);
+    connect(m_controller, &BusController::trafficCaptured, m_traffic, &TrafficPanel::appendTraffic);
+    connect(m_controller, &BusController::message, m_banner, &MessageBanner::showMessage);
+    connect(m_views, &QTabWidget::currentChanged, this, [this] {
+        if (QWidget *w = m_views->currentWidget())
+            m_settings->setCurrentView(w->objectName());
+    });
+}
+
+void MainWindow::wirePlots()
+{
+    connect(m_controller, &BusController::telemetryReceived, m_store, &TelemetryStore::append);
+    connect(m_plots, &PlotPanel::pollRateRequested, this, [this](double hz) {
+        m_controller->setPollRate(hz);
+        m_settings->setPollRateHz(hz);
+    });
+    connect(m_controller, &BusController::busLimitChanged, m_plots, &PlotPanel::setBusLimit);
+    auto syncDrives = [this] {
+        for (int id : m_model->ids()) {
+            if (const DriveRecord *d = m_model->drive(id); d && d->series)
+                m_plots->setDriveSeries(id, *d->series);
+        }
+        m_plots->setDrives(m_model->selectedIds());
+    };
+    connect(m_model, &BusModel::drivesChanged, this, syncDrives);
+    connect(m_model, &BusModel::selectionChanged, this, syncDrives);
+}
+
+void MainWindow::addView(QWidget *view, const QString &name, const QString &title,
+                         const QIcon &icon)
+{
+    view->setObjectName(name);
+    m_views->addTab(view, icon, title);
+}
+
+bool MainWindow::showView(const QString &name)
+{
+    for (int i = 0; i < m_views->count(); ++i) {
+        if (m_views->widget(i)->objectName() == name) {
+            m_views->setCurrentIndex(i);
+            return true;
+        }
+    }
+    return false;
+}
+
+QStringList MainWindow::viewNames() const
+{
+    QStringList names;
+    for (int i = 0; i < m_views->count(); ++i)
+        names << m_views->widget(i)->objectName();
+    return names;
+}
+
+void MainWindow::connectTo(const ConnectionChoice &choice, bool remember)
+{
+    m_banner->clearMessage();
+    {
+        // Showing the choice must not store it (setChoice toggles widgets that report).
+        const QSignalBlocker block(m_connectionBar);
+        m_connectionBar->setChoice(choice);
+    }
+    if (remember)
+        m_settings->setConnection(choice);
+    m_store->clear();
+    m_controller->connectTo(choice);
+}
+
+void MainWindow::emergencyStop()
+{
+    // Local motion sources first, so that no generator tick follows the Motor Off frames.
+    m_driveViews->haltLocalMotion(tr("Emergency stop."));
+    m_controller->emergencyStop();
+    statusBar()->showMessage(tr("Emergency stop: Motor Off sent to every drive"), 5000);
+}
+
+void MainWindow::restoreSettings()
+{
+    m_connectionBar->setChoice(m_settings->connection());
+    m_controller->setAutoReconnect(m_settings->connection().autoReconnect);
+    m_busPanel->scanControls()->setRange(m_settings->scanFirstId(), m_settings->scanLastId(),
+                                         m_settings->scanSweepBauds());
+    const double rate = m_settings->pollRateHz();
+    m_controller->setPollRate(rate);
+    m_plots->setPollRate(rate);
+    if (!restoreGeometry(m_settings->windowGeometry()))
+        resize(kDefaultSize);
+    m_stateRestored = restoreState(m_settings->windowState());
+    showView(m_settings->currentView());
+}
+
+void MainWindow::saveSettings()
+{
+    m_settings->setWindow(saveGeometry(), saveState());
+    m_settings->sync();
+}
+
+void MainWindow::showEvent(QShowEvent *event)
+{
+    QMainWindow::showEvent(event);
+    if (m_firstShow && !m_stateRestored) {
+        // First run: docks can be sized only once the window is laid out.
+        QTimer::singleShot(0, this, [this] {
+            resizeDocks({m_busDock}, {m_busPanel->sizeHint().width()}, Qt::Horizontal);
+        });
+    }
+    m_firstShow = false;
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    saveSettings();
+    m_controller->disconnectBus();
+    event->accept();
+}
+
+} // namespace lk::ui

@@ -1,0 +1,99 @@
+#pragma once
+
+#include <QtWidgets/QMainWindow>
+
+class QDockWidget;
+class QShortcut;
+class QTabWidget;
+
+namespace lk::ui {
+
+class AppSettings;
+class BusController;
+class BusModel;
+class BusPanel;
+class ConnectionBar;
+class DashboardPanel;
+class EmergencyStopButton;
+class MessageBanner;
+class OverviewPanel;
+class PlotPanel;
+class StatusSummary;
+class TelemetryStore;
+class TrafficPanel;
+class DriveViews;
+struct ConnectionChoice;
+
+/// lkstudio's main window. It assembles the panels and wires them to the bus controller;
+/// the panels do the work. Views are tabs (addView): Dashboard, Overview, Plots, Traffic,
+/// with room for more (tuning, control, encoder, info).
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    /// `settings` is not owned and must outlive the window.
+    explicit MainWindow(AppSettings *settings, QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    /// Add a central view as a tab; `name` is its object name (settings, --view).
+    void addView(QWidget *view, const QString &name, const QString &title, const QIcon &icon);
+    /// Show the view with this object name; false when there is none.
+    bool showView(const QString &name);
+    QStringList viewNames() const;
+
+    /// Connect as if the user picked `choice` in the connection bar; `remember` stores it as
+    /// the last choice.
+    void connectTo(const ConnectionChoice &choice, bool remember = true);
+
+    BusController *controller() const { return m_controller; }
+    BusModel *busModel() const { return m_model; }
+    TelemetryStore *telemetryStore() const { return m_store; }
+    ConnectionBar *connectionBar() const { return m_connectionBar; }
+    BusPanel *busPanel() const { return m_busPanel; }
+    DashboardPanel *dashboard() const { return m_dashboard; }
+    OverviewPanel *overview() const { return m_overview; }
+    PlotPanel *plots() const { return m_plots; }
+    TrafficPanel *traffic() const { return m_traffic; }
+    DriveViews *driveViews() const { return m_driveViews; }
+    MessageBanner *banner() const { return m_banner; }
+    StatusSummary *statusSummary() const { return m_status; }
+    EmergencyStopButton *emergencyStopButton() const { return m_stop; }
+    QTabWidget *views() const { return m_views; }
+
+public slots:
+    void emergencyStop();
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
+    void showEvent(QShowEvent *event) override;
+
+private:
+    void buildPanels();
+    void buildToolbar();
+    void buildMenus();
+    void wirePanels();
+    void wirePlots();
+    void restoreSettings();
+    void saveSettings();
+
+    AppSettings *m_settings;
+    BusModel *m_model = nullptr;
+    BusController *m_controller = nullptr;
+    TelemetryStore *m_store = nullptr;
+    ConnectionBar *m_connectionBar = nullptr;
+    EmergencyStopButton *m_stop = nullptr;
+    MessageBanner *m_banner = nullptr;
+    QTabWidget *m_views = nullptr;
+    QDockWidget *m_busDock = nullptr;
+    BusPanel *m_busPanel = nullptr;
+    DashboardPanel *m_dashboard = nullptr;
+    OverviewPanel *m_overview = nullptr;
+    PlotPanel *m_plots = nullptr;
+    TrafficPanel *m_traffic = nullptr;
+    DriveViews *m_driveViews = nullptr;
+    StatusSummary *m_status = nullptr;
+    QShortcut *m_escape = nullptr;
+    bool m_stateRestored = false; ///< a saved layout was applied (else size the dock once)
+    bool m_firstShow = true;
+};
+
+} // namespace lk::ui

@@ -1,0 +1,79 @@
+#pragma once
+
+#include "DriveRecord.h"
+
+#include <bus/BusStatistics.h>
+#include <bus/ConnectionStatus.h>
+#include <bus/PollPlan.h>
+#include <bus/ScanTypes.h>
+#include <bus/TelemetrySample.h>
+
+#include <QtCore/QElapsedTimer>
+#include <QtCore/QMap>
+#include <QtCore/QObject>
+
+namespace lk::ui {
+
+/// The GUI's mirror of one bus: connection, drives found, their latest values, statistics
+/// and the selected drive. Panels read it and redraw on their own timers; only the bus
+/// controller writes it. Selecting a drive here selects it in every view.
+class BusModel : public QObject {
+    Q_OBJECT
+public:
+    explicit BusModel(QObject *parent = nullptr);
+
+    // Connection.
+    const bus::ConnectionStatus &connection() const { return m_connection; }
+    bool isSimulated() const { return m_simulated; }
+    /// The link is open: actions that send may be enabled.
+    bool canSend() const { return m_connection.isOpen(); }
+    void setConnection(const bus::ConnectionStatus &status, bool simulated);
+
+    // Drives.
+    QVector<int> ids() const { return m_drives.keys().toVector(); }
+    const DriveRecord *drive(int id) const;
+    bool isEmpty() const { return m_drives.isEmpty(); }
+    void clearDrives();
+    void addFound(const bus::FoundMotor &found);
+    void applyTelemetry(const bus::TelemetryBatch &batch);
+    /// Host clock the field timestamps use (ms since the model was made).
+    qint64 nowMs() const { return m_clock.elapsed(); }
+
+    // Polling and statistics.
+    const bus::BusStatistics &statistics() const { return m_statistics; }
+    void setStatistics(const bus::BusStatistics &statistics);
+    const bus::PollPlan &pollPlan() const { return m_pollPlan; }
+    bool isPolling() const { return m_polling; }
+    void setPolling(const bus::PollPlan &plan, bool active);
+    /// Transactions per second the poll plan asks for (0 = as fast as the bus allows).
+    double requestedTransactionsPerSecond() const;
+
+    // Selection.
+    int currentId() const { return m_currentId; } ///< 0: none
+    void setCurrentId(int id);
+    /// Drives picked together (plots show them all); the current drive when none.
+    QVector<int> selectedIds() const;
+    void setSelectedIds(const QVector<int> &ids);
+
+signals:
+    void connectionChanged();
+    void drivesChanged(); ///< the set of drives or their identities changed
+    void telemetryChanged();
+    void statisticsChanged();
+    void pollingChanged();
+    void currentDriveChanged(int id);
+    void selectionChanged();
+
+private:
+    bus::ConnectionStatus m_connection;
+    bool m_simulated = false;
+    QMap<int, DriveRecord> m_drives;
+    bus::BusStatistics m_statistics;
+    bus::PollPlan m_pollPlan;
+    bool m_polling = false;
+    int m_currentId = 0;
+    QVector<int> m_selected;
+    QElapsedTimer m_clock;
+};
+
+} // namespace lk::ui

@@ -1,0 +1,40 @@
+#include "BusPanel.h"
+
+#include "BusModel.h"
+#include "DriveTree.h"
+#include "ScanControls.h"
+
+#include <QtWidgets/QVBoxLayout>
+
+namespace lk::ui {
+
+namespace {
+constexpr int kPreferredWidthChars = 88; // ID, model, series, versions, V, temperature, errors
+} // namespace
+
+BusPanel::BusPanel(BusModel *model, QWidget *parent)
+    : QWidget(parent), m_scan(new ScanControls(this)), m_tree(new DriveTree(model, this))
+{
+    setObjectName(QStringLiteral("busPanel"));
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(m_scan);
+    layout->addWidget(m_tree, 1);
+    connect(model, &BusModel::connectionChanged, this, [this, model] {
+        m_scan->setCanSend(model->canSend());
+        m_scan->setTiming(model->connection().baud, 0);
+    });
+    connect(model, &BusModel::statisticsChanged, this, [this, model] {
+        m_scan->setTiming(model->statistics().baud, model->statistics().timeoutMarginMs);
+    });
+    m_scan->setCanSend(model->canSend());
+}
+
+QSize BusPanel::sizeHint() const
+{
+    const QSize base = QWidget::sizeHint();
+    const int width = fontMetrics().averageCharWidth() * kPreferredWidthChars;
+    return {qMax(base.width(), width), base.height()};
+}
+
+} // namespace lk::ui

@@ -1,0 +1,220 @@
+#include "ConnectionBar.h"
+
+#include "Format.h"
+
+#include <bus/BusTiming.h>
+
+#include <QtCore/QTimer>
+#include <QtGui/QIcon>
+#include <QtSerialPort/QSerialPortInfo>
+#include <QtWidgets/QCheckBox>
+#include <QtWidgets/QComboBox>
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QPushButton>
+
+namespace lk::ui {
+
+namespace {
+constexpr int kRefreshMs = 1000;
+constexpr int kKindRole = Qt::UserRole + 1; // ConnectionChoice::Kind as int
+constexpr int kPortRole = Qt::UserRole + 2; // device location
+} // namespace
+
+QString PortEntry::label() const
+{
+    QString text = name;
+    const QString what = description.isEmpty() ? manufacturer : description;
+    if (!what.isEmpty())
+        text += QStringLiteral(" \u2013 ") + what;
+    if (vendorId && productId) {
+        text += QStringLiteral(" (%1:%2)")
+                    .arg(*vendorId, 4, 16, QLatin1Char('0'))
+                    .arg(*productId, 4, 16, QLatin1Char('0'));
+    }
+    return text;
+}
+
+ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent), m_lister(&systemPorts)
+{
+    auto *layout = new QHBoxLayout(this);
+    layout->setContentsMargins(4, 2, 4, 2);
+
+    m_port = new QComboBox(this);
+    m_port->setObjectName(QStringLiteral("portCombo"));
+    m_port->setEditable(true); // a pseudo-terminal from lksim is typed in, it is never listed
+    m_port->setInsertPolicy(QComboBox::NoInsert);
+    m_port->setMinimumContentsLength(28);
+    m_port->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_port->setToolTip(tr("Serial port of the USB-RS485 adapter, or the built-in simulated bus. "
+                          "You can also type a device path, e.g. a pseudo-terminal from lksim."));
+
+    m_baud = new QComboBox(this);
+    m_baud->setObjectName(QStringLiteral("baudCombo"));
+    for (int baud : bus::BusTiming::standardBauds())
+        m_baud->addItem(QString::number(baud), baud);
+    m_baud->setCurrentIndex(m_baud->findData(bus::BusTiming::kDefaultBaud));
+    m_baud->setToolTip(tr("Baud rate set on the drives (DIP switches or the vendor's tool)"));
+
+    m_connect = new QPushButton(this);
+    m_connect->setObjectName(QStringLiteral("connectButton"));
+    m_autoReconnect = new QCheckBox(tr("Auto-reconnect"), this);
+    m_autoReconnect->setObjectName(QStringLiteral("autoReconnect"));
+    m_autoReconnect->setChecked(true);
+    m_autoReconnect->setToolTip(tr("Reopen the port by itself when the adapter comes back"));
+    m_state = new QLabel(this);
+    m_state->setObjectName(QStringLiteral("connectionState"));
+
+    layout->addWidget(new QLabel(tr("Port:"), this));
+    layout->addWidget(m_port, 1);
+    layout->addWidget(new QLabel(tr("Baud:"), this));
+    layout->addWidget(m_baud);
+    layout->addWidget(m_connect);
+    layout->addWidget(m_autoReconnect);
+    layout->addWidget(m_state, 1);
+
+    m_refresh = new QTimer(this);
+    m_refresh->setInterval(kRefreshMs);
+    connect(m_refresh, &QTimer::timeout, this, &ConnectionBar::refreshPorts);
+    m_refresh->start();
+    connect(m_connect, &QPushButton::clicked, this, &ConnectionBar::onConnectClicked);
+    connect(m_autoReconnect, &QCheckBox::toggled, this, [this] { emit choiceChanged(choice()); });
+
+    m_ports = m_lister();
+    rebuildPortItems();
+    updateState();
+}
+
+void ConnectionBar::setPortLister(PortLister lister)
+{
+    m_lister = std::move(lister);
+    refreshPorts();
+}
+
+QList<PortEntry> ConnectionBar::systemPorts()
+{
+    QList<PortEntry> out;
+    const auto infos = QSerialPortInfo::availablePorts();
+    for (const auto &info : infos) {
+        PortEntry e;
+        e.name = info.portName();
+        e.location = info.systemLocation();
+        e.description = info.description();
+        e.manufacturer = info.manufacturer();
+        if (info.hasVendorIdentifier())
+            e.vendorId = info.vendorIdentifier();
+        if (info.hasProductIdentifier())
+            e.productId = info.productIdentifier();
+        out << e;
+    }
+    return out;
+}
+
+void ConnectionBar::refreshPorts()
+{
+    const QList<PortEntry> now = m_lister();
+    if (now == m_ports)
+        return;
+    m_ports = now;
+    rebuildPortItems();
+    emit portsChanged(m_ports);
+}
+
+void ConnectionBar::rebuildPortItems()
+{
+    // Keep what the user chose (or typed) across the rebuild.
+    const ConnectionChoice keep = choice();
+    const QSignalBlocker block(m_port);
+    m_port->clear();
+    m_port->addItem(QIcon(QStringLiteral(":/icons/simulator.svg")), tr("Simulator (built-in)"));
+    m_port->setItemData(0, static_cast<int>(ConnectionChoice::Kind::Simulator), kKindRole);
+    for (const auto &p : m_ports) {
+        m_port->addItem(QIcon(QStringLiteral(":/icons/port.svg")), p.label());
+        const int i = m_port->count() - 1;
+        m_port->setItemData(i, static_cast<int>(ConnectionChoice::Kind::Serial), kKindRole);
+        m_port->setItemData(i, p.location.isEmpty() ? p.name : p.location, kPortRole);
+    }
+    setChoice(keep);
+}
+
+ConnectionChoice ConnectionBar::choice() const
+{
+    ConnectionChoice c;
+    c.baud = m_baud->currentData().toInt();
+    c.autoReconnect = m_autoReconnect->isChecked();
+    const int i = m_port->currentIndex();
+    const QString text = m_port->currentText().trimmed();
+    if (i >= 0 && text == m_port->itemText(i)) {
+        c.kind = static_cast<ConnectionChoice::Kind>(m_port->itemData(i, kKindRole).toInt());
+        c.port = m_port->itemData(i, kPortRole).toString();
+    } else {
+        c.kind =
+            text.isEmpty() ? ConnectionChoice::Kind::Simulator : ConnectionChoice::Kind::Serial;
+        c.port = text;
+    }
+    return c;
+}
+
+void ConnectionBar::setChoice(const ConnectionChoice &c)
+{
+    const int baud = m_baud->findData(c.baud);
+    if (baud >= 0)
+        m_baud->setCurrentIndex(baud);
+    m_autoReconnect->setChecked(c.autoReconnect);
+    if (c.isSimulator()) {
+        m_port->setCurrentIndex(0);
+        return;
+    }
+    for (int i = 1; i < m_port->count(); ++i) {
+        const QString loc = m_port->itemData(i, kPortRole).toString();
+        if (loc == c.port || loc.endsWith(QLatin1Char('/') + c.port)) {
+            m_port->setCurrentIndex(i);
+            return;
+        }
+    }
+    // Not listed (a pty, or an adapter that is away just now): keep the name as typed.
+    m_port->setCurrentIndex(-1);
+    m_port->setEditText(c.port);
+}
+
+void ConnectionBar::setConnectionStatus(const bus::ConnectionStatus &status)
+{
+    m_status = status;
+    // A baud sweep may leave the port at another baud than the one picked: show the truth.
+    const int baud = m_baud->findData(status.baud);
+    if (status.isOpen() && baud >= 0)
+        m_baud->setCurrentIndex(baud);
+    updateState();
+}
+
+void ConnectionBar::onConnectClicked()
+{
+    if (m_status.state == transport::Transport::State::Closed) {
+        const ConnectionChoice c = choice();
+        emit choiceChanged(c);
+        emit connectRequested(c);
+    } else {
+        emit disconnectRequested();
+    }
+}
+
+void ConnectionBar::updateState()
+{
+    using S = transport::Transport::State;
+    const bool closed = m_status.state == S::Closed;
+    m_port->setEnabled(closed);
+    m_baud->setEnabled(closed);
+    m_connect->setText(closed ? tr("Connect") : tr("Disconnect"));
+    m_connect->setIcon(QIcon(closed ? QStringLiteral(":/icons/connect.svg")
+                                    : QStringLiteral(":/icons/disconnect.svg")));
+    QString color = QStringLiteral("#777777");
+    if (m_status.state == S::Open)
+        color = QStringLiteral("#2e9b3e");
+    else if (m_status.state == S::Disconnected)
+        color = QStringLiteral("#d9302c");
+    m_state->setText(QStringLiteral("<span style=\"color:%1\">\u25cf</span> %2")
+                         .arg(color, Format::connectionState(m_status).toHtmlEscaped()));
+    m_state->setToolTip(Format::connectionDetail(m_status));
+}
+
+} // namespace lk::ui

@@ -1,0 +1,84 @@
+#pragma once
+
+#include "ConnectionChoice.h"
+
+#include <bus/ConnectionStatus.h>
+
+#include <QtCore/QList>
+#include <QtWidgets/QWidget>
+
+#include <functional>
+#include <optional>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QTimer;
+
+namespace lk::ui {
+
+/// One serial port as the connection bar lists it.
+struct PortEntry {
+    QString name;     ///< "ttyUSB0"
+    QString location; ///< "/dev/ttyUSB0"
+    QString description;
+    QString manufacturer;
+    std::optional<quint16> vendorId, productId;
+    bool operator==(const PortEntry &o) const
+    {
+        return name == o.name && location == o.location && description == o.description &&
+               vendorId == o.vendorId && productId == o.productId;
+    }
+    /// "ttyUSB0 - FT232R USB UART (0403:6001)"
+    QString label() const;
+};
+
+/// Top bar: port (serial ports with USB description and VID:PID, or the built-in simulator),
+/// baud, connect/disconnect, auto-reconnect, and the link state. The port list refreshes
+/// itself about once a second so that adapters coming and going show up without a click.
+class ConnectionBar : public QWidget {
+    Q_OBJECT
+public:
+    using PortLister = std::function<QList<PortEntry>()>;
+
+    explicit ConnectionBar(QWidget *parent = nullptr);
+
+    /// Replace how ports are listed (tests); the default asks QSerialPortInfo.
+    void setPortLister(PortLister lister);
+    static QList<PortEntry> systemPorts();
+    QList<PortEntry> ports() const { return m_ports; }
+
+    ConnectionChoice choice() const;
+    void setChoice(const ConnectionChoice &choice);
+
+    /// Show the link state; the port and baud cannot change while a link is open.
+    void setConnectionStatus(const bus::ConnectionStatus &status);
+
+public slots:
+    void refreshPorts();
+
+signals:
+    void connectRequested(const lk::ui::ConnectionChoice &choice);
+    void disconnectRequested();
+    void choiceChanged(const lk::ui::ConnectionChoice &choice);
+    /// The set of serial ports changed (an adapter came or went).
+    void portsChanged(const QList<lk::ui::PortEntry> &ports);
+
+private:
+    void rebuildPortItems();
+    void onConnectClicked();
+    void updateState();
+
+    QComboBox *m_port = nullptr;
+    QComboBox *m_baud = nullptr;
+    QPushButton *m_connect = nullptr;
+    QCheckBox *m_autoReconnect = nullptr;
+    QLabel *m_state = nullptr;
+    QTimer *m_refresh = nullptr;
+    PortLister m_lister;
+    QList<PortEntry> m_ports;
+    bus::ConnectionStatus m_status;
+};
+
+} // namespace lk::ui

@@ -1,0 +1,24 @@
+#pragma once
+
+#include <QtCore/QString>
+
+namespace lk::ui {
+
+/// What the connection bar asks to open: a serial port at a baud, or the built-in simulator.
+struct ConnectionChoice {
+    enum class Kind { Serial, Simulator };
+    Kind kind = Kind::Simulator;
+    QString port; ///< serial device name or path ("ttyUSB0", "/dev/ttyUSB0"); Serial only
+    int baud = 115200;
+    bool autoReconnect = true;
+
+    bool isSimulator() const { return kind == Kind::Simulator; }
+    bool operator==(const ConnectionChoice &o) const
+    {
+        return kind == o.kind && port == o.port && baud == o.baud &&
+               autoReconnect == o.autoReconnect;
+    }
+    bool operator!=(const ConnectionChoice &o) const { return !(*this == o); }
+};
+
+} // namespace lk::ui

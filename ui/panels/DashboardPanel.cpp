@@ -1,0 +1,296 @@
+#include "DashboardPanel.h"
+
+#include "BusModel.h"
+#include "Format.h"
+#include "Readout.h"
+#include "StatisticsView.h"
+
+#include <QtCore/QTimer>
+#include <QtGui/QIcon>
+#include <QtWidgets/QGridLayout>
+#include <QtWidgets/QGroupBox>
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QPushButton>
+#include <QtWidgets/QScrollArea>
+#include <QtWidgets/QStackedWidget>
+#include <QtWidgets/QVBoxLayout>
+
+#include <cmath>
+
+namespace lk::ui {
+
+namespace {
+constexpr int kRefreshMs = 50;           // 20 Hz: smooth for numbers, cheap for the GUI
+constexpr int kHotTemperatureC = 80;     // shown red from here; drives protect themselves later
+constexpr double kRpmPerDps = 1.0 / 6.0; // 1 rpm = 6 deg/s
+const char kDegree[] = "\u00b0";
+using F = bus::TelemetryField;
+} // namespace
+
+DashboardPanel::DashboardPanel(BusModel *model, QWidget *parent) : QWidget(parent), m_model(model)
+{
+    setObjectName(QStringLiteral("dashboard"));
+    m_stack = new QStackedWidget(this);
+    m_empty = new QLabel(tr("No drive selected. Connect to a bus and scan it; then pick a drive "
+                            "in the list on the left."),
+                         this);
+    m_empty->setAlignment(Qt::AlignCenter);
+    m_empty->setWordWrap(true);
+    m_stack->addWidget(m_empty);
+    auto *scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(buildPage());
+    m_stack->addWidget(scroll);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_stack);
+
+    m_refresh = new QTimer(this);
+    m_refresh->setInterval(kRefreshMs);
+    connect(m_refresh, &QTimer::timeout, this, &DashboardPanel::refresh);
+    m_refresh->start();
+    connect(m_model, &BusModel::currentDriveChanged, this, &DashboardPanel::refresh);
+    connect(m_model, &BusModel::drivesChanged, this, [this] {
+        m_shownId = -1;
+        refresh();
+    });
+    connect(m_model, &BusModel::connectionChanged, this, &DashboardPanel::refresh);
+    connect(m_clearErrors, &QPushButton::clicked, this, [this] {
+        if (m_model->currentId())
+            emit clearErrorsRequested(m_model->currentId());
+    });
+    refresh();
+}
+
+QWidget *DashboardPanel::buildPage()
+{
+    auto *page = new QWidget(this);
+    auto *grid = new QGridLayout(page);
+    grid->addWidget(buildIdentity(), 0, 0, 1, 2);
+    grid->addWidget(buildElectrical(), 1, 0);
+    grid->addWidget(buildMotion(), 1, 1);
+    grid->addWidget(buildErrors(), 2, 0);
+    m_stats = new StatisticsView(m_model, page);
+    grid->addWidget(m_stats, 2, 1);
+    grid->setColumnStretch(0, 1);
+    grid->setColumnStretch(1, 1);
+    grid->setRowStretch(3, 1);
+    return page;
+}
+
+QWidget *DashboardPanel::buildIdentity()
+{
+    m_identity = new QLabel(this);
+    m_identity->setObjectName(QStringLiteral("driveIdentity"));
+    m_identity->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_identity->setWordWrap(true);
+    QFont f = m_identity->font();
+    f.setPointSizeF(f.pointSizeF() * 1.2);
+    m_identity->setFont(f);
+    return m_identity;
+}
+
+Readout *DashboardPanel::makeReadout(const QString &name, const QString &caption, QWidget *parent)
+{
+    auto *r = new Readout(caption, parent);
+    r->setObjectName(name);
+    return r;
+}
+
+QWidget *DashboardPanel::buildElectrical()
+{
+    auto *box = new QGroupBox(tr("Electrical"), this);
+    auto *grid = new QGridLayout(box);
+    grid->addWidget(makeReadout(QStringLiteral("temperature"), tr("Temperature"), box), 0, 0);
+    grid->addWidget(makeReadout(QStringLiteral("voltage"), tr("Supply voltage"), box), 0, 1);
+    grid->addWidget(makeReadout(QStringLiteral("torque"), tr("Torque current iq"), box), 1, 0, 1,
+                    2);
+    grid->addWidget(makeReadout(QStringLiteral("phaseA"), tr("Phase A"), box), 2, 0);
+    grid->addWidget(makeReadout(QStringLiteral("phaseB"), tr("Phase B"), box), 2, 1);
+    grid->addWidget(makeReadout(QStringLiteral("phaseC"), tr("Phase C"), box), 3, 0);
+    return box;
+}
+
+QWidget *DashboardPanel::buildMotion()
+{
+    auto *box = new QGroupBox(tr("Motion"), this);
+    auto *grid = new QGridLayout(box);
+    grid->addWidget(makeReadout(QStringLiteral("speedDps"), tr("Speed"), box), 0, 0);
+    grid->addWidget(makeReadout(QStringLiteral("speedRpm"), tr("Speed"), box), 0, 1);
+    grid->addWidget(makeReadout(QStringLiteral("encoder"), tr("Encoder"), box), 1, 0, 1, 2);
+    grid->addWidget(makeReadout(QStringLiteral("multiTurn"), tr("Multi-turn angle"), box), 2, 0);
+    grid->addWidget(makeReadout(QStringLiteral("singleTurn"), tr("Single-turn angle"), box), 2, 1);
+    m_angleNote = new QLabel(box);
+    m_angleNote->setObjectName(QStringLiteral("angleNote"));
+    m_angleNote->setWordWrap(true);
+    grid->addWidget(m_angleNote, 3, 0, 1, 2);
+    return box;
+}
+
+QWidget *DashboardPanel::buildErrors()
+{
+    auto *box = new QGroupBox(tr("Error flags"), this);
+    auto *layout = new QVBoxLayout(box);
+    auto *row = new QHBoxLayout;
+    m_errorIcon = new QLabel(box);
+    m_errorText = new QLabel(box);
+    m_errorText->setObjectName(QStringLiteral("errorFlags"));
+    m_errorText->setWordWrap(true);
+    QFont f = m_errorText->font();
+    f.setPointSizeF(f.pointSizeF() * 1.3);
+    f.setBold(true);
+    m_errorText->setFont(f);
+    row->addWidget(m_errorIcon);
+    row->addWidget(m_errorText, 1);
+    layout->addLayout(row);
+    m_clearErrors =
+        new QPushButton(QIcon(QStringLiteral(":/icons/clear.svg")), tr("Clear Errors"), box);
+    m_clearErrors->setObjectName(QStringLiteral("clearErrorsButton"));
+    m_clearErrors->setToolTip(tr("Send clear_errors (0x9B). A drive keeps a flag while its cause "
+                                 "(low voltage, heat) is still there."));
+    layout->addWidget(m_clearErrors, 0, Qt::AlignLeft);
+    layout->addStretch(1);
+    return box;
+}
+
+Readout *DashboardPanel::readout(const QString &name) const
+{
+    return findChild<Readout *>(name);
+}
+
+void DashboardPanel::refresh()
+{
+    if (!isVisible() && m_shownId == m_model->currentId())
+        return; // hidden: nothing to draw; a selection change still updates for the next show
+    const DriveRecord *d = m_model->drive(m_model->currentId());
+    m_stack->setCurrentIndex(d ? 1 : 0);
+    if (!d)
+        return;
+    const qint64 now = m_model->nowMs();
+    if (m_shownId != d->id) {
+        m_shownId = d->id;
+        updateIdentity(*d);
+    }
+    updateElectrical(*d, now);
+    updateMotion(*d, now);
+    updateErrors(*d, now);
+    m_clearErrors->setEnabled(m_model->canSend());
+}
+
+void DashboardPanel::updateIdentity(const DriveRecord &d)
+{
+    QStringList parts;
+    parts << QStringLiteral("<b>%1</b>").arg(tr("Drive %1").arg(d.id));
+    if (d.model) {
+        parts << d.model->motorName.toHtmlEscaped();
+        parts << tr("driver %1").arg(d.model->driverName.toHtmlEscaped());
+    }
+    parts << tr("series %1").arg(d.seriesText());
+    if (d.model)
+        parts << tr("firmware %1, hardware %2").arg(d.firmwareText(), d.hardwareText());
+    parts << tr("%1-bit encoder").arg(d.nameInfo.encoderBits);
+    m_identity->setText(parts.join(QStringLiteral(" \u00b7 ")));
+
+    const auto ratio = d.gearRatio();
+    readout(QStringLiteral("torque"))
+        ->setCaption(d.reportsPower() ? tr("Power (relative, MS)") : tr("Torque current iq"));
+    const QString shaft = ratio ? tr("output shaft") : tr("rotor");
+    readout(QStringLiteral("multiTurn"))->setCaption(tr("Multi-turn angle (%1)").arg(shaft));
+    readout(QStringLiteral("singleTurn"))->setCaption(tr("Single-turn angle (%1)").arg(shaft));
+    readout(QStringLiteral("speedDps"))->setCaption(tr("Speed (%1)").arg(shaft));
+    readout(QStringLiteral("speedRpm"))->setCaption(tr("Speed (%1)").arg(shaft));
+    m_angleNote->setText(
+        ratio ? tr("Gear ratio %1:1 from the motor name: angles and speeds are shown at the output "
+                   "shaft; hover for rotor values.")
+                    .arg(Format::number(*ratio, ratio == std::floor(*ratio) ? 0 : 2))
+              : tr("The motor name gives no gear ratio: angles and speeds are rotor values."));
+}
+
+void DashboardPanel::updateElectrical(const DriveRecord &d, qint64 now)
+{
+    const auto &v = d.latest;
+    auto *temp = readout(QStringLiteral("temperature"));
+    temp->setValue(d.has(F::Temperature)
+                       ? Format::withUnit(v.temperatureC, 0, QStringLiteral("\u00b0C"))
+                       : QString(),
+                   d.isStale(F::Temperature, now));
+    temp->setAlarm(v.temperatureC >= kHotTemperatureC);
+    readout(QStringLiteral("voltage"))
+        ->setValue(d.has(F::Voltage) ? Format::withUnit(v.voltageV, 1, QStringLiteral("V"))
+                                     : QString(),
+                   d.isStale(F::Voltage, now));
+    auto *torque = readout(QStringLiteral("torque"));
+    if (d.reportsPower())
+        torque->setValue(d.has(F::Power) ? Format::number(v.power, 0) : QString(),
+                         d.isStale(F::Power, now));
+    else
+        torque->setValue(d.has(F::IqA) ? Format::withUnit(v.iqA, 2, QStringLiteral("A"))
+                                       : QString(),
+                         d.isStale(F::IqA, now));
+    const bool phases = d.hasPhaseCurrents();
+    const bool stale = d.isStale(F::PhaseCurrents, now);
+    const double amps[] = {v.iaA, v.ibA, v.icA};
+    const char *names[] = {"phaseA", "phaseB", "phaseC"};
+    for (int i = 0; i < 3; ++i) {
+        auto *r = readout(QLatin1String(names[i]));
+        if (!phases)
+            r->setValue(tr("not on MS"), true);
+        else
+            r->setValue(d.has(F::PhaseCurrents) ? Format::withUnit(amps[i], 2, QStringLiteral("A"))
+                                                : QString(),
+                        stale);
+    }
+}
+
+void DashboardPanel::updateMotion(const DriveRecord &d, qint64 now)
+{
+    const auto &v = d.latest;
+    const double ratio = d.gearRatio().value_or(1.0);
+    const QString deg = QString::fromUtf8(kDegree);
+    auto angle = [&](const QString &name, F field, double rotorDeg) {
+        auto *r = readout(name);
+        r->setValue(d.has(field) ? Format::withUnit(rotorDeg / ratio, 2, deg) : QString(),
+                    d.isStale(field, now));
+        r->setToolTip(d.has(field) ? tr("Rotor: %1").arg(Format::withUnit(rotorDeg, 2, deg))
+                                   : QString());
+    };
+    const bool speedStale = d.isStale(F::Speed, now);
+    const bool hasSpeed = d.has(F::Speed);
+    readout(QStringLiteral("speedDps"))
+        ->setValue(hasSpeed ? Format::withUnit(v.speedDps / ratio, 0, QStringLiteral("dps"))
+                            : QString(),
+                   speedStale);
+    readout(QStringLiteral("speedRpm"))
+        ->setValue(hasSpeed
+                       ? Format::withUnit(v.speedDps * kRpmPerDps / ratio, 1, QStringLiteral("rpm"))
+                       : QString(),
+                   speedStale);
+    readout(QStringLiteral("encoder"))
+        ->setValue(d.has(F::Encoder) ? tr("%1 of %2").arg(v.encoder).arg(d.nameInfo.countsPerTurn())
+                                     : QString(),
+                   d.isStale(F::Encoder, now));
+    angle(QStringLiteral("multiTurn"), F::MultiTurn, v.multiTurnDeg);
+    angle(QStringLiteral("singleTurn"), F::SingleTurn, v.singleTurnDeg);
+}
+
+void DashboardPanel::updateErrors(const DriveRecord &d, qint64 now)
+{
+    const bool known = d.has(F::ErrorState);
+    const int state = known ? d.latest.errorState : 0;
+    const bool bad = state != 0;
+    QString text = known ? Format::errorFlagsText(state) : tr("Not read yet");
+    if (known && d.isStale(F::ErrorState, now))
+        text += QLatin1Char(' ') + tr("(no update for over a second)");
+    m_errorText->setText(text);
+    QPalette p = m_errorText->palette();
+    p.setColor(QPalette::WindowText,
+               bad ? QColor(0xc6, 0x28, 0x28) : palette().color(QPalette::WindowText));
+    m_errorText->setPalette(p);
+    m_errorIcon->setPixmap(
+        QIcon(bad ? QStringLiteral(":/icons/error.svg") : QStringLiteral(":/icons/ok.svg"))
+            .pixmap(32, 32));
+}
+
+} // namespace lk::ui

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <bus/ConnectionStatus.h>
+#include <transport/Transport.h>
+
+#include <QtCore/QCoreApplication>
+#include <QtCore/QString>
+#include <QtCore/QStringList>
+
+namespace lk::ui {
+
+/// Translated texts and number formats shared by the panels (one place for each wording).
+class Format {
+    Q_DECLARE_TR_FUNCTIONS(lk::ui::Format)
+public:
+    /// A number in the user's locale with a fixed number of decimals.
+    static QString number(double value, int decimals);
+    /// "12.3 V"-style value with a unit; units are not translated (SI).
+    static QString withUnit(double value, int decimals, const QString &unit);
+
+    /// Names of the error bits set in a drive's errorState ("Low voltage", ...).
+    static QStringList errorFlags(int errorState);
+    /// errorFlags() joined, or "No errors".
+    static QString errorFlagsText(int errorState);
+    static bool hasErrors(int errorState) { return errorState != 0; }
+
+    /// What a technician can do about a transport failure (translated, with the fix).
+    static QString transportError(const transport::TransportError &error);
+    /// "Connected: /dev/ttyUSB0 @ 115200", "Disconnected", "Not connected" (short: the
+    /// reason goes in a tooltip, see connectionDetail()).
+    static QString connectionState(const bus::ConnectionStatus &status);
+    /// The link and, when it is down, why.
+    static QString connectionDetail(const bus::ConnectionStatus &status);
+    /// `text` as a sentence: capital first letter, final full stop.
+    static QString sentence(const QString &text);
+
+    /// "5.2 s" / "850 ms" for an estimated duration.
+    static QString duration(double seconds);
+};
+
+} // namespace lk::ui

@@ -1,0 +1,99 @@
+#include "MessageBanner.h"
+
+#include <QtCore/QTimer>
+#include <QtGui/QIcon>
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QToolButton>
+
+namespace lk::ui {
+
+namespace {
+constexpr int kInfoHideMs = 8000;
+constexpr int kIconPx = 20;
+} // namespace
+
+MessageBanner::MessageBanner(QWidget *parent) : QFrame(parent)
+{
+    setObjectName(QStringLiteral("messageBanner"));
+    setFrameShape(QFrame::StyledPanel);
+    setAutoFillBackground(true);
+    auto *layout = new QHBoxLayout(this);
+    layout->setContentsMargins(8, 4, 4, 4);
+    m_icon = new QLabel(this);
+    m_label = new QLabel(this);
+    m_label->setWordWrap(true);
+    m_label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_close = new QToolButton(this);
+    m_close->setAutoRaise(true);
+    m_close->setText(QStringLiteral("\u2715"));
+    m_close->setToolTip(tr("Hide this message"));
+    layout->addWidget(m_icon);
+    layout->addWidget(m_label, 1);
+    layout->addWidget(m_close);
+    m_autoHide = new QTimer(this);
+    m_autoHide->setSingleShot(true);
+    m_autoHide->setInterval(kInfoHideMs);
+    connect(m_autoHide, &QTimer::timeout, this, &MessageBanner::clearMessage);
+    connect(m_close, &QToolButton::clicked, this, &MessageBanner::clearMessage);
+    hide();
+}
+
+void MessageBanner::showMessage(Level level, const QString &text)
+{
+    if (isVisible() && text == m_lastText && level == m_level) {
+        ++m_repeats;
+    } else {
+        m_repeats = 1;
+        m_lastText = text;
+        m_level = level;
+        applyLevel();
+    }
+    updateText();
+    show();
+    if (level == Level::Info)
+        m_autoHide->start();
+    else
+        m_autoHide->stop();
+}
+
+void MessageBanner::clearMessage()
+{
+    m_autoHide->stop();
+    m_lastText.clear();
+    m_repeats = 0;
+    hide();
+}
+
+void MessageBanner::applyLevel()
+{
+    QString icon;
+    QString style;
+    switch (m_level) {
+    case Level::Info:
+        icon = QStringLiteral(":/icons/info.svg");
+        style = QStringLiteral("#messageBanner { background: #e3f0fb; border: 1px solid #7fb2e0; }"
+                               " QLabel { color: #10324f; }");
+        break;
+    case Level::Warning:
+        icon = QStringLiteral(":/icons/warning.svg");
+        style = QStringLiteral("#messageBanner { background: #fff4d6; border: 1px solid #e0b040; }"
+                               " QLabel { color: #4a3500; }");
+        break;
+    case Level::Error:
+        icon = QStringLiteral(":/icons/error.svg");
+        style = QStringLiteral("#messageBanner { background: #fde3e1; border: 1px solid #d9534f; }"
+                               " QLabel { color: #5c0f0b; }");
+        break;
+    }
+    setStyleSheet(style);
+    m_icon->setPixmap(QIcon(icon).pixmap(kIconPx, kIconPx));
+}
+
+void MessageBanner::updateText()
+{
+    m_label->setText(m_repeats > 1 ? tr("%1 (\u00d7%2)").arg(m_lastText).arg(m_repeats)
+                                   : m_lastText);
+}
+
+} // namespace lk::ui

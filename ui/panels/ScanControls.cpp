@@ -1,0 +1,207 @@
+#include "ScanControls.h"
+
+#include "Format.h"
+
+#include <bus/BusTiming.h>
+
+#include <QtGui/QIcon>
+#include <QtWidgets/QCheckBox>
+#include <QtWidgets/QGridLayout>
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QProgressBar>
+#include <QtWidgets/QPushButton>
+#include <QtWidgets/QSpinBox>
+
+namespace lk::ui {
+
+namespace {
+constexpr int kMinId = 1;
+constexpr int kMaxId = 32;
+constexpr int kMinProbesForRate = 3; // below this the measured rate is noise
+} // namespace
+
+ScanControls::ScanControls(QWidget *parent) : QWidget(parent)
+{
+    m_first = new QSpinBox(this);
+    m_first->setObjectName(QStringLiteral("scanFirstId"));
+    m_first->setRange(kMinId, kMaxId);
+    m_first->setValue(kMinId);
+    m_last = new QSpinBox(this);
+    m_last->setObjectName(QStringLiteral("scanLastId"));
+    m_last->setRange(kMinId, kMaxId);
+    m_last->setValue(kMaxId);
+    m_sweep = new QCheckBox(tr("Try every baud"), this);
+    m_sweep->setObjectName(QStringLiteral("scanSweepBauds"));
+    m_sweep->setToolTip(tr("Scan the range at each of the nine bauds (slower): for drives whose "
+                           "baud is unknown"));
+    m_scan = new QPushButton(QIcon(QStringLiteral(":/icons/scan.svg")), tr("Scan"), this);
+    m_scan->setObjectName(QStringLiteral("scanButton"));
+    m_cancel = new QPushButton(tr("Cancel"), this);
+    m_cancel->setObjectName(QStringLiteral("scanCancelButton"));
+    m_progress = new QProgressBar(this);
+    m_progress->setObjectName(QStringLiteral("scanProgress"));
+    m_progress->setRange(0, 1);
+    m_progress->setValue(0);
+    m_progress->setTextVisible(true);
+    m_status = new QLabel(this);
+    m_status->setObjectName(QStringLiteral("scanStatus"));
+    m_status->setWordWrap(true);
+
+    auto *grid = new QGridLayout(this);
+    grid->setContentsMargins(0, 0, 0, 0);
+    auto *range = new QHBoxLayout;
+    range->addWidget(new QLabel(tr("IDs"), this));
+    range->addWidget(m_first);
+    range->addWidget(new QLabel(QStringLiteral("\u2013"), this));
+    range->addWidget(m_last);
+    range->addWidget(m_sweep, 1);
+    grid->addLayout(range, 0, 0, 1, 3);
+    grid->addWidget(m_scan, 1, 0);
+    grid->addWidget(m_cancel, 1, 1);
+    grid->addWidget(m_progress, 1, 2);
+    grid->addWidget(m_status, 2, 0, 1, 3);
+    grid->setColumnStretch(2, 1);
+
+    connect(m_scan, &QPushButton::clicked, this, &ScanControls::startScan);
+    connect(m_cancel, &QPushButton::clicked, this, &ScanControls::cancelRequested);
+    auto changed = [this] {
+        if (m_last->value() < m_first->value())
+            m_last->setValue(m_first->value());
+        emit rangeChanged(m_first->value(), m_last->value(), m_sweep->isChecked());
+        if (!m_scanning)
+            showEstimate();
+    };
+    connect(m_first, qOverload<int>(&QSpinBox::valueChanged), this, changed);
+    connect(m_last, qOverload<int>(&QSpinBox::valueChanged), this, changed);
+    connect(m_sweep, &QCheckBox::toggled, this, changed);
+    updateEnabled();
+    showEstimate();
+}
+
+bus::ScanOptions ScanControls::options() const
+{
+    bus::ScanOptions o;
+    o.firstId = m_first->value();
+    o.lastId = qMax(m_first->value(), m_last->value());
+    o.sweepBauds = m_sweep->isChecked();
+    return o;
+}
+
+void ScanControls::setRange(int firstId, int lastId, bool sweepBauds)
+{
+    m_first->setValue(firstId);
+    m_last->setValue(lastId);
+    m_sweep->setChecked(sweepBauds);
+}
+
+void ScanControls::setCanSend(bool canSend)
+{
+    m_canSend = canSend;
+    updateEnabled();
+}
+
+void ScanControls::setTiming(int baud, double timeoutMarginMs)
+{
+    if (baud > 0)
+        m_baud = baud;
+    if (timeoutMarginMs > 0)
+        m_marginMs = timeoutMarginMs;
+    if (!m_scanning)
+        showEstimate();
+}
+
+double ScanControls::estimateSeconds(const bus::ScanOptions &o, int baud, double marginMs)
+{
+    QVector<int> bauds;
+    if (!o.sweepBauds)
+        bauds << baud;
+    else if (!o.bauds.isEmpty())
+        bauds = o.bauds;
+    else
+        for (int b : bus::BusTiming::standardBauds())
+            bauds << b;
+    const int ids = o.lastId - o.firstId + 1;
+    double total = 0;
+    for (int b : bauds) {
+        const double probe =
+            bus::BusTiming::replyTimeoutS(protocol::Command::ReadModel, b, marginMs / 1000.0);
+        total += ids * probe * (1 + o.retries);
+    }
+    return total;
+}
+
+void ScanControls::startScan()
+{
+    if (!m_canSend || m_scanning)
+        return;
+    emit scanRequested(options());
+}
+
+void ScanControls::onScanStarted()
+{
+    m_scanning = true;
+    m_elapsed.start();
+    m_progress->setRange(0, 1);
+    m_progress->setValue(0);
+    showEstimate();
+    updateEnabled();
+}
+
+void ScanControls::onScanProgress(const bus::ScanProgress &p)
+{
+    if (!m_scanning)
+        onScanStarted();
+    m_progress->setRange(0, qMax(1, p.total));
+    m_progress->setValue(p.done);
+    QString left;
+    const int remaining = p.total - p.done;
+    if (p.done >= kMinProbesForRate && m_elapsed.isValid()) {
+        const double perProbe = m_elapsed.elapsed() / 1000.0 / p.done;
+        left = Format::duration(perProbe * remaining);
+    } else {
+        bus::ScanOptions o = options();
+        left =
+            Format::duration(estimateSeconds(o, m_baud, m_marginMs) * remaining / qMax(1, p.total));
+    }
+    m_status->setText(
+        tr("ID %1 at %2 baud \u00b7 %n drive(s) found \u00b7 about %3 left", nullptr, p.found)
+            .arg(p.id)
+            .arg(p.baud)
+            .arg(left));
+}
+
+void ScanControls::onScanFinished(const bus::ScanSummary &s)
+{
+    m_scanning = false;
+    m_progress->setRange(0, 1);
+    m_progress->setValue(1);
+    QString text;
+    if (!s.error.isEmpty())
+        text = tr("Scan stopped: %1").arg(s.error);
+    else if (s.cancelled)
+        text = tr("Scan cancelled after %1: %n drive(s) found", nullptr, s.motors.size())
+                   .arg(Format::duration(s.elapsedS));
+    else
+        text = tr("Scan done in %1: %n drive(s) found", nullptr, s.motors.size())
+                   .arg(Format::duration(s.elapsedS));
+    m_status->setText(text);
+    updateEnabled();
+}
+
+void ScanControls::updateEnabled()
+{
+    m_scan->setEnabled(m_canSend && !m_scanning);
+    m_cancel->setEnabled(m_scanning);
+    m_first->setEnabled(!m_scanning);
+    m_last->setEnabled(!m_scanning);
+    m_sweep->setEnabled(!m_scanning);
+}
+
+void ScanControls::showEstimate()
+{
+    const double s = estimateSeconds(options(), m_baud, m_marginMs);
+    m_status->setText(tr("Scan takes at most %1 at %2 baud").arg(Format::duration(s)).arg(m_baud));
+}
+
+} // namespace lk::ui

@@ -1,0 +1,260 @@
+#include "TrafficModel.h"
+
+#include <protocol/Command.h>
+#include <protocol/FieldJson.h>
+#include <protocol/FieldText.h>
+#include <protocol/StreamParser.h>
+
+#include <QtGui/QBrush>
+#include <QtGui/QColor>
+
+#include <optional>
+
+namespace lk::ui {
+
+namespace {
+
+using Kind = bus::TrafficEvent::Kind;
+const QColor kFaultText(0xb0, 0x1c, 0x16);
+const QColor kSentText(0x1f, 0x4e, 0x8c);
+const QColor kNoteText(0x80, 0x80, 0x80);
+
+/// The one frame `bytes` holds (a request as sent, or a received frame), if it is one.
+std::optional<protocol::Frame> frameOf(const QByteArray &bytes)
+{
+    std::optional<protocol::Frame> out;
+    protocol::StreamParser parser;
+    parser.feed(bytes, [&](const protocol::ParseEvent &e) {
+        if (e.isFrame && !out)
+            out = e.frame;
+    });
+    return out;
+}
+
+} // namespace
+
+quint64 TrafficCounts::faultTotal() const
+{
+    quint64 n = 0;
+    for (quint64 f : faults)
+        n += f;
+    return n;
+}
+
+TrafficModel::TrafficModel(QObject *parent, int capacity)
+    : QAbstractTableModel(parent), m_capacity(qMax(1, capacity))
+{
+}
+
+int TrafficModel::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : static_cast<int>(m_rows.size());
+}
+
+int TrafficModel::columnCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : ColumnCount;
+}
+
+void TrafficModel::count(const bus::TrafficEvent &e)
+{
+    switch (e.kind) {
+    case Kind::Sent:
+        ++m_counts.sent;
+        break;
+    case Kind::Frame:
+        ++m_counts.frames;
+        break;
+    case Kind::Fault: {
+        const auto i = static_cast<size_t>(e.error);
+        if (i < m_counts.faults.size())
+            ++m_counts.faults[i];
+        break;
+    }
+    case Kind::Timeout:
+        ++m_counts.timeouts;
+        break;
+    case Kind::Note:
+        break;
+    }
+}
+
+void TrafficModel::countOnly(const bus::TrafficBatch &batch)
+{
+    for (const auto &e : batch)
+        count(e);
+}
+
+void TrafficModel::append(const bus::TrafficBatch &batch)
+{
+    if (batch.isEmpty())
+        return;
+    countOnly(batch);
+    // Only the newest `capacity` events of a huge batch can survive anyway.
+    const qsizetype skip = qMax<qsizetype>(0, batch.size() - m_capacity);
+    const qsizetype incoming = batch.size() - skip;
+    const qsizetype overflow = m_rows.size() + incoming - m_capacity;
+    if (overflow > 0) {
+        beginRemoveRows({}, 0, static_cast<int>(overflow - 1));
+        m_rows.remove(0, overflow);
+        endRemoveRows();
+        m_dropped += static_cast<quint64>(overflow);
+    }
+    m_dropped += static_cast<quint64>(skip);
+    const int first = static_cast<int>(m_rows.size());
+    beginInsertRows({}, first, first + static_cast<int>(incoming) - 1);
+    m_rows.append(batch.mid(skip));
+    endInsertRows();
+}
+
+void TrafficModel::clear()
+{
+    beginResetModel();
+    m_rows.clear();
+    m_counts = {};
+    m_dropped = 0;
+    endResetModel();
+}
+
+protocol::DecodeContext TrafficModel::contextFor(int id) const
+{
+    protocol::DecodeContext c;
+    c.series = m_series.value(id, protocol::Series::MF);
+    return c;
+}
+
+QString TrafficModel::directionText(int row) const
+{
+    switch (m_rows.at(row).kind) {
+    case Kind::Sent:
+        return tr("TX");
+    case Kind::Frame:
+        return tr("RX");
+    case Kind::Fault:
+        return tr("RX fault");
+    case Kind::Timeout:
+        return tr("timeout");
+    case Kind::Note:
+        return tr("note");
+    }
+    return {};
+}
+
+QString TrafficModel::commandText(int row) const
+{
+    const auto &e = m_rows.at(row);
+    if (e.kind == Kind::Fault)
+        return QString::fromLatin1(protocol::parseErrorName(e.error));
+    if (e.kind == Kind::Note)
+        return {};
+    const auto *info = protocol::CommandTable::find(e.command);
+    return info ? QString::fromLatin1(info->name) : protocol::CommandTable::codeText(e.command);
+}
+
+QString TrafficModel::fieldsText(int row) const
+{
+    const auto &e = m_rows.at(row);
+    switch (e.kind) {
+    case Kind::Note:
+        return e.text;
+    case Kind::Timeout:
+        return tr("no reply");
+    case Kind::Fault:
+        return {};
+    case Kind::Sent:
+    case Kind::Frame:
+        break;
+    }
+    const auto frame = frameOf(e.bytes);
+    if (!frame)
+        return {};
+    const auto dir = e.kind == Kind::Sent
+                         ? protocol::FrameDirection::Request
+                         : frame->direction().value_or(protocol::FrameDirection::Reply);
+    return protocol::FieldText::frame(*frame, dir, contextFor(frame->id));
+}
+
+QString TrafficModel::exportLine(int row) const
+{
+    const auto &e = m_rows.at(row);
+    QString details =
+        QStringLiteral("%1 %2").arg(QString::number(e.time, 'f', 6), directionText(row));
+    if (e.id > 0)
+        details += QStringLiteral(" id %1").arg(e.id);
+    const QString cmd = commandText(row);
+    if (!cmd.isEmpty())
+        details += QLatin1Char(' ') + cmd;
+    // Comments run to the end of the line: keep a note's own line breaks out of them.
+    const QString fields = fieldsText(row).simplified();
+    if (!fields.isEmpty())
+        details += QStringLiteral(": ") + fields;
+    if (e.bytes.isEmpty())
+        return QStringLiteral("# ") + details;
+    return protocol::FieldJson::hexText(e.bytes) + QStringLiteral("  # ") + details;
+}
+
+QVariant TrafficModel::headerData(int section, Qt::Orientation orientation, int role) const
+{
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole)
+        return {};
+    switch (section) {
+    case Time:
+        return tr("Time (s)");
+    case Direction:
+        return tr("Dir.");
+    case Id:
+        return tr("ID");
+    case Command:
+        return tr("Command");
+    case Fields:
+        return tr("Fields");
+    case Raw:
+        return tr("Raw bytes");
+    default:
+        return {};
+    }
+}
+
+QVariant TrafficModel::data(const QModelIndex &index, int role) const
+{
+    if (!index.isValid() || index.row() >= m_rows.size())
+        return {};
+    const int row = index.row();
+    const auto &e = m_rows.at(row);
+    const bool fault = e.kind == Kind::Fault || e.kind == Kind::Timeout;
+    switch (role) {
+    case Qt::DisplayRole:
+        switch (index.column()) {
+        case Time:
+            return QString::number(e.time, 'f', 6);
+        case Direction:
+            return directionText(row);
+        case Id:
+            return e.id > 0 ? QVariant(e.id) : QVariant();
+        case Command:
+            return commandText(row);
+        case Fields:
+            return fieldsText(row);
+        case Raw:
+            return protocol::FieldJson::hexText(e.bytes);
+        default:
+            return {};
+        }
+    case Qt::ForegroundRole:
+        if (fault)
+            return QBrush(kFaultText);
+        if (e.kind == Kind::Note)
+            return QBrush(kNoteText);
+        return e.kind == Kind::Sent ? QVariant(QBrush(kSentText)) : QVariant();
+    case kCommandRole:
+        return e.kind == Kind::Note || e.kind == Kind::Fault ? -1 : int(e.command);
+    case kIdRole:
+        return e.id;
+    case kIsFaultRole:
+        return fault;
+    default:
+        return {};
+    }
+}
+
+} // namespace lk::ui

@@ -1,0 +1,279 @@
+#include "TrafficPanel.h"
+
+#include "BusModel.h"
+#include "TrafficFilter.h"
+#include "TrafficModel.h"
+
+#include <protocol/Command.h>
+
+#include <QtCore/QDateTime>
+#include <QtCore/QFile>
+#include <QtCore/QFileInfo>
+#include <QtCore/QTextStream>
+#include <QtCore/QTimer>
+#include <QtGui/QIcon>
+#include <QtWidgets/QCheckBox>
+#include <QtWidgets/QComboBox>
+#include <QtWidgets/QFileDialog>
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QHeaderView>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QScrollBar>
+#include <QtWidgets/QTableView>
+#include <QtWidgets/QToolButton>
+#include <QtWidgets/QVBoxLayout>
+
+namespace lk::ui {
+
+namespace {
+constexpr int kFlushMs = 100; // the table grows at 10 Hz however fast the bus runs
+constexpr int kMaxId = 32;
+
+QToolButton *makeButton(QWidget *parent, const QString &name, const QString &text,
+                        const QString &icon, const QString &toolTip)
+{
+    auto *b = new QToolButton(parent);
+    b->setObjectName(name);
+    b->setText(text);
+    b->setIcon(QIcon(icon));
+    b->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    b->setToolTip(toolTip);
+    return b;
+}
+} // namespace
+
+TrafficPanel::TrafficPanel(BusModel *model, QWidget *parent, int capacity)
+    : QWidget(parent), m_bus(model), m_model(new TrafficModel(this, capacity)),
+      m_filter(new TrafficFilter(this))
+{
+    setObjectName(QStringLiteral("traffic"));
+    m_filter->setSourceModel(m_model);
+    m_view = new QTableView(this);
+    m_view->setObjectName(QStringLiteral("trafficTable"));
+    m_view->setModel(m_filter);
+    m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_view->setWordWrap(false);
+    m_view->verticalHeader()->hide();
+    // Fixed row heights keep a 50,000-row table as fast as a 50-row one.
+    m_view->verticalHeader()->setSectionResizeMode(QHeaderView::Fixed);
+    m_view->verticalHeader()->setDefaultSectionSize(m_view->fontMetrics().height() + 4);
+    auto *h = m_view->horizontalHeader();
+    h->setSectionResizeMode(QHeaderView::Interactive);
+    h->setStretchLastSection(true);
+    const int digit = m_view->fontMetrics().horizontalAdvance(QLatin1Char('0'));
+    m_view->setColumnWidth(TrafficModel::Time, digit * 10);
+    m_view->setColumnWidth(TrafficModel::Direction, digit * 8);
+    m_view->setColumnWidth(TrafficModel::Id, digit * 4);
+    m_view->setColumnWidth(TrafficModel::Command, digit * 19);
+    m_view->setColumnWidth(TrafficModel::Fields, digit * 42);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(buildToolbar());
+    layout->addWidget(m_view, 1);
+
+    m_flush = new QTimer(this);
+    m_flush->setInterval(kFlushMs);
+    connect(m_flush, &QTimer::timeout, this, &TrafficPanel::flush);
+    m_flush->start();
+    connect(m_bus, &BusModel::drivesChanged, this, [this] {
+        QMap<int, protocol::Series> series;
+        for (int id : m_bus->ids()) {
+            if (const auto *d = m_bus->drive(id); d && d->series)
+                series.insert(id, *d->series);
+        }
+        m_model->setSeries(series);
+    });
+    updateCounts();
+}
+
+QWidget *TrafficPanel::buildToolbar()
+{
+    auto *bar = new QWidget(this);
+    auto *rows = new QVBoxLayout(bar);
+    rows->setContentsMargins(0, 0, 0, 0);
+    auto *row = new QHBoxLayout;
+    rows->addLayout(row);
+    m_idFilter = new QComboBox(bar);
+    m_idFilter->setObjectName(QStringLiteral("trafficIdFilter"));
+    m_idFilter->addItem(tr("All IDs"), 0);
+    for (int id = 1; id <= kMaxId; ++id)
+        m_idFilter->addItem(tr("ID %1").arg(id), id);
+    m_commandFilter = new QComboBox(bar);
+    m_commandFilter->setObjectName(QStringLiteral("trafficCommandFilter"));
+    fillCommandFilter();
+    m_faultsOnly = new QCheckBox(tr("Faults only"), bar);
+    m_faultsOnly->setObjectName(QStringLiteral("trafficFaultsOnly"));
+    m_pause = makeButton(bar, QStringLiteral("trafficPause"), tr("Pause"),
+                         QStringLiteral(":/icons/pause.svg"),
+                         tr("Freeze the log to read it; faults are still counted"));
+    m_pause->setCheckable(true);
+    m_record = makeButton(bar, QStringLiteral("trafficRecord"), tr("Keep recording"),
+                          QStringLiteral(":/icons/record.svg"),
+                          tr("Keep capturing traffic while another view is shown"));
+    m_record->setCheckable(true);
+    auto *clear = makeButton(bar, QStringLiteral("trafficClear"), tr("Clear"),
+                             QStringLiteral(":/icons/clear.svg"), tr("Empty the log and counts"));
+    auto *exportButton =
+        makeButton(bar, QStringLiteral("trafficExport"), tr("Export\u2026"),
+                   QStringLiteral(":/icons/export.svg"),
+                   tr("Save the rows shown as hex text that `lkctl decode -` reads"));
+    m_counts = new QLabel(bar);
+    m_counts->setObjectName(QStringLiteral("trafficCounts"));
+    m_counts->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_counts->setWordWrap(true); // its own row: the counts grow, the window must not
+
+    row->addWidget(m_idFilter);
+    row->addWidget(m_commandFilter);
+    row->addWidget(m_faultsOnly);
+    row->addWidget(m_pause);
+    row->addWidget(m_record);
+    row->addWidget(clear);
+    row->addWidget(exportButton);
+    row->addStretch(1);
+    rows->addWidget(m_counts);
+
+    connect(m_idFilter, qOverload<int>(&QComboBox::currentIndexChanged), this,
+            [this] { m_filter->setIdFilter(m_idFilter->currentData().toInt()); });
+    connect(m_commandFilter, qOverload<int>(&QComboBox::currentIndexChanged), this,
+            [this] { m_filter->setCommandFilter(m_commandFilter->currentData().toInt()); });
+    connect(m_faultsOnly, &QCheckBox::toggled, m_filter, &TrafficFilter::setFaultsOnly);
+    connect(m_record, &QToolButton::toggled, this, &TrafficPanel::updateCapture);
+    connect(clear, &QToolButton::clicked, this, [this] {
+        m_pending.clear();
+        m_model->clear();
+        updateCounts();
+    });
+    connect(exportButton, &QToolButton::clicked, this, &TrafficPanel::exportWithDialog);
+    return bar;
+}
+
+void TrafficPanel::fillCommandFilter()
+{
+    m_commandFilter->addItem(tr("All commands"), -1);
+    for (const auto &info : protocol::CommandTable::all()) {
+        m_commandFilter->addItem(
+            QStringLiteral("%1 (%2)").arg(QLatin1String(info.name),
+                                          protocol::CommandTable::codeText(quint8(info.command))),
+            int(info.command));
+    }
+}
+
+bool TrafficPanel::isPaused() const
+{
+    return m_pause->isChecked();
+}
+
+void TrafficPanel::appendTraffic(const bus::TrafficBatch &batch)
+{
+    m_pending += batch;
+    // The bus can outrun the 10 Hz flush for a while: never hold more than the table keeps.
+    const qsizetype excess = m_pending.size() - m_model->capacity();
+    if (excess > 0) {
+        m_model->countOnly(m_pending.mid(0, excess));
+        m_pending.remove(0, excess);
+    }
+}
+
+void TrafficPanel::flush()
+{
+    if (m_pending.isEmpty())
+        return;
+    QScrollBar *bar = m_view->verticalScrollBar();
+    const bool atBottom = bar->value() >= bar->maximum() - 2;
+    if (isPaused())
+        m_model->countOnly(m_pending);
+    else
+        m_model->append(m_pending);
+    m_pending.clear();
+    updateCounts();
+    if (atBottom && !isPaused())
+        m_view->scrollToBottom();
+}
+
+QString TrafficPanel::countsText() const
+{
+    const TrafficCounts &c = m_model->counts();
+    QStringList parts;
+    parts << tr("TX %1").arg(c.sent) << tr("RX %1").arg(c.frames)
+          << tr("timeouts %1").arg(c.timeouts);
+    for (int i = 0; i < TrafficCounts::kParseErrorKinds; ++i) {
+        if (c.faults[static_cast<size_t>(i)] > 0)
+            parts << QStringLiteral("%1 %2")
+                         .arg(QLatin1String(protocol::parseErrorName(protocol::ParseError(i))))
+                         .arg(c.faults[static_cast<size_t>(i)]);
+    }
+    if (c.faultTotal() == 0)
+        parts << tr("no frame faults");
+    if (m_model->droppedRows() > 0)
+        parts << tr("%1 oldest rows dropped").arg(m_model->droppedRows());
+    return parts.join(QStringLiteral(" \u00b7 "));
+}
+
+void TrafficPanel::updateCounts()
+{
+    m_counts->setText(countsText());
+}
+
+bool TrafficPanel::exportTo(const QString &fileName, QString *error) const
+{
+    QFile file(fileName);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
+        if (error)
+            *error = file.errorString();
+        return false;
+    }
+    QTextStream out(&file);
+    out << "# lkstudio traffic log, " << QDateTime::currentDateTime().toString(Qt::ISODate) << ", "
+        << m_bus->connection().description << "\n"
+        << "# read it back with: lkctl decode - < " << QFileInfo(fileName).fileName() << "\n"
+        << "# hex bytes  # time_s direction id command: fields\n";
+    for (int row = 0; row < m_filter->rowCount(); ++row) {
+        const int source = m_filter->mapToSource(m_filter->index(row, 0)).row();
+        out << m_model->exportLine(source) << '\n';
+    }
+    out.flush();
+    if (file.error() != QFile::NoError) {
+        if (error)
+            *error = file.errorString();
+        return false;
+    }
+    return true;
+}
+
+void TrafficPanel::exportWithDialog()
+{
+    flush();
+    const QString name = QFileDialog::getSaveFileName(this, tr("Export traffic"),
+                                                      QStringLiteral("lkstudio-traffic.txt"),
+                                                      tr("Traffic log (*.txt);;All files (*)"));
+    if (name.isEmpty())
+        return;
+    QString error;
+    if (!exportTo(name, &error))
+        m_counts->setText(tr("Export failed: %1").arg(error));
+}
+
+void TrafficPanel::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    m_shown = true;
+    updateCapture();
+}
+
+void TrafficPanel::hideEvent(QHideEvent *event)
+{
+    QWidget::hideEvent(event);
+    m_shown = false;
+    updateCapture();
+}
+
+void TrafficPanel::updateCapture()
+{
+    const bool want = m_shown || m_record->isChecked();
+    if (want == m_wantCapture)
+        return;
+    m_wantCapture = want;
+    emit captureWanted(want);
+}
+
+} // namespace lk::ui
