@@ -177,11 +177,13 @@ void ScanControls::onScanFinished(const bus::ScanSummary &s)
     m_progress->setRange(0, 1);
     m_progress->setValue(1);
     QString text;
-    if (!s.error.isEmpty())
-        text = tr("Scan stopped: %1").arg(s.error);
-    else if (s.cancelled)
+    // A cancel that lands while the sweep reopens the port also carries that error: the user
+    // asked for the stop, so it is reported as a cancel.
+    if (s.cancelled)
         text = tr("Scan cancelled after %1: %n drive(s) found", nullptr, s.motors.size())
                    .arg(Format::duration(s.elapsedS));
+    else if (!s.error.isEmpty())
+        text = tr("Scan stopped: %1").arg(s.error);
     else
         text = tr("Scan done in %1: %n drive(s) found", nullptr, s.motors.size())
                    .arg(Format::duration(s.elapsedS));

@@ -194,9 +194,8 @@ void tst_MainWindow::scanCanBeCancelled()
     QTest::mouseClick(cancel, Qt::LeftButton);
     QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kWaitMs);
     QVERIFY(finished.at(0).at(0).value<lk::bus::ScanSummary>().cancelled);
-    QVERIFY(m_window->findChild<QLabel *>(QStringLiteral("scanStatus"))
-                ->text()
-                .contains(QStringLiteral("cancelled")));
+    const QString status = m_window->findChild<QLabel *>(QStringLiteral("scanStatus"))->text();
+    QVERIFY2(status.contains(QStringLiteral("cancelled")), qPrintable(status));
     QVERIFY(!cancel->isEnabled());
     sweep->setChecked(false);
     QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("scanButton")),
