@@ -20,6 +20,8 @@ public:
     void outLine(const QString &line); ///< UTF-8, newline appended
     void errLine(const QString &line); ///< UTF-8, newline appended, flushed with stdout first
     void flush();
+    /// Standard output could not be written (the reader went away, the disk is full).
+    bool outputFailed() const { return m_out.error() != QFileDevice::NoError; }
 
     /// Blocks until bytes arrive on standard input, returns up to max of them; empty at the
     /// end of input or on a read error (then inputFailed() is true).

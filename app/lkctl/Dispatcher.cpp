@@ -43,8 +43,20 @@ QString Dispatcher::usage() const
                 .arg(m_program);
     for (const auto &c : m_commands)
         text += QStringLiteral("  %1\n").arg(c->example());
-    text += QStringLiteral("\nExit status: 0 success, 2 unusable arguments; each command's help "
-                           "lists the others.\n");
+    text += QStringLiteral(
+        "\nBus options of the live commands (scan ... monitor):\n"
+        "  --port DEV [--baud N]   a serial adapter (default 115200 baud)\n"
+        "  --sim ID:SERIES,...     the built-in simulated bus, e.g. --sim 3:MF,17:MS\n"
+        "\nExit status (each command's help says which apply to it):\n"
+        "  0  success\n"
+        "  1  the operation failed: the port could not be opened (the message says why and how\n"
+        "     to fix it), a drive did not answer (the message names the ID and the command),\n"
+        "     or the bus went away\n"
+        "  2  unusable arguments or input text; nothing was sent\n"
+        "  3  decode: the input held bytes that were not valid frames\n"
+        "  4  refused for safety, nothing was sent: a control command over a series or soft\n"
+        "     limit, or a ROM write without --yes\n"
+        "  5  write: the value read back differs from the value written\n");
     return text;
 }
 

@@ -9,9 +9,11 @@ class Console;
 
 // Exit statuses shared by every subcommand (CLI.md); a subcommand may add its own above 3.
 constexpr int kExitOk = 0;
-constexpr int kExitFailure = 1; ///< the operation itself failed (e.g. no reply on the bus)
-constexpr int kExitUsage = 2;   ///< unusable arguments or input text; message on stderr
-constexpr int kExitBadData = 3; ///< input held bytes that were not valid frames
+constexpr int kExitFailure = 1;  ///< the operation itself failed (e.g. no reply on the bus)
+constexpr int kExitUsage = 2;    ///< unusable arguments or input text; message on stderr
+constexpr int kExitBadData = 3;  ///< input held bytes that were not valid frames
+constexpr int kExitRefused = 4;  ///< refused for safety (a limit, a ROM write without --yes)
+constexpr int kExitMismatch = 5; ///< a write's read-back differs from what was written
 
 /// One `lkctl NAME ...` subcommand. To add one: derive, then register an instance with
 /// Dispatcher::add() in main.cpp; help, `lkctl help NAME` and `NAME --help` come for free.

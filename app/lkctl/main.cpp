@@ -1,9 +1,17 @@
 #include "Console.h"
+#include "ControlCommand.h"
 #include "DecodeCommand.h"
 #include "Dispatcher.h"
 #include "EncodeCommand.h"
+#include "InfoCommand.h"
+#include "MonitorCommand.h"
+#include "MotorStateCommand.h"
+#include "ReadCommand.h"
+#include "ScanCommand.h"
+#include "WriteCommand.h"
 
 #include <QtCore/QCoreApplication>
+#include <QtCore/QLoggingCategory>
 
 #include <memory>
 
@@ -13,11 +21,24 @@ int main(int argc, char *argv[])
     QCoreApplication::setApplicationName(QStringLiteral("lkctl"));
     QCoreApplication::setApplicationVersion(QStringLiteral(LK_VERSION));
 
+    // lkctl prints its own messages (with the fix where there is one): the engine's logging
+    // would repeat them. QT_LOGGING_RULES still turns it back on for a diagnosis.
+    QLoggingCategory::setFilterRules(QStringLiteral("lk.*.info=false\nlk.*.warning=false"));
+
     lk::lkctl::Console console;
     lk::lkctl::Dispatcher dispatcher(QStringLiteral("lkctl"), QStringLiteral(LK_VERSION));
-    // One line per subcommand: scan, info, read, write, control, off/stop/run and monitor
-    // join here.
-    dispatcher.add(std::make_unique<lk::lkctl::EncodeCommand>());
-    dispatcher.add(std::make_unique<lk::lkctl::DecodeCommand>());
+    using lk::protocol::Command;
+    using namespace lk::lkctl;
+    dispatcher.add(std::make_unique<ScanCommand>());
+    dispatcher.add(std::make_unique<InfoCommand>());
+    dispatcher.add(std::make_unique<ReadCommand>());
+    dispatcher.add(std::make_unique<WriteCommand>());
+    dispatcher.add(std::make_unique<ControlCommand>());
+    dispatcher.add(std::make_unique<MotorStateCommand>(Command::MotorOff));
+    dispatcher.add(std::make_unique<MotorStateCommand>(Command::MotorStop));
+    dispatcher.add(std::make_unique<MotorStateCommand>(Command::MotorRun));
+    dispatcher.add(std::make_unique<MonitorCommand>());
+    dispatcher.add(std::make_unique<EncodeCommand>());
+    dispatcher.add(std::make_unique<DecodeCommand>());
     return dispatcher.run(QCoreApplication::arguments().mid(1), console);
 }

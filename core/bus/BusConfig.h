@@ -6,7 +6,8 @@ namespace lk::bus {
 
 /// Tunables of one bus. The defaults suit a drive behind a USB-RS485 adapter.
 struct BusConfig {
-    int retries = 1;          ///< extra attempts after a timeout or a corrupt reply
+    int retries = 1; ///< extra attempts after a timeout or a corrupt reply (not for increments
+                     ///< and ROM writes, which are never repeated)
     int emergencyRetries = 2; ///< extra attempts for emergency motor_off
     /// The adapter echoes our own bytes back (some RS485 adapters without echo suppression).
     /// When set, a frame identical to the request just sent is skipped once even when the

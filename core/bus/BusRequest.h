@@ -21,6 +21,10 @@ struct BusRequest {
     Priority priority = Priority::Operator;
     int retries = -1; ///< < 0: BusConfig::retries
     RequestOrigin origin = RequestOrigin::User;
+    /// > 0: reply timeout of the first attempt, seconds, instead of the adaptive one. Scan
+    /// probes and emergency stops use a short one so that silent IDs cost little; retries
+    /// always wait the adaptive timeout.
+    double firstTimeoutS = 0;
 };
 
 /// A request waiting in a queue or on the wire, with its progress and its listener.

@@ -57,7 +57,9 @@ public:
     void setConfig(const BusConfig &config);
 
     /// Queue a request; returns its ticket, repeated in the requestCompleted it ends with.
-    /// `retries` < 0 uses BusConfig::retries. A closed session completes it as Disconnected.
+    /// `retries` < 0 uses BusConfig::retries; incremental moves and ROM writes are never
+    /// retried (the drive may have acted on the first one: read back instead). A closed
+    /// session completes it as Disconnected.
     quint64 send(const protocol::Request &request, Priority priority = Priority::Operator,
                  int retries = -1);
     /// Motor off to every ID in `ids` plus every known ID (all of 1..32 when none is known),

@@ -44,7 +44,7 @@ BusWorker::BusWorker(TransportFactory factory, int baud, const BusConfig &config
     m_pollTimer.setTimerType(Qt::PreciseTimer);
     m_telemetryTimer.setSingleShot(true);
     connect(&m_replyTimer, &QTimer::timeout, this, &BusWorker::onTimeout);
-    connect(&m_pollTimer, &QTimer::timeout, this, &BusWorker::pump);
+    connect(&m_pollTimer, &QTimer::timeout, this, &BusWorker::pumpNow);
     connect(&m_telemetryTimer, &QTimer::timeout, this, &BusWorker::flushTelemetry);
     connect(&m_statsTimer, &QTimer::timeout, this, &BusWorker::emitStatistics);
     connect(&m_trafficTimer, &QTimer::timeout, this, &BusWorker::flushTraffic);
@@ -118,6 +118,7 @@ bool BusWorker::reopenAt(int baud)
     abortInflight(RequestStatus::Cancelled,
                   QStringLiteral("the port was reopened at another baud"));
     m_matcher.reset();
+    m_recentLatency.clear(); // another baud, other latencies
     m_baud = baud;
     attachTransport(m_factory ? m_factory(baud) : nullptr);
     return openTransport();
@@ -214,8 +215,26 @@ void BusWorker::setConfig(const BusConfig &config)
         m_statsTimer.setInterval(static_cast<int>(1000.0 / std::max(0.1, config.statisticsHz)));
 }
 
+bool BusWorker::isRetrySafe(Command command)
+{
+    // A timeout does not mean the drive did not act: a repeated incremental move moves twice,
+    // a repeated ROM write wears the flash twice. The caller hears of the timeout and reads
+    // back instead. Everything else is idempotent (a target, a state, a read).
+    switch (command) {
+    case Command::IncrementPosition:
+    case Command::IncrementPositionLimited:
+    case Command::WritePidRom:
+    case Command::WriteZeroRom:
+        return false;
+    default:
+        return true;
+    }
+}
+
 int BusWorker::retriesFor(const BusRequest &r) const
 {
+    if (!isRetrySafe(r.request.command))
+        return 0;
     return r.retries >= 0 ? r.retries : m_config.retries;
 }
 
@@ -245,13 +264,26 @@ int BusWorker::queuedCount() const
 
 void BusWorker::schedulePump()
 {
-    if (m_pumpPosted || m_shutDown)
+    if (m_shutDown)
+        return;
+    // Completions run inside the parser's callback: the next write must not happen
+    // re-entrantly from there. onBytes() sends it once the parser is done with the chunk,
+    // without waiting for another turn of the event loop (that turn costs throughput).
+    if (m_inBytes && m_directPumps < kMaxDirectPumps) {
+        m_pumpWanted = true;
+        return;
+    }
+    if (m_pumpPosted)
         return;
     m_pumpPosted = true;
-    // Posted, not called: completions may run inside the parser's callback or a transport
-    // signal, and the next write must not happen re-entrantly from there.
     QMetaObject::invokeMethod(
-        this, [this] { pump(); }, Qt::QueuedConnection);
+        this,
+        [this] {
+            m_pumpPosted = false;
+            m_directPumps = 0; // the event loop had its turn
+            pumpNow();
+        },
+        Qt::QueuedConnection);
 }
 
 std::optional<BusWorker::Pending> BusWorker::takeNext()
@@ -277,9 +309,8 @@ std::optional<BusWorker::Pending> BusWorker::takeNext()
     return std::nullopt;
 }
 
-void BusWorker::pump()
+void BusWorker::pumpNow()
 {
-    m_pumpPosted = false;
     if (m_inflight || m_shutDown || !isOpen())
         return;
     if (std::optional<Pending> p = takeNext())
@@ -292,13 +323,22 @@ void BusWorker::sendAttempt(Pending p)
     const protocol::Request &r = p.req.request;
     m_stats.requestSent(r.id, p.attempts > 1);
     m_sentNs = m_clock.nsecsElapsed();
-    m_matcher.expect(r, p.bytes, m_sentNs);
+    m_matcher.expect(r, p.bytes, m_sentNs, m_sentNs + earliestReplyNs(r.command));
     recordTraffic(TrafficEvent::Kind::Sent, p.bytes, r.id, static_cast<quint8>(r.command));
-    const double timeoutS = m_timeout.timeoutS(r.command, baud());
+    const double timeoutS = p.attempts == 1 && p.req.firstTimeoutS > 0
+                                ? p.req.firstTimeoutS
+                                : m_timeout.timeoutS(r.command, baud());
     const QByteArray bytes = p.bytes;
     m_inflight = std::move(p);
     m_replyTimer.start(std::max(1, static_cast<int>(std::ceil(timeoutS * 1e3))));
     m_transport->write(bytes);
+}
+
+qint64 BusWorker::earliestReplyNs(Command command) const
+{
+    const double wireS = BusTiming::wireTimeS(BusTiming::requestBytes(command),
+                                              BusTiming::replyBytes(command), baud());
+    return static_cast<qint64>(m_recentLatency.earliestReplyS(wireS) * 1e9);
 }
 
 void BusWorker::onTimeout()
@@ -321,8 +361,13 @@ void BusWorker::failAttempt(RequestStatus status, const QString &reason)
     m_matcher.clear();
     m_replyTimer.stop();
     if (!p.noRetry && p.attempts <= retriesFor(p.req)) {
-        // Back to the head of its own lane: an emergency stop still overtakes a retry.
-        m_queue.pushFront(std::move(p));
+        // Back to the head of its own lane: an emergency stop still overtakes a retry. An
+        // emergency motor_off retries at the back instead, so that every drive hears its
+        // first "off" before any silent one is asked again.
+        if (p.req.priority == Priority::Emergency)
+            m_queue.push(std::move(p));
+        else
+            m_queue.pushFront(std::move(p));
     } else {
         complete(std::move(p), status, std::nullopt, reason, 0);
     }
@@ -375,7 +420,16 @@ void BusWorker::failAll(RequestStatus status, const QString &reason)
 
 void BusWorker::onBytes(const QByteArray &bytes)
 {
+    m_inBytes = true;
     m_parser.feed(bytes, [this](const protocol::ParseEvent &ev) { onParseEvent(ev); });
+    m_inBytes = false;
+    if (m_pumpWanted) {
+        // A transport that delivers at once (SimTransport without delays) would otherwise
+        // keep us inside its signal forever: every kMaxDirectPumps the event loop gets a turn.
+        m_pumpWanted = false;
+        ++m_directPumps;
+        pumpNow();
+    }
 }
 
 void BusWorker::onParseEvent(const protocol::ParseEvent &ev)
@@ -408,6 +462,7 @@ void BusWorker::onParseEvent(const protocol::ParseEvent &ev)
         // The link is slower than the margin assumed: let the margin learn from it.
         m_stats.lateReply(f.id);
         m_timeout.addReply(static_cast<Command>(f.command), baud(), out.lateLatencyS);
+        m_lateRequestSentS = std::max(m_lateRequestSentS, now() - out.lateLatencyS);
         return;
     case V::Unexpected:
         m_stats.unexpectedFrame(f.id);
@@ -421,6 +476,7 @@ void BusWorker::onParseEvent(const protocol::ParseEvent &ev)
 void BusWorker::completeWithReply(protocol::Reply reply)
 {
     const double latency = static_cast<double>(m_clock.nsecsElapsed() - m_sentNs) * 1e-9;
+    m_recentLatency.add(latency);
     m_stats.replyReceived(reply.id, latency);
     m_timeout.addReply(reply.command, baud(), latency);
     Pending p = std::move(*m_inflight);
@@ -457,7 +513,11 @@ void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids)
 {
     auto stop = std::make_shared<EmergencyStop>(ticket, m_motors.emergencyTargets(ids),
                                                 m_config.emergencyRetries);
-    const QVector<BusRequest> offs = stop->requests();
+    QVector<BusRequest> offs = stop->requests();
+    // The first "off" to each ID waits only as long as a drive on a fast link needs: every
+    // drive hears it quickly, and silent IDs are asked again at the back of the lane.
+    for (BusRequest &r : offs)
+        r.firstTimeoutS = probeTimeoutS(Command::MotorOff);
     qCInfo(lcBus) << "emergency stop to" << offs.size() << "ID(s)";
     cancelQueued([](const Pending &p) { return movesMotor(p.req.request.command); },
                  RequestStatus::Cancelled, QStringLiteral("cancelled by emergency stop"));
@@ -549,6 +609,22 @@ void BusWorker::learnModel(int id, const protocol::ModelInfo &model,
 {
     if (m_motors.learnModel(id, model, series))
         emit knownMotorsChanged(m_motors.all());
+}
+
+void BusWorker::noteMotor(int id)
+{
+    if (m_motors.noteSeen(id))
+        emit knownMotorsChanged(m_motors.all());
+}
+
+double BusWorker::probeTimeoutS(Command command) const
+{
+    return BusTiming::replyTimeoutS(command, baud(), m_config.minMarginMs * 1e-3);
+}
+
+quint64 BusWorker::lateReplyCount() const
+{
+    return m_stats.busCounters().lateReplies;
 }
 
 void BusWorker::forgetMotors()

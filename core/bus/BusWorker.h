@@ -10,6 +10,7 @@
 #include "PollPlan.h"
 #include "PollScheduler.h"
 #include "Priority.h"
+#include "RecentLatency.h"
 #include "ReplyMatcher.h"
 #include "RequestQueue.h"
 #include "RequestResult.h"
@@ -40,6 +41,9 @@ class Scanner;
 /// and ID; the timeout comes from BusTiming plus an adaptive margin; queues run Emergency >
 /// Operator > Background, then the poll scheduler fills idle time. Every request completes
 /// exactly once: through its callback when it has one, else through requestCompleted.
+///
+/// Retries (BusConfig::retries, BusRequest::retries) never apply to incremental moves or ROM
+/// writes: a drive that acted but whose reply was lost would move twice or write flash twice.
 ///
 /// Local echo: a frame byte-identical to the request just sent is skipped when its layout is
 /// a request's (it cannot be the reply). For commands whose reply is an echo of the request
@@ -76,6 +80,8 @@ public:
     void setSeries(int id, protocol::Series series);
     void learnModel(int id, const protocol::ModelInfo &model,
                     std::optional<protocol::Series> series);
+    /// Make `id` known without a model (a drive answered but its model could not be read).
+    void noteMotor(int id);
     void forgetMotors();
     void forgetMotors(int firstId, int lastId);
     void setTrafficCapture(bool enabled);
@@ -90,6 +96,15 @@ public:
     int queuedCount() const;
     bool isBusy() const { return m_inflight.has_value(); }
     double currentMarginMs() const { return m_timeout.marginS() * 1e3; }
+    /// The shortest sensible reply timeout: wire time + turnaround + BusConfig::minMarginMs,
+    /// for probes where silence is the common answer (scan pass 1, emergency stop).
+    double probeTimeoutS(protocol::Command command) const;
+    /// Replies that came after their request had timed out, since the last reset.
+    quint64 lateReplyCount() const;
+    /// When the latest-sent request that got a late reply went out (session clock, seconds;
+    /// -1: none yet). A scan pass asks whether one of its own probes was answered late.
+    double lateRequestSentTime() const { return m_lateRequestSentS; }
+    const BusConfig &config() const { return m_config; }
     /// The statistics now (also emitted by statisticsUpdated at BusConfig::statisticsHz).
     BusStatistics statisticsSnapshot();
 
@@ -122,9 +137,11 @@ private:
     void onTransportError(const transport::TransportError &error);
     void reportConnection(const QString &reason = {});
     void schedulePump();
-    void pump();
+    void pumpNow();
     std::optional<Pending> takeNext();
     void sendAttempt(Pending p);
+    /// How soon after a send a reply can physically arrive (for the matcher), nanoseconds.
+    qint64 earliestReplyNs(protocol::Command command) const;
     void onTimeout();
     void failAttempt(RequestStatus status, const QString &reason);
     void complete(Pending p, RequestStatus status, std::optional<protocol::Reply> reply,
@@ -142,6 +159,8 @@ private:
                        const QString &text = {});
     void setPollingSuspended(bool suspended);
     int retriesFor(const BusRequest &r) const;
+    /// Whether sending `command` again after a timeout or a corrupt reply is harmless.
+    static bool isRetrySafe(protocol::Command command);
 
     TransportFactory m_factory;
     int m_baud;
@@ -154,10 +173,16 @@ private:
     std::optional<Pending> m_inflight;
     qint64 m_sentNs = 0;
     ReplyMatcher m_matcher;
+    static constexpr int kMaxDirectPumps = 64;
     bool m_pumpPosted = false;
+    bool m_inBytes = false;    ///< inside onBytes(): the parser is delivering events
+    bool m_pumpWanted = false; ///< a completion inside onBytes() asked for the next send
+    int m_directPumps = 0;     ///< sends started from onBytes() since the event loop's turn
     bool m_shutDown = false;
 
     AdaptiveTimeout m_timeout;
+    RecentLatency m_recentLatency;
+    double m_lateRequestSentS = -1;
     StatisticsCollector m_stats;
     TrafficRecorder m_traffic;
     PollScheduler m_poller;

@@ -29,7 +29,12 @@ QVector<BusRequest> EmergencyStop::requests() const
 bool EmergencyStop::record(const RequestResult &result)
 {
     (result.ok() ? m_acknowledged : m_silent).append(result.request.id);
-    return --m_remaining == 0;
+    if (--m_remaining > 0)
+        return false;
+    // Retries go to the back of the lane, so completions come in no useful order.
+    std::sort(m_acknowledged.begin(), m_acknowledged.end());
+    std::sort(m_silent.begin(), m_silent.end());
+    return true;
 }
 
 } // namespace lk::bus

@@ -14,7 +14,8 @@ public:
     EmergencyStop(quint64 ticket, QVector<int> targets, int retries);
 
     QVector<BusRequest> requests() const;
-    /// Count one motor_off result; true when it was the last one.
+    /// Count one motor_off result; true when it was the last one (then both lists are in
+    /// ascending ID order).
     bool record(const RequestResult &result);
 
     quint64 ticket() const { return m_ticket; }

@@ -1,24 +1,55 @@
 #include "ReplyMatcher.h"
 
+#include <algorithm>
+#include <iterator>
+
 namespace lk::bus {
 
 using protocol::FrameDirection;
 
-void ReplyMatcher::expect(const protocol::Request &request, const QByteArray &bytes, qint64 sentNs)
+void ReplyMatcher::expect(const protocol::Request &request, const QByteArray &bytes, qint64 sentNs,
+                          qint64 earliestReplyNs)
 {
-    m_expected = Expected{static_cast<quint8>(request.command), request.id, bytes, sentNs, false};
+    m_expected = Expected{
+        static_cast<quint8>(request.command), request.id, bytes, sentNs, false, earliestReplyNs};
 }
 
 void ReplyMatcher::timedOut()
 {
-    m_timedOut = m_expected;
+    // A retry of a request already remembered keeps the older entry: a late reply then
+    // measures the longer latency, and the margin errs on the safe side.
+    const bool known =
+        m_expected &&
+        std::any_of(m_timedOut.cbegin(), m_timedOut.cend(), [this](const Expected &e) {
+            return e.id == m_expected->id && e.command == m_expected->command;
+        });
+    if (m_expected && !known) {
+        m_timedOut.push_back(*m_expected);
+        if (m_timedOut.size() > size_t(kMaxTimedOut))
+            m_timedOut.pop_front();
+    }
     m_expected.reset();
 }
 
 void ReplyMatcher::reset()
 {
     m_expected.reset();
-    m_timedOut.reset();
+    m_timedOut.clear();
+}
+
+std::optional<ReplyMatcher::Expected> ReplyMatcher::takeTimedOut(const protocol::Frame &f,
+                                                                 qint64 nowNs)
+{
+    while (!m_timedOut.empty() && nowNs - m_timedOut.front().sentNs >= kLateWindowNs)
+        m_timedOut.pop_front();
+    for (auto it = m_timedOut.rbegin(); it != m_timedOut.rend(); ++it) {
+        if (it->id == f.id && it->command == f.command) {
+            Expected e = *it;
+            m_timedOut.erase(std::next(it).base());
+            return e;
+        }
+    }
+    return std::nullopt;
 }
 
 bool ReplyMatcher::isLocalEcho(const protocol::ParseEvent &event)
@@ -46,6 +77,16 @@ ReplyMatcher::Outcome ReplyMatcher::classify(const protocol::ParseEvent &event,
         return out;
     }
     const protocol::Frame &f = event.frame;
+    if (matches(m_expected, f) && event.direction != FrameDirection::Request &&
+        nowNs < m_expected->earliestReplyNs) {
+        // Too soon to be the answer to what was just sent: the late answer to the same
+        // request sent before (which timed out), if there was one.
+        if (const std::optional<Expected> late = takeTimedOut(f, nowNs)) {
+            out.verdict = Verdict::LateReply;
+            out.lateLatencyS = static_cast<double>(nowNs - late->sentNs) * 1e-9;
+            return out;
+        }
+    }
     if (matches(m_expected, f)) {
         if (isLocalEcho(event)) {
             out.verdict = Verdict::LocalEcho;
@@ -58,12 +99,12 @@ ReplyMatcher::Outcome ReplyMatcher::classify(const protocol::ParseEvent &event,
             return out;
         }
     }
-    if (matches(m_timedOut, f) && event.direction != FrameDirection::Request &&
-        nowNs - m_timedOut->sentNs < kLateWindowNs) {
-        out.verdict = Verdict::LateReply;
-        out.lateLatencyS = static_cast<double>(nowNs - m_timedOut->sentNs) * 1e-9;
-        m_timedOut.reset();
-        return out;
+    if (event.direction != FrameDirection::Request) {
+        if (const std::optional<Expected> late = takeTimedOut(f, nowNs)) {
+            out.verdict = Verdict::LateReply;
+            out.lateLatencyS = static_cast<double>(nowNs - late->sentNs) * 1e-9;
+            return out;
+        }
     }
     out.verdict = Verdict::Unexpected;
     return out;

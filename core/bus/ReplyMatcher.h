@@ -6,6 +6,7 @@
 
 #include <QtCore/QByteArray>
 
+#include <deque>
 #include <optional>
 
 namespace lk::bus {
@@ -36,13 +37,20 @@ public:
         double lateLatencyS = 0;              ///< LateReply only: since the timed-out send
     };
     static constexpr qint64 kLateWindowNs = 1'000'000'000; ///< later than 1 s is noise
+    /// Timed-out requests remembered for late replies. A scan's first pass times out every
+    /// ID quickly, so behind a slow adapter a reply can arrive several probes later.
+    static constexpr int kMaxTimedOut = 32;
 
     void setLocalEcho(bool on) { m_localEcho = on; }
-    /// A request went on the wire at `sentNs`.
-    void expect(const protocol::Request &request, const QByteArray &bytes, qint64 sentNs);
+    /// A request went on the wire at `sentNs`. A matching frame before `earliestReplyNs`
+    /// came too soon to answer it (the bytes cannot have crossed the wire yet): when the same
+    /// request timed out before, that frame is the late reply to the earlier one.
+    void expect(const protocol::Request &request, const QByteArray &bytes, qint64 sentNs,
+                qint64 earliestReplyNs = 0);
     /// The request ended (reply, failure or cancellation): nothing is expected any more.
     void clear() { m_expected.reset(); }
-    /// The request on the wire timed out: a reply to it may still arrive late.
+    /// The request on the wire timed out: a reply to it may still arrive late (within
+    /// kLateWindowNs; the last kMaxTimedOut such requests are remembered).
     void timedOut();
     /// The link was reopened: nothing old can arrive any more.
     void reset();
@@ -58,15 +66,18 @@ private:
         QByteArray bytes;
         qint64 sentNs = 0;
         bool echoSkipped = false;
+        qint64 earliestReplyNs = 0;
     };
     bool matches(const std::optional<Expected> &e, const protocol::Frame &f) const
     {
         return e && e->id == f.id && e->command == f.command;
     }
     bool isLocalEcho(const protocol::ParseEvent &event);
+    /// Take the timed-out request `f` answers, newest first; drops entries past the window.
+    std::optional<Expected> takeTimedOut(const protocol::Frame &f, qint64 nowNs);
 
     std::optional<Expected> m_expected;
-    std::optional<Expected> m_timedOut;
+    std::deque<Expected> m_timedOut; ///< oldest first
     bool m_localEcho = false;
 };
 

@@ -17,10 +17,13 @@ struct ScanOptions {
     int lastId = 32;
     bool sweepBauds = false; ///< reopen the transport at each baud in `bauds`
     QVector<int> bauds;      ///< empty: all nine LK bauds, fastest last
-    /// Extra read_model attempts for a silent ID. Silence means "absent", so 0 keeps a scan
-    /// fast; a corrupt reply (someone is there) is always probed again, up to twice.
+    /// Silent IDs are probed again after the fast first pass with the full adaptive timeout:
+    /// always when retries > 0 (with retries - 1 extra attempts each), and with 0 only when
+    /// the first pass heard a late reply (the link is slower than assumed). A corrupt reply
+    /// (someone is there) is always probed again at once, up to twice.
     int retries = 0;
-    bool readState = true; ///< also read_state1 from each ID that answers
+    /// Keep the read_state1 probe's answer in FoundMotor::state1 (the probe is sent anyway).
+    bool readState = true;
 };
 
 /// Where a scan is (BusSession::scanProgress), after each probed ID.

@@ -10,11 +10,19 @@
 #include <QtCore/QMap>
 #include <QtCore/QMetaObject>
 
+#include <algorithm>
+#include <cmath>
+
 namespace lk::bus {
 
 using protocol::Command;
 
-Scanner::Scanner(BusWorker &worker, QObject *parent) : QObject(parent), m_worker(worker) {}
+Scanner::Scanner(BusWorker &worker, QObject *parent) : QObject(parent), m_worker(worker)
+{
+    m_grace.setSingleShot(true);
+    m_grace.setTimerType(Qt::PreciseTimer);
+    connect(&m_grace, &QTimer::timeout, this, &Scanner::afterGrace);
+}
 
 std::optional<protocol::Series> Scanner::inferSeries(const protocol::ModelInfo &model)
 {
@@ -68,11 +76,18 @@ void Scanner::start(const ScanOptions &options)
 
 void Scanner::beginBaud()
 {
-    m_id = m_options.firstId;
     if (!m_options.sweepBauds || (m_worker.isOpen() && m_worker.baud() == currentBaud())) {
-        probe();
+        QVector<int> ids;
+        for (int id = m_options.firstId; id <= m_options.lastId; ++id)
+            ids.append(id);
+        beginPass(1, ids);
         return;
     }
+    reopenAndBegin();
+}
+
+void Scanner::reopenAndBegin()
+{
     // Replace the transport from the event loop, never from inside a completion callback
     // (that may run within the old transport's own signal).
     m_reopening = true;
@@ -90,29 +105,46 @@ void Scanner::beginBaud()
             const bool ok = m_worker.reopenAt(currentBaud());
             m_reopening = false;
             if (ok) {
-                probe();
+                QVector<int> ids;
+                for (int id = m_options.firstId; id <= m_options.lastId; ++id)
+                    ids.append(id);
+                beginPass(1, ids);
                 return;
             }
             qCWarning(lcBus) << "scan: cannot open at" << currentBaud() << "baud";
             m_done += m_options.lastId - m_options.firstId + 1;
-            ++m_baudIndex;
-            if (m_baudIndex < m_bauds.size())
-                beginBaud();
-            else
-                endOfBauds();
+            nextBaud();
         },
         Qt::QueuedConnection);
 }
 
-void Scanner::submitScanRequest(Command command, int retries,
+void Scanner::beginPass(int pass, QVector<int> ids)
+{
+    m_pass = pass;
+    m_ids = std::move(ids);
+    m_index = 0;
+    m_silent.clear();
+    m_reprobes = 0;
+    m_passStart = m_worker.now();
+    qCDebug(lcBus) << "scan pass" << pass << "at" << currentBaud() << "baud:" << m_ids.size()
+                   << "IDs, margin" << m_worker.currentMarginMs() << "ms";
+    if (m_ids.isEmpty()) {
+        endPass();
+        return;
+    }
+    probe();
+}
+
+void Scanner::submitScanRequest(Command command, int retries, double firstTimeoutS,
                                 std::function<void(const RequestResult &)> done)
 {
     BusRequest r;
     r.request.command = command;
-    r.request.id = static_cast<quint8>(m_id);
+    r.request.id = static_cast<quint8>(currentId());
     r.priority = Priority::Operator;
     r.retries = retries;
     r.origin = RequestOrigin::Scan;
+    r.firstTimeoutS = firstTimeoutS;
     const quint64 gen = m_generation;
     m_waiting = true;
     m_worker.submit(r, [this, gen, done = std::move(done)](const RequestResult &res) {
@@ -137,57 +169,125 @@ void Scanner::probe()
         finish();
         return;
     }
-    submitScanRequest(Command::ReadModel, std::max(0, m_options.retries),
-                      [this](const RequestResult &r) { onModel(r); });
+    // Pass 1: the short probe timeout, no retry. Later passes: the adaptive timeout, which
+    // has learned from the late replies that made them necessary.
+    const bool fast = m_pass == 1;
+    const int retries = fast ? 0 : std::max(0, m_options.retries - 1);
+    const double timeout = fast ? m_worker.probeTimeoutS(Command::ReadState1) : 0;
+    submitScanRequest(Command::ReadState1, retries, timeout,
+                      [this](const RequestResult &r) { onProbe(r); });
 }
 
-void Scanner::onModel(const RequestResult &r)
+void Scanner::onProbe(const RequestResult &r)
 {
     if (r.status == RequestStatus::Error && m_reprobes < kMaxReprobes) {
         ++m_reprobes; // a corrupt reply: a drive is there, on a noisy line
         probe();
         return;
     }
-    if (!r.ok() || !r.reply || !std::holds_alternative<protocol::ModelInfo>(r.reply->payload)) {
-        advance();
+    if (!r.ok() || !r.reply || !std::holds_alternative<protocol::State1>(r.reply->payload)) {
+        m_silent.append(currentId());
+        next();
         return;
     }
     FoundMotor m;
-    m.id = m_id;
+    m.id = currentId();
     m.baud = currentBaud();
-    m.model = std::get<protocol::ModelInfo>(r.reply->payload);
-    m.series = inferSeries(m.model);
-    m_worker.learnModel(m.id, m.model, m.series);
-    if (!m_options.readState) {
-        onState(RequestResult{}, m);
-        return;
-    }
-    submitScanRequest(Command::ReadState1, 1,
-                      [this, m](const RequestResult &res) { onState(res, m); });
+    if (m_options.readState)
+        m.state1 = std::get<protocol::State1>(r.reply->payload);
+    // A drive is there: its model is worth a retry and the adaptive timeout.
+    submitScanRequest(Command::ReadModel, 1, 0,
+                      [this, m](const RequestResult &res) { onModel(res, m); });
 }
 
-void Scanner::onState(const RequestResult &r, FoundMotor motor)
+void Scanner::onModel(const RequestResult &r, FoundMotor motor)
 {
-    if (r.ok() && r.reply && std::holds_alternative<protocol::State1>(r.reply->payload))
-        motor.state1 = std::get<protocol::State1>(r.reply->payload);
-    m_found.append(motor);
-    emit found(motor);
-    advance();
+    if (r.ok() && r.reply && std::holds_alternative<protocol::ModelInfo>(r.reply->payload)) {
+        motor.model = std::get<protocol::ModelInfo>(r.reply->payload);
+        motor.series = inferSeries(motor.model);
+        m_worker.learnModel(motor.id, motor.model, motor.series);
+    } else {
+        // It answered read_state1, so it is there; its model stays unknown.
+        qCWarning(lcBus) << "scan: ID" << motor.id
+                         << "answered but its model could not be read:" << r.reason;
+        m_worker.noteMotor(motor.id);
+    }
+    addFound(motor);
+    next();
 }
 
-void Scanner::advance()
+void Scanner::addFound(FoundMotor motor)
+{
+    const auto at = std::find_if(m_found.begin(), m_found.end(), [&motor](const FoundMotor &f) {
+        return f.baud > motor.baud || (f.baud == motor.baud && f.id > motor.id);
+    });
+    m_found.insert(at, motor);
+    emit found(motor);
+}
+
+void Scanner::next()
 {
     m_reprobes = 0;
-    ++m_done;
-    emit progress(ScanProgress{currentBaud(), m_id, m_done, m_total, int(m_found.size())});
+    if (m_pass == 1) {
+        ++m_done;
+        emit progress(
+            ScanProgress{currentBaud(), currentId(), m_done, m_total, int(m_found.size())});
+    }
     if (m_cancelled) {
         finish();
         return;
     }
-    if (++m_id <= m_options.lastId) {
+    if (++m_index < m_ids.size()) {
         probe();
         return;
     }
+    endPass();
+}
+
+void Scanner::endPass()
+{
+    if (m_silent.isEmpty() || m_pass >= kMaxPasses) {
+        nextBaud();
+        return;
+    }
+    // Only late replies to this pass's own probes count: those of pass 1 still trickle in
+    // while pass 2 runs, and must not call for a third pass.
+    const bool late = m_worker.lateRequestSentTime() >= m_passStart;
+    if (m_pass == 1 && (late || m_options.retries > 0)) {
+        beginPass(2, m_silent);
+        return;
+    }
+    if (m_pass > 1) {
+        if (late)
+            beginPass(m_pass + 1, m_silent);
+        else
+            nextBaud();
+        return;
+    }
+    // Pass 1 heard no late reply yet, but the last probes' replies may still be on their way
+    // through a slow adapter: listen a little before calling the silent IDs absent.
+    const BusConfig &c = m_worker.config();
+    const double graceMs =
+        std::min(c.maxMarginMs, std::max(m_worker.currentMarginMs(), c.initialMarginMs));
+    m_grace.start(std::max(1, static_cast<int>(std::ceil(graceMs))));
+}
+
+void Scanner::afterGrace()
+{
+    if (!m_running)
+        return;
+    if (m_cancelled || !m_error.isEmpty()) {
+        finish();
+        return;
+    }
+    if (m_worker.lateRequestSentTime() >= m_passStart)
+        beginPass(2, m_silent);
+    else
+        nextBaud();
+}
+
+void Scanner::nextBaud()
+{
     if (++m_baudIndex < m_bauds.size())
         beginBaud();
     else
@@ -255,6 +355,7 @@ void Scanner::finish()
     if (!m_running)
         return;
     m_running = false;
+    m_grace.stop();
     ++m_generation;
     ScanSummary s;
     s.cancelled = m_cancelled && m_error.isEmpty();
@@ -265,8 +366,12 @@ void Scanner::finish()
         // A complete scan is the truth for its range: forget IDs that did not answer there.
         m_worker.forgetMotors(m_options.firstId, m_options.lastId);
         for (const FoundMotor &m : m_found) {
-            if (m.baud == s.finalBaud)
+            if (m.baud != s.finalBaud)
+                continue;
+            if (m.series || !m.model.driverName.isEmpty() || !m.model.motorName.isEmpty())
                 m_worker.learnModel(m.id, m.model, m.series);
+            else
+                m_worker.noteMotor(m.id);
         }
     }
     s.motors = m_found;

@@ -5,21 +5,36 @@
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QObject>
+#include <QtCore/QTimer>
 #include <QtCore/QVector>
+
+#include <functional>
 
 namespace lk::bus {
 
 class BusWorker;
 
-/// Finds drives: read_model (0x12) to each ID of a range, then read_state1 (0x9A) from each
-/// one that answers, optionally at each of the nine bauds. Runs on the bus thread through the
-/// worker's queue (Operator priority; polling pauses meanwhile). After a complete scan the
-/// worker knows exactly the drives found in the range (series inferred from the model name).
-/// A baud sweep ends at the baud where most drives answered (the original baud on a tie).
+/// Finds drives on IDs of a range, optionally at each of the nine bauds. Runs on the bus
+/// thread through the worker's queue (Operator priority; polling pauses meanwhile). After a
+/// complete scan the worker knows exactly the drives found in the range (series inferred
+/// from the model name). A baud sweep ends at the baud where most drives answered (the
+/// original baud on a tie).
+///
+/// Two passes per baud, because a silent ID costs a whole timeout and most IDs are silent:
+/// 1. every ID gets read_state1 (0x9A, the shortest reply every series sends) with the probe
+///    timeout: wire time + 0.5 ms turnaround + BusConfig::minMarginMs, no retry. An ID that
+///    answers is then asked read_model (0x12) with the adaptive timeout.
+/// 2. silent IDs are probed again with the adaptive timeout (which has learned from any late
+///    reply) when pass 1 heard a reply after its timeout, i.e. the link is slower than the
+///    probe timeout assumed (a USB adapter's 1-16 ms latency), or when ScanOptions::retries
+///    asks for it. Before deciding, a scan with silent IDs listens for stragglers for
+///    max(adaptive margin, BusConfig::initialMarginMs). A third pass follows only if pass 2
+///    itself heard late replies.
 class Scanner : public QObject {
     Q_OBJECT
 public:
-    static constexpr int kMaxReprobes = 2;
+    static constexpr int kMaxReprobes = 2; ///< immediate re-probes after a corrupt reply
+    static constexpr int kMaxPasses = 3;
 
     Scanner(BusWorker &worker, QObject *parent = nullptr);
 
@@ -43,28 +58,40 @@ signals:
 
 private:
     void beginBaud();
+    void reopenAndBegin();
+    void beginPass(int pass, QVector<int> ids);
     void probe();
-    void onModel(const RequestResult &r);
-    void onState(const RequestResult &r, FoundMotor motor);
-    void advance();
+    void onProbe(const RequestResult &r);
+    void onModel(const RequestResult &r, FoundMotor motor);
+    void addFound(FoundMotor motor);
+    void next();
+    void endPass();
+    void afterGrace();
+    void nextBaud();
     void endOfBauds();
     void stop(bool cancelled, const QString &error);
     void finish();
-    void submitScanRequest(protocol::Command command, int retries,
+    void submitScanRequest(protocol::Command command, int retries, double firstTimeoutS,
                            std::function<void(const RequestResult &)> done);
     int currentBaud() const { return m_bauds.value(m_baudIndex); }
+    int currentId() const { return m_ids.value(m_index); }
 
     BusWorker &m_worker;
     ScanOptions m_options;
     QVector<int> m_bauds;
     int m_baudIndex = 0;
-    int m_id = 0;
+    int m_pass = 1;
+    QVector<int> m_ids;     ///< IDs of the current pass
+    int m_index = 0;        ///< into m_ids
+    QVector<int> m_silent;  ///< IDs of the current pass that did not answer
+    double m_passStart = 0; ///< session time the pass began: its late replies count
     int m_done = 0;
     int m_reprobes = 0; ///< re-probes of the current ID after corrupt replies
     int m_total = 0;
     int m_originalBaud = 0;
     QVector<FoundMotor> m_found;
     QElapsedTimer m_elapsed;
+    QTimer m_grace;           ///< listening for late replies after pass 1
     quint64 m_generation = 0; ///< callbacks of an older scan are ignored
     bool m_running = false;
     bool m_waiting = false; ///< one of our requests is queued or on the wire

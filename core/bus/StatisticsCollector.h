@@ -27,6 +27,8 @@ public:
 
     /// Snapshot; transactions/s cover the time since the previous snapshot.
     BusStatistics snapshot(double now);
+    /// The bus-wide counters now (latency and rate are filled in by snapshot() only).
+    const LinkStatistics &busCounters() const { return m_bus.stats; }
 
 private:
     struct Counters {

@@ -2,10 +2,13 @@
 
 #include <bus/BusMetaTypes.h>
 #include <bus/BusWorker.h>
+#include <protocol/RequestBuilder.h>
 
 #include <QtCore/QElapsedTimer>
 #include <QtTest/QSignalSpy>
 #include <QtTest/QTest>
+
+Q_DECLARE_METATYPE(lk::protocol::Request)
 
 using namespace lk;
 using namespace lk::bus;
@@ -24,6 +27,8 @@ private slots:
     void timeoutThenRetry_data();
     void timeoutThenRetry();
     void retryRecoversAfterSilence();
+    void nonIdempotentCommandsAreNeverRetried_data();
+    void nonIdempotentCommandsAreNeverRetried();
     void silentCommandDoesNotStall();
     void operatorAheadOfBackground();
     void emergencyStopOvertakesEverything();
@@ -116,6 +121,34 @@ void tst_BusWorker::retryRecoversAfterSilence()
              qint64(-12345));
 }
 
+void tst_BusWorker::nonIdempotentCommandsAreNeverRetried_data()
+{
+    QTest::addColumn<protocol::Request>("request");
+    QTest::addColumn<int>("attempts");
+    using namespace protocol::build;
+    QTest::newRow("increment") << *incrementPosition(9, 45).request << 1;
+    QTest::newRow("increment limited") << *incrementPosition(9, -45, 90).request << 1;
+    QTest::newRow("write_pid_rom") << *writePid(9, {1, 2, 3, 4, 5, 6}, true).request << 1;
+    QTest::newRow("write_zero_rom") << *plain(Command::WriteZeroRom, 9).request << 1;
+    // Idempotent ones keep their retries: a repeated target or read changes nothing.
+    QTest::newRow("multi position") << *multiPosition(9, 45).request << 3;
+    QTest::newRow("write_pid_ram") << *writePid(9, {1, 2, 3, 4, 5, 6}, false).request << 3;
+}
+
+void tst_BusWorker::nonIdempotentCommandsAreNeverRetried()
+{
+    QFETCH(protocol::Request, request);
+    QFETCH(int, attempts);
+    BusConfig c = relaxedConfig();
+    c.minMarginMs = c.initialMarginMs = 10;
+    WorkerRig rig({}, c); // ID 9 is silent: every attempt times out
+    const quint64 t = rig.send(request, Priority::Operator, 2);
+    QTRY_VERIFY_WITH_TIMEOUT(rig.result(t), 10000);
+    QCOMPARE(rig.result(t)->status, RequestStatus::Timeout);
+    QCOMPARE(rig.result(t)->attempts, attempts);
+    QCOMPARE(rig.log->writtenCopy().size(), attempts);
+}
+
 void tst_BusWorker::silentCommandDoesNotStall()
 {
     // An MS drive does not answer read_state3: that is a timeout, and the queue moves on.
@@ -196,11 +229,18 @@ void tst_BusWorker::emergencyStopWithNoKnownIdReachesAll()
     QCOMPARE(acked.size() + silent.size(), 32);
     QVERIFY(acked.contains(7));
     QSet<int> reached;
-    for (const auto &w : rig.writtenRequests()) {
+    const auto written = rig.writtenRequests();
+    for (const auto &w : written) {
         QCOMPARE(w.first, Command::MotorOff);
         reached.insert(w.second);
     }
     QCOMPARE(reached.size(), 32);
+    // Every ID hears its first "off" before any silent one is asked again.
+    QSet<int> first;
+    for (int i = 0; i < 32; ++i)
+        first.insert(written.at(i).second);
+    QCOMPARE(first.size(), 32);
+    QVERIFY(written.size() > 32); // the silent ones were retried
 }
 
 void tst_BusWorker::faultsAreCountedNotFatal_data()

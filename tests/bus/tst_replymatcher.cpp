@@ -47,6 +47,9 @@ private slots:
     void classify_data();
     void classify();
     void lateReplyWindow();
+    void lateReplyToAnOlderProbe();
+    void tooSoonIsTheEarlierRequestsReply_data();
+    void tooSoonIsTheEarlierRequestsReply();
 };
 
 void tst_ReplyMatcher::classify_data()
@@ -124,6 +127,53 @@ void tst_ReplyMatcher::lateReplyWindow()
     QCOMPARE(late.lateLatencyS, 0.05);
     m.reset();
     QCOMPARE(m.classify(ev, {}, 60'000'000).verdict, V::Unexpected);
+}
+
+void tst_ReplyMatcher::lateReplyToAnOlderProbe()
+{
+    // A scan's first pass times out ID after ID; behind a slow adapter the reply to ID 3
+    // arrives while ID 6 is on the wire. It is still recognised as late (and measured).
+    ReplyMatcher m;
+    qint64 t = 0;
+    for (int id = 3; id <= 6; ++id) {
+        const auto r = request(Command::ReadState2, id);
+        m.expect(r, r.encode(), t);
+        if (id < 6)
+            m.timedOut();
+        t += 5'000'000;
+    }
+    const auto late = m.classify(parse(state2Reply(3)).at(0), {}, 16'000'000);
+    QCOMPARE(late.verdict, V::LateReply);
+    QCOMPARE(late.lateLatencyS, 0.016);
+    QCOMPARE(m.classify(parse(state2Reply(4)).at(0), {}, 17'000'000).verdict, V::LateReply);
+    QCOMPARE(m.classify(parse(state2Reply(3)).at(0), {}, 18'000'000).verdict, V::Unexpected);
+    QCOMPARE(m.classify(parse(state2Reply(6)).at(0), {}, 19'000'000).verdict, V::Reply);
+}
+
+void tst_ReplyMatcher::tooSoonIsTheEarlierRequestsReply_data()
+{
+    QTest::addColumn<bool>("timedOutBefore");
+    QTest::addColumn<qint64>("arrivalNs");
+    QTest::addColumn<V>("verdict");
+    // The request goes out at 10 ms; its reply cannot arrive before 11.5 ms.
+    QTest::newRow("too soon, earlier one timed out") << true << qint64(10'200'000) << V::LateReply;
+    QTest::newRow("in time, earlier one timed out") << true << qint64(12'000'000) << V::Reply;
+    QTest::newRow("too soon, nothing timed out") << false << qint64(10'200'000) << V::Reply;
+}
+
+void tst_ReplyMatcher::tooSoonIsTheEarlierRequestsReply()
+{
+    QFETCH(bool, timedOutBefore);
+    QFETCH(qint64, arrivalNs);
+    QFETCH(V, verdict);
+    ReplyMatcher m;
+    const auto s2 = request(Command::ReadState2, 3);
+    if (timedOutBefore) {
+        m.expect(s2, s2.encode(), 0, 1'500'000);
+        m.timedOut();
+    }
+    m.expect(s2, s2.encode(), 10'000'000, 11'500'000);
+    QCOMPARE(m.classify(parse(state2Reply(3)).at(0), {}, arrivalNs).verdict, verdict);
 }
 
 QTEST_APPLESS_MAIN(tst_ReplyMatcher)

@@ -55,6 +55,8 @@ private slots:
     void scanBaudSweepStaysWhereDrivesAnswer();
     void scanRejectsBadRange();
     void scanReprobesACorruptReply();
+    void scanFastLinkProbesEachIdOnce();
+    void scanSlowLinkIsCompleteWithSecondPass();
     void pollingSkipsUnsupportedAndBatches();
     void pollingContinuesPastSilentCommands();
     void pollingHonoursRateAndStops();
@@ -122,16 +124,17 @@ void tst_ScanPoll::scanFindsExactlyTheAnsweringIds()
     QCOMPARE(progress.last().at(0).value<ScanProgress>().total, 32);
     QCOMPARE(rig.worker->knownMotors().keys(), (QList<int>{3, 17, 32}));
     QCOMPARE(rig.worker->seriesOf(17), std::optional<Series>(Series::MS));
-    // Every ID was asked for its model; only the answering ones for state1.
+    // Every ID was probed with read_state1; only the answering ones were asked their model.
     QSet<int> asked;
-    int state1 = 0;
+    QSet<int> models;
     for (const auto &w : rig.writtenRequests()) {
-        if (w.first == Command::ReadModel)
+        if (w.first == Command::ReadState1)
             asked.insert(w.second);
-        state1 += w.first == Command::ReadState1 ? 1 : 0;
+        if (w.first == Command::ReadModel)
+            models.insert(w.second);
     }
     QCOMPARE(asked.size(), 32);
-    QCOMPARE(state1, 3);
+    QCOMPARE(models, (QSet<int>{3, 17, 32}));
 }
 
 void tst_ScanPoll::scanHonoursCancel()
@@ -230,6 +233,49 @@ void tst_ScanPoll::scanReprobesACorruptReply()
     QCOMPARE(summary.motors.at(0).id, 2);
     QCOMPARE(summary.motors.at(0).series, std::optional<Series>(Series::MH));
     QCOMPARE(rig.worker->statisticsSnapshot().bus.checksumErrors, quint64(1));
+}
+
+void tst_ScanPoll::scanFastLinkProbesEachIdOnce()
+{
+    WorkerRig rig(addDrives, scanConfig());
+    QSignalSpy finished(rig.worker.get(), &BusWorker::scanFinished);
+    rig.worker->scan(ScanOptions{});
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 60000);
+    int probes = 0;
+    for (const auto &w : rig.writtenRequests())
+        probes += w.first == Command::ReadState1 ? 1 : 0;
+    // No late reply, no second pass: one probe per ID. (A reply delayed past the timeout by
+    // a loaded machine is a late reply, and then the second pass is right to run.)
+    if (rig.worker->lateReplyCount() == 0)
+        QCOMPARE(probes, 32);
+    QVERIFY(finished.at(0).at(0).value<ScanSummary>().motors.size() <= 3);
+}
+
+void tst_ScanPoll::scanSlowLinkIsCompleteWithSecondPass()
+{
+    // An adapter that delivers every reply 40 ms late: the first pass's short timeouts miss
+    // them all, the late replies teach the margin, the second pass finds every drive.
+    BusConfig c = relaxedConfig();
+    c.minMarginMs = 5;
+    c.initialMarginMs = 20;
+    WorkerRig rig(
+        [](FakeTransport &t) {
+            addDrives(t);
+            t.setReplyDelayMs(40);
+        },
+        c);
+    QSignalSpy finished(rig.worker.get(), &BusWorker::scanFinished);
+    rig.worker->scan(ScanOptions{});
+    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 120000);
+    const auto summary = finished.at(0).at(0).value<ScanSummary>();
+    QVERIFY2(summary.error.isEmpty(), qPrintable(summary.error));
+    QSet<int> found;
+    for (const FoundMotor &m : summary.motors)
+        found.insert(m.id);
+    QCOMPARE(found, (QSet<int>{3, 17, 32}));
+    QVERIFY(rig.worker->lateReplyCount() > 0);
+    QVERIFY(rig.worker->currentMarginMs() > 30);
+    QCOMPARE(rig.worker->knownMotors().keys(), (QList<int>{3, 17, 32}));
 }
 
 void tst_ScanPoll::pollingSkipsUnsupportedAndBatches()

@@ -1,0 +1,101 @@
+#include "BusOptions.h"
+
+#include "ArgParser.h"
+
+#include <bus/BusTiming.h>
+#include <sim/SimBus.h>
+#include <sim/SimBusSpec.h>
+#include <transport/SerialTransport.h>
+#include <transport/SimTransport.h>
+
+#include <QtCore/QStringList>
+
+namespace lk::lkctl {
+
+void BusOptions::declare(ArgParser &parser)
+{
+    parser.addOption(QStringLiteral("port"), true);
+    parser.addOption(QStringLiteral("baud"), true);
+    parser.addOption(QStringLiteral("sim"), true);
+    parser.addOption(QStringLiteral("sim-rom-dir"), true);
+}
+
+std::optional<BusOptions> BusOptions::from(const ArgParser &parser, QString *error)
+{
+    BusOptions o;
+    const bool port = parser.isSet(QStringLiteral("port"));
+    const bool sim = parser.isSet(QStringLiteral("sim"));
+    if (port == sim) {
+        *error = port ? QStringLiteral("give --port or --sim, not both")
+                      : QStringLiteral("no bus: give --port DEV (a serial adapter) or --sim "
+                                       "ID:SERIES,... (the built-in simulator)");
+        return std::nullopt;
+    }
+    if (parser.isSet(QStringLiteral("baud"))) {
+        bool ok = false;
+        o.baud = parser.value(QStringLiteral("baud")).toInt(&ok);
+        if (!ok || !bus::BusTiming::isStandardBaud(o.baud)) {
+            QStringList bauds;
+            for (int b : bus::BusTiming::standardBauds())
+                bauds << QString::number(b);
+            *error =
+                QStringLiteral("--baud must be one of %1 (got '%2')")
+                    .arg(bauds.join(QStringLiteral(", ")), parser.value(QStringLiteral("baud")));
+            return std::nullopt;
+        }
+    }
+    if (parser.isSet(QStringLiteral("sim-rom-dir")) && !sim) {
+        *error = QStringLiteral("--sim-rom-dir goes with --sim");
+        return std::nullopt;
+    }
+    if (port) {
+        o.port = parser.value(QStringLiteral("port"));
+        if (o.port.isEmpty()) {
+            *error = QStringLiteral("--port needs a device, e.g. /dev/ttyUSB0");
+            return std::nullopt;
+        }
+        return o;
+    }
+    o.simSpec = parser.value(QStringLiteral("sim"));
+    o.simRomDir = parser.value(QStringLiteral("sim-rom-dir"));
+    QString specError;
+    if (!sim::SimBusSpec::parse(o.simSpec, &specError)) {
+        *error = QStringLiteral("--sim: %1").arg(specError);
+        return std::nullopt;
+    }
+    return o;
+}
+
+bus::TransportFactory BusOptions::factory() const
+{
+    if (!isSimulated()) {
+        transport::SerialSettings s;
+        s.portName = port;
+        s.baud = baud;
+        return transport::SerialTransport::factory(s);
+    }
+    const QString spec = simSpec;
+    const QString romDir = simRomDir;
+    return [spec, romDir](int b) -> std::unique_ptr<transport::Transport> {
+        const std::optional<sim::SimBusSpec> parsed = sim::SimBusSpec::parse(spec);
+        if (!parsed)
+            return nullptr;
+        auto t = std::make_unique<transport::SimTransport>(sim::SimBus::fromSpec(*parsed, romDir));
+        t->setBaud(b);
+        return t;
+    };
+}
+
+QString BusOptions::helpText()
+{
+    return QStringLiteral(
+        "Bus (one of --port and --sim is required):\n"
+        "  --port DEV         serial adapter, e.g. /dev/ttyUSB0 or ttyUSB0 (8N1)\n"
+        "  --baud N           9600, 19200, 38400, 57600, 115200 (default), 230400, 460800,\n"
+        "                     1000000 or 2000000\n"
+        "  --sim ID:SERIES,.. the built-in simulated bus instead, e.g. --sim 3:MF,17:MS\n"
+        "                     (series MS, MF, MG, MH; it lives only as long as this command)\n"
+        "  --sim-rom-dir DIR  keep the simulated drives' ROM in DIR between commands\n");
+}
+
+} // namespace lk::lkctl

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <bus/TransportFactory.h>
+
+#include <QtCore/QString>
+
+#include <optional>
+
+namespace lk::lkctl {
+
+class ArgParser;
+
+/// Which bus a live subcommand talks to: a serial port (`--port DEV --baud N`) or the
+/// in-process simulator (`--sim ID:SERIES,...`, optionally `--sim-rom-dir DIR`).
+struct BusOptions {
+    QString port;
+    int baud = 115200;
+    QString simSpec;   ///< non-empty: the in-process simulated bus
+    QString simRomDir; ///< where the simulated drives keep their ROM (empty: memory only)
+
+    /// Declare --port, --baud, --sim and --sim-rom-dir on a parser.
+    static void declare(ArgParser &parser);
+    /// Read them back; nullopt with `error` when unusable (neither or both of --port and
+    /// --sim, a baud that is not one of the nine, a bad --sim spec).
+    static std::optional<BusOptions> from(const ArgParser &parser, QString *error);
+
+    bool isSimulated() const { return !simSpec.isEmpty(); }
+    bus::TransportFactory factory() const;
+    /// The text of `lkctl CMD --help` that documents these options.
+    static QString helpText();
+};
+
+} // namespace lk::lkctl

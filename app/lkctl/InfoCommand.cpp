@@ -1,0 +1,126 @@
+#include "InfoCommand.h"
+
+#include "Console.h"
+#include "LiveBus.h"
+#include "OrderedJson.h"
+#include "ReplyText.h"
+
+#include <protocol/FieldJson.h>
+
+namespace lk::lkctl {
+
+using protocol::Command;
+using protocol::FieldJson;
+
+QString InfoCommand::summary() const
+{
+    return QStringLiteral("show one drive: model, temperature, voltage, errors, PID, accel");
+}
+
+QString InfoCommand::example() const
+{
+    return QStringLiteral("lkctl info 3 --port /dev/ttyUSB0");
+}
+
+QString InfoCommand::usage() const
+{
+    return QStringLiteral(
+               "Usage: lkctl info ID (--port DEV [--baud N] | --sim SPEC) [--json]\n"
+               "\n"
+               "Read drive ID's model (read_model), state 1 (read_state1), PID gains\n"
+               "(read_pid) and acceleration (read_accel) and show them.\n"
+               "\n"
+               "Options:\n"
+               "  --json   one JSON object: {\"id\":3,\"series\":\"MF\",\"model\":{...},"
+               "\"state1\":{...},\n"
+               "           \"pid\":{...},\"accel\":{...}}, each part with the CLI.md fields "
+               "of its reply\n"
+               "\n"
+               "%1"
+               "\n"
+               "Examples:\n"
+               "  lkctl info 3 --port /dev/ttyUSB0\n"
+               "  lkctl info 17 --port ttyUSB0 --baud 1000000 --json\n"
+               "\n"
+               "%2")
+        .arg(BusOptions::helpText(), exitStatusText());
+}
+
+void InfoCommand::print(Console &console, int id, const LiveBus::Identity &who,
+                        const QList<QPair<QString, QJsonObject>> &parts, bool json) const
+{
+    protocol::Reply model;
+    model.command = Command::ReadModel;
+    model.id = quint8(id);
+    model.payload = who.model;
+    const QJsonObject modelFields = FieldJson::replyFields(model);
+    const QString series = who.series ? protocol::seriesName(*who.series) : QString();
+    if (json) {
+        OrderedJson o;
+        o.integer(QStringLiteral("id"), id);
+        if (who.series)
+            o.text(QStringLiteral("series"), series);
+        else
+            o.null(QStringLiteral("series"));
+        o.fields(QStringLiteral("model"), modelFields);
+        for (const auto &[key, fields] : parts)
+            o.fields(key, fields);
+        console.out(o.toJson() + '\n');
+        return;
+    }
+    console.outLine(QStringLiteral("Drive %1: %2 series, protocol %3")
+                        .arg(id)
+                        .arg(series.isEmpty() ? QStringLiteral("unknown") : series)
+                        .arg(who.model.generation == protocol::Generation::V2_3
+                                 ? QStringLiteral("V2.3")
+                                 : QStringLiteral("V2.35")));
+    QJsonObject all = modelFields;
+    for (const auto &[key, fields] : parts) {
+        for (auto it = fields.begin(); it != fields.end(); ++it)
+            all.insert(it.key(), it.value());
+    }
+    for (const QString &line : ReplyText::lines(all, QStringLiteral("  ")))
+        console.outLine(line);
+}
+
+int InfoCommand::run(const QStringList &args, Console &console)
+{
+    ArgParser parser = makeParser();
+    int status = kExitOk;
+    const std::optional<BusOptions> busOptions = parseBus(parser, args, console, &status);
+    if (!busOptions)
+        return status;
+    if (parser.positionals().size() != 1)
+        return usageError(console, parser.positionals().isEmpty()
+                                       ? QStringLiteral("missing the drive ID")
+                                       : QStringLiteral("expected one ID, got '%1'")
+                                             .arg(parser.positionals().join(QLatin1Char(' '))));
+    QString error;
+    const std::optional<int> id = parseId(parser.positionals().first(), &error);
+    if (!id)
+        return usageError(console, error);
+
+    LiveBus bus(console, name());
+    if (!bus.open(*busOptions))
+        return kExitFailure;
+    const std::optional<LiveBus::Identity> who = bus.identify(*id);
+    if (!who)
+        return kExitFailure;
+    QList<QPair<QString, QJsonObject>> parts;
+    bool failed = false;
+    for (const auto &[key, command] : {std::pair{"state1", Command::ReadState1},
+                                       {"pid", Command::ReadPid},
+                                       {"accel", Command::ReadAccel}}) {
+        const bus::RequestResult r = bus.request(command, *id);
+        if (!r.ok() || !r.reply) {
+            bus.reportFailure(r);
+            failed = true;
+            continue;
+        }
+        parts.append({QLatin1String(key), FieldJson::replyFields(*r.reply)});
+    }
+    print(console, *id, *who, parts, parser.isSet(QStringLiteral("json")));
+    return failed ? kExitFailure : kExitOk;
+}
+
+} // namespace lk::lkctl

@@ -1,0 +1,167 @@
+#include "LiveBus.h"
+
+#include "Console.h"
+
+#include <bus/Scanner.h>
+#include <protocol/Command.h>
+
+#include <QtCore/QCoreApplication>
+#include <QtCore/QDeadlineTimer>
+#include <QtCore/QEventLoop>
+#include <QtCore/QObject>
+#include <QtCore/QTimer>
+
+namespace lk::lkctl {
+
+using bus::BusSession;
+using bus::RequestResult;
+using bus::RequestStatus;
+
+LiveBus::LiveBus(Console &console, QString command)
+    : m_console(console), m_command(std::move(command))
+{
+}
+
+LiveBus::~LiveBus()
+{
+    m_session.close();
+}
+
+void LiveBus::error(const QString &message)
+{
+    m_console.errLine(QStringLiteral("lkctl %1: %2").arg(m_command, message));
+}
+
+bool LiveBus::waitUntil(const std::function<bool()> &done, int maxMs)
+{
+    // Sleep in the event loop until something happens; the tick only bounds the sleep so
+    // that the deadline is seen. (processEvents with a time limit polls without sleeping:
+    // a core kept busy would slow down the very bus it waits for.)
+    const QDeadlineTimer deadline(maxMs);
+    QTimer tick;
+    tick.start(kTickMs);
+    while (!done() && !deadline.hasExpired())
+        QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+    return done();
+}
+
+bool LiveBus::open(const BusOptions &options)
+{
+    // The worker reports a failed open as an error followed by a closed state, in that
+    // order on one queue: once the state is in, so is the error.
+    std::optional<transport::TransportError> failure;
+    std::optional<bus::ConnectionStatus> state;
+    const auto c1 = QObject::connect(&m_session, &BusSession::errorOccurred,
+                                     [&failure](const transport::TransportError &e) {
+                                         if (!failure)
+                                             failure = e;
+                                     });
+    const auto c2 = QObject::connect(&m_session, &BusSession::connectionChanged,
+                                     [&state](const bus::ConnectionStatus &s) { state = s; });
+    m_session.open(options.factory(), options.baud);
+    waitUntil([&state] { return state.has_value(); }, 30000);
+    QObject::disconnect(c1);
+    QObject::disconnect(c2);
+    if (state && state->isOpen())
+        return true;
+    if (failure)
+        error(failure->message);
+    else if (state)
+        error(QStringLiteral("the bus did not open: %1").arg(state->reason));
+    else
+        error(QStringLiteral("the bus did not open in time"));
+    return false;
+}
+
+RequestResult LiveBus::request(const protocol::Request &request, bus::Priority priority)
+{
+    std::optional<RequestResult> result;
+    quint64 ticket = 0;
+    const auto c = QObject::connect(&m_session, &BusSession::requestCompleted,
+                                    [&result, &ticket](const RequestResult &r) {
+                                        if (r.ticket == ticket)
+                                            result = r;
+                                    });
+    ticket = m_session.send(request, priority);
+    waitUntil([&result] { return result.has_value(); });
+    QObject::disconnect(c);
+    if (result)
+        return *result;
+    RequestResult r;
+    r.request = request;
+    r.status = RequestStatus::Error;
+    r.reason = QStringLiteral("the bus engine did not answer %1 (ID %2)")
+                   .arg(protocol::CommandTable::name(request.command))
+                   .arg(request.id);
+    return r;
+}
+
+RequestResult LiveBus::request(protocol::Command command, int id, bus::Priority priority)
+{
+    protocol::Request r;
+    r.command = command;
+    r.id = static_cast<quint8>(id);
+    return request(r, priority);
+}
+
+void LiveBus::reportFailure(const RequestResult &result)
+{
+    QString text = result.reason;
+    if (text.isEmpty())
+        text = QStringLiteral("%1 (ID %2) failed: %3")
+                   .arg(protocol::CommandTable::name(result.request.command))
+                   .arg(result.request.id)
+                   .arg(QLatin1String(bus::requestStatusName(result.status)));
+    if (result.status == RequestStatus::Timeout)
+        text += QStringLiteral("; check the ID, the baud (--baud) and the wiring, or run "
+                               "'lkctl scan'");
+    error(text);
+}
+
+std::optional<LiveBus::Identity> LiveBus::identify(int id)
+{
+    const RequestResult r = request(protocol::Command::ReadModel, id);
+    if (!r.ok() || !r.reply || !std::holds_alternative<protocol::ModelInfo>(r.reply->payload)) {
+        reportFailure(r);
+        return std::nullopt;
+    }
+    Identity i;
+    i.model = std::get<protocol::ModelInfo>(r.reply->payload);
+    i.series = bus::Scanner::inferSeries(i.model);
+    if (i.series)
+        m_session.setSeries(id, *i.series);
+    return i;
+}
+
+bus::ScanSummary LiveBus::scan(const bus::ScanOptions &options)
+{
+    std::optional<bus::ScanSummary> summary;
+    const auto c = QObject::connect(&m_session, &BusSession::scanFinished,
+                                    [&summary](const bus::ScanSummary &s) { summary = s; });
+    m_session.scan(options);
+    waitUntil([&summary] { return summary.has_value(); }, 10 * kMaxWaitMs);
+    QObject::disconnect(c);
+    if (summary)
+        return *summary;
+    bus::ScanSummary s;
+    s.error = QStringLiteral("the scan did not finish");
+    return s;
+}
+
+LiveBus::StopOutcome LiveBus::emergencyStop(const QVector<int> &ids)
+{
+    std::optional<StopOutcome> outcome;
+    quint64 ticket = 0;
+    const auto c = QObject::connect(
+        &m_session, &BusSession::emergencyStopFinished,
+        [&outcome, &ticket](quint64 t, const QVector<int> &acked, const QVector<int> &silent) {
+            if (t == ticket)
+                outcome = StopOutcome{acked, silent};
+        });
+    ticket = m_session.emergencyStop(ids);
+    waitUntil([&outcome] { return outcome.has_value(); });
+    QObject::disconnect(c);
+    return outcome.value_or(StopOutcome{});
+}
+
+} // namespace lk::lkctl

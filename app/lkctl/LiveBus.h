@@ -1,0 +1,72 @@
+#pragma once
+
+#include "BusOptions.h"
+
+#include <bus/BusSession.h>
+#include <protocol/Request.h>
+#include <protocol/Series.h>
+#include <protocol/Values.h>
+
+#include <QtCore/QString>
+#include <QtCore/QVector>
+
+#include <functional>
+#include <optional>
+
+namespace lk::lkctl {
+
+class Console;
+
+/// A BusSession driven step by step for one lkctl command: each call runs the event loop
+/// until its answer arrives (the engine completes every request exactly once, with a
+/// timeout derived from the baud). Problems are printed as "lkctl CMD: ..." lines.
+class LiveBus {
+public:
+    LiveBus(Console &console, QString command);
+    ~LiveBus(); ///< closes the session
+
+    /// Open the bus; on failure prints the transport's own message (with its fix) and
+    /// returns false.
+    bool open(const BusOptions &options);
+
+    /// Send one request (already checked by MotionGuard if it moves a motor) and wait.
+    bus::RequestResult request(const protocol::Request &request,
+                               bus::Priority priority = bus::Priority::Operator);
+    /// Send a request without data (reads, off/stop/run) to `id` and wait.
+    bus::RequestResult request(protocol::Command command, int id,
+                               bus::Priority priority = bus::Priority::Operator);
+
+    /// read_model from `id`; on success the session decodes its replies by the series the
+    /// model names. nullopt after printing why (no reply, ...).
+    struct Identity {
+        protocol::ModelInfo model;
+        std::optional<protocol::Series> series; ///< nullopt: the model names no series
+    };
+    std::optional<Identity> identify(int id);
+
+    bus::ScanSummary scan(const bus::ScanOptions &options);
+    /// Motor off to `ids` plus every known ID (all of 1..32 when none), ahead of all else.
+    struct StopOutcome {
+        QVector<int> acknowledged, silent;
+    };
+    StopOutcome emergencyStop(const QVector<int> &ids = {});
+
+    /// Print why a request failed, naming the ID and the command (with a hint on timeouts).
+    void reportFailure(const bus::RequestResult &result);
+    /// Run the event loop until `done` is true (a safety net ends it after `maxMs`).
+    bool waitUntil(const std::function<bool()> &done, int maxMs = kMaxWaitMs);
+
+    bus::BusSession &session() { return m_session; }
+    Console &console() { return m_console; }
+    void error(const QString &message); ///< "lkctl CMD: message" on standard error
+
+    static constexpr int kMaxWaitMs = 120000;
+    static constexpr int kTickMs = 100; ///< how late waitUntil may notice its deadline
+
+private:
+    Console &m_console;
+    QString m_command;
+    bus::BusSession m_session;
+};
+
+} // namespace lk::lkctl

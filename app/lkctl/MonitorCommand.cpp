@@ -1,0 +1,277 @@
+#include "MonitorCommand.h"
+
+#include "Console.h"
+#include "LiveBus.h"
+#include "MonitorTable.h"
+#include "ReadCommand.h"
+#include "SignalWatcher.h"
+
+#include <bus/BusTiming.h>
+#include <motor/SeriesLimits.h>
+
+#include <QtCore/QTimer>
+
+#include <climits>
+#include <csignal>
+#include <limits>
+
+namespace lk::lkctl {
+
+using protocol::Command;
+
+namespace {
+const QStringList kPollable{"state1", "state2", "state3", "multi-turn", "single-turn", "encoder"};
+const char kDefaultWhat[] = "state2,state1,multi-turn";
+} // namespace
+
+QString MonitorCommand::summary() const
+{
+    return QStringLiteral("stream live values of drives as CSV or JSON lines");
+}
+
+QString MonitorCommand::example() const
+{
+    return QStringLiteral("lkctl monitor 3 17 --port /dev/ttyUSB0 --rate 50 --duration 10");
+}
+
+QString MonitorCommand::usage() const
+{
+    return QStringLiteral(
+               "Usage: lkctl monitor ID... (--port DEV [--baud N] | --sim SPEC) [--what LIST]\n"
+               "                     [--rate HZ] [--duration S] [--count N] [--json]\n"
+               "\n"
+               "Poll the drives round robin and print one row per drive and poll cycle, the\n"
+               "replies of every polled command merged, until Ctrl-C (SIGINT) or SIGTERM,\n"
+               "--duration or --count. Then the achieved rate (against the bus limit for the\n"
+               "command mix at the baud) and the bus statistics go to standard error.\n"
+               "\n"
+               "Options:\n"
+               "  --what LIST    what to poll, comma-separated from %1\n"
+               "                 (default %2)\n"
+               "  --rate HZ      poll cycles per second (default %3); 0 = as fast as the bus "
+               "allows\n"
+               "  --duration S   stop after S seconds\n"
+               "  --count N      stop after N rows\n"
+               "  --json         JSON lines instead of CSV\n"
+               "\n"
+               "CSV: a header, then rows; the names carry the unit (CLI.md): time_s (host "
+               "clock,\n"
+               "seconds since the bus opened), id, temperature_c, voltage_v, error_state, iq_a "
+               "or\n"
+               "power (MS), speed_dps, encoder, multi_turn_deg, single_turn_deg, ia_a, ib_a, "
+               "ic_a:\n"
+               "the columns of what is polled. A field missing from a row (a lost reply) is "
+               "empty.\n"
+               "JSON: one object per row with the same names, e.g.\n"
+               "  {\"time_s\":1.234567,\"id\":3,\"temperature_c\":31,\"iq_a\":0.16,"
+               "\"speed_dps\":360.0,\"encoder\":1234}\n"
+               "\n"
+               "%4"
+               "\n"
+               "Examples:\n"
+               "  lkctl monitor 3 --port /dev/ttyUSB0 > run.csv          (Ctrl-C to stop)\n"
+               "  lkctl monitor 3 17 32 --port ttyUSB0 --rate 0 --duration 5 --json\n"
+               "  lkctl monitor 3 --port ttyUSB0 --what state2,state3 --count 100\n"
+               "\n"
+               "%5")
+        .arg(kPollable.join(QStringLiteral(", ")), QLatin1String(kDefaultWhat))
+        .arg(kDefaultRateHz)
+        .arg(BusOptions::helpText(),
+             exitStatusText(QStringLiteral("  An interrupt ends monitoring normally (status 0); "
+                                           "losing the bus gives 1.\n")));
+}
+
+std::optional<MonitorCommand::Plan> MonitorCommand::parse(const ArgParser &parser, Console &console,
+                                                          int *status) const
+{
+    const auto fail = [&](const QString &message) {
+        *status = usageError(console, message);
+        return std::nullopt;
+    };
+    Plan plan;
+    QString error;
+    if (parser.positionals().isEmpty())
+        return fail(QStringLiteral("missing the drive ID(s)"));
+    for (const QString &p : parser.positionals()) {
+        const std::optional<int> id = parseId(p, &error);
+        if (!id)
+            return fail(error);
+        if (plan.ids.contains(*id))
+            return fail(QStringLiteral("ID %1 given twice").arg(*id));
+        plan.ids.append(*id);
+    }
+    const QString what = parser.isSet(QStringLiteral("what")) ? parser.value(QStringLiteral("what"))
+                                                              : QLatin1String(kDefaultWhat);
+    for (const QString &w : what.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const QString name = w.trimmed();
+        if (!kPollable.contains(name))
+            return fail(QStringLiteral("cannot poll '%1'; --what takes %2")
+                            .arg(name, kPollable.join(QStringLiteral(", "))));
+        const Command c = *ReadCommand::commandFor(name);
+        if (!plan.commands.contains(c))
+            plan.commands.append(c);
+    }
+    if (plan.commands.isEmpty())
+        return fail(QStringLiteral("--what names nothing to poll"));
+    if (parser.isSet(QStringLiteral("rate"))) {
+        const auto r = parser.numberValue(QStringLiteral("rate"), 0, &error);
+        if (!r)
+            return fail(error);
+        plan.rateHz = *r;
+    }
+    if (parser.isSet(QStringLiteral("duration"))) {
+        plan.durationS = parser.numberValue(QStringLiteral("duration"), 0, &error);
+        if (!plan.durationS)
+            return fail(error);
+    }
+    if (parser.isSet(QStringLiteral("count"))) {
+        plan.count = parser.intValue(QStringLiteral("count"), 1, qint64(1) << 53, &error);
+        if (!plan.count)
+            return fail(error);
+    }
+    plan.json = parser.isSet(QStringLiteral("json"));
+    return plan;
+}
+
+int MonitorCommand::stream(LiveBus &bus, const Plan &plan, MonitorTable &table)
+{
+    Console &console = bus.console();
+    bus::BusSession &session = bus.session();
+    bool stop = false;
+    bool lost = false;
+    qint64 samples = 0;
+    double firstSample = -1, lastSample = -1;
+    bus::BusStatistics stats;
+    QObject context; // every connection below ends with it
+    SignalWatcher watcher;
+    QObject::connect(&watcher, &SignalWatcher::signalled, &context, [&stop] { stop = true; });
+    QTimer duration;
+    duration.setSingleShot(true);
+    QObject::connect(&duration, &QTimer::timeout, &context, [&stop] { stop = true; });
+    QObject::connect(&session, &bus::BusSession::statisticsUpdated, &context,
+                     [&stats](const bus::BusStatistics &s) { stats = s; });
+    QObject::connect(&session, &bus::BusSession::connectionChanged, &context,
+                     [&](const bus::ConnectionStatus &s) {
+                         if (!s.isOpen() && !stop) {
+                             lost = stop = true;
+                             bus.error(QStringLiteral("the bus went away: %1").arg(s.reason));
+                         }
+                     });
+    QObject::connect(&session, &bus::BusSession::telemetryReceived, &context,
+                     [&](const bus::TelemetryBatch &batch) {
+                         for (const bus::TelemetrySample &s : batch) {
+                             if (stop || !plan.ids.contains(s.id))
+                                 continue;
+                             ++samples;
+                             firstSample = firstSample < 0 ? s.time : firstSample;
+                             lastSample = s.time;
+                             for (const QByteArray &row : table.add(s)) {
+                                 console.out(row);
+                                 if (plan.count && table.rowCount() >= *plan.count) {
+                                     stop = true;
+                                     break;
+                                 }
+                             }
+                         }
+                         console.flush();
+                         stop = stop || console.outputFailed(); // e.g. `| head` closed the pipe
+                     });
+    console.out(table.header());
+    console.flush();
+    bus::PollPlan poll;
+    poll.ids = plan.ids;
+    poll.commands = plan.commands;
+    poll.rateHz = plan.rateHz;
+    session.resetStatistics();
+    session.startPolling(poll);
+    if (plan.durationS)
+        duration.start(int(std::min(*plan.durationS * 1000, double(INT_MAX))));
+    bus.waitUntil([&stop] { return stop; }, std::numeric_limits<int>::max());
+    session.stopPolling();
+    // One more statistics snapshot, so that the figures cover the whole run.
+    const int before = int(stats.time * 1000);
+    bus.waitUntil([&] { return lost || int(stats.time * 1000) != before; }, 2000);
+    report(bus, plan, table, samples, lastSample - firstSample, stats);
+    return lost ? kExitFailure : kExitOk;
+}
+
+void MonitorCommand::report(LiveBus &bus, const Plan &plan, const MonitorTable &table,
+                            qint64 samples, double samplesSpanS,
+                            const bus::BusStatistics &stats) const
+{
+    const double repliesPerS = samples > 1 && samplesSpanS > 0 ? (samples - 1) / samplesSpanS : 0;
+    QString limit;
+    if (plan.simulated)
+        limit = QStringLiteral(" (simulated bus: no wire time, no bus limit)");
+    else if (plan.busLimit > 0)
+        limit = QStringLiteral(", %1% of the bus limit of %2/s for this mix at %3 baud")
+                    .arg(100 * repliesPerS / plan.busLimit, 0, 'f', 0)
+                    .arg(plan.busLimit, 0, 'f', 0)
+                    .arg(plan.baud);
+    bus.error(QStringLiteral("%1 rows in %2 s, %3 Hz per drive (%4); %5 replies/s%6")
+                  .arg(table.rowCount())
+                  .arg(table.elapsedS(), 0, 'f', 2)
+                  .arg(table.cyclesPerSecond(), 0, 'f', 1)
+                  .arg(plan.rateHz > 0 ? QStringLiteral("%1 Hz asked").arg(plan.rateHz)
+                                       : QStringLiteral("as fast as the bus allows"))
+                  .arg(repliesPerS, 0, 'f', 0)
+                  .arg(limit));
+    const bus::LinkStatistics &b = stats.bus;
+    bus.error(QStringLiteral("bus: requests %1, replies %2, timeouts %3, retries %4, checksum "
+                             "errors %5, garbage bytes %6, parse errors %7, late replies %8; "
+                             "latency min/median/p95/max %9 ms")
+                  .arg(b.requests)
+                  .arg(b.replies)
+                  .arg(b.timeouts)
+                  .arg(b.retries)
+                  .arg(b.checksumErrors)
+                  .arg(b.garbageBytes)
+                  .arg(b.parseErrors)
+                  .arg(b.lateReplies)
+                  .arg(QStringLiteral("%1/%2/%3/%4")
+                           .arg(b.latency.minMs, 0, 'f', 2)
+                           .arg(b.latency.medianMs, 0, 'f', 2)
+                           .arg(b.latency.p95Ms, 0, 'f', 2)
+                           .arg(b.latency.maxMs, 0, 'f', 2)));
+}
+
+int MonitorCommand::run(const QStringList &args, Console &console)
+{
+    ArgParser parser = makeParser();
+    for (const char *o : {"what", "rate", "duration", "count"})
+        parser.addOption(QLatin1String(o), true);
+    int status = kExitOk;
+    const std::optional<BusOptions> busOptions = parseBus(parser, args, console, &status);
+    if (!busOptions)
+        return status;
+    std::optional<Plan> plan = parse(parser, console, &status);
+    if (!plan)
+        return status;
+    plan->simulated = busOptions->isSimulated();
+    LiveBus bus(console, name());
+    if (!bus.open(*busOptions))
+        return kExitFailure;
+    QMap<int, std::optional<protocol::Series>> series;
+    for (int id : plan->ids) {
+        const std::optional<LiveBus::Identity> who = bus.identify(id);
+        if (!who)
+            return kExitFailure;
+        series.insert(id, who->series);
+    }
+    // A reader that goes away (`| head`) must end the loop, not kill the process silently.
+    std::signal(SIGPIPE, SIG_IGN);
+    // The bus limit of the mix (ARCHITECTURE.md), without what a series never answers.
+    QVector<Command> mix;
+    for (int id : plan->ids) {
+        for (Command c : plan->commands) {
+            if (!series.value(id) || motor::supports(*series.value(id), c))
+                mix.append(c);
+        }
+    }
+    plan->baud = busOptions->baud;
+    plan->busLimit = bus::BusTiming::transactionsPerSecond(mix, plan->baud);
+    MonitorTable table(plan->commands, series, plan->json);
+    return stream(bus, *plan, table);
+}
+
+} // namespace lk::lkctl

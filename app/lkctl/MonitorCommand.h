@@ -1,0 +1,49 @@
+#pragma once
+
+#include "LiveCommand.h"
+
+#include <bus/BusStatistics.h>
+#include <protocol/Command.h>
+
+#include <QtCore/QVector>
+
+#include <optional>
+
+namespace lk::lkctl {
+
+class LiveBus;
+class MonitorTable;
+
+/// `lkctl monitor ID...`: poll drives and stream one row per drive and cycle, as CSV or JSON
+/// lines, until interrupted (SIGINT/SIGTERM), --duration or --count; then the achieved rate
+/// and the bus statistics on standard error.
+class MonitorCommand : public LiveCommand {
+public:
+    QString name() const override { return QStringLiteral("monitor"); }
+    QString summary() const override;
+    QString example() const override;
+    QString usage() const override;
+    int run(const QStringList &args, Console &console) override;
+
+    static constexpr double kDefaultRateHz = 10;
+
+private:
+    struct Plan {
+        QVector<int> ids;
+        QVector<protocol::Command> commands;
+        double rateHz = kDefaultRateHz;
+        std::optional<double> durationS;
+        std::optional<qint64> count;
+        bool json = false;
+        bool simulated = false; ///< --sim: no wire time, so no bus limit to compare with
+        int baud = 0;
+        double busLimit = 0; ///< transactions/s the bus carries for this mix (BusTiming)
+    };
+    std::optional<Plan> parse(const ArgParser &parser, Console &console, int *status) const;
+    /// Poll until a stop condition; returns the exit status.
+    int stream(LiveBus &bus, const Plan &plan, MonitorTable &table);
+    void report(LiveBus &bus, const Plan &plan, const MonitorTable &table, qint64 samples,
+                double samplesSpanS, const bus::BusStatistics &stats) const;
+};
+
+} // namespace lk::lkctl

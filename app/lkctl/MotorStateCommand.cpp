@@ -1,0 +1,218 @@
+#include "MotorStateCommand.h"
+
+#include "Console.h"
+#include "LiveBus.h"
+#include "OrderedJson.h"
+
+#include <safety/MotionGuard.h>
+
+namespace lk::lkctl {
+
+using protocol::Command;
+
+namespace {
+QByteArray idArray(const QVector<int> &ids)
+{
+    QByteArray out = "[";
+    for (qsizetype i = 0; i < ids.size(); ++i)
+        out += (i > 0 ? "," : "") + QByteArray::number(ids.at(i));
+    return out + "]";
+}
+
+QString idText(const QVector<int> &ids)
+{
+    QStringList t;
+    for (int id : ids)
+        t << QString::number(id);
+    return t.isEmpty() ? QStringLiteral("none") : t.join(QStringLiteral(", "));
+}
+} // namespace
+
+MotorStateCommand::MotorStateCommand(Command command) : m_command(command) {}
+
+QString MotorStateCommand::name() const
+{
+    switch (m_command) {
+    case Command::MotorOff:
+        return QStringLiteral("off");
+    case Command::MotorStop:
+        return QStringLiteral("stop");
+    default:
+        return QStringLiteral("run");
+    }
+}
+
+QString MotorStateCommand::summary() const
+{
+    switch (m_command) {
+    case Command::MotorOff:
+        return QStringLiteral("motor off (clears the command); 'off all' is the emergency stop");
+    case Command::MotorStop:
+        return QStringLiteral("motor stop (keeps the command; 'run' resumes it)");
+    default:
+        return QStringLiteral("motor run: resume after a stop");
+    }
+}
+
+QString MotorStateCommand::example() const
+{
+    return QStringLiteral("lkctl %1 %2 --port /dev/ttyUSB0")
+        .arg(name(), m_command == Command::MotorOff ? QStringLiteral("all") : QStringLiteral("3"));
+}
+
+QString MotorStateCommand::usage() const
+{
+    const QString what =
+        m_command == Command::MotorOff
+            ? QStringLiteral(
+                  "Send motor_off (0x80) to drive ID: the motor is released and its running\n"
+                  "state and pending command are cleared.\n"
+                  "'off all' is the emergency stop: motor_off to every ID 1..32 ahead of\n"
+                  "anything else, each ID first with a short timeout so that every drive hears\n"
+                  "it quickly, then the silent ones again.\n")
+        : m_command == Command::MotorStop
+            ? QStringLiteral("Send motor_stop (0x81) to drive ID: the motor stops and keeps its\n"
+                             "running state and command; 'lkctl run' resumes it.\n"
+                             "'stop all' stops every drive a quick scan finds.\n")
+            : QStringLiteral("Send motor_run (0x88) to drive ID: it resumes the command it held "
+                             "when\nstopped. The drive's series is read first and checked "
+                             "like any motion command.\n'run all' resumes every drive a quick "
+                             "scan finds.\n");
+    return QStringLiteral("Usage: lkctl %1 ID|all (--port DEV [--baud N] | --sim SPEC) [--json]\n"
+                          "\n"
+                          "%2"
+                          "\n"
+                          "Options:\n"
+                          "  --json   one line: {\"command\":\"%3\",\"acknowledged\":[3,17],"
+                          "\"silent\":[]}\n"
+                          "\n"
+                          "%4"
+                          "\n"
+                          "Examples:\n"
+                          "  lkctl %1 3 --port /dev/ttyUSB0\n"
+                          "  lkctl %1 all --port ttyUSB0 --baud 1000000\n"
+                          "\n"
+                          "%5")
+        .arg(name(), what, protocol::CommandTable::name(m_command), BusOptions::helpText(),
+             exitStatusText(
+                 QStringLiteral("  With 'all', 0 means at least one drive acknowledged and none "
+                                "that was\n  found stayed silent%1.\n")
+                     .arg(m_command == Command::MotorOff
+                              ? QStringLiteral(" (IDs without a drive stay silent, which is "
+                                               "expected)")
+                              : QString())) +
+                 (m_command == Command::MotorRun
+                      ? QStringLiteral("  4  refused: the drive's series does not allow it "
+                                       "(nothing was sent)\n")
+                      : QString()));
+}
+
+void MotorStateCommand::print(Console &console, bool json, const QVector<int> &acknowledged,
+                              const QVector<int> &silent) const
+{
+    if (json) {
+        OrderedJson o;
+        o.text(QStringLiteral("command"), protocol::CommandTable::name(m_command))
+            .raw(QStringLiteral("acknowledged"), idArray(acknowledged))
+            .raw(QStringLiteral("silent"), idArray(silent));
+        console.out(o.toJson() + '\n');
+        return;
+    }
+    console.outLine(QStringLiteral("%1 acknowledged by: %2")
+                        .arg(protocol::CommandTable::name(m_command), idText(acknowledged)));
+    if (!silent.isEmpty())
+        console.outLine(QStringLiteral("silent: %1").arg(idText(silent)));
+}
+
+bool MotorStateCommand::allowed(LiveBus &bus, int id, std::optional<protocol::Series> series)
+{
+    if (m_command != Command::MotorRun)
+        return true;
+    protocol::Request r;
+    r.command = m_command;
+    r.id = quint8(id);
+    const safety::Verdict v = safety::MotionGuard::check(
+        r, series, series ? safety::SoftLimits::defaults(*series) : safety::SoftLimits{});
+    if (!v.allowed())
+        bus.error(
+            QStringLiteral("refused for drive %1, nothing was sent: %2").arg(id).arg(v.message));
+    return v.allowed();
+}
+
+int MotorStateCommand::runOne(LiveBus &bus, int id, bool json)
+{
+    if (m_command == Command::MotorRun) {
+        const std::optional<LiveBus::Identity> who = bus.identify(id);
+        if (!who)
+            return kExitFailure;
+        if (!allowed(bus, id, who->series))
+            return kExitRefused;
+    }
+    // off and stop take the emergency lane: they go ahead of anything queued.
+    const bus::Priority p =
+        m_command == Command::MotorRun ? bus::Priority::Operator : bus::Priority::Emergency;
+    const bus::RequestResult r = bus.request(m_command, id, p);
+    if (!r.ok()) {
+        bus.reportFailure(r);
+        return kExitFailure;
+    }
+    print(bus.console(), json, {id}, {});
+    return kExitOk;
+}
+
+int MotorStateCommand::runAll(LiveBus &bus, bool json)
+{
+    if (m_command == Command::MotorOff) {
+        const LiveBus::StopOutcome o = bus.emergencyStop();
+        print(bus.console(), json, o.acknowledged, o.silent);
+        return o.acknowledged.isEmpty() ? kExitFailure : kExitOk;
+    }
+    const bus::ScanSummary s = bus.scan(bus::ScanOptions{});
+    if (!s.error.isEmpty()) {
+        bus.error(QStringLiteral("scan stopped: %1").arg(s.error));
+        return kExitFailure;
+    }
+    if (s.motors.isEmpty()) {
+        bus.error(QStringLiteral("no drive answered the scan; nothing was sent"));
+        return kExitFailure;
+    }
+    QVector<int> acked, silent;
+    bool refused = false;
+    for (const bus::FoundMotor &m : s.motors) {
+        if (!allowed(bus, m.id, m.series)) {
+            refused = true;
+            continue;
+        }
+        const bus::RequestResult r = bus.request(m_command, m.id);
+        (r.ok() ? acked : silent).append(m.id);
+    }
+    print(bus.console(), json, acked, silent);
+    if (refused)
+        return kExitRefused;
+    return silent.isEmpty() ? kExitOk : kExitFailure;
+}
+
+int MotorStateCommand::run(const QStringList &args, Console &console)
+{
+    ArgParser parser = makeParser();
+    int status = kExitOk;
+    const std::optional<BusOptions> busOptions = parseBus(parser, args, console, &status);
+    if (!busOptions)
+        return status;
+    const QStringList &pos = parser.positionals();
+    if (pos.size() != 1)
+        return usageError(console, pos.isEmpty() ? QStringLiteral("missing ID or 'all'")
+                                                 : QStringLiteral("expected one ID or 'all'"));
+    const bool all = pos.first() == QLatin1String("all");
+    QString error;
+    const std::optional<int> id = all ? std::optional<int>(0) : parseId(pos.first(), &error);
+    if (!id)
+        return usageError(console, error + QStringLiteral(", or 'all'"));
+    LiveBus bus(console, name());
+    if (!bus.open(*busOptions))
+        return kExitFailure;
+    const bool json = parser.isSet(QStringLiteral("json"));
+    return all ? runAll(bus, json) : runOne(bus, *id, json);
+}
+
+} // namespace lk::lkctl

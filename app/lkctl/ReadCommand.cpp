@@ -1,0 +1,161 @@
+#include "ReadCommand.h"
+
+#include "Console.h"
+#include "LiveBus.h"
+#include "OrderedJson.h"
+#include "ReplyText.h"
+
+#include <motor/SeriesLimits.h>
+#include <protocol/FieldJson.h>
+
+#include <QtCore/QList>
+
+namespace lk::lkctl {
+
+using protocol::Command;
+
+namespace {
+const QList<QPair<QString, Command>> &whats()
+{
+    static const QList<QPair<QString, Command>> kWhats{
+        {QStringLiteral("pid"), Command::ReadPid},
+        {QStringLiteral("accel"), Command::ReadAccel},
+        {QStringLiteral("encoder"), Command::ReadEncoder},
+        {QStringLiteral("multi-turn"), Command::ReadMultiTurn},
+        {QStringLiteral("single-turn"), Command::ReadSingleTurn},
+        {QStringLiteral("state1"), Command::ReadState1},
+        {QStringLiteral("state2"), Command::ReadState2},
+        {QStringLiteral("state3"), Command::ReadState3},
+        {QStringLiteral("model"), Command::ReadModel},
+    };
+    return kWhats;
+}
+
+QString whatList()
+{
+    QStringList names;
+    for (const auto &w : whats())
+        names << w.first;
+    return names.join(QStringLiteral(", "));
+}
+} // namespace
+
+std::optional<Command> ReadCommand::commandFor(const QString &what)
+{
+    for (const auto &w : whats()) {
+        if (w.first == what)
+            return w.second;
+    }
+    return std::nullopt;
+}
+
+QString ReadCommand::summary() const
+{
+    return QStringLiteral("read one value set from a drive (pid, accel, encoder, angles, state)");
+}
+
+QString ReadCommand::example() const
+{
+    return QStringLiteral("lkctl read 3 state2 --port /dev/ttyUSB0 --json");
+}
+
+QString ReadCommand::usage() const
+{
+    return QStringLiteral(
+               "Usage: lkctl read ID WHAT (--port DEV [--baud N] | --sim SPEC) [--json]\n"
+               "\n"
+               "Send one read command to drive ID and print the reply.\n"
+               "\n"
+               "WHAT      command           fields (CLI.md)\n"
+               "  pid          read_pid          angle_kp angle_ki speed_kp speed_ki iq_kp "
+               "iq_ki\n"
+               "  accel        read_accel        accel_dps2\n"
+               "  encoder      read_encoder      encoder encoder_raw encoder_offset\n"
+               "  multi-turn   read_multi_turn   angle_deg (rotor, 0.01 deg)\n"
+               "  single-turn  read_single_turn  angle_deg\n"
+               "  state1       read_state1       temperature_c voltage_v error_state "
+               "low_voltage over_temperature\n"
+               "  state2       read_state2       temperature_c iq_a (power on MS) speed_dps "
+               "encoder\n"
+               "  state3       read_state3       temperature_c ia_a ib_a ic_a (not on MS)\n"
+               "  model        read_model        driver_name motor_name hardware_version "
+               "firmware_version\n"
+               "state2 and state3 read the model first, to know the series (MS replies carry "
+               "power).\n"
+               "\n"
+               "Options:\n"
+               "  --json   one line: {\"command\":\"read_state2\",\"code\":\"0x9C\",\"id\":3,"
+               "\"fields\":{...}}\n"
+               "\n"
+               "%1"
+               "\n"
+               "Examples:\n"
+               "  lkctl read 3 pid --port /dev/ttyUSB0\n"
+               "  lkctl read 3 multi-turn --port ttyUSB0 --json\n"
+               "  lkctl read 17 state2 --sim 17:MS\n"
+               "\n"
+               "%2")
+        .arg(BusOptions::helpText(), exitStatusText());
+}
+
+int ReadCommand::run(const QStringList &args, Console &console)
+{
+    ArgParser parser = makeParser();
+    int status = kExitOk;
+    const std::optional<BusOptions> busOptions = parseBus(parser, args, console, &status);
+    if (!busOptions)
+        return status;
+    const QStringList &pos = parser.positionals();
+    if (pos.size() != 2)
+        return usageError(console,
+                          pos.size() < 2
+                              ? QStringLiteral("expected ID and WHAT (one of %1)").arg(whatList())
+                              : QStringLiteral("unexpected argument '%1'").arg(pos.at(2)));
+    QString error;
+    const std::optional<int> id = parseId(pos.at(0), &error);
+    if (!id)
+        return usageError(console, error);
+    const std::optional<Command> command = commandFor(pos.at(1));
+    if (!command)
+        return usageError(
+            console,
+            QStringLiteral("cannot read '%1'; WHAT is one of %2").arg(pos.at(1), whatList()));
+
+    LiveBus bus(console, name());
+    if (!bus.open(*busOptions))
+        return kExitFailure;
+    if (*command == Command::ReadState2 || *command == Command::ReadState3) {
+        const std::optional<LiveBus::Identity> who = bus.identify(*id);
+        if (!who)
+            return kExitFailure;
+        if (who->series && !motor::supports(*who->series, *command)) {
+            bus.error(QStringLiteral("drive %1 is %2: that series has no %3")
+                          .arg(*id)
+                          .arg(protocol::seriesName(*who->series),
+                               protocol::CommandTable::name(*command)));
+            return kExitFailure;
+        }
+    }
+    const bus::RequestResult r = bus.request(*command, *id);
+    if (!r.ok() || !r.reply) {
+        bus.reportFailure(r);
+        return kExitFailure;
+    }
+    const QJsonObject fields = protocol::FieldJson::replyFields(*r.reply);
+    if (parser.isSet(QStringLiteral("json"))) {
+        OrderedJson o;
+        o.text(QStringLiteral("command"), protocol::CommandTable::name(*command))
+            .text(QStringLiteral("code"), protocol::CommandTable::codeText(quint8(*command)))
+            .integer(QStringLiteral("id"), *id)
+            .fields(QStringLiteral("fields"), fields);
+        console.out(o.toJson() + '\n');
+        return kExitOk;
+    }
+    console.outLine(
+        QStringLiteral("Drive %1, %2:").arg(*id).arg(protocol::CommandTable::name(*command)));
+    for (const QString &line : ReplyText::lines(fields, QStringLiteral("  ")))
+        console.outLine(line);
+    return kExitOk;
+}
+
+} // namespace lk::lkctl

@@ -1,0 +1,117 @@
+#include "ReplyText.h"
+
+#include <QtCore/QList>
+
+#include <algorithm>
+
+namespace lk::lkctl {
+
+namespace {
+
+struct FieldLabel {
+    const char *key;
+    const char *label;
+    const char *unit;
+    int decimals; ///< places for reals; -1 for text, integers and flags
+    bool trim;    ///< drop trailing zeros (speeds, currents); keep them for voltage, angles
+};
+
+// CLI.md field order.
+const QList<FieldLabel> &labels()
+{
+    static const QList<FieldLabel> kLabels{
+        {"driver_name", "driver", "", -1, true},
+        {"motor_name", "motor", "", -1, true},
+        {"hardware_version", "hardware version", "", 1, true},
+        {"firmware_version", "firmware version", "", 2, true},
+        {"temperature_c", "temperature", "C", -1, true},
+        {"voltage_v", "voltage", "V", 1, false},
+        {"error_state", "errors", "", -1, true},
+        {"iq_a", "torque current", "A", 3, true},
+        {"power", "power", "(of 1000)", -1, true},
+        {"speed_dps", "speed", "dps", 2, true},
+        {"ia_a", "phase A current", "A", 3, true},
+        {"ib_a", "phase B current", "A", 3, true},
+        {"ic_a", "phase C current", "A", 3, true},
+        {"encoder", "encoder", "counts", -1, true},
+        {"encoder_raw", "encoder raw", "counts", -1, true},
+        {"encoder_offset", "encoder offset", "counts", -1, true},
+        {"direction", "direction", "", -1, true},
+        {"angle_deg", "angle", "deg", 2, false},
+        {"max_speed_dps", "max speed", "dps", 2, false},
+        {"angle_kp", "angle Kp", "", -1, true},
+        {"angle_ki", "angle Ki", "", -1, true},
+        {"speed_kp", "speed Kp", "", -1, true},
+        {"speed_ki", "speed Ki", "", -1, true},
+        {"iq_kp", "iq Kp", "", -1, true},
+        {"iq_ki", "iq Ki", "", -1, true},
+        {"accel_dps2", "acceleration", "dps/s", -1, true},
+    };
+    return kLabels;
+}
+
+QString valueText(const FieldLabel &l, const QJsonValue &v)
+{
+    if (QLatin1String(l.key) == QLatin1String("error_state"))
+        return ReplyText::errorText(v.toInt());
+    if (v.isString())
+        return v.toString();
+    if (v.isBool())
+        return v.toBool() ? QStringLiteral("yes") : QStringLiteral("no");
+    QString n = QString::number(v.toInteger());
+    if (l.decimals >= 0)
+        n = l.trim ? ReplyText::number(v.toDouble(), l.decimals)
+                   : QString::number(v.toDouble(), 'f', l.decimals);
+    if (QByteArray(l.key).endsWith("_version") && !n.contains(QLatin1Char('.')))
+        n += QStringLiteral(".0"); // "1.0", as the vendor's tools show versions
+    return *l.unit ? n + QLatin1Char(' ') + QLatin1String(l.unit) : n;
+}
+
+} // namespace
+
+QString ReplyText::number(double value, int decimals)
+{
+    QString t = QString::number(value, 'f', decimals);
+    if (t.contains(QLatin1Char('.'))) {
+        while (t.endsWith(QLatin1Char('0')))
+            t.chop(1);
+        if (t.endsWith(QLatin1Char('.')))
+            t.chop(1);
+    }
+    return t == QLatin1String("-0") ? QStringLiteral("0") : t;
+}
+
+QString ReplyText::errorText(int errorState)
+{
+    QStringList flags;
+    if (errorState & 0x01)
+        flags << QStringLiteral("low voltage");
+    if (errorState & 0x08)
+        flags << QStringLiteral("over temperature");
+    if (errorState & ~0x09)
+        flags << QStringLiteral("unknown bits");
+    if (flags.isEmpty())
+        return QStringLiteral("none");
+    return QStringLiteral("%1 (0x%2)")
+        .arg(flags.join(QStringLiteral(", ")))
+        .arg(errorState, 2, 16, QLatin1Char('0'));
+}
+
+QStringList ReplyText::lines(const QJsonObject &fields, const QString &indent)
+{
+    qsizetype width = 0;
+    for (const FieldLabel &l : labels()) {
+        if (fields.contains(QLatin1String(l.key)))
+            width = std::max(width, qsizetype(qstrlen(l.label)));
+    }
+    QStringList out;
+    for (const FieldLabel &l : labels()) {
+        const QJsonValue v = fields.value(QLatin1String(l.key));
+        if (v.isUndefined())
+            continue;
+        out << indent + QString::fromLatin1(l.label).leftJustified(width + 2) + valueText(l, v);
+    }
+    return out;
+}
+
+} // namespace lk::lkctl

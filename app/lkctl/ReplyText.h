@@ -1,0 +1,22 @@
+#pragma once
+
+#include <QtCore/QJsonObject>
+#include <QtCore/QString>
+#include <QtCore/QStringList>
+
+namespace lk::lkctl {
+
+/// Readable text for people at a terminal: CLI.md fields as "label  value unit" lines.
+/// Scripts read --json instead; this text is not a contract.
+class ReplyText {
+public:
+    /// One line per field in CLI.md order, labels aligned; *_raw fields and the flag
+    /// booleans (folded into "errors") are left out.
+    static QStringList lines(const QJsonObject &fields, const QString &indent = QString());
+    /// "none" or "low voltage, over temperature (0x09)".
+    static QString errorText(int errorState);
+    /// A number as a person reads it: `decimals` places, trailing zeros trimmed.
+    static QString number(double value, int decimals);
+};
+
+} // namespace lk::lkctl

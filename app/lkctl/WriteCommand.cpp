@@ -1,0 +1,201 @@
+#include "WriteCommand.h"
+
+#include "Console.h"
+#include "LiveBus.h"
+#include "OrderedJson.h"
+#include "ReplyText.h"
+
+#include <protocol/FieldJson.h>
+
+namespace lk::lkctl {
+
+using protocol::Command;
+using protocol::FieldJson;
+
+namespace {
+
+const QStringList kPidFields{"angle_kp", "angle_ki", "speed_kp", "speed_ki", "iq_kp", "iq_ki"};
+
+QString describe(const QJsonObject &fields)
+{
+    QStringList parts;
+    for (const QString &line : ReplyText::lines(fields))
+        parts << line.simplified();
+    return parts.join(QStringLiteral(", "));
+}
+
+} // namespace
+
+QString WriteCommand::summary() const
+{
+    return QStringLiteral("write PID gains (RAM or ROM) or acceleration, then read them back");
+}
+
+QString WriteCommand::example() const
+{
+    return QStringLiteral("lkctl write 3 pid 100 100 50 40 50 50 --ram --port /dev/ttyUSB0");
+}
+
+QString WriteCommand::usage() const
+{
+    return QStringLiteral(
+               "Usage: lkctl write ID pid ANGLE_KP ANGLE_KI SPEED_KP SPEED_KI IQ_KP IQ_KI\n"
+               "                   (--ram | --rom --yes) (--port DEV [--baud N] | --sim SPEC) "
+               "[--json]\n"
+               "       lkctl write ID accel DPS2 --ram (--port DEV [--baud N] | --sim SPEC) "
+               "[--json]\n"
+               "\n"
+               "Write drive ID's PID gains (each 0..255) or acceleration (0..2147483647 dps/s),\n"
+               "then read them back (read_pid, read_accel) and print what the drive now holds.\n"
+               "\n"
+               "  --ram   write_pid_ram / write_accel_ram: takes effect now, lost at power-off\n"
+               "  --rom   write_pid_rom: kept across power-off. ROM is the drive's flash, which\n"
+               "          wears out after a limited number of writes: try values with --ram,\n"
+               "          and write them to ROM once, with --yes to confirm. The protocol has\n"
+               "          no ROM write for acceleration.\n"
+               "  --yes   confirm a ROM write\n"
+               "  --json  one line: {\"command\":\"write_pid_ram\",\"id\":3,\"written\":{...},"
+               "\"holds\":{...}}\n"
+               "\n"
+               "%1"
+               "\n"
+               "Examples:\n"
+               "  lkctl write 3 pid 100 100 50 40 50 50 --ram --port /dev/ttyUSB0\n"
+               "  lkctl write 3 pid 100 100 50 40 50 50 --rom --yes --port /dev/ttyUSB0\n"
+               "  lkctl write 3 accel 5000 --ram --port ttyUSB0 --json\n"
+               "\n"
+               "%2")
+        .arg(BusOptions::helpText(),
+             exitStatusText(QStringLiteral(
+                 "  4  refused: a ROM write without --yes (nothing was sent)\n"
+                 "  5  the read-back differs from what was written: the drive holds other\n"
+                 "     values (some firmware ignores write_accel_ram); both are printed\n")));
+}
+
+std::optional<WriteCommand::Plan> WriteCommand::parse(const ArgParser &parser, Console &console,
+                                                      int *status) const
+{
+    const auto fail = [&](const QString &message) {
+        *status = usageError(console, message);
+        return std::nullopt;
+    };
+    const QStringList &pos = parser.positionals();
+    if (pos.size() < 2)
+        return fail(QStringLiteral("expected ID and pid|accel with their values"));
+    QString error;
+    if (!parseId(pos.at(0), &error))
+        return fail(error);
+    const bool ram = parser.isSet(QStringLiteral("ram"));
+    Plan plan;
+    plan.rom = parser.isSet(QStringLiteral("rom"));
+    if (ram == plan.rom)
+        return fail(ram ? QStringLiteral("give --ram or --rom, not both")
+                        : QStringLiteral("say where to write: --ram (until power-off) or --rom "
+                                         "--yes (kept)"));
+    protocol::FieldValues values;
+    values.insert(QStringLiteral("id"), pos.at(0));
+    if (pos.at(1) == QLatin1String("pid")) {
+        if (pos.size() != 2 + kPidFields.size())
+            return fail(QStringLiteral("pid takes six gains: ANGLE_KP ANGLE_KI SPEED_KP SPEED_KI "
+                                       "IQ_KP IQ_KI (got %1)")
+                            .arg(pos.size() - 2));
+        for (qsizetype i = 0; i < kPidFields.size(); ++i)
+            values.insert(kPidFields.at(i), pos.at(2 + i));
+        plan.command = plan.rom ? QStringLiteral("write_pid_rom") : QStringLiteral("write_pid_ram");
+        plan.readBack = Command::ReadPid;
+        plan.what = QStringLiteral("PID gains");
+    } else if (pos.at(1) == QLatin1String("accel")) {
+        if (plan.rom)
+            return fail(QStringLiteral("acceleration has no ROM write in the protocol; use --ram"));
+        if (pos.size() != 3)
+            return fail(QStringLiteral("accel takes one value, DPS2"));
+        values.insert(QStringLiteral("accel_dps2"), pos.at(2));
+        plan.command = QStringLiteral("write_accel_ram");
+        plan.readBack = Command::ReadAccel;
+        plan.what = QStringLiteral("acceleration");
+    } else {
+        return fail(QStringLiteral("cannot write '%1'; write pid or accel").arg(pos.at(1)));
+    }
+    const protocol::FieldBuildResult built = FieldJson::buildRequest(plan.command, values);
+    if (!built.ok())
+        return fail(built.message);
+    plan.request = *built.request;
+    plan.json = parser.isSet(QStringLiteral("json"));
+    return plan;
+}
+
+int WriteCommand::readBack(LiveBus &bus, const Plan &plan)
+{
+    const int id = plan.request.id;
+    const bus::RequestResult r = bus.request(plan.readBack, id);
+    if (!r.ok() || !r.reply) {
+        bus.error(QStringLiteral("the write was acknowledged but the read-back failed:"));
+        bus.reportFailure(r);
+        return kExitFailure;
+    }
+    const QJsonObject written = FieldJson::requestFields(plan.request);
+    const QJsonObject holds = FieldJson::replyFields(*r.reply);
+    const bool same = written == holds;
+    Console &console = bus.console();
+    if (plan.json) {
+        OrderedJson o;
+        o.text(QStringLiteral("command"), plan.command)
+            .integer(QStringLiteral("id"), id)
+            .fields(QStringLiteral("written"), written)
+            .fields(QStringLiteral("holds"), holds)
+            .boolean(QStringLiteral("match"), same);
+        console.out(o.toJson() + '\n');
+    } else {
+        console.outLine(QStringLiteral("Drive %1 now holds (%2, read back with %3):")
+                            .arg(id)
+                            .arg(plan.rom ? QStringLiteral("ROM and RAM") : QStringLiteral("RAM"),
+                                 protocol::CommandTable::name(plan.readBack)));
+        for (const QString &line : ReplyText::lines(holds, QStringLiteral("  ")))
+            console.outLine(line);
+    }
+    if (same)
+        return kExitOk;
+    const QString hint = plan.readBack == Command::ReadAccel
+                             ? QStringLiteral(" Some firmware acknowledges write_accel_ram and "
+                                              "ignores it (ERRATA).")
+                             : QString();
+    bus.error(QStringLiteral("read-back mismatch on drive %1: wrote %2 (%3) but the drive holds "
+                             "%4.%5")
+                  .arg(id)
+                  .arg(plan.what, describe(written), describe(holds), hint));
+    return kExitMismatch;
+}
+
+int WriteCommand::run(const QStringList &args, Console &console)
+{
+    ArgParser parser = makeParser();
+    parser.addOption(QStringLiteral("ram"), false);
+    parser.addOption(QStringLiteral("rom"), false);
+    parser.addOption(QStringLiteral("yes"), false);
+    int status = kExitOk;
+    const std::optional<BusOptions> busOptions = parseBus(parser, args, console, &status);
+    if (!busOptions)
+        return status;
+    const std::optional<Plan> plan = parse(parser, console, &status);
+    if (!plan)
+        return status;
+    if (plan->rom && !parser.isSet(QStringLiteral("yes"))) {
+        console.errLine(QStringLiteral(
+            "lkctl write: refusing to write PID gains to ROM without --yes. ROM is the drive's "
+            "flash memory, which wears out after a limited number of writes; nothing was sent. "
+            "Try the gains with --ram first (they last until power-off), then write them to ROM "
+            "once with --rom --yes."));
+        return kExitRefused;
+    }
+    LiveBus bus(console, name());
+    if (!bus.open(*busOptions))
+        return kExitFailure;
+    const bus::RequestResult w = bus.request(plan->request);
+    if (!w.ok()) {
+        bus.reportFailure(w);
+        return kExitFailure;
+    }
+    return readBack(bus, *plan);
+}
+
+} // namespace lk::lkctl

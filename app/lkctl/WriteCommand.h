@@ -1,0 +1,39 @@
+#pragma once
+
+#include "LiveCommand.h"
+
+#include <protocol/Command.h>
+#include <protocol/Request.h>
+
+#include <optional>
+
+namespace lk::lkctl {
+
+class LiveBus;
+
+/// `lkctl write ID pid ... --ram|--rom [--yes]` and `lkctl write ID accel DPS2 --ram`: write,
+/// read back, print what the drive now holds; a read-back that differs fails loudly.
+class WriteCommand : public LiveCommand {
+public:
+    QString name() const override { return QStringLiteral("write"); }
+    QString summary() const override;
+    QString example() const override;
+    QString usage() const override;
+    int run(const QStringList &args, Console &console) override;
+
+private:
+    /// What to write, decided from the arguments before the bus is touched.
+    struct Plan {
+        protocol::Request request;
+        QString command; ///< "write_pid_ram", ...
+        protocol::Command readBack = protocol::Command::ReadPid;
+        bool rom = false;
+        bool json = false;
+        QString what; ///< "PID gains", "acceleration"
+    };
+    std::optional<Plan> parse(const ArgParser &parser, Console &console, int *status) const;
+    /// Read back what was written, print it; kExitMismatch when it differs.
+    int readBack(LiveBus &bus, const Plan &plan);
+};
+
+} // namespace lk::lkctl

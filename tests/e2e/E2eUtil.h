@@ -1,0 +1,56 @@
+#pragma once
+
+#include "LksimProcess.h"
+
+#include <QtCore/QByteArray>
+#include <QtCore/QProcess>
+#include <QtCore/QStringList>
+#include <QtTest/QTest>
+
+namespace lk::e2e {
+
+/// The drives every end-to-end test serves: unusual IDs, one of each kind of reply layout.
+inline QString simMotors()
+{
+    return QStringLiteral("3:MF,17:MS,32:MG");
+}
+
+/// What a script sees of one lkctl run.
+struct CtlResult {
+    int exitCode = -1;
+    QByteArray out;
+    QByteArray err;
+};
+
+#ifdef LKCTL_PATH
+/// Run the lkctl binary; generous timeout, the machine may be loaded.
+inline CtlResult lkctl(const QStringList &args, int timeoutMs = 120000)
+{
+    QProcess p;
+    p.start(QStringLiteral(LKCTL_PATH), args);
+    CtlResult r;
+    if (!p.waitForStarted(60000))
+        return r;
+    p.closeWriteChannel();
+    if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        p.waitForFinished(5000);
+    }
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    r.out = p.readAllStandardOutput();
+    r.err = p.readAllStandardError();
+    return r;
+}
+#endif
+
+/// The ordinary lksim command line of these tests: the drives, the link, wire time at 115200.
+inline QStringList simArgs(const QString &link, const QStringList &extra = {})
+{
+    return QStringList{QStringLiteral("--motors"),    simMotors(),
+                       QStringLiteral("--link"),      link,
+                       QStringLiteral("--wire-time"), QStringLiteral("--baud"),
+                       QStringLiteral("115200")} +
+           extra;
+}
+
+} // namespace lk::e2e

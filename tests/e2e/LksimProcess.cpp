@@ -1,0 +1,90 @@
+#include "LksimProcess.h"
+
+#include <QtCore/QDeadlineTimer>
+
+namespace lk::e2e {
+
+namespace {
+constexpr int kStartTimeoutMs = 30000; // a loaded 2-core machine may be slow to exec
+constexpr int kStopTimeoutMs = 5000;
+} // namespace
+
+LksimProcess::LksimProcess(QString executable) : m_executable(std::move(executable)) {}
+
+LksimProcess::~LksimProcess()
+{
+    stop();
+}
+
+bool LksimProcess::start(const QStringList &args)
+{
+    stop();
+    m_device.clear();
+    m_error.clear();
+    m_log.clear();
+    m_process.setProgram(m_executable);
+    m_process.setArguments(args);
+    m_process.start();
+    if (!m_process.waitForStarted(kStartTimeoutMs)) {
+        m_error = QStringLiteral("cannot start %1: %2").arg(m_executable, m_process.errorString());
+        return false;
+    }
+    const QDeadlineTimer deadline(kStartTimeoutMs);
+    while (!m_process.canReadLine() && !deadline.hasExpired() &&
+           m_process.state() == QProcess::Running)
+        m_process.waitForReadyRead(int(std::max<qint64>(1, deadline.remainingTime())));
+    m_device = QString::fromLocal8Bit(m_process.readLine()).trimmed();
+    if (m_device.isEmpty()) {
+        m_error = QStringLiteral("lksim printed no device path: %1")
+                      .arg(QString::fromLocal8Bit(m_process.readAllStandardError()));
+        stop();
+        return false;
+    }
+    return true;
+}
+
+void LksimProcess::stop()
+{
+    if (m_process.state() == QProcess::NotRunning)
+        return;
+    m_process.terminate();
+    if (!m_process.waitForFinished(kStopTimeoutMs)) {
+        m_process.kill();
+        m_process.waitForFinished(kStopTimeoutMs);
+    }
+    m_log += m_process.readAllStandardError();
+}
+
+void LksimProcess::kill()
+{
+    if (m_process.state() == QProcess::NotRunning)
+        return;
+    m_process.kill();
+    m_process.waitForFinished(kStopTimeoutMs);
+    m_log += m_process.readAllStandardError();
+}
+
+QByteArray LksimProcess::log()
+{
+    if (m_process.state() != QProcess::NotRunning) {
+        // Pull what lksim wrote into the pipe meanwhile: without an event loop in between,
+        // QProcess has not read it yet.
+        m_process.setReadChannel(QProcess::StandardError);
+        while (m_process.waitForReadyRead(50)) {
+        }
+        m_log += m_process.readAllStandardError();
+    }
+    return m_log;
+}
+
+QList<QByteArray> LksimProcess::receivedFrames()
+{
+    QList<QByteArray> frames;
+    for (const QByteArray &line : log().split('\n')) {
+        if (line.startsWith("<- "))
+            frames.append(line.mid(3).trimmed());
+    }
+    return frames;
+}
+
+} // namespace lk::e2e

@@ -1,0 +1,384 @@
+#include <QtCore/QDir>
+#include <QtCore/QFile>
+#include <QtCore/QJsonArray>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QJsonObject>
+#include <QtCore/QProcess>
+#include <QtCore/QTemporaryDir>
+#include <QtTest/QtTest>
+
+// The live subcommands of the lkctl binary (scan, info, read, write, control, off/stop/run,
+// monitor): argument errors, which are refused before any bus is opened, and their behaviour
+// on the in-process simulated bus (--sim), which needs no pseudo-terminal. tests/e2e runs the
+// same commands against lksim over a real serial port.
+
+namespace {
+
+struct Result {
+    int exitCode = -1;
+    QByteArray out;
+    QByteArray err;
+};
+
+Result lkctl(const QStringList &args)
+{
+    QProcess p;
+    p.start(QStringLiteral(LKCTL_PATH), args);
+    if (!p.waitForStarted(60000))
+        qFatal("cannot start %s", LKCTL_PATH);
+    p.closeWriteChannel();
+    if (!p.waitForFinished(120000)) // generous: the machine is shared and may be loaded
+        qFatal("lkctl %s did not finish", qPrintable(args.join(' ')));
+    Result r;
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    r.out = p.readAllStandardOutput();
+    r.err = p.readAllStandardError();
+    return r;
+}
+
+QStringList words(const char *text)
+{
+    return QString::fromLatin1(text).split(QLatin1Char(' '), Qt::SkipEmptyParts);
+}
+
+const char kSim[] = "--sim 3:MF,17:MS,32:MG";
+
+QStringList sim(const char *text)
+{
+    return words(text) + words(kSim);
+}
+
+} // namespace
+
+class tst_LkctlLive : public QObject {
+    Q_OBJECT
+private slots:
+    void argumentErrors_data();
+    void argumentErrors();
+    void help_data();
+    void help();
+    void overviewListsLiveCommands();
+    void scanSimulatedBus();
+    void readAndInfoShapes();
+    void controlWithinAndOverLimits_data();
+    void controlWithinAndOverLimits();
+    void limitsFile();
+    void romNeedsYes();
+    void romPersistsInSimRomDirRamDoesNot();
+    void offStopRun();
+    void monitorCountAndJson();
+    void silentIdFailsNamingIt();
+};
+
+void tst_LkctlLive::argumentErrors_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QByteArray>("message");
+    const auto row = [](const char *name, QStringList args, const char *message) {
+        QTest::newRow(name) << args << QByteArray(message);
+    };
+    // Bus options.
+    row("no bus", words("scan"), "no bus: give --port DEV");
+    row("port and sim", words("scan --port /dev/null --sim 1:MF"), "not both");
+    row("bad baud", sim("scan --baud 1234"), "--baud must be one of 9600");
+    row("bad sim spec", words("scan --sim 40:MF"), "--sim:");
+    row("rom dir without sim", words("scan --port /dev/null --sim-rom-dir /tmp"),
+        "--sim-rom-dir goes with --sim");
+    row("unknown option", sim("scan --frobnicate"), "unknown option '--frobnicate'");
+    row("missing value", words("scan --port"), "--port needs a value");
+    row("flag with value", sim("scan --json=1"), "--json takes no value");
+    row("option twice", sim("scan --from 1 --from 2"), "--from given twice");
+    // scan
+    row("scan from 0", sim("scan --from 0"), "--from must be 1..32");
+    row("scan range reversed", sim("scan --from 10 --to 5"), "--from 10 is above --to 5");
+    row("scan extra", sim("scan 3"), "unexpected argument '3'");
+    row("scan retries", sim("scan --retries x"), "--retries must be an integer in 0..5");
+    // info, read
+    row("info no id", sim("info"), "missing the drive ID");
+    row("info bad id", sim("info 33"), "ID must be 1..32 (got '33')");
+    row("info two ids", sim("info 3 4"), "expected one ID");
+    row("read no what", sim("read 3"), "expected ID and WHAT");
+    row("read bad what", sim("read 3 speed"), "cannot read 'speed'; WHAT is one of pid");
+    row("read bad id", sim("read x pid"), "ID must be 1..32 (got 'x')");
+    // write
+    row("write few gains", sim("write 3 pid 1 2 3 --ram"), "pid takes six gains");
+    row("write where", sim("write 3 pid 1 2 3 4 5 6"), "say where to write: --ram");
+    row("write ram and rom", sim("write 3 pid 1 2 3 4 5 6 --ram --rom"), "not both");
+    row("write gain range", sim("write 3 pid 1 2 3 4 5 256 --ram"), "iq_ki must be in 0..255");
+    row("write gain text", sim("write 3 pid 1 2 x 4 5 6 --ram"), "speed_kp must be in 0..255");
+    row("write accel rom", sim("write 3 accel 5 --rom"), "no ROM write");
+    row("write accel range", sim("write 3 accel -1 --ram"), "accel_dps2 must be in");
+    row("write accel two", sim("write 3 accel 1 2 --ram"), "accel takes one value");
+    row("write what", sim("write 3 zero 1 --ram"), "cannot write 'zero'");
+    // control
+    row("control short", sim("control 3"), "expected ID MODE VALUE");
+    row("control mode", sim("control 3 warp 1"), "unknown mode 'warp'");
+    row("control range", sim("control 3 torque 40"), "iq_a must be in -32..32 A");
+    row("control text", sim("control 3 speed fast"), "not a number");
+    row("control two values", sim("control 3 speed 10 20"), "speed takes one value");
+    row("control no direction", sim("control 3 single-position 90"), "needs --direction");
+    row("control stray direction", sim("control 3 speed 10 --direction cw"),
+        "--direction goes with single-position only");
+    row("control bad direction", sim("control 3 single-position 90 --direction up"),
+        "direction must be in cw|ccw");
+    row("control single range", sim("control 3 single-position 400 --direction cw"),
+        "angle_deg must be in 0..359.99 deg");
+    row("control stray max speed", sim("control 3 torque 1 --max-speed 5"),
+        "--max-speed goes with the position modes only");
+    row("control max speed range", sim("control 3 increment 10 --max-speed -5"),
+        "max_speed_dps must be in");
+    row("control power range", sim("control 17 open-loop 1001"), "power must be in");
+    row("control torque limit", sim("control 3 speed 10 --max-torque-a -1"),
+        "--max-torque-a must be a number >= 0");
+    row("control power limit", sim("control 3 speed 10 --max-power 2000"),
+        "--max-power must be an integer in 0..1000");
+    row("control limits file", sim("control 3 speed 10 --limits /nonexistent/limits.json"),
+        "cannot read --limits /nonexistent/limits.json");
+    // off, stop, run
+    row("off nothing", sim("off"), "missing ID or 'all'");
+    row("stop bad id", sim("stop 40"), "ID must be 1..32 (got '40'), or 'all'");
+    row("run two", sim("run 1 2"), "expected one ID or 'all'");
+    // monitor
+    row("monitor no id", sim("monitor"), "missing the drive ID(s)");
+    row("monitor twice", sim("monitor 3 3"), "ID 3 given twice");
+    row("monitor what", sim("monitor 3 --what state2,speed"), "cannot poll 'speed'");
+    row("monitor rate", sim("monitor 3 --rate -1"), "--rate must be a number >= 0");
+    row("monitor count", sim("monitor 3 --count 0"), "--count must be an integer in 1..");
+    row("monitor duration", sim("monitor 3 --duration soon"), "--duration must be a number");
+}
+
+void tst_LkctlLive::argumentErrors()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QByteArray, message);
+    const Result r = lkctl(args);
+    QCOMPARE(r.exitCode, 2);
+    QCOMPARE(r.out, QByteArray()); // nothing printed, nothing sent
+    QVERIFY2(r.err.startsWith("lkctl " + args.first().toUtf8() + ": "), r.err.constData());
+    QVERIFY2(r.err.contains(message), r.err.constData());
+    QVERIFY2(r.err.contains("--help"), r.err.constData()); // where to look
+}
+
+void tst_LkctlLive::help_data()
+{
+    QTest::addColumn<QString>("command");
+    QTest::addColumn<QStringList>("mentions");
+    QTest::newRow("scan") << "scan" << QStringList{"--sweep-bauds", "--from", "--json", "series"};
+    QTest::newRow("info") << "info" << QStringList{"read_model", "read_accel"};
+    QTest::newRow("read") << "read" << QStringList{"multi-turn", "single-turn", "state3"};
+    QTest::newRow("write") << "write" << QStringList{"--rom", "--yes", "flash", "  5  "};
+    QTest::newRow("control") << "control"
+                             << QStringList{"open-loop",       "torque",          "speed",
+                                            "multi-position",  "single-position", "increment",
+                                            "--max-speed",     "--limits",        "--max-torque-a",
+                                            "--max-speed-dps", "--max-power",     "  4  "};
+    QTest::newRow("off") << "off" << QStringList{"emergency", "all"};
+    QTest::newRow("stop") << "stop" << QStringList{"motor_stop", "all"};
+    QTest::newRow("run") << "run" << QStringList{"motor_run", "  4  "};
+    QTest::newRow("monitor") << "monitor"
+                             << QStringList{"--rate", "--duration", "--count", "--what", "SIGINT"};
+}
+
+void tst_LkctlLive::help()
+{
+    QFETCH(QString, command);
+    QFETCH(QStringList, mentions);
+    const Result r = lkctl({command, QStringLiteral("--help")});
+    QCOMPARE(r.exitCode, 0);
+    QVERIFY(r.out.startsWith("Usage: lkctl " + command.toUtf8()));
+    for (const QString &m : mentions + QStringList{"--port", "--sim", "Examples:", "Exit status"})
+        QVERIFY2(r.out.contains(m.toUtf8()), qPrintable(m));
+}
+
+void tst_LkctlLive::overviewListsLiveCommands()
+{
+    const Result r = lkctl({QStringLiteral("--help")});
+    QCOMPARE(r.exitCode, 0);
+    for (const char *c : {"scan", "info", "read", "write", "control", "off", "stop", "run",
+                          "monitor", "encode", "decode"})
+        QVERIFY2(r.out.contains(QByteArray("\n  ") + c + ' '), c);
+    for (const char *status : {"  0  success", "  1  ", "  2  ", "  3  ", "  4  ", "  5  "})
+        QVERIFY2(r.out.contains(status), status);
+}
+
+void tst_LkctlLive::scanSimulatedBus()
+{
+    const Result r = lkctl(sim("scan --json"));
+    QCOMPARE(r.exitCode, 0);
+    const QJsonArray a = QJsonDocument::fromJson(r.out).array();
+    QCOMPARE(a.size(), 3);
+    QCOMPARE(a.at(0).toObject().value("id").toInt(), 3);
+    QCOMPARE(a.at(1).toObject().value("series").toString(), QStringLiteral("MS"));
+    QCOMPARE(a.at(2).toObject().value("motor_name").toString(), QStringLiteral("MG5010E-i10"));
+    const Result range = lkctl(sim("scan --from 4 --to 16 --json"));
+    QCOMPARE(range.exitCode, 0);
+    QCOMPARE(range.out, QByteArray("[]\n"));
+    const Result text = lkctl(sim("scan --from 4 --to 16"));
+    QVERIFY(text.out.startsWith("No drive answered on IDs 4..16"));
+}
+
+void tst_LkctlLive::readAndInfoShapes()
+{
+    Result r = lkctl(sim("read 17 state2 --json"));
+    QCOMPARE(r.exitCode, 0);
+    QVERIFY2(r.out.startsWith("{\"command\":\"read_state2\",\"code\":\"0x9C\",\"id\":17,\"fields\":"
+                              "{\"temperature_c\":"),
+             r.out.constData());
+    QVERIFY(r.out.contains("\"power\":")); // MS: power, not iq
+    r = lkctl(sim("read 17 state3"));
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains("MS: that series has no read_state3"), r.err.constData());
+    r = lkctl(sim("info 32 --json"));
+    QCOMPARE(r.exitCode, 0);
+    const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+    QCOMPARE(o.keys(), (QStringList{"accel", "id", "model", "pid", "series", "state1"}));
+}
+
+void tst_LkctlLive::controlWithinAndOverLimits_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<int>("exitCode");
+    QTest::addColumn<QByteArray>("message");
+    QTest::newRow("speed ok") << sim("control 3 speed 100") << 0 << QByteArray();
+    QTest::newRow("speed over series")
+        << sim("control 3 speed 20000") << 4 << QByteArray("MF series top speed of 18000 dps");
+    QTest::newRow("torque over default")
+        << sim("control 3 torque 2.5") << 4 << QByteArray("your torque limit of 2.25 A");
+    QTest::newRow("torque raised")
+        << sim("control 3 torque 2.5 --max-torque-a 3") << 0 << QByteArray();
+    QTest::newRow("torque over series even when raised")
+        << sim("control 3 torque 10 --max-torque-a 20") << 4 << QByteArray("series rating");
+    QTest::newRow("open loop on MF") << sim("control 3 open-loop 100") << 4
+                                     << QByteArray("MF drives do not implement open_loop");
+    QTest::newRow("open loop on MS") << sim("control 17 open-loop 100") << 0 << QByteArray();
+    QTest::newRow("position") << sim("control 32 multi-position -720 --max-speed 360") << 0
+                              << QByteArray();
+    QTest::newRow("silent drive") << sim("control 5 speed 10") << 1
+                                  << QByteArray("read_model (ID 5)");
+}
+
+void tst_LkctlLive::controlWithinAndOverLimits()
+{
+    QFETCH(QStringList, args);
+    QFETCH(int, exitCode);
+    QFETCH(QByteArray, message);
+    const Result r = lkctl(args);
+    QVERIFY2(r.exitCode == exitCode, r.err.constData());
+    QVERIFY2(r.err.contains(message), r.err.constData());
+    if (exitCode == 0)
+        QVERIFY(r.out.startsWith("Sent "));
+    else
+        QVERIFY(r.out.isEmpty());
+    if (exitCode == 4)
+        QVERIFY(r.err.contains("refused, nothing was sent"));
+}
+
+void tst_LkctlLive::limitsFile()
+{
+    QTemporaryDir dir;
+    const QString good = dir.filePath(QStringLiteral("good.json"));
+    const QString bad = dir.filePath(QStringLiteral("bad.json"));
+    const QString wrongType = dir.filePath(QStringLiteral("type.json"));
+    for (const auto &[path, text] :
+         {std::pair{good, QByteArray(R"({"max_speed_dps":50,"max_increment_deg":30})")},
+          {bad, QByteArray("{not json")},
+          {wrongType, QByteArray(R"({"max_torque_a":"lots"})")}}) {
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(text);
+    }
+    Result r = lkctl(words("control 3 speed 60 --limits") + QStringList{good} + words(kSim));
+    QCOMPARE(r.exitCode, 4);
+    QVERIFY2(r.err.contains("your speed limit of 50 dps"), r.err.constData());
+    r = lkctl(words("control 3 increment 45 --limits") + QStringList{good} + words(kSim));
+    QCOMPARE(r.exitCode, 4);
+    QVERIFY2(r.err.contains("your step limit of 30 deg"), r.err.constData());
+    r = lkctl(words("control 3 speed 60 --max-speed-dps 70 --limits") + QStringList{good} +
+              words(kSim));
+    QCOMPARE(r.exitCode, 0); // the flag overrides the file
+    r = lkctl(words("control 3 speed 60 --limits") + QStringList{bad} + words(kSim));
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains("is not a JSON object"), r.err.constData());
+    r = lkctl(words("control 3 speed 60 --limits") + QStringList{wrongType} + words(kSim));
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains("max_torque_a must be a non-negative number"), r.err.constData());
+}
+
+void tst_LkctlLive::romNeedsYes()
+{
+    const Result r = lkctl(sim("write 3 pid 1 2 3 4 5 6 --rom"));
+    QCOMPARE(r.exitCode, 4);
+    QCOMPARE(r.out, QByteArray());
+    QVERIFY2(r.err.contains("flash") && r.err.contains("--yes") &&
+                 r.err.contains("nothing was sent"),
+             r.err.constData());
+}
+
+void tst_LkctlLive::romPersistsInSimRomDirRamDoesNot()
+{
+    QTemporaryDir dir;
+    const QStringList rom{QStringLiteral("--sim-rom-dir"), dir.path()};
+    Result r = lkctl(sim("write 3 pid 31 32 33 34 35 36 --rom --yes --json") + rom);
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    QVERIFY(r.out.contains("\"match\":true"));
+    r = lkctl(sim("write 17 pid 41 42 43 44 45 46 --ram") + rom);
+    QCOMPARE(r.exitCode, 0);
+    // Each lkctl --sim run powers the simulated drives up afresh: ROM stays, RAM is gone.
+    r = lkctl(sim("read 3 pid --json") + rom);
+    QVERIFY2(r.out.contains("\"angle_kp\":31"), r.out.constData());
+    r = lkctl(sim("read 17 pid --json") + rom);
+    QVERIFY2(!r.out.contains("\"angle_kp\":41"), r.out.constData());
+}
+
+void tst_LkctlLive::offStopRun()
+{
+    Result r = lkctl(sim("off all --json"));
+    QCOMPARE(r.exitCode, 0);
+    QVERIFY2(
+        r.out.startsWith("{\"command\":\"motor_off\",\"acknowledged\":[3,17,32],\"silent\":[1,"),
+        r.out.constData());
+    r = lkctl(sim("stop 3"));
+    QCOMPARE(r.exitCode, 0);
+    QCOMPARE(r.out, QByteArray("motor_stop acknowledged by: 3\n"));
+    r = lkctl(sim("run all --json"));
+    QCOMPARE(r.exitCode, 0);
+    QCOMPARE(r.out, QByteArray("{\"command\":\"motor_run\",\"acknowledged\":[3,17,32],"
+                               "\"silent\":[]}\n"));
+    r = lkctl(sim("off 9"));
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains("motor_off (ID 9)"), r.err.constData());
+}
+
+void tst_LkctlLive::monitorCountAndJson()
+{
+    Result r = lkctl(sim("monitor 3 17 --count 6 --rate 0 --what state2"));
+    QCOMPARE(r.exitCode, 0);
+    const QList<QByteArray> lines = r.out.trimmed().split('\n');
+    QCOMPARE(lines.size(), 7);
+    QCOMPARE(lines.first(), QByteArray("time_s,id,temperature_c,iq_a,power,speed_dps,encoder"));
+    for (int i = 1; i < lines.size(); ++i)
+        QCOMPARE(lines.at(i).count(','), 6);
+    QVERIFY2(r.err.contains("6 rows in") && r.err.contains("bus: requests"), r.err.constData());
+
+    r = lkctl(sim("monitor 32 --count 2 --json --what multi-turn,state1"));
+    QCOMPARE(r.exitCode, 0);
+    for (const QByteArray &line : r.out.trimmed().split('\n')) {
+        const QJsonObject o = QJsonDocument::fromJson(line).object();
+        QCOMPARE(o.keys(), (QStringList{"error_state", "id", "multi_turn_deg", "temperature_c",
+                                        "time_s", "voltage_v"}));
+    }
+    r = lkctl(sim("monitor 3 --duration 0.3 --rate 20"));
+    QCOMPARE(r.exitCode, 0);
+    QVERIFY(r.out.count('\n') >= 2);
+}
+
+void tst_LkctlLive::silentIdFailsNamingIt()
+{
+    const Result r = lkctl(sim("info 9"));
+    QCOMPARE(r.exitCode, 1);
+    QCOMPARE(r.out, QByteArray());
+    QVERIFY2(r.err.startsWith("lkctl info: no reply to read_model (ID 9)"), r.err.constData());
+}
+
+QTEST_GUILESS_MAIN(tst_LkctlLive)
+#include "tst_lkctllive.moc"
