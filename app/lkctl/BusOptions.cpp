@@ -94,7 +94,9 @@ QString BusOptions::helpText()
         "  --baud N           9600, 19200, 38400, 57600, 115200 (default), 230400, 460800,\n"
         "                     1000000 or 2000000\n"
         "  --sim ID:SERIES,.. the built-in simulated bus instead, e.g. --sim 3:MF,17:MS\n"
-        "                     (series MS, MF, MG, MH; it lives only as long as this command)\n"
+        "                     (series MS, MF, MG, MH; it lives only as long as this command;\n"
+        "                     3:MF+accel-ignored copies firmware that ignores 0x34, and\n"
+        "                     +clear-angle-ignored firmware that ignores 0x95)\n"
         "  --sim-rom-dir DIR  keep the simulated drives' ROM in DIR between commands\n");
 }
 

@@ -71,7 +71,10 @@ int main(int argc, char *argv[])
     const QCommandLineOption motors(
         QStringLiteral("motors"),
         QStringLiteral("Drives on the bus: ID:SERIES[,ID:SERIES...], ID 1..32, series MS, MF, "
-                       "MG or MH; a motor name may stand for the series (5:MG5010E-i36)."),
+                       "MG or MH; a motor name may stand for the series (5:MG5010E-i36). "
+                       "Firmware quirks seen on real drives may follow: 3:MF+accel-ignored "
+                       "(0x34 acknowledged, not applied, 0x33 reads 0), "
+                       "+clear-angle-ignored (0x95 acknowledged, angle unchanged)."),
         QStringLiteral("spec"));
     const QCommandLineOption link(QStringLiteral("link"),
                                   QStringLiteral("Also make PATH a symlink to the device."),

@@ -50,11 +50,18 @@ std::optional<SimBusSpec> SimBusSpec::parse(const QString &text, QString *error)
                 QStringLiteral("'%1': the ID must be a number 1..32, got '%2'").arg(item, idText));
         if (seen.contains(id))
             return fail(QStringLiteral("'%1': ID %2 is given twice").arg(item).arg(id));
-        const auto model = modelFor(seriesText);
+        QStringList parts = seriesText.split(QLatin1Char('+'));
+        auto model = modelFor(parts.takeFirst().trimmed());
         if (!model)
             return fail(QStringLiteral("'%1': unknown series '%2' (expected MS, MF, MG, MH "
                                        "or a motor name such as MG5010E-i10)")
                             .arg(item, seriesText));
+        for (const QString &quirk : parts) {
+            if (!model->quirks.enable(quirk.trimmed()))
+                return fail(QStringLiteral("'%1': unknown firmware quirk '%2' (known: %3)")
+                                .arg(item, quirk.trimmed(),
+                                     FirmwareQuirks::allNames().join(QStringLiteral(", "))));
+        }
         seen.insert(id);
         spec.drives.append(Entry{id, *model});
     }
@@ -67,8 +74,9 @@ QString SimBusSpec::toString() const
     for (const Entry &e : drives) {
         const bool standard =
             e.model.motorName == SimDriveModel::forSeries(e.model.series).motorName;
-        parts << QStringLiteral("%1:%2").arg(e.id).arg(
-            standard ? protocol::seriesName(e.model.series) : e.model.motorName);
+        QStringList model{standard ? protocol::seriesName(e.model.series) : e.model.motorName};
+        model << e.model.quirks.names();
+        parts << QStringLiteral("%1:%2").arg(e.id).arg(model.join(QLatin1Char('+')));
     }
     return parts.join(QLatin1Char(','));
 }

@@ -12,7 +12,8 @@ namespace lk::sim {
 /// The drives of a simulated bus, from the `--motors`/`--sim` syntax "3:MF,17:MS,32:MG".
 ///
 /// Each entry is ID:SERIES (ID 1..32, series MS/MF/MG/MH, case-insensitive) or ID:MOTOR with
-/// a motor name that starts with a series ("5:MG5010E-i36", "6:MF4015-18bit").
+/// a motor name that starts with a series ("5:MG5010E-i36", "6:MF4015-18bit"), optionally
+/// followed by firmware quirks the drive copies ("3:MF+accel-ignored", see FirmwareQuirks).
 struct SimBusSpec {
     struct Entry {
         int id = 1;

@@ -158,6 +158,8 @@ std::optional<Reply> SimDrive::handleParameter(const Request &r)
     }
     case Command::WriteAccelRam: {
         const auto accel = std::get<protocol::Acceleration>(r.payload);
+        if (m_model.quirks.accelIgnored) // acknowledged, not applied (ERRATA)
+            return Reply{r.command, r.id, accel};
         m_ramAccel = accel.dps2; // RAM only: V2.3 has no command that writes accel to ROM
         m_physics.setAccelerationDps2(accel.dps2);
         return Reply{r.command, r.id, accel};
@@ -177,7 +179,8 @@ std::optional<Reply> SimDrive::handleParameter(const Request &r)
         return Reply{r.command, r.id, z};
     }
     case Command::ClearAngle:
-        m_refDeg = m_physics.positionDeg(); // until power-off (ERRATA)
+        if (!m_model.quirks.clearAngleIgnored)
+            m_refDeg = m_physics.positionDeg(); // until power-off (ERRATA)
         return Reply{r.command, r.id, protocol::Acknowledged{}};
     case Command::ClearErrors:
         clearErrors();
@@ -193,7 +196,8 @@ std::optional<Reply> SimDrive::handleRead(const Request &r)
     case Command::ReadPid:
         return Reply{r.command, r.id, m_ramPid};
     case Command::ReadAccel:
-        return Reply{r.command, r.id, protocol::Acceleration{m_ramAccel}};
+        return Reply{r.command, r.id,
+                     protocol::Acceleration{m_model.quirks.accelIgnored ? 0 : m_ramAccel}};
     case Command::ReadEncoder:
         return Reply{r.command, r.id, encoderReading()};
     case Command::ReadMultiTurn:

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "FirmwareQuirks.h"
 #include "motor/ModelNameInfo.h"
 #include "protocol/Series.h"
 
@@ -16,6 +17,7 @@ struct SimDriveModel {
     QString motorName;       ///< e.g. "MF4015"; gear ratio and encoder bits are read from it
     quint8 hardwareRaw = 10; ///< shown /10: 1.0
     quint8 firmwareRaw = 23; ///< shown /10: 2.3
+    FirmwareQuirks quirks;   ///< firmware oddities this drive copies (none by default)
 
     /// Gear ratio and encoder resolution implied by the motor name (series default otherwise).
     motor::ModelNameInfo nameInfo() const;

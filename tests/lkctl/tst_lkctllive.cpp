@@ -65,6 +65,7 @@ private slots:
     void limitsFile();
     void romNeedsYes();
     void romPersistsInSimRomDirRamDoesNot();
+    void readBackMismatchExits5();
     void offStopRun();
     void monitorCountAndJson();
     void silentIdFailsNamingIt();
@@ -328,6 +329,26 @@ void tst_LkctlLive::romPersistsInSimRomDirRamDoesNot()
     QVERIFY2(r.out.contains("\"angle_kp\":31"), r.out.constData());
     r = lkctl(sim("read 17 pid --json") + rom);
     QVERIFY2(!r.out.contains("\"angle_kp\":41"), r.out.constData());
+}
+
+void tst_LkctlLive::readBackMismatchExits5()
+{
+    // Firmware that acknowledges 0x34 and ignores it (ERRATA): the echo looks fine, only the
+    // read-back shows the truth, and a script must see it in the exit status.
+    const QStringList quirky = words("--sim 3:MF+accel-ignored");
+    Result r = lkctl(words("write 3 accel 1000 --ram") + quirky);
+    QCOMPARE(r.exitCode, 5);
+    QVERIFY2(r.out.contains("acceleration  0 dps/s"), r.out.constData());
+    QVERIFY2(r.err.contains("read-back mismatch on drive 3: wrote acceleration "
+                            "(acceleration 1000 dps/s) but the drive holds acceleration "
+                            "0 dps/s.") &&
+                 r.err.contains("ERRATA"),
+             r.err.constData());
+    r = lkctl(words("write 3 accel 1000 --ram --json") + quirky);
+    QCOMPARE(r.exitCode, 5);
+    QVERIFY2(r.out.contains("\"match\":false"), r.out.constData());
+    r = lkctl(words("write 3 pid 1 2 3 4 5 6 --ram") + quirky); // only acceleration is ignored
+    QVERIFY2(r.exitCode == 0, r.err.constData());
 }
 
 void tst_LkctlLive::offStopRun()

@@ -14,6 +14,7 @@ private slots:
     void invalid_data();
     void invalid();
     void motorNameEntry();
+    void quirksReachTheModel();
 };
 
 void tst_SimBusSpec::valid_data()
@@ -31,6 +32,10 @@ void tst_SimBusSpec::valid_data()
                                 << "9:MS,2:MS";
     QTest::newRow("motor names") << "5:MG5010E-i36,6:MF4015-18bit" << QList<int>{5, 6}
                                  << QStringList{"MG", "MF"} << "5:MG5010E-i36,6:MF4015-18bit";
+    QTest::newRow("quirks, canonical order")
+        << "3:mf + Clear-Angle-Ignored+accel-ignored,4:MG5010E-i36+accel-ignored"
+        << QList<int>{3, 4} << QStringList{"MF", "MG"}
+        << "3:MF+accel-ignored+clear-angle-ignored,4:MG5010E-i36+accel-ignored";
 }
 
 void tst_SimBusSpec::valid()
@@ -79,6 +84,12 @@ void tst_SimBusSpec::invalid_data()
                                     << "empty entry";
     QTest::newRow("leading comma") << ",3:MF"
                                    << "empty entry";
+    QTest::newRow("unknown quirk") << "3:MF+slow"
+                                   << "unknown firmware quirk 'slow' (known: accel-ignored";
+    QTest::newRow("empty quirk") << "3:MF+"
+                                 << "unknown firmware quirk ''";
+    QTest::newRow("quirk without model") << "3:+accel-ignored"
+                                         << "unknown series";
     QTest::newRow("name without series") << "4:XY4015"
                                          << "unknown series 'XY4015'";
 }
@@ -103,6 +114,15 @@ void tst_SimBusSpec::motorNameEntry()
     QCOMPARE(model.driverName, QStringLiteral("LK-MG5010E-DRV"));
     QCOMPARE(model.nameInfo().gearRatio, 36.0);
     QCOMPARE(model.nameInfo().encoderBits, 18);
+}
+
+void tst_SimBusSpec::quirksReachTheModel()
+{
+    const auto spec = SimBusSpec::parse(QStringLiteral("3:MF+accel-ignored,4:MF"));
+    QVERIFY(spec);
+    QVERIFY(spec->drives[0].model.quirks.accelIgnored);
+    QVERIFY(!spec->drives[0].model.quirks.clearAngleIgnored);
+    QVERIFY(!spec->drives[1].model.quirks.accelIgnored);
 }
 
 QTEST_APPLESS_MAIN(tst_SimBusSpec)

@@ -31,6 +31,7 @@ private slots:
     void writeZeroRomAppliedAfterRestart();
     void clearAngleZeroesUntilRestart();
     void encoderOffsetAndWrap();
+    void firmwareQuirksAcknowledgeWithoutEffect();
     void readReplies_data();
     void readReplies();
 };
@@ -188,6 +189,30 @@ void tst_SimDriveState::clearAngleZeroesUntilRestart()
     d.restart(); // angles come back from the encoder: within one turn of its zero
     QVERIFY(d.multiTurnRaw() >= 0 && d.multiTurnRaw() < 36000);
     QVERIFY(std::abs(d.multiTurnRaw() * 0.01 - d.encoder() * 360.0 / 16384) < 0.05);
+}
+
+void tst_SimDriveState::firmwareQuirksAcknowledgeWithoutEffect()
+{
+    // ERRATA: some firmware acknowledges 0x34 and 0x95 without applying them, and reads 0x33
+    // as 0. The reply is the normal acknowledgement: only a read-back tells.
+    sim::SimDriveModel model = sim::SimDriveModel::forSeries(Series::MF);
+    model.quirks.accelIgnored = true;
+    model.quirks.clearAngleIgnored = true;
+    SimDrive d(kId, model);
+    const auto echo = send(d, build::writeAcceleration(kId, 1234));
+    QVERIFY(echo);
+    QCOMPARE(payloadOf<protocol::Acceleration>(echo).dps2, 1234);
+    QCOMPARE(readBack<protocol::Acceleration>(d, Command::ReadAccel).dps2, 0);
+
+    send(d, build::multiPosition(kId, 1000.0));
+    d.advance(3.0);
+    const auto ack = send(d, build::plain(Command::ClearAngle, kId));
+    QVERIFY(ack && std::holds_alternative<protocol::Acknowledged>(ack->payload));
+    QVERIFY(std::abs(angleDeg(d) - 1000.0) < 0.1);
+
+    SimDrive plainDrive = makeDrive(Series::MF); // the same requests on normal firmware
+    send(plainDrive, build::writeAcceleration(kId, 1234));
+    QCOMPARE(readBack<protocol::Acceleration>(plainDrive, Command::ReadAccel).dps2, 1234);
 }
 
 void tst_SimDriveState::encoderOffsetAndWrap()

@@ -14,6 +14,12 @@
 //   txn_gap_median_ms_*, txn_gap_p90_ms_*          between consecutive replies (read_state2)
 //   timeouts, late_replies, unexpected_frames      polls without a reply in time, replies
 //                                                  that came after it, frames nobody expected
+//   pty_roundtrip_us                               the harness alone: write to reply with
+//                                                  lksim answering at once, no wire time
+//   poll_ratio_net_*                               read_state2 with that harness cost taken
+//                                                  out of the median gap: what the engine
+//                                                  would reach on a wire with no pty and
+//                                                  no simulator process in the way
 
 #include "BenchUtil.h"
 #include "LksimProcess.h"
@@ -120,15 +126,9 @@ struct Faults {
     quint64 timeouts = 0, late = 0, unexpected = 0;
 };
 
-bool run(int baud, bench::JsonLine &json, Faults &faults)
+/// Opens `session` on the lksim in `sim`; false (with a message) when it cannot.
+bool openOn(BusSession &session, const e2e::LksimProcess &sim, int baud)
 {
-    e2e::LksimProcess sim(QStringLiteral(LKSIM_PATH));
-    if (!sim.start({"--motors", "3:MF,17:MS,32:MG", "--wire-time", "--baud", QString::number(baud),
-                    "--reply-delay-us", "500"})) {
-        std::fprintf(stderr, "bench_bus_poll: %s\n", qPrintable(sim.errorString()));
-        return false;
-    }
-    BusSession session;
     BusConfig config;
     config.statisticsHz = 10; // the measuring window is cut at snapshots
     transport::SerialSettings s;
@@ -141,10 +141,47 @@ bool run(int baud, bench::JsonLine &json, Faults &faults)
     session.setSeries(3, protocol::Series::MF);
     session.setSeries(17, protocol::Series::MS);
     session.setSeries(32, protocol::Series::MG);
+    return true;
+}
 
-    PollPlan state2 = PollPlan::standard({3, 17, 32});
-    state2.commands = {protocol::Command::ReadState2};
-    const Figure a = measure(session, state2, baud);
+bool startSim(e2e::LksimProcess &sim, const QStringList &extra)
+{
+    if (sim.start(QStringList{"--motors", "3:MF,17:MS,32:MG"} + extra))
+        return true;
+    std::fprintf(stderr, "bench_bus_poll: %s\n", qPrintable(sim.errorString()));
+    return false;
+}
+
+PollPlan state2Plan()
+{
+    PollPlan plan = PollPlan::standard({3, 17, 32});
+    plan.commands = {protocol::Command::ReadState2};
+    return plan;
+}
+
+/// The cost of the test harness itself (two pty hops and lksim's wake-ups), median write to
+/// reply in ms with lksim answering at once and no wire time; -1 when it cannot be measured.
+double harnessLatencyMs()
+{
+    e2e::LksimProcess sim(QStringLiteral(LKSIM_PATH));
+    BusSession session;
+    if (!startSim(sim, {"--reply-delay-us", "0"}) || !openOn(session, sim, 1000000))
+        return -1;
+    const Figure f = measure(session, state2Plan(), 1000000);
+    session.close();
+    return f.medianMs > 0 ? f.medianMs : -1;
+}
+
+bool run(int baud, double harnessMs, bench::JsonLine &json, Faults &faults)
+{
+    e2e::LksimProcess sim(QStringLiteral(LKSIM_PATH));
+    BusSession session;
+    if (!startSim(sim,
+                  {"--wire-time", "--baud", QString::number(baud), "--reply-delay-us", "500"}) ||
+        !openOn(session, sim, baud))
+        return false;
+
+    const Figure a = measure(session, state2Plan(), baud);
     const Figure b = measure(session, PollPlan::standard({3, 17, 32}), baud);
     session.close();
 
@@ -152,6 +189,9 @@ bool run(int baud, bench::JsonLine &json, Faults &faults)
     json.add(QStringLiteral("poll_ratio_") + suffix, a.ratio());
     json.add(QStringLiteral("poll_ratio_mix_") + suffix, b.ratio());
     json.add(QStringLiteral("poll_ratio_steady_") + suffix, a.steadyRatio());
+    if (harnessMs > 0 && a.gapMedianMs > harnessMs && a.limit > 0)
+        json.add(QStringLiteral("poll_ratio_net_") + suffix,
+                 1e3 / a.limit / (a.gapMedianMs - harnessMs));
     json.add(QStringLiteral("poll_txn_per_s_") + suffix, a.txnPerS, 1);
     json.add(QStringLiteral("poll_limit_per_s_") + suffix, a.limit, 1);
     json.add(QStringLiteral("poll_mix_txn_per_s_") + suffix, b.txnPerS, 1);
@@ -173,8 +213,11 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     bench::JsonLine json;
     Faults faults;
+    const double harnessMs = harnessLatencyMs();
+    if (harnessMs > 0)
+        json.add(QStringLiteral("pty_roundtrip_us"), harnessMs * 1e3, 1);
     for (int baud : {115200, 1000000}) {
-        if (!run(baud, json, faults))
+        if (!run(baud, harnessMs, json, faults))
             return 1;
     }
     json.addInt(QStringLiteral("timeouts"), qint64(faults.timeouts));
