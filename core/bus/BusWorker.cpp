@@ -218,17 +218,11 @@ void BusWorker::setConfig(const BusConfig &config)
 bool BusWorker::isRetrySafe(Command command)
 {
     // A timeout does not mean the drive did not act: a repeated incremental move moves twice,
-    // a repeated ROM write wears the flash twice. The caller hears of the timeout and reads
-    // back instead. Everything else is idempotent (a target, a state, a read).
-    switch (command) {
-    case Command::IncrementPosition:
-    case Command::IncrementPositionLimited:
-    case Command::WritePidRom:
-    case Command::WriteZeroRom:
+    // a repeated flash write (0x32, 0x91, 0x19) wears the chip twice. The caller hears of the
+    // timeout and reads back instead. Everything else is idempotent (a target, a state, a read).
+    if (CommandTable::info(command).writesFlash)
         return false;
-    default:
-        return true;
-    }
+    return command != Command::IncrementPosition && command != Command::IncrementPositionLimited;
 }
 
 int BusWorker::retriesFor(const BusRequest &r) const
@@ -509,16 +503,18 @@ void BusWorker::flushTelemetry()
     emit telemetryReceived(batch);
 }
 
-void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids)
+void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command halt)
 {
+    if (halt != Command::MotorStop)
+        halt = Command::MotorOff; // nothing else may ride in this lane
     auto stop = std::make_shared<EmergencyStop>(ticket, m_motors.emergencyTargets(ids),
-                                                m_config.emergencyRetries);
+                                                m_config.emergencyRetries, halt);
     QVector<BusRequest> offs = stop->requests();
     // The first "off" to each ID waits only as long as a drive on a fast link needs: every
     // drive hears it quickly, and silent IDs are asked again at the back of the lane.
     for (BusRequest &r : offs)
-        r.firstTimeoutS = probeTimeoutS(Command::MotorOff);
-    qCInfo(lcBus) << "emergency stop to" << offs.size() << "ID(s)";
+        r.firstTimeoutS = probeTimeoutS(halt);
+    qCInfo(lcBus) << "emergency" << CommandTable::name(halt) << "to" << offs.size() << "ID(s)";
     cancelQueued([](const Pending &p) { return movesMotor(p.req.request.command); },
                  RequestStatus::Cancelled, QStringLiteral("cancelled by emergency stop"));
     if (m_inflight && movesMotor(m_inflight->req.request.command))

@@ -12,7 +12,7 @@ constexpr std::array<CommandInfo, CommandTable::kCount> kCommands{{
     {Command::ReadAccel, "read_accel", 0, 4, -1, false, false, false},
     {Command::WriteAccelRam, "write_accel_ram", 4, 4, -1, true, false, false},
     {Command::ReadEncoder, "read_encoder", 0, 6, -1, false, false, false},
-    {Command::WriteEncoderOffset, "write_encoder_offset", 2, 2, -1, true, false, false},
+    {Command::WriteEncoderOffset, "write_encoder_offset", 2, 2, -1, true, false, true},
     {Command::WriteZeroRom, "write_zero_rom", 0, 0, 2, true, false, true},
     {Command::ReadMultiTurn, "read_multi_turn", 0, 8, -1, false, false, false},
     {Command::ReadSingleTurn, "read_single_turn", 0, 4, -1, false, false, false},

@@ -49,7 +49,7 @@ struct CommandInfo {
     qint16 altReplyLength;   ///< a second accepted reply LEN (0x12: 58, 0x19: 2), or -1
     bool replyEchoesRequest; ///< the reply repeats the request byte for byte
     bool movesMotor;         ///< sending it can make the shaft move (0xA0..0xA8, 0x88)
-    bool writesFlash;        ///< writes the drive's ROM (0x32, 0x19): ask first, never loop
+    bool writesFlash;        ///< writes the drive's ROM (0x32, 0x91, 0x19): ask first, never loop
 };
 
 /// The command table: lookup by code or by name.

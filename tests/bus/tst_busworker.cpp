@@ -130,6 +130,7 @@ void tst_BusWorker::nonIdempotentCommandsAreNeverRetried_data()
     QTest::newRow("increment limited") << *incrementPosition(9, -45, 90).request << 1;
     QTest::newRow("write_pid_rom") << *writePid(9, {1, 2, 3, 4, 5, 6}, true).request << 1;
     QTest::newRow("write_zero_rom") << *plain(Command::WriteZeroRom, 9).request << 1;
+    QTest::newRow("write_encoder_offset") << *writeEncoderOffset(9, 100).request << 1;
     // Idempotent ones keep their retries: a repeated target or read changes nothing.
     QTest::newRow("multi position") << *multiPosition(9, 45).request << 3;
     QTest::newRow("write_pid_ram") << *writePid(9, {1, 2, 3, 4, 5, 6}, false).request << 3;

@@ -40,7 +40,7 @@ const Expected kExpected[] = {
     {0x33, "read_accel", 0, 4, -1, false, false, false},
     {0x34, "write_accel_ram", 4, 4, -1, true, false, false},
     {0x90, "read_encoder", 0, 6, -1, false, false, false},
-    {0x91, "write_encoder_offset", 2, 2, -1, true, false, false},
+    {0x91, "write_encoder_offset", 2, 2, -1, true, false, true}, // the spec's table: "到 ROM"
     {0x19, "write_zero_rom", 0, 0, 2, true, false, true},
     {0x92, "read_multi_turn", 0, 8, -1, false, false, false},
     {0x94, "read_single_turn", 0, 4, -1, false, false, false},
