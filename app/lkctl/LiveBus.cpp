@@ -148,7 +148,7 @@ bus::ScanSummary LiveBus::scan(const bus::ScanOptions &options)
     return s;
 }
 
-LiveBus::StopOutcome LiveBus::emergencyStop(const QVector<int> &ids)
+LiveBus::StopOutcome LiveBus::emergencyStop(const QVector<int> &ids, protocol::Command halt)
 {
     std::optional<StopOutcome> outcome;
     quint64 ticket = 0;
@@ -158,7 +158,7 @@ LiveBus::StopOutcome LiveBus::emergencyStop(const QVector<int> &ids)
             if (t == ticket)
                 outcome = StopOutcome{acked, silent};
         });
-    ticket = m_session.emergencyStop(ids);
+    ticket = m_session.emergencyStop(ids, halt);
     waitUntil([&outcome] { return outcome.has_value(); });
     QObject::disconnect(c);
     return outcome.value_or(StopOutcome{});

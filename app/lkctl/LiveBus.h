@@ -45,11 +45,13 @@ public:
     std::optional<Identity> identify(int id);
 
     bus::ScanSummary scan(const bus::ScanOptions &options);
-    /// Motor off to `ids` plus every known ID (all of 1..32 when none), ahead of all else.
+    /// Motor off (or `halt` MotorStop) to `ids` plus every known ID (all of 1..32 when none),
+    /// ahead of all else.
     struct StopOutcome {
         QVector<int> acknowledged, silent;
     };
-    StopOutcome emergencyStop(const QVector<int> &ids = {});
+    StopOutcome emergencyStop(const QVector<int> &ids = {},
+                              protocol::Command halt = protocol::Command::MotorOff);
 
     /// Print why a request failed, naming the ID and the command (with a hint on timeouts).
     void reportFailure(const bus::RequestResult &result);

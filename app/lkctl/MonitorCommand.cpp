@@ -188,6 +188,13 @@ int MonitorCommand::stream(LiveBus &bus, const Plan &plan, MonitorTable &table)
         duration.start(int(std::min(*plan.durationS * 1000, double(INT_MAX))));
     bus.waitUntil([&stop] { return stop; }, std::numeric_limits<int>::max());
     session.stopPolling();
+    // Rows still being merged when a signal, the duration or a lost bus ended the run carry
+    // real values: print them (with --count the count is the contract, so not then).
+    if (!plan.count) {
+        for (const QByteArray &row : table.flush())
+            console.out(row);
+        console.flush();
+    }
     // One more statistics snapshot, so that the figures cover the whole run.
     const int before = int(stats.time * 1000);
     bus.waitUntil([&] { return lost || int(stats.time * 1000) != before; }, 2000);

@@ -73,11 +73,12 @@ QString MotorStateCommand::usage() const
         : m_command == Command::MotorStop
             ? QStringLiteral("Send motor_stop (0x81) to drive ID: the motor stops and keeps its\n"
                              "running state and command; 'lkctl run' resumes it.\n"
-                             "'stop all' stops every drive a quick scan finds.\n")
+                             "'stop all' sends motor_stop to every ID 1..32 ahead of anything\n"
+                             "else, like 'off all'.\n")
             : QStringLiteral("Send motor_run (0x88) to drive ID: it resumes the command it held "
                              "when\nstopped. The drive's series is read first and checked "
-                             "like any motion command.\n'run all' resumes every drive a quick "
-                             "scan finds.\n");
+                             "like any motion command.\n'run all' resumes every drive a scan "
+                             "finds, and sends\nnothing if any of them refuses.\n");
     return QStringLiteral("Usage: lkctl %1 ID|all (--port DEV [--baud N] | --sim SPEC) [--json]\n"
                           "\n"
                           "%2"
@@ -97,7 +98,7 @@ QString MotorStateCommand::usage() const
              exitStatusText(
                  QStringLiteral("  With 'all', 0 means at least one drive acknowledged and none "
                                 "that was\n  found stayed silent%1.\n")
-                     .arg(m_command == Command::MotorOff
+                     .arg(m_command != Command::MotorRun
                               ? QStringLiteral(" (IDs without a drive stay silent, which is "
                                                "expected)")
                               : QString())) +
@@ -162,12 +163,16 @@ int MotorStateCommand::runOne(LiveBus &bus, int id, bool json)
 
 int MotorStateCommand::runAll(LiveBus &bus, bool json)
 {
-    if (m_command == Command::MotorOff) {
-        const LiveBus::StopOutcome o = bus.emergencyStop();
+    if (m_command != Command::MotorRun) {
+        // off and stop go to every ID 1..32 in the emergency lane, not to the drives a scan
+        // happened to hear: a drive missed on a slow link must still stop.
+        const LiveBus::StopOutcome o = bus.emergencyStop({}, m_command);
         print(bus.console(), json, o.acknowledged, o.silent);
         return o.acknowledged.isEmpty() ? kExitFailure : kExitOk;
     }
-    const bus::ScanSummary s = bus.scan(bus::ScanOptions{});
+    bus::ScanOptions options;
+    options.retries = 1; // a drive missed here would silently stay stopped
+    const bus::ScanSummary s = bus.scan(options);
     if (!s.error.isEmpty()) {
         bus.error(QStringLiteral("scan stopped: %1").arg(s.error));
         return kExitFailure;
@@ -176,19 +181,18 @@ int MotorStateCommand::runAll(LiveBus &bus, bool json)
         bus.error(QStringLiteral("no drive answered the scan; nothing was sent"));
         return kExitFailure;
     }
-    QVector<int> acked, silent;
+    // Every drive is checked before any is sent motor_run: a refusal sends nothing at all.
     bool refused = false;
+    for (const bus::FoundMotor &m : s.motors)
+        refused = !allowed(bus, m.id, m.series) || refused;
+    if (refused)
+        return kExitRefused;
+    QVector<int> acked, silent;
     for (const bus::FoundMotor &m : s.motors) {
-        if (!allowed(bus, m.id, m.series)) {
-            refused = true;
-            continue;
-        }
         const bus::RequestResult r = bus.request(m_command, m.id);
         (r.ok() ? acked : silent).append(m.id);
     }
     print(bus.console(), json, acked, silent);
-    if (refused)
-        return kExitRefused;
     return silent.isEmpty() ? kExitOk : kExitFailure;
 }
 

@@ -11,21 +11,31 @@ namespace lk::lkctl {
 
 namespace {
 
-QByteArray jsonArray(const QVector<bus::FoundMotor> &motors)
+/// CLI.md's shape; a drive whose read_model went unanswered has nulls, not empty names and
+/// version 0. With a baud sweep each entry says at which baud it answered.
+QByteArray jsonArray(const QVector<bus::FoundMotor> &motors, bool withBaud)
 {
     QByteArray out = "[";
     for (qsizetype i = 0; i < motors.size(); ++i) {
         const bus::FoundMotor &m = motors.at(i);
         OrderedJson o;
-        o.integer(QStringLiteral("id"), m.id)
-            .text(QStringLiteral("driver_name"), m.model.driverName)
-            .text(QStringLiteral("motor_name"), m.model.motorName)
-            .real(QStringLiteral("hardware_version"), m.model.hardwareVersion())
-            .real(QStringLiteral("firmware_version"), m.model.firmwareVersion());
+        o.integer(QStringLiteral("id"), m.id);
+        if (m.modelKnown) {
+            o.text(QStringLiteral("driver_name"), m.model.driverName)
+                .text(QStringLiteral("motor_name"), m.model.motorName)
+                .real(QStringLiteral("hardware_version"), m.model.hardwareVersion())
+                .real(QStringLiteral("firmware_version"), m.model.firmwareVersion());
+        } else {
+            for (const char *key :
+                 {"driver_name", "motor_name", "hardware_version", "firmware_version"})
+                o.null(QLatin1String(key));
+        }
         if (m.series)
             o.text(QStringLiteral("series"), protocol::seriesName(*m.series));
         else
             o.null(QStringLiteral("series"));
+        if (withBaud)
+            o.integer(QStringLiteral("baud"), m.baud);
         out += (i > 0 ? "," : "") + o.toJson();
     }
     return out + "]";
@@ -42,8 +52,10 @@ QStringList tableRow(const bus::FoundMotor &m, bool withBaud)
                     m.series ? protocol::seriesName(*m.series) : QStringLiteral("?"),
                     m.model.driverName.isEmpty() ? QStringLiteral("-") : m.model.driverName,
                     m.model.motorName.isEmpty() ? QStringLiteral("-") : m.model.motorName,
-                    versionText(m.model.hardwareVersion(), m.model.divisor()),
-                    versionText(m.model.firmwareVersion(), m.model.divisor())};
+                    m.modelKnown ? versionText(m.model.hardwareVersion(), m.model.divisor())
+                                 : QStringLiteral("-"),
+                    m.modelKnown ? versionText(m.model.firmwareVersion(), m.model.divisor())
+                                 : QStringLiteral("-")};
     if (m.state1) {
         row << QStringLiteral("%1 C").arg(m.state1->temperatureC)
             << QStringLiteral("%1 V").arg(m.state1->voltageV(), 0, 'f', 1)
@@ -114,7 +126,9 @@ QString ScanCommand::usage() const
                "    [{\"id\":3,\"driver_name\":\"...\",\"motor_name\":\"MF4015\","
                "\"hardware_version\":1.0,\n"
                "      \"firmware_version\":2.3,\"series\":\"MF\"}]   (series null when the "
-               "model names none)\n"
+               "model names none;\n"
+               "    names and versions null when the drive answered but read_model did not;\n"
+               "    with --sweep-bauds each entry also has \"baud\")\n"
                "\n"
                "%1"
                "\n"
@@ -189,7 +203,7 @@ int ScanCommand::run(const QStringList &args, Console &console)
         return kExitFailure;
     }
     if (parser.isSet(QStringLiteral("json"))) {
-        console.out(jsonArray(s.motors) + '\n');
+        console.out(jsonArray(s.motors, o.sweepBauds) + '\n');
     } else if (s.motors.isEmpty()) {
         console.outLine(
             QStringLiteral("No drive answered on IDs %1..%2 at %3 baud (%4 ms).")

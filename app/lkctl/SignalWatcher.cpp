@@ -49,6 +49,10 @@ SignalWatcher::~SignalWatcher()
 
 void SignalWatcher::onReadable()
 {
+    // The first signal asks for a clean end; the old handlers come back at once so that a
+    // second Ctrl-C during that end still interrupts (by default it kills the process).
+    sigaction(SIGINT, &g_oldInt, nullptr);
+    sigaction(SIGTERM, &g_oldTerm, nullptr);
     unsigned char b = 0;
     while (::read(g_pipe[0], &b, 1) == 1)
         emit signalled(int(b));

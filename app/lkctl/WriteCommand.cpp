@@ -55,7 +55,7 @@ QString WriteCommand::usage() const
                "          no ROM write for acceleration.\n"
                "  --yes   confirm a ROM write\n"
                "  --json  one line: {\"command\":\"write_pid_ram\",\"id\":3,\"written\":{...},"
-               "\"holds\":{...}}\n"
+               "\"holds\":{...},\"match\":true}\n"
                "\n"
                "%1"
                "\n"
@@ -148,7 +148,8 @@ int WriteCommand::readBack(LiveBus &bus, const Plan &plan)
     } else {
         console.outLine(QStringLiteral("Drive %1 now holds (%2, read back with %3):")
                             .arg(id)
-                            .arg(plan.rom ? QStringLiteral("ROM and RAM") : QStringLiteral("RAM"),
+                            .arg(plan.rom ? QStringLiteral("in RAM; 0x32 wrote ROM too")
+                                          : QStringLiteral("RAM"),
                                  protocol::CommandTable::name(plan.readBack)));
         for (const QString &line : ReplyText::lines(holds, QStringLiteral("  ")))
             console.outLine(line);
@@ -191,10 +192,16 @@ int WriteCommand::run(const QStringList &args, Console &console)
     if (!bus.open(*busOptions))
         return kExitFailure;
     const bus::RequestResult w = bus.request(plan->request);
-    if (!w.ok()) {
-        bus.reportFailure(w);
+    if (w.ok())
+        return readBack(bus, *plan);
+    bus.reportFailure(w);
+    // A lost or corrupt reply does not mean the drive did not act (and ROM writes are never
+    // repeated): what it holds now is the answer the user needs.
+    if (w.status != bus::RequestStatus::Timeout && w.status != bus::RequestStatus::Error)
         return kExitFailure;
-    }
+    bus.error(QStringLiteral("reading back what drive %1 holds now (if it matches, the write "
+                             "took effect and only its reply was lost):")
+                  .arg(plan->request.id));
     return readBack(bus, *plan);
 }
 

@@ -99,8 +99,9 @@ int main(int argc, char *argv[])
     const QCommandLineOption faults(
         QStringLiteral("faults"),
         QStringLiteral("Inject faults: comma-separated drop=P, corrupt=P, length=P, garbage=P, "
-                       "delay=P (P = probability 0..1 per reply), delay_ms=N, silent=ID "
-                       "(repeatable), seed=N. Example: drop=0.01,corrupt=0.01,silent=17"),
+                       "delay=P (P = probability 0..1 per reply), drop_next=N (and corrupt_next, "
+                       "...: exactly the next N replies), delay_ms=N, silent=ID (repeatable), "
+                       "seed=N. Example: drop=0.01,corrupt=0.01,silent=17"),
         QStringLiteral("spec"));
     const QCommandLineOption verbose(QStringLiteral("verbose"),
                                      QStringLiteral("Log every frame in and out on stderr."));

@@ -164,7 +164,7 @@ quint64 BusSession::send(const protocol::Request &request, Priority priority, in
     return ticket;
 }
 
-quint64 BusSession::emergencyStop(const QVector<int> &ids)
+quint64 BusSession::emergencyStop(const QVector<int> &ids, protocol::Command halt)
 {
     const quint64 ticket = m_nextTicket++;
     if (!m_worker) {
@@ -173,7 +173,7 @@ quint64 BusSession::emergencyStop(const QVector<int> &ids)
             Qt::QueuedConnection);
         return ticket;
     }
-    post([w = m_worker, ticket, ids] { w->emergencyStop(ticket, ids); });
+    post([w = m_worker, ticket, ids, halt] { w->emergencyStop(ticket, ids, halt); });
     return ticket;
 }
 

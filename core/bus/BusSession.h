@@ -65,7 +65,9 @@ public:
     /// Motor off to every ID in `ids` plus every known ID (all of 1..32 when none is known),
     /// ahead of everything queued; queued motion commands are cancelled. Each motor_off ends
     /// with a requestCompleted carrying the returned ticket, then emergencyStopFinished.
-    quint64 emergencyStop(const QVector<int> &ids = {});
+    /// `halt` MotorStop sends motor_stop the same way (the drives keep their commands).
+    quint64 emergencyStop(const QVector<int> &ids = {},
+                          protocol::Command halt = protocol::Command::MotorOff);
 
     void scan(const ScanOptions &options = {});
     void cancelScan();

@@ -71,7 +71,9 @@ public:
 
     void setConfig(const BusConfig &config);
     void submit(BusRequest request, Completion done = {});
-    void emergencyStop(quint64 ticket, const QVector<int> &ids);
+    /// `halt`: MotorOff, or MotorStop for a "stop all" that keeps the drives' commands.
+    void emergencyStop(quint64 ticket, const QVector<int> &ids,
+                       protocol::Command halt = protocol::Command::MotorOff);
     void scan(const ScanOptions &options);
     void cancelScan();
     bool isScanning() const;

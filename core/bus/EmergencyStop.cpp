@@ -4,9 +4,10 @@
 
 namespace lk::bus {
 
-EmergencyStop::EmergencyStop(quint64 ticket, QVector<int> targets, int retries)
-    : m_ticket(ticket), m_targets(std::move(targets)), m_retries(std::max(0, retries)),
-      m_remaining(m_targets.size())
+EmergencyStop::EmergencyStop(quint64 ticket, QVector<int> targets, int retries,
+                             protocol::Command halt)
+    : m_ticket(ticket), m_halt(halt), m_targets(std::move(targets)),
+      m_retries(std::max(0, retries)), m_remaining(m_targets.size())
 {
 }
 
@@ -16,7 +17,7 @@ QVector<BusRequest> EmergencyStop::requests() const
     for (int id : m_targets) {
         BusRequest r;
         r.ticket = m_ticket;
-        r.request.command = protocol::Command::MotorOff;
+        r.request.command = m_halt;
         r.request.id = static_cast<quint8>(id);
         r.priority = Priority::Emergency;
         r.retries = m_retries;

@@ -7,11 +7,13 @@
 
 namespace lk::bus {
 
-/// One emergency stop: the motor_off requests it sends (Emergency lane) and the tally of
-/// which IDs acknowledged and which stayed silent.
+/// One emergency stop: the motor_off (or motor_stop) requests it sends in the Emergency lane
+/// and the tally of which IDs acknowledged and which stayed silent.
 class EmergencyStop {
 public:
-    EmergencyStop(quint64 ticket, QVector<int> targets, int retries);
+    /// `halt` is MotorOff (the emergency stop proper) or MotorStop (`lkctl stop all`).
+    EmergencyStop(quint64 ticket, QVector<int> targets, int retries,
+                  protocol::Command halt = protocol::Command::MotorOff);
 
     QVector<BusRequest> requests() const;
     /// Count one motor_off result; true when it was the last one (then both lists are in
@@ -24,6 +26,7 @@ public:
 
 private:
     quint64 m_ticket;
+    protocol::Command m_halt;
     QVector<int> m_targets;
     int m_retries;
     int m_remaining;

@@ -35,11 +35,13 @@ struct ScanProgress {
     int found = 0; ///< drives found so far
 };
 
-/// A drive that answered read_model.
+/// A drive that answered the scan's probe (read_state1), with its model when read_model
+/// answered too.
 struct FoundMotor {
     int id = 0;
     int baud = 0;
     protocol::ModelInfo model;
+    bool modelKnown = false;                ///< read_model answered; otherwise `model` is empty
     std::optional<protocol::Series> series; ///< inferred from the model names; nullopt: unknown
     std::optional<protocol::State1> state1; ///< from read_state1, when it answered
 };

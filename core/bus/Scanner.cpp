@@ -204,6 +204,7 @@ void Scanner::onModel(const RequestResult &r, FoundMotor motor)
 {
     if (r.ok() && r.reply && std::holds_alternative<protocol::ModelInfo>(r.reply->payload)) {
         motor.model = std::get<protocol::ModelInfo>(r.reply->payload);
+        motor.modelKnown = true;
         motor.series = inferSeries(motor.model);
         m_worker.learnModel(motor.id, motor.model, motor.series);
     } else {

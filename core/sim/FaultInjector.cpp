@@ -150,6 +150,7 @@ bool FaultInjector::configure(const QString &spec, QString *error)
         return false;
     };
     std::array<double, kFaultKinds> probability = m_probability;
+    std::array<int, kFaultKinds> next{};
     double delay = m_extraDelay;
     QSet<int> silenced = m_silenced;
     std::optional<quint32> seed;
@@ -165,6 +166,15 @@ bool FaultInjector::configure(const QString &spec, QString *error)
                 return fail(QStringLiteral("fault '%1' needs a probability 0..1, got '%2'")
                                 .arg(key, value));
             probability[index(*fault)] = p;
+        } else if (const auto once = key.endsWith(QLatin1String("_next"))
+                                         ? probabilityKey(key.chopped(5))
+                                         : std::nullopt) {
+            // "drop_next=1": exactly the next reply, for tests of one lost reply.
+            const int n = value.toInt(&ok);
+            if (!ok || n < 0 || n > 1000000)
+                return fail(QStringLiteral("fault '%1' needs a count 0..1000000, got '%2'")
+                                .arg(key, value));
+            next[index(*once)] += n;
         } else if (key == QLatin1String("delay_ms")) {
             const double ms = value.toDouble(&ok);
             if (!ok || ms < 0 || ms > 10000)
@@ -183,11 +193,14 @@ bool FaultInjector::configure(const QString &spec, QString *error)
             seed = s;
         } else {
             return fail(QStringLiteral("unknown fault '%1' (expected drop, corrupt, length, "
-                                       "garbage, delay, delay_ms, silent or seed)")
+                                       "garbage, delay, one of those with _next, delay_ms, "
+                                       "silent or seed)")
                             .arg(key));
         }
     }
     m_probability = probability;
+    for (int i = 0; i < kFaultKinds; ++i)
+        m_oneShot[i] += next[i];
     m_extraDelay = delay;
     m_silenced = silenced;
     if (seed)

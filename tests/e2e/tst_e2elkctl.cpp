@@ -46,6 +46,7 @@ private slots:
     void readEveryWhat();
     void writeReadsBack();
     void romWriteNeedsYesAndSurvivesRestart();
+    void lostRomWriteReplyIsReadBackNotRepeated();
     void controlModesMoveTheMotor_data();
     void controlModesMoveTheMotor();
     void refusedControlSendsNothing_data();
@@ -235,6 +236,27 @@ void tst_E2eLkctl::writeReadsBack()
     QVERIFY(r.out.contains("iq Ki"));
 }
 
+void tst_E2eLkctl::lostRomWriteReplyIsReadBackNotRepeated()
+{
+    // The drive writes its flash but the reply is lost: the tool must not write again (ROM
+    // writes are never retried) and must tell what the drive holds now.
+    QVERIFY(startSim({QStringLiteral("--faults"), QStringLiteral("drop_next=1")}));
+    const CtlResult r = lkctl(QStringList{"write", "3", "pid", "61", "62", "63", "64", "65", "66",
+                                          "--rom", "--yes", "--json"} +
+                              port());
+    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+    QVERIFY2(r.err.contains("no reply to write_pid_rom (ID 3)") &&
+                 r.err.contains("only its reply was lost"),
+             r.err.constData());
+    const QJsonObject o = jsonObject(r.out);
+    QCOMPARE(o.value("match").toBool(), true);
+    QCOMPARE(o.value("holds").toObject().value("iq_ki").toInt(), 66);
+    const QList<QByteArray> frames = m_sim->receivedFrames();
+    QCOMPARE(std::count_if(frames.cbegin(), frames.cend(),
+                           [](const QByteArray &f) { return f.startsWith("3E 32 03"); }),
+             qsizetype(1));
+}
+
 void tst_E2eLkctl::romWriteNeedsYesAndSurvivesRestart()
 {
     const QString romDir = m_dir->filePath(QStringLiteral("rom"));
@@ -382,16 +404,24 @@ void tst_E2eLkctl::refusedControlSendsNothing()
     QVERIFY(r.out.isEmpty());
     QVERIFY2(r.err.contains("refused, nothing was sent"), r.err.constData());
     QVERIFY2(r.err.contains(limit), r.err.constData());
-    // The model was read (the series decides the limits): the log shows what reached the bus.
+    const std::optional<QJsonObject> s2 = read(args.first().toInt(), "state2");
+    QVERIFY(s2);
+    QVERIFY(std::abs(s2->value("speed_dps").toDouble()) < 3); // and nothing moves
+    // The log shows what reached the bus, in order: the model was read (the series decides
+    // the limits), and the later read_state2 is there, so anything the refused command had
+    // sent would be logged before it.
     const QByteArray model = "3E 12 " + frame.mid(6, 2);
-    const QList<QByteArray> frames = m_sim->receivedFrames();
+    const QByteArray state2 = "3E 9C " + frame.mid(6, 2);
+    QList<QByteArray> frames;
+    QTRY_VERIFY_WITH_TIMEOUT(
+        (frames = m_sim->receivedFrames(),
+         std::any_of(frames.cbegin(), frames.cend(),
+                     [&state2](const QByteArray &f) { return f.startsWith(state2); })),
+        30000);
     QVERIFY(std::any_of(frames.cbegin(), frames.cend(),
                         [&model](const QByteArray &f) { return f.startsWith(model); }));
     for (const QByteArray &f : frames)
         QVERIFY2(!f.startsWith(frame), f.constData());
-    const std::optional<QJsonObject> s2 = read(args.first().toInt(), "state2");
-    QVERIFY(s2);
-    QVERIFY(std::abs(s2->value("speed_dps").toDouble()) < 3); // and nothing moves
 }
 
 void tst_E2eLkctl::offStopRunAll()
@@ -405,7 +435,10 @@ void tst_E2eLkctl::offStopRunAll()
 
     r = lkctl(QStringList{"stop", "all", "--json"} + port());
     QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
-    QCOMPARE(jsonObject(r.out).value("acknowledged").toArray(), (QJsonArray{3, 17, 32}));
+    o = jsonObject(r.out);
+    QCOMPARE(o.value("command").toString(), QStringLiteral("motor_stop"));
+    QCOMPARE(o.value("acknowledged").toArray(), (QJsonArray{3, 17, 32}));
+    QCOMPARE(o.value("silent").toArray().size(), 29); // every ID, not just what a scan heard
     r = lkctl(QStringList{"run", "all", "--json"} + port());
     QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
     QCOMPARE(jsonObject(r.out).value("acknowledged").toArray(), (QJsonArray{3, 17, 32}));

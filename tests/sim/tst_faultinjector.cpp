@@ -16,6 +16,7 @@ private slots:
     void configureValid();
     void configureInvalid_data();
     void configureInvalid();
+    void nextCountsArePending();
     void noFaultsLeavesReplyAlone();
     void probabilityOneAlwaysFires();
     void garbageNeverHoldsFrameHead();
@@ -71,6 +72,14 @@ void tst_FaultInjector::configureInvalid_data()
                                  << "ID 1..32";
     QTest::newRow("seed text") << "seed=abc"
                                << "seed";
+    QTest::newRow("next negative") << "drop_next=-1"
+                                   << "count 0..1000000";
+    QTest::newRow("next text") << "corrupt_next=once"
+                               << "count 0..1000000";
+    QTest::newRow("next unknown") << "explode_next=1"
+                                  << "unknown fault 'explode_next'";
+    QTest::newRow("next after a good one") << "drop_next=2,silent=40"
+                                           << "ID 1..32";
 }
 
 void tst_FaultInjector::configureInvalid()
@@ -85,6 +94,18 @@ void tst_FaultInjector::configureInvalid()
     // Nothing changed by a refused configuration.
     QCOMPARE(f.probability(Fault::DropReply), 0.0);
     QCOMPARE(f.probability(Fault::CorruptReply), 0.25);
+    QCOMPARE(f.pending(Fault::DropReply), 0);
+}
+
+void tst_FaultInjector::nextCountsArePending()
+{
+    FaultInjector f;
+    QString error;
+    QVERIFY2(f.configure(QStringLiteral("drop_next=2, corrupt_next=1, drop_next=1"), &error),
+             qPrintable(error));
+    QCOMPARE(f.pending(Fault::DropReply), 3);
+    QCOMPARE(f.pending(Fault::CorruptReply), 1);
+    QCOMPARE(f.probability(Fault::DropReply), 0.0);
 }
 
 void tst_FaultInjector::noFaultsLeavesReplyAlone()
