@@ -244,11 +244,15 @@ void tst_ScanPoll::scanFastLinkProbesEachIdOnce()
     int probes = 0;
     for (const auto &w : rig.writtenRequests())
         probes += w.first == Command::ReadState1 ? 1 : 0;
+    QList<int> ids;
+    for (const FoundMotor &m : finished.at(0).at(0).value<ScanSummary>().motors)
+        ids << m.id;
+    QCOMPARE(ids, (QList<int>{3, 17, 32}));
     // No late reply, no second pass: one probe per ID. (A reply delayed past the timeout by
     // a loaded machine is a late reply, and then the second pass is right to run.)
-    if (rig.worker->lateReplyCount() == 0)
-        QCOMPARE(probes, 32);
-    QVERIFY(finished.at(0).at(0).value<ScanSummary>().motors.size() <= 3);
+    if (rig.worker->lateReplyCount() > 0)
+        QSKIP("a reply came late (loaded machine): the second pass ran, as it should");
+    QCOMPARE(probes, 32);
 }
 
 void tst_ScanPoll::scanSlowLinkIsCompleteWithSecondPass()
