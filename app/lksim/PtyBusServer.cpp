@@ -16,6 +16,11 @@
 
 namespace lk::app {
 
+namespace {
+constexpr double kBusyWindowS = 0.02;   ///< spin this long after the host's last request
+constexpr double kAdvanceStepS = 0.001; ///< physics steps while nothing else happens
+} // namespace
+
 PtyBusServer::PtyBusServer(PtyDevice &pty, sim::SimBus &bus, const Options &options)
     : m_pty(pty), m_bus(bus), m_options(options)
 {
@@ -45,6 +50,7 @@ void PtyBusServer::log(const char *direction, const QByteArray &bytes) const
 void PtyBusServer::onInput(const QByteArray &bytes, double now)
 {
     log("<-", bytes);
+    m_lastInputAt = now;
     const QList<sim::SimReply> replies = m_bus.receive(bytes, now);
     for (const sim::SimReply &reply : replies) {
         double due = now + reply.delaySeconds;
@@ -89,6 +95,8 @@ int PtyBusServer::run(const std::atomic<bool> &stop)
         double wait = 0.05;
         if (!m_pending.empty())
             wait = std::clamp(m_pending.front().due - now, 0.0, wait);
+        if (m_options.busyPoll && m_lastInputAt >= 0 && now - m_lastInputAt < kBusyWindowS)
+            wait = 0;
         timespec ts{static_cast<time_t>(wait), static_cast<long>(std::fmod(wait, 1.0) * 1e9)};
         const int n = ppoll(&pfd, 1, &ts, nullptr);
         if (n < 0 && errno != EINTR) {
@@ -100,8 +108,9 @@ int PtyBusServer::run(const std::atomic<bool> &stop)
             const QByteArray bytes = m_pty.readAvailable();
             if (!bytes.isEmpty())
                 onInput(bytes, now);
-        } else {
-            m_bus.advanceTo(now);
+        } else if (now - m_lastAdvanceAt >= kAdvanceStepS) {
+            m_bus.advanceTo(now); // physics needs no finer steps; spinning must not run it
+            m_lastAdvanceAt = now;
         }
     }
     return 0;

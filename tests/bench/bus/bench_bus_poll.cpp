@@ -2,7 +2,9 @@
 // lksim serving 3 drives on a pseudo-terminal and the engine talking to it through
 // SerialTransport (a real QSerialPort) and BusSession. lksim emulates the wire time at the
 // baud and answers after 500 us, the formula's turnaround, so the simulated transaction takes
-// exactly what the formula charges and a ratio of 1 would mean zero host overhead.
+// exactly what the formula charges and a ratio of 1 would mean zero host overhead. lksim runs
+// with --busy-poll: a real adapter does not sleep, and a sleeping simulator would add its own
+// 30-100 us wake-up to every transaction (pty_roundtrip_us shows what is left of the harness).
 //
 // Prints one JSON line:
 //   poll_ratio_115200, poll_ratio_1000000          read_state2 only, 3 drives
@@ -165,7 +167,7 @@ double harnessLatencyMs()
 {
     e2e::LksimProcess sim(QStringLiteral(LKSIM_PATH));
     BusSession session;
-    if (!startSim(sim, {"--reply-delay-us", "0"}) || !openOn(session, sim, 1000000))
+    if (!startSim(sim, {"--reply-delay-us", "0", "--busy-poll"}) || !openOn(session, sim, 1000000))
         return -1;
     const Figure f = measure(session, state2Plan(), 1000000);
     session.close();
@@ -176,8 +178,8 @@ bool run(int baud, double harnessMs, bench::JsonLine &json, Faults &faults)
 {
     e2e::LksimProcess sim(QStringLiteral(LKSIM_PATH));
     BusSession session;
-    if (!startSim(sim,
-                  {"--wire-time", "--baud", QString::number(baud), "--reply-delay-us", "500"}) ||
+    if (!startSim(sim, {"--wire-time", "--baud", QString::number(baud), "--reply-delay-us", "500",
+                        "--busy-poll"}) ||
         !openOn(session, sim, baud))
         return false;
 
