@@ -5,8 +5,10 @@
 
 #include <main/AppSettings.h>
 #include <main/BusController.h>
+#include <main/LanguageLoader.h>
 #include <main/MainWindow.h>
 #include <main/StartupOptions.h>
+#include <main/ThemePalette.h>
 #include <panels/BusModel.h>
 #include <panels/MessageBanner.h>
 
@@ -16,6 +18,7 @@
 #include <transport/SerialTransport.h>
 
 #include <QtCore/QFile>
+#include <QtCore/QLocale>
 #include <QtCore/QTimer>
 #include <QtWidgets/QApplication>
 
@@ -107,7 +110,13 @@ int main(int argc, char *argv[])
     if (!options)
         return 2;
 
+    if (!options->palette.isEmpty())
+        lk::ui::ThemePalette::apply(options->palette); // else the system's, untouched
     lk::ui::AppSettings settings(options->settingsFile);
+    // Before any widget exists: texts are translated when the widgets are built.
+    const QString preferred = options->language.isEmpty() ? settings.language() : options->language;
+    lk::ui::LanguageLoader::install(
+        lk::ui::LanguageLoader::resolve(preferred, QLocale::system().uiLanguages()));
     lk::ui::MainWindow window(&settings);
     if (options->sim)
         window.controller()->setSimulatorSpec(*options->sim);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <QtCore/QCoreApplication>
 #include <QtCore/QString>
 
 namespace lk::protocol {
@@ -11,7 +12,8 @@ struct FieldError {
     QString problem; ///< optional detail, e.g. "got 40"
     QString message() const
     {
-        QString m = QStringLiteral("%1 must be in %2").arg(field, range);
+        QString m = QCoreApplication::translate("lk::protocol::FieldError", "%1 must be in %2")
+                        .arg(field, range);
         if (!problem.isEmpty())
             m += QStringLiteral(" (%1)").arg(problem);
         return m;

@@ -27,7 +27,7 @@ const char *const kHeaders[] = {
     QT_TRANSLATE_NOOP("lk::record::BusReport", "Problems"),
 };
 
-QString tr(const char *text)
+QString translated(const char *text)
 {
     return QCoreApplication::translate("lk::record::BusReport", text);
 }
@@ -117,9 +117,11 @@ QString stateText(const std::optional<protocol::State1> &s)
     QString t =
         QStringLiteral("%1 \u00b0C, %2 V").arg(s->temperatureC).arg(s->voltageV(), 0, 'f', 1);
     if (s->lowVoltage())
-        t += QStringLiteral(", ") + tr("LOW VOLTAGE");
+        t += QStringLiteral(", ") +
+             QCoreApplication::translate("lk::record::BusReport", "LOW VOLTAGE");
     if (s->overTemperature())
-        t += QStringLiteral(", ") + tr("OVER TEMPERATURE");
+        t += QStringLiteral(", ") +
+             QCoreApplication::translate("lk::record::BusReport", "OVER TEMPERATURE");
     return t;
 }
 
@@ -136,7 +138,8 @@ QString driveRow(const BusReportDrive &d)
     row += cell(pidText(d.pid));
     row += cell(d.accelDps2 ? QString::number(*d.accelDps2) : dash());
     row += cell(stateText(d.state1));
-    row += cell(d.problems.isEmpty() ? tr("none") : d.problems.join(QStringLiteral("; ")));
+    row += cell(d.problems.isEmpty() ? QCoreApplication::translate("lk::record::BusReport", "none")
+                                     : d.problems.join(QStringLiteral("; ")));
     return row + QStringLiteral("</tr>\n");
 }
 
@@ -166,7 +169,7 @@ QByteArray BusReport::toJsonBytes() const
 
 QString BusReport::toHtml() const
 {
-    const QString title = tr("LK bus report");
+    const QString title = QCoreApplication::translate("lk::record::BusReport", "LK bus report");
     QString h = QStringLiteral("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\">"
                                "<title>%1</title>\n<style>body{font-family:sans-serif}"
                                "table{border-collapse:collapse}td,th{border:1px solid #999;"
@@ -174,15 +177,25 @@ QString BusReport::toHtml() const
                                "</head><body>\n")
                     .arg(title.toHtmlEscaped());
     h += QStringLiteral("<h1>%1</h1>\n<p>").arg(title.toHtmlEscaped());
-    h += tr("Created: %1 (UTC)").arg(createdAt.toUTC().toString(Qt::ISODate)).toHtmlEscaped();
-    h += QStringLiteral("<br>") + tr("Connection: %1").arg(connection).toHtmlEscaped();
-    h += QStringLiteral("<br>") + tr("Drives: %1").arg(drives.size()).toHtmlEscaped();
+    h += QCoreApplication::translate("lk::record::BusReport", "Created: %1 (UTC)")
+             .arg(createdAt.toUTC().toString(Qt::ISODate))
+             .toHtmlEscaped();
+    h += QStringLiteral("<br>") +
+         QCoreApplication::translate("lk::record::BusReport", "Connection: %1")
+             .arg(connection)
+             .toHtmlEscaped();
+    h += QStringLiteral("<br>") + QCoreApplication::translate("lk::record::BusReport", "Drives: %1")
+                                      .arg(drives.size())
+                                      .toHtmlEscaped();
     if (!toolVersion.isEmpty())
-        h += QStringLiteral("<br>") + tr("Written by: %1").arg(toolVersion).toHtmlEscaped();
+        h += QStringLiteral("<br>") +
+             QCoreApplication::translate("lk::record::BusReport", "Written by: %1")
+                 .arg(toolVersion)
+                 .toHtmlEscaped();
     h += QStringLiteral("</p>\n<table>\n<tr>");
 
     for (const char *header : kHeaders)
-        h += QStringLiteral("<th>%1</th>").arg(tr(header).toHtmlEscaped());
+        h += QStringLiteral("<th>%1</th>").arg(translated(header).toHtmlEscaped());
     h += QStringLiteral("</tr>\n");
     for (const BusReportDrive &d : drives)
         h += driveRow(d);

@@ -1,5 +1,7 @@
 #include "ParameterSet.h"
 
+#include <QtCore/QCoreApplication>
+
 #include <QtCore/QFile>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonValue>
@@ -73,25 +75,31 @@ bool readDrive(const QJsonObject &d, ParameterSet &set, QString *error)
 bool readBody(const QJsonObject &root, ParameterSet &set, QString *error)
 {
     if (root.value(QStringLiteral("format")).toString() != QLatin1String(kFormat))
-        return fail(error, QStringLiteral("not an LK Servo Studio parameter file (format is "
-                                          "not \"%1\")")
-                               .arg(QLatin1String(kFormat)));
+        return fail(error,
+                    QCoreApplication::translate("lk::record::ParameterSet",
+                                                "not an LK Servo Studio parameter file (format is "
+                                                "not \"%1\")")
+                        .arg(QLatin1String(kFormat)));
     qint64 version = 0;
     if (!readInteger(root, "version", 1, 1000000, version, error))
         return false;
     if (version > ParameterSet::kFormatVersion)
-        return fail(error, QStringLiteral("written by a newer release (format version %1, this "
-                                          "one reads up to %2)")
+        return fail(error, QCoreApplication::translate(
+                               "lk::record::ParameterSet",
+                               "written by a newer release (format version %1, this "
+                               "one reads up to %2)")
                                .arg(version)
                                .arg(ParameterSet::kFormatVersion));
     if (!root.value(QStringLiteral("drive")).isObject())
-        return fail(error, QStringLiteral("drive is missing"));
+        return fail(error,
+                    QCoreApplication::translate("lk::record::ParameterSet", "drive is missing"));
     if (!readDrive(root.value(QStringLiteral("drive")).toObject(), set, error))
         return false;
     set.savedAt =
         QDateTime::fromString(root.value(QStringLiteral("saved_at")).toString(), Qt::ISODateWithMs);
     if (!root.value(QStringLiteral("pid")).isObject())
-        return fail(error, QStringLiteral("pid is missing"));
+        return fail(error,
+                    QCoreApplication::translate("lk::record::ParameterSet", "pid is missing"));
     const QJsonObject pid = root.value(QStringLiteral("pid")).toObject();
     for (const GainField &g : kGains) {
         qint64 v = 0;
@@ -147,13 +155,14 @@ std::optional<ParameterSet> ParameterSet::fromJson(const QByteArray &bytes, QStr
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(bytes, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
-        fail(error, QStringLiteral("not valid JSON (%1 at byte %2)")
+        fail(error, QCoreApplication::translate("lk::record::ParameterSet",
+                                                "not valid JSON (%1 at byte %2)")
                         .arg(parseError.errorString())
                         .arg(parseError.offset));
         return std::nullopt;
     }
     if (!doc.isObject()) {
-        fail(error, QStringLiteral("not a JSON object"));
+        fail(error, QCoreApplication::translate("lk::record::ParameterSet", "not a JSON object"));
         return std::nullopt;
     }
     ParameterSet set;
@@ -171,7 +180,8 @@ std::optional<ParameterSet> ParameterSet::load(const QString &path, QString *err
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
-        fail(error, QStringLiteral("cannot read %1: %2").arg(path, file.errorString()));
+        fail(error, QCoreApplication::translate("lk::record::ParameterSet", "cannot read %1: %2")
+                        .arg(path, file.errorString()));
         return std::nullopt;
     }
     if (file.size() > kMaxFileBytes) {
@@ -185,14 +195,17 @@ QString writeFileAtomically(const QString &path, const QByteArray &bytes)
 {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        return QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+        return QCoreApplication::translate("lk::record::ParameterSet", "cannot write %1: %2")
+            .arg(path, file.errorString());
     if (file.write(bytes) != bytes.size()) {
         const QString why = file.errorString();
         file.cancelWriting();
-        return QStringLiteral("cannot write %1: %2").arg(path, why);
+        return QCoreApplication::translate("lk::record::ParameterSet", "cannot write %1: %2")
+            .arg(path, why);
     }
     if (!file.commit())
-        return QStringLiteral("cannot write %1: %2").arg(path, file.errorString());
+        return QCoreApplication::translate("lk::record::ParameterSet", "cannot write %1: %2")
+            .arg(path, file.errorString());
     return QString();
 }
 

@@ -1,5 +1,7 @@
 #include "MotionGuard.h"
 
+#include <QtCore/QCoreApplication>
+
 #include <motor/SeriesLimits.h>
 
 #include <algorithm>
@@ -34,16 +36,20 @@ Verdict checkSpeed(double dps, std::optional<Series> series, const SoftLimits &l
     const double top = seriesTopSpeedDps(series);
     const double v = std::fabs(dps);
     if (v > top)
-        return refuse(LimitKind::SeriesSpeed, v, top,
-                      QStringLiteral("%1 %2 dps exceeds the %3 series top speed of %4 dps")
-                          .arg(QLatin1String(what))
-                          .arg(v)
-                          .arg(series ? protocol::seriesName(*series) : QStringLiteral("slowest"))
-                          .arg(top));
+        return refuse(
+            LimitKind::SeriesSpeed, v, top,
+            QCoreApplication::translate("lk::safety::MotionGuard",
+                                        "%1 %2 dps exceeds the %3 series top speed of %4 dps")
+                .arg(QCoreApplication::translate("lk::safety::MotionGuard", what))
+                .arg(v)
+                .arg(series ? protocol::seriesName(*series)
+                            : QCoreApplication::translate("lk::safety::MotionGuard", "slowest"))
+                .arg(top));
     if (limits.maxSpeedDps > 0 && v > limits.maxSpeedDps)
         return refuse(LimitKind::SoftSpeed, v, limits.maxSpeedDps,
-                      QStringLiteral("%1 %2 dps exceeds your speed limit of %3 dps")
-                          .arg(QLatin1String(what))
+                      QCoreApplication::translate("lk::safety::MotionGuard",
+                                                  "%1 %2 dps exceeds your speed limit of %3 dps")
+                          .arg(QCoreApplication::translate("lk::safety::MotionGuard", what))
                           .arg(v)
                           .arg(limits.maxSpeedDps));
     return {};
@@ -54,27 +60,34 @@ Verdict checkMaxSpeed(const std::optional<quint32> &raw, std::optional<Series> s
 {
     if (!raw)
         return {};
-    return checkSpeed(*raw * protocol::kCentiUnits, series, limits, "max speed");
+    return checkSpeed(*raw * protocol::kCentiUnits, series, limits,
+                      QT_TRANSLATE_NOOP("lk::safety::MotionGuard", "max speed"));
 }
 
 Verdict checkTorque(double iqA, std::optional<Series> series, const SoftLimits &limits)
 {
     if (!series)
-        return refuse(LimitKind::UnknownSeries, 0, 0,
-                      QStringLiteral("torque needs the drive's series: scan the bus first"));
+        return refuse(
+            LimitKind::UnknownSeries, 0, 0,
+            QCoreApplication::translate("lk::safety::MotionGuard",
+                                        "torque needs the drive's series: scan the bus first"));
     const double v = std::fabs(iqA);
     const double rated = motor::seriesLimits(*series).maxCurrentA;
     if (v > rated)
-        return refuse(LimitKind::SeriesCurrent, v, rated,
-                      QStringLiteral("torque current %1 A exceeds the %2 series rating of %3 A")
-                          .arg(v)
-                          .arg(protocol::seriesName(*series))
-                          .arg(rated));
+        return refuse(
+            LimitKind::SeriesCurrent, v, rated,
+            QCoreApplication::translate("lk::safety::MotionGuard",
+                                        "torque current %1 A exceeds the %2 series rating of %3 A")
+                .arg(v)
+                .arg(protocol::seriesName(*series))
+                .arg(rated));
     if (v > limits.maxTorqueA)
-        return refuse(LimitKind::SoftTorque, v, limits.maxTorqueA,
-                      QStringLiteral("torque current %1 A exceeds your torque limit of %2 A")
-                          .arg(v)
-                          .arg(limits.maxTorqueA));
+        return refuse(
+            LimitKind::SoftTorque, v, limits.maxTorqueA,
+            QCoreApplication::translate("lk::safety::MotionGuard",
+                                        "torque current %1 A exceeds your torque limit of %2 A")
+                .arg(v)
+                .arg(limits.maxTorqueA));
     return {};
 }
 
@@ -83,15 +96,19 @@ Verdict checkMultiTurn(const protocol::MultiPositionCommand &c, std::optional<Se
 {
     const double deg = static_cast<double>(c.angleRaw) * protocol::kCentiUnits;
     if (limits.minAngleDeg && deg < *limits.minAngleDeg)
-        return refuse(LimitKind::AngleBelowMin, deg, *limits.minAngleDeg,
-                      QStringLiteral("target %1 deg is below your angle range (min %2 deg)")
-                          .arg(deg)
-                          .arg(*limits.minAngleDeg));
+        return refuse(
+            LimitKind::AngleBelowMin, deg, *limits.minAngleDeg,
+            QCoreApplication::translate("lk::safety::MotionGuard",
+                                        "target %1 deg is below your angle range (min %2 deg)")
+                .arg(deg)
+                .arg(*limits.minAngleDeg));
     if (limits.maxAngleDeg && deg > *limits.maxAngleDeg)
-        return refuse(LimitKind::AngleAboveMax, deg, *limits.maxAngleDeg,
-                      QStringLiteral("target %1 deg is above your angle range (max %2 deg)")
-                          .arg(deg)
-                          .arg(*limits.maxAngleDeg));
+        return refuse(
+            LimitKind::AngleAboveMax, deg, *limits.maxAngleDeg,
+            QCoreApplication::translate("lk::safety::MotionGuard",
+                                        "target %1 deg is above your angle range (max %2 deg)")
+                .arg(deg)
+                .arg(*limits.maxAngleDeg));
     return checkMaxSpeed(c.maxSpeedRaw, series, limits);
 }
 
@@ -100,10 +117,12 @@ Verdict checkIncrement(const protocol::IncrementPositionCommand &c, std::optiona
 {
     const double deg = std::fabs(c.angleRaw * protocol::kCentiUnits);
     if (limits.maxIncrementDeg && deg > *limits.maxIncrementDeg)
-        return refuse(LimitKind::SoftIncrement, deg, *limits.maxIncrementDeg,
-                      QStringLiteral("increment of %1 deg exceeds your step limit of %2 deg")
-                          .arg(deg)
-                          .arg(*limits.maxIncrementDeg));
+        return refuse(
+            LimitKind::SoftIncrement, deg, *limits.maxIncrementDeg,
+            QCoreApplication::translate("lk::safety::MotionGuard",
+                                        "increment of %1 deg exceeds your step limit of %2 deg")
+                .arg(deg)
+                .arg(*limits.maxIncrementDeg));
     return checkMaxSpeed(c.maxSpeedRaw, series, limits);
 }
 
@@ -116,26 +135,32 @@ Verdict MotionGuard::check(const protocol::Request &request, std::optional<Serie
     if (!protocol::CommandTable::info(cmd).movesMotor)
         return {};
     if (cmd == Command::OpenLoop && !series)
-        return refuse(LimitKind::UnknownSeries, 0, 0,
-                      QStringLiteral("open loop needs the drive's series: scan the bus first"));
+        return refuse(
+            LimitKind::UnknownSeries, 0, 0,
+            QCoreApplication::translate("lk::safety::MotionGuard",
+                                        "open loop needs the drive's series: scan the bus first"));
     if (series && !motor::supports(*series, cmd))
-        return refuse(LimitKind::Unsupported, 0, 0,
-                      QStringLiteral("%1 drives do not implement %2")
-                          .arg(protocol::seriesName(*series), protocol::CommandTable::name(cmd)));
+        return refuse(
+            LimitKind::Unsupported, 0, 0,
+            QCoreApplication::translate("lk::safety::MotionGuard", "%1 drives do not implement %2")
+                .arg(protocol::seriesName(*series), protocol::CommandTable::name(cmd)));
     const auto &p = request.payload;
     if (const auto *c = std::get_if<protocol::OpenLoopCommand>(&p)) {
         const int v = std::abs(int(c->power));
         if (v > limits.maxPower)
-            return refuse(LimitKind::SoftPower, v, limits.maxPower,
-                          QStringLiteral("open-loop power %1 exceeds your power limit of %2")
-                              .arg(v)
-                              .arg(limits.maxPower));
+            return refuse(
+                LimitKind::SoftPower, v, limits.maxPower,
+                QCoreApplication::translate("lk::safety::MotionGuard",
+                                            "open-loop power %1 exceeds your power limit of %2")
+                    .arg(v)
+                    .arg(limits.maxPower));
         return {};
     }
     if (const auto *c = std::get_if<protocol::TorqueCommand>(&p))
         return checkTorque(c->iqA(), series, limits);
     if (const auto *c = std::get_if<protocol::SpeedCommand>(&p))
-        return checkSpeed(c->speedDps(), series, limits, "speed");
+        return checkSpeed(c->speedDps(), series, limits,
+                          QT_TRANSLATE_NOOP("lk::safety::MotionGuard", "speed"));
     if (const auto *c = std::get_if<protocol::MultiPositionCommand>(&p))
         return checkMultiTurn(*c, series, limits);
     if (const auto *c = std::get_if<protocol::SinglePositionCommand>(&p))

@@ -1,5 +1,7 @@
 #include "SoftLimits.h"
 
+#include <QtCore/QCoreApplication>
+
 #include <motor/SeriesLimits.h>
 
 #include <QtCore/QJsonValue>
@@ -76,9 +78,12 @@ std::optional<SoftLimits> SoftLimits::fromJson(const QJsonObject &json, const So
         bool present = false;
         if (!readNumber(json, f.key, f.allowNegative, value, present)) {
             if (error)
-                *error = QStringLiteral("%1 must be a %2number")
-                             .arg(QLatin1String(f.key),
-                                  f.allowNegative ? QString() : QStringLiteral("non-negative "));
+                *error =
+                    QCoreApplication::translate("lk::safety::SoftLimits", "%1 must be a %2number")
+                        .arg(QLatin1String(f.key),
+                             f.allowNegative ? QString()
+                                             : QCoreApplication::translate("lk::safety::SoftLimits",
+                                                                           "non-negative "));
             return std::nullopt;
         }
         if (present)
@@ -86,7 +91,8 @@ std::optional<SoftLimits> SoftLimits::fromJson(const QJsonObject &json, const So
     }
     if (l.minAngleDeg && l.maxAngleDeg && *l.minAngleDeg > *l.maxAngleDeg) {
         if (error)
-            *error = QStringLiteral("min_angle_deg must not exceed max_angle_deg");
+            *error = QCoreApplication::translate("lk::safety::SoftLimits",
+                                                 "min_angle_deg must not exceed max_angle_deg");
         return std::nullopt;
     }
     return l;

@@ -1,5 +1,7 @@
 #include "PortErrorText.h"
 
+#include <QtCore/QCoreApplication>
+
 namespace lk::transport {
 
 namespace {
@@ -10,28 +12,38 @@ QString baseText(TransportError::Kind kind, const QString &port, int baud)
     case Kind::None:
         return {};
     case Kind::NoSuchPort:
-        return QStringLiteral("No serial port %1. Is the adapter plugged in?").arg(port);
+        return QCoreApplication::translate("lk::transport::PortErrorText",
+                                           "No serial port %1. Is the adapter plugged in?")
+            .arg(port);
     case Kind::PermissionDenied:
-        return QStringLiteral(
+        return QCoreApplication::translate(
+                   "lk::transport::PortErrorText",
                    "No permission to open %1. Add your user to the serial port group "
                    "(`sudo usermod -aG dialout $USER` on Debian/Ubuntu, group `uucp` on Arch), "
                    "then log out and in again.")
             .arg(port);
     case Kind::PortBusy:
-        return QStringLiteral("%1 is in use by another program (a terminal, another lkstudio, "
-                              "ModemManager?). Close it and try again; `fuser %1` shows who "
-                              "holds it.")
+        return QCoreApplication::translate(
+                   "lk::transport::PortErrorText",
+                   "%1 is in use by another program (a terminal, another lkstudio, "
+                   "ModemManager?). Close it and try again; `fuser %1` shows who "
+                   "holds it.")
             .arg(port);
     case Kind::Unplugged:
-        return QStringLiteral("The serial adapter %1 was disconnected (unplugged or reset). "
-                              "Plug it back in and reconnect.")
+        return QCoreApplication::translate(
+                   "lk::transport::PortErrorText",
+                   "The serial adapter %1 was disconnected (unplugged or reset). "
+                   "Plug it back in and reconnect.")
             .arg(port);
     case Kind::BadSettings:
-        return QStringLiteral("%1 refused %2 baud 8N1. Try another baud or another adapter.")
+        return QCoreApplication::translate(
+                   "lk::transport::PortErrorText",
+                   "%1 refused %2 baud 8N1. Try another baud or another adapter.")
             .arg(port)
             .arg(baud);
     case Kind::IoError:
-        return QStringLiteral("Serial port %1 failed.").arg(port);
+        return QCoreApplication::translate("lk::transport::PortErrorText", "Serial port %1 failed.")
+            .arg(port);
     }
     return {};
 }

@@ -1,5 +1,7 @@
 #include "SerialTransport.h"
 
+#include <QtCore/QCoreApplication>
+
 #include "PortErrorText.h"
 
 #include <QtCore/QFileInfo>
@@ -24,8 +26,10 @@ QString availablePortsText()
     for (const QSerialPortInfo &info : QSerialPortInfo::availablePorts())
         names << info.systemLocation();
     return names.isEmpty()
-               ? QStringLiteral("no serial ports found")
-               : QStringLiteral("ports found: %1").arg(names.join(QStringLiteral(", ")));
+               ? QCoreApplication::translate("lk::transport::SerialTransport",
+                                             "no serial ports found")
+               : QCoreApplication::translate("lk::transport::SerialTransport", "ports found: %1")
+                     .arg(names.join(QStringLiteral(", ")));
 }
 } // namespace
 
@@ -108,8 +112,10 @@ bool SerialTransport::openPort(bool reportErrors)
     // QSerialPort applies the settings at open(); a driver may still refuse the baud later.
     if (m_port->baudRate() != m_settings.baud) {
         m_port->close();
-        return fail(portError(TransportError::Kind::BadSettings, m_path, m_settings.baud,
-                              QStringLiteral("driver set %1").arg(m_port->baudRate())));
+        return fail(
+            portError(TransportError::Kind::BadSettings, m_path, m_settings.baud,
+                      QCoreApplication::translate("lk::transport::SerialTransport", "driver set %1")
+                          .arg(m_port->baudRate())));
     }
     m_port->clear();
     enableLowLatency();

@@ -1,5 +1,7 @@
 #include "SimTransport.h"
 
+#include <QtCore/QCoreApplication>
+
 #include "sim/SimBus.h"
 
 #include <QtCore/QMetaObject>
@@ -34,8 +36,11 @@ SimTransport::~SimTransport() = default;
 QString SimTransport::description() const
 {
     const int n = static_cast<int>(m_bus->ids().size());
-    return n == 1 ? QStringLiteral("Simulated bus (1 drive)")
-                  : QStringLiteral("Simulated bus (%1 drives)").arg(n);
+    return n == 1 ? QCoreApplication::translate("lk::transport::SimTransport",
+                                                "Simulated bus (1 drive)")
+                  : QCoreApplication::translate("lk::transport::SimTransport",
+                                                "Simulated bus (%1 drives)")
+                        .arg(n);
 }
 
 void SimTransport::setBaud(int baud)
@@ -172,10 +177,12 @@ void SimTransport::goDisconnected()
     m_timer->stop();
     m_housekeeping->stop();
     setState(State::Disconnected);
-    emit errorOccurred(TransportError{
-        TransportError::Kind::Unplugged,
-        QStringLiteral("The simulated bus was disconnected (fault injection). Open it again "
-                       "to reconnect.")});
+    emit errorOccurred(
+        TransportError{TransportError::Kind::Unplugged,
+                       QCoreApplication::translate(
+                           "lk::transport::SimTransport",
+                           "The simulated bus was disconnected (fault injection). Open it again "
+                           "to reconnect.")});
 }
 
 } // namespace lk::transport

@@ -10,6 +10,7 @@
 #include "SoftLimitsEditor.h"
 
 #include <bus/BusSession.h>
+#include <panels/StatusColors.h>
 #include <protocol/RequestBuilder.h>
 
 #include <QtGui/QKeyEvent>
@@ -121,7 +122,7 @@ QWidget *ControlView::buildRunButtons()
     m_stop = make(QStringLiteral("motorStop"), tr("Stop"),
                   tr("0x81: output off, the stored command is kept for Run"));
     m_run = make(QStringLiteral("motorRun"), tr("Run"), tr("0x88: resume after Stop"));
-    m_off->setStyleSheet(QStringLiteral("font-weight:bold;color:#b71c1c;"));
+    m_off->setStyleSheet(StatusColors::textStyle(StatusColors::Role::Error, palette(), true));
     auto *row = new QHBoxLayout(w);
     row->setContentsMargins(0, 0, 0, 0);
     row->addWidget(m_off);
@@ -258,7 +259,8 @@ QString ControlView::statusText() const
 void ControlView::setStatus(const QString &text, bool error)
 {
     m_status->setText(text);
-    m_status->setStyleSheet(error ? QStringLiteral("color:#c62828;font-weight:bold;") : QString());
+    m_status->setStyleSheet(
+        error ? StatusColors::textStyle(StatusColors::Role::Error, palette(), true) : QString());
 }
 
 void ControlView::report(const MotionOutcome &outcome, const QString &sentText)

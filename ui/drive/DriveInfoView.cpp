@@ -5,6 +5,7 @@
 #include "RequestTracker.h"
 
 #include <motor/ModelNameInfo.h>
+#include <panels/StatusColors.h>
 #include <protocol/RequestBuilder.h>
 
 #include <QtCore/QFileInfo>
@@ -97,6 +98,8 @@ QWidget *DriveInfoView::buildReportBox()
                                               tr("Accel (dps/s)"), tr("State"), tr("Problems")});
     m_reportTable->verticalHeader()->hide();
     m_reportTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    // Columns as wide as their headings (long in some languages) and values; scrolls if need be.
+    m_reportTable->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_reportTable->horizontalHeader()->setStretchLastSection(true);
     auto *row = new QHBoxLayout;
     row->addWidget(m_reportButton);
@@ -263,9 +266,8 @@ void DriveInfoView::showReport(const record::BusReport &report)
                       .arg(d.pid->iqKi);
         QString state = none;
         if (d.state1) {
-            state = tr("%1 \u00b0C, %2 V")
-                        .arg(d.state1->temperatureC)
-                        .arg(d.state1->voltageV(), 0, 'f', 1);
+            state =
+                tr("%1 °C, %2 V").arg(d.state1->temperatureC).arg(d.state1->voltageV(), 0, 'f', 1);
             if (d.state1->lowVoltage())
                 state += tr(", low voltage");
             if (d.state1->overTemperature())
@@ -332,7 +334,8 @@ QString DriveInfoView::statusText() const
 void DriveInfoView::setStatus(const QString &text, bool error)
 {
     m_status->setText(text);
-    m_status->setStyleSheet(error ? QStringLiteral("color:#c62828;") : QString());
+    m_status->setStyleSheet(error ? StatusColors::textStyle(StatusColors::Role::Error, palette())
+                                  : QString());
 }
 
 } // namespace lk::ui

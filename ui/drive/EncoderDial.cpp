@@ -1,5 +1,7 @@
 #include "EncoderDial.h"
 
+#include <panels/StatusColors.h>
+
 #include <QtGui/QPainter>
 #include <QtGui/QPainterPath>
 
@@ -63,11 +65,12 @@ void EncoderDial::paintEvent(QPaintEvent *)
     // Drawn in raw terms: the needle is the raw position, the red mark the offset (where the
     // encoder reads 0); the encoder value is the angle from the mark to the needle.
     if (m_offset) {
-        p.setPen(QPen(QColor(0xc6, 0x28, 0x28), 4));
+        p.setPen(QPen(StatusColors::text(StatusColors::Role::Error, pal), 4));
         p.drawLine(onDial(degOf(*m_offset), r * 0.84), onDial(degOf(*m_offset), r * 1.0));
     }
     if (m_raw) {
-        p.setPen(QPen(QColor(0x15, 0x65, 0xc0), 3, Qt::SolidLine, Qt::RoundCap));
+        p.setPen(QPen(StatusColors::text(StatusColors::Role::Busy, pal), 3, Qt::SolidLine,
+                      Qt::RoundCap));
         p.drawLine(QPointF(0, 0), onDial(degOf(*m_raw), r * 0.85));
     }
     p.setBrush(pal.color(QPalette::Text));

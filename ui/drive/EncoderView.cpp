@@ -7,6 +7,7 @@
 #include "RequestTracker.h"
 
 #include <motor/ModelNameInfo.h>
+#include <panels/StatusColors.h>
 #include <protocol/RequestBuilder.h>
 
 #include <QtCore/QTime>
@@ -254,7 +255,8 @@ void EncoderView::setStatus(const QString &text, bool error)
                                    .arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")),
                                         driveTitle(), text));
     m_status->setText(text);
-    m_status->setStyleSheet(error ? QStringLiteral("color:#c62828;font-weight:bold;") : QString());
+    m_status->setStyleSheet(
+        error ? StatusColors::textStyle(StatusColors::Role::Error, palette(), true) : QString());
 }
 
 void EncoderView::contextChanged(Changes changes)

@@ -1,5 +1,7 @@
 #include "ParameterTable.h"
 
+#include <panels/StatusColors.h>
+
 #include <QtCore/QEvent>
 #include <QtWidgets/QGridLayout>
 #include <QtWidgets/QLabel>
@@ -45,7 +47,7 @@ ParameterTable::ParameterTable(QWidget *parent) : QWidget(parent), m_rows(kRowCo
         buildRow(Row(r), names[r], gridRow++);
     }
     grid->setColumnStretch(4, 1);
-    setStyleSheet(QStringLiteral("QSpinBox[changed=\"true\"] { background: #ffe8a3; }"));
+    applyChangedStyle();
 }
 
 void ParameterTable::buildRow(Row row, const QString &name, int gridRow)
@@ -186,6 +188,22 @@ void ParameterTable::refreshHighlight()
         f.setBold(changed);
         w.name->setFont(f);
     }
+}
+
+void ParameterTable::changeEvent(QEvent *event)
+{
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::PaletteChange)
+        applyChangedStyle();
+}
+
+void ParameterTable::applyChangedStyle()
+{
+    const QString sheet =
+        QStringLiteral("QSpinBox[changed=\"true\"] { background: %1; }")
+            .arg(StatusColors::background(StatusColors::Role::Warning, palette()).name());
+    if (sheet != styleSheet()) // a style sheet change must not loop through PaletteChange
+        setStyleSheet(sheet);
 }
 
 bool ParameterTable::eventFilter(QObject *watched, QEvent *event)

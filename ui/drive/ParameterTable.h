@@ -53,6 +53,7 @@ signals:
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
+    void changeEvent(QEvent *event) override;
 
 private:
     struct RowWidgets {
@@ -64,6 +65,8 @@ private:
     };
     void buildRow(Row row, const QString &name, int gridRow);
     void refreshHighlight();
+    /// The "pending edit" tint, light or dark after the palette.
+    void applyChangedStyle();
 
     QVector<RowWidgets> m_rows;
 };

@@ -1,6 +1,7 @@
 #include "SetpointPanel.h"
 
 #include <motor/SeriesLimits.h>
+#include <panels/StatusColors.h>
 
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QDoubleSpinBox>
@@ -125,7 +126,8 @@ void SetpointPanel::setRunning(bool running, const QString &message)
     m_state->setText(!message.isEmpty() ? message
                      : running          ? tr("Running: Stop, Motor Off or Esc ends it.")
                                         : tr("Stopped."));
-    m_state->setStyleSheet(running ? QStringLiteral("color:#1565c0;font-weight:bold;") : QString());
+    m_state->setStyleSheet(
+        running ? StatusColors::textStyle(StatusColors::Role::Busy, palette(), true) : QString());
 }
 
 void SetpointPanel::setStartEnabled(bool enabled)

@@ -7,6 +7,7 @@
 #include "RequestTracker.h"
 
 #include <bus/BusSession.h>
+#include <panels/StatusColors.h>
 #include <protocol/RequestBuilder.h>
 #include <record/ParameterSet.h>
 
@@ -79,12 +80,9 @@ void TuningView::buildUi()
     boxLayout->addWidget(m_table);
     boxLayout->addWidget(accelNote);
 
-    m_romWarning =
-        banner(QStringLiteral("romWarning"),
-               QStringLiteral("background:#fff1c2;border:1px solid #d9a400;padding:4px;"), this);
-    m_mismatch =
-        banner(QStringLiteral("mismatch"),
-               QStringLiteral("background:#ffd9d6;border:1px solid #c62828;padding:4px;"), this);
+    m_romWarning = banner(QStringLiteral("romWarning"), QString(), this);
+    m_mismatch = banner(QStringLiteral("mismatch"),
+                        StatusColors::boxStyle(StatusColors::Role::Error, palette()), this);
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("status"));
     m_status->setWordWrap(true);
@@ -430,10 +428,9 @@ void TuningView::refreshWarnings()
                       "loaded from ROM at power-on (unless another tool changed it).");
     }
     m_romWarning->setText(tr("RAM and ROM: %1").arg(text));
-    m_romWarning->setStyleSheet(
-        m_romWarningActive
-            ? QStringLiteral("background:#fff1c2;border:1px solid #d9a400;padding:4px;")
-            : QStringLiteral("background:#eef3f8;border:1px solid #b0c4d8;padding:4px;"));
+    m_romWarning->setStyleSheet(m_romWarningActive
+                                    ? StatusColors::boxStyle(StatusColors::Role::Warning, palette())
+                                    : StatusColors::boxStyle(StatusColors::Role::Info, palette()));
     m_romWarning->setVisible(hasDrive());
 }
 
@@ -452,7 +449,8 @@ void TuningView::refreshEnabled()
 void TuningView::setStatus(const QString &text, bool error)
 {
     m_status->setText(text);
-    m_status->setStyleSheet(error ? QStringLiteral("color:#c62828;") : QString());
+    m_status->setStyleSheet(error ? StatusColors::textStyle(StatusColors::Role::Error, palette())
+                                  : QString());
 }
 
 void TuningView::failed(const bus::RequestResult &result)

@@ -2,6 +2,7 @@
 
 #include <bus/BusTiming.h>
 
+#include <QtCore/QRegularExpression>
 #include <QtCore/QSettings>
 #include <QtCore/QStringList>
 
@@ -20,6 +21,7 @@ const char kScanFirstId[] = "scan/firstId";
 const char kScanLastId[] = "scan/lastId";
 const char kScanSweepBauds[] = "scan/sweepBauds";
 const char kPollRateHz[] = "poll/rateHz";
+const char kLanguage[] = "ui/language";
 const char kCurrentView[] = "window/currentView";
 const char kWindowGeometry[] = "window/geometry";
 const char kWindowState[] = "window/state";
@@ -56,6 +58,13 @@ bool validRate(const QVariant &v)
     bool ok = false;
     const double hz = v.toDouble(&ok);
     return ok && hz >= 0 && hz <= kMaxPollRateHz;
+}
+
+// A locale name such as "zh_CN"; what is not shipped falls back in LanguageLoader.
+bool validLanguage(const QString &s)
+{
+    static const QRegularExpression re(QStringLiteral("^[a-z]{2,3}(_[A-Z]{2})?$"));
+    return s.isEmpty() || re.match(s).hasMatch();
 }
 
 bool validBool(const QVariant &v)
@@ -175,6 +184,20 @@ double AppSettings::pollRateHz() const
 void AppSettings::setPollRateHz(double hz)
 {
     m_settings->setValue(QLatin1String(key::kPollRateHz), qBound(0.0, hz, kMaxPollRateHz));
+}
+
+QString AppSettings::language() const
+{
+    const QString language = m_settings->value(QLatin1String(key::kLanguage)).toString();
+    return validLanguage(language) ? language : QString();
+}
+
+void AppSettings::setLanguage(const QString &language)
+{
+    if (validLanguage(language) && !language.isEmpty())
+        m_settings->setValue(QLatin1String(key::kLanguage), language);
+    else
+        m_settings->remove(QLatin1String(key::kLanguage));
 }
 
 QString AppSettings::currentView() const

@@ -43,6 +43,10 @@ public:
     double pollRateHz() const; ///< 0 = as fast as the bus allows
     void setPollRateHz(double hz);
 
+    /// The language chosen in the menu ("en", "zh_CN"); empty: follow the system locale.
+    QString language() const;
+    void setLanguage(const QString &language);
+
     QString currentView() const; ///< object name of the last central view shown
     void setCurrentView(const QString &name);
 

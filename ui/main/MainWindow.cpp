@@ -4,6 +4,7 @@
 #include "BusController.h"
 #include "DriveViews.h"
 #include "EmergencyKeyFilter.h"
+#include "LanguageMenu.h"
 
 #include <drive/ControlView.h>
 #include <drive/DriveInfoView.h>
@@ -18,6 +19,7 @@
 #include <panels/OverviewPanel.h>
 #include <panels/ScanControls.h>
 #include <panels/StatusSummary.h>
+#include <panels/ThemedIcon.h>
 #include <panels/TrafficPanel.h>
 #include <plot/PlotPanel.h>
 #include <plot/TelemetryStore.h>
@@ -31,6 +33,7 @@
 #include <QtWidgets/QDockWidget>
 #include <QtWidgets/QMenuBar>
 #include <QtWidgets/QMessageBox>
+#include <QtWidgets/QScrollArea>
 #include <QtWidgets/QStatusBar>
 #include <QtWidgets/QTabWidget>
 #include <QtWidgets/QToolBar>
@@ -40,6 +43,7 @@ namespace lk::ui {
 
 namespace {
 const QSize kDefaultSize(1400, 900);
+constexpr int kDockShare = 33; // the bus dock takes at most this share of the width at first
 } // namespace
 
 MainWindow::MainWindow(AppSettings *settings, QWidget *parent)
@@ -83,22 +87,22 @@ void MainWindow::buildPanels()
     m_plots = new PlotPanel(m_store, m_views);
     m_traffic = new TrafficPanel(m_model, m_views);
     addView(m_dashboard, QStringLiteral("dashboard"), tr("Dashboard"),
-            QIcon(QStringLiteral(":/icons/dashboard.svg")));
+            ThemedIcon::get(QStringLiteral(":/icons/dashboard.svg")));
     addView(m_overview, QStringLiteral("overview"), tr("Overview"),
-            QIcon(QStringLiteral(":/icons/overview.svg")));
+            ThemedIcon::get(QStringLiteral(":/icons/overview.svg")));
     addView(m_plots, QStringLiteral("plots"), tr("Plots"),
-            QIcon(QStringLiteral(":/icons/plot.svg")));
+            ThemedIcon::get(QStringLiteral(":/icons/plot.svg")));
     addView(m_traffic, QStringLiteral("traffic"), tr("Traffic"),
-            QIcon(QStringLiteral(":/icons/traffic.svg")));
+            ThemedIcon::get(QStringLiteral(":/icons/traffic.svg")));
     m_driveViews = new DriveViews(m_model, m_controller, m_store, m_settings->fileName(), m_views);
     addView(m_driveViews->tuning(), QStringLiteral("tuning"), tr("Tuning"),
-            QIcon(QStringLiteral(":/icons/motor.svg")));
+            ThemedIcon::get(QStringLiteral(":/icons/motor.svg")));
     addView(m_driveViews->control(), QStringLiteral("control"), tr("Control"),
-            QIcon(QStringLiteral(":/icons/connect.svg")));
+            ThemedIcon::get(QStringLiteral(":/icons/connect.svg")));
     addView(m_driveViews->encoder(), QStringLiteral("encoder"), tr("Encoder"),
-            QIcon(QStringLiteral(":/icons/port.svg")));
+            ThemedIcon::get(QStringLiteral(":/icons/port.svg")));
     addView(m_driveViews->info(), QStringLiteral("info"), tr("Drive info"),
-            QIcon(QStringLiteral(":/icons/info.svg")));
+            ThemedIcon::get(QStringLiteral(":/icons/info.svg")));
 
     m_busPanel = new BusPanel(m_model, this);
     m_busDock = new QDockWidget(tr("Bus"), this);
@@ -138,28 +142,30 @@ void MainWindow::buildToolbar()
 void MainWindow::buildMenus()
 {
     QMenu *file = menuBar()->addMenu(tr("&File"));
-    file->addAction(QIcon(QStringLiteral(":/icons/export.svg")), tr("Export &traffic log\u2026"),
-                    m_traffic, &TrafficPanel::exportWithDialog);
+    file->addAction(ThemedIcon::get(QStringLiteral(":/icons/export.svg")),
+                    tr("Export &traffic log\u2026"), m_traffic, &TrafficPanel::exportWithDialog);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
     QMenu *busMenu = menuBar()->addMenu(tr("&Bus"));
-    busMenu->addAction(QIcon(QStringLiteral(":/icons/scan.svg")), tr("&Scan"),
+    busMenu->addAction(ThemedIcon::get(QStringLiteral(":/icons/scan.svg")), tr("&Scan"),
                        QKeySequence(Qt::Key_F5), m_busPanel->scanControls(),
                        &ScanControls::startScan);
     busMenu->addAction(tr("&Disconnect"), m_controller, &BusController::disconnectBus);
     busMenu->addSeparator();
-    busMenu->addAction(QIcon(QStringLiteral(":/icons/stop.svg")), tr("&Emergency stop (Esc)"), this,
-                       &MainWindow::emergencyStop);
+    busMenu->addAction(ThemedIcon::get(QStringLiteral(":/icons/stop.svg")),
+                       tr("&Emergency stop (Esc)"), this, &MainWindow::emergencyStop);
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
     view->addAction(m_busDock->toggleViewAction());
     for (int i = 0; i < m_views->count(); ++i) {
-        QWidget *w = m_views->widget(i);
+        QWidget *w = m_views->widget(i); // the page: the view in its scroll area
         auto *a = view->addAction(m_views->tabIcon(i), m_views->tabText(i),
                                   [this, w] { m_views->setCurrentWidget(w); });
         a->setShortcut(QKeySequence(Qt::CTRL | Qt::Key(Qt::Key_1 + i)));
     }
+    view->addSeparator();
+    view->addMenu(new LanguageMenu(m_settings, this));
 
     QMenu *help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About LK Servo Studio"), this, [this] {
@@ -206,7 +212,7 @@ void MainWindow::wirePanels()
     connect(m_controller, &BusController::trafficCaptured, m_traffic, &TrafficPanel::appendTraffic);
     connect(m_controller, &BusController::message, m_banner, &MessageBanner::showMessage);
     connect(m_views, &QTabWidget::currentChanged, this, [this] {
-        if (QWidget *w = m_views->currentWidget())
+        if (QWidget *w = viewAt(m_views->currentIndex()))
             m_settings->setCurrentView(w->objectName());
     });
 }
@@ -234,13 +240,31 @@ void MainWindow::addView(QWidget *view, const QString &name, const QString &titl
                          const QIcon &icon)
 {
     view->setObjectName(name);
-    m_views->addTab(view, icon, title);
+    // Each view scrolls when the window is smaller than the view's minimum: a 1366x768
+    // screen (or a large font) must not push the window past the screen.
+    auto *page = new QScrollArea(m_views);
+    page->setObjectName(name + QStringLiteral("Page"));
+    page->setFrameShape(QFrame::NoFrame);
+    page->setWidgetResizable(true);
+    page->setWidget(view);
+    m_views->addTab(page, icon, title);
+}
+
+QWidget *MainWindow::currentView() const
+{
+    return viewAt(m_views->currentIndex());
+}
+
+QWidget *MainWindow::viewAt(int index) const
+{
+    auto *page = qobject_cast<QScrollArea *>(m_views->widget(index));
+    return page ? page->widget() : nullptr;
 }
 
 bool MainWindow::showView(const QString &name)
 {
     for (int i = 0; i < m_views->count(); ++i) {
-        if (m_views->widget(i)->objectName() == name) {
+        if (viewAt(i)->objectName() == name) {
             m_views->setCurrentIndex(i);
             return true;
         }
@@ -252,7 +276,7 @@ QStringList MainWindow::viewNames() const
 {
     QStringList names;
     for (int i = 0; i < m_views->count(); ++i)
-        names << m_views->widget(i)->objectName();
+        names << viewAt(i)->objectName();
     return names;
 }
 
@@ -303,9 +327,11 @@ void MainWindow::showEvent(QShowEvent *event)
 {
     QMainWindow::showEvent(event);
     if (m_firstShow && !m_stateRestored) {
-        // First run: docks can be sized only once the window is laid out.
+        // First run: docks can be sized only once the window is laid out. On a small screen
+        // (1366 wide) the views need the room more than the drive list does.
         QTimer::singleShot(0, this, [this] {
-            resizeDocks({m_busDock}, {m_busPanel->sizeHint().width()}, Qt::Horizontal);
+            const int wanted = qMin(m_busPanel->sizeHint().width(), width() * kDockShare / 100);
+            resizeDocks({m_busDock}, {wanted}, Qt::Horizontal);
         });
     }
     m_firstShow = false;

@@ -39,6 +39,9 @@ public:
     /// Show the view with this object name; false when there is none.
     bool showView(const QString &name);
     QStringList viewNames() const;
+    /// The view shown on tab `index` (the tab itself is a scroll area around it).
+    QWidget *viewAt(int index) const;
+    QWidget *currentView() const;
 
     /// Connect as if the user picked `choice` in the connection bar; `remember` stores it as
     /// the last choice.

@@ -57,7 +57,8 @@ struct StartupOptions::Definitions {
     QCommandLineOption noScan{QStringLiteral("no-scan"),
                               tr("Do not scan the bus after connecting.")};
     QCommandLineOption view{QStringLiteral("view"),
-                            tr("Start on a view: dashboard, overview, plots, traffic."),
+                            tr("Start on a view: dashboard, overview, plots, traffic, tuning, "
+                               "control, encoder, info."),
                             QStringLiteral("NAME")};
     QCommandLineOption select{QStringLiteral("select"), tr("Select drive ID once it is found."),
                               QStringLiteral("ID")};
@@ -78,10 +79,19 @@ struct StartupOptions::Definitions {
         hidden(QStringLiteral("window-size"),
                QStringLiteral("Window size in pixels, e.g. 1600x1000."), QStringLiteral("WxH"));
 
+    QCommandLineOption language =
+        hidden(QStringLiteral("language"),
+               QStringLiteral("User interface language, e.g. zh_CN or en (not saved)."),
+               QStringLiteral("NAME"));
+    QCommandLineOption palette =
+        hidden(QStringLiteral("palette"),
+               QStringLiteral("Use a dark or light Fusion palette instead of the system's."),
+               QStringLiteral("dark|light"));
+
     QList<QCommandLineOption> all() const
     {
-        return {port,   baud, sim,   simFaults, settings,   noScan, view,
-                select, shot, delay, motion,    lowVoltage, size};
+        return {port, baud,  sim,    simFaults,  settings, noScan,   view,   select,
+                shot, delay, motion, lowVoltage, size,     language, palette};
     }
 };
 
@@ -181,6 +191,10 @@ QString StartupOptions::readDisplay(const QCommandLineParser &p, const Definitio
             return tr("--window-size takes WIDTHxHEIGHT, e.g. 1600x1000.");
         windowSize = QSize(w, h);
     }
+    language = p.value(d.language);
+    palette = p.value(d.palette);
+    if (!palette.isEmpty() && palette != QLatin1String("dark") && palette != QLatin1String("light"))
+        return tr("--palette takes dark or light.");
     screenshotFile = p.value(d.shot);
     if (p.isSet(d.delay)) {
         bool ok = false;

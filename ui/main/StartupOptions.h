@@ -36,7 +36,9 @@ public:
     QSize windowSize;                   ///< --window-size WxH (hidden); invalid: saved or default
     QString screenshotFile;             ///< --screenshot FILE (hidden)
     int screenshotDelayMs = 3000;       ///< --screenshot-delay-ms N (hidden)
-    bool helpShown = false;             ///< --help or --version printed; exit 0
+    QString language;       ///< --language NAME (hidden): e.g. zh_CN, en; empty: setting
+    QString palette;        ///< --palette dark|light (hidden): a Fusion palette
+    bool helpShown = false; ///< --help or --version printed; exit 0
 
     /// Parse `arguments` (argv, program name first). nullopt with a message on bad input.
     static std::optional<StartupOptions> parse(const QStringList &arguments, QString *error);

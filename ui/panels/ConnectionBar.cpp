@@ -1,6 +1,8 @@
 #include "ConnectionBar.h"
 
 #include "Format.h"
+#include "StatusColors.h"
+#include "ThemedIcon.h"
 
 #include <bus/BusTiming.h>
 
@@ -126,10 +128,11 @@ void ConnectionBar::rebuildPortItems()
     const ConnectionChoice keep = choice();
     const QSignalBlocker block(m_port);
     m_port->clear();
-    m_port->addItem(QIcon(QStringLiteral(":/icons/simulator.svg")), tr("Simulator (built-in)"));
+    m_port->addItem(ThemedIcon::get(QStringLiteral(":/icons/simulator.svg")),
+                    tr("Simulator (built-in)"));
     m_port->setItemData(0, static_cast<int>(ConnectionChoice::Kind::Simulator), kKindRole);
     for (const auto &p : m_ports) {
-        m_port->addItem(QIcon(QStringLiteral(":/icons/port.svg")), p.label());
+        m_port->addItem(ThemedIcon::get(QStringLiteral(":/icons/port.svg")), p.label());
         const int i = m_port->count() - 1;
         m_port->setItemData(i, static_cast<int>(ConnectionChoice::Kind::Serial), kKindRole);
         m_port->setItemData(i, p.location.isEmpty() ? p.name : p.location, kPortRole);
@@ -205,13 +208,14 @@ void ConnectionBar::updateState()
     m_port->setEnabled(closed);
     m_baud->setEnabled(closed);
     m_connect->setText(closed ? tr("Connect") : tr("Disconnect"));
-    m_connect->setIcon(QIcon(closed ? QStringLiteral(":/icons/connect.svg")
-                                    : QStringLiteral(":/icons/disconnect.svg")));
-    QString color = QStringLiteral("#777777");
+    m_connect->setIcon(ThemedIcon::get(closed ? QStringLiteral(":/icons/connect.svg")
+                                              : QStringLiteral(":/icons/disconnect.svg")));
+    StatusColors::Role role = StatusColors::Role::Muted;
     if (m_status.state == S::Open)
-        color = QStringLiteral("#2e9b3e");
+        role = StatusColors::Role::Ok;
     else if (m_status.state == S::Disconnected)
-        color = QStringLiteral("#d9302c");
+        role = StatusColors::Role::Error;
+    const QString color = StatusColors::text(role, palette()).name();
     m_state->setText(QStringLiteral("<span style=\"color:%1\">\u25cf</span> %2")
                          .arg(color, Format::connectionState(m_status).toHtmlEscaped()));
     m_state->setToolTip(Format::connectionDetail(m_status));

@@ -4,6 +4,8 @@
 #include "Format.h"
 #include "Readout.h"
 #include "StatisticsView.h"
+#include "StatusColors.h"
+#include "ThemedIcon.h"
 
 #include <QtCore/QTimer>
 #include <QtGui/QIcon>
@@ -145,8 +147,8 @@ QWidget *DashboardPanel::buildErrors()
     row->addWidget(m_errorIcon);
     row->addWidget(m_errorText, 1);
     layout->addLayout(row);
-    m_clearErrors =
-        new QPushButton(QIcon(QStringLiteral(":/icons/clear.svg")), tr("Clear Errors"), box);
+    m_clearErrors = new QPushButton(ThemedIcon::get(QStringLiteral(":/icons/clear.svg")),
+                                    tr("Clear Errors"), box);
     m_clearErrors->setObjectName(QStringLiteral("clearErrorsButton"));
     m_clearErrors->setToolTip(tr("Send clear_errors (0x9B). A drive keeps a flag while its cause "
                                  "(low voltage, heat) is still there."));
@@ -285,12 +287,12 @@ void DashboardPanel::updateErrors(const DriveRecord &d, qint64 now)
         text += QLatin1Char(' ') + tr("(no update for over a second)");
     m_errorText->setText(text);
     QPalette p = m_errorText->palette();
-    p.setColor(QPalette::WindowText,
-               bad ? QColor(0xc6, 0x28, 0x28) : palette().color(QPalette::WindowText));
+    p.setColor(QPalette::WindowText, bad ? StatusColors::text(StatusColors::Role::Error, palette())
+                                         : palette().color(QPalette::WindowText));
     m_errorText->setPalette(p);
-    m_errorIcon->setPixmap(
-        QIcon(bad ? QStringLiteral(":/icons/error.svg") : QStringLiteral(":/icons/ok.svg"))
-            .pixmap(32, 32));
+    m_errorIcon->setPixmap(ThemedIcon::get(bad ? QStringLiteral(":/icons/error.svg")
+                                               : QStringLiteral(":/icons/ok.svg"))
+                               .pixmap(32, 32));
 }
 
 } // namespace lk::ui

@@ -2,6 +2,8 @@
 
 #include "BusModel.h"
 #include "Format.h"
+#include "StatusColors.h"
+#include "ThemedIcon.h"
 
 #include <QtCore/QTimer>
 #include <QtGui/QIcon>
@@ -14,8 +16,6 @@ namespace lk::ui {
 namespace {
 constexpr int kRefreshMs = 250; // a list of values a human reads: 4 Hz is plenty
 constexpr int kIdRole = Qt::UserRole + 1;
-const QColor kErrorBackground(0xfd, 0xe3, 0xe1);
-const QColor kErrorText(0xb0, 0x1c, 0x16);
 } // namespace
 
 DriveTree::DriveTree(BusModel *model, QWidget *parent) : QTreeWidget(parent), m_model(model)
@@ -103,8 +103,9 @@ void DriveTree::updateBusItem()
     QString text = c.description.isEmpty() ? tr("No bus") : c.description;
     text += QStringLiteral(" \u00b7 ") + tr("%n drive(s)", nullptr, m_model->ids().size());
     m_bus->setText(IdCol, text);
-    m_bus->setIcon(IdCol, QIcon(m_model->isSimulated() ? QStringLiteral(":/icons/simulator.svg")
-                                                       : QStringLiteral(":/icons/port.svg")));
+    m_bus->setIcon(IdCol,
+                   ThemedIcon::get(m_model->isSimulated() ? QStringLiteral(":/icons/simulator.svg")
+                                                          : QStringLiteral(":/icons/port.svg")));
 }
 
 void DriveTree::updateItem(QTreeWidgetItem *item, int id)
@@ -134,21 +135,23 @@ void DriveTree::updateItem(QTreeWidgetItem *item, int id)
     const int errors = d->has(F::ErrorState) ? d->latest.errorState : 0;
     const bool bad = errors != 0;
     item->setText(ErrorsCol, d->has(F::ErrorState) ? Format::errorFlagsText(errors) : QString());
-    item->setIcon(ErrorsCol, bad ? QIcon(QStringLiteral(":/icons/error.svg")) : QIcon());
+    item->setIcon(ErrorsCol, bad ? ThemedIcon::get(QStringLiteral(":/icons/error.svg")) : QIcon());
     QFont f = font();
     f.setBold(bad);
     item->setFont(ErrorsCol, f);
     // The whole row turns red so that a warning cannot be missed; the text stays dark on the
     // light background whatever the palette.
     for (int col = 0; col < ColumnCount; ++col) {
-        item->setBackground(col, bad ? QBrush(kErrorBackground) : QBrush());
+        item->setBackground(
+            col, bad ? QBrush(StatusColors::background(StatusColors::Role::Error, palette()))
+                     : QBrush());
         if (bad)
-            item->setForeground(col, kErrorText);
+            item->setForeground(col, StatusColors::text(StatusColors::Role::Error, palette()));
         else if (col != VoltageCol && col != TempCol)
             item->setForeground(col, normal);
     }
-    item->setIcon(IdCol, QIcon(bad ? QStringLiteral(":/icons/warning.svg")
-                                   : QStringLiteral(":/icons/motor.svg")));
+    item->setIcon(IdCol, ThemedIcon::get(bad ? QStringLiteral(":/icons/warning.svg")
+                                             : QStringLiteral(":/icons/motor.svg")));
 }
 
 void DriveTree::selectCurrent()

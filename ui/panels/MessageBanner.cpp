@@ -1,7 +1,11 @@
 #include "MessageBanner.h"
 
+#include "StatusColors.h"
+#include "ThemedIcon.h"
+
 #include <QtCore/QTimer>
 #include <QtGui/QIcon>
+#include <QtWidgets/QApplication>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QToolButton>
@@ -68,26 +72,29 @@ void MessageBanner::clearMessage()
 void MessageBanner::applyLevel()
 {
     QString icon;
-    QString style;
+    StatusColors::Role role = StatusColors::Role::Info;
     switch (m_level) {
     case Level::Info:
         icon = QStringLiteral(":/icons/info.svg");
-        style = QStringLiteral("#messageBanner { background: #e3f0fb; border: 1px solid #7fb2e0; }"
-                               " QLabel { color: #10324f; }");
+        role = StatusColors::Role::Info;
         break;
     case Level::Warning:
         icon = QStringLiteral(":/icons/warning.svg");
-        style = QStringLiteral("#messageBanner { background: #fff4d6; border: 1px solid #e0b040; }"
-                               " QLabel { color: #4a3500; }");
+        role = StatusColors::Role::Warning;
         break;
     case Level::Error:
         icon = QStringLiteral(":/icons/error.svg");
-        style = QStringLiteral("#messageBanner { background: #fde3e1; border: 1px solid #d9534f; }"
-                               " QLabel { color: #5c0f0b; }");
+        role = StatusColors::Role::Error;
         break;
     }
-    setStyleSheet(style);
-    m_icon->setPixmap(QIcon(icon).pixmap(kIconPx, kIconPx));
+    // Tints that suit the palette: pale on a light window, deep on a dark one.
+    const QPalette pal = QApplication::palette(); // not ours: the style sheet tints it
+    setStyleSheet(QStringLiteral("#messageBanner { background: %1; border: 1px solid %2; }"
+                                 " QLabel { color: %3; }")
+                      .arg(StatusColors::background(role, pal).name(),
+                           StatusColors::border(role, pal).name(),
+                           StatusColors::text(role, pal).name()));
+    m_icon->setPixmap(ThemedIcon::get(icon).pixmap(kIconPx, kIconPx));
 }
 
 void MessageBanner::updateText()

@@ -2,6 +2,7 @@
 
 #include "BusModel.h"
 #include "Format.h"
+#include "StatusColors.h"
 
 #include <QtGui/QBrush>
 #include <QtGui/QColor>
@@ -11,9 +12,6 @@ namespace lk::ui {
 
 namespace {
 using F = bus::TelemetryField;
-const QColor kErrorBackground(0xfd, 0xe3, 0xe1);
-const QColor kErrorText(0xb0, 0x1c, 0x16);
-const QColor kStaleText(0x90, 0x90, 0x90);
 
 F fieldOf(int column, bool power)
 {
@@ -135,11 +133,14 @@ QVariant OverviewModel::data(const QModelIndex &index, int role) const
                    ? QVariant(Qt::AlignRight | Qt::AlignVCenter)
                    : QVariant(Qt::AlignLeft | Qt::AlignVCenter);
     case Qt::BackgroundRole:
-        return bad ? QVariant(QBrush(kErrorBackground)) : QVariant();
+        return bad ? QVariant(QBrush(StatusColors::background(StatusColors::Role::Error)))
+                   : QVariant();
     case Qt::ForegroundRole:
         if (bad)
-            return QBrush(kErrorText);
-        return isStale(id, index.column()) ? QVariant(QBrush(kStaleText)) : QVariant();
+            return QBrush(StatusColors::text(StatusColors::Role::Error));
+        return isStale(id, index.column())
+                   ? QVariant(QBrush(StatusColors::text(StatusColors::Role::Muted)))
+                   : QVariant();
     case Qt::DecorationRole:
         if (index.column() == Errors && bad)
             return QIcon(QStringLiteral(":/icons/error.svg"));

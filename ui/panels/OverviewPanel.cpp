@@ -3,6 +3,7 @@
 #include "BusModel.h"
 #include "Format.h"
 #include "OverviewModel.h"
+#include "StatusColors.h"
 
 #include <QtCore/QTimer>
 #include <QtWidgets/QHeaderView>
@@ -95,8 +96,9 @@ void OverviewPanel::updateSummary()
     const auto &b = m_model->statistics().bus;
     QString text = tr("%n drive(s) on the bus", nullptr, m_model->ids().size());
     if (warnings > 0)
-        text += QStringLiteral(" \u00b7 <b style=\"color:#c62828\">%1</b>")
-                    .arg(tr("%n drive(s) with error flags", nullptr, warnings));
+        text += QStringLiteral(" \u00b7 <b style=\"color:%1\">%2</b>")
+                    .arg(StatusColors::text(StatusColors::Role::Error, palette()).name(),
+                         tr("%n drive(s) with error flags", nullptr, warnings));
     text += QStringLiteral(" \u00b7 ") +
             tr("%1 timeouts, %2 checksum errors on the bus").arg(b.timeouts).arg(b.checksumErrors);
     m_summary->setText(text);

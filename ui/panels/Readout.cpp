@@ -1,5 +1,8 @@
 #include "Readout.h"
 
+#include "StatusColors.h"
+
+#include <QtCore/QEvent>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QVBoxLayout>
 
@@ -54,6 +57,13 @@ QString Readout::value() const
     return m_value->text();
 }
 
+void Readout::changeEvent(QEvent *event)
+{
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::PaletteChange)
+        applyStyle(); // the value label holds a palette of its own: follow a theme switch
+}
+
 void Readout::applyStyle()
 {
     QPalette p = palette();
@@ -61,7 +71,7 @@ void Readout::applyStyle()
     if (m_stale)
         c = p.color(QPalette::Disabled, QPalette::WindowText);
     else if (m_alarm)
-        c = QColor(0xc6, 0x28, 0x28);
+        c = StatusColors::text(StatusColors::Role::Error, p);
     p.setColor(QPalette::WindowText, c);
     m_value->setPalette(p);
     m_value->setToolTip(m_stale ? tr("No update for over a second") : QString());

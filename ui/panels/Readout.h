@@ -19,6 +19,9 @@ public:
     QString value() const;
     bool isStale() const { return m_stale; }
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
     void applyStyle();
 

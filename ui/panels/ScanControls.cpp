@@ -1,6 +1,7 @@
 #include "ScanControls.h"
 
 #include "Format.h"
+#include "ThemedIcon.h"
 
 #include <bus/BusTiming.h>
 
@@ -35,7 +36,7 @@ ScanControls::ScanControls(QWidget *parent) : QWidget(parent)
     m_sweep->setObjectName(QStringLiteral("scanSweepBauds"));
     m_sweep->setToolTip(tr("Scan the range at each of the nine bauds (slower): for drives whose "
                            "baud is unknown"));
-    m_scan = new QPushButton(QIcon(QStringLiteral(":/icons/scan.svg")), tr("Scan"), this);
+    m_scan = new QPushButton(ThemedIcon::get(QStringLiteral(":/icons/scan.svg")), tr("Scan"), this);
     m_scan->setObjectName(QStringLiteral("scanButton"));
     m_cancel = new QPushButton(tr("Cancel"), this);
     m_cancel->setObjectName(QStringLiteral("scanCancelButton"));

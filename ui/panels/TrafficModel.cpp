@@ -1,5 +1,7 @@
 #include "TrafficModel.h"
 
+#include "StatusColors.h"
+
 #include <protocol/Command.h>
 #include <protocol/FieldJson.h>
 #include <protocol/FieldText.h>
@@ -15,9 +17,6 @@ namespace lk::ui {
 namespace {
 
 using Kind = bus::TrafficEvent::Kind;
-const QColor kFaultText(0xb0, 0x1c, 0x16);
-const QColor kSentText(0x1f, 0x4e, 0x8c);
-const QColor kNoteText(0x80, 0x80, 0x80);
 
 /// The one frame `bytes` holds (a request as sent, or a received frame), if it is one.
 std::optional<protocol::Frame> frameOf(const QByteArray &bytes)
@@ -242,10 +241,11 @@ QVariant TrafficModel::data(const QModelIndex &index, int role) const
         }
     case Qt::ForegroundRole:
         if (fault)
-            return QBrush(kFaultText);
+            return QBrush(StatusColors::text(StatusColors::Role::Error));
         if (e.kind == Kind::Note)
-            return QBrush(kNoteText);
-        return e.kind == Kind::Sent ? QVariant(QBrush(kSentText)) : QVariant();
+            return QBrush(StatusColors::text(StatusColors::Role::Muted));
+        return e.kind == Kind::Sent ? QVariant(QBrush(StatusColors::text(StatusColors::Role::Sent)))
+                                    : QVariant();
     case kCommandRole:
         return e.kind == Kind::Note || e.kind == Kind::Fault ? -1 : int(e.command);
     case kIdRole:

@@ -1,6 +1,7 @@
 #include "TrafficPanel.h"
 
 #include "BusModel.h"
+#include "ThemedIcon.h"
 #include "TrafficFilter.h"
 #include "TrafficModel.h"
 
@@ -35,7 +36,7 @@ QToolButton *makeButton(QWidget *parent, const QString &name, const QString &tex
     auto *b = new QToolButton(parent);
     b->setObjectName(name);
     b->setText(text);
-    b->setIcon(QIcon(icon));
+    b->setIcon(ThemedIcon::get(icon));
     b->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     b->setToolTip(toolTip);
     return b;

@@ -104,6 +104,7 @@ StripChart::StripChart(QWidget *parent) : TimeChartView(parent)
     m_time = new QValueAxis(c);
     setAxisRange(m_time, 0, 10, kTimeTicks);
     c->addAxis(m_time, Qt::AlignBottom);
+    applyPalette();
 }
 
 void StripChart::clearChart()
@@ -115,6 +116,18 @@ void StripChart::clearChart()
         delete axis;
     }
     m_valueAxes.clear();
+    m_axisColors.clear();
+}
+
+void StripChart::applyPalette()
+{
+    TimeChartView::applyPalette();
+    for (const auto &[quantity, color] : m_axisColors) {
+        if (QValueAxis *axis = valueAxis(quantity)) {
+            axis->setLabelsColor(color);
+            axis->setTitleBrush(color);
+        }
+    }
 }
 
 QColor StripChart::traceColor(int index) const
@@ -152,10 +165,8 @@ void StripChart::setTraces(const QVector<PlotTrace> &traces, Coloring coloring)
             axis->setTitleText(quantityTitle(trace.quantity()));
             const bool left = m_valueAxes.size() % 2 == 1;
             chart()->addAxis(axis, left ? Qt::AlignLeft : Qt::AlignRight);
-            if (m_coloring == Coloring::ByChannel) {
-                axis->setLabelsColor(traceColor(i));
-                axis->setTitleBrush(traceColor(i));
-            }
+            if (m_coloring == Coloring::ByChannel)
+                m_axisColors[trace.quantity()] = traceColor(i);
         }
         auto *series = new QLineSeries(chart());
         series->setUseOpenGL(false); // raster: works offscreen and on any remote display
@@ -175,6 +186,7 @@ void StripChart::setTraces(const QVector<PlotTrace> &traces, Coloring coloring)
         m_series.append(series);
     }
     chart()->legend()->setVisible(drives.size() > 1 || m_valueAxes.size() > 1);
+    applyPalette(); // the new axes
     m_needsScale = true;
 }
 

@@ -47,6 +47,8 @@ public:
     double axisInsetLeft() const;
     double axisInsetRight() const;
     void setAlignmentPadding(double left, double right);
+    /// The palette colours of the base class, then each overlaid axis in its trace's colour.
+    void applyPalette() override;
 
 private:
     void clearChart();
@@ -56,6 +58,7 @@ private:
     Coloring m_coloring = Coloring::ByDrive;
     QList<QLineSeries *> m_series;
     std::map<Quantity, QValueAxis *> m_valueAxes;
+    std::map<Quantity, QColor> m_axisColors; ///< overlay: an axis takes its trace's colour
     QValueAxis *m_time = nullptr;
     bool m_needsScale = true;
     double m_padLeft = 0, m_padRight = 0;

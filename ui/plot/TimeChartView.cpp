@@ -1,5 +1,6 @@
 #include "TimeChartView.h"
 
+#include <QtCharts/QLegend>
 #include <QtCharts/QValueAxis>
 #include <QtGui/QMouseEvent>
 #include <QtGui/QPainter>
@@ -14,6 +15,15 @@ namespace {
 
 constexpr double kWheelZoomPerNotch = 0.8; // one wheel notch shows 80 % of the span
 constexpr int kMinSelectPixels = 4;        // a shorter drag is a click, not a selection
+constexpr double kGridShare = 0.18;        // grid lines: this much text colour in the base
+constexpr double kAxisShare = 0.5;
+
+QColor mix(const QColor &base, const QColor &over, double share)
+{
+    return QColor::fromRgbF(float(base.redF() + (over.redF() - base.redF()) * share),
+                            float(base.greenF() + (over.greenF() - base.greenF()) * share),
+                            float(base.blueF() + (over.blueF() - base.blueF()) * share));
+}
 
 } // namespace
 
@@ -22,6 +32,36 @@ TimeChartView::TimeChartView(QWidget *parent) : QChartView(parent)
     setMouseTracking(true);
     setRubberBand(QChartView::NoRubberBand); // zoom is ours: every chart must zoom alike
     setDragMode(QGraphicsView::NoDrag);
+    applyPalette();
+}
+
+void TimeChartView::applyPalette()
+{
+    QChart *c = chart();
+    if (!c)
+        return;
+    const QPalette pal = palette();
+    const QColor base = pal.color(QPalette::Base);
+    const QColor text = pal.color(QPalette::Text);
+    c->setBackgroundBrush(base);
+    c->setBackgroundPen(Qt::NoPen);
+    c->setTitleBrush(text);
+    c->legend()->setLabelColor(text);
+    setBackgroundBrush(pal.color(QPalette::Window)); // the view around the chart
+    for (QAbstractAxis *axis : c->axes()) {
+        axis->setLabelsColor(text);
+        axis->setTitleBrush(text);
+        axis->setLinePenColor(mix(base, text, kAxisShare));
+        axis->setGridLineColor(mix(base, text, kGridShare));
+        axis->setMinorGridLineColor(mix(base, text, kGridShare / 2));
+    }
+}
+
+void TimeChartView::changeEvent(QEvent *event)
+{
+    QChartView::changeEvent(event);
+    if (event->type() == QEvent::PaletteChange)
+        applyPalette();
 }
 
 void TimeChartView::setCursorTime(std::optional<double> time)

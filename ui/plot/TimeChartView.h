@@ -23,6 +23,10 @@ public:
     std::optional<double> cursorTime() const { return m_cursorTime; }
     /// The horizontal (time) axis of the chart, if it has one.
     QValueAxis *timeAxis() const;
+    /// Colour the chart (background, axes, grid, labels, legend) from the widget's palette,
+    /// so that a dark system theme gets a dark chart. Called on every palette change; call
+    /// it again after adding axes.
+    virtual void applyPalette();
 
 signals:
     void cursorMoved(double time);
@@ -38,6 +42,7 @@ protected:
     void mouseReleaseEvent(QMouseEvent *event) override;
     void wheelEvent(QWheelEvent *event) override;
     void leaveEvent(QEvent *event) override;
+    void changeEvent(QEvent *event) override;
     void drawForeground(QPainter *painter, const QRectF &rect) override;
 
 private:

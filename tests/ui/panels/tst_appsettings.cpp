@@ -18,6 +18,8 @@ private slots:
     void migratesUnversioned();
     void leavesNewerFileAlone();
     void clampsScanRange();
+    void language_data();
+    void language();
 
 private:
     QString file() const { return m_dir.filePath(QStringLiteral("lkstudio.ini")); }
@@ -159,6 +161,34 @@ void tst_AppSettings::clampsScanRange()
     QCOMPARE(s.scanLastId(), 32);
     s.setScanRange(12, 4, false);
     QCOMPARE(s.scanLastId(), 12); // last never before first
+}
+
+void tst_AppSettings::language_data()
+{
+    QTest::addColumn<QString>("written");
+    QTest::addColumn<QString>("read");
+    QTest::newRow("system default") << QString() << QString();
+    QTest::newRow("chinese") << QStringLiteral("zh_CN") << QStringLiteral("zh_CN");
+    QTest::newRow("english") << QStringLiteral("en") << QStringLiteral("en");
+    QTest::newRow("garbage") << QStringLiteral("../x") << QString();
+}
+
+void tst_AppSettings::language()
+{
+    QFETCH(QString, written);
+    QFETCH(QString, read);
+    {
+        AppSettings s(file());
+        QCOMPARE(s.language(), QString()); // default: follow the system
+        s.setLanguage(written);
+    }
+    AppSettings s(file());
+    QCOMPARE(s.language(), read);
+    // A bad value typed into the file by hand reads as the system default.
+    QSettings raw(file(), QSettings::IniFormat);
+    raw.setValue(QStringLiteral("ui/language"), QStringLiteral("zh CN!"));
+    raw.sync();
+    QCOMPARE(AppSettings(file()).language(), QString());
 }
 
 QTEST_GUILESS_MAIN(tst_AppSettings)

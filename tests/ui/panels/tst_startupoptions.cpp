@@ -13,6 +13,8 @@ class tst_StartupOptions : public QObject {
 private slots:
     void parse_data();
     void parse();
+    void display_data();
+    void display();
     void initialChoice_data();
     void initialChoice();
 
@@ -72,6 +74,36 @@ void tst_StartupOptions::parse()
     QCOMPARE(o->port.value_or(QString()), port);
     QCOMPARE(o->baud, baud);
     QCOMPARE(o->sim ? int(o->sim->drives.size()) : 0, simDrives);
+}
+
+void tst_StartupOptions::display_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<bool>("ok");
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<QString>("palette");
+    QTest::newRow("defaults") << QStringList{} << true << QString() << QString();
+    QTest::newRow("chinese") << QStringList{"--language", "zh_CN"} << true << "zh_CN" << QString();
+    QTest::newRow("dark") << QStringList{"--palette", "dark"} << true << QString() << "dark";
+    QTest::newRow("light") << QStringList{"--palette", "light"} << true << QString() << "light";
+    QTest::newRow("bad palette") << QStringList{"--palette", "purple"} << false << QString()
+                                 << QString();
+}
+
+void tst_StartupOptions::display()
+{
+    QFETCH(QStringList, args);
+    QFETCH(bool, ok);
+    QFETCH(QString, language);
+    QFETCH(QString, palette);
+    QString error;
+    const auto o = lk::ui::StartupOptions::parse(QStringList{"lkstudio"} + args, &error);
+    QCOMPARE(o.has_value(), ok);
+    QCOMPARE(error.isEmpty(), ok);
+    if (!o)
+        return;
+    QCOMPARE(o->language, language);
+    QCOMPARE(o->palette, palette);
 }
 
 void tst_StartupOptions::initialChoice_data()

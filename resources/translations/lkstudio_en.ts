@@ -1,0 +1,55 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="en">
+<context>
+    <name>lk::ui::DriveTree</name>
+    <message numerus="yes">
+        <source>%n drive(s)</source>
+        <translation>
+            <numerusform>%n drive</numerusform>
+            <numerusform>%n drives</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::OverviewPanel</name>
+    <message numerus="yes">
+        <source>%n drive(s) on the bus</source>
+        <translation>
+            <numerusform>%n drive on the bus</numerusform>
+            <numerusform>%n drives on the bus</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drive(s) with error flags</source>
+        <translation>
+            <numerusform>%n drive with error flags</numerusform>
+            <numerusform>%n drives with error flags</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::ScanControls</name>
+    <message numerus="yes">
+        <source>ID %1 at %2 baud · %n drive(s) found · about %3 left</source>
+        <translation>
+            <numerusform>ID %1 at %2 baud · %n drive found · about %3 left</numerusform>
+            <numerusform>ID %1 at %2 baud · %n drives found · about %3 left</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Scan cancelled after %1: %n drive(s) found</source>
+        <translation>
+            <numerusform>Scan cancelled after %1: %n drive found</numerusform>
+            <numerusform>Scan cancelled after %1: %n drives found</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Scan done in %1: %n drive(s) found</source>
+        <translation>
+            <numerusform>Scan done in %1: %n drive found</numerusform>
+            <numerusform>Scan done in %1: %n drives found</numerusform>
+        </translation>
+    </message>
+</context>
+</TS>
