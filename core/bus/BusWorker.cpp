@@ -7,6 +7,7 @@
 
 #include <protocol/Checksum.h>
 
+#include <QtCore/QCoreApplication>
 #include <QtCore/QMetaObject>
 
 #include <algorithm>
@@ -54,7 +55,7 @@ BusWorker::BusWorker(TransportFactory factory, int baud, const BusConfig &config
 
 BusWorker::~BusWorker()
 {
-    shutdown(QStringLiteral("bus closed"));
+    shutdown(QCoreApplication::translate("lk::bus::BusWorker", "bus closed"));
 }
 
 void BusWorker::start()
@@ -88,7 +89,8 @@ void BusWorker::dropTransport()
 bool BusWorker::openTransport()
 {
     if (!m_transport) {
-        m_lastError = QStringLiteral("No transport: the transport factory returned nothing.");
+        m_lastError = QCoreApplication::translate(
+            "lk::bus::BusWorker", "No transport: the transport factory returned nothing.");
         reportConnection(m_lastError);
         return false;
     }
@@ -115,8 +117,9 @@ bool BusWorker::reopenAt(int baud)
 {
     if (m_shutDown)
         return false;
-    abortInflight(RequestStatus::Cancelled,
-                  QStringLiteral("the port was reopened at another baud"));
+    abortInflight(
+        RequestStatus::Cancelled,
+        QCoreApplication::translate("lk::bus::BusWorker", "the port was reopened at another baud"));
     m_matcher.reset();
     m_recentLatency.clear(); // another baud, other latencies
     m_baud = baud;
@@ -179,9 +182,11 @@ void BusWorker::onTransportState(Transport::State state)
         return;
     }
     const QString reason =
-        m_lastError.isEmpty() ? (state == Transport::State::Closed ? QStringLiteral("closed")
-                                                                   : QStringLiteral("disconnected"))
-                              : m_lastError;
+        m_lastError.isEmpty()
+            ? (state == Transport::State::Closed
+                   ? QCoreApplication::translate("lk::bus::BusWorker", "closed")
+                   : QCoreApplication::translate("lk::bus::BusWorker", "disconnected"))
+            : m_lastError;
     if (m_scanner && m_scanner->isRunning() && !m_scanner->isReopening())
         m_scanner->abort(reason);
     failAll(RequestStatus::Disconnected, reason);
@@ -201,8 +206,10 @@ void BusWorker::reportConnection(const QString &reason)
         return;
     m_reported = s;
     recordTraffic(TrafficEvent::Kind::Note, {}, 0, 0,
-                  QStringLiteral("%1: %2").arg(s.description,
-                                               s.isOpen() ? QStringLiteral("open") : s.reason));
+                  QStringLiteral("%1: %2").arg(
+                      s.description, s.isOpen()
+                                         ? QCoreApplication::translate("lk::bus::BusWorker", "open")
+                                         : s.reason));
     emit connectionChanged(s);
 }
 
@@ -242,7 +249,9 @@ void BusWorker::submit(BusRequest request, Completion done)
     p.done = std::move(done);
     if (m_shutDown || !isOpen()) {
         const QString why =
-            m_lastError.isEmpty() ? QStringLiteral("the bus is not open") : m_lastError;
+            m_lastError.isEmpty()
+                ? QCoreApplication::translate("lk::bus::BusWorker", "the bus is not open")
+                : m_lastError;
         complete(std::move(p), RequestStatus::Disconnected, std::nullopt, why, 0);
         return;
     }
@@ -343,9 +352,11 @@ void BusWorker::onTimeout()
     m_stats.timedOut(r.id);
     m_matcher.timedOut();
     recordTraffic(TrafficEvent::Kind::Timeout, {}, r.id, static_cast<quint8>(r.command));
-    failAttempt(RequestStatus::Timeout, QStringLiteral("no reply to %1 after %2 attempt(s)")
-                                            .arg(commandText(r))
-                                            .arg(m_inflight->attempts));
+    failAttempt(RequestStatus::Timeout,
+                QCoreApplication::translate("lk::bus::BusWorker",
+                                            "no reply to %1 after %n attempt(s)", nullptr,
+                                            m_inflight->attempts)
+                    .arg(commandText(r)));
 }
 
 void BusWorker::failAttempt(RequestStatus status, const QString &reason)
@@ -440,17 +451,19 @@ void BusWorker::onParseEvent(const protocol::ParseEvent &ev)
     case V::CorruptReply:
         // Retry now rather than wait for the timeout.
         m_stats.parseFault(ev);
-        failAttempt(RequestStatus::Error, QStringLiteral("corrupt reply to %1 (bad data checksum)")
-                                              .arg(commandText(m_inflight->req.request)));
+        failAttempt(RequestStatus::Error,
+                    QCoreApplication::translate("lk::bus::BusWorker",
+                                                "corrupt reply to %1 (bad data checksum)")
+                        .arg(commandText(m_inflight->req.request)));
         return;
     case V::LocalEcho:
         m_stats.localEcho();
         return;
     case V::Undecodable:
         m_stats.undecodable(f.id);
-        failAttempt(
-            RequestStatus::Error,
-            QStringLiteral("undecodable reply to %1").arg(commandText(m_inflight->req.request)));
+        failAttempt(RequestStatus::Error,
+                    QCoreApplication::translate("lk::bus::BusWorker", "undecodable reply to %1")
+                        .arg(commandText(m_inflight->req.request)));
         return;
     case V::LateReply:
         // The link is slower than the margin assumed: let the margin learn from it.
@@ -516,7 +529,8 @@ void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command h
         r.firstTimeoutS = probeTimeoutS(halt);
     qCInfo(lcBus) << "emergency" << CommandTable::name(halt) << "to" << offs.size() << "ID(s)";
     cancelQueued([](const Pending &p) { return movesMotor(p.req.request.command); },
-                 RequestStatus::Cancelled, QStringLiteral("cancelled by emergency stop"));
+                 RequestStatus::Cancelled,
+                 QCoreApplication::translate("lk::bus::BusWorker", "cancelled by emergency stop"));
     if (m_inflight && movesMotor(m_inflight->req.request.command))
         m_inflight->noRetry = true; // it may finish, but it is not sent again
     for (const BusRequest &r : offs) {
@@ -547,7 +561,8 @@ void BusWorker::cancelScan()
     if (m_scanner)
         m_scanner->cancel();
     cancelQueued([](const Pending &p) { return p.req.origin == RequestOrigin::Scan; },
-                 RequestStatus::Cancelled, QStringLiteral("scan cancelled"));
+                 RequestStatus::Cancelled,
+                 QCoreApplication::translate("lk::bus::BusWorker", "scan cancelled"));
 }
 
 bool BusWorker::isScanning() const

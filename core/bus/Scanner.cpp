@@ -7,6 +7,7 @@
 #include <motor/ModelNameInfo.h>
 #include <protocol/Checksum.h>
 
+#include <QtCore/QCoreApplication>
 #include <QtCore/QMap>
 #include <QtCore/QMetaObject>
 
@@ -51,9 +52,10 @@ void Scanner::start(const ScanOptions &options)
 
     if (options.firstId < protocol::kMinId || options.lastId > protocol::kMaxId ||
         options.firstId > options.lastId) {
-        stop(false, QStringLiteral("scan range %1..%2 is outside 1..32")
-                        .arg(options.firstId)
-                        .arg(options.lastId));
+        stop(false,
+             QCoreApplication::translate("lk::bus::Scanner", "scan range %1..%2 is outside 1..32")
+                 .arg(options.firstId)
+                 .arg(options.lastId));
         return;
     }
     if (options.sweepBauds) {
@@ -67,7 +69,7 @@ void Scanner::start(const ScanOptions &options)
         m_bauds.append(m_originalBaud);
     }
     if (m_bauds.isEmpty()) {
-        stop(false, QStringLiteral("no valid baud to scan"));
+        stop(false, QCoreApplication::translate("lk::bus::Scanner", "no valid baud to scan"));
         return;
     }
     m_total = m_bauds.size() * (options.lastId - options.firstId + 1);

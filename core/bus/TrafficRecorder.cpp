@@ -1,5 +1,7 @@
 #include "TrafficRecorder.h"
 
+#include <QtCore/QCoreApplication>
+
 #include <utility>
 
 namespace lk::bus {
@@ -61,7 +63,9 @@ TrafficBatch TrafficRecorder::take(double now)
         TrafficEvent note;
         note.kind = TrafficEvent::Kind::Note;
         note.time = now;
-        note.text = QStringLiteral("%1 traffic events dropped (view too slow)").arg(m_dropped);
+        note.text = QCoreApplication::translate("lk::bus::TrafficRecorder",
+                                                "%1 traffic events dropped (view too slow)")
+                        .arg(m_dropped);
         out.append(note);
         m_dropped = 0;
     }

@@ -177,8 +177,13 @@ void SerialTransport::write(const QByteArray &bytes)
 {
     if (m_state != State::Open)
         return;
-    if (m_port->write(bytes) != bytes.size())
+    if (m_port->write(bytes) != bytes.size()) {
         lostPort(TransportError::Kind::IoError, m_port->errorString());
+        return;
+    }
+    // QSerialPort only buffers here and writes when the event loop next reports the port
+    // writable: flush() writes now, which saves a loop turn on every transaction.
+    m_port->flush();
 }
 
 void SerialTransport::onReadyRead()

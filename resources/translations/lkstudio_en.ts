@@ -2,6 +2,16 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en">
 <context>
+    <name>lk::bus::BusWorker</name>
+    <message numerus="yes">
+        <source>no reply to %1 after %n attempt(s)</source>
+        <translation>
+            <numerusform>no reply to %1 after %n attempt</numerusform>
+            <numerusform>no reply to %1 after %n attempts</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::DriveTree</name>
     <message numerus="yes">
         <source>%n drive(s)</source>

@@ -2,10 +2,175 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>lk::bus::BusSession</name>
+    <message>
+        <source>session closed</source>
+        <translation>会话已关闭</translation>
+    </message>
+    <message>
+        <source>the bus is not open</source>
+        <translation>总线未打开</translation>
+    </message>
+</context>
+<context>
+    <name>lk::bus::BusWorker</name>
+    <message>
+        <source>bus closed</source>
+        <translation>总线已关闭</translation>
+    </message>
+    <message>
+        <source>No transport: the transport factory returned nothing.</source>
+        <translation>没有可用的传输通道：传输工厂未返回任何对象。</translation>
+    </message>
+    <message>
+        <source>the port was reopened at another baud</source>
+        <translation>串口已按其他波特率重新打开</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>已关闭</translation>
+    </message>
+    <message>
+        <source>disconnected</source>
+        <translation>已断开</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation>已打开</translation>
+    </message>
+    <message>
+        <source>the bus is not open</source>
+        <translation>总线未打开</translation>
+    </message>
+    <message numerus="yes">
+        <source>no reply to %1 after %n attempt(s)</source>
+        <translation>
+            <numerusform>%1 无回复（已尝试 %n 次）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>corrupt reply to %1 (bad data checksum)</source>
+        <translation>%1 的回复已损坏（数据校验和错误）</translation>
+    </message>
+    <message>
+        <source>undecodable reply to %1</source>
+        <translation>%1 的回复无法解码</translation>
+    </message>
+    <message>
+        <source>cancelled by emergency stop</source>
+        <translation>已被急停取消</translation>
+    </message>
+    <message>
+        <source>scan cancelled</source>
+        <translation>扫描已取消</translation>
+    </message>
+</context>
+<context>
+    <name>lk::bus::Scanner</name>
+    <message>
+        <source>scan range %1..%2 is outside 1..32</source>
+        <translation>扫描范围 %1..%2 超出 1..32</translation>
+    </message>
+    <message>
+        <source>no valid baud to scan</source>
+        <translation>没有可扫描的有效波特率</translation>
+    </message>
+</context>
+<context>
+    <name>lk::bus::TrafficRecorder</name>
+    <message>
+        <source>%1 traffic events dropped (view too slow)</source>
+        <translation>丢弃了 %1 条通信记录（视图刷新过慢）</translation>
+    </message>
+</context>
+<context>
     <name>lk::protocol::FieldError</name>
     <message>
         <source>%1 must be in %2</source>
         <translation>%1 必须在 %2 范围内</translation>
+    </message>
+</context>
+<context>
+    <name>lk::protocol::FieldText</name>
+    <message>
+        <source>angle Kp %1 Ki %2, speed Kp %3 Ki %4, iq Kp %5 Ki %6</source>
+        <translation>角度环 Kp %1 Ki %2，速度环 Kp %3 Ki %4，电流环 Kp %5 Ki %6</translation>
+    </message>
+    <message>
+        <source>, max %1 dps</source>
+        <translation>，最大 %1 dps</translation>
+    </message>
+    <message>
+        <source>accel %1 dps/s</source>
+        <translation>加速度 %1 dps/s</translation>
+    </message>
+    <message>
+        <source>offset %1</source>
+        <translation>零偏 %1</translation>
+    </message>
+    <message>
+        <source>power %1</source>
+        <translation>功率 %1</translation>
+    </message>
+    <message>
+        <source>iq %1 A</source>
+        <translation>转矩电流 %1 A</translation>
+    </message>
+    <message>
+        <source>speed %1 dps</source>
+        <translation>速度 %1 dps</translation>
+    </message>
+    <message>
+        <source>angle %1 deg</source>
+        <translation>角度 %1°</translation>
+    </message>
+    <message>
+        <source>cw</source>
+        <translation>顺时针</translation>
+    </message>
+    <message>
+        <source>ccw</source>
+        <translation>逆时针</translation>
+    </message>
+    <message>
+        <source>%1 to %2 deg</source>
+        <translation>%1转到 %2°</translation>
+    </message>
+    <message>
+        <source>by %1%2 deg</source>
+        <translation>增量 %1%2°</translation>
+    </message>
+    <message>
+        <source>T %1 C</source>
+        <translation>温度 %1 °C</translation>
+    </message>
+    <message>
+        <source>low voltage</source>
+        <translation>低压</translation>
+    </message>
+    <message>
+        <source>over temperature</source>
+        <translation>过温</translation>
+    </message>
+    <message>
+        <source>error bits 0x%1</source>
+        <translation>错误位 0x%1</translation>
+    </message>
+    <message>
+        <source>%1, %2, %3 dps, enc %4</source>
+        <translation>%1，%2，%3 dps，编码器 %4</translation>
+    </message>
+    <message>
+        <source>%1 / %2, hw %3, fw %4</source>
+        <translation>%1 / %2，硬件 %3，固件 %4</translation>
+    </message>
+    <message>
+        <source>enc %1, raw %2, offset %3</source>
+        <translation>编码器 %1，原始值 %2，零偏 %3</translation>
+    </message>
+    <message>
+        <source>%1, ia %2 A, ib %3 A, ic %4 A</source>
+        <translation>%1，A 相 %2 A，B 相 %3 A，C 相 %4 A</translation>
     </message>
 </context>
 <context>

@@ -49,6 +49,7 @@ private slots:
     void writeOffset();
     void offsetOutOfRangeSendsNothing();
     void clearAngleZeroesTheAngle();
+    void ignoredClearAngleIsReported();
     void angleCheckOutcomes_data();
     void angleCheckOutcomes();
     void zeroToRomAppliesAfterRestart();
@@ -176,6 +177,25 @@ void tst_EncoderView::clearAngleZeroesTheAngle()
     QVERIFY(std::fabs(rig.multiTurnDeg(1)) < 1);
     QCOMPARE(rig.count(1, Command::ClearAngle), 1);
     QVERIFY(view->statusText().contains(QStringLiteral("cleared")));
+}
+
+void tst_EncoderView::ignoredClearAngleIsReported()
+{
+    // Firmware that acknowledges 0x95 and keeps its angle (ERRATA): the view reads the angle
+    // back with 0x92 and says so instead of reporting success.
+    SimRig rig(QStringLiteral("1:MF+clear-angle-ignored"));
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    const double before = rig.multiTurnDeg(1);
+    QVERIFY(std::fabs(before) > 10);
+    ConfirmDialog::ScopedPolicy yes([](const ConfirmRequest &) { return true; });
+    QSignalSpy checked(view.get(), &EncoderView::angleCheckFinished);
+    QTest::mouseClick(view->findChild<QPushButton *>(QStringLiteral("clearAngle")), Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(checked.count(), 1, kWaitMs);
+    QCOMPARE(view->lastAngleCheck()->outcome, AngleCheck::Outcome::Unchanged);
+    QCOMPARE(rig.count(1, Command::ClearAngle), 1);
+    QVERIFY2(view->statusText().contains(QStringLiteral("did not change")),
+             qPrintable(view->statusText()));
 }
 
 void tst_EncoderView::angleCheckOutcomes_data()

@@ -59,6 +59,7 @@ class tst_TuningView : public QObject {
 private slots:
     void readsDriveOnSelection();
     void ramWriteIsLostOnRestart();
+    void ignoredAccelerationIsShownAsMismatch();
     void romWriteAsksAndSurvivesRestart();
     void declinedRomWriteSendsNothing();
     void undoRestoresSelectionValues();
@@ -105,6 +106,27 @@ void tst_TuningView::ramWriteIsLostOnRestart()
 
     rig.restartDrive(1);
     QCOMPARE(rig.ramPid(1), rom);
+}
+
+void tst_TuningView::ignoredAccelerationIsShownAsMismatch()
+{
+    // Firmware that acknowledges 0x34 and reads 0 with 0x33 (ERRATA): the acknowledgement
+    // looks fine, only the read-back tells, and the technician must see it.
+    SimRig rig(QStringLiteral("1:MF+accel-ignored"));
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    QVERIFY(view);
+    QCOMPARE(*view->driveAccel(), 0);
+    edit(*view, ParameterTable::SpeedKp, 66);
+    edit(*view, ParameterTable::Accel, 15000);
+    QTest::mouseClick(button(*view, "writeRam"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isBusy() && !view->mismatchText().isEmpty(), kWaitMs);
+    QVERIFY2(
+        view->mismatchText().contains(QStringLiteral("acceleration 0 dps/s after 15000 dps/s")),
+        qPrintable(view->mismatchText()));
+    QVERIFY(!view->mismatchText().contains(QStringLiteral("gains"))); // the gains did land
+    QCOMPARE(view->drivePid()->speedKp, 66);
+    QCOMPARE(rig.count(1, Command::WriteAccelRam), 1);
 }
 
 void tst_TuningView::romWriteAsksAndSurvivesRestart()
