@@ -2,6 +2,8 @@
 
 #include "Checksum.h"
 
+#include <QtCore/QCoreApplication>
+
 #include <cmath>
 #include <limits>
 
@@ -31,7 +33,7 @@ BuildResult done(Command cmd, int id, RequestPayload payload)
 
 QString got(double v)
 {
-    return QStringLiteral("got %1").arg(v, 0, 'g', 12);
+    return QCoreApplication::translate("lk::protocol::RequestBuilder", "got %1").arg(v, 0, 'g', 12);
 }
 
 /// A physical value scaled to wire units and rounded, if finite and within [min, max] raw.

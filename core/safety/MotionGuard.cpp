@@ -35,16 +35,26 @@ Verdict checkSpeed(double dps, std::optional<Series> series, const SoftLimits &l
 {
     const double top = seriesTopSpeedDps(series);
     const double v = std::fabs(dps);
-    if (v > top)
-        return refuse(
-            LimitKind::SeriesSpeed, v, top,
-            QCoreApplication::translate("lk::safety::MotionGuard",
-                                        "%1 %2 dps exceeds the %3 series top speed of %4 dps")
-                .arg(QCoreApplication::translate("lk::safety::MotionGuard", what))
-                .arg(v)
-                .arg(series ? protocol::seriesName(*series)
-                            : QCoreApplication::translate("lk::safety::MotionGuard", "slowest"))
-                .arg(top));
+    if (v > top) {
+        // Whole sentences for the known and the unknown series: a translation cannot be glued
+        // together from "the" + "slowest" + "series".
+        const QString whatText = QCoreApplication::translate("lk::safety::MotionGuard", what);
+        const QString message =
+            series
+                ? QCoreApplication::translate("lk::safety::MotionGuard",
+                                              "%1 %2 dps exceeds the %3 series top speed of %4 dps")
+                      .arg(whatText)
+                      .arg(v)
+                      .arg(protocol::seriesName(*series))
+                      .arg(top)
+                : QCoreApplication::translate("lk::safety::MotionGuard",
+                                              "%1 %2 dps exceeds %3 dps, the top speed of the "
+                                              "slowest series (the drive's series is unknown)")
+                      .arg(whatText)
+                      .arg(v)
+                      .arg(top);
+        return refuse(LimitKind::SeriesSpeed, v, top, message);
+    }
     if (limits.maxSpeedDps > 0 && v > limits.maxSpeedDps)
         return refuse(LimitKind::SoftSpeed, v, limits.maxSpeedDps,
                       QCoreApplication::translate("lk::safety::MotionGuard",

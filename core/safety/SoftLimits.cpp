@@ -78,12 +78,12 @@ std::optional<SoftLimits> SoftLimits::fromJson(const QJsonObject &json, const So
         bool present = false;
         if (!readNumber(json, f.key, f.allowNegative, value, present)) {
             if (error)
-                *error =
-                    QCoreApplication::translate("lk::safety::SoftLimits", "%1 must be a %2number")
-                        .arg(QLatin1String(f.key),
-                             f.allowNegative ? QString()
-                                             : QCoreApplication::translate("lk::safety::SoftLimits",
-                                                                           "non-negative "));
+                *error = (f.allowNegative
+                              ? QCoreApplication::translate("lk::safety::SoftLimits",
+                                                            "%1 must be a number")
+                              : QCoreApplication::translate("lk::safety::SoftLimits",
+                                                            "%1 must be a non-negative number"))
+                             .arg(QLatin1String(f.key));
             return std::nullopt;
         }
         if (present)

@@ -12,6 +12,16 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::DriveInfoView</name>
+    <message numerus="yes">
+        <source>Bus report gathered: %n drive(s).</source>
+        <translation>
+            <numerusform>Bus report gathered: one drive.</numerusform>
+            <numerusform>Bus report gathered: %n drives.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::DriveTree</name>
     <message numerus="yes">
         <source>%n drive(s)</source>

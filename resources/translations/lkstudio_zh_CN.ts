@@ -174,6 +174,13 @@
     </message>
 </context>
 <context>
+    <name>lk::protocol::RequestBuilder</name>
+    <message>
+        <source>got %1</source>
+        <translation>实际为 %1</translation>
+    </message>
+</context>
+<context>
     <name>lk::record::BusReport</name>
     <message>
         <source>ID</source>
@@ -305,10 +312,6 @@
         <translation>%1 %2 dps 超过 %3 系列的最高速度 %4 dps</translation>
     </message>
     <message>
-        <source>slowest</source>
-        <translation>最慢</translation>
-    </message>
-    <message>
         <source>%1 %2 dps exceeds your speed limit of %3 dps</source>
         <translation>%1 %2 dps 超过您的速度限值 %3 dps</translation>
     </message>
@@ -356,20 +359,24 @@
         <source>speed</source>
         <translation>速度</translation>
     </message>
+    <message>
+        <source>%1 %2 dps exceeds %3 dps, the top speed of the slowest series (the drive&apos;s series is unknown)</source>
+        <translation>%1 %2 dps 超过 %3 dps，即最慢系列的最高速度（驱动的系列未知）</translation>
+    </message>
 </context>
 <context>
     <name>lk::safety::SoftLimits</name>
     <message>
-        <source>%1 must be a %2number</source>
-        <translation>%1 必须是%2数字</translation>
-    </message>
-    <message>
-        <source>non-negative </source>
-        <translation>非负</translation>
-    </message>
-    <message>
         <source>min_angle_deg must not exceed max_angle_deg</source>
         <translation>min_angle_deg 不能大于 max_angle_deg</translation>
+    </message>
+    <message>
+        <source>%1 must be a number</source>
+        <translation>%1 必须是数字</translation>
+    </message>
+    <message>
+        <source>%1 must be a non-negative number</source>
+        <translation>%1 必须是非负数字</translation>
     </message>
 </context>
 <context>
@@ -1074,14 +1081,6 @@
         <translation>此总线上没有已知的驱动：请先扫描。</translation>
     </message>
     <message>
-        <source>Bus report gathered: one drive.</source>
-        <translation>已收集总线报告：1 个驱动。</translation>
-    </message>
-    <message>
-        <source>Bus report gathered: %1 drives.</source>
-        <translation>已收集总线报告：%1 个驱动。</translation>
-    </message>
-    <message>
         <source>, low voltage</source>
         <translation>，低压</translation>
     </message>
@@ -1112,6 +1111,12 @@
     <message>
         <source>%1 °C, %2 V</source>
         <translation>%1 °C，%2 V</translation>
+    </message>
+    <message numerus="yes">
+        <source>Bus report gathered: %n drive(s).</source>
+        <translation>
+            <numerusform>已收集总线报告：%n 个驱动。</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -238,9 +238,8 @@ void DriveInfoView::onReportFinished(const record::BusReport &report)
     m_reportButton->setEnabled(session() && isConnected());
     showReport(report);
     const int n = int(report.drives.size());
-    setStatus(n == 0   ? tr("No drive is known on this bus: scan first.")
-              : n == 1 ? tr("Bus report gathered: one drive.")
-                       : tr("Bus report gathered: %1 drives.").arg(n),
+    setStatus(n == 0 ? tr("No drive is known on this bus: scan first.")
+                     : tr("Bus report gathered: %n drive(s).", nullptr, n),
               n == 0);
     emit busReportReady(report);
     if (m_saveWhenReady) {

@@ -139,8 +139,8 @@ void DriveTree::updateItem(QTreeWidgetItem *item, int id)
     QFont f = font();
     f.setBold(bad);
     item->setFont(ErrorsCol, f);
-    // The whole row turns red so that a warning cannot be missed; the text stays dark on the
-    // light background whatever the palette.
+    // The whole row turns red so that a warning cannot be missed; StatusColors picks a red
+    // background and a text colour that contrast on light and dark palettes alike.
     for (int col = 0; col < ColumnCount; ++col) {
         item->setBackground(
             col, bad ? QBrush(StatusColors::background(StatusColors::Role::Error, palette()))

@@ -44,9 +44,13 @@ EnglishTextFinder::EnglishTextFinder()
 {
     for (const char *w : kAllowed)
         m_allowed.insert(QLatin1String(w));
-    // Command names (CLI.md: "torque", "motor_off") are identifiers shared with lkctl.
-    for (const auto &info : lk::protocol::CommandTable::all())
-        m_allowed.insert(QLatin1String(info.name));
+    // Command names with an underscore ("motor_off") are identifiers shared with lkctl; the
+    // one-word ones ("torque", "speed") are also plain English words, so they are not allowed
+    // here (the traffic view's Command column is skipped as protocol data instead).
+    for (const auto &info : lk::protocol::CommandTable::all()) {
+        if (QLatin1String(info.name).contains(QLatin1Char('_')))
+            m_allowed.insert(QLatin1String(info.name));
+    }
 }
 
 QStringList EnglishTextFinder::englishWords(const QString &text) const
@@ -66,6 +70,8 @@ QStringList EnglishTextFinder::englishWords(const QString &text) const
 
 void EnglishTextFinder::check(const QString &where, const QString &text)
 {
+    if (!text.trimmed().isEmpty())
+        ++m_checked;
     const QStringList words = englishWords(text);
     if (words.isEmpty())
         return;
@@ -109,7 +115,7 @@ void EnglishTextFinder::checkWidget(QWidget *w)
         check(where, e->toPlainText());
     if (auto *e = qobject_cast<QPlainTextEdit *>(w))
         check(where, e->toPlainText() + QLatin1Char(' ') + e->placeholderText());
-    if (auto *c = qobject_cast<QComboBox *>(w)) {
+    if (auto *c = qobject_cast<QComboBox *>(w); c && !m_identifierLists.contains(w->objectName())) {
         for (int i = 0; i < c->count(); ++i)
             check(where + QStringLiteral(" item"), c->itemText(i));
     }

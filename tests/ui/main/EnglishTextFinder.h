@@ -21,10 +21,15 @@ public:
     /// Skip the cells (not the header) of table columns with this header text: columns that
     /// show protocol data as such (raw bytes, decoded field names as `lkctl decode` prints).
     void ignoreColumn(const QString &header) { m_ignoredColumns.insert(header); }
+    /// Skip the items of the combo box with this object name: a list of protocol identifiers
+    /// (the traffic filter's command names, as the Command column shows them).
+    void ignoreIdentifierList(const QString &objectName) { m_identifierLists.insert(objectName); }
     /// Check `root` and every child widget; results accumulate in findings().
     void walk(QWidget *root);
     /// "where: text [words]" per offending text, without duplicates.
     QStringList findings() const { return m_findings; }
+    /// How many non-empty texts were checked: a walk over an empty view proves nothing.
+    int checkedCount() const { return m_checked; }
 
 private:
     void check(const QString &where, const QString &text);
@@ -35,5 +40,7 @@ private:
 
     QSet<QString> m_allowed;
     QSet<QString> m_ignoredColumns;
+    QSet<QString> m_identifierLists;
     QStringList m_findings;
+    int m_checked = 0;
 };
