@@ -146,11 +146,11 @@
     </message>
     <message>
         <source>low voltage</source>
-        <translation>低压</translation>
+        <translation>低压保护</translation>
     </message>
     <message>
         <source>over temperature</source>
-        <translation>过温</translation>
+        <translation>过温保护</translation>
     </message>
     <message>
         <source>error bits 0x%1</source>
@@ -1082,11 +1082,11 @@
     </message>
     <message>
         <source>, low voltage</source>
-        <translation>，低压</translation>
+        <translation>，低压保护</translation>
     </message>
     <message>
         <source>, over temperature</source>
-        <translation>，过温</translation>
+        <translation>，过温保护</translation>
     </message>
     <message>
         <source>Save bus report</source>

@@ -65,6 +65,7 @@ ControlView::ControlView(QWidget *parent)
     left->addWidget(m_title);
     left->addWidget(buildCommandBox());
     left->addWidget(buildRunButtons());
+    applyPaletteStyles();
     left->addWidget(m_jog);
     left->addWidget(m_readout);
     left->addWidget(m_status);
@@ -122,7 +123,6 @@ QWidget *ControlView::buildRunButtons()
     m_stop = make(QStringLiteral("motorStop"), tr("Stop"),
                   tr("0x81: output off, the stored command is kept for Run"));
     m_run = make(QStringLiteral("motorRun"), tr("Run"), tr("0x88: resume after Stop"));
-    m_off->setStyleSheet(StatusColors::textStyle(StatusColors::Role::Error, palette(), true));
     auto *row = new QHBoxLayout(w);
     row->setContentsMargins(0, 0, 0, 0);
     row->addWidget(m_off);
@@ -523,6 +523,21 @@ void ControlView::keyPressEvent(QKeyEvent *event)
         return;
     }
     DriveView::keyPressEvent(event);
+}
+
+void ControlView::changeEvent(QEvent *event)
+{
+    DriveView::changeEvent(event);
+    // The palette (light/dark) changed while running: the styles derived from it follow. The
+    // sheets are set on children, so this does not loop.
+    if (event->type() == QEvent::PaletteChange)
+        applyPaletteStyles();
+}
+
+void ControlView::applyPaletteStyles()
+{
+    m_off->setStyleSheet(
+        StatusColors::textStyle(StatusColors::Role::Error, StatusColors::current(), true));
 }
 
 } // namespace lk::ui

@@ -82,10 +82,12 @@ signals:
 
 protected:
     void contextChanged(Changes changes) override;
+    void changeEvent(QEvent *event) override;
     bool eventFilter(QObject *watched, QEvent *event) override;
     void keyPressEvent(QKeyEvent *event) override;
 
 private:
+    void applyPaletteStyles();
     QWidget *buildCommandBox();
     QWidget *buildRunButtons();
     void wire();

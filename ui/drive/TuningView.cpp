@@ -81,8 +81,9 @@ void TuningView::buildUi()
     boxLayout->addWidget(accelNote);
 
     m_romWarning = banner(QStringLiteral("romWarning"), QString(), this);
-    m_mismatch = banner(QStringLiteral("mismatch"),
-                        StatusColors::boxStyle(StatusColors::Role::Error, palette()), this);
+    m_mismatch =
+        banner(QStringLiteral("mismatch"),
+               StatusColors::boxStyle(StatusColors::Role::Error, StatusColors::current()), this);
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("status"));
     m_status->setWordWrap(true);
@@ -428,9 +429,10 @@ void TuningView::refreshWarnings()
                       "loaded from ROM at power-on (unless another tool changed it).");
     }
     m_romWarning->setText(tr("RAM and ROM: %1").arg(text));
+    const QPalette pal = StatusColors::current();
     m_romWarning->setStyleSheet(m_romWarningActive
-                                    ? StatusColors::boxStyle(StatusColors::Role::Warning, palette())
-                                    : StatusColors::boxStyle(StatusColors::Role::Info, palette()));
+                                    ? StatusColors::boxStyle(StatusColors::Role::Warning, pal)
+                                    : StatusColors::boxStyle(StatusColors::Role::Info, pal));
     m_romWarning->setVisible(hasDrive());
 }
 
@@ -513,6 +515,18 @@ QString TuningView::loadParameters(const QString &path)
     setStatus(text);
     refreshEnabled();
     return QString();
+}
+
+void TuningView::changeEvent(QEvent *event)
+{
+    DriveView::changeEvent(event);
+    // The palette (light/dark) changed while running. The sheets are set on children, so
+    // this does not loop.
+    if (event->type() != QEvent::PaletteChange)
+        return;
+    m_mismatch->setStyleSheet(
+        StatusColors::boxStyle(StatusColors::Role::Error, StatusColors::current()));
+    refreshWarnings();
 }
 
 } // namespace lk::ui

@@ -68,6 +68,7 @@ signals:
 
 protected:
     void contextChanged(Changes changes) override;
+    void changeEvent(QEvent *event) override;
 
 private:
     /// What the view remembers about a drive for the session.

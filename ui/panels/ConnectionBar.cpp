@@ -215,10 +215,17 @@ void ConnectionBar::updateState()
         role = StatusColors::Role::Ok;
     else if (m_status.state == S::Disconnected)
         role = StatusColors::Role::Error;
-    const QString color = StatusColors::text(role, palette()).name();
+    const QString color = StatusColors::text(role, StatusColors::current()).name();
     m_state->setText(QStringLiteral("<span style=\"color:%1\">\u25cf</span> %2")
                          .arg(color, Format::connectionState(m_status).toHtmlEscaped()));
     m_state->setToolTip(Format::connectionDetail(m_status));
+}
+
+void ConnectionBar::changeEvent(QEvent *event)
+{
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::PaletteChange)
+        updateState(); // the state dot's colour follows a light/dark switch
 }
 
 } // namespace lk::ui

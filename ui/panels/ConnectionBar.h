@@ -65,6 +65,9 @@ signals:
     /// The set of serial ports changed (an adapter came or went).
     void portsChanged(const QList<lk::ui::PortEntry> &ports);
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
     void rebuildPortItems();
     void onConnectClicked();

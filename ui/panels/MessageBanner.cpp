@@ -20,15 +20,21 @@ constexpr int kIconPx = 20;
 MessageBanner::MessageBanner(QWidget *parent) : QFrame(parent)
 {
     setObjectName(QStringLiteral("messageBanner"));
-    setFrameShape(QFrame::StyledPanel);
-    setAutoFillBackground(true);
-    auto *layout = new QHBoxLayout(this);
+    // The tinted box is a child: a widget with its own style sheet is not told of palette
+    // changes, and the banner must hear of them to re-tint for a dark or light desktop.
+    auto *outer = new QHBoxLayout(this);
+    outer->setContentsMargins(0, 0, 0, 0);
+    m_box = new QFrame(this);
+    m_box->setObjectName(QStringLiteral("messageBox"));
+    m_box->setFrameShape(QFrame::StyledPanel);
+    outer->addWidget(m_box);
+    auto *layout = new QHBoxLayout(m_box);
     layout->setContentsMargins(8, 4, 4, 4);
-    m_icon = new QLabel(this);
-    m_label = new QLabel(this);
+    m_icon = new QLabel(m_box);
+    m_label = new QLabel(m_box);
     m_label->setWordWrap(true);
     m_label->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_close = new QToolButton(this);
+    m_close = new QToolButton(m_box);
     m_close->setAutoRaise(true);
     m_close->setText(QStringLiteral("\u2715"));
     m_close->setToolTip(tr("Hide this message"));
@@ -89,11 +95,11 @@ void MessageBanner::applyLevel()
     }
     // Tints that suit the palette: pale on a light window, deep on a dark one.
     const QPalette pal = QApplication::palette(); // not ours: the style sheet tints it
-    setStyleSheet(QStringLiteral("#messageBanner { background: %1; border: 1px solid %2; }"
-                                 " QLabel { color: %3; }")
-                      .arg(StatusColors::background(role, pal).name(),
-                           StatusColors::border(role, pal).name(),
-                           StatusColors::text(role, pal).name()));
+    m_box->setStyleSheet(QStringLiteral("#messageBox { background: %1; border: 1px solid %2; }"
+                                        " QLabel { color: %3; }")
+                             .arg(StatusColors::background(role, pal).name(),
+                                  StatusColors::border(role, pal).name(),
+                                  StatusColors::text(role, pal).name()));
     m_icon->setPixmap(ThemedIcon::get(icon).pixmap(kIconPx, kIconPx));
 }
 
@@ -101,6 +107,18 @@ void MessageBanner::updateText()
 {
     m_label->setText(m_repeats > 1 ? tr("%1 (\u00d7%2)").arg(m_lastText).arg(m_repeats)
                                    : m_lastText);
+}
+
+void MessageBanner::changeEvent(QEvent *event)
+{
+    QFrame::changeEvent(event);
+    if (event->type() == QEvent::PaletteChange)
+        applyLevel(); // light/dark tints follow (the sheet is on m_box: no loop)
+}
+
+QString MessageBanner::tintStyle() const
+{
+    return m_box->styleSheet();
 }
 
 } // namespace lk::ui

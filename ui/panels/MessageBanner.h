@@ -22,13 +22,19 @@ public:
     void showMessage(Level level, const QString &text);
     void clearMessage();
     QString text() const { return m_lastText; }
+    /// The style sheet of the tinted box (for tests of the light/dark tint).
+    QString tintStyle() const;
     Level level() const { return m_level; }
     int repeatCount() const { return m_repeats; }
+
+protected:
+    void changeEvent(QEvent *event) override;
 
 private:
     void applyLevel();
     void updateText();
 
+    QFrame *m_box = nullptr; ///< the tinted box (carries the style sheet)
     QLabel *m_icon = nullptr;
     QLabel *m_label = nullptr;
     QToolButton *m_close = nullptr;

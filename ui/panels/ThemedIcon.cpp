@@ -1,6 +1,7 @@
 #include "ThemedIcon.h"
 
 #include "StatusColors.h"
+#include "ThemedIconEngine.h"
 
 #include <QtCore/QFile>
 
@@ -8,7 +9,11 @@ namespace lk::ui {
 
 QIcon ThemedIcon::get(const QString &path)
 {
-    return get(path, StatusColors::current());
+    const QString dark = darkPath(path);
+    if (dark == path)
+        return QIcon(path);
+    // Chosen at paint time: the icon follows a palette change while the program runs.
+    return QIcon(new ThemedIconEngine(QIcon(path), QIcon(dark)));
 }
 
 QIcon ThemedIcon::get(const QString &path, const QPalette &palette)
@@ -18,7 +23,12 @@ QIcon ThemedIcon::get(const QString &path, const QPalette &palette)
 
 QString ThemedIcon::pathFor(const QString &path, const QPalette &palette)
 {
-    if (!StatusColors::isDark(palette) || !path.endsWith(QLatin1String(".svg")))
+    return StatusColors::isDark(palette) ? darkPath(path) : path;
+}
+
+QString ThemedIcon::darkPath(const QString &path)
+{
+    if (!path.endsWith(QLatin1String(".svg")))
         return path;
     QString dark = path;
     dark.insert(dark.size() - 4, QLatin1String("-dark"));

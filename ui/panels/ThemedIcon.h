@@ -10,11 +10,15 @@ namespace lk::ui {
 /// drawn in dark grey strokes come from their "-dark" twin (light strokes), when there is one.
 class ThemedIcon {
 public:
-    /// `path` is the light icon, e.g. ":/icons/export.svg".
+    /// `path` is the light icon, e.g. ":/icons/export.svg"; the icon follows the application
+    /// palette whenever it is painted (ThemedIconEngine).
     static QIcon get(const QString &path);
+    /// The variant for `palette`, fixed.
     static QIcon get(const QString &path, const QPalette &palette);
     /// The resource path get() loads for `palette`.
     static QString pathFor(const QString &path, const QPalette &palette);
+    /// The "-dark" twin of `path`, or `path` itself when it has none.
+    static QString darkPath(const QString &path);
 };
 
 } // namespace lk::ui

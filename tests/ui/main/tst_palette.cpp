@@ -1,7 +1,9 @@
 // Dark and light palettes: the shared status colours contrast with the window and base
 // colours of each, and the charts follow a palette change (dark background, light labels).
 
+#include <drive/ControlView.h>
 #include <main/ThemePalette.h>
+#include <panels/MessageBanner.h>
 #include <panels/StatusColors.h>
 #include <panels/ThemedIcon.h>
 #include <plot/StripChart.h>
@@ -10,6 +12,7 @@
 #include <QtCharts/QValueAxis>
 #include <QtTest/QtTest>
 #include <QtWidgets/QApplication>
+#include <QtWidgets/QPushButton>
 
 #include <cmath>
 
@@ -48,6 +51,7 @@ private slots:
     void chartFollowsPaletteChange();
     void darkIconTwins_data();
     void darkIconTwins();
+    void widgetsFollowLiveSwitch();
 };
 
 void tst_Palette::cleanupTestCase()
@@ -136,6 +140,35 @@ void tst_Palette::darkIconTwins()
     const QPalette p = dark ? ThemePalette::dark() : ThemePalette::light();
     QCOMPARE(lk::ui::ThemedIcon::pathFor(icon, p), expected);
     QVERIFY(!lk::ui::ThemedIcon::get(icon, p).pixmap(24, 24).isNull());
+}
+
+void tst_Palette::widgetsFollowLiveSwitch()
+{
+    // A desktop switching from light to dark while lkstudio runs: icons made before the switch,
+    // the banner's tint and the Motor Off button's red all follow, with nobody rebuilding them.
+    QVERIFY(ThemePalette::apply(QStringLiteral("light")));
+    const QIcon icon = lk::ui::ThemedIcon::get(QStringLiteral(":/icons/export.svg"));
+    const QImage lightDrawing = icon.pixmap(32, 32).toImage();
+    QWidget window; // as in the main window: children of a top-level widget
+    auto *banner = new lk::ui::MessageBanner(&window);
+    banner->showMessage(lk::ui::MessageBanner::Level::Error, QStringLiteral("x"));
+    const QString lightSheet = banner->tintStyle();
+    auto *control = new lk::ui::ControlView(&window);
+    auto *off = control->findChild<QPushButton *>(QStringLiteral("motorOff"));
+    QVERIFY(off);
+    const QString lightOff = off->styleSheet();
+
+    QVERIFY(ThemePalette::apply(QStringLiteral("dark")));
+    const QImage darkDrawing = icon.pixmap(32, 32).toImage();
+    QVERIFY(darkDrawing != lightDrawing);
+    QCOMPARE(darkDrawing,
+             QIcon(QStringLiteral(":/icons/export-dark.svg")).pixmap(32, 32).toImage());
+    // The change reaches widgets as posted events: wait for them.
+    QTRY_VERIFY(banner->tintStyle() != lightSheet);
+    QVERIFY(banner->tintStyle().contains(
+        StatusColors::background(Role::Error, ThemePalette::dark()).name()));
+    QTRY_VERIFY(off->styleSheet() != lightOff);
+    QCOMPARE(off->styleSheet(), StatusColors::textStyle(Role::Error, ThemePalette::dark(), true));
 }
 
 QTEST_MAIN(tst_Palette)
