@@ -94,7 +94,7 @@ void BusSession::join()
     QMetaObject::invokeMethod(
         w,
         [w] {
-            w->shutdown(QCoreApplication::translate("lk::bus::BusSession", "session closed"));
+            w->shutdown(tr("session closed"));
             QThread::currentThread()->quit();
         },
         Qt::QueuedConnection);
@@ -118,7 +118,7 @@ void BusSession::close()
     ++m_generation;
     if (m_connection.state != transport::Transport::State::Closed) {
         m_connection.state = transport::Transport::State::Closed;
-        m_connection.reason = QCoreApplication::translate("lk::bus::BusSession", "session closed");
+        m_connection.reason = tr("session closed");
         emit connectionChanged(m_connection);
     }
 }
@@ -148,7 +148,7 @@ quint64 BusSession::send(const protocol::Request &request, Priority priority, in
         r.request = request;
         r.priority = priority;
         r.status = RequestStatus::Disconnected;
-        r.reason = QCoreApplication::translate("lk::bus::BusSession", "the bus is not open");
+        r.reason = tr("the bus is not open");
         // Queued, so that the caller holds the ticket before the result arrives.
         QMetaObject::invokeMethod(
             this, [this, r] { emit requestCompleted(r); }, Qt::QueuedConnection);
@@ -181,7 +181,7 @@ void BusSession::scan(const ScanOptions &options)
 {
     if (!m_worker) {
         ScanSummary s;
-        s.error = QCoreApplication::translate("lk::bus::BusSession", "the bus is not open");
+        s.error = tr("the bus is not open");
         QMetaObject::invokeMethod(
             this, [this, s] { emit scanFinished(s); }, Qt::QueuedConnection);
         return;

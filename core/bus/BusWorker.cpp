@@ -7,7 +7,6 @@
 
 #include <protocol/Checksum.h>
 
-#include <QtCore/QCoreApplication>
 #include <QtCore/QMetaObject>
 
 #include <algorithm>
@@ -43,10 +42,10 @@ BusWorker::BusWorker(TransportFactory factory, int baud, const BusConfig &config
     m_replyTimer.setTimerType(Qt::PreciseTimer);
     m_pollTimer.setSingleShot(true);
     m_pollTimer.setTimerType(Qt::PreciseTimer);
-    m_telemetryTimer.setSingleShot(true);
+    m_telemetry.setRateHz(config.telemetryHz);
     connect(&m_replyTimer, &QTimer::timeout, this, &BusWorker::onTimeout);
     connect(&m_pollTimer, &QTimer::timeout, this, &BusWorker::pumpNow);
-    connect(&m_telemetryTimer, &QTimer::timeout, this, &BusWorker::flushTelemetry);
+    connect(&m_telemetry, &TelemetryBatcher::batchReady, this, &BusWorker::telemetryReceived);
     connect(&m_statsTimer, &QTimer::timeout, this, &BusWorker::emitStatistics);
     connect(&m_trafficTimer, &QTimer::timeout, this, &BusWorker::flushTraffic);
     m_poller.setSeriesLookup([this](int id) { return seriesOf(id); });
@@ -55,7 +54,7 @@ BusWorker::BusWorker(TransportFactory factory, int baud, const BusConfig &config
 
 BusWorker::~BusWorker()
 {
-    shutdown(QCoreApplication::translate("lk::bus::BusWorker", "bus closed"));
+    shutdown(tr("bus closed"));
 }
 
 void BusWorker::start()
@@ -89,8 +88,7 @@ void BusWorker::dropTransport()
 bool BusWorker::openTransport()
 {
     if (!m_transport) {
-        m_lastError = QCoreApplication::translate(
-            "lk::bus::BusWorker", "No transport: the transport factory returned nothing.");
+        m_lastError = tr("No transport: the transport factory returned nothing.");
         reportConnection(m_lastError);
         return false;
     }
@@ -117,9 +115,7 @@ bool BusWorker::reopenAt(int baud)
 {
     if (m_shutDown)
         return false;
-    abortInflight(
-        RequestStatus::Cancelled,
-        QCoreApplication::translate("lk::bus::BusWorker", "the port was reopened at another baud"));
+    abortInflight(RequestStatus::Cancelled, tr("the port was reopened at another baud"));
     m_matcher.reset();
     m_recentLatency.clear(); // another baud, other latencies
     m_baud = baud;
@@ -137,10 +133,9 @@ void BusWorker::shutdown(const QString &reason)
     m_poller.clear();
     failAll(RequestStatus::Cancelled, reason);
     dropTransport();
-    for (QTimer *t :
-         {&m_replyTimer, &m_pollTimer, &m_telemetryTimer, &m_statsTimer, &m_trafficTimer})
+    for (QTimer *t : {&m_replyTimer, &m_pollTimer, &m_statsTimer, &m_trafficTimer})
         t->stop();
-    flushTelemetry();
+    m_telemetry.flush();
     m_reported.state = Transport::State::Closed;
     m_reported.reason = reason;
     emit connectionChanged(m_reported);
@@ -183,9 +178,7 @@ void BusWorker::onTransportState(Transport::State state)
     }
     const QString reason =
         m_lastError.isEmpty()
-            ? (state == Transport::State::Closed
-                   ? QCoreApplication::translate("lk::bus::BusWorker", "closed")
-                   : QCoreApplication::translate("lk::bus::BusWorker", "disconnected"))
+            ? (state == Transport::State::Closed ? tr("closed") : tr("disconnected"))
             : m_lastError;
     if (m_scanner && m_scanner->isRunning() && !m_scanner->isReopening())
         m_scanner->abort(reason);
@@ -206,10 +199,7 @@ void BusWorker::reportConnection(const QString &reason)
         return;
     m_reported = s;
     recordTraffic(TrafficEvent::Kind::Note, {}, 0, 0,
-                  QStringLiteral("%1: %2").arg(
-                      s.description, s.isOpen()
-                                         ? QCoreApplication::translate("lk::bus::BusWorker", "open")
-                                         : s.reason));
+                  QStringLiteral("%1: %2").arg(s.description, s.isOpen() ? tr("open") : s.reason));
     emit connectionChanged(s);
 }
 
@@ -217,6 +207,7 @@ void BusWorker::setConfig(const BusConfig &config)
 {
     m_config = config;
     m_timeout.setConfig(config);
+    m_telemetry.setRateHz(config.telemetryHz);
     m_matcher.setLocalEcho(config.localEcho);
     if (m_statsTimer.isActive())
         m_statsTimer.setInterval(static_cast<int>(1000.0 / std::max(0.1, config.statisticsHz)));
@@ -248,10 +239,7 @@ void BusWorker::submit(BusRequest request, Completion done)
     p.req = request;
     p.done = std::move(done);
     if (m_shutDown || !isOpen()) {
-        const QString why =
-            m_lastError.isEmpty()
-                ? QCoreApplication::translate("lk::bus::BusWorker", "the bus is not open")
-                : m_lastError;
+        const QString why = m_lastError.isEmpty() ? tr("the bus is not open") : m_lastError;
         complete(std::move(p), RequestStatus::Disconnected, std::nullopt, why, 0);
         return;
     }
@@ -353,9 +341,7 @@ void BusWorker::onTimeout()
     m_matcher.timedOut();
     recordTraffic(TrafficEvent::Kind::Timeout, {}, r.id, static_cast<quint8>(r.command));
     failAttempt(RequestStatus::Timeout,
-                QCoreApplication::translate("lk::bus::BusWorker",
-                                            "no reply to %1 after %n attempt(s)", nullptr,
-                                            m_inflight->attempts)
+                tr("no reply to %1 after %n attempt(s)", nullptr, m_inflight->attempts)
                     .arg(commandText(r)));
 }
 
@@ -451,10 +437,8 @@ void BusWorker::onParseEvent(const protocol::ParseEvent &ev)
     case V::CorruptReply:
         // Retry now rather than wait for the timeout.
         m_stats.parseFault(ev);
-        failAttempt(RequestStatus::Error,
-                    QCoreApplication::translate("lk::bus::BusWorker",
-                                                "corrupt reply to %1 (bad data checksum)")
-                        .arg(commandText(m_inflight->req.request)));
+        failAttempt(RequestStatus::Error, tr("corrupt reply to %1 (bad data checksum)")
+                                              .arg(commandText(m_inflight->req.request)));
         return;
     case V::LocalEcho:
         m_stats.localEcho();
@@ -462,8 +446,7 @@ void BusWorker::onParseEvent(const protocol::ParseEvent &ev)
     case V::Undecodable:
         m_stats.undecodable(f.id);
         failAttempt(RequestStatus::Error,
-                    QCoreApplication::translate("lk::bus::BusWorker", "undecodable reply to %1")
-                        .arg(commandText(m_inflight->req.request)));
+                    tr("undecodable reply to %1").arg(commandText(m_inflight->req.request)));
         return;
     case V::LateReply:
         // The link is slower than the margin assumed: let the margin learn from it.
@@ -499,21 +482,8 @@ void BusWorker::noteReply(const protocol::Reply &reply, double time)
 {
     if (m_motors.noteSeen(reply.id))
         emit knownMotorsChanged(m_motors.all());
-    std::optional<TelemetrySample> s = TelemetrySample::fromReply(reply, time);
-    if (!s)
-        return;
-    m_telemetry.append(*s);
-    if (!m_telemetryTimer.isActive())
-        m_telemetryTimer.start(static_cast<int>(1000.0 / std::max(1.0, m_config.telemetryHz)));
-}
-
-void BusWorker::flushTelemetry()
-{
-    if (m_telemetry.isEmpty())
-        return;
-    TelemetryBatch batch;
-    batch.swap(m_telemetry);
-    emit telemetryReceived(batch);
+    if (std::optional<TelemetrySample> s = TelemetrySample::fromReply(reply, time))
+        m_telemetry.add(*s);
 }
 
 void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command halt)
@@ -529,8 +499,7 @@ void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command h
         r.firstTimeoutS = probeTimeoutS(halt);
     qCInfo(lcBus) << "emergency" << CommandTable::name(halt) << "to" << offs.size() << "ID(s)";
     cancelQueued([](const Pending &p) { return movesMotor(p.req.request.command); },
-                 RequestStatus::Cancelled,
-                 QCoreApplication::translate("lk::bus::BusWorker", "cancelled by emergency stop"));
+                 RequestStatus::Cancelled, tr("cancelled by emergency stop"));
     if (m_inflight && movesMotor(m_inflight->req.request.command))
         m_inflight->noRetry = true; // it may finish, but it is not sent again
     for (const BusRequest &r : offs) {
@@ -561,8 +530,7 @@ void BusWorker::cancelScan()
     if (m_scanner)
         m_scanner->cancel();
     cancelQueued([](const Pending &p) { return p.req.origin == RequestOrigin::Scan; },
-                 RequestStatus::Cancelled,
-                 QCoreApplication::translate("lk::bus::BusWorker", "scan cancelled"));
+                 RequestStatus::Cancelled, tr("scan cancelled"));
 }
 
 bool BusWorker::isScanning() const

@@ -16,6 +16,7 @@
 #include "RequestResult.h"
 #include "ScanTypes.h"
 #include "StatisticsCollector.h"
+#include "TelemetryBatcher.h"
 #include "TelemetrySample.h"
 #include "TrafficEvent.h"
 #include "TrafficRecorder.h"
@@ -154,7 +155,6 @@ private:
     void failAll(RequestStatus status, const QString &reason);
     void onPollDone(const RequestResult &r);
     void noteReply(const protocol::Reply &reply, double time);
-    void flushTelemetry();
     void emitStatistics();
     void flushTraffic();
     void recordTraffic(TrafficEvent::Kind kind, const QByteArray &bytes, int id, quint8 command,
@@ -191,13 +191,12 @@ private:
     bool m_pollSuspended = false;
     Scanner *m_scanner = nullptr;
     MotorRegistry m_motors;
-    TelemetryBatch m_telemetry;
+    TelemetryBatcher m_telemetry{this};
     ConnectionStatus m_reported;
     QString m_lastError;
 
     QTimer m_replyTimer{this}; // children: they move to the bus thread with the worker
     QTimer m_pollTimer{this};
-    QTimer m_telemetryTimer{this};
     QTimer m_statsTimer{this};
     QTimer m_trafficTimer{this};
 };

@@ -7,7 +7,6 @@
 #include <motor/ModelNameInfo.h>
 #include <protocol/Checksum.h>
 
-#include <QtCore/QCoreApplication>
 #include <QtCore/QMap>
 #include <QtCore/QMetaObject>
 
@@ -53,9 +52,7 @@ void Scanner::start(const ScanOptions &options)
     if (options.firstId < protocol::kMinId || options.lastId > protocol::kMaxId ||
         options.firstId > options.lastId) {
         stop(false,
-             QCoreApplication::translate("lk::bus::Scanner", "scan range %1..%2 is outside 1..32")
-                 .arg(options.firstId)
-                 .arg(options.lastId));
+             tr("scan range %1..%2 is outside 1..32").arg(options.firstId).arg(options.lastId));
         return;
     }
     if (options.sweepBauds) {
@@ -69,7 +66,7 @@ void Scanner::start(const ScanOptions &options)
         m_bauds.append(m_originalBaud);
     }
     if (m_bauds.isEmpty()) {
-        stop(false, QCoreApplication::translate("lk::bus::Scanner", "no valid baud to scan"));
+        stop(false, tr("no valid baud to scan"));
         return;
     }
     m_total = m_bauds.size() * (options.lastId - options.firstId + 1);
