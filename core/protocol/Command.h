@@ -3,12 +3,15 @@
 #include <QtCore/QString>
 #include <QtCore/QtGlobal>
 
+#include "Series.h"
+
 #include <array>
 #include <optional>
 
 namespace lk::protocol {
 
-/// The 28 commands of the LK RS485 protocol V2.3, by their wire code.
+/// The commands of the LK RS485 protocol, both generations (V2.3 and V2.35), by wire code.
+/// CommandInfo::generations says which generation has each one.
 enum class Command : quint8 {
     ReadModel = 0x12,
     WriteZeroRom = 0x19,
@@ -17,12 +20,17 @@ enum class Command : quint8 {
     WritePidRom = 0x32,
     ReadAccel = 0x33,
     WriteAccelRam = 0x34,
+    ReadParam = 0x40,     ///< V2.35
+    WriteParamRam = 0x42, ///< V2.35
+    WriteParamRom = 0x44, ///< V2.35
     MotorOff = 0x80,
     MotorStop = 0x81,
     MotorRun = 0x88,
+    Brake = 0x8C, ///< V2.35
     ReadEncoder = 0x90,
     WriteEncoderOffset = 0x91,
     ReadMultiTurn = 0x92,
+    ClearTurnCount = 0x93, ///< V2.35
     ReadSingleTurn = 0x94,
     ClearAngle = 0x95,
     ReadState1 = 0x9A,
@@ -40,6 +48,13 @@ enum class Command : quint8 {
     IncrementPositionLimited = 0xA8,
 };
 
+/// Which protocol generations have a command (a bit set of Generation).
+enum GenerationMask : quint8 {
+    kOnV23 = 0x1,
+    kOnV235 = 0x2,
+    kOnBoth = kOnV23 | kOnV235,
+};
+
 /// Static facts about one command: canonical name (CLI.md) and the data lengths it allows.
 struct CommandInfo {
     Command command;
@@ -49,13 +64,15 @@ struct CommandInfo {
     qint16 altReplyLength;   ///< a second accepted reply LEN (0x12: 58, 0x19: 2), or -1
     bool replyEchoesRequest; ///< the reply repeats the request byte for byte
     bool movesMotor;         ///< sending it can make the shaft move (0xA0..0xA8, 0x88)
-    bool writesFlash;        ///< writes the drive's ROM (0x32, 0x91, 0x19): ask first, never loop
+    bool writesFlash;   ///< writes the drive's ROM (0x32, 0x91, 0x19, 0x44): ask first, never loop
+    quint8 generations; ///< GenerationMask: V2.3-only 0x30..0x34 and 0x91, V2.35-only
+                        ///< 0x40..0x44, 0x8C, 0x93 (V2.35.md section 3)
 };
 
 /// The command table: lookup by code or by name.
 class CommandTable {
 public:
-    static constexpr int kCount = 28;
+    static constexpr int kCount = 33;
     static const std::array<CommandInfo, kCount> &all();
     static const CommandInfo *find(quint8 code);
     /// Facts about a command; a value outside the table (a cast) gets an entry named
@@ -65,6 +82,8 @@ public:
     static std::optional<Command> fromName(const QString &name);
     static QString name(Command command);
     static QString codeText(quint8 code); ///< "0xA2"
+    /// Whether a drive of `generation` has `command` (nothing it lacks is ever sent to it).
+    static bool availableOn(Command command, Generation generation);
 };
 
 } // namespace lk::protocol

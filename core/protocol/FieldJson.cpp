@@ -1,5 +1,6 @@
 #include "FieldJson.h"
 
+#include "ErrorFlags.h"
 #include "RequestBuilder.h"
 
 #include <QtCore/QHash>
@@ -59,7 +60,70 @@ QJsonObject angleFields(qint64 angleRaw, const std::optional<quint32> &maxSpeedR
     return o;
 }
 
+QJsonObject paramHead(quint8 paramId)
+{
+    const ParamInfo *info = ParamTable::find(paramId);
+    return {{QStringLiteral("param"),
+             info ? QString::fromLatin1(info->name) : CommandTable::codeText(paramId)},
+            {QStringLiteral("param_id"), integer(paramId)}};
+}
+
+// A parameter's value under the field names of V2.3 where they exist (angle_kp ... iq_ki,
+// plus *_kd), so scripts read V2.35 gains like V2.3 ones.
+QJsonObject parameterFields(const ParameterValue &v)
+{
+    QJsonObject o = paramHead(v.paramId);
+    const std::optional<ParamId> id = v.id();
+    if (!id) {
+        QByteArray raw;
+        for (quint8 b : v.bytes)
+            raw.append(char(b));
+        o.insert(QStringLiteral("value_bytes"), FieldJson::hexText(raw));
+        return o;
+    }
+    switch (ParamTable::info(*id).layout) {
+    case ParamLayout::Pid: {
+        const QString loop = ParamTable::name(*id).chopped(4);
+        o.insert(loop + QLatin1String("_kp"), integer(v.pidKp()));
+        o.insert(loop + QLatin1String("_ki"), integer(v.pidKi()));
+        o.insert(loop + QLatin1String("_kd"), integer(v.pidKd()));
+        break;
+    }
+    case ParamLayout::HalfInt64:
+        o.insert(QStringLiteral("max_angle_half_raw"), integer(v.asUInt32()));
+        break;
+    case ParamLayout::Int16:
+        o.insert(*id == ParamId::MaxTorqueCurrent ? QStringLiteral("max_torque")
+                                                  : QStringLiteral("current_ramp"),
+                 integer(v.asInt16()));
+        break;
+    case ParamLayout::Int32:
+        if (*id == ParamId::MaxSpeed) {
+            o.insert(QStringLiteral("max_speed_dps"), centi(v.asInt32()));
+            o.insert(QStringLiteral("max_speed_raw"), integer(v.asInt32()));
+        } else {
+            o.insert(QStringLiteral("speed_ramp_dps2"), integer(v.asInt32()));
+        }
+        break;
+    }
+    return o;
+}
+
+QString brakeActionName(BrakeAction a)
+{
+    switch (a) {
+    case BrakeAction::Engage:
+        return QStringLiteral("engage");
+    case BrakeAction::Release:
+        return QStringLiteral("release");
+    case BrakeAction::Read:
+        return QStringLiteral("read");
+    }
+    return QStringLiteral("0x%1").arg(quint8(a), 2, 16, QLatin1Char('0'));
+}
+
 struct RequestFieldVisitor {
+    DecodeContext context;
     QJsonObject operator()(const NoPayload &) const { return {}; }
     QJsonObject operator()(const PidGains &g) const { return pidFields(g); }
     QJsonObject operator()(const Acceleration &a) const
@@ -76,8 +140,12 @@ struct RequestFieldVisitor {
     }
     QJsonObject operator()(const TorqueCommand &c) const
     {
-        // 32 A per 2000 LSB: the integer product first, then one correctly rounded division.
-        return {{QStringLiteral("iq_a"), QJsonValue(c.iqRaw * 32.0 / 2000.0)},
+        // V2.3: 32 A per 2000 LSB, the integer product first, then one correctly rounded
+        // division. V2.35: the drive's reply scale (a power of two, exact).
+        const double a = context.generation == Generation::V2_3
+                             ? c.iqRaw * 32.0 / 2000.0
+                             : c.iqRaw * iqCommandAmpsPerLsb(context);
+        return {{QStringLiteral("iq_a"), QJsonValue(a)},
                 {QStringLiteral("iq_raw"), integer(c.iqRaw)}};
     }
     QJsonObject operator()(const SpeedCommand &c) const
@@ -101,6 +169,12 @@ struct RequestFieldVisitor {
     {
         return angleFields(c.angleRaw, c.maxSpeedRaw);
     }
+    QJsonObject operator()(const ParamRead &p) const { return paramHead(p.paramId); }
+    QJsonObject operator()(const ParameterValue &v) const { return parameterFields(v); }
+    QJsonObject operator()(const BrakeCommand &b) const
+    {
+        return {{QStringLiteral("action"), brakeActionName(b.action)}};
+    }
 };
 
 QJsonObject modelFields(const ModelInfo &m)
@@ -123,14 +197,14 @@ QJsonObject modelFields(const ModelInfo &m)
 struct ReplyFieldVisitor {
     QJsonObject operator()(const Acknowledged &) const { return {}; }
     QJsonObject operator()(const PidGains &g) const { return pidFields(g); }
-    QJsonObject operator()(const Acceleration &a) const { return RequestFieldVisitor{}(a); }
+    QJsonObject operator()(const Acceleration &a) const { return RequestFieldVisitor{{}}(a); }
     QJsonObject operator()(const EncoderReading &e) const
     {
         return {{QStringLiteral("encoder"), integer(e.encoder)},
                 {QStringLiteral("encoder_raw"), integer(e.encoderRaw)},
                 {QStringLiteral("encoder_offset"), integer(e.encoderOffset)}};
     }
-    QJsonObject operator()(const EncoderOffset &e) const { return RequestFieldVisitor{}(e); }
+    QJsonObject operator()(const EncoderOffset &e) const { return RequestFieldVisitor{{}}(e); }
     QJsonObject operator()(const ZeroWritten &z) const
     {
         if (!z.encoderOffset)
@@ -141,12 +215,24 @@ struct ReplyFieldVisitor {
     QJsonObject operator()(const SingleTurnAngle &a) const { return angleFields(a.raw, {}); }
     QJsonObject operator()(const State1 &s) const
     {
-        return {{QStringLiteral("temperature_c"), integer(s.temperatureC)},
-                {QStringLiteral("voltage_v"), QJsonValue(s.voltageRaw / 10.0)},
-                {QStringLiteral("voltage_raw"), integer(s.voltageRaw)},
-                {QStringLiteral("error_state"), integer(s.errorState)},
-                {QStringLiteral("low_voltage"), s.lowVoltage()},
-                {QStringLiteral("over_temperature"), s.overTemperature()}};
+        // Every flag the drive's generation names, true or false (V2.35.md section 5).
+        QJsonObject o{{QStringLiteral("temperature_c"), integer(s.temperatureC)},
+                      {QStringLiteral("error_state"), integer(s.errorState)}};
+        for (const ErrorFlag &f : ErrorFlags::of(s.generation))
+            o.insert(QLatin1String(f.key), bool(s.errorState & (1u << f.bit)));
+        if (s.generation == Generation::V2_3) {
+            o.insert(QStringLiteral("voltage_v"), QJsonValue(s.voltageRaw / 10.0));
+            o.insert(QStringLiteral("voltage_raw"), integer(s.voltageRaw));
+            return o;
+        }
+        o.insert(QStringLiteral("voltage_v"), QJsonValue(qint16(s.voltageRaw) / 100.0));
+        o.insert(QStringLiteral("voltage_raw"), integer(qint16(s.voltageRaw)));
+        o.insert(QStringLiteral("bus_current_a"), QJsonValue(s.busCurrentRaw / 100.0));
+        o.insert(QStringLiteral("bus_current_raw"), integer(s.busCurrentRaw));
+        const std::optional<bool> on = s.motorOn();
+        o.insert(QStringLiteral("motor_on"), on ? QJsonValue(*on) : QJsonValue());
+        o.insert(QStringLiteral("motor_state_raw"), integer(s.motorStateRaw));
+        return o;
     }
     QJsonObject operator()(const State2 &s) const
     {
@@ -172,6 +258,19 @@ struct ReplyFieldVisitor {
                 {QStringLiteral("ic_raw"), integer(s.icRaw)}};
     }
     QJsonObject operator()(const ModelInfo &m) const { return modelFields(m); }
+    QJsonObject operator()(const ParameterValue &v) const { return parameterFields(v); }
+    QJsonObject operator()(const ParamWriteResult &r) const
+    {
+        QJsonObject o = paramHead(r.paramId);
+        o.insert(QStringLiteral("success"), r.succeeded());
+        o.insert(QStringLiteral("success_flag"), integer(r.flag));
+        return o;
+    }
+    QJsonObject operator()(const BrakeState &b) const
+    {
+        return {{QStringLiteral("brake_released"), b.released()},
+                {QStringLiteral("brake_raw"), integer(b.raw)}};
+    }
 };
 
 // ---- JSON -> one line -----------------------------------------------------------------------
@@ -183,10 +282,16 @@ int keyRank(const QString &key)
     static const QStringList order =
         QStringLiteral(
             "direction command code id fields error bytes "
-            "temperature_c voltage_v voltage_raw error_state low_voltage over_temperature "
+            "temperature_c voltage_v voltage_raw bus_current_a bus_current_raw motor_on "
+            "motor_state_raw error_state low_voltage over_voltage driver_over_temperature "
+            "over_temperature motor_over_temperature over_current short_circuit stall "
+            "input_timeout "
             "iq_a iq_raw power speed_dps speed_raw ia_a ia_raw ib_a ib_raw ic_a ic_raw "
-            "encoder encoder_raw encoder_offset angle_deg angle_raw max_speed_dps max_speed_raw "
-            "angle_kp angle_ki speed_kp speed_ki iq_kp iq_ki accel_dps2 "
+            "encoder encoder_raw encoder_offset action param param_id "
+            "angle_deg angle_raw max_speed_dps max_speed_raw "
+            "angle_kp angle_ki angle_kd speed_kp speed_ki speed_kd iq_kp iq_ki iq_kd accel_dps2 "
+            "max_torque max_angle_half_raw current_ramp speed_ramp_dps2 value_bytes "
+            "success success_flag brake_released brake_raw "
             "driver_name motor_name hardware_version hardware_version_raw "
             "firmware_version firmware_version_raw motor_id motor_version_raw")
             .split(QLatin1Char(' '));
@@ -205,7 +310,7 @@ bool isRealField(const QString &key)
 {
     static const QStringList reals =
         QStringLiteral("speed_dps angle_deg max_speed_dps iq_a ia_a ib_a ic_a voltage_v "
-                       "hardware_version firmware_version")
+                       "bus_current_a hardware_version firmware_version")
             .split(QLatin1Char(' '));
     return reals.contains(key);
 }
@@ -332,10 +437,19 @@ FieldSpec multiAngleSpec()
     return {QStringLiteral("angle_deg"), FieldKind::Number, QStringLiteral("-9e16..9e16 deg")};
 }
 
+FieldSpec paramSpec()
+{
+    QStringList names;
+    for (const ParamInfo &p : ParamTable::all())
+        names << QString::fromLatin1(p.name);
+    return {QStringLiteral("param"), FieldKind::Choice, names.join(QLatin1Char('|'))};
+}
+
 /// Typed values of one request, parsed from text and checked for syntax (not for range).
 struct ParsedFields {
     QMap<QString, qint64> integers;
     QMap<QString, double> numbers;
+    QMap<QString, QString> choices;
     SpinDirection direction = SpinDirection::Clockwise;
 };
 
@@ -389,6 +503,13 @@ std::optional<FieldBuildResult> parseField(const FieldSpec &spec, const QString 
         out.numbers.insert(spec.name, d);
         return std::nullopt;
     }
+    case FieldKind::Choice: {
+        const QString word = text.toLower();
+        if (!spec.range.split(QLatin1Char('|')).contains(word))
+            return failField(spec, QStringLiteral("got '%1'").arg(text));
+        out.choices.insert(spec.name, word);
+        return std::nullopt;
+    }
     case FieldKind::Direction: {
         const QString d = text.toLower();
         if (d != QLatin1String("cw") && d != QLatin1String("ccw"))
@@ -401,12 +522,25 @@ std::optional<FieldBuildResult> parseField(const FieldSpec &spec, const QString 
     return std::nullopt;
 }
 
+/// The fields of `command` given these values: a parameter write's value fields depend on
+/// which parameter it names.
+QList<FieldSpec> specsFor(Command command, const FieldValues &values)
+{
+    QList<FieldSpec> specs = FieldJson::requestFieldSpecs(command);
+    specs.prepend(FieldJson::idSpec());
+    if (command == Command::WriteParamRam || command == Command::WriteParamRom) {
+        const auto param = ParamTable::fromName(values.value(QStringLiteral("param")).toLower());
+        if (param)
+            specs.append(FieldJson::paramFieldSpecs(*param));
+    }
+    return specs;
+}
+
 /// Parse every field a command takes (and the id); refuse unknown and missing ones.
 std::optional<FieldBuildResult> parseAll(Command command, const FieldValues &values,
                                          ParsedFields &out)
 {
-    QList<FieldSpec> specs = FieldJson::requestFieldSpecs(command);
-    specs.prepend(FieldJson::idSpec());
+    const QList<FieldSpec> specs = specsFor(command, values);
     QStringList names;
     for (const FieldSpec &s : specs)
         names.append(s.name);
@@ -426,6 +560,24 @@ std::optional<FieldBuildResult> parseAll(Command command, const FieldValues &val
             return failed;
     }
     return std::nullopt;
+}
+
+BrakeAction brakeAction(const QString &word)
+{
+    if (word == QLatin1String("engage"))
+        return BrakeAction::Engage;
+    return word == QLatin1String("release") ? BrakeAction::Release : BrakeAction::Read;
+}
+
+BuildResult buildParamWrite(int id, const ParsedFields &p, bool rom)
+{
+    const ParamId param = *ParamTable::fromName(p.choices.value(QStringLiteral("param")));
+    const QList<FieldSpec> specs = FieldJson::paramFieldSpecs(param);
+    if (ParamTable::info(param).layout == ParamLayout::Pid)
+        return build::writeParamPid(id, param, p.integers.value(specs[0].name),
+                                    p.integers.value(specs[1].name),
+                                    p.integers.value(specs[2].name), rom);
+    return build::writeParam(id, param, p.numbers.value(specs[0].name), rom);
 }
 
 BuildResult buildParsed(Command command, int id, const ParsedFields &p)
@@ -460,6 +612,14 @@ BuildResult buildParsed(Command command, int id, const ParsedFields &p)
         return build::incrementPosition(id, num("angle_deg"));
     case Command::IncrementPositionLimited:
         return build::incrementPosition(id, num("angle_deg"), num("max_speed_dps"));
+    case Command::ReadParam:
+        return build::readParam(id,
+                                *ParamTable::fromName(p.choices.value(QStringLiteral("param"))));
+    case Command::WriteParamRam:
+    case Command::WriteParamRom:
+        return buildParamWrite(id, p, command == Command::WriteParamRom);
+    case Command::Brake:
+        return build::brake(id, brakeAction(p.choices.value(QStringLiteral("action"))));
     default:
         return build::plain(command, id);
     }
@@ -467,11 +627,10 @@ BuildResult buildParsed(Command command, int id, const ParsedFields &p)
 
 /// The builders take int for id and PID gains: a value beyond int is refused here, with the
 /// field's own range, rather than being narrowed into range by a cast.
-std::optional<FieldBuildResult> checkIntArguments(Command command, const ParsedFields &p)
+std::optional<FieldBuildResult> checkIntArguments(Command command, const FieldValues &values,
+                                                  const ParsedFields &p)
 {
-    QList<FieldSpec> specs = FieldJson::requestFieldSpecs(command);
-    specs.prepend(FieldJson::idSpec());
-    for (const FieldSpec &s : specs) {
+    for (const FieldSpec &s : specsFor(command, values)) {
         if (s.kind != FieldKind::Integer)
             continue;
         const qint64 v = p.integers.value(s.name);
@@ -485,9 +644,9 @@ std::optional<FieldBuildResult> checkIntArguments(Command command, const ParsedF
 
 // ---- FieldJson ------------------------------------------------------------------------------
 
-QJsonObject FieldJson::requestFields(const Request &request)
+QJsonObject FieldJson::requestFields(const Request &request, const DecodeContext &context)
 {
-    return std::visit(RequestFieldVisitor{}, request.payload);
+    return std::visit(RequestFieldVisitor{context}, request.payload);
 }
 
 QJsonObject FieldJson::replyFields(const Reply &reply)
@@ -509,7 +668,7 @@ std::optional<QJsonObject> FieldJson::frameObject(const Frame &frame, FrameDirec
         const RequestDecodeResult r = decodeRequest(frame);
         if (!r.request)
             return std::nullopt;
-        fields = requestFields(*r.request);
+        fields = requestFields(*r.request, context);
     }
     return QJsonObject{{QStringLiteral("direction"), QLatin1String(directionName(direction))},
                        {QStringLiteral("command"), CommandTable::name(Command(frame.command))},
@@ -570,7 +729,7 @@ QList<FieldSpec> FieldJson::requestFieldSpecs(Command command)
     case Command::WriteEncoderOffset:
         return {{QStringLiteral("encoder_offset"), FieldKind::Integer, QStringLiteral("0..65535")}};
     case Command::OpenLoop:
-        return {{QStringLiteral("power"), FieldKind::Integer, QStringLiteral("-1000..1000")}};
+        return {{QStringLiteral("power"), FieldKind::Integer, QStringLiteral("-850..850")}};
     case Command::Torque:
         return {{QStringLiteral("iq_a"), FieldKind::Number, QStringLiteral("-32..32 A")}};
     case Command::Speed:
@@ -588,9 +747,46 @@ QList<FieldSpec> FieldJson::requestFieldSpecs(Command command)
         return {incrementSpec()};
     case Command::IncrementPositionLimited:
         return {incrementSpec(), maxSpeedSpec()};
+    case Command::ReadParam:
+    case Command::WriteParamRam:
+    case Command::WriteParamRom:
+        return {paramSpec()};
+    case Command::Brake:
+        return {
+            {QStringLiteral("action"), FieldKind::Choice, QStringLiteral("engage|release|read")}};
     default:
         return {};
     }
+}
+
+QList<FieldSpec> FieldJson::paramFieldSpecs(ParamId param)
+{
+    switch (param) {
+    case ParamId::AnglePid:
+    case ParamId::SpeedPid:
+    case ParamId::CurrentPid: {
+        const QString loop = ParamTable::name(param).chopped(4);
+        QList<FieldSpec> specs;
+        for (const char *k : {"_kp", "_ki", "_kd"})
+            specs.append({loop + QLatin1String(k), FieldKind::Integer, QStringLiteral("0..65535")});
+        return specs;
+    }
+    case ParamId::MaxTorqueCurrent:
+        return {{QStringLiteral("max_torque"), FieldKind::Number, QStringLiteral("0..2048")}};
+    case ParamId::MaxSpeed:
+        return {{QStringLiteral("max_speed_dps"), FieldKind::Number,
+                 QStringLiteral("0..21474836.47 dps")}};
+    case ParamId::MaxAngleLow:
+    case ParamId::MaxAngleHigh:
+        return {
+            {QStringLiteral("max_angle_deg"), FieldKind::Number, QStringLiteral("0..9e16 deg")}};
+    case ParamId::CurrentRamp:
+        return {{QStringLiteral("current_ramp"), FieldKind::Number, QStringLiteral("0..32767")}};
+    case ParamId::SpeedRamp:
+        return {{QStringLiteral("speed_ramp_dps2"), FieldKind::Number,
+                 QStringLiteral("0..2147483647 dps/s")}};
+    }
+    return {};
 }
 
 FieldBuildResult FieldJson::buildRequest(Command command, const FieldValues &values)
@@ -598,7 +794,7 @@ FieldBuildResult FieldJson::buildRequest(Command command, const FieldValues &val
     ParsedFields parsed;
     if (auto failed = parseAll(command, values, parsed))
         return *failed;
-    if (auto failed = checkIntArguments(command, parsed))
+    if (auto failed = checkIntArguments(command, values, parsed))
         return *failed;
     const BuildResult built =
         buildParsed(command, int(parsed.integers.value(QStringLiteral("id"))), parsed);

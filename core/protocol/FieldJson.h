@@ -23,6 +23,7 @@ enum class FieldKind {
     Integer,   ///< decimal integer (PID gains, accel_dps2, encoder_offset, power, id)
     Number,    ///< physical value, decimal or exponent notation (dps, deg, A)
     Direction, ///< "cw" or "ccw"
+    Choice,    ///< one of the words in FieldSpec::range, separated by '|'
 };
 
 /// One request field of a command: CLI.md name, how it is written, its allowed range.
@@ -51,7 +52,8 @@ struct FieldBuildResult {
 /// scaled, the integer on the wire is given too as `<field>_raw`.
 class FieldJson {
 public:
-    static QJsonObject requestFields(const Request &request);
+    /// The context gives the torque command's scale (it differs for V2.35 MF drives).
+    static QJsonObject requestFields(const Request &request, const DecodeContext &context = {});
     static QJsonObject replyFields(const Reply &reply);
 
     /// {"direction","command","code","id","fields"} for a valid frame. An echo is read as the
@@ -75,8 +77,10 @@ public:
     static QString hexText(const QByteArray &bytes);
 
     /// The request fields of a command besides "id", in CLI.md order; empty for commands
-    /// without data.
+    /// without data. write_param_ram/rom take `param` and then the fields of paramFieldSpecs().
     static QList<FieldSpec> requestFieldSpecs(Command command);
+    /// The value fields of one V2.35 parameter (write_param_ram/rom after `param`).
+    static QList<FieldSpec> paramFieldSpecs(ParamId param);
     static FieldSpec idSpec();
     /// Build a request from text fields via the builders of RequestBuilder.h: nothing is
     /// clamped; missing, unknown, non-numeric and out-of-range fields are refused.

@@ -1,5 +1,7 @@
 #include "FieldText.h"
 
+#include "ErrorFlags.h"
+
 #include <QtCore/QCoreApplication>
 #include <QtCore/QStringList>
 
@@ -37,8 +39,58 @@ QString withMaxSpeed(QString text, const std::optional<quint32> &maxSpeedRaw)
     return text;
 }
 
+QString paramName(quint8 paramId)
+{
+    const ParamInfo *info = ParamTable::find(paramId);
+    return info ? QString::fromLatin1(info->name)
+                : QStringLiteral("param 0x%1").arg(paramId, 2, 16, QLatin1Char('0'));
+}
+
+QString parameterText(const ParameterValue &v)
+{
+    const std::optional<ParamId> id = v.id();
+    if (!id)
+        return paramName(v.paramId);
+    switch (ParamTable::info(*id).layout) {
+    case ParamLayout::Pid:
+        return QCoreApplication::translate("lk::protocol::FieldText", "%1 Kp %2 Ki %3 Kd %4")
+            .arg(paramName(v.paramId))
+            .arg(v.pidKp())
+            .arg(v.pidKi())
+            .arg(v.pidKd());
+    case ParamLayout::HalfInt64:
+        return QStringLiteral("%1 0x%2")
+            .arg(paramName(v.paramId))
+            .arg(v.asUInt32(), 8, 16, QLatin1Char('0'));
+    case ParamLayout::Int16:
+        return QStringLiteral("%1 %2").arg(paramName(v.paramId)).arg(v.asInt16());
+    case ParamLayout::Int32:
+        return *id == ParamId::MaxSpeed
+                   ? QStringLiteral("%1 %2 dps").arg(paramName(v.paramId), centi(v.asInt32()))
+                   : QStringLiteral("%1 %2 dps/s").arg(paramName(v.paramId)).arg(v.asInt32());
+    }
+    return paramName(v.paramId);
+}
+
+QString brakeText(BrakeAction a)
+{
+    switch (a) {
+    case BrakeAction::Engage:
+        return QCoreApplication::translate("lk::protocol::FieldText", "engage brake");
+    case BrakeAction::Release:
+        return QCoreApplication::translate("lk::protocol::FieldText", "release brake");
+    case BrakeAction::Read:
+        return QCoreApplication::translate("lk::protocol::FieldText", "read brake");
+    }
+    return {};
+}
+
 struct RequestTextVisitor {
+    DecodeContext context;
     QString operator()(const NoPayload &) const { return {}; }
+    QString operator()(const ParamRead &p) const { return paramName(p.paramId); }
+    QString operator()(const ParameterValue &v) const { return parameterText(v); }
+    QString operator()(const BrakeCommand &b) const { return brakeText(b.action); }
     QString operator()(const PidGains &g) const { return pidText(g); }
     QString operator()(const Acceleration &a) const
     {
@@ -55,7 +107,7 @@ struct RequestTextVisitor {
     QString operator()(const TorqueCommand &c) const
     {
         return QCoreApplication::translate("lk::protocol::FieldText", "iq %1 A")
-            .arg(fixed(c.iqRaw * 32.0 / 2000.0, 2));
+            .arg(fixed(c.iqRaw * iqCommandAmpsPerLsb(context), 2));
     }
     QString operator()(const SpeedCommand &c) const
     {
@@ -93,14 +145,17 @@ QString temperature(qint8 c)
 
 QString state1Text(const State1 &s)
 {
+    const bool v23 = s.generation == Generation::V2_3;
     QStringList parts{temperature(s.temperatureC),
-                      QStringLiteral("%1 V").arg(fixed(s.voltageRaw / 10.0, 1))};
-    if (s.lowVoltage())
-        parts << QCoreApplication::translate("lk::protocol::FieldText", "low voltage");
-    if (s.overTemperature())
-        parts << QCoreApplication::translate("lk::protocol::FieldText", "over temperature");
-    const quint8 otherBits = s.errorState & ~quint8(0x09);
-    if (otherBits)
+                      QStringLiteral("%1 V").arg(fixed(s.voltageV(), v23 ? 1 : 2))};
+    if (const std::optional<double> a = s.busCurrentA())
+        parts << QStringLiteral("%1 A").arg(fixed(*a, 2));
+    if (const std::optional<bool> on = s.motorOn())
+        parts << (*on ? QCoreApplication::translate("lk::protocol::FieldText", "motor on")
+                      : QCoreApplication::translate("lk::protocol::FieldText", "motor off"));
+    for (const ErrorFlag &f : ErrorFlags::set(s.errorState, s.generation))
+        parts << QCoreApplication::translate("lk::protocol::ErrorFlags", f.text);
+    if (const quint8 otherBits = ErrorFlags::unnamedBits(s.errorState, s.generation))
         parts << QCoreApplication::translate("lk::protocol::FieldText", "error bits 0x%1")
                      .arg(otherBits, 2, 16, QLatin1Char('0'));
     return parts.join(QStringLiteral(", "));
@@ -130,7 +185,7 @@ QString modelText(const ModelInfo &m)
 struct ReplyTextVisitor {
     QString operator()(const Acknowledged &) const { return {}; }
     QString operator()(const PidGains &g) const { return pidText(g); }
-    QString operator()(const Acceleration &a) const { return RequestTextVisitor{}(a); }
+    QString operator()(const Acceleration &a) const { return RequestTextVisitor{{}}(a); }
     QString operator()(const EncoderReading &e) const
     {
         return QCoreApplication::translate("lk::protocol::FieldText", "enc %1, raw %2, offset %3")
@@ -138,7 +193,7 @@ struct ReplyTextVisitor {
             .arg(e.encoderRaw)
             .arg(e.encoderOffset);
     }
-    QString operator()(const EncoderOffset &e) const { return RequestTextVisitor{}(e); }
+    QString operator()(const EncoderOffset &e) const { return RequestTextVisitor{{}}(e); }
     QString operator()(const ZeroWritten &z) const
     {
         return z.encoderOffset ? QCoreApplication::translate("lk::protocol::FieldText", "offset %1")
@@ -165,13 +220,29 @@ struct ReplyTextVisitor {
                  fixed(s.icA(), 2));
     }
     QString operator()(const ModelInfo &m) const { return modelText(m); }
+    QString operator()(const ParameterValue &v) const { return parameterText(v); }
+    QString operator()(const ParamWriteResult &r) const
+    {
+        return r.succeeded()
+                   ? QCoreApplication::translate("lk::protocol::FieldText", "%1 written")
+                         .arg(paramName(r.paramId))
+                   : QCoreApplication::translate("lk::protocol::FieldText", "%1 refused (flag %2)")
+                         .arg(paramName(r.paramId))
+                         .arg(r.flag);
+    }
+    QString operator()(const BrakeState &b) const
+    {
+        return b.released()
+                   ? QCoreApplication::translate("lk::protocol::FieldText", "brake released")
+                   : QCoreApplication::translate("lk::protocol::FieldText", "brake applied");
+    }
 };
 
 } // namespace
 
-QString FieldText::request(const Request &request)
+QString FieldText::request(const Request &request, const DecodeContext &context)
 {
-    return std::visit(RequestTextVisitor{}, request.payload);
+    return std::visit(RequestTextVisitor{context}, request.payload);
 }
 
 QString FieldText::reply(const Reply &reply)
@@ -186,7 +257,7 @@ QString FieldText::frame(const Frame &frame, FrameDirection direction, const Dec
         return r.reply ? reply(*r.reply) : QString();
     }
     const RequestDecodeResult r = decodeRequest(frame);
-    return r.request ? request(*r.request) : QString();
+    return r.request ? request(*r.request, context) : QString();
 }
 
 } // namespace lk::protocol

@@ -15,7 +15,8 @@ namespace lk::protocol {
 /// off/stop/run, plain echoes) give an empty summary; the command name says it all.
 class FieldText {
 public:
-    static QString request(const Request &request);
+    /// The context gives the torque command's scale (V2.35 MF drives differ).
+    static QString request(const Request &request, const DecodeContext &context = {});
     static QString reply(const Reply &reply);
     /// A valid frame as seen on the bus (an echo reads as its request); empty when the frame
     /// does not decode in that direction.

@@ -2,6 +2,7 @@
 
 #include "Checksum.h"
 #include "Command.h"
+#include "Values.h"
 
 namespace lk::protocol {
 
@@ -37,6 +38,10 @@ std::optional<FrameDirection> Frame::direction() const
     const auto len = data.size();
     if (info->replyEchoesRequest && len == info->requestLength)
         return FrameDirection::Echo;
+    // 0x8C has LEN 1 both ways: engage (0x00) and release (0x01) are answered with the same
+    // byte, so only the read code 0x10 is a request for certain.
+    if (info->command == Command::Brake && len == 1)
+        return quint8(data[0]) == kBrakeReadCode ? FrameDirection::Request : FrameDirection::Echo;
     if (len == info->requestLength)
         return FrameDirection::Request;
     if (len == info->replyLength || len == info->altReplyLength)

@@ -52,6 +52,14 @@ struct PayloadEncoder {
     }
     QByteArray operator()(const State1 &s) const
     {
+        if (s.generation == Generation::V2_35)
+            return WireWriter()
+                .put(s.temperatureC)
+                .put(s.voltageRaw)
+                .put(s.busCurrentRaw)
+                .put(s.motorStateRaw)
+                .put(s.errorState)
+                .bytes();
         return WireWriter()
             .put(s.temperatureC)
             .put(quint8(0))
@@ -74,6 +82,15 @@ struct PayloadEncoder {
     {
         return WireWriter().put(s.temperatureC).put(s.iaRaw).put(s.ibRaw).put(s.icRaw).bytes();
     }
+    QByteArray operator()(const ParameterValue &v) const
+    {
+        return Request{Command::WriteParamRam, 1, v}.toFrame().data;
+    }
+    QByteArray operator()(const ParamWriteResult &r) const
+    {
+        return WireWriter().put(r.paramId).put(r.flag).bytes();
+    }
+    QByteArray operator()(const BrakeState &b) const { return WireWriter().put(b.raw).bytes(); }
     QByteArray operator()(const ModelInfo &m) const
     {
         WireWriter w(58);
@@ -88,16 +105,23 @@ struct PayloadEncoder {
     }
 };
 
-State1 readState1(const WireReader &r)
+State1 readState1(const WireReader &r, Generation generation)
 {
     State1 s;
+    s.generation = generation;
     s.temperatureC = r.get<qint8>(0);
-    s.voltageRaw = r.get<quint16>(2);
     s.errorState = r.get<quint8>(6);
+    if (generation == Generation::V2_3) {
+        s.voltageRaw = r.get<quint16>(2);
+        return s;
+    }
+    s.voltageRaw = r.get<quint16>(1);
+    s.busCurrentRaw = r.get<qint16>(3);
+    s.motorStateRaw = r.get<quint8>(5);
     return s;
 }
 
-State2 readState2(const WireReader &r, bool isPower)
+State2 readState2(const WireReader &r, bool isPower, const DecodeContext &ctx)
 {
     State2 s;
     s.temperatureC = r.get<qint8>(0);
@@ -105,6 +129,7 @@ State2 readState2(const WireReader &r, bool isPower)
     s.isPower = isPower;
     s.speedDps = r.get<qint16>(3);
     s.encoder = r.get<quint16>(5);
+    s.iqAmpsPerLsb = iqReplyAmpsPerLsb(ctx);
     return s;
 }
 
@@ -151,18 +176,27 @@ ReplyPayload decodePayload(Command cmd, const QByteArray &d, const DecodeContext
         return SingleTurnAngle{r.get<quint32>(0)};
     case Command::ReadState1:
     case Command::ClearErrors:
-        return readState1(r);
+        return readState1(r, ctx.generation);
     case Command::ReadState3:
-        return State3{r.get<qint8>(0), r.get<qint16>(1), r.get<qint16>(3), r.get<qint16>(5)};
+        return State3{r.get<qint8>(0), r.get<qint16>(1), r.get<qint16>(3), r.get<qint16>(5),
+                      phaseAmpsPerLsb(ctx)};
     case Command::ReadModel:
         return readModel(d, r);
     case Command::MotorOff:
     case Command::MotorStop:
     case Command::MotorRun:
     case Command::ClearAngle:
+    case Command::ClearTurnCount:
         return Acknowledged{};
+    case Command::ReadParam:
+        return readParameter(d);
+    case Command::WriteParamRam:
+    case Command::WriteParamRom:
+        return ParamWriteResult{r.get<quint8>(0), r.get<quint8>(1)};
+    case Command::Brake:
+        return BrakeState{r.get<quint8>(0)};
     case Command::OpenLoop:
-        return readState2(r, true); // 0xA0 exists only on MS: always power
+        return readState2(r, true, ctx); // 0xA0 exists only on MS: always power
     case Command::ReadState2:
     case Command::Torque:
     case Command::Speed:
@@ -172,7 +206,7 @@ ReplyPayload decodePayload(Command cmd, const QByteArray &d, const DecodeContext
     case Command::SinglePositionLimited:
     case Command::IncrementPosition:
     case Command::IncrementPositionLimited:
-        return readState2(r, ctx.reportsPower() && cmd != Command::Torque);
+        return readState2(r, ctx.reportsPower() && cmd != Command::Torque, ctx);
     }
     return Acknowledged{};
 }

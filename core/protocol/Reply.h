@@ -19,10 +19,12 @@ struct Acknowledged {}; ///< echo of a request without data (motor_off/stop/run,
 /// write_zero_rom -> ZeroWritten; read_multi_turn -> MultiTurnAngle;
 /// read_single_turn -> SingleTurnAngle; read_state1/clear_errors -> State1;
 /// read_state2 and 0xA0..0xA8 -> State2; read_state3 -> State3; read_model -> ModelInfo;
-/// motor_off/stop/run, clear_angle -> Acknowledged.
+/// motor_off/stop/run, clear_angle, clear_turn_count -> Acknowledged; read_param ->
+/// ParameterValue; write_param_ram/rom -> ParamWriteResult; brake -> BrakeState.
 using ReplyPayload =
     std::variant<Acknowledged, PidGains, Acceleration, EncoderReading, EncoderOffset, ZeroWritten,
-                 MultiTurnAngle, SingleTurnAngle, State1, State2, State3, ModelInfo>;
+                 MultiTurnAngle, SingleTurnAngle, State1, State2, State3, ModelInfo, ParameterValue,
+                 ParamWriteResult, BrakeState>;
 
 /// A typed drive -> host reply.
 struct Reply {
@@ -31,7 +33,8 @@ struct Reply {
     ReplyPayload payload;
 
     /// Encode as the drive would send it (the simulator's side). State2::isPower is not on
-    /// the wire; ModelInfo::generation picks the 42- or 58-byte layout.
+    /// the wire; ModelInfo::generation picks the 42- or 58-byte layout, State1::generation the
+    /// 0x9A layout.
     Frame toFrame() const;
     QByteArray encode() const { return toFrame().encode(); }
 };
@@ -41,7 +44,8 @@ struct ReplyDecodeResult {
     DecodeError error = DecodeError::None;
 };
 
-/// Decode a reply (or echo) frame. The context says whether torque fields are iq or power.
+/// Decode a reply (or echo) frame. The context says whether torque fields are iq or power,
+/// and the generation picks the 0x9A/0x9B layout and the current scales.
 /// A frame whose LEN is a request's (not a reply's) gives WrongDirection; short frames are
 /// never decoded as zeros.
 ReplyDecodeResult decodeReply(const Frame &frame, const DecodeContext &context = {});

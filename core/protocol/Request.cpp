@@ -18,6 +18,15 @@ QByteArray pidBytes(const PidGains &g)
         .bytes();
 }
 
+QByteArray parameterBytes(const ParameterValue &v)
+{
+    WireWriter w(7);
+    w.put(v.paramId);
+    for (quint8 b : v.bytes)
+        w.put(b);
+    return w.bytes();
+}
+
 struct PayloadEncoder {
     QByteArray operator()(const NoPayload &) const { return {}; }
     QByteArray operator()(const PidGains &g) const { return pidBytes(g); }
@@ -48,9 +57,12 @@ struct PayloadEncoder {
     }
     QByteArray operator()(const SinglePositionCommand &c) const
     {
-        // direction, uint16 angle, one 0x00 pad (ERRATA), then the optional max speed.
+        // direction, then the low three bytes of the angle (V2.35); for 0..35999 these are
+        // V2.3's uint16 angle and its 0x00 pad, byte for byte. Then the optional max speed.
         WireWriter w;
-        w.put(static_cast<quint8>(c.direction)).put(c.angleRaw).put(quint8(0));
+        w.put(static_cast<quint8>(c.direction))
+            .put(static_cast<quint16>(c.angleRaw & 0xFFFF))
+            .put(static_cast<quint8>((c.angleRaw >> 16) & 0xFF));
         if (c.maxSpeedRaw)
             w.put(*c.maxSpeedRaw);
         return w.bytes();
@@ -62,6 +74,15 @@ struct PayloadEncoder {
         if (c.maxSpeedRaw)
             w.put(*c.maxSpeedRaw);
         return w.bytes();
+    }
+    QByteArray operator()(const ParamRead &p) const
+    {
+        return WireWriter().put(p.paramId).put(quint8(0)).bytes();
+    }
+    QByteArray operator()(const ParameterValue &v) const { return parameterBytes(v); }
+    QByteArray operator()(const BrakeCommand &b) const
+    {
+        return WireWriter().put(static_cast<quint8>(b.action)).bytes();
     }
 };
 
@@ -104,7 +125,7 @@ RequestPayload decodePayload(Command cmd, const QByteArray &d)
         SinglePositionCommand c;
         c.direction =
             static_cast<quint8>(d[0]) ? SpinDirection::CounterClockwise : SpinDirection::Clockwise;
-        c.angleRaw = r.get<quint16>(1);
+        c.angleRaw = r.get<quint16>(1) | (quint32(static_cast<quint8>(d[3])) << 16);
         if (cmd == Command::SinglePositionLimited)
             c.maxSpeedRaw = r.get<quint32>(4);
         return c;
@@ -113,12 +134,28 @@ RequestPayload decodePayload(Command cmd, const QByteArray &d)
         return IncrementPositionCommand{r.get<qint32>(0), std::nullopt};
     case Command::IncrementPositionLimited:
         return IncrementPositionCommand{r.get<qint32>(0), r.get<quint32>(4)};
+    case Command::ReadParam:
+        return ParamRead{static_cast<quint8>(d[0])};
+    case Command::WriteParamRam:
+    case Command::WriteParamRom:
+        return readParameter(d);
+    case Command::Brake:
+        return BrakeCommand{static_cast<BrakeAction>(static_cast<quint8>(d[0]))};
     default:
         return NoPayload{};
     }
 }
 
 } // namespace
+
+ParameterValue readParameter(const QByteArray &d)
+{
+    ParameterValue v;
+    v.paramId = static_cast<quint8>(d[0]);
+    for (int i = 0; i < 6; ++i)
+        v.bytes[i] = static_cast<quint8>(d[1 + i]);
+    return v;
+}
 
 Frame Request::toFrame() const
 {

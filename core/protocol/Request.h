@@ -3,6 +3,7 @@
 #include "Command.h"
 #include "FieldError.h"
 #include "Frame.h"
+#include "Parameter.h"
 #include "Values.h"
 
 #include <optional>
@@ -12,11 +13,12 @@ namespace lk::protocol {
 
 struct NoPayload {};
 
-/// The payload of a request, by command: empty for reads and off/stop/run.
+/// The payload of a request, by command: empty for reads and off/stop/run; read_param ->
+/// ParamRead; write_param_ram/rom -> ParameterValue; brake -> BrakeCommand.
 using RequestPayload =
     std::variant<NoPayload, PidGains, Acceleration, EncoderOffset, OpenLoopCommand, TorqueCommand,
                  SpeedCommand, MultiPositionCommand, SinglePositionCommand,
-                 IncrementPositionCommand>;
+                 IncrementPositionCommand, ParamRead, ParameterValue, BrakeCommand>;
 
 /// A host -> drive request. Built with the functions in RequestBuilder.h it has passed the
 /// wire ranges of the spec and ERRATA; read back with decodeRequest() it holds the values as
@@ -47,5 +49,9 @@ struct RequestDecodeResult {
     DecodeError error = DecodeError::None;
 };
 RequestDecodeResult decodeRequest(const Frame &frame);
+
+/// `[ParamID, six value bytes]` (0x40 reply, 0x42/0x44 request) as a ParameterValue; `d`
+/// holds at least 7 bytes.
+ParameterValue readParameter(const QByteArray &d);
 
 } // namespace lk::protocol

@@ -72,7 +72,7 @@ BuildResult plain(Command command, int id)
         return fail(e->field, e->range, e->problem);
     const CommandInfo *info = CommandTable::find(static_cast<quint8>(command));
     if (!info)
-        return fail(QStringLiteral("command"), QStringLiteral("the 28 commands of the protocol"),
+        return fail(QStringLiteral("command"), QStringLiteral("the commands of the protocol"),
                     QStringLiteral("unknown code %1").arg(CommandTable::codeText(quint8(command))));
     if (info->requestLength != 0)
         return fail(QStringLiteral("command"), QStringLiteral("commands without data"),
@@ -127,8 +127,9 @@ BuildResult openLoop(int id, qint64 power)
 {
     if (auto e = checkId(id))
         return fail(e->field, e->range, e->problem);
-    if (power < -1000 || power > 1000)
-        return fail(QStringLiteral("power"), QStringLiteral("-1000..1000"), got(double(power)));
+    // V2.3 allows +-1000, V2.35 +-850: the stricter bound serves both (V2.35.md section 11).
+    if (power < -850 || power > 850)
+        return fail(QStringLiteral("power"), QStringLiteral("-850..850"), got(double(power)));
     return done(Command::OpenLoop, id, OpenLoopCommand{static_cast<qint16>(power)});
 }
 
@@ -139,6 +140,19 @@ BuildResult torque(int id, double iqA)
     const auto raw = scaled(iqA, kIqCommandAmpsPerLsb, -2000, 2000);
     if (!raw)
         return fail(QStringLiteral("iq_a"), QStringLiteral("-32..32 A"), got(iqA));
+    return done(Command::Torque, id, TorqueCommand{static_cast<qint16>(*raw)});
+}
+
+BuildResult torque(int id, double iqA, const DecodeContext &context)
+{
+    if (auto e = checkId(id))
+        return fail(e->field, e->range, e->problem);
+    const double lsb = iqCommandAmpsPerLsb(context);
+    const auto raw = scaled(iqA, lsb, -2000, 2000);
+    if (!raw) {
+        const QString limit = QString::number(2000 * lsb, 'f', 2);
+        return fail(QStringLiteral("iq_a"), QStringLiteral("-%1..%1 A").arg(limit), got(iqA));
+    }
     return done(Command::Torque, id, TorqueCommand{static_cast<qint16>(*raw)});
 }
 
@@ -230,6 +244,95 @@ BuildResult incrementPosition(int id, double deltaDeg)
 BuildResult incrementPosition(int id, double deltaDeg, double maxSpeedDps)
 {
     return increment(id, deltaDeg, maxSpeedDps);
+}
+
+BuildResult readParam(int id, ParamId param)
+{
+    if (auto e = checkId(id))
+        return fail(e->field, e->range, e->problem);
+    return done(Command::ReadParam, id, ParamRead{static_cast<quint8>(param)});
+}
+
+BuildResult writeParamPid(int id, ParamId param, qint64 kp, qint64 ki, qint64 kd, bool rom)
+{
+    if (auto e = checkId(id))
+        return fail(e->field, e->range, e->problem);
+    const ParamInfo &info = ParamTable::info(param);
+    if (info.layout != ParamLayout::Pid)
+        return fail(QStringLiteral("param"), QStringLiteral("angle_pid|speed_pid|iq_pid"),
+                    ParamTable::name(param));
+    const QString loop = ParamTable::name(param).chopped(4); // "speed_pid" -> "speed"
+    const std::pair<const char *, qint64> gains[] = {{"_kp", kp}, {"_ki", ki}, {"_kd", kd}};
+    for (const auto &[suffix, value] : gains) {
+        if (value < 0 || value > 65535)
+            return fail(loop + QLatin1String(suffix), QStringLiteral("0..65535"),
+                        got(double(value)));
+    }
+    return done(rom ? Command::WriteParamRom : Command::WriteParamRam, id,
+                ParameterValue::pid(param, quint16(kp), quint16(ki), quint16(kd)));
+}
+
+namespace {
+struct ParamRange {
+    const char *field;
+    double unitsPerLsb;
+    qint64 min, max;
+    const char *text;
+};
+
+std::optional<ParamRange> paramRange(ParamId param)
+{
+    switch (param) {
+    case ParamId::MaxTorqueCurrent:
+        return ParamRange{"max_torque", 1, 0, 2048, "0..2048"};
+    case ParamId::MaxSpeed:
+        return ParamRange{"max_speed_dps", kCentiUnits, 0, kInt32Max, "0..21474836.47 dps"};
+    case ParamId::CurrentRamp:
+        return ParamRange{"current_ramp", 1, 0, 32767, "0..32767"};
+    case ParamId::SpeedRamp:
+        return ParamRange{"speed_ramp_dps2", 1, 0, kInt32Max, "0..2147483647 dps/s"};
+    case ParamId::MaxAngleLow:
+    case ParamId::MaxAngleHigh:
+        return ParamRange{"max_angle_deg", kCentiUnits, 0, std::numeric_limits<qint64>::max(),
+                          "0..9e16 deg"};
+    default:
+        return std::nullopt;
+    }
+}
+} // namespace
+
+BuildResult writeParam(int id, ParamId param, double value, bool rom)
+{
+    if (auto e = checkId(id))
+        return fail(e->field, e->range, e->problem);
+    const std::optional<ParamRange> range = paramRange(param);
+    if (!range)
+        return fail(QStringLiteral("param"),
+                    QStringLiteral("max_torque|max_speed|max_angle_low|max_angle_high|"
+                                   "current_ramp|speed_ramp"),
+                    ParamTable::name(param));
+    const bool angle = param == ParamId::MaxAngleLow || param == ParamId::MaxAngleHigh;
+    if (angle && (!std::isfinite(value) || value < 0 || value > kMultiTurnLimitDeg))
+        return fail(QLatin1String(range->field), QLatin1String(range->text), got(value));
+    const auto raw = angle ? std::optional<qint64>(std::llround(value / kCentiUnits))
+                           : scaled(value, range->unitsPerLsb, range->min, range->max);
+    if (!raw)
+        return fail(QLatin1String(range->field), QLatin1String(range->text), got(value));
+    ParameterValue v;
+    if (angle)
+        v = ParameterValue::maxAngleHalf(*raw, param == ParamId::MaxAngleHigh);
+    else if (ParamTable::info(param).layout == ParamLayout::Int16)
+        v = ParameterValue::int16(param, static_cast<qint16>(*raw));
+    else
+        v = ParameterValue::int32(param, static_cast<qint32>(*raw));
+    return done(rom ? Command::WriteParamRom : Command::WriteParamRam, id, v);
+}
+
+BuildResult brake(int id, BrakeAction action)
+{
+    if (auto e = checkId(id))
+        return fail(e->field, e->range, e->problem);
+    return done(Command::Brake, id, BrakeCommand{action});
 }
 
 } // namespace lk::protocol::build

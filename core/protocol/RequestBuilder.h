@@ -17,15 +17,29 @@ BuildResult writePid(int id, int angleKp, int angleKi, int speedKp, int speedKi,
 BuildResult writePid(int id, const PidGains &gains, bool rom);
 BuildResult writeAcceleration(int id, qint64 accelDps2); ///< 0..2147483647 dps/s
 BuildResult writeEncoderOffset(int id, qint64 offset);   ///< 0..65535 counts
-BuildResult openLoop(int id, qint64 power);              ///< -1000..1000 (MS)
-BuildResult torque(int id, double iqA);                  ///< -32..32 A
-BuildResult speed(int id, double speedDps);              ///< int32 of 0.01 dps
-BuildResult multiPosition(int id, double angleDeg);      ///< int64 of 0.01 deg
+/// -850..850 (MS): the stricter of V2.3's +-1000 and V2.35's +-850.
+BuildResult openLoop(int id, qint64 power);
+BuildResult torque(int id, double iqA); ///< -32..32 A at V2.3's 32 A / 2000 LSB
+/// Torque at the scale of the drive in `context` (V2.35 MF: 33/4096 A per LSB); the raw value
+/// stays within +-2000, the stricter of both generations.
+BuildResult torque(int id, double iqA, const DecodeContext &context);
+BuildResult speed(int id, double speedDps);         ///< int32 of 0.01 dps
+BuildResult multiPosition(int id, double angleDeg); ///< int64 of 0.01 deg
 BuildResult multiPosition(int id, double angleDeg, double maxSpeedDps);
 BuildResult singlePosition(int id, SpinDirection dir, double angleDeg); ///< 0..359.99 deg
 BuildResult singlePosition(int id, SpinDirection dir, double angleDeg, double maxSpeedDps);
 BuildResult incrementPosition(int id, double deltaDeg); ///< int32 of 0.01 deg
 BuildResult incrementPosition(int id, double deltaDeg, double maxSpeedDps);
+
+// V2.35 only (V2.35.md sections 4.2 and 6).
+BuildResult readParam(int id, ParamId param);
+/// PID loop parameter (angle_pid, speed_pid, iq_pid): Kp, Ki, Kd each 0..65535.
+BuildResult writeParamPid(int id, ParamId param, qint64 kp, qint64 ki, qint64 kd, bool rom);
+/// A one-number parameter in its physical unit: max_torque (iq command units 0..2048),
+/// max_speed (dps, 0.01 dps on the wire), current_ramp (0..32767, unit undocumented),
+/// speed_ramp (dps/s), max_angle_low/high (the half of `value` deg as int64 of 0.01 deg).
+BuildResult writeParam(int id, ParamId param, double value, bool rom);
+BuildResult brake(int id, BrakeAction action);
 
 /// The ID check shared by every builder: 1..32.
 std::optional<FieldError> checkId(int id);

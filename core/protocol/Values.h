@@ -13,10 +13,31 @@ namespace lk::protocol {
 // Plain values carried by requests and replies, in wire units, with physical-unit accessors.
 // Scales from ERRATA.md "Units and ranges (V2.3)".
 
-constexpr double kIqReplyAmpsPerLsb = 33.0 / 2048.0;   ///< iq in replies
-constexpr double kIqCommandAmpsPerLsb = 32.0 / 2000.0; ///< iq in the 0xA1 command
-constexpr double kPhaseAmpsPerLsb = 1.0 / 64.0;        ///< 0x9D phase currents
+constexpr double kIqReplyAmpsPerLsb = 33.0 / 2048.0;   ///< iq in replies (V2.3; V2.35 MG/MH)
+constexpr double kIqMfV235AmpsPerLsb = 33.0 / 4096.0;  ///< iq of an MF drive on V2.35
+constexpr double kIqCommandAmpsPerLsb = 32.0 / 2000.0; ///< iq in the 0xA1 command (V2.3)
+constexpr double kPhaseAmpsPerLsb = 1.0 / 64.0;        ///< 0x9D phase currents (V2.3)
 constexpr double kCentiUnits = 0.01;                   ///< 0.01 deg, 0.01 dps
+constexpr quint8 kBrakeReadCode = 0x10;                ///< 0x8C data byte that only reads
+
+/// Amps per LSB of iq (and, on V2.35, of the 0x9D phase currents) in replies from a drive:
+/// V2.35 halves the MF scale (33/4096 A); MG is 66/4096 = 33/2048 A in both generations.
+inline double iqReplyAmpsPerLsb(const DecodeContext &c)
+{
+    return c.generation == Generation::V2_35 && c.series == Series::MF ? kIqMfV235AmpsPerLsb
+                                                                       : kIqReplyAmpsPerLsb;
+}
+/// Amps per LSB of the 0xA1 torque command: V2.3 32/2000 A; V2.35 the reply scale (+-2048 =
+/// MF +-16.5 A, MG +-33 A). The builder keeps the stricter raw range of both, +-2000.
+inline double iqCommandAmpsPerLsb(const DecodeContext &c)
+{
+    return c.generation == Generation::V2_35 ? iqReplyAmpsPerLsb(c) : kIqCommandAmpsPerLsb;
+}
+/// Amps per LSB of the 0x9D phase currents: 1/64 A on V2.3, the iq scale on V2.35.
+inline double phaseAmpsPerLsb(const DecodeContext &c)
+{
+    return c.generation == Generation::V2_35 ? iqReplyAmpsPerLsb(c) : kPhaseAmpsPerLsb;
+}
 
 /// Spin direction of single-turn position commands (0 = clockwise, 1 = counter-clockwise).
 enum class SpinDirection : quint8 { Clockwise = 0, CounterClockwise = 1 };
@@ -64,13 +85,37 @@ struct SingleTurnAngle {
     double degrees() const { return raw * kCentiUnits; }
 };
 
-/// Temperature, voltage and error flags (0x9A and 0x9B replies).
+/// Temperature, voltage and error flags (0x9A and 0x9B replies). The layout depends on the
+/// generation (V2.35.md section 5): V2.3 `temp, 0, u16 voltage 0.1 V, 0, 0, err`; V2.35
+/// `temp, i16 voltage 0.01 V, i16 bus current 0.01 A, motorState, err`.
 struct State1 {
     qint8 temperatureC = 0;
-    quint16 voltageRaw = 0; ///< 0.1 V
+    quint16 voltageRaw = 0; ///< V2.3: uint16 of 0.1 V; V2.35: the int16 of 0.01 V as uint16
     quint8 errorState = 0;
-    double voltageV() const { return voltageRaw * 0.1; }
+    Generation generation = Generation::V2_3;
+    qint16 busCurrentRaw = 0; ///< V2.35 only: 0.01 A
+    quint8 motorStateRaw = 0; ///< V2.35 only: 0x00 on, 0x10 off
+    double voltageV() const
+    {
+        return generation == Generation::V2_3 ? voltageRaw * 0.1
+                                              : static_cast<qint16>(voltageRaw) * 0.01;
+    }
+    /// Bus current in A: V2.35 only.
+    std::optional<double> busCurrentA() const
+    {
+        if (generation == Generation::V2_3)
+            return std::nullopt;
+        return busCurrentRaw * 0.01;
+    }
+    /// Whether the motor is on: V2.35 only, and only for the two documented codes.
+    std::optional<bool> motorOn() const
+    {
+        if (generation == Generation::V2_3 || (motorStateRaw != 0x00 && motorStateRaw != 0x10))
+            return std::nullopt;
+        return motorStateRaw == 0x00;
+    }
     bool lowVoltage() const { return errorState & 0x01; }
+    /// Bit 3: over-temperature on V2.3, motor over-temperature on V2.35.
     bool overTemperature() const { return errorState & 0x08; }
 };
 
@@ -81,16 +126,18 @@ struct State2 {
     bool isPower = false; ///< set by the decoder from the DecodeContext
     qint16 speedDps = 0;
     quint16 encoder = 0;
-    double iqA() const { return torqueRaw * kIqReplyAmpsPerLsb; }
+    double iqAmpsPerLsb = kIqReplyAmpsPerLsb; ///< set by the decoder (V2.35 MF: 33/4096)
+    double iqA() const { return torqueRaw * iqAmpsPerLsb; }
 };
 
 /// Temperature and phase currents (0x9D reply, MF/MG/MH only).
 struct State3 {
     qint8 temperatureC = 0;
-    qint16 iaRaw = 0, ibRaw = 0, icRaw = 0; ///< 1/64 A
-    double iaA() const { return iaRaw * kPhaseAmpsPerLsb; }
-    double ibA() const { return ibRaw * kPhaseAmpsPerLsb; }
-    double icA() const { return icRaw * kPhaseAmpsPerLsb; }
+    qint16 iaRaw = 0, ibRaw = 0, icRaw = 0; ///< 1/64 A on V2.3, the iq scale on V2.35
+    double ampsPerLsb = kPhaseAmpsPerLsb;   ///< set by the decoder
+    double iaA() const { return iaRaw * ampsPerLsb; }
+    double ibA() const { return ibRaw * ampsPerLsb; }
+    double icA() const { return icRaw * ampsPerLsb; }
 };
 
 /// Driver and motor model (0x12 reply, 42 bytes on V2.3, 58 bytes on V2.35).
@@ -109,7 +156,7 @@ struct ModelInfo {
 
 // Control request payloads, wire units.
 struct OpenLoopCommand {
-    qint16 power = 0; ///< -1000..1000
+    qint16 power = 0; ///< -850..850 (the stricter of V2.3's +-1000 and V2.35's +-850)
 };
 struct TorqueCommand {
     qint16 iqRaw = 0; ///< -2000..2000 = -32..32 A
@@ -125,8 +172,19 @@ struct MultiPositionCommand {
 };
 struct SinglePositionCommand {
     SpinDirection direction = SpinDirection::Clockwise;
-    quint16 angleRaw = 0;               ///< 0..35999
+    quint32 angleRaw = 0; ///< 0..35999 (V2.3, 2 bytes + pad); V2.35 3 bytes up to 36000 x ratio - 1
     std::optional<quint32> maxSpeedRaw; ///< 0xA6 only
+};
+
+/// What 0x8C asks of the brake (V2.35).
+enum class BrakeAction : quint8 { Engage = 0x00, Release = 0x01, Read = kBrakeReadCode };
+struct BrakeCommand {
+    BrakeAction action = BrakeAction::Read;
+};
+/// 0x8C reply: 0x00 brake applied (unpowered), 0x01 released (powered).
+struct BrakeState {
+    quint8 raw = 0;
+    bool released() const { return raw == 0x01; }
 };
 struct IncrementPositionCommand {
     qint32 angleRaw = 0;                ///< signed 0.01 deg

@@ -116,6 +116,23 @@ struct Fields {
             m[QStringLiteral("motor_version_raw")] = i.motorVersionRaw;
         }
     }
+    void operator()(const proto::ParameterValue &v)
+    {
+        m[QStringLiteral("kind")] = "parameter";
+        m[QStringLiteral("param_id")] = v.paramId;
+        m[QStringLiteral("value_i32")] = v.asInt32();
+    }
+    void operator()(const proto::ParamWriteResult &r)
+    {
+        m[QStringLiteral("kind")] = "param_write";
+        m[QStringLiteral("param_id")] = r.paramId;
+        m[QStringLiteral("flag")] = r.flag;
+    }
+    void operator()(const proto::BrakeState &b)
+    {
+        m[QStringLiteral("kind")] = "brake";
+        m[QStringLiteral("brake_raw")] = b.raw;
+    }
 };
 
 inline QVariantMap fields(const proto::Reply &r)

@@ -89,6 +89,18 @@ struct Describe {
     {
         return QStringLiteral("increment %1").arg(c.angleRaw) + maxSpeed(c.maxSpeedRaw);
     }
+    QString operator()(const proto::ParamRead &p) const
+    {
+        return QStringLiteral("read param %1").arg(p.paramId);
+    }
+    QString operator()(const proto::ParameterValue &v) const
+    {
+        return QStringLiteral("param %1 = %2").arg(v.paramId).arg(v.asInt32());
+    }
+    QString operator()(const proto::BrakeCommand &b) const
+    {
+        return QStringLiteral("brake %1").arg(int(b.action));
+    }
 };
 
 QString describe(const Request &r)
