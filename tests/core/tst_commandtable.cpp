@@ -14,7 +14,7 @@ class tst_CommandTable : public QObject {
 private slots:
     void everyCommand_data();
     void everyCommand();
-    void tableHasExactly28DistinctEntries();
+    void tableHasExactly33DistinctEntries();
     void unknownCodes_data();
     void unknownCodes();
     void onlyTheTableCodesAreKnown();
@@ -25,7 +25,8 @@ private slots:
 };
 
 namespace {
-// The V2.3 command set as written in CLI.md, ERRATA.md and the vendor spec, by hand.
+// The V2.3 command set as written in CLI.md, ERRATA.md and the vendor spec, by hand, and the
+// five commands V2.35 added (V2.35.md section 4).
 // Columns: code, name, request LEN, reply LEN, alt reply LEN, echo, moves motor, writes flash.
 struct Expected {
     int code;
@@ -62,6 +63,11 @@ const Expected kExpected[] = {
     {0xA7, "increment_position", 4, 7, -1, false, true, false},         // ERRATA: LEN 4, not 3
     {0xA8, "increment_position_limited", 8, 7, -1, false, true, false}, // ERRATA: reply LEN 7
     {0x12, "read_model", 0, 42, 58, false, false, false},
+    {0x40, "read_param", 2, 7, -1, false, false, false},
+    {0x42, "write_param_ram", 7, 2, -1, false, false, false},
+    {0x44, "write_param_rom", 7, 2, -1, false, false, true},
+    {0x8C, "brake", 1, 1, -1, false, false, false},
+    {0x93, "clear_turn_count", 0, 0, -1, true, false, false}, // PDF "8 byte" is a typo
 };
 
 bool isExpectedCode(int code)
@@ -125,10 +131,10 @@ void tst_CommandTable::everyCommand()
     QCOMPARE(CommandTable::codeText(static_cast<quint8>(code)), codeText);
 }
 
-void tst_CommandTable::tableHasExactly28DistinctEntries()
+void tst_CommandTable::tableHasExactly33DistinctEntries()
 {
-    QCOMPARE(CommandTable::kCount, 28);
-    QCOMPARE(int(CommandTable::all().size()), 28);
+    QCOMPARE(CommandTable::kCount, 33);
+    QCOMPARE(int(CommandTable::all().size()), 33);
     QSet<int> codes;
     QSet<QString> names;
     for (const CommandInfo &c : CommandTable::all()) {
@@ -137,18 +143,19 @@ void tst_CommandTable::tableHasExactly28DistinctEntries()
         QVERIFY2(isExpectedCode(static_cast<int>(c.command)), c.name);
         QCOMPARE(CommandTable::find(static_cast<quint8>(c.command)), &c);
     }
-    QCOMPARE(codes.size(), 28);
-    QCOMPARE(names.size(), 28);
+    QCOMPARE(codes.size(), 33);
+    QCOMPARE(names.size(), 33);
 }
 
 void tst_CommandTable::unknownCodes_data()
 {
     QTest::addColumn<int>("code");
-    // Codes that V2.35 added (0x40/0x42/0x44 parameters, 0x8C brake, 0x93 clear turns),
-    // neighbours of real codes, the frame head and the extremes.
-    const int codes[] = {0x00, 0x01, 0x11, 0x13, 0x18, 0x1A, 0x2F, 0x35, 0x3E, 0x40,
-                         0x42, 0x44, 0x7F, 0x82, 0x87, 0x89, 0x8C, 0x8F, 0x93, 0x96,
-                         0x99, 0x9E, 0x9F, 0xA9, 0xAF, 0xB0, 0xFE, 0xFF};
+    // Neighbours of real codes (0x41/0x43 between the parameter commands, 0x89 which the
+    // vendor tool uses but no document defines, 0x07 the undocumented reboot), the frame head
+    // and the extremes.
+    const int codes[] = {0x00, 0x01, 0x07, 0x11, 0x13, 0x18, 0x1A, 0x2F, 0x35, 0x3E,
+                         0x41, 0x43, 0x45, 0x7F, 0x82, 0x87, 0x89, 0x8B, 0x8D, 0x8F,
+                         0x96, 0x99, 0x9E, 0x9F, 0xA9, 0xAF, 0xB0, 0xFE, 0xFF};
     for (int c : codes)
         QTest::newRow(qPrintable(CommandTable::codeText(static_cast<quint8>(c)))) << c;
 }
@@ -167,7 +174,7 @@ void tst_CommandTable::onlyTheTableCodesAreKnown()
         QVERIFY2(found == isExpectedCode(code), qPrintable(QString::number(code, 16)));
         known += found ? 1 : 0;
     }
-    QCOMPARE(known, 28);
+    QCOMPARE(known, 33);
 }
 
 void tst_CommandTable::unknownNames_data()
@@ -180,7 +187,7 @@ void tst_CommandTable::unknownNames_data()
     QTest::newRow("dash instead of underscore") << QStringLiteral("read-state2");
     QTest::newRow("code text") << QStringLiteral("0x80");
     QTest::newRow("no such state") << QStringLiteral("read_state4");
-    QTest::newRow("V2.35 command") << QStringLiteral("brake");
+    QTest::newRow("no such command") << QStringLiteral("brakes");
 }
 
 void tst_CommandTable::unknownNames()

@@ -63,7 +63,7 @@ void tst_Frame::encode_data()
         << 0x9C << 1 << longData << hex("3E 9C 01 3C 17") + longData + hex("C4");
     addEveryCommandRows();
     QTest::newRow("unknown command still encodes")
-        << 0x93 << 1 << QByteArray() << hex("3E 93 01 00 D2");
+        << 0x89 << 1 << QByteArray() << hex("3E 89 01 00 C8");
 }
 
 void tst_Frame::addEveryCommandRows()
@@ -236,7 +236,7 @@ const DirRow kDirRows[] = {
     {"read_model", 0x12, 58, kRep},
     {"read_model", 0x12, 41, kNone},
     {"read_model", 0x12, 26, kNone},
-    {"unknown 0x93", 0x93, 0, kNone},
+    {"unknown 0x89", 0x89, 0, kNone},
     {"unknown 0x00", 0x00, 7, kNone},
     {"unknown 0xFF", 0xFF, 2, kNone},
 };

@@ -403,8 +403,8 @@ void tst_Reply::refused_data()
         add("max", 60);
     }
     for (int len : {0, 7, 42})
-        QTest::addRow("unknown 0x93 LEN %d", len)
-            << 0x93 << len << int(DecodeError::UnknownCommand);
+        QTest::addRow("unknown 0x89 LEN %d", len)
+            << 0x89 << len << int(DecodeError::UnknownCommand);
     QTest::newRow("unknown 0x00") << 0x00 << 0 << int(DecodeError::UnknownCommand);
     QTest::newRow("unknown 0xFF") << 0xFF << 7 << int(DecodeError::UnknownCommand);
 }

@@ -115,9 +115,9 @@ void addSetupVectors()
 void addCurrentAndSpeedVectors()
 {
     addVector(
-        "open_loop -1000", [] { return build::openLoop(1, -1000); }, "3E A0 01 02 E1 18 FC 14");
+        "open_loop -850", [] { return build::openLoop(1, -850); }, "3E A0 01 02 E1 AE FC AA");
     addVector(
-        "open_loop 1000", [] { return build::openLoop(1, 1000); }, "3E A0 01 02 E1 E8 03 EB");
+        "open_loop 850", [] { return build::openLoop(1, 850); }, "3E A0 01 02 E1 52 03 55");
     addVector(
         "open_loop -1", [] { return build::openLoop(1, -1); }, "3E A0 01 02 E1 FF FF FE");
     addVector(
@@ -303,9 +303,9 @@ void addValueRefusals()
     addRefused(
         "torque -inf", [] { return build::torque(1, -kInf); }, "iq_a");
     addRefused(
-        "open_loop 1001", [] { return build::openLoop(1, 1001); }, "power");
+        "open_loop 851 (V2.35 allows +-850)", [] { return build::openLoop(1, 851); }, "power");
     addRefused(
-        "open_loop -1001", [] { return build::openLoop(1, -1001); }, "power");
+        "open_loop -1000 (V2.3 allowed it)", [] { return build::openLoop(1, -1000); }, "power");
     addRefused(
         "open_loop 65536 (wraps to 0 in int16)", [] { return build::openLoop(1, 65536); }, "power");
     addRefused(
@@ -480,9 +480,10 @@ void tst_RequestBuilder::fieldErrorMessage()
 
 void tst_RequestBuilder::plainRefusesUnknownCommandValue()
 {
-    // A byte read from the wire and cast to Command (e.g. 0x93 from a V2.35 drive) must be
-    // refused like any other bad argument, not dereference a missing table entry.
-    const BuildResult r = build::plain(static_cast<Command>(0x93), 1);
+    // A byte read from the wire and cast to Command (e.g. 0x89, which the vendor tool uses
+    // but no document defines) must be refused like any other bad argument, not dereference
+    // a missing table entry.
+    const BuildResult r = build::plain(static_cast<Command>(0x89), 1);
     QVERIFY(!r.ok());
     QCOMPARE(r.error.field, QStringLiteral("command"));
 }

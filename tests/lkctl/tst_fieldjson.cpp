@@ -366,10 +366,10 @@ void tst_FieldJson::buildRequestRefuses_data()
                                      "(got 21474836.48)";
     QTest::newRow("torque over 32 A") << "torque" << id({{"iq_a", "32.01"}}) << "iq_a"
                                       << "iq_a must be in -32..32 A (got 32.01)";
-    QTest::newRow("power") << "open_loop" << id({{"power", "1001"}}) << "power"
-                           << "power must be in -1000..1000 (got 1001)";
+    QTest::newRow("power") << "open_loop" << id({{"power", "851"}}) << "power"
+                           << "power must be in -850..850 (got 851)";
     QTest::newRow("power not integer") << "open_loop" << id({{"power", "1.5"}}) << "power"
-                                       << "power must be in -1000..1000 (got 1.5, not an integer)";
+                                       << "power must be in -850..850 (got 1.5, not an integer)";
     QTest::newRow("not a number") << "speed" << id({{"speed_dps", "fast"}}) << "speed_dps"
                                   << "speed_dps must be in -21474836.48..21474836.47 dps "
                                      "(got 'fast', not a number)";

@@ -207,8 +207,8 @@ void tst_Lkctl::encodeRefused_data()
     row("speed too high", "speed --id 1 --speed-dps 21474836.48",
         {"speed_dps", "-21474836.48..21474836.47 dps", "21474836.48"});
     row("torque over 32 A", "torque --id 1 --iq-a 32.01", {"iq_a", "-32..32 A", "32.01"});
-    row("power", "open_loop --id 1 --power -1001", {"power", "-1000..1000", "-1001"});
-    row("power not integer", "open_loop --id 1 --power 2.5", {"power", "-1000..1000", "integer"});
+    row("power", "open_loop --id 1 --power -851", {"power", "-850..850", "-851"});
+    row("power not integer", "open_loop --id 1 --power 2.5", {"power", "-850..850", "integer"});
     row("pid gain",
         "write_pid_ram --id 1 --angle-kp 256 --angle-ki 0 --speed-kp 0 --speed-ki 0 "
         "--iq-kp 0 --iq-ki 0",
