@@ -28,9 +28,9 @@ QString DecodeCommand::example() const
 QString DecodeCommand::usage() const
 {
     return QStringLiteral(
-        "Usage: lkctl decode [--series MS|MF|MG|MH] HEX...\n"
-        "       lkctl decode [--series S] -            hex text on standard input\n"
-        "       lkctl decode [--series S] --binary -   raw bytes on standard input\n"
+        "Usage: lkctl decode [--series MS|MF|MG|MH] [--generation v2.3|v2.35] HEX...\n"
+        "       lkctl decode [--series S] [--generation G] -            hex text on stdin\n"
+        "       lkctl decode [--series S] [--generation G] --binary -   raw bytes on stdin\n"
         "\n"
         "Decode LK RS485 bytes as captured on a bus: many frames, both directions, garbage\n"
         "between them. Prints one compact JSON object per line, in stream order:\n"
@@ -47,6 +47,13 @@ QString DecodeCommand::usage() const
         "\n"
         "Options:\n"
         "  --series S   drive series: MS replies carry power instead of iq (default MF)\n"
+        "  --generation G\n"
+        "               protocol generation of the drives, v2.3 (default) or v2.35 (firmware\n"
+        "               2.35 and later): it decides the read_state1 layout (voltage, bus\n"
+        "               current, motor state, error flags) and the current scales. A\n"
+        "               read_model reply in the stream tells its drive's generation (42 data\n"
+        "               bytes: v2.3, 58: v2.35), which then applies to that ID's later frames\n"
+        "               whatever --generation says: it is what the drive itself reports.\n"
         "  --binary     standard input holds raw bytes, not hex text (implies -)\n"
         "  -            read standard input; frames are printed as they arrive, so a live\n"
         "               pipe is decoded live\n"
@@ -65,6 +72,7 @@ QString DecodeCommand::usage() const
         "Examples:\n"
         "  lkctl decode 3E 80 01 00 BF\n"
         "  lkctl decode --series MS 3E9C01 00DB 3E9C0107E2 1F F4 01 68 01 00 30 AD\n"
+        "  lkctl decode --generation v2.35 3E 9A 01 07 E0 1E 60 09 EC FF 10 01 83\n"
         "  lkctl decode - < capture.txt\n"
         "  cat /dev/ttyUSB0 | lkctl decode --binary -\n"
         "\n"
@@ -104,6 +112,22 @@ std::optional<DecodeCommand::Options> DecodeCommand::parseOptions(const QStringL
                 return std::nullopt;
             }
             o.context.series = *series;
+        } else if (a == QLatin1String("--generation") ||
+                   a.startsWith(QLatin1String("--generation="))) {
+            QString value = a.mid(int(qstrlen("--generation=")));
+            if (!a.contains(QLatin1Char('='))) {
+                if (i + 1 >= args.size()) {
+                    *problem = QStringLiteral("--generation needs a value: v2.3 or v2.35");
+                    return std::nullopt;
+                }
+                value = args.at(++i);
+            }
+            const auto generation = protocol::generationFromName(value);
+            if (!generation) {
+                *problem = QStringLiteral("unknown generation '%1' (v2.3 or v2.35)").arg(value);
+                return std::nullopt;
+            }
+            o.context.generation = *generation;
         } else {
             *problem = QStringLiteral("unknown option '%1'").arg(a);
             return std::nullopt;
@@ -126,22 +150,35 @@ int DecodeCommand::usageError(const QString &problem, Console &console) const
     return kExitUsage;
 }
 
+protocol::DecodeContext DecodeCommand::contextFor(int id) const
+{
+    protocol::DecodeContext c = m_context;
+    c.generation = m_generationById.value(id, m_context.generation);
+    return c;
+}
+
+void DecodeCommand::print(const ParseEvent &event, Console &console)
+{
+    const QJsonObject object = FieldJson::eventObject(event, contextFor(event.frame.id));
+    m_sawFault = m_sawFault || FieldJson::isError(object);
+    console.out(FieldJson::toJsonLine(object) + '\n');
+    // A model reply's length tells its drive's generation (ERRATA "Generations").
+    if (event.isFrame && event.direction == protocol::FrameDirection::Reply &&
+        event.frame.command == quint8(protocol::Command::ReadModel)) {
+        m_generationById.insert(event.frame.id, event.frame.data.size() == 42
+                                                    ? protocol::Generation::V2_3
+                                                    : protocol::Generation::V2_35);
+    }
+}
+
 void DecodeCommand::feed(const QByteArray &bytes, Console &console)
 {
-    m_parser.feed(bytes, [this, &console](const ParseEvent &event) {
-        const QJsonObject object = FieldJson::eventObject(event, m_context);
-        m_sawFault = m_sawFault || FieldJson::isError(object);
-        console.out(FieldJson::toJsonLine(object) + '\n');
-    });
+    m_parser.feed(bytes, [this, &console](const ParseEvent &event) { print(event, console); });
 }
 
 int DecodeCommand::finish(Console &console)
 {
-    m_parser.finish([this, &console](const ParseEvent &event) {
-        const QJsonObject object = FieldJson::eventObject(event, m_context);
-        m_sawFault = m_sawFault || FieldJson::isError(object);
-        console.out(FieldJson::toJsonLine(object) + '\n');
-    });
+    m_parser.finish([this, &console](const ParseEvent &event) { print(event, console); });
     console.flush();
     return m_sawFault ? kExitBadData : kExitOk;
 }
@@ -224,6 +261,7 @@ int DecodeCommand::run(const QStringList &args, Console &console)
         return usageError(problem + QStringLiteral(" (see lkctl decode --help)"), console);
     m_parser.reset();
     m_context = options->context;
+    m_generationById.clear();
     m_sawFault = false;
     if (!options->fromStdin)
         return decodeArguments(*options, console);

@@ -6,6 +6,7 @@
 #include "protocol/StreamParser.h"
 
 #include <QtCore/QByteArray>
+#include <QtCore/QHash>
 
 namespace lk::lkctl {
 
@@ -34,9 +35,13 @@ private:
     void feed(const QByteArray &bytes, Console &console);
     int finish(Console &console);
     int usageError(const QString &problem, Console &console) const;
+    void print(const protocol::ParseEvent &event, Console &console);
+    protocol::DecodeContext contextFor(int id) const;
 
     protocol::StreamParser m_parser;
     protocol::DecodeContext m_context;
+    /// Generations told by 0x12 replies in the stream: they win over --generation.
+    QHash<int, protocol::Generation> m_generationById;
     bool m_sawFault = false;
 };
 

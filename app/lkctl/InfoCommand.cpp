@@ -6,6 +6,7 @@
 #include "ReplyText.h"
 
 #include <protocol/FieldJson.h>
+#include <protocol/RequestBuilder.h>
 
 namespace lk::lkctl {
 
@@ -27,14 +28,18 @@ QString InfoCommand::usage() const
     return QStringLiteral(
                "Usage: lkctl info ID (--port DEV [--baud N] | --sim SPEC) [--json]\n"
                "\n"
-               "Read drive ID's model (read_model), state 1 (read_state1), PID gains\n"
-               "(read_pid) and acceleration (read_accel) and show them.\n"
+               "Read drive ID's model (read_model), state 1 (read_state1), PID gains and\n"
+               "acceleration and show them. A V2.3 drive answers read_pid and read_accel; a\n"
+               "V2.35 drive (firmware 2.35 and later) has neither: its gains come from\n"
+               "read_param (angle_pid, speed_pid, iq_pid) under the same names plus *_kd, and\n"
+               "its own limits and ramps (max_torque, max_speed, max_angle, current_ramp,\n"
+               "speed_ramp) are shown beside them.\n"
                "\n"
                "Options:\n"
-               "  --json   one JSON object: {\"id\":3,\"series\":\"MF\",\"model\":{...},"
-               "\"state1\":{...},\n"
-               "           \"pid\":{...},\"accel\":{...}}, each part with the CLI.md fields "
-               "of its reply\n"
+               "  --json   one JSON object: {\"id\":3,\"series\":\"MF\",\"generation\":\"v2.3\",\n"
+               "           \"model\":{...},\"state1\":{...},\"pid\":{...},\"accel\":{...}} (V2.3)\n"
+               "           or ...\"pid\":{...},\"params\":{...}} (V2.35), each part with the\n"
+               "           CLI.md fields of its reply\n"
                "\n"
                "%1"
                "\n"
@@ -62,6 +67,7 @@ void InfoCommand::print(Console &console, int id, const LiveBus::Identity &who,
             o.text(QStringLiteral("series"), series);
         else
             o.null(QStringLiteral("series"));
+        o.text(QStringLiteral("generation"), protocol::generationName(who.model.generation));
         o.fields(QStringLiteral("model"), modelFields);
         for (const auto &[key, fields] : parts)
             o.fields(key, fields);
@@ -107,20 +113,74 @@ int InfoCommand::run(const QStringList &args, Console &console)
     if (!who)
         return kExitFailure;
     QList<QPair<QString, QJsonObject>> parts;
-    bool failed = false;
+    const bool failed = who->model.generation == protocol::Generation::V2_3
+                            ? !readV23(bus, *id, parts)
+                            : !readV235(bus, *id, parts);
+    print(console, *id, *who, parts, parser.isSet(QStringLiteral("json")));
+    return failed ? kExitFailure : kExitOk;
+}
+
+bool InfoCommand::readInto(LiveBus &bus, const protocol::Request &request, QJsonObject &into)
+{
+    const bus::RequestResult r = bus.request(request);
+    if (!r.ok() || !r.reply) {
+        bus.reportFailure(r);
+        return false;
+    }
+    QJsonObject fields = FieldJson::replyFields(*r.reply);
+    fields.remove(QStringLiteral("param")); // parameter replies: the object's key says which
+    fields.remove(QStringLiteral("param_id"));
+    for (auto it = fields.begin(); it != fields.end(); ++it)
+        into.insert(it.key(), it.value());
+    return true;
+}
+
+bool InfoCommand::readV23(LiveBus &bus, int id, QList<QPair<QString, QJsonObject>> &parts)
+{
+    bool ok = true;
     for (const auto &[key, command] : {std::pair{"state1", Command::ReadState1},
                                        {"pid", Command::ReadPid},
                                        {"accel", Command::ReadAccel}}) {
-        const bus::RequestResult r = bus.request(command, *id);
-        if (!r.ok() || !r.reply) {
-            bus.reportFailure(r);
-            failed = true;
-            continue;
-        }
-        parts.append({QLatin1String(key), FieldJson::replyFields(*r.reply)});
+        QJsonObject fields;
+        if (readInto(bus, *protocol::build::plain(command, id).request, fields))
+            parts.append({QLatin1String(key), fields});
+        else
+            ok = false;
     }
-    print(console, *id, *who, parts, parser.isSet(QStringLiteral("json")));
-    return failed ? kExitFailure : kExitOk;
+    return ok;
+}
+
+bool InfoCommand::readV235(LiveBus &bus, int id, QList<QPair<QString, QJsonObject>> &parts)
+{
+    // V2.35 has no 0x30/0x33 (V2.35.md section 3): the gains come from the parameter table,
+    // under the V2.3 names plus *_kd, and the drive's own limits and ramps beside them.
+    using protocol::ParamId;
+    bool ok = true;
+    QJsonObject state1, pid, params;
+    ok &= readInto(bus, *protocol::build::plain(Command::ReadState1, id).request, state1);
+    for (ParamId p : {ParamId::AnglePid, ParamId::SpeedPid, ParamId::CurrentPid})
+        ok &= readInto(bus, *protocol::build::readParam(id, p).request, pid);
+    for (ParamId p :
+         {ParamId::MaxTorqueCurrent, ParamId::MaxSpeed, ParamId::CurrentRamp, ParamId::SpeedRamp})
+        ok &= readInto(bus, *protocol::build::readParam(id, p).request, params);
+    QJsonObject low, high;
+    if (readInto(bus, *protocol::build::readParam(id, ParamId::MaxAngleLow).request, low) &&
+        readInto(bus, *protocol::build::readParam(id, ParamId::MaxAngleHigh).request, high)) {
+        const qint64 raw =
+            (qint64(high.value(QStringLiteral("max_angle_half_raw")).toInteger()) << 32) |
+            qint64(low.value(QStringLiteral("max_angle_half_raw")).toInteger());
+        params.insert(QStringLiteral("max_angle_deg"), double(raw) / 100.0);
+        params.insert(QStringLiteral("max_angle_raw"), raw);
+    } else {
+        ok = false;
+    }
+    if (!state1.isEmpty())
+        parts.append({QStringLiteral("state1"), state1});
+    if (!pid.isEmpty())
+        parts.append({QStringLiteral("pid"), pid});
+    if (!params.isEmpty())
+        parts.append({QStringLiteral("params"), params});
+    return ok;
 }
 
 } // namespace lk::lkctl

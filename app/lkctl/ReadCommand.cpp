@@ -7,6 +7,7 @@
 
 #include <motor/SeriesLimits.h>
 #include <protocol/FieldJson.h>
+#include <protocol/RequestBuilder.h>
 
 #include <QtCore/QList>
 
@@ -98,6 +99,36 @@ QString ReadCommand::usage() const
         .arg(BusOptions::helpText(), exitStatusText());
 }
 
+bool ReadCommand::readInto(LiveBus &bus, Command command, int id, QJsonObject &fields)
+{
+    const bus::RequestResult r = bus.request(command, id);
+    if (!r.ok() || !r.reply) {
+        bus.reportFailure(r);
+        return false;
+    }
+    fields = protocol::FieldJson::replyFields(*r.reply);
+    return true;
+}
+
+bool ReadCommand::readV235Gains(LiveBus &bus, int id, QJsonObject &fields)
+{
+    // The three loop parameters under the V2.3 names plus *_kd (V2.35.md section 6).
+    using protocol::ParamId;
+    for (ParamId p : {ParamId::AnglePid, ParamId::SpeedPid, ParamId::CurrentPid}) {
+        const bus::RequestResult r = bus.request(*protocol::build::readParam(id, p).request);
+        if (!r.ok() || !r.reply) {
+            bus.reportFailure(r);
+            return false;
+        }
+        const QJsonObject part = protocol::FieldJson::replyFields(*r.reply);
+        for (auto it = part.begin(); it != part.end(); ++it) {
+            if (it.key() != QLatin1String("param") && it.key() != QLatin1String("param_id"))
+                fields.insert(it.key(), it.value());
+        }
+    }
+    return true;
+}
+
 int ReadCommand::run(const QStringList &args, Console &console)
 {
     ArgParser parser = makeParser();
@@ -124,28 +155,28 @@ int ReadCommand::run(const QStringList &args, Console &console)
     LiveBus bus(console, name());
     if (!bus.open(*busOptions))
         return kExitFailure;
-    if (*command == Command::ReadState2 || *command == Command::ReadState3) {
-        const std::optional<LiveBus::Identity> who = bus.identify(*id);
-        if (!who)
-            return kExitFailure;
-        if (who->series && !motor::supports(*who->series, *command)) {
-            bus.error(QStringLiteral("drive %1 is %2: that series has no %3")
-                          .arg(*id)
-                          .arg(protocol::seriesName(*who->series),
-                               protocol::CommandTable::name(*command)));
-            return kExitFailure;
-        }
-    }
-    const bus::RequestResult r = bus.request(*command, *id);
-    if (!r.ok() || !r.reply) {
-        bus.reportFailure(r);
+    // The model first: its series and generation decide what may be asked and how the
+    // replies read (a V2.35 drive has no read_pid; its gains are parameters).
+    const std::optional<LiveBus::Identity> who = bus.identify(*id);
+    if (!who)
+        return kExitFailure;
+    if (who->series && !motor::supports(*who->series, *command)) {
+        bus.error(
+            QStringLiteral("drive %1 is %2: that series has no %3")
+                .arg(*id)
+                .arg(protocol::seriesName(*who->series), protocol::CommandTable::name(*command)));
         return kExitFailure;
     }
-    const QJsonObject fields = protocol::FieldJson::replyFields(*r.reply);
+    QJsonObject fields;
+    const bool v235Gains =
+        *command == Command::ReadPid && who->model.generation == protocol::Generation::V2_35;
+    if (v235Gains ? !readV235Gains(bus, *id, fields) : !readInto(bus, *command, *id, fields))
+        return kExitFailure;
     if (parser.isSet(QStringLiteral("json"))) {
         OrderedJson o;
-        o.text(QStringLiteral("command"), protocol::CommandTable::name(*command))
-            .text(QStringLiteral("code"), protocol::CommandTable::codeText(quint8(*command)))
+        const Command sent = v235Gains ? Command::ReadParam : *command; // what went on the wire
+        o.text(QStringLiteral("command"), protocol::CommandTable::name(sent))
+            .text(QStringLiteral("code"), protocol::CommandTable::codeText(quint8(sent)))
             .integer(QStringLiteral("id"), *id)
             .fields(QStringLiteral("fields"), fields);
         console.out(o.toJson() + '\n');

@@ -1,6 +1,9 @@
 #pragma once
 
+#include "LiveBus.h"
 #include "LiveCommand.h"
+
+#include <QtCore/QJsonObject>
 
 #include <protocol/Command.h>
 
@@ -20,6 +23,11 @@ public:
 
     /// "state2" -> read_state2; nullopt for anything else.
     static std::optional<protocol::Command> commandFor(const QString &what);
+
+private:
+    static bool readInto(LiveBus &bus, protocol::Command command, int id, QJsonObject &fields);
+    /// `pid` on a V2.35 drive: read_param of the three loops, V2.3 field names plus *_kd.
+    static bool readV235Gains(LiveBus &bus, int id, QJsonObject &fields);
 };
 
 } // namespace lk::lkctl

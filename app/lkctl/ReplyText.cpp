@@ -1,5 +1,7 @@
 #include "ReplyText.h"
 
+#include <protocol/ErrorFlags.h>
+
 #include <QtCore/QList>
 
 #include <algorithm>
@@ -25,7 +27,9 @@ const QList<FieldLabel> &labels()
         {"hardware_version", "hardware version", "", 1, true},
         {"firmware_version", "firmware version", "", 2, true},
         {"temperature_c", "temperature", "C", -1, true},
-        {"voltage_v", "voltage", "V", 1, false},
+        {"voltage_v", "voltage", "V", 1, false}, // 2 places for V2.35's 0.01 V (valueText)
+        {"bus_current_a", "bus current", "A", 2, false},
+        {"motor_on", "motor on", "", -1, true},
         {"error_state", "errors", "", -1, true},
         {"iq_a", "torque current", "A", 3, true},
         {"power", "power", "(of 1000)", -1, true},
@@ -43,17 +47,27 @@ const QList<FieldLabel> &labels()
         {"angle_ki", "angle Ki", "", -1, true},
         {"speed_kp", "speed Kp", "", -1, true},
         {"speed_ki", "speed Ki", "", -1, true},
+        {"angle_kd", "angle Kd", "", -1, true},
+        {"speed_kd", "speed Kd", "", -1, true},
         {"iq_kp", "iq Kp", "", -1, true},
         {"iq_ki", "iq Ki", "", -1, true},
+        {"iq_kd", "iq Kd", "", -1, true},
         {"accel_dps2", "acceleration", "dps/s", -1, true},
+        {"max_torque", "max torque current", "(of 2048)", -1, true},
+        {"max_angle_deg", "max angle", "deg", 2, false},
+        {"current_ramp", "current ramp", "", -1, true},
+        {"speed_ramp_dps2", "speed ramp", "dps/s", -1, true},
     };
     return kLabels;
 }
 
-QString valueText(const FieldLabel &l, const QJsonValue &v)
+QString valueText(const FieldLabel &l, const QJsonValue &v, const QJsonObject &fields)
 {
     if (QLatin1String(l.key) == QLatin1String("error_state"))
-        return ReplyText::errorText(v.toInt());
+        return ReplyText::errorText(v.toInt(), fields);
+    if (QLatin1String(l.key) == QLatin1String("voltage_v") &&
+        fields.contains(QStringLiteral("bus_current_a")))
+        return QString::number(v.toDouble(), 'f', 2) + QStringLiteral(" V");
     if (v.isString())
         return v.toString();
     if (v.isBool())
@@ -81,20 +95,22 @@ QString ReplyText::number(double value, int decimals)
     return t == QLatin1String("-0") ? QStringLiteral("0") : t;
 }
 
-QString ReplyText::errorText(int errorState)
+QString ReplyText::errorText(int errorState, protocol::Generation generation)
 {
-    QStringList flags;
-    if (errorState & 0x01)
-        flags << QStringLiteral("low voltage");
-    if (errorState & 0x08)
-        flags << QStringLiteral("over temperature");
-    if (errorState & ~0x09)
-        flags << QStringLiteral("unknown bits");
+    const QStringList flags = protocol::ErrorFlags::words(quint8(errorState), generation);
     if (flags.isEmpty())
         return QStringLiteral("none");
     return QStringLiteral("%1 (0x%2)")
         .arg(flags.join(QStringLiteral(", ")))
         .arg(errorState, 2, 16, QLatin1Char('0'));
+}
+
+QString ReplyText::errorText(int errorState, const QJsonObject &fields)
+{
+    // read_state1's fields name every flag of the drive's generation (FieldJson): eight
+    // keys from a V2.35 drive, two from a V2.3 one. Their presence tells the generation.
+    const bool v235 = fields.contains(QStringLiteral("bus_current_a"));
+    return errorText(errorState, v235 ? protocol::Generation::V2_35 : protocol::Generation::V2_3);
 }
 
 QStringList ReplyText::lines(const QJsonObject &fields, const QString &indent)
@@ -109,7 +125,8 @@ QStringList ReplyText::lines(const QJsonObject &fields, const QString &indent)
         const QJsonValue v = fields.value(QLatin1String(l.key));
         if (v.isUndefined())
             continue;
-        out << indent + QString::fromLatin1(l.label).leftJustified(width + 2) + valueText(l, v);
+        out << indent + QString::fromLatin1(l.label).leftJustified(width + 2) +
+                   valueText(l, v, fields);
     }
     return out;
 }

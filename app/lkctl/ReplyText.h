@@ -1,5 +1,7 @@
 #pragma once
 
+#include <protocol/Series.h>
+
 #include <QtCore/QJsonObject>
 #include <QtCore/QString>
 #include <QtCore/QStringList>
@@ -14,7 +16,10 @@ public:
     /// booleans (folded into "errors") are left out.
     static QStringList lines(const QJsonObject &fields, const QString &indent = QString());
     /// "none" or "low voltage, over temperature (0x09)".
-    static QString errorText(int errorState);
+    /// "over-current, stall (0x50)" with the flags `generation` names, or "none".
+    static QString errorText(int errorState, protocol::Generation generation);
+    /// The same for a read_state1 `fields` object, whose keys tell the generation.
+    static QString errorText(int errorState, const QJsonObject &fields);
     /// A number as a person reads it: `decimals` places, trailing zeros trimmed.
     static QString number(double value, int decimals);
 };

@@ -5,11 +5,48 @@
 #include "OrderedJson.h"
 #include "ReplyText.h"
 
+#include <protocol/ErrorFlags.h>
+
+#include <QtCore/QJsonArray>
+#include <QtCore/QJsonDocument>
 #include <protocol/Series.h>
 
 namespace lk::lkctl {
 
 namespace {
+
+/// read_state1's values as the generation reads them: bus current and motor state exist only
+/// on V2.35 (null otherwise); `errors` names the set flags the generation defines.
+void addState(OrderedJson &o, const bus::FoundMotor &m)
+{
+    if (!m.state1 || !m.modelKnown) {
+        // Without the model the generation, and so the layout, is unknown: show nothing
+        // rather than a voltage read with the wrong layout.
+        for (const char *key :
+             {"temperature_c", "voltage_v", "bus_current_a", "motor_on", "error_state", "errors"})
+            o.null(QLatin1String(key));
+        return;
+    }
+    const protocol::State1 &s = *m.state1;
+    o.integer(QStringLiteral("temperature_c"), s.temperatureC)
+        .real(QStringLiteral("voltage_v"), s.voltageV());
+    if (const std::optional<double> a = s.busCurrentA())
+        o.real(QStringLiteral("bus_current_a"), *a);
+    else
+        o.null(QStringLiteral("bus_current_a"));
+    if (const std::optional<bool> on = s.motorOn())
+        o.boolean(QStringLiteral("motor_on"), *on);
+    else
+        o.null(QStringLiteral("motor_on"));
+    o.integer(QStringLiteral("error_state"), s.errorState);
+    QStringList errors;
+    for (const protocol::ErrorFlag &f : protocol::ErrorFlags::set(s.errorState, s.generation))
+        errors << QLatin1String(f.key);
+    if (protocol::ErrorFlags::unnamedBits(s.errorState, s.generation))
+        errors << QStringLiteral("unknown_bits");
+    o.raw(QStringLiteral("errors"),
+          QJsonDocument(QJsonArray::fromStringList(errors)).toJson(QJsonDocument::Compact));
+}
 
 /// CLI.md's shape; a drive whose read_model went unanswered has nulls, not empty names and
 /// version 0. With a baud sweep each entry says at which baud it answered.
@@ -34,6 +71,11 @@ QByteArray jsonArray(const QVector<bus::FoundMotor> &motors, bool withBaud)
             o.text(QStringLiteral("series"), protocol::seriesName(*m.series));
         else
             o.null(QStringLiteral("series"));
+        if (m.modelKnown)
+            o.text(QStringLiteral("generation"), protocol::generationName(m.model.generation));
+        else
+            o.null(QStringLiteral("generation"));
+        addState(o, m);
         if (withBaud)
             o.integer(QStringLiteral("baud"), m.baud);
         out += (i > 0 ? "," : "") + o.toJson();
@@ -56,12 +98,18 @@ QStringList tableRow(const bus::FoundMotor &m, bool withBaud)
                                  : QStringLiteral("-"),
                     m.modelKnown ? versionText(m.model.firmwareVersion(), m.model.divisor())
                                  : QStringLiteral("-")};
-    if (m.state1) {
-        row << QStringLiteral("%1 C").arg(m.state1->temperatureC)
-            << QStringLiteral("%1 V").arg(m.state1->voltageV(), 0, 'f', 1)
-            << ReplyText::errorText(m.state1->errorState);
+    if (m.state1 && m.modelKnown) {
+        const protocol::State1 &s = *m.state1;
+        const bool v23 = s.generation == protocol::Generation::V2_3;
+        row << (v23 ? QStringLiteral("V2.3") : QStringLiteral("V2.35"))
+            << QStringLiteral("%1 C").arg(s.temperatureC)
+            << QStringLiteral("%1 V").arg(s.voltageV(), 0, 'f', v23 ? 1 : 2)
+            << (s.busCurrentA() ? QStringLiteral("%1 A").arg(*s.busCurrentA(), 0, 'f', 2)
+                                : QStringLiteral("-"))
+            << ReplyText::errorText(s.errorState, s.generation);
     } else {
-        row << QStringLiteral("-") << QStringLiteral("-") << QStringLiteral("-");
+        row << QStringLiteral("-") << QStringLiteral("-") << QStringLiteral("-")
+            << QStringLiteral("-") << QStringLiteral("-");
     }
     if (withBaud)
         row << QString::number(m.baud);
@@ -70,8 +118,8 @@ QStringList tableRow(const bus::FoundMotor &m, bool withBaud)
 
 void printTable(Console &console, const QVector<bus::FoundMotor> &motors, bool withBaud)
 {
-    QList<QStringList> rows{
-        {"ID", "Series", "Driver", "Motor", "HW", "FW", "Temp", "Voltage", "Errors"}};
+    QList<QStringList> rows{{"ID", "Series", "Driver", "Motor", "HW", "FW", "Protocol", "Temp",
+                             "Voltage", "Current", "Errors"}};
     if (withBaud)
         rows.first() << QStringLiteral("Baud");
     for (const bus::FoundMotor &m : motors)
@@ -125,10 +173,18 @@ QString ScanCommand::usage() const
                "  --json              print exactly one JSON array:\n"
                "    [{\"id\":3,\"driver_name\":\"...\",\"motor_name\":\"MF4015\","
                "\"hardware_version\":1.0,\n"
-               "      \"firmware_version\":2.3,\"series\":\"MF\"}]   (series null when the "
-               "model names none;\n"
-               "    names and versions null when the drive answered but read_model did not;\n"
-               "    with --sweep-bauds each entry also has \"baud\")\n"
+               "      \"firmware_version\":2.3,\"series\":\"MF\",\"generation\":\"v2.3\",\n"
+               "      \"temperature_c\":31,\"voltage_v\":24.1,\"bus_current_a\":null,"
+               "\"motor_on\":null,\n"
+               "      \"error_state\":0,\"errors\":[]}]\n"
+               "    series null when the model names none; names, versions, generation and\n"
+               "    the state null when the drive answered but read_model did not (without\n"
+               "    the generation its state cannot be read); bus_current_a and motor_on\n"
+               "    exist on V2.35 drives only (null on V2.3); errors lists the set flags by\n"
+               "    name: low_voltage, over_temperature (V2.3); low_voltage, over_voltage,\n"
+               "    driver_over_temperature, motor_over_temperature, over_current,\n"
+               "    short_circuit, stall, input_timeout (V2.35); unknown_bits for the rest;\n"
+               "    with --sweep-bauds each entry also has \"baud\"\n"
                "\n"
                "%1"
                "\n"

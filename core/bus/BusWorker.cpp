@@ -243,9 +243,32 @@ void BusWorker::submit(BusRequest request, Completion done)
         complete(std::move(p), RequestStatus::Disconnected, std::nullopt, why, 0);
         return;
     }
+    if (const std::optional<QString> why = unavailableReason(request.request)) {
+        complete(std::move(p), RequestStatus::Error, std::nullopt, *why, 0);
+        return;
+    }
     p.bytes = request.request.encode();
     m_queue.push(std::move(p));
     schedulePump();
+}
+
+std::optional<QString> BusWorker::unavailableReason(const protocol::Request &request) const
+{
+    // Nothing a drive's generation lacks is sent to it (V2.35.md section 3): it would stay
+    // silent and the timeout would blame the wiring. Known only once its model was read.
+    const auto it = m_motors.all().constFind(request.id);
+    if (it == m_motors.all().cend() || !it->model ||
+        protocol::CommandTable::availableOn(request.command, it->generation))
+        return std::nullopt;
+    return it->generation == protocol::Generation::V2_35
+               ? tr("drive %1 runs firmware 2.35 or later (protocol V2.35), which has no %2; "
+                    "nothing was sent")
+                     .arg(request.id)
+                     .arg(protocol::CommandTable::name(request.command))
+               : tr("drive %1 speaks protocol V2.3, which has no %2 (firmware 2.35 added it); "
+                    "nothing was sent")
+                     .arg(request.id)
+                     .arg(protocol::CommandTable::name(request.command));
 }
 
 int BusWorker::queuedCount() const
@@ -480,7 +503,12 @@ void BusWorker::completeWithReply(protocol::Reply reply)
 
 void BusWorker::noteReply(const protocol::Reply &reply, double time)
 {
-    if (m_motors.noteSeen(reply.id))
+    bool changed = m_motors.noteSeen(reply.id);
+    // A model reply tells the drive's generation, whoever asked for it (a scan, lkctl info,
+    // the drive-info view): later replies from it are decoded with its layouts.
+    if (const auto *model = std::get_if<protocol::ModelInfo>(&reply.payload))
+        changed = m_motors.learnModel(reply.id, *model, std::nullopt) || changed;
+    if (changed)
         emit knownMotorsChanged(m_motors.all());
     if (std::optional<TelemetrySample> s = TelemetrySample::fromReply(reply, time))
         m_telemetry.add(*s);

@@ -161,6 +161,8 @@ private:
                        const QString &text = {});
     void setPollingSuspended(bool suspended);
     int retriesFor(const BusRequest &r) const;
+    /// Why `request` must not be sent: its drive's generation lacks the command.
+    std::optional<QString> unavailableReason(const protocol::Request &request) const;
     /// Whether sending `command` again after a timeout or a corrupt reply is harmless.
     static bool isRetrySafe(protocol::Command command);
 

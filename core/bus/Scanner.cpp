@@ -205,6 +205,10 @@ void Scanner::onModel(const RequestResult &r, FoundMotor motor)
         motor.model = std::get<protocol::ModelInfo>(r.reply->payload);
         motor.modelKnown = true;
         motor.series = inferSeries(motor.model);
+        // The probe was read before the generation was known: read it again with the right
+        // layout (a V2.35 drive's 24 V would otherwise show as 308 V).
+        if (motor.state1)
+            motor.state1 = motor.state1->as(motor.model.generation);
         m_worker.learnModel(motor.id, motor.model, motor.series);
     } else {
         // It answered read_state1, so it is there; its model stays unknown.

@@ -108,6 +108,7 @@ struct PayloadEncoder {
 State1 readState1(const WireReader &r, Generation generation)
 {
     State1 s;
+    s.wire = r.bytes();
     s.generation = generation;
     s.temperatureC = r.get<qint8>(0);
     s.errorState = r.get<quint8>(6);
@@ -212,6 +213,13 @@ ReplyPayload decodePayload(Command cmd, const QByteArray &d, const DecodeContext
 }
 
 } // namespace
+
+State1 State1::as(Generation g) const
+{
+    if (wire.size() != 7 || g == generation)
+        return *this;
+    return readState1(WireReader(wire), g);
+}
 
 Frame Reply::toFrame() const
 {

@@ -27,4 +27,21 @@ std::optional<Series> seriesFromName(const QString &name)
     return std::nullopt;
 }
 
+QString generationName(Generation g)
+{
+    return g == Generation::V2_3 ? QStringLiteral("v2.3") : QStringLiteral("v2.35");
+}
+
+std::optional<Generation> generationFromName(const QString &name)
+{
+    QString n = name.trimmed().toLower();
+    if (n.startsWith(QLatin1Char('v')))
+        n.remove(0, 1);
+    if (n == QLatin1String("2.3"))
+        return Generation::V2_3;
+    if (n == QLatin1String("2.35"))
+        return Generation::V2_35;
+    return std::nullopt;
+}
+
 } // namespace lk::protocol

@@ -21,5 +21,8 @@ struct DecodeContext {
 
 QString seriesName(Series s);                              ///< "MS", "MF", ...
 std::optional<Series> seriesFromName(const QString &name); ///< case-insensitive
+QString generationName(Generation g);                      ///< "v2.3", "v2.35"
+/// "v2.3"/"v2.35" (also "2.3", "V2.35"); case-insensitive.
+std::optional<Generation> generationFromName(const QString &name);
 
 } // namespace lk::protocol

@@ -6,6 +6,7 @@
 
 #include "Series.h"
 
+#include <array>
 #include <optional>
 
 namespace lk::protocol {
@@ -95,6 +96,11 @@ struct State1 {
     Generation generation = Generation::V2_3;
     qint16 busCurrentRaw = 0; ///< V2.35 only: 0.01 A
     quint8 motorStateRaw = 0; ///< V2.35 only: 0x00 on, 0x10 off
+    /// The seven data bytes as received (empty when built by hand): a reply read before the
+    /// drive's generation was known (a scan's first probe) can be read again with as().
+    QByteArray wire;
+    /// The same reply read with `g`'s layout; itself when no wire bytes were kept.
+    State1 as(Generation g) const;
     double voltageV() const
     {
         return generation == Generation::V2_3 ? voltageRaw * 0.1

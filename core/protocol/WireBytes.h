@@ -37,6 +37,7 @@ public:
         Q_ASSERT(offset + qsizetype(sizeof(T)) <= m_bytes.size());
         return qFromLittleEndian<T>(m_bytes.constData() + offset);
     }
+    const QByteArray &bytes() const { return m_bytes; }
 
 private:
     const QByteArray &m_bytes;

@@ -51,11 +51,25 @@ std::optional<SimBusSpec> SimBusSpec::parse(const QString &text, QString *error)
         if (seen.contains(id))
             return fail(QStringLiteral("'%1': ID %2 is given twice").arg(item).arg(id));
         QStringList parts = seriesText.split(QLatin1Char('+'));
-        auto model = modelFor(parts.takeFirst().trimmed());
+        QString modelText = parts.takeFirst().trimmed();
+        QString firmware;
+        if (const qsizetype at = modelText.indexOf(QLatin1Char('@')); at >= 0) {
+            firmware = modelText.mid(at + 1).trimmed();
+            modelText = modelText.left(at).trimmed();
+        }
+        auto model = modelFor(modelText);
         if (!model)
             return fail(QStringLiteral("'%1': unknown series '%2' (expected MS, MF, MG, MH "
                                        "or a motor name such as MG5010E-i10)")
                             .arg(item, seriesText));
+        if (!firmware.isEmpty()) {
+            const auto generation = protocol::generationFromName(firmware);
+            if (!generation)
+                return fail(QStringLiteral("'%1': unknown firmware '%2' (2.3 or 2.35)")
+                                .arg(item, firmware));
+            if (*generation == protocol::Generation::V2_35)
+                model->useFirmware235();
+        }
         for (const QString &quirk : parts) {
             if (!model->quirks.enable(quirk.trimmed()))
                 return fail(QStringLiteral("'%1': unknown firmware quirk '%2' (known: %3)")
@@ -74,7 +88,10 @@ QString SimBusSpec::toString() const
     for (const Entry &e : drives) {
         const bool standard =
             e.model.motorName == SimDriveModel::forSeries(e.model.series).motorName;
-        QStringList model{standard ? protocol::seriesName(e.model.series) : e.model.motorName};
+        QString name = standard ? protocol::seriesName(e.model.series) : e.model.motorName;
+        if (e.model.generation == protocol::Generation::V2_35)
+            name += QStringLiteral("@2.35");
+        QStringList model{name};
         model << e.model.quirks.names();
         parts << QStringLiteral("%1:%2").arg(e.id).arg(model.join(QLatin1Char('+')));
     }

@@ -14,6 +14,8 @@ namespace lk::sim {
 /// Each entry is ID:SERIES (ID 1..32, series MS/MF/MG/MH, case-insensitive) or ID:MOTOR with
 /// a motor name that starts with a series ("5:MG5010E-i36", "6:MF4015-18bit"), optionally
 /// followed by firmware quirks the drive copies ("3:MF+accel-ignored", see FirmwareQuirks).
+/// "@2.35" after the model makes a firmware-2.35 drive speaking V2.35 ("1:MS4015@2.35");
+/// "@2.3" (the default) a V2.3 one.
 struct SimBusSpec {
     struct Entry {
         int id = 1;

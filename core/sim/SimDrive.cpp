@@ -40,6 +40,10 @@ SimDrive::SimDrive(int id, const SimDriveModel &model, const SimRom &rom)
     // Spread the drives' initial shaft angles (golden angle) so that a bus does not look
     // cloned; deterministic for tests.
     m_physics.setPositionDeg(positiveMod(id * 137.508, 360.0));
+    if (m_rom.params.maxSpeedRaw <= 0) // factory setting: the series maximum
+        m_rom.params.maxSpeedRaw = static_cast<qint32>(m_limits.maxSpeedDps() * 100.0);
+    if (generation() == protocol::Generation::V2_35)
+        m_zeroReplyWithOffset = true; // V2.35 answers 0x19 with the new zero (LEN 2)
     restart();
 }
 
@@ -47,9 +51,12 @@ void SimDrive::restart()
 {
     m_ramPid = m_rom.pid;
     m_ramAccel = m_rom.accelDps2;
+    m_ramParams = m_rom.params;
     m_encoderOffset = static_cast<quint16>(m_rom.encoderZero % m_counts);
     m_physics.setGains(m_ramPid);
     m_physics.setAccelerationDps2(m_ramAccel);
+    if (generation() == protocol::Generation::V2_35)
+        applyParams();
     m_runState = RunState::Off;
     m_command = LoopTarget{};
     m_activeCommand.reset();
@@ -129,10 +136,23 @@ void SimDrive::writeRom()
         m_romWritten(m_id, series(), m_rom);
 }
 
+void SimDrive::applyParams()
+{
+    // V2.35 keeps gains and the speed ramp in the parameter table (V2.35.md section 6).
+    m_ramPid = m_ramParams.physicsGains();
+    m_ramAccel = m_ramParams.speedRampDps2;
+    m_physics.setGains(m_ramPid);
+    m_physics.setAccelerationDps2(m_ramAccel);
+}
+
 std::optional<Reply> SimDrive::handle(const Request &r)
 {
-    if (r.id != m_id || !motor::supports(series(), r.command))
+    // A drive is silent to what its series or its generation does not implement.
+    if (r.id != m_id || !motor::supports(series(), r.command) ||
+        !protocol::CommandTable::availableOn(r.command, generation()))
         return std::nullopt;
+    if (auto reply = handleV235(r))
+        return reply;
     if (auto reply = handleParameter(r))
         return reply;
     if (auto reply = handleRead(r))
@@ -185,6 +205,49 @@ std::optional<Reply> SimDrive::handleParameter(const Request &r)
     case Command::ClearErrors:
         clearErrors();
         return Reply{r.command, r.id, state1()};
+    default:
+        return std::nullopt;
+    }
+}
+
+std::optional<Reply> SimDrive::handleV235(const Request &r)
+{
+    switch (r.command) {
+    case Command::ReadParam: {
+        const auto value = m_ramParams.read(std::get<protocol::ParamRead>(r.payload).paramId);
+        if (!value)
+            return std::nullopt; // an unknown ParamID gets no answer (untested on hardware)
+        return Reply{r.command, r.id, *value};
+    }
+    case Command::WriteParamRam:
+    case Command::WriteParamRom: {
+        const auto value = std::get<protocol::ParameterValue>(r.payload);
+        const bool ok = m_ramParams.write(value);
+        if (ok) {
+            applyParams();
+            if (r.command == Command::WriteParamRom) {
+                m_rom.params.write(value); // 0x44 writes flash and RAM
+                writeRom();
+            }
+        }
+        return Reply{r.command, r.id,
+                     protocol::ParamWriteResult{value.paramId, quint8(ok ? 0 : 1)}};
+    }
+    case Command::Brake: {
+        const auto action = std::get<protocol::BrakeCommand>(r.payload).action;
+        if (action == protocol::BrakeAction::Release)
+            m_brakeReleased = true;
+        else if (action == protocol::BrakeAction::Engage)
+            m_brakeReleased = false;
+        return Reply{r.command, r.id, protocol::BrakeState{quint8(m_brakeReleased ? 1 : 0)}};
+    }
+    case Command::ClearTurnCount: {
+        // The turn count goes, the angle within the (output) turn stays.
+        const double turn = 360.0 * m_gearRatio;
+        const double pos = m_physics.positionDeg();
+        m_refDeg = pos - positiveMod(pos - m_refDeg, turn);
+        return Reply{r.command, r.id, protocol::Acknowledged{}};
+    }
     default:
         return std::nullopt;
     }
@@ -255,8 +318,13 @@ Reply SimDrive::handleMotion(const Request &r)
 
 double SimDrive::maxSpeedFor(const std::optional<quint32> &maxSpeedRaw) const
 {
-    const double seriesMax = m_limits.maxSpeedDps();
-    return maxSpeedRaw ? std::min(seriesMax, *maxSpeedRaw * protocol::kCentiUnits) : seriesMax;
+    double driveMax = m_limits.maxSpeedDps();
+    if (generation() == protocol::Generation::V2_35) // bounded by the stored Max Speed too
+        driveMax = std::min(driveMax, m_ramParams.maxSpeedRaw * protocol::kCentiUnits);
+    // A max speed of 0 still moves: the drive then uses its stored maximum (V2.35.md s.12).
+    if (!maxSpeedRaw || *maxSpeedRaw == 0)
+        return driveMax;
+    return std::min(driveMax, *maxSpeedRaw * protocol::kCentiUnits);
 }
 
 double SimDrive::singleTurnTargetDeg(const protocol::SinglePositionCommand &c) const
@@ -279,7 +347,8 @@ std::optional<LoopTarget> SimDrive::motionTarget(const Request &r) const
         t.voltageFraction = c->power / 1000.0; // not limited by the drive (ERRATA)
     } else if (const auto *c = std::get_if<protocol::TorqueCommand>(&r.payload)) {
         t.mode = LoopMode::Torque;
-        t.currentA = c->iqA(); // not limited by the drive (ERRATA)
+        // Not limited by the drive (ERRATA); V2.35 MF drives use 33/4096 A per LSB.
+        t.currentA = c->iqRaw * protocol::iqCommandAmpsPerLsb(context());
     } else if (const auto *c = std::get_if<protocol::SpeedCommand>(&r.payload)) {
         t.mode = LoopMode::Speed;
         t.speedDps = c->speedDps();
@@ -332,7 +401,7 @@ quint32 SimDrive::singleTurnRaw() const
 
 qint16 SimDrive::iqRaw() const
 {
-    return clampRound<qint16>(iqA() / protocol::kIqReplyAmpsPerLsb, -2048, 2048);
+    return clampRound<qint16>(iqA() / protocol::iqReplyAmpsPerLsb(context()), -2048, 2048);
 }
 
 qint16 SimDrive::powerRaw() const
@@ -346,9 +415,19 @@ qint16 SimDrive::powerRaw() const
 protocol::State1 SimDrive::state1() const
 {
     protocol::State1 s;
+    s.generation = generation();
     s.temperatureC = clampRound<qint8>(temperatureC(), -128, 127);
-    s.voltageRaw = clampRound<quint16>(busVoltage() * 10.0, 0, 65535);
     s.errorState = m_errorState;
+    if (generation() == protocol::Generation::V2_3) {
+        s.voltageRaw = clampRound<quint16>(busVoltage() * 10.0, 0, 65535);
+        return s;
+    }
+    s.voltageRaw = static_cast<quint16>(clampRound<qint16>(busVoltage() * 100.0, 0, 32767));
+    // Bus current: the power the winding draws from the supply.
+    const double supply = std::max(busVoltage(), 1e-3);
+    const double busA = std::fabs(m_physics.voltage() * iqA()) / supply;
+    s.busCurrentRaw = clampRound<qint16>(busA * 100.0, -32768, 32767);
+    s.motorStateRaw = m_runState == RunState::Off ? 0x10 : 0x00;
     return s;
 }
 
@@ -368,9 +447,8 @@ protocol::State3 SimDrive::state3() const
     // Phase currents of a sinusoidal FOC drive with id = 0.
     const double theta = m_physics.electricalAngleRad();
     const double iq = iqA();
-    auto raw = [](double amps) {
-        return clampRound<qint16>(amps / protocol::kPhaseAmpsPerLsb, -32768, 32767);
-    };
+    const double lsb = protocol::phaseAmpsPerLsb(context());
+    auto raw = [lsb](double amps) { return clampRound<qint16>(amps / lsb, -32768, 32767); };
     protocol::State3 s;
     s.temperatureC = clampRound<qint8>(temperatureC(), -128, 127);
     s.iaRaw = raw(-iq * std::sin(theta));
@@ -391,7 +469,13 @@ protocol::ModelInfo SimDrive::modelInfo() const
     m.motorName = m_model.motorName;
     m.hardwareRaw = m_model.hardwareRaw;
     m.firmwareRaw = m_model.firmwareRaw;
-    m.generation = protocol::Generation::V2_3;
+    m.generation = generation();
+    if (generation() == protocol::Generation::V2_35) {
+        m.motorVersionRaw = m_model.motorVersionRaw;
+        // A unique ID that stays the same for the same bus position.
+        m.motorId = QByteArray::fromHex("35373530303273187803") + QByteArray(1, char(0x40 + m_id)) +
+                    QByteArray(1, char(0x4B));
+    }
     return m;
 }
 

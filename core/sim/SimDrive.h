@@ -12,9 +12,10 @@
 
 namespace lk::sim {
 
-/// One simulated LK drive (V2.3 protocol): parameters in RAM and ROM, motion state, error
-/// flags and the physics behind them. Answers typed requests the way the spec and ERRATA.md
-/// say a drive does. Plain value logic: not thread-safe, owned by one thread.
+/// One simulated LK drive: parameters in RAM and ROM, motion state, error flags and the
+/// physics behind them. Answers typed requests the way the spec and ERRATA.md say a V2.3
+/// drive does, or, with a firmware-2.35 model, the way V2.35.md says (silent to the commands
+/// its generation lacks). Plain value logic: not thread-safe, owned by one thread.
 class SimDrive {
 public:
     enum class RunState { Off, Running, Stopped };
@@ -28,6 +29,8 @@ public:
     int id() const { return m_id; }
     const SimDriveModel &model() const { return m_model; }
     protocol::Series series() const { return m_model.series; }
+    protocol::Generation generation() const { return m_model.generation; }
+    protocol::DecodeContext context() const { return {series(), generation()}; }
     const motor::SeriesLimits &limits() const { return m_limits; }
     double gearRatio() const { return m_gearRatio; }
     int encoderCountsPerTurn() const { return m_counts; }
@@ -46,6 +49,8 @@ public:
     std::optional<protocol::Command> activeCommand() const { return m_activeCommand; }
     const LoopTarget &commandTarget() const { return m_command; }
     protocol::PidGains ramPid() const { return m_ramPid; }
+    const SimParams &ramParams() const { return m_ramParams; } ///< V2.35 drives
+    bool brakeReleased() const { return m_brakeReleased; }
     qint32 accelerationDps2() const { return m_ramAccel; }
     const SimRom &rom() const { return m_rom; }
     quint8 errorState() const { return m_errorState; }
@@ -79,6 +84,8 @@ public:
 
 private:
     std::optional<protocol::Reply> handleParameter(const protocol::Request &r);
+    std::optional<protocol::Reply> handleV235(const protocol::Request &r);
+    void applyParams();
     std::optional<protocol::Reply> handleRead(const protocol::Request &r);
     std::optional<protocol::Reply> handleRunState(const protocol::Request &r);
     protocol::Reply handleMotion(const protocol::Request &r);
@@ -102,6 +109,8 @@ private:
     SimRom m_rom;
     protocol::PidGains m_ramPid;
     qint32 m_ramAccel = 0;
+    SimParams m_ramParams;
+    bool m_brakeReleased = false; ///< no physical brake is modelled: the state is remembered
     quint16 m_encoderOffset = 0;
     double m_refDeg = 0; ///< physics angle where multi-turn and single-turn angles are zero
 

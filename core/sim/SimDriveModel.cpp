@@ -22,6 +22,14 @@ motor::ModelNameInfo SimDriveModel::nameInfo() const
     return info;
 }
 
+void SimDriveModel::useFirmware235()
+{
+    generation = protocol::Generation::V2_35;
+    hardwareRaw = 300;
+    motorVersionRaw = 200;
+    firmwareRaw = 235;
+}
+
 SimDriveModel SimDriveModel::forSeries(protocol::Series series)
 {
     static const char *const kMotors[] = {"MS5005", "MF4015", "MG5010E-i10", "MH7015"};

@@ -10,14 +10,19 @@
 
 namespace lk::sim {
 
-/// Identity of a simulated drive, as its 0x12 reply shows it (V2.3 layout).
+/// Identity of a simulated drive, as its 0x12 reply shows it, and its protocol generation.
 struct SimDriveModel {
     protocol::Series series = protocol::Series::MF;
-    QString driverName;      ///< at most 20 Latin-1 characters, e.g. "LK-MF4015-DRV"
-    QString motorName;       ///< e.g. "MF4015"; gear ratio and encoder bits are read from it
-    quint8 hardwareRaw = 10; ///< shown /10: 1.0
-    quint8 firmwareRaw = 23; ///< shown /10: 2.3
-    FirmwareQuirks quirks;   ///< firmware oddities this drive copies (none by default)
+    QString driverName;       ///< at most 20 Latin-1 characters, e.g. "LK-MF4015-DRV"
+    QString motorName;        ///< e.g. "MF4015"; gear ratio and encoder bits are read from it
+    quint16 hardwareRaw = 10; ///< shown /10: 1.0 (V2.35: /100, 300 = 3.00)
+    quint16 firmwareRaw = 23; ///< shown /10: 2.3 (V2.35: /100, 235 = 2.35)
+    /// V2.3 (default) or V2.35: firmware 2.35 and later speak V2.35.md's protocol.
+    protocol::Generation generation = protocol::Generation::V2_3;
+    quint16 motorVersionRaw = 0; ///< V2.35 only
+    /// Switch to firmware 2.35 (hw 3.00, motor 2.00, fw 2.35, as the captured MS4015 reports).
+    void useFirmware235();
+    FirmwareQuirks quirks; ///< firmware oddities this drive copies (none by default)
 
     /// Gear ratio and encoder resolution implied by the motor name (series default otherwise).
     motor::ModelNameInfo nameInfo() const;

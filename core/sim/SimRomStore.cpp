@@ -53,7 +53,35 @@ QJsonObject toJson(int id, protocol::Series series, const SimRom &rom)
     o.insert(QStringLiteral("pid"), pid);
     o.insert(QStringLiteral("accel_dps2"), rom.accelDps2);
     o.insert(QStringLiteral("encoder_zero"), rom.encoderZero);
+    // The V2.35 parameter table, one entry per ParamID: its six value bytes as hex.
+    QJsonObject params;
+    for (const protocol::ParamInfo &info : protocol::ParamTable::all()) {
+        const auto v = rom.params.read(static_cast<quint8>(info.id));
+        QByteArray bytes;
+        for (quint8 b : v->bytes)
+            bytes.append(char(b));
+        params.insert(QLatin1String(info.name), QString::fromLatin1(bytes.toHex()));
+    }
+    o.insert(QStringLiteral("params"), params);
     return o;
+}
+
+// The optional "params" object (files written before V2.35 support have none).
+QString paramsFromJson(const QJsonObject &params, SimParams *out)
+{
+    for (auto it = params.begin(); it != params.end(); ++it) {
+        const auto id = protocol::ParamTable::fromName(it.key());
+        const QByteArray bytes = QByteArray::fromHex(it.value().toString().toLatin1());
+        if (!id || !it.value().isString() || bytes.size() != 6)
+            return QStringLiteral("\"params.%1\" is not a parameter with six hex bytes")
+                .arg(it.key());
+        protocol::ParameterValue v;
+        v.paramId = static_cast<quint8>(*id);
+        for (int i = 0; i < 6; ++i)
+            v.bytes[i] = static_cast<quint8>(bytes[i]);
+        out->write(v);
+    }
+    return {};
 }
 
 // Parses a ROM object; returns an empty string on success, else what is wrong.
@@ -85,7 +113,7 @@ QString fromJson(const QJsonObject &o, int id, protocol::Series *series, SimRom 
     if (!readInt(o, "encoder_zero", 0, 65535, &v))
         return QStringLiteral("\"encoder_zero\" must be an integer 0..65535");
     rom->encoderZero = static_cast<quint16>(v);
-    return {};
+    return paramsFromJson(o.value(QStringLiteral("params")).toObject(), &rom->params);
 }
 } // namespace
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "SimParams.h"
 #include "protocol/Series.h"
 #include "protocol/Values.h"
 
@@ -16,10 +17,12 @@ struct SimRom {
     protocol::PidGains pid{100, 100, 50, 40, 50, 50};
     qint32 accelDps2 = 20000;
     quint16 encoderZero = 0; ///< written by 0x19, becomes the encoder offset at power-on
+    SimParams params;        ///< V2.35 drives: the parameter table written by 0x44
 
     bool operator==(const SimRom &o) const
     {
-        return pid == o.pid && accelDps2 == o.accelDps2 && encoderZero == o.encoderZero;
+        return pid == o.pid && accelDps2 == o.accelDps2 && encoderZero == o.encoderZero &&
+               params == o.params;
     }
     bool operator!=(const SimRom &o) const { return !(*this == o); }
 };

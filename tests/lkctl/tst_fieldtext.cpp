@@ -96,7 +96,7 @@ void tst_FieldText::reply_data()
     QTest::newRow("state1 ok") << Reply{Command::ReadState1, 1, state1(40, 243, 0)}
                                << "T 40 C, 24.3 V";
     QTest::newRow("state1 flags") << Reply{Command::ClearErrors, 1, state1(90, 80, 0x0D)}
-                                  << "T 90 C, 8.0 V, low voltage, over temperature, "
+                                  << "T 90 C, 8.0 V, low voltage, over-temperature, "
                                      "error bits 0x04";
     QTest::newRow("state3") << Reply{Command::ReadState3, 1, State3{30, 64, -32, -1}}
                             << "T 30 C, ia 1.00 A, ib -0.50 A, ic -0.02 A";

@@ -1,0 +1,37 @@
+#pragma once
+
+#include "protocol/Parameter.h"
+#include "protocol/Values.h"
+
+#include <QtCore/QtGlobal>
+
+#include <array>
+#include <optional>
+
+namespace lk::sim {
+
+/// The V2.35 setting parameters (ParamIDs 0x96..0x9E, V2.35.md section 6) of one simulated
+/// drive: one copy lives in RAM, one in ROM.
+struct SimParams {
+    using Pid = std::array<quint16, 3>; ///< Kp, Ki, Kd
+    Pid anglePid{100, 100, 0};
+    Pid speedPid{50, 40, 0};
+    Pid currentPid{50, 50, 0};
+    qint16 maxTorque = 2000; ///< iq command units (+-2048 full scale)
+    qint32 maxSpeedRaw = 0;  ///< 0.01 dps; the drive sets its series maximum when 0
+    qint64 maxAngleRaw = 0;  ///< 0.01 deg; 0 = no angle limit in this simulator
+    qint16 currentRamp = 0;
+    qint32 speedRampDps2 = 20000;
+
+    /// The 0x40 reply value; nullopt for a ParamID the table does not have.
+    std::optional<protocol::ParameterValue> read(quint8 paramId) const;
+    /// Apply a 0x42/0x44 value; false (the drive's failure flag) for an unknown ParamID.
+    bool write(const protocol::ParameterValue &value);
+    /// The gains the physics uses (it models V2.3's 0..255 gains: larger values saturate).
+    protocol::PidGains physicsGains() const;
+
+    bool operator==(const SimParams &o) const;
+    bool operator!=(const SimParams &o) const { return !(*this == o); }
+};
+
+} // namespace lk::sim
