@@ -82,11 +82,20 @@ double AdaptiveTimeout::timeoutS(Command command, int baud) const
     return BusTiming::replyTimeoutS(command, baud, marginS(classOf(command)));
 }
 
+double AdaptiveTimeout::linkLatencyS() const
+{
+    return boundedS(std::max(m_link.quantile(kPercentile), recentLateS()));
+}
+
 double AdaptiveTimeout::quietS(Command command, int baud) const
 {
-    const double latency = std::max(m_link.quantile(kPercentile), recentLateS());
     return BusTiming::kTurnaroundS +
-           BusTiming::wireTimeS(0, BusTiming::maxReplyBytes(command), baud) + boundedS(latency);
+           BusTiming::wireTimeS(0, BusTiming::maxReplyBytes(command), baud) + linkLatencyS();
+}
+
+double AdaptiveTimeout::replyDeadlineS(Command command, int baud) const
+{
+    return BusTiming::replyTimeoutS(command, baud, linkLatencyS());
 }
 
 } // namespace lk::bus

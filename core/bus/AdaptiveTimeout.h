@@ -49,12 +49,17 @@ public:
     /// turnaround, the wire time of its longest reply, and the link's latency (p99 of the
     /// extra latency, or a recent late reply's; at least BusConfig::minMarginMs).
     double quietS(protocol::Command command, int baud) const;
+    /// How long after its send a reply to `command` can arrive from a drive that keeps its
+    /// turnaround: the formula with the longest reply plus that same link latency. A probe's
+    /// short timeout may end before it; then the quiet period lasts until it.
+    double replyDeadlineS(protocol::Command command, int baud) const;
     int samples() const { return m_link.size(); }
 
 private:
     static double extraLatencyS(protocol::Command command, int baud, double latencyS);
     double recentLateS() const { return m_sinceLate < kWindow ? m_lateExtraS : 0; }
     double boundedS(double marginS) const;
+    double linkLatencyS() const; ///< p99 extra latency or a recent late reply's, bounded
 
     BusConfig m_config;
     LatencyWindow m_link{kWindow}; ///< extra latency of every reply but flash writes, seconds

@@ -342,17 +342,25 @@ void BusWorker::onTimeout()
     const protocol::Request &r = m_inflight->req.request;
     m_stats.timedOut(r.id);
     m_matcher.timedOut();
-    beginQuiet(r);
+    beginQuiet(r, m_inflight->attempts == 1 && m_inflight->req.firstTimeoutS > 0);
     recordTraffic(TrafficEvent::Kind::Timeout, {}, r.id, static_cast<quint8>(r.command));
     failAttempt(RequestStatus::Timeout,
                 tr("no reply to %1 after %n attempt(s)", nullptr, m_inflight->attempts)
                     .arg(commandText(r)));
 }
 
-void BusWorker::beginQuiet(const protocol::Request &request)
+void BusWorker::beginQuiet(const protocol::Request &request, bool probe)
 {
     m_quietLengthNs = static_cast<qint64>(m_timeout.quietS(request.command, baud()) * 1e9);
-    m_quietUntilNs = m_clock.nsecsElapsed() + m_quietLengthNs;
+    if (probe) {
+        // Silence is the common answer to a probe (scan, emergency stop), so it is not made
+        // to wait twice: only until a reply from a drive that keeps its turnaround could have
+        // come through this link, counted from the send. Often that is over already.
+        m_quietUntilNs =
+            m_sentNs + static_cast<qint64>(m_timeout.replyDeadlineS(request.command, baud()) * 1e9);
+    } else {
+        m_quietUntilNs = m_clock.nsecsElapsed() + m_quietLengthNs;
+    }
     m_quietId = request.id;
     m_quietCommand = static_cast<quint8>(request.command);
 }

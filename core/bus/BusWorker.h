@@ -45,9 +45,12 @@ class Scanner;
 ///
 /// Quiet period: after a timeout nothing is transmitted until a late reply to the request
 /// could no longer be on its way (AdaptiveTimeout::quietS: the drive's longest turnaround,
-/// the longest reply's wire time and the link's latency). Bytes arriving meanwhile are a
-/// reply in progress and restart it; a complete late reply to that request ends it. Late
-/// replies are counted (BusStatistics) and never taken for the answer to a later request.
+/// the longest reply's wire time and the link's latency). After a probe's short timeout
+/// (scan, emergency stop), where silence is the usual answer, it lasts only until a reply
+/// could have come from a drive that keeps its turnaround (AdaptiveTimeout::replyDeadlineS,
+/// from the send), so that silent IDs stay cheap. Bytes arriving meanwhile are a reply in
+/// progress and restart it (full length); a complete late reply to that request ends it.
+/// Late replies are counted (BusStatistics) and never taken for a later request's answer.
 ///
 /// Retries (BusConfig::retries, BusRequest::retries) never apply to incremental moves or ROM
 /// writes: a drive that acted but whose reply was lost would move twice or write flash twice.
@@ -155,7 +158,8 @@ private:
     qint64 earliestReplyNs(protocol::Command command) const;
     void onTimeout();
     /// The request on the wire timed out: hold transmissions until its reply cannot come.
-    void beginQuiet(const protocol::Request &request);
+    /// `probe`: it had the short first timeout of a probe (BusRequest::firstTimeoutS).
+    void beginQuiet(const protocol::Request &request, bool probe);
     /// Bytes arrived at `nowNs`: during the quiet period they are a reply on its way.
     void extendQuiet(qint64 nowNs);
     /// True while the quiet period lasts (then the quiet timer will pump again).

@@ -251,6 +251,13 @@ void tst_BusTiming::quietPeriodCoversTheLongestReply()
         t.addReply(Command::ReadState2, 115200, wire + (i % 10) * 16e-3 / 9);
     QVERIFY(t.quietS(Command::ReadState2, 115200) >= 16e-3);
     QVERIFY(t.quietS(Command::ReadState2, 1000000) < t.quietS(Command::ReadState2, 115200));
+    // A probe's quiet period ends when a reply could have come through this link, counted
+    // from the send: the formula with the longest reply plus the same latency.
+    const double linkS =
+        t.quietS(Command::ReadState2, 115200) - BusTiming::kTurnaroundS -
+        BusTiming::wireTimeS(0, BusTiming::maxReplyBytes(Command::ReadState2), 115200);
+    QVERIFY(qAbs(t.replyDeadlineS(Command::ReadState2, 115200) -
+                 BusTiming::replyTimeoutS(Command::ReadState2, 115200, linkS)) < 1e-12);
 }
 
 void tst_BusTiming::telemetryFromReply_data()
