@@ -89,8 +89,13 @@ double AdaptiveTimeout::linkLatencyS() const
 
 double AdaptiveTimeout::quietS(Command command, int baud) const
 {
+    // A 99th percentile of fewer than a hundred replies says little: until then the link is
+    // not trusted to be faster than BusConfig::initialMarginMs.
+    double latency = linkLatencyS();
+    if (m_link.size() < kPercentileSamples)
+        latency = std::max(latency, boundedS(m_config.initialMarginMs * 1e-3));
     return BusTiming::kTurnaroundS +
-           BusTiming::wireTimeS(0, BusTiming::maxReplyBytes(command), baud) + linkLatencyS();
+           BusTiming::wireTimeS(0, BusTiming::maxReplyBytes(command), baud) + latency;
 }
 
 double AdaptiveTimeout::replyDeadlineS(Command command, int baud) const

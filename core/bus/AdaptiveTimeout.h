@@ -27,6 +27,7 @@ public:
     enum class CommandClass { Read, Write, Flash };
     static constexpr int kWarmupSamples = 4;
     static constexpr int kWindow = 256;
+    static constexpr int kPercentileSamples = 100; ///< replies before a p99 means something
     static constexpr double kPercentile = 0.99;
     static constexpr double kPercentileFactor = 2.0;
     static constexpr double kLateFactor = 1.5;
@@ -47,7 +48,8 @@ public:
     double timeoutS(protocol::Command command, int baud) const;
     /// How long after a timeout a reply to `command` may still arrive: the drive's longest
     /// turnaround, the wire time of its longest reply, and the link's latency (p99 of the
-    /// extra latency, or a recent late reply's; at least BusConfig::minMarginMs).
+    /// extra latency, or a recent late reply's; at least BusConfig::minMarginMs, and at least
+    /// BusConfig::initialMarginMs until kPercentileSamples replies were measured).
     double quietS(protocol::Command command, int baud) const;
     /// How long after its send a reply to `command` can arrive from a drive that keeps its
     /// turnaround: the formula with the longest reply plus that same link latency. A probe's

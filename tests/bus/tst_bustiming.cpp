@@ -238,12 +238,20 @@ void tst_BusTiming::quietPeriodCoversTheLongestReply()
 {
     // After a timeout a reply may still begin: the drive's longest turnaround, then its
     // longest reply on the wire, then the adapter's latency before the host sees it.
-    AdaptiveTimeout t; // min margin 2 ms
+    AdaptiveTimeout t; // min margin 2 ms, initial 20 ms
     const double longest =
         BusTiming::wireTimeS(0, BusTiming::maxReplyBytes(Command::ReadModel), 115200);
     QCOMPARE(BusTiming::maxReplyBytes(Command::ReadModel), 64);
+    // Nothing measured yet: the link's latency is taken as the initial margin.
+    QVERIFY(qAbs(t.quietS(Command::ReadModel, 115200) -
+                 (BusTiming::kTurnaroundS + longest + 20e-3)) < 1e-12);
+    const double fast = BusTiming::transactionTimeS(Command::ReadModel, 115200) + 0.1e-3;
+    for (int i = 0; i < AdaptiveTimeout::kPercentileSamples; ++i)
+        t.addReply(Command::ReadModel, 115200, fast);
+    // A fast link, measured: the least allowance (the minimum margin).
     QVERIFY(qAbs(t.quietS(Command::ReadModel, 115200) -
                  (BusTiming::kTurnaroundS + longest + 2e-3)) < 1e-12);
+    t.reset();
     // A link whose replies come up to 16 ms late (FTDI's latency timer): the quiet period
     // waits for that too.
     const double wire = BusTiming::transactionTimeS(Command::ReadState2, 115200);
