@@ -22,7 +22,7 @@ constexpr double kAdvanceStepS = 0.001; ///< physics steps while nothing else ha
 } // namespace
 
 PtyBusServer::PtyBusServer(PtyDevice &pty, sim::SimBus &bus, const Options &options)
-    : m_pty(pty), m_bus(bus), m_options(options)
+    : m_pty(pty), m_bus(bus), m_options(options), m_stats(options.statsFile)
 {
 }
 
@@ -51,20 +51,65 @@ void PtyBusServer::onInput(const QByteArray &bytes, double now)
 {
     log("<-", bytes);
     m_lastInputAt = now;
-    const QList<sim::SimReply> replies = m_bus.receive(bytes, now);
-    for (const sim::SimReply &reply : replies) {
-        double due = now + reply.delaySeconds;
-        if (m_options.emulateWireTime) {
-            const double replyWire = sim::SimBus::wireSeconds(reply.bytes.size(), m_options.baud);
-            due += requestWireSeconds(static_cast<quint8>(reply.command)) + replyWire;
-            due = std::max(due, m_wireFreeAt + replyWire); // half duplex: one talker at a time
-            m_wireFreeAt = due;
+    // Byte by byte, so that each request is judged on its own: the second of two requests
+    // read at once collides with the reply the first one asked for (the host sent it before
+    // that reply could have reached it).
+    for (qsizetype i = 0; i < bytes.size(); ++i) {
+        if (!m_collision)
+            m_collision = m_wire.overlapAt(now);
+        m_frameBytes.append(bytes.at(i));
+        const qint64 requestsBefore = m_bus.counters().requests;
+        const QList<sim::SimReply> replies = m_bus.receive(bytes.constData() + i, 1, now);
+        if (m_bus.counters().requests != requestsBefore)
+            noteRequestEnd();
+        const sim::SimBusCounters &c = m_bus.counters();
+        const qint64 events = c.requests + c.parseErrors + c.notRequests;
+        if (events != m_frameEvents) { // a frame or a fault ended with this byte
+            m_frameEvents = events;
+            m_frameBytes.clear();
+            m_collision.reset();
         }
-        // Replies keep their order even when a fault delays one of them.
-        if (!m_pending.empty())
-            due = std::max(due, m_pending.back().due);
-        m_pending.push_back(Pending{due, reply.bytes});
+        for (const sim::SimReply &reply : replies)
+            schedule(reply, now);
     }
+}
+
+void PtyBusServer::noteRequestEnd()
+{
+    m_wire.requestEnded(m_collision);
+    if (!m_collision)
+        return;
+    std::fprintf(stderr, "lksim: collision: request %s arrived %s\n",
+                 m_frameBytes.toHex(' ').toUpper().constData(),
+                 qPrintable(m_collision->describe()));
+    writeStats(true);
+}
+
+void PtyBusServer::schedule(const sim::SimReply &reply, double now)
+{
+    double wireEnd = now + reply.delaySeconds;
+    double replyWire = 0;
+    if (m_options.emulateWireTime) {
+        replyWire = sim::SimBus::wireSeconds(reply.bytes.size(), m_options.baud);
+        wireEnd += requestWireSeconds(static_cast<quint8>(reply.command)) + replyWire;
+        wireEnd = std::max(wireEnd, m_wireFreeAt + replyWire); // half duplex: one talker
+        m_wireFreeAt = wireEnd;
+    }
+    m_wire.replyScheduled(wireEnd - replyWire, wireEnd, reply.id,
+                          static_cast<quint8>(reply.command));
+    // Replies keep their order even when a fault delays one of them.
+    double due = wireEnd + m_options.adapterLatencyS;
+    if (!m_pending.empty())
+        due = std::max(due, m_pending.back().due);
+    m_pending.push_back(Pending{due, reply.bytes});
+}
+
+bool PtyBusServer::writeStats(bool running)
+{
+    if (m_stats.write(m_wire.counters(), running))
+        return true;
+    std::fprintf(stderr, "lksim: %s\n", qPrintable(m_stats.errorString()));
+    return false;
 }
 
 bool PtyBusServer::flushDue(double now)
@@ -78,16 +123,19 @@ bool PtyBusServer::flushDue(double now)
     return true;
 }
 
-int PtyBusServer::run(const std::atomic<bool> &stop)
+int PtyBusServer::run(const std::atomic<bool> &stop, std::atomic<bool> &dumpStats)
 {
     // Replies are timed to the microsecond; the kernel's default timer slack (50 us) would let
     // every timed wake-up come late by up to that much, a third of a 1 Mbps transaction.
     prctl(PR_SET_TIMERSLACK, 1UL);
     pollfd pfd{m_pty.masterFd(), POLLIN, 0};
     while (!stop.load()) {
+        if (dumpStats.exchange(false))
+            writeStats(true);
         double now = monotonicSeconds();
         if (!flushDue(now)) {
             std::fprintf(stderr, "lksim: %s\n", qPrintable(m_pty.errorString()));
+            writeStats(false);
             return 1;
         }
         // Sleep until input arrives, the next reply is due, or 50 ms pass (to let physics
@@ -101,6 +149,7 @@ int PtyBusServer::run(const std::atomic<bool> &stop)
         const int n = ppoll(&pfd, 1, &ts, nullptr);
         if (n < 0 && errno != EINTR) {
             std::perror("lksim: ppoll");
+            writeStats(false);
             return 1;
         }
         now = monotonicSeconds();
@@ -113,6 +162,7 @@ int PtyBusServer::run(const std::atomic<bool> &stop)
             m_lastAdvanceAt = now;
         }
     }
+    writeStats(false);
     return 0;
 }
 

@@ -17,10 +17,16 @@
 namespace {
 
 std::atomic<bool> g_stop{false};
+std::atomic<bool> g_dumpStats{false};
 
 void onSignal(int)
 {
     g_stop.store(true);
+}
+
+void onDumpSignal(int)
+{
+    g_dumpStats.store(true);
 }
 
 void installSignalHandlers()
@@ -31,6 +37,8 @@ void installSignalHandlers()
     sa.sa_flags = 0; // no SA_RESTART: ppoll must return EINTR so the loop sees the flag
     sigaction(SIGINT, &sa, nullptr);
     sigaction(SIGTERM, &sa, nullptr);
+    sa.sa_handler = onDumpSignal;
+    sigaction(SIGUSR1, &sa, nullptr);
     signal(SIGPIPE, SIG_IGN);
 }
 
@@ -63,6 +71,13 @@ int main(int argc, char *argv[])
         "The device path is printed as the first line of standard output; open it with\n"
         "lkctl --port PATH, lkstudio --port PATH or any serial program. Runs until SIGINT or\n"
         "SIGTERM.\n\n"
+        "Collisions: RS485 is half duplex. A request that arrives while a drive is about to\n"
+        "answer (after it was asked) or while its reply is still on the wire would corrupt\n"
+        "both frames on a real bus. lksim counts each such request as a collision, logs it\n"
+        "on standard error (\"lksim: collision: request ... arrived ...\"), prints a summary\n"
+        "line on exit (\"lksim: N requests, N replies, N collisions ...\") and keeps the\n"
+        "counts in --stats-file. Without --wire-time a reply is on the wire for an instant,\n"
+        "--reply-delay-us after its request.\n\n"
         "Example:\n"
         "  lksim --motors 3:MF,17:MS,32:MG --link /tmp/lkbus --wire-time --baud 115200\n"
         "  lkctl scan --port /tmp/lkbus"));
@@ -110,8 +125,22 @@ int main(int argc, char *argv[])
         QStringLiteral("Spin instead of sleeping while the host is polling (for benchmarks at "
                        "high baud: a sleeping process wakes 30-100 us late). Uses one CPU core "
                        "while requests keep coming."));
-    parser.addOptions(
-        {motors, link, baud, wireTime, replyDelay, romDir, faults, busyPoll, verbose});
+    const QCommandLineOption adapterLatency(
+        QStringLiteral("adapter-latency-us"),
+        QStringLiteral("The host receives each reply this many microseconds after its last "
+                       "byte left the wire, as behind a USB adapter's latency timer (FTDI: "
+                       "up to 16000). The wire is free meanwhile. Default 0."),
+        QStringLiteral("us"), QStringLiteral("0"));
+    const QCommandLineOption statsFile(
+        QStringLiteral("stats-file"),
+        QStringLiteral("Keep the counters in PATH as one line of JSON: {\"requests\":N,"
+                       "\"replies\":N,\"collisions\":N,\"collisions_before_reply\":N,"
+                       "\"collisions_during_reply\":N,\"running\":true}. Rewritten whole at "
+                       "start, after every collision (the collision count is always current), "
+                       "on SIGUSR1 (all counters current) and at exit (\"running\":false)."),
+        QStringLiteral("path"));
+    parser.addOptions({motors, link, baud, wireTime, replyDelay, adapterLatency, romDir, faults,
+                       busyPoll, statsFile, verbose});
     parser.process(app);
 
     if (!parser.isSet(motors))
@@ -129,6 +158,9 @@ int main(int argc, char *argv[])
     const int delayUs = parser.value(replyDelay).toInt(&ok);
     if (!ok || delayUs < 0 || delayUs > 1000000)
         return fail(QStringLiteral("--reply-delay-us must be 0..1000000"));
+    const int latencyUs = parser.value(adapterLatency).toInt(&ok);
+    if (!ok || latencyUs < 0 || latencyUs > 1000000)
+        return fail(QStringLiteral("--adapter-latency-us must be 0..1000000"));
 
     std::unique_ptr<lk::sim::SimBus> bus = lk::sim::SimBus::fromSpec(*spec, parser.value(romDir));
     bus->setReplyDelay(delayUs * 1e-6);
@@ -143,13 +175,6 @@ int main(int argc, char *argv[])
     if (parser.isSet(link) && !pty.linkTo(parser.value(link)))
         return fail(pty.errorString());
 
-    std::printf("%s\n", qPrintable(pty.slavePath()));
-    std::fflush(stdout);
-    std::fprintf(
-        stderr, "lksim: %s on %s%s\n", qPrintable(spec->toString()), qPrintable(pty.slavePath()),
-        parser.isSet(wireTime) ? qPrintable(QStringLiteral(", wire time at %1 baud").arg(baudValue))
-                               : "");
-
     installSignalHandlers();
     prctl(PR_SET_TIMERSLACK, 1UL); // sub-millisecond reply timing needs a tight timer slack
 
@@ -158,8 +183,24 @@ int main(int argc, char *argv[])
     options.emulateWireTime = parser.isSet(wireTime);
     options.verbose = parser.isSet(verbose);
     options.busyPoll = parser.isSet(busyPoll);
+    options.adapterLatencyS = latencyUs * 1e-6;
+    options.statsFile = parser.value(statsFile);
     lk::app::PtyBusServer server(pty, *bus, options);
-    const int rc = server.run(g_stop);
+    if (!server.writeStats(true))
+        return 2; // before the path is printed: a test never waits on a file that is not there
+    std::printf("%s\n", qPrintable(pty.slavePath()));
+    std::fflush(stdout);
+    std::fprintf(
+        stderr, "lksim: %s on %s%s\n", qPrintable(spec->toString()), qPrintable(pty.slavePath()),
+        parser.isSet(wireTime) ? qPrintable(QStringLiteral(", wire time at %1 baud").arg(baudValue))
+                               : "");
+
+    const int rc = server.run(g_stop, g_dumpStats);
     pty.close();
+    const lk::app::WireCounters &c = server.counters();
+    std::fprintf(stderr,
+                 "lksim: %lld requests, %lld replies, %lld collisions (%lld before a reply "
+                 "began, %lld during one)\n",
+                 c.requests, c.replies, c.collisions(), c.collisionsBefore, c.collisionsDuring);
     return rc;
 }

@@ -14,7 +14,9 @@ struct BusConfig {
     /// command's reply is itself an echo (motor_off...). When clear, only frames with a
     /// request's layout identical to the request are skipped (they can never be a reply).
     bool localEcho = false;
-    double minMarginMs = 2;      ///< smallest timeout margin over wire time + turnaround
+    /// Smallest timeout margin over wire time + turnaround; also the least time allowed for
+    /// the link's latency in the quiet period after a timeout (AdaptiveTimeout::quietS).
+    double minMarginMs = 2;
     double initialMarginMs = 20; ///< margin until enough replies were measured (FTDI: 16 ms)
     double maxMarginMs = 200;    ///< largest margin, whatever the link does
     double telemetryHz = 60;     ///< most telemetry batches per second

@@ -42,9 +42,12 @@ BusWorker::BusWorker(TransportFactory factory, int baud, const BusConfig &config
     m_replyTimer.setTimerType(Qt::PreciseTimer);
     m_pollTimer.setSingleShot(true);
     m_pollTimer.setTimerType(Qt::PreciseTimer);
+    m_quietTimer.setSingleShot(true);
+    m_quietTimer.setTimerType(Qt::PreciseTimer);
     m_telemetry.setRateHz(config.telemetryHz);
     connect(&m_replyTimer, &QTimer::timeout, this, &BusWorker::onTimeout);
     connect(&m_pollTimer, &QTimer::timeout, this, &BusWorker::pumpNow);
+    connect(&m_quietTimer, &QTimer::timeout, this, &BusWorker::pumpNow);
     connect(&m_telemetry, &TelemetryBatcher::batchReady, this, &BusWorker::telemetryReceived);
     connect(&m_statsTimer, &QTimer::timeout, this, &BusWorker::emitStatistics);
     connect(&m_trafficTimer, &QTimer::timeout, this, &BusWorker::flushTraffic);
@@ -133,7 +136,7 @@ void BusWorker::shutdown(const QString &reason)
     m_poller.clear();
     failAll(RequestStatus::Cancelled, reason);
     dropTransport();
-    for (QTimer *t : {&m_replyTimer, &m_pollTimer, &m_statsTimer, &m_trafficTimer})
+    for (QTimer *t : {&m_replyTimer, &m_quietTimer, &m_pollTimer, &m_statsTimer, &m_trafficTimer})
         t->stop();
     m_telemetry.flush();
     m_reported.state = Transport::State::Closed;
@@ -325,7 +328,7 @@ std::optional<BusWorker::Pending> BusWorker::takeNext()
 
 void BusWorker::pumpNow()
 {
-    if (m_inflight || m_shutDown || !isOpen())
+    if (m_inflight || m_shutDown || !isOpen() || holdForQuiet())
         return;
     if (std::optional<Pending> p = takeNext())
         sendAttempt(std::move(*p));
@@ -362,10 +365,44 @@ void BusWorker::onTimeout()
     const protocol::Request &r = m_inflight->req.request;
     m_stats.timedOut(r.id);
     m_matcher.timedOut();
+    beginQuiet(r, m_inflight->attempts == 1 && m_inflight->req.firstTimeoutS > 0);
     recordTraffic(TrafficEvent::Kind::Timeout, {}, r.id, static_cast<quint8>(r.command));
     failAttempt(RequestStatus::Timeout,
                 tr("no reply to %1 after %n attempt(s)", nullptr, m_inflight->attempts)
                     .arg(commandText(r)));
+}
+
+void BusWorker::beginQuiet(const protocol::Request &request, bool probe)
+{
+    m_quietLengthNs = static_cast<qint64>(m_timeout.quietS(request.command, baud()) * 1e9);
+    if (probe) {
+        // Silence is the common answer to a probe (scan, emergency stop), so it is not made
+        // to wait twice: only until a reply from a drive that keeps its turnaround could have
+        // come through this link, counted from the send. Often that is over already.
+        m_quietUntilNs =
+            m_sentNs + static_cast<qint64>(m_timeout.replyDeadlineS(request.command, baud()) * 1e9);
+    } else {
+        m_quietUntilNs = m_clock.nsecsElapsed() + m_quietLengthNs;
+    }
+    m_quietId = request.id;
+    m_quietCommand = static_cast<quint8>(request.command);
+}
+
+void BusWorker::extendQuiet(qint64 nowNs)
+{
+    if (m_inflight || nowNs >= m_quietUntilNs)
+        return;
+    m_quietUntilNs = std::max(m_quietUntilNs, nowNs + m_quietLengthNs);
+}
+
+bool BusWorker::holdForQuiet()
+{
+    const qint64 leftNs = m_quietUntilNs - m_clock.nsecsElapsed();
+    if (leftNs <= 0)
+        return false;
+    if (!m_quietTimer.isActive() || m_quietTimer.remainingTime() * 1'000'000 < leftNs)
+        m_quietTimer.start(static_cast<int>((leftNs + 999'999) / 1'000'000));
+    return true;
 }
 
 void BusWorker::failAttempt(RequestStatus status, const QString &reason)
@@ -434,9 +471,17 @@ void BusWorker::failAll(RequestStatus status, const QString &reason)
 
 void BusWorker::onBytes(const QByteArray &bytes)
 {
+    extendQuiet(m_clock.nsecsElapsed());
+    m_quietAnswered = false;
     m_inBytes = true;
     m_parser.feed(bytes, [this](const protocol::ParseEvent &ev) { onParseEvent(ev); });
     m_inBytes = false;
+    if (m_quietAnswered && m_parser.pendingBytes() == 0 && isQuiet()) {
+        // The late reply is all here and nothing follows it: the wire is free again.
+        m_quietUntilNs = 0;
+        m_quietTimer.stop();
+        m_pumpWanted = true;
+    }
     if (m_pumpWanted) {
         // A transport that delivers at once (SimTransport without delays) would otherwise
         // keep us inside its signal forever: every kMaxDirectPumps the event loop gets a turn.
@@ -474,8 +519,9 @@ void BusWorker::onParseEvent(const protocol::ParseEvent &ev)
     case V::LateReply:
         // The link is slower than the margin assumed: let the margin learn from it.
         m_stats.lateReply(f.id);
-        m_timeout.addReply(static_cast<Command>(f.command), baud(), out.lateLatencyS);
+        m_timeout.addLateReply(static_cast<Command>(f.command), baud(), out.lateLatencyS);
         m_lateRequestSentS = std::max(m_lateRequestSentS, now() - out.lateLatencyS);
+        m_quietAnswered = m_quietAnswered || (f.id == m_quietId && f.command == m_quietCommand);
         return;
     case V::Unexpected:
         m_stats.unexpectedFrame(f.id);

@@ -43,6 +43,15 @@ class Scanner;
 /// Operator > Background, then the poll scheduler fills idle time. Every request completes
 /// exactly once: through its callback when it has one, else through requestCompleted.
 ///
+/// Quiet period: after a timeout nothing is transmitted until a late reply to the request
+/// could no longer be on its way (AdaptiveTimeout::quietS: the drive's longest turnaround,
+/// the longest reply's wire time and the link's latency). After a probe's short timeout
+/// (scan, emergency stop), where silence is the usual answer, it lasts only until a reply
+/// could have come from a drive that keeps its turnaround (AdaptiveTimeout::replyDeadlineS,
+/// from the send), so that silent IDs stay cheap. Bytes arriving meanwhile are a reply in
+/// progress and restart it (full length); a complete late reply to that request ends it.
+/// Late replies are counted (BusStatistics) and never taken for a later request's answer.
+///
 /// Retries (BusConfig::retries, BusRequest::retries) never apply to incremental moves or ROM
 /// writes: a drive that acted but whose reply was lost would move twice or write flash twice.
 ///
@@ -98,6 +107,8 @@ public:
     double now() const; ///< seconds since the worker was made (the session clock)
     int queuedCount() const;
     bool isBusy() const { return m_inflight.has_value(); }
+    /// Whether transmissions are held back now: the quiet period after a timeout.
+    bool isQuiet() const { return m_quietUntilNs > m_clock.nsecsElapsed(); }
     double currentMarginMs() const { return m_timeout.marginS() * 1e3; }
     /// The shortest sensible reply timeout: wire time + turnaround + BusConfig::minMarginMs,
     /// for probes where silence is the common answer (scan pass 1, emergency stop).
@@ -146,6 +157,13 @@ private:
     /// How soon after a send a reply can physically arrive (for the matcher), nanoseconds.
     qint64 earliestReplyNs(protocol::Command command) const;
     void onTimeout();
+    /// The request on the wire timed out: hold transmissions until its reply cannot come.
+    /// `probe`: it had the short first timeout of a probe (BusRequest::firstTimeoutS).
+    void beginQuiet(const protocol::Request &request, bool probe);
+    /// Bytes arrived at `nowNs`: during the quiet period they are a reply on its way.
+    void extendQuiet(qint64 nowNs);
+    /// True while the quiet period lasts (then the quiet timer will pump again).
+    bool holdForQuiet();
     void failAttempt(RequestStatus status, const QString &reason);
     void complete(Pending p, RequestStatus status, std::optional<protocol::Reply> reply,
                   const QString &reason, double latencyS);
@@ -176,6 +194,11 @@ private:
     RequestQueue m_queue;
     std::optional<Pending> m_inflight;
     qint64 m_sentNs = 0;
+    qint64 m_quietUntilNs = 0;  ///< no transmission before this (worker clock)
+    qint64 m_quietLengthNs = 0; ///< a quiet period's length; bytes meanwhile restart it
+    int m_quietId = -1;         ///< the timed-out request whose late reply ends it early
+    quint8 m_quietCommand = 0;
+    bool m_quietAnswered = false; ///< that late reply was parsed in the current chunk
     ReplyMatcher m_matcher;
     static constexpr int kMaxDirectPumps = 64;
     bool m_pumpPosted = false;
@@ -198,6 +221,7 @@ private:
     QString m_lastError;
 
     QTimer m_replyTimer{this}; // children: they move to the bus thread with the worker
+    QTimer m_quietTimer{this};
     QTimer m_pollTimer{this};
     QTimer m_statsTimer{this};
     QTimer m_trafficTimer{this};

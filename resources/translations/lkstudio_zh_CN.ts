@@ -2477,10 +2477,6 @@
         <translation>其他帧错误</translation>
     </message>
     <message>
-        <source>Late or unexpected replies</source>
-        <translation>迟到或意外的回复</translation>
-    </message>
-    <message>
         <source>Garbage bytes</source>
         <translation>无效字节</translation>
     </message>
@@ -2503,6 +2499,14 @@
     <message>
         <source>Drive %1</source>
         <translation>驱动 %1</translation>
+    </message>
+    <message>
+        <source>Late replies (after their timeout)</source>
+        <translation>迟到的回复（超时之后）</translation>
+    </message>
+    <message>
+        <source>Unexpected frames</source>
+        <translation>意外的帧</translation>
     </message>
 </context>
 <context>

@@ -28,6 +28,10 @@ private slots:
     void latencyWindowIsBounded();
     void adaptiveMargin_data();
     void adaptiveMargin();
+    void marginCoversTheSlowestPercent();
+    void lateReplyLiftsMarginAtOnce();
+    void marginWarmsUpPerCommandClass();
+    void quietPeriodCoversTheLongestReply();
     void telemetryFromReply_data();
     void telemetryFromReply();
 };
@@ -158,7 +162,7 @@ void tst_BusTiming::adaptiveMargin_data()
     QTest::newRow("no replies yet: initial margin") << 0 << 0.0 << 20.0;
     QTest::newRow("warming up: at least the initial margin") << 3 << 1.0 << 20.0;
     QTest::newRow("fast link: minimum margin") << 20 << 0.1 << 2.0;
-    QTest::newRow("FTDI-like 10 ms: 3 x p95") << 20 << 10.0 << 30.0;
+    QTest::newRow("FTDI-like 10 ms: 2 x p99") << 20 << 10.0 << 20.0;
     QTest::newRow("pathological link: bounded") << 20 << 1000.0 << 200.0;
 }
 
@@ -173,6 +177,95 @@ void tst_BusTiming::adaptiveMargin()
         t.addReply(Command::ReadState2, 115200, wire + extraMs * 1e-3);
     QVERIFY2(qAbs(t.marginS() * 1e3 - marginMs) < 1e-6, qPrintable(QString::number(t.marginS())));
     QVERIFY(qAbs(t.timeoutS(Command::ReadState2, 115200) - (wire + t.marginS())) < 1e-12);
+}
+
+void tst_BusTiming::marginCoversTheSlowestPercent()
+{
+    // A loaded host: one reply in fifty comes 10 ms late. The margin must cover it (p99),
+    // or one poll in fifty times out and is retried while its reply is on its way.
+    AdaptiveTimeout t; // defaults: min 2, initial 20, max 200 ms
+    const double wire = BusTiming::transactionTimeS(Command::ReadState2, 115200);
+    for (int i = 0; i < AdaptiveTimeout::kWindow; ++i)
+        t.addReply(Command::ReadState2, 115200, wire + (i % 50 == 25 ? 10e-3 : 0.1e-3));
+    QVERIFY2(t.marginS() >= 2 * 10e-3 - 1e-12, qPrintable(QString::number(t.marginS())));
+    QVERIFY(t.timeoutS(Command::ReadState2, 115200) > wire + 10e-3);
+}
+
+void tst_BusTiming::lateReplyLiftsMarginAtOnce()
+{
+    AdaptiveTimeout t;
+    const double wire = BusTiming::transactionTimeS(Command::ReadState1, 115200);
+    for (int i = 0; i < 100; ++i)
+        t.addReply(Command::ReadState1, 115200, wire + 0.1e-3);
+    QCOMPARE(t.marginS(), 2e-3);
+    // One reply came 30 ms after its request had timed out: the very next attempts, of any
+    // class, wait longer than that.
+    t.addLateReply(Command::ReadState1, 115200, wire + 30e-3);
+    for (AdaptiveTimeout::CommandClass c :
+         {AdaptiveTimeout::CommandClass::Read, AdaptiveTimeout::CommandClass::Write})
+        QVERIFY2(t.marginS(c) >= 1.5 * 30e-3 - 1e-9, qPrintable(QString::number(t.marginS(c))));
+    QVERIFY(t.quietS(Command::ReadState1, 115200) > 30e-3);
+    // It holds while a window of replies comes in, then the link's own figures rule again.
+    for (int i = 0; i < AdaptiveTimeout::kWindow; ++i)
+        t.addReply(Command::ReadState1, 115200, wire + 0.1e-3);
+    QCOMPARE(t.marginS(), 2e-3);
+}
+
+void tst_BusTiming::marginWarmsUpPerCommandClass()
+{
+    AdaptiveTimeout t;
+    const double wire = BusTiming::transactionTimeS(Command::ReadState2, 115200);
+    for (int i = 0; i < 100; ++i)
+        t.addReply(Command::ReadState2, 115200, wire + 0.1e-3);
+    QCOMPARE(AdaptiveTimeout::classOf(Command::ReadState2), AdaptiveTimeout::CommandClass::Read);
+    QCOMPARE(AdaptiveTimeout::classOf(Command::Speed), AdaptiveTimeout::CommandClass::Write);
+    QCOMPARE(AdaptiveTimeout::classOf(Command::MotorOff), AdaptiveTimeout::CommandClass::Write);
+    QCOMPARE(AdaptiveTimeout::classOf(Command::WritePidRom), AdaptiveTimeout::CommandClass::Flash);
+    QCOMPARE(t.marginS(AdaptiveTimeout::CommandClass::Read), 2e-3);
+    // Commands that act have not been timed yet: the initial margin until they have.
+    QCOMPARE(t.marginS(AdaptiveTimeout::CommandClass::Write), 20e-3);
+    QCOMPARE(t.timeoutS(Command::Speed, 115200),
+             BusTiming::replyTimeoutS(Command::Speed, 115200, 20e-3));
+    // A drive that takes 8 ms to write its flash: ROM writes get their own, longer margin.
+    for (int i = 0; i < AdaptiveTimeout::kWarmupSamples; ++i)
+        t.addReply(Command::WritePidRom, 115200,
+                   BusTiming::transactionTimeS(Command::WritePidRom, 115200) + 8e-3);
+    QVERIFY(t.marginS(AdaptiveTimeout::CommandClass::Flash) >= 16e-3 - 1e-12);
+    QCOMPARE(t.marginS(AdaptiveTimeout::CommandClass::Read), 2e-3); // not the link's latency
+}
+
+void tst_BusTiming::quietPeriodCoversTheLongestReply()
+{
+    // After a timeout a reply may still begin: the drive's longest turnaround, then its
+    // longest reply on the wire, then the adapter's latency before the host sees it.
+    AdaptiveTimeout t; // min margin 2 ms, initial 20 ms
+    const double longest =
+        BusTiming::wireTimeS(0, BusTiming::maxReplyBytes(Command::ReadModel), 115200);
+    QCOMPARE(BusTiming::maxReplyBytes(Command::ReadModel), 64);
+    // Nothing measured yet: the link's latency is taken as the initial margin.
+    QVERIFY(qAbs(t.quietS(Command::ReadModel, 115200) -
+                 (BusTiming::kTurnaroundS + longest + 20e-3)) < 1e-12);
+    const double fast = BusTiming::transactionTimeS(Command::ReadModel, 115200) + 0.1e-3;
+    for (int i = 0; i < AdaptiveTimeout::kPercentileSamples; ++i)
+        t.addReply(Command::ReadModel, 115200, fast);
+    // A fast link, measured: the least allowance (the minimum margin).
+    QVERIFY(qAbs(t.quietS(Command::ReadModel, 115200) -
+                 (BusTiming::kTurnaroundS + longest + 2e-3)) < 1e-12);
+    t.reset();
+    // A link whose replies come up to 16 ms late (FTDI's latency timer): the quiet period
+    // waits for that too.
+    const double wire = BusTiming::transactionTimeS(Command::ReadState2, 115200);
+    for (int i = 0; i < 100; ++i)
+        t.addReply(Command::ReadState2, 115200, wire + (i % 10) * 16e-3 / 9);
+    QVERIFY(t.quietS(Command::ReadState2, 115200) >= 16e-3);
+    QVERIFY(t.quietS(Command::ReadState2, 1000000) < t.quietS(Command::ReadState2, 115200));
+    // A probe's quiet period ends when a reply could have come through this link, counted
+    // from the send: the formula with the longest reply plus the same latency.
+    const double linkS =
+        t.quietS(Command::ReadState2, 115200) - BusTiming::kTurnaroundS -
+        BusTiming::wireTimeS(0, BusTiming::maxReplyBytes(Command::ReadState2), 115200);
+    QVERIFY(qAbs(t.replyDeadlineS(Command::ReadState2, 115200) -
+                 BusTiming::replyTimeoutS(Command::ReadState2, 115200, linkS)) < 1e-12);
 }
 
 void tst_BusTiming::telemetryFromReply_data()

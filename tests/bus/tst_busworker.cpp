@@ -5,8 +5,12 @@
 #include <protocol/RequestBuilder.h>
 
 #include <QtCore/QElapsedTimer>
+#include <QtCore/QTimer>
+
 #include <QtTest/QSignalSpy>
 #include <QtTest/QTest>
+#include <memory>
+#include <optional>
 
 Q_DECLARE_METATYPE(lk::protocol::Request)
 
@@ -39,6 +43,8 @@ private slots:
     void localEchoIsSkipped_data();
     void localEchoIsSkipped();
     void lateReplyWidensMargin();
+    void quietPeriodHoldsTheRetry();
+    void lateReplyInQuietPeriodIsCountedNotMatched();
     void sendWhileClosedCompletesDisconnected();
     void failedOpenReportsError();
 };
@@ -385,6 +391,89 @@ void tst_BusWorker::lateReplyWidensMargin()
     QVERIFY2(rig.worker->currentMarginMs() > 3 * before,
              qPrintable(QString::number(rig.worker->currentMarginMs())));
     QVERIFY(rig.worker->currentMarginMs() <= c.maxMarginMs);
+}
+
+namespace {
+/// Timeouts and quiet periods long enough that the timers below fall clearly between them.
+BusConfig quietTestConfig()
+{
+    BusConfig c = relaxedConfig();
+    c.minMarginMs = c.initialMarginMs = 40;
+    return c;
+}
+} // namespace
+
+void tst_BusWorker::quietPeriodHoldsTheRetry()
+{
+    // ID 9 is silent. Timeout ~43 ms after the write, then a quiet period of at least 40 ms
+    // (the margin floor): a marker timer due at 64 ms from the write fires before the quiet
+    // ends, whatever the machine's load, since timers of one thread fire in due order.
+    auto markerFired = std::make_shared<bool>(false);
+    auto firedAtRetry = std::make_shared<std::optional<bool>>();
+    WorkerRig rig(
+        [markerFired, firedAtRetry](FakeTransport &t) {
+            FakeTransport *tp = &t;
+            t.setResponder([=](const protocol::Frame &, int index) {
+                if (index == 0)
+                    QTimer::singleShot(64, tp, [markerFired] { *markerFired = true; });
+                else if (index == 1)
+                    *firedAtRetry = *markerFired;
+                return QByteArray();
+            });
+        },
+        quietTestConfig());
+    const quint64 t = rig.send(plainRequest(Command::ReadState1, 9), Priority::Operator, 1);
+    QTRY_VERIFY_WITH_TIMEOUT(rig.result(t), 10000);
+    QCOMPARE(rig.result(t)->status, RequestStatus::Timeout);
+    QCOMPARE(rig.result(t)->attempts, 2);
+    QVERIFY(firedAtRetry->has_value());
+    QVERIFY2(**firedAtRetry, "the retry went out while a late reply could still be on the wire");
+}
+
+void tst_BusWorker::lateReplyInQuietPeriodIsCountedNotMatched()
+{
+    // ID 1 answers its first read_state1 late and slowly: the first bytes 60 ms after the
+    // write (after the ~43 ms timeout, inside the quiet period that ends >= 83 ms), the rest
+    // at 95 ms, after the quiet period would have ended had the first bytes not restarted it.
+    // The next request (to ID 2) must wait until the late reply is complete, and that late
+    // reply is counted, not taken for ID 2's answer.
+    auto lateSeenAtNextWrite = std::make_shared<std::optional<quint64>>();
+    BusWorker *worker = nullptr;
+    WorkerRig rig(
+        [&worker, lateSeenAtNextWrite](FakeTransport &t) {
+            t.drives().add(1, Series::MF);
+            t.drives().add(2, Series::MF);
+            FakeTransport *tp = &t;
+            t.setResponder([=, &worker](const protocol::Frame &req, int index) {
+                if (index == 0) {
+                    const QByteArray late = tp->defaultReply(req);
+                    // Emitted directly (not through inject(), which queues once more): the
+                    // bytes arrive exactly in timer order.
+                    QTimer::singleShot(60, tp,
+                                       [tp, late] { emit tp->bytesReceived(late.left(4)); });
+                    QTimer::singleShot(95, tp, [tp, late] { emit tp->bytesReceived(late.mid(4)); });
+                    return QByteArray();
+                }
+                if (index == 1)
+                    *lateSeenAtNextWrite = worker->lateReplyCount();
+                return tp->defaultReply(req);
+            });
+        },
+        quietTestConfig());
+    worker = rig.worker.get();
+    const quint64 first = rig.send(plainRequest(Command::ReadState1, 1), Priority::Operator, 0);
+    const quint64 next = rig.send(plainRequest(Command::ReadState1, 2), Priority::Operator, 0);
+    QTRY_VERIFY_WITH_TIMEOUT(rig.result(next), 10000);
+    QCOMPARE(rig.result(first)->status, RequestStatus::Timeout);
+    QVERIFY(lateSeenAtNextWrite->has_value());
+    QCOMPARE(**lateSeenAtNextWrite, quint64(1)); // the whole late reply came before the write
+    QCOMPARE(rig.result(next)->status, RequestStatus::Ok);
+    QCOMPARE(int(rig.result(next)->reply->id), 2);
+    const BusStatistics st = rig.worker->statisticsSnapshot();
+    QCOMPARE(st.bus.lateReplies, quint64(1));
+    QCOMPARE(st.perId.value(1).lateReplies, quint64(1));
+    QCOMPARE(st.bus.unexpectedFrames, quint64(0));
+    QCOMPARE(st.bus.replies, quint64(1));
 }
 
 void tst_BusWorker::sendWhileClosedCompletesDisconnected()

@@ -53,4 +53,22 @@ inline QStringList simArgs(const QString &link, const QStringList &extra = {})
            extra;
 }
 
+/// Half duplex: no request may reach lksim while a reply is due or on the wire. Stops `sim`
+/// (its counters are then final) and fails the current test when lksim counted a collision,
+/// quoting lksim's log of them. Every end-to-end test ends with this check.
+inline void verifyNoCollisions(LksimProcess &sim)
+{
+    sim.stop();
+    const std::optional<LksimCounters> c = sim.counters();
+    QVERIFY2(c, "lksim's stats file could not be read");
+    QByteArray lines;
+    for (const QByteArray &line : sim.log().split('\n')) {
+        if (line.contains("collision:"))
+            lines += line + '\n';
+    }
+    QVERIFY2(c->collisions == 0, qPrintable(QStringLiteral("lksim counted %1 collision(s):\n%2")
+                                                .arg(c->collisions)
+                                                .arg(QString::fromUtf8(lines))));
+}
+
 } // namespace lk::e2e

@@ -1,6 +1,9 @@
 #include "LksimProcess.h"
 
 #include <QtCore/QDeadlineTimer>
+#include <QtCore/QFile>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QJsonObject>
 
 namespace lk::e2e {
 
@@ -23,7 +26,8 @@ bool LksimProcess::start(const QStringList &args)
     m_error.clear();
     m_log.clear();
     m_process.setProgram(m_executable);
-    m_process.setArguments(args);
+    const QString stats = m_statsDir.filePath(QStringLiteral("lksim-%1.json").arg(++m_started));
+    m_process.setArguments(args + QStringList{QStringLiteral("--stats-file"), stats});
     m_process.start();
     if (!m_process.waitForStarted(kStartTimeoutMs)) {
         m_error = QStringLiteral("cannot start %1: %2").arg(m_executable, m_process.errorString());
@@ -40,6 +44,7 @@ bool LksimProcess::start(const QStringList &args)
         stop();
         return false;
     }
+    m_statsFiles.append(stats); // lksim wrote it before it printed the path
     return true;
 }
 
@@ -85,6 +90,25 @@ QList<QByteArray> LksimProcess::receivedFrames()
             frames.append(line.mid(3).trimmed());
     }
     return frames;
+}
+
+std::optional<LksimCounters> LksimProcess::counters() const
+{
+    if (!m_statsDir.isValid())
+        return std::nullopt;
+    LksimCounters sum;
+    for (const QString &path : m_statsFiles) {
+        QFile f(path);
+        if (!f.open(QIODevice::ReadOnly))
+            return std::nullopt;
+        const QJsonObject o = QJsonDocument::fromJson(f.readAll()).object();
+        if (!o.contains(QStringLiteral("collisions")))
+            return std::nullopt;
+        sum.requests += o.value(QStringLiteral("requests")).toInteger();
+        sum.replies += o.value(QStringLiteral("replies")).toInteger();
+        sum.collisions += o.value(QStringLiteral("collisions")).toInteger();
+    }
+    return sum;
 }
 
 } // namespace lk::e2e

@@ -4,11 +4,22 @@
 #include <QtCore/QProcess>
 #include <QtCore/QString>
 #include <QtCore/QStringList>
+#include <QtCore/QTemporaryDir>
+
+#include <optional>
 
 namespace lk::e2e {
 
+/// lksim's counters (its --stats-file), summed over the processes one LksimProcess started.
+struct LksimCounters {
+    qint64 requests = 0;
+    qint64 replies = 0;
+    qint64 collisions = 0; ///< requests that arrived while a reply was due or on the wire
+};
+
 /// One lksim process serving a simulated bus on a pseudo-terminal, for end-to-end tests and
 /// benchmarks: started with its arguments, it prints the device path as its first line.
+/// Every lksim it starts keeps its counters in a stats file of its own (--stats-file).
 class LksimProcess {
 public:
     explicit LksimProcess(QString executable);
@@ -29,6 +40,10 @@ public:
     QByteArray log();
     /// Frames lksim received, from its --verbose log: upper-case hex lines after "<- ".
     QList<QByteArray> receivedFrames();
+    /// The counters of every lksim started so far, the running one included (its collision
+    /// count is always current, the other counters as of its last write: ask after stop()).
+    /// nullopt when a stats file could not be read: lksim wrote none, or it was unreadable.
+    std::optional<LksimCounters> counters() const;
 
 private:
     QString m_executable;
@@ -36,6 +51,9 @@ private:
     QString m_device;
     QString m_error;
     QByteArray m_log;
+    QTemporaryDir m_statsDir;
+    int m_started = 0;        ///< lksim processes started (names their stats files)
+    QStringList m_statsFiles; ///< of those that started serving
 };
 
 } // namespace lk::e2e

@@ -160,6 +160,8 @@ void tst_E2eBus::init()
 
 void tst_E2eBus::cleanup()
 {
+    if (m_sim)
+        verifyNoCollisions(*m_sim);
     m_sim.reset();
     m_dir.reset();
 }

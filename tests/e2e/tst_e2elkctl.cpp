@@ -103,6 +103,8 @@ void tst_E2eLkctl::init()
 
 void tst_E2eLkctl::cleanup()
 {
+    if (m_sim)
+        verifyNoCollisions(*m_sim);
     m_sim.reset();
     m_dir.reset();
 }

@@ -38,7 +38,8 @@ StatisticsView::StatisticsView(BusModel *model, QWidget *parent)
     addRow(QStringLiteral("retries"), tr("Retries"));
     addRow(QStringLiteral("checksum"), tr("Checksum errors"));
     addRow(QStringLiteral("parse"), tr("Other frame errors"));
-    addRow(QStringLiteral("late"), tr("Late or unexpected replies"));
+    addRow(QStringLiteral("late"), tr("Late replies (after their timeout)"));
+    addRow(QStringLiteral("unexpected"), tr("Unexpected frames"));
     addRow(QStringLiteral("garbage"), tr("Garbage bytes"));
     m_grid->setColumnStretch(1, 1);
     m_grid->setColumnStretch(2, 1);
@@ -107,8 +108,9 @@ void StatisticsView::refresh()
     set(QStringLiteral("checksum"), QString::number(b.checksumErrors),
         QString::number(d.checksumErrors));
     set(QStringLiteral("parse"), QString::number(b.parseErrors), QString::number(d.parseErrors));
-    set(QStringLiteral("late"), QString::number(b.lateReplies + b.unexpectedFrames),
-        QString::number(d.lateReplies + d.unexpectedFrames));
+    set(QStringLiteral("late"), QString::number(b.lateReplies), QString::number(d.lateReplies));
+    set(QStringLiteral("unexpected"), QString::number(b.unexpectedFrames),
+        QString::number(d.unexpectedFrames));
     set(QStringLiteral("garbage"), QString::number(b.garbageBytes), QString());
 }
 

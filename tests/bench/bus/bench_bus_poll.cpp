@@ -16,6 +16,8 @@
 //   txn_gap_median_ms_*, txn_gap_p90_ms_*          between consecutive replies (read_state2)
 //   timeouts, late_replies, unexpected_frames      polls without a reply in time, replies
 //                                                  that came after it, frames nobody expected
+//   collisions_115200, collisions_1000000          requests lksim received while a reply was
+//                                                  due or on the wire (half duplex broken)
 //   pty_roundtrip_us                               the harness alone: write to reply with
 //                                                  lksim answering at once, no wire time
 //   poll_ratio_net_*                               read_state2 with that harness cost taken
@@ -186,6 +188,8 @@ bool run(int baud, double harnessMs, bench::JsonLine &json, Faults &faults)
     const Figure a = measure(session, state2Plan(), baud);
     const Figure b = measure(session, PollPlan::standard({3, 17, 32}), baud);
     session.close();
+    sim.stop();
+    const std::optional<e2e::LksimCounters> counters = sim.counters();
 
     const QString suffix = QString::number(baud);
     json.add(QStringLiteral("poll_ratio_") + suffix, a.ratio());
@@ -202,6 +206,10 @@ bool run(int baud, double harnessMs, bench::JsonLine &json, Faults &faults)
     json.add(QStringLiteral("latency_median_ms_") + suffix, a.medianMs);
     json.add(QStringLiteral("txn_gap_median_ms_") + suffix, a.gapMedianMs);
     json.add(QStringLiteral("txn_gap_p90_ms_") + suffix, a.gapP90Ms);
+    if (counters)
+        json.addInt(QStringLiteral("collisions_") + suffix, counters->collisions);
+    else
+        json.addText(QStringLiteral("collisions_") + suffix, QStringLiteral("unknown"));
     faults.timeouts += a.timeouts + b.timeouts;
     faults.late += a.late + b.late;
     faults.unexpected += a.unexpected + b.unexpected;
