@@ -121,9 +121,9 @@ void tst_LkstudioProcess::startsOnWayland()
     env.insert(QStringLiteral("WAYLAND_DISPLAY"), socket);
     env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("wayland"));
     env.insert(QStringLiteral("XDG_STATE_HOME"), state.path());
+    env.insert(QStringLiteral("WAYLAND_DEBUG"), QStringLiteral("client")); // requests on stderr
     QProcess studio;
     studio.setProcessEnvironment(env);
-    studio.setProcessChannelMode(QProcess::ForwardedErrorChannel);
     const QString shot = out.filePath(QStringLiteral("wayland.png"));
     studio.start(QStringLiteral(LKSTUDIO_PATH),
                  {QStringLiteral("--settings"), out.filePath(QStringLiteral("lkstudio.ini")),
@@ -140,6 +140,16 @@ void tst_LkstudioProcess::startsOnWayland()
     QFile log(logPath(state));
     QVERIFY(log.open(QIODevice::ReadOnly));
     QVERIFY2(log.readAll().contains("platform wayland"), "lkstudio did not run on Wayland");
+    // The compositor matches the window to its menu entry by the app ID: it must name the
+    // .desktop file that the package installs.
+    const QString protocol = QString::fromUtf8(studio.readAllStandardError());
+    const auto appId =
+        QRegularExpression(QStringLiteral("set_app_id\\(\"([^\"]*)\"\\)")).match(protocol);
+    QVERIFY2(appId.hasMatch(), "lkstudio set no Wayland app ID");
+    QVERIFY2(
+        QFile::exists(
+            QStringLiteral(LK_SOURCE_DIR "/packaging/linux/%1.desktop").arg(appId.captured(1))),
+        qPrintable(appId.captured(1)));
 }
 
 QTEST_GUILESS_MAIN(tst_LkstudioProcess)
