@@ -10,6 +10,8 @@ packages=(
     qt6-qpa-plugins libgl-dev
     clang-format xvfb xauth appstream desktop-file-utils dpkg-dev file help2man
     fonts-noto-cjk
+    # lkstudio on Wayland (tst_lkstudioprocess starts it under a headless weston)
+    qt6-wayland weston
 )
 
 missing=()

@@ -4,10 +4,10 @@
 #include "LiveBus.h"
 #include "MonitorTable.h"
 #include "ReadCommand.h"
-#include "SignalWatcher.h"
 
 #include <bus/BusTiming.h>
 #include <motor/SeriesLimits.h>
+#include <system/SignalWatcher.h>
 
 #include <QtCore/QTimer>
 
@@ -143,8 +143,9 @@ int MonitorCommand::stream(LiveBus &bus, const Plan &plan, MonitorTable &table)
     double firstSample = -1, lastSample = -1;
     bus::BusStatistics stats;
     QObject context; // every connection below ends with it
-    SignalWatcher watcher;
-    QObject::connect(&watcher, &SignalWatcher::signalled, &context, [&stop] { stop = true; });
+    system::SignalWatcher watcher;
+    QObject::connect(&watcher, &system::SignalWatcher::signalled, &context,
+                     [&stop] { stop = true; });
     QTimer duration;
     duration.setSingleShot(true);
     QObject::connect(&duration, &QTimer::timeout, &context, [&stop] { stop = true; });

@@ -10,22 +10,34 @@
 #include <main/StartupOptions.h>
 #include <main/ThemePalette.h>
 #include <panels/BusModel.h>
+#include <panels/FileDialogs.h>
 #include <panels/MessageBanner.h>
 
 #include <main/SimulatedBus.h>
 #include <motor/SeriesLimits.h>
 #include <sim/SimBus.h>
+#include <system/LogFile.h>
+#include <system/SignalWatcher.h>
 #include <transport/SerialTransport.h>
 
+#include <QtCore/QDir>
 #include <QtCore/QFile>
+#include <QtCore/QLibraryInfo>
 #include <QtCore/QLocale>
+#include <QtCore/QLoggingCategory>
 #include <QtCore/QTimer>
 #include <QtWidgets/QApplication>
 
 #include <cstdio>
 #include <optional>
 
+Q_LOGGING_CATEGORY(lcStudio, "lk.studio")
+
 namespace {
+
+// The installed .desktop file's base name (packaging/linux): on Wayland the compositor
+// matches the window to its menu entry and icon by this app ID.
+const char kDesktopFileName[] = "org.lkservostudio.lkstudio";
 
 /// After the first scan, select the drive asked for with --select.
 void selectWhenFound(lk::ui::MainWindow &window, int id)
@@ -85,6 +97,53 @@ void setNames()
     QCoreApplication::setOrganizationName(QStringLiteral("lkstudio"));
 }
 
+/// QT_QPA_PLATFORM=wayland without Qt's Wayland plugin (package qt6-wayland) makes Qt abort
+/// with a message that does not name the package: say what is missing and use X11 (XWayland).
+void checkWaylandPlugin()
+{
+    if (qgetenv("QT_QPA_PLATFORM") != "wayland")
+        return;
+    const QDir platforms(QLibraryInfo::path(QLibraryInfo::PluginsPath) +
+                         QStringLiteral("/platforms"));
+    if (!platforms.entryList({QStringLiteral("libqwayland*")}, QDir::Files).isEmpty())
+        return;
+    std::fprintf(stderr, "lkstudio: QT_QPA_PLATFORM=wayland, but Qt's Wayland plugin is not "
+                         "installed (Debian: sudo apt install qt6-wayland); using xcb instead\n");
+    qputenv("QT_QPA_PLATFORM", "xcb");
+}
+
+/// The log in the XDG state directory (rotated) gets every Qt message; stderr still does.
+void startLog(lk::system::LogFile &log)
+{
+    QString error;
+    if (!log.open(&error))
+        std::fprintf(stderr, "lkstudio: no log file (%s)\n", qPrintable(error));
+    log.install();
+}
+
+/// What the banner says goes to the log too, so that a bug report has the recent errors.
+void logMessages(lk::ui::BusController *controller)
+{
+    using Level = lk::ui::MessageBanner::Level;
+    QObject::connect(controller, &lk::ui::BusController::message, controller,
+                     [](Level level, const QString &text) {
+                         if (level == Level::Info)
+                             qCInfo(lcStudio).noquote() << text;
+                         else
+                             qCWarning(lcStudio).noquote() << text;
+                     });
+}
+
+/// Remember the folder of each kind of file in the settings.
+void rememberFolders(lk::ui::AppSettings &settings)
+{
+    lk::ui::FileDialogs::setFolderMemory(
+        {[&settings](const QString &purpose) { return settings.lastFolder(purpose); },
+         [&settings](const QString &purpose, const QString &folder) {
+             settings.setLastFolder(purpose, folder);
+         }});
+}
+
 std::optional<lk::ui::StartupOptions> parseOptions()
 {
     QString error;
@@ -103,12 +162,18 @@ int main(int argc, char *argv[])
         setNames();
         return parseOptions() ? 0 : 2;
     }
+    lk::system::LogFile log(lk::system::LogFile::defaultPath(QStringLiteral("lkstudio")));
+    startLog(log);
+    checkWaylandPlugin();
     QApplication app(argc, argv);
     setNames();
     QApplication::setApplicationDisplayName(QStringLiteral("LK Servo Studio"));
+    QGuiApplication::setDesktopFileName(QString::fromLatin1(kDesktopFileName));
     const auto options = parseOptions();
     if (!options)
         return 2;
+    qCInfo(lcStudio, "lkstudio %s, Qt %s, platform %s", LK_STUDIO_VERSION, qVersion(),
+           qPrintable(QGuiApplication::platformName()));
 
     if (!options->palette.isEmpty())
         lk::ui::ThemePalette::apply(options->palette); // else the system's, untouched
@@ -117,7 +182,14 @@ int main(int argc, char *argv[])
     const QString preferred = options->language.isEmpty() ? settings.language() : options->language;
     lk::ui::LanguageLoader::install(
         lk::ui::LanguageLoader::resolve(preferred, QLocale::system().uiLanguages()));
+    rememberFolders(settings);
     lk::ui::MainWindow window(&settings);
+    logMessages(window.controller());
+    // SIGTERM (logout, systemd, kill) and Ctrl-C close the window as its close button does,
+    // so that the geometry and settings are saved and the bus thread ends cleanly.
+    lk::system::SignalWatcher terminationSignals;
+    QObject::connect(&terminationSignals, &lk::system::SignalWatcher::signalled, &window,
+                     &QWidget::close);
     if (options->sim)
         window.controller()->setSimulatorSpec(*options->sim);
     window.controller()->setSimulatorFaults(options->simFaults);
@@ -141,6 +213,9 @@ int main(int argc, char *argv[])
     const lk::ui::ConnectionChoice choice = options->initialChoice(settings, present);
     const bool fellBack = options->fellBackToSimulator(settings, present);
     const QString rememberedPort = settings.connection().port;
+    qCInfo(lcStudio).noquote() << "connecting to"
+                               << (choice.isSimulator() ? QStringLiteral("the simulated bus")
+                                                        : choice.port);
     // A fallback to the simulator must not overwrite the port the user chose last time.
     window.connectTo(choice, !fellBack);
     if (fellBack) {

@@ -437,6 +437,41 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::AboutDialog</name>
+    <message>
+        <source>About LK Servo Studio</source>
+        <translation>关于 LK Servo Studio</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;LK Servo Studio %1&lt;/h2&gt;&lt;p&gt;Tuning and diagnostics for LK-TECH MS/MF/MG/MH servo drives on RS485 (protocol V2.3). Esc sends Motor Off to every drive from anywhere in the program.&lt;/p&gt;</source>
+        <translation>&lt;h2&gt;LK Servo Studio %1&lt;/h2&gt;&lt;p&gt;用于 RS485 总线上瓴控 LK-TECH MS/MF/MG/MH 伺服驱动的调参与诊断工具（协议 V2.3）。在程序中任何地方按 Esc 都会向每个驱动发送电机关闭命令。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Qt %1 (built with %2), platform %3
+%4
+%5 (%6)</source>
+        <translation>Qt %1（编译时为 %2），平台 %3
+%4
+%5（%6）</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Licence: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;. LK Servo Studio is free software: you may redistribute and modify it under the terms of the GNU General Public License, version 3 or any later version. It comes with ABSOLUTELY NO WARRANTY.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;许可证：&lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;。LK Servo Studio 是自由软件：您可以依据 GNU 通用公共许可证第 3 版或任何更新版本的条款再发布和修改它。本程序不提供任何担保。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Copy diagnostics</source>
+        <translation>复制诊断信息</translation>
+    </message>
+    <message>
+        <source>Copy versions, port, adapter, bus statistics and recent errors to the clipboard, for a bug report</source>
+        <translation>将版本、端口、适配器、总线统计和最近的错误复制到剪贴板，用于问题报告</translation>
+    </message>
+    <message>
+        <source>Copied</source>
+        <translation>已复制</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::BusController</name>
     <message>
         <source>Reconnected: %1</source>
@@ -544,6 +579,14 @@
     <message>
         <source>Disconnect</source>
         <translation>断开</translation>
+    </message>
+    <message>
+        <source>Fix permission…</source>
+        <translation>修复权限…</translation>
+    </message>
+    <message>
+        <source>The port was refused: show the command that gives you access</source>
+        <translation>端口被拒绝访问：显示获取访问权限的命令</translation>
     </message>
 </context>
 <context>
@@ -1570,6 +1613,33 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::HelpMenu</name>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation>键盘快捷键(&amp;K)</translation>
+    </message>
+    <message>
+        <source>Copy &amp;diagnostics</source>
+        <translation>复制诊断信息(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;About LK Servo Studio</source>
+        <translation>关于 LK Servo Studio(&amp;A)</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>关于 Qt(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>Diagnostics copied to the clipboard</source>
+        <translation>诊断信息已复制到剪贴板</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::JogPanel</name>
     <message>
         <source>Jog</source>
@@ -1763,22 +1833,6 @@
     <message>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
-    </message>
-    <message>
-        <source>&amp;Help</source>
-        <translation>帮助(&amp;H)</translation>
-    </message>
-    <message>
-        <source>&amp;About LK Servo Studio</source>
-        <translation>关于 LK Servo Studio(&amp;A)</translation>
-    </message>
-    <message>
-        <source>About LK Servo Studio</source>
-        <translation>关于 LK Servo Studio</translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;LK Servo Studio %1&lt;/b&gt;&lt;p&gt;Tuning and diagnostics for LK-TECH MS/MF/MG/MH servo drives on RS485 (protocol V2.3).&lt;/p&gt;&lt;p&gt;Esc sends Motor Off to every drive from anywhere in the program.&lt;/p&gt;</source>
-        <translation>&lt;b&gt;LK Servo Studio %1&lt;/b&gt;&lt;p&gt;用于 RS485 总线上瓴控 LK-TECH MS/MF/MG/MH 伺服驱动的调参与诊断工具（协议 V2.3）。&lt;/p&gt;&lt;p&gt;在程序中任何地方按 Esc 都会向每个驱动发送电机关闭命令。&lt;/p&gt;</translation>
     </message>
     <message>
         <source>Emergency stop.</source>
@@ -2130,6 +2184,25 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::PortAccessDialog</name>
+    <message>
+        <source>No permission for %1</source>
+        <translation>没有 %1 的访问权限</translation>
+    </message>
+    <message>
+        <source>lkstudio may not open %1: your user is not in the group that owns serial ports.</source>
+        <translation>lkstudio 无法打开 %1：您的用户不在拥有串口的用户组中。</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>复制</translation>
+    </message>
+    <message>
+        <source>Copied</source>
+        <translation>已复制</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::Readout</name>
     <message>
         <source>No update for over a second</source>
@@ -2183,6 +2256,17 @@
     <message>
         <source>Scan takes at most %1 at %2 baud</source>
         <translation>在 %2 波特下扫描最多需要 %1</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::SerialGroupAdvice</name>
+    <message>
+        <source>On %1 serial ports belong to the group %2. Add yourself to it with the command below, then log out and back in (or restart) so that the new group applies.</source>
+        <translation>在 %1 上，串口属于用户组 %2。用下面的命令把自己加入该组，然后注销并重新登录（或重启），新的用户组才会生效。</translation>
+    </message>
+    <message>
+        <source>Serial ports usually belong to the group %1 (uucp on Arch-like systems; ls -l on the port shows its group). Add yourself to it with the command below, then log out and back in (or restart) so that the new group applies.</source>
+        <translation>串口通常属于用户组 %1（Arch 类系统上为 uucp；对端口执行 ls -l 可看到其用户组）。用下面的命令把自己加入该组，然后注销并重新登录（或重启），新的用户组才会生效。</translation>
     </message>
 </context>
 <context>
@@ -2282,6 +2366,25 @@
     <message>
         <source>Stopped.</source>
         <translation>已停止。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::ShortcutsDialog</name>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>键盘快捷键</translation>
+    </message>
+    <message>
+        <source>Keys</source>
+        <translation>按键</translation>
+    </message>
+    <message>
+        <source>Action</source>
+        <translation>操作</translation>
+    </message>
+    <message>
+        <source>Emergency stop: Motor Off to every drive, from anywhere</source>
+        <translation>急停：在任何地方向每个驱动发送电机关闭</translation>
     </message>
 </context>
 <context>

@@ -5,13 +5,14 @@
 #include "RequestTracker.h"
 
 #include <motor/ModelNameInfo.h>
+#include <panels/FileDialogs.h>
 #include <panels/StatusColors.h>
 #include <protocol/RequestBuilder.h>
 
+#include <QtCore/QDir>
 #include <QtCore/QFileInfo>
 #include <QtGui/QClipboard>
 #include <QtWidgets/QApplication>
-#include <QtWidgets/QFileDialog>
 #include <QtWidgets/QGroupBox>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QHeaderView>
@@ -291,11 +292,11 @@ void DriveInfoView::askAndSaveReport()
 {
     if (!m_report || m_report->drives.isEmpty())
         return;
-    const QString suggestion =
-        QStringLiteral("lk-bus-report-%1.json")
-            .arg(m_report->createdAt.toLocalTime().toString(QStringLiteral("yyyyMMdd-HHmmss")));
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save bus report"), suggestion,
-                                                      tr("Bus report (*.json)"));
+    const QString path = FileDialogs::saveFile(
+        this, FileDialogs::Purpose::BusReport, tr("Save bus report"),
+        FileDialogs::suggestedName(QStringLiteral("bus-report"), {},
+                                   m_report->createdAt.toLocalTime(), QStringLiteral("json")),
+        tr("Bus report (*.json)"));
     if (!path.isEmpty())
         saveBusReport(path);
 }

@@ -7,13 +7,13 @@
 #include "RequestTracker.h"
 
 #include <bus/BusSession.h>
+#include <panels/FileDialogs.h>
 #include <panels/StatusColors.h>
 #include <protocol/RequestBuilder.h>
 #include <record/ParameterSet.h>
 
 #include <QtCore/QDateTime>
 #include <QtCore/QTime>
-#include <QtWidgets/QFileDialog>
 #include <QtWidgets/QGridLayout>
 #include <QtWidgets/QGroupBox>
 #include <QtWidgets/QHBoxLayout>
@@ -131,18 +131,21 @@ QWidget *TuningView::buildButtons()
     connect(m_writeRom, &QPushButton::clicked, this, &TuningView::writeToRom);
     connect(m_undo, &QPushButton::clicked, this, &TuningView::undoToSelection);
     connect(m_save, &QPushButton::clicked, this, [this] {
-        const QString suggestion =
-            QStringLiteral("%1-parameters.json")
-                .arg(QStringLiteral("drive%1").arg(driveId()) +
-                     (motor().model ? QLatin1Char('-') + motor().model->motorName : QString()));
-        const QString path = QFileDialog::getSaveFileName(
-            this, tr("Save drive parameters"), suggestion, tr("Parameter files (*.json)"));
+        const QString what =
+            (motor().model ? motor().model->motorName + QLatin1Char('-') : QString()) +
+            QStringLiteral("parameters");
+        const QString path = FileDialogs::saveFile(
+            this, FileDialogs::Purpose::Parameters, tr("Save drive parameters"),
+            FileDialogs::suggestedName(what, {driveId()}, QDateTime::currentDateTime(),
+                                       QStringLiteral("json")),
+            tr("Parameter files (*.json)"));
         if (!path.isEmpty())
             saveParameters(path);
     });
     connect(m_load, &QPushButton::clicked, this, [this] {
-        const QString path = QFileDialog::getOpenFileName(this, tr("Load drive parameters"), {},
-                                                          tr("Parameter files (*.json)"));
+        const QString path =
+            FileDialogs::openFile(this, FileDialogs::Purpose::Parameters,
+                                  tr("Load drive parameters"), tr("Parameter files (*.json)"));
         if (!path.isEmpty())
             loadParameters(path);
     });

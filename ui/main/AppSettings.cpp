@@ -25,6 +25,7 @@ const char kLanguage[] = "ui/language";
 const char kCurrentView[] = "window/currentView";
 const char kWindowGeometry[] = "window/geometry";
 const char kWindowState[] = "window/state";
+const char kLastFolderGroup[] = "lastFolder/"; // + a FileDialogs purpose key
 } // namespace key
 
 const char kKindSerial[] = "serial";
@@ -208,6 +209,16 @@ QString AppSettings::currentView() const
 void AppSettings::setCurrentView(const QString &name)
 {
     m_settings->setValue(QLatin1String(key::kCurrentView), name);
+}
+
+QString AppSettings::lastFolder(const QString &purpose) const
+{
+    return m_settings->value(QLatin1String(key::kLastFolderGroup) + purpose).toString();
+}
+
+void AppSettings::setLastFolder(const QString &purpose, const QString &folder)
+{
+    m_settings->setValue(QLatin1String(key::kLastFolderGroup) + purpose, folder);
 }
 
 QByteArray AppSettings::windowGeometry() const

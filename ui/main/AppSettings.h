@@ -50,6 +50,10 @@ public:
     QString currentView() const; ///< object name of the last central view shown
     void setCurrentView(const QString &name);
 
+    /// The folder last used for files of `purpose` (FileDialogs::purposeKey); empty: none.
+    QString lastFolder(const QString &purpose) const;
+    void setLastFolder(const QString &purpose, const QString &folder);
+
     QByteArray windowGeometry() const;
     QByteArray windowState() const;
     void setWindow(const QByteArray &geometry, const QByteArray &state);

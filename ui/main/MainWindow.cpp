@@ -4,6 +4,7 @@
 #include "BusController.h"
 #include "DriveViews.h"
 #include "EmergencyKeyFilter.h"
+#include "HelpMenu.h"
 #include "LanguageMenu.h"
 
 #include <drive/ControlView.h>
@@ -32,7 +33,6 @@
 #include <QtWidgets/QApplication>
 #include <QtWidgets/QDockWidget>
 #include <QtWidgets/QMenuBar>
-#include <QtWidgets/QMessageBox>
 #include <QtWidgets/QScrollArea>
 #include <QtWidgets/QStatusBar>
 #include <QtWidgets/QTabWidget>
@@ -167,15 +167,7 @@ void MainWindow::buildMenus()
     view->addSeparator();
     view->addMenu(new LanguageMenu(m_settings, this));
 
-    QMenu *help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&About LK Servo Studio"), this, [this] {
-        QMessageBox::about(
-            this, tr("About LK Servo Studio"),
-            tr("<b>LK Servo Studio %1</b><p>Tuning and diagnostics for LK-TECH MS/MF/MG/MH servo "
-               "drives on RS485 (protocol V2.3).</p><p>Esc sends Motor Off to every drive from "
-               "anywhere in the program.</p>")
-                .arg(QCoreApplication::applicationVersion()));
-    });
+    menuBar()->addMenu(new HelpMenu(m_model, m_connectionBar, this));
 }
 
 void MainWindow::wirePanels()
@@ -186,6 +178,8 @@ void MainWindow::wirePanels()
             [this](const ConnectionChoice &c) { connectTo(c); });
     connect(bar, &ConnectionBar::disconnectRequested, m_controller, &BusController::disconnectBus);
     connect(bar, &ConnectionBar::portsChanged, m_controller, &BusController::onPortsChanged);
+    connect(m_controller->session(), &bus::BusSession::errorOccurred, bar,
+            &ConnectionBar::showPortError);
     connect(bar, &ConnectionBar::choiceChanged, this, [this](const ConnectionChoice &c) {
         m_controller->setAutoReconnect(c.autoReconnect);
         m_settings->setConnection(c);

@@ -1,6 +1,7 @@
 #include "ConnectionBar.h"
 
 #include "Format.h"
+#include "PortAccessDialog.h"
 #include "StatusColors.h"
 #include "ThemedIcon.h"
 
@@ -14,6 +15,7 @@
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QPushButton>
+#include <QtWidgets/QToolButton>
 
 namespace lk::ui {
 
@@ -66,6 +68,12 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent), m_lister(&syste
     m_autoReconnect->setToolTip(tr("Reopen the port by itself when the adapter comes back"));
     m_state = new QLabel(this);
     m_state->setObjectName(QStringLiteral("connectionState"));
+    m_accessHelp = new QToolButton(this);
+    m_accessHelp->setObjectName(QStringLiteral("accessHelp"));
+    m_accessHelp->setText(tr("Fix permission\u2026"));
+    m_accessHelp->setToolTip(tr("The port was refused: show the command that gives you access"));
+    m_accessHelp->setVisible(false);
+    connect(m_accessHelp, &QToolButton::clicked, this, &ConnectionBar::showAccessHelp);
 
     layout->addWidget(new QLabel(tr("Port:"), this));
     layout->addWidget(m_port, 1);
@@ -73,6 +81,7 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent), m_lister(&syste
     layout->addWidget(m_baud);
     layout->addWidget(m_connect);
     layout->addWidget(m_autoReconnect);
+    layout->addWidget(m_accessHelp);
     layout->addWidget(m_state, 1);
 
     m_refresh = new QTimer(this);
@@ -183,11 +192,30 @@ void ConnectionBar::setChoice(const ConnectionChoice &c)
 void ConnectionBar::setConnectionStatus(const bus::ConnectionStatus &status)
 {
     m_status = status;
+    if (status.isOpen()) {
+        m_deniedPort.clear(); // the port opened after all: the advice is done
+        m_accessHelp->setVisible(false);
+    }
     // A baud sweep may leave the port at another baud than the one picked: show the truth.
     const int baud = m_baud->findData(status.baud);
     if (status.isOpen() && baud >= 0)
         m_baud->setCurrentIndex(baud);
     updateState();
+}
+
+void ConnectionBar::showPortError(const transport::TransportError &error)
+{
+    if (error.kind != transport::TransportError::Kind::PermissionDenied)
+        return;
+    m_deniedPort = choice().port;
+    m_accessHelp->setVisible(true);
+}
+
+void ConnectionBar::showAccessHelp()
+{
+    auto *dialog = new PortAccessDialog(m_deniedPort, SerialGroupAdvice::forThisSystem(), this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->open();
 }
 
 void ConnectionBar::onConnectClicked()

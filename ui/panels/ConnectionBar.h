@@ -3,6 +3,7 @@
 #include "ConnectionChoice.h"
 
 #include <bus/ConnectionStatus.h>
+#include <transport/Transport.h>
 
 #include <QtCore/QList>
 #include <QtWidgets/QWidget>
@@ -15,6 +16,7 @@ class QComboBox;
 class QLabel;
 class QPushButton;
 class QTimer;
+class QToolButton;
 
 namespace lk::ui {
 
@@ -54,9 +56,15 @@ public:
 
     /// Show the link state; the port and baud cannot change while a link is open.
     void setConnectionStatus(const bus::ConnectionStatus &status);
+    /// The button that explains how to get permission for the port (shown after a refusal).
+    QToolButton *accessHelpButton() const { return m_accessHelp; }
 
 public slots:
     void refreshPorts();
+    /// A port failed to open: for a permission refusal, offer the command that fixes it.
+    void showPortError(const lk::transport::TransportError &error);
+    /// Show how to get permission for the port that was refused (PortAccessDialog).
+    void showAccessHelp();
 
 signals:
     void connectRequested(const lk::ui::ConnectionChoice &choice);
@@ -78,6 +86,8 @@ private:
     QPushButton *m_connect = nullptr;
     QCheckBox *m_autoReconnect = nullptr;
     QLabel *m_state = nullptr;
+    QToolButton *m_accessHelp = nullptr;
+    QString m_deniedPort; ///< the port refused for lack of permission; empty: none
     QTimer *m_refresh = nullptr;
     PortLister m_lister;
     QList<PortEntry> m_ports;

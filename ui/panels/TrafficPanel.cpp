@@ -1,6 +1,7 @@
 #include "TrafficPanel.h"
 
 #include "BusModel.h"
+#include "FileDialogs.h"
 #include "ThemedIcon.h"
 #include "TrafficFilter.h"
 #include "TrafficModel.h"
@@ -15,7 +16,6 @@
 #include <QtGui/QIcon>
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
-#include <QtWidgets/QFileDialog>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QHeaderView>
 #include <QtWidgets/QLabel>
@@ -244,9 +244,11 @@ bool TrafficPanel::exportTo(const QString &fileName, QString *error) const
 void TrafficPanel::exportWithDialog()
 {
     flush();
-    const QString name = QFileDialog::getSaveFileName(this, tr("Export traffic"),
-                                                      QStringLiteral("lkstudio-traffic.txt"),
-                                                      tr("Traffic log (*.txt);;All files (*)"));
+    const QString name = FileDialogs::saveFile(
+        this, FileDialogs::Purpose::Traffic, tr("Export traffic"),
+        FileDialogs::suggestedName(QStringLiteral("traffic"), {}, QDateTime::currentDateTime(),
+                                   QStringLiteral("txt")),
+        tr("Traffic log (*.txt);;All files (*)"));
     if (name.isEmpty())
         return;
     QString error;

@@ -5,11 +5,13 @@
 #include "PollRateControl.h"
 #include "StripChart.h"
 
+#include <panels/FileDialogs.h>
+
+#include <QtCore/QDateTime>
 #include <QtCore/QEvent>
 #include <QtCore/QSignalBlocker>
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
-#include <QtWidgets/QFileDialog>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QMenu>
 #include <QtWidgets/QMessageBox>
@@ -458,8 +460,11 @@ QString PlotPanel::exportPng(const QString &path)
 
 void PlotPanel::askExportCsv(ExportScope scope)
 {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export CSV"), QString(), tr("CSV files (*.csv)"));
+    const QString path = FileDialogs::saveFile(
+        this, FileDialogs::Purpose::PlotCsv, tr("Export CSV"),
+        FileDialogs::suggestedName(QStringLiteral("plot"), m_drives, QDateTime::currentDateTime(),
+                                   QStringLiteral("csv")),
+        tr("CSV files (*.csv)"));
     if (path.isEmpty()) {
         return;
     }
@@ -470,8 +475,11 @@ void PlotPanel::askExportCsv(ExportScope scope)
 
 void PlotPanel::askExportPng()
 {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export PNG"), QString(), tr("PNG images (*.png)"));
+    const QString path = FileDialogs::saveFile(
+        this, FileDialogs::Purpose::PlotImage, tr("Export PNG"),
+        FileDialogs::suggestedName(QStringLiteral("plot"), m_drives, QDateTime::currentDateTime(),
+                                   QStringLiteral("png")),
+        tr("PNG images (*.png)"));
     if (path.isEmpty()) {
         return;
     }

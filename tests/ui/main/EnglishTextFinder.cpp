@@ -44,6 +44,7 @@ EnglishTextFinder::EnglishTextFinder()
 {
     for (const char *w : kAllowed)
         m_allowed.insert(QLatin1String(w));
+    m_allowed.insert(QStringLiteral("Qt")); // a product name: Help > About Qt
     // Command names with an underscore ("motor_off") are identifiers shared with lkctl; the
     // one-word ones ("torque", "speed") are also plain English words, so they are not allowed
     // here (the traffic view's Command column is skipped as protocol data instead).

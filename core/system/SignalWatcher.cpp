@@ -6,7 +6,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-namespace lk::lkctl {
+namespace lk::system {
 
 namespace {
 int g_pipe[2] = {-1, -1};
@@ -58,4 +58,4 @@ void SignalWatcher::onReadable()
         emit signalled(int(b));
 }
 
-} // namespace lk::lkctl
+} // namespace lk::system

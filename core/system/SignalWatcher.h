@@ -4,10 +4,11 @@
 
 class QSocketNotifier;
 
-namespace lk::lkctl {
+namespace lk::system {
 
-/// Turns SIGINT and SIGTERM into a Qt signal (self-pipe), so that `lkctl monitor` ends
-/// cleanly: polling stops, the last rows and the statistics are printed, the port is closed.
+/// Turns SIGINT and SIGTERM into a Qt signal (self-pipe), so that a program ends the normal
+/// way: `lkctl monitor` prints its last rows and statistics, lkstudio closes its window and
+/// saves its settings. The handler only writes a byte; Qt is never called from it.
 /// One instance at a time; the previous handlers are restored after the first signal (a
 /// second one is not swallowed) and on destruction.
 class SignalWatcher : public QObject {
@@ -26,4 +27,4 @@ private:
     QSocketNotifier *m_notifier = nullptr;
 };
 
-} // namespace lk::lkctl
+} // namespace lk::system
