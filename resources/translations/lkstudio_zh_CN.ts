@@ -64,6 +64,14 @@
         <source>scan cancelled</source>
         <translation>扫描已取消</translation>
     </message>
+    <message>
+        <source>drive %1 runs firmware 2.35 or later (protocol V2.35), which has no %2; nothing was sent</source>
+        <translation>驱动器 %1 运行 2.35 或更高版本固件（V2.35 协议），该协议没有 %2；未发送任何内容</translation>
+    </message>
+    <message>
+        <source>drive %1 speaks protocol V2.3, which has no %2 (firmware 2.35 added it); nothing was sent</source>
+        <translation>驱动器 %1 使用 V2.3 协议，该协议没有 %2（2.35 固件才加入）；未发送任何内容</translation>
+    </message>
 </context>
 <context>
     <name>lk::bus::Scanner</name>
@@ -81,6 +89,45 @@
     <message>
         <source>%1 traffic events dropped (view too slow)</source>
         <translation>丢弃了 %1 条通信记录（视图刷新过慢）</translation>
+    </message>
+</context>
+<context>
+    <name>lk::protocol::ErrorFlags</name>
+    <message>
+        <source>low voltage</source>
+        <translation>低压保护</translation>
+    </message>
+    <message>
+        <source>over-temperature</source>
+        <translation>过温保护</translation>
+    </message>
+    <message>
+        <source>over-voltage</source>
+        <translation>过压保护</translation>
+    </message>
+    <message>
+        <source>driver over-temperature</source>
+        <translation>驱动器过温保护</translation>
+    </message>
+    <message>
+        <source>motor over-temperature</source>
+        <translation>电机过温保护</translation>
+    </message>
+    <message>
+        <source>over-current</source>
+        <translation>过流保护</translation>
+    </message>
+    <message>
+        <source>short circuit</source>
+        <translation>短路保护</translation>
+    </message>
+    <message>
+        <source>stall</source>
+        <translation>堵转保护</translation>
+    </message>
+    <message>
+        <source>input signal lost (timeout)</source>
+        <translation>输入信号丢失（超时）</translation>
     </message>
 </context>
 <context>
@@ -145,14 +192,6 @@
         <translation>温度 %1 °C</translation>
     </message>
     <message>
-        <source>low voltage</source>
-        <translation>低压保护</translation>
-    </message>
-    <message>
-        <source>over temperature</source>
-        <translation>过温保护</translation>
-    </message>
-    <message>
         <source>error bits 0x%1</source>
         <translation>错误位 0x%1</translation>
     </message>
@@ -171,6 +210,46 @@
     <message>
         <source>%1, ia %2 A, ib %3 A, ic %4 A</source>
         <translation>%1，A 相 %2 A，B 相 %3 A，C 相 %4 A</translation>
+    </message>
+    <message>
+        <source>%1 Kp %2 Ki %3 Kd %4</source>
+        <translation>%1 Kp %2 Ki %3 Kd %4</translation>
+    </message>
+    <message>
+        <source>engage brake</source>
+        <translation>抱闸锁紧</translation>
+    </message>
+    <message>
+        <source>release brake</source>
+        <translation>抱闸释放</translation>
+    </message>
+    <message>
+        <source>read brake</source>
+        <translation>读取抱闸状态</translation>
+    </message>
+    <message>
+        <source>motor on</source>
+        <translation>电机运行</translation>
+    </message>
+    <message>
+        <source>motor off</source>
+        <translation>电机关闭</translation>
+    </message>
+    <message>
+        <source>%1 written</source>
+        <translation>%1 已写入</translation>
+    </message>
+    <message>
+        <source>%1 refused (flag %2)</source>
+        <translation>%1 被拒绝（标志 %2）</translation>
+    </message>
+    <message>
+        <source>brake released</source>
+        <translation>抱闸已释放</translation>
+    </message>
+    <message>
+        <source>brake applied</source>
+        <translation>抱闸已锁紧</translation>
     </message>
 </context>
 <context>
