@@ -1,7 +1,8 @@
+#include "E2eUtil.h"
+
 #include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
-#include <QtCore/QProcess>
 #include <QtCore/QProcessEnvironment>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
@@ -10,35 +11,19 @@
 // variables LKCTL_PORT and LKCTL_BAUD (the command line wins over them), and a --port that is
 // not a serial device at all.
 
+using lk::e2e::CtlResult;
+
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
 /// Run lkctl with `env` added to a clean environment (no LKCTL_* from the caller's shell).
-Result lkctl(const QStringList &args, const QMap<QString, QString> &env = {})
+CtlResult lkctl(const QStringList &args, const QMap<QString, QString> &env = {})
 {
     QProcessEnvironment e = QProcessEnvironment::systemEnvironment();
     e.remove(QStringLiteral("LKCTL_PORT"));
     e.remove(QStringLiteral("LKCTL_BAUD"));
     for (auto it = env.begin(); it != env.end(); ++it)
         e.insert(it.key(), it.value());
-    QProcess p;
-    p.setProcessEnvironment(e);
-    p.start(QStringLiteral(LKCTL_PATH), args);
-    if (!p.waitForStarted(60000))
-        qFatal("cannot start %s", LKCTL_PATH);
-    p.closeWriteChannel();
-    if (!p.waitForFinished(120000)) // generous: the machine is shared and may be loaded
-        qFatal("lkctl %s did not finish", qPrintable(args.join(' ')));
-    Result r;
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
+    return lk::e2e::lkctl(args, e);
 }
 
 QStringList words(const char *text)
@@ -46,7 +31,7 @@ QStringList words(const char *text)
     return QString::fromLatin1(text).split(QLatin1Char(' '), Qt::SkipEmptyParts);
 }
 
-QByteArray describe(const Result &r)
+QByteArray describe(const CtlResult &r)
 {
     return QStringLiteral("exit %1, stdout: %2, stderr: %3")
         .arg(r.exitCode)
@@ -82,8 +67,8 @@ void tst_LkctlInvocation::initTestCase()
 
 void tst_LkctlInvocation::shortVersion()
 {
-    const Result longForm = lkctl({QStringLiteral("--version")});
-    const Result shortForm = lkctl({QStringLiteral("-v")});
+    const CtlResult longForm = lkctl({QStringLiteral("--version")});
+    const CtlResult shortForm = lkctl({QStringLiteral("-v")});
     QCOMPARE(shortForm.exitCode, 0);
     QCOMPARE(shortForm.out, QByteArray("lkctl " LK_VERSION "\n"));
     QCOMPARE(shortForm.out, longForm.out);
@@ -92,7 +77,7 @@ void tst_LkctlInvocation::shortVersion()
 void tst_LkctlInvocation::portFromEnvironment()
 {
     const QString missing = m_dir.filePath(QStringLiteral("ttyLKfromEnv"));
-    const Result r = lkctl(words("scan"), {{"LKCTL_PORT", missing}});
+    const CtlResult r = lkctl(words("scan"), {{"LKCTL_PORT", missing}});
     QVERIFY2(r.exitCode == 1, describe(r)); // the port was tried: not a usage error
     QVERIFY2(r.err.contains("No serial port " + missing.toUtf8()), describe(r));
 }
@@ -101,8 +86,8 @@ void tst_LkctlInvocation::commandLineWinsOverPortVariable()
 {
     const QString fromEnv = m_dir.filePath(QStringLiteral("ttyLKenv"));
     const QString fromArgs = m_dir.filePath(QStringLiteral("ttyLKargs"));
-    const Result r = lkctl({QStringLiteral("scan"), QStringLiteral("--port"), fromArgs},
-                           {{"LKCTL_PORT", fromEnv}});
+    const CtlResult r = lkctl({QStringLiteral("scan"), QStringLiteral("--port"), fromArgs},
+                              {{"LKCTL_PORT", fromEnv}});
     QVERIFY2(r.exitCode == 1, describe(r));
     QVERIFY2(r.err.contains(fromArgs.toUtf8()), describe(r));
     QVERIFY2(!r.err.contains(fromEnv.toUtf8()), describe(r));
@@ -110,8 +95,8 @@ void tst_LkctlInvocation::commandLineWinsOverPortVariable()
 
 void tst_LkctlInvocation::simWinsOverPortVariable()
 {
-    const Result r = lkctl(words("scan --sim 3:MF --json"),
-                           {{"LKCTL_PORT", m_dir.filePath(QStringLiteral("ttyLKnone"))}});
+    const CtlResult r = lkctl(words("scan --sim 3:MF --json"),
+                              {{"LKCTL_PORT", m_dir.filePath(QStringLiteral("ttyLKnone"))}});
     QVERIFY2(r.exitCode == 0, describe(r));
     QCOMPARE(QJsonDocument::fromJson(r.out).array().size(), 1);
 }
@@ -119,14 +104,14 @@ void tst_LkctlInvocation::simWinsOverPortVariable()
 void tst_LkctlInvocation::baudFromEnvironment()
 {
     // scan's table ends with the baud it used: the variable's, not the default 115200.
-    const Result r = lkctl(words("scan --sim 3:MF"), {{"LKCTL_BAUD", "9600"}});
+    const CtlResult r = lkctl(words("scan --sim 3:MF"), {{"LKCTL_BAUD", "9600"}});
     QVERIFY2(r.exitCode == 0, describe(r));
     QVERIFY2(r.out.contains("bus at 9600 baud"), describe(r));
 }
 
 void tst_LkctlInvocation::badBaudVariableIsRefusedByName()
 {
-    const Result r = lkctl(words("scan --sim 3:MF"), {{"LKCTL_BAUD", "fast"}});
+    const CtlResult r = lkctl(words("scan --sim 3:MF"), {{"LKCTL_BAUD", "fast"}});
     QVERIFY2(r.exitCode == 2, describe(r));
     QCOMPARE(r.out, QByteArray());
     QVERIFY2(r.err.contains("LKCTL_BAUD must be one of 9600"), describe(r));
@@ -135,7 +120,7 @@ void tst_LkctlInvocation::badBaudVariableIsRefusedByName()
 
 void tst_LkctlInvocation::baudOptionWinsOverBadVariable()
 {
-    const Result r = lkctl(words("scan --sim 3:MF --baud 19200"), {{"LKCTL_BAUD", "12345"}});
+    const CtlResult r = lkctl(words("scan --sim 3:MF --baud 19200"), {{"LKCTL_BAUD", "12345"}});
     QVERIFY2(r.exitCode == 0, describe(r));
     QVERIFY2(r.out.contains("bus at 19200 baud"), describe(r));
 }
@@ -143,7 +128,7 @@ void tst_LkctlInvocation::baudOptionWinsOverBadVariable()
 void tst_LkctlInvocation::helpNamesTheVariables()
 {
     for (const char *command : {"--help", "scan --help", "monitor --help"}) {
-        const Result r = lkctl(words(command));
+        const CtlResult r = lkctl(words(command));
         QCOMPARE(r.exitCode, 0);
         QVERIFY2(r.out.contains("LKCTL_PORT") && r.out.contains("LKCTL_BAUD"), command);
     }
@@ -165,7 +150,7 @@ void tst_LkctlInvocation::notASerialDevice_data()
 void tst_LkctlInvocation::notASerialDevice()
 {
     QFETCH(QString, port);
-    const Result r = lkctl({QStringLiteral("scan"), QStringLiteral("--port"), port});
+    const CtlResult r = lkctl({QStringLiteral("scan"), QStringLiteral("--port"), port});
     QVERIFY2(r.exitCode == 1, describe(r));
     QVERIFY2(r.err.startsWith("lkctl scan: " + port.toUtf8() + " is not a serial device"),
              describe(r));
