@@ -39,8 +39,8 @@ QString Dispatcher::usage() const
     for (const auto &c : m_commands)
         text += QStringLiteral("  %1  %2\n").arg(c->name().leftJustified(width), c->summary());
     text += QStringLiteral("\nRun '%1 COMMAND --help' for the options and examples of a "
-                           "command. Every JSON shape, CSV column and exit status is in CLI.md\n"
-                           "(/usr/share/doc/lkstudio/CLI.md, or docs/CLI.md in the source); "
+                           "command.\nEvery JSON shape, CSV column and exit status is in CLI.md "
+                           "(/usr/share/doc/lkstudio/CLI.md,\nor docs/CLI.md in the source); "
                            "see also man %1.\n\nExamples:\n")
                 .arg(m_program);
     for (const auto &c : m_commands)
