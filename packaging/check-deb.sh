@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Unpacks a built lkstudio .deb into a throwaway root and checks that every file lands where
-# the desktop expects it, that the metadata validates, that no Qt library is bundled, and
-# that the packaged CLI runs against Debian's own Qt. Usage: check-deb.sh PATH.deb
+# the desktop expects it, that the metadata validates, that no Qt library is bundled, that the
+# binaries are stripped with their symbols in the -dbgsym package beside it, that the packaged
+# CLI runs against Debian's own Qt, and that lintian finds no error and no warning that
+# packaging/LINTIAN.md does not explain. Usage: check-deb.sh PATH.deb
 set -euo pipefail
 deb=${1:?usage: check-deb.sh PATH.deb}
 root=$(mktemp -d)
@@ -21,8 +23,24 @@ need usr/share/metainfo/$id.metainfo.xml
 need usr/share/icons/hicolor/scalable/apps/$id.svg
 for size in 16 24 32 48 64 128 256; do need usr/share/icons/hicolor/${size}x${size}/apps/$id.png; done
 need usr/lib/udev/rules.d/60-lkstudio-rs485.rules
-need usr/share/man/man1/lkctl.1.gz
-need usr/share/man/man1/lksim.1.gz
+for page in lkctl lksim lkstudio; do need usr/share/man/man1/$page.1.gz; done
+need usr/share/doc/lkstudio/copyright
+need usr/share/doc/lkstudio/changelog.gz
+need usr/share/doc/lkstudio/CLI.md
+need usr/share/bash-completion/completions/lkctl
+need usr/share/bash-completion/completions/lksim
+
+for bin in lkstudio lkctl lksim; do
+    if file "$root/usr/bin/$bin" | grep -q 'not stripped'; then echo "usr/bin/$bin is not stripped"; fail=1; fi
+done
+dbgsym=$(dirname "$deb")/$(basename "$deb" .deb | sed 's/^lkstudio_/lkstudio-dbgsym_/').ddeb
+if [ -f "$dbgsym" ]; then
+    debug_files=$(dpkg-deb -c "$dbgsym" | grep -c '\.debug$' || true)
+    echo "ok      $(basename "$dbgsym"): $debug_files debug files"
+    [ "$debug_files" -eq 3 ] || { echo "expected 3 debug files in $dbgsym"; fail=1; }
+else
+    echo "MISSING $dbgsym (the debug symbols)"; fail=1
+fi
 
 desktop-file-validate "$root/usr/share/applications/$id.desktop"
 appstreamcli validate --no-net "$root/usr/share/metainfo/$id.metainfo.xml"
@@ -37,5 +55,21 @@ for lib in libqt6core6 libqt6serialport6 libqt6widgets6 libqt6charts6 libqt6svg6
 done
 "$root/usr/bin/lkctl" --version
 "$root/usr/bin/lkctl" encode motor_off --id 1 | grep -qx '3E 80 01 00 BF' || { echo "packaged lkctl does not run"; fail=1; }
+
+# lintian: errors fail; each warning must be explained in packaging/LINTIAN.md.
+lintian_rc=0
+lintian_out=$(lintian --fail-on error --tag-display-limit 0 "$deb" 2>&1) || lintian_rc=$?
+echo "$lintian_out" | sed 's/^/lintian: /'
+if [ $lintian_rc -ne 0 ] || echo "$lintian_out" | grep -q '^E: '; then
+    echo "lintian failed (status $lintian_rc)"; fail=1
+fi
+explained=$(dirname "$0")/LINTIAN.md
+for tag in $(echo "$lintian_out" | sed -n 's/^W: [^ ]* \([^ ]*\).*/\1/p' | sort -u); do
+    grep -q "\`$tag\`" "$explained" || { echo "lintian warning $tag is not explained in packaging/LINTIAN.md"; fail=1; }
+done
+
+size=$(stat -c %s "$deb")
+installed=$(dpkg-deb -f "$deb" Installed-Size)
+echo "size: $((size / 1024)) KiB .deb, $installed KiB installed"
 [ $fail -eq 0 ] && echo "deb check passed: $(basename "$deb")"
 exit $fail

@@ -8,7 +8,8 @@ packages=(
     qt6-base-dev qt6-serialport-dev qt6-charts-dev libqt6opengl6-dev qt6-svg-dev
     qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-translations-l10n
     qt6-qpa-plugins libgl-dev
-    clang-format xvfb xauth appstream desktop-file-utils dpkg-dev file help2man
+    clang-format xvfb xauth appstream desktop-file-utils dpkg-dev file go-md2man
+    lintian reuse bash-completion
     fonts-noto-cjk
     # lkstudio on Wayland (tst_lkstudioprocess starts it under a headless weston)
     qt6-wayland weston

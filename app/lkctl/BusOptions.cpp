@@ -20,36 +20,55 @@ void BusOptions::declare(ArgParser &parser)
     parser.addOption(QStringLiteral("sim-rom-dir"), true);
 }
 
+namespace {
+/// The baud in `text` (from --baud or LKCTL_BAUD, named by `source`) when it is one of the
+/// nine; nullopt with `error` naming the source otherwise.
+std::optional<int> parseBaud(const QString &text, const QString &source, QString *error)
+{
+    bool ok = false;
+    const int baud = text.toInt(&ok);
+    if (ok && bus::BusTiming::isStandardBaud(baud))
+        return baud;
+    QStringList bauds;
+    for (int b : bus::BusTiming::standardBauds())
+        bauds << QString::number(b);
+    *error = QStringLiteral("%1 must be one of %2 (got '%3')")
+                 .arg(source, bauds.join(QStringLiteral(", ")), text);
+    return std::nullopt;
+}
+} // namespace
+
 std::optional<BusOptions> BusOptions::from(const ArgParser &parser, QString *error)
 {
     BusOptions o;
-    const bool port = parser.isSet(QStringLiteral("port"));
     const bool sim = parser.isSet(QStringLiteral("sim"));
+    // The command line wins over the environment: LKCTL_PORT only fills in a missing bus.
+    const QString envPort = qEnvironmentVariable(kPortVariable);
+    const bool port = parser.isSet(QStringLiteral("port")) || (!sim && !envPort.isEmpty());
     if (port == sim) {
         *error = port ? QStringLiteral("give --port or --sim, not both")
                       : QStringLiteral("no bus: give --port DEV (a serial adapter) or --sim "
-                                       "ID:SERIES,... (the built-in simulator)");
+                                       "ID:SERIES,... (the built-in simulator), or set %1")
+                            .arg(QLatin1String(kPortVariable));
         return std::nullopt;
     }
-    if (parser.isSet(QStringLiteral("baud"))) {
-        bool ok = false;
-        o.baud = parser.value(QStringLiteral("baud")).toInt(&ok);
-        if (!ok || !bus::BusTiming::isStandardBaud(o.baud)) {
-            QStringList bauds;
-            for (int b : bus::BusTiming::standardBauds())
-                bauds << QString::number(b);
-            *error =
-                QStringLiteral("--baud must be one of %1 (got '%2')")
-                    .arg(bauds.join(QStringLiteral(", ")), parser.value(QStringLiteral("baud")));
+    const bool baudOption = parser.isSet(QStringLiteral("baud"));
+    if (baudOption || !qEnvironmentVariableIsEmpty(kBaudVariable)) {
+        const std::optional<int> baud = baudOption ? parseBaud(parser.value(QStringLiteral("baud")),
+                                                               QStringLiteral("--baud"), error)
+                                                   : parseBaud(qEnvironmentVariable(kBaudVariable),
+                                                               QLatin1String(kBaudVariable), error);
+        if (!baud)
             return std::nullopt;
-        }
+        o.baud = *baud;
     }
     if (parser.isSet(QStringLiteral("sim-rom-dir")) && !sim) {
         *error = QStringLiteral("--sim-rom-dir goes with --sim");
         return std::nullopt;
     }
     if (port) {
-        o.port = parser.value(QStringLiteral("port"));
+        o.port =
+            parser.isSet(QStringLiteral("port")) ? parser.value(QStringLiteral("port")) : envPort;
         if (o.port.isEmpty()) {
             *error = QStringLiteral("--port needs a device, e.g. /dev/ttyUSB0");
             return std::nullopt;
@@ -89,10 +108,11 @@ bus::TransportFactory BusOptions::factory() const
 QString BusOptions::helpText()
 {
     return QStringLiteral(
-        "Bus (one of --port and --sim is required):\n"
-        "  --port DEV         serial adapter, e.g. /dev/ttyUSB0 or ttyUSB0 (8N1)\n"
-        "  --baud N           9600, 19200, 38400, 57600, 115200 (default), 230400, 460800,\n"
-        "                     1000000 or 2000000\n"
+        "Bus (one of --port and --sim is required, unless LKCTL_PORT names the port):\n"
+        "  --port DEV         serial adapter, e.g. /dev/ttyUSB0 or ttyUSB0 (8N1);\n"
+        "                     default: the environment variable LKCTL_PORT\n"
+        "  --baud N           9600, 19200, 38400, 57600, 115200, 230400, 460800, 1000000\n"
+        "                     or 2000000; default: LKCTL_BAUD, else 115200\n"
         "  --sim ID:SERIES,.. the built-in simulated bus instead, e.g. --sim 3:MF,17:MS\n"
         "                     (series MS, MF, MG, MH; it lives only as long as this command;\n"
         "                     3:MF+accel-ignored copies firmware that ignores 0x34, and\n"

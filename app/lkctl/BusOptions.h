@@ -13,6 +13,10 @@ class ArgParser;
 /// Which bus a live subcommand talks to: a serial port (`--port DEV --baud N`) or the
 /// in-process simulator (`--sim ID:SERIES,...`, optionally `--sim-rom-dir DIR`).
 struct BusOptions {
+    /// Environment variables for the defaults of --port and --baud (the command line wins).
+    static constexpr const char *kPortVariable = "LKCTL_PORT";
+    static constexpr const char *kBaudVariable = "LKCTL_BAUD";
+
     QString port;
     int baud = 115200;
     QString simSpec;   ///< non-empty: the in-process simulated bus
@@ -20,8 +24,9 @@ struct BusOptions {
 
     /// Declare --port, --baud, --sim and --sim-rom-dir on a parser.
     static void declare(ArgParser &parser);
-    /// Read them back; nullopt with `error` when unusable (neither or both of --port and
-    /// --sim, a baud that is not one of the nine, a bad --sim spec).
+    /// Read them back, with LKCTL_PORT and LKCTL_BAUD filling in what the command line leaves
+    /// out; nullopt with `error` when unusable (no bus, both --port and --sim, a baud that
+    /// is not one of the nine, naming --baud or LKCTL_BAUD, a bad --sim spec).
     static std::optional<BusOptions> from(const ArgParser &parser, QString *error);
 
     bool isSimulated() const { return !simSpec.isEmpty(); }

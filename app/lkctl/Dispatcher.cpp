@@ -32,14 +32,16 @@ QString Dispatcher::usage() const
     for (const auto &c : m_commands)
         width = std::max(width, c->name().size());
     QString text = QStringLiteral("Usage: %1 COMMAND [OPTIONS]\n"
-                                  "       %1 help [COMMAND] | %1 --help | %1 --version\n\n"
+                                  "       %1 help [COMMAND] | %1 --help | %1 --version (-v)\n\n"
                                   "Command-line tool for LK-TECH MS/MF/MG/MH servo drives on RS485 "
                                   "(protocol V2.3).\n\nCommands:\n")
                        .arg(m_program);
     for (const auto &c : m_commands)
         text += QStringLiteral("  %1  %2\n").arg(c->name().leftJustified(width), c->summary());
     text += QStringLiteral("\nRun '%1 COMMAND --help' for the options and examples of a "
-                           "command.\n\nExamples:\n")
+                           "command.\nEvery JSON shape, CSV column and exit status is in CLI.md "
+                           "(/usr/share/doc/lkstudio/CLI.md,\nor docs/CLI.md in the source); "
+                           "see also man %1.\n\nExamples:\n")
                 .arg(m_program);
     for (const auto &c : m_commands)
         text += QStringLiteral("  %1\n").arg(c->example());
@@ -47,6 +49,9 @@ QString Dispatcher::usage() const
         "\nBus options of the live commands (scan ... monitor):\n"
         "  --port DEV [--baud N]   a serial adapter (default 115200 baud)\n"
         "  --sim ID:SERIES,...     the built-in simulated bus, e.g. --sim 3:MF,17:MS\n"
+        "\nEnvironment (the command line wins):\n"
+        "  LKCTL_PORT   the port when neither --port nor --sim is given\n"
+        "  LKCTL_BAUD   the baud when --baud is not given (else 115200)\n"
         "\nExit status (each command's help says which apply to it):\n"
         "  0  success\n"
         "  1  the operation failed: the port could not be opened (the message says why and how\n"
@@ -98,7 +103,7 @@ int Dispatcher::run(const QStringList &args, Console &console)
         return help({}, console);
     if (first == QLatin1String("help"))
         return help(args.mid(1), console);
-    if (first == QLatin1String("--version")) {
+    if (first == QLatin1String("--version") || first == QLatin1String("-v")) {
         console.outLine(QStringLiteral("%1 %2").arg(m_program, m_version));
         return kExitOk;
     }

@@ -41,6 +41,12 @@ QString baseText(TransportError::Kind kind, const QString &port, int baud)
                    "%1 refused %2 baud 8N1. Try another baud or another adapter.")
             .arg(port)
             .arg(baud);
+    case Kind::NotSerialDevice:
+        return QCoreApplication::translate(
+                   "lk::transport::PortErrorText",
+                   "%1 is not a serial device. Give the adapter's port, e.g. /dev/ttyUSB0; "
+                   "`ls /dev/serial/by-id/` lists the adapters plugged in.")
+            .arg(port);
     case Kind::IoError:
         return QCoreApplication::translate("lk::transport::PortErrorText", "Serial port %1 failed.")
             .arg(port);

@@ -4,6 +4,7 @@
 
 #include "PortErrorText.h"
 
+#include <QtCore/QFile>
 #include <QtCore/QFileInfo>
 #include <QtCore/QLoggingCategory>
 #include <QtCore/QStringList>
@@ -13,6 +14,8 @@
 #include <linux/serial.h>
 #include <sys/ioctl.h>
 #endif
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace lk::transport {
@@ -30,6 +33,35 @@ QString availablePortsText()
                                              "no serial ports found")
                : QCoreApplication::translate("lk::transport::SerialTransport", "ports found: %1")
                      .arg(names.join(QStringLiteral(", ")));
+}
+
+/// What `path` is when it is not a terminal ("a regular file"...); empty when it is one (a
+/// serial adapter, or a pseudo-terminal such as lksim's) or cannot be told. Asked only after
+/// the port failed to open: opening a working adapter just to ask could toggle its lines.
+QString nonTerminalKind(const QString &path)
+{
+    const auto say = [](const char *text) {
+        return QCoreApplication::translate("lk::transport::SerialTransport", text);
+    };
+    const QByteArray name = QFile::encodeName(path);
+    struct stat st {};
+    if (::stat(name.constData(), &st) != 0)
+        return {};
+    if (S_ISREG(st.st_mode))
+        return say(QT_TRANSLATE_NOOP("lk::transport::SerialTransport", "a regular file"));
+    if (S_ISDIR(st.st_mode))
+        return say(QT_TRANSLATE_NOOP("lk::transport::SerialTransport", "a directory"));
+    if (!S_ISCHR(st.st_mode))
+        return say(
+            QT_TRANSLATE_NOOP("lk::transport::SerialTransport", "a pipe, socket or block device"));
+    const int fd = ::open(name.constData(), O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0)
+        return {};
+    const bool terminal = ::isatty(fd) == 1;
+    ::close(fd);
+    return terminal ? QString()
+                    : say(QT_TRANSLATE_NOOP("lk::transport::SerialTransport",
+                                            "a device that is not a terminal"));
 }
 } // namespace
 
@@ -128,6 +160,13 @@ TransportError SerialTransport::openFailure(QSerialPort::SerialPortError error,
                                             const QString &detail) const
 {
     using Kind = TransportError::Kind;
+    if (error != QSerialPort::DeviceNotFoundError && error != QSerialPort::PermissionError) {
+        // A regular file or /dev/null fails like a driver refusing the baud (ENOTTY): say
+        // what it really is rather than suggest another baud.
+        const QString what = nonTerminalKind(m_path);
+        if (!what.isEmpty())
+            return portError(Kind::NotSerialDevice, m_path, 0, what);
+    }
     switch (error) {
     case QSerialPort::DeviceNotFoundError:
         return portError(Kind::NoSuchPort, m_path, 0, availablePortsText());

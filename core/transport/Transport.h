@@ -15,6 +15,7 @@ struct TransportError {
         PortBusy,         ///< another program holds the port
         Unplugged,        ///< the device vanished while open
         BadSettings,      ///< baud or framing refused by the driver
+        NotSerialDevice,  ///< the path is a file, a directory or a device that is no tty
         IoError,          ///< any other read/write failure
     };
     Kind kind = Kind::None;

@@ -484,6 +484,10 @@
         <source>Serial port %1 failed.</source>
         <translation>串口 %1 出错。</translation>
     </message>
+    <message>
+        <source>%1 is not a serial device. Give the adapter&apos;s port, e.g. /dev/ttyUSB0; `ls /dev/serial/by-id/` lists the adapters plugged in.</source>
+        <translation>%1 不是串口设备。请指定转换器的串口，例如 /dev/ttyUSB0；`ls /dev/serial/by-id/` 会列出已插入的转换器。</translation>
+    </message>
 </context>
 <context>
     <name>lk::transport::SerialTransport</name>
@@ -498,6 +502,22 @@
     <message>
         <source>driver set %1</source>
         <translation>驱动程序设置为 %1</translation>
+    </message>
+    <message>
+        <source>a regular file</source>
+        <translation>这是一个普通文件</translation>
+    </message>
+    <message>
+        <source>a directory</source>
+        <translation>这是一个目录</translation>
+    </message>
+    <message>
+        <source>a pipe, socket or block device</source>
+        <translation>这是管道、套接字或块设备</translation>
+    </message>
+    <message>
+        <source>a device that is not a terminal</source>
+        <translation>这是一个不是终端的设备</translation>
     </message>
 </context>
 <context>
@@ -1689,6 +1709,10 @@
     <message>
         <source>%1 s</source>
         <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>This is not a serial port. Pick the USB-RS485 adapter from the list.</source>
+        <translation>这不是串口。请从列表中选择 USB-RS485 转换器。</translation>
     </message>
 </context>
 <context>

@@ -72,6 +72,8 @@ private slots:
     void systemPath();
     void missingPort();
     void badBaud();
+    void notASerialDevice_data();
+    void notASerialDevice();
     void roundTripOverPty();
     void busyPort();
     void permissionDenied();
@@ -91,6 +93,8 @@ void tst_SerialTransport::errorText_data()
     QTest::newRow("unplugged") << Kind::Unplugged << QStringList{"/dev/ttyUSB0", "unplugged"};
     QTest::newRow("bad settings") << Kind::BadSettings << QStringList{"/dev/ttyUSB0", "2000000"};
     QTest::newRow("io") << Kind::IoError << QStringList{"/dev/ttyUSB0"};
+    QTest::newRow("not serial") << Kind::NotSerialDevice
+                                << QStringList{"/dev/ttyUSB0 is not a serial device", "by-id"};
 }
 
 void tst_SerialTransport::errorText()
@@ -135,6 +139,42 @@ void tst_SerialTransport::badBaud()
     QSignalSpy errors(&t, &Transport::errorOccurred);
     QVERIFY(!t.open());
     QCOMPARE(errors.at(0).at(0).value<TransportError>().kind, Kind::BadSettings);
+}
+
+void tst_SerialTransport::notASerialDevice_data()
+{
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<QString>("what");
+    static QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString file = dir.filePath(QStringLiteral("capture.txt"));
+    QFile f(file);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("3E 80 01 00 BF\n");
+    f.close();
+    QTest::newRow("regular file") << file << "a regular file";
+    QTest::newRow("directory") << dir.path() << "a directory";
+    QTest::newRow("/dev/null") << "/dev/null"
+                               << "a device that is not a terminal";
+}
+
+/// A regular file, a directory or /dev/null as the port is named for what it is, not
+/// blamed on the baud (a pty, as lksim serves, is a serial device: roundTripOverPty).
+void tst_SerialTransport::notASerialDevice()
+{
+    QFETCH(QString, path);
+    QFETCH(QString, what);
+    SerialTransport t(settingsFor(path));
+    QSignalSpy errors(&t, &Transport::errorOccurred);
+    QVERIFY(!t.open());
+    QCOMPARE(t.state(), Transport::State::Closed);
+    QCOMPARE(errors.size(), 1);
+    const auto e = errors.at(0).at(0).value<TransportError>();
+    QVERIFY2(e.kind == Kind::NotSerialDevice, qPrintable(e.message));
+    QVERIFY2(e.message.startsWith(path + QStringLiteral(" is not a serial device")),
+             qPrintable(e.message));
+    QVERIFY2(e.message.endsWith(QStringLiteral("(%1)").arg(what)), qPrintable(e.message));
+    QVERIFY2(!e.message.contains(QStringLiteral("baud")), qPrintable(e.message));
 }
 
 void tst_SerialTransport::roundTripOverPty()

@@ -4,6 +4,7 @@
 
 #include <QtCore/QByteArray>
 #include <QtCore/QProcess>
+#include <QtCore/QProcessEnvironment>
 #include <QtCore/QStringList>
 #include <QtTest/QTest>
 
@@ -22,12 +23,13 @@ struct CtlResult {
     QByteArray err;
 };
 
-#ifdef LKCTL_PATH
-/// Run the lkctl binary; generous timeout, the machine may be loaded.
-inline CtlResult lkctl(const QStringList &args, int timeoutMs = 120000)
+/// Run a program of the project in `env`; generous timeout, the machine may be loaded.
+inline CtlResult runProgram(const QString &program, const QStringList &args,
+                            const QProcessEnvironment &env, int timeoutMs = 120000)
 {
     QProcess p;
-    p.start(QStringLiteral(LKCTL_PATH), args);
+    p.setProcessEnvironment(env);
+    p.start(program, args);
     CtlResult r;
     if (!p.waitForStarted(60000))
         return r;
@@ -40,6 +42,20 @@ inline CtlResult lkctl(const QStringList &args, int timeoutMs = 120000)
     r.out = p.readAllStandardOutput();
     r.err = p.readAllStandardError();
     return r;
+}
+
+#ifdef LKCTL_PATH
+/// Run the lkctl binary in `env`.
+inline CtlResult lkctl(const QStringList &args, const QProcessEnvironment &env,
+                       int timeoutMs = 120000)
+{
+    return runProgram(QStringLiteral(LKCTL_PATH), args, env, timeoutMs);
+}
+
+/// Run the lkctl binary in this process's environment.
+inline CtlResult lkctl(const QStringList &args, int timeoutMs = 120000)
+{
+    return lkctl(args, QProcessEnvironment::systemEnvironment(), timeoutMs);
 }
 #endif
 

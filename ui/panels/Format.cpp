@@ -68,6 +68,9 @@ QString Format::transportError(const transport::TransportError &error)
     case K::BadSettings:
         what = tr("The adapter refused the port settings. Pick another baud or another adapter.");
         break;
+    case K::NotSerialDevice:
+        what = tr("This is not a serial port. Pick the USB-RS485 adapter from the list.");
+        break;
     case K::IoError:
         what = tr("Input/output error on the port. Check the cable and the adapter.");
         break;

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Drives packaging/completion/lkctl the way bash does on TAB and checks what it offers, against
+# the lkctl binary given (the completion reads commands and options from lkctl's --help).
+# Usage: check-completion.sh COMPLETION_FILE LKCTL_BINARY
+set -uo pipefail
+completion=$1
+lkctl=$2
+source /usr/share/bash-completion/bash_completion || { echo "bash-completion is not installed"; exit 1; }
+source "$completion"
+fail=0
+
+# complete WORD... : what TAB offers after the words (the last one is being typed).
+complete_words()
+{
+    COMP_WORDS=("$lkctl" "$@")
+    COMP_CWORD=$((${#COMP_WORDS[@]} - 1))
+    COMP_LINE="${COMP_WORDS[*]}"
+    COMP_POINT=${#COMP_LINE}
+    COMPREPLY=()
+    _lkctl lkctl "${COMP_WORDS[COMP_CWORD]}" "${COMP_WORDS[COMP_CWORD - 1]}"
+    printf '%s\n' "${COMPREPLY[@]}" | sort | tr '\n' ' ' | sed 's/ $//'
+}
+
+expect()
+{
+    local want=$1
+    shift
+    local got
+    got=$(complete_words "$@")
+    if [ "$got" = "$want" ]; then
+        echo "ok   lkctl $* -> $got"
+    else
+        echo "FAIL lkctl $*: want '$want', got '$got'"
+        fail=1
+    fi
+}
+
+expect "scan stop" s
+expect "decode" de
+expect "--baud --from --json --port --retries --sim --sim-rom-dir --sweep-bauds --to" scan --
+expect "--sweep-bauds" scan --sw
+expect "--sim --sim-rom-dir" info 3 --si
+expect "115200" scan --baud 1152
+expect "multi-turn" read 3 mu
+expect "single-position speed" control 3 s
+expect "increment_position increment_position_limited" encode incr
+expect "--speed-dps" encode speed --id 1 --speed-d
+expect "MF MG MH MS" decode --series ""
+expect "all" off a
+expect "ccw cw" control 3 single-position 90 --direction ""
+[ $fail -eq 0 ] && echo "bash completion ok"
+exit $fail
