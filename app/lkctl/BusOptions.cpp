@@ -111,10 +111,11 @@ QString BusOptions::helpText()
         "Bus (one of --port and --sim is required, unless LKCTL_PORT names the port):\n"
         "  --port DEV         serial adapter, e.g. /dev/ttyUSB0 or ttyUSB0 (8N1);\n"
         "                     default: the environment variable LKCTL_PORT\n"
-        "  --baud N           9600, 19200, 38400, 57600, 115200, 230400, 460800, 1000000\n"
-        "                     or 2000000; default: LKCTL_BAUD, else 115200\n"
+        "  --baud N           9600, 19200, 38400, 57600, 115200, 230400, 460800, 1000000,\n"
+        "                     2000000 or 4000000; default: LKCTL_BAUD, else 115200\n"
         "  --sim ID:SERIES,.. the built-in simulated bus instead, e.g. --sim 3:MF,17:MS\n"
         "                     (series MS, MF, MG, MH; it lives only as long as this command;\n"
+        "                     1:MS4015@2.35 is a firmware-2.35 drive (protocol V2.35);\n"
         "                     3:MF+accel-ignored copies firmware that ignores 0x34, and\n"
         "                     +clear-angle-ignored firmware that ignores 0x95)\n"
         "  --sim-rom-dir DIR  keep the simulated drives' ROM in DIR between commands\n");

@@ -166,7 +166,7 @@ QString ScanCommand::usage() const
                "\n"
                "Options:\n"
                "  --from ID, --to ID  the ID range (default 1 and 32)\n"
-               "  --sweep-bauds       scan at each of the nine bauds (slow); the bus ends at\n"
+               "  --sweep-bauds       scan at each of the ten bauds (slow); the bus ends at\n"
                "                      the baud where most drives answered\n"
                "  --retries N         probe silent IDs again N more times with the full\n"
                "                      timeout (default 0: only when a late reply was seen)\n"

@@ -3,6 +3,7 @@
 #include "PtyBusServer.h"
 #include "PtyDevice.h"
 
+#include <bus/BusTiming.h>
 #include <sim/SimBus.h>
 #include <sim/SimBusSpec.h>
 
@@ -50,7 +51,7 @@ int fail(const QString &message)
 
 bool isLkBaud(int baud)
 {
-    for (int b : {9600, 19200, 38400, 57600, 115200, 230400, 460800, 1000000, 2000000}) {
+    for (int b : lk::bus::BusTiming::standardBauds()) {
         if (b == baud)
             return true;
     }
@@ -87,7 +88,9 @@ int main(int argc, char *argv[])
         QStringLiteral("motors"),
         QStringLiteral("Drives on the bus: ID:SERIES[,ID:SERIES...], ID 1..32, series MS, MF, "
                        "MG or MH; a motor name may stand for the series (5:MG5010E-i36). "
-                       "Firmware quirks seen on real drives may follow: 3:MF+accel-ignored "
+                       "@2.35 after the model makes a firmware-2.35 drive speaking protocol "
+                       "V2.35 (1:MS4015@2.35). Firmware quirks seen on real drives may follow: "
+                       "3:MF+accel-ignored "
                        "(0x34 acknowledged, not applied, 0x33 reads 0), "
                        "+clear-angle-ignored (0x95 acknowledged, angle unchanged)."),
         QStringLiteral("spec"));
@@ -154,7 +157,7 @@ int main(int argc, char *argv[])
     const int baudValue = parser.value(baud).toInt(&ok);
     if (!ok || !isLkBaud(baudValue))
         return fail(QStringLiteral("--baud must be one of 9600, 19200, 38400, 57600, 115200, "
-                                   "230400, 460800, 1000000, 2000000"));
+                                   "230400, 460800, 1000000, 2000000, 4000000"));
     const int delayUs = parser.value(replyDelay).toInt(&ok);
     if (!ok || delayUs < 0 || delayUs > 1000000)
         return fail(QStringLiteral("--reply-delay-us must be 0..1000000"));

@@ -13,10 +13,11 @@ int frameBytes(int len)
 }
 } // namespace
 
-const std::array<int, 9> &BusTiming::standardBauds()
+const std::array<int, 10> &BusTiming::standardBauds()
 {
-    static const std::array<int, 9> kBauds{9600,   19200,  38400,   57600,  115200,
-                                           230400, 460800, 1000000, 2000000};
+    // V2.3's nine and V2.35's 4 Mbaud (V2.35.md section 1).
+    static const std::array<int, 10> kBauds{9600,   19200,  38400,   57600,   115200,
+                                            230400, 460800, 1000000, 2000000, 4000000};
     return kBauds;
 }
 

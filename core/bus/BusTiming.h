@@ -16,8 +16,8 @@ public:
     static constexpr double kTurnaroundS = 0.0005; ///< a drive replies within 0.5 ms
     static constexpr int kDefaultBaud = 115200;
 
-    /// The nine bauds LK drives support, slowest first.
-    static const std::array<int, 9> &standardBauds();
+    /// The ten bauds LK drives support (4 Mbaud from firmware 2.35 on), slowest first.
+    static const std::array<int, 10> &standardBauds();
     static bool isStandardBaud(int baud);
 
     /// Frame sizes on the wire (header, data and data checksum) for a command.

@@ -14,7 +14,7 @@ namespace lk::bus {
 
 class BusWorker;
 
-/// Finds drives on IDs of a range, optionally at each of the nine bauds. Runs on the bus
+/// Finds drives on IDs of a range, optionally at each of the ten bauds. Runs on the bus
 /// thread through the worker's queue (Operator priority; polling pauses meanwhile). After a
 /// complete scan the worker knows exactly the drives found in the range (series inferred
 /// from the model name). A baud sweep ends at the baud where most drives answered (the

@@ -290,7 +290,8 @@ int keyRank(const QString &key)
             "encoder encoder_raw encoder_offset action param param_id "
             "angle_deg angle_raw max_speed_dps max_speed_raw "
             "angle_kp angle_ki angle_kd speed_kp speed_ki speed_kd iq_kp iq_ki iq_kd accel_dps2 "
-            "max_torque max_angle_half_raw current_ramp speed_ramp_dps2 value_bytes "
+            "max_torque max_angle_deg max_angle_raw max_angle_half_raw current_ramp "
+            "speed_ramp_dps2 value_bytes "
             "success success_flag brake_released brake_raw "
             "driver_name motor_name hardware_version hardware_version_raw "
             "firmware_version firmware_version_raw motor_id motor_version_raw")
@@ -310,7 +311,7 @@ bool isRealField(const QString &key)
 {
     static const QStringList reals =
         QStringLiteral("speed_dps angle_deg max_speed_dps iq_a ia_a ib_a ic_a voltage_v "
-                       "bus_current_a hardware_version firmware_version")
+                       "bus_current_a max_angle_deg hardware_version firmware_version")
             .split(QLatin1Char(' '));
     return reals.contains(key);
 }

@@ -2319,8 +2319,8 @@
         <translation>尝试所有波特率</translation>
     </message>
     <message>
-        <source>Scan the range at each of the nine bauds (slower): for drives whose baud is unknown</source>
-        <translation>在九种波特率下逐一扫描该范围（较慢）：用于不知道波特率的驱动</translation>
+        <source>Scan the range at each of the ten bauds (slower): for drives whose baud is unknown</source>
+        <translation>在十种波特率下逐一扫描该范围（较慢）：用于不知道波特率的驱动</translation>
     </message>
     <message>
         <source>Scan</source>
@@ -2564,8 +2564,8 @@
         <translation>打开串口 DEV（例如 /dev/ttyUSB0、COM3）。</translation>
     </message>
     <message>
-        <source>Baud rate: 9600 ... 2000000 (default 115200).</source>
-        <translation>波特率：9600 ... 2000000（默认 115200）。</translation>
+        <source>Baud rate: 9600 ... 4000000 (default 115200).</source>
+        <translation>波特率：9600 ... 4000000（默认 115200）。</translation>
     </message>
     <message>
         <source>Open the built-in simulated bus with these drives, e.g. 1:MF,2:MG,3:MS,4:MH or 5:MG5010E-i36.</source>
@@ -2600,8 +2600,8 @@
         <translation>--port 和 --sim 不能同时使用：请选择一条总线。</translation>
     </message>
     <message>
-        <source>--baud %1 is not an LK baud (9600, 19200, 38400, 57600, 115200, 230400, 460800, 1000000, 2000000).</source>
-        <translation>--baud %1 不是 LK 波特率（9600、19200、38400、57600、115200、230400、460800、1000000、2000000）。</translation>
+        <source>--baud %1 is not an LK baud (9600, 19200, 38400, 57600, 115200, 230400, 460800, 1000000, 2000000, 4000000).</source>
+        <translation>--baud %1 不是 LK 波特率（9600、19200、38400、57600、115200、230400、460800、1000000、2000000、4000000）。</translation>
     </message>
     <message>
         <source>--sim: %1</source>

@@ -39,7 +39,7 @@ struct StartupOptions::Definitions {
                             tr("Open the serial port DEV (e.g. /dev/ttyUSB0, COM3)."),
                             QStringLiteral("DEV")};
     QCommandLineOption baud{QStringLiteral("baud"),
-                            tr("Baud rate: 9600 ... 2000000 (default 115200)."),
+                            tr("Baud rate: 9600 ... 4000000 (default 115200)."),
                             QStringLiteral("N")};
     QCommandLineOption sim{QStringLiteral("sim"),
                            tr("Open the built-in simulated bus with these drives, e.g. "
@@ -143,7 +143,7 @@ QString StartupOptions::readBus(const QCommandLineParser &p, const Definitions &
         baud = p.value(d.baud).toInt(&ok);
         if (!ok || !bus::BusTiming::isStandardBaud(baud))
             return tr("--baud %1 is not an LK baud (9600, 19200, 38400, 57600, 115200, 230400, "
-                      "460800, 1000000, 2000000).")
+                      "460800, 1000000, 2000000, 4000000).")
                 .arg(p.value(d.baud));
         baudGiven = true;
     }

@@ -34,7 +34,7 @@ ScanControls::ScanControls(QWidget *parent) : QWidget(parent)
     m_last->setValue(kMaxId);
     m_sweep = new QCheckBox(tr("Try every baud"), this);
     m_sweep->setObjectName(QStringLiteral("scanSweepBauds"));
-    m_sweep->setToolTip(tr("Scan the range at each of the nine bauds (slower): for drives whose "
+    m_sweep->setToolTip(tr("Scan the range at each of the ten bauds (slower): for drives whose "
                            "baud is unknown"));
     m_scan = new QPushButton(ThemedIcon::get(QStringLiteral(":/icons/scan.svg")), tr("Scan"), this);
     m_scan->setObjectName(QStringLiteral("scanButton"));

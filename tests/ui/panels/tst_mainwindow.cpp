@@ -180,7 +180,7 @@ void tst_MainWindow::baudSweepKeepsOneBaud()
 
 void tst_MainWindow::scanCanBeCancelled()
 {
-    // A sweep over nine bauds takes seconds: long enough to cancel it half way.
+    // A sweep over ten bauds takes seconds: long enough to cancel it half way.
     auto *sweep = m_window->findChild<QCheckBox *>(QStringLiteral("scanSweepBauds"));
     auto *cancel = m_window->findChild<QPushButton *>(QStringLiteral("scanCancelButton"));
     auto *progress = m_window->findChild<QProgressBar *>(QStringLiteral("scanProgress"));
