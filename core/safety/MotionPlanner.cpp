@@ -103,6 +103,14 @@ std::optional<MotionPlan> checkDistance(const protocol::Request &r, const SoftLi
 
 } // namespace
 
+bool MotionPlanner::needsAngle(const protocol::Request &request, const SoftLimits &limits)
+{
+    if (std::holds_alternative<protocol::MultiPositionCommand>(request.payload))
+        return true;
+    return std::holds_alternative<protocol::IncrementPositionCommand>(request.payload) &&
+           (limits.minAngleDeg || limits.maxAngleDeg);
+}
+
 bool MotionPlanner::isPosition(Command c)
 {
     return c >= Command::MultiPosition && c <= Command::IncrementPositionLimited;

@@ -53,6 +53,9 @@ class MotionPlanner {
 public:
     static MotionPlan plan(const protocol::Request &request, std::optional<protocol::Series> series,
                            const SoftLimits &limits, const DrivePosition &position);
+    /// True when plan() needs DrivePosition::angleDeg for `request`: every multi-turn target,
+    /// and an increment while an angle range is set. Read 0x92 first.
+    static bool needsAngle(const protocol::Request &request, const SoftLimits &limits);
     /// True for the six position commands (0xA3..0xA8).
     static bool isPosition(protocol::Command command);
 };
