@@ -144,6 +144,44 @@ void IniDriveStore::setGearRatio(const QString &driveKey, double ratio)
         m_settings->setValue(keyPath(driveKey, "gearRatio"), ratio);
 }
 
+QStringList IniDriveStore::damagedEntries(QSettings &settings)
+{
+    QStringList damaged;
+    settings.beginGroup(QStringLiteral("drives"));
+    const QStringList drives = settings.childGroups();
+    settings.endGroup();
+    for (const QString &drive : drives) {
+        settings.beginGroup(QStringLiteral("drives/") + drive);
+        const QStringList keys = settings.childKeys();
+        settings.endGroup();
+        for (const QString &name : keys) {
+            const QString key = QStringLiteral("drives/%1/%2").arg(drive, name);
+            const QVariant v = settings.value(key);
+            bool ok = false;
+            if (name == QLatin1String("softLimits")) {
+                const QString text = v.typeId() == QMetaType::QStringList
+                                         ? v.toStringList().join(QLatin1Char(','))
+                                         : v.toString();
+                QString problem;
+                if (!safety::SoftLimits::fromJsonText(text.toUtf8(), safety::SoftLimits{},
+                                                      &problem))
+                    damaged << QStringLiteral("%1: %2").arg(key, problem);
+            } else if (name == QLatin1String("encoderBits")) {
+                if (!validBits(v.toInt(&ok)) || !ok)
+                    damaged << QStringLiteral("%1: must be one of 12, 14, 15, 16, 18").arg(key);
+            } else if (name == QLatin1String("gearRatio")) {
+                if (!validRatio(v.toDouble(&ok)) || !ok)
+                    damaged << QStringLiteral("%1: must be a number in 1..%2")
+                                   .arg(key)
+                                   .arg(kMaxGearRatio);
+            } else {
+                damaged << QStringLiteral("%1: unknown key").arg(key);
+            }
+        }
+    }
+    return damaged;
+}
+
 void IniDriveStore::sync()
 {
     m_settings->sync();

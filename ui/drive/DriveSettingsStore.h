@@ -5,6 +5,7 @@
 
 #include <QtCore/QHash>
 #include <QtCore/QString>
+#include <QtCore/QStringList>
 
 #include <memory>
 #include <optional>
@@ -73,6 +74,9 @@ public:
     void sync();
     /// The settings key of a drive's soft limits ("drives/<key>/softLimits").
     static QString softLimitsKey(const QString &driveKey);
+    /// Every damaged drive entry of `settings` as "key: what is wrong" (unknown names, limits
+    /// that fail SoftLimits::fromJsonText, unusable resolutions or gear ratios).
+    static QStringList damagedEntries(QSettings &settings);
 
 private:
     std::unique_ptr<QSettings> m_settings;
