@@ -363,20 +363,75 @@
         <source>%1 %2 dps exceeds %3 dps, the top speed of the slowest series (the drive&apos;s series is unknown)</source>
         <translation>%1 %2 dps 超过 %3 dps，即最慢系列的最高速度（驱动的系列未知）</translation>
     </message>
+    <message>
+        <source>no speed limit is set: set one first</source>
+        <translation>未设置速度限值：请先设置</translation>
+    </message>
+</context>
+<context>
+    <name>lk::safety::MotionPlanner</name>
+    <message>
+        <source>the drive&apos;s current angle is unknown: read it (0x92) first</source>
+        <translation>驱动的当前角度未知：请先读取 (0x92)</translation>
+    </message>
+    <message>
+        <source>a move of %1 deg from the current angle %2 deg exceeds one output turn (%3 deg)</source>
+        <translation>从当前角度 %2° 移动 %1° 超过输出轴一圈（%3°）</translation>
+    </message>
+    <message>
+        <source>an increment of %1 deg exceeds one output turn (%2 deg)</source>
+        <translation>增量 %1° 超过输出轴一圈（%2°）</translation>
+    </message>
+    <message>
+        <source>your angle range needs the drive&apos;s current angle: read it (0x92) first</source>
+        <translation>您的角度范围需要驱动的当前角度：请先读取 (0x92)</translation>
+    </message>
+    <message>
+        <source>within your speed limit of %1 dps</source>
+        <translation>在您的速度限值 %1 dps 以内</translation>
+    </message>
+    <message>
+        <source>max speed %1 dps (your speed limit)</source>
+        <translation>最大速度 %1 dps（您的速度限值）</translation>
+    </message>
+    <message>
+        <source>max speed %1 dps (the series top speed)</source>
+        <translation>最大速度 %1 dps（该系列的最高速度）</translation>
+    </message>
+    <message>
+        <source>max speed %1 dps (the max speed you gave)</source>
+        <translation>最大速度 %1 dps（您给定的最大速度）</translation>
+    </message>
 </context>
 <context>
     <name>lk::safety::SoftLimits</name>
     <message>
-        <source>min_angle_deg must not exceed max_angle_deg</source>
-        <translation>min_angle_deg 不能大于 max_angle_deg</translation>
+        <source>%1 must be a whole number in %2 (got %3)</source>
+        <translation>%1 必须是 %2 范围内的整数（实际为 %3）</translation>
     </message>
     <message>
-        <source>%1 must be a number</source>
-        <translation>%1 必须是数字</translation>
+        <source>%1 must be a number in %2 (got %3)</source>
+        <translation>%1 必须是 %2 范围内的数值（实际为 %3）</translation>
     </message>
     <message>
-        <source>%1 must be a non-negative number</source>
-        <translation>%1 必须是非负数字</translation>
+        <source>unknown key &quot;%1&quot; (the keys are %2)</source>
+        <translation>未知的键“%1”（可用的键：%2）</translation>
+    </message>
+    <message>
+        <source>min_angle_deg (%1) must not exceed max_angle_deg (%2)</source>
+        <translation>min_angle_deg（%1）不能大于 max_angle_deg（%2）</translation>
+    </message>
+    <message>
+        <source>not a JSON object</source>
+        <translation>不是 JSON 对象</translation>
+    </message>
+    <message>
+        <source>not a JSON object (%1 at byte %2)</source>
+        <translation>不是 JSON 对象（%1，位于第 %2 字节）</translation>
+    </message>
+    <message>
+        <source>key &quot;%1&quot; is given twice</source>
+        <translation>键“%1”出现了两次</translation>
     </message>
 </context>
 <context>
@@ -434,6 +489,13 @@
     <message>
         <source>The simulated bus was disconnected (fault injection). Open it again to reconnect.</source>
         <translation>模拟总线已断开（故障注入）。重新打开即可重新连接。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::AppSettings</name>
+    <message>
+        <source>Your settings file %1 is damaged; these values were not used: %2.</source>
+        <translation>您的设置文件 %1 已损坏；以下值未被使用：%2。</translation>
     </message>
 </context>
 <context>
@@ -617,10 +679,6 @@
         <translation>速度（正负号 = 方向）：</translation>
     </message>
     <message>
-        <source>Limit speed to</source>
-        <translation>限速</translation>
-    </message>
-    <message>
         <source> °</source>
         <translation> °</translation>
     </message>
@@ -659,6 +717,26 @@
     <message>
         <source> dps</source>
         <translation> dps</translation>
+    </message>
+    <message>
+        <source>Lower max speed</source>
+        <translation>降低最大速度</translation>
+    </message>
+    <message>
+        <source>Unticked, the move is sent with your speed limit as its max speed; tick to give a lower one.</source>
+        <translation>不勾选时，以您的速度限值作为本次运动的最大速度发送；勾选可给定更低的值。</translation>
+    </message>
+    <message>
+        <source>Always sent with a max speed (0xA4/0xA6/0xA8): your speed limit unless you give a lower one.</source>
+        <translation>始终带最大速度发送 (0xA4/0xA6/0xA8)：默认为您的速度限值，除非您给定更低的值。</translation>
+    </message>
+    <message>
+        <source>reading the drive&apos;s angle…</source>
+        <translation>正在读取驱动角度…</translation>
+    </message>
+    <message>
+        <source>Starts at the drive&apos;s current angle; at most one output turn away.</source>
+        <translation>从驱动的当前角度开始；最多相距输出轴一圈。</translation>
     </message>
 </context>
 <context>
@@ -774,6 +852,36 @@
     <message>
         <source>Emergency stop sent (Esc).</source>
         <translation>已发送急停 (Esc)。</translation>
+    </message>
+    <message>
+        <source>The soft limits stored for %1 are damaged (%2); the limits in force stay. Apply them to store them again.</source>
+        <translation>%1 保存的软限位已损坏（%2）；当前生效的限值保持不变。点“应用”可重新保存。</translation>
+    </message>
+    <message>
+        <source>Refused: the soft limits stored for %1 are damaged (%2). Check and apply the limits first; nothing sent.</source>
+        <translation>已拒绝：%1 保存的软限位已损坏（%2）。请先检查并应用限值；未发送任何命令。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drives are selected: every command here acts on %1 only.</source>
+        <translation>
+            <numerusform>已选择 %n 个驱动：此处的每条命令只作用于 %1。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Could not read the drive&apos;s current angle, so nothing was sent: %1</source>
+        <translation>无法读取驱动的当前角度，因此未发送任何命令：%1</translation>
+    </message>
+    <message>
+        <source>Reading the drive&apos;s current angle before the move…</source>
+        <translation>运动前正在读取驱动的当前角度…</translation>
+    </message>
+    <message>
+        <source>Sent %1 to drive %2, %3.</source>
+        <translation>已向驱动 %2 发送 %1，%3。</translation>
+    </message>
+    <message>
+        <source>Refused: the target starts at the drive&apos;s current angle, which is being read. Nothing sent.</source>
+        <translation>已拒绝：目标从驱动的当前角度开始，正在读取该角度。未发送任何命令。</translation>
     </message>
 </context>
 <context>
@@ -1188,6 +1296,14 @@
     <message>
         <source>%1: the reply was corrupt (%2).</source>
         <translation>%1：回复数据损坏（%2）。</translation>
+    </message>
+    <message>
+        <source>Refused: the drive&apos;s current angle is not known (read with 0x92 first), so the move cannot be checked. Nothing sent.</source>
+        <translation>已拒绝：驱动的当前角度未知（请先用 0x92 读取），无法检查此次运动。未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Refused: a move of %1° is more than one output turn (%2°). Move in smaller steps.</source>
+        <translation>已拒绝：移动 %1° 超过输出轴一圈（%2°）。请分小步移动。</translation>
     </message>
 </context>
 <context>
@@ -2299,10 +2415,6 @@
         <translation> dps</translation>
     </message>
     <message>
-        <source>series maximum</source>
-        <translation>系列最大值</translation>
-    </message>
-    <message>
         <source> °</source>
         <translation> °</translation>
     </message>
@@ -2343,12 +2455,16 @@
         <translation>最小角度不能大于最大角度。</translation>
     </message>
     <message>
-        <source>Checked before every command, after the %1 series limits (%2 A, %3 dps). Angles and speeds are rotor values.</source>
-        <translation>每条命令发送前检查，在 %1 系列限值（%2 A，%3 dps）之后。角度和速度均为转子值。</translation>
+        <source>Bounds speed commands, jog and the max speed of every position move</source>
+        <translation>限制速度命令、点动以及每次位置运动的最大速度</translation>
     </message>
     <message>
-        <source>The series is unknown: torque and open loop stay refused until a scan.</source>
-        <translation>系列未知：扫描之前，转矩控制和开环控制一律拒绝。</translation>
+        <source>Checked before every command, after the %1 series limits (%2 A, %3 dps; the default speed limit is that top speed). Angles and speeds are rotor values; a position move goes at most one output turn.</source>
+        <translation>每条命令发送前检查，在 %1 系列限值（%2 A，%3 dps；默认速度限值即该最高速度）之后。角度和速度均为转子值；每次位置运动最多为输出轴一圈。</translation>
+    </message>
+    <message>
+        <source>The series is unknown: torque and open loop stay refused until a scan; the default speed limit is %1 dps, the slowest series&apos; top speed.</source>
+        <translation>系列未知：扫描前转矩和开环控制保持拒绝；默认速度限值为 %1 dps，即最慢系列的最高速度。</translation>
     </message>
 </context>
 <context>
