@@ -256,24 +256,27 @@ void ControlView::readAngle(std::function<void()> then)
     if (!canSend())
         return;
     const int id = driveId();
-    tracker()->send(*build::plain(Command::ReadMultiTurn, id).request,
-                    [this, id, then](const bus::RequestResult &r) {
-                        const auto *a =
-                            r.ok() && r.reply
-                                ? std::get_if<protocol::MultiTurnAngle>(&r.reply->payload)
-                                : nullptr;
-                        if (!a) {
-                            if (then)
-                                setStatus(tr("Could not read the drive's current angle, so "
-                                             "nothing was sent: %1")
-                                              .arg(DriveText::failure(r)),
-                                          true);
-                            return;
-                        }
-                        onAngle(id, a->degrees());
-                        if (then && id == driveId())
-                            then();
-                    });
+    const auto done = [this, id, then](const bus::RequestResult &r) {
+        const auto *a =
+            r.ok() && r.reply ? std::get_if<protocol::MultiTurnAngle>(&r.reply->payload) : nullptr;
+        if (a)
+            onAngle(id, a->degrees());
+        if (!then)
+            return;
+        if (a && id == driveId()) {
+            then();
+            return;
+        }
+        // What waited for the angle is dropped, and says so.
+        MotionOutcome none;
+        none.refusal = a ? tr("Refused: the drive changed while its angle was read. Nothing "
+                              "sent.")
+                         : tr("Refused: could not read the drive's current angle, so nothing "
+                              "was sent. %1")
+                               .arg(DriveText::failure(r));
+        report(none, {});
+    };
+    tracker()->send(*build::plain(Command::ReadMultiTurn, id).request, done);
 }
 
 void ControlView::onAngle(int id, double deg)
@@ -281,6 +284,7 @@ void ControlView::onAngle(int id, double deg)
     if (id != driveId())
         return;
     m_angleDeg = deg;
+    m_setpointPanel->setDriveAngle(deg);
     // The multi-turn target starts where the drive is, never at 0 absolute.
     if (!m_modes->hasMultiTarget())
         m_modes->setMultiAngle(deg);
@@ -314,6 +318,8 @@ void ControlView::contextChanged(Changes changes)
         if (changes & (Change::Session | Change::Drive))
             m_modes->resetInputs();
         m_angleDeg.reset();
+        if (changes & (Change::Session | Change::Drive))
+            m_setpointPanel->setDriveAngle(std::nullopt);
         readAngle();
     }
     if (changes & (Change::Session | Change::Drive | Change::MotorInfo)) {
@@ -374,12 +380,6 @@ MotionOutcome ControlView::sendMotion(const protocol::BuildResult &built)
         report(none, {});
         return none;
     }
-    if (!m_limitsError.isEmpty()) {
-        MotionOutcome none;
-        none.refusal = m_limitsError;
-        report(none, {});
-        return none;
-    }
     // Targets start where the drive is: read its angle now rather than trust an old one.
     if (built.ok() && safety::MotionPlanner::needsAngle(*built.request, m_limits)) {
         MotionOutcome pending;
@@ -394,6 +394,12 @@ MotionOutcome ControlView::sendMotion(const protocol::BuildResult &built)
 
 MotionOutcome ControlView::submitMotion(const protocol::BuildResult &built)
 {
+    if (!m_limitsError.isEmpty()) {
+        MotionOutcome none;
+        none.refusal = m_limitsError;
+        report(none, {});
+        return none;
+    }
     const int id = driveId();
     MotionOutcome out =
         MotionGate::submit(*tracker(), built, series(), m_limits, drivePosition(),

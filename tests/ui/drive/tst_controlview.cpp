@@ -5,6 +5,7 @@
 #include <drive/DriveSettingsStore.h>
 #include <drive/JogPanel.h>
 #include <drive/SetpointGenerator.h>
+#include <drive/SetpointPanel.h>
 #include <drive/SoftLimitsEditor.h>
 
 #include <QtCore/QSettings>
@@ -72,6 +73,7 @@ private slots:
     void valueDoesNotCarryOverToAnotherDrive();
     void severalDrivesSelectedNamesTheOne();
     void damagedStoredLimitsAreNeverReplacedSilently();
+    void generatorPositionCentredOnTheDrive();
     void offStopRun();
     void jogHoldAndRelease();
     void jogStep();
@@ -342,7 +344,8 @@ void tst_ControlView::positionMoveRunsAtTheSpeedLimit()
     QTRY_VERIFY_WITH_TIMEOUT((peak = std::max(peak, std::fabs(rig.speedDps(1))),
                               std::fabs(rig.multiTurnDeg(1) - target) < 2),
                              kWaitMs);
-    QVERIFY2(peak <= 720 * 1.05, qPrintable(QString::number(peak)));
+    // The speed loop may overshoot a little; unbounded, an MF rotor heads for 18000 dps.
+    QVERIFY2(peak <= 720 * 1.25, qPrintable(QString::number(peak)));
     QVERIFY(rig.barrier(1));
     QCOMPARE(rig.count(1, Command::MultiPosition), 0);
     QCOMPARE(rig.count(1, Command::MultiPositionLimited), 1);
@@ -456,6 +459,35 @@ void tst_ControlView::damagedStoredLimitsAreNeverReplacedSilently()
     QTest::mouseClick(button(*fresh, "applyLimits"), Qt::LeftButton);
     QTest::mouseClick(button(*fresh, "send"), Qt::LeftButton);
     QVERIFY2(fresh->lastOutcome().sent, qPrintable(fresh->statusText()));
+}
+
+void tst_ControlView::generatorPositionCentredOnTheDrive()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    {
+        auto mover = openView(rig, 1);
+        QVERIFY(mover->sendMotion(lk::protocol::build::speed(1, 5000)).sent);
+        QTRY_VERIFY_WITH_TIMEOUT(rig.multiTurnDeg(1) > 2000, kWaitMs);
+        mover->sendMotion(lk::protocol::build::speed(1, 0));
+        QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.speedDps(1)) < 1, kWaitMs);
+        mover->motorOff();
+        QVERIFY(rig.barrier(1));
+    }
+    auto view = openView(rig, 1);
+    auto *target = view->findChild<QComboBox *>(QStringLiteral("target"));
+    target->setCurrentIndex(target->findData(int(SetpointGenerator::Target::Position)));
+    QTRY_VERIFY_WITH_TIMEOUT(
+        std::fabs(view->setpointPanel()->settings().offset - rig.multiTurnDeg(1)) < 1, kWaitMs);
+    // A waveform around 0 absolute is turns away: the first setpoint is refused, none sent.
+    SetpointGenerator::Settings far = view->setpointPanel()->settings();
+    far.offset = 0;
+    view->startGenerator(far);
+    QTRY_VERIFY_WITH_TIMEOUT(view->statusText().contains(QStringLiteral("one output turn")),
+                             kWaitMs);
+    QVERIFY(!view->generator()->isRunning());
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::MultiPosition) + rig.count(1, Command::MultiPositionLimited), 0);
 }
 
 void tst_ControlView::offStopRun()
