@@ -868,10 +868,6 @@
         </translation>
     </message>
     <message>
-        <source>Could not read the drive&apos;s current angle, so nothing was sent: %1</source>
-        <translation>无法读取驱动的当前角度，因此未发送任何命令：%1</translation>
-    </message>
-    <message>
         <source>Reading the drive&apos;s current angle before the move…</source>
         <translation>运动前正在读取驱动的当前角度…</translation>
     </message>
@@ -882,6 +878,14 @@
     <message>
         <source>Refused: the target starts at the drive&apos;s current angle, which is being read. Nothing sent.</source>
         <translation>已拒绝：目标从驱动的当前角度开始，正在读取该角度。未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Refused: the drive changed while its angle was read. Nothing sent.</source>
+        <translation>已拒绝：读取角度期间驱动已切换。未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Refused: could not read the drive&apos;s current angle, so nothing was sent. %1</source>
+        <translation>已拒绝：无法读取驱动的当前角度，因此未发送任何命令。%1</translation>
     </message>
 </context>
 <context>
