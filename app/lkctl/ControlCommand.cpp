@@ -5,11 +5,10 @@
 #include "OrderedJson.h"
 #include "ReplyText.h"
 
-#include <safety/MotionGuard.h>
+#include <motor/ModelNameInfo.h>
+#include <safety/MotionPlanner.h>
 
 #include <QtCore/QFile>
-#include <QtCore/QJsonDocument>
-#include <QtCore/QJsonParseError>
 
 namespace lk::lkctl {
 
@@ -75,30 +74,52 @@ QString ControlCommand::usage() const
                "out of range names the field and its range, exit 2), then against the drive's\n"
                "series (read with read_model) and your limits. A refused command sends NOTHING.\n"
                "\n"
+               "Every move is bounded by the speed limit: a position move without --max-speed\n"
+               "is sent as its limited form (multi_position_limited, single_position_limited,\n"
+               "increment_position_limited) with max speed = your speed limit (or the series\n"
+               "top speed if that is lower); the output says which speed bound applied.\n"
+               "A multi-position target is checked against the drive's multi-turn angle, read\n"
+               "first (0x92): it may lie at most one output turn away (360 deg x the gear ratio\n"
+               "of the motor name, e.g. -i10: 3600 rotor deg) and inside your angle range. An\n"
+               "increment may be at most one output turn (with an angle range set, the angle\n"
+               "is read and the end point checked too).\n"
+               "\n"
                "MODE and VALUE:\n"
                "  open-loop POWER        open_loop, -1000..1000 (MS only)\n"
                "  torque IQ_A            torque current in A (MF, MG, MH)\n"
                "  speed DPS              speed in deg/s (negative: counter-clockwise)\n"
-               "  multi-position DEG     multi-turn target angle in deg\n"
+               "  multi-position DEG     multi-turn target angle in deg (absolute)\n"
                "  single-position DEG    single-turn target 0..359.99 deg, needs --direction\n"
                "  increment DEG          move by DEG (sign gives the direction)\n"
                "Mode options:\n"
                "  --direction cw|ccw     single-position only\n"
-               "  --max-speed DPS        position modes: limit the move's speed (the "
-               "*_limited commands)\n"
+               "  --max-speed DPS        position modes: a lower max speed for this move (above\n"
+               "                         your speed limit is refused)\n"
                "Limits (defaults per series: a quarter of its rated current, open-loop power "
                "200,\n"
-               "its top speed; positions unbounded):\n"
+               "speed limit = its top speed; positions unbounded but one output turn per move):\n"
                "  --limits FILE.json     soft limits, e.g. {\"max_torque_a\":1.5,\"max_power\":"
                "300,\n"
                "                         \"max_speed_dps\":720,\"min_angle_deg\":-360,"
                "\"max_angle_deg\":360,\n"
                "                         \"max_increment_deg\":90} (missing keys keep the "
-               "defaults)\n"
-               "  --max-torque-a A, --max-speed-dps DPS, --max-power P\n"
+               "defaults;\n"
+               "                         unknown or repeated keys, wrong types and values out "
+               "of\n"
+               "                         range are refused naming the key and its range, exit "
+               "2):\n"
+               "                         max_torque_a 0..32, max_power 0..1000 (whole),\n"
+               "                         max_speed_dps 0.01..18000, min/max_angle_deg\n"
+               "                         -1e9..1e9, max_increment_deg 0..21474836.47\n"
+               "  --max-torque-a A, --max-speed-dps DPS (above 0), --max-power P\n"
                "                         override the defaults and the file\n"
                "  --json                 one line: {\"command\":\"speed\",\"id\":3,\"sent\":{...},"
+               "\n"
+               "                         \"speed_bound\":{\"source\":\"soft_limit\",\"dps\":720},"
                "\"reply\":{...}}\n"
+               "                         (source: command, soft_limit, series_top or max_speed; "
+               "no\n"
+               "                         speed_bound for torque and open loop)\n"
                "\n"
                "%1"
                "\n"
@@ -113,8 +134,8 @@ QString ControlCommand::usage() const
                "%2")
         .arg(BusOptions::helpText(),
              exitStatusText(QStringLiteral(
-                 "  4  refused: the series or one of your limits does not allow it (the message\n"
-                 "     names the limit and both values); nothing was sent\n")));
+                 "  4  refused for safety: the series or one of your limits does not allow it\n"
+                 "     (the message names the limit and both values); nothing was sent\n")));
 }
 
 std::optional<protocol::FieldBuildResult> ControlCommand::build(const QStringList &pos,
@@ -178,6 +199,8 @@ bool ControlCommand::readLimitFlags(const ArgParser &parser, Plan &plan, Console
         plan.maxSpeedDps = parser.numberValue(QStringLiteral("max-speed-dps"), 0, &error);
         if (!plan.maxSpeedDps)
             return fail(error);
+        if (!(*plan.maxSpeedDps > 0)) // a speed limit always exists; 0 would mean none
+            return fail(QStringLiteral("--max-speed-dps must be above 0"));
     }
     if (parser.isSet(QStringLiteral("max-power"))) {
         const auto p = parser.intValue(QStringLiteral("max-power"), 0, 1000, &error);
@@ -191,17 +214,13 @@ bool ControlCommand::readLimitFlags(const ArgParser &parser, Plan &plan, Console
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly))
         return fail(QStringLiteral("cannot read --limits %1: %2").arg(path, f.errorString()));
-    QJsonParseError pe;
-    const QJsonDocument doc = QJsonDocument::fromJson(f.readAll(), &pe);
-    if (!doc.isObject())
-        return fail(QStringLiteral("--limits %1 is not a JSON object%2")
-                        .arg(path, pe.error == QJsonParseError::NoError
-                                       ? QString()
-                                       : QStringLiteral(" (%1)").arg(pe.errorString())));
-    // Check the file's values now, so that a bad file never gets as far as the bus.
-    if (!safety::SoftLimits::fromJson(doc.object(), safety::SoftLimits{}, &error))
-        return fail(QStringLiteral("--limits %1: %2").arg(path, error));
-    plan.limitsJson = doc.object();
+    // Check the whole file now (keys, types, ranges, repeats), so that a bad file never gets
+    // as far as the bus; it is read again over the series' defaults once the series is known.
+    const QByteArray text = f.readAll();
+    if (!safety::SoftLimits::fromJsonText(text, safety::SoftLimits{}, &error))
+        return fail(QStringLiteral("--limits %1: %2; nothing was sent").arg(path, error));
+    plan.limitsText = text;
+    plan.limitsPath = path;
     return true;
 }
 
@@ -225,20 +244,113 @@ std::optional<ControlCommand::Plan> ControlCommand::parse(const ArgParser &parse
     return plan;
 }
 
-safety::SoftLimits ControlCommand::limitsFor(const Plan &plan,
-                                             std::optional<protocol::Series> series) const
+std::optional<safety::SoftLimits> ControlCommand::limitsFor(const Plan &plan,
+                                                            std::optional<protocol::Series> series,
+                                                            QString *error) const
 {
-    safety::SoftLimits limits =
-        series ? safety::SoftLimits::defaults(*series) : safety::SoftLimits{};
-    if (plan.limitsJson) // already checked: cannot fail
-        limits = safety::SoftLimits::fromJson(*plan.limitsJson, limits).value_or(limits);
+    std::optional<safety::SoftLimits> limits = safety::SoftLimits::defaults(series);
+    if (plan.limitsText) {
+        limits = safety::SoftLimits::fromJsonText(*plan.limitsText, *limits, error);
+        if (!limits) {
+            *error =
+                QStringLiteral("--limits %1: %2; nothing was sent").arg(plan.limitsPath, *error);
+            return std::nullopt;
+        }
+    }
     if (plan.maxTorqueA)
-        limits.maxTorqueA = *plan.maxTorqueA;
+        limits->maxTorqueA = *plan.maxTorqueA;
     if (plan.maxSpeedDps)
-        limits.maxSpeedDps = *plan.maxSpeedDps;
+        limits->maxSpeedDps = *plan.maxSpeedDps;
     if (plan.maxPower)
-        limits.maxPower = *plan.maxPower;
+        limits->maxPower = *plan.maxPower;
     return limits;
+}
+
+bool ControlCommand::readPosition(LiveBus &bus, const Plan &plan, const LiveBus::Identity &who,
+                                  const safety::SoftLimits &limits,
+                                  safety::DrivePosition &position) const
+{
+    position.gearRatio = motor::ModelNameInfo::parse(who.model.motorName).gearRatio;
+    if (!safety::MotionPlanner::needsAngle(plan.request, limits))
+        return true;
+    // Targets start where the drive is: never judge a move from an assumed 0.
+    const bus::RequestResult r = bus.request(protocol::Command::ReadMultiTurn, plan.request.id);
+    const auto *angle =
+        r.ok() && r.reply ? std::get_if<protocol::MultiTurnAngle>(&r.reply->payload) : nullptr;
+    if (!angle) {
+        bus.reportFailure(r);
+        bus.error(QStringLiteral("the move needs the drive's current angle; nothing was sent"));
+        return false;
+    }
+    position.angleDeg = angle->degrees();
+    return true;
+}
+
+namespace {
+QByteArray boundJson(const safety::MotionPlan &motion)
+{
+    const char *source = "command";
+    switch (motion.bound) {
+    case safety::SpeedBound::SoftLimit:
+        source = "soft_limit";
+        break;
+    case safety::SpeedBound::SeriesTop:
+        source = "series_top";
+        break;
+    case safety::SpeedBound::UserMaxSpeed:
+        source = "max_speed";
+        break;
+    default:
+        break;
+    }
+    return QByteArray("{\"source\":\"") + source +
+           "\",\"dps\":" + QByteArray::number(motion.boundDps, 'g', 10) + '}';
+}
+} // namespace
+
+int ControlCommand::send(LiveBus &bus, const Plan &plan, const safety::MotionPlan &motion,
+                         const safety::DrivePosition &position) const
+{
+    const protocol::Request &request = *motion.request;
+    const int id = request.id;
+    const bus::RequestResult r = bus.request(request);
+    if (!r.ok() || !r.reply) {
+        bus.reportFailure(r);
+        if (r.status == bus::RequestStatus::Timeout)
+            bus.error(QStringLiteral("the drive may have acted on it all the same: check "
+                                     "with 'lkctl read %1 state2' or 'multi-turn'")
+                          .arg(id));
+        return kExitFailure;
+    }
+    const QJsonObject sent = FieldJson::requestFields(request);
+    const QJsonObject reply = FieldJson::replyFields(*r.reply);
+    const QString command = protocol::CommandTable::name(request.command);
+    if (plan.json) {
+        OrderedJson o;
+        o.text(QStringLiteral("command"), command)
+            .integer(QStringLiteral("id"), id)
+            .fields(QStringLiteral("sent"), sent);
+        if (motion.bound != safety::SpeedBound::None)
+            o.raw(QStringLiteral("speed_bound"), boundJson(motion));
+        o.fields(QStringLiteral("reply"), reply);
+        bus.console().out(o.toJson() + '\n');
+        return kExitOk;
+    }
+    QStringList sentText;
+    for (const QString &line : ReplyText::lines(sent))
+        sentText << line.simplified();
+    QString extra;
+    if (motion.bound != safety::SpeedBound::None)
+        extra += QStringLiteral(" Speed bound: %1.").arg(motion.boundText());
+    if (position.angleDeg)
+        extra += QStringLiteral(" The drive was at %1 deg.").arg(*position.angleDeg);
+    bus.console().outLine(QStringLiteral("Sent %1 to drive %2: %3.%4 Reply:")
+                              .arg(command)
+                              .arg(id)
+                              .arg(sentText.join(QStringLiteral(", ")), extra));
+    for (const QString &line : ReplyText::lines(reply, QStringLiteral("  ")))
+        bus.console().outLine(line);
+    return kExitOk;
 }
 
 int ControlCommand::run(const QStringList &args, Console &console)
@@ -254,51 +366,28 @@ int ControlCommand::run(const QStringList &args, Console &console)
     const std::optional<Plan> plan = parse(parser, console, &status);
     if (!plan)
         return status;
-    const int id = plan->request.id;
 
     LiveBus bus(console, name());
     if (!bus.open(*busOptions))
         return kExitFailure;
-    const std::optional<LiveBus::Identity> who = bus.identify(id);
+    const std::optional<LiveBus::Identity> who = bus.identify(plan->request.id);
     if (!who)
         return kExitFailure;
-    const safety::Verdict verdict =
-        safety::MotionGuard::check(plan->request, who->series, limitsFor(*plan, who->series));
-    if (!verdict.allowed()) {
-        bus.error(QStringLiteral("refused, nothing was sent: %1").arg(verdict.message));
+    QString error;
+    const std::optional<safety::SoftLimits> limits = limitsFor(*plan, who->series, &error);
+    if (!limits)
+        return usageError(console, error);
+    safety::DrivePosition position;
+    if (!readPosition(bus, *plan, *who, *limits, position))
+        return kExitFailure;
+    const safety::MotionPlan motion =
+        safety::MotionPlanner::plan(plan->request, who->series, *limits, position);
+    if (!motion.allowed()) {
+        bus.error(
+            QStringLiteral("refused for safety, nothing was sent: %1").arg(motion.verdict.message));
         return kExitRefused;
     }
-    const bus::RequestResult r = bus.request(plan->request);
-    if (!r.ok() || !r.reply) {
-        bus.reportFailure(r);
-        if (r.status == bus::RequestStatus::Timeout)
-            bus.error(QStringLiteral("the drive may have acted on it all the same: check "
-                                     "with 'lkctl read %1 state2' or 'multi-turn'")
-                          .arg(id));
-        return kExitFailure;
-    }
-    const QJsonObject sent = FieldJson::requestFields(plan->request);
-    const QJsonObject reply = FieldJson::replyFields(*r.reply);
-    const QString command = protocol::CommandTable::name(plan->request.command);
-    if (plan->json) {
-        OrderedJson o;
-        o.text(QStringLiteral("command"), command)
-            .integer(QStringLiteral("id"), id)
-            .fields(QStringLiteral("sent"), sent)
-            .fields(QStringLiteral("reply"), reply);
-        console.out(o.toJson() + '\n');
-        return kExitOk;
-    }
-    QStringList sentText;
-    for (const QString &line : ReplyText::lines(sent))
-        sentText << line.simplified();
-    console.outLine(QStringLiteral("Sent %1 to drive %2: %3. Reply:")
-                        .arg(command)
-                        .arg(id)
-                        .arg(sentText.join(QStringLiteral(", "))));
-    for (const QString &line : ReplyText::lines(reply, QStringLiteral("  ")))
-        console.outLine(line);
-    return kExitOk;
+    return send(bus, *plan, motion, position);
 }
 
 } // namespace lk::lkctl

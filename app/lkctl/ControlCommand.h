@@ -2,17 +2,21 @@
 
 #include "LiveCommand.h"
 
+#include "LiveBus.h"
 #include <protocol/FieldJson.h>
+
+#include <safety/MotionPlanner.h>
 #include <safety/SoftLimits.h>
 
-#include <QtCore/QJsonObject>
+#include <QtCore/QByteArray>
 
 #include <optional>
 
 namespace lk::lkctl {
 
-/// `lkctl control ID MODE VALUE`: one motion command, checked by the series limits and the
-/// user's soft limits (safety::MotionGuard) before anything is sent.
+/// `lkctl control ID MODE VALUE`: one motion command, made safe by safety::MotionPlanner
+/// (speed bound on every move, targets from the drive's read angle) and checked by the series
+/// limits and the user's soft limits before anything is sent.
 class ControlCommand : public LiveCommand {
 public:
     QString name() const override { return QStringLiteral("control"); }
@@ -25,7 +29,8 @@ private:
     /// The command line, checked before the bus is touched.
     struct Plan {
         protocol::Request request;
-        std::optional<QJsonObject> limitsJson; ///< --limits FILE
+        std::optional<QByteArray> limitsText; ///< --limits FILE, already checked
+        QString limitsPath;
         std::optional<double> maxTorqueA, maxSpeedDps;
         std::optional<int> maxPower;
         bool json = false;
@@ -34,7 +39,14 @@ private:
     std::optional<protocol::FieldBuildResult> build(const QStringList &pos, const ArgParser &parser,
                                                     Console &console, int *status) const;
     bool readLimitFlags(const ArgParser &parser, Plan &plan, Console &console, int *status) const;
-    safety::SoftLimits limitsFor(const Plan &plan, std::optional<protocol::Series> series) const;
+    /// The series' defaults, the --limits file over them, then the --max-* flags.
+    std::optional<safety::SoftLimits>
+    limitsFor(const Plan &plan, std::optional<protocol::Series> series, QString *error) const;
+    /// Reads the multi-turn angle (0x92) when the move needs it; false after printing why.
+    bool readPosition(LiveBus &bus, const Plan &plan, const LiveBus::Identity &who,
+                      const safety::SoftLimits &limits, safety::DrivePosition &position) const;
+    int send(LiveBus &bus, const Plan &plan, const safety::MotionPlan &motion,
+             const safety::DrivePosition &position) const;
 };
 
 } // namespace lk::lkctl

@@ -132,11 +132,12 @@ bool MotorStateCommand::allowed(LiveBus &bus, int id, std::optional<protocol::Se
     protocol::Request r;
     r.command = m_command;
     r.id = quint8(id);
-    const safety::Verdict v = safety::MotionGuard::check(
-        r, series, series ? safety::SoftLimits::defaults(*series) : safety::SoftLimits{});
+    const safety::Verdict v =
+        safety::MotionGuard::check(r, series, safety::SoftLimits::defaults(series));
     if (!v.allowed())
-        bus.error(
-            QStringLiteral("refused for drive %1, nothing was sent: %2").arg(id).arg(v.message));
+        bus.error(QStringLiteral("refused for safety for drive %1, nothing was sent: %2")
+                      .arg(id)
+                      .arg(v.message));
     return v.allowed();
 }
 

@@ -19,21 +19,10 @@ Verdict refuse(LimitKind kind, double value, double limit, const QString &messag
     return Verdict{kind, value, limit, message};
 }
 
-// The top speed when the series is unknown: the slowest series, so a guess never overspeeds.
-double seriesTopSpeedDps(std::optional<Series> series)
-{
-    if (series)
-        return motor::seriesLimits(*series).maxSpeedDps();
-    double lowest = motor::seriesLimits(Series::MS).maxSpeedDps();
-    for (Series s : {Series::MF, Series::MG, Series::MH})
-        lowest = std::min(lowest, motor::seriesLimits(s).maxSpeedDps());
-    return lowest;
-}
-
 Verdict checkSpeed(double dps, std::optional<Series> series, const SoftLimits &limits,
                    const char *what)
 {
-    const double top = seriesTopSpeedDps(series);
+    const double top = MotionGuard::topSpeedDps(series);
     const double v = std::fabs(dps);
     if (v > top) {
         // Whole sentences for the known and the unknown series: a translation cannot be glued
@@ -55,7 +44,12 @@ Verdict checkSpeed(double dps, std::optional<Series> series, const SoftLimits &l
                       .arg(top);
         return refuse(LimitKind::SeriesSpeed, v, top, message);
     }
-    if (limits.maxSpeedDps > 0 && v > limits.maxSpeedDps)
+    // A speed limit always exists (SoftLimits): none at all is refused, never read as "any".
+    if (!(limits.maxSpeedDps > 0))
+        return refuse(LimitKind::SoftSpeed, v, 0,
+                      QCoreApplication::translate("lk::safety::MotionGuard",
+                                                  "no speed limit is set: set one first"));
+    if (v > limits.maxSpeedDps)
         return refuse(LimitKind::SoftSpeed, v, limits.maxSpeedDps,
                       QCoreApplication::translate("lk::safety::MotionGuard",
                                                   "%1 %2 dps exceeds your speed limit of %3 dps")
@@ -104,21 +98,10 @@ Verdict checkTorque(double iqA, std::optional<Series> series, const SoftLimits &
 Verdict checkMultiTurn(const protocol::MultiPositionCommand &c, std::optional<Series> series,
                        const SoftLimits &limits)
 {
-    const double deg = static_cast<double>(c.angleRaw) * protocol::kCentiUnits;
-    if (limits.minAngleDeg && deg < *limits.minAngleDeg)
-        return refuse(
-            LimitKind::AngleBelowMin, deg, *limits.minAngleDeg,
-            QCoreApplication::translate("lk::safety::MotionGuard",
-                                        "target %1 deg is below your angle range (min %2 deg)")
-                .arg(deg)
-                .arg(*limits.minAngleDeg));
-    if (limits.maxAngleDeg && deg > *limits.maxAngleDeg)
-        return refuse(
-            LimitKind::AngleAboveMax, deg, *limits.maxAngleDeg,
-            QCoreApplication::translate("lk::safety::MotionGuard",
-                                        "target %1 deg is above your angle range (max %2 deg)")
-                .arg(deg)
-                .arg(*limits.maxAngleDeg));
+    const Verdict window =
+        MotionGuard::checkTarget(static_cast<double>(c.angleRaw) * protocol::kCentiUnits, limits);
+    if (!window.allowed())
+        return window;
     return checkMaxSpeed(c.maxSpeedRaw, series, limits);
 }
 
@@ -137,6 +120,35 @@ Verdict checkIncrement(const protocol::IncrementPositionCommand &c, std::optiona
 }
 
 } // namespace
+
+Verdict MotionGuard::checkTarget(double deg, const SoftLimits &limits)
+{
+    if (limits.minAngleDeg && deg < *limits.minAngleDeg)
+        return refuse(
+            LimitKind::AngleBelowMin, deg, *limits.minAngleDeg,
+            QCoreApplication::translate("lk::safety::MotionGuard",
+                                        "target %1 deg is below your angle range (min %2 deg)")
+                .arg(deg)
+                .arg(*limits.minAngleDeg));
+    if (limits.maxAngleDeg && deg > *limits.maxAngleDeg)
+        return refuse(
+            LimitKind::AngleAboveMax, deg, *limits.maxAngleDeg,
+            QCoreApplication::translate("lk::safety::MotionGuard",
+                                        "target %1 deg is above your angle range (max %2 deg)")
+                .arg(deg)
+                .arg(*limits.maxAngleDeg));
+    return {};
+}
+
+double MotionGuard::topSpeedDps(std::optional<Series> series)
+{
+    if (series)
+        return motor::seriesLimits(*series).maxSpeedDps();
+    double lowest = motor::seriesLimits(Series::MS).maxSpeedDps();
+    for (Series s : {Series::MF, Series::MG, Series::MH})
+        lowest = std::min(lowest, motor::seriesLimits(s).maxSpeedDps());
+    return lowest;
+}
 
 Verdict MotionGuard::check(const protocol::Request &request, std::optional<Series> series,
                            const SoftLimits &limits)

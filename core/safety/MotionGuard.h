@@ -24,6 +24,8 @@ enum class LimitKind {
     AngleBelowMin, ///< multi-turn target under the user's range
     AngleAboveMax, ///< multi-turn target over the user's range
     SoftIncrement, ///< incremental move larger than the user allows
+    AngleUnknown,  ///< a position move needs the drive's current angle, not yet read
+    OutputTurn,    ///< a position move of more than one output turn
 };
 
 /// The outcome of a check: allowed, or the limit that refused it with both numbers.
@@ -42,6 +44,11 @@ class MotionGuard {
 public:
     static Verdict check(const protocol::Request &request, std::optional<protocol::Series> series,
                          const SoftLimits &limits);
+    /// A multi-turn target (rotor deg) against the user's angle range.
+    static Verdict checkTarget(double deg, const SoftLimits &limits);
+    /// The series' top speed; when the series is unknown, the slowest series' (a guess never
+    /// overspeeds).
+    static double topSpeedDps(std::optional<protocol::Series> series);
 };
 
 } // namespace lk::safety

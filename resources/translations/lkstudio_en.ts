@@ -12,6 +12,16 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::ControlView</name>
+    <message numerus="yes">
+        <source>%n drives are selected: every command here acts on %1 only.</source>
+        <translation>
+            <numerusform>%n drive is selected: every command here acts on %1 only.</numerusform>
+            <numerusform>%n drives are selected: every command here acts on %1 only.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::DriveInfoView</name>
     <message numerus="yes">
         <source>Bus report gathered: %n drive(s).</source>

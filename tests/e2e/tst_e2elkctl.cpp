@@ -300,14 +300,17 @@ void tst_E2eLkctl::controlModesMoveTheMotor_data()
     QTest::newRow("torque") << 3 << QStringList{"torque", "0.3"} << 1 << 0.0 << -1.0;
     QTest::newRow("open loop") << 17 << QStringList{"open-loop", "-150"} << -1 << 0.0 << -1.0;
     QTest::newRow("multi position")
-        << 3 << QStringList{"multi-position", "+90"} << 1 << 90.0 << -1.0;
+        << 3 << QStringList{"multi-position", "+90", "--max-speed-dps", "180"} << 1 << 90.0 << -1.0;
     QTest::newRow("multi position limited")
         << 3 << QStringList{"multi-position", "-90", "--max-speed", "180"} << -1 << -90.0 << -1.0;
-    QTest::newRow("increment") << 3 << QStringList{"increment", "60"} << 1 << 60.0 << -1.0;
+    // Without --max-speed a move runs at the speed limit: a low one keeps it visible here.
+    QTest::newRow("increment") << 3 << QStringList{"increment", "60", "--max-speed-dps", "120"} << 1
+                               << 60.0 << -1.0;
     QTest::newRow("increment limited")
         << 3 << QStringList{"increment", "-60", "--max-speed", "120"} << -1 << -60.0 << -1.0;
     QTest::newRow("single position")
-        << 3 << QStringList{"single-position", "120", "--direction", "cw"} << 1 << 0.0 << 120.0;
+        << 3 << QStringList{"single-position", "120", "--direction", "cw", "--max-speed-dps", "240"}
+        << 1 << 0.0 << 120.0;
     QTest::newRow("single position limited")
         << 3 << QStringList{"single-position", "240", "--direction", "ccw", "--max-speed", "240"}
         << -1 << 0.0 << 240.0;
@@ -332,8 +335,15 @@ void tst_E2eLkctl::controlModesMoveTheMotor()
     // reply (never retried for an increment); lksim still acted, as the motion shows.
     const bool timedOut = r.exitCode == 1 && r.err.contains("no reply to");
     QVERIFY2(r.exitCode == 0 || timedOut, qPrintable(describe(r)));
-    if (!timedOut)
-        QVERIFY(jsonObject(r.out).contains("reply"));
+    if (!timedOut) {
+        const QJsonObject sent = jsonObject(r.out);
+        QVERIFY(sent.contains("reply"));
+        // Position moves always carry a max speed: the speed limit unless a lower one was given.
+        if (args.first().endsWith(QLatin1String("position")) ||
+            args.first() == QLatin1String("increment"))
+            QVERIFY2(sent.value("command").toString().endsWith(QLatin1String("_limited")),
+                     r.out.constData());
+    }
 
     double fastest = 0;
     const bool reached = QTest::qWaitFor(
@@ -394,6 +404,13 @@ void tst_E2eLkctl::refusedControlSendsNothing_data()
                                  << QByteArray("3E A1 11");
     QTest::newRow("max speed") << QStringList{"3", "increment", "10", "--max-speed", "90000"}
                                << QByteArray("max speed") << QByteArray("3E A8 03");
+    // Targets start where the drive is: a far target is refused, whatever the speed.
+    QTest::newRow("position beyond one turn")
+        << QStringList{"3", "multi-position", "100000"} << QByteArray("exceeds one output turn")
+        << QByteArray("3E A4 03");
+    QTest::newRow("increment beyond one turn")
+        << QStringList{"3", "increment", "-361"} << QByteArray("exceeds one output turn")
+        << QByteArray("3E A8 03");
 }
 
 void tst_E2eLkctl::refusedControlSendsNothing()
@@ -404,7 +421,7 @@ void tst_E2eLkctl::refusedControlSendsNothing()
     const CtlResult r = lkctl(QStringList{"control"} + args + port());
     QCOMPARE(r.exitCode, 4);
     QVERIFY(r.out.isEmpty());
-    QVERIFY2(r.err.contains("refused, nothing was sent"), r.err.constData());
+    QVERIFY2(r.err.contains("refused for safety, nothing was sent"), r.err.constData());
     QVERIFY2(r.err.contains(limit), r.err.constData());
     const std::optional<QJsonObject> s2 = read(args.first().toInt(), "state2");
     QVERIFY(s2);

@@ -63,6 +63,10 @@ private slots:
     void controlWithinAndOverLimits_data();
     void controlWithinAndOverLimits();
     void limitsFile();
+    void limitsFileMistakesSendNothing_data();
+    void limitsFileMistakesSendNothing();
+    void positionMovesCarryTheSpeedLimit_data();
+    void positionMovesCarryTheSpeedLimit();
     void romNeedsYes();
     void romPersistsInSimRomDirRamDoesNot();
     void readBackMismatchExits5();
@@ -264,8 +268,21 @@ void tst_LkctlLive::controlWithinAndOverLimits_data()
     QTest::newRow("open loop on MF") << sim("control 3 open-loop 100") << 4
                                      << QByteArray("MF drives do not implement open_loop");
     QTest::newRow("open loop on MS") << sim("control 17 open-loop 100") << 0 << QByteArray();
+    // MG5010E-i10: one output turn is 3600 rotor deg; the simulated drive is at 80.26 deg.
     QTest::newRow("position") << sim("control 32 multi-position -720 --max-speed 360") << 0
                               << QByteArray();
+    QTest::newRow("geared position over one output turn")
+        << sim("control 32 multi-position 5000") << 4
+        << QByteArray("exceeds one output turn (3600 deg)");
+    QTest::newRow("position over one turn")
+        << sim("control 3 multi-position 11000") << 4
+        << QByteArray("from the current angle 52.52 deg exceeds one output turn (360 deg)");
+    QTest::newRow("increment over one turn")
+        << sim("control 3 increment -400") << 4
+        << QByteArray("an increment of 400 deg exceeds one output turn (360 deg)");
+    QTest::newRow("max speed over the speed limit")
+        << sim("control 3 multi-position 100 --max-speed 800 --max-speed-dps 720") << 4
+        << QByteArray("max speed 800 dps exceeds your speed limit of 720 dps");
     QTest::newRow("silent drive") << sim("control 5 speed 10") << 1
                                   << QByteArray("read_model (ID 5)");
 }
@@ -283,7 +300,7 @@ void tst_LkctlLive::controlWithinAndOverLimits()
     else
         QVERIFY(r.out.isEmpty());
     if (exitCode == 4)
-        QVERIFY(r.err.contains("refused, nothing was sent"));
+        QVERIFY(r.err.contains("refused for safety, nothing was sent"));
 }
 
 void tst_LkctlLive::limitsFile()
@@ -311,10 +328,91 @@ void tst_LkctlLive::limitsFile()
     QCOMPARE(r.exitCode, 0); // the flag overrides the file
     r = lkctl(words("control 3 speed 60 --limits") + QStringList{bad} + words(kSim));
     QCOMPARE(r.exitCode, 2);
-    QVERIFY2(r.err.contains("is not a JSON object"), r.err.constData());
+    QVERIFY2(r.err.contains("not a JSON object"), r.err.constData());
     r = lkctl(words("control 3 speed 60 --limits") + QStringList{wrongType} + words(kSim));
     QCOMPARE(r.exitCode, 2);
-    QVERIFY2(r.err.contains("max_torque_a must be a non-negative number"), r.err.constData());
+    QVERIFY2(r.err.contains("max_torque_a must be a number in 0..32 A (got \"lots\")"),
+             r.err.constData());
+}
+
+void tst_LkctlLive::limitsFileMistakesSendNothing_data()
+{
+    QTest::addColumn<QByteArray>("text");
+    QTest::addColumn<QByteArray>("message");
+    QTest::newRow("misspelt key") << QByteArray(R"({"max_speed": 720})")
+                                  << QByteArray("unknown key \"max_speed\"");
+    QTest::newRow("duplicate key") << QByteArray(R"({"max_speed_dps": 720, "max_speed_dps": 9000})")
+                                   << QByteArray("key \"max_speed_dps\" is given twice");
+    QTest::newRow("negative") << QByteArray(R"({"max_speed_dps": -720})")
+                              << QByteArray("max_speed_dps must be a number in 0.01..18000 dps");
+    QTest::newRow("zero speed") << QByteArray(R"({"max_speed_dps": 0})")
+                                << QByteArray("max_speed_dps must be a number in 0.01..18000 dps");
+    QTest::newRow("fractional power") << QByteArray(R"({"max_power": 10.5})")
+                                      << QByteArray("max_power must be a whole number in 0..1000");
+}
+
+void tst_LkctlLive::limitsFileMistakesSendNothing()
+{
+    QFETCH(QByteArray, text);
+    QFETCH(QByteArray, message);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("limits.json"));
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(text);
+    f.close();
+    const Result r =
+        lkctl(words("control 3 speed 5000 --limits") + QStringList{path} + words(kSim));
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains(message), r.err.constData());
+    QVERIFY2(r.err.contains("nothing was sent"), r.err.constData());
+    QVERIFY(r.out.isEmpty());
+}
+
+void tst_LkctlLive::positionMovesCarryTheSpeedLimit_data()
+{
+    QTest::addColumn<QString>("args");
+    QTest::addColumn<QString>("command");
+    QTest::addColumn<QString>("source");
+    QTest::addColumn<double>("dps");
+    QTest::newRow("multi") << "multi-position 100 --max-speed-dps 100"
+                           << "multi_position_limited"
+                           << "soft_limit" << 100.0;
+    QTest::newRow("single") << "single-position 90 --direction cw --max-speed-dps 100"
+                            << "single_position_limited"
+                            << "soft_limit" << 100.0;
+    QTest::newRow("increment") << "increment -90 --max-speed-dps 100"
+                               << "increment_position_limited"
+                               << "soft_limit" << 100.0;
+    QTest::newRow("lower max speed") << "increment 90 --max-speed 50 --max-speed-dps 100"
+                                     << "increment_position_limited"
+                                     << "max_speed" << 50.0;
+    QTest::newRow("series default") << "increment 90"
+                                    << "increment_position_limited"
+                                    << "soft_limit" << 18000.0;
+    QTest::newRow("speed") << "speed 60 --max-speed-dps 100"
+                           << "speed"
+                           << "command" << 100.0;
+}
+
+void tst_LkctlLive::positionMovesCarryTheSpeedLimit()
+{
+    QFETCH(QString, args);
+    QFETCH(QString, command);
+    QFETCH(QString, source);
+    QFETCH(double, dps);
+    const Result r =
+        lkctl(words("control 3") + args.split(QLatin1Char(' ')) + words("--json") + words(kSim));
+    QVERIFY2(r.exitCode == 0, r.err.constData());
+    const QJsonObject o = QJsonDocument::fromJson(r.out).object();
+    QCOMPARE(o.value("command").toString(), command);
+    const QJsonObject bound = o.value("speed_bound").toObject();
+    QCOMPARE(bound.value("source").toString(), source);
+    QCOMPARE(bound.value("dps").toDouble(), dps);
+    if (source != QLatin1String("command"))
+        QCOMPARE(o.value("sent").toObject().value("max_speed_dps").toDouble(), dps);
+    const Result text = lkctl(words("control 3") + args.split(QLatin1Char(' ')) + words(kSim));
+    QVERIFY2(text.out.contains("Speed bound: "), text.out.constData());
 }
 
 void tst_LkctlLive::romNeedsYes()

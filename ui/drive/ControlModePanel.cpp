@@ -78,6 +78,7 @@ ControlModePanel::ControlModePanel(QWidget *parent)
     });
     connect(m_unit, &QComboBox::currentIndexChanged, this, &ControlModePanel::refreshSpeedSuffixes);
     setSeries(std::nullopt);
+    resetInputs();
     refreshSpeedSuffixes();
 }
 
@@ -180,8 +181,10 @@ ControlModePanel::MaxSpeed ControlModePanel::addMaxSpeed(QWidget *page, QFormLay
                                                          const QString &name)
 {
     MaxSpeed m;
-    m.enabled = new QCheckBox(tr("Limit speed to"), page);
+    m.enabled = new QCheckBox(tr("Lower max speed"), page);
     m.enabled->setObjectName(name + QStringLiteral("Limited"));
+    m.enabled->setToolTip(tr("Unticked, the move is sent with your speed limit as its max "
+                             "speed; tick to give a lower one."));
     m.value = number(name + QStringLiteral("MaxSpeed"), 0, kWideSpeed, 2, QString());
     m.value->setValue(kDefaultMaxSpeedDps);
     m.value->setEnabled(false);
@@ -189,6 +192,11 @@ ControlModePanel::MaxSpeed ControlModePanel::addMaxSpeed(QWidget *page, QFormLay
     QDoubleSpinBox *value = m.value;
     connect(m.enabled, &QCheckBox::toggled, value, &QWidget::setEnabled);
     form->addRow(m.enabled, m.value);
+    auto *note = new QLabel(tr("Always sent with a max speed (0xA4/0xA6/0xA8): your speed limit "
+                               "unless you give a lower one."),
+                            page);
+    note->setWordWrap(true);
+    form->addRow(note);
     return m;
 }
 
@@ -197,6 +205,12 @@ QWidget *ControlModePanel::pageMulti()
     auto *page = new QWidget(this);
     auto *form = new QFormLayout(page);
     m_multiAngle = number(QStringLiteral("multiAngle"), -kWideAngle, kWideAngle, 2, tr(" \u00b0"));
+    // The lowest value stands for "not read yet": a target never defaults to 0 absolute.
+    m_multiAngle->setSpecialValueText(tr("reading the drive's angle\u2026"));
+    m_multiAngle->setToolTip(tr("Starts at the drive's current angle; at most one output turn "
+                                "away."));
+    connect(m_multiAngle, &QDoubleSpinBox::valueChanged, this,
+            [this](double v) { m_multiTargetSet = v > m_multiAngle->minimum(); });
     form->addRow(tr("Target angle (rotor, multi-turn):"), m_multiAngle);
     m_multiMax = addMaxSpeed(page, form, QStringLiteral("multi"));
     return page;
@@ -352,6 +366,19 @@ void ControlModePanel::setIncrement(double deg, std::optional<double> maxSpeed)
 {
     m_increment->setValue(deg);
     m_incrementMax.set(maxSpeed);
+}
+
+void ControlModePanel::resetInputs()
+{
+    m_power->setValue(0);
+    m_torque->setValue(0);
+    m_speed->setValue(0);
+    m_multiAngle->setValue(m_multiAngle->minimum());
+    m_singleAngle->setValue(0);
+    m_increment->setValue(0);
+    for (MaxSpeed *m : {&m_multiMax, &m_singleMax, &m_incrementMax})
+        m->set(std::nullopt);
+    m_multiTargetSet = false;
 }
 
 protocol::BuildResult ControlModePanel::buildRequest(int id) const

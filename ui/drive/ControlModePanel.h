@@ -60,6 +60,13 @@ public:
                         std::optional<double> maxSpeed = std::nullopt);
     void setIncrement(double deg, std::optional<double> maxSpeed = std::nullopt);
 
+    /// Every input back to rest (0, no max speed) and the multi-turn target to "not read yet":
+    /// a value typed for one drive must not be sent to another.
+    void resetInputs();
+    /// The multi-turn target was set (typed, or filled from the drive's angle) since the last
+    /// resetInputs(); until then it shows "not read yet" and must not be sent.
+    bool hasMultiTarget() const { return m_multiTargetSet; }
+
     /// The request of the current mode and inputs, validated by the protocol builders.
     protocol::BuildResult buildRequest(int id) const;
 
@@ -104,6 +111,7 @@ private:
     QDoubleSpinBox *m_increment = nullptr;
     MaxSpeed m_multiMax, m_singleMax, m_incrementMax;
     QVector<QDoubleSpinBox *> m_speedFields;
+    bool m_multiTargetSet = false;
 };
 
 } // namespace lk::ui

@@ -10,6 +10,7 @@
 #include "SoftLimitsEditor.h"
 
 #include <bus/BusSession.h>
+#include <motor/ModelNameInfo.h>
 #include <panels/StatusColors.h>
 #include <protocol/RequestBuilder.h>
 
@@ -52,6 +53,10 @@ ControlView::ControlView(QWidget *parent)
     big.setPointSizeF(big.pointSizeF() * 1.2);
     big.setBold(true);
     m_title->setFont(big);
+    m_selection = new QLabel(this);
+    m_selection->setObjectName(QStringLiteral("selectionNote"));
+    m_selection->setWordWrap(true);
+    m_selection->hide();
     m_readout = new QLabel(this);
     m_readout->setObjectName(QStringLiteral("readout"));
     m_status = new QLabel(this);
@@ -63,6 +68,7 @@ ControlView::ControlView(QWidget *parent)
 
     auto *left = new QVBoxLayout;
     left->addWidget(m_title);
+    left->addWidget(m_selection);
     left->addWidget(buildCommandBox());
     left->addWidget(buildRunButtons());
     applyPaletteStyles();
@@ -174,30 +180,114 @@ void ControlView::setTelemetryStore(TelemetryStore *store)
 void ControlView::setSettingsStore(DriveSettingsStore *store)
 {
     m_store = store ? store : m_ownStore.get();
+    m_limitsKey.clear(); // nothing in force came from this store yet
     loadLimits();
 }
 
 void ControlView::loadLimits()
 {
     const auto s = series();
-    const safety::SoftLimits defaults = s ? safety::SoftLimits::defaults(*s) : safety::SoftLimits{};
-    m_limits = defaults;
-    if (hasDrive()) {
-        if (auto stored =
-                m_store->softLimits(DriveSettingsStore::driveKey(driveId(), motor()), defaults))
-            m_limits = *stored;
+    const safety::SoftLimits defaults = safety::SoftLimits::defaults(s);
+    const QString key = hasDrive() ? DriveSettingsStore::driveKey(driveId(), motor()) : QString();
+    QString error;
+    const std::optional<safety::SoftLimits> stored =
+        hasDrive() ? m_store->softLimits(key, defaults, &error) : std::nullopt;
+    if (error.isEmpty()) {
+        m_limits = stored.value_or(defaults);
+        m_limitsError.clear();
+    } else if (key == m_limitsKey && m_limitsError.isEmpty()) {
+        // Damaged under our feet: the limits in force stay, never the series defaults.
+        setStatus(tr("The soft limits stored for %1 are damaged (%2); the limits in force "
+                     "stay. Apply them to store them again.")
+                      .arg(driveTitle(), error),
+                  true);
+    } else {
+        // Nothing to keep for this drive: show the defaults as a proposal, send nothing until
+        // the user applies limits.
+        m_limits = defaults;
+        m_limitsError = tr("Refused: the soft limits stored for %1 are damaged (%2). Check "
+                           "and apply the limits first; nothing sent.")
+                            .arg(driveTitle(), error);
     }
+    m_limitsKey = key;
     m_limitsEditor->setLimits(m_limits, s);
+    m_limitsEditor->setProblem(m_limitsError);
 }
 
 void ControlView::setSoftLimits(const safety::SoftLimits &limits)
 {
     m_limits = limits;
+    m_limitsError.clear();
+    m_limitsEditor->setProblem(QString());
     if (hasDrive())
         m_store->setSoftLimits(DriveSettingsStore::driveKey(driveId(), motor()), limits);
     if (!(m_limitsEditor->limits() == limits))
         m_limitsEditor->setLimits(limits, series());
     setStatus(tr("Soft limits of %1 applied and saved.").arg(driveTitle()));
+}
+
+void ControlView::setSelectedDrives(const QVector<int> &ids)
+{
+    m_selected = ids;
+    refreshSelectionNote();
+}
+
+void ControlView::refreshSelectionNote()
+{
+    const bool several = m_selected.size() > 1 && hasDrive();
+    m_selection->setVisible(several);
+    if (several)
+        m_selection->setText(tr("%n drives are selected: every command here acts on %1 only.",
+                                nullptr, int(m_selected.size()))
+                                 .arg(driveTitle()));
+}
+
+safety::DrivePosition ControlView::drivePosition() const
+{
+    safety::DrivePosition p;
+    p.angleDeg = m_angleDeg;
+    if (motor().model)
+        p.gearRatio = motor::ModelNameInfo::parse(motor().model->motorName).gearRatio;
+    return p;
+}
+
+void ControlView::readAngle(std::function<void()> then)
+{
+    if (!canSend())
+        return;
+    const int id = driveId();
+    const auto done = [this, id, then](const bus::RequestResult &r) {
+        const auto *a =
+            r.ok() && r.reply ? std::get_if<protocol::MultiTurnAngle>(&r.reply->payload) : nullptr;
+        if (a)
+            onAngle(id, a->degrees());
+        if (!then)
+            return;
+        if (a && id == driveId()) {
+            then();
+            return;
+        }
+        // What waited for the angle is dropped, and says so.
+        MotionOutcome none;
+        none.refusal = a ? tr("Refused: the drive changed while its angle was read. Nothing "
+                              "sent.")
+                         : tr("Refused: could not read the drive's current angle, so nothing "
+                              "was sent. %1")
+                               .arg(DriveText::failure(r));
+        report(none, {});
+    };
+    tracker()->send(*build::plain(Command::ReadMultiTurn, id).request, done);
+}
+
+void ControlView::onAngle(int id, double deg)
+{
+    if (id != driveId())
+        return;
+    m_angleDeg = deg;
+    m_setpointPanel->setDriveAngle(deg);
+    // The multi-turn target starts where the drive is, never at 0 absolute.
+    if (!m_modes->hasMultiTarget())
+        m_modes->setMultiAngle(deg);
 }
 
 void ControlView::contextChanged(Changes changes)
@@ -224,6 +314,13 @@ void ControlView::contextChanged(Changes changes)
         if (moving && !(changes & Change::Session))
             stopMotionOf(previous);
         m_readout->clear();
+        // Nothing typed for one drive goes to another, and no angle is assumed.
+        if (changes & (Change::Session | Change::Drive))
+            m_modes->resetInputs();
+        m_angleDeg.reset();
+        if (changes & (Change::Session | Change::Drive))
+            m_setpointPanel->setDriveAngle(std::nullopt);
+        readAngle();
     }
     if (changes & (Change::Session | Change::Drive | Change::MotorInfo)) {
         m_modes->setSeries(series());
@@ -232,6 +329,7 @@ void ControlView::contextChanged(Changes changes)
         loadLimits();
     }
     m_title->setText(driveTitle());
+    refreshSelectionNote();
     if (!isConnected() && hasDrive())
         setStatus(tr("Disconnected: nothing can be sent."));
     else if (changes & Change::Drive)
@@ -282,14 +380,38 @@ MotionOutcome ControlView::sendMotion(const protocol::BuildResult &built)
         report(none, {});
         return none;
     }
+    // Targets start where the drive is: read its angle now rather than trust an old one.
+    if (built.ok() && safety::MotionPlanner::needsAngle(*built.request, m_limits)) {
+        MotionOutcome pending;
+        pending.pending = true;
+        m_last = pending;
+        setStatus(tr("Reading the drive's current angle before the move\u2026"));
+        readAngle([this, built] { submitMotion(built); });
+        return pending;
+    }
+    return submitMotion(built);
+}
+
+MotionOutcome ControlView::submitMotion(const protocol::BuildResult &built)
+{
+    if (!m_limitsError.isEmpty()) {
+        MotionOutcome none;
+        none.refusal = m_limitsError;
+        report(none, {});
+        return none;
+    }
     const int id = driveId();
     MotionOutcome out =
-        MotionGate::submit(*tracker(), built, series(), m_limits,
+        MotionGate::submit(*tracker(), built, series(), m_limits, drivePosition(),
                            [this](const bus::RequestResult &r) { onMotionResult(r); });
-    const QString sent =
-        out.sent
-            ? tr("Sent %1 to drive %2.").arg(DriveText::command(built.request->command)).arg(id)
-            : QString();
+    QString sent;
+    if (out.sent && out.bound.isEmpty())
+        sent = tr("Sent %1 to drive %2.").arg(DriveText::command(out.request->command)).arg(id);
+    else if (out.sent)
+        sent = tr("Sent %1 to drive %2, %3.")
+                   .arg(DriveText::command(out.request->command))
+                   .arg(id)
+                   .arg(out.bound);
     report(out, sent);
     return out;
 }
@@ -306,6 +428,15 @@ void ControlView::onMotionResult(const bus::RequestResult &result)
 
 MotionOutcome ControlView::sendCommand()
 {
+    if (m_modes->mode() == ControlMode::MultiPosition && !m_modes->hasMultiTarget()) {
+        MotionOutcome none;
+        none.limit = safety::LimitKind::AngleUnknown;
+        none.refusal = tr("Refused: the target starts at the drive's current angle, which is "
+                          "being read. Nothing sent.");
+        report(none, {});
+        readAngle();
+        return none;
+    }
     return sendMotion(m_modes->buildRequest(driveId()));
 }
 
@@ -391,6 +522,18 @@ void ControlView::startGenerator(const SetpointGenerator::Settings &settings)
 {
     if (!canSend())
         return;
+    if (settings.target == SetpointGenerator::Target::Position) {
+        // Position setpoints are checked from where the drive is: read it first.
+        readAngle([this, settings] { startGeneratorNow(settings); });
+        return;
+    }
+    startGeneratorNow(settings);
+}
+
+void ControlView::startGeneratorNow(const SetpointGenerator::Settings &settings)
+{
+    if (!canSend())
+        return;
     endJog();
     m_motionId = driveId();
     m_generatorTicket = 0;
@@ -438,7 +581,9 @@ void ControlView::onSetpoint(double value)
         built = build::torque(id, value);
         break;
     }
-    const MotionOutcome out = sendMotion(built);
+    // Setpoints follow each other fast: each is checked from the last angle known (read when
+    // the generator started), not read again.
+    const MotionOutcome out = submitMotion(built);
     if (!out.sent) {
         m_generator->stop(out.refusal);
         return;
@@ -448,6 +593,10 @@ void ControlView::onSetpoint(double value)
 
 void ControlView::onTelemetry(const bus::TelemetryBatch &batch)
 {
+    for (const bus::TelemetrySample &sample : batch) {
+        if (sample.id == driveId() && sample.has(bus::TelemetryField::MultiTurn))
+            onAngle(sample.id, sample.multiTurnDeg);
+    }
     for (auto it = batch.crbegin(); it != batch.crend(); ++it) {
         if (it->id != driveId() || !it->has(bus::TelemetryField::Speed))
             continue;

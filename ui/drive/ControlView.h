@@ -8,6 +8,7 @@
 #include <bus/TelemetrySample.h>
 #include <safety/SoftLimits.h>
 
+#include <functional>
 #include <memory>
 
 class QLabel;
@@ -50,8 +51,14 @@ public:
 
     /// Sends the command of the current mode and inputs through the gate.
     MotionOutcome sendCommand();
-    /// Any motion request through the gate (builder error, MotionGuard, then the bus).
+    /// Any motion request through the gate (builder error, MotionPlanner, then the bus). A
+    /// move that needs the drive's angle reads it (0x92) first: the outcome is then pending
+    /// and lastOutcome() tells the result once the read has answered.
     MotionOutcome sendMotion(const protocol::BuildResult &built);
+    /// The multi-turn angle last read from the drive (0x92 or telemetry); nullopt: not yet.
+    std::optional<double> currentAngle() const { return m_angleDeg; }
+    /// The drives selected in lkstudio: with several, the view says which one it acts on.
+    void setSelectedDrives(const QVector<int> &ids);
     void motorOff();              ///< 0x80, ahead of queued work; halts generator and jog
     void motorStop();             ///< 0x81, ahead of queued work; halts generator and jog
     void motorRun();              ///< 0x88 through the gate
@@ -92,6 +99,12 @@ private:
     QWidget *buildRunButtons();
     void wire();
     void loadLimits();
+    void startGeneratorNow(const SetpointGenerator::Settings &settings);
+    void readAngle(std::function<void()> then = {});
+    void onAngle(int id, double deg);
+    MotionOutcome submitMotion(const protocol::BuildResult &built);
+    safety::DrivePosition drivePosition() const;
+    void refreshSelectionNote();
     void onSetpoint(double value);
     void onMotionResult(const bus::RequestResult &result);
     bool handleJogKey(QKeyEvent *event);
@@ -106,6 +119,10 @@ private:
     std::unique_ptr<DriveSettingsStore> m_ownStore;
     DriveSettingsStore *m_store;
     safety::SoftLimits m_limits;
+    QString m_limitsKey;   ///< the drive key m_limits belong to
+    QString m_limitsError; ///< the stored limits are damaged: motion is refused until applied
+    std::optional<double> m_angleDeg;
+    QVector<int> m_selected;
     ControlModePanel *m_modes = nullptr;
     SoftLimitsEditor *m_limitsEditor = nullptr;
     JogPanel *m_jog = nullptr;
@@ -113,6 +130,7 @@ private:
     SetpointGenerator *m_generator = nullptr;
     LoopPlot *m_plot = nullptr;
     QLabel *m_title = nullptr;
+    QLabel *m_selection = nullptr;
     QLabel *m_readout = nullptr;
     QLabel *m_status = nullptr;
     QPushButton *m_send = nullptr;

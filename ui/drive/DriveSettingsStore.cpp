@@ -40,8 +40,8 @@ QString DriveSettingsStore::driveKey(int id, const bus::KnownMotor &motor)
     return key;
 }
 
-std::optional<safety::SoftLimits> MemoryDriveStore::softLimits(const QString &driveKey,
-                                                               const safety::SoftLimits &)
+std::optional<safety::SoftLimits>
+MemoryDriveStore::softLimits(const QString &driveKey, const safety::SoftLimits &, QString *)
 {
     const auto it = m_limits.constFind(driveKey);
     if (it == m_limits.constEnd())
@@ -87,15 +87,28 @@ IniDriveStore::IniDriveStore(const QString &iniFile)
 IniDriveStore::~IniDriveStore() = default;
 
 std::optional<safety::SoftLimits> IniDriveStore::softLimits(const QString &driveKey,
-                                                            const safety::SoftLimits &fallback)
+                                                            const safety::SoftLimits &fallback,
+                                                            QString *error)
 {
-    const QByteArray text = m_settings->value(keyPath(driveKey, "softLimits")).toByteArray();
-    if (text.isEmpty())
+    const QString key = softLimitsKey(driveKey);
+    if (!m_settings->contains(key))
         return std::nullopt;
-    const QJsonDocument doc = QJsonDocument::fromJson(text);
-    if (!doc.isObject())
-        return std::nullopt;
-    return safety::SoftLimits::fromJson(doc.object(), fallback);
+    // An INI value with unquoted commas reads back as a list: rejoin it for the JSON check.
+    const QVariant value = m_settings->value(key);
+    const QString text = value.typeId() == QMetaType::QStringList
+                             ? value.toStringList().join(QLatin1Char(','))
+                             : value.toString();
+    QString problem;
+    const std::optional<safety::SoftLimits> limits =
+        safety::SoftLimits::fromJsonText(text.toUtf8(), fallback, &problem);
+    if (!limits && error)
+        *error = QStringLiteral("%1: %2").arg(key, problem);
+    return limits;
+}
+
+QString IniDriveStore::softLimitsKey(const QString &driveKey)
+{
+    return keyPath(driveKey, "softLimits");
 }
 
 void IniDriveStore::setSoftLimits(const QString &driveKey, const safety::SoftLimits &limits)
@@ -129,6 +142,44 @@ void IniDriveStore::setGearRatio(const QString &driveKey, double ratio)
 {
     if (validRatio(ratio))
         m_settings->setValue(keyPath(driveKey, "gearRatio"), ratio);
+}
+
+QStringList IniDriveStore::damagedEntries(QSettings &settings)
+{
+    QStringList damaged;
+    settings.beginGroup(QStringLiteral("drives"));
+    const QStringList drives = settings.childGroups();
+    settings.endGroup();
+    for (const QString &drive : drives) {
+        settings.beginGroup(QStringLiteral("drives/") + drive);
+        const QStringList keys = settings.childKeys();
+        settings.endGroup();
+        for (const QString &name : keys) {
+            const QString key = QStringLiteral("drives/%1/%2").arg(drive, name);
+            const QVariant v = settings.value(key);
+            bool ok = false;
+            if (name == QLatin1String("softLimits")) {
+                const QString text = v.typeId() == QMetaType::QStringList
+                                         ? v.toStringList().join(QLatin1Char(','))
+                                         : v.toString();
+                QString problem;
+                if (!safety::SoftLimits::fromJsonText(text.toUtf8(), safety::SoftLimits{},
+                                                      &problem))
+                    damaged << QStringLiteral("%1: %2").arg(key, problem);
+            } else if (name == QLatin1String("encoderBits")) {
+                if (!validBits(v.toInt(&ok)) || !ok)
+                    damaged << QStringLiteral("%1: must be one of 12, 14, 15, 16, 18").arg(key);
+            } else if (name == QLatin1String("gearRatio")) {
+                if (!validRatio(v.toDouble(&ok)) || !ok)
+                    damaged << QStringLiteral("%1: must be a number in 1..%2")
+                                   .arg(key)
+                                   .arg(kMaxGearRatio);
+            } else {
+                damaged << QStringLiteral("%1: unknown key").arg(key);
+            }
+        }
+    }
+    return damaged;
 }
 
 void IniDriveStore::sync()

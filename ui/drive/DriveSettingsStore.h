@@ -5,6 +5,7 @@
 
 #include <QtCore/QHash>
 #include <QtCore/QString>
+#include <QtCore/QStringList>
 
 #include <memory>
 #include <optional>
@@ -21,9 +22,11 @@ public:
     virtual ~DriveSettingsStore() = default;
 
     /// The limits stored for the drive, read over `fallback` (missing keys keep its values);
-    /// nullopt when none are stored or they are unusable.
+    /// nullopt when none are stored, or when they are damaged: then `error` names the key
+    /// and what is wrong (the caller must not replace them silently by defaults).
     virtual std::optional<safety::SoftLimits> softLimits(const QString &driveKey,
-                                                         const safety::SoftLimits &fallback) = 0;
+                                                         const safety::SoftLimits &fallback,
+                                                         QString *error = nullptr) = 0;
     virtual void setSoftLimits(const QString &driveKey, const safety::SoftLimits &limits) = 0;
     virtual std::optional<int> encoderBits(const QString &driveKey) = 0;
     virtual void setEncoderBits(const QString &driveKey, int bits) = 0;
@@ -39,7 +42,8 @@ public:
 class MemoryDriveStore : public DriveSettingsStore {
 public:
     std::optional<safety::SoftLimits> softLimits(const QString &driveKey,
-                                                 const safety::SoftLimits &fallback) override;
+                                                 const safety::SoftLimits &fallback,
+                                                 QString *error = nullptr) override;
     void setSoftLimits(const QString &driveKey, const safety::SoftLimits &limits) override;
     std::optional<int> encoderBits(const QString &driveKey) override;
     void setEncoderBits(const QString &driveKey, int bits) override;
@@ -60,13 +64,19 @@ public:
     ~IniDriveStore() override;
 
     std::optional<safety::SoftLimits> softLimits(const QString &driveKey,
-                                                 const safety::SoftLimits &fallback) override;
+                                                 const safety::SoftLimits &fallback,
+                                                 QString *error = nullptr) override;
     void setSoftLimits(const QString &driveKey, const safety::SoftLimits &limits) override;
     std::optional<int> encoderBits(const QString &driveKey) override;
     void setEncoderBits(const QString &driveKey, int bits) override;
     std::optional<double> gearRatio(const QString &driveKey) override;
     void setGearRatio(const QString &driveKey, double ratio) override;
     void sync();
+    /// The settings key of a drive's soft limits ("drives/<key>/softLimits").
+    static QString softLimitsKey(const QString &driveKey);
+    /// Every damaged drive entry of `settings` as "key: what is wrong" (unknown names, limits
+    /// that fail SoftLimits::fromJsonText, unusable resolutions or gear ratios).
+    static QStringList damagedEntries(QSettings &settings);
 
 private:
     std::unique_ptr<QSettings> m_settings;

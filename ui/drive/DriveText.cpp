@@ -58,6 +58,13 @@ QString DriveText::verdict(const safety::Verdict &v, std::optional<protocol::Ser
     case LimitKind::SoftIncrement:
         return tr("Refused by your step limit: a move of %1\u00b0 is more than %2\u00b0.")
             .arg(num(v.value), num(v.limit));
+    case LimitKind::AngleUnknown:
+        return tr("Refused: the drive's current angle is not known (read with 0x92 first), so "
+                  "the move cannot be checked. Nothing sent.");
+    case LimitKind::OutputTurn:
+        return tr("Refused: a move of %1\u00b0 is more than one output turn (%2\u00b0). Move in "
+                  "smaller steps.")
+            .arg(num(v.value), num(v.limit));
     }
     return v.message;
 }

@@ -7,6 +7,7 @@ namespace lk::ui {
 MotionOutcome MotionGate::submit(RequestTracker &tracker, const protocol::BuildResult &built,
                                  std::optional<protocol::Series> series,
                                  const safety::SoftLimits &limits,
+                                 const safety::DrivePosition &position,
                                  RequestTracker::Callback callback)
 {
     MotionOutcome out;
@@ -15,19 +16,24 @@ MotionOutcome MotionGate::submit(RequestTracker &tracker, const protocol::BuildR
         out.refusal = DriveText::fieldError(built.error);
         return out;
     }
-    const protocol::Request &request = *built.request;
-    const safety::Verdict verdict = safety::MotionGuard::check(request, series, limits);
-    if (!verdict.allowed()) {
-        out.limit = verdict.kind;
-        out.refusal = DriveText::verdict(verdict, series);
+    const safety::MotionPlan plan =
+        safety::MotionPlanner::plan(*built.request, series, limits, position);
+    if (!plan.allowed()) {
+        out.limit = plan.verdict.kind;
+        out.refusal = DriveText::verdict(plan.verdict, series);
         return out;
     }
+    const protocol::Request &request = *plan.request;
     // A relative move repeated after a lost reply would move twice: never retry it.
     const bool relative = request.command == protocol::Command::IncrementPosition ||
                           request.command == protocol::Command::IncrementPositionLimited;
     out.ticket =
         tracker.send(request, std::move(callback), bus::Priority::Operator, relative ? 0 : -1);
     out.sent = out.ticket != 0;
+    if (out.sent) {
+        out.request = request;
+        out.bound = plan.boundText();
+    }
     if (!out.sent)
         out.refusal = QCoreApplication::translate("lk::ui::MotionGate", "Not connected.");
     return out;

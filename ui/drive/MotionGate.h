@@ -5,6 +5,7 @@
 #include <protocol/Request.h>
 #include <protocol/Series.h>
 #include <safety/MotionGuard.h>
+#include <safety/MotionPlanner.h>
 #include <safety/SoftLimits.h>
 
 #include <QtCore/QString>
@@ -17,19 +18,24 @@ namespace lk::ui {
 struct MotionOutcome {
     bool sent = false;
     quint64 ticket = 0;
-    QString refusal; ///< translated reason when nothing was sent
+    bool pending = false; ///< waits for the drive's angle (0x92) before it is planned and sent
+    QString refusal;      ///< translated reason when nothing was sent
+    QString bound;        ///< which speed bound applied (MotionPlan::boundText), when sent
+    std::optional<protocol::Request> request; ///< what was sent (a position move: its limited form)
     safety::LimitKind limit = safety::LimitKind::None;
     std::optional<protocol::FieldError> fieldError; ///< the builder refused a value
 };
 
 /// The only way the drive views send a command that can move a motor: the builder's
-/// verdict first (FieldError), then MotionGuard (series and soft limits), then the bus.
-/// A refused command sends nothing and says which check stopped it.
+/// verdict first (FieldError), then safety::MotionPlanner (speed bound on every move, targets
+/// checked from the drive's angle, series and soft limits), then the bus. A refused command
+/// sends nothing and says which check stopped it.
 class MotionGate {
 public:
     static MotionOutcome submit(RequestTracker &tracker, const protocol::BuildResult &built,
                                 std::optional<protocol::Series> series,
                                 const safety::SoftLimits &limits,
+                                const safety::DrivePosition &position,
                                 RequestTracker::Callback callback = {});
 };
 

@@ -65,10 +65,16 @@ SetpointPanel::SetpointPanel(QWidget *parent) : QGroupBox(tr("Setpoint generator
     form->addRow(m_state);
 
     connect(m_target, &QComboBox::currentIndexChanged, this, &SetpointPanel::refreshUnits);
+    connect(m_target, &QComboBox::currentIndexChanged, this, [this] {
+        m_offsetEdited = false; // the old offset was in another unit
+        fillOffsetFromDrive();
+    });
+    connect(m_offset, &QDoubleSpinBox::valueChanged, this, [this] { m_offsetEdited = true; });
     connect(m_start, &QPushButton::clicked, this, [this] { emit startRequested(settings()); });
     connect(m_stop, &QPushButton::clicked, this, &SetpointPanel::stopRequested);
     setSeries(std::nullopt);
     setSettings(Gen::Settings{});
+    m_offsetEdited = false;
     setRunning(false);
 }
 
@@ -118,6 +124,23 @@ void SetpointPanel::setSettings(const SetpointGenerator::Settings &s)
     m_offset->setValue(s.offset);
     m_period->setValue(s.periodS);
     m_rate->setValue(s.rateHz);
+}
+
+void SetpointPanel::setDriveAngle(std::optional<double> deg)
+{
+    if (!deg)
+        m_offsetEdited = false; // another drive: nothing typed for the last one carries over
+    m_driveAngle = deg;
+    fillOffsetFromDrive();
+}
+
+void SetpointPanel::fillOffsetFromDrive()
+{
+    if (m_offsetEdited || Gen::Target(m_target->currentData().toInt()) != Gen::Target::Position)
+        return;
+    const QSignalBlocker block(m_offset);
+    // Unknown angle: 0 until it is read; the control view refuses setpoints a turn away.
+    m_offset->setValue(m_driveAngle.value_or(0));
 }
 
 void SetpointPanel::setRunning(bool running, const QString &message)

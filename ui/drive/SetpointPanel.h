@@ -28,6 +28,9 @@ public:
     /// Shows running/stopped and the last message.
     void setRunning(bool running, const QString &message = {});
     void setStartEnabled(bool enabled);
+    /// The drive's multi-turn angle (nullopt: another drive, not read yet). A position
+    /// waveform is centred on it: the offset follows it until the user edits the offset.
+    void setDriveAngle(std::optional<double> deg);
 
 signals:
     void startRequested(const lk::ui::SetpointGenerator::Settings &settings);
@@ -35,6 +38,7 @@ signals:
 
 private:
     void refreshUnits();
+    void fillOffsetFromDrive();
 
     QComboBox *m_waveform;
     QComboBox *m_target;
@@ -45,6 +49,8 @@ private:
     QPushButton *m_start;
     QPushButton *m_stop;
     QLabel *m_state;
+    std::optional<double> m_driveAngle;
+    bool m_offsetEdited = false; ///< the user typed an offset for this drive
 };
 
 } // namespace lk::ui

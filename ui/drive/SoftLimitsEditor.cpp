@@ -1,6 +1,7 @@
 #include "SoftLimitsEditor.h"
 
 #include <motor/SeriesLimits.h>
+#include <panels/StatusColors.h>
 
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QDoubleSpinBox>
@@ -15,6 +16,7 @@ namespace lk::ui {
 namespace {
 constexpr double kMaxAngle = 1e9;
 constexpr double kMaxSpeedField = 1e6;
+constexpr double kMinSpeedField = 0.1;
 constexpr double kMaxTorqueField = 100;
 } // namespace
 
@@ -25,8 +27,10 @@ SoftLimitsEditor::SoftLimitsEditor(QWidget *parent) : QGroupBox(tr("Soft limits"
     m_power = new QSpinBox(this);
     m_power->setObjectName(QStringLiteral("limitPower"));
     m_power->setRange(0, 1000);
-    m_speed = number(QStringLiteral("limitSpeed"), 0, kMaxSpeedField, 1, tr(" dps"));
-    m_speed->setSpecialValueText(tr("series maximum"));
+    // Never 0 and never "no limit": every move is bounded by this value.
+    m_speed = number(QStringLiteral("limitSpeed"), kMinSpeedField, kMaxSpeedField, 1, tr(" dps"));
+    m_speed->setToolTip(tr("Bounds speed commands, jog and the max speed of every position "
+                           "move"));
     m_min = number(QStringLiteral("limitMinAngle"), -kMaxAngle, kMaxAngle, 2, tr(" \u00b0"));
     m_max = number(QStringLiteral("limitMaxAngle"), -kMaxAngle, kMaxAngle, 2, tr(" \u00b0"));
     m_step = number(QStringLiteral("limitStep"), 0, kMaxAngle, 2, tr(" \u00b0"));
@@ -129,19 +133,35 @@ void SoftLimitsEditor::refreshDirty()
 {
     const safety::SoftLimits e = edited();
     const bool badRange = e.minAngleDeg && e.maxAngleDeg && *e.minAngleDeg > *e.maxAngleDeg;
-    m_apply->setEnabled(!badRange && !(e == m_limits));
+    // With a problem shown, applying the limits as they are is how the user answers it.
+    m_apply->setEnabled(!badRange && (!(e == m_limits) || !m_problem.isEmpty()));
     QString note;
-    if (badRange)
+    if (!m_problem.isEmpty())
+        note = m_problem;
+    else if (badRange)
         note = tr("The lowest angle must not be above the highest.");
     else if (m_series)
-        note = tr("Checked before every command, after the %1 series limits (%2 A, %3 dps). "
-                  "Angles and speeds are rotor values.")
+        note = tr("Checked before every command, after the %1 series limits (%2 A, %3 dps; "
+                  "the default speed limit is that top speed). Angles and speeds are rotor "
+                  "values; a position move goes at most one output turn.")
                    .arg(protocol::seriesName(*m_series))
                    .arg(motor::seriesLimits(*m_series).maxCurrentA)
                    .arg(motor::seriesLimits(*m_series).maxSpeedDps());
     else
-        note = tr("The series is unknown: torque and open loop stay refused until a scan.");
+        note = tr("The series is unknown: torque and open loop stay refused until a scan; the "
+                  "default speed limit is %1 dps, the slowest series' top speed.")
+                   .arg(safety::SoftLimits::kUnknownSeriesSpeedDps);
     m_note->setText(note);
+    m_note->setStyleSheet(
+        m_problem.isEmpty() || badRange
+            ? QString()
+            : StatusColors::textStyle(StatusColors::Role::Error, palette(), true));
+}
+
+void SoftLimitsEditor::setProblem(const QString &text)
+{
+    m_problem = text;
+    refreshDirty();
 }
 
 void SoftLimitsEditor::apply()
@@ -156,7 +176,7 @@ void SoftLimitsEditor::apply()
 
 void SoftLimitsEditor::restoreDefaults()
 {
-    m_limits = m_series ? safety::SoftLimits::defaults(*m_series) : safety::SoftLimits{};
+    m_limits = safety::SoftLimits::defaults(m_series);
     showLimits(m_limits);
     emit limitsApplied(m_limits);
 }

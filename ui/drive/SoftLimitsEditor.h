@@ -16,7 +16,8 @@ class QSpinBox;
 namespace lk::ui {
 
 /// Edits one drive's soft limits (torque, open-loop power, speed, angle range, step size).
-/// Edits take effect on Apply; "Defaults" restores SoftLimits::defaults for the series.
+/// Edits take effect on Apply; "Defaults" restores SoftLimits::defaults for the series. The
+/// speed limit always has a value (the series top speed by default, shown as a number).
 class SoftLimitsEditor : public QGroupBox {
     Q_OBJECT
 public:
@@ -26,6 +27,8 @@ public:
     void setLimits(const safety::SoftLimits &limits, std::optional<protocol::Series> series);
     /// The limits in force (last set or applied).
     safety::SoftLimits limits() const { return m_limits; }
+    /// A problem with the limits (damaged stored entry), shown until cleared with an empty text.
+    void setProblem(const QString &text);
     /// What the fields say now (not yet applied).
     safety::SoftLimits edited() const;
 
@@ -56,6 +59,7 @@ private:
     QCheckBox *m_stepOn;
     QDoubleSpinBox *m_step;
     QLabel *m_note;
+    QString m_problem;
     QPushButton *m_apply;
 };
 

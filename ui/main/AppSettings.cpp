@@ -1,6 +1,7 @@
 #include "AppSettings.h"
 
 #include <bus/BusTiming.h>
+#include <drive/DriveSettingsStore.h>
 
 #include <QtCore/QRegularExpression>
 #include <QtCore/QSettings>
@@ -75,6 +76,35 @@ bool validBool(const QVariant &v)
            s == QLatin1String("0");
 }
 
+bool validLanguageValue(const QVariant &v)
+{
+    return validLanguage(v.toString());
+}
+
+bool validVersion(const QVariant &v)
+{
+    bool ok = false;
+    return v.toInt(&ok) >= 0 && ok;
+}
+
+// Every checked key with what it must be (for the damage report).
+struct CheckedKey {
+    const char *key;
+    bool (*valid)(const QVariant &);
+    const char *allowed;
+};
+const CheckedKey kCheckedKeys[] = {
+    {key::kVersion, validVersion, "a whole number"},
+    {key::kConnectionKind, validKind, "serial or simulator"},
+    {key::kConnectionBaud, validBaud, "one of the nine LK bauds"},
+    {key::kAutoReconnect, validBool, "true or false"},
+    {key::kScanFirstId, validId, "1..32"},
+    {key::kScanLastId, validId, "1..32"},
+    {key::kScanSweepBauds, validBool, "true or false"},
+    {key::kPollRateHz, validRate, "0..10000"},
+    {key::kLanguage, validLanguageValue, "a language such as zh_CN"},
+};
+
 void removeIf(QSettings &s, const char *k, bool (*valid)(const QVariant &))
 {
     if (s.contains(QLatin1String(k)) && !valid(s.value(QLatin1String(k))))
@@ -102,7 +132,32 @@ AppSettings::AppSettings(const QString &iniFile)
                                          QStringLiteral("lkstudio"), QStringLiteral("lkstudio"))
                                    : std::make_unique<QSettings>(iniFile, QSettings::IniFormat))
 {
+    // Before migrating: migration drops bad values, and the user must hear about them.
+    m_damage = findDamage(*m_settings);
     m_loadedVersion = migrate(*m_settings);
+}
+
+QStringList AppSettings::findDamage(QSettings &settings)
+{
+    if (settings.status() == QSettings::FormatError)
+        return {QStringLiteral("%1: not a readable settings file").arg(settings.fileName())};
+    QStringList damage;
+    for (const CheckedKey &k : kCheckedKeys) {
+        if (settings.contains(QLatin1String(k.key)) &&
+            !k.valid(settings.value(QLatin1String(k.key))))
+            damage << QStringLiteral("%1: must be %2 (found \"%3\")")
+                          .arg(QLatin1String(k.key), QLatin1String(k.allowed),
+                               settings.value(QLatin1String(k.key)).toString());
+    }
+    return damage + IniDriveStore::damagedEntries(settings);
+}
+
+QString AppSettings::damageReport() const
+{
+    if (m_damage.isEmpty())
+        return QString();
+    return tr("Your settings file %1 is damaged; these values were not used: %2.")
+        .arg(fileName(), m_damage.join(QStringLiteral("; ")));
 }
 
 AppSettings::~AppSettings()

@@ -3,7 +3,9 @@
 #include <panels/ConnectionChoice.h>
 
 #include <QtCore/QByteArray>
+#include <QtCore/QCoreApplication>
 #include <QtCore/QString>
+#include <QtCore/QStringList>
 
 #include <memory>
 
@@ -15,6 +17,7 @@ namespace lk::ui {
 /// through typed getters that validate what they read, and versioned with a migration step
 /// per release so that an upgrade never misreads an older file.
 class AppSettings {
+    Q_DECLARE_TR_FUNCTIONS(lk::ui::AppSettings)
 public:
     /// Layout version written by this build. Bump it and add a step to migrate() whenever a
     /// key changes meaning or name.
@@ -31,6 +34,12 @@ public:
     int loadedVersion() const { return m_loadedVersion; }
     /// The file was written by a newer lkstudio: it is read, never migrated downwards.
     bool isFromNewerRelease() const { return m_loadedVersion > kVersion; }
+
+    /// What was damaged in the file as found at start, one "key: what is wrong" per entry
+    /// (a file that cannot be parsed at all names the file). Those values are not used.
+    QStringList damage() const { return m_damage; }
+    /// One translated sentence for the banner naming the damaged keys; empty when none.
+    QString damageReport() const;
 
     ConnectionChoice connection() const;
     void setConnection(const ConnectionChoice &choice);
@@ -65,8 +74,11 @@ public:
     static int migrate(QSettings &settings);
 
 private:
+    static QStringList findDamage(QSettings &settings);
+
     std::unique_ptr<QSettings> m_settings;
     int m_loadedVersion = 0;
+    QStringList m_damage;
 };
 
 } // namespace lk::ui

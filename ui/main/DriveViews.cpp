@@ -39,6 +39,8 @@ DriveViews::DriveViews(BusModel *model, BusController *controller, TelemetryStor
     connect(m_model, &BusModel::currentDriveChanged, this, &DriveViews::syncDrive);
     connect(m_model, &BusModel::drivesChanged, this, &DriveViews::syncDrive);
     connect(m_model, &BusModel::connectionChanged, this, &DriveViews::syncConnection);
+    connect(m_model, &BusModel::selectionChanged, this,
+            [this] { m_control->setSelectedDrives(m_model->selectedIds()); });
     syncConnection();
     syncDrive();
 }

@@ -61,6 +61,11 @@ MainWindow::MainWindow(AppSettings *settings, QWidget *parent)
     wirePanels();
     wirePlots();
     restoreSettings();
+    // Settings damage is told once, after the start-up connection has used the banner.
+    QTimer::singleShot(0, this, [this] {
+        if (!m_settings->damageReport().isEmpty())
+            m_banner->showMessage(MessageBanner::Level::Warning, m_settings->damageReport());
+    });
 }
 
 MainWindow::~MainWindow()

@@ -5,14 +5,17 @@
 #include <drive/DriveSettingsStore.h>
 #include <drive/JogPanel.h>
 #include <drive/SetpointGenerator.h>
+#include <drive/SetpointPanel.h>
 #include <drive/SoftLimitsEditor.h>
 
+#include <QtCore/QSettings>
 #include <QtCore/QTemporaryDir>
 #include <QtGui/QShortcut>
 #include <QtTest/QtTest>
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QDoubleSpinBox>
+#include <QtWidgets/QLabel>
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QVBoxLayout>
 
@@ -65,6 +68,12 @@ private slots:
     void refusedCommandSendsNothing_data();
     void refusedCommandSendsNothing();
     void softLimitsPersistPerDrive();
+    void positionMoveRunsAtTheSpeedLimit();
+    void targetStartsAtTheDrivesAngle();
+    void valueDoesNotCarryOverToAnotherDrive();
+    void severalDrivesSelectedNamesTheOne();
+    void damagedStoredLimitsAreNeverReplacedSilently();
+    void generatorPositionCentredOnTheDrive();
     void offStopRun();
     void jogHoldAndRelease();
     void jogStep();
@@ -124,7 +133,7 @@ void tst_ControlView::eachModeMoves_data()
     QTest::newRow("torque MF") << 1 << int(ControlMode::Torque) << 0.5 << 0.0 << "spins";
     QTest::newRow("speed dps") << 1 << int(ControlMode::Speed) << 360.0 << 0.0 << "speed";
     QTest::newRow("speed rpm") << 4 << int(ControlMode::Speed) << -60.0 << 0.0 << "rpm";
-    QTest::newRow("multi") << 1 << int(ControlMode::MultiPosition) << 400.0 << 0.0 << "multi";
+    QTest::newRow("multi") << 1 << int(ControlMode::MultiPosition) << 300.0 << 0.0 << "multi";
     QTest::newRow("multi limited")
         << 2 << int(ControlMode::MultiPosition) << -300.0 << 720.0 << "multi";
     QTest::newRow("single") << 1 << int(ControlMode::SinglePosition) << 90.0 << 0.0 << "single";
@@ -168,6 +177,7 @@ void tst_ControlView::eachModeMoves()
         modes->setSpeed(value);
         break;
     case ControlMode::MultiPosition:
+        value += startDeg; // a target within one output turn of where the drive is
         modes->setMultiAngle(value, max);
         break;
     case ControlMode::SinglePosition:
@@ -178,6 +188,8 @@ void tst_ControlView::eachModeMoves()
         break;
     }
     QTest::mouseClick(button(*view, "send"), Qt::LeftButton);
+    // A multi-turn move reads the drive's angle first.
+    QTRY_VERIFY_WITH_TIMEOUT(!view->lastOutcome().pending, kWaitMs);
     QVERIFY2(view->lastOutcome().sent, qPrintable(view->statusText()));
 
     if (check == QLatin1String("spins")) {
@@ -224,7 +236,7 @@ void tst_ControlView::refusedCommandSendsNothing_data()
                                      << int(LimitKind::SoftSpeed) << int(Command::Speed);
     QTest::newRow("angle above range")
         << 1 << int(ControlMode::MultiPosition) << 200.0 << "angle 100"
-        << int(LimitKind::AngleAboveMax) << int(Command::MultiPosition);
+        << int(LimitKind::AngleAboveMax) << int(Command::MultiPositionLimited);
     QTest::newRow("single angle out of range") << 1 << int(ControlMode::SinglePosition) << 400.0
                                                << "" << -1 << int(Command::SinglePosition);
     QTest::newRow("step over soft")
@@ -267,6 +279,7 @@ void tst_ControlView::refusedCommandSendsNothing()
     modes->setIncrement(value);
     QSignalSpy refused(view.get(), &ControlView::commandRefused);
     QTest::mouseClick(button(*view, "send"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->lastOutcome().pending, kWaitMs);
     const lk::ui::MotionOutcome out = view->lastOutcome();
     QVERIFY(!out.sent);
     QCOMPARE(refused.count(), 1);
@@ -308,6 +321,173 @@ void tst_ControlView::softLimitsPersistPerDrive()
     // Another drive keeps its own defaults.
     view->setDrive(4, rig.motor(4));
     QCOMPARE(view->softLimits(), lk::safety::SoftLimits::defaults(Series::MH));
+}
+
+void tst_ControlView::positionMoveRunsAtTheSpeedLimit()
+{
+    // The issue: "Speed at most" 720 dps, 0xA3 with "Limit speed to" unticked, peak 9,500 dps.
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    lk::safety::SoftLimits limits = view->softLimits();
+    limits.maxSpeedDps = 720;
+    view->setSoftLimits(limits);
+    auto *modes = view->modePanel();
+    QVERIFY(modes->setMode(ControlMode::MultiPosition));
+    const double target = rig.multiTurnDeg(1) + 350;
+    modes->setMultiAngle(target); // no max speed of its own
+    QTest::mouseClick(button(*view, "send"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(view->lastOutcome().sent, kWaitMs);
+    QVERIFY2(view->statusText().contains(QStringLiteral("max speed 720 dps (your speed limit)")),
+             qPrintable(view->statusText()));
+    double peak = 0;
+    QTRY_VERIFY_WITH_TIMEOUT((peak = std::max(peak, std::fabs(rig.speedDps(1))),
+                              std::fabs(rig.multiTurnDeg(1) - target) < 2),
+                             kWaitMs);
+    // The speed loop may overshoot a little; unbounded, an MF rotor heads for 18000 dps.
+    QVERIFY2(peak <= 720 * 1.25, qPrintable(QString::number(peak)));
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::MultiPosition), 0);
+    QCOMPARE(rig.count(1, Command::MultiPositionLimited), 1);
+}
+
+void tst_ControlView::targetStartsAtTheDrivesAngle()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    {
+        // Wind the rotor several turns away from 0 first.
+        auto mover = openView(rig, 1);
+        QVERIFY(mover->sendMotion(lk::protocol::build::speed(1, 5000)).sent);
+        QTRY_VERIFY_WITH_TIMEOUT(rig.multiTurnDeg(1) > 2000, kWaitMs);
+        mover->sendMotion(lk::protocol::build::speed(1, 0));
+        QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.speedDps(1)) < 1, kWaitMs);
+        mover->motorOff();
+        QVERIFY(rig.barrier(1));
+    }
+    auto view = openView(rig, 1);
+    auto *modes = view->modePanel();
+    QVERIFY(modes->setMode(ControlMode::MultiPosition));
+    auto *target = view->findChild<QDoubleSpinBox *>(QStringLiteral("multiAngle"));
+    QTRY_VERIFY_WITH_TIMEOUT(std::fabs(target->value() - rig.multiTurnDeg(1)) < 1, kWaitMs);
+    // 0 absolute is several turns back: refused, naming the rule, nothing sent.
+    modes->setMultiAngle(0);
+    QTest::mouseClick(button(*view, "send"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->lastOutcome().pending, kWaitMs);
+    QVERIFY(!view->lastOutcome().sent);
+    QCOMPARE(view->lastOutcome().limit, LimitKind::OutputTurn);
+    QVERIFY2(view->statusText().contains(QStringLiteral("one output turn")),
+             qPrintable(view->statusText()));
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::MultiPosition) + rig.count(1, Command::MultiPositionLimited), 0);
+}
+
+void tst_ControlView::valueDoesNotCarryOverToAnotherDrive()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    auto *modes = view->modePanel();
+    QVERIFY(modes->setMode(ControlMode::Speed));
+    modes->setSpeed(500);
+    view->setDrive(4, rig.motor(4));
+    QCOMPARE(view->findChild<QDoubleSpinBox *>(QStringLiteral("speed"))->value(), 0.0);
+    QTest::mouseClick(button(*view, "send"), Qt::LeftButton);
+    QVERIFY(rig.barrier(4));
+    QCOMPARE(rig.speedDps(4), 0.0);
+}
+
+void tst_ControlView::severalDrivesSelectedNamesTheOne()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    auto *note = view->findChild<QLabel *>(QStringLiteral("selectionNote"));
+    QVERIFY(note);
+    QVERIFY(!note->isVisible());
+    view->setSelectedDrives({1, 4});
+    QVERIFY(note->isVisible());
+    QVERIFY2(note->text().contains(QStringLiteral("2 drives are selected")) &&
+                 note->text().contains(view->driveTitle()),
+             qPrintable(note->text()));
+    view->setSelectedDrives({1});
+    QVERIFY(!note->isVisible());
+}
+
+void tst_ControlView::damagedStoredLimitsAreNeverReplacedSilently()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    QTemporaryDir dir;
+    const QString ini = dir.filePath(QStringLiteral("limits.ini"));
+    const QString key =
+        lk::ui::IniDriveStore::softLimitsKey(lk::ui::DriveSettingsStore::driveKey(1, rig.motor(1)));
+    lk::ui::IniDriveStore store(ini);
+    auto view = openView(rig, 1);
+    view->setSettingsStore(&store);
+    lk::safety::SoftLimits mine = view->softLimits();
+    mine.maxTorqueA = 1;
+    mine.maxSpeedDps = 720;
+    view->setSoftLimits(mine);
+    store.sync();
+    const auto damage = [&] {
+        QSettings s(ini, QSettings::IniFormat);
+        s.setValue(key, QStringLiteral(R"({"max_speed": 720})"));
+        s.sync();
+        store.sync();
+    };
+    // Damaged while shown: the limits in force stay (not 2.25 A / 18000 dps) and it says so.
+    damage();
+    view->setDrive(1, rig.motor(1)); // reads the entry again
+    QCOMPARE(view->softLimits(), mine);
+    QVERIFY2(view->statusText().contains(QStringLiteral("max_speed")),
+             qPrintable(view->statusText()));
+    // Damaged before it is shown: nothing moves until the user applies limits.
+    damage();
+    auto fresh = openView(rig, 1);
+    fresh->setSettingsStore(&store);
+    auto *modes = fresh->modePanel();
+    QVERIFY(modes->setMode(ControlMode::Speed));
+    modes->setSpeed(500);
+    QTest::mouseClick(button(*fresh, "send"), Qt::LeftButton);
+    QVERIFY(!fresh->lastOutcome().sent);
+    QVERIFY2(fresh->statusText().contains(QStringLiteral("damaged")) &&
+                 fresh->statusText().contains(QStringLiteral("unknown key \"max_speed\"")),
+             qPrintable(fresh->statusText()));
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::Speed), 0);
+    QTest::mouseClick(button(*fresh, "applyLimits"), Qt::LeftButton);
+    QTest::mouseClick(button(*fresh, "send"), Qt::LeftButton);
+    QVERIFY2(fresh->lastOutcome().sent, qPrintable(fresh->statusText()));
+}
+
+void tst_ControlView::generatorPositionCentredOnTheDrive()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    {
+        auto mover = openView(rig, 1);
+        QVERIFY(mover->sendMotion(lk::protocol::build::speed(1, 5000)).sent);
+        QTRY_VERIFY_WITH_TIMEOUT(rig.multiTurnDeg(1) > 2000, kWaitMs);
+        mover->sendMotion(lk::protocol::build::speed(1, 0));
+        QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.speedDps(1)) < 1, kWaitMs);
+        mover->motorOff();
+        QVERIFY(rig.barrier(1));
+    }
+    auto view = openView(rig, 1);
+    auto *target = view->findChild<QComboBox *>(QStringLiteral("target"));
+    target->setCurrentIndex(target->findData(int(SetpointGenerator::Target::Position)));
+    QTRY_VERIFY_WITH_TIMEOUT(
+        std::fabs(view->setpointPanel()->settings().offset - rig.multiTurnDeg(1)) < 1, kWaitMs);
+    // A waveform around 0 absolute is turns away: the first setpoint is refused, none sent.
+    SetpointGenerator::Settings far = view->setpointPanel()->settings();
+    far.offset = 0;
+    view->startGenerator(far);
+    QTRY_VERIFY_WITH_TIMEOUT(view->statusText().contains(QStringLiteral("one output turn")),
+                             kWaitMs);
+    QVERIFY(!view->generator()->isRunning());
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::MultiPosition) + rig.count(1, Command::MultiPositionLimited), 0);
 }
 
 void tst_ControlView::offStopRun()
@@ -452,16 +632,17 @@ void tst_ControlView::generatorStopsOnEscape()
     s.offset = rig.multiTurnDeg(1);
     s.amplitude = 20;
     view->startGenerator(s);
-    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::MultiPosition) >= 2, kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::MultiPositionLimited) >= 2, kWaitMs);
     // Esc with nobody else taking it: the view halts the generator and sends the stop.
     QTest::keyClick(view.get(), Qt::Key_Escape);
     QVERIFY(!view->generator()->isRunning());
     QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::MotorOff) >= 1, kWaitMs);
     QVERIFY(rig.barrier(1));
-    const int sent = rig.count(1, Command::MultiPosition);
+    const int sent = rig.count(1, Command::MultiPositionLimited);
     QTest::qWait(300);
     QVERIFY(rig.barrier(1));
-    QCOMPARE(rig.count(1, Command::MultiPosition), sent);
+    QCOMPARE(rig.count(1, Command::MultiPositionLimited), sent);
+    QCOMPARE(rig.count(1, Command::MultiPosition), 0);
 }
 
 void tst_ControlView::generatorStopsOnEscapeUnderWindowShortcut()

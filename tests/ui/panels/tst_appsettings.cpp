@@ -1,4 +1,6 @@
 #include <main/AppSettings.h>
+#include <main/MainWindow.h>
+#include <panels/MessageBanner.h>
 
 #include <QtCore/QSettings>
 #include <QtCore/QTemporaryDir>
@@ -20,6 +22,10 @@ private slots:
     void clampsScanRange();
     void language_data();
     void language();
+    void damagedFileIsNamed_data();
+    void damagedFileIsNamed();
+    void cleanFileReportsNothing();
+    void windowReportsDamageOnceAtStart();
 
 private:
     QString file() const { return m_dir.filePath(QStringLiteral("lkstudio.ini")); }
@@ -191,5 +197,88 @@ void tst_AppSettings::language()
     QCOMPARE(AppSettings(file()).language(), QString());
 }
 
-QTEST_GUILESS_MAIN(tst_AppSettings)
+void tst_AppSettings::damagedFileIsNamed_data()
+{
+    QTest::addColumn<int>("version");
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<QString>("value");
+    QTest::addColumn<QString>("named");
+    QTest::newRow("baud") << 1 << "connection/baud"
+                          << "12345"
+                          << "connection/baud: must be";
+    QTest::newRow("baud unversioned") << 0 << "connection/baud"
+                                      << "12345"
+                                      << "connection/baud: must be";
+    QTest::newRow("scan id") << 1 << "scan/firstId"
+                             << "99"
+                             << "scan/firstId: must be 1..32";
+    QTest::newRow("poll rate") << 1 << "poll/rateHz"
+                               << "fast"
+                               << "poll/rateHz: must be";
+    QTest::newRow("drive limits") << 1 << "drives/id1-MF4015/softLimits"
+                                  << R"({"max_speed": 720})"
+                                  << "drives/id1-MF4015/softLimits: unknown key \"max_speed\"";
+    QTest::newRow("drive limits duplicate") << 1 << "drives/id1-MF4015/softLimits"
+                                            << R"({"max_speed_dps": 1, "max_speed_dps": 2})"
+                                            << "\"max_speed_dps\" is given twice";
+    QTest::newRow("gear ratio") << 1 << "drives/id2-MG5010E-i10/gearRatio"
+                                << "0.5"
+                                << "drives/id2-MG5010E-i10/gearRatio: must be";
+}
+
+void tst_AppSettings::damagedFileIsNamed()
+{
+    QFETCH(int, version);
+    QFETCH(QString, key);
+    QFETCH(QString, value);
+    QFETCH(QString, named);
+    {
+        QSettings raw(file(), QSettings::IniFormat);
+        if (version > 0)
+            raw.setValue(QStringLiteral("settingsVersion"), version);
+        raw.setValue(key, value);
+    }
+    AppSettings s(file());
+    QCOMPARE(s.damage().size(), 1);
+    QVERIFY2(s.damage().first().contains(named), qPrintable(s.damage().first()));
+    QVERIFY(s.damageReport().contains(file()));
+    QVERIFY(s.damageReport().contains(key));
+}
+
+void tst_AppSettings::cleanFileReportsNothing()
+{
+    {
+        AppSettings s(file());
+        s.setScanRange(3, 9, true);
+        s.setPollRateHz(50);
+    }
+    {
+        QSettings raw(file(), QSettings::IniFormat);
+        raw.setValue(QStringLiteral("drives/id1-MF4015/softLimits"),
+                     QStringLiteral(R"({"max_speed_dps":720,"max_torque_a":1})"));
+        raw.setValue(QStringLiteral("drives/id1-MF4015/encoderBits"), 14);
+    }
+    AppSettings s(file());
+    QCOMPARE(s.damage(), QStringList());
+    QCOMPARE(s.damageReport(), QString());
+}
+
+void tst_AppSettings::windowReportsDamageOnceAtStart()
+{
+    {
+        QSettings raw(file(), QSettings::IniFormat);
+        raw.setValue(QStringLiteral("settingsVersion"), 1);
+        raw.setValue(QStringLiteral("drives/id1-MF4015/softLimits"),
+                     QStringLiteral(R"({"max_speed": 720})"));
+    }
+    AppSettings settings(file());
+    lk::ui::MainWindow window(&settings);
+    window.show();
+    QTRY_VERIFY_WITH_TIMEOUT(window.banner()->text().contains(QStringLiteral("max_speed")), 20000);
+    QCOMPARE(window.banner()->level(), lk::ui::MessageBanner::Level::Warning);
+    QTest::qWait(100);
+    QCOMPARE(window.banner()->repeatCount(), 1); // told once
+}
+
+QTEST_MAIN(tst_AppSettings)
 #include "tst_appsettings.moc"

@@ -1,0 +1,180 @@
+#include "MotionPlanner.h"
+
+#include <QtCore/QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lk::safety {
+
+namespace {
+
+using protocol::Command;
+
+QString translated(const char *text)
+{
+    return QCoreApplication::translate("lk::safety::MotionPlanner", text);
+}
+
+MotionPlan refused(LimitKind kind, double value, double limit, const QString &message)
+{
+    MotionPlan p;
+    p.verdict = Verdict{kind, value, limit, message};
+    return p;
+}
+
+Command limitedForm(Command c)
+{
+    switch (c) {
+    case Command::MultiPosition:
+        return Command::MultiPositionLimited;
+    case Command::SinglePosition:
+        return Command::SinglePositionLimited;
+    case Command::IncrementPosition:
+        return Command::IncrementPositionLimited;
+    default:
+        return c;
+    }
+}
+
+// The max speed field of a position payload (nullptr for any other payload).
+std::optional<quint32> *maxSpeedOf(protocol::Request &r)
+{
+    if (auto *c = std::get_if<protocol::MultiPositionCommand>(&r.payload))
+        return &c->maxSpeedRaw;
+    if (auto *c = std::get_if<protocol::SinglePositionCommand>(&r.payload))
+        return &c->maxSpeedRaw;
+    if (auto *c = std::get_if<protocol::IncrementPositionCommand>(&r.payload))
+        return &c->maxSpeedRaw;
+    return nullptr;
+}
+
+// The one-output-turn and angle-window rules that need to know where the drive is.
+std::optional<MotionPlan> checkDistance(const protocol::Request &r, const SoftLimits &limits,
+                                        const DrivePosition &at)
+{
+    const double turn = at.outputTurnDeg();
+    std::optional<double> target;
+    if (const auto *c = std::get_if<protocol::MultiPositionCommand>(&r.payload)) {
+        if (!at.angleDeg)
+            return refused(LimitKind::AngleUnknown, 0, 0,
+                           translated(QT_TRANSLATE_NOOP(
+                               "lk::safety::MotionPlanner",
+                               "the drive's current angle is unknown: read it (0x92) first")));
+        // MotionGuard checks the target against the angle range.
+        const double distance =
+            std::fabs(static_cast<double>(c->angleRaw) * protocol::kCentiUnits - *at.angleDeg);
+        if (distance > turn)
+            return refused(
+                LimitKind::OutputTurn, distance, turn,
+                translated(
+                    QT_TRANSLATE_NOOP("lk::safety::MotionPlanner",
+                                      "a move of %1 deg from the current angle %2 deg exceeds one "
+                                      "output turn (%3 deg)"))
+                    .arg(distance)
+                    .arg(*at.angleDeg)
+                    .arg(turn));
+    } else if (const auto *c = std::get_if<protocol::IncrementPositionCommand>(&r.payload)) {
+        const double step = c->angleRaw * protocol::kCentiUnits;
+        if (std::fabs(step) > turn)
+            return refused(LimitKind::OutputTurn, std::fabs(step), turn,
+                           translated(QT_TRANSLATE_NOOP("lk::safety::MotionPlanner",
+                                                        "an increment of %1 deg exceeds one "
+                                                        "output turn (%2 deg)"))
+                               .arg(std::fabs(step))
+                               .arg(turn));
+        if (limits.minAngleDeg || limits.maxAngleDeg) {
+            if (!at.angleDeg)
+                return refused(LimitKind::AngleUnknown, 0, 0,
+                               translated(QT_TRANSLATE_NOOP(
+                                   "lk::safety::MotionPlanner",
+                                   "your angle range needs the drive's current angle: read it "
+                                   "(0x92) first")));
+            target = *at.angleDeg + step;
+        }
+    }
+    if (target) {
+        const Verdict window = MotionGuard::checkTarget(*target, limits);
+        if (!window.allowed())
+            return refused(window.kind, window.value, window.limit, window.message);
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
+bool MotionPlanner::needsAngle(const protocol::Request &request, const SoftLimits &limits)
+{
+    if (std::holds_alternative<protocol::MultiPositionCommand>(request.payload))
+        return true;
+    return std::holds_alternative<protocol::IncrementPositionCommand>(request.payload) &&
+           (limits.minAngleDeg || limits.maxAngleDeg);
+}
+
+bool MotionPlanner::isPosition(Command c)
+{
+    return c >= Command::MultiPosition && c <= Command::IncrementPositionLimited;
+}
+
+MotionPlan MotionPlanner::plan(const protocol::Request &request,
+                               std::optional<protocol::Series> series, const SoftLimits &limits,
+                               const DrivePosition &position)
+{
+    protocol::Request out = request;
+    MotionPlan p;
+    if (std::optional<quint32> *maxSpeed = maxSpeedOf(out); maxSpeed && isPosition(out.command)) {
+        if (std::optional<MotionPlan> no = checkDistance(out, limits, position))
+            return *no;
+        const double top = MotionGuard::topSpeedDps(series);
+        if (*maxSpeed) {
+            p.bound = SpeedBound::UserMaxSpeed;
+            p.boundDps = **maxSpeed * protocol::kCentiUnits;
+        } else {
+            // Never above the bound: round the cap down to the wire's 0.01 dps.
+            p.bound = limits.maxSpeedDps > top ? SpeedBound::SeriesTop : SpeedBound::SoftLimit;
+            const double cap = std::min(limits.maxSpeedDps, top);
+            *maxSpeed = static_cast<quint32>(std::max(0.0, std::floor(cap * 100.0 + 1e-6)));
+            p.boundDps = **maxSpeed * protocol::kCentiUnits;
+            out.command = limitedForm(out.command);
+            p.limited = true;
+        }
+    } else if (std::holds_alternative<protocol::SpeedCommand>(out.payload)) {
+        p.bound = SpeedBound::Command;
+        p.boundDps = limits.maxSpeedDps;
+    }
+    p.verdict = MotionGuard::check(out, series, limits);
+    if (!p.verdict.allowed()) {
+        p.bound = SpeedBound::None;
+        return p;
+    }
+    p.request = out;
+    return p;
+}
+
+QString MotionPlan::boundText() const
+{
+    const QString value = QString::number(boundDps, 'g', 10);
+    switch (bound) {
+    case SpeedBound::None:
+        return QString();
+    case SpeedBound::Command:
+        return translated(QT_TRANSLATE_NOOP("lk::safety::MotionPlanner",
+                                            "within your speed limit of %1 dps"))
+            .arg(value);
+    case SpeedBound::SoftLimit:
+        return translated(QT_TRANSLATE_NOOP("lk::safety::MotionPlanner",
+                                            "max speed %1 dps (your speed limit)"))
+            .arg(value);
+    case SpeedBound::SeriesTop:
+        return translated(QT_TRANSLATE_NOOP("lk::safety::MotionPlanner",
+                                            "max speed %1 dps (the series top speed)"))
+            .arg(value);
+    case SpeedBound::UserMaxSpeed:
+        return translated(QT_TRANSLATE_NOOP("lk::safety::MotionPlanner",
+                                            "max speed %1 dps (the max speed you gave)"))
+            .arg(value);
+    }
+    return QString();
+}
+
+} // namespace lk::safety

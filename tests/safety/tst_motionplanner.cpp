@@ -1,0 +1,193 @@
+// The conversion every motion request passes before it is sent (lkstudio and lkctl): position
+// moves always carry a max speed, targets start where the drive is.
+
+#include <protocol/RequestBuilder.h>
+#include <safety/MotionPlanner.h>
+
+#include <QtTest/QtTest>
+
+using namespace lk;
+using protocol::Command;
+using protocol::Series;
+using safety::LimitKind;
+using safety::SpeedBound;
+
+namespace {
+protocol::Request req(const protocol::BuildResult &r)
+{
+    if (!r.ok())
+        qFatal("test request did not build: %s", qPrintable(r.error.message()));
+    return *r.request;
+}
+
+safety::SoftLimits limits720()
+{
+    safety::SoftLimits l = safety::SoftLimits::defaults(Series::MF);
+    l.maxSpeedDps = 720;
+    return l;
+}
+
+safety::DrivePosition at(double deg, double ratio = 1.0)
+{
+    safety::DrivePosition p;
+    p.angleDeg = deg;
+    p.gearRatio = ratio;
+    return p;
+}
+
+std::optional<quint32> maxSpeedRaw(const protocol::Request &r)
+{
+    if (const auto *c = std::get_if<protocol::MultiPositionCommand>(&r.payload))
+        return c->maxSpeedRaw;
+    if (const auto *c = std::get_if<protocol::SinglePositionCommand>(&r.payload))
+        return c->maxSpeedRaw;
+    if (const auto *c = std::get_if<protocol::IncrementPositionCommand>(&r.payload))
+        return c->maxSpeedRaw;
+    return std::nullopt;
+}
+} // namespace
+
+class tst_MotionPlanner : public QObject {
+    Q_OBJECT
+private slots:
+    void unlimitedPositionsGetTheSpeedLimit_data();
+    void unlimitedPositionsGetTheSpeedLimit();
+    void lowerMaxSpeedIsKept();
+    void higherMaxSpeedIsRefused();
+    void seriesTopBelowTheLimit();
+    void multiTurnNeedsTheCurrentAngle();
+    void multiTurnWithinOneOutputTurn();
+    void gearedDriveTurnIsLonger();
+    void incrementWithinOneOutputTurn();
+    void incrementInsideTheAngleRange();
+    void speedAndTorqueStayBounded();
+};
+
+void tst_MotionPlanner::unlimitedPositionsGetTheSpeedLimit_data()
+{
+    QTest::addColumn<protocol::Request>("request");
+    QTest::addColumn<int>("limited");
+    QTest::newRow("0xA3") << req(protocol::build::multiPosition(1, 100)) << 0xA4;
+    QTest::newRow("0xA5") << req(protocol::build::singlePosition(
+                                 1, protocol::SpinDirection::Clockwise, 90))
+                          << 0xA6;
+    QTest::newRow("0xA7") << req(protocol::build::incrementPosition(1, -90)) << 0xA8;
+}
+
+void tst_MotionPlanner::unlimitedPositionsGetTheSpeedLimit()
+{
+    QFETCH(protocol::Request, request);
+    QFETCH(int, limited);
+    const safety::MotionPlan p =
+        safety::MotionPlanner::plan(request, Series::MF, limits720(), at(0));
+    QVERIFY2(p.allowed(), qPrintable(p.verdict.message));
+    QCOMPARE(int(p.request->command), limited);
+    QCOMPARE(maxSpeedRaw(*p.request), std::optional<quint32>(72000));
+    QCOMPARE(p.bound, SpeedBound::SoftLimit);
+    QCOMPARE(p.boundDps, 720.0);
+    QVERIFY(p.limited);
+    QCOMPARE(p.boundText(), QStringLiteral("max speed 720 dps (your speed limit)"));
+}
+
+void tst_MotionPlanner::lowerMaxSpeedIsKept()
+{
+    const safety::MotionPlan p = safety::MotionPlanner::plan(
+        req(protocol::build::multiPosition(1, 100, 100)), Series::MF, limits720(), at(0));
+    QVERIFY(p.allowed());
+    QCOMPARE(p.request->command, Command::MultiPositionLimited);
+    QCOMPARE(maxSpeedRaw(*p.request), std::optional<quint32>(10000));
+    QCOMPARE(p.bound, SpeedBound::UserMaxSpeed);
+    QVERIFY(!p.limited);
+}
+
+void tst_MotionPlanner::higherMaxSpeedIsRefused()
+{
+    const safety::MotionPlan p = safety::MotionPlanner::plan(
+        req(protocol::build::incrementPosition(1, 10, 5000)), Series::MF, limits720(), at(0));
+    QVERIFY(!p.allowed());
+    QCOMPARE(p.verdict.kind, LimitKind::SoftSpeed);
+    QVERIFY(p.verdict.message.contains(QStringLiteral("720")));
+}
+
+void tst_MotionPlanner::seriesTopBelowTheLimit()
+{
+    safety::SoftLimits l = safety::SoftLimits::defaults(Series::MF); // 18000 dps
+    const safety::MotionPlan p = safety::MotionPlanner::plan(
+        req(protocol::build::incrementPosition(1, 10)), Series::MS, l, at(0));
+    QVERIFY(p.allowed());
+    QCOMPARE(p.bound, SpeedBound::SeriesTop);
+    QCOMPARE(p.boundDps, 6000.0); // MS: 1000 rpm
+}
+
+void tst_MotionPlanner::multiTurnNeedsTheCurrentAngle()
+{
+    const safety::MotionPlan p = safety::MotionPlanner::plan(
+        req(protocol::build::multiPosition(1, 0)), Series::MF, limits720(), {});
+    QVERIFY(!p.allowed());
+    QCOMPARE(p.verdict.kind, LimitKind::AngleUnknown);
+}
+
+void tst_MotionPlanner::multiTurnWithinOneOutputTurn()
+{
+    // The issue: from 11,000 deg, a target of 0 is 30 turns back.
+    safety::MotionPlan p = safety::MotionPlanner::plan(req(protocol::build::multiPosition(1, 0)),
+                                                       Series::MF, limits720(), at(11000));
+    QVERIFY(!p.allowed());
+    QCOMPARE(p.verdict.kind, LimitKind::OutputTurn);
+    QCOMPARE(p.verdict.limit, 360.0);
+    QVERIFY(p.verdict.message.contains(QStringLiteral("one output turn")));
+    p = safety::MotionPlanner::plan(req(protocol::build::multiPosition(1, 11360)), Series::MF,
+                                    limits720(), at(11000));
+    QVERIFY(p.allowed());
+    p = safety::MotionPlanner::plan(req(protocol::build::multiPosition(1, 11360.01)), Series::MF,
+                                    limits720(), at(11000));
+    QVERIFY(!p.allowed());
+}
+
+void tst_MotionPlanner::gearedDriveTurnIsLonger()
+{
+    const safety::MotionPlan p = safety::MotionPlanner::plan(
+        req(protocol::build::multiPosition(1, 3000)), Series::MG, limits720(), at(0, 10));
+    QVERIFY2(p.allowed(), qPrintable(p.verdict.message)); // 3600 rotor deg per output turn
+}
+
+void tst_MotionPlanner::incrementWithinOneOutputTurn()
+{
+    const safety::MotionPlan p = safety::MotionPlanner::plan(
+        req(protocol::build::incrementPosition(1, -400)), Series::MF, limits720(), {});
+    QVERIFY(!p.allowed());
+    QCOMPARE(p.verdict.kind, LimitKind::OutputTurn);
+    QVERIFY(safety::MotionPlanner::plan(req(protocol::build::incrementPosition(1, -360)),
+                                        Series::MF, limits720(), {})
+                .allowed());
+}
+
+void tst_MotionPlanner::incrementInsideTheAngleRange()
+{
+    safety::SoftLimits l = limits720();
+    l.maxAngleDeg = 100;
+    const protocol::Request r = req(protocol::build::incrementPosition(1, 50));
+    QCOMPARE(safety::MotionPlanner::plan(r, Series::MF, l, {}).verdict.kind,
+             LimitKind::AngleUnknown);
+    QCOMPARE(safety::MotionPlanner::plan(r, Series::MF, l, at(60)).verdict.kind,
+             LimitKind::AngleAboveMax);
+    QVERIFY(safety::MotionPlanner::plan(r, Series::MF, l, at(40)).allowed());
+}
+
+void tst_MotionPlanner::speedAndTorqueStayBounded()
+{
+    safety::MotionPlan p = safety::MotionPlanner::plan(req(protocol::build::speed(1, 800)),
+                                                       Series::MF, limits720(), {});
+    QCOMPARE(p.verdict.kind, LimitKind::SoftSpeed);
+    p = safety::MotionPlanner::plan(req(protocol::build::speed(1, 700)), Series::MF, limits720(),
+                                    {});
+    QVERIFY(p.allowed());
+    QCOMPARE(p.bound, SpeedBound::Command);
+    QCOMPARE(p.request->command, Command::Speed);
+    p = safety::MotionPlanner::plan(req(protocol::build::torque(1, 5)), Series::MF, limits720(),
+                                    {});
+    QCOMPARE(p.verdict.kind, LimitKind::SoftTorque);
+}
+
+QTEST_GUILESS_MAIN(tst_MotionPlanner)
+#include "tst_motionplanner.moc"
