@@ -292,6 +292,8 @@ std::optional<BusWorker::Pending> BusWorker::takeNext()
         p.req.origin = RequestOrigin::Poll;
         p.bytes = r->encode();
         p.done = [this](const RequestResult &res) { onPollDone(res); };
+        p.pollCycle = m_poller.cycle();
+        p.pollCycleStart = m_poller.cycleStart();
         return p;
     }
     const double due = m_poller.nextDueTime(t);
@@ -473,17 +475,20 @@ void BusWorker::completeWithReply(protocol::Reply reply)
     m_inflight.reset();
     m_matcher.clear();
     m_replyTimer.stop();
-    noteReply(reply, now());
+    noteReply(reply, now(), p);
     complete(std::move(p), RequestStatus::Ok, std::move(reply), {}, latency);
     schedulePump();
 }
 
-void BusWorker::noteReply(const protocol::Reply &reply, double time)
+void BusWorker::noteReply(const protocol::Reply &reply, double time, const Pending &request)
 {
     if (m_motors.noteSeen(reply.id))
         emit knownMotorsChanged(m_motors.all());
-    if (std::optional<TelemetrySample> s = TelemetrySample::fromReply(reply, time))
+    if (std::optional<TelemetrySample> s = TelemetrySample::fromReply(reply, time)) {
+        s->cycle = request.pollCycle; // which poll round it answers: rows are built per round
+        s->cycleTime = request.pollCycleStart;
         m_telemetry.add(*s);
+    }
 }
 
 void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command halt)
