@@ -8,6 +8,7 @@
 
 #include <bus/BusTiming.h>
 #include <motor/SeriesLimits.h>
+#include <record/TelemetryColumns.h>
 
 #include <QtCore/QTimer>
 
@@ -22,6 +23,26 @@ using protocol::Command;
 namespace {
 const QStringList kPollable{"state1", "state2", "state3", "multi-turn", "single-turn", "encoder"};
 const char kDefaultWhat[] = "state2,state1,multi-turn";
+
+/// The telemetry column names (TelemetryColumns), wrapped for the help text.
+QString columnList()
+{
+    QString text = QStringLiteral("  ");
+    int lineStart = 0;
+    const QVector<record::TelemetryColumn> &columns = record::TelemetryColumns::all();
+    for (int i = 0; i < columns.size(); ++i) {
+        const QString item = QLatin1String(columns.at(i).key) +
+                             (i + 1 < columns.size() ? QStringLiteral(",") : QString());
+        if (text.size() - lineStart + item.size() + 1 > 80) {
+            text += QStringLiteral("\n  ");
+            lineStart = int(text.size()) - 2;
+        } else if (i > 0) {
+            text += QLatin1Char(' ');
+        }
+        text += item;
+    }
+    return text;
+}
 } // namespace
 
 QString MonitorCommand::summary() const
@@ -62,14 +83,13 @@ QString MonitorCommand::usage() const
                "                      layout's names as keys\n"
                "\n"
                "A row holds the values of one poll round only, and time_s is when that round\n"
-               "began (host clock, seconds since the bus opened). Names carry the unit: "
-               "temperature_c,\n"
-               "voltage_v, error_state, iq_a or power (MS), speed_dps, encoder, "
-               "multi_turn_deg,\n"
-               "single_turn_deg, ia_a, ib_a, ic_a: the columns of what is polled. A value the\n"
-               "round did not bring (a lost reply) is an empty cell (JSON: no key), never 0.\n"
-               "docs/CSV.md describes both layouts and how to load them in pandas and "
-               "PlotJuggler.\n"
+               "began (host clock, seconds since the bus opened). The columns of what is\n"
+               "polled follow, in this order (names carry the unit; power instead of iq_a on\n"
+               "MS):\n"
+               "%6\n"
+               "A value the round did not bring (a lost reply) is an empty cell (JSON: no key),\n"
+               "never 0. CSV.md (in /usr/share/doc/lkstudio, docs/ in the sources) describes\n"
+               "both layouts, every column and how to load the files in pandas and PlotJuggler.\n"
                "JSON example:\n"
                "  {\"time_s\":1.234567,\"id\":3,\"temperature_c\":31,\"iq_a\":0.1611,"
                "\"speed_dps\":360,\"encoder\":1234}\n"
@@ -87,7 +107,8 @@ QString MonitorCommand::usage() const
         .arg(kDefaultRateHz)
         .arg(BusOptions::helpText(),
              exitStatusText(QStringLiteral("  An interrupt ends monitoring normally (status 0); "
-                                           "losing the bus gives 1.\n")));
+                                           "losing the bus gives 1.\n")))
+        .arg(columnList());
 }
 
 std::optional<MonitorCommand::Plan> MonitorCommand::parse(const ArgParser &parser, Console &console,
