@@ -159,21 +159,33 @@ std::optional<MonitorCommand::Plan> MonitorCommand::parse(const ArgParser &parse
         if (!plan.count)
             return fail(error);
     }
-    const bool json = parser.isSet(QStringLiteral("json"));
-    if (json && parser.isSet(QStringLiteral("csv")))
-        return fail(QStringLiteral("--csv and --json exclude each other"));
-    plan.format = json ? MonitorFormat::Json : MonitorFormat::CsvWide;
-    if (parser.isSet(QStringLiteral("csv-layout"))) {
-        if (json)
-            return fail(QStringLiteral("--csv-layout is for CSV, not --json"));
-        const QString name = parser.value(QStringLiteral("csv-layout"));
-        const std::optional<record::CsvLayout> layout = record::TelemetryCsv::layoutFromName(name);
-        if (!layout)
-            return fail(QStringLiteral("--csv-layout takes wide or long, not '%1'").arg(name));
-        plan.format =
-            *layout == record::CsvLayout::Long ? MonitorFormat::CsvLong : MonitorFormat::CsvWide;
-    }
+    const std::optional<MonitorFormat> format = parseFormat(parser, &error);
+    if (!format)
+        return fail(error);
+    plan.format = *format;
     return plan;
+}
+
+std::optional<MonitorFormat> MonitorCommand::parseFormat(const ArgParser &parser, QString *error)
+{
+    const bool json = parser.isSet(QStringLiteral("json"));
+    if (json && parser.isSet(QStringLiteral("csv"))) {
+        *error = QStringLiteral("--csv and --json exclude each other");
+        return std::nullopt;
+    }
+    if (!parser.isSet(QStringLiteral("csv-layout")))
+        return json ? MonitorFormat::Json : MonitorFormat::CsvWide;
+    if (json) {
+        *error = QStringLiteral("--csv-layout is for CSV, not --json");
+        return std::nullopt;
+    }
+    const QString name = parser.value(QStringLiteral("csv-layout"));
+    const std::optional<record::CsvLayout> layout = record::TelemetryCsv::layoutFromName(name);
+    if (!layout) {
+        *error = QStringLiteral("--csv-layout takes wide or long, not '%1'").arg(name);
+        return std::nullopt;
+    }
+    return *layout == record::CsvLayout::Long ? MonitorFormat::CsvLong : MonitorFormat::CsvWide;
 }
 
 int MonitorCommand::stream(LiveBus &bus, const Plan &plan, MonitorTable &table)

@@ -40,6 +40,8 @@ private:
         double busLimit = 0; ///< transactions/s the bus carries for this mix (BusTiming)
     };
     std::optional<Plan> parse(const ArgParser &parser, Console &console, int *status) const;
+    /// --csv, --csv-layout and --json; nullopt with `error` set when they conflict.
+    static std::optional<MonitorFormat> parseFormat(const ArgParser &parser, QString *error);
     /// Poll until a stop condition; returns the exit status.
     int stream(LiveBus &bus, const Plan &plan, MonitorTable &table);
     void report(LiveBus &bus, const Plan &plan, const MonitorTable &table, qint64 rows,
