@@ -8,6 +8,7 @@
 #include <bus/BusTiming.h>
 #include <motor/SeriesLimits.h>
 #include <system/SignalWatcher.h>
+#include <record/TelemetryColumns.h>
 
 #include <QtCore/QTimer>
 
@@ -22,6 +23,26 @@ using protocol::Command;
 namespace {
 const QStringList kPollable{"state1", "state2", "state3", "multi-turn", "single-turn", "encoder"};
 const char kDefaultWhat[] = "state2,state1,multi-turn";
+
+/// The telemetry column names (TelemetryColumns), wrapped for the help text.
+QString columnList()
+{
+    QString text = QStringLiteral("  ");
+    int lineStart = 0;
+    const QVector<record::TelemetryColumn> &columns = record::TelemetryColumns::all();
+    for (int i = 0; i < columns.size(); ++i) {
+        const QString item = QLatin1String(columns.at(i).key) +
+                             (i + 1 < columns.size() ? QStringLiteral(",") : QString());
+        if (text.size() - lineStart + item.size() + 1 > 80) {
+            text += QStringLiteral("\n  ");
+            lineStart = int(text.size()) - 2;
+        } else if (i > 0) {
+            text += QLatin1Char(' ');
+        }
+        text += item;
+    }
+    return text;
+}
 } // namespace
 
 QString MonitorCommand::summary() const
@@ -38,39 +59,47 @@ QString MonitorCommand::usage() const
 {
     return QStringLiteral(
                "Usage: lkctl monitor ID... (--port DEV [--baud N] | --sim SPEC) [--what LIST]\n"
-               "                     [--rate HZ] [--duration S] [--count N] [--json]\n"
+               "                     [--rate HZ] [--duration S] [--count N]\n"
+               "                     [--csv [--csv-layout wide|long] | --json]\n"
                "\n"
-               "Poll the drives round robin and print one row per drive and poll cycle, the\n"
-               "replies of every polled command merged, until Ctrl-C (SIGINT) or SIGTERM,\n"
-               "--duration or --count. Then the achieved rate (against the bus limit for the\n"
-               "command mix at the baud) and the bus statistics go to standard error.\n"
+               "Poll the drives round robin and print what each poll round read, until Ctrl-C\n"
+               "(SIGINT) or SIGTERM, --duration or --count. Then the achieved rate (against the\n"
+               "bus limit for the command mix at the baud) and the bus statistics go to\n"
+               "standard error.\n"
                "\n"
                "Options:\n"
-               "  --what LIST    what to poll, comma-separated from %1\n"
-               "                 (default %2)\n"
-               "  --rate HZ      poll cycles per second (default %3); 0 = as fast as the bus "
-               "allows\n"
-               "  --duration S   stop after S seconds\n"
-               "  --count N      stop after N rows\n"
-               "  --json         JSON lines instead of CSV\n"
+               "  --what LIST         what to poll, comma-separated from %1\n"
+               "                      (default %2)\n"
+               "  --rate HZ           poll rounds per second (default %3); 0 = as fast as the\n"
+               "                      bus allows\n"
+               "  --duration S        stop after S seconds\n"
+               "  --count N           stop after N rows\n"
+               "  --csv               CSV (the default)\n"
+               "  --csv-layout L      wide (default): one row per poll round, time_s then one\n"
+               "                      column id<N>_<name> per drive and signal, e.g.\n"
+               "                      id3_speed_dps; long: one row per drive and round,\n"
+               "                      time_s,id,<name>...\n"
+               "  --json              JSON lines: one object per drive and round, the long\n"
+               "                      layout's names as keys\n"
                "\n"
-               "CSV: a header, then rows; the names carry the unit (CLI.md): time_s (host "
-               "clock,\n"
-               "seconds since the bus opened), id, temperature_c, voltage_v, error_state, iq_a "
-               "or\n"
-               "power (MS), speed_dps, encoder, multi_turn_deg, single_turn_deg, ia_a, ib_a, "
-               "ic_a:\n"
-               "the columns of what is polled. A field missing from a row (a lost reply) is "
-               "empty.\n"
-               "JSON: one object per row with the same names, e.g.\n"
-               "  {\"time_s\":1.234567,\"id\":3,\"temperature_c\":31,\"iq_a\":0.16,"
-               "\"speed_dps\":360.0,\"encoder\":1234}\n"
+               "A row holds the values of one poll round only, and time_s is when that round\n"
+               "began (host clock, seconds since the bus opened). The columns of what is\n"
+               "polled follow, in this order (names carry the unit; power instead of iq_a on\n"
+               "MS):\n"
+               "%6\n"
+               "A value the round did not bring (a lost reply) is an empty cell (JSON: no key),\n"
+               "never 0. CSV.md (in /usr/share/doc/lkstudio, docs/ in the sources) describes\n"
+               "both layouts, every column and how to load the files in pandas and PlotJuggler.\n"
+               "JSON example:\n"
+               "  {\"time_s\":1.234567,\"id\":3,\"temperature_c\":31,\"iq_a\":0.1611,"
+               "\"speed_dps\":360,\"encoder\":1234}\n"
                "\n"
                "%4"
                "\n"
                "Examples:\n"
                "  lkctl monitor 3 --port /dev/ttyUSB0 > run.csv          (Ctrl-C to stop)\n"
                "  lkctl monitor 3 17 32 --port ttyUSB0 --rate 0 --duration 5 --json\n"
+               "  lkctl monitor 3 17 --port ttyUSB0 --csv-layout long --count 100\n"
                "  lkctl monitor 3 --port ttyUSB0 --what state2,state3 --count 100\n"
                "\n"
                "%5")
@@ -78,7 +107,8 @@ QString MonitorCommand::usage() const
         .arg(kDefaultRateHz)
         .arg(BusOptions::helpText(),
              exitStatusText(QStringLiteral("  An interrupt ends monitoring normally (status 0); "
-                                           "losing the bus gives 1.\n")));
+                                           "losing the bus gives 1.\n")))
+        .arg(columnList());
 }
 
 std::optional<MonitorCommand::Plan> MonitorCommand::parse(const ArgParser &parser, Console &console,
@@ -129,8 +159,33 @@ std::optional<MonitorCommand::Plan> MonitorCommand::parse(const ArgParser &parse
         if (!plan.count)
             return fail(error);
     }
-    plan.json = parser.isSet(QStringLiteral("json"));
+    const std::optional<MonitorFormat> format = parseFormat(parser, &error);
+    if (!format)
+        return fail(error);
+    plan.format = *format;
     return plan;
+}
+
+std::optional<MonitorFormat> MonitorCommand::parseFormat(const ArgParser &parser, QString *error)
+{
+    const bool json = parser.isSet(QStringLiteral("json"));
+    if (json && parser.isSet(QStringLiteral("csv"))) {
+        *error = QStringLiteral("--csv and --json exclude each other");
+        return std::nullopt;
+    }
+    if (!parser.isSet(QStringLiteral("csv-layout")))
+        return json ? MonitorFormat::Json : MonitorFormat::CsvWide;
+    if (json) {
+        *error = QStringLiteral("--csv-layout is for CSV, not --json");
+        return std::nullopt;
+    }
+    const QString name = parser.value(QStringLiteral("csv-layout"));
+    const std::optional<record::CsvLayout> layout = record::TelemetryCsv::layoutFromName(name);
+    if (!layout) {
+        *error = QStringLiteral("--csv-layout takes wide or long, not '%1'").arg(name);
+        return std::nullopt;
+    }
+    return *layout == record::CsvLayout::Long ? MonitorFormat::CsvLong : MonitorFormat::CsvWide;
 }
 
 int MonitorCommand::stream(LiveBus &bus, const Plan &plan, MonitorTable &table)
@@ -140,6 +195,7 @@ int MonitorCommand::stream(LiveBus &bus, const Plan &plan, MonitorTable &table)
     bool stop = false;
     bool lost = false;
     qint64 samples = 0;
+    qint64 rows = 0; // printed
     double firstSample = -1, lastSample = -1;
     bus::BusStatistics stats;
     QObject context; // every connection below ends with it
@@ -168,7 +224,8 @@ int MonitorCommand::stream(LiveBus &bus, const Plan &plan, MonitorTable &table)
                              lastSample = s.time;
                              for (const QByteArray &row : table.add(s)) {
                                  console.out(row);
-                                 if (plan.count && table.rowCount() >= *plan.count) {
+                                 ++rows;
+                                 if (plan.count && rows >= *plan.count) {
                                      stop = true;
                                      break;
                                  }
@@ -192,18 +249,20 @@ int MonitorCommand::stream(LiveBus &bus, const Plan &plan, MonitorTable &table)
     // Rows still being merged when a signal, the duration or a lost bus ended the run carry
     // real values: print them (with --count the count is the contract, so not then).
     if (!plan.count) {
-        for (const QByteArray &row : table.flush())
+        for (const QByteArray &row : table.flush()) {
             console.out(row);
+            ++rows;
+        }
         console.flush();
     }
     // One more statistics snapshot, so that the figures cover the whole run.
     const int before = int(stats.time * 1000);
     bus.waitUntil([&] { return lost || int(stats.time * 1000) != before; }, 2000);
-    report(bus, plan, table, samples, lastSample - firstSample, stats);
+    report(bus, plan, table, rows, samples, lastSample - firstSample, stats);
     return lost ? kExitFailure : kExitOk;
 }
 
-void MonitorCommand::report(LiveBus &bus, const Plan &plan, const MonitorTable &table,
+void MonitorCommand::report(LiveBus &bus, const Plan &plan, const MonitorTable &table, qint64 rows,
                             qint64 samples, double samplesSpanS,
                             const bus::BusStatistics &stats) const
 {
@@ -217,7 +276,7 @@ void MonitorCommand::report(LiveBus &bus, const Plan &plan, const MonitorTable &
                     .arg(plan.busLimit, 0, 'f', 0)
                     .arg(plan.baud);
     bus.error(QStringLiteral("%1 rows in %2 s, %3 Hz per drive (%4); %5 replies/s%6")
-                  .arg(table.rowCount())
+                  .arg(rows)
                   .arg(table.elapsedS(), 0, 'f', 2)
                   .arg(table.cyclesPerSecond(), 0, 'f', 1)
                   .arg(plan.rateHz > 0 ? QStringLiteral("%1 Hz asked").arg(plan.rateHz)
@@ -246,8 +305,9 @@ void MonitorCommand::report(LiveBus &bus, const Plan &plan, const MonitorTable &
 int MonitorCommand::run(const QStringList &args, Console &console)
 {
     ArgParser parser = makeParser();
-    for (const char *o : {"what", "rate", "duration", "count"})
+    for (const char *o : {"what", "rate", "duration", "count", "csv-layout"})
         parser.addOption(QLatin1String(o), true);
+    parser.addOption(QStringLiteral("csv"), false);
     int status = kExitOk;
     const std::optional<BusOptions> busOptions = parseBus(parser, args, console, &status);
     if (!busOptions)
@@ -278,7 +338,7 @@ int MonitorCommand::run(const QStringList &args, Console &console)
     }
     plan->baud = busOptions->baud;
     plan->busLimit = bus::BusTiming::transactionsPerSecond(mix, plan->baud);
-    MonitorTable table(plan->commands, series, plan->json);
+    MonitorTable table(plan->commands, series, plan->format);
     return stream(bus, *plan, table);
 }
 

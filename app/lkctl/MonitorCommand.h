@@ -1,6 +1,7 @@
 #pragma once
 
 #include "LiveCommand.h"
+#include "MonitorTable.h"
 
 #include <bus/BusStatistics.h>
 #include <protocol/Command.h>
@@ -12,11 +13,10 @@
 namespace lk::lkctl {
 
 class LiveBus;
-class MonitorTable;
 
-/// `lkctl monitor ID...`: poll drives and stream one row per drive and cycle, as CSV or JSON
-/// lines, until interrupted (SIGINT/SIGTERM), --duration or --count; then the achieved rate
-/// and the bus statistics on standard error.
+/// `lkctl monitor ID...`: poll drives and stream their values one poll round at a time, as
+/// CSV (wide or long, docs/CSV.md) or JSON lines, until interrupted (SIGINT/SIGTERM), --duration or
+/// --count; then the achieved rate and the bus statistics on standard error.
 class MonitorCommand : public LiveCommand {
 public:
     QString name() const override { return QStringLiteral("monitor"); }
@@ -34,16 +34,18 @@ private:
         double rateHz = kDefaultRateHz;
         std::optional<double> durationS;
         std::optional<qint64> count;
-        bool json = false;
+        MonitorFormat format = MonitorFormat::CsvWide;
         bool simulated = false; ///< --sim: no wire time, so no bus limit to compare with
         int baud = 0;
         double busLimit = 0; ///< transactions/s the bus carries for this mix (BusTiming)
     };
     std::optional<Plan> parse(const ArgParser &parser, Console &console, int *status) const;
+    /// --csv, --csv-layout and --json; nullopt with `error` set when they conflict.
+    static std::optional<MonitorFormat> parseFormat(const ArgParser &parser, QString *error);
     /// Poll until a stop condition; returns the exit status.
     int stream(LiveBus &bus, const Plan &plan, MonitorTable &table);
-    void report(LiveBus &bus, const Plan &plan, const MonitorTable &table, qint64 samples,
-                double samplesSpanS, const bus::BusStatistics &stats) const;
+    void report(LiveBus &bus, const Plan &plan, const MonitorTable &table, qint64 rows,
+                qint64 samples, double samplesSpanS, const bus::BusStatistics &stats) const;
 };
 
 } // namespace lk::lkctl

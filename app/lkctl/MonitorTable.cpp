@@ -3,8 +3,10 @@
 #include "OrderedJson.h"
 
 #include <motor/SeriesLimits.h>
+#include <record/CsvWriter.h>
+#include <record/TelemetryColumns.h>
 
-#include <algorithm>
+#include <cmath>
 
 namespace lk::lkctl {
 
@@ -12,65 +14,35 @@ using bus::TelemetryField;
 using bus::TelemetryFields;
 using bus::TelemetrySample;
 using protocol::Command;
+using record::TelemetryColumns;
+using record::TelemetryCsv;
 
 namespace {
 
-/// The value of one column of a merged row, as JSON/CSV text.
-QByteArray valueText(const char *column, const TelemetrySample &s)
+bool answers(std::optional<protocol::Series> series, Command command)
 {
-    const QByteArray c(column);
-    if (c == "temperature_c")
-        return QByteArray::number(s.temperatureC);
-    if (c == "voltage_v")
-        return QByteArray::number(s.voltageV, 'f', 1);
-    if (c == "error_state")
-        return QByteArray::number(s.errorState);
-    if (c == "iq_a")
-        return OrderedJson::realText(s.iqA);
-    if (c == "power")
-        return QByteArray::number(s.power);
-    if (c == "speed_dps")
-        return OrderedJson::realText(s.speedDps);
-    if (c == "encoder")
-        return QByteArray::number(s.encoder);
-    // Angles come in 0.01 deg: two places, without the binary noise of raw * 0.01.
-    if (c == "multi_turn_deg")
-        return QByteArray::number(s.multiTurnDeg, 'f', 2);
-    if (c == "single_turn_deg")
-        return QByteArray::number(s.singleTurnDeg, 'f', 2);
-    if (c == "ia_a")
-        return OrderedJson::realText(s.iaA);
-    if (c == "ib_a")
-        return OrderedJson::realText(s.ibA);
-    return OrderedJson::realText(s.icA);
+    return !series || motor::supports(*series, command);
 }
 
-void merge(TelemetrySample &into, const TelemetrySample &s)
+/// The CSV layout of the columns each drive's series gives for the polled commands.
+TelemetryCsv layoutFor(const QVector<Command> &commands,
+                       const QMap<int, std::optional<protocol::Series>> &series,
+                       MonitorFormat format)
 {
-    if (s.has(TelemetryField::Temperature))
-        into.temperatureC = s.temperatureC;
-    if (s.has(TelemetryField::IqA))
-        into.iqA = s.iqA;
-    if (s.has(TelemetryField::Power))
-        into.power = s.power;
-    if (s.has(TelemetryField::Speed))
-        into.speedDps = s.speedDps;
-    if (s.has(TelemetryField::Encoder))
-        into.encoder = s.encoder;
-    if (s.has(TelemetryField::Voltage))
-        into.voltageV = s.voltageV;
-    if (s.has(TelemetryField::ErrorState))
-        into.errorState = s.errorState;
-    if (s.has(TelemetryField::MultiTurn))
-        into.multiTurnDeg = s.multiTurnDeg;
-    if (s.has(TelemetryField::SingleTurn))
-        into.singleTurnDeg = s.singleTurnDeg;
-    if (s.has(TelemetryField::PhaseCurrents)) {
-        into.iaA = s.iaA;
-        into.ibA = s.ibA;
-        into.icA = s.icA;
+    QVector<TelemetryCsv::Cell> cells;
+    TelemetryFields all;
+    for (auto it = series.cbegin(); it != series.cend(); ++it) {
+        TelemetryFields fields;
+        for (Command c : commands) {
+            if (answers(it.value(), c))
+                fields |= MonitorTable::fieldsOf(c, it.value());
+        }
+        for (int column : TelemetryColumns::of(fields))
+            cells.append({it.key(), column});
+        all |= fields;
     }
-    into.fields |= s.fields;
+    return format == MonitorFormat::CsvWide ? TelemetryCsv::wide(cells)
+                                            : TelemetryCsv::longLayout(TelemetryColumns::of(all));
 }
 
 } // namespace
@@ -97,142 +69,88 @@ TelemetryFields MonitorTable::fieldsOf(Command command, std::optional<protocol::
 }
 
 MonitorTable::MonitorTable(const QVector<Command> &commands,
-                           const QMap<int, std::optional<protocol::Series>> &series, bool json)
-    : m_commands(commands), m_series(series), m_json(json)
+                           const QMap<int, std::optional<protocol::Series>> &series,
+                           MonitorFormat format)
+    : m_format(format), m_csv(layoutFor(commands, series, format))
 {
-    TelemetryFields all;
     for (auto it = series.cbegin(); it != series.cend(); ++it) {
-        for (Command c : commands) {
-            if (!it.value() || motor::supports(*it.value(), c))
-                all |= fieldsOf(c, it.value());
-        }
-    }
-    static const Column kColumns[] = {
-        {"temperature_c", TelemetryField::Temperature},
-        {"voltage_v", TelemetryField::Voltage},
-        {"error_state", TelemetryField::ErrorState},
-        {"iq_a", TelemetryField::IqA},
-        {"power", TelemetryField::Power},
-        {"speed_dps", TelemetryField::Speed},
-        {"encoder", TelemetryField::Encoder},
-        {"multi_turn_deg", TelemetryField::MultiTurn},
-        {"single_turn_deg", TelemetryField::SingleTurn},
-        {"ia_a", TelemetryField::PhaseCurrents},
-        {"ib_a", TelemetryField::PhaseCurrents},
-        {"ic_a", TelemetryField::PhaseCurrents},
-    };
-    for (const Column &c : kColumns) {
-        if (all.testFlag(c.field))
-            m_columns.append(c);
+        for (Command c : commands)
+            m_expected += answers(it.value(), c) ? 1 : 0;
     }
 }
 
 QByteArray MonitorTable::header() const
 {
-    if (m_json)
-        return {};
-    QByteArray h = "time_s,id";
-    for (const Column &c : m_columns)
-        h += QByteArray(",") + c.name;
-    return h + '\n';
-}
-
-bool MonitorTable::complete(int id, const Pending &p) const
-{
-    const std::optional<protocol::Series> series = m_series.value(id);
-    for (Command c : m_commands) {
-        if ((!series || motor::supports(*series, c)) && !p.seen.contains(c))
-            return false;
-    }
-    return true;
+    return m_format == MonitorFormat::Json ? QByteArray() : m_csv.header();
 }
 
 QList<QByteArray> MonitorTable::add(const TelemetrySample &sample)
 {
+    if (sample.cycle == 0 || sample.cycle <= m_lastWritten)
+        return {};
     QList<QByteArray> out;
-    Pending &p = m_pending[sample.id];
-    if (p.seen.contains(sample.source))
-        out << take(p); // a new cycle began: the last one lost a reply
-    if (p.empty) {
-        p.merged = TelemetrySample{};
-        p.merged.id = sample.id;
-        p.merged.time = sample.time;
-        p.empty = false;
+    if (m_open && sample.cycle != m_open->cycle)
+        out << take(); // a newer round began: the open one lost a reply
+    if (!m_open) {
+        m_open = Round{};
+        m_open->cycle = sample.cycle;
+        m_open->values.time = sample.cycleTime;
     }
-    merge(p.merged, sample);
-    p.seen.append(sample.source);
-    if (complete(sample.id, p))
-        out << take(p);
+    auto drive = m_open->values.drives.try_emplace(sample.id, TelemetryColumns::empty()).first;
+    TelemetryColumns::merge(drive->second, TelemetryColumns::values(sample));
+    m_open->seen.insert({sample.id, int(sample.source)});
+    if (m_open->seen.size() >= m_expected)
+        out << take();
     return out;
 }
 
 QList<QByteArray> MonitorTable::flush()
 {
+    return m_open ? take() : QList<QByteArray>{};
+}
+
+QList<QByteArray> MonitorTable::take()
+{
+    const Round round = std::move(*m_open);
+    m_open.reset();
+    m_lastWritten = round.cycle;
+    if (m_rounds++ == 0)
+        m_firstTime = round.values.time;
+    m_lastTime = round.values.time;
+    return format(round.values);
+}
+
+QList<QByteArray> MonitorTable::format(const record::CycleValues &round) const
+{
+    if (m_format != MonitorFormat::Json)
+        return m_csv.rows(round);
+    // JSON lines: the long layout's rows as objects, keys only for values the round has.
     QList<QByteArray> out;
-    for (Pending &p : m_pending) {
-        if (!p.empty)
-            out << take(p);
+    const QVector<record::TelemetryColumn> &columns = TelemetryColumns::all();
+    for (const auto &[id, values] : round.drives) {
+        OrderedJson o;
+        o.raw(QStringLiteral("time_s"),
+              record::CsvWriter::formatNumber(round.time, TelemetryCsv::kTimeDecimals))
+            .integer(QStringLiteral("id"), id);
+        for (int c = 0; c < columns.size(); ++c) {
+            if (!std::isnan(values.at(c)))
+                o.raw(QLatin1String(columns.at(c).key),
+                      record::CsvWriter::formatNumber(values.at(c), columns.at(c).decimals));
+        }
+        out << o.toJson() + '\n';
     }
     return out;
 }
 
 double MonitorTable::cyclesPerSecond() const
 {
-    double sum = 0;
-    int drives = 0;
-    for (const Span &s : m_spans) {
-        if (s.rows > 1 && s.last > s.first) {
-            sum += (s.rows - 1) / (s.last - s.first);
-            ++drives;
-        }
-    }
-    return drives > 0 ? sum / drives : 0;
+    return m_rounds > 1 && m_lastTime > m_firstTime ? (m_rounds - 1) / (m_lastTime - m_firstTime)
+                                                    : 0;
 }
 
 double MonitorTable::elapsedS() const
 {
-    double first = 0, last = 0;
-    bool any = false;
-    for (const Span &s : m_spans) {
-        first = any ? std::min(first, s.first) : s.first;
-        last = any ? std::max(last, s.last) : s.last;
-        any = true;
-    }
-    return last - first;
-}
-
-QByteArray MonitorTable::take(Pending &p)
-{
-    const QByteArray row = format(p.merged);
-    ++m_rows;
-    Span &span = m_spans[p.merged.id];
-    if (span.rows++ == 0)
-        span.first = p.merged.time;
-    span.last = p.merged.time;
-    p.seen.clear();
-    p.empty = true;
-    return row;
-}
-
-QByteArray MonitorTable::format(const TelemetrySample &row)
-{
-    const QByteArray time = QByteArray::number(row.time, 'f', 6);
-    if (m_json) {
-        OrderedJson o;
-        o.raw(QStringLiteral("time_s"), time).integer(QStringLiteral("id"), row.id);
-        for (const Column &c : m_columns) {
-            if (row.has(c.field))
-                o.raw(QLatin1String(c.name), valueText(c.name, row));
-        }
-        return o.toJson() + '\n';
-    }
-    QByteArray line = time + ',' + QByteArray::number(row.id);
-    for (const Column &c : m_columns) {
-        line += ',';
-        if (row.has(c.field))
-            line += valueText(c.name, row);
-    }
-    return line + '\n';
+    return m_lastTime - m_firstTime;
 }
 
 } // namespace lk::lkctl

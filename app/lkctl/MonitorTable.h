@@ -3,36 +3,42 @@
 #include <bus/TelemetrySample.h>
 #include <protocol/Command.h>
 #include <protocol/Series.h>
+#include <record/TelemetryCsv.h>
 
 #include <QtCore/QByteArray>
 #include <QtCore/QList>
 #include <QtCore/QMap>
+#include <QtCore/QSet>
 #include <QtCore/QVector>
 
 #include <optional>
 
 namespace lk::lkctl {
 
-/// Turns the telemetry of `lkctl monitor` into rows: one row per drive per poll cycle, the
-/// fields of every polled command merged, as CSV (with a header whose names carry the unit)
-/// or as JSON lines. A row is complete when each command polled for that drive has answered,
-/// or when one answers again (the previous cycle lost a reply: the row goes out without it).
+/// What `lkctl monitor` prints.
+enum class MonitorFormat { CsvWide, CsvLong, Json };
+
+/// Turns the telemetry of `lkctl monitor` into rows, one poll round at a time (docs/CSV.md):
+/// a row holds only values of one round, stamped with the time the round began. CSV wide:
+/// one row per round, a column per drive and signal; CSV long and JSON lines: one row per
+/// drive per round. A round is written when every poll of it has answered, or when the next
+/// round's first reply arrives (a reply of it was lost: its cells stay empty).
 class MonitorTable {
 public:
     /// `commands`: what is polled; `series`: per ID (nullopt: unknown, read as MF).
     MonitorTable(const QVector<protocol::Command> &commands,
-                 const QMap<int, std::optional<protocol::Series>> &series, bool json);
+                 const QMap<int, std::optional<protocol::Series>> &series, MonitorFormat format);
 
     /// The CSV header line (empty for JSON), newline included.
     QByteArray header() const;
-    /// Merge one sample; returns the rows it completed, newline included.
+    /// Takes one sample; returns the rows it completed, newline included. Samples that
+    /// answer no poll (cycle 0) or a round already written are ignored.
     QList<QByteArray> add(const bus::TelemetrySample &sample);
-    /// The rows still being merged (partial), at the end of monitoring.
+    /// The rows of the round still open (partial), at the end of monitoring.
     QList<QByteArray> flush();
-    int rowCount() const { return m_rows; }
-    /// Rows per second of one drive (poll cycles it completed), averaged over the drives.
+    /// Poll rounds per second (each drive is polled once a round).
     double cyclesPerSecond() const;
-    /// From the first row to the last, seconds.
+    /// From the first round written to the last, seconds.
     double elapsedS() const;
 
     /// The fields a command's reply carries, for a series.
@@ -40,30 +46,22 @@ public:
                                          std::optional<protocol::Series> series);
 
 private:
-    struct Pending {
-        bus::TelemetrySample merged;
-        QVector<protocol::Command> seen;
-        bool empty = true;
+    struct Round {
+        quint64 cycle = 0;
+        record::CycleValues values;
+        int answered = 0;           ///< polls of the round that brought a sample
+        QSet<QPair<int, int>> seen; ///< (id, command) that answered
     };
-    struct Column {
-        const char *name;
-        bus::TelemetryField field;
-    };
-    QByteArray format(const bus::TelemetrySample &row);
-    QByteArray take(Pending &p);
-    bool complete(int id, const Pending &p) const;
+    QList<QByteArray> take();
+    QList<QByteArray> format(const record::CycleValues &round) const;
 
-    QVector<protocol::Command> m_commands;
-    QMap<int, std::optional<protocol::Series>> m_series;
-    QVector<Column> m_columns;
-    struct Span {
-        int rows = 0;
-        double first = 0, last = 0;
-    };
-    QMap<int, Pending> m_pending;
-    QMap<int, Span> m_spans; ///< per ID
-    bool m_json;
-    int m_rows = 0;
+    MonitorFormat m_format;
+    record::TelemetryCsv m_csv;
+    int m_expected = 0; ///< polls per round: the commands each drive's series answers
+    std::optional<Round> m_open;
+    quint64 m_lastWritten = 0;
+    int m_rounds = 0;
+    double m_firstTime = 0, m_lastTime = 0;
 };
 
 } // namespace lk::lkctl

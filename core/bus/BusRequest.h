@@ -33,8 +33,10 @@ struct PendingRequest {
     BusRequest req;
     QByteArray bytes; ///< the encoded frame
     int attempts = 0;
-    bool noRetry = false; ///< set by emergency stop on an in-flight motion command
-    Completion done;      ///< empty: BusWorker::requestCompleted
+    bool noRetry = false;  ///< set by emergency stop on an in-flight motion command
+    Completion done;       ///< empty: BusWorker::requestCompleted
+    quint64 pollCycle = 0; ///< a poll: its round (PollScheduler::cycle()); else 0
+    double pollCycleStart = 0;
 };
 
 } // namespace lk::bus

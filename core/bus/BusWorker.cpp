@@ -318,6 +318,8 @@ std::optional<BusWorker::Pending> BusWorker::takeNext()
         p.req.origin = RequestOrigin::Poll;
         p.bytes = r->encode();
         p.done = [this](const RequestResult &res) { onPollDone(res); };
+        p.pollCycle = m_poller.cycle();
+        p.pollCycleStart = m_poller.cycleStart();
         return p;
     }
     const double due = m_poller.nextDueTime(t);
@@ -542,12 +544,12 @@ void BusWorker::completeWithReply(protocol::Reply reply)
     m_inflight.reset();
     m_matcher.clear();
     m_replyTimer.stop();
-    noteReply(reply, now());
+    noteReply(reply, now(), p);
     complete(std::move(p), RequestStatus::Ok, std::move(reply), {}, latency);
     schedulePump();
 }
 
-void BusWorker::noteReply(const protocol::Reply &reply, double time)
+void BusWorker::noteReply(const protocol::Reply &reply, double time, const Pending &request)
 {
     bool changed = m_motors.noteSeen(reply.id);
     // A model reply tells the drive's generation, whoever asked for it (a scan, lkctl info,
@@ -556,8 +558,11 @@ void BusWorker::noteReply(const protocol::Reply &reply, double time)
         changed = m_motors.learnModel(reply.id, *model, std::nullopt) || changed;
     if (changed)
         emit knownMotorsChanged(m_motors.all());
-    if (std::optional<TelemetrySample> s = TelemetrySample::fromReply(reply, time))
+    if (std::optional<TelemetrySample> s = TelemetrySample::fromReply(reply, time)) {
+        s->cycle = request.pollCycle; // which poll round it answers: rows are built per round
+        s->cycleTime = request.pollCycleStart;
         m_telemetry.add(*s);
+    }
 }
 
 void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command halt)

@@ -172,7 +172,7 @@ private:
     void abortInflight(RequestStatus status, const QString &reason);
     void failAll(RequestStatus status, const QString &reason);
     void onPollDone(const RequestResult &r);
-    void noteReply(const protocol::Reply &reply, double time);
+    void noteReply(const protocol::Reply &reply, double time, const Pending &request);
     void emitStatistics();
     void flushTraffic();
     void recordTraffic(TrafficEvent::Kind kind, const QByteArray &bytes, int id, quint8 command,

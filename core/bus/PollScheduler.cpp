@@ -51,6 +51,7 @@ void PollScheduler::setPlan(const PollPlan &plan, double now)
     }
     m_cursor = 0;
     m_cycleStart = now;
+    ++m_cycle;
 }
 
 void PollScheduler::clear()
@@ -83,6 +84,7 @@ std::optional<protocol::Request> PollScheduler::next(double now)
         if (m_cursor >= m_slots.size()) {
             m_cursor = 0;
             m_cycleStart = now;
+            ++m_cycle;
         }
         Slot &slot = m_slots[m_cursor++];
         if (!eligible(slot))

@@ -34,6 +34,11 @@ public:
     /// The poll for (id, command) ended (any status); its slot may be handed out again.
     void completed(int id, protocol::Command command);
     int outstanding() const;
+    /// The round the polls handed out by next() belong to: 1 for the first round of the
+    /// first plan, +1 for every new round and every new plan (never reused, never 0).
+    quint64 cycle() const { return m_cycle; }
+    /// When that round began (the clock next() and setPlan() are given).
+    double cycleStart() const { return m_cycleStart; }
     /// The bus limit, in transactions/s, for the plan's command mix at `baud`.
     double busLimitPerSecond(int baud) const;
 
@@ -53,6 +58,7 @@ private:
     SeriesLookup m_series;
     int m_cursor = 0;
     double m_cycleStart = 0;
+    quint64 m_cycle = 0;
 };
 
 } // namespace lk::bus

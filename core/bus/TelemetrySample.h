@@ -32,6 +32,10 @@ struct TelemetrySample {
     int id = 0;
     double time = 0; ///< seconds since the session started (steady clock, host side)
     protocol::Command source = protocol::Command::ReadState2; ///< the reply it came from
+    /// The poll round it answers (PollScheduler::cycle()), 0 when it answers no poll (an
+    /// operator's read, a command's reply). Samples of one round share `cycle`/`cycleTime`.
+    quint64 cycle = 0;
+    double cycleTime = 0; ///< when that round began, same clock as `time`
     TelemetryFields fields;
     int temperatureC = 0;
     double iqA = 0;

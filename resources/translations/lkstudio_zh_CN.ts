@@ -2368,6 +2368,26 @@
             <source>PNG images (*.png)</source>
             <translation>PNG 图像 (*.png)</translation>
         </message>
+        <message>
+            <source>Layout</source>
+            <translation>布局</translation>
+        </message>
+        <message>
+            <source>Wide: one row per poll round</source>
+            <translation>宽格式：每轮轮询一行</translation>
+        </message>
+        <message>
+            <source>time_s, then a column per drive and signal (id3_speed_dps, ...)</source>
+            <translation>先是 time_s，然后每个驱动的每个信号各一列（id3_speed_dps 等）</translation>
+        </message>
+        <message>
+            <source>Long: one row per drive and poll round</source>
+            <translation>长格式：每个驱动每轮轮询一行</translation>
+        </message>
+        <message>
+            <source>time_s, id, then a column per signal</source>
+            <translation>先是 time_s 和驱动 ID，然后每个信号各一列</translation>
+        </message>
     </context>
     <context>
         <name>lk::ui::PollRateControl</name>

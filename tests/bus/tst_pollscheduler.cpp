@@ -35,6 +35,7 @@ private slots:
     void skipsCommandsTheSeriesLacks();
     void allSkippedDoesNotSpin();
     void rateLimit();
+    void numbersRounds();
     void dropsNonReadsAndBadIds();
     void busLimitFollowsTheMix();
 };
@@ -122,6 +123,28 @@ void tst_PollScheduler::rateLimit()
     QVERIFY(r);
     s.completed(r->id, r->command);
     QCOMPARE(s.nextDueTime(0.36), 0.36); // the rest of the cycle is due now
+}
+
+void tst_PollScheduler::numbersRounds()
+{
+    // Every poll of a round has the round's number and start time; a new plan is a new round.
+    PollScheduler s;
+    s.setPlan(plan({1, 2}, {Command::ReadState2}, 10), 0.5);
+    QCOMPARE(s.cycle(), quint64(1));
+    for (double t : {0.5, 0.502}) {
+        const auto r = s.next(t);
+        QVERIFY(r);
+        QCOMPARE(s.cycle(), quint64(1));
+        QCOMPARE(s.cycleStart(), 0.5);
+        s.completed(r->id, r->command);
+    }
+    const auto r = s.next(0.6);
+    QCOMPARE(key(r), qMakePair(Command::ReadState2, 1));
+    QCOMPARE(s.cycle(), quint64(2));
+    QCOMPARE(s.cycleStart(), 0.6);
+    s.setPlan(plan({1}, {Command::ReadState1}), 0.61);
+    QCOMPARE(s.cycle(), quint64(3));
+    QCOMPARE(s.cycleStart(), 0.61);
 }
 
 void tst_PollScheduler::dropsNonReadsAndBadIds()

@@ -468,7 +468,9 @@ void tst_E2eLkctl::offStopRunAll()
 
 void tst_E2eLkctl::monitorCountsRows()
 {
-    CtlResult r = lkctl(QStringList{"monitor", "3", "17", "--count", "10", "--rate", "0"} + port());
+    CtlResult r = lkctl(
+        QStringList{"monitor", "3", "17", "--count", "10", "--rate", "0", "--csv-layout", "long"} +
+        port());
     QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
     const QList<QByteArray> lines = r.out.trimmed().split('\n');
     QCOMPARE(lines.size(), 11);

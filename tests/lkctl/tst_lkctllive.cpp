@@ -150,6 +150,11 @@ void tst_LkctlLive::argumentErrors_data()
     row("monitor rate", sim("monitor 3 --rate -1"), "--rate must be a number >= 0");
     row("monitor count", sim("monitor 3 --count 0"), "--count must be an integer in 1..");
     row("monitor duration", sim("monitor 3 --duration soon"), "--duration must be a number");
+    row("monitor layout", sim("monitor 3 --csv-layout tall"),
+        "--csv-layout takes wide or long, not 'tall'");
+    row("monitor layout json", sim("monitor 3 --json --csv-layout long"),
+        "--csv-layout is for CSV, not --json");
+    row("monitor csv json", sim("monitor 3 --json --csv"), "--csv and --json exclude each other");
 }
 
 void tst_LkctlLive::argumentErrors()
@@ -487,14 +492,31 @@ void tst_LkctlLive::offStopRun()
 
 void tst_LkctlLive::monitorCountAndJson()
 {
+    // Wide (the default): one row per poll round, a column per drive and signal.
     Result r = lkctl(sim("monitor 3 17 --count 6 --rate 0 --what state2"));
     QCOMPARE(r.exitCode, 0);
-    const QList<QByteArray> lines = r.out.trimmed().split('\n');
+    QList<QByteArray> lines = r.out.trimmed().split('\n');
+    QCOMPARE(lines.size(), 7);
+    QCOMPARE(lines.first(), QByteArray("time_s,id3_temperature_c,id3_iq_a,id3_speed_dps,"
+                                       "id3_encoder,id17_temperature_c,id17_power,"
+                                       "id17_speed_dps,id17_encoder"));
+    for (int i = 1; i < lines.size(); ++i)
+        QCOMPARE(lines.at(i).count(','), 8);
+    QVERIFY2(r.err.contains("6 rows in") && r.err.contains("bus: requests"), r.err.constData());
+
+    // Long: one row per drive and round; both drives' rows of a round share its time.
+    r = lkctl(sim("monitor 3 17 --count 6 --rate 0 --what state2 --csv-layout long"));
+    QCOMPARE(r.exitCode, 0);
+    lines = r.out.trimmed().split('\n');
     QCOMPARE(lines.size(), 7);
     QCOMPARE(lines.first(), QByteArray("time_s,id,temperature_c,iq_a,power,speed_dps,encoder"));
-    for (int i = 1; i < lines.size(); ++i)
-        QCOMPARE(lines.at(i).count(','), 6);
-    QVERIFY2(r.err.contains("6 rows in") && r.err.contains("bus: requests"), r.err.constData());
+    for (int i = 1; i < lines.size(); i += 2) {
+        const QList<QByteArray> drive3 = lines.at(i).split(',');
+        const QList<QByteArray> drive17 = lines.at(i + 1).split(',');
+        QCOMPARE(drive3.at(1), QByteArray("3"));
+        QCOMPARE(drive17.at(1), QByteArray("17"));
+        QCOMPARE(drive17.at(0), drive3.at(0));
+    }
 
     r = lkctl(sim("monitor 32 --count 2 --json --what multi-turn,state1"));
     QCOMPARE(r.exitCode, 0);
@@ -507,7 +529,7 @@ void tst_LkctlLive::monitorCountAndJson()
     // only the header and a clean end are checked.
     r = lkctl(sim("monitor 3 --duration 0.3 --rate 20"));
     QCOMPARE(r.exitCode, 0);
-    QVERIFY2(r.out.startsWith("time_s,id,"), r.out.constData());
+    QVERIFY2(r.out.startsWith("time_s,id3_temperature_c,"), r.out.constData());
     QVERIFY2(r.err.contains("rows in"), r.err.constData());
 }
 

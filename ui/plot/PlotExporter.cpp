@@ -1,43 +1,156 @@
 #include "PlotExporter.h"
 
 #include <record/CsvWriter.h>
+#include <record/TelemetryColumns.h>
 
 #include <QtCore/QSaveFile>
 #include <QtGui/QImageWriter>
 #include <QtGui/QPixmap>
 #include <QtWidgets/QWidget>
 
+#include <algorithm>
+
 namespace lk::ui {
+
+using lk::record::CycleValues;
+using lk::record::TelemetryColumns;
+using lk::record::TelemetryCsv;
+
+namespace {
+
+const char *columnKey(const PlotTrace &trace)
+{
+    switch (trace.channel) {
+    case TelemetryChannel::Torque:
+        return trace.power ? "power" : "iq_a";
+    case TelemetryChannel::Speed:
+        return "speed_dps";
+    case TelemetryChannel::Encoder:
+        return "encoder";
+    case TelemetryChannel::MultiTurn:
+        return "multi_turn_deg";
+    case TelemetryChannel::SingleTurn:
+        return "single_turn_deg";
+    case TelemetryChannel::Temperature:
+        return "temperature_c";
+    case TelemetryChannel::Voltage:
+        return "voltage_v";
+    case TelemetryChannel::PhaseA:
+        return "ia_a";
+    case TelemetryChannel::PhaseB:
+        return "ib_a";
+    case TelemetryChannel::PhaseC:
+        return "ic_a";
+    }
+    return "";
+}
+
+/// The row a point goes to: its poll round (the round's time and number), or, for a point
+/// that answered no poll, its own time with round 0.
+struct RowKey {
+    double time;
+    quint64 cycle;
+    bool operator<(const RowKey &o) const
+    {
+        return time < o.time || (time == o.time && cycle < o.cycle);
+    }
+    bool operator==(const RowKey &o) const { return time == o.time && cycle == o.cycle; }
+};
+
+struct KeyedPoint {
+    RowKey key;
+    double value;
+};
+
+/// A trace's points in `span`, each with the row it belongs to, in row order.
+QVector<KeyedPoint> keyedPoints(const TelemetryStore &store, const PlotTrace &trace, TimeSpan span)
+{
+    QVector<KeyedPoint> points;
+    const SampleRing *ring = store.ring(trace.driveId, trace.channel);
+    if (!ring) {
+        return points;
+    }
+    const qsizetype begin = ring->lowerBound(span.begin);
+    const qsizetype end = ring->upperBound(span.end);
+    points.reserve(std::max<qsizetype>(0, end - begin));
+    ring->forEachSpan(begin, end, [&](const double *t, const double *v, qsizetype n) {
+        for (qsizetype i = 0; i < n; ++i) {
+            const auto round = store.pollCycles().find(trace.driveId, t[i]);
+            points.append({round ? RowKey{round->time, round->cycle} : RowKey{t[i], 0}, v[i]});
+        }
+    });
+    // A round's time precedes its replies, so an operator's read between two polls can sort
+    // after the next poll's point: mostly ordered already, a stable sort keeps the later of
+    // two points of one round last (it wins the cell, as in lkctl monitor).
+    std::stable_sort(points.begin(), points.end(),
+                     [](const KeyedPoint &a, const KeyedPoint &b) { return a.key < b.key; });
+    return points;
+}
+
+TelemetryCsv layoutFor(const QVector<PlotTrace> &traces, lk::record::CsvLayout layout)
+{
+    QVector<TelemetryCsv::Cell> cells;
+    QVector<int> columns;
+    for (const PlotTrace &trace : traces) {
+        cells.append({trace.driveId, PlotExporter::columnOf(trace)});
+        columns.append(PlotExporter::columnOf(trace));
+    }
+    return layout == lk::record::CsvLayout::Wide ? TelemetryCsv::wide(cells)
+                                                 : TelemetryCsv::longLayout(columns);
+}
+
+} // namespace
+
+int PlotExporter::columnOf(const PlotTrace &trace)
+{
+    const std::optional<int> column = TelemetryColumns::indexOf(QLatin1String(columnKey(trace)));
+    Q_ASSERT(column);
+    return column.value_or(0);
+}
 
 QString PlotExporter::columnName(const PlotTrace &trace)
 {
-    return QStringLiteral("id%1_%2").arg(trace.driveId).arg(channelKey(trace.channel, trace.power));
+    return TelemetryCsv::wideName(trace.driveId, columnOf(trace));
 }
 
 QString PlotExporter::exportCsv(const TelemetryStore &store, const QVector<PlotTrace> &traces,
-                                TimeSpan span, const QString &path)
+                                TimeSpan span, const QString &path, lk::record::CsvLayout layout)
 {
-    QVector<lk::record::CsvSeries> columns;
-    columns.reserve(traces.size());
-    for (const PlotTrace &trace : traces) {
-        lk::record::CsvSeries column;
-        column.name = columnName(trace);
-        column.decimals = channelDecimals(trace.channel, trace.power);
-        if (const SampleRing *ring = store.ring(trace.driveId, trace.channel)) {
-            const qsizetype begin = ring->lowerBound(span.begin);
-            const qsizetype end = ring->upperBound(span.end);
-            column.times.reserve(std::max<qsizetype>(0, end - begin));
-            column.values.reserve(std::max<qsizetype>(0, end - begin));
-            ring->forEachSpan(begin, end, [&](const double *t, const double *v, qsizetype n) {
-                for (qsizetype i = 0; i < n; ++i) {
-                    column.times.append(t[i]);
-                    column.values.append(v[i]);
-                }
-            });
-        }
-        columns.append(std::move(column));
+    const TelemetryCsv csv = layoutFor(traces, layout);
+    lk::record::CsvWriter writer(path);
+    if (QString error = writer.begin(csv.header()); !error.isEmpty()) {
+        return error;
     }
-    return lk::record::CsvWriter::writeAligned(path, columns);
+    QVector<QVector<KeyedPoint>> points;
+    for (const PlotTrace &trace : traces) {
+        points.append(keyedPoints(store, trace, span));
+    }
+    QVector<qsizetype> cursor(points.size(), 0);
+    for (;;) {
+        // k-way merge: the next row is the smallest key any trace has not written yet.
+        std::optional<RowKey> next;
+        for (qsizetype i = 0; i < points.size(); ++i) {
+            if (cursor[i] < points[i].size() && (!next || points[i][cursor[i]].key < *next)) {
+                next = points[i][cursor[i]].key;
+            }
+        }
+        if (!next) {
+            break;
+        }
+        CycleValues row;
+        row.time = next->time;
+        for (qsizetype i = 0; i < points.size(); ++i) {
+            const PlotTrace &trace = traces.at(i);
+            for (; cursor[i] < points[i].size() && points[i][cursor[i]].key == *next; ++cursor[i]) {
+                auto drive = row.drives.try_emplace(trace.driveId, TelemetryColumns::empty());
+                drive.first->second[columnOf(trace)] = points[i][cursor[i]].value;
+            }
+        }
+        for (const QByteArray &line : csv.rows(row)) {
+            writer.write(line);
+        }
+    }
+    return writer.finish();
 }
 
 QString PlotExporter::exportPng(QWidget *widget, const QString &path)

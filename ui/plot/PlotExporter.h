@@ -3,8 +3,12 @@
 #include "PlotTrace.h"
 #include "TelemetryStore.h"
 
+#include <record/TelemetryCsv.h>
+
 #include <QtCore/QCoreApplication>
 #include <QtCore/QString>
+
+#include <optional>
 
 class QWidget;
 
@@ -14,16 +18,21 @@ namespace lk::ui {
 class PlotExporter {
     Q_DECLARE_TR_FUNCTIONS(lk::ui::PlotExporter)
 public:
-    /// CSV of `traces` between `span.begin` and `span.end` (inclusive), every recorded
-    /// point (not the decimated ones): `time_s` then one column per trace named
-    /// "id<drive>_<key>" (e.g. id3_iq_a), one row per distinct timestamp (see
-    /// lk::record::CsvWriter::writeAligned). Returns an error text, empty on success.
+    /// CSV of `traces` between `span.begin` and `span.end` (inclusive), every recorded point
+    /// (not the decimated ones), in the schema of docs/CSV.md shared with `lkctl monitor`:
+    /// wide (time_s, then "id<drive>_<column>" per trace, e.g. id3_iq_a) or long (time_s, id,
+    /// then the traces' columns). One row per poll round (per drive and round in the long
+    /// layout) stamped with the round's time; a point that answered no poll (an operator's
+    /// read, a command's reply) gets a row of its own at its own time. Returns an error text,
+    /// empty on success.
     static QString exportCsv(const TelemetryStore &store, const QVector<PlotTrace> &traces,
-                             TimeSpan span, const QString &path);
+                             TimeSpan span, const QString &path, lk::record::CsvLayout layout);
     /// The widget as it looks now, as PNG. Returns an error text, empty on success.
     static QString exportPng(QWidget *widget, const QString &path);
-    /// Header name of a trace's column.
+    /// Header name of a trace's column in the wide layout ("id3_speed_dps").
     static QString columnName(const PlotTrace &trace);
+    /// The TelemetryColumns index a trace is written as.
+    static int columnOf(const PlotTrace &trace);
 };
 
 } // namespace lk::ui

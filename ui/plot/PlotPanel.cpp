@@ -10,6 +10,7 @@
 #include <QtCore/QDateTime>
 #include <QtCore/QEvent>
 #include <QtCore/QSignalBlocker>
+#include <QtGui/QActionGroup>
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QLabel>
@@ -111,14 +112,9 @@ QToolBar *PlotPanel::buildToolbar()
     connect(m_autoscaleAction, &QAction::toggled, this, &PlotPanel::setAutoscale);
     bar->addSeparator();
 
-    auto *csvMenu = new QMenu(bar);
-    connect(csvMenu->addAction(tr("Visible range…")), &QAction::triggered, this,
-            [this] { askExportCsv(ExportScope::VisibleRange); });
-    connect(csvMenu->addAction(tr("Everything recorded…")), &QAction::triggered, this,
-            [this] { askExportCsv(ExportScope::Everything); });
     auto *csvButton = new QToolButton(bar);
     csvButton->setText(tr("Export CSV"));
-    csvButton->setMenu(csvMenu);
+    csvButton->setMenu(buildCsvMenu(bar));
     csvButton->setPopupMode(QToolButton::InstantPopup);
     bar->addWidget(csvButton);
     connect(bar->addAction(tr("Export PNG…")), &QAction::triggered, this, &PlotPanel::askExportPng);
@@ -442,12 +438,43 @@ void PlotPanel::setCursorTime(std::optional<double> time)
     m_readout->showValues(*m_store, plottedTraces(), m_cursor);
 }
 
+QMenu *PlotPanel::buildCsvMenu(QWidget *parent)
+{
+    auto *menu = new QMenu(parent);
+    connect(menu->addAction(tr("Visible range…")), &QAction::triggered, this,
+            [this] { askExportCsv(ExportScope::VisibleRange); });
+    connect(menu->addAction(tr("Everything recorded…")), &QAction::triggered, this,
+            [this] { askExportCsv(ExportScope::Everything); });
+    // The two layouts of docs/CSV.md, as lkctl monitor --csv-layout offers them.
+    menu->addSection(tr("Layout"));
+    auto *group = new QActionGroup(menu);
+    const auto addLayout = [&](const QString &text, const QString &tip, CsvLayout layout) {
+        QAction *a = menu->addAction(text);
+        a->setToolTip(tip);
+        a->setCheckable(true);
+        a->setChecked(layout == m_csvLayout);
+        a->setActionGroup(group);
+        connect(a, &QAction::toggled, this, [this, layout](bool on) {
+            if (on) {
+                m_csvLayout = layout;
+            }
+        });
+    };
+    addLayout(tr("Wide: one row per poll round"),
+              tr("time_s, then a column per drive and signal (id3_speed_dps, ...)"),
+              CsvLayout::Wide);
+    addLayout(tr("Long: one row per drive and poll round"),
+              tr("time_s, id, then a column per signal"), CsvLayout::Long);
+    menu->setToolTipsVisible(true);
+    return menu;
+}
+
 QString PlotPanel::exportCsv(const QString &path, ExportScope scope) const
 {
     constexpr double kInf = std::numeric_limits<double>::infinity();
     const TimeSpan span =
         scope == ExportScope::VisibleRange ? visibleRange() : TimeSpan{-kInf, kInf};
-    return PlotExporter::exportCsv(*m_store, plottedTraces(), span, path);
+    return PlotExporter::exportCsv(*m_store, plottedTraces(), span, path, m_csvLayout);
 }
 
 QString PlotPanel::exportPng(const QString &path)

@@ -5,6 +5,7 @@
 #include "TimeViewport.h"
 
 #include <protocol/Series.h>
+#include <record/TelemetryCsv.h>
 
 #include <QtCore/QHash>
 #include <QtCore/QTimer>
@@ -16,6 +17,7 @@
 class QAction;
 class QCheckBox;
 class QComboBox;
+class QMenu;
 class QSplitter;
 class QToolBar;
 
@@ -74,8 +76,11 @@ public:
     TimeSpan visibleRange() const;
     /// Every plotted trace, by drive then channel (what the readout and CSV export use).
     QVector<PlotTrace> plottedTraces() const;
-    /// Writes plotted traces to CSV (see PlotExporter::exportCsv). Error text, empty if ok.
+    /// Writes plotted traces to CSV in the layout chosen in the export menu (see
+    /// PlotExporter::exportCsv). Error text, empty if ok.
     QString exportCsv(const QString &path, ExportScope scope) const;
+    using CsvLayout = lk::record::CsvLayout;
+    CsvLayout csvLayout() const { return m_csvLayout; }
     /// Writes the charts as PNG. Error text, empty if ok.
     QString exportPng(const QString &path);
 
@@ -103,6 +108,7 @@ private:
     void alignStackedCharts();
     void viewChanged();
     void setCursorTime(std::optional<double> time);
+    QMenu *buildCsvMenu(QWidget *parent);
     void askExportCsv(ExportScope scope);
     void askExportPng();
     bool isPower(int id) const;
@@ -118,6 +124,7 @@ private:
     double m_pausedLatest = 0;
     std::optional<double> m_shownLatest; // newest time the last frame followed
     bool m_autoscale = true;
+    CsvLayout m_csvLayout = CsvLayout::Wide;
     TimeViewport m_viewport;
     std::optional<double> m_cursor;
     QTimer m_redrawTimer;

@@ -28,33 +28,6 @@ Quantity channelQuantity(TelemetryChannel channel, bool power)
     return Quantity::Current;
 }
 
-QString channelKey(TelemetryChannel channel, bool power)
-{
-    switch (channel) {
-    case TelemetryChannel::Torque:
-        return power ? QStringLiteral("power_rel") : QStringLiteral("iq_a");
-    case TelemetryChannel::Speed:
-        return QStringLiteral("speed_dps");
-    case TelemetryChannel::Encoder:
-        return QStringLiteral("encoder_counts");
-    case TelemetryChannel::MultiTurn:
-        return QStringLiteral("multiturn_deg");
-    case TelemetryChannel::SingleTurn:
-        return QStringLiteral("singleturn_deg");
-    case TelemetryChannel::Temperature:
-        return QStringLiteral("temp_c");
-    case TelemetryChannel::Voltage:
-        return QStringLiteral("voltage_v");
-    case TelemetryChannel::PhaseA:
-        return QStringLiteral("ia_a");
-    case TelemetryChannel::PhaseB:
-        return QStringLiteral("ib_a");
-    case TelemetryChannel::PhaseC:
-        return QStringLiteral("ic_a");
-    }
-    return {};
-}
-
 // Free functions have no tr(): plain translate() calls with literal text, which lupdate reads.
 QString channelLabel(TelemetryChannel channel, bool power)
 {

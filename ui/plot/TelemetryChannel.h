@@ -24,8 +24,6 @@ enum class Quantity { Current, Power, Speed, Encoder, Angle, Temperature, Voltag
 
 /// The quantity of a channel; `power` says the drive reports power instead of iq (MS).
 Quantity channelQuantity(TelemetryChannel channel, bool power);
-/// CSV column key without the drive: "iq_a", "power_rel", "speed_dps", "encoder_counts", ...
-QString channelKey(TelemetryChannel channel, bool power);
 /// Translated short name for legends and readouts: "iq", "Power", "Speed", ...
 QString channelLabel(TelemetryChannel channel, bool power);
 /// Digits worth showing and exporting for the channel's resolution on the wire.

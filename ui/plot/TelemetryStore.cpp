@@ -36,6 +36,7 @@ void TelemetryStore::appendSample(const lk::bus::TelemetrySample &sample)
 {
     Drive &drive = m_drives[sample.id];
     const double t = sample.time;
+    m_cycles.add(sample);
     if (sample.has(TelemetryField::IqA) || sample.has(TelemetryField::Power)) {
         const bool power = sample.has(TelemetryField::Power);
         auto &torque = drive.rings[size_t(TelemetryChannel::Torque)];
@@ -84,6 +85,7 @@ void TelemetryStore::put(Drive &drive, TelemetryChannel channel, double time, do
 void TelemetryStore::clear()
 {
     m_drives.clear();
+    m_cycles.clear();
     ++m_revision;
     m_notify.stop();
     emit cleared();

@@ -4,6 +4,7 @@
 #include "TelemetryChannel.h"
 
 #include <bus/TelemetrySample.h>
+#include <record/PollCycleIndex.h>
 
 #include <QtCore/QObject>
 #include <QtCore/QTimer>
@@ -60,6 +61,8 @@ public:
 
     /// Changes on every append or clear: a cheap "did anything change" check.
     quint64 revision() const { return m_revision; }
+    /// The poll round of each recorded poll sample (CSV export writes a row per round).
+    const lk::record::PollCycleIndex &pollCycles() const { return m_cycles; }
     /// Samples refused because their time ran backwards (or was not finite).
     quint64 rejectedSamples() const { return m_rejected; }
 
@@ -78,6 +81,7 @@ private:
 
     qsizetype m_capacity;
     std::map<int, Drive> m_drives;
+    lk::record::PollCycleIndex m_cycles{m_capacity};
     quint64 m_revision = 0;
     quint64 m_rejected = 0;
     QTimer m_notify; // zero-time single shot: coalesces dataAppended

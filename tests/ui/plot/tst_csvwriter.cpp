@@ -1,7 +1,12 @@
 #include <record/CsvWriter.h>
+#include <record/PollCycleIndex.h>
+#include <record/TelemetryColumns.h>
+#include <record/TelemetryCsv.h>
 
 #include <QtCore/QDir>
 #include <QtCore/QFile>
+#include <QtCore/QRegularExpression>
+#include <QtCore/QSet>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QTest>
 
@@ -10,8 +15,13 @@
 
 #include <sys/resource.h>
 
-using lk::record::CsvSeries;
+using lk::bus::TelemetryField;
+using lk::bus::TelemetrySample;
 using lk::record::CsvWriter;
+using lk::record::CycleValues;
+using lk::record::PollCycleIndex;
+using lk::record::TelemetryColumns;
+using lk::record::TelemetryCsv;
 
 namespace {
 
@@ -21,6 +31,31 @@ QByteArray readAll(const QString &path)
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray("<missing>");
 }
 
+/// Writes `header` then `rows` lines of "i,i" through a CsvWriter; returns its error text.
+QString writeNumbered(const QString &path, int rows)
+{
+    CsvWriter writer(path);
+    if (QString error = writer.begin("time_s,v\n"); !error.isEmpty())
+        return error;
+    for (int i = 0; i < rows; ++i)
+        writer.write(CsvWriter::formatNumber(i * 0.001, 6) + ',' + QByteArray::number(i) + '\n');
+    return writer.finish();
+}
+
+int column(const char *key)
+{
+    return TelemetryColumns::indexOf(QLatin1String(key)).value();
+}
+
+/// One drive's values of a round: the given columns set, every other one empty.
+QVector<double> values(std::initializer_list<std::pair<const char *, double>> cells)
+{
+    QVector<double> v = TelemetryColumns::empty();
+    for (const auto &[key, value] : cells)
+        v[column(key)] = value;
+    return v;
+}
+
 } // namespace
 
 class tst_CsvWriter : public QObject {
@@ -28,10 +63,10 @@ class tst_CsvWriter : public QObject {
 private slots:
     void formatsNumbers_data();
     void formatsNumbers();
-    void quotesHeaderCells_data();
-    void quotesHeaderCells();
-    void alignsSeriesByTimestamp();
-    void writesHeaderOnlyWhenNoPoints();
+    void columnNamesFollowTheCliContract();
+    void wideLayout();
+    void longLayout();
+    void pollCycleIndexFindsRounds();
     void largeFileRoundTrips();
     void reportsUnwritablePath_data();
     void reportsUnwritablePath();
@@ -63,49 +98,83 @@ void tst_CsvWriter::formatsNumbers()
     QCOMPARE(CsvWriter::formatNumber(value, decimals), text);
 }
 
-void tst_CsvWriter::quotesHeaderCells_data()
+void tst_CsvWriter::columnNamesFollowTheCliContract()
 {
-    QTest::addColumn<QString>("field");
-    QTest::addColumn<QByteArray>("cell");
-    QTest::newRow("plain") << "id3_iq_a" << QByteArray("id3_iq_a");
-    QTest::newRow("comma") << "a,b" << QByteArray("\"a,b\"");
-    QTest::newRow("quote") << "say \"hi\"" << QByteArray("\"say \"\"hi\"\"\"");
-    QTest::newRow("newline") << "a\nb" << QByteArray("\"a\nb\"");
-    QTest::newRow("utf-8") << QStringLiteral("温度") << QStringLiteral("温度").toUtf8();
+    // snake_case with the unit as suffix, except the unitless integers of CLI.md.
+    const QSet<QString> unitless{"error_state", "power", "encoder"};
+    const QRegularExpression withUnit("^[a-z]+(_[a-z]+)*_(c|v|a|dps|deg)$");
+    QSet<QString> seen;
+    for (const auto &c : TelemetryColumns::all()) {
+        const QString key = QLatin1String(c.key);
+        QVERIFY2(unitless.contains(key) || withUnit.match(key).hasMatch(), c.key);
+        QVERIFY2(!seen.contains(key), c.key);
+        seen.insert(key);
+    }
+    QCOMPARE(TelemetryColumns::of(TelemetryField::PhaseCurrents),
+             (QVector<int>{column("ia_a"), column("ib_a"), column("ic_a")}));
 }
 
-void tst_CsvWriter::quotesHeaderCells()
+void tst_CsvWriter::wideLayout()
 {
-    QFETCH(QString, field);
-    QFETCH(QByteArray, cell);
-    QCOMPARE(CsvWriter::quoteField(field), cell);
+    const TelemetryCsv csv =
+        TelemetryCsv::wide({{3, column("iq_a")}, {3, column("speed_dps")}, {17, column("power")}});
+    QCOMPARE(csv.header(), QByteArray("time_s,id3_iq_a,id3_speed_dps,id17_power\n"));
+    CycleValues round;
+    round.time = 1.5;
+    round.drives[3] = values({{"iq_a", -0.25}, {"speed_dps", 360}, {"encoder", 7}});
+    QCOMPARE(csv.rows(round), QList<QByteArray>{"1.500000,-0.2500,360,\n"}); // 17: nothing
+    round.drives[17] = values({{"power", -300}});
+    QCOMPARE(csv.rows(round), QList<QByteArray>{"1.500000,-0.2500,360,-300\n"});
+    CycleValues unplotted; // only values of columns the file does not have: no row
+    unplotted.drives[3] = values({{"voltage_v", 24}});
+    QCOMPARE(csv.rows(unplotted), QList<QByteArray>{});
 }
 
-void tst_CsvWriter::alignsSeriesByTimestamp()
+void tst_CsvWriter::longLayout()
 {
-    QTemporaryDir dir;
-    QVERIFY(dir.isValid());
-    const QString path = dir.filePath("out.csv");
-    // Drive 3: iq and speed from the same replies (shared times); drive 4 polled in between.
-    const QVector<CsvSeries> series{
-        {"id3_iq_a", 4, {0.001, 0.003}, {0.5, -1.25}},
-        {"id3_speed_dps", 2, {0.001, 0.003}, {120, 121.5}},
-        {"id4_iq_a", 4, {0.002, 0.003, 0.004}, {2, 3, 4}},
+    const TelemetryCsv csv = TelemetryCsv::longLayout(
+        {column("speed_dps"), column("temperature_c"), column("speed_dps"), column("iq_a")});
+    QCOMPARE(csv.header(), QByteArray("time_s,id,temperature_c,iq_a,speed_dps\n"));
+    CycleValues round;
+    round.time = 0.25;
+    round.drives[17] = values({{"temperature_c", 31}});
+    round.drives[3] = values({{"iq_a", 0.0161}, {"speed_dps", -12}});
+    QCOMPARE(csv.rows(round),
+             (QList<QByteArray>{"0.250000,3,,0.0161,-12\n", "0.250000,17,31,,\n"}));
+    QCOMPARE(TelemetryCsv::layoutFromName("long"), lk::record::CsvLayout::Long);
+    QCOMPARE(TelemetryCsv::layoutFromName("wide"), lk::record::CsvLayout::Wide);
+    QVERIFY(!TelemetryCsv::layoutFromName("Wide"));
+}
+
+void tst_CsvWriter::pollCycleIndexFindsRounds()
+{
+    PollCycleIndex index(2); // at most 2 samples per polled command and drive
+    const auto sample = [](int id, lk::protocol::Command c, quint64 cycle, double t) {
+        TelemetrySample s;
+        s.id = id;
+        s.source = c;
+        s.cycle = cycle;
+        s.cycleTime = cycle * 0.1;
+        s.time = t;
+        s.fields = TelemetryField::Temperature;
+        return s;
     };
-    QCOMPARE(CsvWriter::writeAligned(path, series), QString());
-    QCOMPARE(readAll(path), QByteArray("time_s,id3_iq_a,id3_speed_dps,id4_iq_a\n"
-                                       "0.001000,0.5000,120.00,\n"
-                                       "0.002000,,,2.0000\n"
-                                       "0.003000,-1.2500,121.50,3.0000\n"
-                                       "0.004000,,,4.0000\n"));
-}
-
-void tst_CsvWriter::writesHeaderOnlyWhenNoPoints()
-{
-    QTemporaryDir dir;
-    const QString path = dir.filePath("empty.csv");
-    QCOMPARE(CsvWriter::writeAligned(path, {{"id1_speed_dps", 2, {}, {}}}), QString());
-    QCOMPARE(readAll(path), QByteArray("time_s,id1_speed_dps\n"));
+    using lk::protocol::Command;
+    index.add(sample(3, Command::ReadState2, 1, 0.101));
+    index.add(sample(3, Command::ReadState1, 1, 0.102));
+    index.add(sample(3, Command::ReadState2, 0, 0.150)); // an operator's read: no round
+    index.add(sample(3, Command::ReadState2, 2, 0.201));
+    QCOMPARE(index.find(3, 0.102)->cycle, quint64(1));
+    QCOMPARE(index.find(3, 0.102)->time, 0.1);
+    QCOMPARE(index.find(3, 0.201)->cycle, quint64(2));
+    QVERIFY(!index.find(3, 0.150));
+    QVERIFY(!index.find(4, 0.101));
+    index.add(sample(3, Command::ReadState1, 2, 0.202));
+    index.add(sample(3, Command::ReadState2, 3, 0.301)); // 5 > 2 x 2 commands: oldest goes
+    QVERIFY(!index.find(3, 0.101));
+    QCOMPARE(index.find(3, 0.301)->cycle, quint64(3));
+    index.clear();
+    QVERIFY(!index.find(3, 0.301));
 }
 
 void tst_CsvWriter::largeFileRoundTrips()
@@ -113,12 +182,7 @@ void tst_CsvWriter::largeFileRoundTrips()
     // Many buffer flushes: every row must arrive once and in order.
     QTemporaryDir dir;
     const QString path = dir.filePath("big.csv");
-    CsvSeries s{"v", 0, {}, {}};
-    for (int i = 0; i < 200000; ++i) {
-        s.times.append(i * 0.001);
-        s.values.append(i);
-    }
-    QCOMPARE(CsvWriter::writeAligned(path, {s}), QString());
+    QCOMPARE(writeNumbered(path, 200000), QString());
     const QList<QByteArray> lines = readAll(path).split('\n');
     QCOMPARE(lines.size(), 200000 + 2); // header + rows + the empty piece after the last \n
     QCOMPARE(lines.at(1), QByteArray("0.000000,0"));
@@ -135,7 +199,7 @@ void tst_CsvWriter::reportsUnwritablePath_data()
 void tst_CsvWriter::reportsUnwritablePath()
 {
     QFETCH(QString, path);
-    const QString error = CsvWriter::writeAligned(path, {{"a", 1, {1}, {2}}});
+    const QString error = writeNumbered(path, 1);
     QVERIFY2(!error.isEmpty(), "an unwritable path must be reported");
 }
 
@@ -145,9 +209,8 @@ void tst_CsvWriter::abandonedWriterLeavesNoFile()
     const QString path = dir.filePath("half.csv");
     {
         CsvWriter writer(path);
-        QCOMPARE(writer.begin({"time_s", "v"}, {6, 2}), QString());
-        const double row[] = {1, 2};
-        writer.writeRow(row, 2);
+        QCOMPARE(writer.begin("time_s,v\n"), QString());
+        writer.write("1.000000,2\n");
     } // destroyed without finish(): e.g. an exception or an early return
     QVERIFY(!QFile::exists(path));
     QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{});
@@ -163,18 +226,13 @@ void tst_CsvWriter::failedWriteKeepsOldFile()
         QVERIFY(old.open(QIODevice::WriteOnly));
         old.write("old content\n");
     }
-    CsvSeries s{"v", 0, {}, {}};
-    for (int i = 0; i < 100000; ++i) {
-        s.times.append(i);
-        s.values.append(i);
-    }
     rlimit saved{};
     QCOMPARE(getrlimit(RLIMIT_FSIZE, &saved), 0);
     rlimit small = saved;
     small.rlim_cur = 64 * 1024;
     const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN); // EFBIG instead of a signal
     QCOMPARE(setrlimit(RLIMIT_FSIZE, &small), 0);
-    const QString error = CsvWriter::writeAligned(path, {s});
+    const QString error = writeNumbered(path, 100000);
     setrlimit(RLIMIT_FSIZE, &saved);
     std::signal(SIGXFSZ, oldHandler);
     QVERIFY2(!error.isEmpty(), "a failed write must be reported");

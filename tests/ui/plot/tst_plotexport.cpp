@@ -12,6 +12,8 @@
 #include <QtCore/QTemporaryDir>
 #include <QtGui/QImage>
 #include <QtTest/QTest>
+#include <QtWidgets/QMenu>
+#include <QtWidgets/QToolButton>
 
 using lk::plottest::batch;
 using lk::plottest::sample;
@@ -37,6 +39,48 @@ QList<QStringList> readCsv(const QString &path)
     return rows;
 }
 
+/// `sample()` as a poll reply of round `round` (rounds begin every 100 ms).
+lk::bus::TelemetrySample polled(int id, int round, double offsetS, double iq)
+{
+    lk::bus::TelemetrySample s = sample(id, round * 0.1 + offsetS, iq, 10 * round, round);
+    s.cycle = quint64(round);
+    s.cycleTime = round * 0.1;
+    return s;
+}
+
+/// Two drives polled in one round each 100 ms, rounds 1..3: drive 4's reply of round 2 is
+/// lost, and an operator's read of drive 3 (no round) comes between rounds 2 and 3.
+void recordRounds(TelemetryStore &store)
+{
+    store.append({polled(3, 1, 0.002, 0.5), polled(4, 1, 0.004, -0.5)});
+    store.append({polled(3, 2, 0.002, 1.0), sample(3, 0.25, 9.0, 99, 99)});
+    store.append({polled(3, 3, 0.002, 1.5), polled(4, 3, 0.004, -1.5)});
+}
+
+/// The panel's whole CSV export ("Everything recorded") as text; "<failed>" on an error.
+QByteArray exportEverything(const PlotPanel &panel)
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath("export.csv");
+    if (!panel.exportCsv(path, PlotPanel::ExportScope::Everything).isEmpty())
+        return "<failed>";
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray("<failed>");
+}
+
+QAction *menuAction(PlotPanel &panel, const QString &startsWith)
+{
+    for (QToolButton *b : panel.findChildren<QToolButton *>()) {
+        if (b->menu()) {
+            for (QAction *a : b->menu()->actions()) {
+                if (a->text().startsWith(startsWith))
+                    return a;
+            }
+        }
+    }
+    return nullptr;
+}
+
 } // namespace
 
 class tst_PlotExport : public QObject {
@@ -44,6 +88,8 @@ class tst_PlotExport : public QObject {
 private slots:
     void exportCsvWritesPlottedColumns();
     void exportCsvVisibleRange();
+    void exportCsvRowPerPollRound();
+    void exportCsvLongLayoutFromTheMenu();
     void exportPngWritesImage();
     void exportReportsErrors();
 };
@@ -98,11 +144,50 @@ void tst_PlotExport::exportCsvVisibleRange()
     const QString path = dir.filePath("visible.csv");
     QCOMPARE(panel.exportCsv(path, PlotPanel::ExportScope::VisibleRange), QString());
     const QList<QStringList> rows = readCsv(path);
-    QCOMPARE(rows.first().join(','), QString("time_s,id1_iq_a,id1_speed_dps,id1_encoder_counts"));
+    QCOMPARE(rows.first().join(','), QString("time_s,id1_iq_a,id1_speed_dps,id1_encoder"));
     QCOMPARE(rows.size(), 1 + 51); // 15.0 .. 20.0 inclusive
     QCOMPARE(rows.at(1).at(0), QString("15.000000"));
     QCOMPARE(rows.last().at(0), QString("20.000000"));
     QCOMPARE(rows.last().at(3), QString::number(int(20.0 * 100) % 16384));
+}
+
+void tst_PlotExport::exportCsvRowPerPollRound()
+{
+    TelemetryStore store;
+    recordRounds(store);
+    PlotPanel panel(&store);
+    panel.setDrives({3, 4});
+    panel.setChannelVisible(TelemetryChannel::Encoder, false);
+    QCOMPARE(panel.csvLayout(), PlotPanel::CsvLayout::Wide);
+    // One row per round at the round's time, both drives in it; a lost reply is an empty
+    // cell; the operator's read has a row of its own at its own time.
+    QCOMPARE(exportEverything(panel),
+             QByteArray("time_s,id3_iq_a,id3_speed_dps,id4_iq_a,id4_speed_dps\n"
+                        "0.100000,0.5000,10,-0.5000,10\n"
+                        "0.200000,1.0000,20,,\n"
+                        "0.250000,9.0000,99,,\n"
+                        "0.300000,1.5000,30,-1.5000,30\n"));
+}
+
+void tst_PlotExport::exportCsvLongLayoutFromTheMenu()
+{
+    TelemetryStore store;
+    recordRounds(store);
+    PlotPanel panel(&store);
+    panel.setDrives({3, 4});
+    panel.setChannelVisible(TelemetryChannel::Encoder, false);
+    QAction *longLayout = menuAction(panel, "Long");
+    QVERIFY(longLayout && longLayout->isCheckable() && !longLayout->isChecked());
+    longLayout->trigger();
+    QCOMPARE(panel.csvLayout(), PlotPanel::CsvLayout::Long);
+    QVERIFY(!menuAction(panel, "Wide")->isChecked());
+    QCOMPARE(exportEverything(panel), QByteArray("time_s,id,iq_a,speed_dps\n"
+                                                 "0.100000,3,0.5000,10\n"
+                                                 "0.100000,4,-0.5000,10\n"
+                                                 "0.200000,3,1.0000,20\n"
+                                                 "0.250000,3,9.0000,99\n"
+                                                 "0.300000,3,1.5000,30\n"
+                                                 "0.300000,4,-1.5000,30\n"));
 }
 
 void tst_PlotExport::exportPngWritesImage()
