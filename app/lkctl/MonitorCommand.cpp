@@ -7,8 +7,8 @@
 
 #include <bus/BusTiming.h>
 #include <motor/SeriesLimits.h>
-#include <system/SignalWatcher.h>
 #include <record/TelemetryColumns.h>
+#include <system/SignalWatcher.h>
 
 #include <QtCore/QTimer>
 
