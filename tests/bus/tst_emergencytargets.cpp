@@ -54,8 +54,8 @@ void tst_EmergencyTargets::targetsAlwaysCoverEveryId_data()
     QTest::newRow("known only") << QVector<int>{} << QList<int>{17, 3} << QVector<int>{3, 17};
     QTest::newRow("commanded, not known (scan cleared the registry)")
         << QVector<int>{4, 2, 3} << QList<int>{1} << QVector<int>{1, 2, 3, 4};
-    QTest::newRow("duplicates and invalid IDs") << QVector<int>{0, 5, 33, 5, -1}
-                                                << QList<int>{5, 32} << QVector<int>{5, 32};
+    QTest::newRow("duplicates and invalid IDs")
+        << QVector<int>{0, 5, 33, 5, -1} << QList<int>{5, 32} << QVector<int>{5, 32};
 }
 
 void tst_EmergencyTargets::targetsAlwaysCoverEveryId()
@@ -134,9 +134,8 @@ void tst_EmergencyTargets::stopDuringScanReachesEveryDrive()
     QVERIFY(scanned.at(0).at(0).value<ScanSummary>().cancelled);
 
     const auto written = rig.writtenRequests();
-    const auto firstOff = std::find_if(written.cbegin(), written.cend(), [](const auto &w) {
-        return w.first == Command::MotorOff;
-    });
+    const auto firstOff = std::find_if(written.cbegin(), written.cend(),
+                                       [](const auto &w) { return w.first == Command::MotorOff; });
     QVERIFY(firstOff != written.cend());
     QSet<int> offs;
     for (auto it = firstOff; it != written.cend(); ++it) {
