@@ -17,8 +17,8 @@ bool SampleGaps::noteSample(double previous, double time)
         m_usual = decayed; // an outage says nothing about the cadence
     } else if (late) {
         // Either the drive was silent or the poll rate went down: in the second case the
-        // next intervals are this long too, and must not all be cut.
-        m_usual = std::max(decayed, dt / kGapFactor);
+        // next intervals are this long too, and must not all be cut (hence the headroom).
+        m_usual = std::max(decayed, 2 * dt / kGapFactor);
     } else {
         m_usual = std::max(decayed, dt);
         m_haveInterval = true;
