@@ -50,6 +50,12 @@ private:
     {
         return m_window->banner()->entryText(ui::EmergencyStopControl::entryKey());
     }
+    /// Stop polling (the cancelled scan restarts it) and let the last replies pass.
+    void quietBus()
+    {
+        m_window->controller()->session()->stopPolling();
+        QTest::qWait(300);
+    }
     /// Frames lksim received from the `mark`-th on, kept across reads.
     QList<QByteArray> framesSince(qsizetype mark);
     /// Which drives lksim last told to turn (speed) and never since to switch off.
@@ -124,8 +130,9 @@ void tst_E2eEstop::escapeRacingAScanStopsEveryDrive_data()
 void tst_E2eEstop::escapeRacingAScanStopsEveryDrive()
 {
     QFETCH(int, delayMs);
-    const qsizetype mark = framesSince(0).size();
     bus::BusSession *session = m_window->controller()->session();
+    quietBus(); // lksim's frame log can be read only while the bus is quiet
+    const qsizetype mark = framesSince(0).size();
     for (int id : kDrives) // as the Control view would, for each drive
         session->send(*protocol::build::speed(id, 360).request);
     QTRY_COMPARE_WITH_TIMEOUT(stillCommanded(framesSince(mark)), kDrives, kWaitMs);
@@ -139,6 +146,7 @@ void tst_E2eEstop::escapeRacingAScanStopsEveryDrive()
     QTest::keyClick(m_window->views(), Qt::Key_Escape);
     QTRY_COMPARE_WITH_TIMEOUT(reports.count(), 1, kWaitMs);
     QTRY_COMPARE_WITH_TIMEOUT(scans.count(), 1, kWaitMs);
+    quietBus();
 
     // On lksim: every drive's last word was motor_off, none is left turning.
     const QVector<int> turning = stillCommanded(framesSince(mark));
