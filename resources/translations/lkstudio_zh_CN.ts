@@ -437,6 +437,13 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::BannerEntry</name>
+    <message>
+        <source>Hide this message</source>
+        <translation>隐藏此消息</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::BusController</name>
     <message>
         <source>Reconnected: %1</source>
@@ -475,26 +482,6 @@
         <translation>驱动以不同的波特率应答（%1）。串口保持 %2 波特；同一总线上的所有驱动应使用相同的波特率。</translation>
     </message>
     <message>
-        <source>Emergency stop: Motor Off sent to IDs 1-32; no drive answered.</source>
-        <translation>急停：已向 ID 1-32 发送电机关闭命令；没有驱动应答。</translation>
-    </message>
-    <message>
-        <source>Emergency stop: Motor Off sent to IDs 1-32; acknowledged by %1.</source>
-        <translation>急停：已向 ID 1-32 发送电机关闭命令；%1 已确认。</translation>
-    </message>
-    <message>
-        <source>Emergency stop: Motor Off acknowledged by drive(s) %1.</source>
-        <translation>急停：驱动 %1 已确认电机关闭命令。</translation>
-    </message>
-    <message>
-        <source>Emergency stop: Motor Off sent, but no drive acknowledged it (IDs %1). Check the drives and cut their power if needed.</source>
-        <translation>急停：电机关闭命令已发送，但没有驱动确认（ID %1）。请检查这些驱动，必要时切断电源。</translation>
-    </message>
-    <message>
-        <source>Emergency stop: acknowledged by %1; NO answer from %2. Check those drives and cut their power if needed.</source>
-        <translation>急停：%1 已确认；%2 无应答。请检查这些驱动，必要时切断电源。</translation>
-    </message>
-    <message>
         <source>Drive %1 did not confirm Clear Errors (%2).</source>
         <translation>驱动 %1 未确认清除错误标志（%2）。</translation>
     </message>
@@ -505,6 +492,45 @@
     <message>
         <source>Drive %1: errors cleared.</source>
         <translation>驱动 %1：错误标志已清除。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::CommandedMotion</name>
+    <message>
+        <source>speed %1 dps</source>
+        <translation>速度 %1 dps</translation>
+    </message>
+    <message>
+        <source>torque %1 A</source>
+        <translation>转矩 %1 A</translation>
+    </message>
+    <message>
+        <source>open-loop power %1</source>
+        <translation>开环功率 %1</translation>
+    </message>
+    <message>
+        <source>position %1°</source>
+        <translation>位置 %1°</translation>
+    </message>
+    <message>
+        <source>single-turn position %1°</source>
+        <translation>单圈位置 %1°</translation>
+    </message>
+    <message>
+        <source>move by %1°</source>
+        <translation>增量移动 %1°</translation>
+    </message>
+    <message>
+        <source>Motor Run</source>
+        <translation>电机运行</translation>
+    </message>
+    <message>
+        <source>Drive %1</source>
+        <translation>驱动 %1</translation>
+    </message>
+    <message>
+        <source>Drive %1 (%2 at %3)</source>
+        <translation>驱动 %1（%3 时 %2）</translation>
     </message>
 </context>
 <context>
@@ -766,14 +792,6 @@
     <message>
         <source>, power %1</source>
         <translation>，功率 %1</translation>
-    </message>
-    <message>
-        <source>Stopped by Esc (emergency stop).</source>
-        <translation>已被 Esc 停止（急停）。</translation>
-    </message>
-    <message>
-        <source>Emergency stop sent (Esc).</source>
-        <translation>已发送急停 (Esc)。</translation>
     </message>
 </context>
 <context>
@@ -1269,6 +1287,41 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::EmergencyStopControl</name>
+    <message>
+        <source>Emergency stop.</source>
+        <translation>急停。</translation>
+    </message>
+    <message>
+        <source>Emergency stop: NOTHING could be sent, the bus is not connected. lkstudio has not commanded any drive to move.</source>
+        <translation>急停：总线未连接，任何命令都无法发送。lkstudio 没有命令任何驱动运动。</translation>
+    </message>
+    <message>
+        <source>Emergency stop: NOTHING could be sent, the bus is not connected. Last commanded to move: %1. They may still be moving: cut their power if needed.</source>
+        <translation>急停：总线未连接，任何命令都无法发送。最后被命令运动的：%1。它们可能仍在运动：必要时请切断其电源。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Emergency stop: Motor Off sent to %n ID(s); no drive answered.</source>
+        <translation>
+            <numerusform>急停：已向 %n 个 ID 发送电机关闭命令；没有驱动应答。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Emergency stop: Motor Off sent to %n ID(s); acknowledged by drive(s) %1.</source>
+        <translation>
+            <numerusform>急停：已向 %n 个 ID 发送电机关闭命令；驱动 %1 已确认。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 of %2 could not be sent: the link dropped.</source>
+        <translation>%2 个中有 %1 个无法发送：链路已断开。</translation>
+    </message>
+    <message>
+        <source>NO answer from drive(s) %1: check them and cut their power if needed.</source>
+        <translation>驱动 %1 无应答：请检查这些驱动，必要时切断其电源。</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::EncoderLiveBox</name>
     <message>
         <source>Live (read while this view is shown)</source>
@@ -1652,6 +1705,13 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::LinkLossWatch</name>
+    <message>
+        <source>&lt;b&gt;Drive %1 may still be moving&lt;/b&gt;: last command %2 at %3; it stops by itself only if its input-timeout protection is set.</source>
+        <translation>&lt;b&gt;驱动 %1 可能仍在运动&lt;/b&gt;：最后的命令是 %3 时的 %2；只有设置了输入超时保护，它才会自行停止。</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::LoopPlot</name>
     <message>
         <source>Angle loop: multi-turn angle</source>
@@ -1780,21 +1840,9 @@
         <source>&lt;b&gt;LK Servo Studio %1&lt;/b&gt;&lt;p&gt;Tuning and diagnostics for LK-TECH MS/MF/MG/MH servo drives on RS485 (protocol V2.3).&lt;/p&gt;&lt;p&gt;Esc sends Motor Off to every drive from anywhere in the program.&lt;/p&gt;</source>
         <translation>&lt;b&gt;LK Servo Studio %1&lt;/b&gt;&lt;p&gt;用于 RS485 总线上瓴控 LK-TECH MS/MF/MG/MH 伺服驱动的调参与诊断工具（协议 V2.3）。&lt;/p&gt;&lt;p&gt;在程序中任何地方按 Esc 都会向每个驱动发送电机关闭命令。&lt;/p&gt;</translation>
     </message>
-    <message>
-        <source>Emergency stop.</source>
-        <translation>急停。</translation>
-    </message>
-    <message>
-        <source>Emergency stop: Motor Off sent to every drive</source>
-        <translation>急停：已向每个驱动发送电机关闭命令</translation>
-    </message>
 </context>
 <context>
     <name>lk::ui::MessageBanner</name>
-    <message>
-        <source>Hide this message</source>
-        <translation>隐藏此消息</translation>
-    </message>
     <message>
         <source>%1 (×%2)</source>
         <translation>%1 (×%2)</translation>
