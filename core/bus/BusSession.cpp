@@ -2,6 +2,7 @@
 
 #include "BusLog.h"
 #include "BusWorker.h"
+#include "StopTargets.h"
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QMetaObject>
@@ -168,8 +169,10 @@ quint64 BusSession::emergencyStop(const QVector<int> &ids, protocol::Command hal
 {
     const quint64 ticket = m_nextTicket++;
     if (!m_worker) {
+        // Nothing can be sent: every ID the stop would have reached stays unacknowledged.
+        const QVector<int> silent = StopTargets::of(ids, m_motors.keys()).all();
         QMetaObject::invokeMethod(
-            this, [this, ticket, ids] { emit emergencyStopFinished(ticket, {}, ids); },
+            this, [this, ticket, silent] { emit emergencyStopFinished(ticket, {}, silent); },
             Qt::QueuedConnection);
         return ticket;
     }

@@ -62,9 +62,11 @@ public:
     /// session completes it as Disconnected.
     quint64 send(const protocol::Request &request, Priority priority = Priority::Operator,
                  int retries = -1);
-    /// Motor off to every ID in `ids` plus every known ID (all of 1..32 when none is known),
-    /// ahead of everything queued; queued motion commands are cancelled. Each motor_off ends
-    /// with a requestCompleted carrying the returned ticket, then emergencyStopFinished.
+    /// Motor off to every ID in `ids` and every known ID first, then to every other ID of
+    /// 1..32, ahead of everything queued; a running scan and queued motion commands are
+    /// cancelled first. Each motor_off ends with a requestCompleted carrying the returned
+    /// ticket (status Disconnected when it could not be sent), then emergencyStopFinished.
+    /// A closed session sends nothing and reports every ID silent.
     /// `halt` MotorStop sends motor_stop the same way (the drives keep their commands).
     quint64 emergencyStop(const QVector<int> &ids = {},
                           protocol::Command halt = protocol::Command::MotorOff);

@@ -569,6 +569,10 @@ void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command h
 {
     if (halt != Command::MotorStop)
         halt = Command::MotorOff; // nothing else may ride in this lane
+    // A running scan would go on probing (and a baud sweep reopening the port) behind the
+    // stop: it ends here, in this same call, before the offs are queued.
+    if (isScanning())
+        cancelScan();
     auto stop = std::make_shared<EmergencyStop>(ticket, m_motors.emergencyTargets(ids),
                                                 m_config.emergencyRetries, halt);
     QVector<BusRequest> offs = stop->requests();

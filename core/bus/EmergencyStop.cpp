@@ -4,23 +4,25 @@
 
 namespace lk::bus {
 
-EmergencyStop::EmergencyStop(quint64 ticket, QVector<int> targets, int retries,
+EmergencyStop::EmergencyStop(quint64 ticket, StopTargets targets, int retries,
                              protocol::Command halt)
     : m_ticket(ticket), m_halt(halt), m_targets(std::move(targets)),
-      m_retries(std::max(0, retries)), m_remaining(m_targets.size())
+      m_retries(std::max(0, retries)), m_remaining(m_targets.all().size())
 {
 }
 
 QVector<BusRequest> EmergencyStop::requests() const
 {
     QVector<BusRequest> out;
-    for (int id : m_targets) {
+    // With nothing known (lkctl, before any scan) every ID may be a drive: all are retried.
+    const bool retryAll = m_targets.first.isEmpty();
+    for (int id : m_targets.all()) {
         BusRequest r;
         r.ticket = m_ticket;
         r.request.command = m_halt;
         r.request.id = static_cast<quint8>(id);
         r.priority = Priority::Emergency;
-        r.retries = m_retries;
+        r.retries = retryAll || m_targets.first.contains(id) ? m_retries : 0;
         r.origin = RequestOrigin::Emergency;
         out.append(r);
     }

@@ -30,21 +30,9 @@ protocol::DecodeContext MotorRegistry::decodeContext(int id) const
     return c;
 }
 
-QVector<int> MotorRegistry::emergencyTargets(const QVector<int> &ids) const
+StopTargets MotorRegistry::emergencyTargets(const QVector<int> &ids) const
 {
-    QVector<int> targets;
-    for (int id : ids) {
-        if (validId(id))
-            targets.append(id);
-    }
-    targets.append(m_motors.keys().toVector());
-    if (targets.isEmpty()) {
-        for (int id = protocol::kMinId; id <= protocol::kMaxId; ++id)
-            targets.append(id);
-    }
-    std::sort(targets.begin(), targets.end());
-    targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
-    return targets;
+    return StopTargets::of(ids, m_motors.keys());
 }
 
 bool MotorRegistry::noteSeen(int id)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "KnownMotor.h"
+#include "StopTargets.h"
 
 #include <protocol/Series.h>
 
@@ -20,9 +21,9 @@ public:
     /// Series and generation for the decoder; unknown IDs decode as MF (iq), V2.3.
     protocol::DecodeContext decodeContext(int id) const;
 
-    /// Who an emergency stop must reach: `ids` (valid ones) plus every known ID, ascending;
-    /// every ID 1..32 when that is empty, because reaching all beats reaching none.
-    QVector<int> emergencyTargets(const QVector<int> &ids) const;
+    /// Who an emergency stop must reach: `ids` (the caller's known and recently commanded
+    /// drives) and every known ID first, then every other ID of 1..32: always all 32.
+    StopTargets emergencyTargets(const QVector<int> &ids) const;
 
     bool noteSeen(int id);
     bool setSeries(int id, protocol::Series series);

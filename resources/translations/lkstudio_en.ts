@@ -42,6 +42,23 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::EmergencyStopControl</name>
+    <message numerus="yes">
+        <source>Emergency stop: Motor Off sent to %n ID(s); no drive answered.</source>
+        <translation>
+            <numerusform>Emergency stop: Motor Off sent to %n ID; no drive answered.</numerusform>
+            <numerusform>Emergency stop: Motor Off sent to %n IDs; no drive answered.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Emergency stop: Motor Off sent to %n ID(s); acknowledged by drive(s) %1.</source>
+        <translation>
+            <numerusform>Emergency stop: Motor Off sent to %n ID; acknowledged by drive(s) %1.</numerusform>
+            <numerusform>Emergency stop: Motor Off sent to %n IDs; acknowledged by drive(s) %1.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::OverviewPanel</name>
     <message numerus="yes">
         <source>%n drive(s) on the bus</source>

@@ -3402,4 +3402,92 @@
             <translation>您的设置文件 %1 已损坏；以下值未被使用：%2。</translation>
         </message>
     </context>
+    <context>
+        <name>lk::ui::BannerEntry</name>
+        <message>
+            <source>Hide this message</source>
+            <translation>隐藏此消息</translation>
+        </message>
+    </context>
+    <context>
+        <name>lk::ui::CommandedMotion</name>
+        <message>
+            <source>speed %1 dps</source>
+            <translation>速度 %1 dps</translation>
+        </message>
+        <message>
+            <source>torque %1 A</source>
+            <translation>转矩 %1 A</translation>
+        </message>
+        <message>
+            <source>open-loop power %1</source>
+            <translation>开环功率 %1</translation>
+        </message>
+        <message>
+            <source>position %1°</source>
+            <translation>位置 %1°</translation>
+        </message>
+        <message>
+            <source>single-turn position %1°</source>
+            <translation>单圈位置 %1°</translation>
+        </message>
+        <message>
+            <source>move by %1°</source>
+            <translation>增量移动 %1°</translation>
+        </message>
+        <message>
+            <source>Motor Run</source>
+            <translation>电机运行</translation>
+        </message>
+        <message>
+            <source>Drive %1</source>
+            <translation>驱动 %1</translation>
+        </message>
+        <message>
+            <source>Drive %1 (%2 at %3)</source>
+            <translation>驱动 %1（%3 时 %2）</translation>
+        </message>
+    </context>
+    <context>
+        <name>lk::ui::EmergencyStopControl</name>
+        <message>
+            <source>Emergency stop.</source>
+            <translation>急停。</translation>
+        </message>
+        <message>
+            <source>Emergency stop: NOTHING could be sent, the bus is not connected. lkstudio has not commanded any drive to move.</source>
+            <translation>急停：总线未连接，任何命令都无法发送。lkstudio 没有命令任何驱动运动。</translation>
+        </message>
+        <message>
+            <source>Emergency stop: NOTHING could be sent, the bus is not connected. Last commanded to move: %1. They may still be moving: cut their power if needed.</source>
+            <translation>急停：总线未连接，任何命令都无法发送。最后被命令运动的：%1。它们可能仍在运动：必要时请切断其电源。</translation>
+        </message>
+        <message numerus="yes">
+            <source>Emergency stop: Motor Off sent to %n ID(s); no drive answered.</source>
+            <translation>
+                <numerusform>急停：已向 %n 个 ID 发送电机关闭命令；没有驱动应答。</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Emergency stop: Motor Off sent to %n ID(s); acknowledged by drive(s) %1.</source>
+            <translation>
+                <numerusform>急停：已向 %n 个 ID 发送电机关闭命令；驱动 %1 已确认。</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>%1 of %2 could not be sent: the link dropped.</source>
+            <translation>%2 个中有 %1 个无法发送：链路已断开。</translation>
+        </message>
+        <message>
+            <source>NO answer from drive(s) %1: check them and cut their power if needed.</source>
+            <translation>驱动 %1 无应答：请检查这些驱动，必要时切断其电源。</translation>
+        </message>
+    </context>
+    <context>
+        <name>lk::ui::LinkLossWatch</name>
+        <message>
+            <source>&lt;b&gt;Drive %1 may still be moving&lt;/b&gt;: last command %2 at %3; it stops by itself only if its input-timeout protection is set.</source>
+            <translation>&lt;b&gt;驱动 %1 可能仍在运动&lt;/b&gt;：最后的命令是 %3 时的 %2；只有设置了输入超时保护，它才会自行停止。</translation>
+        </message>
+    </context>
 </TS>

@@ -1,9 +1,5 @@
 #include "ConfirmDialog.h"
 
-#include <bus/BusSession.h>
-
-#include <QtGui/QKeyEvent>
-#include <QtWidgets/QApplication>
 #include <QtWidgets/QDialogButtonBox>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
@@ -19,18 +15,11 @@ ConfirmDialog::Policy &policySlot()
     static ConfirmDialog::Policy policy;
     return policy;
 }
-bool &forwardSlot()
-{
-    static bool forward = true;
-    return forward;
-}
 constexpr int kIconSize = 48;
 constexpr int kTextWidth = 420;
 } // namespace
 
-ConfirmDialog::ConfirmDialog(const ConfirmRequest &request, bus::BusSession *session,
-                             QWidget *parent)
-    : QDialog(parent), m_session(session)
+ConfirmDialog::ConfirmDialog(const ConfirmRequest &request, QWidget *parent) : QDialog(parent)
 {
     setObjectName(QStringLiteral("confirm_") + request.key);
     setWindowTitle(request.title);
@@ -72,34 +61,17 @@ ConfirmDialog::ConfirmDialog(const ConfirmRequest &request, bus::BusSession *ses
     layout->addWidget(buttons);
 }
 
-bool ConfirmDialog::ask(QWidget *parent, const ConfirmRequest &request, bus::BusSession *session)
+bool ConfirmDialog::ask(QWidget *parent, const ConfirmRequest &request)
 {
     if (policySlot())
         return policySlot()(request);
-    ConfirmDialog dialog(request, session, parent);
+    ConfirmDialog dialog(request, parent);
     return dialog.exec() == QDialog::Accepted;
 }
 
 void ConfirmDialog::setPolicy(Policy policy)
 {
     policySlot() = std::move(policy);
-}
-
-void ConfirmDialog::setForwardEscape(bool on)
-{
-    forwardSlot() = on;
-}
-
-bool ConfirmDialog::forwardEscape()
-{
-    return forwardSlot();
-}
-
-void ConfirmDialog::keyPressEvent(QKeyEvent *event)
-{
-    if (event->key() == Qt::Key_Escape && forwardSlot() && m_session)
-        m_session->emergencyStop();
-    QDialog::keyPressEvent(event); // Esc also rejects: nothing is written
 }
 
 } // namespace lk::ui

@@ -1,14 +1,9 @@
 #pragma once
 
-#include <QtCore/QPointer>
 #include <QtCore/QString>
 #include <QtWidgets/QDialog>
 
 #include <functional>
-
-namespace lk::bus {
-class BusSession;
-}
 
 namespace lk::ui {
 
@@ -22,30 +17,21 @@ struct ConfirmRequest {
 };
 
 /// Asks before a write that cannot be taken back (flash wear, power cycle). Cancel is the
-/// default button, so Enter never writes by accident. Tests install a Policy that answers
+/// default button, so Enter never writes by accident, and Esc rejects it (in lkstudio the
+/// application-wide emergency stop sees that Esc too). Tests install a Policy that answers
 /// instead of the user, so they never block on a modal dialog.
-///
-/// Esc rejects the dialog and, when a session is known and forwarding is on, also sends an
-/// emergency stop: Esc means "stop" everywhere in lkstudio. The event is never swallowed.
 class ConfirmDialog : public QDialog {
     Q_OBJECT
 public:
     using Policy = std::function<bool(const ConfirmRequest &)>;
 
-    ConfirmDialog(const ConfirmRequest &request, bus::BusSession *session,
-                  QWidget *parent = nullptr);
+    explicit ConfirmDialog(const ConfirmRequest &request, QWidget *parent = nullptr);
 
     /// Shows the dialog modally (or asks the installed policy) and returns the answer.
-    static bool ask(QWidget *parent, const ConfirmRequest &request,
-                    bus::BusSession *session = nullptr);
+    static bool ask(QWidget *parent, const ConfirmRequest &request);
 
     /// Answer every question with `policy` instead of a dialog (tests); empty: ask the user.
     static void setPolicy(Policy policy);
-    /// Whether Esc in the dialog sends BusSession::emergencyStop (default on). A window that
-    /// already reacts to Esc application-wide (lkstudio's EmergencyKeyFilter) turns it off so
-    /// that one key press sends one emergency stop.
-    static void setForwardEscape(bool on);
-    static bool forwardEscape();
 
     /// Installs a policy for the lifetime of the object (tests).
     class ScopedPolicy {
@@ -55,12 +41,6 @@ public:
         ScopedPolicy(const ScopedPolicy &) = delete;
         ScopedPolicy &operator=(const ScopedPolicy &) = delete;
     };
-
-protected:
-    void keyPressEvent(QKeyEvent *event) override;
-
-private:
-    QPointer<bus::BusSession> m_session;
 };
 
 } // namespace lk::ui

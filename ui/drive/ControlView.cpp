@@ -33,13 +33,6 @@ namespace {
 constexpr int kRightColumnWidth = 380;
 using protocol::Command;
 namespace build = protocol::build;
-
-bool isEscape(QEvent *event)
-{
-    if (event->type() != QEvent::KeyPress && event->type() != QEvent::ShortcutOverride)
-        return false;
-    return static_cast<QKeyEvent *>(event)->key() == Qt::Key_Escape;
-}
 } // namespace
 
 ControlView::ControlView(QWidget *parent)
@@ -89,7 +82,7 @@ ControlView::ControlView(QWidget *parent)
     layout->addWidget(rightWidget);
 
     wire();
-    // Sees Esc everywhere (also when a window-wide shortcut takes it) and never consumes it.
+    // Sees the jog keys wherever the focus is inside the view (see handleJogKey).
     qApp->installEventFilter(this);
     contextChanged(Change::Session | Change::Drive);
 }
@@ -330,10 +323,11 @@ void ControlView::contextChanged(Changes changes)
     }
     m_title->setText(driveTitle());
     refreshSelectionNote();
+    const QString offline = tr("Disconnected: nothing can be sent.");
     if (!isConnected() && hasDrive())
-        setStatus(tr("Disconnected: nothing can be sent."));
-    else if (changes & Change::Drive)
-        setStatus(QString());
+        setStatus(offline);
+    else if ((changes & Change::Drive) || statusText() == offline)
+        setStatus(QString()); // connected again (an automatic reconnect too): no longer true
     refreshEnabled();
 }
 
@@ -650,28 +644,12 @@ bool ControlView::handleJogKey(QKeyEvent *event)
 
 bool ControlView::eventFilter(QObject *watched, QEvent *event)
 {
-    if (isEscape(event)) {
-        haltLocalMotion(tr("Stopped by Esc (emergency stop)."));
-        return false; // never consumed: the emergency stop itself is the window's job
-    }
     if ((event->type() == QEvent::KeyPress || event->type() == QEvent::KeyRelease) &&
         watched->isWidgetType() && handleJogKey(static_cast<QKeyEvent *>(event)))
         return true;
     if (event->type() == QEvent::ApplicationDeactivate && m_keyJogging)
         endJog(); // the key release will never arrive here
     return DriveView::eventFilter(watched, event);
-}
-
-void ControlView::keyPressEvent(QKeyEvent *event)
-{
-    // Reaches here only when nothing above took Esc (no window-wide shortcut): stop anyway.
-    if (event->key() == Qt::Key_Escape && session()) {
-        session()->emergencyStop();
-        setStatus(tr("Emergency stop sent (Esc)."), true);
-        event->accept();
-        return;
-    }
-    DriveView::keyPressEvent(event);
 }
 
 void ControlView::changeEvent(QEvent *event)

@@ -30,10 +30,9 @@ class TelemetryStore;
 /// builders and MotionGuard (series and the drive's soft limits, editable and persisted)
 /// before it is sent; a refusal sends nothing and says which limit stopped it.
 ///
-/// Esc anywhere in the application (seen by a non-consuming application event filter), an
-/// emergency stop on the session, a drive or connection change and Motor Off/Stop all halt
-/// the generator and the jog. Esc that reaches this view unhandled also sends the session's
-/// emergency stop (lkstudio's window-wide shortcut normally does that).
+/// An emergency stop on the session, a drive or connection change and Motor Off/Stop all halt
+/// the generator and the jog. Esc belongs to lkstudio's emergency stop (EmergencyStopControl),
+/// which calls haltLocalMotion() before it sends anything.
 class ControlView : public DriveView {
     Q_OBJECT
 public:
@@ -91,7 +90,6 @@ protected:
     void contextChanged(Changes changes) override;
     void changeEvent(QEvent *event) override;
     bool eventFilter(QObject *watched, QEvent *event) override;
-    void keyPressEvent(QKeyEvent *event) override;
 
 private:
     void applyPaletteStyles();

@@ -383,8 +383,7 @@ bool EncoderView::confirm(const QString &key, const QString &title, const QStrin
                           const QString &reason, const QString &accept)
 {
     const int id = driveId();
-    const bool yes =
-        ConfirmDialog::ask(this, ConfirmRequest{key, title, question, reason, accept}, session());
+    const bool yes = ConfirmDialog::ask(this, ConfirmRequest{key, title, question, reason, accept});
     // The dialog ran an event loop: the drive or the link may have changed meanwhile.
     if (yes && (!canSend() || driveId() != id || m_busy)) {
         setStatus(tr("The drive or the connection changed: nothing was sent."), true);

@@ -311,7 +311,7 @@ bool TuningView::confirmRomWrite(int id)
                   "after power-off. Try them in RAM first; write to ROM once you are satisfied. "
                   "Acceleration is written to RAM only (V2.3 has no ROM command for it).");
     q.acceptText = tr("Write to ROM");
-    return ConfirmDialog::ask(this, q, session());
+    return ConfirmDialog::ask(this, q);
 }
 
 void TuningView::writeParameters(bool rom)

@@ -16,14 +16,6 @@ namespace lk::ui {
 
 namespace {
 constexpr int kReconnectMs = 1000; // adapters enumerate within a second of being plugged in
-
-QString idList(const QVector<int> &ids)
-{
-    QStringList parts;
-    for (int id : ids)
-        parts << QString::number(id);
-    return parts.join(QStringLiteral(", "));
-}
 } // namespace
 
 BusController::BusController(BusModel *model, QObject *parent)
@@ -52,7 +44,10 @@ void BusController::wireSession()
     connect(m_session, &S::motorFound, m_model, &BusModel::addFound);
     connect(m_session, &S::scanFinished, this, &BusController::onScanFinished);
     connect(m_session, &S::requestCompleted, this, &BusController::onRequestCompleted);
-    connect(m_session, &S::emergencyStopFinished, this, &BusController::onEmergencyStopFinished);
+    connect(m_session, &S::emergencyStopFinished, this,
+            [this](quint64, const QVector<int> &ack, const QVector<int> &silent) {
+                emit emergencyStopDone(ack, silent);
+            });
     connect(m_session, &S::telemetryReceived, m_model, &BusModel::applyTelemetry);
     connect(m_session, &S::telemetryReceived, this, &BusController::telemetryReceived);
     connect(m_session, &S::trafficCaptured, this, &BusController::trafficCaptured);
@@ -300,38 +295,9 @@ void BusController::setTrafficCapture(bool on)
     m_session->setTrafficCapture(on);
 }
 
-void BusController::emergencyStop()
+quint64 BusController::emergencyStop(const QVector<int> &first)
 {
-    m_session->emergencyStop(m_model->ids());
-}
-
-void BusController::onEmergencyStopFinished(quint64, const QVector<int> &ack,
-                                            const QVector<int> &silent)
-{
-    emit emergencyStopDone(ack, silent);
-    if (m_model->ids().isEmpty()) {
-        // No scan yet: the session tried every ID, and silence from absent IDs means nothing.
-        emit message(ack.isEmpty() ? MessageBanner::Level::Warning : MessageBanner::Level::Info,
-                     ack.isEmpty() ? tr("Emergency stop: Motor Off sent to IDs 1-32; no drive "
-                                        "answered.")
-                                   : tr("Emergency stop: Motor Off sent to IDs 1-32; "
-                                        "acknowledged by %1.")
-                                         .arg(idList(ack)));
-        return;
-    }
-    if (silent.isEmpty()) {
-        emit message(MessageBanner::Level::Info,
-                     tr("Emergency stop: Motor Off acknowledged by drive(s) %1.").arg(idList(ack)));
-        return;
-    }
-    const QString text = ack.isEmpty()
-                             ? tr("Emergency stop: Motor Off sent, but no drive acknowledged it "
-                                  "(IDs %1). Check the drives and cut their power if needed.")
-                                   .arg(idList(silent))
-                             : tr("Emergency stop: acknowledged by %1; NO answer from %2. Check "
-                                  "those drives and cut their power if needed.")
-                                   .arg(idList(ack), idList(silent));
-    emit message(MessageBanner::Level::Error, text);
+    return m_session->emergencyStop(first);
 }
 
 void BusController::clearErrors(int id)

@@ -46,6 +46,10 @@ public:
     static bus::PollPlan pollPlanFor(const QVector<int> &ids, double rateHz);
     /// Bus limit for a plan: transactions/s, and full cycles/s over every ID.
     void busLimit(const bus::PollPlan &plan, int baud, double *perSecond, double *cycleHz) const;
+    /// Motor Off to `first` and every drive the bus knows, then to every other ID 1..32
+    /// (see BusSession::emergencyStop); returns the stop's ticket. lkstudio's stop is
+    /// EmergencyStopControl, which reports the outcome.
+    quint64 emergencyStop(const QVector<int> &first);
 
 public slots:
     void connectTo(const lk::ui::ConnectionChoice &choice);
@@ -54,7 +58,6 @@ public slots:
     void onPortsChanged(const QList<lk::ui::PortEntry> &ports);
     void scan(const lk::bus::ScanOptions &options);
     void cancelScan();
-    void emergencyStop();
     void clearErrors(int id);
     void setPollRate(double hz);
     void setTrafficCapture(bool on);
@@ -75,8 +78,6 @@ private:
     void onError(const transport::TransportError &error);
     void onScanFinished(const bus::ScanSummary &summary);
     void onRequestCompleted(const bus::RequestResult &result);
-    void onEmergencyStopFinished(quint64 ticket, const QVector<int> &ack,
-                                 const QVector<int> &silent);
     void keepDrivesAt(const bus::ScanSummary &summary);
     void startPolling();
     void tryReconnect();

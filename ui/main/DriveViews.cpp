@@ -3,7 +3,6 @@
 #include "BusController.h"
 
 #include <bus/BusSession.h>
-#include <drive/ConfirmDialog.h>
 #include <drive/ControlView.h>
 #include <drive/DriveInfoView.h>
 #include <drive/DriveSettingsStore.h>
@@ -22,9 +21,6 @@ DriveViews::DriveViews(BusModel *model, BusController *controller, TelemetryStor
       m_tuning(new TuningView(parentWidget)), m_control(new ControlView(parentWidget)),
       m_encoder(new EncoderView(parentWidget)), m_info(new DriveInfoView(parentWidget))
 {
-    // The main window's application-wide shortcut and key filter already turn Esc into an
-    // emergency stop inside dialogs; forwarding it again would stop the bus twice.
-    ConfirmDialog::setForwardEscape(false);
     m_tuning->setTelemetryStore(store);
     m_control->setTelemetryStore(store);
     m_control->setSettingsStore(m_settings.get());

@@ -4,10 +4,10 @@
 
 namespace lk::ui {
 
-/// Esc anywhere in the application, including modal dialogs and open pop-ups where the main
-/// window's shortcut does not reach: installed on the QApplication, it reports each Esc press
-/// once and lets the event go on, so a dialog still closes on Esc. An Esc that the window's
-/// QShortcut already took never arrives here as a key press, so nothing fires twice.
+/// Esc anywhere in the application, including modal dialogs and open pop-ups: installed on
+/// the QApplication by EmergencyStopControl (the only place Esc is handled), it reports each
+/// Esc press once and lets the event go on, so a dialog still closes on Esc. Nothing in
+/// lkstudio binds Esc as a shortcut, so every press arrives here as a key press.
 class EmergencyKeyFilter : public QObject {
     Q_OBJECT
 public:

@@ -2,10 +2,12 @@
 
 #include "AppSettings.h"
 #include "BusController.h"
+#include "CommandedMotion.h"
 #include "DriveViews.h"
-#include "EmergencyKeyFilter.h"
+#include "EmergencyStopControl.h"
 #include "HelpMenu.h"
 #include "LanguageMenu.h"
+#include "LinkLossWatch.h"
 
 #include <drive/ControlView.h>
 #include <drive/DriveInfoView.h>
@@ -29,7 +31,6 @@
 #include <QtCore/QTimer>
 #include <QtGui/QCloseEvent>
 #include <QtGui/QIcon>
-#include <QtGui/QShortcut>
 #include <QtWidgets/QApplication>
 #include <QtWidgets/QDockWidget>
 #include <QtWidgets/QMenuBar>
@@ -55,7 +56,10 @@ MainWindow::MainWindow(AppSettings *settings, QWidget *parent)
     m_model = new BusModel(this);
     m_controller = new BusController(m_model, this);
     m_store = new TelemetryStore(this);
+    m_motion = new CommandedMotion(this);
+    m_motion->setSession(m_controller->session());
     buildPanels();
+    buildSafety();
     buildToolbar();
     buildMenus();
     wirePanels();
@@ -120,6 +124,20 @@ void MainWindow::buildPanels()
     statusBar()->addPermanentWidget(m_status, 1);
 }
 
+void MainWindow::buildSafety()
+{
+    m_estop = new EmergencyStopControl(m_controller, m_motion, m_banner, this);
+    // Local motion sources first, so that no generator tick follows the Motor Off frames.
+    connect(m_estop, &EmergencyStopControl::halting, m_driveViews, &DriveViews::haltLocalMotion);
+    m_linkLoss = new LinkLossWatch(m_model, m_motion, m_banner, this);
+    connect(m_controller, &BusController::telemetryReceived, m_linkLoss,
+            &LinkLossWatch::onTelemetry);
+    connect(m_model, &BusModel::connectionChanged, this, [this] {
+        if (!m_model->canSend())
+            m_store->breakLines(); // the plots never draw a line across the outage
+    });
+}
+
 void MainWindow::buildToolbar()
 {
     auto *bar = new QToolBar(tr("Connection"), this);
@@ -133,15 +151,9 @@ void MainWindow::buildToolbar()
     bar->addWidget(m_stop);
     addToolBar(Qt::TopToolBarArea, bar);
 
-    // Esc anywhere: the window shortcut covers every child; the filter covers modal dialogs
-    // and pop-ups, where a window's shortcut is blocked.
-    m_escape = new QShortcut(QKeySequence(Qt::Key_Escape), this);
-    m_escape->setContext(Qt::ApplicationShortcut);
-    connect(m_escape, &QShortcut::activated, this, &MainWindow::emergencyStop);
-    auto *filter = new EmergencyKeyFilter(this);
-    qApp->installEventFilter(filter);
-    connect(filter, &EmergencyKeyFilter::escapePressed, this, &MainWindow::emergencyStop);
-    connect(m_stop, &QPushButton::clicked, this, &MainWindow::emergencyStop);
+    // Esc anywhere (dialogs and pop-ups included) is the stop control's own application
+    // filter; the button and the menu call the same stop.
+    connect(m_stop, &QPushButton::clicked, m_estop, &EmergencyStopControl::stop);
 }
 
 void MainWindow::buildMenus()
@@ -159,7 +171,7 @@ void MainWindow::buildMenus()
     busMenu->addAction(tr("&Disconnect"), m_controller, &BusController::disconnectBus);
     busMenu->addSeparator();
     busMenu->addAction(ThemedIcon::get(QStringLiteral(":/icons/stop.svg")),
-                       tr("&Emergency stop (Esc)"), this, &MainWindow::emergencyStop);
+                       tr("&Emergency stop (Esc)"), m_estop, &EmergencyStopControl::stop);
 
     QMenu *view = menuBar()->addMenu(tr("&View"));
     view->addAction(m_busDock->toggleViewAction());
@@ -295,10 +307,7 @@ void MainWindow::connectTo(const ConnectionChoice &choice, bool remember)
 
 void MainWindow::emergencyStop()
 {
-    // Local motion sources first, so that no generator tick follows the Motor Off frames.
-    m_driveViews->haltLocalMotion(tr("Emergency stop."));
-    m_controller->emergencyStop();
-    statusBar()->showMessage(tr("Emergency stop: Motor Off sent to every drive"), 5000);
+    m_estop->stop();
 }
 
 void MainWindow::restoreSettings()

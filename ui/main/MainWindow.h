@@ -3,7 +3,6 @@
 #include <QtWidgets/QMainWindow>
 
 class QDockWidget;
-class QShortcut;
 class QTabWidget;
 
 namespace lk::ui {
@@ -12,9 +11,12 @@ class AppSettings;
 class BusController;
 class BusModel;
 class BusPanel;
+class CommandedMotion;
 class ConnectionBar;
 class DashboardPanel;
 class EmergencyStopButton;
+class EmergencyStopControl;
+class LinkLossWatch;
 class MessageBanner;
 class OverviewPanel;
 class PlotPanel;
@@ -60,9 +62,13 @@ public:
     MessageBanner *banner() const { return m_banner; }
     StatusSummary *statusSummary() const { return m_status; }
     EmergencyStopButton *emergencyStopButton() const { return m_stop; }
+    EmergencyStopControl *emergencyStopControl() const { return m_estop; }
+    CommandedMotion *commandedMotion() const { return m_motion; }
+    LinkLossWatch *linkLossWatch() const { return m_linkLoss; }
     QTabWidget *views() const { return m_views; }
 
 public slots:
+    /// The application's one emergency stop (EmergencyStopControl::stop): Esc, button, menu.
     void emergencyStop();
 
 protected:
@@ -71,6 +77,7 @@ protected:
 
 private:
     void buildPanels();
+    void buildSafety();
     void buildToolbar();
     void buildMenus();
     void wirePanels();
@@ -94,7 +101,9 @@ private:
     TrafficPanel *m_traffic = nullptr;
     DriveViews *m_driveViews = nullptr;
     StatusSummary *m_status = nullptr;
-    QShortcut *m_escape = nullptr;
+    CommandedMotion *m_motion = nullptr;
+    EmergencyStopControl *m_estop = nullptr;
+    LinkLossWatch *m_linkLoss = nullptr;
     bool m_stateRestored = false; ///< a saved layout was applied (else size the dock once)
     bool m_firstShow = true;
 };

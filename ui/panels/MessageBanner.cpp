@@ -1,66 +1,63 @@
 #include "MessageBanner.h"
 
-#include "StatusColors.h"
-#include "ThemedIcon.h"
+#include "BannerEntry.h"
 
+#include <QtCore/QEvent>
 #include <QtCore/QTimer>
-#include <QtGui/QIcon>
-#include <QtWidgets/QApplication>
-#include <QtWidgets/QHBoxLayout>
-#include <QtWidgets/QLabel>
 #include <QtWidgets/QToolButton>
+#include <QtWidgets/QVBoxLayout>
 
 namespace lk::ui {
 
 namespace {
 constexpr int kInfoHideMs = 8000;
-constexpr int kIconPx = 20;
+
+BannerEntry::Level entryLevelOf(MessageBanner::Level level)
+{
+    switch (level) {
+    case MessageBanner::Level::Info:
+        return BannerEntry::Level::Info;
+    case MessageBanner::Level::Warning:
+        return BannerEntry::Level::Warning;
+    case MessageBanner::Level::Error:
+        break;
+    }
+    return BannerEntry::Level::Error;
+}
 } // namespace
 
 MessageBanner::MessageBanner(QWidget *parent) : QFrame(parent)
 {
     setObjectName(QStringLiteral("messageBanner"));
-    // The tinted box is a child: a widget with its own style sheet is not told of palette
+    // The tinted boxes are children: a widget with its own style sheet is not told of palette
     // changes, and the banner must hear of them to re-tint for a dark or light desktop.
-    auto *outer = new QHBoxLayout(this);
-    outer->setContentsMargins(0, 0, 0, 0);
-    m_box = new QFrame(this);
-    m_box->setObjectName(QStringLiteral("messageBox"));
-    m_box->setFrameShape(QFrame::StyledPanel);
-    outer->addWidget(m_box);
-    auto *layout = new QHBoxLayout(m_box);
-    layout->setContentsMargins(8, 4, 4, 4);
-    m_icon = new QLabel(m_box);
-    m_label = new QLabel(m_box);
-    m_label->setWordWrap(true);
-    m_label->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    m_close = new QToolButton(m_box);
-    m_close->setAutoRaise(true);
-    m_close->setText(QStringLiteral("\u2715"));
-    m_close->setToolTip(tr("Hide this message"));
-    layout->addWidget(m_icon);
-    layout->addWidget(m_label, 1);
-    layout->addWidget(m_close);
+    m_layout = new QVBoxLayout(this);
+    m_layout->setContentsMargins(0, 0, 0, 0);
+    m_layout->setSpacing(2);
+    m_box = new BannerEntry(this);
+    m_layout->addWidget(m_box);
     m_autoHide = new QTimer(this);
     m_autoHide->setSingleShot(true);
     m_autoHide->setInterval(kInfoHideMs);
     connect(m_autoHide, &QTimer::timeout, this, &MessageBanner::clearMessage);
-    connect(m_close, &QToolButton::clicked, this, &MessageBanner::clearMessage);
+    connect(m_box, &BannerEntry::closeClicked, this, &MessageBanner::clearMessage);
+    m_box->hide();
     hide();
 }
 
 void MessageBanner::showMessage(Level level, const QString &text)
 {
-    if (isVisible() && text == m_lastText && level == m_level) {
+    if (m_box->isVisibleTo(this) && text == m_lastText && level == m_level) {
         ++m_repeats;
     } else {
         m_repeats = 1;
         m_lastText = text;
         m_level = level;
-        applyLevel();
+        m_box->setLevel(entryLevelOf(level));
     }
     updateText();
-    show();
+    m_box->show();
+    updateVisibility();
     if (level == Level::Info)
         m_autoHide->start();
     else
@@ -72,53 +69,90 @@ void MessageBanner::clearMessage()
     m_autoHide->stop();
     m_lastText.clear();
     m_repeats = 0;
-    hide();
-}
-
-void MessageBanner::applyLevel()
-{
-    QString icon;
-    StatusColors::Role role = StatusColors::Role::Info;
-    switch (m_level) {
-    case Level::Info:
-        icon = QStringLiteral(":/icons/info.svg");
-        role = StatusColors::Role::Info;
-        break;
-    case Level::Warning:
-        icon = QStringLiteral(":/icons/warning.svg");
-        role = StatusColors::Role::Warning;
-        break;
-    case Level::Error:
-        icon = QStringLiteral(":/icons/error.svg");
-        role = StatusColors::Role::Error;
-        break;
-    }
-    // Tints that suit the palette: pale on a light window, deep on a dark one.
-    const QPalette pal = QApplication::palette(); // not ours: the style sheet tints it
-    m_box->setStyleSheet(QStringLiteral("#messageBox { background: %1; border: 1px solid %2; }"
-                                        " QLabel { color: %3; }")
-                             .arg(StatusColors::background(role, pal).name(),
-                                  StatusColors::border(role, pal).name(),
-                                  StatusColors::text(role, pal).name()));
-    m_icon->setPixmap(ThemedIcon::get(icon).pixmap(kIconPx, kIconPx));
+    m_box->hide();
+    updateVisibility();
 }
 
 void MessageBanner::updateText()
 {
-    m_label->setText(m_repeats > 1 ? tr("%1 (\u00d7%2)").arg(m_lastText).arg(m_repeats)
-                                   : m_lastText);
+    m_box->setText(m_repeats > 1 ? tr("%1 (\u00d7%2)").arg(m_lastText).arg(m_repeats) : m_lastText);
+}
+
+void MessageBanner::updateVisibility()
+{
+    setVisible(m_box->isVisibleTo(this) || !m_entries.isEmpty());
+}
+
+void MessageBanner::setEntry(const QString &key, Level level, const QString &html)
+{
+    BannerEntry *&entry = m_entries[key];
+    if (!entry) {
+        entry = new BannerEntry(this);
+        entry->setObjectName(QStringLiteral("messageBox"));
+        entry->setProperty("entryKey", key);
+        m_layout->addWidget(entry);
+        connect(entry, &BannerEntry::closeClicked, this, [this, key] {
+            clearEntry(key);
+            emit entryDismissed(key);
+        });
+    }
+    entry->setLevel(entryLevelOf(level));
+    entry->setText(html, Qt::RichText);
+    updateVisibility();
+}
+
+void MessageBanner::clearEntry(const QString &key)
+{
+    BannerEntry *entry = m_entries.take(key);
+    if (!entry)
+        return;
+    entry->hide();
+    entry->deleteLater(); // it may be the sender of the click being handled
+    updateVisibility();
+}
+
+QString MessageBanner::entryText(const QString &key) const
+{
+    const BannerEntry *entry = m_entries.value(key);
+    return entry ? entry->text() : QString();
+}
+
+MessageBanner::Level MessageBanner::entryLevel(const QString &key) const
+{
+    const BannerEntry *entry = m_entries.value(key);
+    if (!entry)
+        return Level::Info;
+    switch (entry->level()) {
+    case BannerEntry::Level::Info:
+        return Level::Info;
+    case BannerEntry::Level::Warning:
+        return Level::Warning;
+    case BannerEntry::Level::Error:
+        break;
+    }
+    return Level::Error;
+}
+
+QWidget *MessageBanner::entryCloseButton(const QString &key) const
+{
+    const BannerEntry *entry = m_entries.value(key);
+    return entry ? entry->findChild<QToolButton *>(QStringLiteral("messageClose")) : nullptr;
 }
 
 void MessageBanner::changeEvent(QEvent *event)
 {
     QFrame::changeEvent(event);
-    if (event->type() == QEvent::PaletteChange)
-        applyLevel(); // light/dark tints follow (the sheet is on m_box: no loop)
+    if (event->type() == QEvent::PaletteChange) {
+        // Light/dark tints follow (the sheets are on the children: no loop).
+        m_box->retint();
+        for (BannerEntry *entry : std::as_const(m_entries))
+            entry->retint();
+    }
 }
 
 QString MessageBanner::tintStyle() const
 {
-    return m_box->styleSheet();
+    return m_box->tintStyle();
 }
 
 } // namespace lk::ui

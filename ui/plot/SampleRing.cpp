@@ -39,6 +39,9 @@ bool SampleRing::append(double time, double value)
         (m_size > 0 && time < timeAt(m_size - 1))) {
         return false; // binary searches need ascending times; NaN would poison min/max
     }
+    if (m_size > 0) {
+        m_gaps.noteSample(timeAt(m_size - 1), time);
+    }
     const qsizetype slot = m_head;
     if (size_t(slot) == m_times.size()) {
         m_times.push_back(time); // within the reservation: never reallocates
@@ -67,6 +70,7 @@ bool SampleRing::append(double time, double value)
         ++m_size;
     } else {
         m_oldest = m_head; // the oldest point was just overwritten
+        m_gaps.dropBefore(timeAt(0));
     }
     ++m_total;
     return true;
@@ -82,6 +86,7 @@ void SampleRing::clear()
     }
     m_size = m_oldest = m_head = 0;
     m_total = 0;
+    m_gaps.clear();
 }
 
 qsizetype SampleRing::lowerBound(double time) const
@@ -153,22 +158,49 @@ void SampleRing::minMaxSlots(qsizetype begin, qsizetype end, MinMax &result) con
     }
 }
 
-QList<QPointF> SampleRing::decimate(double t0, double t1, int columns,
-                                    DecimationMethod method) const
+LineSegments SampleRing::decimate(double t0, double t1, int columns, DecimationMethod method) const
 {
     columns = std::max(1, columns);
-    const qsizetype i0 = lowerBound(t0);
-    const qsizetype i1 = upperBound(t1);
-    const qsizetype inWindow = std::max<qsizetype>(0, i1 - i0);
+    // The window's points and their nearest neighbours outside it, cut at every gap.
+    const qsizetype begin = std::max<qsizetype>(0, lowerBound(t0) - 1);
+    const qsizetype end = std::min(m_size, upperBound(t1) + 1);
+    LineSegments out;
+    if (begin >= end) {
+        return out;
+    }
+    qsizetype from = begin;
+    for (const SampleGap &gap : m_gaps.within(timeAt(begin), timeAt(end - 1))) {
+        const qsizetype after = std::clamp(lowerBound(gap.to), from, end);
+        if (after > from) {
+            out.append(decimateStretch(from, after, t0, t1, columns, method));
+        }
+        from = after;
+    }
+    if (from < end) {
+        out.append(decimateStretch(from, end, t0, t1, columns, method));
+    }
+    if (out.size() > 1) {
+        // A lone neighbour on the far side of a gap draws nothing: leave it out.
+        out.removeIf([](const QList<QPointF> &segment) { return segment.size() < 2; });
+    }
+    return out;
+}
+
+QList<QPointF> SampleRing::decimateStretch(qsizetype begin, qsizetype end, double t0, double t1,
+                                           int columns, DecimationMethod method) const
+{
+    const qsizetype i0 = std::clamp(lowerBound(t0), begin, end);
+    const qsizetype i1 = std::clamp(upperBound(t1), begin, end);
+    const qsizetype inWindow = i1 - i0;
     const bool pyramid =
         !m_levels.empty() &&
         (method == DecimationMethod::Pyramid ||
          (method == DecimationMethod::Auto && inWindow > kPyramidPointsPerColumn * columns));
     if (pyramid && inWindow > 0) {
-        return decimatePyramid(i0, i1, t0, t1, columns);
+        return decimatePyramid(i0, i1, begin, end, t0, t1, columns);
     }
     DecimatedSeries reducer(t0, t1, columns);
-    forEachSpan(std::max<qsizetype>(0, i0 - 1), std::min(m_size, i1 + 1),
+    forEachSpan(std::max(begin, i0 - 1), std::min(end, i1 + 1),
                 [&](const double *t, const double *v, qsizetype n) { reducer.add(t, v, n); });
     return reducer.finish();
 }
@@ -215,12 +247,12 @@ qsizetype SampleRing::columnEnd(qsizetype begin, qsizetype end, qsizetype guess,
     return lo;
 }
 
-QList<QPointF> SampleRing::decimatePyramid(qsizetype i0, qsizetype i1, double t0, double t1,
-                                           int columns) const
+QList<QPointF> SampleRing::decimatePyramid(qsizetype i0, qsizetype i1, qsizetype begin,
+                                           qsizetype end, double t0, double t1, int columns) const
 {
     QList<QPointF> out;
     out.reserve(2 * columns + 4);
-    if (i0 > 0) {
+    if (i0 > begin) {
         out.append(pointAt(i0 - 1));
     }
     qsizetype lastEmitted = -1;
@@ -258,7 +290,7 @@ QList<QPointF> SampleRing::decimatePyramid(qsizetype i0, qsizetype i1, double t0
         cs = ce;
     }
     emitIndex(i1 - 1); // the window's real last point
-    if (i1 < m_size) {
+    if (i1 < end) {
         out.append(pointAt(i1));
     }
     return out;

@@ -2,6 +2,7 @@
 
 #include "DecimatedSeries.h"
 #include "MinMax.h"
+#include "SampleGaps.h"
 
 #include <QtCore/QList>
 #include <QtCore/QPointF>
@@ -10,6 +11,9 @@
 #include <vector>
 
 namespace lk::ui {
+
+/// The pieces of a line, each drawn on its own: no segment joins two of them.
+using LineSegments = QList<QList<QPointF>>;
 
 /// How a time window is reduced to pixel columns.
 enum class DecimationMethod {
@@ -22,13 +26,22 @@ enum class DecimationMethod {
 /// pyramid over aligned blocks of 2^k slots (k = 3..16) so that a long window decimates
 /// without reading every point. Storage is reserved once: appending never allocates (on
 /// Linux the reservation costs address space; pages become resident when first written).
+/// It knows its gaps (SampleGaps: a silent drive, a dropped link): decimation returns one
+/// line segment per stretch between gaps and never joins across one.
 class SampleRing {
 public:
     explicit SampleRing(qsizetype capacity);
 
     /// Appends a point; refuses (returns false) one older than the newest point or not finite.
     bool append(double time, double value);
+    /// The next point starts a new line segment (the link dropped: what follows is not
+    /// joined to what came before).
+    void breakLine() { m_gaps.breakNext(); }
     void clear();
+    /// Gaps overlapping [t0, t1], oldest first.
+    QVector<SampleGap> gaps(double t0, double t1) const { return m_gaps.within(t0, t1); }
+    /// Whether `time` falls inside a gap (nothing was measured then).
+    bool inGap(double time) const { return m_gaps.contains(time); }
 
     qsizetype size() const { return m_size; }
     qsizetype capacity() const { return m_capacity; }
@@ -51,9 +64,10 @@ public:
     template <typename F> void forEachSpan(qsizetype begin, qsizetype end, F f) const;
 
     /// The window [t0, t1] reduced to at most 2 points per column (see DecimatedSeries),
-    /// plus the nearest point outside each edge so that the line reaches the edges.
-    QList<QPointF> decimate(double t0, double t1, int columns,
-                            DecimationMethod method = DecimationMethod::Auto) const;
+    /// plus the nearest point outside each edge so that the line reaches the edges: one
+    /// segment per stretch between gaps, oldest first (a single one when there is no gap).
+    LineSegments decimate(double t0, double t1, int columns,
+                          DecimationMethod method = DecimationMethod::Auto) const;
 
 private:
     struct Level {
@@ -69,8 +83,11 @@ private:
     void minMaxSlots(qsizetype begin, qsizetype end, MinMax &result) const;
     qsizetype columnEnd(qsizetype begin, qsizetype end, qsizetype guess,
                         const ColumnMap &columnOf) const;
-    QList<QPointF> decimatePyramid(qsizetype i0, qsizetype i1, double t0, double t1,
-                                   int columns) const;
+    /// One gap-free stretch [begin, end) of points, reduced over [t0, t1].
+    QList<QPointF> decimateStretch(qsizetype begin, qsizetype end, double t0, double t1,
+                                   int columns, DecimationMethod method) const;
+    QList<QPointF> decimatePyramid(qsizetype i0, qsizetype i1, qsizetype begin, qsizetype end,
+                                   double t0, double t1, int columns) const;
 
     qsizetype m_capacity;
     qsizetype m_size = 0;
@@ -79,6 +96,7 @@ private:
     quint64 m_total = 0;    // points ever appended
     std::vector<double> m_times, m_values;
     std::vector<Level> m_levels;
+    SampleGaps m_gaps;
 };
 
 template <typename F> void SampleRing::forEachSpan(qsizetype begin, qsizetype end, F f) const

@@ -2,8 +2,10 @@
 
 #include <QtCharts/QChart>
 #include <QtCharts/QLegend>
+#include <QtCharts/QLegendMarker>
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QValueAxis>
+#include <QtGui/QPainter>
 
 #include <array>
 #include <cmath>
@@ -111,6 +113,8 @@ void StripChart::clearChart()
 {
     chart()->removeAllSeries(); // deletes them
     m_series.clear();
+    m_extraPieces.clear();
+    m_outages.clear();
     for (auto &[quantity, axis] : m_valueAxes) {
         chart()->removeAxis(axis);
         delete axis;
@@ -136,13 +140,18 @@ QColor StripChart::traceColor(int index) const
     if (m_coloring == Coloring::ByChannel) {
         return seriesColors()[size_t(trace.channel) % seriesColors().size()];
     }
+    return seriesColors()[size_t(driveOrder().indexOf(trace.driveId)) % seriesColors().size()];
+}
+
+QVector<int> StripChart::driveOrder() const
+{
     QVector<int> drives;
     for (const PlotTrace &t : m_traces) {
         if (!drives.contains(t.driveId)) {
             drives.append(t.driveId);
         }
     }
-    return seriesColors()[size_t(drives.indexOf(trace.driveId)) % seriesColors().size()];
+    return drives;
 }
 
 void StripChart::setTraces(const QVector<PlotTrace> &traces, Coloring coloring)
@@ -153,12 +162,8 @@ void StripChart::setTraces(const QVector<PlotTrace> &traces, Coloring coloring)
     clearChart();
     m_traces = traces;
     m_coloring = coloring;
-    QVector<int> drives;
     for (int i = 0; i < m_traces.size(); ++i) {
         const PlotTrace &trace = m_traces.at(i);
-        if (!drives.contains(trace.driveId)) {
-            drives.append(trace.driveId);
-        }
         QValueAxis *&axis = m_valueAxes[trace.quantity()];
         if (!axis) {
             axis = new QValueAxis(chart());
@@ -168,26 +173,123 @@ void StripChart::setTraces(const QVector<PlotTrace> &traces, Coloring coloring)
             if (m_coloring == Coloring::ByChannel)
                 m_axisColors[trace.quantity()] = traceColor(i);
         }
-        auto *series = new QLineSeries(chart());
-        series->setUseOpenGL(false); // raster: works offscreen and on any remote display
-        series->setName(
-            tr("ID %1 %2").arg(trace.driveId).arg(channelLabel(trace.channel, trace.power)));
-        QPen pen(traceColor(i), 1);
-        if (m_coloring == Coloring::ByChannel) {
-            // Several drives in one overlaid chart: the drive shows as the dash pattern.
-            static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine,
-                                                  Qt::DashDotLine, Qt::DashDotDotLine};
-            pen.setStyle(styles[drives.indexOf(trace.driveId) % 5]);
-        }
-        series->setPen(pen);
-        chart()->addSeries(series);
-        series->attachAxis(m_time);
-        series->attachAxis(axis);
-        m_series.append(series);
+        m_series.append(addLineSeries(i));
+        m_extraPieces.append(QList<QLineSeries *>());
     }
-    chart()->legend()->setVisible(drives.size() > 1 || m_valueAxes.size() > 1);
+    chart()->legend()->setVisible(driveOrder().size() > 1 || m_valueAxes.size() > 1);
     applyPalette(); // the new axes
     m_needsScale = true;
+}
+
+QLineSeries *StripChart::addLineSeries(int index)
+{
+    const PlotTrace &trace = m_traces.at(index);
+    auto *series = new QLineSeries(chart());
+    series->setUseOpenGL(false); // raster: works offscreen and on any remote display
+    series->setName(
+        tr("ID %1 %2").arg(trace.driveId).arg(channelLabel(trace.channel, trace.power)));
+    QPen pen(traceColor(index), 1);
+    if (m_coloring == Coloring::ByChannel) {
+        // Several drives in one overlaid chart: the drive shows as the dash pattern.
+        static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine,
+                                              Qt::DashDotLine, Qt::DashDotDotLine};
+        pen.setStyle(styles[driveOrder().indexOf(trace.driveId) % 5]);
+    }
+    series->setPen(pen);
+    chart()->addSeries(series);
+    series->attachAxis(m_time);
+    series->attachAxis(valueAxis(trace.quantity()));
+    return series;
+}
+
+void StripChart::showSegments(int index, const LineSegments &segments)
+{
+    // Piece k of the line goes to line series k: the first is the trace's own (named in the
+    // legend), the others are made when a gap first needs them and stay for reuse.
+    QList<QLineSeries *> &extra = m_extraPieces[index];
+    while (extra.size() < segments.size() - 1) {
+        QLineSeries *piece = addLineSeries(index);
+        for (QLegendMarker *marker : chart()->legend()->markers(piece)) {
+            marker->setVisible(false);
+        }
+        extra.append(piece);
+    }
+    m_series.at(index)->replace(segments.value(0));
+    for (int k = 0; k < extra.size(); ++k) {
+        if (k + 1 < segments.size()) {
+            extra.at(k)->replace(segments.at(k + 1));
+        } else if (extra.at(k)->count() > 0) {
+            extra.at(k)->clear();
+        }
+    }
+}
+
+QList<QLineSeries *> StripChart::segments(int index) const
+{
+    QList<QLineSeries *> out;
+    if (index < 0 || index >= m_series.size()) {
+        return out;
+    }
+    for (QLineSeries *s : QList<QLineSeries *>{m_series.at(index)} + m_extraPieces.at(index)) {
+        if (s->count() > 0) {
+            out.append(s);
+        }
+    }
+    return out;
+}
+
+void StripChart::collectOutages(const TelemetryStore &store, TimeSpan span)
+{
+    // The union of every trace's outages in view: overlapping ones merge into one band.
+    QVector<TimeSpan> all;
+    for (const PlotTrace &trace : std::as_const(m_traces)) {
+        all += store.outages(trace.driveId, trace.channel, span.begin, span.end);
+    }
+    std::sort(all.begin(), all.end(),
+              [](const TimeSpan &a, const TimeSpan &b) { return a.begin < b.begin; });
+    QVector<TimeSpan> merged;
+    for (const TimeSpan &o : std::as_const(all)) {
+        if (!merged.isEmpty() && o.begin <= merged.last().end) {
+            merged.last().end = std::max(merged.last().end, o.end);
+        } else {
+            merged.append(o);
+        }
+    }
+    if (merged.size() != m_outages.size() ||
+        !std::equal(merged.cbegin(), merged.cend(), m_outages.cbegin(),
+                    [](const TimeSpan &a, const TimeSpan &b) {
+                        return a.begin == b.begin && a.end == b.end;
+                    })) {
+        m_outages = merged;
+        viewport()->update();
+    }
+}
+
+void StripChart::drawForeground(QPainter *painter, const QRectF &rect)
+{
+    // Outages first, under the cursor line: a hatched band where nothing was measured.
+    if (!m_outages.isEmpty() && m_time->max() > m_time->min()) {
+        const QRectF area = chart()->plotArea();
+        const double scale = area.width() / (m_time->max() - m_time->min());
+        QColor shade = palette().color(QPalette::WindowText);
+        shade.setAlpha(40);
+        painter->save();
+        painter->setPen(Qt::NoPen);
+        for (const TimeSpan &o : std::as_const(m_outages)) {
+            const double x0 =
+                std::max(area.left(), area.left() + (o.begin - m_time->min()) * scale);
+            const double x1 = std::min(area.right(), area.left() + (o.end - m_time->min()) * scale);
+            if (x1 <= x0) {
+                continue;
+            }
+            const QRectF band(chart()->mapToScene(QPointF(x0, area.top())),
+                              chart()->mapToScene(QPointF(x1, area.bottom())));
+            painter->fillRect(band, shade);
+            painter->fillRect(band, QBrush(shade, Qt::BDiagPattern));
+        }
+        painter->restore();
+    }
+    TimeChartView::drawForeground(painter, rect);
 }
 
 QValueAxis *StripChart::valueAxis(Quantity quantity) const
@@ -215,7 +317,7 @@ void StripChart::refresh(const TelemetryStore &store, TimeSpan span, bool autosc
         span.end = span.begin + TimeViewport::kMinSpan;
     }
     const int columns = plotColumns();
-    QVector<QList<QPointF>> points(m_traces.size());
+    QVector<LineSegments> points(m_traces.size());
     std::map<Quantity, MinMax> inWindow, anywhere;
     for (int i = 0; i < m_traces.size(); ++i) {
         const PlotTrace &trace = m_traces.at(i);
@@ -223,10 +325,12 @@ void StripChart::refresh(const TelemetryStore &store, TimeSpan span, bool autosc
             store.decimated(trace.driveId, trace.channel, span.begin, span.end, columns, method);
         MinMax &inside = inWindow[trace.quantity()];
         MinMax &all = anywhere[trace.quantity()];
-        for (const QPointF &p : std::as_const(points[i])) {
-            all.add(p.y());
-            if (p.x() >= span.begin && p.x() <= span.end) {
-                inside.add(p.y());
+        for (const QList<QPointF> &segment : std::as_const(points[i])) {
+            for (const QPointF &p : segment) {
+                all.add(p.y());
+                if (p.x() >= span.begin && p.x() <= span.end) {
+                    inside.add(p.y());
+                }
             }
         }
     }
@@ -253,8 +357,11 @@ void StripChart::refresh(const TelemetryStore &store, TimeSpan span, bool autosc
     if (timeMoves || !ranges.empty()) {
         // QtCharts rebuilds every line (path and hover outline) on each axis change: empty
         // the lines first so that only the final replace() below pays for that.
-        for (QLineSeries *series : std::as_const(m_series)) {
-            series->clear();
+        for (int i = 0; i < m_series.size(); ++i) {
+            m_series.at(i)->clear();
+            for (QLineSeries *piece : std::as_const(m_extraPieces.at(i))) {
+                piece->clear();
+            }
         }
     }
     if (timeMoves) {
@@ -265,8 +372,9 @@ void StripChart::refresh(const TelemetryStore &store, TimeSpan span, bool autosc
         setAxisRange(axis, range.first, range.second, kValueTicks);
     }
     for (int i = 0; i < m_traces.size(); ++i) {
-        m_series.at(i)->replace(points.at(i));
+        showSegments(i, points.at(i));
     }
+    collectOutages(store, span);
 }
 
 void StripChart::scaleValueAxes(double factor)

@@ -18,6 +18,8 @@ namespace lk::ui {
 
 /// One chart of the plot panel: a time axis, one value axis per quantity (alternating left
 /// and right) and one line per trace, refreshed from the store decimated to its pixel width.
+/// A trace with gaps in its data (a silent drive, a dropped link) is drawn as separate line
+/// pieces, never joined across a gap, and each outage in view is shaded.
 class StripChart : public TimeChartView {
     Q_OBJECT
 public:
@@ -28,7 +30,12 @@ public:
     /// Rebuilds series and axes when the traces or the colouring changed; else does nothing.
     void setTraces(const QVector<PlotTrace> &traces, Coloring coloring);
     const QVector<PlotTrace> &traces() const { return m_traces; }
+    /// The first line piece of each trace (the one named in the legend).
     QList<QLineSeries *> lineSeries() const { return m_series; }
+    /// Every line piece of trace `index` that holds points, oldest first.
+    QList<QLineSeries *> segments(int index) const;
+    /// The outages shaded now (union over the traces, within the shown time span).
+    const QVector<TimeSpan> &outageBands() const { return m_outages; }
     QValueAxis *valueAxis(Quantity quantity) const;
 
     void setTimeLabelsVisible(bool visible);
@@ -50,13 +57,22 @@ public:
     /// The palette colours of the base class, then each overlaid axis in its trace's colour.
     void applyPalette() override;
 
+protected:
+    void drawForeground(QPainter *painter, const QRectF &rect) override;
+
 private:
     void clearChart();
     QColor traceColor(int index) const;
+    QVector<int> driveOrder() const; ///< drives in the order their traces come
+    QLineSeries *addLineSeries(int index);
+    void showSegments(int index, const LineSegments &segments);
+    void collectOutages(const TelemetryStore &store, TimeSpan span);
 
     QVector<PlotTrace> m_traces;
     Coloring m_coloring = Coloring::ByDrive;
     QList<QLineSeries *> m_series;
+    QVector<QList<QLineSeries *>> m_extraPieces; ///< per trace: pieces after the first
+    QVector<TimeSpan> m_outages;
     std::map<Quantity, QValueAxis *> m_valueAxes;
     std::map<Quantity, QColor> m_axisColors; ///< overlay: an axis takes its trace's colour
     QValueAxis *m_time = nullptr;

@@ -82,6 +82,17 @@ void TelemetryStore::put(Drive &drive, TelemetryChannel channel, double time, do
     }
 }
 
+void TelemetryStore::breakLines()
+{
+    for (auto &entry : m_drives) {
+        for (auto &ring : entry.second.rings) {
+            if (ring) {
+                ring->breakLine();
+            }
+        }
+    }
+}
+
 void TelemetryStore::clear()
 {
     m_drives.clear();
@@ -144,17 +155,29 @@ std::optional<double> TelemetryStore::valueAt(int id, TelemetryChannel channel, 
         return std::nullopt;
     }
     const qsizetype after = r->upperBound(time);
-    if (after == 0) {
+    if (after == 0 || r->inGap(time)) {
         return std::nullopt;
     }
     return r->valueAt(after - 1);
 }
 
-QList<QPointF> TelemetryStore::decimated(int id, TelemetryChannel channel, double t0, double t1,
-                                         int columns, DecimationMethod method) const
+LineSegments TelemetryStore::decimated(int id, TelemetryChannel channel, double t0, double t1,
+                                       int columns, DecimationMethod method) const
 {
     const SampleRing *r = ring(id, channel);
-    return r ? r->decimate(t0, t1, columns, method) : QList<QPointF>{};
+    return r ? r->decimate(t0, t1, columns, method) : LineSegments{};
+}
+
+QVector<TimeSpan> TelemetryStore::outages(int id, TelemetryChannel channel, double t0,
+                                          double t1) const
+{
+    QVector<TimeSpan> out;
+    if (const SampleRing *r = ring(id, channel)) {
+        for (const SampleGap &g : r->gaps(t0, t1)) {
+            out.append(TimeSpan{g.from, g.to});
+        }
+    }
+    return out;
 }
 
 } // namespace lk::ui

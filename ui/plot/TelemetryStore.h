@@ -42,6 +42,9 @@ public:
     void append(const lk::bus::TelemetryBatch &batch);
     /// Drops every drive and frees its memory.
     void clear();
+    /// The link dropped: in every channel the next sample starts a new line segment, and the
+    /// time in between is an outage.
+    void breakLines();
 
     qsizetype capacity() const { return m_capacity; }
     QVector<int> driveIds() const; ///< ascending
@@ -53,11 +56,15 @@ public:
     qsizetype count(int id, TelemetryChannel channel) const;
     /// Earliest and latest time held over all drives and channels; nullopt when empty.
     std::optional<TimeSpan> timeSpan() const;
-    /// Value drawn at `time`: the last sample at or before it; nullopt before the first.
+    /// Value drawn at `time`: the last sample at or before it; nullopt before the first and
+    /// inside a gap (nothing was measured then).
     std::optional<double> valueAt(int id, TelemetryChannel channel, double time) const;
-    /// See SampleRing::decimate; empty when the drive never sent the channel.
-    QList<QPointF> decimated(int id, TelemetryChannel channel, double t0, double t1, int columns,
-                             DecimationMethod method = DecimationMethod::Auto) const;
+    /// See SampleRing::decimate (one segment per stretch between gaps); empty when the drive
+    /// never sent the channel.
+    LineSegments decimated(int id, TelemetryChannel channel, double t0, double t1, int columns,
+                           DecimationMethod method = DecimationMethod::Auto) const;
+    /// The channel's outages overlapping [t0, t1] (gaps in its sample times), oldest first.
+    QVector<TimeSpan> outages(int id, TelemetryChannel channel, double t0, double t1) const;
 
     /// Changes on every append or clear: a cheap "did anything change" check.
     quint64 revision() const { return m_revision; }

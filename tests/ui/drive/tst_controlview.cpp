@@ -10,7 +10,6 @@
 
 #include <QtCore/QSettings>
 #include <QtCore/QTemporaryDir>
-#include <QtGui/QShortcut>
 #include <QtTest/QtTest>
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
@@ -79,8 +78,6 @@ private slots:
     void jogStep();
     void keyboardJogNotInTextField();
     void generatorStartsAndStopStops();
-    void generatorStopsOnEscape();
-    void generatorStopsOnEscapeUnderWindowShortcut();
     void generatorStopsOnDriveChange();
     void generatorWaveforms_data();
     void generatorWaveforms();
@@ -619,65 +616,6 @@ void tst_ControlView::generatorStartsAndStopStops()
     QTest::qWait(300); // several generator periods: nothing more may be sent
     QVERIFY(rig.barrier(1));
     QCOMPARE(rig.count(1, Command::Speed), sent);
-}
-
-void tst_ControlView::generatorStopsOnEscape()
-{
-    SimRig rig;
-    QVERIFY(rig.open());
-    auto view = openView(rig, 1);
-    SetpointGenerator::Settings s;
-    s.target = SetpointGenerator::Target::Position;
-    s.waveform = SetpointGenerator::Waveform::Sine;
-    s.offset = rig.multiTurnDeg(1);
-    s.amplitude = 20;
-    view->startGenerator(s);
-    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::MultiPositionLimited) >= 2, kWaitMs);
-    // Esc with nobody else taking it: the view halts the generator and sends the stop.
-    QTest::keyClick(view.get(), Qt::Key_Escape);
-    QVERIFY(!view->generator()->isRunning());
-    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::MotorOff) >= 1, kWaitMs);
-    QVERIFY(rig.barrier(1));
-    const int sent = rig.count(1, Command::MultiPositionLimited);
-    QTest::qWait(300);
-    QVERIFY(rig.barrier(1));
-    QCOMPARE(rig.count(1, Command::MultiPositionLimited), sent);
-    QCOMPARE(rig.count(1, Command::MultiPosition), 0);
-}
-
-void tst_ControlView::generatorStopsOnEscapeUnderWindowShortcut()
-{
-    // lkstudio takes Esc with an application-wide shortcut: the generator must stop anyway,
-    // and the shortcut must still fire (the view never swallows Esc).
-    SimRig rig;
-    QVERIFY(rig.open());
-    QWidget window;
-    auto *layout = new QVBoxLayout(&window);
-    auto *view = new ControlView(&window);
-    layout->addWidget(view);
-    auto *escape = new QShortcut(QKeySequence(Qt::Key_Escape), &window);
-    escape->setContext(Qt::ApplicationShortcut);
-    int fired = 0;
-    QObject::connect(escape, &QShortcut::activated, &window, [&] {
-        ++fired;
-        rig.session.emergencyStop();
-    });
-    view->setSession(&rig.session);
-    view->setConnected(true);
-    view->setDrive(1, rig.motor(1));
-    window.resize(1200, 800);
-    window.show();
-    QApplication::setActiveWindow(&window);
-    QVERIFY(QTest::qWaitForWindowActive(&window));
-    SetpointGenerator::Settings s;
-    s.target = SetpointGenerator::Target::Speed;
-    view->startGenerator(s);
-    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::Speed) >= 2, kWaitMs);
-    view->setFocus();
-    QTest::keyClick(&window, Qt::Key_Escape);
-    QVERIFY(!view->generator()->isRunning());
-    QCOMPARE(fired, 1);
-    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::MotorOff) >= 1, kWaitMs);
 }
 
 void tst_ControlView::generatorStopsOnDriveChange()

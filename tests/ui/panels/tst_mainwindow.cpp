@@ -7,7 +7,10 @@
 #include <drive/TuningView.h>
 #include <main/AppSettings.h>
 #include <main/BusController.h>
+#include <main/CommandedMotion.h>
 #include <main/DriveViews.h>
+#include <main/EmergencyStopControl.h>
+#include <main/LinkLossWatch.h>
 #include <main/MainWindow.h>
 #include <main/SimulatedBus.h>
 #include <panels/BusModel.h>
@@ -26,8 +29,11 @@
 #include <plot/PlotPanel.h>
 #include <plot/TelemetryStore.h>
 
+#include <drive/SetpointGenerator.h>
+#include <protocol/RequestBuilder.h>
 #include <protocol/StreamParser.h>
 #include <sim/SimBus.h>
+#include <sim/SimDrive.h>
 
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
@@ -67,6 +73,9 @@ private slots:
     void trafficFillsAndExportParses();
     void escapeSendsMotorOffToAllDrives();
     void escapeWorksFromAModalDialog();
+    void escapeDuringAScanStopsEveryDrive_data();
+    void escapeDuringAScanStopsEveryDrive();
+    void escapeHaltsTheGeneratorFirst();
     void clearErrorsSendsClearErrors();
     void lowVoltageIsAWarningYouCannotMiss();
     void unplugShowsDisconnectedAndDisablesSending();
@@ -80,6 +89,14 @@ private:
         return m_window->controller()->simulator();
     }
     QVector<int> motorOffCounts() const;
+    QString stopReport() const
+    {
+        return m_window->banner()->entryText(lk::ui::EmergencyStopControl::entryKey());
+    }
+    /// Command every simulated drive to turn at 360 dps (as the Control view would).
+    void spinAll();
+    bool allOff() const;
+    int inState(lk::sim::SimDrive::RunState state) const;
 
     QTemporaryDir m_dir;
     std::unique_ptr<lk::ui::AppSettings> m_settings;
@@ -107,6 +124,30 @@ QVector<int> tst_MainWindow::motorOffCounts() const
     for (int id : kSimIds)
         counts << sim()->requestCount(id, Command::MotorOff);
     return counts;
+}
+
+void tst_MainWindow::spinAll()
+{
+    for (int id : kSimIds)
+        m_window->controller()->session()->send(*lk::protocol::build::speed(id, 360).request);
+    QTRY_VERIFY_WITH_TIMEOUT(inState(lk::sim::SimDrive::RunState::Running) == kSimIds.size() &&
+                                 m_window->commandedMotion()->movingIds() == kSimIds,
+                             kWaitMs);
+}
+
+int tst_MainWindow::inState(lk::sim::SimDrive::RunState state) const
+{
+    int n = 0;
+    sim()->withBus([&n, state](lk::sim::SimBus &bus) {
+        for (int id : kSimIds)
+            n += bus.drive(id)->runState() == state ? 1 : 0;
+    });
+    return n;
+}
+
+bool tst_MainWindow::allOff() const
+{
+    return inState(lk::sim::SimDrive::RunState::Off) == kSimIds.size();
 }
 
 void tst_MainWindow::connectsToSimulator()
@@ -311,10 +352,17 @@ void tst_MainWindow::escapeSendsMotorOffToAllDrives()
     for (int i = 0; i < kSimIds.size(); ++i)
         QTRY_VERIFY_WITH_TIMEOUT(sim()->requestCount(kSimIds[i], Command::MotorOff) > before[i],
                                  kWaitMs);
-    QTRY_VERIFY_WITH_TIMEOUT(m_window->banner()->text().contains(QStringLiteral("1, 2, 3, 4")),
-                             kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(stopReport().contains(QStringLiteral("1, 2, 3, 4")), kWaitMs);
     QTest::qWait(300);
     QCOMPARE(stops.count(), 1); // one press, one stop
+    // The report stays until dismissed (it is not an 8-second Info line).
+    auto *banner = m_window->banner();
+    QCOMPARE(banner->entryLevel(lk::ui::EmergencyStopControl::entryKey()),
+             lk::ui::MessageBanner::Level::Info);
+    QVERIFY(banner->isVisible());
+    QTest::mouseClick(banner->entryCloseButton(lk::ui::EmergencyStopControl::entryKey()),
+                      Qt::LeftButton);
+    QVERIFY(!banner->hasEntry(lk::ui::EmergencyStopControl::entryKey()));
 }
 
 void tst_MainWindow::escapeWorksFromAModalDialog()
@@ -338,6 +386,57 @@ void tst_MainWindow::escapeWorksFromAModalDialog()
     QTest::qWait(300);
     QCOMPARE(stops.count(), 1);
     QVERIFY(!dialog.isVisible()); // and the dialog still closes on Esc
+}
+
+void tst_MainWindow::escapeDuringAScanStopsEveryDrive_data()
+{
+    QTest::addColumn<int>("delayMs");
+    for (int ms : {0, 10, 30, 60, 100, 150, 200})
+        QTest::newRow(qPrintable(QStringLiteral("Esc %1 ms after Scan").arg(ms))) << ms;
+}
+
+void tst_MainWindow::escapeDuringAScanStopsEveryDrive()
+{
+    // Four drives at 360 dps, Scan, then Esc before the scan has found them all: the scan
+    // has emptied the known drives, and still every drive must end with its motor off.
+    QFETCH(int, delayMs);
+    QTRY_VERIFY_WITH_TIMEOUT(model()->isPolling(), kWaitMs);
+    spinAll();
+    QSignalSpy scans(m_window->controller()->session(), &lk::bus::BusSession::scanFinished);
+    QSignalSpy reports(m_window->emergencyStopControl(), &lk::ui::EmergencyStopControl::reported);
+    QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("scanButton")),
+                      Qt::LeftButton);
+    if (delayMs > 0)
+        QTest::qWait(delayMs);
+    QTest::keyClick(m_window->views(), Qt::Key_Escape);
+    QTRY_COMPARE_WITH_TIMEOUT(reports.count(), 1, kWaitMs);
+    QTRY_COMPARE_WITH_TIMEOUT(scans.count(), 1, kWaitMs);
+    QVERIFY2(allOff(), qPrintable(stopReport()));
+    QVERIFY2(stopReport().contains(QStringLiteral("acknowledged by drive(s) 1, 2, 3, 4")),
+             qPrintable(stopReport()));
+    QVERIFY(!stopReport().contains(QStringLiteral("NO answer")));
+    QVERIFY(m_window->commandedMotion()->movingIds().isEmpty()); // every off was acknowledged
+    // Leave the bus as the next test expects it: every drive found and polled.
+    QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("scanButton")),
+                      Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(model()->ids(), kSimIds, kWaitMs);
+}
+
+void tst_MainWindow::escapeHaltsTheGeneratorFirst()
+{
+    QTRY_VERIFY_WITH_TIMEOUT(model()->isPolling(), kWaitMs);
+    model()->setCurrentId(1);
+    auto *control = m_window->driveViews()->control();
+    QTRY_COMPARE_WITH_TIMEOUT(control->driveId(), 1, kWaitMs);
+    lk::ui::SetpointGenerator::Settings s;
+    s.target = lk::ui::SetpointGenerator::Target::Speed;
+    control->startGenerator(s);
+    QVERIFY(control->generator()->isRunning());
+    QTest::keyClick(m_window->views(), Qt::Key_Escape);
+    QVERIFY(!control->generator()->isRunning()); // before the bus has said anything
+    QTRY_VERIFY_WITH_TIMEOUT(!stopReport().isEmpty(), kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(allOff(), kWaitMs);
+    model()->setCurrentId(2); // what the next tests expect
 }
 
 void tst_MainWindow::clearErrorsSendsClearErrors()
@@ -380,6 +479,9 @@ void tst_MainWindow::unplugShowsDisconnectedAndDisablesSending()
     auto *dash = m_window->dashboard();
     dash->refresh();
     const QString temperature = dash->readout(QStringLiteral("temperature"))->value();
+    // Drive 2 turns when the link drops.
+    m_window->controller()->session()->send(*lk::protocol::build::speed(2, 360).request);
+    QTRY_COMPARE_WITH_TIMEOUT(m_window->commandedMotion()->movingIds(), QVector<int>{2}, kWaitMs);
     QVERIFY(sim()->requestDisconnect());
     QTRY_COMPARE_WITH_TIMEOUT(model()->connection().state,
                               lk::transport::Transport::State::Disconnected, kWaitMs);
@@ -391,6 +493,26 @@ void tst_MainWindow::unplugShowsDisconnectedAndDisablesSending()
     QVERIFY(m_window->statusSummary()->linkText().startsWith(QStringLiteral("Disconnected")));
     QCOMPARE(m_window->banner()->level(), lk::ui::MessageBanner::Level::Warning);
     QVERIFY(m_window->banner()->isVisible());
+    // What may still be moving is said, per drive, and stays.
+    const QString warning = m_window->banner()->entryText(lk::ui::LinkLossWatch::entryKey(2));
+    QVERIFY2(warning.contains(QStringLiteral("Drive 2 may still be moving")) &&
+                 warning.contains(QStringLiteral("speed 360 dps")) &&
+                 warning.contains(QStringLiteral("input-timeout protection")),
+             qPrintable(warning));
+    QCOMPARE(m_window->linkLossWatch()->warnedIds(), QVector<int>{2});
+    QCOMPARE(m_window->driveViews()->control()->statusText(),
+             QStringLiteral("Disconnected: nothing can be sent."));
+    // Esc while disconnected: nothing can be sent, and the report says so and names drive 2.
+    QSignalSpy reports(m_window->emergencyStopControl(), &lk::ui::EmergencyStopControl::reported);
+    QTest::keyClick(m_window->views(), Qt::Key_Escape);
+    QTRY_COMPARE_WITH_TIMEOUT(reports.count(), 1, kWaitMs);
+    QVERIFY2(stopReport().contains(QStringLiteral("NOTHING could be sent")) &&
+                 stopReport().contains(QStringLiteral("Drive 2 (speed 360 dps")) &&
+                 !stopReport().contains(QStringLiteral("acknowledged")),
+             qPrintable(stopReport()));
+    QCOMPARE(m_window->banner()->entryLevel(lk::ui::EmergencyStopControl::entryKey()),
+             lk::ui::MessageBanner::Level::Error);
+    QVERIFY(m_window->banner()->hasEntry(lk::ui::LinkLossWatch::entryKey(2)));
     // Everything stays on screen, greyed once stale.
     QCOMPARE(model()->ids(), kSimIds);
     QCOMPARE(dash->readout(QStringLiteral("temperature"))->value(), temperature);
@@ -408,6 +530,18 @@ void tst_MainWindow::reconnectsWhenAllowed()
     QTest::mouseClick(box, Qt::LeftButton);
     QVERIFY(box->isChecked());
     QTRY_VERIFY_WITH_TIMEOUT(model()->canSend(), kWaitMs);
+    // The offline notice goes with the outage.
+    QTRY_VERIFY_WITH_TIMEOUT(m_window->driveViews()->control()->statusText() !=
+                                 QStringLiteral("Disconnected: nothing can be sent."),
+                             kWaitMs);
+    // Drive 2's warning stays until a state read shows it stopped: stop it, and it goes.
+    QSignalSpy reports(m_window->emergencyStopControl(), &lk::ui::EmergencyStopControl::reported);
+    QTest::keyClick(m_window->views(), Qt::Key_Escape);
+    QTRY_COMPARE_WITH_TIMEOUT(reports.count(), 1, kWaitMs);
+    QVERIFY2(stopReport().contains(QStringLiteral("acknowledged by")), qPrintable(stopReport()));
+    QTRY_VERIFY_WITH_TIMEOUT(!m_window->banner()->hasEntry(lk::ui::LinkLossWatch::entryKey(2)),
+                             kWaitMs);
+    QVERIFY(m_window->linkLossWatch()->warnedIds().isEmpty());
     // Polling resumes by itself: values come back to life.
     QTRY_VERIFY_WITH_TIMEOUT(
         !m_window->dashboard()->readout(QStringLiteral("temperature"))->isStale(), kWaitMs);
@@ -422,7 +556,9 @@ void tst_MainWindow::openFailureIsExplainedInABanner()
     c.port = m_dir.filePath("no-such-adapter");
     c.autoReconnect = false;
     m_window->connectTo(c);
-    QTRY_VERIFY_WITH_TIMEOUT(m_window->banner()->isVisible(), kWaitMs);
+    // The message line (reports of earlier tests may stay below it until dismissed).
+    QTRY_VERIFY_WITH_TIMEOUT(!m_window->banner()->text().isEmpty(), kWaitMs);
+    QVERIFY(m_window->banner()->isVisible());
     QCOMPARE(m_window->banner()->level(), lk::ui::MessageBanner::Level::Error);
     QVERIFY2(m_window->banner()->text().contains(QStringLiteral("does not exist")),
              qPrintable(m_window->banner()->text()));

@@ -166,8 +166,13 @@ void tst_SampleRing::pyramidMatchesScan()
     QFETCH(int, columns);
     SampleRing ring(capacity);
     fill(ring, appended, 3);
-    const QList<QPointF> scan = ring.decimate(t0, t1, columns, DecimationMethod::Scan);
-    const QList<QPointF> pyramid = ring.decimate(t0, t1, columns, DecimationMethod::Pyramid);
+    const lk::ui::LineSegments scanned = ring.decimate(t0, t1, columns, DecimationMethod::Scan);
+    const lk::ui::LineSegments pyramided =
+        ring.decimate(t0, t1, columns, DecimationMethod::Pyramid);
+    QCOMPARE(scanned.size(), 1); // regular samples: no gap, one line
+    QCOMPARE(pyramided.size(), 1);
+    const QList<QPointF> scan = scanned.first();
+    const QList<QPointF> pyramid = pyramided.first();
     QVERIFY(!scan.isEmpty());
     QCOMPARE(extremes(pyramid, t0, t1, columns), extremes(scan, t0, t1, columns));
     QVERIFY(pyramid.size() <= 2 * columns + 4);
@@ -184,7 +189,7 @@ void tst_SampleRing::pyramidKeepsSpike()
     for (int i = 0; i < 600000; ++i) {
         ring.append(i * 0.001, i == 431234 ? 50.0 : (i == 77777 ? -20.0 : 0.0));
     }
-    const QList<QPointF> out = ring.decimate(0, 600, 1400, DecimationMethod::Pyramid);
+    const QList<QPointF> out = ring.decimate(0, 600, 1400, DecimationMethod::Pyramid).value(0);
     bool up = false, down = false;
     for (const QPointF &p : out) {
         up = up || p.y() == 50.0;

@@ -150,7 +150,10 @@ void tst_TelemetryStore::queriesOverWrappedData()
     store.append(b);
     // Only 2.500 .. 3.499 is held; a window reaching back further starts at the oldest.
     const lk::ui::SampleRing *ring = store.ring(1, TelemetryChannel::Torque);
-    const QList<QPointF> points = store.decimated(1, TelemetryChannel::Torque, 0.0, 10.0, 100);
+    const lk::ui::LineSegments segments =
+        store.decimated(1, TelemetryChannel::Torque, 0.0, 10.0, 100);
+    QCOMPARE(segments.size(), 1);
+    const QList<QPointF> points = segments.first();
     QVERIFY(points.size() <= 2 * 100 + 4);
     QCOMPARE(points.first(), QPointF(ring->timeAt(0), 2500));
     QCOMPARE(points.last(), QPointF(ring->timeAt(999), 3499));
@@ -162,7 +165,7 @@ void tst_TelemetryStore::queriesOverWrappedData()
     QVERIFY(spike);
     // A window before the held data shows only the neighbour after it (the line's start).
     QCOMPARE(store.decimated(1, TelemetryChannel::Torque, 0, 2.4, 100),
-             QList<QPointF>{QPointF(ring->timeAt(0), 2500)});
+             lk::ui::LineSegments{{QPointF(ring->timeAt(0), 2500)}});
     QVERIFY(store.decimated(9, TelemetryChannel::Torque, 0, 10, 100).isEmpty());
 }
 

@@ -1,0 +1,165 @@
+// Who an emergency stop reaches: always every ID 1..32, the known and commanded ones first,
+// whatever a scan has done to the registry; a scan in progress ends inside the stop's call.
+
+#include "BusTestUtil.h"
+
+#include <bus/BusMetaTypes.h>
+#include <bus/BusSession.h>
+#include <bus/BusWorker.h>
+#include <bus/EmergencyStop.h>
+#include <bus/MotorRegistry.h>
+#include <bus/StopTargets.h>
+
+#include <QtTest/QSignalSpy>
+#include <QtTest/QTest>
+
+using namespace lk;
+using namespace lk::bus;
+using namespace lk::bustest;
+using protocol::Command;
+using protocol::Series;
+
+namespace {
+QVector<int> range(int first, int last, const QVector<int> &except = {})
+{
+    QVector<int> ids;
+    for (int id = first; id <= last; ++id) {
+        if (!except.contains(id))
+            ids.append(id);
+    }
+    return ids;
+}
+} // namespace
+
+class tst_EmergencyTargets : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { registerBusMetaTypes(); }
+    void targetsAlwaysCoverEveryId_data();
+    void targetsAlwaysCoverEveryId();
+    void registryPutsKnownFirst();
+    void onlyKnownAndCommandedAreRetried();
+    void stopDuringScanReachesEveryDrive_data();
+    void stopDuringScanReachesEveryDrive();
+    void closedSessionReportsEveryIdSilent();
+};
+
+void tst_EmergencyTargets::targetsAlwaysCoverEveryId_data()
+{
+    QTest::addColumn<QVector<int>>("priority");
+    QTest::addColumn<QList<int>>("known");
+    QTest::addColumn<QVector<int>>("first");
+
+    QTest::newRow("nothing known") << QVector<int>{} << QList<int>{} << QVector<int>{};
+    QTest::newRow("known only") << QVector<int>{} << QList<int>{17, 3} << QVector<int>{3, 17};
+    QTest::newRow("commanded, not known (scan cleared the registry)")
+        << QVector<int>{4, 2, 3} << QList<int>{1} << QVector<int>{1, 2, 3, 4};
+    QTest::newRow("duplicates and invalid IDs")
+        << QVector<int>{0, 5, 33, 5, -1} << QList<int>{5, 32} << QVector<int>{5, 32};
+}
+
+void tst_EmergencyTargets::targetsAlwaysCoverEveryId()
+{
+    QFETCH(QVector<int>, priority);
+    QFETCH(QList<int>, known);
+    QFETCH(QVector<int>, first);
+    const StopTargets t = StopTargets::of(priority, known);
+    QCOMPARE(t.first, first);
+    QCOMPARE(t.others, range(1, 32, first));
+    QCOMPARE(t.all().size(), 32);
+    QCOMPARE(t.all().mid(0, first.size()), first); // known and commanded go first
+}
+
+void tst_EmergencyTargets::registryPutsKnownFirst()
+{
+    MotorRegistry r;
+    r.noteSeen(9);
+    r.setSeries(30, Series::MS);
+    const StopTargets t = r.emergencyTargets({2});
+    QCOMPARE(t.first, (QVector<int>{2, 9, 30}));
+    QCOMPARE(t.all().size(), 32);
+    r.forget(1, 32); // what a scan does before it finds anything
+    QCOMPARE(r.emergencyTargets({}).all(), range(1, 32));
+}
+
+void tst_EmergencyTargets::onlyKnownAndCommandedAreRetried()
+{
+    const EmergencyStop stop(1, StopTargets::of({4}, {}), 2);
+    const QVector<BusRequest> requests = stop.requests();
+    QCOMPARE(requests.size(), 32);
+    QCOMPARE(int(requests.first().request.id), 4);
+    for (const BusRequest &r : requests) {
+        QCOMPARE(r.request.command, Command::MotorOff);
+        QCOMPARE(r.priority, Priority::Emergency);
+        QCOMPARE(r.retries, r.request.id == 4 ? 2 : 0);
+    }
+    // Nothing known: any ID may be a drive, so every one is asked again when silent.
+    for (const BusRequest &r : EmergencyStop(2, StopTargets::of({}, {}), 2).requests())
+        QCOMPARE(r.retries, 2);
+}
+
+void tst_EmergencyTargets::stopDuringScanReachesEveryDrive_data()
+{
+    QTest::addColumn<int>("probesBeforeStop");
+    for (int n : {0, 1, 2, 3, 5, 8})
+        QTest::newRow(qPrintable(QStringLiteral("after %1 scan request(s)").arg(n))) << n;
+}
+
+void tst_EmergencyTargets::stopDuringScanReachesEveryDrive()
+{
+    // Four drives; the scan has emptied the registry and found some of them (or none) when
+    // the stop comes: every drive must still hear motor_off, and the scan must end with it.
+    QFETCH(int, probesBeforeStop);
+    BusConfig c = relaxedConfig();
+    c.minMarginMs = c.initialMarginMs = 15;
+    WorkerRig rig(
+        [](FakeTransport &t) {
+            for (int id = 1; id <= 4; ++id)
+                t.drives().add(id, Series::MF);
+            t.setReplyDelayMs(1);
+        },
+        c);
+    QTRY_VERIFY(rig.worker->isOpen());
+    QSignalSpy scanned(rig.worker.get(), &BusWorker::scanFinished);
+    QSignalSpy stopped(rig.worker.get(), &BusWorker::emergencyStopFinished);
+    rig.worker->forgetMotors();
+    rig.worker->scan({});
+    if (probesBeforeStop > 0)
+        QTRY_VERIFY(rig.log->writtenCopy().size() >= probesBeforeStop);
+    rig.worker->emergencyStop(42, {});
+    QVERIFY(!rig.worker->isScanning() || rig.worker->isBusy()); // ends with the probe in flight
+    QTRY_COMPARE_WITH_TIMEOUT(stopped.size(), 1, 20000);
+    QCOMPARE(stopped.at(0).at(1).value<QVector<int>>(), (QVector<int>{1, 2, 3, 4}));
+    QTRY_COMPARE(scanned.size(), 1);
+    QVERIFY(scanned.at(0).at(0).value<ScanSummary>().cancelled);
+
+    const auto written = rig.writtenRequests();
+    const auto firstOff = std::find_if(written.cbegin(), written.cend(),
+                                       [](const auto &w) { return w.first == Command::MotorOff; });
+    QVERIFY(firstOff != written.cend());
+    QSet<int> offs;
+    for (auto it = firstOff; it != written.cend(); ++it) {
+        // No scan probe after the stop began: the scan ended in the stop's own call.
+        QVERIFY2(it->first == Command::MotorOff,
+                 qPrintable(QStringLiteral("0x%1 to %2 after the stop")
+                                .arg(quint8(it->first), 2, 16)
+                                .arg(it->second)));
+        offs.insert(it->second);
+    }
+    QCOMPARE(offs.size(), 32);
+}
+
+void tst_EmergencyTargets::closedSessionReportsEveryIdSilent()
+{
+    BusSession session; // never opened: nothing can be sent
+    QSignalSpy finished(&session, &BusSession::emergencyStopFinished);
+    session.emergencyStop({3});
+    QTRY_COMPARE(finished.size(), 1);
+    QVERIFY(finished.at(0).at(1).value<QVector<int>>().isEmpty());
+    const QVector<int> silent = finished.at(0).at(2).value<QVector<int>>();
+    QCOMPARE(silent.size(), 32);
+    QCOMPARE(silent.first(), 3);
+}
+
+QTEST_GUILESS_MAIN(tst_EmergencyTargets)
+#include "tst_emergencytargets.moc"
