@@ -85,7 +85,7 @@ QString ControlCommand::usage() const
                "is read and the end point checked too).\n"
                "\n"
                "MODE and VALUE:\n"
-               "  open-loop POWER        open_loop, -1000..1000 (MS only)\n"
+               "  open-loop POWER        open_loop, -850..850 (MS only; V2.35 narrowed V2.3's 1000)\n"
                "  torque IQ_A            torque current in A (MF, MG, MH)\n"
                "  speed DPS              speed in deg/s (negative: counter-clockwise)\n"
                "  multi-position DEG     multi-turn target angle in deg (absolute)\n"
