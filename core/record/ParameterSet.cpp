@@ -109,6 +109,17 @@ ParameterFileError keyError(Kind kind, const QString &key, const Field &field,
     return e;
 }
 
+// A text key whose text means nothing here (an unknown series, a date that is not one).
+ParameterFileError textError(Kind kind, const QString &key, const QJsonValue &found)
+{
+    ParameterFileError e;
+    e.kind = kind;
+    e.key = key;
+    e.expected = ValueType::Text;
+    e.found = jsonText(found);
+    return e;
+}
+
 bool checkValue(const QJsonValue &v, const Field &f, const QString &key, ParameterFileError *error)
 {
     bool typeOk = false;
@@ -260,14 +271,9 @@ bool readDrive(const QJsonObject &d, ParameterSet &set, ParameterFileError *erro
     const QJsonValue series = d.value(QStringLiteral("series"));
     if (series.isString()) {
         set.series = protocol::seriesFromName(series.toString());
-        if (!set.series) {
-            ParameterFileError e;
-            e.kind = Kind::UnknownSeries;
-            e.key = QStringLiteral("drive.series");
-            e.expected = ValueType::Text;
-            e.found = jsonText(series);
-            return refuse(error, e);
-        }
+        if (!set.series)
+            return refuse(error,
+                          textError(Kind::UnknownSeries, QStringLiteral("drive.series"), series));
     }
     set.hardwareVersion = d.value(QStringLiteral("hardware_version")).toDouble();
     set.firmwareVersion = d.value(QStringLiteral("firmware_version")).toDouble();
@@ -283,14 +289,9 @@ bool readBody(const QJsonObject &root, ParameterSet &set, ParameterFileError *er
     const QJsonValue savedAt = root.value(QStringLiteral("saved_at"));
     if (savedAt.isString()) {
         set.savedAt = QDateTime::fromString(savedAt.toString(), Qt::ISODateWithMs);
-        if (!set.savedAt.isValid()) {
-            ParameterFileError e;
-            e.kind = Kind::BadTimestamp;
-            e.key = QStringLiteral("saved_at");
-            e.expected = ValueType::Text;
-            e.found = jsonText(savedAt);
-            return refuse(error, e);
-        }
+        if (!set.savedAt.isValid())
+            return refuse(error,
+                          textError(Kind::BadTimestamp, QStringLiteral("saved_at"), savedAt));
     }
     const QJsonObject pid = root.value(QStringLiteral("pid")).toObject();
     if (!checkObject(pid, QStringLiteral("pid."), pidFields(), error))

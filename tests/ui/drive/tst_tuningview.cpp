@@ -102,8 +102,6 @@ private slots:
     void switchingDrivesCarriesNoEdits();
     void reconnectionNeedsFreshRead();
     void loadNeedsCompleteRead();
-    void badFileNamesKeyAndRange_data();
-    void badFileNamesKeyAndRange();
     void ramWriteIsLostOnRestart();
     void ignoredAccelerationIsShownAsMismatch();
     void romWriteAsksAndSurvivesRestart();
@@ -113,8 +111,8 @@ private slots:
     void plotFollowsEditedLoop_data();
     void plotFollowsEditedLoop();
     void saveAndLoadParameters();
-    void corruptFileChangesNothing_data();
-    void corruptFileChangesNothing();
+    void badFileChangesNothing_data();
+    void badFileChangesNothing();
     void disconnectedDisablesWrites();
 };
 
@@ -500,49 +498,21 @@ void tst_TuningView::saveAndLoadParameters()
     QCOMPARE(rig.count(1, Command::WriteAccelRam), 0);
 }
 
-void tst_TuningView::corruptFileChangesNothing_data()
+void tst_TuningView::badFileChangesNothing_data()
 {
-    QTest::addColumn<QByteArray>("content");
-    QTest::newRow("empty") << QByteArray();
-    QTest::newRow("not json") << QByteArray("PID=1,2,3");
-    QTest::newRow("truncated") << QByteArray(R"({"format":"lkstudio-parameters","version":1,"dr)");
-    QTest::newRow("other format") << QByteArray(R"({"format":"something","version":1})");
-    QTest::newRow("gain out of range")
-        << QByteArray(R"({"format":"lkstudio-parameters","version":1,"drive":{"id":1},)"
-                      R"("pid":{"angle_kp":300,"angle_ki":1,"speed_kp":1,"speed_ki":1,)"
-                      R"("iq_kp":1,"iq_ki":1}})");
-    QTest::newRow("gain missing") << QByteArray(
-        R"({"format":"lkstudio-parameters","version":1,"drive":{"id":1},)"
-        R"("pid":{"angle_kp":3}})");
-}
-
-void tst_TuningView::corruptFileChangesNothing()
-{
-    QFETCH(QByteArray, content);
-    SimRig rig;
-    QVERIFY(rig.open());
-    auto view = openView(rig, 1);
-    QVERIFY(view);
-    QTemporaryDir dir;
-    const QString path = dir.filePath(QStringLiteral("bad.json"));
-    QFile f(path);
-    QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write(content);
-    f.close();
-    const PidGains pending = view->table()->pending()->pid;
-    const qint32 accel = view->table()->pending()->accelDps2;
-    QVERIFY(!view->loadParameters(path).isEmpty());
-    QCOMPARE(view->table()->pending()->pid, pending);
-    QCOMPARE(view->table()->pending()->accelDps2, accel);
-    QVERIFY(view->statusText().contains(QStringLiteral("Nothing was changed")));
-}
-
-void tst_TuningView::badFileNamesKeyAndRange_data()
-{
+    // Each refusal names the key and what it must hold (type and range).
     QTest::addColumn<QByteArray>("content");
     QTest::addColumn<QString>("says");
     const QByteArray head = R"({"format":"lkstudio-parameters","version":1,"drive":{"id":1},)";
     const QByteArray gains = R"("angle_ki":1,"speed_kp":1,"speed_ki":1,"iq_kp":1,"iq_ki":1)";
+    QTest::newRow("empty") << QByteArray() << "not valid JSON";
+    QTest::newRow("not json") << QByteArray("PID=1,2,3") << "not valid JSON";
+    QTest::newRow("truncated") << QByteArray(R"({"format":"lkstudio-parameters","version":1,"dr)")
+                               << "not valid JSON";
+    QTest::newRow("other format") << QByteArray(R"({"format":"something","version":1})")
+                                  << "not an LK Servo Studio parameter file";
+    QTest::newRow("gain missing") << head + R"("pid":{"angle_kp":3}})"
+                                  << "pid.angle_ki is missing: it must be an integer in 0..255";
     QTest::newRow("unknown key") << head + R"("pid":{"angle_kp":1,)" + gains + R"(,"iq_kd":4}})"
                                  << "pid.iq_kd is not a key of a parameter file";
     QTest::newRow("duplicate key")
@@ -558,7 +528,7 @@ void tst_TuningView::badFileNamesKeyAndRange_data()
         << "accel_dps2 is -1, out of range: it must be an integer in 0..2147483647";
 }
 
-void tst_TuningView::badFileNamesKeyAndRange()
+void tst_TuningView::badFileChangesNothing()
 {
     QFETCH(QByteArray, content);
     QFETCH(QString, says);
@@ -573,10 +543,13 @@ void tst_TuningView::badFileNamesKeyAndRange()
     f.write(content);
     f.close();
     const PidGains pending = view->table()->pending()->pid;
+    const qint32 accel = view->table()->pending()->accelDps2;
     const QString error = view->loadParameters(path);
     QVERIFY2(error.contains(says), qPrintable(error));
     QVERIFY2(view->statusText().contains(says), qPrintable(view->statusText()));
+    QVERIFY(view->statusText().contains(QStringLiteral("Nothing was changed")));
     QCOMPARE(view->table()->pending()->pid, pending);
+    QCOMPARE(view->table()->pending()->accelDps2, accel);
 }
 
 void tst_TuningView::disconnectedDisablesWrites()
