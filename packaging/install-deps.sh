@@ -10,6 +10,7 @@ packages=(
     qt6-qpa-plugins libgl-dev
     clang-format xvfb xauth appstream desktop-file-utils dpkg-dev file help2man
     fonts-noto-cjk
+    clang libclang-rt-14-dev
 )
 
 missing=()
