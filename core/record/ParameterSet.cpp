@@ -243,7 +243,10 @@ bool readHeader(const QJsonObject &root, ParameterFileError *error)
             e.found = jsonText(format);
         return refuse(error, e);
     }
-    const Field &versionField = rootFields().at(1);
+    // Checked before the other keys: a newer format may have keys this one does not know.
+    const Field &versionField =
+        *std::find_if(rootFields().begin(), rootFields().end(),
+                      [](const Field &f) { return qstrcmp(f.key, "version") == 0; });
     const QJsonValue version = root.value(QLatin1String(versionField.key));
     if (version.isUndefined())
         return refuse(error, keyError(Kind::MissingKey, QLatin1String(versionField.key),
