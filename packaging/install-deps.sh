@@ -13,6 +13,8 @@ packages=(
     fonts-noto-cjk
     # lkstudio on Wayland (tst_lkstudioprocess starts it under a headless weston)
     qt6-wayland weston
+    # the fuzz target (CI builds it with clang and libFuzzer)
+    clang libclang-rt-14-dev
 )
 
 missing=()

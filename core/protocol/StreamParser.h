@@ -32,8 +32,10 @@ struct ParseEvent {
 ///
 /// Feed it chunks of any size; it calls the sink for every frame or fault, in stream order,
 /// and resynchronises on the next 0x3E after any fault. Every input byte is reported exactly
-/// once (in a frame or in an error). It holds at most one partial frame and one 4 KiB run of
-/// garbage between calls, never reads past its buffer, and never decodes a short frame.
+/// once (in a frame or in an error). Between calls it holds at most one partial frame (fewer
+/// than kMaxFrameSize bytes) and one run of garbage (fewer than 4096 bytes: a run that reaches
+/// 4 KiB is reported), so pendingBytes() stays below kMaxFrameSize + 4096; it never reads past
+/// its buffer and never decodes a short frame.
 /// A run of garbage is reported when the next 0x3E ends it (or at 4 KiB, or at finish()), so
 /// the events do not depend on how the input was chunked. Events for BadLength,
 /// UnknownCommand and BadDataChecksum carry the frame's command and ID.

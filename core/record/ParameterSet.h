@@ -12,10 +12,43 @@
 
 namespace lk::record {
 
+/// Why a parameter file was refused. Core names the fault, the key and the allowed range;
+/// the UI words it (ui/drive/ParameterFileText).
+struct ParameterFileError {
+    enum class Kind {
+        CannotRead,    ///< detail: the file system's reason
+        TooLarge,      ///< bigger than any parameter file (max: the limit in bytes)
+        NotJson,       ///< detail: the JSON parser's reason, offset: where
+        NotObject,     ///< the document is not a JSON object
+        WrongFormat,   ///< "format" is not "lkstudio-parameters" (found: what it is)
+        NewerVersion,  ///< found: the file's version, max: the newest this release reads
+        MissingKey,    ///< key
+        UnknownKey,    ///< key: a key this format does not have
+        DuplicateKey,  ///< key: a key given twice in one object
+        WrongType,     ///< key, expected (and min..max for numbers), found
+        OutOfRange,    ///< key, expected, min..max, found
+        UnknownSeries, ///< key, found: not MS, MF, MG or MH
+        BadTimestamp,  ///< key, found: not an ISO 8601 date and time
+    };
+    /// What a key must hold.
+    enum class ValueType { Integer, Number, Text, Object };
+
+    Kind kind = Kind::NotJson;
+    QString key; ///< dotted path from the top, e.g. "pid.iq_kp"
+    ValueType expected = ValueType::Integer;
+    double min = 0; ///< allowed range (Integer, Number), inclusive
+    double max = 0;
+    QString found;      ///< what the file holds at the key, as JSON text
+    qint64 offset = -1; ///< NotJson: byte offset of the fault
+    QString detail;     ///< CannotRead, NotJson: the reason from the system or the parser
+    QString path;       ///< the file, when loaded from one
+};
+
 /// A drive's tunable parameters with the identity of the drive they came from: the file a
 /// technician saves before tuning and restores afterwards (JSON, see toJson()).
 struct ParameterSet {
     static constexpr int kFormatVersion = 1;
+    static constexpr char kFormatName[] = "lkstudio-parameters"; ///< the "format" value
 
     int driveId = 1;
     QString driverName;
@@ -32,15 +65,17 @@ struct ParameterSet {
     QJsonObject toJson() const;
     QByteArray toJsonBytes() const; ///< indented, UTF-8
 
-    /// Reads a document written by toJson(). Anything missing, of the wrong type or out of
-    /// range is refused (nullopt) with one English sentence naming the field in `error`.
-    static std::optional<ParameterSet> fromJson(const QByteArray &bytes, QString *error = nullptr);
+    /// Reads a document written by toJson(). Anything missing, unknown, given twice, of the
+    /// wrong type or out of range is refused (nullopt) with `error` naming the key and range.
+    static std::optional<ParameterSet> fromJson(const QByteArray &bytes,
+                                                ParameterFileError *error = nullptr);
 
     /// Writes the file atomically (QSaveFile): the path holds either the whole new file or
     /// what it held before. Returns an error text, empty on success.
     QString save(const QString &path) const;
     /// Reads a file; nullopt with `error` set when it cannot be read or is not a valid set.
-    static std::optional<ParameterSet> load(const QString &path, QString *error = nullptr);
+    static std::optional<ParameterSet> load(const QString &path,
+                                            ParameterFileError *error = nullptr);
 };
 
 /// Writes `bytes` to `path` atomically (QSaveFile). Returns an error text, empty on success.

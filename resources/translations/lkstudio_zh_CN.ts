@@ -2246,6 +2246,14 @@
             <source>0..255</source>
             <translation>0..255</translation>
         </message>
+        <message>
+            <source>First read</source>
+            <translation>首次读取</translation>
+        </message>
+        <message>
+            <source>unknown</source>
+            <translation>未知</translation>
+        </message>
     </context>
     <context>
         <name>lk::ui::PlotExporter</name>
@@ -3352,6 +3360,54 @@
             <source>Careful: the file comes from a %1, this drive is a %2.</source>
             <translation>注意：文件来自 %1，而此驱动是 %2。</translation>
         </message>
+        <message>
+            <source>Load a parameter file into the pending edit; nothing is written. Needs a complete read of the drive first.</source>
+            <translation>把参数文件载入待写入区；不会写入任何值。需要先完整读取驱动。</translation>
+        </message>
+        <message>
+            <source>Disconnected: the values shown are the last ones read. Tuning resumes after the drive has been read again on the next connection.</source>
+            <translation>已断开：显示的是最后读取的数值。重新连接并再次读取驱动后才能继续调参。</translation>
+        </message>
+        <message>
+            <source>Could not read drive %1: %2 Editing and writing stay off until both the gains and the acceleration have been read; press Read from drive to try again.</source>
+            <translation>无法读取驱动 %1：%2 在 PID 参数和加速度都读取成功之前，编辑和写入保持禁用；请按“从驱动读取”重试。</translation>
+        </message>
+        <message>
+            <source>Your unsent edit of drive %1 is back in the pending edit; values that differ from the drive are highlighted.</source>
+            <translation>驱动 %1 未发送的编辑已放回待写入区；与驱动不同的值以高亮显示。</translation>
+        </message>
+        <message>
+            <source>Nothing was sent: the drive's gains and acceleration have not both been read on this connection. Read from drive first.</source>
+            <translation>未发送任何内容：本次连接中尚未同时读取到驱动的 PID 参数和加速度。请先从驱动读取。</translation>
+        </message>
+        <message>
+            <source>Restore cancelled: nothing was sent.</source>
+            <translation>已取消恢复：未发送任何内容。</translation>
+        </message>
+        <message>
+            <source>Sent to drive %1, but the read-back did not complete (below).</source>
+            <translation>已发送到驱动 %1，但回读未完成（见下方）。</translation>
+        </message>
+        <message>
+            <source>Restore values read at %1…</source>
+            <translation>恢复 %1 读取的值…</translation>
+        </message>
+        <message>
+            <source>Write the gains and acceleration first read from this drive at %1 back to its RAM (asks first), then read back.</source>
+            <translation>把 %1 首次从此驱动读取的 PID 参数和加速度写回其 RAM（会先询问），然后回读。</translation>
+        </message>
+        <message>
+            <source>Restore values first read…</source>
+            <translation>恢复首次读取的值…</translation>
+        </message>
+        <message>
+            <source>Writes the values of the first complete read of this drive on this connection back to its RAM (asks first).</source>
+            <translation>把本次连接中首次完整读取此驱动得到的值写回其 RAM（会先询问）。</translation>
+        </message>
+        <message>
+            <source>Nothing was loaded: a file is loaded against the drive's values, so read the drive's gains and acceleration first.</source>
+            <translation>未载入任何内容：文件要与驱动的值对照载入，请先读取驱动的 PID 参数和加速度。</translation>
+        </message>
     </context>
     <context>
         <name>main</name>
@@ -3488,6 +3544,144 @@
         <message>
             <source>&lt;b&gt;Drive %1 may still be moving&lt;/b&gt;: last command %2 at %3; it stops by itself only if its input-timeout protection is set.</source>
             <translation>&lt;b&gt;驱动 %1 可能仍在运动&lt;/b&gt;：最后的命令是 %3 时的 %2；只有设置了输入超时保护，它才会自行停止。</translation>
+        </message>
+    </context>
+    <context>
+        <name>lk::ui::ParameterFileText</name>
+        <message>
+            <source>an integer in %1..%2</source>
+            <translation>%1..%2 之间的整数</translation>
+        </message>
+        <message>
+            <source>a number in %1..%2</source>
+            <translation>%1..%2 之间的数值</translation>
+        </message>
+        <message>
+            <source>text in quotes</source>
+            <translation>带引号的文本</translation>
+        </message>
+        <message>
+            <source>an object ({ ... })</source>
+            <translation>对象（{ ... }）</translation>
+        </message>
+        <message>
+            <source>cannot read %1: %2</source>
+            <translation>无法读取 %1：%2</translation>
+        </message>
+        <message>
+            <source>%1 is too large to be a parameter file (more than %2 bytes)</source>
+            <translation>%1 太大，不可能是参数文件（超过 %2 字节）</translation>
+        </message>
+        <message>
+            <source>not valid JSON (%1 at byte %2)</source>
+            <translation>不是有效的 JSON（%1，位于第 %2 字节）</translation>
+        </message>
+        <message>
+            <source>not a JSON object</source>
+            <translation>不是 JSON 对象</translation>
+        </message>
+        <message>
+            <source>not an LK Servo Studio parameter file (format is %1, not "%2")</source>
+            <translation>不是 LK Servo Studio 参数文件（format 为 %1，而不是“%2”）</translation>
+        </message>
+        <message>
+            <source>missing</source>
+            <translation>缺失</translation>
+        </message>
+        <message>
+            <source>written by a newer release (format version %1, this one reads up to %2)</source>
+            <translation>由更新的版本写入（格式版本 %1，本版本最高只能读取 %2）</translation>
+        </message>
+        <message>
+            <source>%1 is missing: it must be %2</source>
+            <translation>缺少 %1：它必须是%2</translation>
+        </message>
+        <message>
+            <source>%1 is not a key of a parameter file (a typing error?)</source>
+            <translation>%1 不是参数文件中的键（拼写错误？）</translation>
+        </message>
+        <message>
+            <source>%1 is given twice: which one is meant is not known</source>
+            <translation>%1 出现了两次：无法确定以哪一个为准</translation>
+        </message>
+        <message>
+            <source>%1 is %2: it must be %3</source>
+            <translation>%1 为 %2：它必须是%3</translation>
+        </message>
+        <message>
+            <source>%1 is %2, out of range: it must be %3</source>
+            <translation>%1 为 %2，超出范围：它必须是%3</translation>
+        </message>
+        <message>
+            <source>%1 is %2: it must be MS, MF, MG or MH</source>
+            <translation>%1 为 %2：它必须是 MS、MF、MG 或 MH</translation>
+        </message>
+        <message>
+            <source>%1 is %2: it must be a date and time such as "2026-05-04T03:02:01.000Z"</source>
+            <translation>%1 为 %2：它必须是日期时间，例如“2026-05-04T03:02:01.000Z”</translation>
+        </message>
+    </context>
+    <context>
+        <name>lk::ui::TuningText</name>
+        <message>
+            <source>Write gains to ROM</source>
+            <translation>写入 PID 参数到 ROM</translation>
+        </message>
+        <message>
+            <source>Write these PID gains to the ROM of drive %1?
+%2 (angle, speed, iq Kp/Ki)</source>
+            <translation>将这些 PID 参数写入驱动 %1 的 ROM？
+%2（角度、速度、iq 的 Kp/Ki）</translation>
+        </message>
+        <message>
+            <source>ROM is the drive's flash memory: each write wears it, and the gains stay after power-off. Try them in RAM first; write to ROM once you are satisfied. Acceleration is written to RAM only (V2.3 has no ROM command for it). Afterwards the gains are read back from RAM; V2.3 has no command that reads ROM, so the ROM copy itself cannot be checked.</source>
+            <translation>ROM 是驱动的闪存：每次写入都会磨损，参数断电后仍保留。请先在 RAM 中试用，满意后再写入 ROM。加速度只写入 RAM（V2.3 没有对应的 ROM 命令）。写入后会从 RAM 回读 PID 参数；V2.3 没有读取 ROM 的命令，因此无法核对 ROM 中的副本本身。</translation>
+        </message>
+        <message>
+            <source>Write to ROM</source>
+            <translation>写入 ROM</translation>
+        </message>
+        <message>
+            <source>Restore values read at %1</source>
+            <translation>恢复 %1 读取的值</translation>
+        </message>
+        <message>
+            <source>Write the values first read from drive %1 at %2 to its RAM now?
+Gains %3 (angle, speed, iq Kp/Ki), acceleration %4 dps/s.</source>
+            <translation>现在把 %2 首次从驱动 %1 读取的值写入其 RAM？
+PID 参数 %3（角度、速度、iq 的 Kp/Ki），加速度 %4 dps/s。</translation>
+        </message>
+        <message>
+            <source>This writes to the drive: its RAM gains and acceleration are replaced at once, and so is your pending edit. ROM is not touched; RAM is lost at power-off.</source>
+            <translation>这会写入驱动：其 RAM 中的 PID 参数和加速度会立即被替换，待写入区的编辑也会被替换。ROM 不受影响；RAM 断电丢失。</translation>
+        </message>
+        <message>
+            <source>Write to RAM</source>
+            <translation>写入 RAM</translation>
+        </message>
+        <message>
+            <source>RAM holds gains %1 after %2 was written to ROM: either the write did not land or this drive takes ROM values into RAM only at power-on. V2.3 cannot read ROM, so which of the two is not known.</source>
+            <translation>将 %2 写入 ROM 后，RAM 中的参数为 %1：要么写入未生效，要么此驱动仅在上电时把 ROM 值载入 RAM。V2.3 无法读取 ROM，因此无法判断是哪一种。</translation>
+        </message>
+        <message>
+            <source>The drive holds gains %1 after %2 was written.</source>
+            <translation>写入 %2 后，驱动保存的参数为 %1。</translation>
+        </message>
+        <message>
+            <source>The drive reports acceleration %1 dps/s after %2 dps/s was written: some firmware ignores 0x34 or reads 0 with 0x33 (see ERRATA), so the acceleration in effect is not known.</source>
+            <translation>写入 %2 dps/s 后，驱动报告的加速度为 %1 dps/s：部分固件忽略 0x34 或用 0x33 读出 0（见 ERRATA），因此实际生效的加速度未知。</translation>
+        </message>
+        <message>
+            <source>The read-back did not complete: what the drive holds is not known. Editing and writing stay off until Read from drive succeeds.</source>
+            <translation>回读未完成：驱动实际保存的值未知。在“从驱动读取”成功之前，编辑和写入保持禁用。</translation>
+        </message>
+        <message>
+            <source>Written to the ROM of drive %1. Verified: the gains read back from RAM equal what was sent. Not verifiable: this drive generation (V2.3) cannot read ROM; the drive loads the ROM values at the next power-on, and only a read after that shows them. Acceleration went to RAM only.</source>
+            <translation>已写入驱动 %1 的 ROM。已核实：从 RAM 回读的 PID 参数与发送的一致。无法核实：此代驱动（V2.3）无法读取 ROM；驱动在下次上电时载入 ROM 中的值，只有之后的读取才能显示它们。加速度只写入了 RAM。</translation>
+        </message>
+        <message>
+            <source>Written to the RAM of drive %1 and read back: the drive holds what was sent. Lost at power-off unless written to ROM.</source>
+            <translation>已写入驱动 %1 的 RAM 并回读：驱动保存的就是发送的值。除非写入 ROM，否则断电丢失。</translation>
         </message>
     </context>
 </TS>

@@ -26,6 +26,15 @@ QString dash()
 {
     return QStringLiteral("\u2013");
 }
+
+// An edit field's value while the pending edit is unknown: below every real value, shown as
+// the special value text.
+constexpr int kUnknown = -1;
+
+int maximumOf(ParameterTable::Row row)
+{
+    return row == ParameterTable::Accel ? std::numeric_limits<qint32>::max() : kGainMax;
+}
 } // namespace
 
 ParameterTable::ParameterTable(QWidget *parent) : QWidget(parent), m_rows(kRowCount)
@@ -33,7 +42,7 @@ ParameterTable::ParameterTable(QWidget *parent) : QWidget(parent), m_rows(kRowCo
     auto *grid = new QGridLayout(this);
     grid->setContentsMargins(0, 0, 0, 0);
     grid->setHorizontalSpacing(12);
-    const QString headers[] = {tr("Parameter"), tr("At selection"), tr("Drive holds"),
+    const QString headers[] = {tr("Parameter"), tr("First read"), tr("Drive holds"),
                                tr("Pending edit")};
     for (int c = 0; c < 4; ++c) {
         auto *h = new QLabel(QStringLiteral("<b>%1</b>").arg(headers[c].toHtmlEscaped()), this);
@@ -56,20 +65,22 @@ void ParameterTable::buildRow(Row row, const QString &name, int gridRow)
     RowWidgets &w = m_rows[row];
     w.name = new QLabel(name, this);
     w.original = new QLabel(dash(), this);
-    w.holds = new QLabel(dash(), this);
+    w.holds = new QLabel(tr("unknown"), this);
     w.edit = new QSpinBox(this);
     w.edit->setObjectName(QStringLiteral("pending_") + rowKey(row));
     w.holds->setObjectName(QStringLiteral("holds_") + rowKey(row));
     w.original->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     w.holds->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    w.edit->setRange(kUnknown, maximumOf(row));
+    w.edit->setValue(kUnknown);
+    w.edit->setSpecialValueText(tr("unknown"));
+    w.edit->setEnabled(false);
     if (row == Accel) {
-        w.edit->setRange(0, std::numeric_limits<qint32>::max());
         w.edit->setSuffix(tr(" dps/s"));
         w.edit->setSingleStep(1000);
         w.edit->setToolTip(tr("0x34 writes acceleration to RAM only: protocol V2.3 has no ROM "
                               "command for it. Some firmware ignores it (read back shows)."));
     } else {
-        w.edit->setRange(0, kGainMax);
         w.edit->setToolTip(tr("0..255"));
     }
     w.edit->setKeyboardTracking(false);
@@ -115,54 +126,66 @@ void ParameterTable::setHolds(const std::optional<protocol::PidGains> &pid,
         else if (r != Accel && pid)
             v = gainOf(*pid, r);
         m_rows[r].holdsValue = v;
-        m_rows[r].holds->setText(v ? QString::number(*v) : dash());
+        m_rows[r].holds->setText(v ? QString::number(*v) : tr("unknown"));
     }
     refreshHighlight();
 }
 
-void ParameterTable::setOriginal(const std::optional<protocol::PidGains> &pid,
-                                 const std::optional<qint32> &accelDps2)
+void ParameterTable::setOriginal(const std::optional<TuningValues> &values)
 {
     for (int r = 0; r < kRowCount; ++r) {
         QString text = dash();
-        if (r == Accel && accelDps2)
-            text = QString::number(*accelDps2);
-        else if (r != Accel && pid)
-            text = QString::number(gainOf(*pid, r));
+        if (values)
+            text = QString::number(r == Accel ? qint64(values->accelDps2) : gainOf(values->pid, r));
         m_rows[r].original->setText(text);
     }
 }
 
-void ParameterTable::setPending(const protocol::PidGains &pid, qint32 accelDps2)
+void ParameterTable::setPending(const TuningValues &values)
 {
+    m_pendingKnown = true;
     for (int r = 0; r < kRowCount; ++r) {
         QSignalBlocker block(m_rows[r].edit);
-        m_rows[r].edit->setValue(r == Accel ? accelDps2 : int(gainOf(pid, r)));
+        m_rows[r].edit->setMinimum(0);
+        m_rows[r].edit->setValue(r == Accel ? values.accelDps2 : int(gainOf(values.pid, r)));
     }
+    refreshHighlight();
+}
+
+void ParameterTable::clearPending()
+{
+    m_pendingKnown = false;
+    for (int r = 0; r < kRowCount; ++r) {
+        QSignalBlocker block(m_rows[r].edit);
+        m_rows[r].edit->setMinimum(kUnknown);
+        m_rows[r].edit->setValue(kUnknown);
+    }
+    setEditable(false);
     refreshHighlight();
 }
 
 void ParameterTable::setEditable(bool editable)
 {
     for (const RowWidgets &w : std::as_const(m_rows))
-        w.edit->setEnabled(editable);
+        w.edit->setEnabled(editable && m_pendingKnown);
 }
 
-protocol::PidGains ParameterTable::pendingPid() const
+std::optional<TuningValues> ParameterTable::pending() const
 {
+    if (!m_pendingKnown)
+        return std::nullopt;
     auto v = [this](Row r) { return static_cast<quint8>(m_rows.at(r).edit->value()); };
-    return protocol::PidGains{v(AngleKp), v(AngleKi), v(SpeedKp), v(SpeedKi), v(IqKp), v(IqKi)};
-}
-
-qint32 ParameterTable::pendingAccel() const
-{
-    return m_rows.at(Accel).edit->value();
+    TuningValues values;
+    values.pid =
+        protocol::PidGains{v(AngleKp), v(AngleKi), v(SpeedKp), v(SpeedKi), v(IqKp), v(IqKi)};
+    values.accelDps2 = m_rows.at(Accel).edit->value();
+    return values;
 }
 
 bool ParameterTable::isChanged(Row row) const
 {
     const RowWidgets &w = m_rows.at(row);
-    return !w.holdsValue || *w.holdsValue != w.edit->value();
+    return m_pendingKnown && (!w.holdsValue || *w.holdsValue != w.edit->value());
 }
 
 bool ParameterTable::anyChanged() const
@@ -178,7 +201,7 @@ void ParameterTable::refreshHighlight()
 {
     for (int r = 0; r < kRowCount; ++r) {
         RowWidgets &w = m_rows[r];
-        const bool changed = w.holdsValue && *w.holdsValue != w.edit->value();
+        const bool changed = isChanged(Row(r));
         if (w.edit->property(kChangedProperty).toBool() == changed)
             continue;
         w.edit->setProperty(kChangedProperty, changed);

@@ -15,9 +15,16 @@ namespace lk::ui {
 /// The loop a tuning parameter belongs to (decides what the live plot shows).
 enum class TunedLoop { Angle, Speed, Current };
 
-/// The tunable values of one drive side by side: what it held when selected, what it holds
-/// now (last read back), and the pending edit; pending values that differ from the drive are
-/// highlighted.
+/// The tunable values of a drive: PID gains and acceleration, all known.
+struct TuningValues {
+    protocol::PidGains pid;
+    qint32 accelDps2 = 0;
+};
+
+/// The tunable values of one drive side by side: what it held at the first read, what it
+/// holds now (last read back), and the pending edit. A value not read shows as "unknown",
+/// never as 0: the pending edit is unknown until set from a read or a file. Pending values
+/// that differ from the drive (or whose drive value is unknown) are highlighted.
 class ParameterTable : public QWidget {
     Q_OBJECT
 public:
@@ -28,15 +35,18 @@ public:
 
     void setHolds(const std::optional<protocol::PidGains> &pid,
                   const std::optional<qint32> &accelDps2);
-    void setOriginal(const std::optional<protocol::PidGains> &pid,
-                     const std::optional<qint32> &accelDps2);
+    /// The "first read" column; nullopt shows a dash (nothing read yet).
+    void setOriginal(const std::optional<TuningValues> &values);
     /// Sets the edit fields (does not emit edited()).
-    void setPending(const protocol::PidGains &pid, qint32 accelDps2);
+    void setPending(const TuningValues &values);
+    /// Every edit field back to "unknown" (nothing to write until set again).
+    void clearPending();
     void setEditable(bool editable);
 
-    protocol::PidGains pendingPid() const;
-    qint32 pendingAccel() const;
-    /// The pending edit differs from what the drive holds (or the drive's value is unknown).
+    /// The pending edit, or nullopt while it is unknown.
+    std::optional<TuningValues> pending() const;
+    /// The pending value differs from what the drive holds (or the drive's value is unknown);
+    /// false while the pending edit is unknown.
     bool isChanged(Row row) const;
     bool anyChanged() const;
     QSpinBox *editor(Row row) const { return m_rows.at(row).edit; }
@@ -69,6 +79,7 @@ private:
     void applyChangedStyle();
 
     QVector<RowWidgets> m_rows;
+    bool m_pendingKnown = false;
 };
 
 } // namespace lk::ui

@@ -3,8 +3,10 @@
 #include "ConfirmDialog.h"
 #include "DriveText.h"
 #include "LoopPlot.h"
+#include "ParameterFileText.h"
 #include "ParameterTable.h"
 #include "RequestTracker.h"
+#include "TuningText.h"
 
 #include <bus/BusSession.h>
 #include <panels/FileDialogs.h>
@@ -25,17 +27,6 @@ namespace lk::ui {
 
 namespace {
 constexpr int kLeftColumnWidth = 470;
-
-QString gainsText(const protocol::PidGains &p)
-{
-    return QStringLiteral("%1/%2, %3/%4, %5/%6")
-        .arg(p.angleKp)
-        .arg(p.angleKi)
-        .arg(p.speedKp)
-        .arg(p.speedKi)
-        .arg(p.iqKp)
-        .arg(p.iqKi);
-}
 
 QLabel *banner(const QString &name, const QString &style, QWidget *parent)
 {
@@ -120,16 +111,17 @@ QWidget *TuningView::buildButtons()
                       tr("Try the pending edit: 0x31 and 0x34, lost at power-off; read back."));
     m_writeRom = make(QStringLiteral("writeRom"), tr("Write to ROM\u2026"),
                       tr("Keep the gains: 0x32 writes flash (asks first); read back."));
-    m_undo = make(QStringLiteral("undo"), tr("Undo to selection"),
-                  tr("Write the values read when this drive was first selected back to RAM."));
+    m_undo = make(QStringLiteral("undo"), QString(), QString());
+    refreshRestoreButton();
     m_save = make(QStringLiteral("save"), tr("Save to file\u2026"),
                   tr("Save what the drive holds, with model, firmware and time, as JSON."));
     m_load = make(QStringLiteral("load"), tr("Load from file\u2026"),
-                  tr("Load a parameter file into the pending edit; nothing is written."));
+                  tr("Load a parameter file into the pending edit; nothing is written. Needs a "
+                     "complete read of the drive first."));
     connect(m_read, &QPushButton::clicked, this, &TuningView::readFromDrive);
     connect(m_writeRam, &QPushButton::clicked, this, &TuningView::writeToRam);
     connect(m_writeRom, &QPushButton::clicked, this, &TuningView::writeToRom);
-    connect(m_undo, &QPushButton::clicked, this, &TuningView::undoToSelection);
+    connect(m_undo, &QPushButton::clicked, this, &TuningView::restoreFirstRead);
     connect(m_save, &QPushButton::clicked, this, [this] {
         const QString what =
             (motor().model ? motor().model->motorName + QLatin1Char('-') : QString()) +
@@ -155,9 +147,9 @@ QWidget *TuningView::buildButtons()
     grid->addWidget(m_read, 0, 0);
     grid->addWidget(m_writeRam, 0, 1);
     grid->addWidget(m_writeRom, 0, 2);
-    grid->addWidget(m_undo, 1, 0);
-    grid->addWidget(m_save, 1, 1);
-    grid->addWidget(m_load, 1, 2);
+    grid->addWidget(m_undo, 1, 0, 1, 3); // its name carries a time: the whole row
+    grid->addWidget(m_save, 2, 0);
+    grid->addWidget(m_load, 2, 1);
     return w;
 }
 
@@ -188,33 +180,57 @@ bool TuningView::isBusy() const
 
 void TuningView::contextChanged(Changes changes)
 {
+    const bool linkUp = (changes & Change::Connection) && isConnected();
+    const bool linkDown = (changes & Change::Connection) && !isConnected();
     if (changes & Change::Session) {
-        m_memory.clear();
         disconnect(m_telemetry);
         if (session())
             m_telemetry = connect(session(), &bus::BusSession::telemetryReceived, m_plot,
                                   &LoopPlot::appendTelemetry);
     }
+    // What was read belongs to one connection: the next one may reach other drives. What was
+    // written stays for the session (the RAM/ROM warning errs on the side of caution).
+    if (changes & Change::Session) {
+        m_memory.clear();
+    } else if (linkDown) {
+        for (DriveMemory &mem : m_memory) {
+            mem.firstRead.reset();
+            mem.unsentEdit.reset();
+        }
+    } else if (changes & Change::Drive) {
+        keepUnsentEdit();
+    }
     if (tracker()->pendingCount() == 0)
         m_readsOutstanding = 0; // the tracker forgot them with the drive or the link
-    if (changes & (Change::Session | Change::Drive)) {
+    if (changes & (Change::Session | Change::Drive | Change::Connection))
+        m_readComplete = false;
+    if (changes & (Change::Session | Change::Drive) || linkUp) {
         m_holdsPid.reset();
         m_holdsAccel.reset();
         m_expected.reset();
         m_mismatch->hide();
-        const DriveMemory mem = m_memory.value(driveId());
         m_table->setHolds(std::nullopt, std::nullopt);
-        m_table->setOriginal(mem.originalPid, mem.originalAccel);
+        m_table->clearPending(); // never another drive's (or connection's) values
         setStatus(QString());
     }
+    m_shownId = driveId();
+    m_table->setOriginal(m_memory.value(driveId()).firstRead);
     m_plot->setDrive(driveId(), series() == protocol::Series::MS);
     m_title->setText(driveTitle());
     if (canSend() && (changes & (Change::Session | Change::Drive | Change::Connection)))
-        startRead(!m_holdsPid || !m_table->anyChanged());
-    if ((changes & Change::Connection) && !isConnected() && hasDrive())
-        setStatus(tr("Disconnected: the values shown are the last ones read."));
+        startRead(true);
+    if (linkDown && hasDrive())
+        setStatus(tr("Disconnected: the values shown are the last ones read. Tuning resumes "
+                     "after the drive has been read again on the next connection."));
     refreshWarnings();
     refreshEnabled();
+}
+
+void TuningView::keepUnsentEdit()
+{
+    if (m_shownId <= 0 || !m_readComplete || !m_table->anyChanged())
+        return;
+    m_memory[m_shownId].unsentEdit = m_table->pending();
 }
 
 void TuningView::readFromDrive()
@@ -222,22 +238,25 @@ void TuningView::readFromDrive()
     if (!canSend() || isBusy())
         return;
     setStatus(QString());
-    startRead(!m_holdsPid || !m_table->anyChanged());
+    startRead(!m_table->pending() || !m_table->anyChanged());
 }
 
 void TuningView::startRead(bool takePending)
 {
     const int id = driveId();
     m_takePending = takePending;
+    m_readFailure.clear();
     m_readsOutstanding += 2;
     tracker()->send(*protocol::build::plain(protocol::Command::ReadPid, id).request,
                     [this, id](const bus::RequestResult &r) {
                         const auto *pid =
                             r.reply ? std::get_if<protocol::PidGains>(&r.reply->payload) : nullptr;
-                        if (r.ok() && pid)
+                        if (r.ok() && pid) {
                             m_holdsPid = *pid;
-                        else
-                            failed(r);
+                        } else {
+                            m_holdsPid.reset(); // what the drive holds is not known now
+                            m_readFailure = DriveText::failure(r);
+                        }
                         onReadDone(id);
                     });
     tracker()->send(*protocol::build::plain(protocol::Command::ReadAccel, id).request,
@@ -245,10 +264,12 @@ void TuningView::startRead(bool takePending)
                         const auto *a = r.reply
                                             ? std::get_if<protocol::Acceleration>(&r.reply->payload)
                                             : nullptr;
-                        if (r.ok() && a)
+                        if (r.ok() && a) {
                             m_holdsAccel = a->dps2;
-                        else
-                            failed(r);
+                        } else {
+                            m_holdsAccel.reset();
+                            m_readFailure = DriveText::failure(r);
+                        }
                         onReadDone(id);
                     });
 }
@@ -258,86 +279,123 @@ void TuningView::onReadDone(int id)
     if (--m_readsOutstanding > 0 || id != driveId())
         return;
     m_readsOutstanding = 0;
+    m_readComplete = m_holdsPid && m_holdsAccel;
     DriveMemory &mem = m_memory[id];
-    if (!mem.originalRead && m_holdsPid) {
-        mem.originalRead = true;
-        mem.originalPid = m_holdsPid;
-        mem.originalAccel = m_holdsAccel;
+    if (m_readComplete && !mem.firstRead) {
+        mem.firstRead = TuningValues{*m_holdsPid, *m_holdsAccel};
+        mem.firstReadAt = QTime::currentTime();
     }
-    m_table->setOriginal(mem.originalPid, mem.originalAccel);
+    m_table->setOriginal(mem.firstRead);
     m_table->setHolds(m_holdsPid, m_holdsAccel);
-    if (m_takePending && m_holdsPid)
-        m_table->setPending(*m_holdsPid, m_holdsAccel.value_or(0));
+    if (m_readComplete)
+        takeReadValues(mem);
+    else if (m_takePending)
+        m_table->clearPending(); // it showed the drive's values, which are not known now
     m_takePending = false;
-    if (!m_expected && m_status->text().isEmpty())
-        setStatus(m_holdsPid ? tr("Read from drive %1 at %2.")
-                                   .arg(id)
-                                   .arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")))
-                             : QString());
-    checkReadBack();
+    if (m_expected)
+        checkReadBack();
+    else if (!m_readComplete)
+        setStatus(tr("Could not read drive %1: %2 Editing and writing stay off until both the "
+                     "gains and the acceleration have been read; press Read from drive to try "
+                     "again.")
+                      .arg(id)
+                      .arg(m_readFailure),
+                  true);
+    else if (m_status->text().isEmpty())
+        setStatus(tr("Read from drive %1 at %2.")
+                      .arg(id)
+                      .arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss"))));
     refreshWarnings();
     refreshEnabled();
     emit parametersRead(id);
 }
 
+void TuningView::takeReadValues(DriveMemory &mem)
+{
+    if (mem.unsentEdit) {
+        m_table->setPending(*mem.unsentEdit);
+        mem.unsentEdit.reset();
+        setStatus(tr("Your unsent edit of drive %1 is back in the pending edit; values that "
+                     "differ from the drive are highlighted.")
+                      .arg(driveId()));
+    } else if (m_takePending || !m_table->pending()) {
+        m_table->setPending(TuningValues{*m_holdsPid, *m_holdsAccel});
+    }
+}
+
 void TuningView::writeToRam()
 {
-    writeParameters(false);
+    writeParameters(WriteKind::Ram);
 }
 
 void TuningView::writeToRom()
 {
-    writeParameters(true);
+    writeParameters(WriteKind::Rom);
 }
 
-void TuningView::undoToSelection()
+void TuningView::restoreFirstRead()
 {
-    const DriveMemory mem = m_memory.value(driveId());
-    if (!canSend() || isBusy() || !mem.originalPid)
-        return;
-    m_table->setPending(*mem.originalPid, mem.originalAccel.value_or(m_table->pendingAccel()));
-    writeParameters(false);
+    writeParameters(WriteKind::RestoreFirstRead);
 }
 
-bool TuningView::confirmRomWrite(int id)
-{
-    ConfirmRequest q;
-    q.key = QStringLiteral("write_pid_rom");
-    q.title = tr("Write gains to ROM");
-    q.question = tr("Write these PID gains to the ROM of drive %1?\n%2 (angle, speed, iq Kp/Ki)")
-                     .arg(id)
-                     .arg(gainsText(m_table->pendingPid()));
-    q.reason = tr("ROM is the drive's flash memory: each write wears it, and the gains stay "
-                  "after power-off. Try them in RAM first; write to ROM once you are satisfied. "
-                  "Acceleration is written to RAM only (V2.3 has no ROM command for it).");
-    q.acceptText = tr("Write to ROM");
-    return ConfirmDialog::ask(this, q);
-}
-
-void TuningView::writeParameters(bool rom)
+bool TuningView::mayWrite()
 {
     if (!canSend() || isBusy())
+        return false; // the buttons say so: disabled
+    if (!m_readComplete) {
+        setStatus(tr("Nothing was sent: the drive's gains and acceleration have not both been "
+                     "read on this connection. Read from drive first."),
+                  true);
+        return false;
+    }
+    return true;
+}
+
+bool TuningView::confirmWrite(WriteKind kind, int id, const TuningValues &values)
+{
+    switch (kind) {
+    case WriteKind::Ram:
+        return true; // RAM is the place to try: lost at power-off
+    case WriteKind::Rom:
+        return ConfirmDialog::ask(this, TuningText::romWrite(id, values.pid));
+    case WriteKind::RestoreFirstRead:
+        return ConfirmDialog::ask(this,
+                                  TuningText::restore(id, m_memory.value(id).firstReadAt, values));
+    }
+    return false;
+}
+
+void TuningView::writeParameters(WriteKind kind)
+{
+    if (!mayWrite())
         return;
     const int id = driveId();
-    if (rom && !confirmRomWrite(id)) {
-        setStatus(tr("ROM write cancelled: nothing was sent."));
+    const std::optional<TuningValues> values =
+        kind == WriteKind::RestoreFirstRead ? m_memory.value(id).firstRead : m_table->pending();
+    if (!values)
+        return; // no first read to restore, or no pending edit: nothing to write
+    if (!confirmWrite(kind, id, *values)) {
+        setStatus(kind == WriteKind::Rom ? tr("ROM write cancelled: nothing was sent.")
+                                         : tr("Restore cancelled: nothing was sent."));
         return;
     }
-    // The dialog ran an event loop: the drive or the link may have changed meanwhile.
-    if (!canSend() || driveId() != id || isBusy()) {
+    // The dialog ran an event loop: the drive, the link or the read may have changed meanwhile.
+    if (!canSend() || driveId() != id || isBusy() || !m_readComplete) {
         setStatus(tr("The drive or the connection changed: nothing was sent."), true);
         return;
     }
-    Expected expected;
+    if (kind == WriteKind::RestoreFirstRead)
+        m_table->setPending(*values);
+    const bool rom = kind == WriteKind::Rom;
+    TuningWrite expected;
     expected.rom = rom;
-    expected.pid = m_table->pendingPid();
+    expected.pid = values->pid;
     m_writeFailed = false;
     m_mismatch->hide();
-    sendWrite(protocol::build::writePid(id, *expected.pid, rom), rom);
-    const qint32 accel = m_table->pendingAccel();
-    if (!m_holdsAccel || *m_holdsAccel != accel) {
-        expected.accel = accel;
-        sendWrite(protocol::build::writeAcceleration(id, accel), false);
+    sendWrite(protocol::build::writePid(id, values->pid, rom), rom);
+    if (*m_holdsAccel != values->accelDps2) {
+        expected.accelDps2 = values->accelDps2;
+        sendWrite(protocol::build::writeAcceleration(id, values->accelDps2), false);
     }
     m_expected = expected;
     setStatus(rom ? tr("Writing gains to the ROM of drive %1\u2026").arg(id)
@@ -379,37 +437,24 @@ void TuningView::sendWrite(const protocol::BuildResult &built, bool rom)
 
 void TuningView::checkReadBack()
 {
-    if (!m_expected)
-        return;
-    const Expected e = *m_expected;
+    const TuningWrite sent = *m_expected;
     m_expected.reset();
-    QStringList problems;
-    if (e.pid && m_holdsPid && *m_holdsPid != *e.pid)
-        problems << tr("The drive holds gains %1 after %2 was written.")
-                        .arg(gainsText(*m_holdsPid), gainsText(*e.pid));
-    if (e.accel && m_holdsAccel && *m_holdsAccel != *e.accel)
-        problems << tr("The drive reports acceleration %1 dps/s after %2 dps/s was written: "
-                       "some firmware ignores 0x34 or reads 0 with 0x33 (see ERRATA), so the "
-                       "acceleration in effect is not known.")
-                        .arg(*m_holdsAccel)
-                        .arg(*e.accel);
-    if (!m_holdsPid || (e.accel && !m_holdsAccel))
-        problems << tr("The read-back did not complete: what the drive holds is not known.");
+    const QStringList problems =
+        TuningText::readBackProblems(sent, m_holdsPid, m_holdsAccel, m_readComplete);
     if (!problems.isEmpty()) {
         m_mismatch->setText(problems.join(QLatin1Char('\n')));
         m_mismatch->show();
     }
     if (m_writeFailed)
         return; // the failure is in the status line
-    if (!problems.isEmpty())
+    if (!m_readComplete)
+        setStatus(
+            tr("Sent to drive %1, but the read-back did not complete (below).").arg(driveId()),
+            true);
+    else if (!problems.isEmpty())
         setStatus(tr("Written, but the read-back differs (below)."), true);
-    else if (e.rom)
-        setStatus(tr("Gains written to ROM of drive %1 and read back: they survive power-off.")
-                      .arg(driveId()));
     else
-        setStatus(tr("Written to RAM of drive %1 and read back: lost at power-off unless "
-                     "written to ROM.")
-                      .arg(driveId()));
+        setStatus(TuningText::written(sent, driveId()));
 }
 
 void TuningView::refreshWarnings()
@@ -419,7 +464,7 @@ void TuningView::refreshWarnings()
     if (mem.lastRomPid && m_holdsPid && *m_holdsPid != *mem.lastRomPid)
         text = tr("RAM gains differ from what was last written to ROM (%1): a power cycle "
                   "brings back the ROM values.")
-                   .arg(gainsText(*mem.lastRomPid));
+                   .arg(TuningText::gains(*mem.lastRomPid));
     else if (!mem.lastRomPid && mem.ramWritten)
         text = tr("RAM gains were changed in this session and not written to ROM: they are lost "
                   "at power-off.");
@@ -441,14 +486,33 @@ void TuningView::refreshWarnings()
 
 void TuningView::refreshEnabled()
 {
-    const bool can = canSend() && !isBusy();
-    m_read->setEnabled(can);
-    m_writeRam->setEnabled(can);
-    m_writeRom->setEnabled(can);
-    m_undo->setEnabled(can && m_memory.value(driveId()).originalPid.has_value());
+    const bool idle = !isBusy();
+    const bool read = canSend() && m_readComplete;
+    const bool pending = m_table->pending().has_value();
+    m_read->setEnabled(canSend() && idle);
+    m_writeRam->setEnabled(read && idle && pending);
+    m_writeRom->setEnabled(read && idle && pending);
+    m_undo->setEnabled(read && idle && m_memory.value(driveId()).firstRead.has_value());
     m_save->setEnabled(hasDrive() && m_holdsPid.has_value());
-    m_load->setEnabled(hasDrive());
-    m_table->setEditable(hasDrive());
+    m_load->setEnabled(read && idle);
+    m_table->setEditable(read);
+    refreshRestoreButton();
+}
+
+void TuningView::refreshRestoreButton()
+{
+    const DriveMemory mem = m_memory.value(driveId());
+    if (mem.firstRead) {
+        const QString at = TuningText::time(mem.firstReadAt);
+        m_undo->setText(tr("Restore values read at %1\u2026").arg(at));
+        m_undo->setToolTip(tr("Write the gains and acceleration first read from this drive at "
+                              "%1 back to its RAM (asks first), then read back.")
+                               .arg(at));
+    } else {
+        m_undo->setText(tr("Restore values first read\u2026"));
+        m_undo->setToolTip(tr("Writes the values of the first complete read of this drive on "
+                              "this connection back to its RAM (asks first)."));
+    }
 }
 
 void TuningView::setStatus(const QString &text, bool error)
@@ -492,18 +556,22 @@ QString TuningView::saveParameters(const QString &path)
 
 QString TuningView::loadParameters(const QString &path)
 {
-    if (!hasDrive()) {
-        const QString error = tr("Select a drive first.");
+    if (!canSend() || !m_readComplete || isBusy()) {
+        const QString error = tr("Nothing was loaded: a file is loaded against the drive's "
+                                 "values, so read the drive's gains and acceleration first.");
         setStatus(error, true);
         return error;
     }
-    QString error;
-    const std::optional<record::ParameterSet> set = record::ParameterSet::load(path, &error);
+    record::ParameterFileError fault;
+    const std::optional<record::ParameterSet> set = record::ParameterSet::load(path, &fault);
     if (!set) {
+        const QString error = ParameterFileText::describe(fault);
         setStatus(tr("Could not load %1: %2. Nothing was changed.").arg(path, error), true);
-        return error.isEmpty() ? tr("unreadable file") : error;
+        return error;
     }
-    m_table->setPending(set->pid, set->accelDps2.value_or(m_table->pendingAccel()));
+    const std::optional<TuningValues> before = m_table->pending();
+    const qint32 accel = set->accelDps2.value_or(before ? before->accelDps2 : *m_holdsAccel);
+    m_table->setPending(TuningValues{set->pid, accel});
     QString text = tr("Loaded the parameters of drive %1 (%2, firmware %3, saved %4) into the "
                       "pending edit: nothing is written until you write to RAM or ROM.")
                        .arg(set->driveId)

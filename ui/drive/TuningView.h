@@ -1,11 +1,14 @@
 #pragma once
 
 #include "DriveView.h"
+#include "ParameterTable.h"
+#include "TuningText.h"
 
 #include <bus/RequestResult.h>
 #include <protocol/Values.h>
 
 #include <QtCore/QHash>
+#include <QtCore/QTime>
 
 #include <optional>
 
@@ -15,16 +18,21 @@ class QPushButton;
 namespace lk::ui {
 
 class LoopPlot;
-class ParameterTable;
 class TelemetryStore;
 
 /// Tuning of one drive: PID gains (angle, speed, iq; Kp/Ki 0..255) and acceleration. Reads
-/// them from the drive, shows "at selection", "drive holds" and the pending edit side by side
+/// them from the drive, shows "first read", "drive holds" and the pending edit side by side
 /// with differences highlighted, writes to RAM (try) or ROM (keep, after a confirmation that
 /// says why), and reads back after every write so that what the drive really holds is shown,
-/// mismatches included. Undo restores the values read when the drive was first selected in
-/// this session; parameters save to and load from JSON files. A live plot of the loop being
-/// edited stays beside the table.
+/// mismatches included.
+///
+/// Never writes what was not read: edits, writes, restores and file loads stay disabled until
+/// a complete read (PID and acceleration both answered) of the selected drive succeeded on
+/// the current connection; another drive, another session or a reconnection starts over, and
+/// unknown values show as unknown. Unsent edits stay with their drive (kept while another
+/// drive is selected, dropped with the connection). "Restore values read at ..." writes the
+/// values of the first complete read back to RAM after asking. Parameters save to and load
+/// from JSON files. A live plot of the loop being edited stays beside the table.
 class TuningView : public DriveView {
     Q_OBJECT
 public:
@@ -42,19 +50,24 @@ public:
     /// Asks, then writes the gains to ROM (0x32, once, never retried) and acceleration to RAM
     /// (V2.3 has no ROM command for it), then reads back. Declining sends nothing.
     void writeToRom();
-    /// Writes the values read when the drive was first selected back to RAM.
-    void undoToSelection();
+    /// Asks, then writes the values of this drive's first complete read on this connection
+    /// back to RAM, and reads back. Declining sends nothing.
+    void restoreFirstRead();
     /// Saves what the drive holds (last read) with its model, firmware and a timestamp.
     /// Returns an error text, empty on success.
     QString saveParameters(const QString &path);
-    /// Loads a file into the pending edit (nothing is written). A file that cannot be read
-    /// or parsed changes nothing. Returns an error text, empty on success.
+    /// Loads a file into the pending edit (nothing is written); needs a complete read of the
+    /// drive first. A file that cannot be read or is not a valid parameter file changes
+    /// nothing. Returns an error text naming the key and range, empty on success.
     QString loadParameters(const QString &path);
 
     ParameterTable *table() const { return m_table; }
     LoopPlot *plot() const { return m_plot; }
     std::optional<protocol::PidGains> drivePid() const { return m_holdsPid; }
     std::optional<qint32> driveAccel() const { return m_holdsAccel; }
+    /// PID and acceleration of the selected drive were both read on this connection: edits
+    /// and writes are possible.
+    bool readComplete() const { return m_readComplete; }
     /// The "RAM differs from ROM" warning is up (the RAM/ROM line shows it highlighted).
     bool romWarningShown() const;
     /// The read-back disagreed with what was written (empty when it agreed).
@@ -71,31 +84,32 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
-    /// What the view remembers about a drive for the session.
+    /// What the view remembers about a drive: reads and edits while the connection lasts
+    /// (the next connection may reach other drives at the same IDs), writes for the session.
     struct DriveMemory {
-        bool originalRead = false;
-        std::optional<protocol::PidGains> originalPid;
-        std::optional<qint32> originalAccel;
+        std::optional<TuningValues> firstRead; ///< first complete read on this connection
+        QTime firstReadAt;
+        std::optional<TuningValues> unsentEdit;       ///< kept while another drive was selected
         std::optional<protocol::PidGains> lastRomPid; ///< last 0x32 this session
         bool ramWritten = false; ///< RAM gains written this session after the last ROM write
     };
-    /// What the last write asked for, compared with the read-back.
-    struct Expected {
-        bool rom = false;
-        std::optional<protocol::PidGains> pid;
-        std::optional<qint32> accel;
-    };
+    enum class WriteKind { Ram, Rom, RestoreFirstRead };
 
     void buildUi();
     QWidget *buildButtons();
     void startRead(bool takePending);
     void onReadDone(int id);
-    void writeParameters(bool rom);
-    bool confirmRomWrite(int id);
+    void takeReadValues(DriveMemory &mem);
+    void keepUnsentEdit();
+    /// Writing is possible now; otherwise says why in the status line.
+    bool mayWrite();
+    void writeParameters(WriteKind kind);
+    bool confirmWrite(WriteKind kind, int id, const TuningValues &values);
     void sendWrite(const protocol::BuildResult &built, bool rom);
     void checkReadBack();
     void refreshWarnings();
     void refreshEnabled();
+    void refreshRestoreButton();
     void setStatus(const QString &text, bool error = false);
     void failed(const bus::RequestResult &result);
 
@@ -116,7 +130,10 @@ private:
     QHash<int, DriveMemory> m_memory; ///< per drive ID, for this session
     std::optional<protocol::PidGains> m_holdsPid;
     std::optional<qint32> m_holdsAccel;
-    std::optional<Expected> m_expected; ///< what the last write asked for, until read back
+    std::optional<TuningWrite> m_expected; ///< what the last write asked for, until read back
+    int m_shownId = 0; ///< the drive the table shows (DriveView's ID has already changed)
+    bool m_readComplete = false;
+    QString m_readFailure; ///< why the last read did not complete
     int m_readsOutstanding = 0;
     bool m_takePending = false;
     bool m_writeFailed = false;

@@ -9,7 +9,9 @@
 
 using lk::record::BusReport;
 using lk::record::BusReportDrive;
+using lk::record::ParameterFileError;
 using lk::record::ParameterSet;
+using Kind = lk::record::ParameterFileError::Kind;
 
 namespace {
 ParameterSet sample()
@@ -35,6 +37,7 @@ private slots:
     void withoutAcceleration();
     void refused_data();
     void refused();
+    void keysInsideTextAreNotKeys();
     void saveIsAtomic();
     void busReportJsonAndHtml();
 };
@@ -42,9 +45,9 @@ private slots:
 void tst_ParameterSet::roundTrip()
 {
     const ParameterSet s = sample();
-    QString error;
+    ParameterFileError error;
     const auto back = ParameterSet::fromJson(s.toJsonBytes(), &error);
-    QVERIFY2(back, qPrintable(error));
+    QVERIFY2(back, qPrintable(error.key));
     QCOMPARE(back->driveId, 7);
     QCOMPARE(back->motorName, s.motorName);
     QCOMPARE(back->driverName, s.driverName);
@@ -69,37 +72,103 @@ void tst_ParameterSet::withoutAcceleration()
 void tst_ParameterSet::refused_data()
 {
     QTest::addColumn<QByteArray>("json");
-    QTest::addColumn<QString>("mentions");
+    QTest::addColumn<int>("kind");
+    QTest::addColumn<QString>("key");
+    QTest::addColumn<double>("min");
+    QTest::addColumn<double>("max");
     const QByteArray good = sample().toJsonBytes();
     auto replace = [&](const char *from, const char *to) {
         QByteArray b = good;
+        Q_ASSERT(b.contains(from));
         return b.replace(from, to);
     };
-    QTest::newRow("empty") << QByteArray() << "JSON";
-    QTest::newRow("array") << QByteArray("[1,2]") << "object";
-    QTest::newRow("garbage") << QByteArray("\x01\x02\xff") << "JSON";
-    QTest::newRow("wrong format") << replace("lkstudio-parameters", "other") << "format";
-    QTest::newRow("newer version") << replace("\"version\": 1", "\"version\": 9") << "newer";
-    QTest::newRow("gain 256") << replace("\"iq_kp\": 255", "\"iq_kp\": 256") << "iq_kp";
-    QTest::newRow("gain negative") << replace("\"angle_kp\": 1", "\"angle_kp\": -1") << "angle_kp";
-    QTest::newRow("gain fraction") << replace("\"angle_ki\": 2", "\"angle_ki\": 2.5") << "angle_ki";
-    QTest::newRow("gain text") << replace("\"speed_kp\": 3", "\"speed_kp\": \"3\"") << "speed_kp";
-    QTest::newRow("gain missing") << replace("\"speed_ki\": 4,", "") << "speed_ki";
-    QTest::newRow("accel negative")
-        << replace("\"accel_dps2\": 2147483647", "\"accel_dps2\": -5") << "accel_dps2";
-    QTest::newRow("accel too big")
-        << replace("\"accel_dps2\": 2147483647", "\"accel_dps2\": 2147483648") << "accel_dps2";
-    QTest::newRow("id 0") << replace("\"id\": 7", "\"id\": 0") << "id";
-    QTest::newRow("bad series") << replace("\"MF\"", "\"MX\"") << "series";
+    auto row = [](const char *name, const QByteArray &json, Kind kind, const char *key = "",
+                  double min = 0, double max = 0) {
+        QTest::newRow(name) << json << int(kind) << QString::fromLatin1(key) << min << max;
+    };
+    const double int32Max = 2147483647;
+    row("empty", QByteArray(), Kind::NotJson);
+    row("array", "[1,2]", Kind::NotObject);
+    row("garbage", "\x01\x02\xff", Kind::NotJson);
+    row("wrong format", replace("lkstudio-parameters", "other"), Kind::WrongFormat, "format");
+    row("no format", R"({"version":1})", Kind::WrongFormat, "format");
+    row("newer version", replace("\"version\": 1", "\"version\": 9"), Kind::NewerVersion,
+        "version");
+    row("version text", replace("\"version\": 1", "\"version\": \"1\""), Kind::WrongType, "version",
+        1, 1000000);
+    row("gain 256", replace("\"iq_kp\": 255", "\"iq_kp\": 256"), Kind::OutOfRange, "pid.iq_kp", 0,
+        255);
+    row("gain negative", replace("\"angle_kp\": 1", "\"angle_kp\": -1"), Kind::OutOfRange,
+        "pid.angle_kp", 0, 255);
+    row("gain fraction", replace("\"angle_ki\": 2", "\"angle_ki\": 2.5"), Kind::WrongType,
+        "pid.angle_ki", 0, 255);
+    row("gain text", replace("\"speed_kp\": 3", "\"speed_kp\": \"3\""), Kind::WrongType,
+        "pid.speed_kp", 0, 255);
+    row("gain null", replace("\"speed_kp\": 3", "\"speed_kp\": null"), Kind::WrongType,
+        "pid.speed_kp", 0, 255);
+    row("gain missing", replace("\"speed_ki\": 4,", ""), Kind::MissingKey, "pid.speed_ki", 0, 255);
+    row("pid not an object",
+        R"({"format":"lkstudio-parameters","version":1,"drive":{"id":1},)"
+        R"("pid":5})",
+        Kind::WrongType, "pid");
+    row("accel negative", replace("\"accel_dps2\": 2147483647", "\"accel_dps2\": -5"),
+        Kind::OutOfRange, "accel_dps2", 0, int32Max);
+    row("accel too big", replace("\"accel_dps2\": 2147483647", "\"accel_dps2\": 2147483648"),
+        Kind::OutOfRange, "accel_dps2", 0, int32Max);
+    row("id 0", replace("\"id\": 7", "\"id\": 0"), Kind::OutOfRange, "drive.id", 1, 32);
+    row("bad series", replace("\"MF\"", "\"MX\""), Kind::UnknownSeries, "drive.series");
+    row("driver name number", replace("\"LK-MF4015-DRV\"", "5"), Kind::WrongType,
+        "drive.driver_name");
+    row("firmware text", replace("\"firmware_version\": 2.3", "\"firmware_version\": \"2.3\""),
+        Kind::WrongType, "drive.firmware_version", 0, 6553.5);
+    row("bad timestamp", replace("2026-05-04T03:02:01.000Z", "yesterday"), Kind::BadTimestamp,
+        "saved_at");
+    row("unknown key at the top", replace("\"version\": 1", "\"version\": 1, \"comment\": \"x\""),
+        Kind::UnknownKey, "comment");
+    row("unknown gain", replace("\"iq_ki\": 0", "\"iq_ki\": 0, \"iq_kd\": 3"), Kind::UnknownKey,
+        "pid.iq_kd");
+    row("unknown drive key", replace("\"id\": 7", "\"id\": 7, \"baud\": 115200"), Kind::UnknownKey,
+        "drive.baud");
+    row("duplicate gain", replace("\"iq_kp\": 255", "\"iq_kp\": 255, \"iq_kp\": 1"),
+        Kind::DuplicateKey, "pid.iq_kp");
+    row("duplicate gain escaped", replace("\"iq_kp\": 255", "\"iq_kp\": 255, \"iq\\u005fkp\": 1"),
+        Kind::DuplicateKey, "pid.iq_kp");
+    row("duplicate version", replace("\"version\": 1", "\"version\": 1, \"version\": 1"),
+        Kind::DuplicateKey, "version");
+    row("duplicate drive id", replace("\"id\": 7", "\"id\": 7, \"id\": 8"), Kind::DuplicateKey,
+        "drive.id");
 }
 
 void tst_ParameterSet::refused()
 {
     QFETCH(QByteArray, json);
-    QFETCH(QString, mentions);
-    QString error;
+    QFETCH(int, kind);
+    QFETCH(QString, key);
+    QFETCH(double, min);
+    QFETCH(double, max);
+    ParameterFileError error;
     QVERIFY(!ParameterSet::fromJson(json, &error));
-    QVERIFY2(error.contains(mentions), qPrintable(error));
+    QCOMPARE(int(error.kind), kind);
+    QCOMPARE(error.key, key);
+    if (kind == int(Kind::OutOfRange) || kind == int(Kind::WrongType) ||
+        kind == int(Kind::MissingKey)) {
+        QCOMPARE(error.min, min);
+        QCOMPARE(error.max, max);
+    }
+}
+
+void tst_ParameterSet::keysInsideTextAreNotKeys()
+{
+    // Quotes, braces and a key-like text inside names: the duplicate-key check follows JSON
+    // strings, so none of this is taken for a second "id".
+    ParameterSet s = sample();
+    s.motorName = QStringLiteral("MF4015 {\"id\": 2, \"id\": 3} [\\\"");
+    s.driverName = QStringLiteral("\"id\"");
+    ParameterFileError error;
+    const auto back = ParameterSet::fromJson(s.toJsonBytes(), &error);
+    QVERIFY2(back, qPrintable(error.key));
+    QCOMPARE(back->motorName, s.motorName);
+    QCOMPARE(back->driverName, s.driverName);
 }
 
 void tst_ParameterSet::saveIsAtomic()
@@ -107,10 +176,12 @@ void tst_ParameterSet::saveIsAtomic()
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("p.json"));
     QCOMPARE(sample().save(path), QString());
-    QString error;
+    ParameterFileError error;
     QVERIFY(ParameterSet::load(path, &error));
-    QVERIFY(!ParameterSet::load(dir.filePath(QStringLiteral("missing.json")), &error));
-    QVERIFY(error.contains(QStringLiteral("cannot read")));
+    const QString missing = dir.filePath(QStringLiteral("missing.json"));
+    QVERIFY(!ParameterSet::load(missing, &error));
+    QCOMPARE(int(error.kind), int(Kind::CannotRead));
+    QCOMPARE(error.path, missing);
     // A directory that does not exist: an error, no exception, no file.
     QVERIFY(!sample().save(dir.filePath(QStringLiteral("no/such/dir/p.json"))).isEmpty());
 }

@@ -6,10 +6,13 @@
 #include <drive/TuningView.h>
 #include <plot/TelemetryStore.h>
 #include <record/ParameterSet.h>
+#include <sim/FaultInjector.h>
+#include <sim/SimBus.h>
 
 #include <QtCore/QFile>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
+#include <QtWidgets/QLabel>
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QSpinBox>
 
@@ -52,23 +55,64 @@ QPushButton *button(TuningView &view, const char *name)
     return view.findChild<QPushButton *>(QLatin1String(name));
 }
 
+/// The next `count` replies of the simulated bus are lost (the drives still act on the
+/// requests). Reads are tried twice (BusConfig::retries = 1), so 2 makes the next read fail.
+void dropNextReplies(SimRig &rig, int count)
+{
+    rig.sim->withBus([count](lk::sim::SimBus &bus) {
+        bus.faults().injectNext(lk::sim::Fault::DropReply, count);
+    });
+}
+
+/// Selects drive `id` and waits until its read has finished (answered or not).
+bool selectAndWait(TuningView &view, SimRig &rig, int id)
+{
+    QSignalSpy read(&view, &TuningView::parametersRead);
+    view.setDrive(id, rig.motor(id));
+    return read.wait(kWaitMs) || !read.isEmpty();
+}
+
+/// Every edit field shows "unknown" and takes no input; nothing can be written.
+void verifyNothingWritable(TuningView &view)
+{
+    QVERIFY(!view.readComplete());
+    QVERIFY(!view.table()->pending());
+    for (int r = 0; r < ParameterTable::kRowCount; ++r) {
+        QSpinBox *box = view.table()->editor(ParameterTable::Row(r));
+        QCOMPARE(box->text(), QStringLiteral("unknown"));
+        QVERIFY(!box->isEnabled());
+    }
+    for (const char *name : {"writeRam", "writeRom", "undo", "load"})
+        QVERIFY2(!button(view, name)->isEnabled(), name);
+}
+
+int writesTo(SimRig &rig, int id)
+{
+    return rig.count(id, Command::WritePidRam) + rig.count(id, Command::WritePidRom) +
+           rig.count(id, Command::WriteAccelRam);
+}
+
 } // namespace
 
 class tst_TuningView : public QObject {
     Q_OBJECT
 private slots:
     void readsDriveOnSelection();
+    void failedReadWritesNothing();
+    void switchingDrivesCarriesNoEdits();
+    void reconnectionNeedsFreshRead();
+    void loadNeedsCompleteRead();
     void ramWriteIsLostOnRestart();
     void ignoredAccelerationIsShownAsMismatch();
     void romWriteAsksAndSurvivesRestart();
     void declinedRomWriteSendsNothing();
-    void undoRestoresSelectionValues();
+    void restoreNamesTimeAndAsks();
     void differencesHighlighted();
     void plotFollowsEditedLoop_data();
     void plotFollowsEditedLoop();
     void saveAndLoadParameters();
-    void corruptFileChangesNothing_data();
-    void corruptFileChangesNothing();
+    void badFileChangesNothing_data();
+    void badFileChangesNothing();
     void disconnectedDisablesWrites();
 };
 
@@ -79,10 +123,134 @@ void tst_TuningView::readsDriveOnSelection()
     auto view = openView(rig, 1);
     QVERIFY(view);
     QCOMPARE(*view->drivePid(), rig.ramPid(1));
-    QCOMPARE(view->table()->pendingPid(), rig.ramPid(1));
+    QVERIFY(view->readComplete());
+    QCOMPARE(view->table()->pending()->pid, rig.ramPid(1));
+    QCOMPARE(view->table()->pending()->accelDps2, 20000);
     QCOMPARE(*view->driveAccel(), 20000); // the simulator's ROM default
     QVERIFY(!view->table()->anyChanged());
     QVERIFY(!view->romWarningShown());
+}
+
+void tst_TuningView::failedReadWritesNothing()
+{
+    // The issue: read_pid failed, the edits showed 0 and Write to RAM sent all gains zero.
+    SimRig rig;
+    QVERIFY(rig.open());
+    TuningView view;
+    view.setSession(&rig.session);
+    view.setConnected(true);
+    view.show();
+    dropNextReplies(rig, 2); // both tries of read_pid; read_accel is answered
+    QVERIFY(selectAndWait(view, rig, 1));
+    QTRY_VERIFY_WITH_TIMEOUT(!view.isBusy(), kWaitMs);
+    QVERIFY(!view.drivePid());
+    QCOMPARE(view.driveAccel(), std::optional<qint32>(20000));
+    verifyNothingWritable(view);
+    QCOMPARE(view.table()->holdsLabel(ParameterTable::SpeedKp)->text(), QStringLiteral("unknown"));
+    QVERIFY2(view.statusText().contains(QStringLiteral("Could not read drive 1")),
+             qPrintable(view.statusText()));
+
+    int asked = 0;
+    ConfirmDialog::ScopedPolicy yes([&](const ConfirmRequest &) { return ++asked > 0; });
+    QTest::mouseClick(button(view, "writeRam"), Qt::LeftButton);
+    view.writeToRam();
+    view.writeToRom();
+    view.restoreFirstRead();
+    QCOMPARE(asked, 0);
+    QVERIFY(view.statusText().contains(QStringLiteral("Nothing was sent")));
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(writesTo(rig, 1), 0);
+
+    // A read that completes enables everything, with the drive's values.
+    QTest::mouseClick(button(view, "read"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(view.readComplete() && !view.isBusy(), kWaitMs);
+    QCOMPARE(view.table()->pending()->pid, rig.ramPid(1));
+    QVERIFY(button(view, "writeRam")->isEnabled());
+    QVERIFY(view.table()->editor(ParameterTable::AngleKp)->isEnabled());
+}
+
+void tst_TuningView::switchingDrivesCarriesNoEdits()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    QVERIFY(view);
+    const int mine = rig.ramPid(1).speedKp == 77 ? 78 : 77;
+    edit(*view, ParameterTable::SpeedKp, mine);
+    QVERIFY(view->table()->isChanged(ParameterTable::SpeedKp));
+
+    // Drive 2 does not answer read_pid: drive 1's edit must not become drive 2's.
+    dropNextReplies(rig, 2);
+    QVERIFY(selectAndWait(*view, rig, 2));
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isBusy(), kWaitMs);
+    verifyNothingWritable(*view);
+    view->writeToRam();
+    QVERIFY(rig.barrier(2));
+    QCOMPARE(writesTo(rig, 2), 0);
+
+    // Once read, drive 2 shows its own values and nothing differs.
+    QTest::mouseClick(button(*view, "read"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(view->readComplete() && !view->isBusy(), kWaitMs);
+    QCOMPARE(view->table()->pending()->pid, rig.ramPid(2));
+    QVERIFY(!view->table()->anyChanged());
+
+    // Back on drive 1 the unsent edit is there again, highlighted, and still unsent.
+    QVERIFY(selectAndWait(*view, rig, 1));
+    QTRY_VERIFY_WITH_TIMEOUT(view->readComplete() && !view->isBusy(), kWaitMs);
+    QCOMPARE(int(view->table()->pending()->pid.speedKp), mine);
+    QVERIFY(view->table()->isChanged(ParameterTable::SpeedKp));
+    QVERIFY(view->table()->editor(ParameterTable::SpeedKp)->property("changed").toBool());
+    QVERIFY(!view->table()->editor(ParameterTable::AngleKp)->property("changed").toBool());
+    QCOMPARE(writesTo(rig, 1), 0);
+}
+
+void tst_TuningView::reconnectionNeedsFreshRead()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    QVERIFY(view);
+    edit(*view, ParameterTable::AngleKi, rig.ramPid(1).angleKi == 9 ? 10 : 9);
+    view->setConnected(false);
+    QVERIFY(!view->readComplete());
+    QVERIFY(view->drivePid()); // the last values read stay on show
+    QVERIFY(!view->table()->editor(ParameterTable::AngleKi)->isEnabled());
+    QVERIFY(!button(*view, "writeRam")->isEnabled());
+
+    // The new connection's read fails: what was read on the old one does not count.
+    dropNextReplies(rig, 2);
+    QSignalSpy read(view.get(), &TuningView::parametersRead);
+    view->setConnected(true);
+    QVERIFY(read.wait(kWaitMs) || !read.isEmpty());
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isBusy(), kWaitMs);
+    verifyNothingWritable(*view);
+    QVERIFY(!view->drivePid());
+    view->writeToRam();
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(writesTo(rig, 1), 0);
+}
+
+void tst_TuningView::loadNeedsCompleteRead()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("p.json"));
+    lk::record::ParameterSet set;
+    set.pid = PidGains{1, 2, 3, 4, 5, 6};
+    set.accelDps2 = 1000;
+    QCOMPARE(set.save(path), QString());
+
+    TuningView view;
+    view.setSession(&rig.session);
+    view.setConnected(true);
+    dropNextReplies(rig, 2);
+    QVERIFY(selectAndWait(view, rig, 3));
+    QTRY_VERIFY_WITH_TIMEOUT(!view.isBusy(), kWaitMs);
+    const QString error = view.loadParameters(path);
+    QVERIFY2(error.contains(QStringLiteral("read the drive")), qPrintable(error));
+    QVERIFY(!view.table()->pending());
+    verifyNothingWritable(view);
 }
 
 void tst_TuningView::ramWriteIsLostOnRestart()
@@ -145,8 +313,16 @@ void tst_TuningView::romWriteAsksAndSurvivesRestart()
     QCOMPARE(asked.size(), 1);
     QCOMPARE(asked.first().key, QStringLiteral("write_pid_rom"));
     QVERIFY(asked.first().reason.contains(QStringLiteral("wear")));
+    QVERIFY(asked.first().reason.contains(QStringLiteral("cannot be checked")));
     QTRY_COMPARE_WITH_TIMEOUT(rig.romPid(2).angleKp, 88, kWaitMs);
     QTRY_VERIFY_WITH_TIMEOUT(!view->isBusy(), kWaitMs);
+    // Says what the read-back proved and what it cannot: V2.3 has no ROM read.
+    QVERIFY2(view->statusText().contains(QStringLiteral("Verified: the gains read back from RAM "
+                                                        "equal what was sent")),
+             qPrintable(view->statusText()));
+    QVERIFY2(view->statusText().contains(QStringLiteral("Not verifiable")) &&
+                 view->statusText().contains(QStringLiteral("cannot read ROM")),
+             qPrintable(view->statusText()));
     QVERIFY(!view->romWarningShown()); // RAM equals what was written to ROM
     QVERIFY(rig.barrier(2));
     QCOMPARE(rig.count(2, Command::WritePidRom), 1); // exactly once
@@ -186,24 +362,54 @@ void tst_TuningView::declinedRomWriteSendsNothing()
     QVERIFY(view->table()->isChanged(ParameterTable::IqKi)); // the edit is kept
 }
 
-void tst_TuningView::undoRestoresSelectionValues()
+void tst_TuningView::restoreNamesTimeAndAsks()
 {
     SimRig rig;
     QVERIFY(rig.open());
+    const QTime before = QTime::currentTime().addSecs(-1);
     auto view = openView(rig, 4);
     QVERIFY(view);
     const PidGains original = rig.ramPid(4);
-    edit(*view, ParameterTable::SpeedKi, 5);
+    // Named for what it does: the time of the read it restores.
+    QPushButton *restore = button(*view, "undo");
+    const QString text = restore->text();
+    QVERIFY2(text.startsWith(QStringLiteral("Restore values read at ")), qPrintable(text));
+    const QTime at = QTime::fromString(text.mid(23, 8), QStringLiteral("HH:mm:ss"));
+    QVERIFY2(at.isValid() && at >= before.addSecs(-1), qPrintable(text));
+
+    edit(*view, ParameterTable::SpeedKi, original.speedKi == 5 ? 6 : 5);
     QTest::mouseClick(button(*view, "writeRam"), Qt::LeftButton);
-    QTRY_COMPARE_WITH_TIMEOUT(rig.ramPid(4).speedKi, 5, kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(rig.ramPid(4).speedKi != original.speedKi, kWaitMs);
     QTRY_VERIFY_WITH_TIMEOUT(!view->isBusy(), kWaitMs);
-    // Selecting another drive and coming back keeps the first values as the undo target.
-    view->setDrive(1, rig.motor(1));
-    QTRY_VERIFY_WITH_TIMEOUT(view->drivePid().has_value() && !view->isBusy(), kWaitMs);
-    view->setDrive(4, rig.motor(4));
-    QTRY_VERIFY_WITH_TIMEOUT(view->drivePid().has_value() && !view->isBusy(), kWaitMs);
-    QCOMPARE(view->drivePid()->speedKi, 5);
-    QTest::mouseClick(button(*view, "undo"), Qt::LeftButton);
+    // Selecting another drive and coming back keeps the first read as the restore target.
+    QVERIFY(selectAndWait(*view, rig, 1));
+    QTRY_VERIFY_WITH_TIMEOUT(view->readComplete() && !view->isBusy(), kWaitMs);
+    QVERIFY(selectAndWait(*view, rig, 4));
+    QTRY_VERIFY_WITH_TIMEOUT(view->readComplete() && !view->isBusy(), kWaitMs);
+    QCOMPARE(restore->text(), text);
+    const int writes = writesTo(rig, 4);
+
+    // It asks, saying that it writes to the drive's RAM; declining sends nothing.
+    QList<ConfirmRequest> asked;
+    bool answer = false;
+    ConfirmDialog::ScopedPolicy policy([&](const ConfirmRequest &q) {
+        asked.append(q);
+        return answer;
+    });
+    QTest::mouseClick(restore, Qt::LeftButton);
+    QCOMPARE(asked.size(), 1);
+    QCOMPARE(asked.first().key, QStringLiteral("restore_first_read"));
+    QVERIFY2(asked.first().question.contains(QStringLiteral("to its RAM")),
+             qPrintable(asked.first().question));
+    QVERIFY(asked.first().reason.contains(QStringLiteral("This writes to the drive")));
+    QVERIFY(view->statusText().contains(QStringLiteral("nothing was sent")));
+    QVERIFY(rig.barrier(4));
+    QCOMPARE(writesTo(rig, 4), writes);
+    QVERIFY(rig.ramPid(4) != original);
+
+    answer = true;
+    QTest::mouseClick(restore, Qt::LeftButton);
+    QCOMPARE(asked.size(), 2);
     QTRY_COMPARE_WITH_TIMEOUT(rig.ramPid(4), original, kWaitMs);
     QTRY_VERIFY_WITH_TIMEOUT(!view->isBusy() && *view->drivePid() == original, kWaitMs);
 }
@@ -268,9 +474,9 @@ void tst_TuningView::saveAndLoadParameters()
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("p.json"));
     QCOMPARE(view->saveParameters(path), QString());
-    QString error;
+    lk::record::ParameterFileError error;
     const auto set = lk::record::ParameterSet::load(path, &error);
-    QVERIFY2(set, qPrintable(error));
+    QVERIFY2(set, qPrintable(error.key));
     QCOMPARE(set->pid, rig.ramPid(1));
     QCOMPARE(set->motorName, rig.motor(1).model->motorName);
     QCOMPARE(set->driveId, 1);
@@ -283,33 +489,49 @@ void tst_TuningView::saveAndLoadParameters()
     const QString otherPath = dir.filePath(QStringLiteral("other.json"));
     QCOMPARE(other.save(otherPath), QString());
     QCOMPARE(view->loadParameters(otherPath), QString());
-    QCOMPARE(view->table()->pendingPid().speedKp, 11);
-    QCOMPARE(view->table()->pendingAccel(), 1234);
+    QCOMPARE(view->table()->pending()->pid.speedKp, 11);
+    QCOMPARE(view->table()->pending()->accelDps2, 1234);
     QVERIFY(view->table()->isChanged(ParameterTable::SpeedKp));
+    QVERIFY(view->table()->editor(ParameterTable::SpeedKp)->property("changed").toBool());
     QVERIFY(rig.barrier(1));
     QCOMPARE(rig.count(1, Command::WritePidRam), 0);
     QCOMPARE(rig.count(1, Command::WriteAccelRam), 0);
 }
 
-void tst_TuningView::corruptFileChangesNothing_data()
+void tst_TuningView::badFileChangesNothing_data()
 {
+    // Each refusal names the key and what it must hold (type and range).
     QTest::addColumn<QByteArray>("content");
-    QTest::newRow("empty") << QByteArray();
-    QTest::newRow("not json") << QByteArray("PID=1,2,3");
-    QTest::newRow("truncated") << QByteArray(R"({"format":"lkstudio-parameters","version":1,"dr)");
-    QTest::newRow("other format") << QByteArray(R"({"format":"something","version":1})");
-    QTest::newRow("gain out of range")
-        << QByteArray(R"({"format":"lkstudio-parameters","version":1,"drive":{"id":1},)"
-                      R"("pid":{"angle_kp":300,"angle_ki":1,"speed_kp":1,"speed_ki":1,)"
-                      R"("iq_kp":1,"iq_ki":1}})");
-    QTest::newRow("gain missing") << QByteArray(
-        R"({"format":"lkstudio-parameters","version":1,"drive":{"id":1},)"
-        R"("pid":{"angle_kp":3}})");
+    QTest::addColumn<QString>("says");
+    const QByteArray head = R"({"format":"lkstudio-parameters","version":1,"drive":{"id":1},)";
+    const QByteArray gains = R"("angle_ki":1,"speed_kp":1,"speed_ki":1,"iq_kp":1,"iq_ki":1)";
+    QTest::newRow("empty") << QByteArray() << "not valid JSON";
+    QTest::newRow("not json") << QByteArray("PID=1,2,3") << "not valid JSON";
+    QTest::newRow("truncated") << QByteArray(R"({"format":"lkstudio-parameters","version":1,"dr)")
+                               << "not valid JSON";
+    QTest::newRow("other format") << QByteArray(R"({"format":"something","version":1})")
+                                  << "not an LK Servo Studio parameter file";
+    QTest::newRow("gain missing") << head + R"("pid":{"angle_kp":3}})"
+                                  << "pid.angle_ki is missing: it must be an integer in 0..255";
+    QTest::newRow("unknown key") << head + R"("pid":{"angle_kp":1,)" + gains + R"(,"iq_kd":4}})"
+                                 << "pid.iq_kd is not a key of a parameter file";
+    QTest::newRow("duplicate key")
+        << head + R"("pid":{"angle_kp":1,)" + gains + R"(,"angle_kp":200}})"
+        << "pid.angle_kp is given twice";
+    QTest::newRow("wrong type") << head + R"("pid":{"angle_kp":"1",)" + gains + "}}"
+                                << "pid.angle_kp is \"1\": it must be an integer in 0..255";
+    QTest::newRow("out of range")
+        << head + R"("pid":{"angle_kp":300,)" + gains + "}}"
+        << "pid.angle_kp is 300, out of range: it must be an integer in 0..255";
+    QTest::newRow("accel out of range")
+        << head + R"("pid":{"angle_kp":1,)" + gains + R"(},"accel_dps2":-1})"
+        << "accel_dps2 is -1, out of range: it must be an integer in 0..2147483647";
 }
 
-void tst_TuningView::corruptFileChangesNothing()
+void tst_TuningView::badFileChangesNothing()
 {
     QFETCH(QByteArray, content);
+    QFETCH(QString, says);
     SimRig rig;
     QVERIFY(rig.open());
     auto view = openView(rig, 1);
@@ -320,12 +542,14 @@ void tst_TuningView::corruptFileChangesNothing()
     QVERIFY(f.open(QIODevice::WriteOnly));
     f.write(content);
     f.close();
-    const PidGains pending = view->table()->pendingPid();
-    const qint32 accel = view->table()->pendingAccel();
-    QVERIFY(!view->loadParameters(path).isEmpty());
-    QCOMPARE(view->table()->pendingPid(), pending);
-    QCOMPARE(view->table()->pendingAccel(), accel);
+    const PidGains pending = view->table()->pending()->pid;
+    const qint32 accel = view->table()->pending()->accelDps2;
+    const QString error = view->loadParameters(path);
+    QVERIFY2(error.contains(says), qPrintable(error));
+    QVERIFY2(view->statusText().contains(says), qPrintable(view->statusText()));
     QVERIFY(view->statusText().contains(QStringLiteral("Nothing was changed")));
+    QCOMPARE(view->table()->pending()->pid, pending);
+    QCOMPARE(view->table()->pending()->accelDps2, accel);
 }
 
 void tst_TuningView::disconnectedDisablesWrites()
@@ -336,7 +560,7 @@ void tst_TuningView::disconnectedDisablesWrites()
     QVERIFY(view);
     QVERIFY(button(*view, "writeRam")->isEnabled());
     view->setConnected(false);
-    for (const char *name : {"read", "writeRam", "writeRom", "undo"})
+    for (const char *name : {"read", "writeRam", "writeRom", "undo", "load"})
         QVERIFY2(!button(*view, name)->isEnabled(), name);
     QVERIFY(button(*view, "save")->isEnabled()); // the last values read can still be saved
     view->writeToRam();                          // ignored while disconnected
