@@ -90,6 +90,12 @@ struct SingleTurnAngle {
 /// generation (V2.35.md section 5): V2.3 `temp, 0, u16 voltage 0.1 V, 0, 0, err`; V2.35
 /// `temp, i16 voltage 0.01 V, i16 bus current 0.01 A, motorState, err`.
 struct State1 {
+    State1() = default;
+    /// A V2.3 reply's three values (tests and the simulator's side).
+    State1(qint8 temperature, quint16 voltage, quint8 errors)
+        : temperatureC(temperature), voltageRaw(voltage), errorState(errors)
+    {
+    }
     qint8 temperatureC = 0;
     quint16 voltageRaw = 0; ///< V2.3: uint16 of 0.1 V; V2.35: the int16 of 0.01 V as uint16
     quint8 errorState = 0;

@@ -49,6 +49,24 @@ std::optional<quint32> *maxSpeedOf(protocol::Request &r)
     return nullptr;
 }
 
+double positiveMod(double v, double m)
+{
+    const double r = std::fmod(v, m);
+    return r < 0 ? r + m : r;
+}
+
+// How far a single-turn move travels from multi-turn angle `fromDeg`: to the target angle
+// within the turn, clockwise (+) or counter-clockwise (-), as the drive (and the simulator)
+// moves.
+double singleTurnTravelDeg(const protocol::SinglePositionCommand &c, double fromDeg)
+{
+    const double current = positiveMod(fromDeg, 360.0);
+    const double target = c.angleRaw * protocol::kCentiUnits;
+    return c.direction == protocol::SpinDirection::Clockwise
+               ? positiveMod(target - current, 360.0)
+               : -positiveMod(current - target, 360.0);
+}
+
 // The one-output-turn and angle-window rules that need to know where the drive is.
 std::optional<MotionPlan> checkDistance(const protocol::Request &r, const SoftLimits &limits,
                                         const DrivePosition &at)
@@ -92,6 +110,18 @@ std::optional<MotionPlan> checkDistance(const protocol::Request &r, const SoftLi
                                    "(0x92) first")));
             target = *at.angleDeg + step;
         }
+    } else if (const auto *c = std::get_if<protocol::SinglePositionCommand>(&r.payload)) {
+        // Less than one rotor turn by construction; with an angle range set, where it ends
+        // (from the angle within the turn, in the direction given) must lie inside it.
+        if (limits.minAngleDeg || limits.maxAngleDeg) {
+            if (!at.angleDeg)
+                return refused(LimitKind::AngleUnknown, 0, 0,
+                               translated(QT_TRANSLATE_NOOP(
+                                   "lk::safety::MotionPlanner",
+                                   "your angle range needs the drive's current angle: read it "
+                                   "(0x92) first")));
+            target = *at.angleDeg + singleTurnTravelDeg(*c, *at.angleDeg);
+        }
     }
     if (target) {
         const Verdict window = MotionGuard::checkTarget(*target, limits);
@@ -107,8 +137,10 @@ bool MotionPlanner::needsAngle(const protocol::Request &request, const SoftLimit
 {
     if (std::holds_alternative<protocol::MultiPositionCommand>(request.payload))
         return true;
-    return std::holds_alternative<protocol::IncrementPositionCommand>(request.payload) &&
-           (limits.minAngleDeg || limits.maxAngleDeg);
+    const bool relative =
+        std::holds_alternative<protocol::IncrementPositionCommand>(request.payload) ||
+        std::holds_alternative<protocol::SinglePositionCommand>(request.payload);
+    return relative && (limits.minAngleDeg || limits.maxAngleDeg);
 }
 
 bool MotionPlanner::isPosition(Command c)

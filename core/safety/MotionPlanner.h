@@ -47,14 +47,15 @@ struct MotionPlan {
 /// alike. Position commands without a speed cap (0xA3, 0xA5, 0xA7) become their limited forms
 /// (0xA4, 0xA6, 0xA8) with the speed limit (or the series top speed, if lower) unless the
 /// user gave a lower max speed. A multi-turn target needs the drive's current angle and may
-/// lie at most one output turn away; an increment may be at most one output turn. Then
+/// lie at most one output turn away; an increment may be at most one output turn; with an
+/// angle range set, where an increment or a single-turn move ends must lie inside it. Then
 /// MotionGuard checks the result against the series and the soft limits.
 class MotionPlanner {
 public:
     static MotionPlan plan(const protocol::Request &request, std::optional<protocol::Series> series,
                            const SoftLimits &limits, const DrivePosition &position);
     /// True when plan() needs DrivePosition::angleDeg for `request`: every multi-turn target,
-    /// and an increment while an angle range is set. Read 0x92 first.
+    /// and an increment or a single-turn move while an angle range is set. Read 0x92 first.
     static bool needsAngle(const protocol::Request &request, const SoftLimits &limits);
     /// True for the six position commands (0xA3..0xA8).
     static bool isPosition(protocol::Command command);

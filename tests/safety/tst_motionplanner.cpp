@@ -60,6 +60,7 @@ private slots:
     void gearedDriveTurnIsLonger();
     void incrementWithinOneOutputTurn();
     void incrementInsideTheAngleRange();
+    void singleTurnEndInsideTheAngleRange();
     void speedAndTorqueStayBounded();
 };
 
@@ -172,6 +173,31 @@ void tst_MotionPlanner::incrementInsideTheAngleRange()
     QCOMPARE(safety::MotionPlanner::plan(r, Series::MF, l, at(60)).verdict.kind,
              LimitKind::AngleAboveMax);
     QVERIFY(safety::MotionPlanner::plan(r, Series::MF, l, at(40)).allowed());
+}
+
+void tst_MotionPlanner::singleTurnEndInsideTheAngleRange()
+{
+    safety::SoftLimits l = limits720();
+    l.minAngleDeg = -360;
+    l.maxAngleDeg = 360;
+    // From 350 deg, "90 deg clockwise" ends at 450 (through 360): outside the range. The same
+    // target counter-clockwise ends at 90: inside. Without a range no angle is needed.
+    const protocol::Request cw =
+        req(protocol::build::singlePosition(1, protocol::SpinDirection::Clockwise, 90));
+    const protocol::Request ccw =
+        req(protocol::build::singlePosition(1, protocol::SpinDirection::CounterClockwise, 90));
+    QVERIFY(safety::MotionPlanner::needsAngle(cw, l));
+    QCOMPARE(safety::MotionPlanner::plan(cw, Series::MF, l, {}).verdict.kind,
+             LimitKind::AngleUnknown);
+    const safety::MotionPlan out = safety::MotionPlanner::plan(cw, Series::MF, l, at(350));
+    QCOMPARE(out.verdict.kind, LimitKind::AngleAboveMax);
+    QCOMPARE(out.verdict.value, 450.0);
+    QVERIFY(safety::MotionPlanner::plan(ccw, Series::MF, l, at(350)).allowed());
+    // From -350 deg (10 deg within the turn) counter-clockwise to 90 ends at -630.
+    QCOMPARE(safety::MotionPlanner::plan(ccw, Series::MF, l, at(-350)).verdict.kind,
+             LimitKind::AngleBelowMin);
+    QVERIFY(!safety::MotionPlanner::needsAngle(cw, limits720()));
+    QVERIFY(safety::MotionPlanner::plan(cw, Series::MF, limits720(), {}).allowed());
 }
 
 void tst_MotionPlanner::speedAndTorqueStayBounded()
