@@ -34,7 +34,7 @@ QString Dispatcher::usage() const
     QString text = QStringLiteral("Usage: %1 COMMAND [OPTIONS]\n"
                                   "       %1 help [COMMAND] | %1 --help | %1 --version (-v)\n\n"
                                   "Command-line tool for LK-TECH MS/MF/MG/MH servo drives on RS485 "
-                                  "(protocol V2.3).\n\nCommands:\n")
+                                  "(protocols V2.3 and V2.35).\n\nCommands:\n")
                        .arg(m_program);
     for (const auto &c : m_commands)
         text += QStringLiteral("  %1  %2\n").arg(c->name().leftJustified(width), c->summary());

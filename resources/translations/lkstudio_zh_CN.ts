@@ -582,8 +582,8 @@
             <translation>关于 LK Servo Studio</translation>
         </message>
         <message>
-            <source>&lt;h2&gt;LK Servo Studio %1&lt;/h2&gt;&lt;p&gt;Tuning and diagnostics for LK-TECH MS/MF/MG/MH servo drives on RS485 (protocol V2.3). Esc sends Motor Off to every drive from anywhere in the program.&lt;/p&gt;</source>
-            <translation>&lt;h2&gt;LK Servo Studio %1&lt;/h2&gt;&lt;p&gt;用于 RS485 总线上瓴控 LK-TECH MS/MF/MG/MH 伺服驱动的调参与诊断工具（协议 V2.3）。在程序中任何地方按 Esc 都会向每个驱动发送电机关闭命令。&lt;/p&gt;</translation>
+            <source>&lt;h2&gt;LK Servo Studio %1&lt;/h2&gt;&lt;p&gt;Tuning and diagnostics for LK-TECH MS/MF/MG/MH servo drives on RS485 (protocols V2.3 and V2.35). Esc sends Motor Off to every drive from anywhere in the program.&lt;/p&gt;</source>
+            <translation>&lt;h2&gt;LK Servo Studio %1&lt;/h2&gt;&lt;p&gt;用于 RS485 总线上瓴控 LK-TECH MS/MF/MG/MH 伺服驱动的调参与诊断工具（协议 V2.3 与 V2.35）。在程序中任何地方按 Esc 都会向每个驱动发送电机关闭命令。&lt;/p&gt;</translation>
         </message>
         <message>
             <source>Qt %1 (built with %2), platform %3

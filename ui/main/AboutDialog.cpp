@@ -30,7 +30,8 @@ AboutDialog::AboutDialog(std::function<QString()> diagnostics, QWidget *parent)
     icon->setAlignment(Qt::AlignTop);
     auto *title = new QLabel(
         tr("<h2>LK Servo Studio %1</h2><p>Tuning and diagnostics for LK-TECH MS/MF/MG/MH servo "
-           "drives on RS485 (protocol V2.3). Esc sends Motor Off to every drive from anywhere "
+           "drives on RS485 (protocols V2.3 and V2.35). Esc sends Motor Off to every drive from "
+           "anywhere "
            "in the program.</p>")
             .arg(info.programVersion.toHtmlEscaped()),
         this);
