@@ -1,7 +1,8 @@
+#include "E2eUtil.h"
+
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
-#include <QtCore/QProcess>
 #include <QtTest/QtTest>
 
 // lkctl against a firmware-2.35 drive (protocol V2.35) beside a V2.3 drive on the in-process
@@ -10,27 +11,8 @@
 
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Result lkctl(const QStringList &args)
-{
-    QProcess p;
-    p.start(QStringLiteral(LKCTL_PATH), args);
-    if (!p.waitForStarted(60000))
-        qFatal("cannot start %s", LKCTL_PATH);
-    p.closeWriteChannel();
-    if (!p.waitForFinished(120000))
-        qFatal("lkctl %s did not finish", qPrintable(args.join(' ')));
-    Result r;
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
-}
+using lk::e2e::lkctl;
+using Result = lk::e2e::CtlResult;
 
 QStringList sim(const QString &args)
 {
