@@ -67,6 +67,14 @@ double singleTurnTravelDeg(const protocol::SinglePositionCommand &c, double from
                : -positiveMod(current - target, 360.0);
 }
 
+MotionPlan angleRangeNeedsAngle()
+{
+    return refused(LimitKind::AngleUnknown, 0, 0,
+                   translated(QT_TRANSLATE_NOOP("lk::safety::MotionPlanner",
+                                                "your angle range needs the drive's current "
+                                                "angle: read it (0x92) first")));
+}
+
 // The one-output-turn and angle-window rules that need to know where the drive is.
 std::optional<MotionPlan> checkDistance(const protocol::Request &r, const SoftLimits &limits,
                                         const DrivePosition &at)
@@ -103,11 +111,7 @@ std::optional<MotionPlan> checkDistance(const protocol::Request &r, const SoftLi
                                .arg(turn));
         if (limits.minAngleDeg || limits.maxAngleDeg) {
             if (!at.angleDeg)
-                return refused(LimitKind::AngleUnknown, 0, 0,
-                               translated(QT_TRANSLATE_NOOP(
-                                   "lk::safety::MotionPlanner",
-                                   "your angle range needs the drive's current angle: read it "
-                                   "(0x92) first")));
+                return angleRangeNeedsAngle();
             target = *at.angleDeg + step;
         }
     } else if (const auto *c = std::get_if<protocol::SinglePositionCommand>(&r.payload)) {
@@ -115,11 +119,7 @@ std::optional<MotionPlan> checkDistance(const protocol::Request &r, const SoftLi
         // (from the angle within the turn, in the direction given) must lie inside it.
         if (limits.minAngleDeg || limits.maxAngleDeg) {
             if (!at.angleDeg)
-                return refused(LimitKind::AngleUnknown, 0, 0,
-                               translated(QT_TRANSLATE_NOOP(
-                                   "lk::safety::MotionPlanner",
-                                   "your angle range needs the drive's current angle: read it "
-                                   "(0x92) first")));
+                return angleRangeNeedsAngle();
             target = *at.angleDeg + singleTurnTravelDeg(*c, *at.angleDeg);
         }
     }
