@@ -50,7 +50,7 @@ void tst_SimRomStore::roundTrip()
 {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
-    const SimRom rom{PidGains{255, 0, 7, 8, 9, 10}, 123456, 4321};
+    const SimRom rom{PidGains{255, 0, 7, 8, 9, 10}, 123456, 4321, {}};
     {
         SimRomStore store(dir.path());
         QVERIFY(!store.rom(3, Series::MF));
@@ -130,7 +130,7 @@ void tst_SimRomStore::unreadableFile()
     QVERIFY(store.errors().first().contains(QLatin1String("Cannot read")));
     QVERIFY(store.errors().first().contains(QLatin1String("rom-id07.json")));
     // ... and cannot be written either: save reports it and keeps the value in memory.
-    const SimRom rom{PidGains{1, 1, 1, 1, 1, 1}, 1, 1};
+    const SimRom rom{PidGains{1, 1, 1, 1, 1, 1}, 1, 1, {}};
     QVERIFY(!store.save(7, Series::MF, rom));
     QVERIFY(store.errors().last().contains(QLatin1String("Cannot write")));
     QCOMPARE(store.rom(7, Series::MF), std::optional<SimRom>(rom));
