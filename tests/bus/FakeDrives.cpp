@@ -49,7 +49,7 @@ QByteArray FakeDrives::reply(const Frame &request) const
         r.payload = State1{30, 240, 0};
         break;
     case Command::ReadState3:
-        r.payload = State3{31, 64, -64, 0};
+        r.payload = State3{31, 64, -64, 0, lk::protocol::kPhaseAmpsPerLsb};
         break;
     case Command::ReadMultiTurn:
         r.payload = MultiTurnAngle{-12345};
@@ -67,7 +67,9 @@ QByteArray FakeDrives::reply(const Frame &request) const
         r.payload = Acceleration{1000};
         break;
     default: // read_state2 and every motion command
-        r.payload = State2{32, series == Series::MS ? qint16(500) : qint16(1024), false, 90, 4000};
+        r.payload = State2{32,    series == Series::MS ? qint16(500) : qint16(1024),
+                           false, 90,
+                           4000,  lk::protocol::kIqReplyAmpsPerLsb};
         break;
     }
     return r.encode();

@@ -281,14 +281,18 @@ void tst_BusTiming::telemetryFromReply_data()
     };
     using F = TelemetryField;
     QTest::newRow("state2 iq") << make(Command::ReadState2,
-                                       protocol::State2{30, 2048, false, -5, 7})
+                                       protocol::State2{30, 2048, false, -5, 7,
+                                                        lk::protocol::kIqReplyAmpsPerLsb})
                                << int(F::Temperature | F::IqA | F::Speed | F::Encoder);
     QTest::newRow("state2 power (MS)")
-        << make(Command::Speed, protocol::State2{30, -500, true, 5, 7})
+        << make(Command::Speed,
+                protocol::State2{30, -500, true, 5, 7, lk::protocol::kIqReplyAmpsPerLsb})
         << int(F::Temperature | F::Power | F::Speed | F::Encoder);
     QTest::newRow("state1") << make(Command::ReadState1, protocol::State1{25, 240, 0x08})
                             << int(F::Temperature | F::Voltage | F::ErrorState);
-    QTest::newRow("state3") << make(Command::ReadState3, protocol::State3{25, 64, 0, -64})
+    QTest::newRow("state3") << make(
+                                   Command::ReadState3,
+                                   protocol::State3{25, 64, 0, -64, lk::protocol::kPhaseAmpsPerLsb})
                             << int(F::Temperature | F::PhaseCurrents);
     QTest::newRow("multi turn") << make(Command::ReadMultiTurn, protocol::MultiTurnAngle{36000})
                                 << int(F::MultiTurn);

@@ -35,7 +35,7 @@ QByteArray state2Reply(int id)
     protocol::Reply r;
     r.command = Command::ReadState2;
     r.id = static_cast<quint8>(id);
-    r.payload = protocol::State2{30, 100, false, 5, 6};
+    r.payload = protocol::State2{30, 100, false, 5, 6, lk::protocol::kIqReplyAmpsPerLsb};
     return r.encode();
 }
 } // namespace

@@ -529,7 +529,8 @@ void tst_Reply::roundTrip_data()
     addRoundTrip("clear_errors", Command::ClearErrors, proto::State1{127, 1, 0x08});
     addRoundTrip("read_state2 MF", Command::ReadState2, state2(false));
     addRoundTrip("read_state2 MS", Command::ReadState2, state2(true), Series::MS);
-    addRoundTrip("read_state3", Command::ReadState3, proto::State3{99, -32768, 32767, -1});
+    addRoundTrip("read_state3", Command::ReadState3,
+                 proto::State3{99, -32768, 32767, -1, lk::protocol::kPhaseAmpsPerLsb});
     addRoundTrip("motor_off", Command::MotorOff, proto::Acknowledged{});
     addRoundTrip("motor_stop", Command::MotorStop, proto::Acknowledged{});
     addRoundTrip("motor_run", Command::MotorRun, proto::Acknowledged{});

@@ -248,7 +248,7 @@ void tst_FieldJson::replyFields_data()
         << QByteArray(R"({"temperature_c":-5,"iq_a":-33.0,"iq_raw":-2048,)"
                       R"("speed_dps":-100.0,"encoder":65535})");
     QTest::newRow("read_state3")
-        << reply(Command::ReadState3, State3{30, 64, -32, -1})
+        << reply(Command::ReadState3, State3{30, 64, -32, -1, lk::protocol::kPhaseAmpsPerLsb})
         << QByteArray(R"({"temperature_c":30,"ia_a":1.0,"ia_raw":64,"ib_a":-0.5,"ib_raw":-32,)"
                       R"("ic_a":-0.015625,"ic_raw":-1})");
     ModelInfo m;

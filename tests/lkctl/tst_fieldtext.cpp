@@ -98,7 +98,8 @@ void tst_FieldText::reply_data()
     QTest::newRow("state1 flags") << Reply{Command::ClearErrors, 1, state1(90, 80, 0x0D)}
                                   << "T 90 C, 8.0 V, low voltage, over-temperature, "
                                      "error bits 0x04";
-    QTest::newRow("state3") << Reply{Command::ReadState3, 1, State3{30, 64, -32, -1}}
+    QTest::newRow("state3") << Reply{Command::ReadState3, 1,
+                                     State3{30, 64, -32, -1, lk::protocol::kPhaseAmpsPerLsb}}
                             << "T 30 C, ia 1.00 A, ib -0.50 A, ic -0.02 A";
     QTest::newRow("encoder") << Reply{Command::ReadEncoder, 1, EncoderReading{100, 200, 300}}
                              << "enc 100, raw 200, offset 300";
