@@ -137,9 +137,9 @@ void tst_StreamParser::addFaultSequences()
     QTest::newRow("LEN 255") << concat({"3E 9C 01 FF DA", kMotorOff})
                              << QStringList{QStringLiteral("bad_length: 3E 9C 01 FF DA"), off};
     QTest::newRow("unknown command, valid checksums")
-        << concat({"3E 93 01 00 D2", kMotorOff})
-        << QStringList{QStringLiteral("unknown_command: 3E 93 01 00 D2"), off};
-    const QByteArray unknown60 = hex("3E 40 01 3C BB") + QByteArray(60, 0x3E) + hex("88");
+        << concat({"3E 89 01 00 C8", kMotorOff})
+        << QStringList{QStringLiteral("unknown_command: 3E 89 01 00 C8"), off};
+    const QByteArray unknown60 = hex("3E 41 01 3C BC") + QByteArray(60, 0x3E) + hex("88");
     QTest::newRow("unknown command LEN 60 of 0x3E")
         << unknown60 + hex(kMotorOff)
         << QStringList{QStringLiteral("unknown_command: ") + spaced(unknown60), off};
@@ -158,11 +158,11 @@ void tst_StreamParser::addFaultSequences()
         << QStringList{off, QStringLiteral("truncated: 3E"), QStringLiteral("truncated: 3E")};
     QTest::newRow("every fault in a row")
         << concat({"AA", "3E 80 01 00 BE", "3E A4 01 07 EA 21 00 00 0A 00 2C 19 73",
-                   "3E 93 01 00 D2", "3E 9C 01 FF DA", kState2, "3E 9C 01"})
+                   "3E 89 01 00 C8", "3E 9C 01 FF DA", kState2, "3E 9C 01"})
         << QStringList{QStringLiteral("garbage: AA"),
                        QStringLiteral("bad_header_checksum: 3E 80 01 00 BE"),
                        QStringLiteral("bad_data_checksum: 3E A4 01 07 EA 21 00 00 0A 00 2C 19 73"),
-                       QStringLiteral("unknown_command: 3E 93 01 00 D2"),
+                       QStringLiteral("unknown_command: 3E 89 01 00 C8"),
                        QStringLiteral("bad_length: 3E 9C 01 FF DA"),
                        st2,
                        QStringLiteral("truncated: 3E 9C 01")};
@@ -257,7 +257,7 @@ void tst_StreamParser::resyncAfterFault_data()
                             "3E A4 01 07 EA 21 00 00 0A 00 2C 19 73",
                             "3E 9C 01 3D 18",
                             "3E 9C 01 FF DA",
-                            "3E 93 01 00 D2",
+                            "3E 89 01 00 C8",
                             "3E 9C 01 03 DE 01 02 03 06",
                             "3E 9C 01 08 E3 00 00 00 00 00 00 00 00 00",
                             "3E A1 01 02 E2 3E 00 3F"}; // bad data checksum, 0x3E in data
@@ -297,7 +297,7 @@ void tst_StreamParser::faultEventsCarryTheHeader_data()
     QTest::newRow("bad data checksum") << hex("3E A4 01 07 EA 21 00 00 0A 00 2C 19 73")
                                        << int(ParseError::BadDataChecksum) << 0xA4 << 1;
     QTest::newRow("unknown command")
-        << hex("3E 93 05 00 D6") << int(ParseError::UnknownCommand) << 0x93 << 5;
+        << hex("3E 89 05 00 CC") << int(ParseError::UnknownCommand) << 0x89 << 5;
     QTest::newRow("bad length, LEN 3")
         << hex("3E 9C 01 03 DE 01 02 03 06") << int(ParseError::BadLength) << 0x9C << 1;
     QTest::newRow("bad length, LEN 61 (valid header checksum)")

@@ -173,6 +173,27 @@ void tst_FieldJson::requestFields()
     QCOMPARE(line(FieldJson::requestFields(request)), expected);
 }
 
+namespace {
+// A value every spec accepts: "cw" for a direction, the first word of a choice, else "1".
+QString validText(const FieldSpec &s)
+{
+    if (s.kind == FieldKind::Direction)
+        return QStringLiteral("cw");
+    if (s.kind == FieldKind::Choice)
+        return s.range.section(QLatin1Char('|'), 0, 0);
+    return QStringLiteral("1");
+}
+
+// The specs of a command with valid values; a parameter write takes angle_pid's fields.
+QList<FieldSpec> specsWithParam(Command command)
+{
+    QList<FieldSpec> specs = FieldJson::requestFieldSpecs(command);
+    if (command == Command::WriteParamRam || command == Command::WriteParamRom)
+        specs.append(FieldJson::paramFieldSpecs(lk::protocol::ParamId::AnglePid));
+    return specs;
+}
+} // namespace
+
 void tst_FieldJson::requestFieldsCoverEveryCommand()
 {
     // Every command's request names exactly its specs plus, where scaled, "<field>_raw".
@@ -180,10 +201,11 @@ void tst_FieldJson::requestFieldsCoverEveryCommand()
     for (const CommandInfo &info : CommandTable::all()) {
         FieldValues values{{QStringLiteral("id"), QStringLiteral("1")}};
         QStringList expectedKeys;
-        for (const FieldSpec &s : FieldJson::requestFieldSpecs(info.command)) {
-            values.insert(s.name, s.kind == FieldKind::Direction ? QStringLiteral("cw")
-                                                                 : QStringLiteral("1"));
+        for (const FieldSpec &s : specsWithParam(info.command)) {
+            values.insert(s.name, validText(s));
             expectedKeys << s.name;
+            if (s.name == QLatin1String("param"))
+                expectedKeys << QStringLiteral("param_id"); // the ParamID byte beside its name
             if (s.kind == FieldKind::Number)
                 expectedKeys << QString(s.name).replace(QRegularExpression("_[a-z0-9]+$"),
                                                         QStringLiteral("_raw"));
@@ -323,6 +345,12 @@ void tst_FieldJson::replyFieldsCoverEveryCommand()
         else if (code == 0x12)
             expected = {"driver_name",          "motor_name",       "hardware_version",
                         "hardware_version_raw", "firmware_version", "firmware_version_raw"};
+        else if (code == 0x40) // ParamID 0x01 is not in the table: its bytes are shown raw
+            expected = {"param", "param_id", "value_bytes"};
+        else if (code == 0x42 || code == 0x44)
+            expected = {"param", "param_id", "success", "success_flag"};
+        else if (code == 0x8C)
+            expected = {"brake_released", "brake_raw"};
         expected.sort();
         QCOMPARE(keys, expected);
     }
@@ -430,15 +458,15 @@ void tst_FieldJson::specRangesMatchBuilders()
     const QStringList badIntegers{"-1", "256", "1001", "-1001", "65536"};
     int checked = 0;
     for (const CommandInfo &info : CommandTable::all()) {
-        QList<FieldSpec> specs = FieldJson::requestFieldSpecs(info.command);
+        QList<FieldSpec> specs = specsWithParam(info.command);
         specs.prepend(FieldJson::idSpec());
         FieldValues valid;
         for (const FieldSpec &s : specs)
-            valid.insert(s.name, s.kind == FieldKind::Direction ? "cw" : "1");
+            valid.insert(s.name, validText(s));
         QVERIFY2(FieldJson::buildRequest(info.command, valid).ok(), info.name);
         for (const FieldSpec &s : specs) {
-            if (s.kind == FieldKind::Direction)
-                continue; // not a builder argument: the builders take SpinDirection
+            if (s.kind == FieldKind::Direction || s.kind == FieldKind::Choice)
+                continue; // not builder arguments: the builders take enums
             const QStringList bad =
                 s.kind == FieldKind::Integer ? badIntegers : QStringList{"1e30", "-1e30"};
             bool refused = false;
@@ -457,9 +485,10 @@ void tst_FieldJson::specRangesMatchBuilders()
             ++checked;
         }
     }
-    // 28 ids, 12 PID gains, accel, offset, power, iq, speed, 1 + 2 multi-position, 1 + 2
-    // single-position (direction aside), 1 + 2 increment.
-    QCOMPARE(checked, 28 + 12 + 5 + 3 + 3 + 3);
+    // 33 ids, 12 PID gains, accel, offset, power, iq, speed, 1 + 2 multi-position, 1 + 2
+    // single-position (direction aside), 1 + 2 increment, 2 x 3 parameter gains (param and
+    // brake action aside).
+    QCOMPARE(checked, 33 + 12 + 5 + 3 + 3 + 3 + 6);
 }
 
 void tst_FieldJson::eventLines_data()

@@ -541,13 +541,14 @@ void tst_Lkctl::help_data()
     QTest::newRow("encode --help") << QStringList{"encode", "--help"} << encode;
     QTest::newRow("help encode") << QStringList{"help", "encode"} << encode;
     QTest::newRow("encode NAME -h") << QStringList{"encode", "speed", "-h"} << encode;
-    const QStringList decode{"Usage: lkctl decode [--series MS|MF|MG|MH] HEX...",
-                             "--binary",
-                             "'#' starts a comment",
-                             "bad_header_checksum",
-                             "truncated",
-                             "Examples:",
-                             "Exit status"};
+    const QStringList decode{
+        "Usage: lkctl decode [--series MS|MF|MG|MH] [--generation v2.3|v2.35] HEX...",
+        "--binary",
+        "'#' starts a comment",
+        "bad_header_checksum",
+        "truncated",
+        "Examples:",
+        "Exit status"};
     QTest::newRow("decode --help") << QStringList{"decode", "--help"} << decode;
     QTest::newRow("decode -h") << QStringList{"decode", "-h"} << decode;
     QTest::newRow("help decode") << QStringList{"help", "decode"} << decode;

@@ -222,7 +222,9 @@ void tst_LkctlLive::scanSimulatedBus()
     QCOMPARE(a.at(2).toObject().value("motor_name").toString(), QStringLiteral("MG5010E-i10"));
     QVERIFY2(r.out.startsWith("[{\"id\":3,\"driver_name\":\"LK-MF4015-DRV\",\"motor_name\":"
                               "\"MF4015\",\"hardware_version\":1.0,\"firmware_version\":2.3,"
-                              "\"series\":\"MF\"},"),
+                              "\"series\":\"MF\",\"generation\":\"v2.3\",\"temperature_c\":25,"
+                              "\"voltage_v\":24.0,\"bus_current_a\":null,\"motor_on\":null,"
+                              "\"error_state\":0,\"errors\":[]},"),
              r.out.constData()); // CLI.md's keys in CLI.md's order, and no baud without a sweep
     const Result swept = lkctl(sim("scan --sweep-bauds --from 3 --to 3 --json"));
     QCOMPARE(swept.exitCode, 0);
@@ -253,7 +255,8 @@ void tst_LkctlLive::readAndInfoShapes()
     r = lkctl(sim("info 32 --json"));
     QCOMPARE(r.exitCode, 0);
     const QJsonObject o = QJsonDocument::fromJson(r.out).object();
-    QCOMPARE(o.keys(), (QStringList{"accel", "id", "model", "pid", "series", "state1"}));
+    QCOMPARE(o.keys(),
+             (QStringList{"accel", "generation", "id", "model", "pid", "series", "state1"}));
 }
 
 void tst_LkctlLive::controlWithinAndOverLimits_data()

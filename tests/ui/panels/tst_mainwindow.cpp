@@ -209,7 +209,7 @@ void tst_MainWindow::baudSweepKeepsOneBaud()
                       Qt::LeftButton);
     QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 1, kWaitMs * 3);
     const auto summary = finished.at(0).at(0).value<lk::bus::ScanSummary>();
-    QCOMPARE(summary.motors.size(), 4 * 9);
+    QCOMPARE(summary.motors.size(), 4 * 10);
     QCOMPARE(model()->ids(), kSimIds);
     for (int id : kSimIds)
         QCOMPARE(model()->drive(id)->baud, summary.finalBaud);
