@@ -180,8 +180,13 @@ LineSegments SampleRing::decimate(double t0, double t1, int columns, DecimationM
         out.append(decimateStretch(from, end, t0, t1, columns, method));
     }
     if (out.size() > 1) {
-        // A lone neighbour on the far side of a gap draws nothing: leave it out.
-        out.removeIf([](const QList<QPointF> &segment) { return segment.size() < 2; });
+        // A lone neighbour outside the window, on the far side of a gap, belongs to no line
+        // here: leave it out. A lone sample inside the window is data (the first reply after
+        // an outage) and stays, for the scale and the cursor.
+        out.removeIf([t0, t1](const QList<QPointF> &segment) {
+            return segment.isEmpty() ||
+                   (segment.size() == 1 && (segment.front().x() < t0 || segment.front().x() > t1));
+        });
     }
     return out;
 }

@@ -30,7 +30,10 @@ void answerFileDialog(QString *startDir, QString *startName, const QString &file
         }
         *startDir = dialog->directory().absolutePath();
         *startName = dialog->findChild<QLineEdit *>(QStringLiteral("fileNameEdit"))->text();
+        // Type the path into the name field, as a user would: selectFile() alone may leave
+        // the suggested name there, which accept() then takes.
         dialog->selectFile(fileName);
+        dialog->findChild<QLineEdit *>(QStringLiteral("fileNameEdit"))->setText(fileName);
         static_cast<QDialog *>(dialog)->accept(); // QFileDialog::accept, checks the name
     });
 }
