@@ -1,3687 +1,3485 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
-    <context>
-        <name>lk::bus::BusSession</name>
-        <message>
-            <source>session closed</source>
-            <translation>会话已关闭</translation>
-        </message>
-        <message>
-            <source>the bus is not open</source>
-            <translation>总线未打开</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::bus::BusWorker</name>
-        <message>
-            <source>bus closed</source>
-            <translation>总线已关闭</translation>
-        </message>
-        <message>
-            <source>No transport: the transport factory returned nothing.</source>
-            <translation>没有可用的传输通道：传输工厂未返回任何对象。</translation>
-        </message>
-        <message>
-            <source>the port was reopened at another baud</source>
-            <translation>串口已按其他波特率重新打开</translation>
-        </message>
-        <message>
-            <source>closed</source>
-            <translation>已关闭</translation>
-        </message>
-        <message>
-            <source>disconnected</source>
-            <translation>已断开</translation>
-        </message>
-        <message>
-            <source>open</source>
-            <translation>已打开</translation>
-        </message>
-        <message>
-            <source>the bus is not open</source>
-            <translation>总线未打开</translation>
-        </message>
-        <message numerus="yes">
-            <source>no reply to %1 after %n attempt(s)</source>
-            <translation>
-                <numerusform>%1 无回复（已尝试 %n 次）</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>corrupt reply to %1 (bad data checksum)</source>
-            <translation>%1 的回复已损坏（数据校验和错误）</translation>
-        </message>
-        <message>
-            <source>undecodable reply to %1</source>
-            <translation>%1 的回复无法解码</translation>
-        </message>
-        <message>
-            <source>cancelled by emergency stop</source>
-            <translation>已被急停取消</translation>
-        </message>
-        <message>
-            <source>scan cancelled</source>
-            <translation>扫描已取消</translation>
-        </message>
-        <message>
-            <source>drive %1 runs firmware 2.35 or later (protocol V2.35), which has no %2; nothing was sent</source>
-            <translation>驱动器 %1 运行 2.35 或更高版本固件（V2.35 协议），该协议没有 %2；未发送任何内容</translation>
-        </message>
-        <message>
-            <source>drive %1 speaks protocol V2.3, which has no %2 (firmware 2.35 added it); nothing was sent</source>
-            <translation>驱动器 %1 使用 V2.3 协议，该协议没有 %2（2.35 固件才加入）；未发送任何内容</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::bus::Scanner</name>
-        <message>
-            <source>scan range %1..%2 is outside 1..32</source>
-            <translation>扫描范围 %1..%2 超出 1..32</translation>
-        </message>
-        <message>
-            <source>no valid baud to scan</source>
-            <translation>没有可扫描的有效波特率</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::bus::TrafficRecorder</name>
-        <message>
-            <source>%1 traffic events dropped (view too slow)</source>
-            <translation>丢弃了 %1 条通信记录（视图刷新过慢）</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::protocol::ErrorFlags</name>
-        <message>
-            <source>low voltage</source>
-            <translation>低压保护</translation>
-        </message>
-        <message>
-            <source>over-temperature</source>
-            <translation>过温保护</translation>
-        </message>
-        <message>
-            <source>over-voltage</source>
-            <translation>过压保护</translation>
-        </message>
-        <message>
-            <source>driver over-temperature</source>
-            <translation>驱动器过温保护</translation>
-        </message>
-        <message>
-            <source>motor over-temperature</source>
-            <translation>电机过温保护</translation>
-        </message>
-        <message>
-            <source>over-current</source>
-            <translation>过流保护</translation>
-        </message>
-        <message>
-            <source>short circuit</source>
-            <translation>短路保护</translation>
-        </message>
-        <message>
-            <source>stall</source>
-            <translation>堵转保护</translation>
-        </message>
-        <message>
-            <source>input signal lost (timeout)</source>
-            <translation>输入信号丢失（超时）</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::protocol::FieldError</name>
-        <message>
-            <source>%1 must be in %2</source>
-            <translation>%1 必须在 %2 范围内</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::protocol::FieldText</name>
-        <message>
-            <source>angle Kp %1 Ki %2, speed Kp %3 Ki %4, iq Kp %5 Ki %6</source>
-            <translation>角度环 Kp %1 Ki %2，速度环 Kp %3 Ki %4，电流环 Kp %5 Ki %6</translation>
-        </message>
-        <message>
-            <source>, max %1 dps</source>
-            <translation>，最大 %1 dps</translation>
-        </message>
-        <message>
-            <source>accel %1 dps/s</source>
-            <translation>加速度 %1 dps/s</translation>
-        </message>
-        <message>
-            <source>offset %1</source>
-            <translation>零偏 %1</translation>
-        </message>
-        <message>
-            <source>power %1</source>
-            <translation>功率 %1</translation>
-        </message>
-        <message>
-            <source>iq %1 A</source>
-            <translation>转矩电流 %1 A</translation>
-        </message>
-        <message>
-            <source>speed %1 dps</source>
-            <translation>速度 %1 dps</translation>
-        </message>
-        <message>
-            <source>angle %1 deg</source>
-            <translation>角度 %1°</translation>
-        </message>
-        <message>
-            <source>cw</source>
-            <translation>顺时针</translation>
-        </message>
-        <message>
-            <source>ccw</source>
-            <translation>逆时针</translation>
-        </message>
-        <message>
-            <source>%1 to %2 deg</source>
-            <translation>%1转到 %2°</translation>
-        </message>
-        <message>
-            <source>by %1%2 deg</source>
-            <translation>增量 %1%2°</translation>
-        </message>
-        <message>
-            <source>T %1 C</source>
-            <translation>温度 %1 °C</translation>
-        </message>
-        <message>
-            <source>error bits 0x%1</source>
-            <translation>错误位 0x%1</translation>
-        </message>
-        <message>
-            <source>%1, %2, %3 dps, enc %4</source>
-            <translation>%1，%2，%3 dps，编码器 %4</translation>
-        </message>
-        <message>
-            <source>%1 / %2, hw %3, fw %4</source>
-            <translation>%1 / %2，硬件 %3，固件 %4</translation>
-        </message>
-        <message>
-            <source>enc %1, raw %2, offset %3</source>
-            <translation>编码器 %1，原始值 %2，零偏 %3</translation>
-        </message>
-        <message>
-            <source>%1, ia %2 A, ib %3 A, ic %4 A</source>
-            <translation>%1，A 相 %2 A，B 相 %3 A，C 相 %4 A</translation>
-        </message>
-        <message>
-            <source>%1 Kp %2 Ki %3 Kd %4</source>
-            <translation>%1 Kp %2 Ki %3 Kd %4</translation>
-        </message>
-        <message>
-            <source>engage brake</source>
-            <translation>抱闸锁紧</translation>
-        </message>
-        <message>
-            <source>release brake</source>
-            <translation>抱闸释放</translation>
-        </message>
-        <message>
-            <source>read brake</source>
-            <translation>读取抱闸状态</translation>
-        </message>
-        <message>
-            <source>motor on</source>
-            <translation>电机运行</translation>
-        </message>
-        <message>
-            <source>motor off</source>
-            <translation>电机关闭</translation>
-        </message>
-        <message>
-            <source>%1 written</source>
-            <translation>%1 已写入</translation>
-        </message>
-        <message>
-            <source>%1 refused (flag %2)</source>
-            <translation>%1 被拒绝（标志 %2）</translation>
-        </message>
-        <message>
-            <source>brake released</source>
-            <translation>抱闸已释放</translation>
-        </message>
-        <message>
-            <source>brake applied</source>
-            <translation>抱闸已锁紧</translation>
-        </message>
-        <message>
-            <source>low voltage</source>
-            <translation>低压保护</translation>
-        </message>
-        <message>
-            <source>over temperature</source>
-            <translation>过温保护</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::protocol::RequestBuilder</name>
-        <message>
-            <source>got %1</source>
-            <translation>实际为 %1</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::record::BusReport</name>
-        <message>
-            <source>ID</source>
-            <translation>ID</translation>
-        </message>
-        <message>
-            <source>Series</source>
-            <translation>系列</translation>
-        </message>
-        <message>
-            <source>Driver</source>
-            <translation>驱动</translation>
-        </message>
-        <message>
-            <source>Motor</source>
-            <translation>电机</translation>
-        </message>
-        <message>
-            <source>Hardware</source>
-            <translation>硬件</translation>
-        </message>
-        <message>
-            <source>Firmware</source>
-            <translation>固件</translation>
-        </message>
-        <message>
-            <source>PID (angle Kp/Ki · speed Kp/Ki · iq Kp/Ki)</source>
-            <translation>PID（角度 Kp/Ki · 速度 Kp/Ki · iq Kp/Ki）</translation>
-        </message>
-        <message>
-            <source>Acceleration (dps/s)</source>
-            <translation>加速度 (dps/s)</translation>
-        </message>
-        <message>
-            <source>State</source>
-            <translation>状态</translation>
-        </message>
-        <message>
-            <source>Problems</source>
-            <translation>问题</translation>
-        </message>
-        <message>
-            <source>LOW VOLTAGE</source>
-            <translation>低压保护</translation>
-        </message>
-        <message>
-            <source>OVER TEMPERATURE</source>
-            <translation>过温保护</translation>
-        </message>
-        <message>
-            <source>none</source>
-            <translation>无</translation>
-        </message>
-        <message>
-            <source>LK bus report</source>
-            <translation>LK 总线报告</translation>
-        </message>
-        <message>
-            <source>Created: %1 (UTC)</source>
-            <translation>生成时间：%1 (UTC)</translation>
-        </message>
-        <message>
-            <source>Connection: %1</source>
-            <translation>连接：%1</translation>
-        </message>
-        <message>
-            <source>Drives: %1</source>
-            <translation>驱动数：%1</translation>
-        </message>
-        <message>
-            <source>Written by: %1</source>
-            <translation>生成工具：%1</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::record::CsvWriter</name>
-        <message>
-            <source>Cannot open %1: %2</source>
-            <translation>无法打开 %1：%2</translation>
-        </message>
-        <message>
-            <source>The file was not opened</source>
-            <translation>文件未打开</translation>
-        </message>
-        <message>
-            <source>Cannot write %1: %2</source>
-            <translation>无法写入 %1：%2</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::record::ParameterSet</name>
-        <message>
-            <source>not an LK Servo Studio parameter file (format is not "%1")</source>
-            <translation>不是 LK Servo Studio 参数文件（格式不是“%1”）</translation>
-        </message>
-        <message>
-            <source>written by a newer release (format version %1, this one reads up to %2)</source>
-            <translation>由更新的版本写入（格式版本 %1，本版本最高只能读取 %2）</translation>
-        </message>
-        <message>
-            <source>drive is missing</source>
-            <translation>缺少 drive 项</translation>
-        </message>
-        <message>
-            <source>pid is missing</source>
-            <translation>缺少 pid 项</translation>
-        </message>
-        <message>
-            <source>not valid JSON (%1 at byte %2)</source>
-            <translation>不是有效的 JSON（%1，位于第 %2 字节）</translation>
-        </message>
-        <message>
-            <source>not a JSON object</source>
-            <translation>不是 JSON 对象</translation>
-        </message>
-        <message>
-            <source>cannot read %1: %2</source>
-            <translation>无法读取 %1：%2</translation>
-        </message>
-        <message>
-            <source>cannot write %1: %2</source>
-            <translation>无法写入 %1：%2</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::safety::MotionGuard</name>
-        <message>
-            <source>%1 %2 dps exceeds the %3 series top speed of %4 dps</source>
-            <translation>%1 %2 dps 超过 %3 系列的最高速度 %4 dps</translation>
-        </message>
-        <message>
-            <source>%1 %2 dps exceeds your speed limit of %3 dps</source>
-            <translation>%1 %2 dps 超过您的速度限值 %3 dps</translation>
-        </message>
-        <message>
-            <source>max speed</source>
-            <translation>最大速度</translation>
-        </message>
-        <message>
-            <source>torque needs the drive's series: scan the bus first</source>
-            <translation>转矩控制需要知道驱动的系列：请先扫描总线</translation>
-        </message>
-        <message>
-            <source>torque current %1 A exceeds the %2 series rating of %3 A</source>
-            <translation>转矩电流 %1 A 超过 %2 系列的额定值 %3 A</translation>
-        </message>
-        <message>
-            <source>torque current %1 A exceeds your torque limit of %2 A</source>
-            <translation>转矩电流 %1 A 超过您的转矩限值 %2 A</translation>
-        </message>
-        <message>
-            <source>target %1 deg is below your angle range (min %2 deg)</source>
-            <translation>目标 %1° 低于您的角度范围（最小 %2°）</translation>
-        </message>
-        <message>
-            <source>target %1 deg is above your angle range (max %2 deg)</source>
-            <translation>目标 %1° 高于您的角度范围（最大 %2°）</translation>
-        </message>
-        <message>
-            <source>increment of %1 deg exceeds your step limit of %2 deg</source>
-            <translation>增量 %1° 超过您的步长限值 %2°</translation>
-        </message>
-        <message>
-            <source>open loop needs the drive's series: scan the bus first</source>
-            <translation>开环控制需要知道驱动的系列：请先扫描总线</translation>
-        </message>
-        <message>
-            <source>%1 drives do not implement %2</source>
-            <translation>%1 驱动不支持 %2</translation>
-        </message>
-        <message>
-            <source>open-loop power %1 exceeds your power limit of %2</source>
-            <translation>开环功率 %1 超过您的功率限值 %2</translation>
-        </message>
-        <message>
-            <source>speed</source>
-            <translation>速度</translation>
-        </message>
-        <message>
-            <source>%1 %2 dps exceeds %3 dps, the top speed of the slowest series (the drive's series is unknown)</source>
-            <translation>%1 %2 dps 超过 %3 dps，即最慢系列的最高速度（驱动的系列未知）</translation>
-        </message>
-        <message>
-            <source>no speed limit is set: set one first</source>
-            <translation>未设置速度限值：请先设置</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::safety::SoftLimits</name>
-        <message>
-            <source>min_angle_deg must not exceed max_angle_deg</source>
-            <translation>min_angle_deg 不能大于 max_angle_deg</translation>
-        </message>
-        <message>
-            <source>%1 must be a number</source>
-            <translation>%1 必须是数字</translation>
-        </message>
-        <message>
-            <source>%1 must be a non-negative number</source>
-            <translation>%1 必须是非负数字</translation>
-        </message>
-        <message>
-            <source>%1 must be a whole number in %2 (got %3)</source>
-            <translation>%1 必须是 %2 范围内的整数（实际为 %3）</translation>
-        </message>
-        <message>
-            <source>%1 must be a number in %2 (got %3)</source>
-            <translation>%1 必须是 %2 范围内的数值（实际为 %3）</translation>
-        </message>
-        <message>
-            <source>unknown key "%1" (the keys are %2)</source>
-            <translation>未知的键“%1”（可用的键：%2）</translation>
-        </message>
-        <message>
-            <source>min_angle_deg (%1) must not exceed max_angle_deg (%2)</source>
-            <translation>min_angle_deg（%1）不能大于 max_angle_deg（%2）</translation>
-        </message>
-        <message>
-            <source>not a JSON object</source>
-            <translation>不是 JSON 对象</translation>
-        </message>
-        <message>
-            <source>not a JSON object (%1 at byte %2)</source>
-            <translation>不是 JSON 对象（%1，位于第 %2 字节）</translation>
-        </message>
-        <message>
-            <source>key "%1" is given twice</source>
-            <translation>键“%1”出现了两次</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::transport::PortErrorText</name>
-        <message>
-            <source>No serial port %1. Is the adapter plugged in?</source>
-            <translation>没有串口 %1。转换器插好了吗？</translation>
-        </message>
-        <message>
-            <source>No permission to open %1. Add your user to the serial port group (`sudo usermod -aG dialout $USER` on Debian/Ubuntu, group `uucp` on Arch), then log out and in again.</source>
-            <translation>没有权限打开 %1。请把您的用户加入串口用户组（Debian/Ubuntu 上执行 `sudo usermod -aG dialout $USER`，Arch 上为 `uucp` 组），然后注销并重新登录。</translation>
-        </message>
-        <message>
-            <source>%1 is in use by another program (a terminal, another lkstudio, ModemManager?). Close it and try again; `fuser %1` shows who holds it.</source>
-            <translation>%1 正被其他程序占用（终端、另一个 lkstudio、ModemManager？）。关闭该程序后重试；`fuser %1` 可查看占用者。</translation>
-        </message>
-        <message>
-            <source>The serial adapter %1 was disconnected (unplugged or reset). Plug it back in and reconnect.</source>
-            <translation>串口转换器 %1 已断开（被拔出或复位）。请重新插上并重新连接。</translation>
-        </message>
-        <message>
-            <source>%1 refused %2 baud 8N1. Try another baud or another adapter.</source>
-            <translation>%1 不接受 %2 波特 8N1。请换一个波特率或换一个转换器。</translation>
-        </message>
-        <message>
-            <source>Serial port %1 failed.</source>
-            <translation>串口 %1 出错。</translation>
-        </message>
-        <message>
-            <source>%1 is not a serial device. Give the adapter's port, e.g. /dev/ttyUSB0; `ls /dev/serial/by-id/` lists the adapters plugged in.</source>
-            <translation>%1 不是串口设备。请指定转换器的串口，例如 /dev/ttyUSB0；`ls /dev/serial/by-id/` 会列出已插入的转换器。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::transport::SerialTransport</name>
-        <message>
-            <source>no serial ports found</source>
-            <translation>未找到串口</translation>
-        </message>
-        <message>
-            <source>ports found: %1</source>
-            <translation>找到的串口：%1</translation>
-        </message>
-        <message>
-            <source>driver set %1</source>
-            <translation>驱动程序设置为 %1</translation>
-        </message>
-        <message>
-            <source>a regular file</source>
-            <translation>这是一个普通文件</translation>
-        </message>
-        <message>
-            <source>a directory</source>
-            <translation>这是一个目录</translation>
-        </message>
-        <message>
-            <source>a pipe, socket or block device</source>
-            <translation>这是管道、套接字或块设备</translation>
-        </message>
-        <message>
-            <source>a device that is not a terminal</source>
-            <translation>这是一个不是终端的设备</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::transport::SimTransport</name>
-        <message>
-            <source>Simulated bus (1 drive)</source>
-            <translation>模拟总线（1 个驱动）</translation>
-        </message>
-        <message>
-            <source>Simulated bus (%1 drives)</source>
-            <translation>模拟总线（%1 个驱动）</translation>
-        </message>
-        <message>
-            <source>The simulated bus was disconnected (fault injection). Open it again to reconnect.</source>
-            <translation>模拟总线已断开（故障注入）。重新打开即可重新连接。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::AboutDialog</name>
-        <message>
-            <source>About LK Servo Studio</source>
-            <translation>关于 LK Servo Studio</translation>
-        </message>
-        <message>
-            <source>&lt;h2&gt;LK Servo Studio %1&lt;/h2&gt;&lt;p&gt;Tuning and diagnostics for LK-TECH MS/MF/MG/MH servo drives on RS485 (protocols V2.3 and V2.35). Esc sends Motor Off to every drive from anywhere in the program.&lt;/p&gt;</source>
-            <translation>&lt;h2&gt;LK Servo Studio %1&lt;/h2&gt;&lt;p&gt;用于 RS485 总线上瓴控 LK-TECH MS/MF/MG/MH 伺服驱动的调参与诊断工具（协议 V2.3 与 V2.35）。在程序中任何地方按 Esc 都会向每个驱动发送电机关闭命令。&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>Qt %1 (built with %2), platform %3
+<context>
+    <name>lk::bus::BusSession</name>
+    <message>
+        <source>session closed</source>
+        <translation>会话已关闭</translation>
+    </message>
+    <message>
+        <source>the bus is not open</source>
+        <translation>总线未打开</translation>
+    </message>
+</context>
+<context>
+    <name>lk::bus::BusWorker</name>
+    <message>
+        <source>bus closed</source>
+        <translation>总线已关闭</translation>
+    </message>
+    <message>
+        <source>No transport: the transport factory returned nothing.</source>
+        <translation>没有可用的传输通道：传输工厂未返回任何对象。</translation>
+    </message>
+    <message>
+        <source>the port was reopened at another baud</source>
+        <translation>串口已按其他波特率重新打开</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>已关闭</translation>
+    </message>
+    <message>
+        <source>disconnected</source>
+        <translation>已断开</translation>
+    </message>
+    <message>
+        <source>open</source>
+        <translation>已打开</translation>
+    </message>
+    <message>
+        <source>the bus is not open</source>
+        <translation>总线未打开</translation>
+    </message>
+    <message numerus="yes">
+        <source>no reply to %1 after %n attempt(s)</source>
+        <translation>
+            <numerusform>%1 无回复（已尝试 %n 次）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>corrupt reply to %1 (bad data checksum)</source>
+        <translation>%1 的回复已损坏（数据校验和错误）</translation>
+    </message>
+    <message>
+        <source>undecodable reply to %1</source>
+        <translation>%1 的回复无法解码</translation>
+    </message>
+    <message>
+        <source>cancelled by emergency stop</source>
+        <translation>已被急停取消</translation>
+    </message>
+    <message>
+        <source>scan cancelled</source>
+        <translation>扫描已取消</translation>
+    </message>
+    <message>
+        <source>drive %1 runs firmware 2.35 or later (protocol V2.35), which has no %2; nothing was sent</source>
+        <translation>驱动器 %1 运行 2.35 或更高版本固件（V2.35 协议），该协议没有 %2；未发送任何内容</translation>
+    </message>
+    <message>
+        <source>drive %1 speaks protocol V2.3, which has no %2 (firmware 2.35 added it); nothing was sent</source>
+        <translation>驱动器 %1 使用 V2.3 协议，该协议没有 %2（2.35 固件才加入）；未发送任何内容</translation>
+    </message>
+</context>
+<context>
+    <name>lk::bus::Scanner</name>
+    <message>
+        <source>scan range %1..%2 is outside 1..32</source>
+        <translation>扫描范围 %1..%2 超出 1..32</translation>
+    </message>
+    <message>
+        <source>no valid baud to scan</source>
+        <translation>没有可扫描的有效波特率</translation>
+    </message>
+</context>
+<context>
+    <name>lk::bus::TrafficRecorder</name>
+    <message>
+        <source>%1 traffic events dropped (view too slow)</source>
+        <translation>丢弃了 %1 条通信记录（视图刷新过慢）</translation>
+    </message>
+</context>
+<context>
+    <name>lk::protocol::ErrorFlags</name>
+    <message>
+        <source>low voltage</source>
+        <translation>低压保护</translation>
+    </message>
+    <message>
+        <source>over-temperature</source>
+        <translation>过温保护</translation>
+    </message>
+    <message>
+        <source>over-voltage</source>
+        <translation>过压保护</translation>
+    </message>
+    <message>
+        <source>driver over-temperature</source>
+        <translation>驱动器过温保护</translation>
+    </message>
+    <message>
+        <source>motor over-temperature</source>
+        <translation>电机过温保护</translation>
+    </message>
+    <message>
+        <source>over-current</source>
+        <translation>过流保护</translation>
+    </message>
+    <message>
+        <source>short circuit</source>
+        <translation>短路保护</translation>
+    </message>
+    <message>
+        <source>stall</source>
+        <translation>堵转保护</translation>
+    </message>
+    <message>
+        <source>input signal lost (timeout)</source>
+        <translation>输入信号丢失（超时）</translation>
+    </message>
+</context>
+<context>
+    <name>lk::protocol::FieldError</name>
+    <message>
+        <source>%1 must be in %2</source>
+        <translation>%1 必须在 %2 范围内</translation>
+    </message>
+</context>
+<context>
+    <name>lk::protocol::FieldText</name>
+    <message>
+        <source>angle Kp %1 Ki %2, speed Kp %3 Ki %4, iq Kp %5 Ki %6</source>
+        <translation>角度环 Kp %1 Ki %2，速度环 Kp %3 Ki %4，电流环 Kp %5 Ki %6</translation>
+    </message>
+    <message>
+        <source>, max %1 dps</source>
+        <translation>，最大 %1 dps</translation>
+    </message>
+    <message>
+        <source>accel %1 dps/s</source>
+        <translation>加速度 %1 dps/s</translation>
+    </message>
+    <message>
+        <source>offset %1</source>
+        <translation>零偏 %1</translation>
+    </message>
+    <message>
+        <source>power %1</source>
+        <translation>功率 %1</translation>
+    </message>
+    <message>
+        <source>iq %1 A</source>
+        <translation>转矩电流 %1 A</translation>
+    </message>
+    <message>
+        <source>speed %1 dps</source>
+        <translation>速度 %1 dps</translation>
+    </message>
+    <message>
+        <source>angle %1 deg</source>
+        <translation>角度 %1°</translation>
+    </message>
+    <message>
+        <source>cw</source>
+        <translation>顺时针</translation>
+    </message>
+    <message>
+        <source>ccw</source>
+        <translation>逆时针</translation>
+    </message>
+    <message>
+        <source>%1 to %2 deg</source>
+        <translation>%1转到 %2°</translation>
+    </message>
+    <message>
+        <source>by %1%2 deg</source>
+        <translation>增量 %1%2°</translation>
+    </message>
+    <message>
+        <source>T %1 C</source>
+        <translation>温度 %1 °C</translation>
+    </message>
+    <message>
+        <source>error bits 0x%1</source>
+        <translation>错误位 0x%1</translation>
+    </message>
+    <message>
+        <source>%1, %2, %3 dps, enc %4</source>
+        <translation>%1，%2，%3 dps，编码器 %4</translation>
+    </message>
+    <message>
+        <source>%1 / %2, hw %3, fw %4</source>
+        <translation>%1 / %2，硬件 %3，固件 %4</translation>
+    </message>
+    <message>
+        <source>enc %1, raw %2, offset %3</source>
+        <translation>编码器 %1，原始值 %2，零偏 %3</translation>
+    </message>
+    <message>
+        <source>%1, ia %2 A, ib %3 A, ic %4 A</source>
+        <translation>%1，A 相 %2 A，B 相 %3 A，C 相 %4 A</translation>
+    </message>
+    <message>
+        <source>%1 Kp %2 Ki %3 Kd %4</source>
+        <translation>%1 Kp %2 Ki %3 Kd %4</translation>
+    </message>
+    <message>
+        <source>engage brake</source>
+        <translation>抱闸锁紧</translation>
+    </message>
+    <message>
+        <source>release brake</source>
+        <translation>抱闸释放</translation>
+    </message>
+    <message>
+        <source>read brake</source>
+        <translation>读取抱闸状态</translation>
+    </message>
+    <message>
+        <source>motor on</source>
+        <translation>电机运行</translation>
+    </message>
+    <message>
+        <source>motor off</source>
+        <translation>电机关闭</translation>
+    </message>
+    <message>
+        <source>%1 written</source>
+        <translation>%1 已写入</translation>
+    </message>
+    <message>
+        <source>%1 refused (flag %2)</source>
+        <translation>%1 被拒绝（标志 %2）</translation>
+    </message>
+    <message>
+        <source>brake released</source>
+        <translation>抱闸已释放</translation>
+    </message>
+    <message>
+        <source>brake applied</source>
+        <translation>抱闸已锁紧</translation>
+    </message>
+</context>
+<context>
+    <name>lk::protocol::RequestBuilder</name>
+    <message>
+        <source>got %1</source>
+        <translation>实际为 %1</translation>
+    </message>
+</context>
+<context>
+    <name>lk::record::BusReport</name>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Series</source>
+        <translation>系列</translation>
+    </message>
+    <message>
+        <source>Driver</source>
+        <translation>驱动</translation>
+    </message>
+    <message>
+        <source>Motor</source>
+        <translation>电机</translation>
+    </message>
+    <message>
+        <source>Hardware</source>
+        <translation>硬件</translation>
+    </message>
+    <message>
+        <source>Firmware</source>
+        <translation>固件</translation>
+    </message>
+    <message>
+        <source>PID (angle Kp/Ki · speed Kp/Ki · iq Kp/Ki)</source>
+        <translation>PID（角度 Kp/Ki · 速度 Kp/Ki · iq Kp/Ki）</translation>
+    </message>
+    <message>
+        <source>Acceleration (dps/s)</source>
+        <translation>加速度 (dps/s)</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <source>Problems</source>
+        <translation>问题</translation>
+    </message>
+    <message>
+        <source>LOW VOLTAGE</source>
+        <translation>低压保护</translation>
+    </message>
+    <message>
+        <source>OVER TEMPERATURE</source>
+        <translation>过温保护</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>LK bus report</source>
+        <translation>LK 总线报告</translation>
+    </message>
+    <message>
+        <source>Created: %1 (UTC)</source>
+        <translation>生成时间：%1 (UTC)</translation>
+    </message>
+    <message>
+        <source>Connection: %1</source>
+        <translation>连接：%1</translation>
+    </message>
+    <message>
+        <source>Drives: %1</source>
+        <translation>驱动数：%1</translation>
+    </message>
+    <message>
+        <source>Written by: %1</source>
+        <translation>生成工具：%1</translation>
+    </message>
+</context>
+<context>
+    <name>lk::record::CsvWriter</name>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>无法打开 %1：%2</translation>
+    </message>
+    <message>
+        <source>The file was not opened</source>
+        <translation>文件未打开</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>lk::record::ParameterSet</name>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>lk::safety::MotionGuard</name>
+    <message>
+        <source>%1 %2 dps exceeds the %3 series top speed of %4 dps</source>
+        <translation>%1 %2 dps 超过 %3 系列的最高速度 %4 dps</translation>
+    </message>
+    <message>
+        <source>%1 %2 dps exceeds your speed limit of %3 dps</source>
+        <translation>%1 %2 dps 超过您的速度限值 %3 dps</translation>
+    </message>
+    <message>
+        <source>max speed</source>
+        <translation>最大速度</translation>
+    </message>
+    <message>
+        <source>torque needs the drive&apos;s series: scan the bus first</source>
+        <translation>转矩控制需要知道驱动的系列：请先扫描总线</translation>
+    </message>
+    <message>
+        <source>torque current %1 A exceeds the %2 series rating of %3 A</source>
+        <translation>转矩电流 %1 A 超过 %2 系列的额定值 %3 A</translation>
+    </message>
+    <message>
+        <source>torque current %1 A exceeds your torque limit of %2 A</source>
+        <translation>转矩电流 %1 A 超过您的转矩限值 %2 A</translation>
+    </message>
+    <message>
+        <source>target %1 deg is below your angle range (min %2 deg)</source>
+        <translation>目标 %1° 低于您的角度范围（最小 %2°）</translation>
+    </message>
+    <message>
+        <source>target %1 deg is above your angle range (max %2 deg)</source>
+        <translation>目标 %1° 高于您的角度范围（最大 %2°）</translation>
+    </message>
+    <message>
+        <source>increment of %1 deg exceeds your step limit of %2 deg</source>
+        <translation>增量 %1° 超过您的步长限值 %2°</translation>
+    </message>
+    <message>
+        <source>open loop needs the drive&apos;s series: scan the bus first</source>
+        <translation>开环控制需要知道驱动的系列：请先扫描总线</translation>
+    </message>
+    <message>
+        <source>%1 drives do not implement %2</source>
+        <translation>%1 驱动不支持 %2</translation>
+    </message>
+    <message>
+        <source>open-loop power %1 exceeds your power limit of %2</source>
+        <translation>开环功率 %1 超过您的功率限值 %2</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>%1 %2 dps exceeds %3 dps, the top speed of the slowest series (the drive&apos;s series is unknown)</source>
+        <translation>%1 %2 dps 超过 %3 dps，即最慢系列的最高速度（驱动的系列未知）</translation>
+    </message>
+    <message>
+        <source>no speed limit is set: set one first</source>
+        <translation>未设置速度限值：请先设置</translation>
+    </message>
+</context>
+<context>
+    <name>lk::safety::MotionPlanner</name>
+    <message>
+        <source>the drive&apos;s current angle is unknown: read it (0x92) first</source>
+        <translation>驱动的当前角度未知：请先读取 (0x92)</translation>
+    </message>
+    <message>
+        <source>a move of %1 deg from the current angle %2 deg exceeds one output turn (%3 deg)</source>
+        <translation>从当前角度 %2° 移动 %1° 超过输出轴一圈（%3°）</translation>
+    </message>
+    <message>
+        <source>an increment of %1 deg exceeds one output turn (%2 deg)</source>
+        <translation>增量 %1° 超过输出轴一圈（%2°）</translation>
+    </message>
+    <message>
+        <source>your angle range needs the drive&apos;s current angle: read it (0x92) first</source>
+        <translation>您的角度范围需要驱动的当前角度：请先读取 (0x92)</translation>
+    </message>
+    <message>
+        <source>within your speed limit of %1 dps</source>
+        <translation>在您的速度限值 %1 dps 以内</translation>
+    </message>
+    <message>
+        <source>max speed %1 dps (your speed limit)</source>
+        <translation>最大速度 %1 dps（您的速度限值）</translation>
+    </message>
+    <message>
+        <source>max speed %1 dps (the series top speed)</source>
+        <translation>最大速度 %1 dps（该系列的最高速度）</translation>
+    </message>
+    <message>
+        <source>max speed %1 dps (the max speed you gave)</source>
+        <translation>最大速度 %1 dps（您给定的最大速度）</translation>
+    </message>
+</context>
+<context>
+    <name>lk::safety::SoftLimits</name>
+    <message>
+        <source>%1 must be a whole number in %2 (got %3)</source>
+        <translation>%1 必须是 %2 范围内的整数（实际为 %3）</translation>
+    </message>
+    <message>
+        <source>%1 must be a number in %2 (got %3)</source>
+        <translation>%1 必须是 %2 范围内的数值（实际为 %3）</translation>
+    </message>
+    <message>
+        <source>unknown key &quot;%1&quot; (the keys are %2)</source>
+        <translation>未知的键“%1”（可用的键：%2）</translation>
+    </message>
+    <message>
+        <source>min_angle_deg (%1) must not exceed max_angle_deg (%2)</source>
+        <translation>min_angle_deg（%1）不能大于 max_angle_deg（%2）</translation>
+    </message>
+    <message>
+        <source>not a JSON object</source>
+        <translation>不是 JSON 对象</translation>
+    </message>
+    <message>
+        <source>not a JSON object (%1 at byte %2)</source>
+        <translation>不是 JSON 对象（%1，位于第 %2 字节）</translation>
+    </message>
+    <message>
+        <source>key &quot;%1&quot; is given twice</source>
+        <translation>键“%1”出现了两次</translation>
+    </message>
+</context>
+<context>
+    <name>lk::transport::PortErrorText</name>
+    <message>
+        <source>No serial port %1. Is the adapter plugged in?</source>
+        <translation>没有串口 %1。转换器插好了吗？</translation>
+    </message>
+    <message>
+        <source>No permission to open %1. Add your user to the serial port group (`sudo usermod -aG dialout $USER` on Debian/Ubuntu, group `uucp` on Arch), then log out and in again.</source>
+        <translation>没有权限打开 %1。请把您的用户加入串口用户组（Debian/Ubuntu 上执行 `sudo usermod -aG dialout $USER`，Arch 上为 `uucp` 组），然后注销并重新登录。</translation>
+    </message>
+    <message>
+        <source>%1 is in use by another program (a terminal, another lkstudio, ModemManager?). Close it and try again; `fuser %1` shows who holds it.</source>
+        <translation>%1 正被其他程序占用（终端、另一个 lkstudio、ModemManager？）。关闭该程序后重试；`fuser %1` 可查看占用者。</translation>
+    </message>
+    <message>
+        <source>The serial adapter %1 was disconnected (unplugged or reset). Plug it back in and reconnect.</source>
+        <translation>串口转换器 %1 已断开（被拔出或复位）。请重新插上并重新连接。</translation>
+    </message>
+    <message>
+        <source>%1 refused %2 baud 8N1. Try another baud or another adapter.</source>
+        <translation>%1 不接受 %2 波特 8N1。请换一个波特率或换一个转换器。</translation>
+    </message>
+    <message>
+        <source>Serial port %1 failed.</source>
+        <translation>串口 %1 出错。</translation>
+    </message>
+    <message>
+        <source>%1 is not a serial device. Give the adapter&apos;s port, e.g. /dev/ttyUSB0; `ls /dev/serial/by-id/` lists the adapters plugged in.</source>
+        <translation>%1 不是串口设备。请指定转换器的串口，例如 /dev/ttyUSB0；`ls /dev/serial/by-id/` 会列出已插入的转换器。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::transport::SerialTransport</name>
+    <message>
+        <source>no serial ports found</source>
+        <translation>未找到串口</translation>
+    </message>
+    <message>
+        <source>ports found: %1</source>
+        <translation>找到的串口：%1</translation>
+    </message>
+    <message>
+        <source>driver set %1</source>
+        <translation>驱动程序设置为 %1</translation>
+    </message>
+    <message>
+        <source>a regular file</source>
+        <translation>这是一个普通文件</translation>
+    </message>
+    <message>
+        <source>a directory</source>
+        <translation>这是一个目录</translation>
+    </message>
+    <message>
+        <source>a pipe, socket or block device</source>
+        <translation>这是管道、套接字或块设备</translation>
+    </message>
+    <message>
+        <source>a device that is not a terminal</source>
+        <translation>这是一个不是终端的设备</translation>
+    </message>
+</context>
+<context>
+    <name>lk::transport::SimTransport</name>
+    <message>
+        <source>Simulated bus (1 drive)</source>
+        <translation>模拟总线（1 个驱动）</translation>
+    </message>
+    <message>
+        <source>Simulated bus (%1 drives)</source>
+        <translation>模拟总线（%1 个驱动）</translation>
+    </message>
+    <message>
+        <source>The simulated bus was disconnected (fault injection). Open it again to reconnect.</source>
+        <translation>模拟总线已断开（故障注入）。重新打开即可重新连接。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::AboutDialog</name>
+    <message>
+        <source>About LK Servo Studio</source>
+        <translation>关于 LK Servo Studio</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;LK Servo Studio %1&lt;/h2&gt;&lt;p&gt;Tuning and diagnostics for LK-TECH MS/MF/MG/MH servo drives on RS485 (protocols V2.3 and V2.35). Esc sends Motor Off to every drive from anywhere in the program.&lt;/p&gt;</source>
+        <translation>&lt;h2&gt;LK Servo Studio %1&lt;/h2&gt;&lt;p&gt;用于 RS485 总线上瓴控 LK-TECH MS/MF/MG/MH 伺服驱动的调参与诊断工具（协议 V2.3 与 V2.35）。在程序中任何地方按 Esc 都会向每个驱动发送电机关闭命令。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Qt %1 (built with %2), platform %3
 %4
 %5 (%6)</source>
-            <translation>Qt %1（编译时为 %2），平台 %3
+        <translation>Qt %1（编译时为 %2），平台 %3
 %4
 %5（%6）</translation>
-        </message>
-        <message>
-            <source>&lt;p&gt;Licence: &lt;a href="%1"&gt;%2&lt;/a&gt;. LK Servo Studio is free software: you may redistribute and modify it under the terms of the GNU General Public License, version 3 or any later version. It comes with ABSOLUTELY NO WARRANTY.&lt;/p&gt;</source>
-            <translation>&lt;p&gt;许可证：&lt;a href="%1"&gt;%2&lt;/a&gt;。LK Servo Studio 是自由软件：您可以依据 GNU 通用公共许可证第 3 版或任何更新版本的条款再发布和修改它。本程序不提供任何担保。&lt;/p&gt;</translation>
-        </message>
-        <message>
-            <source>Copy diagnostics</source>
-            <translation>复制诊断信息</translation>
-        </message>
-        <message>
-            <source>Copy versions, port, adapter, bus statistics and recent errors to the clipboard, for a bug report</source>
-            <translation>将版本、端口、适配器、总线统计和最近的错误复制到剪贴板，用于问题报告</translation>
-        </message>
-        <message>
-            <source>Copied</source>
-            <translation>已复制</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::BusController</name>
-        <message>
-            <source>Reconnected: %1</source>
-            <translation>已重新连接：%1</translation>
-        </message>
-        <message>
-            <source>Lost the link to %1. %2 Sending is disabled and the data stays on screen; lkstudio reconnects when the adapter is back.</source>
-            <translation>与 %1 的连接中断。%2 已禁止发送，数据保留在屏幕上；转换器恢复后 lkstudio 会自动重新连接。</translation>
-        </message>
-        <message>
-            <source>Lost the link to %1. %2 Sending is disabled and the data stays on screen; press Disconnect, then Connect, once the adapter is back.</source>
-            <translation>与 %1 的连接中断。%2 已禁止发送，数据保留在屏幕上；转换器恢复后请先点“断开”，再点“连接”。</translation>
-        </message>
-        <message>
-            <source>Cannot use %1: %2</source>
-            <translation>无法使用 %1：%2</translation>
-        </message>
-        <message>
-            <source>the simulator</source>
-            <translation>模拟器</translation>
-        </message>
-        <message>
-            <source>Scan stopped: %1</source>
-            <translation>扫描已停止：%1</translation>
-        </message>
-        <message>
-            <source>No drive answered. Check the baud (or tick "Try every baud"), the A/B wiring, the drives' supply and the 120-ohm termination.</source>
-            <translation>没有驱动应答。请检查波特率（或勾选“尝试所有波特率”）、A/B 接线、驱动供电和 120 欧终端电阻。</translation>
-        </message>
-        <message>
-            <source>ID %1 at %2 baud</source>
-            <translation>ID %1，%2 波特</translation>
-        </message>
-        <message>
-            <source>Drives answered at different bauds (%1). The port stays at %2 baud; give every drive on a bus the same baud.</source>
-            <translation>驱动以不同的波特率应答（%1）。串口保持 %2 波特；同一总线上的所有驱动应使用相同的波特率。</translation>
-        </message>
-        <message>
-            <source>Emergency stop: Motor Off sent to IDs 1-32; no drive answered.</source>
-            <translation>急停：已向 ID 1-32 发送电机关闭命令；没有驱动应答。</translation>
-        </message>
-        <message>
-            <source>Emergency stop: Motor Off sent to IDs 1-32; acknowledged by %1.</source>
-            <translation>急停：已向 ID 1-32 发送电机关闭命令；%1 已确认。</translation>
-        </message>
-        <message>
-            <source>Emergency stop: Motor Off acknowledged by drive(s) %1.</source>
-            <translation>急停：驱动 %1 已确认电机关闭命令。</translation>
-        </message>
-        <message>
-            <source>Emergency stop: Motor Off sent, but no drive acknowledged it (IDs %1). Check the drives and cut their power if needed.</source>
-            <translation>急停：电机关闭命令已发送，但没有驱动确认（ID %1）。请检查这些驱动，必要时切断电源。</translation>
-        </message>
-        <message>
-            <source>Emergency stop: acknowledged by %1; NO answer from %2. Check those drives and cut their power if needed.</source>
-            <translation>急停：%1 已确认；%2 无应答。请检查这些驱动，必要时切断电源。</translation>
-        </message>
-        <message>
-            <source>Drive %1 did not confirm Clear Errors (%2).</source>
-            <translation>驱动 %1 未确认清除错误标志（%2）。</translation>
-        </message>
-        <message>
-            <source>Drive %1 still reports: %2. The cause is still there (supply voltage, temperature); fix it, then clear again.</source>
-            <translation>驱动 %1 仍然报告：%2。原因仍然存在（供电电压、温度）；请排除后再清除。</translation>
-        </message>
-        <message>
-            <source>Drive %1: errors cleared.</source>
-            <translation>驱动 %1：错误标志已清除。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::ConnectionBar</name>
-        <message>
-            <source>Serial port of the USB-RS485 adapter, or the built-in simulated bus. You can also type a device path, e.g. a pseudo-terminal from lksim.</source>
-            <translation>USB-RS485 转换器的串口，或内置模拟总线。也可以输入设备路径，例如 lksim 的伪终端。</translation>
-        </message>
-        <message>
-            <source>Baud rate set on the drives (DIP switches or the vendor's tool)</source>
-            <translation>驱动上设定的波特率（拨码开关或厂家上位机）</translation>
-        </message>
-        <message>
-            <source>Auto-reconnect</source>
-            <translation>自动重连</translation>
-        </message>
-        <message>
-            <source>Reopen the port by itself when the adapter comes back</source>
-            <translation>转换器恢复后自动重新打开串口</translation>
-        </message>
-        <message>
-            <source>Port:</source>
-            <translation>串口：</translation>
-        </message>
-        <message>
-            <source>Baud:</source>
-            <translation>波特率：</translation>
-        </message>
-        <message>
-            <source>Simulator (built-in)</source>
-            <translation>模拟器（内置）</translation>
-        </message>
-        <message>
-            <source>Connect</source>
-            <translation>连接</translation>
-        </message>
-        <message>
-            <source>Disconnect</source>
-            <translation>断开</translation>
-        </message>
-        <message>
-            <source>Fix permission…</source>
-            <translation>修复权限…</translation>
-        </message>
-        <message>
-            <source>The port was refused: show the command that gives you access</source>
-            <translation>端口被拒绝访问：显示获取访问权限的命令</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::ControlModePanel</name>
-        <message>
-            <source>dps (°/s)</source>
-            <translation>dps (°/s)</translation>
-        </message>
-        <message>
-            <source>rpm</source>
-            <translation>rpm</translation>
-        </message>
-        <message>
-            <source>Unit of every speed field; rotor speed, as on the wire.</source>
-            <translation>所有速度字段的单位；转子速度，与通信数据一致。</translation>
-        </message>
-        <message>
-            <source>Mode:</source>
-            <translation>模式：</translation>
-        </message>
-        <message>
-            <source>Speed unit:</source>
-            <translation>速度单位：</translation>
-        </message>
-        <message>
-            <source>Open loop power (0xA0)</source>
-            <translation>开环控制 (0xA0)</translation>
-        </message>
-        <message>
-            <source>Torque current (0xA1)</source>
-            <translation>转矩闭环控制 (0xA1)</translation>
-        </message>
-        <message>
-            <source>Speed (0xA2)</source>
-            <translation>速度闭环控制 (0xA2)</translation>
-        </message>
-        <message>
-            <source>Multi-turn position (0xA3/0xA4)</source>
-            <translation>多圈位置闭环控制 (0xA3/0xA4)</translation>
-        </message>
-        <message>
-            <source>Single-turn position (0xA5/0xA6)</source>
-            <translation>单圈位置闭环控制 (0xA5/0xA6)</translation>
-        </message>
-        <message>
-            <source>Incremental position (0xA7/0xA8)</source>
-            <translation>增量位置闭环控制 (0xA7/0xA8)</translation>
-        </message>
-        <message>
-            <source>Power (-1000..1000):</source>
-            <translation>功率 (-1000..1000)：</translation>
-        </message>
-        <message>
-            <source>Not limited by the drive: your open-loop limit applies.</source>
-            <translation>驱动不限制此值：由您的开环功率限值限制。</translation>
-        </message>
-        <message>
-            <source> A</source>
-            <translation> A</translation>
-        </message>
-        <message>
-            <source>Torque current iq:</source>
-            <translation>转矩电流 iq：</translation>
-        </message>
-        <message>
-            <source>Not limited by the drive: your torque limit applies.</source>
-            <translation>驱动不限制此值：由您的转矩限值限制。</translation>
-        </message>
-        <message>
-            <source>Speed (sign = direction):</source>
-            <translation>速度（正负号 = 方向）：</translation>
-        </message>
-        <message>
-            <source>Limit speed to</source>
-            <translation>限速</translation>
-        </message>
-        <message>
-            <source> °</source>
-            <translation> °</translation>
-        </message>
-        <message>
-            <source>Target angle (rotor, multi-turn):</source>
-            <translation>目标角度（转子，多圈）：</translation>
-        </message>
-        <message>
-            <source>0..359.99° within one rotor turn</source>
-            <translation>转子一圈内的 0..359.99°</translation>
-        </message>
-        <message>
-            <source>Clockwise</source>
-            <translation>顺时针</translation>
-        </message>
-        <message>
-            <source>Counter-clockwise</source>
-            <translation>逆时针</translation>
-        </message>
-        <message>
-            <source>Target angle (0..359.99):</source>
-            <translation>目标角度 (0..359.99)：</translation>
-        </message>
-        <message>
-            <source>Direction:</source>
-            <translation>方向：</translation>
-        </message>
-        <message>
-            <source>Move by (sign = direction):</source>
-            <translation>移动量（正负号 = 方向）：</translation>
-        </message>
-        <message>
-            <source> rpm</source>
-            <translation> rpm</translation>
-        </message>
-        <message>
-            <source> dps</source>
-            <translation> dps</translation>
-        </message>
-        <message>
-            <source>Lower max speed</source>
-            <translation>降低最大速度</translation>
-        </message>
-        <message>
-            <source>Unticked, the move is sent with your speed limit as its max speed; tick to give a lower one.</source>
-            <translation>不勾选时，以您的速度限值作为本次运动的最大速度发送；勾选可给定更低的值。</translation>
-        </message>
-        <message>
-            <source>Always sent with a max speed (0xA4/0xA6/0xA8): your speed limit unless you give a lower one.</source>
-            <translation>始终带最大速度发送 (0xA4/0xA6/0xA8)：默认为您的速度限值，除非您给定更低的值。</translation>
-        </message>
-        <message>
-            <source>reading the drive's angle…</source>
-            <translation>正在读取驱动角度…</translation>
-        </message>
-        <message>
-            <source>Starts at the drive's current angle; at most one output turn away.</source>
-            <translation>从驱动的当前角度开始；最多相距输出轴一圈。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::ControlView</name>
-        <message>
-            <source>Command</source>
-            <translation>命令</translation>
-        </message>
-        <message>
-            <source>Send</source>
-            <translation>发送</translation>
-        </message>
-        <message>
-            <source>Checked against the series and your soft limits before sending</source>
-            <translation>发送前按系列限值和您的软限位检查</translation>
-        </message>
-        <message>
-            <source>Motor Off</source>
-            <translation>电机关闭</translation>
-        </message>
-        <message>
-            <source>0x80: output off, the stored command is cleared</source>
-            <translation>0x80：关闭输出，清除已保存的命令</translation>
-        </message>
-        <message>
-            <source>Stop</source>
-            <translation>电机停止</translation>
-        </message>
-        <message>
-            <source>0x81: output off, the stored command is kept for Run</source>
-            <translation>0x81：关闭输出，保留命令供“电机运行”恢复</translation>
-        </message>
-        <message>
-            <source>Run</source>
-            <translation>电机运行</translation>
-        </message>
-        <message>
-            <source>0x88: resume after Stop</source>
-            <translation>0x88：在“电机停止”后恢复</translation>
-        </message>
-        <message>
-            <source>Soft limits of %1 applied and saved.</source>
-            <translation>已应用并保存 %1 的软限位。</translation>
-        </message>
-        <message>
-            <source>Stopped by the emergency stop.</source>
-            <translation>已被急停停止。</translation>
-        </message>
-        <message>
-            <source>Stopped: the drive or the connection changed.</source>
-            <translation>已停止：驱动或连接已改变。</translation>
-        </message>
-        <message>
-            <source>Disconnected: nothing can be sent.</source>
-            <translation>已断开：无法发送任何命令。</translation>
-        </message>
-        <message>
-            <source>Not connected or no drive selected: nothing sent.</source>
-            <translation>未连接或未选择驱动：未发送任何命令。</translation>
-        </message>
-        <message>
-            <source>Sent %1 to drive %2.</source>
-            <translation>已向驱动 %2 发送 %1。</translation>
-        </message>
-        <message>
-            <source>Stopped: the bus cancelled motion commands (emergency stop).</source>
-            <translation>已停止：总线取消了运动命令（急停）。</translation>
-        </message>
-        <message>
-            <source>Stopped by Motor Off.</source>
-            <translation>已被电机关闭命令停止。</translation>
-        </message>
-        <message>
-            <source>Stopped by Stop.</source>
-            <translation>已被电机停止命令停止。</translation>
-        </message>
-        <message>
-            <source>Stopped: jog took over.</source>
-            <translation>已停止：点动接管了控制。</translation>
-        </message>
-        <message>
-            <source>Jogging at %1 dps: release to stop.</source>
-            <translation>正以 %1 dps 点动：松开即停止。</translation>
-        </message>
-        <message>
-            <source>Jog released: speed 0 sent.</source>
-            <translation>点动已松开：已发送速度 0。</translation>
-        </message>
-        <message>
-            <source>Step of %1° sent.</source>
-            <translation>已发送 %1° 的步进。</translation>
-        </message>
-        <message>
-            <source>Stopped by the user.</source>
-            <translation>已被用户停止。</translation>
-        </message>
-        <message>
-            <source>Now: %1 dps</source>
-            <translation>当前：%1 dps</translation>
-        </message>
-        <message>
-            <source>, iq %1 A</source>
-            <translation>，iq %1 A</translation>
-        </message>
-        <message>
-            <source>, power %1</source>
-            <translation>，功率 %1</translation>
-        </message>
-        <message>
-            <source>Stopped by Esc (emergency stop).</source>
-            <translation>已被 Esc 停止（急停）。</translation>
-        </message>
-        <message>
-            <source>Emergency stop sent (Esc).</source>
-            <translation>已发送急停 (Esc)。</translation>
-        </message>
-        <message>
-            <source>The soft limits stored for %1 are damaged (%2); the limits in force stay. Apply them to store them again.</source>
-            <translation>%1 保存的软限位已损坏（%2）；当前生效的限值保持不变。点“应用”可重新保存。</translation>
-        </message>
-        <message>
-            <source>Refused: the soft limits stored for %1 are damaged (%2). Check and apply the limits first; nothing sent.</source>
-            <translation>已拒绝：%1 保存的软限位已损坏（%2）。请先检查并应用限值；未发送任何命令。</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n drives are selected: every command here acts on %1 only.</source>
-            <translation>
-                <numerusform>已选择 %n 个驱动：此处的每条命令只作用于 %1。</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>Reading the drive's current angle before the move…</source>
-            <translation>运动前正在读取驱动的当前角度…</translation>
-        </message>
-        <message>
-            <source>Sent %1 to drive %2, %3.</source>
-            <translation>已向驱动 %2 发送 %1，%3。</translation>
-        </message>
-        <message>
-            <source>Refused: the target starts at the drive's current angle, which is being read. Nothing sent.</source>
-            <translation>已拒绝：目标从驱动的当前角度开始，正在读取该角度。未发送任何命令。</translation>
-        </message>
-        <message>
-            <source>Refused: the drive changed while its angle was read. Nothing sent.</source>
-            <translation>已拒绝：读取角度期间驱动已切换。未发送任何命令。</translation>
-        </message>
-        <message>
-            <source>Refused: could not read the drive's current angle, so nothing was sent. %1</source>
-            <translation>已拒绝：无法读取驱动的当前角度，因此未发送任何命令。%1</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::CursorReadout</name>
-        <message>
-            <source>t = %1 s</source>
-            <translation>t = %1 s</translation>
-        </message>
-        <message>
-            <source>Latest</source>
-            <translation>最新</translation>
-        </message>
-        <message>
-            <source>ID %1: %2</source>
-            <translation>ID %1：%2</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::DashboardPanel</name>
-        <message>
-            <source>No drive selected. Connect to a bus and scan it; then pick a drive in the list on the left.</source>
-            <translation>未选择驱动。请连接总线并扫描，然后在左侧列表中选择一个驱动。</translation>
-        </message>
-        <message>
-            <source>Electrical</source>
-            <translation>电气</translation>
-        </message>
-        <message>
-            <source>Temperature</source>
-            <translation>温度</translation>
-        </message>
-        <message>
-            <source>Supply voltage</source>
-            <translation>母线电压</translation>
-        </message>
-        <message>
-            <source>Torque current iq</source>
-            <translation>转矩电流 iq</translation>
-        </message>
-        <message>
-            <source>Phase A</source>
-            <translation>A 相电流</translation>
-        </message>
-        <message>
-            <source>Phase B</source>
-            <translation>B 相电流</translation>
-        </message>
-        <message>
-            <source>Phase C</source>
-            <translation>C 相电流</translation>
-        </message>
-        <message>
-            <source>Motion</source>
-            <translation>运动</translation>
-        </message>
-        <message>
-            <source>Speed</source>
-            <translation>速度</translation>
-        </message>
-        <message>
-            <source>Encoder</source>
-            <translation>编码器</translation>
-        </message>
-        <message>
-            <source>Multi-turn angle</source>
-            <translation>多圈角度</translation>
-        </message>
-        <message>
-            <source>Single-turn angle</source>
-            <translation>单圈角度</translation>
-        </message>
-        <message>
-            <source>Error flags</source>
-            <translation>错误标志</translation>
-        </message>
-        <message>
-            <source>Clear Errors</source>
-            <translation>清除错误标志</translation>
-        </message>
-        <message>
-            <source>Send clear_errors (0x9B). A drive keeps a flag while its cause (low voltage, heat) is still there.</source>
-            <translation>发送 clear_errors (0x9B)。只要原因（低压、过热）仍然存在，驱动就会保留该标志。</translation>
-        </message>
-        <message>
-            <source>Drive %1</source>
-            <translation>驱动 %1</translation>
-        </message>
-        <message>
-            <source>driver %1</source>
-            <translation>驱动型号 %1</translation>
-        </message>
-        <message>
-            <source>series %1</source>
-            <translation>%1 系列</translation>
-        </message>
-        <message>
-            <source>firmware %1, hardware %2</source>
-            <translation>固件 %1，硬件 %2</translation>
-        </message>
-        <message>
-            <source>%1-bit encoder</source>
-            <translation>%1 位编码器</translation>
-        </message>
-        <message>
-            <source>Power (relative, MS)</source>
-            <translation>输出功率（相对值，MS）</translation>
-        </message>
-        <message>
-            <source>output shaft</source>
-            <translation>输出轴</translation>
-        </message>
-        <message>
-            <source>rotor</source>
-            <translation>转子</translation>
-        </message>
-        <message>
-            <source>Multi-turn angle (%1)</source>
-            <translation>多圈角度（%1）</translation>
-        </message>
-        <message>
-            <source>Single-turn angle (%1)</source>
-            <translation>单圈角度（%1）</translation>
-        </message>
-        <message>
-            <source>Speed (%1)</source>
-            <translation>速度（%1）</translation>
-        </message>
-        <message>
-            <source>Gear ratio %1:1 from the motor name: angles and speeds are shown at the output shaft; hover for rotor values.</source>
-            <translation>型号名给出减速比 %1:1：角度和速度按输出轴显示；悬停可查看转子值。</translation>
-        </message>
-        <message>
-            <source>The motor name gives no gear ratio: angles and speeds are rotor values.</source>
-            <translation>型号名未给出减速比：角度和速度为转子值。</translation>
-        </message>
-        <message>
-            <source>not on MS</source>
-            <translation>MS 无此项</translation>
-        </message>
-        <message>
-            <source>Rotor: %1</source>
-            <translation>转子：%1</translation>
-        </message>
-        <message>
-            <source>%1 of %2</source>
-            <translation>%1 / %2</translation>
-        </message>
-        <message>
-            <source>Not read yet</source>
-            <translation>尚未读取</translation>
-        </message>
-        <message>
-            <source>(no update for over a second)</source>
-            <translation>（超过一秒未更新）</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::DriveInfoView</name>
-        <message>
-            <source>This drive</source>
-            <translation>当前驱动</translation>
-        </message>
-        <message>
-            <source>Read again</source>
-            <translation>重新读取</translation>
-        </message>
-        <message>
-            <source>Copy to clipboard</source>
-            <translation>复制到剪贴板</translation>
-        </message>
-        <message>
-            <source>Bus report</source>
-            <translation>总线报告</translation>
-        </message>
-        <message>
-            <source>Bus report…</source>
-            <translation>总线报告…</translation>
-        </message>
-        <message>
-            <source>Every known drive: ID, model, versions, PID, acceleration and state, saved as JSON and as a readable HTML page</source>
-            <translation>所有已知驱动：ID、型号、版本、PID、加速度和状态，保存为 JSON 和可阅读的 HTML 页面</translation>
-        </message>
-        <message>
-            <source>ID</source>
-            <translation>ID</translation>
-        </message>
-        <message>
-            <source>Series</source>
-            <translation>系列</translation>
-        </message>
-        <message>
-            <source>Motor</source>
-            <translation>电机</translation>
-        </message>
-        <message>
-            <source>Firmware</source>
-            <translation>固件</translation>
-        </message>
-        <message>
-            <source>PID (angle · speed · iq)</source>
-            <translation>PID（角度 · 速度 · iq）</translation>
-        </message>
-        <message>
-            <source>Accel (dps/s)</source>
-            <translation>加速度 (dps/s)</translation>
-        </message>
-        <message>
-            <source>State</source>
-            <translation>状态</translation>
-        </message>
-        <message>
-            <source>Problems</source>
-            <translation>问题</translation>
-        </message>
-        <message>
-            <source>Model read from drive %1.</source>
-            <translation>已从驱动 %1 读取型号。</translation>
-        </message>
-        <message>
-            <source>No drive selected.</source>
-            <translation>未选择驱动。</translation>
-        </message>
-        <message>
-            <source>Driver name</source>
-            <translation>驱动名称</translation>
-        </message>
-        <message>
-            <source>Motor name</source>
-            <translation>电机名称</translation>
-        </message>
-        <message>
-            <source>Hardware version</source>
-            <translation>硬件版本</translation>
-        </message>
-        <message>
-            <source>Firmware version</source>
-            <translation>固件版本</translation>
-        </message>
-        <message>
-            <source>Protocol</source>
-            <translation>协议</translation>
-        </message>
-        <message>
-            <source>Gear ratio (from the name)</source>
-            <translation>减速比（取自型号名）</translation>
-        </message>
-        <message>
-            <source>none</source>
-            <translation>无</translation>
-        </message>
-        <message>
-            <source>Encoder (from the name)</source>
-            <translation>编码器（取自型号名）</translation>
-        </message>
-        <message>
-            <source>%1-bit</source>
-            <translation>%1 位</translation>
-        </message>
-        <message>
-            <source>not in the name</source>
-            <translation>型号名中没有</translation>
-        </message>
-        <message>
-            <source>Drive ID: %1</source>
-            <translation>驱动 ID：%1</translation>
-        </message>
-        <message>
-            <source>Series: %1</source>
-            <translation>系列：%1</translation>
-        </message>
-        <message>
-            <source>Driver name: %1</source>
-            <translation>驱动名称：%1</translation>
-        </message>
-        <message>
-            <source>Motor name: %1</source>
-            <translation>电机名称：%1</translation>
-        </message>
-        <message>
-            <source>Hardware version: %1</source>
-            <translation>硬件版本：%1</translation>
-        </message>
-        <message>
-            <source>Firmware version: %1</source>
-            <translation>固件版本：%1</translation>
-        </message>
-        <message>
-            <source>Model: not read</source>
-            <translation>型号：未读取</translation>
-        </message>
-        <message>
-            <source>Copied to the clipboard.</source>
-            <translation>已复制到剪贴板。</translation>
-        </message>
-        <message>
-            <source>Connect to a bus first.</source>
-            <translation>请先连接总线。</translation>
-        </message>
-        <message>
-            <source>Gathering the bus report…</source>
-            <translation>正在收集总线报告…</translation>
-        </message>
-        <message>
-            <source>No drive is known on this bus: scan first.</source>
-            <translation>此总线上没有已知的驱动：请先扫描。</translation>
-        </message>
-        <message>
-            <source>, low voltage</source>
-            <translation>，低压保护</translation>
-        </message>
-        <message>
-            <source>, over temperature</source>
-            <translation>，过温保护</translation>
-        </message>
-        <message>
-            <source>Save bus report</source>
-            <translation>保存总线报告</translation>
-        </message>
-        <message>
-            <source>Bus report (*.json)</source>
-            <translation>总线报告 (*.json)</translation>
-        </message>
-        <message>
-            <source>No report gathered yet.</source>
-            <translation>尚未收集报告。</translation>
-        </message>
-        <message>
-            <source>Bus report saved: %1 and %2.</source>
-            <translation>总线报告已保存：%1 和 %2。</translation>
-        </message>
-        <message>
-            <source>Could not save the bus report: %1</source>
-            <translation>无法保存总线报告：%1</translation>
-        </message>
-        <message>
-            <source>%1 °C, %2 V</source>
-            <translation>%1 °C，%2 V</translation>
-        </message>
-        <message numerus="yes">
-            <source>Bus report gathered: %n drive(s).</source>
-            <translation>
-                <numerusform>已收集总线报告：%n 个驱动。</numerusform>
-            </translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::DriveText</name>
-        <message>
-            <source>unknown series</source>
-            <translation>未知系列</translation>
-        </message>
-        <message>
-            <source>Refused: the drive's series is unknown, so its current limits are unknown. Scan the bus first.</source>
-            <translation>已拒绝：驱动的系列未知，因此其电流限值未知。请先扫描总线。</translation>
-        </message>
-        <message>
-            <source>Refused: %1 drives do not implement this command.</source>
-            <translation>已拒绝：%1 驱动不支持此命令。</translation>
-        </message>
-        <message>
-            <source>Refused by the series limit: %1 A is over the %2 rating of %3 A.</source>
-            <translation>被系列限值拒绝：%1 A 超过 %2 的额定值 %3 A。</translation>
-        </message>
-        <message>
-            <source>Refused by your torque limit: %1 A is over %2 A.</source>
-            <translation>被您的转矩限值拒绝：%1 A 超过 %2 A。</translation>
-        </message>
-        <message>
-            <source>Refused by your open-loop power limit: %1 is over %2 (of 1000).</source>
-            <translation>被您的开环功率限值拒绝：%1 超过 %2（满量程 1000）。</translation>
-        </message>
-        <message>
-            <source>Refused by the series limit: %1 dps is over the %2 top speed of %3 dps.</source>
-            <translation>被系列限值拒绝：%1 dps 超过 %2 的最高速度 %3 dps。</translation>
-        </message>
-        <message>
-            <source>Refused by your speed limit: %1 dps is over %2 dps.</source>
-            <translation>被您的速度限值拒绝：%1 dps 超过 %2 dps。</translation>
-        </message>
-        <message>
-            <source>Refused by your angle range: %1° is below the minimum of %2°.</source>
-            <translation>被您的角度范围拒绝：%1° 低于最小值 %2°。</translation>
-        </message>
-        <message>
-            <source>Refused by your angle range: %1° is above the maximum of %2°.</source>
-            <translation>被您的角度范围拒绝：%1° 高于最大值 %2°。</translation>
-        </message>
-        <message>
-            <source>Refused by your step limit: a move of %1° is more than %2°.</source>
-            <translation>被您的步长限值拒绝：移动 %1° 超过 %2°。</translation>
-        </message>
-        <message>
-            <source>Refused, nothing sent: %1 must be in %2.</source>
-            <translation>已拒绝，未发送：%1 必须在 %2 范围内。</translation>
-        </message>
-        <message>
-            <source>Refused, nothing sent: %1 must be in %2 (%3).</source>
-            <translation>已拒绝，未发送：%1 必须在 %2 范围内（%3）。</translation>
-        </message>
-        <message>
-            <source>%1: drive %2 did not answer.</source>
-            <translation>%1：驱动 %2 无应答。</translation>
-        </message>
-        <message>
-            <source>%1: the bus is not connected.</source>
-            <translation>%1：总线未连接。</translation>
-        </message>
-        <message>
-            <source>%1: cancelled (emergency stop or disconnect).</source>
-            <translation>%1：已取消（急停或断开）。</translation>
-        </message>
-        <message>
-            <source>%1: the reply was corrupt (%2).</source>
-            <translation>%1：回复数据损坏（%2）。</translation>
-        </message>
-        <message>
-            <source>Refused: the drive's current angle is not known (read with 0x92 first), so the move cannot be checked. Nothing sent.</source>
-            <translation>已拒绝：驱动的当前角度未知（请先用 0x92 读取），无法检查此次运动。未发送任何命令。</translation>
-        </message>
-        <message>
-            <source>Refused: a move of %1° is more than one output turn (%2°). Move in smaller steps.</source>
-            <translation>已拒绝：移动 %1° 超过输出轴一圈（%2°）。请分小步移动。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::DriveTree</name>
-        <message>
-            <source>ID</source>
-            <translation>ID</translation>
-        </message>
-        <message>
-            <source>Model</source>
-            <translation>型号</translation>
-        </message>
-        <message>
-            <source>Series</source>
-            <translation>系列</translation>
-        </message>
-        <message>
-            <source>FW</source>
-            <translation>固件</translation>
-        </message>
-        <message>
-            <source>HW</source>
-            <translation>硬件</translation>
-        </message>
-        <message>
-            <source>Voltage</source>
-            <translation>电压</translation>
-        </message>
-        <message>
-            <source>Temp.</source>
-            <translation>温度</translation>
-        </message>
-        <message>
-            <source>Errors</source>
-            <translation>错误</translation>
-        </message>
-        <message>
-            <source>No bus</source>
-            <translation>无总线</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n drive(s)</source>
-            <translation>
-                <numerusform>%n 个驱动</numerusform>
-            </translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::DriveView</name>
-        <message>
-            <source>No drive selected</source>
-            <translation>未选择驱动</translation>
-        </message>
-        <message>
-            <source>Drive %1 (%2)</source>
-            <translation>驱动 %1（%2）</translation>
-        </message>
-        <message>
-            <source>Drive %1</source>
-            <translation>驱动 %1</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::DriveViews</name>
-        <message>
-            <source>The bus is not connected.</source>
-            <translation>总线未连接。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::EmergencyStopButton</name>
-        <message>
-            <source>EMERGENCY STOP (Esc)</source>
-            <translation>急停 (Esc)</translation>
-        </message>
-        <message>
-            <source>Motor Off (0x80) to every drive on the bus, ahead of everything queued. Esc does the same from anywhere in lkstudio.</source>
-            <translation>抢在所有排队命令之前，向总线上的每个驱动发送电机关闭命令 (0x80)。在 lkstudio 中任何地方按 Esc 效果相同。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::EncoderLiveBox</name>
-        <message>
-            <source>Live (read while this view is shown)</source>
-            <translation>实时（显示此页时读取）</translation>
-        </message>
-        <message>
-            <source>Encoder (raw − offset):</source>
-            <translation>编码器（原始位置 − 零偏）：</translation>
-        </message>
-        <message>
-            <source>Raw encoder:</source>
-            <translation>编码器原始位置：</translation>
-        </message>
-        <message>
-            <source>Encoder offset:</source>
-            <translation>编码器零偏：</translation>
-        </message>
-        <message>
-            <source>Multi-turn angle (rotor):</source>
-            <translation>多圈角度（转子）：</translation>
-        </message>
-        <message>
-            <source>Output shaft:</source>
-            <translation>输出轴：</translation>
-        </message>
-        <message>
-            <source>Single-turn angle:</source>
-            <translation>单圈角度：</translation>
-        </message>
-        <message>
-            <source>Dial: the blue needle is the raw position, the red mark the offset (where the encoder reads 0); the centre shows the encoder angle.</source>
-            <translation>表盘：蓝色指针为原始位置，红色标记为零偏（编码器读数为 0 处）；中央显示编码器角度。</translation>
-        </message>
-        <message>
-            <source>%1  (%2°)</source>
-            <translation>%1  (%2°)</translation>
-        </message>
-        <message>
-            <source>%1°</source>
-            <translation>%1°</translation>
-        </message>
-        <message>
-            <source>%1 (÷ %2)</source>
-            <translation>%1 (÷ %2)</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::EncoderView</name>
-        <message>
-            <source>What was done (this session)</source>
-            <translation>已执行的操作（本次会话）</translation>
-        </message>
-        <message>
-            <source>Offset writes, angle clears and zero writes appear here.</source>
-            <translation>零偏写入、角度清零和零点写入会显示在这里。</translation>
-        </message>
-        <message>
-            <source>Encoder and gearbox</source>
-            <translation>编码器和减速器</translation>
-        </message>
-        <message>
-            <source>%1-bit</source>
-            <translation>%1 位</translation>
-        </message>
-        <message>
-            <source>Resolution:</source>
-            <translation>分辨率：</translation>
-        </message>
-        <message>
-            <source>Gear ratio:</source>
-            <translation>减速比：</translation>
-        </message>
-        <message>
-            <source>Encoder offset (0x91)</source>
-            <translation>编码器零偏 (0x91)</translation>
-        </message>
-        <message>
-            <source>Use current raw</source>
-            <translation>使用当前原始位置</translation>
-        </message>
-        <message>
-            <source>The present raw position becomes encoder 0</source>
-            <translation>当前原始位置成为编码器 0</translation>
-        </message>
-        <message>
-            <source>Write offset…</source>
-            <translation>写入零偏…</translation>
-        </message>
-        <message>
-            <source>The offset is the raw position that reads as encoder 0. The spec's command table calls 0x91 a ROM write: it may write the drive's flash.</source>
-            <translation>零偏是编码器读数为 0 时的原始位置。协议命令表将 0x91 列为 ROM 写入：它可能会写入驱动的闪存。</translation>
-        </message>
-        <message>
-            <source>Zero</source>
-            <translation>零点</translation>
-        </message>
-        <message>
-            <source>Clear motor angle (0x95)…</source>
-            <translation>清除电机角度 (0x95)…</translation>
-        </message>
-        <message>
-            <source>Write current position to ROM as zero (0x19)…</source>
-            <translation>写入当前位置到 ROM 作为零点 (0x19)…</translation>
-        </message>
-        <message>
-            <source>Multi-turn and single-turn angle become 0 here until power-off; the result is checked with read_multi_turn (0x92).</source>
-            <translation>多圈角度和单圈角度在此处变为 0，直到断电；结果用 read_multi_turn (0x92) 检查。</translation>
-        </message>
-        <message>
-            <source>Stores the present encoder position as the zero in flash. Takes effect only after a power cycle; each write wears the flash.</source>
-            <translation>将当前编码器位置作为零点存入闪存。断电重启后才生效；每次写入都会磨损闪存。</translation>
-        </message>
-        <message>
-            <source>from the model name "%1"</source>
-            <translation>取自型号名“%1”</translation>
-        </message>
-        <message>
-            <source>the %1 series default</source>
-            <translation>%1 系列的默认值</translation>
-        </message>
-        <message>
-            <source>a guess: the model does not say</source>
-            <translation>推测值：型号名中没有说明</translation>
-        </message>
-        <message>
-            <source>no gearbox in the model name</source>
-            <translation>型号名中没有减速器</translation>
-        </message>
-        <message>
-            <source>your setting for this drive</source>
-            <translation>您为此驱动设置的值</translation>
-        </message>
-        <message>
-            <source>Disconnected: the values shown are the last ones read.</source>
-            <translation>已断开：显示的是最后读取的数值。</translation>
-        </message>
-        <message>
-            <source>%1 counts per turn on the wire; %2.</source>
-            <translation>通信数据中每圈 %1 个计数；%2。</translation>
-        </message>
-        <message>
-            <source>Output shaft = rotor ÷ ratio; %1.</source>
-            <translation>输出轴 = 转子 ÷ 减速比；%1。</translation>
-        </message>
-        <message>
-            <source>The drive or the connection changed: nothing was sent.</source>
-            <translation>驱动或连接已改变：未发送任何命令。</translation>
-        </message>
-        <message>
-            <source>Cancelled: nothing was sent.</source>
-            <translation>已取消：未发送任何命令。</translation>
-        </message>
-        <message>
-            <source>Refused, nothing sent: the offset must be in 0..%1 for a %2-bit encoder.</source>
-            <translation>已拒绝，未发送：%2 位编码器的零偏必须在 0..%1 范围内。</translation>
-        </message>
-        <message>
-            <source>Write encoder offset</source>
-            <translation>写入编码器零偏</translation>
-        </message>
-        <message>
-            <source>Write encoder offset %1 to drive %2?</source>
-            <translation>将编码器零偏 %1 写入驱动 %2？</translation>
-        </message>
-        <message>
-            <source>The zero of the encoder and of every angle moves, so position commands go elsewhere afterwards. The spec's command table calls 0x91 a ROM write: it may wear the drive's flash.</source>
-            <translation>编码器和所有角度的零点都会移动，之后的位置命令会走到别的位置。协议命令表将 0x91 列为 ROM 写入：它可能会磨损驱动的闪存。</translation>
-        </message>
-        <message>
-            <source>Write offset</source>
-            <translation>写入零偏</translation>
-        </message>
-        <message>
-            <source>Encoder offset %1 written and read back.</source>
-            <translation>编码器零偏 %1 已写入并回读。</translation>
-        </message>
-        <message>
-            <source>Wrote offset %1, but the drive reports %2.</source>
-            <translation>已写入零偏 %1，但驱动报告为 %2。</translation>
-        </message>
-        <message>
-            <source>Clear motor angle</source>
-            <translation>清除电机角度</translation>
-        </message>
-        <message>
-            <source>Make the present position of drive %1 angle 0?</source>
-            <translation>把驱动 %1 的当前位置设为角度 0？</translation>
-        </message>
-        <message>
-            <source>Multi-turn and single-turn angles restart from 0 here until power-off, so absolute position commands go elsewhere afterwards.</source>
-            <translation>多圈和单圈角度从此处重新从 0 开始，直到断电，因此之后的绝对位置命令会走到别的位置。</translation>
-        </message>
-        <message>
-            <source>Clear angle</source>
-            <translation>清除角度</translation>
-        </message>
-        <message>
-            <source>Clearing the angle of drive %1…</source>
-            <translation>正在清除驱动 %1 的角度…</translation>
-        </message>
-        <message>
-            <source>Angle cleared: the drive reads %1° (was %2°).</source>
-            <translation>角度已清除：驱动读数为 %1°（原为 %2°）。</translation>
-        </message>
-        <message>
-            <source>The angle read %1° before already: whether the drive applied 0x95 cannot be told.</source>
-            <translation>清除前角度已经是 %1°：无法判断驱动是否执行了 0x95。</translation>
-        </message>
-        <message>
-            <source>The drive acknowledged 0x95 but its angle did not change (%1°): this firmware ignores clear-angle. Use the encoder offset or 0x19 instead.</source>
-            <translation>驱动确认了 0x95，但角度没有变化（%1°）：此固件忽略清除角度命令。请改用编码器零偏或 0x19。</translation>
-        </message>
-        <message>
-            <source>The angle changed from %1° to %2° but is not 0: was the motor turning? Stop it and clear again.</source>
-            <translation>角度从 %1° 变为 %2°，但不是 0：电机在转动吗？请先停止再清除。</translation>
-        </message>
-        <message>
-            <source>Write zero to ROM</source>
-            <translation>写入零点到 ROM</translation>
-        </message>
-        <message>
-            <source>Store the present position of drive %1 as its zero in ROM?</source>
-            <translation>将驱动 %1 的当前位置作为零点存入 ROM？</translation>
-        </message>
-        <message>
-            <source>It takes effect only after the drive is powered off and on again. It writes the drive's flash, which wears with every write: do it once, not as a routine.</source>
-            <translation>断电再上电后才生效。它会写入驱动的闪存，每次写入都会磨损：只做一次，不要作为例行操作。</translation>
-        </message>
-        <message>
-            <source>Zero written to the ROM of drive %1. Power the drive off and on for it to take effect.</source>
-            <translation>零点已写入驱动 %1 的 ROM。请将驱动断电再上电使其生效。</translation>
-        </message>
-        <message>
-            <source>The drive reports the new zero as encoder %1.</source>
-            <translation>驱动报告新零点为编码器 %1。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::Format</name>
-        <message>
-            <source>Low voltage</source>
-            <translation>低压保护</translation>
-        </message>
-        <message>
-            <source>Over temperature</source>
-            <translation>过温保护</translation>
-        </message>
-        <message>
-            <source>Error bit %1</source>
-            <translation>错误位 %1</translation>
-        </message>
-        <message>
-            <source>No errors</source>
-            <translation>无错误</translation>
-        </message>
-        <message>
-            <source>The port does not exist. Check that the USB-RS485 adapter is plugged in and pick it again from the list.</source>
-            <translation>串口不存在。请检查 USB-RS485 转换器是否插好，然后在列表中重新选择。</translation>
-        </message>
-        <message>
-            <source>Permission denied. Add your user to the serial group (Debian/Ubuntu: sudo usermod -aG dialout $USER; Arch: uucp), then log out and back in.</source>
-            <translation>权限不足。请把您的用户加入串口用户组（Debian/Ubuntu：sudo usermod -aG dialout $USER；Arch：uucp），然后注销并重新登录。</translation>
-        </message>
-        <message>
-            <source>The port is busy: another program (a terminal, another lkstudio or lkctl) holds it. Close that program and connect again.</source>
-            <translation>串口被占用：另一个程序（终端、另一个 lkstudio 或 lkctl）正在使用它。关闭该程序后重新连接。</translation>
-        </message>
-        <message>
-            <source>The adapter was unplugged. Plug it back in; with auto-reconnect on, the connection comes back by itself.</source>
-            <translation>转换器已被拔出。请重新插上；开启自动重连时连接会自动恢复。</translation>
-        </message>
-        <message>
-            <source>The adapter refused the port settings. Pick another baud or another adapter.</source>
-            <translation>转换器不接受这些串口设置。请换一个波特率或换一个转换器。</translation>
-        </message>
-        <message>
-            <source>Input/output error on the port. Check the cable and the adapter.</source>
-            <translation>串口输入/输出错误。请检查电缆和转换器。</translation>
-        </message>
-        <message>
-            <source>Connected: %1</source>
-            <translation>已连接：%1</translation>
-        </message>
-        <message>
-            <source>Disconnected</source>
-            <translation>已断开</translation>
-        </message>
-        <message>
-            <source>Not connected</source>
-            <translation>未连接</translation>
-        </message>
-        <message>
-            <source>%1 ms</source>
-            <translation>%1 ms</translation>
-        </message>
-        <message>
-            <source>%1 s</source>
-            <translation>%1 s</translation>
-        </message>
-        <message>
-            <source>This is not a serial port. Pick the USB-RS485 adapter from the list.</source>
-            <translation>这不是串口。请从列表中选择 USB-RS485 转换器。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::HelpMenu</name>
-        <message>
-            <source>&amp;Help</source>
-            <translation>帮助(&amp;H)</translation>
-        </message>
-        <message>
-            <source>&amp;Keyboard shortcuts</source>
-            <translation>键盘快捷键(&amp;K)</translation>
-        </message>
-        <message>
-            <source>Copy &amp;diagnostics</source>
-            <translation>复制诊断信息(&amp;D)</translation>
-        </message>
-        <message>
-            <source>&amp;About LK Servo Studio</source>
-            <translation>关于 LK Servo Studio(&amp;A)</translation>
-        </message>
-        <message>
-            <source>About &amp;Qt</source>
-            <translation>关于 Qt(&amp;Q)</translation>
-        </message>
-        <message>
-            <source>Diagnostics copied to the clipboard</source>
-            <translation>诊断信息已复制到剪贴板</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::JogPanel</name>
-        <message>
-            <source>Jog</source>
-            <translation>点动</translation>
-        </message>
-        <message>
-            <source> dps</source>
-            <translation> dps</translation>
-        </message>
-        <message>
-            <source> °</source>
-            <translation> °</translation>
-        </message>
-        <message>
-            <source>Arrow keys jog (← → hold, ↓ ↑ step)</source>
-            <translation>方向键点动（← → 按住，↓ ↑ 步进）</translation>
-        </message>
-        <message>
-            <source>Only while this view has the focus and no text field does.</source>
-            <translation>仅当此页获得焦点且没有文本框获得焦点时有效。</translation>
-        </message>
-        <message>
-            <source>◀ Hold</source>
-            <translation>◀ 按住</translation>
-        </message>
-        <message>
-            <source>Runs counter-clockwise at the jog speed while pressed</source>
-            <translation>按住时以点动速度逆时针转动</translation>
-        </message>
-        <message>
-            <source>Hold ▶</source>
-            <translation>按住 ▶</translation>
-        </message>
-        <message>
-            <source>Runs clockwise at the jog speed while pressed</source>
-            <translation>按住时以点动速度顺时针转动</translation>
-        </message>
-        <message>
-            <source>− Step</source>
-            <translation>− 步进</translation>
-        </message>
-        <message>
-            <source>One incremental move counter-clockwise</source>
-            <translation>逆时针增量移动一步</translation>
-        </message>
-        <message>
-            <source>Step +</source>
-            <translation>步进 +</translation>
-        </message>
-        <message>
-            <source>One incremental move clockwise</source>
-            <translation>顺时针增量移动一步</translation>
-        </message>
-        <message>
-            <source>Speed:</source>
-            <translation>速度：</translation>
-        </message>
-        <message>
-            <source>Step:</source>
-            <translation>步长：</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::LanguageMenu</name>
-        <message>
-            <source>&amp;Language</source>
-            <translation>语言(&amp;L)</translation>
-        </message>
-        <message>
-            <source>System default</source>
-            <translation>跟随系统</translation>
-        </message>
-        <message>
-            <source>Language</source>
-            <translation>语言</translation>
-        </message>
-        <message>
-            <source>The new language takes effect after a restart of LK Servo Studio.</source>
-            <translation>新的语言将在重新启动 LK Servo Studio 后生效。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::LoopPlot</name>
-        <message>
-            <source>Angle loop: multi-turn angle</source>
-            <translation>角度环：多圈角度</translation>
-        </message>
-        <message>
-            <source>Speed loop: speed</source>
-            <translation>速度环：速度</translation>
-        </message>
-        <message>
-            <source>Current loop: iq (power on MS)</source>
-            <translation>电流环：iq（MS 为功率）</translation>
-        </message>
-        <message>
-            <source>Follows the field you edit; pick another loop here.</source>
-            <translation>跟随您正在编辑的字段；也可在此选择其他环路。</translation>
-        </message>
-        <message>
-            <source>Live plot:</source>
-            <translation>实时曲线：</translation>
-        </message>
-        <message>
-            <source>Select a drive to see its loop.</source>
-            <translation>选择一个驱动以查看其环路。</translation>
-        </message>
-        <message>
-            <source>No samples of this signal yet: the plot shows what the bus polls for drive %1 (polling runs while connected).</source>
-            <translation>尚无此信号的采样：曲线显示总线为驱动 %1 轮询的数据（连接时持续轮询）。</translation>
-        </message>
-        <message>
-            <source>Last %1 s of drive %2, rotor values.</source>
-            <translation>驱动 %2 最近 %1 s，转子值。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::MainWindow</name>
-        <message>
-            <source>LK Servo Studio</source>
-            <translation>LK Servo Studio</translation>
-        </message>
-        <message>
-            <source>Dashboard</source>
-            <translation>仪表盘</translation>
-        </message>
-        <message>
-            <source>Overview</source>
-            <translation>总览</translation>
-        </message>
-        <message>
-            <source>Plots</source>
-            <translation>曲线</translation>
-        </message>
-        <message>
-            <source>Traffic</source>
-            <translation>通信</translation>
-        </message>
-        <message>
-            <source>Tuning</source>
-            <translation>调参</translation>
-        </message>
-        <message>
-            <source>Control</source>
-            <translation>控制</translation>
-        </message>
-        <message>
-            <source>Encoder</source>
-            <translation>编码器</translation>
-        </message>
-        <message>
-            <source>Drive info</source>
-            <translation>驱动信息</translation>
-        </message>
-        <message>
-            <source>Bus</source>
-            <translation>总线</translation>
-        </message>
-        <message>
-            <source>Connection</source>
-            <translation>连接</translation>
-        </message>
-        <message>
-            <source>&amp;File</source>
-            <translation>文件(&amp;F)</translation>
-        </message>
-        <message>
-            <source>Export &amp;traffic log…</source>
-            <translation>导出通信记录(&amp;T)…</translation>
-        </message>
-        <message>
-            <source>&amp;Quit</source>
-            <translation>退出(&amp;Q)</translation>
-        </message>
-        <message>
-            <source>&amp;Bus</source>
-            <translation>总线(&amp;B)</translation>
-        </message>
-        <message>
-            <source>&amp;Scan</source>
-            <translation>扫描(&amp;S)</translation>
-        </message>
-        <message>
-            <source>&amp;Disconnect</source>
-            <translation>断开(&amp;D)</translation>
-        </message>
-        <message>
-            <source>&amp;Emergency stop (Esc)</source>
-            <translation>急停(&amp;E) (Esc)</translation>
-        </message>
-        <message>
-            <source>&amp;View</source>
-            <translation>视图(&amp;V)</translation>
-        </message>
-        <message>
-            <source>Emergency stop.</source>
-            <translation>急停。</translation>
-        </message>
-        <message>
-            <source>Emergency stop: Motor Off sent to every drive</source>
-            <translation>急停：已向每个驱动发送电机关闭命令</translation>
-        </message>
-        <message>
-            <source>&amp;Help</source>
-            <translation>帮助(&amp;H)</translation>
-        </message>
-        <message>
-            <source>&amp;About LK Servo Studio</source>
-            <translation>关于 LK Servo Studio(&amp;A)</translation>
-        </message>
-        <message>
-            <source>About LK Servo Studio</source>
-            <translation>关于 LK Servo Studio</translation>
-        </message>
-        <message>
-            <source>&lt;b&gt;LK Servo Studio %1&lt;/b&gt;&lt;p&gt;Tuning and diagnostics for LK-TECH MS/MF/MG/MH servo drives on RS485 (protocol V2.3).&lt;/p&gt;&lt;p&gt;Esc sends Motor Off to every drive from anywhere in the program.&lt;/p&gt;</source>
-            <translation>&lt;b&gt;LK Servo Studio %1&lt;/b&gt;&lt;p&gt;用于 RS485 总线上瓴控 LK-TECH MS/MF/MG/MH 伺服驱动的调参与诊断工具（协议 V2.3）。&lt;/p&gt;&lt;p&gt;在程序中任何地方按 Esc 都会向每个驱动发送电机关闭命令。&lt;/p&gt;</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::MessageBanner</name>
-        <message>
-            <source>Hide this message</source>
-            <translation>隐藏此消息</translation>
-        </message>
-        <message>
-            <source>%1 (×%2)</source>
-            <translation>%1 (×%2)</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::MotionGate</name>
-        <message>
-            <source>Not connected.</source>
-            <translation>未连接。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::OverviewModel</name>
-        <message>
-            <source>At the output shaft when the motor name gives a gear ratio, else at the rotor</source>
-            <translation>型号名给出减速比时为输出轴的值，否则为转子的值</translation>
-        </message>
-        <message>
-            <source>Median time from request to reply over the recent replies</source>
-            <translation>最近若干次回复中，从请求到回复的时间中位数</translation>
-        </message>
-        <message>
-            <source>ID</source>
-            <translation>ID</translation>
-        </message>
-        <message>
-            <source>Model</source>
-            <translation>型号</translation>
-        </message>
-        <message>
-            <source>Series</source>
-            <translation>系列</translation>
-        </message>
-        <message>
-            <source>FW/HW</source>
-            <translation>固件/硬件</translation>
-        </message>
-        <message>
-            <source>Link</source>
-            <translation>链路</translation>
-        </message>
-        <message>
-            <source>Voltage</source>
-            <translation>电压</translation>
-        </message>
-        <message>
-            <source>Temp.</source>
-            <translation>温度</translation>
-        </message>
-        <message>
-            <source>iq/power</source>
-            <translation>iq/功率</translation>
-        </message>
-        <message>
-            <source>Speed</source>
-            <translation>速度</translation>
-        </message>
-        <message>
-            <source>Angle</source>
-            <translation>角度</translation>
-        </message>
-        <message>
-            <source>Errors</source>
-            <translation>错误</translation>
-        </message>
-        <message>
-            <source>Replies</source>
-            <translation>回复</translation>
-        </message>
-        <message>
-            <source>Timeouts</source>
-            <translation>超时</translation>
-        </message>
-        <message>
-            <source>Checksum err.</source>
-            <translation>校验错误</translation>
-        </message>
-        <message>
-            <source>Latency</source>
-            <translation>延迟</translation>
-        </message>
-        <message>
-            <source>offline</source>
-            <translation>离线</translation>
-        </message>
-        <message>
-            <source>silent</source>
-            <translation>无应答</translation>
-        </message>
-        <message>
-            <source>stale</source>
-            <translation>过时</translation>
-        </message>
-        <message>
-            <source>live</source>
-            <translation>实时</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::OverviewPanel</name>
-        <message numerus="yes">
-            <source>%n drive(s) on the bus</source>
-            <translation>
-                <numerusform>总线上有 %n 个驱动</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>%n drive(s) with error flags</source>
-            <translation>
-                <numerusform>%n 个驱动有错误标志</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>%1 timeouts, %2 checksum errors on the bus</source>
-            <translation>总线上 %1 次超时，%2 次校验错误</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::ParameterTable</name>
-        <message>
-            <source>Parameter</source>
-            <translation>参数</translation>
-        </message>
-        <message>
-            <source>At selection</source>
-            <translation>选中时</translation>
-        </message>
-        <message>
-            <source>Drive holds</source>
-            <translation>驱动当前值</translation>
-        </message>
-        <message>
-            <source>Pending edit</source>
-            <translation>待写入</translation>
-        </message>
-        <message>
-            <source>Angle loop Kp</source>
-            <translation>角度环 Kp</translation>
-        </message>
-        <message>
-            <source>Angle loop Ki</source>
-            <translation>角度环 Ki</translation>
-        </message>
-        <message>
-            <source>Speed loop Kp</source>
-            <translation>速度环 Kp</translation>
-        </message>
-        <message>
-            <source>Speed loop Ki</source>
-            <translation>速度环 Ki</translation>
-        </message>
-        <message>
-            <source>Current loop Kp</source>
-            <translation>电流环 Kp</translation>
-        </message>
-        <message>
-            <source>Current loop Ki</source>
-            <translation>电流环 Ki</translation>
-        </message>
-        <message>
-            <source>Acceleration</source>
-            <translation>加速度</translation>
-        </message>
-        <message>
-            <source> dps/s</source>
-            <translation> dps/s</translation>
-        </message>
-        <message>
-            <source>0x34 writes acceleration to RAM only: protocol V2.3 has no ROM command for it. Some firmware ignores it (read back shows).</source>
-            <translation>0x34 只把加速度写入 RAM：协议 V2.3 没有对应的 ROM 命令。部分固件会忽略它（回读可见）。</translation>
-        </message>
-        <message>
-            <source>0..255</source>
-            <translation>0..255</translation>
-        </message>
-        <message>
-            <source>First read</source>
-            <translation>首次读取</translation>
-        </message>
-        <message>
-            <source>unknown</source>
-            <translation>未知</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::PlotExporter</name>
-        <message>
-            <source>Cannot open %1: %2</source>
-            <translation>无法打开 %1：%2</translation>
-        </message>
-        <message>
-            <source>Cannot write %1: %2</source>
-            <translation>无法写入 %1：%2</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::PlotPanel</name>
-        <message>
-            <source>5 s</source>
-            <translation>5 s</translation>
-        </message>
-        <message>
-            <source>10 s</source>
-            <translation>10 s</translation>
-        </message>
-        <message>
-            <source>30 s</source>
-            <translation>30 s</translation>
-        </message>
-        <message>
-            <source>1 min</source>
-            <translation>1 分钟</translation>
-        </message>
-        <message>
-            <source>5 min</source>
-            <translation>5 分钟</translation>
-        </message>
-        <message>
-            <source>10 min</source>
-            <translation>10 分钟</translation>
-        </message>
-        <message>
-            <source>Pause</source>
-            <translation>暂停</translation>
-        </message>
-        <message>
-            <source>Freeze the plots; recording goes on</source>
-            <translation>冻结曲线；记录继续进行</translation>
-        </message>
-        <message>
-            <source>Follow live</source>
-            <translation>跟随最新</translation>
-        </message>
-        <message>
-            <source>Return to the newest data after zooming or panning</source>
-            <translation>缩放或平移后回到最新数据</translation>
-        </message>
-        <message>
-            <source>Window:</source>
-            <translation>窗口：</translation>
-        </message>
-        <message>
-            <source>Overlay</source>
-            <translation>叠加</translation>
-        </message>
-        <message>
-            <source>One chart with a value axis per unit instead of stacked charts</source>
-            <translation>一张图表，每种单位一条数值轴，而不是上下排列的多张图表</translation>
-        </message>
-        <message>
-            <source>Autoscale</source>
-            <translation>自动缩放</translation>
-        </message>
-        <message>
-            <source>Fit the value axes to the data (Ctrl+wheel scales them by hand)</source>
-            <translation>使数值轴适应数据（Ctrl+滚轮手动缩放）</translation>
-        </message>
-        <message>
-            <source>Visible range…</source>
-            <translation>可见范围…</translation>
-        </message>
-        <message>
-            <source>Everything recorded…</source>
-            <translation>全部记录…</translation>
-        </message>
-        <message>
-            <source>Export CSV</source>
-            <translation>导出 CSV</translation>
-        </message>
-        <message>
-            <source>Export PNG…</source>
-            <translation>导出 PNG…</translation>
-        </message>
-        <message>
-            <source>Signals:</source>
-            <translation>信号：</translation>
-        </message>
-        <message>
-            <source>iq / power</source>
-            <translation>iq / 功率</translation>
-        </message>
-        <message>
-            <source>Speed</source>
-            <translation>速度</translation>
-        </message>
-        <message>
-            <source>Encoder</source>
-            <translation>编码器</translation>
-        </message>
-        <message>
-            <source>Multi-turn angle</source>
-            <translation>多圈角度</translation>
-        </message>
-        <message>
-            <source>CSV files (*.csv)</source>
-            <translation>CSV 文件 (*.csv)</translation>
-        </message>
-        <message>
-            <source>Export PNG</source>
-            <translation>导出 PNG</translation>
-        </message>
-        <message>
-            <source>PNG images (*.png)</source>
-            <translation>PNG 图像 (*.png)</translation>
-        </message>
-        <message>
-            <source>Layout</source>
-            <translation>布局</translation>
-        </message>
-        <message>
-            <source>Wide: one row per poll round</source>
-            <translation>宽格式：每轮轮询一行</translation>
-        </message>
-        <message>
-            <source>time_s, then a column per drive and signal (id3_speed_dps, ...)</source>
-            <translation>先是 time_s，然后每个驱动的每个信号各一列（id3_speed_dps 等）</translation>
-        </message>
-        <message>
-            <source>Long: one row per drive and poll round</source>
-            <translation>长格式：每个驱动每轮轮询一行</translation>
-        </message>
-        <message>
-            <source>time_s, id, then a column per signal</source>
-            <translation>先是 time_s 和驱动 ID，然后每个信号各一列</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::PollRateControl</name>
-        <message>
-            <source>Max</source>
-            <translation>最快</translation>
-        </message>
-        <message>
-            <source>Poll rate:</source>
-            <translation>轮询频率：</translation>
-        </message>
-        <message>
-            <source> Hz</source>
-            <translation> Hz</translation>
-        </message>
-        <message>
-            <source>Poll as fast as the bus allows</source>
-            <translation>以总线允许的最快速度轮询</translation>
-        </message>
-        <message>
-            <source>Bus limit: unknown</source>
-            <translation>总线上限：未知</translation>
-        </message>
-        <message>
-            <source>Bus limit: %1 transactions/s, %2 Hz per cycle</source>
-            <translation>总线上限：%1 次通信/s，每轮 %2 Hz</translation>
-        </message>
-        <message>
-            <source>(request above the limit: the bus caps it)</source>
-            <translation>（请求值超过上限：由总线限制）</translation>
-        </message>
-        <message>
-            <source>One cycle polls every plotted motor once; the limit follows from the baud and the frame sizes.</source>
-            <translation>每轮对每个绘制的电机轮询一次；上限由波特率和帧长度决定。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::PortAccessDialog</name>
-        <message>
-            <source>No permission for %1</source>
-            <translation>没有 %1 的访问权限</translation>
-        </message>
-        <message>
-            <source>lkstudio may not open %1: your user is not in the group that owns serial ports.</source>
-            <translation>lkstudio 无法打开 %1：您的用户不在拥有串口的用户组中。</translation>
-        </message>
-        <message>
-            <source>Copy</source>
-            <translation>复制</translation>
-        </message>
-        <message>
-            <source>Copied</source>
-            <translation>已复制</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::Readout</name>
-        <message>
-            <source>No update for over a second</source>
-            <translation>超过一秒未更新</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::ScanControls</name>
-        <message>
-            <source>Try every baud</source>
-            <translation>尝试所有波特率</translation>
-        </message>
-        <message>
-            <source>Scan the range at each of the ten bauds (slower): for drives whose baud is unknown</source>
-            <translation>在十种波特率下逐一扫描该范围（较慢）：用于不知道波特率的驱动</translation>
-        </message>
-        <message>
-            <source>Scan</source>
-            <translation>扫描</translation>
-        </message>
-        <message>
-            <source>Cancel</source>
-            <translation>取消</translation>
-        </message>
-        <message>
-            <source>IDs</source>
-            <translation>ID</translation>
-        </message>
-        <message numerus="yes">
-            <source>ID %1 at %2 baud · %n drive(s) found · about %3 left</source>
-            <translation>
-                <numerusform>ID %1，%2 波特 · 已找到 %n 个驱动 · 约剩 %3</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>Scan cancelled after %1: %n drive(s) found</source>
-            <translation>
-                <numerusform>扫描在 %1 后取消：已找到 %n 个驱动</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>Scan stopped: %1</source>
-            <translation>扫描已停止：%1</translation>
-        </message>
-        <message numerus="yes">
-            <source>Scan done in %1: %n drive(s) found</source>
-            <translation>
-                <numerusform>扫描完成，用时 %1：已找到 %n 个驱动</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>Scan takes at most %1 at %2 baud</source>
-            <translation>在 %2 波特下扫描最多需要 %1</translation>
-        </message>
-        <message>
-            <source>Scan the range at each of the nine bauds (slower): for drives whose baud is unknown</source>
-            <translation>在九种波特率下逐一扫描该范围（较慢）：用于不知道波特率的驱动</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::SerialGroupAdvice</name>
-        <message>
-            <source>On %1 serial ports belong to the group %2. Add yourself to it with the command below, then log out and back in (or restart) so that the new group applies.</source>
-            <translation>在 %1 上，串口属于用户组 %2。用下面的命令把自己加入该组，然后注销并重新登录（或重启），新的用户组才会生效。</translation>
-        </message>
-        <message>
-            <source>Serial ports usually belong to the group %1 (uucp on Arch-like systems; ls -l on the port shows its group). Add yourself to it with the command below, then log out and back in (or restart) so that the new group applies.</source>
-            <translation>串口通常属于用户组 %1（Arch 类系统上为 uucp；对端口执行 ls -l 可看到其用户组）。用下面的命令把自己加入该组，然后注销并重新登录（或重启），新的用户组才会生效。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::SetpointPanel</name>
-        <message>
-            <source>Setpoint generator</source>
-            <translation>设定值发生器</translation>
-        </message>
-        <message>
-            <source>Step</source>
-            <translation>阶跃</translation>
-        </message>
-        <message>
-            <source>Square</source>
-            <translation>方波</translation>
-        </message>
-        <message>
-            <source>Sine</source>
-            <translation>正弦波</translation>
-        </message>
-        <message>
-            <source>Ramp (triangle)</source>
-            <translation>斜坡（三角波）</translation>
-        </message>
-        <message>
-            <source> s</source>
-            <translation> s</translation>
-        </message>
-        <message>
-            <source> Hz</source>
-            <translation> Hz</translation>
-        </message>
-        <message>
-            <source>Commands per second (at most %1; skipped while the bus is behind)</source>
-            <translation>每秒命令数（最多 %1；总线跟不上时跳过）</translation>
-        </message>
-        <message>
-            <source>Start</source>
-            <translation>开始</translation>
-        </message>
-        <message>
-            <source>Stop generator</source>
-            <translation>停止发生器</translation>
-        </message>
-        <message>
-            <source>Waveform:</source>
-            <translation>波形：</translation>
-        </message>
-        <message>
-            <source>Drives:</source>
-            <translation>控制量：</translation>
-        </message>
-        <message>
-            <source>Amplitude:</source>
-            <translation>幅值：</translation>
-        </message>
-        <message>
-            <source>Offset:</source>
-            <translation>偏置：</translation>
-        </message>
-        <message>
-            <source>Period:</source>
-            <translation>周期：</translation>
-        </message>
-        <message>
-            <source>Rate:</source>
-            <translation>频率：</translation>
-        </message>
-        <message>
-            <source>Speed</source>
-            <translation>速度</translation>
-        </message>
-        <message>
-            <source>Position (multi-turn)</source>
-            <translation>位置（多圈）</translation>
-        </message>
-        <message>
-            <source>Torque current</source>
-            <translation>转矩电流</translation>
-        </message>
-        <message>
-            <source> dps</source>
-            <translation> dps</translation>
-        </message>
-        <message>
-            <source> °</source>
-            <translation> °</translation>
-        </message>
-        <message>
-            <source> A</source>
-            <translation> A</translation>
-        </message>
-        <message>
-            <source>Running: Stop, Motor Off or Esc ends it.</source>
-            <translation>运行中：电机停止、电机关闭或 Esc 可结束。</translation>
-        </message>
-        <message>
-            <source>Stopped.</source>
-            <translation>已停止。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::ShortcutsDialog</name>
-        <message>
-            <source>Keyboard shortcuts</source>
-            <translation>键盘快捷键</translation>
-        </message>
-        <message>
-            <source>Keys</source>
-            <translation>按键</translation>
-        </message>
-        <message>
-            <source>Action</source>
-            <translation>操作</translation>
-        </message>
-        <message>
-            <source>Emergency stop: Motor Off to every drive, from anywhere</source>
-            <translation>急停：在任何地方向每个驱动发送电机关闭</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::SoftLimitsEditor</name>
-        <message>
-            <source>Soft limits</source>
-            <translation>软限位</translation>
-        </message>
-        <message>
-            <source> A</source>
-            <translation> A</translation>
-        </message>
-        <message>
-            <source> dps</source>
-            <translation> dps</translation>
-        </message>
-        <message>
-            <source>series maximum</source>
-            <translation>系列最大值</translation>
-        </message>
-        <message>
-            <source> °</source>
-            <translation> °</translation>
-        </message>
-        <message>
-            <source>Angle at least</source>
-            <translation>角度不小于</translation>
-        </message>
-        <message>
-            <source>Angle at most</source>
-            <translation>角度不大于</translation>
-        </message>
-        <message>
-            <source>Step at most</source>
-            <translation>步长不大于</translation>
-        </message>
-        <message>
-            <source>Apply</source>
-            <translation>应用</translation>
-        </message>
-        <message>
-            <source>Defaults</source>
-            <translation>默认值</translation>
-        </message>
-        <message>
-            <source>Torque current at most:</source>
-            <translation>转矩电流不大于：</translation>
-        </message>
-        <message>
-            <source>Open-loop power at most:</source>
-            <translation>开环功率不大于：</translation>
-        </message>
-        <message>
-            <source>Speed at most:</source>
-            <translation>速度不大于：</translation>
-        </message>
-        <message>
-            <source>The lowest angle must not be above the highest.</source>
-            <translation>最小角度不能大于最大角度。</translation>
-        </message>
-        <message>
-            <source>Checked before every command, after the %1 series limits (%2 A, %3 dps). Angles and speeds are rotor values.</source>
-            <translation>每条命令发送前检查，在 %1 系列限值（%2 A，%3 dps）之后。角度和速度均为转子值。</translation>
-        </message>
-        <message>
-            <source>The series is unknown: torque and open loop stay refused until a scan.</source>
-            <translation>系列未知：扫描之前，转矩控制和开环控制一律拒绝。</translation>
-        </message>
-        <message>
-            <source>Bounds speed commands, jog and the max speed of every position move</source>
-            <translation>限制速度命令、点动以及每次位置运动的最大速度</translation>
-        </message>
-        <message>
-            <source>Checked before every command, after the %1 series limits (%2 A, %3 dps; the default speed limit is that top speed). Angles and speeds are rotor values; a position move goes at most one output turn.</source>
-            <translation>每条命令发送前检查，在 %1 系列限值（%2 A，%3 dps；默认速度限值即该最高速度）之后。角度和速度均为转子值；每次位置运动最多为输出轴一圈。</translation>
-        </message>
-        <message>
-            <source>The series is unknown: torque and open loop stay refused until a scan; the default speed limit is %1 dps, the slowest series' top speed.</source>
-            <translation>系列未知：扫描前转矩和开环控制保持拒绝；默认速度限值为 %1 dps，即最慢系列的最高速度。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::StartupOptions</name>
-        <message>
-            <source>Open the serial port DEV (e.g. /dev/ttyUSB0, COM3).</source>
-            <translation>打开串口 DEV（例如 /dev/ttyUSB0、COM3）。</translation>
-        </message>
-        <message>
-            <source>Baud rate: 9600 ... 4000000 (default 115200).</source>
-            <translation>波特率：9600 ... 4000000（默认 115200）。</translation>
-        </message>
-        <message>
-            <source>Open the built-in simulated bus with these drives, e.g. 1:MF,2:MG,3:MS,4:MH or 5:MG5010E-i36.</source>
-            <translation>打开内置模拟总线并使用这些驱动，例如 1:MF,2:MG,3:MS,4:MH 或 5:MG5010E-i36。</translation>
-        </message>
-        <message>
-            <source>Inject faults into the simulated bus, e.g. corrupt=0.01,garbage=0.01,drop=0.005 (also length=P, delay=P, delay_ms=N, silent=ID, seed=N).</source>
-            <translation>向模拟总线注入故障，例如 corrupt=0.01,garbage=0.01,drop=0.005（还有 length=P、delay=P、delay_ms=N、silent=ID、seed=N）。</translation>
-        </message>
-        <message>
-            <source>Read and write settings in FILE (INI) instead of the user's settings.</source>
-            <translation>在 FILE (INI) 中读写设置，而不是使用用户的设置。</translation>
-        </message>
-        <message>
-            <source>Do not scan the bus after connecting.</source>
-            <translation>连接后不扫描总线。</translation>
-        </message>
-        <message>
-            <source>Select drive ID once it is found.</source>
-            <translation>找到驱动 ID 后选中它。</translation>
-        </message>
-        <message>
-            <source>LK Servo Studio: connect, scan, watch, plot and diagnose LK-TECH servo drives on an RS485 bus. With no options it opens the last port used if it is plugged in, else the built-in simulated bus.</source>
-            <translation>LK Servo Studio：连接、扫描、监视、绘制和诊断 RS485 总线上的 LK-TECH 伺服驱动。不带选项时，如果上次使用的串口已插上就打开它，否则打开内置模拟总线。</translation>
-        </message>
-        <message>
-            <source>Unexpected argument: %1</source>
-            <translation>多余的参数：%1</translation>
-        </message>
-        <message>
-            <source>--port and --sim exclude each other: pick one bus.</source>
-            <translation>--port 和 --sim 不能同时使用：请选择一条总线。</translation>
-        </message>
-        <message>
-            <source>--baud %1 is not an LK baud (9600, 19200, 38400, 57600, 115200, 230400, 460800, 1000000, 2000000, 4000000).</source>
-            <translation>--baud %1 不是 LK 波特率（9600、19200、38400、57600、115200、230400、460800、1000000、2000000、4000000）。</translation>
-        </message>
-        <message>
-            <source>--sim: %1</source>
-            <translation>--sim：%1</translation>
-        </message>
-        <message>
-            <source>--sim-faults works on the simulated bus only, not with --port.</source>
-            <translation>--sim-faults 只能用于模拟总线，不能与 --port 同用。</translation>
-        </message>
-        <message>
-            <source>--sim-faults: %1</source>
-            <translation>--sim-faults：%1</translation>
-        </message>
-        <message>
-            <source>--sim-motion moves simulated drives only; it cannot go with --port.</source>
-            <translation>--sim-motion 只移动模拟驱动；不能与 --port 同用。</translation>
-        </message>
-        <message>
-            <source>--select takes an ID from 1 to 32.</source>
-            <translation>--select 需要 1 到 32 的 ID。</translation>
-        </message>
-        <message>
-            <source>--sim-low-voltage takes a simulated drive's ID from 1 to 32.</source>
-            <translation>--sim-low-voltage 需要 1 到 32 的模拟驱动 ID。</translation>
-        </message>
-        <message>
-            <source>--window-size takes WIDTHxHEIGHT, e.g. 1600x1000.</source>
-            <translation>--window-size 需要 宽x高，例如 1600x1000。</translation>
-        </message>
-        <message>
-            <source>--palette takes dark or light.</source>
-            <translation>--palette 需要 dark 或 light。</translation>
-        </message>
-        <message>
-            <source>--screenshot-delay-ms takes a number of milliseconds.</source>
-            <translation>--screenshot-delay-ms 需要毫秒数。</translation>
-        </message>
-        <message>
-            <source>Start on a view: dashboard, overview, plots, traffic, tuning, control, encoder, info.</source>
-            <translation>启动时显示的视图：dashboard、overview、plots、traffic、tuning、control、encoder、info。</translation>
-        </message>
-        <message>
-            <source>Baud rate: 9600 ... 2000000 (default 115200).</source>
-            <translation>波特率：9600 ... 2000000（默认 115200）。</translation>
-        </message>
-        <message>
-            <source>--baud %1 is not an LK baud (9600, 19200, 38400, 57600, 115200, 230400, 460800, 1000000, 2000000).</source>
-            <translation>--baud %1 不是 LK 波特率（9600、19200、38400、57600、115200、230400、460800、1000000、2000000）。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::StatisticsView</name>
-        <message>
-            <source>Bus statistics</source>
-            <translation>总线统计</translation>
-        </message>
-        <message>
-            <source>Bus</source>
-            <translation>总线</translation>
-        </message>
-        <message>
-            <source>Transactions/s</source>
-            <translation>通信次数/s</translation>
-        </message>
-        <message>
-            <source>Latency min / median / max</source>
-            <translation>延迟 最小 / 中位 / 最大</translation>
-        </message>
-        <message>
-            <source>Requests / replies</source>
-            <translation>请求 / 回复</translation>
-        </message>
-        <message>
-            <source>Timeouts</source>
-            <translation>超时</translation>
-        </message>
-        <message>
-            <source>Retries</source>
-            <translation>重试</translation>
-        </message>
-        <message>
-            <source>Checksum errors</source>
-            <translation>校验错误</translation>
-        </message>
-        <message>
-            <source>Other frame errors</source>
-            <translation>其他帧错误</translation>
-        </message>
-        <message>
-            <source>Garbage bytes</source>
-            <translation>无效字节</translation>
-        </message>
-        <message>
-            <source>Polling is off.</source>
-            <translation>轮询已关闭。</translation>
-        </message>
-        <message>
-            <source>%1 requested</source>
-            <translation>请求 %1</translation>
-        </message>
-        <message>
-            <source>as fast as the bus allows</source>
-            <translation>以总线允许的最快速度</translation>
-        </message>
-        <message>
-            <source>Polling: %1 transactions/s achieved (%2); bus limit %3/s at %4 baud.</source>
-            <translation>轮询：实际 %1 次通信/s（%2）；%4 波特下总线上限 %3/s。</translation>
-        </message>
-        <message>
-            <source>Drive %1</source>
-            <translation>驱动 %1</translation>
-        </message>
-        <message>
-            <source>Late replies (after their timeout)</source>
-            <translation>迟到的回复（超时之后）</translation>
-        </message>
-        <message>
-            <source>Unexpected frames</source>
-            <translation>意外的帧</translation>
-        </message>
-        <message>
-            <source>Late or unexpected replies</source>
-            <translation>迟到或意外的回复</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::StatusSummary</name>
-        <message>
-            <source>SIMULATED</source>
-            <translation>模拟</translation>
-        </message>
-        <message>
-            <source>The drives are simulated: nothing here moves a real motor</source>
-            <translation>驱动是模拟的：这里的操作不会转动真实电机</translation>
-        </message>
-        <message>
-            <source>%1 tx/s</source>
-            <translation>%1 次通信/s</translation>
-        </message>
-        <message>
-            <source>(limit %1)</source>
-            <translation>（上限 %1）</translation>
-        </message>
-        <message>
-            <source>latency %1 ms</source>
-            <translation>延迟 %1 ms</translation>
-        </message>
-        <message>
-            <source>%1 timeouts</source>
-            <translation>%1 次超时</translation>
-        </message>
-        <message>
-            <source>%1 checksum errors</source>
-            <translation>%1 次校验错误</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::StripChart</name>
-        <message>
-            <source>ID %1 %2</source>
-            <translation>ID %1 %2</translation>
-        </message>
-        <message>
-            <source>Time (s)</source>
-            <translation>时间 (s)</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::TelemetryChannel</name>
-        <message>
-            <source>Power</source>
-            <translation>功率</translation>
-        </message>
-        <message>
-            <source>iq</source>
-            <translation>iq</translation>
-        </message>
-        <message>
-            <source>Speed</source>
-            <translation>速度</translation>
-        </message>
-        <message>
-            <source>Encoder</source>
-            <translation>编码器</translation>
-        </message>
-        <message>
-            <source>Multi-turn angle</source>
-            <translation>多圈角度</translation>
-        </message>
-        <message>
-            <source>Single-turn angle</source>
-            <translation>单圈角度</translation>
-        </message>
-        <message>
-            <source>Temperature</source>
-            <translation>温度</translation>
-        </message>
-        <message>
-            <source>Voltage</source>
-            <translation>电压</translation>
-        </message>
-        <message>
-            <source>Phase A</source>
-            <translation>A 相电流</translation>
-        </message>
-        <message>
-            <source>Phase B</source>
-            <translation>B 相电流</translation>
-        </message>
-        <message>
-            <source>Phase C</source>
-            <translation>C 相电流</translation>
-        </message>
-        <message>
-            <source>A</source>
-            <translation>A</translation>
-        </message>
-        <message>
-            <source>rel.</source>
-            <translation>相对值</translation>
-        </message>
-        <message>
-            <source>°/s</source>
-            <translation>°/s</translation>
-        </message>
-        <message>
-            <source>counts</source>
-            <translation>计数</translation>
-        </message>
-        <message>
-            <source>°</source>
-            <translation>°</translation>
-        </message>
-        <message>
-            <source>°C</source>
-            <translation>°C</translation>
-        </message>
-        <message>
-            <source>V</source>
-            <translation>V</translation>
-        </message>
-        <message>
-            <source>Current (A)</source>
-            <translation>电流 (A)</translation>
-        </message>
-        <message>
-            <source>Power (-1000..1000)</source>
-            <translation>功率 (-1000..1000)</translation>
-        </message>
-        <message>
-            <source>Speed (°/s)</source>
-            <translation>速度 (°/s)</translation>
-        </message>
-        <message>
-            <source>Encoder (counts)</source>
-            <translation>编码器（计数）</translation>
-        </message>
-        <message>
-            <source>Angle (°)</source>
-            <translation>角度 (°)</translation>
-        </message>
-        <message>
-            <source>Temperature (°C)</source>
-            <translation>温度 (°C)</translation>
-        </message>
-        <message>
-            <source>Voltage (V)</source>
-            <translation>电压 (V)</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::TrafficModel</name>
-        <message>
-            <source>TX</source>
-            <translation>发送</translation>
-        </message>
-        <message>
-            <source>RX</source>
-            <translation>接收</translation>
-        </message>
-        <message>
-            <source>RX fault</source>
-            <translation>接收错误</translation>
-        </message>
-        <message>
-            <source>timeout</source>
-            <translation>超时</translation>
-        </message>
-        <message>
-            <source>note</source>
-            <translation>备注</translation>
-        </message>
-        <message>
-            <source>no reply</source>
-            <translation>无回复</translation>
-        </message>
-        <message>
-            <source>Time (s)</source>
-            <translation>时间 (s)</translation>
-        </message>
-        <message>
-            <source>Dir.</source>
-            <translation>方向</translation>
-        </message>
-        <message>
-            <source>ID</source>
-            <translation>ID</translation>
-        </message>
-        <message>
-            <source>Command</source>
-            <translation>命令</translation>
-        </message>
-        <message>
-            <source>Fields</source>
-            <translation>字段</translation>
-        </message>
-        <message>
-            <source>Raw bytes</source>
-            <translation>原始字节</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::TrafficPanel</name>
-        <message>
-            <source>All IDs</source>
-            <translation>所有 ID</translation>
-        </message>
-        <message>
-            <source>ID %1</source>
-            <translation>ID %1</translation>
-        </message>
-        <message>
-            <source>Faults only</source>
-            <translation>仅显示故障</translation>
-        </message>
-        <message>
-            <source>Pause</source>
-            <translation>暂停</translation>
-        </message>
-        <message>
-            <source>Freeze the log to read it; faults are still counted</source>
-            <translation>冻结记录以便阅读；故障仍会计数</translation>
-        </message>
-        <message>
-            <source>Keep recording</source>
-            <translation>持续记录</translation>
-        </message>
-        <message>
-            <source>Keep capturing traffic while another view is shown</source>
-            <translation>显示其他页面时也继续捕获通信</translation>
-        </message>
-        <message>
-            <source>Clear</source>
-            <translation>清空</translation>
-        </message>
-        <message>
-            <source>Empty the log and counts</source>
-            <translation>清空记录和计数</translation>
-        </message>
-        <message>
-            <source>Export…</source>
-            <translation>导出…</translation>
-        </message>
-        <message>
-            <source>Save the rows shown as hex text that `lkctl decode -` reads</source>
-            <translation>把显示的行保存为 `lkctl decode -` 可读取的十六进制文本</translation>
-        </message>
-        <message>
-            <source>All commands</source>
-            <translation>所有命令</translation>
-        </message>
-        <message>
-            <source>TX %1</source>
-            <translation>发送 %1</translation>
-        </message>
-        <message>
-            <source>RX %1</source>
-            <translation>接收 %1</translation>
-        </message>
-        <message>
-            <source>timeouts %1</source>
-            <translation>超时 %1</translation>
-        </message>
-        <message>
-            <source>no frame faults</source>
-            <translation>无帧错误</translation>
-        </message>
-        <message>
-            <source>%1 oldest rows dropped</source>
-            <translation>已丢弃最早的 %1 行</translation>
-        </message>
-        <message>
-            <source>Export traffic</source>
-            <translation>导出通信记录</translation>
-        </message>
-        <message>
-            <source>Traffic log (*.txt);;All files (*)</source>
-            <translation>通信记录 (*.txt);;所有文件 (*)</translation>
-        </message>
-        <message>
-            <source>Export failed: %1</source>
-            <translation>导出失败：%1</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::TuningView</name>
-        <message>
-            <source>PID gains and acceleration</source>
-            <translation>PID 参数和加速度</translation>
-        </message>
-        <message>
-            <source>Gains go to RAM (try: lost at power-off) or ROM (keep). Acceleration is RAM only: protocol V2.3 has no command that stores it.</source>
-            <translation>参数可写入 RAM（试用：断电丢失）或 ROM（保存）。加速度只能写入 RAM：协议 V2.3 没有保存它的命令。</translation>
-        </message>
-        <message>
-            <source>Read from drive</source>
-            <translation>从驱动读取</translation>
-        </message>
-        <message>
-            <source>read_pid (0x30) and read_accel (0x33)</source>
-            <translation>read_pid (0x30) 和 read_accel (0x33)</translation>
-        </message>
-        <message>
-            <source>Write to RAM</source>
-            <translation>写入 RAM</translation>
-        </message>
-        <message>
-            <source>Try the pending edit: 0x31 and 0x34, lost at power-off; read back.</source>
-            <translation>试用待写入的值：0x31 和 0x34，断电丢失；随后回读。</translation>
-        </message>
-        <message>
-            <source>Write to ROM…</source>
-            <translation>写入 ROM…</translation>
-        </message>
-        <message>
-            <source>Keep the gains: 0x32 writes flash (asks first); read back.</source>
-            <translation>保存参数：0x32 写入闪存（会先询问）；随后回读。</translation>
-        </message>
-        <message>
-            <source>Undo to selection</source>
-            <translation>撤销到选中时</translation>
-        </message>
-        <message>
-            <source>Write the values read when this drive was first selected back to RAM.</source>
-            <translation>把首次选中此驱动时读到的值写回 RAM。</translation>
-        </message>
-        <message>
-            <source>Save to file…</source>
-            <translation>保存到文件…</translation>
-        </message>
-        <message>
-            <source>Save what the drive holds, with model, firmware and time, as JSON.</source>
-            <translation>把驱动当前的参数连同型号、固件和时间保存为 JSON。</translation>
-        </message>
-        <message>
-            <source>Load from file…</source>
-            <translation>从文件加载…</translation>
-        </message>
-        <message>
-            <source>Load a parameter file into the pending edit; nothing is written.</source>
-            <translation>把参数文件载入待写入区；不会写入任何值。</translation>
-        </message>
-        <message>
-            <source>Save drive parameters</source>
-            <translation>保存驱动参数</translation>
-        </message>
-        <message>
-            <source>Parameter files (*.json)</source>
-            <translation>参数文件 (*.json)</translation>
-        </message>
-        <message>
-            <source>Load drive parameters</source>
-            <translation>加载驱动参数</translation>
-        </message>
-        <message>
-            <source>Disconnected: the values shown are the last ones read.</source>
-            <translation>已断开：显示的是最后读取的数值。</translation>
-        </message>
-        <message>
-            <source>Read from drive %1 at %2.</source>
-            <translation>于 %2 从驱动 %1 读取。</translation>
-        </message>
-        <message>
-            <source>Write gains to ROM</source>
-            <translation>写入 PID 参数到 ROM</translation>
-        </message>
-        <message>
-            <source>Write these PID gains to the ROM of drive %1?
+    </message>
+    <message>
+        <source>&lt;p&gt;Licence: &lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;. LK Servo Studio is free software: you may redistribute and modify it under the terms of the GNU General Public License, version 3 or any later version. It comes with ABSOLUTELY NO WARRANTY.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;许可证：&lt;a href=&quot;%1&quot;&gt;%2&lt;/a&gt;。LK Servo Studio 是自由软件：您可以依据 GNU 通用公共许可证第 3 版或任何更新版本的条款再发布和修改它。本程序不提供任何担保。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Copy diagnostics</source>
+        <translation>复制诊断信息</translation>
+    </message>
+    <message>
+        <source>Copy versions, port, adapter, bus statistics and recent errors to the clipboard, for a bug report</source>
+        <translation>将版本、端口、适配器、总线统计和最近的错误复制到剪贴板，用于问题报告</translation>
+    </message>
+    <message>
+        <source>Copied</source>
+        <translation>已复制</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::AppSettings</name>
+    <message>
+        <source>Your settings file %1 is damaged; these values were not used: %2.</source>
+        <translation>您的设置文件 %1 已损坏；以下值未被使用：%2。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::BannerEntry</name>
+    <message>
+        <source>Hide this message</source>
+        <translation>隐藏此消息</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::BusController</name>
+    <message>
+        <source>Reconnected: %1</source>
+        <translation>已重新连接：%1</translation>
+    </message>
+    <message>
+        <source>Lost the link to %1. %2 Sending is disabled and the data stays on screen; lkstudio reconnects when the adapter is back.</source>
+        <translation>与 %1 的连接中断。%2 已禁止发送，数据保留在屏幕上；转换器恢复后 lkstudio 会自动重新连接。</translation>
+    </message>
+    <message>
+        <source>Lost the link to %1. %2 Sending is disabled and the data stays on screen; press Disconnect, then Connect, once the adapter is back.</source>
+        <translation>与 %1 的连接中断。%2 已禁止发送，数据保留在屏幕上；转换器恢复后请先点“断开”，再点“连接”。</translation>
+    </message>
+    <message>
+        <source>Cannot use %1: %2</source>
+        <translation>无法使用 %1：%2</translation>
+    </message>
+    <message>
+        <source>the simulator</source>
+        <translation>模拟器</translation>
+    </message>
+    <message>
+        <source>Scan stopped: %1</source>
+        <translation>扫描已停止：%1</translation>
+    </message>
+    <message>
+        <source>No drive answered. Check the baud (or tick &quot;Try every baud&quot;), the A/B wiring, the drives&apos; supply and the 120-ohm termination.</source>
+        <translation>没有驱动应答。请检查波特率（或勾选“尝试所有波特率”）、A/B 接线、驱动供电和 120 欧终端电阻。</translation>
+    </message>
+    <message>
+        <source>ID %1 at %2 baud</source>
+        <translation>ID %1，%2 波特</translation>
+    </message>
+    <message>
+        <source>Drives answered at different bauds (%1). The port stays at %2 baud; give every drive on a bus the same baud.</source>
+        <translation>驱动以不同的波特率应答（%1）。串口保持 %2 波特；同一总线上的所有驱动应使用相同的波特率。</translation>
+    </message>
+    <message>
+        <source>Drive %1 did not confirm Clear Errors (%2).</source>
+        <translation>驱动 %1 未确认清除错误标志（%2）。</translation>
+    </message>
+    <message>
+        <source>Drive %1 still reports: %2. The cause is still there (supply voltage, temperature); fix it, then clear again.</source>
+        <translation>驱动 %1 仍然报告：%2。原因仍然存在（供电电压、温度）；请排除后再清除。</translation>
+    </message>
+    <message>
+        <source>Drive %1: errors cleared.</source>
+        <translation>驱动 %1：错误标志已清除。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::CommandedMotion</name>
+    <message>
+        <source>speed %1 dps</source>
+        <translation>速度 %1 dps</translation>
+    </message>
+    <message>
+        <source>torque %1 A</source>
+        <translation>转矩 %1 A</translation>
+    </message>
+    <message>
+        <source>open-loop power %1</source>
+        <translation>开环功率 %1</translation>
+    </message>
+    <message>
+        <source>position %1°</source>
+        <translation>位置 %1°</translation>
+    </message>
+    <message>
+        <source>single-turn position %1°</source>
+        <translation>单圈位置 %1°</translation>
+    </message>
+    <message>
+        <source>move by %1°</source>
+        <translation>增量移动 %1°</translation>
+    </message>
+    <message>
+        <source>Motor Run</source>
+        <translation>电机运行</translation>
+    </message>
+    <message>
+        <source>Drive %1</source>
+        <translation>驱动 %1</translation>
+    </message>
+    <message>
+        <source>Drive %1 (%2 at %3)</source>
+        <translation>驱动 %1（%3 时 %2）</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::ConnectionBar</name>
+    <message>
+        <source>Serial port of the USB-RS485 adapter, or the built-in simulated bus. You can also type a device path, e.g. a pseudo-terminal from lksim.</source>
+        <translation>USB-RS485 转换器的串口，或内置模拟总线。也可以输入设备路径，例如 lksim 的伪终端。</translation>
+    </message>
+    <message>
+        <source>Baud rate set on the drives (DIP switches or the vendor&apos;s tool)</source>
+        <translation>驱动上设定的波特率（拨码开关或厂家上位机）</translation>
+    </message>
+    <message>
+        <source>Auto-reconnect</source>
+        <translation>自动重连</translation>
+    </message>
+    <message>
+        <source>Reopen the port by itself when the adapter comes back</source>
+        <translation>转换器恢复后自动重新打开串口</translation>
+    </message>
+    <message>
+        <source>Port:</source>
+        <translation>串口：</translation>
+    </message>
+    <message>
+        <source>Baud:</source>
+        <translation>波特率：</translation>
+    </message>
+    <message>
+        <source>Simulator (built-in)</source>
+        <translation>模拟器（内置）</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>断开</translation>
+    </message>
+    <message>
+        <source>Fix permission…</source>
+        <translation>修复权限…</translation>
+    </message>
+    <message>
+        <source>The port was refused: show the command that gives you access</source>
+        <translation>端口被拒绝访问：显示获取访问权限的命令</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::ControlModePanel</name>
+    <message>
+        <source>dps (°/s)</source>
+        <translation>dps (°/s)</translation>
+    </message>
+    <message>
+        <source>rpm</source>
+        <translation>rpm</translation>
+    </message>
+    <message>
+        <source>Unit of every speed field; rotor speed, as on the wire.</source>
+        <translation>所有速度字段的单位；转子速度，与通信数据一致。</translation>
+    </message>
+    <message>
+        <source>Mode:</source>
+        <translation>模式：</translation>
+    </message>
+    <message>
+        <source>Speed unit:</source>
+        <translation>速度单位：</translation>
+    </message>
+    <message>
+        <source>Open loop power (0xA0)</source>
+        <translation>开环控制 (0xA0)</translation>
+    </message>
+    <message>
+        <source>Torque current (0xA1)</source>
+        <translation>转矩闭环控制 (0xA1)</translation>
+    </message>
+    <message>
+        <source>Speed (0xA2)</source>
+        <translation>速度闭环控制 (0xA2)</translation>
+    </message>
+    <message>
+        <source>Multi-turn position (0xA3/0xA4)</source>
+        <translation>多圈位置闭环控制 (0xA3/0xA4)</translation>
+    </message>
+    <message>
+        <source>Single-turn position (0xA5/0xA6)</source>
+        <translation>单圈位置闭环控制 (0xA5/0xA6)</translation>
+    </message>
+    <message>
+        <source>Incremental position (0xA7/0xA8)</source>
+        <translation>增量位置闭环控制 (0xA7/0xA8)</translation>
+    </message>
+    <message>
+        <source>Power (-1000..1000):</source>
+        <translation>功率 (-1000..1000)：</translation>
+    </message>
+    <message>
+        <source>Not limited by the drive: your open-loop limit applies.</source>
+        <translation>驱动不限制此值：由您的开环功率限值限制。</translation>
+    </message>
+    <message>
+        <source> A</source>
+        <translation> A</translation>
+    </message>
+    <message>
+        <source>Torque current iq:</source>
+        <translation>转矩电流 iq：</translation>
+    </message>
+    <message>
+        <source>Not limited by the drive: your torque limit applies.</source>
+        <translation>驱动不限制此值：由您的转矩限值限制。</translation>
+    </message>
+    <message>
+        <source>Speed (sign = direction):</source>
+        <translation>速度（正负号 = 方向）：</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>Target angle (rotor, multi-turn):</source>
+        <translation>目标角度（转子，多圈）：</translation>
+    </message>
+    <message>
+        <source>0..359.99° within one rotor turn</source>
+        <translation>转子一圈内的 0..359.99°</translation>
+    </message>
+    <message>
+        <source>Clockwise</source>
+        <translation>顺时针</translation>
+    </message>
+    <message>
+        <source>Counter-clockwise</source>
+        <translation>逆时针</translation>
+    </message>
+    <message>
+        <source>Target angle (0..359.99):</source>
+        <translation>目标角度 (0..359.99)：</translation>
+    </message>
+    <message>
+        <source>Direction:</source>
+        <translation>方向：</translation>
+    </message>
+    <message>
+        <source>Move by (sign = direction):</source>
+        <translation>移动量（正负号 = 方向）：</translation>
+    </message>
+    <message>
+        <source> rpm</source>
+        <translation> rpm</translation>
+    </message>
+    <message>
+        <source> dps</source>
+        <translation> dps</translation>
+    </message>
+    <message>
+        <source>Lower max speed</source>
+        <translation>降低最大速度</translation>
+    </message>
+    <message>
+        <source>Unticked, the move is sent with your speed limit as its max speed; tick to give a lower one.</source>
+        <translation>不勾选时，以您的速度限值作为本次运动的最大速度发送；勾选可给定更低的值。</translation>
+    </message>
+    <message>
+        <source>Always sent with a max speed (0xA4/0xA6/0xA8): your speed limit unless you give a lower one.</source>
+        <translation>始终带最大速度发送 (0xA4/0xA6/0xA8)：默认为您的速度限值，除非您给定更低的值。</translation>
+    </message>
+    <message>
+        <source>reading the drive&apos;s angle…</source>
+        <translation>正在读取驱动角度…</translation>
+    </message>
+    <message>
+        <source>Starts at the drive&apos;s current angle; at most one output turn away.</source>
+        <translation>从驱动的当前角度开始；最多相距输出轴一圈。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::ControlView</name>
+    <message>
+        <source>Command</source>
+        <translation>命令</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>发送</translation>
+    </message>
+    <message>
+        <source>Checked against the series and your soft limits before sending</source>
+        <translation>发送前按系列限值和您的软限位检查</translation>
+    </message>
+    <message>
+        <source>Motor Off</source>
+        <translation>电机关闭</translation>
+    </message>
+    <message>
+        <source>0x80: output off, the stored command is cleared</source>
+        <translation>0x80：关闭输出，清除已保存的命令</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>电机停止</translation>
+    </message>
+    <message>
+        <source>0x81: output off, the stored command is kept for Run</source>
+        <translation>0x81：关闭输出，保留命令供“电机运行”恢复</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>电机运行</translation>
+    </message>
+    <message>
+        <source>0x88: resume after Stop</source>
+        <translation>0x88：在“电机停止”后恢复</translation>
+    </message>
+    <message>
+        <source>Soft limits of %1 applied and saved.</source>
+        <translation>已应用并保存 %1 的软限位。</translation>
+    </message>
+    <message>
+        <source>Stopped by the emergency stop.</source>
+        <translation>已被急停停止。</translation>
+    </message>
+    <message>
+        <source>Stopped: the drive or the connection changed.</source>
+        <translation>已停止：驱动或连接已改变。</translation>
+    </message>
+    <message>
+        <source>Disconnected: nothing can be sent.</source>
+        <translation>已断开：无法发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Not connected or no drive selected: nothing sent.</source>
+        <translation>未连接或未选择驱动：未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Sent %1 to drive %2.</source>
+        <translation>已向驱动 %2 发送 %1。</translation>
+    </message>
+    <message>
+        <source>Stopped: the bus cancelled motion commands (emergency stop).</source>
+        <translation>已停止：总线取消了运动命令（急停）。</translation>
+    </message>
+    <message>
+        <source>Stopped by Motor Off.</source>
+        <translation>已被电机关闭命令停止。</translation>
+    </message>
+    <message>
+        <source>Stopped by Stop.</source>
+        <translation>已被电机停止命令停止。</translation>
+    </message>
+    <message>
+        <source>Stopped: jog took over.</source>
+        <translation>已停止：点动接管了控制。</translation>
+    </message>
+    <message>
+        <source>Jogging at %1 dps: release to stop.</source>
+        <translation>正以 %1 dps 点动：松开即停止。</translation>
+    </message>
+    <message>
+        <source>Jog released: speed 0 sent.</source>
+        <translation>点动已松开：已发送速度 0。</translation>
+    </message>
+    <message>
+        <source>Step of %1° sent.</source>
+        <translation>已发送 %1° 的步进。</translation>
+    </message>
+    <message>
+        <source>Stopped by the user.</source>
+        <translation>已被用户停止。</translation>
+    </message>
+    <message>
+        <source>Now: %1 dps</source>
+        <translation>当前：%1 dps</translation>
+    </message>
+    <message>
+        <source>, iq %1 A</source>
+        <translation>，iq %1 A</translation>
+    </message>
+    <message>
+        <source>, power %1</source>
+        <translation>，功率 %1</translation>
+    </message>
+    <message>
+        <source>The soft limits stored for %1 are damaged (%2); the limits in force stay. Apply them to store them again.</source>
+        <translation>%1 保存的软限位已损坏（%2）；当前生效的限值保持不变。点“应用”可重新保存。</translation>
+    </message>
+    <message>
+        <source>Refused: the soft limits stored for %1 are damaged (%2). Check and apply the limits first; nothing sent.</source>
+        <translation>已拒绝：%1 保存的软限位已损坏（%2）。请先检查并应用限值；未发送任何命令。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drives are selected: every command here acts on %1 only.</source>
+        <translation>
+            <numerusform>已选择 %n 个驱动：此处的每条命令只作用于 %1。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Reading the drive&apos;s current angle before the move…</source>
+        <translation>运动前正在读取驱动的当前角度…</translation>
+    </message>
+    <message>
+        <source>Sent %1 to drive %2, %3.</source>
+        <translation>已向驱动 %2 发送 %1，%3。</translation>
+    </message>
+    <message>
+        <source>Refused: the target starts at the drive&apos;s current angle, which is being read. Nothing sent.</source>
+        <translation>已拒绝：目标从驱动的当前角度开始，正在读取该角度。未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Refused: the drive changed while its angle was read. Nothing sent.</source>
+        <translation>已拒绝：读取角度期间驱动已切换。未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Refused: could not read the drive&apos;s current angle, so nothing was sent. %1</source>
+        <translation>已拒绝：无法读取驱动的当前角度，因此未发送任何命令。%1</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::CursorReadout</name>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>Latest</source>
+        <translation>最新</translation>
+    </message>
+    <message>
+        <source>ID %1: %2</source>
+        <translation>ID %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::DashboardPanel</name>
+    <message>
+        <source>No drive selected. Connect to a bus and scan it; then pick a drive in the list on the left.</source>
+        <translation>未选择驱动。请连接总线并扫描，然后在左侧列表中选择一个驱动。</translation>
+    </message>
+    <message>
+        <source>Electrical</source>
+        <translation>电气</translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation>温度</translation>
+    </message>
+    <message>
+        <source>Supply voltage</source>
+        <translation>母线电压</translation>
+    </message>
+    <message>
+        <source>Torque current iq</source>
+        <translation>转矩电流 iq</translation>
+    </message>
+    <message>
+        <source>Phase A</source>
+        <translation>A 相电流</translation>
+    </message>
+    <message>
+        <source>Phase B</source>
+        <translation>B 相电流</translation>
+    </message>
+    <message>
+        <source>Phase C</source>
+        <translation>C 相电流</translation>
+    </message>
+    <message>
+        <source>Motion</source>
+        <translation>运动</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>Encoder</source>
+        <translation>编码器</translation>
+    </message>
+    <message>
+        <source>Multi-turn angle</source>
+        <translation>多圈角度</translation>
+    </message>
+    <message>
+        <source>Single-turn angle</source>
+        <translation>单圈角度</translation>
+    </message>
+    <message>
+        <source>Error flags</source>
+        <translation>错误标志</translation>
+    </message>
+    <message>
+        <source>Clear Errors</source>
+        <translation>清除错误标志</translation>
+    </message>
+    <message>
+        <source>Send clear_errors (0x9B). A drive keeps a flag while its cause (low voltage, heat) is still there.</source>
+        <translation>发送 clear_errors (0x9B)。只要原因（低压、过热）仍然存在，驱动就会保留该标志。</translation>
+    </message>
+    <message>
+        <source>Drive %1</source>
+        <translation>驱动 %1</translation>
+    </message>
+    <message>
+        <source>driver %1</source>
+        <translation>驱动型号 %1</translation>
+    </message>
+    <message>
+        <source>series %1</source>
+        <translation>%1 系列</translation>
+    </message>
+    <message>
+        <source>firmware %1, hardware %2</source>
+        <translation>固件 %1，硬件 %2</translation>
+    </message>
+    <message>
+        <source>%1-bit encoder</source>
+        <translation>%1 位编码器</translation>
+    </message>
+    <message>
+        <source>Power (relative, MS)</source>
+        <translation>输出功率（相对值，MS）</translation>
+    </message>
+    <message>
+        <source>output shaft</source>
+        <translation>输出轴</translation>
+    </message>
+    <message>
+        <source>rotor</source>
+        <translation>转子</translation>
+    </message>
+    <message>
+        <source>Multi-turn angle (%1)</source>
+        <translation>多圈角度（%1）</translation>
+    </message>
+    <message>
+        <source>Single-turn angle (%1)</source>
+        <translation>单圈角度（%1）</translation>
+    </message>
+    <message>
+        <source>Speed (%1)</source>
+        <translation>速度（%1）</translation>
+    </message>
+    <message>
+        <source>Gear ratio %1:1 from the motor name: angles and speeds are shown at the output shaft; hover for rotor values.</source>
+        <translation>型号名给出减速比 %1:1：角度和速度按输出轴显示；悬停可查看转子值。</translation>
+    </message>
+    <message>
+        <source>The motor name gives no gear ratio: angles and speeds are rotor values.</source>
+        <translation>型号名未给出减速比：角度和速度为转子值。</translation>
+    </message>
+    <message>
+        <source>not on MS</source>
+        <translation>MS 无此项</translation>
+    </message>
+    <message>
+        <source>Rotor: %1</source>
+        <translation>转子：%1</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>Not read yet</source>
+        <translation>尚未读取</translation>
+    </message>
+    <message>
+        <source>(no update for over a second)</source>
+        <translation>（超过一秒未更新）</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::DriveInfoView</name>
+    <message>
+        <source>This drive</source>
+        <translation>当前驱动</translation>
+    </message>
+    <message>
+        <source>Read again</source>
+        <translation>重新读取</translation>
+    </message>
+    <message>
+        <source>Copy to clipboard</source>
+        <translation>复制到剪贴板</translation>
+    </message>
+    <message>
+        <source>Bus report</source>
+        <translation>总线报告</translation>
+    </message>
+    <message>
+        <source>Bus report…</source>
+        <translation>总线报告…</translation>
+    </message>
+    <message>
+        <source>Every known drive: ID, model, versions, PID, acceleration and state, saved as JSON and as a readable HTML page</source>
+        <translation>所有已知驱动：ID、型号、版本、PID、加速度和状态，保存为 JSON 和可阅读的 HTML 页面</translation>
+    </message>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Series</source>
+        <translation>系列</translation>
+    </message>
+    <message>
+        <source>Motor</source>
+        <translation>电机</translation>
+    </message>
+    <message>
+        <source>Firmware</source>
+        <translation>固件</translation>
+    </message>
+    <message>
+        <source>PID (angle · speed · iq)</source>
+        <translation>PID（角度 · 速度 · iq）</translation>
+    </message>
+    <message>
+        <source>Accel (dps/s)</source>
+        <translation>加速度 (dps/s)</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>状态</translation>
+    </message>
+    <message>
+        <source>Problems</source>
+        <translation>问题</translation>
+    </message>
+    <message>
+        <source>Model read from drive %1.</source>
+        <translation>已从驱动 %1 读取型号。</translation>
+    </message>
+    <message>
+        <source>No drive selected.</source>
+        <translation>未选择驱动。</translation>
+    </message>
+    <message>
+        <source>Driver name</source>
+        <translation>驱动名称</translation>
+    </message>
+    <message>
+        <source>Motor name</source>
+        <translation>电机名称</translation>
+    </message>
+    <message>
+        <source>Hardware version</source>
+        <translation>硬件版本</translation>
+    </message>
+    <message>
+        <source>Firmware version</source>
+        <translation>固件版本</translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation>协议</translation>
+    </message>
+    <message>
+        <source>Gear ratio (from the name)</source>
+        <translation>减速比（取自型号名）</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>无</translation>
+    </message>
+    <message>
+        <source>Encoder (from the name)</source>
+        <translation>编码器（取自型号名）</translation>
+    </message>
+    <message>
+        <source>%1-bit</source>
+        <translation>%1 位</translation>
+    </message>
+    <message>
+        <source>not in the name</source>
+        <translation>型号名中没有</translation>
+    </message>
+    <message>
+        <source>Drive ID: %1</source>
+        <translation>驱动 ID：%1</translation>
+    </message>
+    <message>
+        <source>Series: %1</source>
+        <translation>系列：%1</translation>
+    </message>
+    <message>
+        <source>Driver name: %1</source>
+        <translation>驱动名称：%1</translation>
+    </message>
+    <message>
+        <source>Motor name: %1</source>
+        <translation>电机名称：%1</translation>
+    </message>
+    <message>
+        <source>Hardware version: %1</source>
+        <translation>硬件版本：%1</translation>
+    </message>
+    <message>
+        <source>Firmware version: %1</source>
+        <translation>固件版本：%1</translation>
+    </message>
+    <message>
+        <source>Model: not read</source>
+        <translation>型号：未读取</translation>
+    </message>
+    <message>
+        <source>Copied to the clipboard.</source>
+        <translation>已复制到剪贴板。</translation>
+    </message>
+    <message>
+        <source>Connect to a bus first.</source>
+        <translation>请先连接总线。</translation>
+    </message>
+    <message>
+        <source>Gathering the bus report…</source>
+        <translation>正在收集总线报告…</translation>
+    </message>
+    <message>
+        <source>No drive is known on this bus: scan first.</source>
+        <translation>此总线上没有已知的驱动：请先扫描。</translation>
+    </message>
+    <message>
+        <source>, low voltage</source>
+        <translation>，低压保护</translation>
+    </message>
+    <message>
+        <source>, over temperature</source>
+        <translation>，过温保护</translation>
+    </message>
+    <message>
+        <source>Save bus report</source>
+        <translation>保存总线报告</translation>
+    </message>
+    <message>
+        <source>Bus report (*.json)</source>
+        <translation>总线报告 (*.json)</translation>
+    </message>
+    <message>
+        <source>No report gathered yet.</source>
+        <translation>尚未收集报告。</translation>
+    </message>
+    <message>
+        <source>Bus report saved: %1 and %2.</source>
+        <translation>总线报告已保存：%1 和 %2。</translation>
+    </message>
+    <message>
+        <source>Could not save the bus report: %1</source>
+        <translation>无法保存总线报告：%1</translation>
+    </message>
+    <message>
+        <source>%1 °C, %2 V</source>
+        <translation>%1 °C，%2 V</translation>
+    </message>
+    <message numerus="yes">
+        <source>Bus report gathered: %n drive(s).</source>
+        <translation>
+            <numerusform>已收集总线报告：%n 个驱动。</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::DriveText</name>
+    <message>
+        <source>unknown series</source>
+        <translation>未知系列</translation>
+    </message>
+    <message>
+        <source>Refused: the drive&apos;s series is unknown, so its current limits are unknown. Scan the bus first.</source>
+        <translation>已拒绝：驱动的系列未知，因此其电流限值未知。请先扫描总线。</translation>
+    </message>
+    <message>
+        <source>Refused: %1 drives do not implement this command.</source>
+        <translation>已拒绝：%1 驱动不支持此命令。</translation>
+    </message>
+    <message>
+        <source>Refused by the series limit: %1 A is over the %2 rating of %3 A.</source>
+        <translation>被系列限值拒绝：%1 A 超过 %2 的额定值 %3 A。</translation>
+    </message>
+    <message>
+        <source>Refused by your torque limit: %1 A is over %2 A.</source>
+        <translation>被您的转矩限值拒绝：%1 A 超过 %2 A。</translation>
+    </message>
+    <message>
+        <source>Refused by your open-loop power limit: %1 is over %2 (of 1000).</source>
+        <translation>被您的开环功率限值拒绝：%1 超过 %2（满量程 1000）。</translation>
+    </message>
+    <message>
+        <source>Refused by the series limit: %1 dps is over the %2 top speed of %3 dps.</source>
+        <translation>被系列限值拒绝：%1 dps 超过 %2 的最高速度 %3 dps。</translation>
+    </message>
+    <message>
+        <source>Refused by your speed limit: %1 dps is over %2 dps.</source>
+        <translation>被您的速度限值拒绝：%1 dps 超过 %2 dps。</translation>
+    </message>
+    <message>
+        <source>Refused by your angle range: %1° is below the minimum of %2°.</source>
+        <translation>被您的角度范围拒绝：%1° 低于最小值 %2°。</translation>
+    </message>
+    <message>
+        <source>Refused by your angle range: %1° is above the maximum of %2°.</source>
+        <translation>被您的角度范围拒绝：%1° 高于最大值 %2°。</translation>
+    </message>
+    <message>
+        <source>Refused by your step limit: a move of %1° is more than %2°.</source>
+        <translation>被您的步长限值拒绝：移动 %1° 超过 %2°。</translation>
+    </message>
+    <message>
+        <source>Refused, nothing sent: %1 must be in %2.</source>
+        <translation>已拒绝，未发送：%1 必须在 %2 范围内。</translation>
+    </message>
+    <message>
+        <source>Refused, nothing sent: %1 must be in %2 (%3).</source>
+        <translation>已拒绝，未发送：%1 必须在 %2 范围内（%3）。</translation>
+    </message>
+    <message>
+        <source>%1: drive %2 did not answer.</source>
+        <translation>%1：驱动 %2 无应答。</translation>
+    </message>
+    <message>
+        <source>%1: the bus is not connected.</source>
+        <translation>%1：总线未连接。</translation>
+    </message>
+    <message>
+        <source>%1: cancelled (emergency stop or disconnect).</source>
+        <translation>%1：已取消（急停或断开）。</translation>
+    </message>
+    <message>
+        <source>%1: the reply was corrupt (%2).</source>
+        <translation>%1：回复数据损坏（%2）。</translation>
+    </message>
+    <message>
+        <source>Refused: the drive&apos;s current angle is not known (read with 0x92 first), so the move cannot be checked. Nothing sent.</source>
+        <translation>已拒绝：驱动的当前角度未知（请先用 0x92 读取），无法检查此次运动。未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Refused: a move of %1° is more than one output turn (%2°). Move in smaller steps.</source>
+        <translation>已拒绝：移动 %1° 超过输出轴一圈（%2°）。请分小步移动。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::DriveTree</name>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>型号</translation>
+    </message>
+    <message>
+        <source>Series</source>
+        <translation>系列</translation>
+    </message>
+    <message>
+        <source>FW</source>
+        <translation>固件</translation>
+    </message>
+    <message>
+        <source>HW</source>
+        <translation>硬件</translation>
+    </message>
+    <message>
+        <source>Voltage</source>
+        <translation>电压</translation>
+    </message>
+    <message>
+        <source>Temp.</source>
+        <translation>温度</translation>
+    </message>
+    <message>
+        <source>Errors</source>
+        <translation>错误</translation>
+    </message>
+    <message>
+        <source>No bus</source>
+        <translation>无总线</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drive(s)</source>
+        <translation>
+            <numerusform>%n 个驱动</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::DriveView</name>
+    <message>
+        <source>No drive selected</source>
+        <translation>未选择驱动</translation>
+    </message>
+    <message>
+        <source>Drive %1 (%2)</source>
+        <translation>驱动 %1（%2）</translation>
+    </message>
+    <message>
+        <source>Drive %1</source>
+        <translation>驱动 %1</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::DriveViews</name>
+    <message>
+        <source>The bus is not connected.</source>
+        <translation>总线未连接。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::EmergencyStopButton</name>
+    <message>
+        <source>EMERGENCY STOP (Esc)</source>
+        <translation>急停 (Esc)</translation>
+    </message>
+    <message>
+        <source>Motor Off (0x80) to every drive on the bus, ahead of everything queued. Esc does the same from anywhere in lkstudio.</source>
+        <translation>抢在所有排队命令之前，向总线上的每个驱动发送电机关闭命令 (0x80)。在 lkstudio 中任何地方按 Esc 效果相同。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::EmergencyStopControl</name>
+    <message>
+        <source>Emergency stop.</source>
+        <translation>急停。</translation>
+    </message>
+    <message>
+        <source>Emergency stop: NOTHING could be sent, the bus is not connected. lkstudio has not commanded any drive to move.</source>
+        <translation>急停：总线未连接，任何命令都无法发送。lkstudio 没有命令任何驱动运动。</translation>
+    </message>
+    <message>
+        <source>Emergency stop: NOTHING could be sent, the bus is not connected. Last commanded to move: %1. They may still be moving: cut their power if needed.</source>
+        <translation>急停：总线未连接，任何命令都无法发送。最后被命令运动的：%1。它们可能仍在运动：必要时请切断其电源。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Emergency stop: Motor Off sent to %n ID(s); no drive answered.</source>
+        <translation>
+            <numerusform>急停：已向 %n 个 ID 发送电机关闭命令；没有驱动应答。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Emergency stop: Motor Off sent to %n ID(s); acknowledged by drive(s) %1.</source>
+        <translation>
+            <numerusform>急停：已向 %n 个 ID 发送电机关闭命令；驱动 %1 已确认。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 of %2 could not be sent: the link dropped.</source>
+        <translation>%2 个中有 %1 个无法发送：链路已断开。</translation>
+    </message>
+    <message>
+        <source>NO answer from drive(s) %1: check them and cut their power if needed.</source>
+        <translation>驱动 %1 无应答：请检查这些驱动，必要时切断其电源。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::EncoderLiveBox</name>
+    <message>
+        <source>Live (read while this view is shown)</source>
+        <translation>实时（显示此页时读取）</translation>
+    </message>
+    <message>
+        <source>Encoder (raw − offset):</source>
+        <translation>编码器（原始位置 − 零偏）：</translation>
+    </message>
+    <message>
+        <source>Raw encoder:</source>
+        <translation>编码器原始位置：</translation>
+    </message>
+    <message>
+        <source>Encoder offset:</source>
+        <translation>编码器零偏：</translation>
+    </message>
+    <message>
+        <source>Multi-turn angle (rotor):</source>
+        <translation>多圈角度（转子）：</translation>
+    </message>
+    <message>
+        <source>Output shaft:</source>
+        <translation>输出轴：</translation>
+    </message>
+    <message>
+        <source>Single-turn angle:</source>
+        <translation>单圈角度：</translation>
+    </message>
+    <message>
+        <source>Dial: the blue needle is the raw position, the red mark the offset (where the encoder reads 0); the centre shows the encoder angle.</source>
+        <translation>表盘：蓝色指针为原始位置，红色标记为零偏（编码器读数为 0 处）；中央显示编码器角度。</translation>
+    </message>
+    <message>
+        <source>%1  (%2°)</source>
+        <translation>%1  (%2°)</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>%1 (÷ %2)</source>
+        <translation>%1 (÷ %2)</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::EncoderView</name>
+    <message>
+        <source>What was done (this session)</source>
+        <translation>已执行的操作（本次会话）</translation>
+    </message>
+    <message>
+        <source>Offset writes, angle clears and zero writes appear here.</source>
+        <translation>零偏写入、角度清零和零点写入会显示在这里。</translation>
+    </message>
+    <message>
+        <source>Encoder and gearbox</source>
+        <translation>编码器和减速器</translation>
+    </message>
+    <message>
+        <source>%1-bit</source>
+        <translation>%1 位</translation>
+    </message>
+    <message>
+        <source>Resolution:</source>
+        <translation>分辨率：</translation>
+    </message>
+    <message>
+        <source>Gear ratio:</source>
+        <translation>减速比：</translation>
+    </message>
+    <message>
+        <source>Encoder offset (0x91)</source>
+        <translation>编码器零偏 (0x91)</translation>
+    </message>
+    <message>
+        <source>Use current raw</source>
+        <translation>使用当前原始位置</translation>
+    </message>
+    <message>
+        <source>The present raw position becomes encoder 0</source>
+        <translation>当前原始位置成为编码器 0</translation>
+    </message>
+    <message>
+        <source>Write offset…</source>
+        <translation>写入零偏…</translation>
+    </message>
+    <message>
+        <source>The offset is the raw position that reads as encoder 0. The spec&apos;s command table calls 0x91 a ROM write: it may write the drive&apos;s flash.</source>
+        <translation>零偏是编码器读数为 0 时的原始位置。协议命令表将 0x91 列为 ROM 写入：它可能会写入驱动的闪存。</translation>
+    </message>
+    <message>
+        <source>Zero</source>
+        <translation>零点</translation>
+    </message>
+    <message>
+        <source>Clear motor angle (0x95)…</source>
+        <translation>清除电机角度 (0x95)…</translation>
+    </message>
+    <message>
+        <source>Write current position to ROM as zero (0x19)…</source>
+        <translation>写入当前位置到 ROM 作为零点 (0x19)…</translation>
+    </message>
+    <message>
+        <source>Multi-turn and single-turn angle become 0 here until power-off; the result is checked with read_multi_turn (0x92).</source>
+        <translation>多圈角度和单圈角度在此处变为 0，直到断电；结果用 read_multi_turn (0x92) 检查。</translation>
+    </message>
+    <message>
+        <source>Stores the present encoder position as the zero in flash. Takes effect only after a power cycle; each write wears the flash.</source>
+        <translation>将当前编码器位置作为零点存入闪存。断电重启后才生效；每次写入都会磨损闪存。</translation>
+    </message>
+    <message>
+        <source>from the model name &quot;%1&quot;</source>
+        <translation>取自型号名“%1”</translation>
+    </message>
+    <message>
+        <source>the %1 series default</source>
+        <translation>%1 系列的默认值</translation>
+    </message>
+    <message>
+        <source>a guess: the model does not say</source>
+        <translation>推测值：型号名中没有说明</translation>
+    </message>
+    <message>
+        <source>no gearbox in the model name</source>
+        <translation>型号名中没有减速器</translation>
+    </message>
+    <message>
+        <source>your setting for this drive</source>
+        <translation>您为此驱动设置的值</translation>
+    </message>
+    <message>
+        <source>Disconnected: the values shown are the last ones read.</source>
+        <translation>已断开：显示的是最后读取的数值。</translation>
+    </message>
+    <message>
+        <source>%1 counts per turn on the wire; %2.</source>
+        <translation>通信数据中每圈 %1 个计数；%2。</translation>
+    </message>
+    <message>
+        <source>Output shaft = rotor ÷ ratio; %1.</source>
+        <translation>输出轴 = 转子 ÷ 减速比；%1。</translation>
+    </message>
+    <message>
+        <source>The drive or the connection changed: nothing was sent.</source>
+        <translation>驱动或连接已改变：未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Cancelled: nothing was sent.</source>
+        <translation>已取消：未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Refused, nothing sent: the offset must be in 0..%1 for a %2-bit encoder.</source>
+        <translation>已拒绝，未发送：%2 位编码器的零偏必须在 0..%1 范围内。</translation>
+    </message>
+    <message>
+        <source>Write encoder offset</source>
+        <translation>写入编码器零偏</translation>
+    </message>
+    <message>
+        <source>Write encoder offset %1 to drive %2?</source>
+        <translation>将编码器零偏 %1 写入驱动 %2？</translation>
+    </message>
+    <message>
+        <source>The zero of the encoder and of every angle moves, so position commands go elsewhere afterwards. The spec&apos;s command table calls 0x91 a ROM write: it may wear the drive&apos;s flash.</source>
+        <translation>编码器和所有角度的零点都会移动，之后的位置命令会走到别的位置。协议命令表将 0x91 列为 ROM 写入：它可能会磨损驱动的闪存。</translation>
+    </message>
+    <message>
+        <source>Write offset</source>
+        <translation>写入零偏</translation>
+    </message>
+    <message>
+        <source>Encoder offset %1 written and read back.</source>
+        <translation>编码器零偏 %1 已写入并回读。</translation>
+    </message>
+    <message>
+        <source>Wrote offset %1, but the drive reports %2.</source>
+        <translation>已写入零偏 %1，但驱动报告为 %2。</translation>
+    </message>
+    <message>
+        <source>Clear motor angle</source>
+        <translation>清除电机角度</translation>
+    </message>
+    <message>
+        <source>Make the present position of drive %1 angle 0?</source>
+        <translation>把驱动 %1 的当前位置设为角度 0？</translation>
+    </message>
+    <message>
+        <source>Multi-turn and single-turn angles restart from 0 here until power-off, so absolute position commands go elsewhere afterwards.</source>
+        <translation>多圈和单圈角度从此处重新从 0 开始，直到断电，因此之后的绝对位置命令会走到别的位置。</translation>
+    </message>
+    <message>
+        <source>Clear angle</source>
+        <translation>清除角度</translation>
+    </message>
+    <message>
+        <source>Clearing the angle of drive %1…</source>
+        <translation>正在清除驱动 %1 的角度…</translation>
+    </message>
+    <message>
+        <source>Angle cleared: the drive reads %1° (was %2°).</source>
+        <translation>角度已清除：驱动读数为 %1°（原为 %2°）。</translation>
+    </message>
+    <message>
+        <source>The angle read %1° before already: whether the drive applied 0x95 cannot be told.</source>
+        <translation>清除前角度已经是 %1°：无法判断驱动是否执行了 0x95。</translation>
+    </message>
+    <message>
+        <source>The drive acknowledged 0x95 but its angle did not change (%1°): this firmware ignores clear-angle. Use the encoder offset or 0x19 instead.</source>
+        <translation>驱动确认了 0x95，但角度没有变化（%1°）：此固件忽略清除角度命令。请改用编码器零偏或 0x19。</translation>
+    </message>
+    <message>
+        <source>The angle changed from %1° to %2° but is not 0: was the motor turning? Stop it and clear again.</source>
+        <translation>角度从 %1° 变为 %2°，但不是 0：电机在转动吗？请先停止再清除。</translation>
+    </message>
+    <message>
+        <source>Write zero to ROM</source>
+        <translation>写入零点到 ROM</translation>
+    </message>
+    <message>
+        <source>Store the present position of drive %1 as its zero in ROM?</source>
+        <translation>将驱动 %1 的当前位置作为零点存入 ROM？</translation>
+    </message>
+    <message>
+        <source>It takes effect only after the drive is powered off and on again. It writes the drive&apos;s flash, which wears with every write: do it once, not as a routine.</source>
+        <translation>断电再上电后才生效。它会写入驱动的闪存，每次写入都会磨损：只做一次，不要作为例行操作。</translation>
+    </message>
+    <message>
+        <source>Zero written to the ROM of drive %1. Power the drive off and on for it to take effect.</source>
+        <translation>零点已写入驱动 %1 的 ROM。请将驱动断电再上电使其生效。</translation>
+    </message>
+    <message>
+        <source>The drive reports the new zero as encoder %1.</source>
+        <translation>驱动报告新零点为编码器 %1。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::Format</name>
+    <message>
+        <source>Low voltage</source>
+        <translation>低压保护</translation>
+    </message>
+    <message>
+        <source>Over temperature</source>
+        <translation>过温保护</translation>
+    </message>
+    <message>
+        <source>Error bit %1</source>
+        <translation>错误位 %1</translation>
+    </message>
+    <message>
+        <source>No errors</source>
+        <translation>无错误</translation>
+    </message>
+    <message>
+        <source>The port does not exist. Check that the USB-RS485 adapter is plugged in and pick it again from the list.</source>
+        <translation>串口不存在。请检查 USB-RS485 转换器是否插好，然后在列表中重新选择。</translation>
+    </message>
+    <message>
+        <source>Permission denied. Add your user to the serial group (Debian/Ubuntu: sudo usermod -aG dialout $USER; Arch: uucp), then log out and back in.</source>
+        <translation>权限不足。请把您的用户加入串口用户组（Debian/Ubuntu：sudo usermod -aG dialout $USER；Arch：uucp），然后注销并重新登录。</translation>
+    </message>
+    <message>
+        <source>The port is busy: another program (a terminal, another lkstudio or lkctl) holds it. Close that program and connect again.</source>
+        <translation>串口被占用：另一个程序（终端、另一个 lkstudio 或 lkctl）正在使用它。关闭该程序后重新连接。</translation>
+    </message>
+    <message>
+        <source>The adapter was unplugged. Plug it back in; with auto-reconnect on, the connection comes back by itself.</source>
+        <translation>转换器已被拔出。请重新插上；开启自动重连时连接会自动恢复。</translation>
+    </message>
+    <message>
+        <source>The adapter refused the port settings. Pick another baud or another adapter.</source>
+        <translation>转换器不接受这些串口设置。请换一个波特率或换一个转换器。</translation>
+    </message>
+    <message>
+        <source>Input/output error on the port. Check the cable and the adapter.</source>
+        <translation>串口输入/输出错误。请检查电缆和转换器。</translation>
+    </message>
+    <message>
+        <source>Connected: %1</source>
+        <translation>已连接：%1</translation>
+    </message>
+    <message>
+        <source>Disconnected</source>
+        <translation>已断开</translation>
+    </message>
+    <message>
+        <source>Not connected</source>
+        <translation>未连接</translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation>%1 ms</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>This is not a serial port. Pick the USB-RS485 adapter from the list.</source>
+        <translation>这不是串口。请从列表中选择 USB-RS485 转换器。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::HelpMenu</name>
+    <message>
+        <source>&amp;Help</source>
+        <translation>帮助(&amp;H)</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard shortcuts</source>
+        <translation>键盘快捷键(&amp;K)</translation>
+    </message>
+    <message>
+        <source>Copy &amp;diagnostics</source>
+        <translation>复制诊断信息(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;About LK Servo Studio</source>
+        <translation>关于 LK Servo Studio(&amp;A)</translation>
+    </message>
+    <message>
+        <source>About &amp;Qt</source>
+        <translation>关于 Qt(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>Diagnostics copied to the clipboard</source>
+        <translation>诊断信息已复制到剪贴板</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::JogPanel</name>
+    <message>
+        <source>Jog</source>
+        <translation>点动</translation>
+    </message>
+    <message>
+        <source> dps</source>
+        <translation> dps</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>Arrow keys jog (← → hold, ↓ ↑ step)</source>
+        <translation>方向键点动（← → 按住，↓ ↑ 步进）</translation>
+    </message>
+    <message>
+        <source>Only while this view has the focus and no text field does.</source>
+        <translation>仅当此页获得焦点且没有文本框获得焦点时有效。</translation>
+    </message>
+    <message>
+        <source>◀ Hold</source>
+        <translation>◀ 按住</translation>
+    </message>
+    <message>
+        <source>Runs counter-clockwise at the jog speed while pressed</source>
+        <translation>按住时以点动速度逆时针转动</translation>
+    </message>
+    <message>
+        <source>Hold ▶</source>
+        <translation>按住 ▶</translation>
+    </message>
+    <message>
+        <source>Runs clockwise at the jog speed while pressed</source>
+        <translation>按住时以点动速度顺时针转动</translation>
+    </message>
+    <message>
+        <source>− Step</source>
+        <translation>− 步进</translation>
+    </message>
+    <message>
+        <source>One incremental move counter-clockwise</source>
+        <translation>逆时针增量移动一步</translation>
+    </message>
+    <message>
+        <source>Step +</source>
+        <translation>步进 +</translation>
+    </message>
+    <message>
+        <source>One incremental move clockwise</source>
+        <translation>顺时针增量移动一步</translation>
+    </message>
+    <message>
+        <source>Speed:</source>
+        <translation>速度：</translation>
+    </message>
+    <message>
+        <source>Step:</source>
+        <translation>步长：</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::LanguageMenu</name>
+    <message>
+        <source>&amp;Language</source>
+        <translation>语言(&amp;L)</translation>
+    </message>
+    <message>
+        <source>System default</source>
+        <translation>跟随系统</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>语言</translation>
+    </message>
+    <message>
+        <source>The new language takes effect after a restart of LK Servo Studio.</source>
+        <translation>新的语言将在重新启动 LK Servo Studio 后生效。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::LinkLossWatch</name>
+    <message>
+        <source>&lt;b&gt;Drive %1 may still be moving&lt;/b&gt;: last command %2 at %3; it stops by itself only if its input-timeout protection is set.</source>
+        <translation>&lt;b&gt;驱动 %1 可能仍在运动&lt;/b&gt;：最后的命令是 %3 时的 %2；只有设置了输入超时保护，它才会自行停止。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::LoopPlot</name>
+    <message>
+        <source>Angle loop: multi-turn angle</source>
+        <translation>角度环：多圈角度</translation>
+    </message>
+    <message>
+        <source>Speed loop: speed</source>
+        <translation>速度环：速度</translation>
+    </message>
+    <message>
+        <source>Current loop: iq (power on MS)</source>
+        <translation>电流环：iq（MS 为功率）</translation>
+    </message>
+    <message>
+        <source>Follows the field you edit; pick another loop here.</source>
+        <translation>跟随您正在编辑的字段；也可在此选择其他环路。</translation>
+    </message>
+    <message>
+        <source>Live plot:</source>
+        <translation>实时曲线：</translation>
+    </message>
+    <message>
+        <source>Select a drive to see its loop.</source>
+        <translation>选择一个驱动以查看其环路。</translation>
+    </message>
+    <message>
+        <source>No samples of this signal yet: the plot shows what the bus polls for drive %1 (polling runs while connected).</source>
+        <translation>尚无此信号的采样：曲线显示总线为驱动 %1 轮询的数据（连接时持续轮询）。</translation>
+    </message>
+    <message>
+        <source>Last %1 s of drive %2, rotor values.</source>
+        <translation>驱动 %2 最近 %1 s，转子值。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::MainWindow</name>
+    <message>
+        <source>LK Servo Studio</source>
+        <translation>LK Servo Studio</translation>
+    </message>
+    <message>
+        <source>Dashboard</source>
+        <translation>仪表盘</translation>
+    </message>
+    <message>
+        <source>Overview</source>
+        <translation>总览</translation>
+    </message>
+    <message>
+        <source>Plots</source>
+        <translation>曲线</translation>
+    </message>
+    <message>
+        <source>Traffic</source>
+        <translation>通信</translation>
+    </message>
+    <message>
+        <source>Tuning</source>
+        <translation>调参</translation>
+    </message>
+    <message>
+        <source>Control</source>
+        <translation>控制</translation>
+    </message>
+    <message>
+        <source>Encoder</source>
+        <translation>编码器</translation>
+    </message>
+    <message>
+        <source>Drive info</source>
+        <translation>驱动信息</translation>
+    </message>
+    <message>
+        <source>Bus</source>
+        <translation>总线</translation>
+    </message>
+    <message>
+        <source>Connection</source>
+        <translation>连接</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>文件(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Export &amp;traffic log…</source>
+        <translation>导出通信记录(&amp;T)…</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>退出(&amp;Q)</translation>
+    </message>
+    <message>
+        <source>&amp;Bus</source>
+        <translation>总线(&amp;B)</translation>
+    </message>
+    <message>
+        <source>&amp;Scan</source>
+        <translation>扫描(&amp;S)</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect</source>
+        <translation>断开(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;Emergency stop (Esc)</source>
+        <translation>急停(&amp;E) (Esc)</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>视图(&amp;V)</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::MessageBanner</name>
+    <message>
+        <source>%1 (×%2)</source>
+        <translation>%1 (×%2)</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::MotionGate</name>
+    <message>
+        <source>Not connected.</source>
+        <translation>未连接。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::OverviewModel</name>
+    <message>
+        <source>At the output shaft when the motor name gives a gear ratio, else at the rotor</source>
+        <translation>型号名给出减速比时为输出轴的值，否则为转子的值</translation>
+    </message>
+    <message>
+        <source>Median time from request to reply over the recent replies</source>
+        <translation>最近若干次回复中，从请求到回复的时间中位数</translation>
+    </message>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Model</source>
+        <translation>型号</translation>
+    </message>
+    <message>
+        <source>Series</source>
+        <translation>系列</translation>
+    </message>
+    <message>
+        <source>FW/HW</source>
+        <translation>固件/硬件</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>链路</translation>
+    </message>
+    <message>
+        <source>Voltage</source>
+        <translation>电压</translation>
+    </message>
+    <message>
+        <source>Temp.</source>
+        <translation>温度</translation>
+    </message>
+    <message>
+        <source>iq/power</source>
+        <translation>iq/功率</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>角度</translation>
+    </message>
+    <message>
+        <source>Errors</source>
+        <translation>错误</translation>
+    </message>
+    <message>
+        <source>Replies</source>
+        <translation>回复</translation>
+    </message>
+    <message>
+        <source>Timeouts</source>
+        <translation>超时</translation>
+    </message>
+    <message>
+        <source>Checksum err.</source>
+        <translation>校验错误</translation>
+    </message>
+    <message>
+        <source>Latency</source>
+        <translation>延迟</translation>
+    </message>
+    <message>
+        <source>offline</source>
+        <translation>离线</translation>
+    </message>
+    <message>
+        <source>silent</source>
+        <translation>无应答</translation>
+    </message>
+    <message>
+        <source>stale</source>
+        <translation>过时</translation>
+    </message>
+    <message>
+        <source>live</source>
+        <translation>实时</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::OverviewPanel</name>
+    <message numerus="yes">
+        <source>%n drive(s) on the bus</source>
+        <translation>
+            <numerusform>总线上有 %n 个驱动</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drive(s) with error flags</source>
+        <translation>
+            <numerusform>%n 个驱动有错误标志</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 timeouts, %2 checksum errors on the bus</source>
+        <translation>总线上 %1 次超时，%2 次校验错误</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::ParameterFileText</name>
+    <message>
+        <source>an integer in %1..%2</source>
+        <translation>%1..%2 之间的整数</translation>
+    </message>
+    <message>
+        <source>a number in %1..%2</source>
+        <translation>%1..%2 之间的数值</translation>
+    </message>
+    <message>
+        <source>text in quotes</source>
+        <translation>带引号的文本</translation>
+    </message>
+    <message>
+        <source>an object ({ ... })</source>
+        <translation>对象（{ ... }）</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is too large to be a parameter file (more than %2 bytes)</source>
+        <translation>%1 太大，不可能是参数文件（超过 %2 字节）</translation>
+    </message>
+    <message>
+        <source>not valid JSON (%1 at byte %2)</source>
+        <translation>不是有效的 JSON（%1，位于第 %2 字节）</translation>
+    </message>
+    <message>
+        <source>not a JSON object</source>
+        <translation>不是 JSON 对象</translation>
+    </message>
+    <message>
+        <source>not an LK Servo Studio parameter file (format is %1, not &quot;%2&quot;)</source>
+        <translation>不是 LK Servo Studio 参数文件（format 为 %1，而不是“%2”）</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>缺失</translation>
+    </message>
+    <message>
+        <source>written by a newer release (format version %1, this one reads up to %2)</source>
+        <translation>由更新的版本写入（格式版本 %1，本版本最高只能读取 %2）</translation>
+    </message>
+    <message>
+        <source>%1 is missing: it must be %2</source>
+        <translation>缺少 %1：它必须是%2</translation>
+    </message>
+    <message>
+        <source>%1 is not a key of a parameter file (a typing error?)</source>
+        <translation>%1 不是参数文件中的键（拼写错误？）</translation>
+    </message>
+    <message>
+        <source>%1 is given twice: which one is meant is not known</source>
+        <translation>%1 出现了两次：无法确定以哪一个为准</translation>
+    </message>
+    <message>
+        <source>%1 is %2: it must be %3</source>
+        <translation>%1 为 %2：它必须是%3</translation>
+    </message>
+    <message>
+        <source>%1 is %2, out of range: it must be %3</source>
+        <translation>%1 为 %2，超出范围：它必须是%3</translation>
+    </message>
+    <message>
+        <source>%1 is %2: it must be MS, MF, MG or MH</source>
+        <translation>%1 为 %2：它必须是 MS、MF、MG 或 MH</translation>
+    </message>
+    <message>
+        <source>%1 is %2: it must be a date and time such as &quot;2026-05-04T03:02:01.000Z&quot;</source>
+        <translation>%1 为 %2：它必须是日期时间，例如“2026-05-04T03:02:01.000Z”</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::ParameterTable</name>
+    <message>
+        <source>Parameter</source>
+        <translation>参数</translation>
+    </message>
+    <message>
+        <source>Drive holds</source>
+        <translation>驱动当前值</translation>
+    </message>
+    <message>
+        <source>Pending edit</source>
+        <translation>待写入</translation>
+    </message>
+    <message>
+        <source>Angle loop Kp</source>
+        <translation>角度环 Kp</translation>
+    </message>
+    <message>
+        <source>Angle loop Ki</source>
+        <translation>角度环 Ki</translation>
+    </message>
+    <message>
+        <source>Speed loop Kp</source>
+        <translation>速度环 Kp</translation>
+    </message>
+    <message>
+        <source>Speed loop Ki</source>
+        <translation>速度环 Ki</translation>
+    </message>
+    <message>
+        <source>Current loop Kp</source>
+        <translation>电流环 Kp</translation>
+    </message>
+    <message>
+        <source>Current loop Ki</source>
+        <translation>电流环 Ki</translation>
+    </message>
+    <message>
+        <source>Acceleration</source>
+        <translation>加速度</translation>
+    </message>
+    <message>
+        <source> dps/s</source>
+        <translation> dps/s</translation>
+    </message>
+    <message>
+        <source>0x34 writes acceleration to RAM only: protocol V2.3 has no ROM command for it. Some firmware ignores it (read back shows).</source>
+        <translation>0x34 只把加速度写入 RAM：协议 V2.3 没有对应的 ROM 命令。部分固件会忽略它（回读可见）。</translation>
+    </message>
+    <message>
+        <source>0..255</source>
+        <translation>0..255</translation>
+    </message>
+    <message>
+        <source>First read</source>
+        <translation>首次读取</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::PlotExporter</name>
+    <message>
+        <source>Cannot open %1: %2</source>
+        <translation>无法打开 %1：%2</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::PlotPanel</name>
+    <message>
+        <source>5 s</source>
+        <translation>5 s</translation>
+    </message>
+    <message>
+        <source>10 s</source>
+        <translation>10 s</translation>
+    </message>
+    <message>
+        <source>30 s</source>
+        <translation>30 s</translation>
+    </message>
+    <message>
+        <source>1 min</source>
+        <translation>1 分钟</translation>
+    </message>
+    <message>
+        <source>5 min</source>
+        <translation>5 分钟</translation>
+    </message>
+    <message>
+        <source>10 min</source>
+        <translation>10 分钟</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>Freeze the plots; recording goes on</source>
+        <translation>冻结曲线；记录继续进行</translation>
+    </message>
+    <message>
+        <source>Follow live</source>
+        <translation>跟随最新</translation>
+    </message>
+    <message>
+        <source>Return to the newest data after zooming or panning</source>
+        <translation>缩放或平移后回到最新数据</translation>
+    </message>
+    <message>
+        <source>Window:</source>
+        <translation>窗口：</translation>
+    </message>
+    <message>
+        <source>Overlay</source>
+        <translation>叠加</translation>
+    </message>
+    <message>
+        <source>One chart with a value axis per unit instead of stacked charts</source>
+        <translation>一张图表，每种单位一条数值轴，而不是上下排列的多张图表</translation>
+    </message>
+    <message>
+        <source>Autoscale</source>
+        <translation>自动缩放</translation>
+    </message>
+    <message>
+        <source>Fit the value axes to the data (Ctrl+wheel scales them by hand)</source>
+        <translation>使数值轴适应数据（Ctrl+滚轮手动缩放）</translation>
+    </message>
+    <message>
+        <source>Visible range…</source>
+        <translation>可见范围…</translation>
+    </message>
+    <message>
+        <source>Everything recorded…</source>
+        <translation>全部记录…</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>导出 CSV</translation>
+    </message>
+    <message>
+        <source>Export PNG…</source>
+        <translation>导出 PNG…</translation>
+    </message>
+    <message>
+        <source>Signals:</source>
+        <translation>信号：</translation>
+    </message>
+    <message>
+        <source>iq / power</source>
+        <translation>iq / 功率</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>Encoder</source>
+        <translation>编码器</translation>
+    </message>
+    <message>
+        <source>Multi-turn angle</source>
+        <translation>多圈角度</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV 文件 (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export PNG</source>
+        <translation>导出 PNG</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG 图像 (*.png)</translation>
+    </message>
+    <message>
+        <source>Layout</source>
+        <translation>布局</translation>
+    </message>
+    <message>
+        <source>Wide: one row per poll round</source>
+        <translation>宽格式：每轮轮询一行</translation>
+    </message>
+    <message>
+        <source>time_s, then a column per drive and signal (id3_speed_dps, ...)</source>
+        <translation>先是 time_s，然后每个驱动的每个信号各一列（id3_speed_dps 等）</translation>
+    </message>
+    <message>
+        <source>Long: one row per drive and poll round</source>
+        <translation>长格式：每个驱动每轮轮询一行</translation>
+    </message>
+    <message>
+        <source>time_s, id, then a column per signal</source>
+        <translation>先是 time_s 和驱动 ID，然后每个信号各一列</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::PollRateControl</name>
+    <message>
+        <source>Max</source>
+        <translation>最快</translation>
+    </message>
+    <message>
+        <source>Poll rate:</source>
+        <translation>轮询频率：</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>Poll as fast as the bus allows</source>
+        <translation>以总线允许的最快速度轮询</translation>
+    </message>
+    <message>
+        <source>Bus limit: unknown</source>
+        <translation>总线上限：未知</translation>
+    </message>
+    <message>
+        <source>Bus limit: %1 transactions/s, %2 Hz per cycle</source>
+        <translation>总线上限：%1 次通信/s，每轮 %2 Hz</translation>
+    </message>
+    <message>
+        <source>(request above the limit: the bus caps it)</source>
+        <translation>（请求值超过上限：由总线限制）</translation>
+    </message>
+    <message>
+        <source>One cycle polls every plotted motor once; the limit follows from the baud and the frame sizes.</source>
+        <translation>每轮对每个绘制的电机轮询一次；上限由波特率和帧长度决定。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::PortAccessDialog</name>
+    <message>
+        <source>No permission for %1</source>
+        <translation>没有 %1 的访问权限</translation>
+    </message>
+    <message>
+        <source>lkstudio may not open %1: your user is not in the group that owns serial ports.</source>
+        <translation>lkstudio 无法打开 %1：您的用户不在拥有串口的用户组中。</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>复制</translation>
+    </message>
+    <message>
+        <source>Copied</source>
+        <translation>已复制</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::Readout</name>
+    <message>
+        <source>No update for over a second</source>
+        <translation>超过一秒未更新</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::ScanControls</name>
+    <message>
+        <source>Try every baud</source>
+        <translation>尝试所有波特率</translation>
+    </message>
+    <message>
+        <source>Scan the range at each of the ten bauds (slower): for drives whose baud is unknown</source>
+        <translation>在十种波特率下逐一扫描该范围（较慢）：用于不知道波特率的驱动</translation>
+    </message>
+    <message>
+        <source>Scan</source>
+        <translation>扫描</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>IDs</source>
+        <translation>ID</translation>
+    </message>
+    <message numerus="yes">
+        <source>ID %1 at %2 baud · %n drive(s) found · about %3 left</source>
+        <translation>
+            <numerusform>ID %1，%2 波特 · 已找到 %n 个驱动 · 约剩 %3</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Scan cancelled after %1: %n drive(s) found</source>
+        <translation>
+            <numerusform>扫描在 %1 后取消：已找到 %n 个驱动</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Scan stopped: %1</source>
+        <translation>扫描已停止：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Scan done in %1: %n drive(s) found</source>
+        <translation>
+            <numerusform>扫描完成，用时 %1：已找到 %n 个驱动</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Scan takes at most %1 at %2 baud</source>
+        <translation>在 %2 波特下扫描最多需要 %1</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::SerialGroupAdvice</name>
+    <message>
+        <source>On %1 serial ports belong to the group %2. Add yourself to it with the command below, then log out and back in (or restart) so that the new group applies.</source>
+        <translation>在 %1 上，串口属于用户组 %2。用下面的命令把自己加入该组，然后注销并重新登录（或重启），新的用户组才会生效。</translation>
+    </message>
+    <message>
+        <source>Serial ports usually belong to the group %1 (uucp on Arch-like systems; ls -l on the port shows its group). Add yourself to it with the command below, then log out and back in (or restart) so that the new group applies.</source>
+        <translation>串口通常属于用户组 %1（Arch 类系统上为 uucp；对端口执行 ls -l 可看到其用户组）。用下面的命令把自己加入该组，然后注销并重新登录（或重启），新的用户组才会生效。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::SetpointPanel</name>
+    <message>
+        <source>Setpoint generator</source>
+        <translation>设定值发生器</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>阶跃</translation>
+    </message>
+    <message>
+        <source>Square</source>
+        <translation>方波</translation>
+    </message>
+    <message>
+        <source>Sine</source>
+        <translation>正弦波</translation>
+    </message>
+    <message>
+        <source>Ramp (triangle)</source>
+        <translation>斜坡（三角波）</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source>Commands per second (at most %1; skipped while the bus is behind)</source>
+        <translation>每秒命令数（最多 %1；总线跟不上时跳过）</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>开始</translation>
+    </message>
+    <message>
+        <source>Stop generator</source>
+        <translation>停止发生器</translation>
+    </message>
+    <message>
+        <source>Waveform:</source>
+        <translation>波形：</translation>
+    </message>
+    <message>
+        <source>Drives:</source>
+        <translation>控制量：</translation>
+    </message>
+    <message>
+        <source>Amplitude:</source>
+        <translation>幅值：</translation>
+    </message>
+    <message>
+        <source>Offset:</source>
+        <translation>偏置：</translation>
+    </message>
+    <message>
+        <source>Period:</source>
+        <translation>周期：</translation>
+    </message>
+    <message>
+        <source>Rate:</source>
+        <translation>频率：</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>Position (multi-turn)</source>
+        <translation>位置（多圈）</translation>
+    </message>
+    <message>
+        <source>Torque current</source>
+        <translation>转矩电流</translation>
+    </message>
+    <message>
+        <source> dps</source>
+        <translation> dps</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source> A</source>
+        <translation> A</translation>
+    </message>
+    <message>
+        <source>Running: Stop, Motor Off or Esc ends it.</source>
+        <translation>运行中：电机停止、电机关闭或 Esc 可结束。</translation>
+    </message>
+    <message>
+        <source>Stopped.</source>
+        <translation>已停止。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::ShortcutsDialog</name>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>键盘快捷键</translation>
+    </message>
+    <message>
+        <source>Keys</source>
+        <translation>按键</translation>
+    </message>
+    <message>
+        <source>Action</source>
+        <translation>操作</translation>
+    </message>
+    <message>
+        <source>Emergency stop: Motor Off to every drive, from anywhere</source>
+        <translation>急停：在任何地方向每个驱动发送电机关闭</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::SoftLimitsEditor</name>
+    <message>
+        <source>Soft limits</source>
+        <translation>软限位</translation>
+    </message>
+    <message>
+        <source> A</source>
+        <translation> A</translation>
+    </message>
+    <message>
+        <source> dps</source>
+        <translation> dps</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>Angle at least</source>
+        <translation>角度不小于</translation>
+    </message>
+    <message>
+        <source>Angle at most</source>
+        <translation>角度不大于</translation>
+    </message>
+    <message>
+        <source>Step at most</source>
+        <translation>步长不大于</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>应用</translation>
+    </message>
+    <message>
+        <source>Defaults</source>
+        <translation>默认值</translation>
+    </message>
+    <message>
+        <source>Torque current at most:</source>
+        <translation>转矩电流不大于：</translation>
+    </message>
+    <message>
+        <source>Open-loop power at most:</source>
+        <translation>开环功率不大于：</translation>
+    </message>
+    <message>
+        <source>Speed at most:</source>
+        <translation>速度不大于：</translation>
+    </message>
+    <message>
+        <source>The lowest angle must not be above the highest.</source>
+        <translation>最小角度不能大于最大角度。</translation>
+    </message>
+    <message>
+        <source>Bounds speed commands, jog and the max speed of every position move</source>
+        <translation>限制速度命令、点动以及每次位置运动的最大速度</translation>
+    </message>
+    <message>
+        <source>Checked before every command, after the %1 series limits (%2 A, %3 dps; the default speed limit is that top speed). Angles and speeds are rotor values; a position move goes at most one output turn.</source>
+        <translation>每条命令发送前检查，在 %1 系列限值（%2 A，%3 dps；默认速度限值即该最高速度）之后。角度和速度均为转子值；每次位置运动最多为输出轴一圈。</translation>
+    </message>
+    <message>
+        <source>The series is unknown: torque and open loop stay refused until a scan; the default speed limit is %1 dps, the slowest series&apos; top speed.</source>
+        <translation>系列未知：扫描前转矩和开环控制保持拒绝；默认速度限值为 %1 dps，即最慢系列的最高速度。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::StartupOptions</name>
+    <message>
+        <source>Open the serial port DEV (e.g. /dev/ttyUSB0, COM3).</source>
+        <translation>打开串口 DEV（例如 /dev/ttyUSB0、COM3）。</translation>
+    </message>
+    <message>
+        <source>Baud rate: 9600 ... 4000000 (default 115200).</source>
+        <translation>波特率：9600 ... 4000000（默认 115200）。</translation>
+    </message>
+    <message>
+        <source>Open the built-in simulated bus with these drives, e.g. 1:MF,2:MG,3:MS,4:MH or 5:MG5010E-i36.</source>
+        <translation>打开内置模拟总线并使用这些驱动，例如 1:MF,2:MG,3:MS,4:MH 或 5:MG5010E-i36。</translation>
+    </message>
+    <message>
+        <source>Inject faults into the simulated bus, e.g. corrupt=0.01,garbage=0.01,drop=0.005 (also length=P, delay=P, delay_ms=N, silent=ID, seed=N).</source>
+        <translation>向模拟总线注入故障，例如 corrupt=0.01,garbage=0.01,drop=0.005（还有 length=P、delay=P、delay_ms=N、silent=ID、seed=N）。</translation>
+    </message>
+    <message>
+        <source>Read and write settings in FILE (INI) instead of the user&apos;s settings.</source>
+        <translation>在 FILE (INI) 中读写设置，而不是使用用户的设置。</translation>
+    </message>
+    <message>
+        <source>Do not scan the bus after connecting.</source>
+        <translation>连接后不扫描总线。</translation>
+    </message>
+    <message>
+        <source>Select drive ID once it is found.</source>
+        <translation>找到驱动 ID 后选中它。</translation>
+    </message>
+    <message>
+        <source>LK Servo Studio: connect, scan, watch, plot and diagnose LK-TECH servo drives on an RS485 bus. With no options it opens the last port used if it is plugged in, else the built-in simulated bus.</source>
+        <translation>LK Servo Studio：连接、扫描、监视、绘制和诊断 RS485 总线上的 LK-TECH 伺服驱动。不带选项时，如果上次使用的串口已插上就打开它，否则打开内置模拟总线。</translation>
+    </message>
+    <message>
+        <source>Unexpected argument: %1</source>
+        <translation>多余的参数：%1</translation>
+    </message>
+    <message>
+        <source>--port and --sim exclude each other: pick one bus.</source>
+        <translation>--port 和 --sim 不能同时使用：请选择一条总线。</translation>
+    </message>
+    <message>
+        <source>--baud %1 is not an LK baud (9600, 19200, 38400, 57600, 115200, 230400, 460800, 1000000, 2000000, 4000000).</source>
+        <translation>--baud %1 不是 LK 波特率（9600、19200、38400、57600、115200、230400、460800、1000000、2000000、4000000）。</translation>
+    </message>
+    <message>
+        <source>--sim: %1</source>
+        <translation>--sim：%1</translation>
+    </message>
+    <message>
+        <source>--sim-faults works on the simulated bus only, not with --port.</source>
+        <translation>--sim-faults 只能用于模拟总线，不能与 --port 同用。</translation>
+    </message>
+    <message>
+        <source>--sim-faults: %1</source>
+        <translation>--sim-faults：%1</translation>
+    </message>
+    <message>
+        <source>--sim-motion moves simulated drives only; it cannot go with --port.</source>
+        <translation>--sim-motion 只移动模拟驱动；不能与 --port 同用。</translation>
+    </message>
+    <message>
+        <source>--select takes an ID from 1 to 32.</source>
+        <translation>--select 需要 1 到 32 的 ID。</translation>
+    </message>
+    <message>
+        <source>--sim-low-voltage takes a simulated drive&apos;s ID from 1 to 32.</source>
+        <translation>--sim-low-voltage 需要 1 到 32 的模拟驱动 ID。</translation>
+    </message>
+    <message>
+        <source>--window-size takes WIDTHxHEIGHT, e.g. 1600x1000.</source>
+        <translation>--window-size 需要 宽x高，例如 1600x1000。</translation>
+    </message>
+    <message>
+        <source>--palette takes dark or light.</source>
+        <translation>--palette 需要 dark 或 light。</translation>
+    </message>
+    <message>
+        <source>--screenshot-delay-ms takes a number of milliseconds.</source>
+        <translation>--screenshot-delay-ms 需要毫秒数。</translation>
+    </message>
+    <message>
+        <source>Start on a view: dashboard, overview, plots, traffic, tuning, control, encoder, info.</source>
+        <translation>启动时显示的视图：dashboard、overview、plots、traffic、tuning、control、encoder、info。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::StatisticsView</name>
+    <message>
+        <source>Bus statistics</source>
+        <translation>总线统计</translation>
+    </message>
+    <message>
+        <source>Bus</source>
+        <translation>总线</translation>
+    </message>
+    <message>
+        <source>Transactions/s</source>
+        <translation>通信次数/s</translation>
+    </message>
+    <message>
+        <source>Latency min / median / max</source>
+        <translation>延迟 最小 / 中位 / 最大</translation>
+    </message>
+    <message>
+        <source>Requests / replies</source>
+        <translation>请求 / 回复</translation>
+    </message>
+    <message>
+        <source>Timeouts</source>
+        <translation>超时</translation>
+    </message>
+    <message>
+        <source>Retries</source>
+        <translation>重试</translation>
+    </message>
+    <message>
+        <source>Checksum errors</source>
+        <translation>校验错误</translation>
+    </message>
+    <message>
+        <source>Other frame errors</source>
+        <translation>其他帧错误</translation>
+    </message>
+    <message>
+        <source>Garbage bytes</source>
+        <translation>无效字节</translation>
+    </message>
+    <message>
+        <source>Polling is off.</source>
+        <translation>轮询已关闭。</translation>
+    </message>
+    <message>
+        <source>%1 requested</source>
+        <translation>请求 %1</translation>
+    </message>
+    <message>
+        <source>as fast as the bus allows</source>
+        <translation>以总线允许的最快速度</translation>
+    </message>
+    <message>
+        <source>Polling: %1 transactions/s achieved (%2); bus limit %3/s at %4 baud.</source>
+        <translation>轮询：实际 %1 次通信/s（%2）；%4 波特下总线上限 %3/s。</translation>
+    </message>
+    <message>
+        <source>Drive %1</source>
+        <translation>驱动 %1</translation>
+    </message>
+    <message>
+        <source>Late replies (after their timeout)</source>
+        <translation>迟到的回复（超时之后）</translation>
+    </message>
+    <message>
+        <source>Unexpected frames</source>
+        <translation>意外的帧</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::StatusSummary</name>
+    <message>
+        <source>SIMULATED</source>
+        <translation>模拟</translation>
+    </message>
+    <message>
+        <source>The drives are simulated: nothing here moves a real motor</source>
+        <translation>驱动是模拟的：这里的操作不会转动真实电机</translation>
+    </message>
+    <message>
+        <source>%1 tx/s</source>
+        <translation>%1 次通信/s</translation>
+    </message>
+    <message>
+        <source>(limit %1)</source>
+        <translation>（上限 %1）</translation>
+    </message>
+    <message>
+        <source>latency %1 ms</source>
+        <translation>延迟 %1 ms</translation>
+    </message>
+    <message>
+        <source>%1 timeouts</source>
+        <translation>%1 次超时</translation>
+    </message>
+    <message>
+        <source>%1 checksum errors</source>
+        <translation>%1 次校验错误</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::StripChart</name>
+    <message>
+        <source>ID %1 %2</source>
+        <translation>ID %1 %2</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>时间 (s)</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::TelemetryChannel</name>
+    <message>
+        <source>Power</source>
+        <translation>功率</translation>
+    </message>
+    <message>
+        <source>iq</source>
+        <translation>iq</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>Encoder</source>
+        <translation>编码器</translation>
+    </message>
+    <message>
+        <source>Multi-turn angle</source>
+        <translation>多圈角度</translation>
+    </message>
+    <message>
+        <source>Single-turn angle</source>
+        <translation>单圈角度</translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation>温度</translation>
+    </message>
+    <message>
+        <source>Voltage</source>
+        <translation>电压</translation>
+    </message>
+    <message>
+        <source>Phase A</source>
+        <translation>A 相电流</translation>
+    </message>
+    <message>
+        <source>Phase B</source>
+        <translation>B 相电流</translation>
+    </message>
+    <message>
+        <source>Phase C</source>
+        <translation>C 相电流</translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation>A</translation>
+    </message>
+    <message>
+        <source>rel.</source>
+        <translation>相对值</translation>
+    </message>
+    <message>
+        <source>°/s</source>
+        <translation>°/s</translation>
+    </message>
+    <message>
+        <source>counts</source>
+        <translation>计数</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>°C</source>
+        <translation>°C</translation>
+    </message>
+    <message>
+        <source>V</source>
+        <translation>V</translation>
+    </message>
+    <message>
+        <source>Current (A)</source>
+        <translation>电流 (A)</translation>
+    </message>
+    <message>
+        <source>Power (-1000..1000)</source>
+        <translation>功率 (-1000..1000)</translation>
+    </message>
+    <message>
+        <source>Speed (°/s)</source>
+        <translation>速度 (°/s)</translation>
+    </message>
+    <message>
+        <source>Encoder (counts)</source>
+        <translation>编码器（计数）</translation>
+    </message>
+    <message>
+        <source>Angle (°)</source>
+        <translation>角度 (°)</translation>
+    </message>
+    <message>
+        <source>Temperature (°C)</source>
+        <translation>温度 (°C)</translation>
+    </message>
+    <message>
+        <source>Voltage (V)</source>
+        <translation>电压 (V)</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::TrafficModel</name>
+    <message>
+        <source>TX</source>
+        <translation>发送</translation>
+    </message>
+    <message>
+        <source>RX</source>
+        <translation>接收</translation>
+    </message>
+    <message>
+        <source>RX fault</source>
+        <translation>接收错误</translation>
+    </message>
+    <message>
+        <source>timeout</source>
+        <translation>超时</translation>
+    </message>
+    <message>
+        <source>note</source>
+        <translation>备注</translation>
+    </message>
+    <message>
+        <source>no reply</source>
+        <translation>无回复</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>时间 (s)</translation>
+    </message>
+    <message>
+        <source>Dir.</source>
+        <translation>方向</translation>
+    </message>
+    <message>
+        <source>ID</source>
+        <translation>ID</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>命令</translation>
+    </message>
+    <message>
+        <source>Fields</source>
+        <translation>字段</translation>
+    </message>
+    <message>
+        <source>Raw bytes</source>
+        <translation>原始字节</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::TrafficPanel</name>
+    <message>
+        <source>All IDs</source>
+        <translation>所有 ID</translation>
+    </message>
+    <message>
+        <source>ID %1</source>
+        <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>Faults only</source>
+        <translation>仅显示故障</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>Freeze the log to read it; faults are still counted</source>
+        <translation>冻结记录以便阅读；故障仍会计数</translation>
+    </message>
+    <message>
+        <source>Keep recording</source>
+        <translation>持续记录</translation>
+    </message>
+    <message>
+        <source>Keep capturing traffic while another view is shown</source>
+        <translation>显示其他页面时也继续捕获通信</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>清空</translation>
+    </message>
+    <message>
+        <source>Empty the log and counts</source>
+        <translation>清空记录和计数</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>导出…</translation>
+    </message>
+    <message>
+        <source>Save the rows shown as hex text that `lkctl decode -` reads</source>
+        <translation>把显示的行保存为 `lkctl decode -` 可读取的十六进制文本</translation>
+    </message>
+    <message>
+        <source>All commands</source>
+        <translation>所有命令</translation>
+    </message>
+    <message>
+        <source>TX %1</source>
+        <translation>发送 %1</translation>
+    </message>
+    <message>
+        <source>RX %1</source>
+        <translation>接收 %1</translation>
+    </message>
+    <message>
+        <source>timeouts %1</source>
+        <translation>超时 %1</translation>
+    </message>
+    <message>
+        <source>no frame faults</source>
+        <translation>无帧错误</translation>
+    </message>
+    <message>
+        <source>%1 oldest rows dropped</source>
+        <translation>已丢弃最早的 %1 行</translation>
+    </message>
+    <message>
+        <source>Export traffic</source>
+        <translation>导出通信记录</translation>
+    </message>
+    <message>
+        <source>Traffic log (*.txt);;All files (*)</source>
+        <translation>通信记录 (*.txt);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Export failed: %1</source>
+        <translation>导出失败：%1</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::TuningText</name>
+    <message>
+        <source>Write gains to ROM</source>
+        <translation>写入 PID 参数到 ROM</translation>
+    </message>
+    <message>
+        <source>Write these PID gains to the ROM of drive %1?
 %2 (angle, speed, iq Kp/Ki)</source>
-            <translation>将这些 PID 参数写入驱动 %1 的 ROM？
+        <translation>将这些 PID 参数写入驱动 %1 的 ROM？
 %2（角度、速度、iq 的 Kp/Ki）</translation>
-        </message>
-        <message>
-            <source>ROM is the drive's flash memory: each write wears it, and the gains stay after power-off. Try them in RAM first; write to ROM once you are satisfied. Acceleration is written to RAM only (V2.3 has no ROM command for it).</source>
-            <translation>ROM 是驱动的闪存：每次写入都会磨损，参数断电后仍保留。请先在 RAM 中试用，满意后再写入 ROM。加速度只写入 RAM（V2.3 没有对应的 ROM 命令）。</translation>
-        </message>
-        <message>
-            <source>Write to ROM</source>
-            <translation>写入 ROM</translation>
-        </message>
-        <message>
-            <source>ROM write cancelled: nothing was sent.</source>
-            <translation>已取消 ROM 写入：未发送任何命令。</translation>
-        </message>
-        <message>
-            <source>The drive or the connection changed: nothing was sent.</source>
-            <translation>驱动或连接已改变：未发送任何命令。</translation>
-        </message>
-        <message>
-            <source>Writing gains to the ROM of drive %1…</source>
-            <translation>正在把 PID 参数写入驱动 %1 的 ROM…</translation>
-        </message>
-        <message>
-            <source>Writing to the RAM of drive %1…</source>
-            <translation>正在写入驱动 %1 的 RAM…</translation>
-        </message>
-        <message>
-            <source>The drive holds gains %1 after %2 was written.</source>
-            <translation>写入 %2 后，驱动保存的参数为 %1。</translation>
-        </message>
-        <message>
-            <source>The drive reports acceleration %1 dps/s after %2 dps/s was written: some firmware ignores 0x34 or reads 0 with 0x33 (see ERRATA), so the acceleration in effect is not known.</source>
-            <translation>写入 %2 dps/s 后，驱动报告的加速度为 %1 dps/s：部分固件忽略 0x34 或用 0x33 读出 0（见 ERRATA），因此实际生效的加速度未知。</translation>
-        </message>
-        <message>
-            <source>The read-back did not complete: what the drive holds is not known.</source>
-            <translation>回读未完成：驱动实际保存的值未知。</translation>
-        </message>
-        <message>
-            <source>Written, but the read-back differs (below).</source>
-            <translation>已写入，但回读值不同（见下方）。</translation>
-        </message>
-        <message>
-            <source>Gains written to ROM of drive %1 and read back: they survive power-off.</source>
-            <translation>PID 参数已写入驱动 %1 的 ROM 并回读：断电后仍保留。</translation>
-        </message>
-        <message>
-            <source>Written to RAM of drive %1 and read back: lost at power-off unless written to ROM.</source>
-            <translation>已写入驱动 %1 的 RAM 并回读：除非写入 ROM，否则断电丢失。</translation>
-        </message>
-        <message>
-            <source>RAM gains differ from what was last written to ROM (%1): a power cycle brings back the ROM values.</source>
-            <translation>RAM 中的参数与上次写入 ROM 的不同（%1）：断电重启后恢复为 ROM 中的值。</translation>
-        </message>
-        <message>
-            <source>RAM gains were changed in this session and not written to ROM: they are lost at power-off.</source>
-            <translation>RAM 中的参数在本次会话中已修改但未写入 ROM：断电后会丢失。</translation>
-        </message>
-        <message>
-            <source>RAM holds the gains last written to ROM in this session.</source>
-            <translation>RAM 中是本次会话最后写入 ROM 的参数。</translation>
-        </message>
-        <message>
-            <source>Nothing written to this drive in this session: RAM holds what the drive loaded from ROM at power-on (unless another tool changed it).</source>
-            <translation>本次会话未向此驱动写入任何值：RAM 中是驱动上电时从 ROM 载入的值（除非其他工具修改过）。</translation>
-        </message>
-        <message>
-            <source>RAM and ROM: %1</source>
-            <translation>RAM 和 ROM：%1</translation>
-        </message>
-        <message>
-            <source>Nothing to save: read the drive's parameters first.</source>
-            <translation>没有可保存的内容：请先读取驱动的参数。</translation>
-        </message>
-        <message>
-            <source>Saved the parameters of drive %1 to %2.</source>
-            <translation>已将驱动 %1 的参数保存到 %2。</translation>
-        </message>
-        <message>
-            <source>Could not save: %1</source>
-            <translation>无法保存：%1</translation>
-        </message>
-        <message>
-            <source>Select a drive first.</source>
-            <translation>请先选择一个驱动。</translation>
-        </message>
-        <message>
-            <source>Could not load %1: %2. Nothing was changed.</source>
-            <translation>无法加载 %1：%2。未做任何更改。</translation>
-        </message>
-        <message>
-            <source>unreadable file</source>
-            <translation>无法读取的文件</translation>
-        </message>
-        <message>
-            <source>Loaded the parameters of drive %1 (%2, firmware %3, saved %4) into the pending edit: nothing is written until you write to RAM or ROM.</source>
-            <translation>已把驱动 %1 的参数（%2，固件 %3，保存于 %4）载入待写入区：在写入 RAM 或 ROM 之前不会写入任何值。</translation>
-        </message>
-        <message>
-            <source>unknown motor</source>
-            <translation>未知电机</translation>
-        </message>
-        <message>
-            <source>Careful: the file comes from a %1, this drive is a %2.</source>
-            <translation>注意：文件来自 %1，而此驱动是 %2。</translation>
-        </message>
-        <message>
-            <source>Load a parameter file into the pending edit; nothing is written. Needs a complete read of the drive first.</source>
-            <translation>把参数文件载入待写入区；不会写入任何值。需要先完整读取驱动。</translation>
-        </message>
-        <message>
-            <source>Disconnected: the values shown are the last ones read. Tuning resumes after the drive has been read again on the next connection.</source>
-            <translation>已断开：显示的是最后读取的数值。重新连接并再次读取驱动后才能继续调参。</translation>
-        </message>
-        <message>
-            <source>Could not read drive %1: %2 Editing and writing stay off until both the gains and the acceleration have been read; press Read from drive to try again.</source>
-            <translation>无法读取驱动 %1：%2 在 PID 参数和加速度都读取成功之前，编辑和写入保持禁用；请按“从驱动读取”重试。</translation>
-        </message>
-        <message>
-            <source>Your unsent edit of drive %1 is back in the pending edit; values that differ from the drive are highlighted.</source>
-            <translation>驱动 %1 未发送的编辑已放回待写入区；与驱动不同的值以高亮显示。</translation>
-        </message>
-        <message>
-            <source>Nothing was sent: the drive's gains and acceleration have not both been read on this connection. Read from drive first.</source>
-            <translation>未发送任何内容：本次连接中尚未同时读取到驱动的 PID 参数和加速度。请先从驱动读取。</translation>
-        </message>
-        <message>
-            <source>Restore cancelled: nothing was sent.</source>
-            <translation>已取消恢复：未发送任何内容。</translation>
-        </message>
-        <message>
-            <source>Sent to drive %1, but the read-back did not complete (below).</source>
-            <translation>已发送到驱动 %1，但回读未完成（见下方）。</translation>
-        </message>
-        <message>
-            <source>Restore values read at %1…</source>
-            <translation>恢复 %1 读取的值…</translation>
-        </message>
-        <message>
-            <source>Write the gains and acceleration first read from this drive at %1 back to its RAM (asks first), then read back.</source>
-            <translation>把 %1 首次从此驱动读取的 PID 参数和加速度写回其 RAM（会先询问），然后回读。</translation>
-        </message>
-        <message>
-            <source>Restore values first read…</source>
-            <translation>恢复首次读取的值…</translation>
-        </message>
-        <message>
-            <source>Writes the values of the first complete read of this drive on this connection back to its RAM (asks first).</source>
-            <translation>把本次连接中首次完整读取此驱动得到的值写回其 RAM（会先询问）。</translation>
-        </message>
-        <message>
-            <source>Nothing was loaded: a file is loaded against the drive's values, so read the drive's gains and acceleration first.</source>
-            <translation>未载入任何内容：文件要与驱动的值对照载入，请先读取驱动的 PID 参数和加速度。</translation>
-        </message>
-    </context>
-    <context>
-        <name>main</name>
-        <message>
-            <source>%1 is not plugged in: showing the built-in simulated bus. Pick the port and press Connect when the adapter is in.</source>
-            <translation>%1 未插上：显示内置模拟总线。转换器插好后，请选择串口并点击“连接”。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::safety::MotionPlanner</name>
-        <message>
-            <source>the drive's current angle is unknown: read it (0x92) first</source>
-            <translation>驱动的当前角度未知：请先读取 (0x92)</translation>
-        </message>
-        <message>
-            <source>a move of %1 deg from the current angle %2 deg exceeds one output turn (%3 deg)</source>
-            <translation>从当前角度 %2° 移动 %1° 超过输出轴一圈（%3°）</translation>
-        </message>
-        <message>
-            <source>an increment of %1 deg exceeds one output turn (%2 deg)</source>
-            <translation>增量 %1° 超过输出轴一圈（%2°）</translation>
-        </message>
-        <message>
-            <source>your angle range needs the drive's current angle: read it (0x92) first</source>
-            <translation>您的角度范围需要驱动的当前角度：请先读取 (0x92)</translation>
-        </message>
-        <message>
-            <source>within your speed limit of %1 dps</source>
-            <translation>在您的速度限值 %1 dps 以内</translation>
-        </message>
-        <message>
-            <source>max speed %1 dps (your speed limit)</source>
-            <translation>最大速度 %1 dps（您的速度限值）</translation>
-        </message>
-        <message>
-            <source>max speed %1 dps (the series top speed)</source>
-            <translation>最大速度 %1 dps（该系列的最高速度）</translation>
-        </message>
-        <message>
-            <source>max speed %1 dps (the max speed you gave)</source>
-            <translation>最大速度 %1 dps（您给定的最大速度）</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::AppSettings</name>
-        <message>
-            <source>Your settings file %1 is damaged; these values were not used: %2.</source>
-            <translation>您的设置文件 %1 已损坏；以下值未被使用：%2。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::BannerEntry</name>
-        <message>
-            <source>Hide this message</source>
-            <translation>隐藏此消息</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::CommandedMotion</name>
-        <message>
-            <source>speed %1 dps</source>
-            <translation>速度 %1 dps</translation>
-        </message>
-        <message>
-            <source>torque %1 A</source>
-            <translation>转矩 %1 A</translation>
-        </message>
-        <message>
-            <source>open-loop power %1</source>
-            <translation>开环功率 %1</translation>
-        </message>
-        <message>
-            <source>position %1°</source>
-            <translation>位置 %1°</translation>
-        </message>
-        <message>
-            <source>single-turn position %1°</source>
-            <translation>单圈位置 %1°</translation>
-        </message>
-        <message>
-            <source>move by %1°</source>
-            <translation>增量移动 %1°</translation>
-        </message>
-        <message>
-            <source>Motor Run</source>
-            <translation>电机运行</translation>
-        </message>
-        <message>
-            <source>Drive %1</source>
-            <translation>驱动 %1</translation>
-        </message>
-        <message>
-            <source>Drive %1 (%2 at %3)</source>
-            <translation>驱动 %1（%3 时 %2）</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::EmergencyStopControl</name>
-        <message>
-            <source>Emergency stop.</source>
-            <translation>急停。</translation>
-        </message>
-        <message>
-            <source>Emergency stop: NOTHING could be sent, the bus is not connected. lkstudio has not commanded any drive to move.</source>
-            <translation>急停：总线未连接，任何命令都无法发送。lkstudio 没有命令任何驱动运动。</translation>
-        </message>
-        <message>
-            <source>Emergency stop: NOTHING could be sent, the bus is not connected. Last commanded to move: %1. They may still be moving: cut their power if needed.</source>
-            <translation>急停：总线未连接，任何命令都无法发送。最后被命令运动的：%1。它们可能仍在运动：必要时请切断其电源。</translation>
-        </message>
-        <message numerus="yes">
-            <source>Emergency stop: Motor Off sent to %n ID(s); no drive answered.</source>
-            <translation>
-                <numerusform>急停：已向 %n 个 ID 发送电机关闭命令；没有驱动应答。</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>Emergency stop: Motor Off sent to %n ID(s); acknowledged by drive(s) %1.</source>
-            <translation>
-                <numerusform>急停：已向 %n 个 ID 发送电机关闭命令；驱动 %1 已确认。</numerusform>
-            </translation>
-        </message>
-        <message>
-            <source>%1 of %2 could not be sent: the link dropped.</source>
-            <translation>%2 个中有 %1 个无法发送：链路已断开。</translation>
-        </message>
-        <message>
-            <source>NO answer from drive(s) %1: check them and cut their power if needed.</source>
-            <translation>驱动 %1 无应答：请检查这些驱动，必要时切断其电源。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::LinkLossWatch</name>
-        <message>
-            <source>&lt;b&gt;Drive %1 may still be moving&lt;/b&gt;: last command %2 at %3; it stops by itself only if its input-timeout protection is set.</source>
-            <translation>&lt;b&gt;驱动 %1 可能仍在运动&lt;/b&gt;：最后的命令是 %3 时的 %2；只有设置了输入超时保护，它才会自行停止。</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::ParameterFileText</name>
-        <message>
-            <source>an integer in %1..%2</source>
-            <translation>%1..%2 之间的整数</translation>
-        </message>
-        <message>
-            <source>a number in %1..%2</source>
-            <translation>%1..%2 之间的数值</translation>
-        </message>
-        <message>
-            <source>text in quotes</source>
-            <translation>带引号的文本</translation>
-        </message>
-        <message>
-            <source>an object ({ ... })</source>
-            <translation>对象（{ ... }）</translation>
-        </message>
-        <message>
-            <source>cannot read %1: %2</source>
-            <translation>无法读取 %1：%2</translation>
-        </message>
-        <message>
-            <source>%1 is too large to be a parameter file (more than %2 bytes)</source>
-            <translation>%1 太大，不可能是参数文件（超过 %2 字节）</translation>
-        </message>
-        <message>
-            <source>not valid JSON (%1 at byte %2)</source>
-            <translation>不是有效的 JSON（%1，位于第 %2 字节）</translation>
-        </message>
-        <message>
-            <source>not a JSON object</source>
-            <translation>不是 JSON 对象</translation>
-        </message>
-        <message>
-            <source>not an LK Servo Studio parameter file (format is %1, not "%2")</source>
-            <translation>不是 LK Servo Studio 参数文件（format 为 %1，而不是“%2”）</translation>
-        </message>
-        <message>
-            <source>missing</source>
-            <translation>缺失</translation>
-        </message>
-        <message>
-            <source>written by a newer release (format version %1, this one reads up to %2)</source>
-            <translation>由更新的版本写入（格式版本 %1，本版本最高只能读取 %2）</translation>
-        </message>
-        <message>
-            <source>%1 is missing: it must be %2</source>
-            <translation>缺少 %1：它必须是%2</translation>
-        </message>
-        <message>
-            <source>%1 is not a key of a parameter file (a typing error?)</source>
-            <translation>%1 不是参数文件中的键（拼写错误？）</translation>
-        </message>
-        <message>
-            <source>%1 is given twice: which one is meant is not known</source>
-            <translation>%1 出现了两次：无法确定以哪一个为准</translation>
-        </message>
-        <message>
-            <source>%1 is %2: it must be %3</source>
-            <translation>%1 为 %2：它必须是%3</translation>
-        </message>
-        <message>
-            <source>%1 is %2, out of range: it must be %3</source>
-            <translation>%1 为 %2，超出范围：它必须是%3</translation>
-        </message>
-        <message>
-            <source>%1 is %2: it must be MS, MF, MG or MH</source>
-            <translation>%1 为 %2：它必须是 MS、MF、MG 或 MH</translation>
-        </message>
-        <message>
-            <source>%1 is %2: it must be a date and time such as "2026-05-04T03:02:01.000Z"</source>
-            <translation>%1 为 %2：它必须是日期时间，例如“2026-05-04T03:02:01.000Z”</translation>
-        </message>
-    </context>
-    <context>
-        <name>lk::ui::TuningText</name>
-        <message>
-            <source>Write gains to ROM</source>
-            <translation>写入 PID 参数到 ROM</translation>
-        </message>
-        <message>
-            <source>Write these PID gains to the ROM of drive %1?
-%2 (angle, speed, iq Kp/Ki)</source>
-            <translation>将这些 PID 参数写入驱动 %1 的 ROM？
-%2（角度、速度、iq 的 Kp/Ki）</translation>
-        </message>
-        <message>
-            <source>ROM is the drive's flash memory: each write wears it, and the gains stay after power-off. Try them in RAM first; write to ROM once you are satisfied. Acceleration is written to RAM only (V2.3 has no ROM command for it). Afterwards the gains are read back from RAM; V2.3 has no command that reads ROM, so the ROM copy itself cannot be checked.</source>
-            <translation>ROM 是驱动的闪存：每次写入都会磨损，参数断电后仍保留。请先在 RAM 中试用，满意后再写入 ROM。加速度只写入 RAM（V2.3 没有对应的 ROM 命令）。写入后会从 RAM 回读 PID 参数；V2.3 没有读取 ROM 的命令，因此无法核对 ROM 中的副本本身。</translation>
-        </message>
-        <message>
-            <source>Write to ROM</source>
-            <translation>写入 ROM</translation>
-        </message>
-        <message>
-            <source>Restore values read at %1</source>
-            <translation>恢复 %1 读取的值</translation>
-        </message>
-        <message>
-            <source>Write the values first read from drive %1 at %2 to its RAM now?
+    </message>
+    <message>
+        <source>ROM is the drive&apos;s flash memory: each write wears it, and the gains stay after power-off. Try them in RAM first; write to ROM once you are satisfied. Acceleration is written to RAM only (V2.3 has no ROM command for it). Afterwards the gains are read back from RAM; V2.3 has no command that reads ROM, so the ROM copy itself cannot be checked.</source>
+        <translation>ROM 是驱动的闪存：每次写入都会磨损，参数断电后仍保留。请先在 RAM 中试用，满意后再写入 ROM。加速度只写入 RAM（V2.3 没有对应的 ROM 命令）。写入后会从 RAM 回读 PID 参数；V2.3 没有读取 ROM 的命令，因此无法核对 ROM 中的副本本身。</translation>
+    </message>
+    <message>
+        <source>Write to ROM</source>
+        <translation>写入 ROM</translation>
+    </message>
+    <message>
+        <source>Restore values read at %1</source>
+        <translation>恢复 %1 读取的值</translation>
+    </message>
+    <message>
+        <source>Write the values first read from drive %1 at %2 to its RAM now?
 Gains %3 (angle, speed, iq Kp/Ki), acceleration %4 dps/s.</source>
-            <translation>现在把 %2 首次从驱动 %1 读取的值写入其 RAM？
+        <translation>现在把 %2 首次从驱动 %1 读取的值写入其 RAM？
 PID 参数 %3（角度、速度、iq 的 Kp/Ki），加速度 %4 dps/s。</translation>
-        </message>
-        <message>
-            <source>This writes to the drive: its RAM gains and acceleration are replaced at once, and so is your pending edit. ROM is not touched; RAM is lost at power-off.</source>
-            <translation>这会写入驱动：其 RAM 中的 PID 参数和加速度会立即被替换，待写入区的编辑也会被替换。ROM 不受影响；RAM 断电丢失。</translation>
-        </message>
-        <message>
-            <source>Write to RAM</source>
-            <translation>写入 RAM</translation>
-        </message>
-        <message>
-            <source>RAM holds gains %1 after %2 was written to ROM: either the write did not land or this drive takes ROM values into RAM only at power-on. V2.3 cannot read ROM, so which of the two is not known.</source>
-            <translation>将 %2 写入 ROM 后，RAM 中的参数为 %1：要么写入未生效，要么此驱动仅在上电时把 ROM 值载入 RAM。V2.3 无法读取 ROM，因此无法判断是哪一种。</translation>
-        </message>
-        <message>
-            <source>The drive holds gains %1 after %2 was written.</source>
-            <translation>写入 %2 后，驱动保存的参数为 %1。</translation>
-        </message>
-        <message>
-            <source>The drive reports acceleration %1 dps/s after %2 dps/s was written: some firmware ignores 0x34 or reads 0 with 0x33 (see ERRATA), so the acceleration in effect is not known.</source>
-            <translation>写入 %2 dps/s 后，驱动报告的加速度为 %1 dps/s：部分固件忽略 0x34 或用 0x33 读出 0（见 ERRATA），因此实际生效的加速度未知。</translation>
-        </message>
-        <message>
-            <source>The read-back did not complete: what the drive holds is not known. Editing and writing stay off until Read from drive succeeds.</source>
-            <translation>回读未完成：驱动实际保存的值未知。在“从驱动读取”成功之前，编辑和写入保持禁用。</translation>
-        </message>
-        <message>
-            <source>Written to the ROM of drive %1. Verified: the gains read back from RAM equal what was sent. Not verifiable: this drive generation (V2.3) cannot read ROM; the drive loads the ROM values at the next power-on, and only a read after that shows them. Acceleration went to RAM only.</source>
-            <translation>已写入驱动 %1 的 ROM。已核实：从 RAM 回读的 PID 参数与发送的一致。无法核实：此代驱动（V2.3）无法读取 ROM；驱动在下次上电时载入 ROM 中的值，只有之后的读取才能显示它们。加速度只写入了 RAM。</translation>
-        </message>
-        <message>
-            <source>Written to the RAM of drive %1 and read back: the drive holds what was sent. Lost at power-off unless written to ROM.</source>
-            <translation>已写入驱动 %1 的 RAM 并回读：驱动保存的就是发送的值。除非写入 ROM，否则断电丢失。</translation>
-        </message>
-    </context>
+    </message>
+    <message>
+        <source>This writes to the drive: its RAM gains and acceleration are replaced at once, and so is your pending edit. ROM is not touched; RAM is lost at power-off.</source>
+        <translation>这会写入驱动：其 RAM 中的 PID 参数和加速度会立即被替换，待写入区的编辑也会被替换。ROM 不受影响；RAM 断电丢失。</translation>
+    </message>
+    <message>
+        <source>Write to RAM</source>
+        <translation>写入 RAM</translation>
+    </message>
+    <message>
+        <source>RAM holds gains %1 after %2 was written to ROM: either the write did not land or this drive takes ROM values into RAM only at power-on. V2.3 cannot read ROM, so which of the two is not known.</source>
+        <translation>将 %2 写入 ROM 后，RAM 中的参数为 %1：要么写入未生效，要么此驱动仅在上电时把 ROM 值载入 RAM。V2.3 无法读取 ROM，因此无法判断是哪一种。</translation>
+    </message>
+    <message>
+        <source>The drive holds gains %1 after %2 was written.</source>
+        <translation>写入 %2 后，驱动保存的参数为 %1。</translation>
+    </message>
+    <message>
+        <source>The drive reports acceleration %1 dps/s after %2 dps/s was written: some firmware ignores 0x34 or reads 0 with 0x33 (see ERRATA), so the acceleration in effect is not known.</source>
+        <translation>写入 %2 dps/s 后，驱动报告的加速度为 %1 dps/s：部分固件忽略 0x34 或用 0x33 读出 0（见 ERRATA），因此实际生效的加速度未知。</translation>
+    </message>
+    <message>
+        <source>The read-back did not complete: what the drive holds is not known. Editing and writing stay off until Read from drive succeeds.</source>
+        <translation>回读未完成：驱动实际保存的值未知。在“从驱动读取”成功之前，编辑和写入保持禁用。</translation>
+    </message>
+    <message>
+        <source>Written to the ROM of drive %1. Verified: the gains read back from RAM equal what was sent. Not verifiable: this drive generation (V2.3) cannot read ROM; the drive loads the ROM values at the next power-on, and only a read after that shows them. Acceleration went to RAM only.</source>
+        <translation>已写入驱动 %1 的 ROM。已核实：从 RAM 回读的 PID 参数与发送的一致。无法核实：此代驱动（V2.3）无法读取 ROM；驱动在下次上电时载入 ROM 中的值，只有之后的读取才能显示它们。加速度只写入了 RAM。</translation>
+    </message>
+    <message>
+        <source>Written to the RAM of drive %1 and read back: the drive holds what was sent. Lost at power-off unless written to ROM.</source>
+        <translation>已写入驱动 %1 的 RAM 并回读：驱动保存的就是发送的值。除非写入 ROM，否则断电丢失。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::TuningView</name>
+    <message>
+        <source>PID gains and acceleration</source>
+        <translation>PID 参数和加速度</translation>
+    </message>
+    <message>
+        <source>Gains go to RAM (try: lost at power-off) or ROM (keep). Acceleration is RAM only: protocol V2.3 has no command that stores it.</source>
+        <translation>参数可写入 RAM（试用：断电丢失）或 ROM（保存）。加速度只能写入 RAM：协议 V2.3 没有保存它的命令。</translation>
+    </message>
+    <message>
+        <source>Read from drive</source>
+        <translation>从驱动读取</translation>
+    </message>
+    <message>
+        <source>read_pid (0x30) and read_accel (0x33)</source>
+        <translation>read_pid (0x30) 和 read_accel (0x33)</translation>
+    </message>
+    <message>
+        <source>Write to RAM</source>
+        <translation>写入 RAM</translation>
+    </message>
+    <message>
+        <source>Try the pending edit: 0x31 and 0x34, lost at power-off; read back.</source>
+        <translation>试用待写入的值：0x31 和 0x34，断电丢失；随后回读。</translation>
+    </message>
+    <message>
+        <source>Write to ROM…</source>
+        <translation>写入 ROM…</translation>
+    </message>
+    <message>
+        <source>Keep the gains: 0x32 writes flash (asks first); read back.</source>
+        <translation>保存参数：0x32 写入闪存（会先询问）；随后回读。</translation>
+    </message>
+    <message>
+        <source>Save to file…</source>
+        <translation>保存到文件…</translation>
+    </message>
+    <message>
+        <source>Save what the drive holds, with model, firmware and time, as JSON.</source>
+        <translation>把驱动当前的参数连同型号、固件和时间保存为 JSON。</translation>
+    </message>
+    <message>
+        <source>Load from file…</source>
+        <translation>从文件加载…</translation>
+    </message>
+    <message>
+        <source>Save drive parameters</source>
+        <translation>保存驱动参数</translation>
+    </message>
+    <message>
+        <source>Parameter files (*.json)</source>
+        <translation>参数文件 (*.json)</translation>
+    </message>
+    <message>
+        <source>Load drive parameters</source>
+        <translation>加载驱动参数</translation>
+    </message>
+    <message>
+        <source>Read from drive %1 at %2.</source>
+        <translation>于 %2 从驱动 %1 读取。</translation>
+    </message>
+    <message>
+        <source>ROM write cancelled: nothing was sent.</source>
+        <translation>已取消 ROM 写入：未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>The drive or the connection changed: nothing was sent.</source>
+        <translation>驱动或连接已改变：未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Writing gains to the ROM of drive %1…</source>
+        <translation>正在把 PID 参数写入驱动 %1 的 ROM…</translation>
+    </message>
+    <message>
+        <source>Writing to the RAM of drive %1…</source>
+        <translation>正在写入驱动 %1 的 RAM…</translation>
+    </message>
+    <message>
+        <source>Written, but the read-back differs (below).</source>
+        <translation>已写入，但回读值不同（见下方）。</translation>
+    </message>
+    <message>
+        <source>RAM gains differ from what was last written to ROM (%1): a power cycle brings back the ROM values.</source>
+        <translation>RAM 中的参数与上次写入 ROM 的不同（%1）：断电重启后恢复为 ROM 中的值。</translation>
+    </message>
+    <message>
+        <source>RAM gains were changed in this session and not written to ROM: they are lost at power-off.</source>
+        <translation>RAM 中的参数在本次会话中已修改但未写入 ROM：断电后会丢失。</translation>
+    </message>
+    <message>
+        <source>RAM holds the gains last written to ROM in this session.</source>
+        <translation>RAM 中是本次会话最后写入 ROM 的参数。</translation>
+    </message>
+    <message>
+        <source>Nothing written to this drive in this session: RAM holds what the drive loaded from ROM at power-on (unless another tool changed it).</source>
+        <translation>本次会话未向此驱动写入任何值：RAM 中是驱动上电时从 ROM 载入的值（除非其他工具修改过）。</translation>
+    </message>
+    <message>
+        <source>RAM and ROM: %1</source>
+        <translation>RAM 和 ROM：%1</translation>
+    </message>
+    <message>
+        <source>Nothing to save: read the drive&apos;s parameters first.</source>
+        <translation>没有可保存的内容：请先读取驱动的参数。</translation>
+    </message>
+    <message>
+        <source>Saved the parameters of drive %1 to %2.</source>
+        <translation>已将驱动 %1 的参数保存到 %2。</translation>
+    </message>
+    <message>
+        <source>Could not save: %1</source>
+        <translation>无法保存：%1</translation>
+    </message>
+    <message>
+        <source>Could not load %1: %2. Nothing was changed.</source>
+        <translation>无法加载 %1：%2。未做任何更改。</translation>
+    </message>
+    <message>
+        <source>Loaded the parameters of drive %1 (%2, firmware %3, saved %4) into the pending edit: nothing is written until you write to RAM or ROM.</source>
+        <translation>已把驱动 %1 的参数（%2，固件 %3，保存于 %4）载入待写入区：在写入 RAM 或 ROM 之前不会写入任何值。</translation>
+    </message>
+    <message>
+        <source>unknown motor</source>
+        <translation>未知电机</translation>
+    </message>
+    <message>
+        <source>Careful: the file comes from a %1, this drive is a %2.</source>
+        <translation>注意：文件来自 %1，而此驱动是 %2。</translation>
+    </message>
+    <message>
+        <source>Load a parameter file into the pending edit; nothing is written. Needs a complete read of the drive first.</source>
+        <translation>把参数文件载入待写入区；不会写入任何值。需要先完整读取驱动。</translation>
+    </message>
+    <message>
+        <source>Disconnected: the values shown are the last ones read. Tuning resumes after the drive has been read again on the next connection.</source>
+        <translation>已断开：显示的是最后读取的数值。重新连接并再次读取驱动后才能继续调参。</translation>
+    </message>
+    <message>
+        <source>Could not read drive %1: %2 Editing and writing stay off until both the gains and the acceleration have been read; press Read from drive to try again.</source>
+        <translation>无法读取驱动 %1：%2 在 PID 参数和加速度都读取成功之前，编辑和写入保持禁用；请按“从驱动读取”重试。</translation>
+    </message>
+    <message>
+        <source>Your unsent edit of drive %1 is back in the pending edit; values that differ from the drive are highlighted.</source>
+        <translation>驱动 %1 未发送的编辑已放回待写入区；与驱动不同的值以高亮显示。</translation>
+    </message>
+    <message>
+        <source>Nothing was sent: the drive&apos;s gains and acceleration have not both been read on this connection. Read from drive first.</source>
+        <translation>未发送任何内容：本次连接中尚未同时读取到驱动的 PID 参数和加速度。请先从驱动读取。</translation>
+    </message>
+    <message>
+        <source>Restore cancelled: nothing was sent.</source>
+        <translation>已取消恢复：未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Sent to drive %1, but the read-back did not complete (below).</source>
+        <translation>已发送到驱动 %1，但回读未完成（见下方）。</translation>
+    </message>
+    <message>
+        <source>Restore values read at %1…</source>
+        <translation>恢复 %1 读取的值…</translation>
+    </message>
+    <message>
+        <source>Write the gains and acceleration first read from this drive at %1 back to its RAM (asks first), then read back.</source>
+        <translation>把 %1 首次从此驱动读取的 PID 参数和加速度写回其 RAM（会先询问），然后回读。</translation>
+    </message>
+    <message>
+        <source>Restore values first read…</source>
+        <translation>恢复首次读取的值…</translation>
+    </message>
+    <message>
+        <source>Writes the values of the first complete read of this drive on this connection back to its RAM (asks first).</source>
+        <translation>把本次连接中首次完整读取此驱动得到的值写回其 RAM（会先询问）。</translation>
+    </message>
+    <message>
+        <source>Nothing was loaded: a file is loaded against the drive&apos;s values, so read the drive&apos;s gains and acceleration first.</source>
+        <translation>未载入任何内容：文件要与驱动的值对照载入，请先读取驱动的 PID 参数和加速度。</translation>
+    </message>
+</context>
+<context>
+    <name>main</name>
+    <message>
+        <source>%1 is not plugged in: showing the built-in simulated bus. Pick the port and press Connect when the adapter is in.</source>
+        <translation>%1 未插上：显示内置模拟总线。转换器插好后，请选择串口并点击“连接”。</translation>
+    </message>
+</context>
 </TS>
