@@ -26,9 +26,11 @@
 #include <QtCore/QLocale>
 #include <QtCore/QLoggingCategory>
 #include <QtCore/QTimer>
+#include <QtCore/QVersionNumber>
 #include <QtWidgets/QApplication>
 
 #include <cstdio>
+#include <cstdlib>
 #include <optional>
 
 Q_LOGGING_CATEGORY(lcStudio, "lk.studio")
@@ -153,6 +155,84 @@ std::optional<lk::ui::StartupOptions> parseOptions()
     return options;
 }
 
+/// Qt 6.4's Wayland plugin destroys its event queues after it has disconnected (and freed)
+/// the display, in ~QWaylandDisplay: a use after free that valgrind shows on every exit and
+/// that sometimes crashes (qt/qtwayland pull request 5). Such a crash at exit would hide a clean
+/// shutdown from the desktop and fill crash reports, so lkstudio leaves without Qt's teardown.
+bool waylandTeardownCrashes()
+{
+    return QGuiApplication::platformName().startsWith(QLatin1String("wayland")) &&
+           QLibraryInfo::version() < QVersionNumber(6, 5);
+}
+
+/// Builds the window, connects and runs the event loop; returns the exit code. Every object
+/// of ours (settings, bus thread, log of the session) is saved and destroyed when it returns.
+int runStudio(const lk::ui::StartupOptions &options)
+{
+    if (!options.palette.isEmpty())
+        lk::ui::ThemePalette::apply(options.palette); // else the system's, untouched
+    lk::ui::AppSettings settings(options.settingsFile);
+    // Before any widget exists: texts are translated when the widgets are built.
+    const QString preferred = options.language.isEmpty() ? settings.language() : options.language;
+    lk::ui::LanguageLoader::install(
+        lk::ui::LanguageLoader::resolve(preferred, QLocale::system().uiLanguages()));
+    rememberFolders(settings);
+    lk::ui::MainWindow window(&settings);
+    logMessages(window.controller());
+    // SIGTERM (logout, systemd, kill) and Ctrl-C close the window as its close button does,
+    // so that the geometry and settings are saved and the bus thread ends cleanly.
+    lk::system::SignalWatcher terminationSignals;
+    QObject::connect(&terminationSignals, &lk::system::SignalWatcher::signalled, &window,
+                     &QWidget::close);
+    if (options.sim)
+        window.controller()->setSimulatorSpec(*options.sim);
+    window.controller()->setSimulatorFaults(options.simFaults);
+    window.controller()->setScanOnConnect(options.scan);
+    if (!options.view.isEmpty() && !window.showView(options.view)) {
+        std::fprintf(stderr, "lkstudio: no view named %s (%s)\n", qPrintable(options.view),
+                     qPrintable(window.viewNames().join(QStringLiteral(", "))));
+        return 2;
+    }
+    if (options.selectId > 0)
+        selectWhenFound(window, options.selectId);
+    if (options.simLowVoltageId > 0)
+        lowerSupplyWhenFound(window, options.simLowVoltageId);
+    if (options.windowSize.isValid())
+        window.resize(options.windowSize);
+    window.show();
+
+    const auto present = [](const QString &port) {
+        return QFile::exists(lk::transport::SerialTransport::systemPath(port));
+    };
+    const lk::ui::ConnectionChoice choice = options.initialChoice(settings, present);
+    const bool fellBack = options.fellBackToSimulator(settings, present);
+    const QString rememberedPort = settings.connection().port;
+    qCInfo(lcStudio).noquote() << "connecting to"
+                               << (choice.isSimulator() ? QStringLiteral("the simulated bus")
+                                                        : choice.port);
+    // A fallback to the simulator must not overwrite the port the user chose last time.
+    window.connectTo(choice, !fellBack);
+    if (fellBack) {
+        window.banner()->showMessage(
+            lk::ui::MessageBanner::Level::Info,
+            QApplication::translate("main", "%1 is not plugged in: showing the built-in simulated "
+                                            "bus. Pick the port and press Connect when the "
+                                            "adapter is in.")
+                .arg(rememberedPort));
+    }
+    DemoMotion demo(window.controller());
+    if (options.simMotion) {
+        if (!choice.isSimulator()) {
+            std::fprintf(stderr, "lkstudio: --sim-motion works only on the simulated bus\n");
+            return 2;
+        }
+        demo.start();
+    }
+    if (!options.screenshotFile.isEmpty())
+        screenshotLater(window, options.screenshotFile, options.screenshotDelayMs);
+    return QApplication::exec();
+}
+
 } // namespace
 
 int main(int argc, char *argv[])
@@ -174,67 +254,11 @@ int main(int argc, char *argv[])
         return 2;
     qCInfo(lcStudio, "lkstudio %s, Qt %s, platform %s", LK_STUDIO_VERSION, qVersion(),
            qPrintable(QGuiApplication::platformName()));
-
-    if (!options->palette.isEmpty())
-        lk::ui::ThemePalette::apply(options->palette); // else the system's, untouched
-    lk::ui::AppSettings settings(options->settingsFile);
-    // Before any widget exists: texts are translated when the widgets are built.
-    const QString preferred = options->language.isEmpty() ? settings.language() : options->language;
-    lk::ui::LanguageLoader::install(
-        lk::ui::LanguageLoader::resolve(preferred, QLocale::system().uiLanguages()));
-    rememberFolders(settings);
-    lk::ui::MainWindow window(&settings);
-    logMessages(window.controller());
-    // SIGTERM (logout, systemd, kill) and Ctrl-C close the window as its close button does,
-    // so that the geometry and settings are saved and the bus thread ends cleanly.
-    lk::system::SignalWatcher terminationSignals;
-    QObject::connect(&terminationSignals, &lk::system::SignalWatcher::signalled, &window,
-                     &QWidget::close);
-    if (options->sim)
-        window.controller()->setSimulatorSpec(*options->sim);
-    window.controller()->setSimulatorFaults(options->simFaults);
-    window.controller()->setScanOnConnect(options->scan);
-    if (!options->view.isEmpty() && !window.showView(options->view)) {
-        std::fprintf(stderr, "lkstudio: no view named %s (%s)\n", qPrintable(options->view),
-                     qPrintable(window.viewNames().join(QStringLiteral(", "))));
-        return 2;
+    const int code = runStudio(*options);
+    if (waylandTeardownCrashes()) {
+        // Everything of ours is saved and destroyed; only Qt's own teardown is left.
+        std::fflush(nullptr);
+        std::_Exit(code);
     }
-    if (options->selectId > 0)
-        selectWhenFound(window, options->selectId);
-    if (options->simLowVoltageId > 0)
-        lowerSupplyWhenFound(window, options->simLowVoltageId);
-    if (options->windowSize.isValid())
-        window.resize(options->windowSize);
-    window.show();
-
-    const auto present = [](const QString &port) {
-        return QFile::exists(lk::transport::SerialTransport::systemPath(port));
-    };
-    const lk::ui::ConnectionChoice choice = options->initialChoice(settings, present);
-    const bool fellBack = options->fellBackToSimulator(settings, present);
-    const QString rememberedPort = settings.connection().port;
-    qCInfo(lcStudio).noquote() << "connecting to"
-                               << (choice.isSimulator() ? QStringLiteral("the simulated bus")
-                                                        : choice.port);
-    // A fallback to the simulator must not overwrite the port the user chose last time.
-    window.connectTo(choice, !fellBack);
-    if (fellBack) {
-        window.banner()->showMessage(
-            lk::ui::MessageBanner::Level::Info,
-            QApplication::translate("main", "%1 is not plugged in: showing the built-in simulated "
-                                            "bus. Pick the port and press Connect when the "
-                                            "adapter is in.")
-                .arg(rememberedPort));
-    }
-    DemoMotion demo(window.controller());
-    if (options->simMotion) {
-        if (!choice.isSimulator()) {
-            std::fprintf(stderr, "lkstudio: --sim-motion works only on the simulated bus\n");
-            return 2;
-        }
-        demo.start();
-    }
-    if (!options->screenshotFile.isEmpty())
-        screenshotLater(window, options->screenshotFile, options->screenshotDelayMs);
-    return QApplication::exec();
+    return code;
 }
