@@ -324,7 +324,7 @@ void BusController::onRequestCompleted(const bus::RequestResult &result)
                      tr("Drive %1 still reports: %2. The cause is still there (supply voltage, "
                         "temperature); fix it, then clear again.")
                          .arg(id)
-                         .arg(Format::errorFlagsText(state->errorState)));
+                         .arg(Format::errorFlagsText(state->errorState, state->generation)));
     else
         emit message(MessageBanner::Level::Info, tr("Drive %1: errors cleared.").arg(id));
 }

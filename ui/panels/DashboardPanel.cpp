@@ -282,7 +282,7 @@ void DashboardPanel::updateErrors(const DriveRecord &d, qint64 now)
     const bool known = d.has(F::ErrorState);
     const int state = known ? d.latest.errorState : 0;
     const bool bad = state != 0;
-    QString text = known ? Format::errorFlagsText(state) : tr("Not read yet");
+    QString text = known ? Format::errorFlagsText(state, d.generation()) : tr("Not read yet");
     if (known && d.isStale(F::ErrorState, now))
         text += QLatin1Char(' ') + tr("(no update for over a second)");
     m_errorText->setText(text);

@@ -32,6 +32,11 @@ struct DriveRecord {
     /// Merge the fields a sample carries, stamping them with `nowMs`.
     void apply(const bus::TelemetrySample &sample, qint64 nowMs);
 
+    /// The protocol generation from read_model; nullopt until the model was read.
+    std::optional<protocol::Generation> generation() const
+    {
+        return model ? std::optional(model->generation) : std::nullopt;
+    }
     bool reportsPower() const { return series == protocol::Series::MS; }
     bool hasPhaseCurrents() const { return series != protocol::Series::MS; }
     /// The ratio from the motor name ("-i10"); nullopt when the name does not say.

@@ -134,7 +134,7 @@ void DriveTree::updateItem(QTreeWidgetItem *item, int id)
 
     const int errors = d->has(F::ErrorState) ? d->latest.errorState : 0;
     const bool bad = errors != 0;
-    item->setText(ErrorsCol, d->has(F::ErrorState) ? Format::errorFlagsText(errors) : QString());
+    item->setText(ErrorsCol, d->has(F::ErrorState) ? Format::errorFlagsText(errors, d->generation()) : QString());
     item->setIcon(ErrorsCol, bad ? ThemedIcon::get(QStringLiteral(":/icons/error.svg")) : QIcon());
     QFont f = font();
     f.setBold(bad);

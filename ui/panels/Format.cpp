@@ -1,13 +1,20 @@
 #include "Format.h"
 
+#include <protocol/ErrorFlags.h>
+
 #include <QtCore/QLocale>
 
 namespace lk::ui {
 
 namespace {
-constexpr int kLowVoltageBit = 0;
-constexpr int kOverTemperatureBit = 3;
 constexpr int kErrorBits = 8;
+
+QString sentenceCase(QString text)
+{
+    if (!text.isEmpty())
+        text[0] = text[0].toUpper();
+    return text;
+}
 } // namespace
 
 QString Format::number(double value, int decimals)
@@ -20,25 +27,27 @@ QString Format::withUnit(double value, int decimals, const QString &unit)
     return QStringLiteral("%1 %2").arg(number(value, decimals), unit);
 }
 
-QStringList Format::errorFlags(int errorState)
+QStringList Format::errorFlags(int errorState, std::optional<protocol::Generation> generation)
 {
     QStringList flags;
+    if (generation) {
+        for (const auto &flag : protocol::ErrorFlags::set(quint8(errorState), *generation))
+            flags << sentenceCase(
+                QCoreApplication::translate("lk::protocol::ErrorFlags", flag.text));
+    }
+    const int unnamed = generation
+                            ? protocol::ErrorFlags::unnamedBits(quint8(errorState), *generation)
+                            : errorState & 0xFF;
     for (int bit = 0; bit < kErrorBits; ++bit) {
-        if (!(errorState & (1 << bit)))
-            continue;
-        if (bit == kLowVoltageBit)
-            flags << tr("Low voltage");
-        else if (bit == kOverTemperatureBit)
-            flags << tr("Over temperature");
-        else
+        if (unnamed & (1 << bit))
             flags << tr("Error bit %1").arg(bit);
     }
     return flags;
 }
 
-QString Format::errorFlagsText(int errorState)
+QString Format::errorFlagsText(int errorState, std::optional<protocol::Generation> generation)
 {
-    const QStringList flags = errorFlags(errorState);
+    const QStringList flags = errorFlags(errorState, generation);
     return flags.isEmpty() ? tr("No errors") : flags.join(QStringLiteral(", "));
 }
 

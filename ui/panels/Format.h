@@ -1,11 +1,14 @@
 #pragma once
 
 #include <bus/ConnectionStatus.h>
+#include <protocol/Series.h>
 #include <transport/Transport.h>
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QString>
 #include <QtCore/QStringList>
+
+#include <optional>
 
 namespace lk::ui {
 
@@ -18,10 +21,12 @@ public:
     /// "12.3 V"-style value with a unit; units are not translated (SI).
     static QString withUnit(double value, int decimals, const QString &unit);
 
-    /// Names of the error bits set in a drive's errorState ("Low voltage", ...).
-    static QStringList errorFlags(int errorState);
+    /// Names of the error bits set in a drive's errorState as its protocol generation names
+    /// them ("Low voltage", ...); bits the generation does not name, or every bit when the
+    /// generation is unknown, as numbers (a wrong name would mislead more than a number).
+    static QStringList errorFlags(int errorState, std::optional<protocol::Generation> generation);
     /// errorFlags() joined, or "No errors".
-    static QString errorFlagsText(int errorState);
+    static QString errorFlagsText(int errorState, std::optional<protocol::Generation> generation);
     static bool hasErrors(int errorState) { return errorState != 0; }
 
     /// What a technician can do about a transport failure (translated, with the fix).

@@ -1,6 +1,7 @@
 #include <panels/BusModel.h>
 #include <panels/DashboardPanel.h>
 #include <panels/DriveTree.h>
+#include <panels/Format.h>
 #include <panels/OverviewModel.h>
 #include <panels/Readout.h>
 
@@ -64,6 +65,7 @@ private slots:
     void showsValues();
     void greysStaleValues();
     void errorFlagsAndClearButton();
+    void errorFlagsFollowTheGeneration();
     void selectionFollowsEveryView();
 };
 
@@ -157,7 +159,7 @@ void tst_Dashboard::errorFlagsAndClearButton()
     dash.refresh();
     auto *flags = dash.findChild<QLabel *>(QStringLiteral("errorFlags"));
     QVERIFY(flags->text().contains(QStringLiteral("Low voltage")));
-    QVERIFY(flags->text().contains(QStringLiteral("Over temperature")));
+    QVERIFY(flags->text().contains(QStringLiteral("Over-temperature")));
     auto *button = dash.findChild<QPushButton *>(QStringLiteral("clearErrorsButton"));
     QVERIFY(button->isEnabled());
     QTest::mouseClick(button, Qt::LeftButton);
@@ -168,6 +170,29 @@ void tst_Dashboard::errorFlagsAndClearButton()
     model.setConnection(gone, true);
     dash.refresh();
     QVERIFY(!button->isEnabled()); // nothing that sends while the link is down
+}
+
+// V2.35 names all eight bits (V2.35.md section 5): 0x50 is over-current and stall, where the
+// V2.3 names would say nothing but "Error bit 4, Error bit 6".
+void tst_Dashboard::errorFlagsFollowTheGeneration()
+{
+    BusModel model;
+    DashboardPanel dash(&model);
+    auto m = found(4, protocol::Series::MS, QStringLiteral("MS4015"), 0x50);
+    m.model.generation = protocol::Generation::V2_35;
+    m.model.firmwareRaw = 235;
+    model.addFound(m);
+    model.addFound(found(5, protocol::Series::MF, QStringLiteral("MF4015"), 0x50));
+    model.setCurrentId(4);
+    dash.refresh();
+    auto *flags = dash.findChild<QLabel *>(QStringLiteral("errorFlags"));
+    QVERIFY2(flags->text().contains(QStringLiteral("Over-current, Stall")),
+             qPrintable(flags->text()));
+    lk::ui::OverviewModel overview(&model);
+    QCOMPARE(overview.data(overview.index(1, lk::ui::OverviewModel::Errors)).toString(),
+             QStringLiteral("Error bit 4, Error bit 6"));
+    // Without the model read, the generation is unknown: numbers, never a guessed name.
+    QCOMPARE(lk::ui::Format::errorFlagsText(0x01, std::nullopt), QStringLiteral("Error bit 0"));
 }
 
 void tst_Dashboard::selectionFollowsEveryView()
