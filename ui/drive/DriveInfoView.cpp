@@ -29,6 +29,18 @@ QString versionText(const protocol::ModelInfo &m, double v)
 {
     return QString::number(v, 'f', m.divisor() > 10 ? 2 : 1);
 }
+
+QString protocolText(const protocol::ModelInfo &m)
+{
+    return m.generation == protocol::Generation::V2_3 ? QStringLiteral("V2.3")
+                                                      : QStringLiteral("V2.35");
+}
+
+/// The 12-byte motor ID is binary (V2.35.md section 7): hex, as the vendor tool shows it.
+QString uniqueIdText(const protocol::ModelInfo &m)
+{
+    return QString::fromLatin1(m.motorId.toHex(' ').toUpper());
+}
 } // namespace
 
 DriveInfoView::DriveInfoView(QWidget *parent)
@@ -175,10 +187,12 @@ void DriveInfoView::showModel()
                 m_model ? versionText(*m_model, m_model->hardwareVersion()) : none);
     html += row(tr("Firmware version"),
                 m_model ? versionText(*m_model, m_model->firmwareVersion()) : none);
-    html += row(tr("Protocol"), m_model ? (m_model->generation == protocol::Generation::V2_3
-                                               ? QStringLiteral("V2.3")
-                                               : QStringLiteral("V2.35"))
-                                        : none);
+    html += row(tr("Protocol"), m_model ? protocolText(*m_model) : none);
+    if (m_model && m_model->generation == protocol::Generation::V2_35) {
+        html += row(tr("Motor version"),
+                    versionText(*m_model, m_model->motorVersionRaw / m_model->divisor()));
+        html += row(tr("Unique ID"), uniqueIdText(*m_model));
+    }
     html += row(tr("Gear ratio (from the name)"),
                 info.gearFromName ? QStringLiteral("1 : %1").arg(info.gearRatio) : tr("none"));
     html +=
@@ -200,6 +214,12 @@ QString DriveInfoView::infoText() const
         lines << tr("Motor name: %1").arg(m_model->motorName);
         lines << tr("Hardware version: %1").arg(versionText(*m_model, m_model->hardwareVersion()));
         lines << tr("Firmware version: %1").arg(versionText(*m_model, m_model->firmwareVersion()));
+        lines << tr("Protocol: %1").arg(protocolText(*m_model));
+        if (m_model->generation == protocol::Generation::V2_35) {
+            lines << tr("Motor version: %1")
+                         .arg(versionText(*m_model, m_model->motorVersionRaw / m_model->divisor()));
+            lines << tr("Unique ID: %1").arg(uniqueIdText(*m_model));
+        }
     } else {
         lines << tr("Model: not read");
     }

@@ -25,6 +25,7 @@ class tst_DriveInfoView : public QObject {
     Q_OBJECT
 private slots:
     void showsModelAndCopies();
+    void showsV235Identity();
     void busReportHoldsEveryDrive();
     void confirmDialogDefaultsToCancel();
     void confirmDialogEscapeRejects();
@@ -53,6 +54,27 @@ void tst_DriveInfoView::showsModelAndCopies()
     // Read again asks the drive.
     QTest::mouseClick(view.findChild<QPushButton *>(QStringLiteral("readModel")), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(view.statusText().contains(QStringLiteral("Model read")), kWaitMs);
+}
+
+// A V2.35 drive (58-byte 0x12): versions /100, the motor version and the binary unique ID
+// as hex (V2.35.md section 7; the simulator answers hw 300, motor 200, fw 235).
+void tst_DriveInfoView::showsV235Identity()
+{
+    SimRig rig(QStringLiteral("1:MS4015@2.35"));
+    QVERIFY(rig.open());
+    DriveInfoView view;
+    view.setSession(&rig.session);
+    view.setConnected(true);
+    view.setDrive(1, rig.motor(1));
+    const QString text = view.infoText();
+    QVERIFY2(text.contains(QStringLiteral("Firmware version: 2.35")), qPrintable(text));
+    QVERIFY(text.contains(QStringLiteral("Hardware version: 3.00")));
+    QVERIFY(text.contains(QStringLiteral("Motor version: 2.00")));
+    QVERIFY(text.contains(QStringLiteral("Protocol: V2.35")));
+    const QByteArray id = rig.motor(1).model->motorId;
+    QCOMPARE(id.size(), 12);
+    QVERIFY(text.contains(QStringLiteral("Unique ID: ") +
+                          QString::fromLatin1(id.toHex(' ').toUpper())));
 }
 
 void tst_DriveInfoView::busReportHoldsEveryDrive()
