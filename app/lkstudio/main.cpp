@@ -12,6 +12,7 @@
 #include <panels/BusModel.h>
 #include <panels/FileDialogs.h>
 #include <panels/MessageBanner.h>
+#include <plot/PlotPanel.h>
 
 #include <main/SimulatedBus.h>
 #include <motor/SeriesLimits.h>
@@ -49,6 +50,18 @@ void selectWhenFound(lk::ui::MainWindow &window, int id)
         if (model->drive(id))
             model->setCurrentId(id);
     });
+}
+
+/// --plot-all: every drive the scan finds is selected and every signal shown on the Plots
+/// view, the heaviest load a user can put on the GUI (tests/bench/gui measures it).
+void plotEverythingFound(lk::ui::MainWindow &window)
+{
+    auto *model = window.busModel();
+    auto *plots = window.plots();
+    for (const auto channel : lk::ui::PlotPanel::pickableChannels())
+        plots->setChannelVisible(channel, true);
+    QObject::connect(model, &lk::ui::BusModel::drivesChanged, &window,
+                     [model] { model->setSelectedIds(model->ids()); });
 }
 
 /// --sim-low-voltage: once drive `id` is found on the simulator, its supply sags below the
@@ -197,9 +210,14 @@ int runStudio(const lk::ui::StartupOptions &options)
         selectWhenFound(window, options.selectId);
     if (options.simLowVoltageId > 0)
         lowerSupplyWhenFound(window, options.simLowVoltageId);
+    if (options.plotAll)
+        plotEverythingFound(window);
     if (options.windowSize.isValid())
         window.resize(options.windowSize);
-    window.show();
+    if (options.minimized)
+        window.showMinimized();
+    else
+        window.show();
 
     const auto present = [](const QString &port) {
         return QFile::exists(lk::transport::SerialTransport::systemPath(port));

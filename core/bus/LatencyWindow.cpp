@@ -8,17 +8,23 @@ namespace lk::bus {
 LatencyWindow::LatencyWindow(int capacity) : m_capacity(std::max(1, capacity))
 {
     m_samples.reserve(m_capacity);
+    m_sorted.reserve(m_capacity);
 }
 
 void LatencyWindow::add(double seconds)
 {
+    // The sorted copy is kept up to date here (one erase, one insert: a memmove of at most
+    // the capacity) instead of sorting the window again for every timeout computed, which
+    // the bus thread does once per transaction.
     if (m_samples.size() < m_capacity) {
         m_samples.append(seconds);
     } else {
+        const double evicted = m_samples[m_next];
+        m_sorted.erase(std::lower_bound(m_sorted.begin(), m_sorted.end(), evicted));
         m_samples[m_next] = seconds;
         m_next = (m_next + 1) % m_capacity;
     }
-    m_dirty = true;
+    m_sorted.insert(std::upper_bound(m_sorted.begin(), m_sorted.end(), seconds), seconds);
 }
 
 void LatencyWindow::clear()
@@ -26,23 +32,12 @@ void LatencyWindow::clear()
     m_samples.clear();
     m_sorted.clear();
     m_next = 0;
-    m_dirty = false;
-}
-
-void LatencyWindow::sort() const
-{
-    if (!m_dirty)
-        return;
-    m_sorted = m_samples;
-    std::sort(m_sorted.begin(), m_sorted.end());
-    m_dirty = false;
 }
 
 double LatencyWindow::quantile(double q) const
 {
     if (m_samples.isEmpty())
         return 0;
-    sort();
     const double clamped = std::clamp(q, 0.0, 1.0);
     // Nearest rank: the smallest sample with at least q of the window at or below it.
     const int n = m_sorted.size();

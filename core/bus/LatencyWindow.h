@@ -26,13 +26,10 @@ public:
     LatencySummary summaryMs() const;
 
 private:
-    void sort() const;
-
     int m_capacity;
     QVector<double> m_samples; ///< ring buffer once full
     int m_next = 0;
-    mutable QVector<double> m_sorted;
-    mutable bool m_dirty = false;
+    QVector<double> m_sorted; ///< the same samples, ascending
 };
 
 } // namespace lk::bus

@@ -75,6 +75,11 @@ struct StartupOptions::Definitions {
         hidden(QStringLiteral("sim-low-voltage"),
                QStringLiteral("Simulator only: drive ID's supply sags below its series minimum."),
                QStringLiteral("ID"));
+    QCommandLineOption plotAll =
+        hidden(QStringLiteral("plot-all"),
+               QStringLiteral("Plot every signal of every drive found (benchmarks)."));
+    QCommandLineOption minimized =
+        hidden(QStringLiteral("minimized"), QStringLiteral("Start with the window minimised."));
     QCommandLineOption size =
         hidden(QStringLiteral("window-size"),
                QStringLiteral("Window size in pixels, e.g. 1600x1000."), QStringLiteral("WxH"));
@@ -90,8 +95,8 @@ struct StartupOptions::Definitions {
 
     QList<QCommandLineOption> all() const
     {
-        return {port, baud,  sim,    simFaults,  settings, noScan,   view,   select,
-                shot, delay, motion, lowVoltage, size,     language, palette};
+        return {port,  baud,   sim,        simFaults, settings, noScan,    view,     select, shot,
+                delay, motion, lowVoltage, size,      plotAll,  minimized, language, palette};
     }
 };
 
@@ -183,6 +188,8 @@ QString StartupOptions::readBus(const QCommandLineParser &p, const Definitions &
 QString StartupOptions::readDisplay(const QCommandLineParser &p, const Definitions &d)
 {
     view = p.value(d.view);
+    plotAll = p.isSet(d.plotAll);
+    minimized = p.isSet(d.minimized);
     if (p.isSet(d.size)) {
         const QStringList wh = p.value(d.size).split(QLatin1Char('x'));
         const int w = wh.value(0).toInt();

@@ -34,11 +34,13 @@ public:
     bool simMotion = false;             ///< --sim-motion (hidden): simulated drives move, for demos
     int simLowVoltageId = 0;            ///< --sim-low-voltage ID (hidden): that drive's supply sags
     QSize windowSize;                   ///< --window-size WxH (hidden); invalid: saved or default
-    QString screenshotFile;             ///< --screenshot FILE (hidden)
-    int screenshotDelayMs = 3000;       ///< --screenshot-delay-ms N (hidden)
-    QString language;       ///< --language NAME (hidden): e.g. zh_CN, en; empty: setting
-    QString palette;        ///< --palette dark|light (hidden): a Fusion palette
-    bool helpShown = false; ///< --help or --version printed; exit 0
+    bool plotAll = false;   ///< --plot-all (hidden): every drive and signal plotted (benchmarks)
+    bool minimized = false; ///< --minimized (hidden): the window starts minimised (benchmarks)
+    QString screenshotFile; ///< --screenshot FILE (hidden)
+    int screenshotDelayMs = 3000; ///< --screenshot-delay-ms N (hidden)
+    QString language;             ///< --language NAME (hidden): e.g. zh_CN, en; empty: setting
+    QString palette;              ///< --palette dark|light (hidden): a Fusion palette
+    bool helpShown = false;       ///< --help or --version printed; exit 0
 
     /// Parse `arguments` (argv, program name first). nullopt with a message on bad input.
     static std::optional<StartupOptions> parse(const QStringList &arguments, QString *error);

@@ -235,6 +235,14 @@ void ConnectionBar::updateState()
     const bool closed = m_status.state == S::Closed;
     m_port->setEnabled(closed);
     m_baud->setEnabled(closed);
+    // Listing ports asks udev and costs milliseconds each time; while the link is open the
+    // list cannot be used (the combo is disabled), so it rests until the link is not open.
+    if (m_status.state == S::Open) {
+        m_refresh->stop();
+    } else if (!m_refresh->isActive()) {
+        m_refresh->start();
+        refreshPorts();
+    }
     m_connect->setText(closed ? tr("Connect") : tr("Disconnect"));
     m_connect->setIcon(ThemedIcon::get(closed ? QStringLiteral(":/icons/connect.svg")
                                               : QStringLiteral(":/icons/disconnect.svg")));

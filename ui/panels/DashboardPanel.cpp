@@ -290,9 +290,15 @@ void DashboardPanel::updateErrors(const DriveRecord &d, qint64 now)
     p.setColor(QPalette::WindowText, bad ? StatusColors::text(StatusColors::Role::Error, palette())
                                          : palette().color(QPalette::WindowText));
     m_errorText->setPalette(p);
-    m_errorIcon->setPixmap(ThemedIcon::get(bad ? QStringLiteral(":/icons/error.svg")
-                                               : QStringLiteral(":/icons/ok.svg"))
-                               .pixmap(32, 32));
+    // Rendered only when it changes (an SVG render at every refresh cost more than the rest
+    // of the dashboard together).
+    // The light or dark variant is part of the key: a palette switch renders it again.
+    const QString icon = ThemedIcon::pathFor(
+        bad ? QStringLiteral(":/icons/error.svg") : QStringLiteral(":/icons/ok.svg"), palette());
+    if (m_errorIcon->property("iconPath").toString() != icon) {
+        m_errorIcon->setProperty("iconPath", icon);
+        m_errorIcon->setPixmap(QIcon(icon).pixmap(32, 32));
+    }
 }
 
 } // namespace lk::ui

@@ -16,6 +16,18 @@ namespace lk::ui {
 namespace {
 constexpr int kRefreshMs = 250; // a list of values a human reads: 4 Hz is plenty
 constexpr int kIdRole = Qt::UserRole + 1;
+constexpr int kIconPathRole = Qt::UserRole + 2;
+
+/// Sets the icon only when it changes: setting one on every refresh made the view repaint
+/// and re-render it for each row (a tenth of the GUI's CPU time while polling 4 drives).
+void setIconOnce(QTreeWidgetItem *item, int column, const QString &path)
+{
+    if (item->data(column, kIconPathRole).toString() == path &&
+        !item->data(column, kIconPathRole).isNull())
+        return;
+    item->setData(column, kIconPathRole, path);
+    item->setIcon(column, path.isEmpty() ? QIcon() : ThemedIcon::get(path));
+}
 } // namespace
 
 DriveTree::DriveTree(BusModel *model, QWidget *parent) : QTreeWidget(parent), m_model(model)
@@ -134,8 +146,9 @@ void DriveTree::updateItem(QTreeWidgetItem *item, int id)
 
     const int errors = d->has(F::ErrorState) ? d->latest.errorState : 0;
     const bool bad = errors != 0;
-    item->setText(ErrorsCol, d->has(F::ErrorState) ? Format::errorFlagsText(errors, d->generation()) : QString());
-    item->setIcon(ErrorsCol, bad ? ThemedIcon::get(QStringLiteral(":/icons/error.svg")) : QIcon());
+    item->setText(ErrorsCol, d->has(F::ErrorState) ? Format::errorFlagsText(errors, d->generation())
+                                                   : QString());
+    setIconOnce(item, ErrorsCol, bad ? QStringLiteral(":/icons/error.svg") : QString());
     QFont f = font();
     f.setBold(bad);
     item->setFont(ErrorsCol, f);
@@ -150,8 +163,8 @@ void DriveTree::updateItem(QTreeWidgetItem *item, int id)
         else if (col != VoltageCol && col != TempCol)
             item->setForeground(col, normal);
     }
-    item->setIcon(IdCol, ThemedIcon::get(bad ? QStringLiteral(":/icons/warning.svg")
-                                             : QStringLiteral(":/icons/motor.svg")));
+    setIconOnce(item, IdCol,
+                bad ? QStringLiteral(":/icons/warning.svg") : QStringLiteral(":/icons/motor.svg"));
 }
 
 void DriveTree::selectCurrent()

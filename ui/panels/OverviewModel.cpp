@@ -194,7 +194,8 @@ QVariant OverviewModel::display(int id, int column) const
                    ? Format::withUnit(v.multiTurnDeg / ratio, 1, QStringLiteral("\u00b0"))
                    : QString();
     case Errors:
-        return d.has(F::ErrorState) ? Format::errorFlagsText(v.errorState, d.generation()) : QString();
+        return d.has(F::ErrorState) ? Format::errorFlagsText(v.errorState, d.generation())
+                                    : QString();
     case Replies:
         return QStringLiteral("%1 / %2").arg(stats.replies).arg(stats.requests);
     case Timeouts:

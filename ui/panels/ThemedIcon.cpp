@@ -4,16 +4,23 @@
 #include "ThemedIconEngine.h"
 
 #include <QtCore/QFile>
+#include <QtCore/QHash>
 
 namespace lk::ui {
 
 QIcon ThemedIcon::get(const QString &path)
 {
+    // One icon per path for the program's life (GUI thread only): views refresh several
+    // times a second, and a new icon each time meant a resource lookup and an SVG render.
+    static QHash<QString, QIcon> cache;
+    if (const auto it = cache.constFind(path); it != cache.constEnd())
+        return *it;
     const QString dark = darkPath(path);
-    if (dark == path)
-        return QIcon(path);
     // Chosen at paint time: the icon follows a palette change while the program runs.
-    return QIcon(new ThemedIconEngine(QIcon(path), QIcon(dark)));
+    const QIcon icon =
+        dark == path ? QIcon(path) : QIcon(new ThemedIconEngine(QIcon(path), QIcon(dark)));
+    cache.insert(path, icon);
+    return icon;
 }
 
 QIcon ThemedIcon::get(const QString &path, const QPalette &palette)

@@ -58,6 +58,8 @@ public:
     {
         m_items.append({key, QLatin1Char('"') + value + QLatin1Char('"')});
     }
+    /// `json` as it is (an array, say).
+    void addRaw(const QString &key, const QString &json) { m_items.append({key, json}); }
     void print() const
     {
         QString line = QStringLiteral("{");

@@ -1,0 +1,197 @@
+// lkstudio's own cost, run as a user runs it: lksim serves N drives on a pseudo-terminal with
+// the wire time of the baud (default 4 drives at 1 Mbaud), and the real lkstudio binary
+// (offscreen) connects to it, scans and polls at the bus's full rate with every signal of every
+// drive plotted (--plot-all). The figures come from /proc: CPU time (user + system, every
+// thread of the process) over the measured window, and the resident set at its end.
+//
+// Scenarios, each a fresh lkstudio:
+//   plots      the Plots view shown, every signal of every drive
+//   other_tab  the same plots exist but the Dashboard is shown
+//   minimized  the Plots view, window minimised
+//   plots_32   32 drives, Plots view, every signal (only with --drives32)
+//
+// Prints one JSON line:
+//   gui_cpu_pct_<scenario>   CPU time of lkstudio / wall time, % of one core
+//   gui_rss_mb_<scenario>    resident memory at the end of the window
+//   bus_replies_per_s_<scenario>  replies lksim sent per second (what was being plotted)
+//   gui_rss_mb_series        with --rss-minutes M: RSS every 30 s of an M-minute plots run,
+//                            to show where memory levels off (the 10-minute window fills)
+//
+// Options: --seconds S (measured window, default 20), --warmup S (default 8), --drives32,
+// --rss-minutes M, --baud N.
+
+#include "BenchUtil.h"
+#include "LksimProcess.h"
+
+#include <QtCore/QCommandLineParser>
+#include <QtCore/QDir>
+#include <QtCore/QElapsedTimer>
+#include <QtCore/QFile>
+#include <QtCore/QProcess>
+#include <QtCore/QTemporaryDir>
+
+#include <unistd.h>
+
+using namespace lk;
+
+namespace {
+
+struct Usage {
+    double cpuSeconds = 0; ///< user + system of every thread
+    double rssMb = 0;
+};
+
+/// utime + stime (fields 14, 15 of /proc/PID/stat, after the parenthesised name) and VmRSS.
+std::optional<Usage> usageOf(qint64 pid)
+{
+    QFile stat(QStringLiteral("/proc/%1/stat").arg(pid));
+    QFile status(QStringLiteral("/proc/%1/status").arg(pid));
+    if (!stat.open(QIODevice::ReadOnly) || !status.open(QIODevice::ReadOnly))
+        return std::nullopt;
+    const QByteArray line = stat.readAll();
+    const QList<QByteArray> f = line.mid(line.lastIndexOf(')') + 2).split(' ');
+    if (f.size() < 13)
+        return std::nullopt;
+    Usage u;
+    const double tick = double(sysconf(_SC_CLK_TCK));
+    u.cpuSeconds = (f[11].toLongLong() + f[12].toLongLong()) / tick; // fields 14, 15
+    for (const QByteArray &l : status.readAll().split('\n')) {
+        if (l.startsWith("VmRSS:"))
+            u.rssMb = l.mid(6).trimmed().split(' ').value(0).toDouble() / 1024.0;
+    }
+    return u;
+}
+
+QString motors(int count)
+{
+    static const char *const kSeries[] = {"MF", "MG", "MS", "MH"};
+    QStringList list;
+    for (int id = 1; id <= count; ++id)
+        list << QStringLiteral("%1:%2").arg(id).arg(QLatin1String(kSeries[(id - 1) % 4]));
+    return list.join(QLatin1Char(','));
+}
+
+struct Scenario {
+    QString name;
+    int drives = 4;
+    QString view = QStringLiteral("plots");
+    bool minimized = false;
+};
+
+struct Options {
+    int seconds = 20;
+    int warmup = 8;
+    int baud = 1000000;
+};
+
+/// One lkstudio on one lksim: CPU and RSS over the window. `each30s` gets the RSS every 30 s.
+bool measure(const Scenario &sc, const Options &o, bench::JsonLine &json,
+             const std::function<void(double)> &each30s = {})
+{
+    e2e::LksimProcess sim(QStringLiteral(LKSIM_PATH));
+    if (!sim.start({QStringLiteral("--motors"), motors(sc.drives), QStringLiteral("--wire-time"),
+                    QStringLiteral("--baud"), QString::number(o.baud)})) {
+        std::fprintf(stderr, "bench_gui: lksim: %s\n", qPrintable(sim.errorString()));
+        return false;
+    }
+    QTemporaryDir dir;
+    QStringList args{QStringLiteral("--settings"), dir.filePath(QStringLiteral("lkstudio.ini")),
+                     QStringLiteral("--port"),     sim.devicePath(),
+                     QStringLiteral("--baud"),     QString::number(o.baud),
+                     QStringLiteral("--view"),     sc.view,
+                     QStringLiteral("--plot-all"), QStringLiteral("--window-size"),
+                     QStringLiteral("1400x900")};
+    if (sc.minimized)
+        args << QStringLiteral("--minimized");
+    QProcess studio;
+    auto env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    env.insert(QStringLiteral("XDG_STATE_HOME"), dir.path());
+    studio.setProcessEnvironment(env);
+    studio.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    studio.setStandardOutputFile(QProcess::nullDevice());
+    studio.start(QStringLiteral(LKSTUDIO_PATH), args);
+    if (!studio.waitForStarted()) {
+        std::fprintf(stderr, "bench_gui: lkstudio did not start\n");
+        return false;
+    }
+    bench::spin(o.warmup * 1000);
+    const qint64 pid = studio.processId();
+    const auto before = usageOf(pid);
+    const auto countsBefore = sim.counters();
+    QElapsedTimer wall;
+    wall.start();
+    for (int left = o.seconds; left > 0; left -= 30) {
+        bench::spin(std::min(left, 30) * 1000);
+        if (each30s) {
+            if (const auto u = usageOf(pid))
+                each30s(u->rssMb);
+        }
+    }
+    const auto after = usageOf(pid);
+    const double seconds = wall.elapsed() / 1e3;
+    studio.terminate();
+    studio.waitForFinished(10000);
+    sim.stop();
+    const auto countsAfter = sim.counters();
+    if (!before || !after) {
+        std::fprintf(stderr, "bench_gui: lkstudio ended during the measurement\n");
+        return false;
+    }
+    json.add(QStringLiteral("gui_cpu_pct_") + sc.name,
+             100.0 * (after->cpuSeconds - before->cpuSeconds) / seconds, 1);
+    json.add(QStringLiteral("gui_rss_mb_") + sc.name, after->rssMb, 1);
+    if (countsBefore && countsAfter)
+        json.add(QStringLiteral("bus_replies_per_s_") + sc.name,
+                 (countsAfter->replies - countsBefore->replies) / seconds, 1);
+    return true;
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    QCommandLineParser p;
+    const QCommandLineOption seconds(QStringLiteral("seconds"), QStringLiteral("window"),
+                                     QStringLiteral("S"), QStringLiteral("20"));
+    const QCommandLineOption warmup(QStringLiteral("warmup"), QStringLiteral("warm-up"),
+                                    QStringLiteral("S"), QStringLiteral("8"));
+    const QCommandLineOption baud(QStringLiteral("baud"), QStringLiteral("baud"),
+                                  QStringLiteral("N"), QStringLiteral("1000000"));
+    const QCommandLineOption drives32(QStringLiteral("drives32"), QStringLiteral("32 drives"));
+    const QCommandLineOption rss(QStringLiteral("rss-minutes"), QStringLiteral("long run"),
+                                 QStringLiteral("M"));
+    p.addOptions({seconds, warmup, baud, drives32, rss});
+    p.process(app);
+    Options o;
+    o.seconds = std::max(1, p.value(seconds).toInt());
+    o.warmup = std::max(0, p.value(warmup).toInt());
+    o.baud = p.value(baud).toInt();
+
+    bench::JsonLine json;
+    json.addInt(QStringLiteral("baud"), o.baud);
+    if (p.isSet(rss)) {
+        Options longRun = o;
+        longRun.seconds = std::max(1, p.value(rss).toInt()) * 60;
+        QStringList series;
+        if (!measure({QStringLiteral("plots_long")}, longRun, json,
+                     [&series](double mb) { series << QString::number(mb, 'f', 1); }))
+            return 1;
+        json.addRaw(QStringLiteral("gui_rss_mb_series"),
+                    QLatin1Char('[') + series.join(QLatin1Char(',')) + QLatin1Char(']'));
+        json.print();
+        return 0;
+    }
+    QVector<Scenario> scenarios{{QStringLiteral("plots")},
+                                {QStringLiteral("other_tab"), 4, QStringLiteral("dashboard")},
+                                {QStringLiteral("minimized"), 4, QStringLiteral("plots"), true}};
+    if (p.isSet(drives32))
+        scenarios.append({QStringLiteral("plots_32"), 32});
+    for (const Scenario &sc : scenarios) {
+        if (!measure(sc, o, json))
+            return 1;
+    }
+    json.print();
+    return 0;
+}
