@@ -4,7 +4,10 @@
 
 namespace lk::record {
 
-PollCycleIndex::PollCycleIndex(qsizetype capacity) : m_capacity(std::max<qsizetype>(1, capacity)) {}
+PollCycleIndex::PollCycleIndex(qsizetype capacity, double retainSeconds)
+    : m_capacity(std::max<qsizetype>(1, capacity)), m_retainSeconds(retainSeconds)
+{
+}
 
 void PollCycleIndex::add(const bus::TelemetrySample &sample)
 {
@@ -20,7 +23,8 @@ void PollCycleIndex::add(const bus::TelemetrySample &sample)
     // Every polled command answers once a round, so the last capacity x commands entries
     // hold the last `capacity` samples of each.
     const size_t bound = size_t(m_capacity) * size_t(drive.commands.size());
-    while (drive.entries.size() > bound) {
+    const double oldest = sample.time - m_retainSeconds;
+    while (drive.entries.size() > bound || drive.entries.front().time < oldest) {
         drive.entries.pop_front();
     }
 }

@@ -6,6 +6,7 @@
 #include <QtCore/QtGlobal>
 
 #include <deque>
+#include <limits>
 #include <map>
 #include <optional>
 
@@ -15,7 +16,8 @@ namespace lk::record {
 /// the sample's time: a recording that keeps only (time, value) points (lkstudio's
 /// TelemetryStore) can still be exported one row per round. Samples that answer no poll are
 /// not kept. Bounded: per drive it keeps the last `capacity` samples of each polled command,
-/// as many as a ring of that capacity can still hold points of.
+/// as many as a ring of that capacity can still hold points of, and none older than
+/// `retainSeconds` before the newest (the recording keeps that long at least).
 class PollCycleIndex {
 public:
     /// A poll round: its number and when it began.
@@ -24,7 +26,8 @@ public:
         double time = 0;
     };
 
-    explicit PollCycleIndex(qsizetype capacity);
+    explicit PollCycleIndex(qsizetype capacity,
+                            double retainSeconds = std::numeric_limits<double>::infinity());
 
     void add(const bus::TelemetrySample &sample);
     /// The round of drive `id`'s poll sample taken at exactly `time`, or nullopt when no
@@ -42,6 +45,7 @@ private:
         QSet<int> commands;        // the polled commands seen: the bound grows with them
     };
     qsizetype m_capacity;
+    double m_retainSeconds;
     std::map<int, Drive> m_drives;
 };
 

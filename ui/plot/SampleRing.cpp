@@ -18,10 +18,18 @@ constexpr qsizetype kPyramidPointsPerColumn = 8;
 
 } // namespace
 
-SampleRing::SampleRing(qsizetype capacity) : m_capacity(std::max<qsizetype>(1, capacity))
+SampleRing::SampleRing(qsizetype capacity, double retainSeconds)
+    : m_capacity(std::max<qsizetype>(1, capacity)), m_maxCapacity(m_capacity),
+      m_retainSeconds(retainSeconds)
 {
     m_times.reserve(size_t(m_capacity));
     m_values.reserve(size_t(m_capacity));
+    buildLevels();
+}
+
+void SampleRing::buildLevels()
+{
+    m_levels.clear();
     for (int shift = kFirstShift; shift <= kLastShift && (qsizetype(1) << shift) <= m_capacity;
          ++shift) {
         Level level;
@@ -41,6 +49,12 @@ bool SampleRing::append(double time, double value)
     }
     if (m_size > 0) {
         m_gaps.noteSample(timeAt(m_size - 1), time);
+    }
+    // Still filling for the first time (index 0 is slot 0) and already spanning the
+    // retention: wrap here rather than at the full capacity.
+    if (m_size > 0 && m_size < m_capacity && m_head == m_size &&
+        time - m_times.front() > m_retainSeconds) {
+        closeAt(m_size);
     }
     const qsizetype slot = m_head;
     if (size_t(slot) == m_times.size()) {
@@ -76,14 +90,23 @@ bool SampleRing::append(double time, double value)
     return true;
 }
 
+void SampleRing::closeAt(qsizetype points)
+{
+    m_capacity = points;
+    m_head = 0;
+    // A level whose block is larger than the ring could never be used (a block is used only
+    // when it lies wholly inside the held points).
+    while (!m_levels.empty() && (qsizetype(1) << m_levels.back().shift) > m_capacity) {
+        m_levels.pop_back();
+    }
+}
+
 void SampleRing::clear()
 {
     m_times.clear();
     m_values.clear();
-    for (Level &level : m_levels) {
-        level.min.clear();
-        level.max.clear();
-    }
+    m_capacity = m_maxCapacity; // the next recording may come at another rate
+    buildLevels();
     m_size = m_oldest = m_head = 0;
     m_total = 0;
     m_gaps.clear();

@@ -8,6 +8,7 @@
 #include <QtCore/QPointF>
 #include <QtCore/QtGlobal>
 
+#include <limits>
 #include <vector>
 
 namespace lk::ui {
@@ -30,7 +31,12 @@ enum class DecimationMethod {
 /// line segment per stretch between gaps and never joins across one.
 class SampleRing {
 public:
-    explicit SampleRing(qsizetype capacity);
+    /// Holds at most `capacity` points. With a finite `retainSeconds` the ring closes as soon
+    /// as it spans that long: its capacity becomes the points held then, so memory stays at
+    /// what the retention needs at the rate the points come (pages of the reservation past
+    /// that are never written), instead of growing to `capacity` at a slow rate.
+    explicit SampleRing(qsizetype capacity,
+                        double retainSeconds = std::numeric_limits<double>::infinity());
 
     /// Appends a point; refuses (returns false) one older than the newest point or not finite.
     bool append(double time, double value);
@@ -89,7 +95,13 @@ private:
     QList<QPointF> decimatePyramid(qsizetype i0, qsizetype i1, qsizetype begin, qsizetype end,
                                    double t0, double t1, int columns) const;
 
+    /// The ring closes at the point count it holds now (see the constructor).
+    void closeAt(qsizetype points);
+    void buildLevels(); ///< empty pyramid levels for m_capacity
+
     qsizetype m_capacity;
+    qsizetype m_maxCapacity; ///< as constructed; m_capacity is smaller once closed early
+    double m_retainSeconds;
     qsizetype m_size = 0;
     qsizetype m_oldest = 0; // physical slot of index 0
     qsizetype m_head = 0;   // physical slot the next point goes to

@@ -75,7 +75,7 @@ void TelemetryStore::put(Drive &drive, TelemetryChannel channel, double time, do
 {
     auto &ring = drive.rings[size_t(channel)];
     if (!ring) {
-        ring = std::make_unique<SampleRing>(m_capacity);
+        ring = std::make_unique<SampleRing>(m_capacity, kRetainSeconds);
     }
     if (!ring->append(time, value)) {
         ++m_rejected;

@@ -26,11 +26,13 @@ struct TimeSpan {
 
 /// Recorded telemetry of every drive (GUI thread): one fixed-capacity SampleRing per
 /// (drive id, channel), created when the channel's first sample arrives, so memory follows
-/// what is polled. When a ring is full the oldest points are overwritten.
+/// what is polled. A ring keeps kRetainSeconds (the longest plot window) at the rate its
+/// points come, at most its capacity; then the oldest points are overwritten.
 class TelemetryStore : public QObject {
     Q_OBJECT
 public:
     static constexpr qsizetype kDefaultCapacity = 600000; ///< 10 minutes at 1 kHz
+    static constexpr double kRetainSeconds = 600;         ///< the longest plot window
 
     explicit TelemetryStore(QObject *parent = nullptr);
     explicit TelemetryStore(qsizetype capacityPerChannel, QObject *parent = nullptr);
@@ -88,7 +90,7 @@ private:
 
     qsizetype m_capacity;
     std::map<int, Drive> m_drives;
-    lk::record::PollCycleIndex m_cycles{m_capacity};
+    lk::record::PollCycleIndex m_cycles{m_capacity, kRetainSeconds};
     quint64 m_revision = 0;
     quint64 m_rejected = 0;
     QTimer m_notify; // zero-time single shot: coalesces dataAppended

@@ -58,6 +58,8 @@ private slots:
     void pyramidMatchesScan();
     void pyramidKeepsSpike();
     void boundsOnWrappedData();
+    void retentionClosesTheRing();
+    void closedRingStaysExact();
 };
 
 void tst_SampleRing::wrapKeepsNewest_data()
@@ -212,6 +214,63 @@ void tst_SampleRing::boundsOnWrappedData()
     QCOMPARE(ring.upperBound(20.0), 501);
     QCOMPARE(ring.lowerBound(30.0), 1000);
     QCOMPARE(ring.valueAt(ring.lowerBound(20.0)), 2000.0);
+}
+
+// A ring that would hold 600,000 points at 1 kHz gets points at 100 Hz: it closes once it
+// spans the retention (2 s here), so memory follows the retention at the real rate (the
+// GUI's recording grew for an hour before, at ~5 MB a minute).
+void tst_SampleRing::retentionClosesTheRing()
+{
+    SampleRing ring(600000, 2.0);
+    for (int i = 0; i < 1000; ++i) {
+        QVERIFY(ring.append(i * 0.01, i));
+    }
+    QCOMPARE(ring.capacity(), qsizetype(201)); // 0.00 .. 2.00 s held when 2.01 s came
+    QCOMPARE(ring.size(), ring.capacity());
+    QCOMPARE(ring.valueAt(ring.size() - 1), 999.0);
+    QVERIFY(ring.timeAt(ring.size() - 1) - ring.timeAt(0) >= 2.0 - 1e-9);
+    // A new recording may come at another rate: clear() starts over at the full capacity.
+    ring.clear();
+    QCOMPARE(ring.capacity(), qsizetype(600000));
+    // Without a retention the ring fills to its capacity as before.
+    SampleRing unbounded(5000);
+    for (int i = 0; i < 3000; ++i) {
+        unbounded.append(i * 0.01, i);
+    }
+    QCOMPARE(unbounded.size(), qsizetype(3000));
+}
+
+// After closing early, min/max and decimation agree with brute force across many wraps.
+void tst_SampleRing::closedRingStaysExact()
+{
+    SampleRing ring(100000, 3.0);
+    QVector<double> all = fill(ring, 25000, 11); // 1 kHz: closes at 3001 points
+    QCOMPARE(ring.capacity(), qsizetype(3001));
+    const int oldest = int(all.size() - ring.size());
+    QRandomGenerator random(5);
+    for (int trial = 0; trial < 300; ++trial) {
+        qsizetype a = random.bounded(int(ring.size()));
+        qsizetype b = random.bounded(int(ring.size()) + 1);
+        if (a > b) {
+            std::swap(a, b);
+        }
+        MinMax expected;
+        for (qsizetype i = a; i < b; ++i) {
+            expected.add(all[oldest + i]);
+        }
+        const MinMax got = ring.minMax(a, b);
+        QCOMPARE(got.isValid(), expected.isValid());
+        if (expected.isValid()) {
+            QCOMPARE(got.min, expected.min);
+            QCOMPARE(got.max, expected.max);
+        }
+    }
+    const double t0 = ring.timeAt(0), t1 = ring.timeAt(ring.size() - 1);
+    const auto scan = ring.decimate(t0, t1, 97, DecimationMethod::Scan);
+    const auto pyramid = ring.decimate(t0, t1, 97, DecimationMethod::Pyramid);
+    QCOMPARE(scan.size(), 1);
+    QCOMPARE(pyramid.size(), 1);
+    QCOMPARE(extremes(pyramid.first(), t0, t1, 97), extremes(scan.first(), t0, t1, 97));
 }
 
 QTEST_APPLESS_MAIN(tst_SampleRing)
