@@ -35,11 +35,21 @@ void AdaptiveTimeout::addReply(Command command, int baud, double latencyS)
     const CommandClass c = classOf(command);
     // Writing flash takes the drive itself longer: that teaches its own class only, while
     // the link's latency (adapter, host) shows in every other reply.
-    if (c != CommandClass::Flash)
+    if (c != CommandClass::Flash) {
         m_link.add(extra);
+        const double wire = BusTiming::transactionTimeS(command, baud, 0);
+        m_turnaround.add(std::max(0.0, latencyS - wire));
+    }
     m_classes[static_cast<size_t>(c)].add(extra);
     if (m_sinceLate < kWindow)
         ++m_sinceLate;
+}
+
+std::optional<double> AdaptiveTimeout::measuredTurnaroundS() const
+{
+    if (m_turnaround.size() < kWarmupSamples)
+        return std::nullopt;
+    return m_turnaround.min();
 }
 
 void AdaptiveTimeout::addLateReply(Command command, int baud, double latencyS)
@@ -53,6 +63,7 @@ void AdaptiveTimeout::addLateReply(Command command, int baud, double latencyS)
 void AdaptiveTimeout::reset()
 {
     m_link.clear();
+    m_turnaround.clear();
     for (LatencyWindow &w : m_classes)
         w.clear();
     m_lateExtraS = 0;

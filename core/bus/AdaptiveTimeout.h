@@ -6,6 +6,7 @@
 #include <protocol/Command.h>
 
 #include <array>
+#include <optional>
 
 namespace lk::bus {
 
@@ -56,6 +57,10 @@ public:
     /// short timeout may end before it; then the quiet period lasts until it.
     double replyDeadlineS(protocol::Command command, int baud) const;
     int samples() const { return m_link.size(); }
+    /// The drives' turnaround as measured: the least latency of recent replies minus their
+    /// wire time (it holds the adapter's and host's share too: what a transaction really
+    /// costs beyond the wire). nullopt before kWarmupSamples replies.
+    std::optional<double> measuredTurnaroundS() const;
 
 private:
     static double extraLatencyS(protocol::Command command, int baud, double latencyS);
@@ -64,7 +69,8 @@ private:
     double linkLatencyS() const; ///< p99 extra latency or a recent late reply's, bounded
 
     BusConfig m_config;
-    LatencyWindow m_link{kWindow}; ///< extra latency of every reply but flash writes, seconds
+    LatencyWindow m_link{kWindow};       ///< extra latency of every reply but flash writes, seconds
+    LatencyWindow m_turnaround{kWindow}; ///< latency minus wire time, the same replies
     std::array<LatencyWindow, 3> m_classes{LatencyWindow(kWindow), LatencyWindow(kWindow),
                                            LatencyWindow(kWindow)};
     double m_lateExtraS = 0;   ///< extra latency of the latest late reply

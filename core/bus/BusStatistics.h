@@ -37,8 +37,12 @@ struct BusStatistics {
     QMap<int, LinkStatistics> perId;
     quint64 localEchoes = 0;    ///< our own request read back (adapter echo), skipped
     double timeoutMarginMs = 0; ///< the adaptive margin added to the wire time just now
-    double pollLimitPerSecond =
-        0; ///< bus limit in transactions/s for the active poll mix (0: no polling)
+    /// Bus limit in transactions/s for the active poll mix (0: no polling), with the
+    /// turnaround below: what the drives and the link were measured to need, not a guess.
+    double pollLimitPerSecond = 0;
+    double pollCycleLimitHz = 0; ///< full poll rounds per second at that limit
+    double turnaroundMs = 0;     ///< measured (min latency - wire time) or the assumed 0.5 ms
+    bool turnaroundMeasured = false;
 };
 
 } // namespace lk::bus

@@ -710,7 +710,13 @@ BusStatistics BusWorker::statisticsSnapshot()
     BusStatistics s = m_stats.snapshot(now());
     s.baud = baud();
     s.timeoutMarginMs = currentMarginMs();
-    s.pollLimitPerSecond = m_poller.isActive() ? m_poller.busLimitPerSecond(baud()) : 0;
+    const std::optional<double> turnaround = m_timeout.measuredTurnaroundS();
+    const double turnaroundS = turnaround.value_or(BusTiming::kTurnaroundS);
+    s.turnaroundMs = turnaroundS * 1e3;
+    s.turnaroundMeasured = turnaround.has_value();
+    s.pollLimitPerSecond =
+        m_poller.isActive() ? m_poller.busLimitPerSecond(baud(), turnaroundS) : 0;
+    s.pollCycleLimitHz = m_poller.isActive() ? m_poller.cycleLimitHz(baud(), turnaroundS) : 0;
     return s;
 }
 

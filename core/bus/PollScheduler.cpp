@@ -129,14 +129,24 @@ int PollScheduler::outstanding() const
     return n;
 }
 
-double PollScheduler::busLimitPerSecond(int baud) const
+double PollScheduler::busLimitPerSecond(int baud, double turnaroundS) const
 {
     QVector<Command> mix;
     for (const Slot &s : m_slots) {
         if (!skipped(s))
             mix.append(s.command);
     }
-    return BusTiming::transactionsPerSecond(mix, baud);
+    return BusTiming::transactionsPerSecond(mix, baud, turnaroundS);
+}
+
+double PollScheduler::cycleLimitHz(int baud, double turnaroundS) const
+{
+    double cycleS = 0;
+    for (const Slot &s : m_slots) {
+        if (!skipped(s))
+            cycleS += BusTiming::transactionTimeS(s.command, baud, turnaroundS);
+    }
+    return cycleS > 0 ? 1.0 / cycleS : 0;
 }
 
 } // namespace lk::bus

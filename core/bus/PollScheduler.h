@@ -1,5 +1,7 @@
 #pragma once
 
+#include "BusTiming.h"
+
 #include "PollPlan.h"
 
 #include <protocol/Request.h>
@@ -39,8 +41,11 @@ public:
     quint64 cycle() const { return m_cycle; }
     /// When that round began (the clock next() and setPlan() are given).
     double cycleStart() const { return m_cycleStart; }
-    /// The bus limit, in transactions/s, for the plan's command mix at `baud`.
-    double busLimitPerSecond(int baud) const;
+    /// The bus limit, in transactions/s, for the plan's command mix at `baud` with the
+    /// drives' turnaround `turnaroundS` (the formula's 0.5 ms until one was measured).
+    double busLimitPerSecond(int baud, double turnaroundS = BusTiming::kTurnaroundS) const;
+    /// Full rounds per second at that limit (every polled command of every ID once).
+    double cycleLimitHz(int baud, double turnaroundS = BusTiming::kTurnaroundS) const;
 
     static bool isPollable(protocol::Command command);
 

@@ -133,6 +133,15 @@ void tst_BusSim::pollingOverWireTimeEmulation()
     QCOMPARE(countSamples(telemetry, 17, TelemetryField::PhaseCurrents), 0);
     QVERIFY(s.pollLimitPerSecond > 0);
     QCOMPARE(s.bus.checksumErrors, quint64(0));
+    // The limit uses the turnaround the replies show: the rate achieved can never beat it
+    // (with the formula's assumed 0.5 ms, the simulator "achieved" 563/s of a 494/s limit).
+    QVERIFY(s.turnaroundMeasured);
+    QVERIFY2(s.bus.transactionsPerSecond <= s.pollLimitPerSecond * 1.02,
+             qPrintable(QStringLiteral("%1 achieved, limit %2, turnaround %3 ms")
+                            .arg(s.bus.transactionsPerSecond)
+                            .arg(s.pollLimitPerSecond)
+                            .arg(s.turnaroundMs)));
+    QVERIFY(s.pollCycleLimitHz > 0);
     session.stopPolling();
 }
 

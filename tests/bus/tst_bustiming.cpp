@@ -32,6 +32,7 @@ private slots:
     void lateReplyLiftsMarginAtOnce();
     void marginWarmsUpPerCommandClass();
     void quietPeriodCoversTheLongestReply();
+    void turnaroundIsMeasured();
     void telemetryFromReply_data();
     void telemetryFromReply();
 };
@@ -190,6 +191,24 @@ void tst_BusTiming::marginCoversTheSlowestPercent()
         t.addReply(Command::ReadState2, 115200, wire + (i % 50 == 25 ? 10e-3 : 0.1e-3));
     QVERIFY2(t.marginS() >= 2 * 10e-3 - 1e-12, qPrintable(QString::number(t.marginS())));
     QVERIFY(t.timeoutS(Command::ReadState2, 115200) > wire + 10e-3);
+}
+
+// The bus limit's turnaround is what the replies show: the least latency minus wire time
+// (a drive answering after 0.2 ms, one late reply among them), the formula's 0.5 ms only
+// before a handful of replies; flash writes (the drive is busy writing) do not count.
+void tst_BusTiming::turnaroundIsMeasured()
+{
+    AdaptiveTimeout t;
+    const double wire0 = BusTiming::transactionTimeS(Command::ReadState2, 115200, 0);
+    QVERIFY(!t.measuredTurnaroundS());
+    for (int i = 0; i < 20; ++i)
+        t.addReply(Command::ReadState2, 115200, wire0 + (i == 7 ? 5e-3 : 0.2e-3));
+    t.addReply(Command::WritePidRom, 115200, 1e-4); // no flash write teaches the link
+    QVERIFY(t.measuredTurnaroundS());
+    QVERIFY2(qAbs(*t.measuredTurnaroundS() - 0.2e-3) < 1e-9,
+             qPrintable(QString::number(*t.measuredTurnaroundS())));
+    t.reset();
+    QVERIFY(!t.measuredTurnaroundS());
 }
 
 void tst_BusTiming::lateReplyLiftsMarginAtOnce()

@@ -52,6 +52,14 @@ void BusController::wireSession()
     connect(m_session, &S::telemetryReceived, this, &BusController::telemetryReceived);
     connect(m_session, &S::trafficCaptured, this, &BusController::trafficCaptured);
     connect(m_session, &S::statisticsUpdated, m_model, &BusModel::setStatistics);
+    // The bus thread's own figure, with the turnaround it measured: one formula, one place.
+    connect(m_session, &S::statisticsUpdated, this, [this](const bus::BusStatistics &s) {
+        const std::pair<double, double> limit{s.pollLimitPerSecond, s.pollCycleLimitHz};
+        if (limit != m_busLimit) {
+            m_busLimit = limit;
+            emit busLimitChanged(limit.first, limit.second);
+        }
+    });
     connect(m_session, &S::pollingChanged, this,
             [this](bool active) { m_model->setPolling(m_model->pollPlan(), active); });
 }
@@ -66,24 +74,6 @@ bus::PollPlan BusController::pollPlanFor(const QVector<int> &ids, double rateHz)
     bus::PollPlan plan = bus::PollPlan::standard(ids, rateHz);
     plan.commands << protocol::Command::ReadSingleTurn; // the dashboard shows both angles
     return plan;
-}
-
-void BusController::busLimit(const bus::PollPlan &plan, int baud, double *perSecond,
-                             double *cycleHz) const
-{
-    double cycleS = 0;
-    int transactions = 0;
-    for (int id : plan.ids) {
-        const DriveRecord *d = m_model->drive(id);
-        for (auto c : plan.commands) {
-            if (c == protocol::Command::ReadState3 && d && !d->hasPhaseCurrents())
-                continue; // the poller skips it for MS
-            cycleS += bus::BusTiming::transactionTimeS(c, baud);
-            ++transactions;
-        }
-    }
-    *perSecond = cycleS > 0 ? transactions / cycleS : 0;
-    *cycleHz = cycleS > 0 ? 1.0 / cycleS : 0;
 }
 
 void BusController::connectTo(const ConnectionChoice &choice)
@@ -166,7 +156,6 @@ void BusController::onConnectionChanged(const bus::ConnectionStatus &status)
         m_reconnecting = false;
         m_reconnectTimer->stop();
         m_wasOpen = true;
-        publishBusLimit();
         if (first && m_scanOnConnect)
             emit readyToScan();
         return;
@@ -271,15 +260,6 @@ void BusController::startPolling()
     const bus::PollPlan plan = pollPlanFor(ids, m_pollRateHz);
     m_model->setPolling(plan, m_model->isPolling());
     m_session->startPolling(plan);
-    publishBusLimit();
-}
-
-void BusController::publishBusLimit()
-{
-    double perSecond = 0;
-    double cycleHz = 0;
-    busLimit(pollPlanFor(m_model->ids(), 0), m_model->connection().baud, &perSecond, &cycleHz);
-    emit busLimitChanged(perSecond, cycleHz);
 }
 
 void BusController::setPollRate(double hz)

@@ -11,6 +11,7 @@
 #include <QtCore/QSet>
 
 #include <memory>
+#include <utility>
 
 class QTimer;
 
@@ -44,8 +45,6 @@ public:
     double pollRateHz() const { return m_pollRateHz; }
     /// Commands of the poll plan the dashboard needs (standard mix plus single-turn angle).
     static bus::PollPlan pollPlanFor(const QVector<int> &ids, double rateHz);
-    /// Bus limit for a plan: transactions/s, and full cycles/s over every ID.
-    void busLimit(const bus::PollPlan &plan, int baud, double *perSecond, double *cycleHz) const;
     /// Motor Off to `first` and every drive the bus knows, then to every other ID 1..32
     /// (see BusSession::emergencyStop); returns the stop's ticket. lkstudio's stop is
     /// EmergencyStopControl, which reports the outcome.
@@ -69,6 +68,7 @@ signals:
     void scanStarted();
     void telemetryReceived(const lk::bus::TelemetryBatch &batch);
     void trafficCaptured(const lk::bus::TrafficBatch &batch);
+    /// The bus limit of the poll plan, from the bus thread's statistics (~2 Hz, on change).
     void busLimitChanged(double transactionsPerSecond, double cycleLimitHz);
     void emergencyStopDone(const QVector<int> &acknowledged, const QVector<int> &silent);
 
@@ -82,7 +82,6 @@ private:
     void startPolling();
     void tryReconnect();
     bool portPresent() const;
-    void publishBusLimit();
 
     BusModel *m_model;
     bus::BusSession *m_session;
@@ -97,6 +96,7 @@ private:
     bool m_wasOpen = false;
     bool m_reconnecting = false;
     bool m_traffic = false;
+    std::pair<double, double> m_busLimit{-1, -1}; ///< last busLimitChanged (tx/s, rounds/s)
     QSet<quint64> m_clearTickets;
 };
 

@@ -81,10 +81,14 @@ void StatisticsView::refresh()
     } else {
         const QString asked = requested > 0 ? tr("%1 requested").arg(Format::number(requested, 0))
                                             : tr("as fast as the bus allows");
-        rate = tr("Polling: %1 transactions/s achieved (%2); bus limit %3/s at %4 baud.")
+        const QString turnaround = st.turnaroundMeasured
+                                       ? tr("%1 ms turnaround, measured")
+                                       : tr("%1 ms turnaround, assumed until replies are measured");
+        rate = tr("Polling: %1 transactions/s achieved (%2); bus limit %3/s at %4 baud (%5).")
                    .arg(Format::number(st.bus.transactionsPerSecond, 0), asked,
                         Format::number(st.pollLimitPerSecond, 0))
-                   .arg(st.baud);
+                   .arg(st.baud)
+                   .arg(turnaround.arg(Format::number(st.turnaroundMs, 2)));
     }
     m_rate->setText(rate);
 
