@@ -1362,6 +1362,26 @@
             <numerusform>已收集总线报告：%n 个驱动。</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Motor version</source>
+        <translation>电机版本</translation>
+    </message>
+    <message>
+        <source>Unique ID</source>
+        <translation>唯一 ID</translation>
+    </message>
+    <message>
+        <source>Protocol: %1</source>
+        <translation>协议：%1</translation>
+    </message>
+    <message>
+        <source>Motor version: %1</source>
+        <translation>电机版本：%1</translation>
+    </message>
+    <message>
+        <source>Unique ID: %1</source>
+        <translation>唯一 ID：%1</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::DriveText</name>
@@ -1795,14 +1815,6 @@
 </context>
 <context>
     <name>lk::ui::Format</name>
-    <message>
-        <source>Low voltage</source>
-        <translation>低压保护</translation>
-    </message>
-    <message>
-        <source>Over temperature</source>
-        <translation>过温保护</translation>
-    </message>
     <message>
         <source>Error bit %1</source>
         <translation>错误位 %1</translation>
@@ -2521,8 +2533,8 @@
         <translation>（请求值超过上限：由总线限制）</translation>
     </message>
     <message>
-        <source>One cycle polls every plotted motor once; the limit follows from the baud and the frame sizes.</source>
-        <translation>每轮对每个绘制的电机轮询一次；上限由波特率和帧长度决定。</translation>
+        <source>One cycle polls every plotted motor once; the limit follows from the baud, the frame sizes and the turnaround the drives showed.</source>
+        <translation>一个周期对每台绘图中的电机各轮询一次；上限由波特率、帧长度和驱动器实测的应答间隔决定。</translation>
     </message>
 </context>
 <context>
@@ -2938,10 +2950,6 @@
         <translation>以总线允许的最快速度</translation>
     </message>
     <message>
-        <source>Polling: %1 transactions/s achieved (%2); bus limit %3/s at %4 baud.</source>
-        <translation>轮询：实际 %1 次通信/s（%2）；%4 波特下总线上限 %3/s。</translation>
-    </message>
-    <message>
         <source>Drive %1</source>
         <translation>驱动 %1</translation>
     </message>
@@ -2952,6 +2960,18 @@
     <message>
         <source>Unexpected frames</source>
         <translation>意外的帧</translation>
+    </message>
+    <message>
+        <source>%1 ms turnaround, measured</source>
+        <translation>应答间隔 %1 ms，实测</translation>
+    </message>
+    <message>
+        <source>%1 ms turnaround, assumed until replies are measured</source>
+        <translation>应答间隔 %1 ms，测得应答之前为假定值</translation>
+    </message>
+    <message>
+        <source>Polling: %1 transactions/s achieved (%2); bus limit %3/s at %4 baud (%5).</source>
+        <translation>轮询：实际 %1 次事务/秒（%2）；总线上限 %3 次/秒，波特率 %4（%5）。</translation>
     </message>
 </context>
 <context>

@@ -31,6 +31,7 @@
 #include <QtCore/QTimer>
 #include <QtGui/QCloseEvent>
 #include <QtGui/QIcon>
+#include <QtGui/QScreen>
 #include <QtWidgets/QApplication>
 #include <QtWidgets/QDockWidget>
 #include <QtWidgets/QMenuBar>
@@ -319,8 +320,13 @@ void MainWindow::restoreSettings()
     const double rate = m_settings->pollRateHz();
     m_controller->setPollRate(rate);
     m_plots->setPollRate(rate);
-    if (!restoreGeometry(m_settings->windowGeometry()))
-        resize(kDefaultSize);
+    if (!restoreGeometry(m_settings->windowGeometry())) {
+        // Never larger than the screen's free area: a 1366x768 laptop has no 900 rows to give.
+        QSize size = kDefaultSize;
+        if (const QScreen *s = screen())
+            size = size.boundedTo(s->availableGeometry().size());
+        resize(size);
+    }
     m_stateRestored = restoreState(m_settings->windowState());
     showView(m_settings->currentView());
 }

@@ -33,7 +33,10 @@ PollRateControl::PollRateControl(QWidget *parent)
     layout->addWidget(caption);
     layout->addWidget(m_rate);
     layout->addWidget(m_max);
-    layout->addWidget(m_limit);
+    // The limit's sentence wraps rather than widening the Plots view past a small screen.
+    m_limit->setWordWrap(true);
+    m_limit->setMinimumWidth(fontMetrics().averageCharWidth() * 16);
+    layout->addWidget(m_limit, 1);
     connect(m_rate, &QDoubleSpinBox::valueChanged, this, &PollRateControl::emitRequest);
     connect(m_max, &QCheckBox::toggled, this, [this](bool max) {
         m_rate->setEnabled(!max);
@@ -93,7 +96,7 @@ void PollRateControl::updateLimitText()
     }
     m_limit->setText(text);
     m_limit->setToolTip(tr("One cycle polls every plotted motor once; the limit follows from "
-                           "the baud and the frame sizes."));
+                           "the baud, the frame sizes and the turnaround the drives showed."));
 }
 
 } // namespace lk::ui

@@ -12,8 +12,10 @@
 #include <main/MainWindow.h>
 #include <panels/BusModel.h>
 #include <panels/ConnectionChoice.h>
+#include <plot/PlotPanel.h>
 
 #include <QtCore/QTemporaryDir>
+#include <QtGui/QScreen>
 #include <QtTest/QtTest>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QMenuBar>
@@ -54,6 +56,7 @@ private slots:
     void menusAreChinese();
     void fitsSmallScreen_data();
     void fitsSmallScreen();
+    void opensWithinTheScreen();
 
 private:
     QTemporaryDir m_dir;
@@ -192,9 +195,21 @@ void tst_Translation::fitsSmallScreen()
     window.resize(kSmallScreen);
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
+    // The heaviest content a user can ask for: four drives polled, all selected, every
+    // signal plotted, the bus limit known (its text is the longest in the Plots toolbar).
+    lk::ui::ConnectionChoice c;
+    c.kind = lk::ui::ConnectionChoice::Kind::Simulator;
+    c.autoReconnect = false;
+    window.connectTo(c);
+    auto *model = window.busModel();
+    QTRY_COMPARE_WITH_TIMEOUT(model->ids().size(), 4, kWaitMs);
+    model->setSelectedIds(model->ids());
+    for (const auto channel : lk::ui::PlotPanel::pickableChannels())
+        window.plots()->setChannelVisible(channel, true);
+    QTRY_VERIFY_WITH_TIMEOUT(model->statistics().pollLimitPerSecond > 0, kWaitMs);
     for (const QString &name : window.viewNames()) {
         QVERIFY(window.showView(name));
-        QCoreApplication::processEvents();
+        QTest::qWait(100); // a redraw and a statistics update land
         auto *page =
             qobject_cast<QScrollArea *>(window.currentView()->parentWidget()->parentWidget());
         QVERIFY2(page, qPrintable(name));
@@ -205,6 +220,19 @@ void tst_Translation::fitsSmallScreen()
                                 .arg(window.currentView()->minimumSizeHint().width())));
     }
     LanguageLoader::install(QStringLiteral("zh_CN"));
+}
+
+// Without a saved geometry the window opens at its default size, bounded by the screen's free
+// area (it opened at 1400x900 on a 1366x768 laptop), never below its own minimum.
+void tst_Translation::opensWithinTheScreen()
+{
+    lk::ui::AppSettings settings(m_dir.filePath(QStringLiteral("fresh.ini")));
+    MainWindow window(&settings);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    const QSize free = window.screen()->availableGeometry().size();
+    const QSize expected = QSize(1400, 900).boundedTo(free).expandedTo(window.minimumSizeHint());
+    QCOMPARE(window.size(), expected);
 }
 
 QTEST_MAIN(tst_Translation)
