@@ -22,10 +22,7 @@ BusPanel::BusPanel(BusModel *model, QWidget *parent)
     layout->addWidget(m_tree, 1);
     connect(model, &BusModel::connectionChanged, this, [this, model] {
         m_scan->setCanSend(model->canSend());
-        m_scan->setTiming(model->connection().baud, 0);
-    });
-    connect(model, &BusModel::statisticsChanged, this, [this, model] {
-        m_scan->setTiming(model->statistics().baud, model->statistics().timeoutMarginMs);
+        m_scan->setBaud(model->connection().baud);
     });
     m_scan->setCanSend(model->canSend());
 }

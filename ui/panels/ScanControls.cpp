@@ -1,5 +1,7 @@
 #include "ScanControls.h"
 
+#include <bus/BusConfig.h>
+
 #include "Format.h"
 #include "ThemedIcon.h"
 
@@ -102,32 +104,55 @@ void ScanControls::setCanSend(bool canSend)
     updateEnabled();
 }
 
-void ScanControls::setTiming(int baud, double timeoutMarginMs)
+void ScanControls::setBaud(int baud)
 {
     if (baud > 0)
         m_baud = baud;
-    if (timeoutMarginMs > 0)
-        m_marginMs = timeoutMarginMs;
     if (!m_scanning)
         showEstimate();
 }
 
-double ScanControls::estimateSeconds(const bus::ScanOptions &o, int baud, double marginMs)
+namespace {
+QVector<int> baudsOf(const bus::ScanOptions &o, int baud)
 {
-    QVector<int> bauds;
     if (!o.sweepBauds)
-        bauds << baud;
-    else if (!o.bauds.isEmpty())
-        bauds = o.bauds;
-    else
-        for (int b : bus::BusTiming::standardBauds())
-            bauds << b;
+        return {baud};
+    if (!o.bauds.isEmpty())
+        return o.bauds;
+    QVector<int> all;
+    for (int b : bus::BusTiming::standardBauds())
+        all << b;
+    return all;
+}
+} // namespace
+
+double ScanControls::estimateSeconds(const bus::ScanOptions &o, int baud)
+{
+    const bus::BusConfig config;
     const int ids = o.lastId - o.firstId + 1;
     double total = 0;
-    for (int b : bauds) {
-        const double probe =
-            bus::BusTiming::replyTimeoutS(protocol::Command::ReadModel, b, marginMs / 1000.0);
-        total += ids * probe * (1 + o.retries);
+    for (int b : baudsOf(o, baud)) {
+        const double probe = bus::BusTiming::replyTimeoutS(protocol::Command::ReadState1, b,
+                                                           config.minMarginMs / 1000.0);
+        const double quiet =
+            bus::BusTiming::kTurnaroundS +
+            bus::BusTiming::wireTimeS(
+                0, bus::BusTiming::maxReplyBytes(protocol::Command::ReadState1), b) +
+            config.initialMarginMs / 1000.0;
+        total += ids * (probe + quiet);
+    }
+    return total;
+}
+
+double ScanControls::expectedSeconds(const bus::ScanOptions &o) const
+{
+    const int ids = o.lastId - o.firstId + 1;
+    double total = 0;
+    for (int b : baudsOf(o, m_baud)) {
+        bus::ScanOptions one = o;
+        one.sweepBauds = false;
+        total +=
+            m_measuredPerId.contains(b) ? ids * m_measuredPerId.value(b) : estimateSeconds(one, b);
     }
     return total;
 }
@@ -161,9 +186,7 @@ void ScanControls::onScanProgress(const bus::ScanProgress &p)
         const double perProbe = m_elapsed.elapsed() / 1000.0 / p.done;
         left = Format::duration(perProbe * remaining);
     } else {
-        bus::ScanOptions o = options();
-        left =
-            Format::duration(estimateSeconds(o, m_baud, m_marginMs) * remaining / qMax(1, p.total));
+        left = Format::duration(expectedSeconds(options()) * remaining / qMax(1, p.total));
     }
     m_status->setText(
         tr("ID %1 at %2 baud \u00b7 %n drive(s) found \u00b7 about %3 left", nullptr, p.found)
@@ -188,6 +211,10 @@ void ScanControls::onScanFinished(const bus::ScanSummary &s)
     else
         text = tr("Scan done in %1: %n drive(s) found", nullptr, s.motors.size())
                    .arg(Format::duration(s.elapsedS));
+    // A complete scan at one baud times this bus: the next estimate says what it took.
+    const bus::ScanOptions o = options();
+    if (!s.cancelled && s.error.isEmpty() && !o.sweepBauds && s.elapsedS > 0)
+        m_measuredPerId.insert(s.finalBaud, s.elapsedS / qMax(1, o.lastId - o.firstId + 1));
     m_status->setText(text);
     updateEnabled();
 }
@@ -203,8 +230,8 @@ void ScanControls::updateEnabled()
 
 void ScanControls::showEstimate()
 {
-    const double s = estimateSeconds(options(), m_baud, m_marginMs);
-    m_status->setText(tr("Scan takes at most %1 at %2 baud").arg(Format::duration(s)).arg(m_baud));
+    const double s = expectedSeconds(options());
+    m_status->setText(tr("Scan takes about %1 at %2 baud").arg(Format::duration(s)).arg(m_baud));
 }
 
 } // namespace lk::ui

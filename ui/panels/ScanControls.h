@@ -3,6 +3,7 @@
 #include <bus/ScanTypes.h>
 
 #include <QtCore/QElapsedTimer>
+#include <QtCore/QHash>
 #include <QtWidgets/QWidget>
 
 class QCheckBox;
@@ -24,10 +25,16 @@ public:
     bool isScanning() const { return m_scanning; }
     /// Scanning needs an open link.
     void setCanSend(bool canSend);
-    /// The baud and timeout margin the estimate is computed from before any progress.
-    void setTiming(int baud, double timeoutMarginMs);
-    /// Worst-case seconds for `options` at the given baud (every ID silent), from BusTiming.
-    static double estimateSeconds(const bus::ScanOptions &options, int baud, double marginMs);
+    /// The baud of the link, which the estimate is for.
+    void setBaud(int baud);
+    /// Seconds for `options` with every ID silent on a fresh link: per ID the first pass's
+    /// probe timeout (BusConfig::minMarginMs) and the quiet period after it (a fresh link is
+    /// trusted no faster than BusConfig::initialMarginMs). It does not follow the adaptive
+    /// margin, which moves with the host's load, so it stays put for the same bus.
+    static double estimateSeconds(const bus::ScanOptions &options, int baud);
+    /// The estimate shown: from the last complete scan at that baud when there was one (its
+    /// time per ID), else estimateSeconds().
+    double expectedSeconds(const bus::ScanOptions &options) const;
 
 public slots:
     void startScan(); ///< as if the Scan button was clicked
@@ -54,7 +61,7 @@ private:
     bool m_scanning = false;
     bool m_canSend = false;
     int m_baud = 115200;
-    double m_marginMs = 20;
+    QHash<int, double> m_measuredPerId; ///< seconds per ID of the last complete scan, by baud
     QElapsedTimer m_elapsed;
 };
 
