@@ -12,6 +12,11 @@ void BusModel::setConnection(const bus::ConnectionStatus &status, bool simulated
     m_connection = status;
     m_simulated = simulated;
     emit connectionChanged();
+    // The figures belong to the link that was closed: the next one starts from nothing.
+    if (status.state == transport::Transport::State::Closed && m_statistics.bus.requests > 0) {
+        m_statistics = {};
+        emit statisticsChanged();
+    }
 }
 
 const DriveRecord *BusModel::drive(int id) const

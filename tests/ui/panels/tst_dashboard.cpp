@@ -66,6 +66,7 @@ private slots:
     void greysStaleValues();
     void errorFlagsAndClearButton();
     void errorFlagsFollowTheGeneration();
+    void statisticsClearedOnDisconnect();
     void selectionFollowsEveryView();
 };
 
@@ -193,6 +194,28 @@ void tst_Dashboard::errorFlagsFollowTheGeneration()
              QStringLiteral("Error bit 4, Error bit 6"));
     // Without the model read, the generation is unknown: numbers, never a guessed name.
     QCOMPARE(lk::ui::Format::errorFlagsText(0x01, std::nullopt), QStringLiteral("Error bit 0"));
+}
+
+// The status bar, the dashboard and the statistics view read the model's figures: closing the
+// link clears them, so no view shows the last link's rate as if it were current.
+void tst_Dashboard::statisticsClearedOnDisconnect()
+{
+    BusModel model;
+    lk::bus::BusStatistics st;
+    st.bus.requests = 120;
+    st.bus.transactionsPerSecond = 480;
+    model.setStatistics(st);
+    lk::bus::ConnectionStatus lost;
+    lost.state = lk::transport::Transport::State::Disconnected;
+    model.setConnection(lost, false);
+    QCOMPARE(model.statistics().bus.requests, quint64(120)); // an unplug keeps the evidence
+    QSignalSpy changed(&model, &BusModel::statisticsChanged);
+    lk::bus::ConnectionStatus closed;
+    closed.state = lk::transport::Transport::State::Closed;
+    model.setConnection(closed, false);
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(model.statistics().bus.requests, quint64(0));
+    QCOMPARE(model.statistics().bus.transactionsPerSecond, 0.0);
 }
 
 void tst_Dashboard::selectionFollowsEveryView()
