@@ -28,7 +28,7 @@ namespace lk::ui {
 namespace {
 
 constexpr int kMinimizedRetryMs = 250; // minimized windows are checked rarely, not drawn
-constexpr int kMinChartHeight = 120;
+constexpr int kMinChartHeight = 170;   // below it axis labels and titles turn into "..."
 
 struct WindowPreset {
     double seconds;

@@ -7,6 +7,7 @@
 #include <QtCharts/QValueAxis>
 #include <QtGui/QPainter>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -17,6 +18,9 @@ namespace {
 constexpr int kBaseMargin = 6;
 constexpr double kScalePadding = 0.05; // share of the range left free above and below
 constexpr int kTimeTicks = 8;
+// A time label needs about this many pixels ("1234.5" and a gap): a narrower plot gets
+// fewer ticks rather than labels QtCharts shortens to "...".
+constexpr int kPixelsPerTimeTick = 90;
 constexpr int kValueTicks = 5;
 
 const std::array<QColor, 8> &seriesColors()
@@ -365,7 +369,8 @@ void StripChart::refresh(const TelemetryStore &store, TimeSpan span, bool autosc
         }
     }
     if (timeMoves) {
-        setAxisRange(m_time, span.begin, span.end, kTimeTicks);
+        const int ticks = std::clamp(plotColumns() / kPixelsPerTimeTick, 2, kTimeTicks);
+        setAxisRange(m_time, span.begin, span.end, ticks);
     }
     for (const auto &[quantity, range] : ranges) {
         QValueAxis *axis = m_valueAxes.at(quantity);

@@ -106,7 +106,8 @@ QString quantityTitle(Quantity quantity)
     case Quantity::Current:
         return QCoreApplication::translate("lk::ui::TelemetryChannel", "Current (A)");
     case Quantity::Power:
-        return QCoreApplication::translate("lk::ui::TelemetryChannel", "Power (-1000..1000)");
+        return QCoreApplication::translate("lk::ui::TelemetryChannel",
+                                           "Power (rel.)"); // -1000..1000: fits a short axis
     case Quantity::Speed:
         return QCoreApplication::translate("lk::ui::TelemetryChannel", "Speed (°/s)");
     case Quantity::Encoder:
