@@ -1,6 +1,7 @@
 #include "TuningView.h"
 
 #include "ConfirmDialog.h"
+#include "DriveLimitsView.h"
 #include "DriveText.h"
 #include "LoopPlot.h"
 #include "ParamExchange.h"
@@ -21,6 +22,7 @@
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QPushButton>
+#include <QtWidgets/QTabWidget>
 #include <QtWidgets/QVBoxLayout>
 
 namespace lk::ui {
@@ -83,14 +85,25 @@ void TuningView::buildUi()
     m_status->setObjectName(QStringLiteral("status"));
     m_status->setWordWrap(true);
 
+    auto *gains = new QWidget(this);
+    auto *gainsLayout = new QVBoxLayout(gains);
+    gainsLayout->addWidget(m_box);
+    gainsLayout->addWidget(buildButtons());
+    gainsLayout->addWidget(m_romWarning);
+    gainsLayout->addWidget(m_mismatch);
+    gainsLayout->addWidget(m_status);
+    gainsLayout->addStretch();
+    // The drive's own limits sit beside the gains: the same read / write / read-back cycle,
+    // but settings of the drive, not of a loop.
+    m_limits = new DriveLimitsView(this);
+    m_tabs = new QTabWidget(this);
+    m_tabs->setObjectName(QStringLiteral("tuningTabs"));
+    m_tabs->addTab(gains, tr("PID gains"));
+    m_tabs->addTab(m_limits, tr("Drive limits"));
+
     auto *left = new QVBoxLayout;
     left->addWidget(m_title);
-    left->addWidget(m_box);
-    left->addWidget(buildButtons());
-    left->addWidget(m_romWarning);
-    left->addWidget(m_mismatch);
-    left->addWidget(m_status);
-    left->addStretch();
+    left->addWidget(m_tabs, 1);
     auto *leftWidget = new QWidget(this);
     leftWidget->setLayout(left);
     leftWidget->setFixedWidth(kLeftColumnWidth);
@@ -164,10 +177,17 @@ HeldValues TuningView::driveValues() const
     return m_exchange->held();
 }
 
+const ParamSetSpec *TuningView::specFor(protocol::Generation generation) const
+{
+    if (generation == protocol::Generation::V2_35)
+        return &m_v235;
+    return &m_v23;
+}
+
 void TuningView::selectSpec()
 {
     const bool v235 = motor().generation == protocol::Generation::V2_35;
-    const ParamSetSpec *spec = v235 ? static_cast<const ParamSetSpec *>(&m_v235) : &m_v23;
+    const ParamSetSpec *spec = specFor(motor().generation);
     if (spec != m_spec || m_table->rowCount() == 0) {
         m_spec = spec;
         m_exchange->setSpec(spec);
@@ -228,6 +248,9 @@ void TuningView::contextChanged(Changes changes)
 {
     const bool linkUp = (changes & Change::Connection) && isConnected();
     const bool linkDown = (changes & Change::Connection) && !isConnected();
+    // The generation learned late (MotorInfo) changes the set: values of the other set are void.
+    if (specFor(motor().generation) != m_spec)
+        changes |= Change::Drive;
     if (changes & Change::Session) {
         disconnect(m_telemetry);
         if (session())
@@ -268,8 +291,23 @@ void TuningView::contextChanged(Changes changes)
     if (linkDown && hasDrive())
         setStatus(tr("Disconnected: the values shown are the last ones read. Tuning resumes "
                      "after the drive has been read again on the next connection."));
+    forwardContext(changes); // after the gains' read: those go on the bus first
     refreshWarnings();
     refreshEnabled();
+}
+
+void TuningView::forwardContext(Changes changes)
+{
+    if (changes & Change::Session)
+        m_limits->setSession(session());
+    if (changes & Change::Connection)
+        m_limits->setConnected(isConnected());
+    if (changes & (Change::Session | Change::Drive | Change::MotorInfo)) {
+        if (hasDrive())
+            m_limits->setDrive(driveId(), motor());
+        else
+            m_limits->clearDrive();
+    }
 }
 
 void TuningView::keepUnsentEdit()

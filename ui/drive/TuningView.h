@@ -14,9 +14,11 @@
 class QGroupBox;
 class QLabel;
 class QPushButton;
+class QTabWidget;
 
 namespace lk::ui {
 
+class DriveLimitsView;
 class LoopPlot;
 class ParamExchange;
 class TelemetryStore;
@@ -67,6 +69,8 @@ public:
 
     ParameterTable *table() const { return m_table; }
     LoopPlot *plot() const { return m_plot; }
+    /// The drive limits editor (the "Drive limits" tab; V2.35 only).
+    DriveLimitsView *limits() const { return m_limits; }
     /// The set of the selected drive's generation.
     const ParamSetSpec &spec() const { return *m_spec; }
     /// What the drive holds (last read), one per field of spec(); nullopt while unknown.
@@ -105,9 +109,12 @@ private:
 
     void buildUi();
     QWidget *buildButtons();
+    const ParamSetSpec *specFor(protocol::Generation generation) const;
     /// Shows the set of the selected drive's generation.
     void selectSpec();
     void forgetOtherGeneration();
+    /// Keeps the drive limits tab on the same session, drive and connection.
+    void forwardContext(Changes changes);
     void startRead(bool takePending);
     void onReadDone(int id);
     void takeReadValues(DriveMemory &mem);
@@ -129,6 +136,8 @@ private:
     ParamExchange *m_exchange = nullptr;
     ParameterTable *m_table = nullptr;
     QGroupBox *m_box = nullptr;
+    QTabWidget *m_tabs = nullptr;
+    DriveLimitsView *m_limits = nullptr;
     QLabel *m_note = nullptr;
     LoopPlot *m_plot = nullptr;
     QLabel *m_title = nullptr;

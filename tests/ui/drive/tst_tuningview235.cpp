@@ -1,6 +1,7 @@
 #include "DriveTestRig.h"
 
 #include <drive/ConfirmDialog.h>
+#include <drive/DriveLimitsView.h>
 #include <drive/ParameterTable.h>
 #include <drive/TuningSetV235.h>
 #include <drive/TuningView.h>
@@ -36,7 +37,7 @@ std::unique_ptr<TuningView> openView(SimRig &rig, int id)
     view->setDrive(id, rig.motor(id));
     view->show();
     if (!(read.wait(kWaitMs) || !read.isEmpty()) ||
-        !QTest::qWaitFor([&] { return !view->isBusy(); }, kWaitMs))
+        !QTest::qWaitFor([&] { return !view->isBusy() && !view->limits()->isBusy(); }, kWaitMs))
         return nullptr;
     return view;
 }
@@ -82,7 +83,7 @@ int paramWrites(SimRig &rig, int id)
 
 bool waitIdle(TuningView &view)
 {
-    return QTest::qWaitFor([&] { return !view.isBusy(); }, kWaitMs);
+    return QTest::qWaitFor([&] { return !view.isBusy() && !view.limits()->isBusy(); }, kWaitMs);
 }
 
 } // namespace
@@ -116,7 +117,7 @@ void tst_TuningView235::readShowsKpKiKd()
     QCOMPARE(view->table()->pending()->at(V235::SpeedKp), 300); // above V2.3's 255
     QCOMPARE(view->table()->holdsLabel(V235::SpeedKd)->text(), QStringLiteral("12"));
     QVERIFY(view->table()->editor(V235::AngleKd)->isEnabled());
-    QCOMPARE(rig.count(1, Command::ReadParam), 3);
+    QCOMPARE(rig.count(1, Command::ReadParam), 3 + 6); // gains, then the limits tab
     QCOMPARE(rig.count(1, Command::ReadPid) + rig.count(1, Command::ReadAccel), 0);
     const auto *note = view->findChild<QLabel *>(QStringLiteral("generationNote"));
     QVERIFY(note && note->text().contains(QStringLiteral("0x33/0x34")));
