@@ -88,6 +88,17 @@ QVector<ParamField> DriveLimitSet::fields() const
     return {torque, speed, angle, currentRamp, speedRamp};
 }
 
+ParamSetTexts DriveLimitSet::texts() const
+{
+    return {tr("Drive limits (protocol V2.35)"),
+            tr("The drive enforces these limits itself, also against commands from other "
+               "software; the tool's soft limits (Control view) only bound what this tool "
+               "sends."),
+            tr("read_param (0x40) for 0x99..0x9E"),
+            tr("0x42 for each changed limit, lost at power-off; read back."),
+            tr("0x44 for every limit, writes flash (asks first); read back.")};
+}
+
 QVector<protocol::Request> DriveLimitSet::reads(int id) const
 {
     QVector<protocol::Request> out;

@@ -19,6 +19,7 @@ public:
 
     protocol::Generation generation() const override { return protocol::Generation::V2_35; }
     QVector<ParamField> fields() const override;
+    ParamSetTexts texts() const override;
     QVector<protocol::Request> reads(int id) const override;
     HeldValues decode(const QVector<protocol::Reply> &replies) const override;
     /// RAM: only what differs from `held` (the max angle as a pair); ROM: every limit.

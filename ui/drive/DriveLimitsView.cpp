@@ -20,10 +20,8 @@ DriveLimitsView::DriveLimitsView(QWidget *parent) : DriveView(parent)
     m_exchange = new ParamExchange(tracker(), this);
     m_exchange->setSpec(m_spec);
 
-    auto *explain = new QLabel(
-        tr("The drive enforces these limits itself, also against commands from other software; "
-           "the tool's soft limits (Control view) only bound what this tool sends."),
-        this);
+    const ParamSetTexts texts = m_spec->texts();
+    auto *explain = new QLabel(texts.note, this);
     explain->setWordWrap(true);
     m_unsupported = new QLabel(this);
     m_unsupported->setObjectName(QStringLiteral("unsupported"));
@@ -40,11 +38,9 @@ DriveLimitsView::DriveLimitsView(QWidget *parent) : DriveView(parent)
         b->setToolTip(tip);
         return b;
     };
-    m_read = make("limitsRead", tr("Read limits"), tr("read_param (0x40) for 0x99..0x9E"));
-    m_writeRam = make("limitsWriteRam", tr("Write limits to RAM"),
-                      tr("0x42 for each changed limit, lost at power-off; read back."));
-    m_writeRom = make("limitsWriteRom", tr("Write limits to ROM\u2026"),
-                      tr("0x44 for every limit, writes flash (asks first); read back."));
+    m_read = make("limitsRead", tr("Read limits"), texts.readTip);
+    m_writeRam = make("limitsWriteRam", tr("Write limits to RAM"), texts.ramTip);
+    m_writeRom = make("limitsWriteRom", tr("Write limits to ROM\u2026"), texts.romTip);
     connect(m_read, &QPushButton::clicked, this, &DriveLimitsView::readFromDrive);
     connect(m_writeRam, &QPushButton::clicked, this, &DriveLimitsView::writeToRam);
     connect(m_writeRom, &QPushButton::clicked, this, &DriveLimitsView::writeToRom);

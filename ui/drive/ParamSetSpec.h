@@ -50,6 +50,15 @@ struct SentValues {
     QVector<int> fields; ///< the fields the write carried
 };
 
+/// How a view presents a set: its group title, a note under the table, and button tool tips.
+struct ParamSetTexts {
+    QString title;
+    QString note;
+    QString readTip;
+    QString ramTip;
+    QString romTip;
+};
+
 /// A set of drive parameters as one protocol generation reads and writes them: the rows of a
 /// parameter table, the requests of a complete read, the frames of a write, and the words for
 /// what a write does and what its read-back proved. The tuning view and the drive limits view
@@ -61,6 +70,7 @@ public:
 
     virtual protocol::Generation generation() const = 0;
     virtual QVector<ParamField> fields() const = 0;
+    virtual ParamSetTexts texts() const = 0;
     /// The requests of one complete read of drive `id`.
     virtual QVector<protocol::Request> reads(int id) const = 0;
     /// What the replies of reads() say the drive holds (fields without a reply stay unknown).

@@ -59,6 +59,23 @@ QVector<ParamField> TuningSetV23::fields() const
             accel};
 }
 
+ParamSetTexts TuningSetV23::texts() const
+{
+    // Worded where the view used to word them (their translations stay).
+    return {
+        QCoreApplication::translate("lk::ui::TuningView", "PID gains and acceleration"),
+        QCoreApplication::translate(
+            "lk::ui::TuningView",
+            "Gains go to RAM (try: lost at power-off) or ROM (keep). Acceleration is RAM "
+            "only: protocol V2.3 has no command that stores it."),
+        QCoreApplication::translate("lk::ui::TuningView", "read_pid (0x30) and read_accel (0x33)"),
+        QCoreApplication::translate(
+            "lk::ui::TuningView",
+            "Try the pending edit: 0x31 and 0x34, lost at power-off; read back."),
+        QCoreApplication::translate("lk::ui::TuningView",
+                                    "Keep the gains: 0x32 writes flash (asks first); read back.")};
+}
+
 QVector<protocol::Request> TuningSetV23::reads(int id) const
 {
     return {*protocol::build::plain(protocol::Command::ReadPid, id).request,

@@ -21,8 +21,7 @@ QVector<ParamField> TuningSetV235::fields() const
             const QString gain = QString::fromLatin1(gains[g]);
             ParamField f;
             f.key = QStringLiteral("%1_%2").arg(QLatin1String(keys[l]), gain);
-            //: "Angle loop Kp": the loop, then the gain (Kp, Ki, Kd)
-            f.name = tr("%1 %2").arg(loops[l], gain.at(0).toUpper() + gain.mid(1));
+            f.name = QStringLiteral("%1 %2").arg(loops[l], gain.at(0).toUpper() + gain.mid(1));
             f.loop = loopOf[l];
             f.max = kGainMax;
             f.tip = tip;
@@ -30,6 +29,17 @@ QVector<ParamField> TuningSetV235::fields() const
         }
     }
     return out;
+}
+
+ParamSetTexts TuningSetV235::texts() const
+{
+    return {tr("PID gains (protocol V2.35)"),
+            tr("Gains go to RAM (0x42, try: lost at power-off) or ROM (0x44, keep). No "
+               "acceleration here: V2.35 has no 0x33/0x34, its current and speed ramps are in "
+               "the drive limits."),
+            tr("read_param (0x40) for ParamIDs 0x96, 0x97 and 0x98"),
+            tr("Try the pending edit: 0x42, lost at power-off; read back."),
+            tr("Keep the gains: 0x44 writes flash (asks first); read back.")};
 }
 
 QVector<protocol::Request> TuningSetV235::reads(int id) const

@@ -28,6 +28,7 @@ public:
 
     protocol::Generation generation() const override { return protocol::Generation::V2_35; }
     QVector<ParamField> fields() const override;
+    ParamSetTexts texts() const override;
     QVector<protocol::Request> reads(int id) const override;
     HeldValues decode(const QVector<protocol::Reply> &replies) const override;
     QVector<ParamWrite> writes(int id, const ParamValues &values, const ParamValues &held,

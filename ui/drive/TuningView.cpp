@@ -186,31 +186,18 @@ const ParamSetSpec *TuningView::specFor(protocol::Generation generation) const
 
 void TuningView::selectSpec()
 {
-    const bool v235 = motor().generation == protocol::Generation::V2_35;
     const ParamSetSpec *spec = specFor(motor().generation);
     if (spec != m_spec || m_table->rowCount() == 0) {
         m_spec = spec;
         m_exchange->setSpec(spec);
         m_table->setFields(spec->fields());
     }
-    if (v235) {
-        m_box->setTitle(tr("PID gains (protocol V2.35)"));
-        m_note->setText(tr("Gains go to RAM (0x42, try: lost at power-off) or ROM (0x44, keep). "
-                           "No acceleration here: V2.35 has no 0x33/0x34, its current and speed "
-                           "ramps are in the drive limits."));
-        m_read->setToolTip(tr("read_param (0x40) for ParamIDs 0x96, 0x97 and 0x98"));
-        m_writeRam->setToolTip(tr("Try the pending edit: 0x42, lost at power-off; read back."));
-        m_writeRom->setToolTip(tr("Keep the gains: 0x44 writes flash (asks first); read back."));
-    } else {
-        m_box->setTitle(tr("PID gains and acceleration"));
-        m_note->setText(
-            tr("Gains go to RAM (try: lost at power-off) or ROM (keep). Acceleration is RAM only: "
-               "protocol V2.3 has no command that stores it."));
-        m_read->setToolTip(tr("read_pid (0x30) and read_accel (0x33)"));
-        m_writeRam->setToolTip(
-            tr("Try the pending edit: 0x31 and 0x34, lost at power-off; read back."));
-        m_writeRom->setToolTip(tr("Keep the gains: 0x32 writes flash (asks first); read back."));
-    }
+    const ParamSetTexts texts = spec->texts();
+    m_box->setTitle(texts.title);
+    m_note->setText(texts.note);
+    m_read->setToolTip(texts.readTip);
+    m_writeRam->setToolTip(texts.ramTip);
+    m_writeRom->setToolTip(texts.romTip);
 }
 
 void TuningView::forgetOtherGeneration()
