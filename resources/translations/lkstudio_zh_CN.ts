@@ -3428,6 +3428,41 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::TuningFile</name>
+    <message>
+        <source>Nothing to save: read the drive&apos;s parameters first.</source>
+        <translation>没有可保存的内容：请先读取驱动的参数。</translation>
+    </message>
+    <message>
+        <source>Saved the parameters of drive %1 to %2.</source>
+        <translation>已将驱动 %1 的参数保存到 %2。</translation>
+    </message>
+    <message>
+        <source>Could not save: %1</source>
+        <translation>无法保存：%1</translation>
+    </message>
+    <message>
+        <source>the file holds the gains of a protocol %1 drive, this drive speaks %2: the gains of the two generations differ in number and range</source>
+        <translation>该文件保存的是协议 %1 驱动的参数，而此驱动使用 %2：两个协议版本的参数数量和范围都不同</translation>
+    </message>
+    <message>
+        <source>Could not load %1: %2. Nothing was changed.</source>
+        <translation>无法加载 %1：%2。未做任何更改。</translation>
+    </message>
+    <message>
+        <source>Loaded the parameters of drive %1 (%2, firmware %3, saved %4) into the pending edit: nothing is written until you write to RAM or ROM.</source>
+        <translation>已把驱动 %1 的参数（%2，固件 %3，保存于 %4）载入待写入区：在写入 RAM 或 ROM 之前不会写入任何值。</translation>
+    </message>
+    <message>
+        <source>unknown motor</source>
+        <translation>未知电机</translation>
+    </message>
+    <message>
+        <source>Careful: the file comes from a %1, this drive is a %2.</source>
+        <translation>注意：文件来自 %1，而此驱动是 %2。</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::TuningSetV235</name>
     <message>
         <source>0..65535, raw gain (V2.35 ParamIDs 0x96..0x98)</source>
@@ -3666,34 +3701,6 @@
         <translation>RAM 和 ROM：%1</translation>
     </message>
     <message>
-        <source>Nothing to save: read the drive&apos;s parameters first.</source>
-        <translation>没有可保存的内容：请先读取驱动的参数。</translation>
-    </message>
-    <message>
-        <source>Saved the parameters of drive %1 to %2.</source>
-        <translation>已将驱动 %1 的参数保存到 %2。</translation>
-    </message>
-    <message>
-        <source>Could not save: %1</source>
-        <translation>无法保存：%1</translation>
-    </message>
-    <message>
-        <source>Could not load %1: %2. Nothing was changed.</source>
-        <translation>无法加载 %1：%2。未做任何更改。</translation>
-    </message>
-    <message>
-        <source>Loaded the parameters of drive %1 (%2, firmware %3, saved %4) into the pending edit: nothing is written until you write to RAM or ROM.</source>
-        <translation>已把驱动 %1 的参数（%2，固件 %3，保存于 %4）载入待写入区：在写入 RAM 或 ROM 之前不会写入任何值。</translation>
-    </message>
-    <message>
-        <source>unknown motor</source>
-        <translation>未知电机</translation>
-    </message>
-    <message>
-        <source>Careful: the file comes from a %1, this drive is a %2.</source>
-        <translation>注意：文件来自 %1，而此驱动是 %2。</translation>
-    </message>
-    <message>
         <source>Load a parameter file into the pending edit; nothing is written. Needs a complete read of the drive first.</source>
         <translation>把参数文件载入待写入区；不会写入任何值。需要先完整读取驱动。</translation>
     </message>
@@ -3756,10 +3763,6 @@
     <message>
         <source>Nothing was loaded: a file is loaded against the drive&apos;s values, so read the drive&apos;s values first.</source>
         <translation>未加载任何内容：文件是对照驱动的数值加载的，请先读取驱动的数值。</translation>
-    </message>
-    <message>
-        <source>the file holds the gains of a protocol %1 drive, this drive speaks %2: the gains of the two generations differ in number and range</source>
-        <translation>该文件保存的是协议 %1 驱动的参数，而此驱动使用 %2：两个协议版本的参数数量和范围都不同</translation>
     </message>
 </context>
 <context>

@@ -5,9 +5,9 @@
 #include "DriveText.h"
 #include "LoopPlot.h"
 #include "ParamExchange.h"
-#include "ParameterFileText.h"
 #include "ParameterTable.h"
 #include "RequestTracker.h"
+#include "TuningFile.h"
 #include "TuningText.h"
 
 #include <bus/BusSession.h>
@@ -550,27 +550,10 @@ void TuningView::setStatus(const QString &text, bool error)
 
 QString TuningView::saveParameters(const QString &path)
 {
-    record::ParameterSet set;
-    if (!hasDrive() || !m_spec->toFile(m_exchange->held(), set)) {
-        const QString error = tr("Nothing to save: read the drive's parameters first.");
-        setStatus(error, true);
-        return error;
-    }
-    set.driveId = driveId();
-    if (const auto &m = motor().model) {
-        set.driverName = m->driverName;
-        set.motorName = m->motorName;
-        set.hardwareVersion = m->hardwareVersion();
-        set.firmwareVersion = m->firmwareVersion();
-    }
-    set.series = series();
-    set.savedAt = QDateTime::currentDateTimeUtc();
-    const QString error = set.save(path);
-    if (error.isEmpty())
-        setStatus(tr("Saved the parameters of drive %1 to %2.").arg(driveId()).arg(path));
-    else
-        setStatus(tr("Could not save: %1").arg(error), true);
-    return error;
+    const TuningFileResult r =
+        TuningFile::save(path, *m_spec, m_exchange->held(), driveId(), motor(), series());
+    setStatus(r.status, !r.error.isEmpty());
+    return r.error;
 }
 
 QString TuningView::loadParameters(const QString &path)
@@ -581,42 +564,14 @@ QString TuningView::loadParameters(const QString &path)
         setStatus(error, true);
         return error;
     }
-    record::ParameterFileError fault;
-    const std::optional<record::ParameterSet> set = record::ParameterSet::load(path, &fault);
-    if (!set) {
-        const QString error = ParameterFileText::describe(fault);
-        setStatus(tr("Could not load %1: %2. Nothing was changed.").arg(path, error), true);
-        return error;
-    }
-    const std::optional<ParamValues> loaded =
-        set->generation == m_spec->generation()
-            ? m_spec->fromFile(
-                  *set, m_table->pending().value_or(*ParamSetSpec::known(m_exchange->held())))
-            : std::nullopt;
-    if (!loaded) {
-        const QString error =
-            tr("the file holds the gains of a protocol %1 drive, this drive speaks %2: the gains "
-               "of the two generations differ in number and range")
-                .arg(protocol::generationName(set->generation),
-                     protocol::generationName(m_spec->generation()));
-        setStatus(tr("Could not load %1: %2. Nothing was changed.").arg(path, error), true);
-        return error;
-    }
-    m_table->setPending(*loaded);
-    QString text = tr("Loaded the parameters of drive %1 (%2, firmware %3, saved %4) into the "
-                      "pending edit: nothing is written until you write to RAM or ROM.")
-                       .arg(set->driveId)
-                       .arg(set->motorName.isEmpty() ? tr("unknown motor") : set->motorName)
-                       .arg(set->firmwareVersion)
-                       .arg(QLocale().toString(set->savedAt.toLocalTime(), QLocale::ShortFormat));
-    const QString here = motor().model ? motor().model->motorName : QString();
-    if (!set->motorName.isEmpty() && !here.isEmpty() && set->motorName != here)
-        text +=
-            QLatin1Char(' ') +
-            tr("Careful: the file comes from a %1, this drive is a %2.").arg(set->motorName, here);
-    setStatus(text);
+    const TuningFileResult r = TuningFile::load(
+        path, *m_spec, m_table->pending().value_or(*ParamSetSpec::known(m_exchange->held())),
+        motor());
+    if (r.values)
+        m_table->setPending(*r.values);
+    setStatus(r.status, !r.error.isEmpty());
     refreshEnabled();
-    return QString();
+    return r.error;
 }
 
 void TuningView::changeEvent(QEvent *event)
