@@ -61,6 +61,8 @@ QString ParamExchange::write(int id, const ParamValues &values, bool rom)
     if (!m_spec || !held)
         return tr("the drive's values have not been read.");
     const QVector<ParamWrite> frames = m_spec->writes(id, values, *held, rom);
+    if (frames.isEmpty())
+        return tr("the pending edit does not differ from what the drive holds.");
     for (const ParamWrite &frame : frames) {
         if (!frame.built.ok())
             return DriveText::fieldError(frame.built.error); // nothing sent

@@ -1,4 +1,4 @@
-#include "DriveTestRig.h"
+#include "ParamTestHelpers.h"
 
 #include <drive/ConfirmDialog.h>
 #include <drive/DriveLimitSet.h>
@@ -15,6 +15,9 @@
 #include <QtWidgets/QTabWidget>
 
 using lk::drivetest::kWaitMs;
+using lk::drivetest::paramWrites;
+using lk::drivetest::ramParams;
+using lk::drivetest::romParams;
 using lk::drivetest::SimRig;
 using lk::protocol::Command;
 using lk::sim::SimParams;
@@ -41,31 +44,12 @@ std::unique_ptr<DriveLimitsView> openView(SimRig &rig, int id)
 
 void edit(DriveLimitsView &view, int row, const QString &value)
 {
-    QDoubleSpinBox *box = view.table()->editor(row);
-    box->setFocus();
-    box->selectAll();
-    QTest::keyClicks(box, value);
-    QTest::keyClick(box, Qt::Key_Enter);
+    lk::drivetest::typeInto(view.table()->editor(row), value);
 }
 
 QPushButton *button(DriveLimitsView &view, const char *name)
 {
     return view.findChild<QPushButton *>(QLatin1String(name));
-}
-
-SimParams ramParams(SimRig &rig, int id)
-{
-    return rig.read<SimParams>(id, [](const lk::sim::SimDrive &d) { return d.ramParams(); });
-}
-
-SimParams romParams(SimRig &rig, int id)
-{
-    return rig.read<SimParams>(id, [](const lk::sim::SimDrive &d) { return d.rom().params; });
-}
-
-int writes(SimRig &rig, int id)
-{
-    return rig.count(id, Command::WriteParamRam) + rig.count(id, Command::WriteParamRom);
 }
 
 bool waitIdle(DriveLimitsView &view)
@@ -141,7 +125,7 @@ void tst_DriveLimitsView::nothingWritableBeforeRead()
     view->writeToRam();
     view->writeToRom();
     QVERIFY(rig.barrier());
-    QCOMPARE(writes(rig, 1), 0);
+    QCOMPARE(paramWrites(rig, 1), 0);
     QCOMPARE(asked, 0);
     QVERIFY(view->statusText().contains(QStringLiteral("Nothing was sent")));
 }
@@ -171,6 +155,12 @@ void tst_DriveLimitsView::ramWriteSendsChangedAndPair()
     QVERIFY(waitIdle(*view));
     QCOMPARE(ramParams(rig, 1).maxSpeedRaw, 12345); // 0.01 dps on the wire
     QCOMPARE(rig.count(1, Command::WriteParamRam), 3);
+
+    view->writeToRam(); // nothing differs: nothing to send, and it says so
+    QVERIFY(rig.barrier());
+    QCOMPARE(rig.count(1, Command::WriteParamRam), 3);
+    QVERIFY2(view->statusText().contains(QStringLiteral("does not differ")),
+             qPrintable(view->statusText()));
 }
 
 void tst_DriveLimitsView::romWriteAsksAndSendsEachOnce()
@@ -190,7 +180,7 @@ void tst_DriveLimitsView::romWriteAsksAndSendsEachOnce()
     QVERIFY(rig.barrier());
     QCOMPARE(asked.size(), 1);
     QVERIFY(asked.first().reason.contains(QStringLiteral("wear")));
-    QCOMPARE(writes(rig, 1), 0);
+    QCOMPARE(paramWrites(rig, 1), 0);
     QVERIFY(view->statusText().contains(QStringLiteral("nothing was sent")));
 
     answer = true;
@@ -232,7 +222,7 @@ void tst_DriveLimitsView::v23DriveHasNoLimits()
     view->readFromDrive();
     view->writeToRam();
     QVERIFY(rig.barrier());
-    QCOMPARE(rig.count(1, Command::ReadParam) + writes(rig, 1), 0);
+    QCOMPARE(rig.count(1, Command::ReadParam) + paramWrites(rig, 1), 0);
 }
 
 void tst_DriveLimitsView::tuningViewHasLimitsTab()

@@ -1,4 +1,4 @@
-#include "DriveTestRig.h"
+#include "ParamTestHelpers.h"
 
 #include <drive/ConfirmDialog.h>
 #include <drive/DriveLimitsView.h>
@@ -15,6 +15,9 @@
 #include <QtWidgets/QPushButton>
 
 using lk::drivetest::kWaitMs;
+using lk::drivetest::paramWrites;
+using lk::drivetest::ramParams;
+using lk::drivetest::romParams;
 using lk::drivetest::SimRig;
 using lk::protocol::Command;
 using lk::sim::SimParams;
@@ -44,26 +47,12 @@ std::unique_ptr<TuningView> openView(SimRig &rig, int id)
 
 void edit(TuningView &view, int row, int value)
 {
-    QDoubleSpinBox *box = view.table()->editor(row);
-    box->setFocus();
-    box->selectAll();
-    QTest::keyClicks(box, QString::number(value));
-    QTest::keyClick(box, Qt::Key_Enter); // keyboard tracking is off: commits on Enter
+    lk::drivetest::typeInto(view.table()->editor(row), QString::number(value));
 }
 
 QPushButton *button(TuningView &view, const char *name)
 {
     return view.findChild<QPushButton *>(QLatin1String(name));
-}
-
-SimParams ramParams(SimRig &rig, int id)
-{
-    return rig.read<SimParams>(id, [](const lk::sim::SimDrive &d) { return d.ramParams(); });
-}
-
-SimParams romParams(SimRig &rig, int id)
-{
-    return rig.read<SimParams>(id, [](const lk::sim::SimDrive &d) { return d.rom().params; });
 }
 
 ParamValues gainsOf(const SimParams &p)
@@ -74,11 +63,6 @@ ParamValues gainsOf(const SimParams &p)
             v << g;
     }
     return v;
-}
-
-int paramWrites(SimRig &rig, int id)
-{
-    return rig.count(id, Command::WriteParamRam) + rig.count(id, Command::WriteParamRom);
 }
 
 bool waitIdle(TuningView &view)
