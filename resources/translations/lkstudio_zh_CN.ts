@@ -1375,7 +1375,7 @@
     </message>
     <message>
         <source>On MS drives ParamID 0x99 limits power (0..1000 is the power command&apos;s range); the unit is not documented.</source>
-        <translation>在 MS 驱动上，ParamID 0x99 限制的是功率（功率命令的范围为 0..1000）；单位未见文档说明。</translation>
+        <translation>在 MS 驱动上，参数 ID 0x99 限制的是功率（功率命令的范围为 0..1000）；单位未见文档说明。</translation>
     </message>
     <message>
         <source>In iq command units: 2048 is full scale (MF 16.5 A, MG 33 A on V2.35).</source>
@@ -1403,7 +1403,7 @@
     </message>
     <message>
         <source>Bounds multi-turn position commands (0xA3/0xA4); an int64 of 0.01 deg split over two ParamIDs, always written and read as a pair.</source>
-        <translation>限制多圈位置命令（0xA3/0xA4）；一个以 0.01° 为单位的 int64，拆分在两个 ParamID 中，总是成对写入和读取。</translation>
+        <translation>限制多圈位置命令（0xA3/0xA4）；一个以 0.01° 为单位的 int64，拆分在两个 参数 ID 中，总是成对写入和读取。</translation>
     </message>
     <message>
         <source>Current ramp (0x9D)</source>
@@ -1476,7 +1476,7 @@
     <name>lk::ui::DriveLimitsView</name>
     <message>
         <source>This drive speaks protocol V2.3: these settings do not exist in its protocol generation (they came with V2.35, ParamIDs 0x99..0x9E).</source>
-        <translation>此驱动使用协议 V2.3：这些设置在该协议版本中不存在（它们随 V2.35 引入，ParamID 0x99..0x9E）。</translation>
+        <translation>此驱动使用协议 V2.3：这些设置在该协议版本中不存在（它们随 V2.35 引入，参数 ID 0x99..0x9E）。</translation>
     </message>
     <message>
         <source>Read limits</source>
@@ -2386,7 +2386,11 @@
     </message>
     <message>
         <source>drive %1 refused the write of %2 (%3 answered with failure flag %4 for ParamID 0x%5).</source>
-        <translation>驱动 %1 拒绝写入 %2（%3 对 ParamID 0x%5 应答了失败标志 %4）。</translation>
+        <translation>驱动 %1 拒绝写入 %2（%3 对 参数 ID 0x%5 应答了失败标志 %4）。</translation>
+    </message>
+    <message>
+        <source>the pending edit does not differ from what the drive holds.</source>
+        <translation>待写入的修改与驱动保存的值没有差别。</translation>
     </message>
 </context>
 <context>
@@ -3466,7 +3470,7 @@
     <name>lk::ui::TuningSetV235</name>
     <message>
         <source>0..65535, raw gain (V2.35 ParamIDs 0x96..0x98)</source>
-        <translation>0..65535，原始增益（V2.35 ParamID 0x96..0x98）</translation>
+        <translation>0..65535，原始增益（V2.35 参数 ID 0x96..0x98）</translation>
     </message>
     <message>
         <source>Angle loop</source>
@@ -3490,7 +3494,7 @@
     </message>
     <message>
         <source>read_param (0x40) for ParamIDs 0x96, 0x97 and 0x98</source>
-        <translation>对 ParamID 0x96、0x97 和 0x98 执行 read_param (0x40)</translation>
+        <translation>对 参数 ID 0x96、0x97 和 0x98 执行 read_param (0x40)</translation>
     </message>
     <message>
         <source>Try the pending edit: 0x42, lost at power-off; read back.</source>
