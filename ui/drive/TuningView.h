@@ -36,7 +36,8 @@ class TelemetryStore;
 /// unknown values show as unknown. Unsent edits stay with their drive (kept while another
 /// drive is selected, dropped with the connection). "Restore values read at ..." writes the
 /// values of the first complete read back to RAM after asking. Parameters save to and load
-/// from JSON files. A live plot of the loop being edited stays beside the table.
+/// from JSON files. A live plot of the loop being edited stays beside the table. A second tab
+/// holds the drive's own limits (DriveLimitsView, V2.35 only).
 class TuningView : public DriveView {
     Q_OBJECT
 public:
