@@ -80,6 +80,7 @@ private slots:
     void ramWriteReadsBack();
     void romWriteAsksAndSendsOnce();
     void refusedWriteNamesParameter();
+    void restoreWritesFirstRead();
     void filesKeepTheirGeneration();
 };
 
@@ -226,6 +227,34 @@ void tst_TuningView235::refusedWriteNamesParameter()
     QVERIFY2(view->mismatchText().contains(QStringLiteral("Angle loop Kp: the drive holds")),
              qPrintable(view->mismatchText()));
     QVERIFY(view->table()->isChanged(V235::AngleKp)); // the edit stays
+}
+
+void tst_TuningView235::restoreWritesFirstRead()
+{
+    SimRig rig(QStringLiteral("1:MG@2.35"));
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    QVERIFY(view && view->readComplete());
+    const ParamValues original = gainsOf(ramParams(rig, 1));
+    edit(*view, V235::IqKd, 33);
+    view->writeToRam();
+    QVERIFY(waitIdle(*view));
+    QCOMPARE(ramParams(rig, 1).currentPid[2], quint16(33));
+    QList<ConfirmRequest> asked;
+    ConfirmDialog::ScopedPolicy yes([&](const ConfirmRequest &q) {
+        asked << q;
+        return true;
+    });
+    QVERIFY(button(*view, "undo")->text().startsWith(QStringLiteral("Restore values read at")));
+    QTest::mouseClick(button(*view, "undo"), Qt::LeftButton);
+    QVERIFY(waitIdle(*view));
+    QCOMPARE(asked.size(), 1);
+    QVERIFY2(asked.first().question.contains(QStringLiteral("to its RAM")) &&
+                 asked.first().question.contains(QStringLiteral("(Kp/Ki/Kd)")),
+             qPrintable(asked.first().question));
+    QCOMPARE(gainsOf(ramParams(rig, 1)), original);
+    QCOMPARE(*view->table()->pending(), original);
+    QCOMPARE(rig.count(1, Command::WriteParamRom), 0); // RAM only
 }
 
 void tst_TuningView235::filesKeepTheirGeneration()
