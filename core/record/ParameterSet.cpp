@@ -25,6 +25,11 @@ const char *const kFormat = ParameterSet::kFormatName;
 constexpr qint64 kMaxFileBytes = 1 << 20;         // a parameter set is a few hundred bytes
 constexpr double kMaxVersionShown = 65535 / 10.0; // u16 raw / 10 (V2.3) or / 100 (V2.35)
 constexpr int kGainMax = 255;
+constexpr int kGainMaxV235 = 65535;
+
+// V2.35 keys in the order of ParameterSet::pidV235.
+const char *const kGainsV235[] = {"angle_kp", "angle_ki", "angle_kd", "speed_kp", "speed_ki",
+                                  "speed_kd", "iq_kp",    "iq_ki",    "iq_kd"};
 
 struct GainField {
     const char *key;
@@ -51,6 +56,7 @@ const std::vector<Field> &rootFields()
         {"format", ValueType::Text},
         {"version", ValueType::Integer, 1, 1000000},
         {"saved_at", ValueType::Text, 0, 0, false},
+        {"generation", ValueType::Text, 0, 0, false},
         {"drive", ValueType::Object},
         {"pid", ValueType::Object},
         {"accel_dps2", ValueType::Integer, 0, std::numeric_limits<qint32>::max(), false},
@@ -71,15 +77,21 @@ const std::vector<Field> &driveFields()
     return fields;
 }
 
-const std::vector<Field> &pidFields()
+const std::vector<Field> &pidFields(protocol::Generation generation)
 {
-    static const std::vector<Field> fields = [] {
+    static const std::vector<Field> v23 = [] {
         std::vector<Field> f;
         for (const GainField &g : kGains)
             f.push_back({g.key, ValueType::Integer, 0, kGainMax});
         return f;
     }();
-    return fields;
+    static const std::vector<Field> v235 = [] {
+        std::vector<Field> f;
+        for (const char *key : kGainsV235)
+            f.push_back({key, ValueType::Integer, 0, kGainMaxV235});
+        return f;
+    }();
+    return generation == protocol::Generation::V2_3 ? v23 : v235;
 }
 
 bool refuse(ParameterFileError *error, ParameterFileError e)
@@ -296,12 +308,27 @@ bool readBody(const QJsonObject &root, ParameterSet &set, ParameterFileError *er
             return refuse(error,
                           textError(Kind::BadTimestamp, QStringLiteral("saved_at"), savedAt));
     }
+    const QJsonValue generation = root.value(QStringLiteral("generation"));
+    if (generation.isString()) {
+        const auto g = protocol::generationFromName(generation.toString());
+        if (!g)
+            return refuse(error, textError(Kind::UnknownGeneration, QStringLiteral("generation"),
+                                           generation));
+        set.generation = *g;
+    }
     const QJsonObject pid = root.value(QStringLiteral("pid")).toObject();
-    if (!checkObject(pid, QStringLiteral("pid."), pidFields(), error))
+    if (!checkObject(pid, QStringLiteral("pid."), pidFields(set.generation), error))
         return false;
+    const QJsonValue accel = root.value(QStringLiteral("accel_dps2"));
+    if (set.generation == protocol::Generation::V2_35) {
+        if (!accel.isUndefined()) // V2.35 has no 0x33/0x34: its ramps are drive limits
+            return refuse(error, textError(Kind::UnknownKey, QStringLiteral("accel_dps2"), accel));
+        for (std::size_t i = 0; i < set.pidV235.size(); ++i)
+            set.pidV235[i] = static_cast<quint16>(pid.value(QLatin1String(kGainsV235[i])).toInt());
+        return true;
+    }
     for (const GainField &g : kGains)
         set.pid.*(g.member) = static_cast<quint8>(pid.value(QLatin1String(g.key)).toInt());
-    const QJsonValue accel = root.value(QStringLiteral("accel_dps2"));
     if (accel.isDouble())
         set.accelDps2 = static_cast<qint32>(accel.toInteger());
     return true;
@@ -321,16 +348,22 @@ QJsonObject ParameterSet::toJson() const
     drive.insert(QStringLiteral("firmware_version"), firmwareVersion);
 
     QJsonObject gains;
-    for (const GainField &g : kGains)
-        gains.insert(QLatin1String(g.key), int(pid.*(g.member)));
+    if (generation == protocol::Generation::V2_35) {
+        for (std::size_t i = 0; i < pidV235.size(); ++i)
+            gains.insert(QLatin1String(kGainsV235[i]), int(pidV235[i]));
+    } else {
+        for (const GainField &g : kGains)
+            gains.insert(QLatin1String(g.key), int(pid.*(g.member)));
+    }
 
     QJsonObject o;
     o.insert(QStringLiteral("format"), QLatin1String(kFormat));
     o.insert(QStringLiteral("version"), kFormatVersion);
     o.insert(QStringLiteral("saved_at"), savedAt.toUTC().toString(Qt::ISODateWithMs));
+    o.insert(QStringLiteral("generation"), protocol::generationName(generation));
     o.insert(QStringLiteral("drive"), drive);
     o.insert(QStringLiteral("pid"), gains);
-    if (accelDps2)
+    if (accelDps2 && generation == protocol::Generation::V2_3)
         o.insert(QStringLiteral("accel_dps2"), qint64(*accelDps2));
     return o;
 }

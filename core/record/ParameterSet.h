@@ -8,6 +8,7 @@
 #include <QtCore/QJsonObject>
 #include <QtCore/QString>
 
+#include <array>
 #include <optional>
 
 namespace lk::record {
@@ -16,19 +17,20 @@ namespace lk::record {
 /// the UI words it (ui/drive/ParameterFileText).
 struct ParameterFileError {
     enum class Kind {
-        CannotRead,    ///< detail: the file system's reason
-        TooLarge,      ///< bigger than any parameter file (max: the limit in bytes)
-        NotJson,       ///< detail: the JSON parser's reason, offset: where
-        NotObject,     ///< the document is not a JSON object
-        WrongFormat,   ///< "format" is not "lkstudio-parameters" (found: what it is)
-        NewerVersion,  ///< found: the file's version, max: the newest this release reads
-        MissingKey,    ///< key
-        UnknownKey,    ///< key: a key this format does not have
-        DuplicateKey,  ///< key: a key given twice in one object
-        WrongType,     ///< key, expected (and min..max for numbers), found
-        OutOfRange,    ///< key, expected, min..max, found
-        UnknownSeries, ///< key, found: not MS, MF, MG or MH
-        BadTimestamp,  ///< key, found: not an ISO 8601 date and time
+        CannotRead,        ///< detail: the file system's reason
+        TooLarge,          ///< bigger than any parameter file (max: the limit in bytes)
+        NotJson,           ///< detail: the JSON parser's reason, offset: where
+        NotObject,         ///< the document is not a JSON object
+        WrongFormat,       ///< "format" is not "lkstudio-parameters" (found: what it is)
+        NewerVersion,      ///< found: the file's version, max: the newest this release reads
+        MissingKey,        ///< key
+        UnknownKey,        ///< key: a key this format does not have
+        DuplicateKey,      ///< key: a key given twice in one object
+        WrongType,         ///< key, expected (and min..max for numbers), found
+        OutOfRange,        ///< key, expected, min..max, found
+        UnknownSeries,     ///< key, found: not MS, MF, MG or MH
+        BadTimestamp,      ///< key, found: not an ISO 8601 date and time
+        UnknownGeneration, ///< key, found: not "v2.3" or "v2.35"
     };
     /// What a key must hold.
     enum class ValueType { Integer, Number, Text, Object };
@@ -57,11 +59,17 @@ struct ParameterSet {
     double hardwareVersion = 0; ///< as shown (V2.3: raw / 10)
     double firmwareVersion = 0;
     QDateTime savedAt; ///< UTC
-    protocol::PidGains pid;
-    std::optional<qint32> accelDps2; ///< nullopt when the drive did not answer read_accel
+    /// The protocol generation of the drive: decides which gains the file holds. A file
+    /// without "generation" (saved before V2.35 support) is V2.3.
+    protocol::Generation generation = protocol::Generation::V2_3;
+    protocol::PidGains pid;          ///< V2.3: Kp/Ki 0..255 (0x30)
+    std::optional<qint32> accelDps2; ///< V2.3: nullopt when the drive did not answer read_accel
+    /// V2.35: angle, speed and current loop Kp, Ki, Kd, 0..65535 each (ParamIDs 0x96..0x98).
+    std::array<quint16, 9> pidV235{};
 
-    /// {"format":"lkstudio-parameters","version":1,"saved_at":...,"drive":{...},
-    ///  "pid":{"angle_kp":...},"accel_dps2":...}; field names follow CLI.md.
+    /// {"format":"lkstudio-parameters","version":1,"saved_at":...,"generation":"v2.3",
+    ///  "drive":{...},"pid":{"angle_kp":...},"accel_dps2":...}; field names follow CLI.md.
+    /// V2.35 files have "generation":"v2.35", Kd keys ("angle_kd") and no "accel_dps2".
     QJsonObject toJson() const;
     QByteArray toJsonBytes() const; ///< indented, UTF-8
 

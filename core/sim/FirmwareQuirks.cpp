@@ -12,6 +12,7 @@ struct QuirkName {
 const QuirkName kQuirks[] = {
     {"accel-ignored", &FirmwareQuirks::accelIgnored},
     {"clear-angle-ignored", &FirmwareQuirks::clearAngleIgnored},
+    {"param-write-refused", &FirmwareQuirks::paramWriteRefused},
 };
 
 } // namespace

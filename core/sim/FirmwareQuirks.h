@@ -14,6 +14,8 @@ struct FirmwareQuirks {
     bool accelIgnored = false;
     /// 0x95 is acknowledged but the multi-turn angle is unchanged.
     bool clearAngleIgnored = false;
+    /// 0x42/0x44 are answered with the failure flag (1) and change nothing (V2.35 drives).
+    bool paramWriteRefused = false;
 
     /// Turn on the quirk called `name`; false when no quirk has that name.
     bool enable(const QString &name);

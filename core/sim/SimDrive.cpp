@@ -222,7 +222,7 @@ std::optional<Reply> SimDrive::handleV235(const Request &r)
     case Command::WriteParamRam:
     case Command::WriteParamRom: {
         const auto value = std::get<protocol::ParameterValue>(r.payload);
-        const bool ok = m_ramParams.write(value);
+        const bool ok = !m_model.quirks.paramWriteRefused && m_ramParams.write(value);
         if (ok) {
             applyParams();
             if (r.command == Command::WriteParamRom) {

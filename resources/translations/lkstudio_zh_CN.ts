@@ -1384,6 +1384,174 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::DriveLimitSet</name>
+    <message>
+        <source>Max power (0x99)</source>
+        <translation>最大功率 (0x99)</translation>
+    </message>
+    <message>
+        <source>Max torque current (0x99)</source>
+        <translation>最大转矩电流 (0x99)</translation>
+    </message>
+    <message>
+        <source>On MS drives ParamID 0x99 limits power (0..1000 is the power command&apos;s range); the unit is not documented.</source>
+        <translation>在 MS 驱动上，参数 ID 0x99 限制的是功率（功率命令的范围为 0..1000）；单位未见文档说明。</translation>
+    </message>
+    <message>
+        <source>In iq command units: 2048 is full scale (MF 16.5 A, MG 33 A on V2.35).</source>
+        <translation>以 iq 命令单位表示：2048 为满量程（V2.35 下 MF 为 16.5 A，MG 为 33 A）。</translation>
+    </message>
+    <message>
+        <source>Max speed (0x9A)</source>
+        <translation>最大速度 (0x9A)</translation>
+    </message>
+    <message>
+        <source> dps</source>
+        <translation> dps</translation>
+    </message>
+    <message>
+        <source>Bounds speed and position commands (0xA2..0xA8); 0.01 dps on the wire.</source>
+        <translation>限制速度与位置命令（0xA2..0xA8）；线上单位为 0.01 dps。</translation>
+    </message>
+    <message>
+        <source>Max angle (0x9B/0x9C)</source>
+        <translation>最大角度 (0x9B/0x9C)</translation>
+    </message>
+    <message>
+        <source> deg</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>Bounds multi-turn position commands (0xA3/0xA4); an int64 of 0.01 deg split over two ParamIDs, always written and read as a pair.</source>
+        <translation>限制多圈位置命令（0xA3/0xA4）；一个以 0.01° 为单位的 int64，拆分在两个 参数 ID 中，总是成对写入和读取。</translation>
+    </message>
+    <message>
+        <source>Current ramp (0x9D)</source>
+        <translation>电流斜坡 (0x9D)</translation>
+    </message>
+    <message>
+        <source>0..32767; the vendor does not document the unit.</source>
+        <translation>0..32767；厂商未说明单位。</translation>
+    </message>
+    <message>
+        <source>Speed ramp (0x9E)</source>
+        <translation>速度斜坡 (0x9E)</translation>
+    </message>
+    <message>
+        <source> dps/s</source>
+        <translation> dps/s</translation>
+    </message>
+    <message>
+        <source>Replaces the acceleration (0x33/0x34) of protocol V2.3.</source>
+        <translation>取代协议 V2.3 的加速度（0x33/0x34）。</translation>
+    </message>
+    <message>
+        <source>Drive limits (protocol V2.35)</source>
+        <translation>驱动限值（协议 V2.35）</translation>
+    </message>
+    <message>
+        <source>The drive enforces these limits itself, also against commands from other software; the tool&apos;s soft limits (Control view) only bound what this tool sends.</source>
+        <translation>这些限值由驱动自身执行，对其他软件发出的命令同样有效；本工具的软限位（控制视图）只限制本工具发送的命令。</translation>
+    </message>
+    <message>
+        <source>read_param (0x40) for 0x99..0x9E</source>
+        <translation>对 0x99..0x9E 执行 read_param (0x40)</translation>
+    </message>
+    <message>
+        <source>0x42 for each changed limit, lost at power-off; read back.</source>
+        <translation>对每个已修改的限值发送 0x42，断电丢失；随后回读。</translation>
+    </message>
+    <message>
+        <source>0x44 for every limit, writes flash (asks first); read back.</source>
+        <translation>对每个限值发送 0x44，写入闪存（会先询问）；随后回读。</translation>
+    </message>
+    <message>
+        <source>Write drive limits to ROM</source>
+        <translation>将驱动限值写入 ROM</translation>
+    </message>
+    <message>
+        <source>Write these limits to the ROM of drive %1?
+%2</source>
+        <translation>将这些限值写入驱动 %1 的 ROM？
+%2</translation>
+    </message>
+    <message>
+        <source>ROM is the drive&apos;s flash memory: each write wears it, and the limits stay after power-off and bound every program that drives this motor. Each parameter is sent once with 0x44 (never retried), then read back with 0x40.</source>
+        <translation>ROM 是驱动的闪存：每次写入都会造成磨损，且限值在断电后仍然保留，并约束所有驱动此电机的程序。每个参数用 0x44 只发送一次（绝不重试），然后用 0x40 回读。</translation>
+    </message>
+    <message>
+        <source>Write to ROM</source>
+        <translation>写入 ROM</translation>
+    </message>
+    <message>
+        <source>Limits written to the ROM of drive %1 and read back: the drive holds what was sent.</source>
+        <translation>限值已写入驱动 %1 的 ROM 并回读：驱动保存的就是发送的值。</translation>
+    </message>
+    <message>
+        <source>Limits written to the RAM of drive %1 and read back: the drive holds what was sent. Lost at power-off unless written to ROM.</source>
+        <translation>限值已写入驱动 %1 的 RAM 并回读：驱动保存的就是发送的值。除非写入 ROM，否则断电丢失。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::DriveLimitsView</name>
+    <message>
+        <source>This drive speaks protocol V2.3: these settings do not exist in its protocol generation (they came with V2.35, ParamIDs 0x99..0x9E).</source>
+        <translation>此驱动使用协议 V2.3：这些设置在该协议版本中不存在（它们随 V2.35 引入，参数 ID 0x99..0x9E）。</translation>
+    </message>
+    <message>
+        <source>Read limits</source>
+        <translation>读取限值</translation>
+    </message>
+    <message>
+        <source>Write limits to RAM</source>
+        <translation>将限值写入 RAM</translation>
+    </message>
+    <message>
+        <source>Write limits to ROM…</source>
+        <translation>将限值写入 ROM…</translation>
+    </message>
+    <message>
+        <source>The write failed: %1</source>
+        <translation>写入失败：%1</translation>
+    </message>
+    <message>
+        <source>Written, but the read-back differs (below).</source>
+        <translation>已写入，但回读值不同（见下方）。</translation>
+    </message>
+    <message>
+        <source>Could not read the limits of drive %1: %2 Editing and writing stay off until every limit has been read.</source>
+        <translation>无法读取驱动 %1 的限值：%2 在所有限值读取成功之前，编辑和写入保持禁用。</translation>
+    </message>
+    <message>
+        <source>Limits read from drive %1 at %2.</source>
+        <translation>已于 %2 从驱动 %1 读取限值。</translation>
+    </message>
+    <message>
+        <source>Nothing was sent: the drive&apos;s limits have not all been read on this connection. Read limits first.</source>
+        <translation>未发送任何命令：本次连接中尚未读取驱动的全部限值。请先读取限值。</translation>
+    </message>
+    <message>
+        <source>ROM write cancelled: nothing was sent.</source>
+        <translation>已取消 ROM 写入：未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>The drive or the connection changed: nothing was sent.</source>
+        <translation>驱动或连接已改变：未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Nothing was sent: %1</source>
+        <translation>未发送任何命令：%1</translation>
+    </message>
+    <message>
+        <source>Writing limits to the ROM of drive %1…</source>
+        <translation>正在将限值写入驱动 %1 的 ROM…</translation>
+    </message>
+    <message>
+        <source>Writing limits to the RAM of drive %1…</source>
+        <translation>正在将限值写入驱动 %1 的 RAM…</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::DriveText</name>
     <message>
         <source>unknown series</source>
@@ -2223,6 +2391,40 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::ParamExchange</name>
+    <message>
+        <source>the drive&apos;s replies did not carry every value.</source>
+        <translation>驱动的应答未包含全部数值。</translation>
+    </message>
+    <message>
+        <source>the drive&apos;s values have not been read.</source>
+        <translation>尚未读取驱动的数值。</translation>
+    </message>
+    <message>
+        <source>%1 (%2) of drive %3: %4</source>
+        <translation>驱动 %3 的 %1（%2）：%4</translation>
+    </message>
+    <message>
+        <source>drive %1 refused the write of %2 (%3 answered with failure flag %4 for ParamID 0x%5).</source>
+        <translation>驱动 %1 拒绝写入 %2（%3 对 参数 ID 0x%5 应答了失败标志 %4）。</translation>
+    </message>
+    <message>
+        <source>the pending edit does not differ from what the drive holds.</source>
+        <translation>待写入的修改与驱动保存的值没有差别。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::ParamSetSpec</name>
+    <message>
+        <source>%1: the drive holds %2 after %3 was written.</source>
+        <translation>%1：写入 %3 后驱动保存的是 %2。</translation>
+    </message>
+    <message>
+        <source>The read-back did not complete: what the drive holds is not known. Editing and writing stay off until Read from drive succeeds.</source>
+        <translation>回读未完成：驱动实际保存的值未知。在“从驱动读取”成功之前，编辑和写入保持禁用。</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::ParameterFileText</name>
     <message>
         <source>an integer in %1..%2</source>
@@ -2295,6 +2497,10 @@
     <message>
         <source>%1 is %2: it must be a date and time such as &quot;2026-05-04T03:02:01.000Z&quot;</source>
         <translation>%1 为 %2：它必须是日期时间，例如“2026-05-04T03:02:01.000Z”</translation>
+    </message>
+    <message>
+        <source>%1 is %2: it must be &quot;v2.3&quot; or &quot;v2.35&quot;</source>
+        <translation>%1 为 %2：必须是 &quot;v2.3&quot; 或 &quot;v2.35&quot;</translation>
     </message>
 </context>
 <context>
@@ -3254,6 +3460,110 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::TuningFile</name>
+    <message>
+        <source>Nothing to save: read the drive&apos;s parameters first.</source>
+        <translation>没有可保存的内容：请先读取驱动的参数。</translation>
+    </message>
+    <message>
+        <source>Saved the parameters of drive %1 to %2.</source>
+        <translation>已将驱动 %1 的参数保存到 %2。</translation>
+    </message>
+    <message>
+        <source>Could not save: %1</source>
+        <translation>无法保存：%1</translation>
+    </message>
+    <message>
+        <source>the file holds the gains of a protocol %1 drive, this drive speaks %2: the gains of the two generations differ in number and range</source>
+        <translation>该文件保存的是协议 %1 驱动的参数，而此驱动使用 %2：两个协议版本的参数数量和范围都不同</translation>
+    </message>
+    <message>
+        <source>Could not load %1: %2. Nothing was changed.</source>
+        <translation>无法加载 %1：%2。未做任何更改。</translation>
+    </message>
+    <message>
+        <source>Loaded the parameters of drive %1 (%2, firmware %3, saved %4) into the pending edit: nothing is written until you write to RAM or ROM.</source>
+        <translation>已把驱动 %1 的参数（%2，固件 %3，保存于 %4）载入待写入区：在写入 RAM 或 ROM 之前不会写入任何值。</translation>
+    </message>
+    <message>
+        <source>unknown motor</source>
+        <translation>未知电机</translation>
+    </message>
+    <message>
+        <source>Careful: the file comes from a %1, this drive is a %2.</source>
+        <translation>注意：文件来自 %1，而此驱动是 %2。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::TuningSetV235</name>
+    <message>
+        <source>0..65535, raw gain (V2.35 ParamIDs 0x96..0x98)</source>
+        <translation>0..65535，原始增益（V2.35 参数 ID 0x96..0x98）</translation>
+    </message>
+    <message>
+        <source>Angle loop</source>
+        <translation>角度环</translation>
+    </message>
+    <message>
+        <source>Speed loop</source>
+        <translation>速度环</translation>
+    </message>
+    <message>
+        <source>Current loop</source>
+        <translation>电流环</translation>
+    </message>
+    <message>
+        <source>PID gains (protocol V2.35)</source>
+        <translation>PID 参数（协议 V2.35）</translation>
+    </message>
+    <message>
+        <source>Gains go to RAM (0x42, try: lost at power-off) or ROM (0x44, keep). No acceleration here: V2.35 has no 0x33/0x34, its current and speed ramps are in the drive limits.</source>
+        <translation>参数写入 RAM（0x42，试用：断电丢失）或 ROM（0x44，保存）。这里没有加速度：V2.35 没有 0x33/0x34，其电流和速度斜坡位于驱动限值中。</translation>
+    </message>
+    <message>
+        <source>read_param (0x40) for ParamIDs 0x96, 0x97 and 0x98</source>
+        <translation>对 参数 ID 0x96、0x97 和 0x98 执行 read_param (0x40)</translation>
+    </message>
+    <message>
+        <source>Try the pending edit: 0x42, lost at power-off; read back.</source>
+        <translation>试用待写入的修改：0x42，断电丢失；随后回读。</translation>
+    </message>
+    <message>
+        <source>Keep the gains: 0x44 writes flash (asks first); read back.</source>
+        <translation>保存参数：0x44 写入闪存（会先询问）；随后回读。</translation>
+    </message>
+    <message>
+        <source>angle %1/%2/%3, speed %4/%5/%6, current %7/%8/%9 (Kp/Ki/Kd)</source>
+        <translation>角度 %1/%2/%3，速度 %4/%5/%6，电流 %7/%8/%9（Kp/Ki/Kd）</translation>
+    </message>
+    <message>
+        <source>Write gains to ROM</source>
+        <translation>写入 PID 参数到 ROM</translation>
+    </message>
+    <message>
+        <source>Write these PID gains to the ROM of drive %1?
+%2</source>
+        <translation>将这些 PID 参数写入驱动 %1 的 ROM？
+%2</translation>
+    </message>
+    <message>
+        <source>ROM is the drive&apos;s flash memory: each write wears it, and the gains stay after power-off. Try them in RAM first; write to ROM once you are satisfied. Each loop is sent once with 0x44 (never retried), then all gains are read back with 0x40.</source>
+        <translation>ROM 是驱动的闪存：每次写入都会造成磨损，且参数在断电后仍然保留。请先在 RAM 中试用，满意后再写入 ROM。每个环用 0x44 只发送一次（绝不重试），然后用 0x40 回读全部参数。</translation>
+    </message>
+    <message>
+        <source>Write to ROM</source>
+        <translation>写入 ROM</translation>
+    </message>
+    <message>
+        <source>Written to the ROM of drive %1 (0x44, acknowledged) and read back with 0x40: the drive holds what was sent.</source>
+        <translation>已写入驱动 %1 的 ROM（0x44，已确认）并用 0x40 回读：驱动保存的就是发送的值。</translation>
+    </message>
+    <message>
+        <source>Written to the RAM of drive %1 and read back: the drive holds what was sent. Lost at power-off unless written to ROM.</source>
+        <translation>已写入驱动 %1 的 RAM 并回读：驱动保存的就是发送的值。除非写入 ROM，否则断电丢失。</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::TuningText</name>
     <message>
         <source>Write gains to ROM</source>
@@ -3276,16 +3586,6 @@
     <message>
         <source>Restore values read at %1</source>
         <translation>恢复 %1 读取的值</translation>
-    </message>
-    <message>
-        <source>Write the values first read from drive %1 at %2 to its RAM now?
-Gains %3 (angle, speed, iq Kp/Ki), acceleration %4 dps/s.</source>
-        <translation>现在把 %2 首次从驱动 %1 读取的值写入其 RAM？
-PID 参数 %3（角度、速度、iq 的 Kp/Ki），加速度 %4 dps/s。</translation>
-    </message>
-    <message>
-        <source>This writes to the drive: its RAM gains and acceleration are replaced at once, and so is your pending edit. ROM is not touched; RAM is lost at power-off.</source>
-        <translation>这会写入驱动：其 RAM 中的 PID 参数和加速度会立即被替换，待写入区的编辑也会被替换。ROM 不受影响；RAM 断电丢失。</translation>
     </message>
     <message>
         <source>Write to RAM</source>
@@ -3314,6 +3614,20 @@ PID 参数 %3（角度、速度、iq 的 Kp/Ki），加速度 %4 dps/s。</trans
     <message>
         <source>Written to the RAM of drive %1 and read back: the drive holds what was sent. Lost at power-off unless written to ROM.</source>
         <translation>已写入驱动 %1 的 RAM 并回读：驱动保存的就是发送的值。除非写入 ROM，否则断电丢失。</translation>
+    </message>
+    <message>
+        <source>Gains %1 (angle, speed, iq Kp/Ki), acceleration %2 dps/s.</source>
+        <translation>参数 %1（角度、速度、iq 的 Kp/Ki），加速度 %2 dps/s。</translation>
+    </message>
+    <message>
+        <source>Write the values first read from drive %1 at %2 to its RAM now?
+%3</source>
+        <translation>现在将 %2 首次从驱动 %1 读取的数值写入其 RAM？
+%3</translation>
+    </message>
+    <message>
+        <source>This writes to the drive: the values in its RAM are replaced at once, and so is your pending edit. ROM is not touched; RAM is lost at power-off.</source>
+        <translation>这会写入驱动：其 RAM 中的值会立即被替换，你的待写入修改也会被替换。ROM 不受影响；RAM 断电丢失。</translation>
     </message>
 </context>
 <context>
@@ -3419,34 +3733,6 @@ PID 参数 %3（角度、速度、iq 的 Kp/Ki），加速度 %4 dps/s。</trans
         <translation>RAM 和 ROM：%1</translation>
     </message>
     <message>
-        <source>Nothing to save: read the drive&apos;s parameters first.</source>
-        <translation>没有可保存的内容：请先读取驱动的参数。</translation>
-    </message>
-    <message>
-        <source>Saved the parameters of drive %1 to %2.</source>
-        <translation>已将驱动 %1 的参数保存到 %2。</translation>
-    </message>
-    <message>
-        <source>Could not save: %1</source>
-        <translation>无法保存：%1</translation>
-    </message>
-    <message>
-        <source>Could not load %1: %2. Nothing was changed.</source>
-        <translation>无法加载 %1：%2。未做任何更改。</translation>
-    </message>
-    <message>
-        <source>Loaded the parameters of drive %1 (%2, firmware %3, saved %4) into the pending edit: nothing is written until you write to RAM or ROM.</source>
-        <translation>已把驱动 %1 的参数（%2，固件 %3，保存于 %4）载入待写入区：在写入 RAM 或 ROM 之前不会写入任何值。</translation>
-    </message>
-    <message>
-        <source>unknown motor</source>
-        <translation>未知电机</translation>
-    </message>
-    <message>
-        <source>Careful: the file comes from a %1, this drive is a %2.</source>
-        <translation>注意：文件来自 %1，而此驱动是 %2。</translation>
-    </message>
-    <message>
         <source>Load a parameter file into the pending edit; nothing is written. Needs a complete read of the drive first.</source>
         <translation>把参数文件载入待写入区；不会写入任何值。需要先完整读取驱动。</translation>
     </message>
@@ -3455,16 +3741,8 @@ PID 参数 %3（角度、速度、iq 的 Kp/Ki），加速度 %4 dps/s。</trans
         <translation>已断开：显示的是最后读取的数值。重新连接并再次读取驱动后才能继续调参。</translation>
     </message>
     <message>
-        <source>Could not read drive %1: %2 Editing and writing stay off until both the gains and the acceleration have been read; press Read from drive to try again.</source>
-        <translation>无法读取驱动 %1：%2 在 PID 参数和加速度都读取成功之前，编辑和写入保持禁用；请按“从驱动读取”重试。</translation>
-    </message>
-    <message>
         <source>Your unsent edit of drive %1 is back in the pending edit; values that differ from the drive are highlighted.</source>
         <translation>驱动 %1 未发送的编辑已放回待写入区；与驱动不同的值以高亮显示。</translation>
-    </message>
-    <message>
-        <source>Nothing was sent: the drive&apos;s gains and acceleration have not both been read on this connection. Read from drive first.</source>
-        <translation>未发送任何内容：本次连接中尚未同时读取到驱动的 PID 参数和加速度。请先从驱动读取。</translation>
     </message>
     <message>
         <source>Restore cancelled: nothing was sent.</source>
@@ -3479,10 +3757,6 @@ PID 参数 %3（角度、速度、iq 的 Kp/Ki），加速度 %4 dps/s。</trans
         <translation>恢复 %1 读取的值…</translation>
     </message>
     <message>
-        <source>Write the gains and acceleration first read from this drive at %1 back to its RAM (asks first), then read back.</source>
-        <translation>把 %1 首次从此驱动读取的 PID 参数和加速度写回其 RAM（会先询问），然后回读。</translation>
-    </message>
-    <message>
         <source>Restore values first read…</source>
         <translation>恢复首次读取的值…</translation>
     </message>
@@ -3491,8 +3765,36 @@ PID 参数 %3（角度、速度、iq 的 Kp/Ki），加速度 %4 dps/s。</trans
         <translation>把本次连接中首次完整读取此驱动得到的值写回其 RAM（会先询问）。</translation>
     </message>
     <message>
-        <source>Nothing was loaded: a file is loaded against the drive&apos;s values, so read the drive&apos;s gains and acceleration first.</source>
-        <translation>未载入任何内容：文件要与驱动的值对照载入，请先读取驱动的 PID 参数和加速度。</translation>
+        <source>PID gains</source>
+        <translation>PID 参数</translation>
+    </message>
+    <message>
+        <source>Drive limits</source>
+        <translation>驱动限值</translation>
+    </message>
+    <message>
+        <source>Could not read drive %1: %2 Editing and writing stay off until every value shown has been read; press Read from drive to try again.</source>
+        <translation>无法读取驱动 %1：%2 在显示的全部数值读取成功之前，编辑和写入保持禁用；请按“从驱动读取”重试。</translation>
+    </message>
+    <message>
+        <source>Nothing was sent: the drive&apos;s values have not all been read on this connection. Read from drive first.</source>
+        <translation>未发送任何命令：本次连接中尚未读取驱动的全部数值。请先从驱动读取。</translation>
+    </message>
+    <message>
+        <source>Nothing was sent: %1</source>
+        <translation>未发送任何命令：%1</translation>
+    </message>
+    <message>
+        <source>The write failed: %1</source>
+        <translation>写入失败：%1</translation>
+    </message>
+    <message>
+        <source>Write the values first read from this drive at %1 back to its RAM (asks first), then read back.</source>
+        <translation>将 %1 首次从此驱动读取的数值写回其 RAM（会先询问），然后回读。</translation>
+    </message>
+    <message>
+        <source>Nothing was loaded: a file is loaded against the drive&apos;s values, so read the drive&apos;s values first.</source>
+        <translation>未加载任何内容：文件是对照驱动的数值加载的，请先读取驱动的数值。</translation>
     </message>
 </context>
 <context>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "ParameterTable.h"
+#include "ParamSetSpec.h"
 
 #include <plot/TelemetryStore.h>
 

@@ -57,6 +57,8 @@ QString ParameterFileText::describe(const record::ParameterFileError &e)
         return tr("%1 is %2, out of range: it must be %3").arg(e.key, e.found, expectation(e));
     case Kind::UnknownSeries:
         return tr("%1 is %2: it must be MS, MF, MG or MH").arg(e.key, e.found);
+    case Kind::UnknownGeneration:
+        return tr("%1 is %2: it must be \"v2.3\" or \"v2.35\"").arg(e.key, e.found);
     case Kind::BadTimestamp:
         return tr("%1 is %2: it must be a date and time such as \"2026-05-04T03:02:01.000Z\"")
             .arg(e.key, e.found);

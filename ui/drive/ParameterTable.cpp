@@ -3,41 +3,37 @@
 #include <panels/StatusColors.h>
 
 #include <QtCore/QEvent>
+#include <QtWidgets/QDoubleSpinBox>
 #include <QtWidgets/QGridLayout>
 #include <QtWidgets/QLabel>
-#include <QtWidgets/QSpinBox>
 #include <QtWidgets/QStyle>
 
-#include <limits>
+#include <cmath>
 
 namespace lk::ui {
 
 namespace {
-constexpr int kGainMax = 255;
 const char kChangedProperty[] = "changed";
-
-qint64 gainOf(const protocol::PidGains &p, int row)
-{
-    const quint8 values[] = {p.angleKp, p.angleKi, p.speedKp, p.speedKi, p.iqKp, p.iqKi};
-    return values[row];
-}
 
 QString dash()
 {
     return QStringLiteral("\u2013");
 }
 
-// An edit field's value while the pending edit is unknown: below every real value, shown as
-// the special value text.
-constexpr int kUnknown = -1;
-
-int maximumOf(ParameterTable::Row row)
+double scaleOf(const ParamField &f)
 {
-    return row == ParameterTable::Accel ? std::numeric_limits<qint32>::max() : kGainMax;
+    return std::pow(10.0, f.decimals);
+}
+
+// An edit field's value while the pending edit is unknown: one step below every real value,
+// shown as the special value text.
+double unknownOf(const ParamField &f)
+{
+    return double(f.min - 1) / scaleOf(f);
 }
 } // namespace
 
-ParameterTable::ParameterTable(QWidget *parent) : QWidget(parent), m_rows(kRowCount)
+ParameterTable::ParameterTable(QWidget *parent) : QWidget(parent)
 {
     auto *grid = new QGridLayout(this);
     grid->setContentsMargins(0, 0, 0, 0);
@@ -48,44 +44,45 @@ ParameterTable::ParameterTable(QWidget *parent) : QWidget(parent), m_rows(kRowCo
         auto *h = new QLabel(QStringLiteral("<b>%1</b>").arg(headers[c].toHtmlEscaped()), this);
         grid->addWidget(h, 0, c);
     }
-    const QString names[] = {tr("Angle loop Kp"), tr("Angle loop Ki"),   tr("Speed loop Kp"),
-                             tr("Speed loop Ki"), tr("Current loop Kp"), tr("Current loop Ki"),
-                             tr("Acceleration")};
-    int gridRow = 1;
-    for (int r = 0; r < kRowCount; ++r) {
-        buildRow(Row(r), names[r], gridRow++);
-    }
     grid->setColumnStretch(4, 1);
     applyChangedStyle();
 }
 
-void ParameterTable::buildRow(Row row, const QString &name, int gridRow)
+void ParameterTable::setFields(const QVector<ParamField> &fields)
+{
+    qDeleteAll(m_rowWidgets);
+    m_rowWidgets.clear();
+    m_rows.clear();
+    m_pendingKnown = false;
+    m_rows.reserve(fields.size());
+    for (int r = 0; r < fields.size(); ++r)
+        buildRow(fields.at(r), r + 1);
+}
+
+void ParameterTable::buildRow(const ParamField &field, int gridRow)
 {
     auto *grid = static_cast<QGridLayout *>(layout());
-    RowWidgets &w = m_rows[row];
-    w.name = new QLabel(name, this);
+    RowWidgets w;
+    w.field = field;
+    w.name = new QLabel(field.name, this);
     w.original = new QLabel(dash(), this);
     w.holds = new QLabel(tr("unknown"), this);
-    w.edit = new QSpinBox(this);
-    w.edit->setObjectName(QStringLiteral("pending_") + rowKey(row));
-    w.holds->setObjectName(QStringLiteral("holds_") + rowKey(row));
+    w.edit = new QDoubleSpinBox(this);
+    w.edit->setObjectName(QStringLiteral("pending_") + field.key);
+    w.holds->setObjectName(QStringLiteral("holds_") + field.key);
     w.original->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     w.holds->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
-    w.edit->setRange(kUnknown, maximumOf(row));
-    w.edit->setValue(kUnknown);
+    w.edit->setDecimals(field.decimals);
+    w.edit->setRange(unknownOf(field), double(field.max) / scaleOf(field));
+    w.edit->setValue(unknownOf(field));
     w.edit->setSpecialValueText(tr("unknown"));
     w.edit->setEnabled(false);
-    if (row == Accel) {
-        w.edit->setSuffix(tr(" dps/s"));
-        w.edit->setSingleStep(1000);
-        w.edit->setToolTip(tr("0x34 writes acceleration to RAM only: protocol V2.3 has no ROM "
-                              "command for it. Some firmware ignores it (read back shows)."));
-    } else {
-        w.edit->setToolTip(tr("0..255"));
-    }
+    w.edit->setSuffix(field.suffix);
+    w.edit->setSingleStep(field.step);
+    w.edit->setToolTip(field.tip);
     w.edit->setKeyboardTracking(false);
     w.edit->installEventFilter(this);
-    connect(w.edit, &QSpinBox::valueChanged, this, [this] {
+    connect(w.edit, &QDoubleSpinBox::valueChanged, this, [this] {
         refreshHighlight();
         emit edited();
     });
@@ -93,61 +90,45 @@ void ParameterTable::buildRow(Row row, const QString &name, int gridRow)
     grid->addWidget(w.original, gridRow, 1);
     grid->addWidget(w.holds, gridRow, 2);
     grid->addWidget(w.edit, gridRow, 3);
+    m_rowWidgets << w.name << w.original << w.holds << w.edit;
+    m_rows << w;
 }
 
-QString ParameterTable::rowKey(Row row)
+qint64 ParameterTable::wireValue(int row) const
 {
-    static const char *keys[] = {"angle_kp", "angle_ki", "speed_kp",  "speed_ki",
-                                 "iq_kp",    "iq_ki",    "accel_dps2"};
-    return QLatin1String(keys[row]);
+    const RowWidgets &w = m_rows.at(row);
+    return qRound64(w.edit->value() * scaleOf(w.field));
 }
 
-TunedLoop ParameterTable::loopOf(Row row)
+void ParameterTable::setHolds(const HeldValues &held)
 {
-    switch (row) {
-    case AngleKp:
-    case AngleKi:
-        return TunedLoop::Angle;
-    case IqKp:
-    case IqKi:
-        return TunedLoop::Current;
-    default:
-        return TunedLoop::Speed; // acceleration shapes the speed ramp
-    }
-}
-
-void ParameterTable::setHolds(const std::optional<protocol::PidGains> &pid,
-                              const std::optional<qint32> &accelDps2)
-{
-    for (int r = 0; r < kRowCount; ++r) {
-        std::optional<qint64> v;
-        if (r == Accel && accelDps2)
-            v = *accelDps2;
-        else if (r != Accel && pid)
-            v = gainOf(*pid, r);
+    for (int r = 0; r < rowCount(); ++r) {
+        const std::optional<qint64> v = held.value(r);
         m_rows[r].holdsValue = v;
-        m_rows[r].holds->setText(v ? QString::number(*v) : tr("unknown"));
+        m_rows[r].holds->setText(v ? ParamSetSpec::shown(m_rows[r].field, *v).trimmed()
+                                   : tr("unknown"));
     }
     refreshHighlight();
 }
 
-void ParameterTable::setOriginal(const std::optional<TuningValues> &values)
+void ParameterTable::setOriginal(const std::optional<ParamValues> &values)
 {
-    for (int r = 0; r < kRowCount; ++r) {
-        QString text = dash();
-        if (values)
-            text = QString::number(r == Accel ? qint64(values->accelDps2) : gainOf(values->pid, r));
-        m_rows[r].original->setText(text);
+    for (int r = 0; r < rowCount(); ++r) {
+        m_rows[r].original->setText(
+            values && r < values->size()
+                ? ParamSetSpec::shown(m_rows[r].field, values->at(r)).trimmed()
+                : dash());
     }
 }
 
-void ParameterTable::setPending(const TuningValues &values)
+void ParameterTable::setPending(const ParamValues &values)
 {
     m_pendingKnown = true;
-    for (int r = 0; r < kRowCount; ++r) {
-        QSignalBlocker block(m_rows[r].edit);
-        m_rows[r].edit->setMinimum(0);
-        m_rows[r].edit->setValue(r == Accel ? values.accelDps2 : int(gainOf(values.pid, r)));
+    for (int r = 0; r < rowCount(); ++r) {
+        RowWidgets &w = m_rows[r];
+        QSignalBlocker block(w.edit);
+        w.edit->setMinimum(double(w.field.min) / scaleOf(w.field));
+        w.edit->setValue(double(values.value(r)) / scaleOf(w.field));
     }
     refreshHighlight();
 }
@@ -155,10 +136,10 @@ void ParameterTable::setPending(const TuningValues &values)
 void ParameterTable::clearPending()
 {
     m_pendingKnown = false;
-    for (int r = 0; r < kRowCount; ++r) {
-        QSignalBlocker block(m_rows[r].edit);
-        m_rows[r].edit->setMinimum(kUnknown);
-        m_rows[r].edit->setValue(kUnknown);
+    for (RowWidgets &w : m_rows) {
+        QSignalBlocker block(w.edit);
+        w.edit->setMinimum(unknownOf(w.field));
+        w.edit->setValue(unknownOf(w.field));
     }
     setEditable(false);
     refreshHighlight();
@@ -170,28 +151,26 @@ void ParameterTable::setEditable(bool editable)
         w.edit->setEnabled(editable && m_pendingKnown);
 }
 
-std::optional<TuningValues> ParameterTable::pending() const
+std::optional<ParamValues> ParameterTable::pending() const
 {
     if (!m_pendingKnown)
         return std::nullopt;
-    auto v = [this](Row r) { return static_cast<quint8>(m_rows.at(r).edit->value()); };
-    TuningValues values;
-    values.pid =
-        protocol::PidGains{v(AngleKp), v(AngleKi), v(SpeedKp), v(SpeedKi), v(IqKp), v(IqKi)};
-    values.accelDps2 = m_rows.at(Accel).edit->value();
+    ParamValues values;
+    for (int r = 0; r < rowCount(); ++r)
+        values << wireValue(r);
     return values;
 }
 
-bool ParameterTable::isChanged(Row row) const
+bool ParameterTable::isChanged(int row) const
 {
     const RowWidgets &w = m_rows.at(row);
-    return m_pendingKnown && (!w.holdsValue || *w.holdsValue != w.edit->value());
+    return m_pendingKnown && (!w.holdsValue || *w.holdsValue != wireValue(row));
 }
 
 bool ParameterTable::anyChanged() const
 {
-    for (int r = 0; r < kRowCount; ++r) {
-        if (isChanged(Row(r)))
+    for (int r = 0; r < rowCount(); ++r) {
+        if (isChanged(r))
             return true;
     }
     return false;
@@ -199,9 +178,9 @@ bool ParameterTable::anyChanged() const
 
 void ParameterTable::refreshHighlight()
 {
-    for (int r = 0; r < kRowCount; ++r) {
+    for (int r = 0; r < rowCount(); ++r) {
         RowWidgets &w = m_rows[r];
-        const bool changed = isChanged(Row(r));
+        const bool changed = isChanged(r);
         if (w.edit->property(kChangedProperty).toBool() == changed)
             continue;
         w.edit->setProperty(kChangedProperty, changed);
@@ -223,7 +202,7 @@ void ParameterTable::changeEvent(QEvent *event)
 void ParameterTable::applyChangedStyle()
 {
     const QString sheet =
-        QStringLiteral("QSpinBox[changed=\"true\"] { background: %1; }")
+        QStringLiteral("QDoubleSpinBox[changed=\"true\"] { background: %1; }")
             .arg(StatusColors::background(StatusColors::Role::Warning, palette()).name());
     if (sheet != styleSheet()) // a style sheet change must not loop through PaletteChange
         setStyleSheet(sheet);
@@ -232,9 +211,9 @@ void ParameterTable::applyChangedStyle()
 bool ParameterTable::eventFilter(QObject *watched, QEvent *event)
 {
     if (event->type() == QEvent::FocusIn) {
-        for (int r = 0; r < kRowCount; ++r) {
-            if (m_rows[r].edit == watched)
-                emit loopFocused(loopOf(Row(r)));
+        for (const RowWidgets &w : std::as_const(m_rows)) {
+            if (w.edit == watched)
+                emit loopFocused(w.field.loop);
         }
     }
     return QWidget::eventFilter(watched, event);

@@ -35,19 +35,17 @@ ConfirmRequest TuningText::romWrite(int id, const protocol::PidGains &pid)
     return q;
 }
 
-ConfirmRequest TuningText::restore(int id, const QTime &readAt, const TuningValues &values)
+ConfirmRequest TuningText::restore(int id, const QTime &readAt, const QString &values)
 {
     ConfirmRequest q;
     q.key = QStringLiteral("restore_first_read");
     q.title = tr("Restore values read at %1").arg(time(readAt));
-    q.question = tr("Write the values first read from drive %1 at %2 to its RAM now?\n"
-                    "Gains %3 (angle, speed, iq Kp/Ki), acceleration %4 dps/s.")
+    q.question = tr("Write the values first read from drive %1 at %2 to its RAM now?\n%3")
                      .arg(id)
                      .arg(time(readAt))
-                     .arg(gains(values.pid))
-                     .arg(values.accelDps2);
-    q.reason = tr("This writes to the drive: its RAM gains and acceleration are replaced at "
-                  "once, and so is your pending edit. ROM is not touched; RAM is lost at "
+                     .arg(values);
+    q.reason = tr("This writes to the drive: the values in its RAM are replaced at once, and "
+                  "so is your pending edit. ROM is not touched; RAM is lost at "
                   "power-off.");
     q.acceptText = tr("Write to RAM");
     return q;

@@ -1,7 +1,6 @@
 #pragma once
 
 #include "ConfirmDialog.h"
-#include "ParameterTable.h"
 
 #include <protocol/Values.h>
 
@@ -30,7 +29,8 @@ public:
     /// "12:03:15".
     static QString time(const QTime &t);
     static ConfirmRequest romWrite(int id, const protocol::PidGains &pid);
-    static ConfirmRequest restore(int id, const QTime &readAt, const TuningValues &values);
+    /// `values`: the values to restore, worded by the drive's parameter set.
+    static ConfirmRequest restore(int id, const QTime &readAt, const QString &values);
     /// Where the read-back differs from what was sent, or did not complete; empty when the
     /// drive holds what was sent.
     static QStringList readBackProblems(const TuningWrite &sent,

@@ -1,17 +1,18 @@
 #include "TuningView.h"
 
 #include "ConfirmDialog.h"
+#include "DriveLimitsView.h"
 #include "DriveText.h"
 #include "LoopPlot.h"
-#include "ParameterFileText.h"
+#include "ParamExchange.h"
 #include "ParameterTable.h"
 #include "RequestTracker.h"
+#include "TuningFile.h"
 #include "TuningText.h"
 
 #include <bus/BusSession.h>
 #include <panels/FileDialogs.h>
 #include <panels/StatusColors.h>
-#include <protocol/RequestBuilder.h>
 #include <record/ParameterSet.h>
 
 #include <QtCore/QDateTime>
@@ -21,6 +22,7 @@
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QPushButton>
+#include <QtWidgets/QTabWidget>
 #include <QtWidgets/QVBoxLayout>
 
 namespace lk::ui {
@@ -42,7 +44,13 @@ QLabel *banner(const QString &name, const QString &style, QWidget *parent)
 TuningView::TuningView(QWidget *parent) : DriveView(parent)
 {
     setObjectName(QStringLiteral("tuning"));
+    m_exchange = new ParamExchange(tracker(), this);
+    m_exchange->setSpec(m_spec);
     buildUi();
+    connect(m_exchange, &ParamExchange::readFinished, this, &TuningView::onReadDone);
+    connect(m_exchange, &ParamExchange::romWritten, this, &TuningView::onRomWritten);
+    connect(m_exchange, &ParamExchange::ramWritten, this,
+            [this](int id) { m_memory[id].ramWritten = true; });
     connect(tracker(), &RequestTracker::pendingChanged, this, &TuningView::refreshEnabled);
     connect(m_table, &ParameterTable::loopFocused, m_plot, &LoopPlot::setLoop);
     connect(m_table, &ParameterTable::edited, this, &TuningView::refreshEnabled);
@@ -60,16 +68,14 @@ void TuningView::buildUi()
     big.setBold(true);
     m_title->setFont(big);
 
-    auto *box = new QGroupBox(tr("PID gains and acceleration"), this);
-    m_table = new ParameterTable(box);
-    auto *accelNote = new QLabel(
-        tr("Gains go to RAM (try: lost at power-off) or ROM (keep). Acceleration is RAM only: "
-           "protocol V2.3 has no command that stores it."),
-        box);
-    accelNote->setWordWrap(true);
-    auto *boxLayout = new QVBoxLayout(box);
+    m_box = new QGroupBox(this);
+    m_table = new ParameterTable(m_box);
+    m_note = new QLabel(m_box);
+    m_note->setObjectName(QStringLiteral("generationNote"));
+    m_note->setWordWrap(true);
+    auto *boxLayout = new QVBoxLayout(m_box);
     boxLayout->addWidget(m_table);
-    boxLayout->addWidget(accelNote);
+    boxLayout->addWidget(m_note);
 
     m_romWarning = banner(QStringLiteral("romWarning"), QString(), this);
     m_mismatch =
@@ -79,14 +85,25 @@ void TuningView::buildUi()
     m_status->setObjectName(QStringLiteral("status"));
     m_status->setWordWrap(true);
 
+    auto *gains = new QWidget(this);
+    auto *gainsLayout = new QVBoxLayout(gains);
+    gainsLayout->addWidget(m_box);
+    gainsLayout->addWidget(buildButtons());
+    gainsLayout->addWidget(m_romWarning);
+    gainsLayout->addWidget(m_mismatch);
+    gainsLayout->addWidget(m_status);
+    gainsLayout->addStretch();
+    // The drive's own limits sit beside the gains: the same read / write / read-back cycle,
+    // but settings of the drive, not of a loop.
+    m_limits = new DriveLimitsView(this);
+    m_tabs = new QTabWidget(this);
+    m_tabs->setObjectName(QStringLiteral("tuningTabs"));
+    m_tabs->addTab(gains, tr("PID gains"));
+    m_tabs->addTab(m_limits, tr("Drive limits"));
+
     auto *left = new QVBoxLayout;
     left->addWidget(m_title);
-    left->addWidget(box);
-    left->addWidget(buildButtons());
-    left->addWidget(m_romWarning);
-    left->addWidget(m_mismatch);
-    left->addWidget(m_status);
-    left->addStretch();
+    left->addWidget(m_tabs, 1);
     auto *leftWidget = new QWidget(this);
     leftWidget->setLayout(left);
     leftWidget->setFixedWidth(kLeftColumnWidth);
@@ -105,12 +122,9 @@ QWidget *TuningView::buildButtons()
         b->setToolTip(tip);
         return b;
     };
-    m_read = make(QStringLiteral("read"), tr("Read from drive"),
-                  tr("read_pid (0x30) and read_accel (0x33)"));
-    m_writeRam = make(QStringLiteral("writeRam"), tr("Write to RAM"),
-                      tr("Try the pending edit: 0x31 and 0x34, lost at power-off; read back."));
-    m_writeRom = make(QStringLiteral("writeRom"), tr("Write to ROM\u2026"),
-                      tr("Keep the gains: 0x32 writes flash (asks first); read back."));
+    m_read = make(QStringLiteral("read"), tr("Read from drive"), QString());
+    m_writeRam = make(QStringLiteral("writeRam"), tr("Write to RAM"), QString());
+    m_writeRom = make(QStringLiteral("writeRom"), tr("Write to ROM\u2026"), QString());
     m_undo = make(QStringLiteral("undo"), QString(), QString());
     refreshRestoreButton();
     m_save = make(QStringLiteral("save"), tr("Save to file\u2026"),
@@ -158,6 +172,45 @@ void TuningView::setTelemetryStore(TelemetryStore *store)
     m_plot->setStore(store);
 }
 
+HeldValues TuningView::driveValues() const
+{
+    return m_exchange->held();
+}
+
+const ParamSetSpec *TuningView::specFor(protocol::Generation generation) const
+{
+    if (generation == protocol::Generation::V2_35)
+        return &m_v235;
+    return &m_v23;
+}
+
+void TuningView::selectSpec()
+{
+    const ParamSetSpec *spec = specFor(motor().generation);
+    if (spec != m_spec || m_table->rowCount() == 0) {
+        m_spec = spec;
+        m_exchange->setSpec(spec);
+        m_table->setFields(spec->fields());
+    }
+    const ParamSetTexts texts = spec->texts();
+    m_box->setTitle(texts.title);
+    m_note->setText(texts.note);
+    m_read->setToolTip(texts.readTip);
+    m_writeRam->setToolTip(texts.ramTip);
+    m_writeRom->setToolTip(texts.romTip);
+}
+
+void TuningView::forgetOtherGeneration()
+{
+    // An ID answered by a drive of the other generation is another drive.
+    for (auto it = m_memory.begin(); it != m_memory.end();) {
+        if (it.key() == driveId() && it->generation != m_spec->generation())
+            it = m_memory.erase(it);
+        else
+            ++it;
+    }
+}
+
 bool TuningView::romWarningShown() const
 {
     return m_romWarningActive;
@@ -182,6 +235,9 @@ void TuningView::contextChanged(Changes changes)
 {
     const bool linkUp = (changes & Change::Connection) && isConnected();
     const bool linkDown = (changes & Change::Connection) && !isConnected();
+    // The generation learned late (MotorInfo) changes the set: values of the other set are void.
+    if (specFor(motor().generation) != m_spec)
+        changes |= Change::Drive;
     if (changes & Change::Session) {
         disconnect(m_telemetry);
         if (session())
@@ -201,15 +257,15 @@ void TuningView::contextChanged(Changes changes)
         keepUnsentEdit();
     }
     if (tracker()->pendingCount() == 0)
-        m_readsOutstanding = 0; // the tracker forgot them with the drive or the link
+        m_exchange->forgetOutstanding(); // the tracker forgot them with the drive or the link
     if (changes & (Change::Session | Change::Drive | Change::Connection))
         m_readComplete = false;
     if (changes & (Change::Session | Change::Drive) || linkUp) {
-        m_holdsPid.reset();
-        m_holdsAccel.reset();
-        m_expected.reset();
+        selectSpec();
+        forgetOtherGeneration();
+        m_exchange->clear();
         m_mismatch->hide();
-        m_table->setHolds(std::nullopt, std::nullopt);
+        m_table->setHolds(m_exchange->held());
         m_table->clearPending(); // never another drive's (or connection's) values
         setStatus(QString());
     }
@@ -222,8 +278,23 @@ void TuningView::contextChanged(Changes changes)
     if (linkDown && hasDrive())
         setStatus(tr("Disconnected: the values shown are the last ones read. Tuning resumes "
                      "after the drive has been read again on the next connection."));
+    forwardContext(changes); // after the gains' read: those go on the bus first
     refreshWarnings();
     refreshEnabled();
+}
+
+void TuningView::forwardContext(Changes changes)
+{
+    if (changes & Change::Session)
+        m_limits->setSession(session());
+    if (changes & Change::Connection)
+        m_limits->setConnected(isConnected());
+    if (changes & (Change::Session | Change::Drive | Change::MotorInfo)) {
+        if (hasDrive())
+            m_limits->setDrive(driveId(), motor());
+        else
+            m_limits->clearDrive();
+    }
 }
 
 void TuningView::keepUnsentEdit()
@@ -243,63 +314,35 @@ void TuningView::readFromDrive()
 
 void TuningView::startRead(bool takePending)
 {
-    const int id = driveId();
     m_takePending = takePending;
-    m_readFailure.clear();
-    m_readsOutstanding += 2;
-    tracker()->send(*protocol::build::plain(protocol::Command::ReadPid, id).request,
-                    [this, id](const bus::RequestResult &r) {
-                        const auto *pid =
-                            r.reply ? std::get_if<protocol::PidGains>(&r.reply->payload) : nullptr;
-                        if (r.ok() && pid) {
-                            m_holdsPid = *pid;
-                        } else {
-                            m_holdsPid.reset(); // what the drive holds is not known now
-                            m_readFailure = DriveText::failure(r);
-                        }
-                        onReadDone(id);
-                    });
-    tracker()->send(*protocol::build::plain(protocol::Command::ReadAccel, id).request,
-                    [this, id](const bus::RequestResult &r) {
-                        const auto *a = r.reply
-                                            ? std::get_if<protocol::Acceleration>(&r.reply->payload)
-                                            : nullptr;
-                        if (r.ok() && a) {
-                            m_holdsAccel = a->dps2;
-                        } else {
-                            m_holdsAccel.reset();
-                            m_readFailure = DriveText::failure(r);
-                        }
-                        onReadDone(id);
-                    });
+    m_exchange->read(driveId());
 }
 
 void TuningView::onReadDone(int id)
 {
-    if (--m_readsOutstanding > 0 || id != driveId())
+    if (id != driveId())
         return;
-    m_readsOutstanding = 0;
-    m_readComplete = m_holdsPid && m_holdsAccel;
+    m_readComplete = m_exchange->complete();
     DriveMemory &mem = m_memory[id];
+    mem.generation = m_spec->generation();
     if (m_readComplete && !mem.firstRead) {
-        mem.firstRead = TuningValues{*m_holdsPid, *m_holdsAccel};
+        mem.firstRead = ParamSetSpec::known(m_exchange->held());
         mem.firstReadAt = QTime::currentTime();
     }
     m_table->setOriginal(mem.firstRead);
-    m_table->setHolds(m_holdsPid, m_holdsAccel);
+    m_table->setHolds(m_exchange->held());
     if (m_readComplete)
         takeReadValues(mem);
     else if (m_takePending)
         m_table->clearPending(); // it showed the drive's values, which are not known now
     m_takePending = false;
-    if (m_expected)
-        checkReadBack();
+    if (const std::optional<SentValues> sent = m_exchange->takeSent())
+        checkReadBack(*sent);
     else if (!m_readComplete)
-        setStatus(tr("Could not read drive %1: %2 Editing and writing stay off until both the "
-                     "gains and the acceleration have been read; press Read from drive to try "
-                     "again.")
+        setStatus(tr("Could not read drive %1: %2 Editing and writing stay off until every "
+                     "value shown has been read; press Read from drive to try again.")
                       .arg(id)
-                      .arg(m_readFailure),
+                      .arg(m_exchange->readFailure()),
                   true);
     else if (m_status->text().isEmpty())
         setStatus(tr("Read from drive %1 at %2.")
@@ -319,7 +362,7 @@ void TuningView::takeReadValues(DriveMemory &mem)
                      "differ from the drive are highlighted.")
                       .arg(driveId()));
     } else if (m_takePending || !m_table->pending()) {
-        m_table->setPending(TuningValues{*m_holdsPid, *m_holdsAccel});
+        m_table->setPending(*ParamSetSpec::known(m_exchange->held()));
     }
 }
 
@@ -343,24 +386,24 @@ bool TuningView::mayWrite()
     if (!canSend() || isBusy())
         return false; // the buttons say so: disabled
     if (!m_readComplete) {
-        setStatus(tr("Nothing was sent: the drive's gains and acceleration have not both been "
-                     "read on this connection. Read from drive first."),
+        setStatus(tr("Nothing was sent: the drive's values have not all been read on this "
+                     "connection. Read from drive first."),
                   true);
         return false;
     }
     return true;
 }
 
-bool TuningView::confirmWrite(WriteKind kind, int id, const TuningValues &values)
+bool TuningView::confirmWrite(WriteKind kind, int id, const ParamValues &values)
 {
     switch (kind) {
     case WriteKind::Ram:
         return true; // RAM is the place to try: lost at power-off
     case WriteKind::Rom:
-        return ConfirmDialog::ask(this, TuningText::romWrite(id, values.pid));
+        return ConfirmDialog::ask(this, m_spec->romQuestion(id, values));
     case WriteKind::RestoreFirstRead:
-        return ConfirmDialog::ask(this,
-                                  TuningText::restore(id, m_memory.value(id).firstReadAt, values));
+        return ConfirmDialog::ask(this, TuningText::restore(id, m_memory.value(id).firstReadAt,
+                                                            m_spec->valuesText(values)));
     }
     return false;
 }
@@ -370,7 +413,7 @@ void TuningView::writeParameters(WriteKind kind)
     if (!mayWrite())
         return;
     const int id = driveId();
-    const std::optional<TuningValues> values =
+    const std::optional<ParamValues> values =
         kind == WriteKind::RestoreFirstRead ? m_memory.value(id).firstRead : m_table->pending();
     if (!values)
         return; // no first read to restore, or no pending edit: nothing to write
@@ -384,93 +427,75 @@ void TuningView::writeParameters(WriteKind kind)
         setStatus(tr("The drive or the connection changed: nothing was sent."), true);
         return;
     }
-    if (kind == WriteKind::RestoreFirstRead)
-        m_table->setPending(*values);
     const bool rom = kind == WriteKind::Rom;
-    TuningWrite expected;
-    expected.rom = rom;
-    expected.pid = values->pid;
-    m_writeFailed = false;
-    m_mismatch->hide();
-    sendWrite(protocol::build::writePid(id, values->pid, rom), rom);
-    if (*m_holdsAccel != values->accelDps2) {
-        expected.accelDps2 = values->accelDps2;
-        sendWrite(protocol::build::writeAcceleration(id, values->accelDps2), false);
-    }
-    m_expected = expected;
-    setStatus(rom ? tr("Writing gains to the ROM of drive %1\u2026").arg(id)
-                  : tr("Writing to the RAM of drive %1\u2026").arg(id));
-    startRead(false);
-}
-
-void TuningView::sendWrite(const protocol::BuildResult &built, bool rom)
-{
-    if (!built.ok()) {
-        setStatus(DriveText::fieldError(built.error), true);
-        m_writeFailed = true;
+    m_takePending = false; // the read-back must not overwrite the pending edit
+    const QString error = m_exchange->write(id, *values, rom);
+    if (!error.isEmpty()) {
+        setStatus(tr("Nothing was sent: %1").arg(error), true);
         return;
     }
-    const int id = built.request->id;
-    const protocol::Command command = built.request->command;
-    const auto *gains = std::get_if<protocol::PidGains>(&built.request->payload);
-    const std::optional<protocol::PidGains> pid =
-        gains ? std::optional<protocol::PidGains>(*gains) : std::nullopt;
-    // A flash write is sent exactly once: a lost reply is reported, never retried.
-    tracker()->send(
-        *built.request,
-        [this, id, command, pid](const bus::RequestResult &r) {
-            if (!r.ok()) {
-                m_writeFailed = true;
-                failed(r);
-                return;
-            }
-            DriveMemory &mem = m_memory[id];
-            if (command == protocol::Command::WritePidRom) {
-                mem.lastRomPid = pid;
-                mem.ramWritten = false;
-            } else if (command == protocol::Command::WritePidRam) {
-                mem.ramWritten = true;
-            }
-        },
-        bus::Priority::Operator, rom ? 0 : -1);
+    if (kind == WriteKind::RestoreFirstRead)
+        m_table->setPending(*values);
+    m_mismatch->hide();
+    setStatus(rom ? tr("Writing gains to the ROM of drive %1\u2026").arg(id)
+                  : tr("Writing to the RAM of drive %1\u2026").arg(id));
+    refreshEnabled();
 }
 
-void TuningView::checkReadBack()
+void TuningView::onRomWritten(int id, const ParamValues &values, const QVector<int> &fields)
 {
-    const TuningWrite sent = *m_expected;
-    m_expected.reset();
-    const QStringList problems =
-        TuningText::readBackProblems(sent, m_holdsPid, m_holdsAccel, m_readComplete);
+    DriveMemory &mem = m_memory[id];
+    if (mem.lastRom != values)
+        mem.romFields.clear();
+    mem.lastRom = values;
+    for (int f : fields) {
+        if (!mem.romFields.contains(f))
+            mem.romFields << f;
+    }
+    mem.ramWritten = false;
+}
+
+void TuningView::checkReadBack(const SentValues &sent)
+{
+    const HeldValues held = m_exchange->held();
+    const QStringList problems = m_spec->readBackProblems(sent, held);
     if (!problems.isEmpty()) {
         m_mismatch->setText(problems.join(QLatin1Char('\n')));
         m_mismatch->show();
     }
-    if (m_writeFailed)
-        return; // the failure is in the status line
-    if (!m_readComplete)
+    const QStringList failures = m_exchange->writeFailures();
+    if (!failures.isEmpty())
+        setStatus(tr("The write failed: %1").arg(failures.join(QLatin1Char(' '))), true);
+    else if (!m_readComplete)
         setStatus(
             tr("Sent to drive %1, but the read-back did not complete (below).").arg(driveId()),
             true);
     else if (!problems.isEmpty())
         setStatus(tr("Written, but the read-back differs (below)."), true);
     else
-        setStatus(TuningText::written(sent, driveId()));
+        setStatus(m_spec->written(sent, driveId()));
 }
 
 void TuningView::refreshWarnings()
 {
     const DriveMemory mem = m_memory.value(driveId());
+    const HeldValues held = m_exchange->held();
+    bool differs = false;
+    for (int f : mem.romFields) {
+        const std::optional<qint64> v = held.value(f);
+        differs = differs || (mem.lastRom && v && *v != mem.lastRom->value(f));
+    }
     QString text;
-    if (mem.lastRomPid && m_holdsPid && *m_holdsPid != *mem.lastRomPid)
+    if (differs)
         text = tr("RAM gains differ from what was last written to ROM (%1): a power cycle "
                   "brings back the ROM values.")
-                   .arg(TuningText::gains(*mem.lastRomPid));
-    else if (!mem.lastRomPid && mem.ramWritten)
+                   .arg(m_spec->fieldsText(*mem.lastRom, mem.romFields));
+    else if (!mem.lastRom && mem.ramWritten)
         text = tr("RAM gains were changed in this session and not written to ROM: they are lost "
                   "at power-off.");
     m_romWarningActive = hasDrive() && !text.isEmpty();
     if (!m_romWarningActive && hasDrive()) {
-        if (mem.lastRomPid)
+        if (mem.lastRom)
             text = tr("RAM holds the gains last written to ROM in this session.");
         else
             text = tr("Nothing written to this drive in this session: RAM holds what the drive "
@@ -493,7 +518,8 @@ void TuningView::refreshEnabled()
     m_writeRam->setEnabled(read && idle && pending);
     m_writeRom->setEnabled(read && idle && pending);
     m_undo->setEnabled(read && idle && m_memory.value(driveId()).firstRead.has_value());
-    m_save->setEnabled(hasDrive() && m_holdsPid.has_value());
+    record::ParameterSet probe;
+    m_save->setEnabled(hasDrive() && m_spec->toFile(m_exchange->held(), probe));
     m_load->setEnabled(read && idle);
     m_table->setEditable(read);
     refreshRestoreButton();
@@ -505,8 +531,8 @@ void TuningView::refreshRestoreButton()
     if (mem.firstRead) {
         const QString at = TuningText::time(mem.firstReadAt);
         m_undo->setText(tr("Restore values read at %1\u2026").arg(at));
-        m_undo->setToolTip(tr("Write the gains and acceleration first read from this drive at "
-                              "%1 back to its RAM (asks first), then read back.")
+        m_undo->setToolTip(tr("Write the values first read from this drive at %1 back to its "
+                              "RAM (asks first), then read back.")
                                .arg(at));
     } else {
         m_undo->setText(tr("Restore values first read\u2026"));
@@ -522,70 +548,30 @@ void TuningView::setStatus(const QString &text, bool error)
                                   : QString());
 }
 
-void TuningView::failed(const bus::RequestResult &result)
-{
-    setStatus(DriveText::failure(result), true);
-}
-
 QString TuningView::saveParameters(const QString &path)
 {
-    if (!hasDrive() || !m_holdsPid) {
-        const QString error = tr("Nothing to save: read the drive's parameters first.");
-        setStatus(error, true);
-        return error;
-    }
-    record::ParameterSet set;
-    set.driveId = driveId();
-    if (const auto &m = motor().model) {
-        set.driverName = m->driverName;
-        set.motorName = m->motorName;
-        set.hardwareVersion = m->hardwareVersion();
-        set.firmwareVersion = m->firmwareVersion();
-    }
-    set.series = series();
-    set.savedAt = QDateTime::currentDateTimeUtc();
-    set.pid = *m_holdsPid;
-    set.accelDps2 = m_holdsAccel;
-    const QString error = set.save(path);
-    if (error.isEmpty())
-        setStatus(tr("Saved the parameters of drive %1 to %2.").arg(driveId()).arg(path));
-    else
-        setStatus(tr("Could not save: %1").arg(error), true);
-    return error;
+    const TuningFileResult r =
+        TuningFile::save(path, *m_spec, m_exchange->held(), driveId(), motor(), series());
+    setStatus(r.status, !r.error.isEmpty());
+    return r.error;
 }
 
 QString TuningView::loadParameters(const QString &path)
 {
     if (!canSend() || !m_readComplete || isBusy()) {
         const QString error = tr("Nothing was loaded: a file is loaded against the drive's "
-                                 "values, so read the drive's gains and acceleration first.");
+                                 "values, so read the drive's values first.");
         setStatus(error, true);
         return error;
     }
-    record::ParameterFileError fault;
-    const std::optional<record::ParameterSet> set = record::ParameterSet::load(path, &fault);
-    if (!set) {
-        const QString error = ParameterFileText::describe(fault);
-        setStatus(tr("Could not load %1: %2. Nothing was changed.").arg(path, error), true);
-        return error;
-    }
-    const std::optional<TuningValues> before = m_table->pending();
-    const qint32 accel = set->accelDps2.value_or(before ? before->accelDps2 : *m_holdsAccel);
-    m_table->setPending(TuningValues{set->pid, accel});
-    QString text = tr("Loaded the parameters of drive %1 (%2, firmware %3, saved %4) into the "
-                      "pending edit: nothing is written until you write to RAM or ROM.")
-                       .arg(set->driveId)
-                       .arg(set->motorName.isEmpty() ? tr("unknown motor") : set->motorName)
-                       .arg(set->firmwareVersion)
-                       .arg(QLocale().toString(set->savedAt.toLocalTime(), QLocale::ShortFormat));
-    const QString here = motor().model ? motor().model->motorName : QString();
-    if (!set->motorName.isEmpty() && !here.isEmpty() && set->motorName != here)
-        text +=
-            QLatin1Char(' ') +
-            tr("Careful: the file comes from a %1, this drive is a %2.").arg(set->motorName, here);
-    setStatus(text);
+    const TuningFileResult r = TuningFile::load(
+        path, *m_spec, m_table->pending().value_or(*ParamSetSpec::known(m_exchange->held())),
+        motor());
+    if (r.values)
+        m_table->setPending(*r.values);
+    setStatus(r.status, !r.error.isEmpty());
     refreshEnabled();
-    return QString();
+    return r.error;
 }
 
 void TuningView::changeEvent(QEvent *event)

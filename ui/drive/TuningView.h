@@ -1,38 +1,43 @@
 #pragma once
 
 #include "DriveView.h"
+#include "ParamSetSpec.h"
 #include "ParameterTable.h"
-#include "TuningText.h"
-
-#include <bus/RequestResult.h>
-#include <protocol/Values.h>
+#include "TuningSetV23.h"
+#include "TuningSetV235.h"
 
 #include <QtCore/QHash>
 #include <QtCore/QTime>
 
 #include <optional>
 
+class QGroupBox;
 class QLabel;
 class QPushButton;
+class QTabWidget;
 
 namespace lk::ui {
 
+class DriveLimitsView;
 class LoopPlot;
+class ParamExchange;
 class TelemetryStore;
 
-/// Tuning of one drive: PID gains (angle, speed, iq; Kp/Ki 0..255) and acceleration. Reads
-/// them from the drive, shows "first read", "drive holds" and the pending edit side by side
-/// with differences highlighted, writes to RAM (try) or ROM (keep, after a confirmation that
-/// says why), and reads back after every write so that what the drive really holds is shown,
-/// mismatches included.
+/// Tuning of one drive, in the set its protocol generation has: on V2.3 PID gains (angle, speed,
+/// iq; Kp/Ki 0..255) and acceleration, on V2.35 Kp/Ki/Kd (0..65535) of the three loops
+/// (ParamIDs 0x96..0x98; the ramps are drive limits there). Reads them from the drive, shows "first
+/// read", "drive holds" and the pending edit side by side with differences highlighted, writes to
+/// RAM (try) or ROM (keep, after a confirmation that says why), and reads back after every write so
+/// that what the drive really holds is shown, mismatches included.
 ///
 /// Never writes what was not read: edits, writes, restores and file loads stay disabled until
-/// a complete read (PID and acceleration both answered) of the selected drive succeeded on
+/// a complete read (every value of the set answered) of the selected drive succeeded on
 /// the current connection; another drive, another session or a reconnection starts over, and
 /// unknown values show as unknown. Unsent edits stay with their drive (kept while another
 /// drive is selected, dropped with the connection). "Restore values read at ..." writes the
 /// values of the first complete read back to RAM after asking. Parameters save to and load
-/// from JSON files. A live plot of the loop being edited stays beside the table.
+/// from JSON files. A live plot of the loop being edited stays beside the table. A second tab
+/// holds the drive's own limits (DriveLimitsView, V2.35 only).
 class TuningView : public DriveView {
     Q_OBJECT
 public:
@@ -43,12 +48,13 @@ public:
     /// the session's telemetryReceived.
     void setTelemetryStore(TelemetryStore *store);
 
-    /// Reads PID and acceleration from the drive (read_pid, read_accel).
+    /// Reads the set from the drive (V2.3: read_pid, read_accel; V2.35: 0x40 per loop).
     void readFromDrive();
-    /// Writes the pending edit to RAM (0x31, 0x34) and reads back.
+    /// Writes the pending edit to RAM (V2.3: 0x31, 0x34; V2.35: 0x42) and reads back.
     void writeToRam();
-    /// Asks, then writes the gains to ROM (0x32, once, never retried) and acceleration to RAM
-    /// (V2.3 has no ROM command for it), then reads back. Declining sends nothing.
+    /// Asks, then writes the gains to ROM (V2.3: 0x32 and acceleration to RAM, which V2.3
+    /// cannot store; V2.35: 0x44 per loop), each frame once and never retried, then reads
+    /// back. Declining sends nothing.
     void writeToRom();
     /// Asks, then writes the values of this drive's first complete read on this connection
     /// back to RAM, and reads back. Declining sends nothing.
@@ -58,15 +64,20 @@ public:
     QString saveParameters(const QString &path);
     /// Loads a file into the pending edit (nothing is written); needs a complete read of the
     /// drive first. A file that cannot be read or is not a valid parameter file changes
-    /// nothing. Returns an error text naming the key and range, empty on success.
+    /// nothing, and so does a file of the other protocol generation. Returns an error text
+    /// naming the key and range (or the generations), empty on success.
     QString loadParameters(const QString &path);
 
     ParameterTable *table() const { return m_table; }
     LoopPlot *plot() const { return m_plot; }
-    std::optional<protocol::PidGains> drivePid() const { return m_holdsPid; }
-    std::optional<qint32> driveAccel() const { return m_holdsAccel; }
-    /// PID and acceleration of the selected drive were both read on this connection: edits
-    /// and writes are possible.
+    /// The drive limits editor (the "Drive limits" tab; V2.35 only).
+    DriveLimitsView *limits() const { return m_limits; }
+    /// The set of the selected drive's generation.
+    const ParamSetSpec &spec() const { return *m_spec; }
+    /// What the drive holds (last read), one per field of spec(); nullopt while unknown.
+    HeldValues driveValues() const;
+    /// Every value of the selected drive's set was read on this connection: edits and writes
+    /// are possible.
     bool readComplete() const { return m_readComplete; }
     /// The "RAM differs from ROM" warning is up (the RAM/ROM line shows it highlighted).
     bool romWarningShown() const;
@@ -87,16 +98,24 @@ private:
     /// What the view remembers about a drive: reads and edits while the connection lasts
     /// (the next connection may reach other drives at the same IDs), writes for the session.
     struct DriveMemory {
-        std::optional<TuningValues> firstRead; ///< first complete read on this connection
+        protocol::Generation generation = protocol::Generation::V2_3; ///< of the values below
+        std::optional<ParamValues> firstRead; ///< first complete read on this connection
         QTime firstReadAt;
-        std::optional<TuningValues> unsentEdit;       ///< kept while another drive was selected
-        std::optional<protocol::PidGains> lastRomPid; ///< last 0x32 this session
+        std::optional<ParamValues> unsentEdit; ///< kept while another drive was selected
+        std::optional<ParamValues> lastRom;    ///< last ROM write this session
+        QVector<int> romFields;                ///< the fields of lastRom that went to ROM
         bool ramWritten = false; ///< RAM gains written this session after the last ROM write
     };
     enum class WriteKind { Ram, Rom, RestoreFirstRead };
 
     void buildUi();
     QWidget *buildButtons();
+    const ParamSetSpec *specFor(protocol::Generation generation) const;
+    /// Shows the set of the selected drive's generation.
+    void selectSpec();
+    void forgetOtherGeneration();
+    /// Keeps the drive limits tab on the same session, drive and connection.
+    void forwardContext(Changes changes);
     void startRead(bool takePending);
     void onReadDone(int id);
     void takeReadValues(DriveMemory &mem);
@@ -104,16 +123,23 @@ private:
     /// Writing is possible now; otherwise says why in the status line.
     bool mayWrite();
     void writeParameters(WriteKind kind);
-    bool confirmWrite(WriteKind kind, int id, const TuningValues &values);
-    void sendWrite(const protocol::BuildResult &built, bool rom);
-    void checkReadBack();
+    bool confirmWrite(WriteKind kind, int id, const ParamValues &values);
+    void onRomWritten(int id, const ParamValues &values, const QVector<int> &fields);
+    void checkReadBack(const SentValues &sent);
     void refreshWarnings();
     void refreshEnabled();
     void refreshRestoreButton();
     void setStatus(const QString &text, bool error = false);
-    void failed(const bus::RequestResult &result);
 
+    TuningSetV23 m_v23;
+    TuningSetV235 m_v235;
+    const ParamSetSpec *m_spec = &m_v23;
+    ParamExchange *m_exchange = nullptr;
     ParameterTable *m_table = nullptr;
+    QGroupBox *m_box = nullptr;
+    QTabWidget *m_tabs = nullptr;
+    DriveLimitsView *m_limits = nullptr;
+    QLabel *m_note = nullptr;
     LoopPlot *m_plot = nullptr;
     QLabel *m_title = nullptr;
     QLabel *m_romWarning = nullptr;
@@ -128,15 +154,9 @@ private:
     QMetaObject::Connection m_telemetry;
 
     QHash<int, DriveMemory> m_memory; ///< per drive ID, for this session
-    std::optional<protocol::PidGains> m_holdsPid;
-    std::optional<qint32> m_holdsAccel;
-    std::optional<TuningWrite> m_expected; ///< what the last write asked for, until read back
     int m_shownId = 0; ///< the drive the table shows (DriveView's ID has already changed)
     bool m_readComplete = false;
-    QString m_readFailure; ///< why the last read did not complete
-    int m_readsOutstanding = 0;
     bool m_takePending = false;
-    bool m_writeFailed = false;
     bool m_romWarningActive = false;
 };
 

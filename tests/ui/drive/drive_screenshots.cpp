@@ -12,6 +12,7 @@
 #include <drive/ParameterTable.h>
 #include <drive/SetpointGenerator.h>
 #include <drive/SetpointPanel.h>
+#include <drive/TuningSetV23.h>
 #include <drive/TuningView.h>
 
 #include <QtCore/QDir>
@@ -49,7 +50,7 @@ bool tuning(SimRig &rig, const QString &dir)
 {
     lk::ui::TuningView view;
     attach(view, rig, 1);
-    if (!QTest::qWaitFor([&] { return view.drivePid().has_value() && !view.isBusy(); }, 10000))
+    if (!QTest::qWaitFor([&] { return view.readComplete() && !view.isBusy(); }, 10000))
         return false;
     // A speed step response to look at, and an edit that differs from the drive.
     rig.session.send(*build::speed(1, 720).request);
@@ -58,8 +59,8 @@ bool tuning(SimRig &rig, const QString &dir)
     QTest::qWait(1200);
     rig.session.send(*build::speed(1, 0).request);
     QTest::qWait(1200);
-    view.table()->editor(lk::ui::ParameterTable::SpeedKp)->setValue(65);
-    view.table()->editor(lk::ui::ParameterTable::SpeedKi)->setValue(30);
+    view.table()->editor(lk::ui::TuningSetV23::SpeedKp)->setValue(65);
+    view.table()->editor(lk::ui::TuningSetV23::SpeedKi)->setValue(30);
     view.plot()->setLoop(lk::ui::TunedLoop::Speed);
     view.plot()->redraw();
     QTest::qWait(200);

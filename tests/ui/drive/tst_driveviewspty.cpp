@@ -9,6 +9,7 @@
 #include <drive/DriveInfoView.h>
 #include <drive/EncoderView.h>
 #include <drive/ParameterTable.h>
+#include <drive/TuningSetV23.h>
 #include <drive/TuningView.h>
 
 #include <bus/BusSession.h>
@@ -125,14 +126,18 @@ void tst_DriveViewsPty::romWriteSurvivesLksimRestart()
         QVERIFY2(rig.start(), qPrintable(rig.sim.errorString()));
         lk::ui::TuningView view;
         attach(view, rig, 1);
-        QTRY_VERIFY_WITH_TIMEOUT(view.drivePid().has_value() && !view.isBusy(), kWaitMs);
-        view.table()->editor(lk::ui::ParameterTable::SpeedKp)->setValue(77);
+        QTRY_VERIFY_WITH_TIMEOUT(view.readComplete() && !view.isBusy(), kWaitMs);
+        view.table()->editor(lk::ui::TuningSetV23::SpeedKp)->setValue(77);
         view.writeToRam();
-        QTRY_VERIFY_WITH_TIMEOUT(!view.isBusy() && view.drivePid()->speedKp == 77, kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(!view.isBusy() &&
+                                     view.driveValues().value(lk::ui::TuningSetV23::SpeedKp) == 77,
+                                 kWaitMs);
         QVERIFY(view.romWarningShown());
-        view.table()->editor(lk::ui::ParameterTable::AngleKp)->setValue(66);
+        view.table()->editor(lk::ui::TuningSetV23::AngleKp)->setValue(66);
         view.writeToRom();
-        QTRY_VERIFY_WITH_TIMEOUT(!view.isBusy() && view.drivePid()->angleKp == 66, kWaitMs);
+        QTRY_VERIFY_WITH_TIMEOUT(!view.isBusy() &&
+                                     view.driveValues().value(lk::ui::TuningSetV23::AngleKp) == 66,
+                                 kWaitMs);
         QVERIFY(!view.romWarningShown());
         QCOMPARE(rig.framesSeen(1, Command::WritePidRom), 1);
     }

@@ -35,6 +35,7 @@ class tst_ParameterSet : public QObject {
 private slots:
     void roundTrip();
     void withoutAcceleration();
+    void generations();
     void refused_data();
     void refused();
     void keysInsideTextAreNotKeys();
@@ -67,6 +68,48 @@ void tst_ParameterSet::withoutAcceleration()
     const auto back = ParameterSet::fromJson(s.toJsonBytes());
     QVERIFY(back);
     QVERIFY(!back->accelDps2);
+}
+
+void tst_ParameterSet::generations()
+{
+    // A file saved before V2.35 support (no "generation") is V2.3.
+    QJsonObject old = sample().toJson();
+    old.remove(QStringLiteral("generation"));
+    auto back = ParameterSet::fromJson(QJsonDocument(old).toJson());
+    QVERIFY(back);
+    QCOMPARE(back->generation, lk::protocol::Generation::V2_3);
+    QCOMPARE(sample().toJson().value(QStringLiteral("generation")).toString(),
+             QStringLiteral("v2.3"));
+
+    ParameterSet v235 = sample();
+    v235.generation = lk::protocol::Generation::V2_35;
+    v235.pidV235 = {1, 2, 3, 400, 500, 600, 65535, 0, 9};
+    ParameterFileError error;
+    back = ParameterSet::fromJson(v235.toJsonBytes(), &error);
+    QVERIFY2(back, qPrintable(error.key));
+    QCOMPARE(back->generation, lk::protocol::Generation::V2_35);
+    QVERIFY(back->pidV235 == v235.pidV235);
+    QVERIFY(!back->accelDps2); // V2.35 has no 0x33/0x34
+    const QJsonObject json = v235.toJson();
+    QCOMPARE(json.value(QStringLiteral("pid")).toObject().value(QStringLiteral("speed_kd")).toInt(),
+             600);
+
+    QJsonObject bad = json;
+    bad.insert(QStringLiteral("generation"), QStringLiteral("v3"));
+    QVERIFY(!ParameterSet::fromJson(QJsonDocument(bad).toJson(), &error));
+    QCOMPARE(int(error.kind), int(Kind::UnknownGeneration));
+    bad = json;
+    bad.insert(QStringLiteral("accel_dps2"), 100);
+    QVERIFY(!ParameterSet::fromJson(QJsonDocument(bad).toJson(), &error));
+    QCOMPARE(error.key, QStringLiteral("accel_dps2"));
+    QJsonObject pid = json.value(QStringLiteral("pid")).toObject();
+    pid.insert(QStringLiteral("iq_kd"), 65536);
+    bad = json;
+    bad.insert(QStringLiteral("pid"), pid);
+    QVERIFY(!ParameterSet::fromJson(QJsonDocument(bad).toJson(), &error));
+    QCOMPARE(int(error.kind), int(Kind::OutOfRange));
+    QCOMPARE(error.key, QStringLiteral("pid.iq_kd"));
+    QCOMPARE(error.max, 65535.0);
 }
 
 void tst_ParameterSet::refused_data()

@@ -3,6 +3,7 @@
 #include <drive/ConfirmDialog.h>
 #include <drive/LoopPlot.h>
 #include <drive/ParameterTable.h>
+#include <drive/TuningSetV23.h>
 #include <drive/TuningView.h>
 #include <plot/TelemetryStore.h>
 #include <record/ParameterSet.h>
@@ -12,9 +13,9 @@
 #include <QtCore/QFile>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
+#include <QtWidgets/QDoubleSpinBox>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QPushButton>
-#include <QtWidgets/QSpinBox>
 
 using lk::drivetest::kWaitMs;
 using lk::drivetest::SimRig;
@@ -24,8 +25,38 @@ using lk::ui::ConfirmDialog;
 using lk::ui::ConfirmRequest;
 using lk::ui::ParameterTable;
 using lk::ui::TuningView;
+using V23 = lk::ui::TuningSetV23;
 
 namespace {
+
+/// What a V2.3 drive holds as the view shows it: the gains when all six are known.
+std::optional<PidGains> drivePid(const TuningView &view)
+{
+    const lk::ui::HeldValues held = view.driveValues();
+    lk::ui::ParamValues values;
+    for (int f = V23::AngleKp; f <= V23::IqKi; ++f) {
+        if (!held.value(f))
+            return std::nullopt;
+        values << *held.value(f);
+    }
+    return V23::pidOf(values);
+}
+
+std::optional<qint32> driveAccel(const TuningView &view)
+{
+    const std::optional<qint64> accel = view.driveValues().value(V23::Accel);
+    return accel ? std::optional<qint32>(qint32(*accel)) : std::nullopt;
+}
+
+PidGains pendingPid(const TuningView &view)
+{
+    return V23::pidOf(*view.table()->pending());
+}
+
+qint32 pendingAccel(const TuningView &view)
+{
+    return qint32(view.table()->pending()->value(V23::Accel));
+}
 
 /// A view on drive `id` of the rig, shown, with its first read done.
 std::unique_ptr<TuningView> openView(SimRig &rig, int id)
@@ -36,14 +67,14 @@ std::unique_ptr<TuningView> openView(SimRig &rig, int id)
     view->setConnected(true);
     view->setDrive(id, rig.motor(id));
     view->show();
-    if (!QTest::qWaitFor([&] { return view->drivePid().has_value() && !view->isBusy(); }, kWaitMs))
+    if (!QTest::qWaitFor([&] { return drivePid(*view).has_value() && !view->isBusy(); }, kWaitMs))
         return nullptr;
     return view;
 }
 
-void edit(TuningView &view, ParameterTable::Row row, int value)
+void edit(TuningView &view, int row, int value)
 {
-    QSpinBox *box = view.table()->editor(row);
+    QDoubleSpinBox *box = view.table()->editor(row);
     box->setFocus();
     box->selectAll();
     QTest::keyClicks(box, QString::number(value));
@@ -77,8 +108,8 @@ void verifyNothingWritable(TuningView &view)
 {
     QVERIFY(!view.readComplete());
     QVERIFY(!view.table()->pending());
-    for (int r = 0; r < ParameterTable::kRowCount; ++r) {
-        QSpinBox *box = view.table()->editor(ParameterTable::Row(r));
+    for (int r = 0; r < view.table()->rowCount(); ++r) {
+        QDoubleSpinBox *box = view.table()->editor(r);
         QCOMPARE(box->text(), QStringLiteral("unknown"));
         QVERIFY(!box->isEnabled());
     }
@@ -122,11 +153,11 @@ void tst_TuningView::readsDriveOnSelection()
     QVERIFY(rig.open());
     auto view = openView(rig, 1);
     QVERIFY(view);
-    QCOMPARE(*view->drivePid(), rig.ramPid(1));
+    QCOMPARE(*drivePid(*view), rig.ramPid(1));
     QVERIFY(view->readComplete());
-    QCOMPARE(view->table()->pending()->pid, rig.ramPid(1));
-    QCOMPARE(view->table()->pending()->accelDps2, 20000);
-    QCOMPARE(*view->driveAccel(), 20000); // the simulator's ROM default
+    QCOMPARE(pendingPid(*view), rig.ramPid(1));
+    QCOMPARE(pendingAccel(*view), 20000);
+    QCOMPARE(*driveAccel(*view), 20000); // the simulator's ROM default
     QVERIFY(!view->table()->anyChanged());
     QVERIFY(!view->romWarningShown());
 }
@@ -143,10 +174,10 @@ void tst_TuningView::failedReadWritesNothing()
     dropNextReplies(rig, 2); // both tries of read_pid; read_accel is answered
     QVERIFY(selectAndWait(view, rig, 1));
     QTRY_VERIFY_WITH_TIMEOUT(!view.isBusy(), kWaitMs);
-    QVERIFY(!view.drivePid());
-    QCOMPARE(view.driveAccel(), std::optional<qint32>(20000));
+    QVERIFY(!drivePid(view));
+    QCOMPARE(driveAccel(view), std::optional<qint32>(20000));
     verifyNothingWritable(view);
-    QCOMPARE(view.table()->holdsLabel(ParameterTable::SpeedKp)->text(), QStringLiteral("unknown"));
+    QCOMPARE(view.table()->holdsLabel(V23::SpeedKp)->text(), QStringLiteral("unknown"));
     QVERIFY2(view.statusText().contains(QStringLiteral("Could not read drive 1")),
              qPrintable(view.statusText()));
 
@@ -164,9 +195,9 @@ void tst_TuningView::failedReadWritesNothing()
     // A read that completes enables everything, with the drive's values.
     QTest::mouseClick(button(view, "read"), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(view.readComplete() && !view.isBusy(), kWaitMs);
-    QCOMPARE(view.table()->pending()->pid, rig.ramPid(1));
+    QCOMPARE(pendingPid(view), rig.ramPid(1));
     QVERIFY(button(view, "writeRam")->isEnabled());
-    QVERIFY(view.table()->editor(ParameterTable::AngleKp)->isEnabled());
+    QVERIFY(view.table()->editor(V23::AngleKp)->isEnabled());
 }
 
 void tst_TuningView::switchingDrivesCarriesNoEdits()
@@ -176,8 +207,8 @@ void tst_TuningView::switchingDrivesCarriesNoEdits()
     auto view = openView(rig, 1);
     QVERIFY(view);
     const int mine = rig.ramPid(1).speedKp == 77 ? 78 : 77;
-    edit(*view, ParameterTable::SpeedKp, mine);
-    QVERIFY(view->table()->isChanged(ParameterTable::SpeedKp));
+    edit(*view, V23::SpeedKp, mine);
+    QVERIFY(view->table()->isChanged(V23::SpeedKp));
 
     // Drive 2 does not answer read_pid: drive 1's edit must not become drive 2's.
     dropNextReplies(rig, 2);
@@ -191,16 +222,16 @@ void tst_TuningView::switchingDrivesCarriesNoEdits()
     // Once read, drive 2 shows its own values and nothing differs.
     QTest::mouseClick(button(*view, "read"), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(view->readComplete() && !view->isBusy(), kWaitMs);
-    QCOMPARE(view->table()->pending()->pid, rig.ramPid(2));
+    QCOMPARE(pendingPid(*view), rig.ramPid(2));
     QVERIFY(!view->table()->anyChanged());
 
     // Back on drive 1 the unsent edit is there again, highlighted, and still unsent.
     QVERIFY(selectAndWait(*view, rig, 1));
     QTRY_VERIFY_WITH_TIMEOUT(view->readComplete() && !view->isBusy(), kWaitMs);
-    QCOMPARE(int(view->table()->pending()->pid.speedKp), mine);
-    QVERIFY(view->table()->isChanged(ParameterTable::SpeedKp));
-    QVERIFY(view->table()->editor(ParameterTable::SpeedKp)->property("changed").toBool());
-    QVERIFY(!view->table()->editor(ParameterTable::AngleKp)->property("changed").toBool());
+    QCOMPARE(int(pendingPid(*view).speedKp), mine);
+    QVERIFY(view->table()->isChanged(V23::SpeedKp));
+    QVERIFY(view->table()->editor(V23::SpeedKp)->property("changed").toBool());
+    QVERIFY(!view->table()->editor(V23::AngleKp)->property("changed").toBool());
     QCOMPARE(writesTo(rig, 1), 0);
 }
 
@@ -210,11 +241,11 @@ void tst_TuningView::reconnectionNeedsFreshRead()
     QVERIFY(rig.open());
     auto view = openView(rig, 1);
     QVERIFY(view);
-    edit(*view, ParameterTable::AngleKi, rig.ramPid(1).angleKi == 9 ? 10 : 9);
+    edit(*view, V23::AngleKi, rig.ramPid(1).angleKi == 9 ? 10 : 9);
     view->setConnected(false);
     QVERIFY(!view->readComplete());
-    QVERIFY(view->drivePid()); // the last values read stay on show
-    QVERIFY(!view->table()->editor(ParameterTable::AngleKi)->isEnabled());
+    QVERIFY(drivePid(*view)); // the last values read stay on show
+    QVERIFY(!view->table()->editor(V23::AngleKi)->isEnabled());
     QVERIFY(!button(*view, "writeRam")->isEnabled());
 
     // The new connection's read fails: what was read on the old one does not count.
@@ -224,7 +255,7 @@ void tst_TuningView::reconnectionNeedsFreshRead()
     QVERIFY(read.wait(kWaitMs) || !read.isEmpty());
     QTRY_VERIFY_WITH_TIMEOUT(!view->isBusy(), kWaitMs);
     verifyNothingWritable(*view);
-    QVERIFY(!view->drivePid());
+    QVERIFY(!drivePid(*view));
     view->writeToRam();
     QVERIFY(rig.barrier(1));
     QCOMPARE(writesTo(rig, 1), 0);
@@ -260,13 +291,13 @@ void tst_TuningView::ramWriteIsLostOnRestart()
     auto view = openView(rig, 1);
     QVERIFY(view);
     const PidGains rom = rig.romPid(1);
-    edit(*view, ParameterTable::SpeedKp, 77);
-    edit(*view, ParameterTable::Accel, 15000);
+    edit(*view, V23::SpeedKp, 77);
+    edit(*view, V23::Accel, 15000);
     QTest::mouseClick(button(*view, "writeRam"), Qt::LeftButton);
     QTRY_COMPARE_WITH_TIMEOUT(rig.ramPid(1).speedKp, 77, kWaitMs);
     // Read back: the view shows what the drive holds now.
-    QTRY_VERIFY_WITH_TIMEOUT(!view->isBusy() && view->drivePid()->speedKp == 77, kWaitMs);
-    QCOMPARE(*view->driveAccel(), 15000);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isBusy() && drivePid(*view)->speedKp == 77, kWaitMs);
+    QCOMPARE(*driveAccel(*view), 15000);
     QVERIFY(view->mismatchText().isEmpty());
     QVERIFY(view->romWarningShown()); // RAM written, not in ROM
     QCOMPARE(rig.count(1, Command::WritePidRom), 0);
@@ -284,16 +315,16 @@ void tst_TuningView::ignoredAccelerationIsShownAsMismatch()
     QVERIFY(rig.open());
     auto view = openView(rig, 1);
     QVERIFY(view);
-    QCOMPARE(*view->driveAccel(), 0);
-    edit(*view, ParameterTable::SpeedKp, 66);
-    edit(*view, ParameterTable::Accel, 15000);
+    QCOMPARE(*driveAccel(*view), 0);
+    edit(*view, V23::SpeedKp, 66);
+    edit(*view, V23::Accel, 15000);
     QTest::mouseClick(button(*view, "writeRam"), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(!view->isBusy() && !view->mismatchText().isEmpty(), kWaitMs);
     QVERIFY2(
         view->mismatchText().contains(QStringLiteral("acceleration 0 dps/s after 15000 dps/s")),
         qPrintable(view->mismatchText()));
     QVERIFY(!view->mismatchText().contains(QStringLiteral("gains"))); // the gains did land
-    QCOMPARE(view->drivePid()->speedKp, 66);
+    QCOMPARE(drivePid(*view)->speedKp, 66);
     QCOMPARE(rig.count(1, Command::WriteAccelRam), 1);
 }
 
@@ -308,7 +339,7 @@ void tst_TuningView::romWriteAsksAndSurvivesRestart()
         asked.append(q);
         return true;
     });
-    edit(*view, ParameterTable::AngleKp, 88);
+    edit(*view, V23::AngleKp, 88);
     QTest::mouseClick(button(*view, "writeRom"), Qt::LeftButton);
     QCOMPARE(asked.size(), 1);
     QCOMPARE(asked.first().key, QStringLiteral("write_pid_rom"));
@@ -331,9 +362,9 @@ void tst_TuningView::romWriteAsksAndSurvivesRestart()
     QCOMPARE(rig.ramPid(2).angleKp, 88);
 
     // A later RAM-only change brings the warning up again.
-    edit(*view, ParameterTable::AngleKp, 90);
+    edit(*view, V23::AngleKp, 90);
     QTest::mouseClick(button(*view, "writeRam"), Qt::LeftButton);
-    QTRY_VERIFY_WITH_TIMEOUT(!view->isBusy() && view->drivePid()->angleKp == 90, kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isBusy() && drivePid(*view)->angleKp == 90, kWaitMs);
     QVERIFY(view->romWarningShown());
     QCOMPARE(asked.size(), 1);
 }
@@ -350,7 +381,7 @@ void tst_TuningView::declinedRomWriteSendsNothing()
         return false;
     });
     const PidGains before = rig.ramPid(1);
-    edit(*view, ParameterTable::IqKi, 12);
+    edit(*view, V23::IqKi, 12);
     QTest::mouseClick(button(*view, "writeRom"), Qt::LeftButton);
     QCOMPARE(asked, 1);
     QVERIFY(view->statusText().contains(QStringLiteral("nothing was sent")));
@@ -359,7 +390,7 @@ void tst_TuningView::declinedRomWriteSendsNothing()
     QCOMPARE(rig.count(1, Command::WritePidRam), 0);
     QCOMPARE(rig.count(1, Command::WriteAccelRam), 0);
     QCOMPARE(rig.ramPid(1), before);
-    QVERIFY(view->table()->isChanged(ParameterTable::IqKi)); // the edit is kept
+    QVERIFY(view->table()->isChanged(V23::IqKi)); // the edit is kept
 }
 
 void tst_TuningView::restoreNamesTimeAndAsks()
@@ -377,7 +408,7 @@ void tst_TuningView::restoreNamesTimeAndAsks()
     const QTime at = QTime::fromString(text.mid(23, 8), QStringLiteral("HH:mm:ss"));
     QVERIFY2(at.isValid() && at >= before.addSecs(-1), qPrintable(text));
 
-    edit(*view, ParameterTable::SpeedKi, original.speedKi == 5 ? 6 : 5);
+    edit(*view, V23::SpeedKi, original.speedKi == 5 ? 6 : 5);
     QTest::mouseClick(button(*view, "writeRam"), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(rig.ramPid(4).speedKi != original.speedKi, kWaitMs);
     QTRY_VERIFY_WITH_TIMEOUT(!view->isBusy(), kWaitMs);
@@ -411,7 +442,7 @@ void tst_TuningView::restoreNamesTimeAndAsks()
     QTest::mouseClick(restore, Qt::LeftButton);
     QCOMPARE(asked.size(), 2);
     QTRY_COMPARE_WITH_TIMEOUT(rig.ramPid(4), original, kWaitMs);
-    QTRY_VERIFY_WITH_TIMEOUT(!view->isBusy() && *view->drivePid() == original, kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(!view->isBusy() && *drivePid(*view) == original, kWaitMs);
 }
 
 void tst_TuningView::differencesHighlighted()
@@ -420,12 +451,12 @@ void tst_TuningView::differencesHighlighted()
     QVERIFY(rig.open());
     auto view = openView(rig, 1);
     QVERIFY(view);
-    QSpinBox *box = view->table()->editor(ParameterTable::AngleKi);
+    QDoubleSpinBox *box = view->table()->editor(V23::AngleKi);
     QVERIFY(!box->property("changed").toBool());
-    edit(*view, ParameterTable::AngleKi, box->value() + 1);
-    QVERIFY(view->table()->isChanged(ParameterTable::AngleKi));
+    edit(*view, V23::AngleKi, int(box->value()) + 1);
+    QVERIFY(view->table()->isChanged(V23::AngleKi));
     QVERIFY(box->property("changed").toBool());
-    QVERIFY(!view->table()->isChanged(ParameterTable::AngleKp));
+    QVERIFY(!view->table()->isChanged(V23::AngleKp));
     QTest::mouseClick(button(*view, "writeRam"), Qt::LeftButton);
     QTRY_VERIFY_WITH_TIMEOUT(!view->isBusy() && !view->table()->anyChanged(), kWaitMs);
     QVERIFY(!box->property("changed").toBool());
@@ -435,10 +466,10 @@ void tst_TuningView::plotFollowsEditedLoop_data()
 {
     QTest::addColumn<int>("row");
     QTest::addColumn<int>("loop");
-    QTest::newRow("angle Kp") << int(ParameterTable::AngleKp) << int(lk::ui::TunedLoop::Angle);
-    QTest::newRow("speed Ki") << int(ParameterTable::SpeedKi) << int(lk::ui::TunedLoop::Speed);
-    QTest::newRow("iq Kp") << int(ParameterTable::IqKp) << int(lk::ui::TunedLoop::Current);
-    QTest::newRow("accel") << int(ParameterTable::Accel) << int(lk::ui::TunedLoop::Speed);
+    QTest::newRow("angle Kp") << int(V23::AngleKp) << int(lk::ui::TunedLoop::Angle);
+    QTest::newRow("speed Ki") << int(V23::SpeedKi) << int(lk::ui::TunedLoop::Speed);
+    QTest::newRow("iq Kp") << int(V23::IqKp) << int(lk::ui::TunedLoop::Current);
+    QTest::newRow("accel") << int(V23::Accel) << int(lk::ui::TunedLoop::Speed);
 }
 
 void tst_TuningView::plotFollowsEditedLoop()
@@ -455,7 +486,7 @@ void tst_TuningView::plotFollowsEditedLoop()
                                                                 : lk::ui::TunedLoop::Angle);
     if (QWidget *focus = QApplication::focusWidget())
         focus->clearFocus(); // the first field may hold the focus since the window opened
-    view->table()->editor(ParameterTable::Row(row))->setFocus();
+    view->table()->editor(row)->setFocus();
     QTRY_COMPARE(int(view->plot()->loop()), loop);
     // The plot draws what the session's telemetry brings for the drive.
     rig.session.startPolling(lk::bus::PollPlan::standard({1}, 50));
@@ -489,10 +520,10 @@ void tst_TuningView::saveAndLoadParameters()
     const QString otherPath = dir.filePath(QStringLiteral("other.json"));
     QCOMPARE(other.save(otherPath), QString());
     QCOMPARE(view->loadParameters(otherPath), QString());
-    QCOMPARE(view->table()->pending()->pid.speedKp, 11);
-    QCOMPARE(view->table()->pending()->accelDps2, 1234);
-    QVERIFY(view->table()->isChanged(ParameterTable::SpeedKp));
-    QVERIFY(view->table()->editor(ParameterTable::SpeedKp)->property("changed").toBool());
+    QCOMPARE(pendingPid(*view).speedKp, 11);
+    QCOMPARE(pendingAccel(*view), 1234);
+    QVERIFY(view->table()->isChanged(V23::SpeedKp));
+    QVERIFY(view->table()->editor(V23::SpeedKp)->property("changed").toBool());
     QVERIFY(rig.barrier(1));
     QCOMPARE(rig.count(1, Command::WritePidRam), 0);
     QCOMPARE(rig.count(1, Command::WriteAccelRam), 0);
@@ -542,14 +573,14 @@ void tst_TuningView::badFileChangesNothing()
     QVERIFY(f.open(QIODevice::WriteOnly));
     f.write(content);
     f.close();
-    const PidGains pending = view->table()->pending()->pid;
-    const qint32 accel = view->table()->pending()->accelDps2;
+    const PidGains pending = pendingPid(*view);
+    const qint32 accel = pendingAccel(*view);
     const QString error = view->loadParameters(path);
     QVERIFY2(error.contains(says), qPrintable(error));
     QVERIFY2(view->statusText().contains(says), qPrintable(view->statusText()));
     QVERIFY(view->statusText().contains(QStringLiteral("Nothing was changed")));
-    QCOMPARE(view->table()->pending()->pid, pending);
-    QCOMPARE(view->table()->pending()->accelDps2, accel);
+    QCOMPARE(pendingPid(*view), pending);
+    QCOMPARE(pendingAccel(*view), accel);
 }
 
 void tst_TuningView::disconnectedDisablesWrites()
