@@ -71,6 +71,8 @@ void BrakePanel::setDrive(int id, const bus::KnownMotor &motor, bool canSend)
     m_canSend = canSend;
     m_absence =
         id > 0 ? GenerationNote::absence(motor, Command::Brake, tr("brake control")) : QString();
+    if (!canSend)
+        m_busy = false; // the view forgets pending requests when the link goes: none is awaited
     if (other) {
         // What was read or in flight for another drive says nothing about this one.
         m_state.reset();

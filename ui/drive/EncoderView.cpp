@@ -15,8 +15,6 @@
 
 #include <QtCore/QTime>
 
-#include <cmath>
-
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QDoubleSpinBox>
 #include <QtWidgets/QFormLayout>
@@ -27,6 +25,8 @@
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QSpinBox>
 #include <QtWidgets/QVBoxLayout>
+
+#include <cmath>
 
 namespace lk::ui {
 
@@ -197,10 +197,10 @@ void EncoderView::setEncoderResolutions(EncoderResolutions *resolutions)
     if (m_resolutions)
         disconnect(m_resolutions, nullptr, this, nullptr);
     m_resolutions = resolutions ? resolutions : m_ownResolutions.get();
-    if (m_resolutions == m_ownResolutions.get()) {
+    const bool own = m_resolutions == m_ownResolutions.get();
+    m_ownResolutions->setSession(own ? session() : nullptr); // a shared one is fed instead
+    if (own)
         m_ownResolutions->setSettingsStore(m_store);
-        m_ownResolutions->setSession(session());
-    }
     connect(m_resolutions, &EncoderResolutions::changed, this, [this](int id) {
         if (id != driveId())
             return;
