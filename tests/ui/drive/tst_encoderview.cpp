@@ -307,8 +307,8 @@ void tst_EncoderView::resolutionRaisedFromData()
     QVERIFY(turnPast(rig, 3, 720, 400));
     QTRY_COMPARE_WITH_TIMEOUT(view->encoderBits(), 16, kWaitMs);
     QCOMPARE(view->countsPerTurn(), 65536);
-    QTRY_VERIFY_WITH_TIMEOUT(labelText(*view, "encoderValue").contains(" of 65536 (16-bit, from data)"),
-                             kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        labelText(*view, "encoderValue").contains(" of 65536 (16-bit, from data)"), kWaitMs);
     const auto *combo = view->findChild<QComboBox *>(QStringLiteral("encoderBits"));
     QCOMPARE(combo->currentData().toInt(), 16);
 }
