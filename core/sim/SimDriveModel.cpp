@@ -4,6 +4,7 @@ namespace lk::sim {
 
 namespace {
 constexpr int kNameSize = 20; // 0x12 name fields are 20 bytes
+constexpr int kMs235EncoderBits = 16;
 
 QString driverNameFor(const QString &motorName)
 {
@@ -16,8 +17,13 @@ QString driverNameFor(const QString &motorName)
 motor::ModelNameInfo SimDriveModel::nameInfo() const
 {
     motor::ModelNameInfo info = motor::ModelNameInfo::parse(motorName);
+    // A real MS4015 on firmware 2.35 reports encoder values up to 43388 (V2.35.md section 12):
+    // its wire range is 16 bits, not the series default.
     if (!info.encoderBitsFromName)
-        info.encoderBits = motor::defaultEncoderBits(series);
+        info.encoderBits =
+            series == protocol::Series::MS && generation == protocol::Generation::V2_35
+                ? kMs235EncoderBits
+                : motor::defaultEncoderBits(series);
     info.series = series; // the drive's series decides, whatever the name says
     return info;
 }

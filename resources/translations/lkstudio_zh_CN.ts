@@ -2,6 +2,17 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>GenerationNote</name>
+    <message>
+        <source>The protocol generation of this drive is not known (its model was not read), so %1 (%2), a V2.35 command, is not offered. Nothing is sent.</source>
+        <translation>此驱动的协议版本未知（未读到其型号），因此不提供 V2.35 命令 %1 (%2)。不发送任何命令。</translation>
+    </message>
+    <message>
+        <source>This drive speaks protocol %1, which has no %2 command (%3): it came with V2.35 (firmware 2.35 and later). Nothing is sent.</source>
+        <translation>此驱动使用协议 %1，该协议没有%2命令 (%3)：它随 V2.35（固件 2.35 及更高版本）引入。不发送任何命令。</translation>
+    </message>
+</context>
+<context>
     <name>lk::bus::BusSession</name>
     <message>
         <source>session closed</source>
@@ -612,6 +623,153 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::BrakePanel</name>
+    <message>
+        <source>Brake (0x8C)</source>
+        <translation>抱闸 (0x8C)</translation>
+    </message>
+    <message>
+        <source>Read</source>
+        <translation>读取</translation>
+    </message>
+    <message>
+        <source>0x8C with 0x10: reads the brake state, changes nothing</source>
+        <translation>0x8C 附带 0x10：读取抱闸状态，不做任何更改</translation>
+    </message>
+    <message>
+        <source>Engage</source>
+        <translation>抱闸</translation>
+    </message>
+    <message>
+        <source>0x8C 0x00: the brake is unpowered and holds the shaft</source>
+        <translation>0x8C 0x00：抱闸断电并锁住轴</translation>
+    </message>
+    <message>
+        <source>Release…</source>
+        <translation>松开…</translation>
+    </message>
+    <message>
+        <source>0x8C 0x01: the brake is powered and lets the shaft turn</source>
+        <translation>0x8C 0x01：抱闸通电，轴可以转动</translation>
+    </message>
+    <message>
+        <source>brake control</source>
+        <translation>抱闸控制</translation>
+    </message>
+    <message>
+        <source>No drive selected.</source>
+        <translation>未选择驱动。</translation>
+    </message>
+    <message>
+        <source>Brake state: not read yet.</source>
+        <translation>抱闸状态：尚未读取。</translation>
+    </message>
+    <message>
+        <source>engaged (unpowered, holding)</source>
+        <translation>已抱闸（断电，锁住）</translation>
+    </message>
+    <message>
+        <source>released (powered, the shaft is free)</source>
+        <translation>已松开（通电，轴可自由转动）</translation>
+    </message>
+    <message>
+        <source>unknown code 0x%1</source>
+        <translation>未知代码 0x%1</translation>
+    </message>
+    <message>
+        <source>Brake state: %1.</source>
+        <translation>抱闸状态：%1。</translation>
+    </message>
+    <message>
+        <source>Read the brake of drive %1: %2.</source>
+        <translation>已读取驱动 %1 的抱闸：%2。</translation>
+    </message>
+    <message>
+        <source>Release the brake</source>
+        <translation>松开抱闸</translation>
+    </message>
+    <message>
+        <source>Release the brake of drive %1?</source>
+        <translation>松开驱动 %1 的抱闸？</translation>
+    </message>
+    <message>
+        <source>The shaft is then held only by the motor. A vertical axis (or any load that gravity or a spring pulls) drops or turns as soon as the brake lets go unless the motor holds it.</source>
+        <translation>之后轴只由电机保持。垂直轴（或任何受重力或弹簧拉动的负载）在抱闸松开的瞬间会下坠或转动，除非电机将其保持住。</translation>
+    </message>
+    <message>
+        <source>Release brake</source>
+        <translation>松开抱闸</translation>
+    </message>
+    <message>
+        <source>Cancelled: the brake was not released, nothing was sent.</source>
+        <translation>已取消：抱闸未松开，未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>The drive or the connection changed: nothing was sent.</source>
+        <translation>驱动或连接已改变：未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Reading whether the motor of drive %1 is on…</source>
+        <translation>正在读取驱动 %1 的电机是否开启…</translation>
+    </message>
+    <message>
+        <source>Refused: could not read whether the motor is on, so the brake was not released. Nothing sent. %1</source>
+        <translation>已拒绝：无法读取电机是否开启，因此未松开抱闸。未发送任何命令。%1</translation>
+    </message>
+    <message>
+        <source>The motor of drive %1 is OFF. Release the brake anyway?</source>
+        <translation>驱动 %1 的电机处于关闭状态。仍要松开抱闸吗？</translation>
+    </message>
+    <message>
+        <source>Whether the motor of drive %1 is on cannot be told (state code 0x%2). Release the brake anyway?</source>
+        <translation>无法判断驱动 %1 的电机是否开启（状态代码 0x%2）。仍要松开抱闸吗？</translation>
+    </message>
+    <message>
+        <source>Release the brake with the motor off</source>
+        <translation>在电机关闭时松开抱闸</translation>
+    </message>
+    <message>
+        <source>Nothing holds the shaft once the brake lets go: a vertical axis falls, a loaded axis turns freely. Support the load or turn the motor on first.</source>
+        <translation>抱闸一旦松开，就没有任何东西保持轴：垂直轴会坠落，带负载的轴会自由转动。请先支撑负载或开启电机。</translation>
+    </message>
+    <message>
+        <source>Release with the motor off</source>
+        <translation>在电机关闭时松开</translation>
+    </message>
+    <message>
+        <source>Refused: the motor is off, so the brake was not released. Nothing sent.</source>
+        <translation>已拒绝：电机已关闭，因此未松开抱闸。未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>release (0x8C 0x01)</source>
+        <translation>松开 (0x8C 0x01)</translation>
+    </message>
+    <message>
+        <source>engage (0x8C 0x00)</source>
+        <translation>抱闸 (0x8C 0x00)</translation>
+    </message>
+    <message>
+        <source>Sent %1 to drive %2…</source>
+        <translation>已向驱动 %2 发送%1…</translation>
+    </message>
+    <message>
+        <source>Sent %1 to drive %2; it answered: %3.</source>
+        <translation>已向驱动 %2 发送%1；驱动应答：%3。</translation>
+    </message>
+    <message>
+        <source>Sent %1 to drive %2; %3</source>
+        <translation>已向驱动 %2 发送%1；%3</translation>
+    </message>
+    <message>
+        <source>Read back: %1.</source>
+        <translation>回读：%1。</translation>
+    </message>
+    <message>
+        <source>Reading it back failed: %1</source>
+        <translation>回读失败：%1</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::BusController</name>
     <message>
         <source>Reconnected: %1</source>
@@ -1118,10 +1276,6 @@
         <translation>固件 %1，硬件 %2</translation>
     </message>
     <message>
-        <source>%1-bit encoder</source>
-        <translation>%1 位编码器</translation>
-    </message>
-    <message>
         <source>Power (relative, MS)</source>
         <translation>输出功率（相对值，MS）</translation>
     </message>
@@ -1160,10 +1314,6 @@
     <message>
         <source>Rotor: %1</source>
         <translation>转子：%1</translation>
-    </message>
-    <message>
-        <source>%1 of %2</source>
-        <translation>%1 / %2</translation>
     </message>
     <message>
         <source>Not read yet</source>
@@ -1791,6 +1941,57 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::EncoderResolutions</name>
+    <message>
+        <source>%1-bit, from the model name</source>
+        <translation>%1 位，取自型号名</translation>
+    </message>
+    <message>
+        <source>%1-bit, series default</source>
+        <translation>%1 位，系列默认值</translation>
+    </message>
+    <message>
+        <source>%1-bit, a guess</source>
+        <translation>%1 位，推测值</translation>
+    </message>
+    <message>
+        <source>%1-bit, from data</source>
+        <translation>%1 位，取自数据</translation>
+    </message>
+    <message>
+        <source>%1-bit, your setting</source>
+        <translation>%1 位，您的设置</translation>
+    </message>
+    <message>
+        <source>%1 of %2 (%3)</source>
+        <translation>%1 / %2（%3）</translation>
+    </message>
+    <message>
+        <source>from the model name &quot;%1&quot;</source>
+        <translation>取自型号名“%1”</translation>
+    </message>
+    <message>
+        <source>the %1 series default</source>
+        <translation>%1 系列的默认值</translation>
+    </message>
+    <message>
+        <source>a guess: the model does not say</source>
+        <translation>推测值：型号名中没有说明</translation>
+    </message>
+    <message>
+        <source>from data: the drive reported %1, beyond the range assumed before</source>
+        <translation>取自数据：驱动报告了 %1，超出了此前假定的范围</translation>
+    </message>
+    <message>
+        <source>your setting for this drive</source>
+        <translation>您为此驱动设置的值</translation>
+    </message>
+    <message>
+        <source>but the drive reported %1, beyond this range</source>
+        <translation>但驱动报告了 %1，超出了此范围</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::EncoderView</name>
     <message>
         <source>What was done (this session)</source>
@@ -1859,14 +2060,6 @@
     <message>
         <source>from the model name &quot;%1&quot;</source>
         <translation>取自型号名“%1”</translation>
-    </message>
-    <message>
-        <source>the %1 series default</source>
-        <translation>%1 系列的默认值</translation>
-    </message>
-    <message>
-        <source>a guess: the model does not say</source>
-        <translation>推测值：型号名中没有说明</translation>
     </message>
     <message>
         <source>no gearbox in the model name</source>
@@ -1979,6 +2172,42 @@
     <message>
         <source>The drive reports the new zero as encoder %1.</source>
         <translation>驱动报告新零点为编码器 %1。</translation>
+    </message>
+    <message>
+        <source>Clear turn count (0x93)…</source>
+        <translation>清除圈数 (0x93)…</translation>
+    </message>
+    <message>
+        <source>Whole turns of the multi-turn angle are dropped; the angle within the present turn stays. Checked with read_multi_turn (0x92).</source>
+        <translation>多圈角度中的整圈被清除；当前圈内的角度保持不变。用 read_multi_turn (0x92) 检查。</translation>
+    </message>
+    <message>
+        <source>clear turn count</source>
+        <translation>清除圈数</translation>
+    </message>
+    <message>
+        <source>Clear turn count</source>
+        <translation>清除圈数</translation>
+    </message>
+    <message>
+        <source>Set the turn count of drive %1 to 0?</source>
+        <translation>将驱动 %1 的圈数设为 0？</translation>
+    </message>
+    <message>
+        <source>The multi-turn angle keeps only the angle within the present turn, so multi-turn position commands go elsewhere afterwards. The V2.35 document does not say whether this survives a power cycle (RAM or ROM) or whether the motor must be off: stop the motor first.</source>
+        <translation>多圈角度只保留当前圈内的角度，因此之后的多圈位置命令会走到别的位置。V2.35 文档没有说明这在断电重启后是否保留（RAM 还是 ROM），也没有说明电机是否必须关闭：请先停止电机。</translation>
+    </message>
+    <message>
+        <source>Clearing the turn count of drive %1…</source>
+        <translation>正在清除驱动 %1 的圈数…</translation>
+    </message>
+    <message>
+        <source>Turn count of drive %1 cleared: the multi-turn angle reads %2° (was %3°).</source>
+        <translation>驱动 %1 的圈数已清除：多圈角度读数为 %2°（原为 %3°）。</translation>
+    </message>
+    <message>
+        <source>Drive %1 acknowledged 0x93, but its multi-turn angle reads %2° (was %3°): more than one turn, so the turn count was not cleared.</source>
+        <translation>驱动 %1 确认了 0x93，但其多圈角度读数为 %2°（原为 %3°）：超过一圈，因此圈数没有被清除。</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,6 @@
 #include "ControlView.h"
 
+#include "BrakePanel.h"
 #include "ControlModePanel.h"
 #include "DriveSettingsStore.h"
 #include "DriveText.h"
@@ -58,6 +59,11 @@ ControlView::ControlView(QWidget *parent)
     m_jog = new JogPanel(this);
     m_limitsEditor = new SoftLimitsEditor(this);
     m_setpointPanel = new SetpointPanel(this);
+    m_brake = new BrakePanel(this);
+    m_brake->setSender(
+        [this](const protocol::Request &request, RequestTracker::Callback done, int retries) {
+            return tracker()->send(request, std::move(done), bus::Priority::Operator, retries);
+        });
 
     auto *left = new QVBoxLayout;
     left->addWidget(m_title);
@@ -73,6 +79,7 @@ ControlView::ControlView(QWidget *parent)
     auto *right = new QVBoxLayout;
     right->addWidget(m_limitsEditor);
     right->addWidget(m_setpointPanel);
+    right->addWidget(m_brake);
     right->addStretch();
     auto *rightWidget = new QWidget(this);
     rightWidget->setLayout(right);
@@ -341,6 +348,7 @@ void ControlView::refreshEnabled()
     m_setpointPanel->setStartEnabled(can);
     m_limitsEditor->setEnabled(hasDrive());
     m_modes->setEnabled(hasDrive());
+    m_brake->setDrive(driveId(), motor(), can);
 }
 
 QString ControlView::statusText() const

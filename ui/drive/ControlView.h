@@ -16,6 +16,7 @@ class QPushButton;
 
 namespace lk::ui {
 
+class BrakePanel;
 class ControlModePanel;
 class DriveSettingsStore;
 class JogPanel;
@@ -28,7 +29,8 @@ class TelemetryStore;
 /// offered), with Motor Off / Stop / Run, jog (hold-to-run speed, step moves, optional arrow
 /// keys) and a setpoint generator for tuning. Every motion command passes the protocol
 /// builders and MotionGuard (series and the drive's soft limits, editable and persisted)
-/// before it is sent; a refusal sends nothing and says which limit stopped it.
+/// before it is sent; a refusal sends nothing and says which limit stopped it. A V2.35 drive's
+/// holding brake (0x8C) is in its own BrakePanel, which sends through this view's path.
 ///
 /// An emergency stop on the session, a drive or connection change and Motor Off/Stop all halt
 /// the generator and the jog. Esc belongs to lkstudio's emergency stop (EmergencyStopControl),
@@ -76,6 +78,7 @@ public:
     SoftLimitsEditor *limitsEditor() const { return m_limitsEditor; }
     JogPanel *jogPanel() const { return m_jog; }
     SetpointPanel *setpointPanel() const { return m_setpointPanel; }
+    BrakePanel *brakePanel() const { return m_brake; }
     SetpointGenerator *generator() const { return m_generator; }
     LoopPlot *plot() const { return m_plot; }
     bool isJogging() const { return m_jogging; }
@@ -125,6 +128,7 @@ private:
     SoftLimitsEditor *m_limitsEditor = nullptr;
     JogPanel *m_jog = nullptr;
     SetpointPanel *m_setpointPanel = nullptr;
+    BrakePanel *m_brake = nullptr;
     SetpointGenerator *m_generator = nullptr;
     LoopPlot *m_plot = nullptr;
     QLabel *m_title = nullptr;

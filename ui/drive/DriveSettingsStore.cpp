@@ -1,5 +1,7 @@
 #include "DriveSettingsStore.h"
 
+#include <motor/EncoderResolution.h>
+
 #include <QtCore/QJsonDocument>
 #include <QtCore/QRegularExpression>
 #include <QtCore/QSettings>
@@ -10,7 +12,6 @@
 namespace lk::ui {
 
 namespace {
-constexpr int kResolutions[] = {12, 14, 15, 16, 18}; // what LK encoders are sold with
 constexpr double kMaxGearRatio = 1000;
 
 QString keyPath(const QString &driveKey, const char *name)
@@ -20,8 +21,7 @@ QString keyPath(const QString &driveKey, const char *name)
 
 bool validBits(int bits)
 {
-    return std::find(std::begin(kResolutions), std::end(kResolutions), bits) !=
-           std::end(kResolutions);
+    return motor::EncoderResolution::choices().contains(bits);
 }
 
 bool validRatio(double ratio)

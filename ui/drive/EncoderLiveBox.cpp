@@ -1,6 +1,7 @@
 #include "EncoderLiveBox.h"
 
 #include "EncoderDial.h"
+#include "EncoderResolutions.h"
 
 #include <QtWidgets/QFormLayout>
 #include <QtWidgets/QLabel>
@@ -51,14 +52,22 @@ EncoderLiveBox::EncoderLiveBox(QWidget *parent)
 
 void EncoderLiveBox::setValues(const std::optional<protocol::EncoderReading> &encoder,
                                const std::optional<double> &multiTurnDeg,
-                               const std::optional<double> &singleTurnDeg, int counts, double ratio)
+                               const std::optional<double> &singleTurnDeg,
+                               const motor::EncoderResolution &resolution, double ratio)
 {
     const QString none = QStringLiteral("\u2013");
+    const int counts = resolution.countsPerTurn();
     auto countText = [counts](int v) {
         return tr("%1  (%2\u00b0)").arg(v).arg(360.0 * v / counts, 0, 'f', 2);
     };
     auto degText = [](double deg) { return tr("%1\u00b0").arg(deg, 0, 'f', 2); };
-    m_encoder->setText(encoder ? countText(encoder->encoder) : none);
+    // The encoder reads as on the dashboard: value, counts per turn, and where the resolution
+    // comes from.
+    m_encoder->setText(encoder
+                           ? tr("%1  (%2\u00b0)")
+                                 .arg(EncoderResolutions::readoutText(encoder->encoder, resolution))
+                                 .arg(360.0 * encoder->encoder / counts, 0, 'f', 2)
+                           : none);
     m_raw->setText(encoder ? countText(encoder->encoderRaw) : none);
     m_offset->setText(encoder ? countText(encoder->encoderOffset) : none);
     m_multi->setText(multiTurnDeg ? degText(*multiTurnDeg) : none);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <motor/EncoderResolution.h>
 #include <protocol/Values.h>
 
 #include <QtWidgets/QGroupBox>
@@ -22,7 +23,8 @@ public:
 
     void setValues(const std::optional<protocol::EncoderReading> &encoder,
                    const std::optional<double> &multiTurnDeg,
-                   const std::optional<double> &singleTurnDeg, int countsPerTurn, double gearRatio);
+                   const std::optional<double> &singleTurnDeg,
+                   const motor::EncoderResolution &resolution, double gearRatio);
 
 private:
     QLabel *m_encoder;

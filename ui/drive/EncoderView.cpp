@@ -4,10 +4,13 @@
 #include "DriveSettingsStore.h"
 #include "DriveText.h"
 #include "EncoderLiveBox.h"
+#include "EncoderResolutions.h"
+#include "GenerationNote.h"
 #include "RequestTracker.h"
 
 #include <motor/ModelNameInfo.h>
 #include <panels/StatusColors.h>
+#include <protocol/Command.h>
 #include <protocol/RequestBuilder.h>
 
 #include <QtCore/QTime>
@@ -22,6 +25,8 @@
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QSpinBox>
 #include <QtWidgets/QVBoxLayout>
+
+#include <cmath>
 
 namespace lk::ui {
 
@@ -46,12 +51,13 @@ template <typename T> const T *payload(const bus::RequestResult &r)
 
 const QList<int> &EncoderView::resolutions()
 {
-    static const QList<int> bits{12, 14, 15, 16, 18};
-    return bits;
+    return motor::EncoderResolution::choices();
 }
 
 EncoderView::EncoderView(QWidget *parent)
-    : DriveView(parent), m_ownStore(std::make_unique<MemoryDriveStore>()), m_store(m_ownStore.get())
+    : DriveView(parent), m_ownStore(std::make_unique<MemoryDriveStore>()),
+      m_store(m_ownStore.get()), m_ownResolutions(std::make_unique<EncoderResolutions>()),
+      m_resolutions(m_ownResolutions.get())
 {
     setObjectName(QStringLiteral("encoder"));
     m_title = new QLabel(this);
@@ -87,6 +93,7 @@ EncoderView::EncoderView(QWidget *parent)
     m_poll.setInterval(kDefaultPollMs);
     connect(&m_poll, &QTimer::timeout, this, &EncoderView::poll);
     connect(tracker(), &RequestTracker::pendingChanged, this, &EncoderView::refreshEnabled);
+    setEncoderResolutions(nullptr);
     contextChanged(Change::Session | Change::Drive);
 }
 
@@ -162,9 +169,16 @@ QWidget *EncoderView::buildZeroBox()
     auto *zeroText = note(box);
     zeroText->setText(tr("Stores the present encoder position as the zero in flash. Takes "
                          "effect only after a power cycle; each write wears the flash."));
+    m_clearTurns = new QPushButton(tr("Clear turn count (0x93)\u2026"), box);
+    m_clearTurns->setObjectName(QStringLiteral("clearTurns"));
+    connect(m_clearTurns, &QPushButton::clicked, this, &EncoderView::clearTurnCount);
+    m_clearTurnsNote = note(box);
+    m_clearTurnsNote->setObjectName(QStringLiteral("clearTurnsNote"));
     auto *layout = new QVBoxLayout(box);
     layout->addWidget(m_clearAngle);
     layout->addWidget(clearText);
+    layout->addWidget(m_clearTurns);
+    layout->addWidget(m_clearTurnsNote);
     layout->addWidget(m_zeroRom);
     layout->addWidget(zeroText);
     return box;
@@ -173,53 +187,66 @@ QWidget *EncoderView::buildZeroBox()
 void EncoderView::setSettingsStore(DriveSettingsStore *store)
 {
     m_store = store ? store : m_ownStore.get();
+    if (m_resolutions == m_ownResolutions.get())
+        m_ownResolutions->setSettingsStore(m_store);
     loadDriveSettings();
+}
+
+void EncoderView::setEncoderResolutions(EncoderResolutions *resolutions)
+{
+    if (m_resolutions)
+        disconnect(m_resolutions, nullptr, this, nullptr);
+    m_resolutions = resolutions ? resolutions : m_ownResolutions.get();
+    const bool own = m_resolutions == m_ownResolutions.get();
+    m_ownResolutions->setSession(own ? session() : nullptr); // a shared one is fed instead
+    if (own)
+        m_ownResolutions->setSettingsStore(m_store);
+    connect(m_resolutions, &EncoderResolutions::changed, this, [this](int id) {
+        if (id != driveId())
+            return;
+        const QSignalBlocker block(m_bitsCombo);
+        m_bitsCombo->setCurrentIndex(m_bitsCombo->findData(encoderBits()));
+        refreshReadouts();
+    });
+    loadDriveSettings();
+}
+
+int EncoderView::encoderBits() const
+{
+    return m_resolutions->of(driveId(), motor()).bits();
 }
 
 void EncoderView::loadDriveSettings()
 {
     const QString name = motor().model ? motor().model->motorName : QString();
     const motor::ModelNameInfo info = motor::ModelNameInfo::parse(name);
-    const auto s = series();
-    m_bits = info.encoderBitsFromName ? info.encoderBits
-             : s                      ? motor::defaultEncoderBits(*s)
-                                      : info.encoderBits;
-    m_bitsSource = info.encoderBitsFromName ? tr("from the model name \"%1\"").arg(name)
-                   : s ? tr("the %1 series default").arg(protocol::seriesName(*s))
-                       : tr("a guess: the model does not say");
     m_ratio = info.gearRatio;
     m_ratioSource = info.gearFromName ? tr("from the model name \"%1\"").arg(name)
                                       : tr("no gearbox in the model name");
     if (hasDrive()) {
         const QString key = DriveSettingsStore::driveKey(driveId(), motor());
-        if (const auto bits = m_store->encoderBits(key); bits && *bits != m_bits) {
-            m_bits = *bits;
-            m_bitsSource = tr("your setting for this drive");
-        }
         if (const auto ratio = m_store->gearRatio(key); ratio && *ratio != m_ratio) {
             m_ratio = *ratio;
             m_ratioSource = tr("your setting for this drive");
         }
     }
     const QSignalBlocker b1(m_bitsCombo), b2(m_ratioSpin);
-    m_bitsCombo->setCurrentIndex(m_bitsCombo->findData(m_bits));
+    m_bitsCombo->setCurrentIndex(m_bitsCombo->findData(encoderBits()));
     m_ratioSpin->setValue(m_ratio);
     refreshReadouts();
 }
 
 int EncoderView::countsPerTurn() const
 {
-    return motor::encoderCountsPerTurn(m_bits);
+    return motor::encoderCountsPerTurn(encoderBits());
 }
 
 void EncoderView::setEncoderBits(int bits)
 {
     if (!resolutions().contains(bits))
         return;
-    m_bits = bits;
-    m_bitsSource = tr("your setting for this drive");
     if (hasDrive())
-        m_store->setEncoderBits(DriveSettingsStore::driveKey(driveId(), motor()), bits);
+        m_resolutions->setUserBits(driveId(), motor(), bits);
     const QSignalBlocker block(m_bitsCombo);
     m_bitsCombo->setCurrentIndex(m_bitsCombo->findData(bits));
     refreshReadouts();
@@ -274,6 +301,8 @@ void EncoderView::contextChanged(Changes changes)
         m_busy = false;
         m_pollTicket = 0;
     }
+    if ((changes & Change::Session) && m_resolutions == m_ownResolutions.get())
+        m_ownResolutions->setSession(session());
     if (changes & (Change::Session | Change::Drive | Change::MotorInfo))
         loadDriveSettings();
     m_title->setText(driveTitle());
@@ -329,6 +358,7 @@ quint64 EncoderView::readEncoder(bus::Priority priority)
         [this](const bus::RequestResult &r) {
             if (const auto *e = payload<protocol::EncoderReading>(r)) {
                 m_encoder = *e;
+                m_resolutions->observe(driveId(), motor(), e->encoder);
                 refreshReadouts();
             }
         },
@@ -360,9 +390,13 @@ quint64 EncoderView::readMultiTurn(bus::Priority priority, std::function<void(do
 
 void EncoderView::refreshReadouts()
 {
-    const int counts = countsPerTurn();
-    m_live->setValues(m_encoder, m_multiTurnDeg, m_singleTurnDeg, counts, m_ratio);
-    m_bitsNote->setText(tr("%1 counts per turn on the wire; %2.").arg(counts).arg(m_bitsSource));
+    const motor::EncoderResolution resolution = m_resolutions->of(driveId(), motor());
+    const int counts = resolution.countsPerTurn();
+    m_live->setValues(m_encoder, m_multiTurnDeg, m_singleTurnDeg, resolution, m_ratio);
+    const QString name = motor().model ? motor().model->motorName : QString();
+    m_bitsNote->setText(tr("%1 counts per turn on the wire; %2.")
+                            .arg(counts)
+                            .arg(EncoderResolutions::sourceText(resolution, name, series())));
     m_ratioNote->setText(tr("Output shaft = rotor \u00f7 ratio; %1.").arg(m_ratioSource));
     m_offsetSpin->setRange(0, counts - 1);
 }
@@ -373,6 +407,12 @@ void EncoderView::refreshEnabled()
     m_writeOffset->setEnabled(can);
     m_clearAngle->setEnabled(can);
     m_zeroRom->setEnabled(can);
+    const QString absent = turnCountAbsence();
+    m_clearTurns->setEnabled(can && absent.isEmpty());
+    m_clearTurnsNote->setText(
+        absent.isEmpty() ? tr("Whole turns of the multi-turn angle are dropped; the angle within "
+                              "the present turn stays. Checked with read_multi_turn (0x92).")
+                         : absent);
     m_useRaw->setEnabled(hasDrive() && m_encoder.has_value());
     m_bitsCombo->setEnabled(hasDrive());
     m_ratioSpin->setEnabled(hasDrive());
@@ -402,7 +442,7 @@ void EncoderView::writeOffset(int offset)
     if (offset < 0 || offset >= counts) {
         setStatus(tr("Refused, nothing sent: the offset must be in 0..%1 for a %2-bit encoder.")
                       .arg(counts - 1)
-                      .arg(m_bits),
+                      .arg(encoderBits()),
                   true);
         return;
     }
@@ -443,8 +483,10 @@ void EncoderView::readBackOffset(int offset)
                         m_busy = false;
                         const auto *e = payload<protocol::EncoderReading>(back);
                         const bool ok = e && e->encoderOffset == offset;
-                        if (e)
+                        if (e) {
                             m_encoder = *e;
+                            m_resolutions->observe(driveId(), motor(), e->encoder);
+                        }
                         setStatus(ok  ? tr("Encoder offset %1 written and read back.").arg(offset)
                                   : e ? tr("Wrote offset %1, but the drive reports %2.")
                                             .arg(offset)
@@ -562,6 +604,78 @@ void EncoderView::writeZeroToRom()
             emit zeroWriteFinished(true);
         },
         bus::Priority::Operator, 0);
+}
+
+QString EncoderView::turnCountAbsence() const
+{
+    return hasDrive()
+               ? GenerationNote::absence(motor(), Command::ClearTurnCount, tr("clear turn count"))
+               : QString();
+}
+
+void EncoderView::clearTurnCount()
+{
+    if (!canSend() || m_busy)
+        return;
+    if (const QString absent = turnCountAbsence(); !absent.isEmpty()) {
+        setStatus(absent, true);
+        return;
+    }
+    // V2.35.md names 0x93 only: neither RAM nor ROM, nor whether the motor must be off, is
+    // documented, so the confirmation says so rather than guess.
+    if (!confirm(QStringLiteral("clear_turn_count"), tr("Clear turn count"),
+                 tr("Set the turn count of drive %1 to 0?").arg(driveId()),
+                 tr("The multi-turn angle keeps only the angle within the present turn, so "
+                    "multi-turn position commands go elsewhere afterwards. The V2.35 document "
+                    "does not say whether this survives a power cycle (RAM or ROM) or whether "
+                    "the motor must be off: stop the motor first."),
+                 tr("Clear turn count")))
+        return;
+    m_busy = true;
+    refreshEnabled();
+    const int id = driveId();
+    setStatus(tr("Clearing the turn count of drive %1\u2026").arg(id));
+    readMultiTurn(bus::Priority::Operator, [this, id](double before) {
+        // Sent once: whether it writes flash is not documented.
+        tracker()->send(
+            *build::plain(Command::ClearTurnCount, id).request,
+            [this, id, before](const bus::RequestResult &r) {
+                if (!r.ok()) {
+                    m_busy = false;
+                    setStatus(DriveText::failure(r), true);
+                    refreshEnabled();
+                    emit turnCountCleared(false);
+                    return;
+                }
+                onTurnsCleared(id, before);
+            },
+            bus::Priority::Operator, 0);
+    });
+}
+
+void EncoderView::onTurnsCleared(int id, double before)
+{
+    readMultiTurn(bus::Priority::Operator, [this, id, before](double after) {
+        m_busy = false;
+        refreshEnabled();
+        if (id != driveId())
+            return;
+        // One output turn is 360 degrees times the gear ratio of rotor angle.
+        const bool ok = std::abs(after) < 360.0 * m_ratio;
+        setStatus(ok ? tr("Turn count of drive %1 cleared: the multi-turn angle reads %2\u00b0 "
+                          "(was %3\u00b0).")
+                           .arg(id)
+                           .arg(after, 0, 'f', 2)
+                           .arg(before, 0, 'f', 2)
+                     : tr("Drive %1 acknowledged 0x93, but its multi-turn angle reads %2\u00b0 "
+                          "(was %3\u00b0): more than one turn, so the turn count was not "
+                          "cleared.")
+                           .arg(id)
+                           .arg(after, 0, 'f', 2)
+                           .arg(before, 0, 'f', 2),
+                  !ok);
+        emit turnCountCleared(ok);
+    });
 }
 
 } // namespace lk::ui

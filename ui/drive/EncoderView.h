@@ -23,12 +23,15 @@ namespace lk::ui {
 
 class DriveSettingsStore;
 class EncoderLiveBox;
+class EncoderResolutions;
 
 /// Encoder and zero tools of one drive: encoder, raw encoder, offset and angles read live
 /// while the view is visible; encoder offset write (0x91); clear motor angle (0x95) verified
 /// with read_multi_turn (firmware that acknowledges and ignores it is named); current
-/// position to ROM as zero (0x19) after a confirmation (power cycle, flash wear). Encoder
-/// resolution and gear ratio are inferred from the model name, editable and kept per drive.
+/// position to ROM as zero (0x19) after a confirmation (power cycle, flash wear); on V2.35
+/// drives clear turn count (0x93) with a read-back of the multi-turn angle. The encoder
+/// resolution is the one EncoderResolutions believes (name, series, data, user); the gear
+/// ratio is inferred from the model name; both are editable and kept per drive.
 class EncoderView : public DriveView {
     Q_OBJECT
 public:
@@ -40,7 +43,10 @@ public:
 
     /// Where resolution and gear ratio persist per drive (not owned; default: this process).
     void setSettingsStore(DriveSettingsStore *store);
-    int encoderBits() const { return m_bits; }
+    /// The resolutions shared with the dashboard (not owned); without, the view keeps its own
+    /// over its session and settings store.
+    void setEncoderResolutions(EncoderResolutions *resolutions);
+    int encoderBits() const;
     void setEncoderBits(int bits); ///< one of resolutions(); persisted for the drive
     double gearRatio() const { return m_ratio; }
     void setGearRatio(double ratio); ///< >= 1; persisted for the drive
@@ -56,6 +62,10 @@ public:
     void clearAngle();
     /// Asks, then writes the current position to ROM as zero (0x19, once, never retried).
     void writeZeroToRom();
+    /// V2.35: asks, then clears the turn count (0x93) and reads the multi-turn angle back.
+    void clearTurnCount();
+    /// Why clear turn count is not offered for the drive (empty: it is).
+    QString turnCountAbsence() const;
 
     std::optional<protocol::EncoderReading> lastEncoder() const { return m_encoder; }
     std::optional<double> lastMultiTurnDeg() const { return m_multiTurnDeg; }
@@ -66,6 +76,7 @@ signals:
     void angleCheckFinished(const lk::ui::AngleCheck &check);
     void offsetWriteFinished(bool ok);
     void zeroWriteFinished(bool ok);
+    void turnCountCleared(bool ok);
 
 protected:
     void contextChanged(Changes changes) override;
@@ -82,6 +93,7 @@ private:
     quint64 readMultiTurn(bus::Priority priority, std::function<void(double)> then = {});
     void readBackOffset(int offset);
     void onClearAcknowledged(int id, double before);
+    void onTurnsCleared(int id, double before);
     void showAngleCheck(const AngleCheck &check);
     void refreshReadouts();
     void refreshEnabled();
@@ -92,9 +104,9 @@ private:
     std::unique_ptr<DriveSettingsStore> m_ownStore;
     DriveSettingsStore *m_store;
     QTimer m_poll;
-    int m_bits = 14;
+    std::unique_ptr<EncoderResolutions> m_ownResolutions;
+    EncoderResolutions *m_resolutions;
     double m_ratio = 1.0;
-    QString m_bitsSource;
     QString m_ratioSource;
     std::optional<protocol::EncoderReading> m_encoder;
     std::optional<double> m_multiTurnDeg;
@@ -114,6 +126,8 @@ private:
     QPushButton *m_writeOffset = nullptr;
     QPushButton *m_clearAngle = nullptr;
     QPushButton *m_zeroRom = nullptr;
+    QPushButton *m_clearTurns = nullptr;
+    QLabel *m_clearTurnsNote = nullptr;
     QLabel *m_status = nullptr;
     QPlainTextEdit *m_log = nullptr;
 };

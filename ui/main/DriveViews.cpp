@@ -6,6 +6,7 @@
 #include <drive/ControlView.h>
 #include <drive/DriveInfoView.h>
 #include <drive/DriveSettingsStore.h>
+#include <drive/EncoderResolutions.h>
 #include <drive/EncoderView.h>
 #include <drive/TuningView.h>
 #include <panels/BusModel.h>
@@ -18,8 +19,9 @@ DriveViews::DriveViews(BusModel *model, BusController *controller, TelemetryStor
                        const QString &settingsFile, QWidget *parentWidget)
     : QObject(parentWidget), m_model(model), m_controller(controller),
       m_settings(std::make_unique<IniDriveStore>(settingsFile)),
-      m_tuning(new TuningView(parentWidget)), m_control(new ControlView(parentWidget)),
-      m_encoder(new EncoderView(parentWidget)), m_info(new DriveInfoView(parentWidget))
+      m_resolutions(new EncoderResolutions(this)), m_tuning(new TuningView(parentWidget)),
+      m_control(new ControlView(parentWidget)), m_encoder(new EncoderView(parentWidget)),
+      m_info(new DriveInfoView(parentWidget))
 {
     m_tuning->setTelemetryStore(store);
     m_control->setTelemetryStore(store);
@@ -27,6 +29,9 @@ DriveViews::DriveViews(BusModel *model, BusController *controller, TelemetryStor
     m_encoder->setSettingsStore(m_settings.get());
     m_info->setToolVersion(QCoreApplication::applicationVersion());
     bus::BusSession *session = m_controller->session();
+    m_resolutions->setSettingsStore(m_settings.get());
+    m_resolutions->setSession(session);
+    m_encoder->setEncoderResolutions(m_resolutions);
     m_tuning->setSession(session);
     m_control->setSession(session);
     m_encoder->setSession(session);

@@ -12,6 +12,7 @@ class BusModel;
 class ControlView;
 class DriveInfoView;
 class DriveSettingsStore;
+class EncoderResolutions;
 class EncoderView;
 class TelemetryStore;
 class TuningView;
@@ -32,6 +33,8 @@ public:
     ControlView *control() const { return m_control; }
     EncoderView *encoder() const { return m_encoder; }
     DriveInfoView *info() const { return m_info; }
+    /// The encoder resolutions the Encoder view uses; the dashboard shares them.
+    EncoderResolutions *encoderResolutions() const { return m_resolutions; }
 
     /// Stop what the views send by themselves (jog, setpoint generator) at once, before the
     /// emergency stop reaches the bus: a generator tick must not restart a motor after it.
@@ -44,6 +47,7 @@ private:
     BusModel *m_model;
     BusController *m_controller;
     std::unique_ptr<DriveSettingsStore> m_settings;
+    EncoderResolutions *m_resolutions;
     TuningView *m_tuning;
     ControlView *m_control;
     EncoderView *m_encoder;

@@ -105,6 +105,7 @@ void MainWindow::buildPanels()
     addView(m_traffic, QStringLiteral("traffic"), tr("Traffic"),
             ThemedIcon::get(QStringLiteral(":/icons/traffic.svg")));
     m_driveViews = new DriveViews(m_model, m_controller, m_store, m_settings->fileName(), m_views);
+    m_dashboard->setEncoderResolutions(m_driveViews->encoderResolutions());
     addView(m_driveViews->tuning(), QStringLiteral("tuning"), tr("Tuning"),
             ThemedIcon::get(QStringLiteral(":/icons/motor.svg")));
     addView(m_driveViews->control(), QStringLiteral("control"), tr("Control"),

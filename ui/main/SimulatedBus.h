@@ -25,8 +25,9 @@ namespace lk::ui {
 /// its owner, hence the shared_ptr and the lock.
 class SimulatedBus {
 public:
-    /// Four drives, one of each series.
-    static QString defaultSpecText() { return QStringLiteral("1:MF,2:MG,3:MS,4:MH"); }
+    /// Four drives, one of each series; drive 3 is an MS4015 on firmware 2.35 (protocol V2.35,
+    /// 16-bit encoder range), so a first run shows both protocol generations.
+    static QString defaultSpecText() { return QStringLiteral("1:MF,2:MG,3:MS4015@2.35,4:MH"); }
 
     explicit SimulatedBus(const sim::SimBusSpec &spec);
 

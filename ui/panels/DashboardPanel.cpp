@@ -7,6 +7,8 @@
 #include "StatusColors.h"
 #include "ThemedIcon.h"
 
+#include <drive/EncoderResolutions.h>
+
 #include <QtCore/QTimer>
 #include <QtGui/QIcon>
 #include <QtWidgets/QGridLayout>
@@ -192,7 +194,6 @@ void DashboardPanel::updateIdentity(const DriveRecord &d)
     parts << tr("series %1").arg(d.seriesText());
     if (d.model)
         parts << tr("firmware %1, hardware %2").arg(d.firmwareText(), d.hardwareText());
-    parts << tr("%1-bit encoder").arg(d.nameInfo.encoderBits);
     m_identity->setText(parts.join(QStringLiteral(" \u00b7 ")));
 
     const auto ratio = d.gearRatio();
@@ -270,11 +271,29 @@ void DashboardPanel::updateMotion(const DriveRecord &d, qint64 now)
                        : QString(),
                    speedStale);
     readout(QStringLiteral("encoder"))
-        ->setValue(d.has(F::Encoder) ? tr("%1 of %2").arg(v.encoder).arg(d.nameInfo.countsPerTurn())
-                                     : QString(),
-                   d.isStale(F::Encoder, now));
+        ->setValue(d.has(F::Encoder) ? encoderText(d) : QString(), d.isStale(F::Encoder, now));
     angle(QStringLiteral("multiTurn"), F::MultiTurn, v.multiTurnDeg);
     angle(QStringLiteral("singleTurn"), F::SingleTurn, v.singleTurnDeg);
+}
+
+void DashboardPanel::setEncoderResolutions(EncoderResolutions *resolutions)
+{
+    m_resolutions = resolutions;
+    refresh();
+}
+
+QString DashboardPanel::encoderText(const DriveRecord &d) const
+{
+    if (!m_resolutions)
+        return EncoderResolutions::readoutText(
+            d.latest.encoder, motor::EncoderResolution::fromModel(d.nameInfo, d.series));
+    bus::KnownMotor motor;
+    motor.id = d.id;
+    motor.series = d.series;
+    motor.model = d.model;
+    if (d.model)
+        motor.generation = d.model->generation;
+    return EncoderResolutions::readoutText(d.latest.encoder, m_resolutions->of(d.id, motor));
 }
 
 void DashboardPanel::updateErrors(const DriveRecord &d, qint64 now)

@@ -10,13 +10,15 @@ class QTimer;
 namespace lk::ui {
 
 class BusModel;
+class EncoderResolutions;
 class Readout;
 class StatisticsView;
 struct DriveRecord;
 
-/// Live values of the selected drive: temperature, voltage, iq (power on MS), speed, encoder,
-/// angles (output shaft when the gear ratio is known), phase currents, error flags with
-/// Clear Errors, and the bus statistics. Redraws at most 20 times a second while visible.
+/// Live values of the selected drive: temperature, voltage, iq (power on MS), speed, encoder
+/// (with the resolution EncoderResolutions believes, as the Encoder view shows it), angles (output
+/// shaft when the gear ratio is known), phase currents, error flags with Clear Errors, and the bus
+/// statistics. Redraws at most 20 times a second while visible.
 class DashboardPanel : public QWidget {
     Q_OBJECT
 public:
@@ -25,6 +27,9 @@ public:
     /// The readout with this object name (tests): "temperature", "voltage", "torque", ...
     Readout *readout(const QString &name) const;
     StatisticsView *statisticsView() const { return m_stats; }
+    /// The resolutions shared with the Encoder view (not owned); without, the encoder reads
+    /// with the name hint or series default only.
+    void setEncoderResolutions(EncoderResolutions *resolutions);
 
 signals:
     void clearErrorsRequested(int id);
@@ -44,7 +49,10 @@ private:
     void updateMotion(const DriveRecord &d, qint64 now);
     void updateErrors(const DriveRecord &d, qint64 now);
 
+    QString encoderText(const DriveRecord &d) const;
+
     BusModel *m_model;
+    EncoderResolutions *m_resolutions = nullptr;
     QStackedWidget *m_stack = nullptr;
     QLabel *m_empty = nullptr;
     QLabel *m_identity = nullptr;

@@ -6,6 +6,8 @@
 
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
+#include <QtWidgets/QComboBox>
+#include <QtWidgets/QLabel>
 #include <QtWidgets/QPushButton>
 
 #include <cmath>
@@ -31,6 +33,25 @@ std::unique_ptr<EncoderView> openView(SimRig &rig, int id)
     return view;
 }
 
+// Drive 1 speaks V2.3, drive 3 is an MS4015 on firmware 2.35 (16-bit encoder range).
+const QString kV235Bus = QStringLiteral("1:MF,3:MS4015@2.35");
+
+// Turns drive `id` at `dps` until its multi-turn angle passes `deg`, then switches it off and
+// waits for it to stand still. The test sends directly: no view is under test here.
+bool turnPast(SimRig &rig, int id, double dps, double deg)
+{
+    rig.session.send(*lk::protocol::build::speed(id, dps).request);
+    const bool passed = QTest::qWaitFor([&] { return rig.multiTurnDeg(id) > deg; }, kWaitMs);
+    rig.session.send(*lk::protocol::build::plain(Command::MotorOff, id).request);
+    return passed && QTest::qWaitFor([&] { return std::fabs(rig.speedDps(id)) < 0.5; }, kWaitMs);
+}
+
+QString labelText(QWidget &view, const char *name)
+{
+    auto *l = view.findChild<QLabel *>(QLatin1String(name));
+    return l ? l->text() : QString();
+}
+
 int circularDistance(int a, int b, int counts)
 {
     const int d = std::abs(a - b) % counts;
@@ -54,6 +75,11 @@ private slots:
     void angleCheckOutcomes();
     void zeroToRomAppliesAfterRestart();
     void declinedZeroSendsNothing();
+    void resolutionRaisedFromData();
+    void userResolutionWinsOverData();
+    void clearTurnCount();
+    void declinedClearTurnCountSendsNothing();
+    void v23DriveHasNoClearTurnCount();
 };
 
 void tst_EncoderView::readsLiveWhileVisible()
@@ -265,6 +291,107 @@ void tst_EncoderView::declinedZeroSendsNothing()
     QCOMPARE(rig.count(1, Command::WriteZeroRom), 0);
     QCOMPARE(rig.count(1, Command::ClearAngle), 0);
     QCOMPARE(rig.count(1, Command::WriteEncoderOffset), 0);
+}
+
+void tst_EncoderView::resolutionRaisedFromData()
+{
+    SimRig rig(kV235Bus);
+    QVERIFY(rig.open());
+    auto view = openView(rig, 3);
+    // The MS series default is 12 bits; the drive's first encoder value (about 9557) is beyond.
+    QTRY_VERIFY_WITH_TIMEOUT(view->lastEncoder().has_value(), kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(view->encoderBits() >= 14, kWaitMs);
+    QVERIFY2(labelText(*view, "encoderValue").contains("-bit, from data"),
+             qPrintable(labelText(*view, "encoderValue")));
+    // A turn shows the whole 16-bit range.
+    QVERIFY(turnPast(rig, 3, 720, 400));
+    QTRY_COMPARE_WITH_TIMEOUT(view->encoderBits(), 16, kWaitMs);
+    QCOMPARE(view->countsPerTurn(), 65536);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        labelText(*view, "encoderValue").contains(" of 65536 (16-bit, from data)"), kWaitMs);
+    const auto *combo = view->findChild<QComboBox *>(QStringLiteral("encoderBits"));
+    QCOMPARE(combo->currentData().toInt(), 16);
+}
+
+void tst_EncoderView::userResolutionWinsOverData()
+{
+    SimRig rig(kV235Bus);
+    QVERIFY(rig.open());
+    auto view = openView(rig, 3);
+    QTRY_VERIFY_WITH_TIMEOUT(view->encoderBits() >= 14, kWaitMs);
+    auto *combo = view->findChild<QComboBox *>(QStringLiteral("encoderBits"));
+    combo->setCurrentIndex(combo->findData(18));
+    emit combo->activated(combo->currentIndex());
+    QCOMPARE(view->encoderBits(), 18);
+    QVERIFY(turnPast(rig, 3, 720, 400));
+    QTRY_VERIFY_WITH_TIMEOUT(labelText(*view, "encoderValue").contains("(18-bit, your setting)"),
+                             kWaitMs);
+    QCOMPARE(view->encoderBits(), 18);
+}
+
+void tst_EncoderView::clearTurnCount()
+{
+    SimRig rig(kV235Bus);
+    QVERIFY(rig.open());
+    QVERIFY(turnPast(rig, 3, 720, 800)); // more than two turns
+    const double before = rig.multiTurnDeg(3);
+    auto view = openView(rig, 3);
+    auto *clear = view->findChild<QPushButton *>(QStringLiteral("clearTurns"));
+    QTRY_VERIFY_WITH_TIMEOUT(clear->isEnabled(), kWaitMs);
+    QStringList asked;
+    QString reason;
+    ConfirmDialog::ScopedPolicy yes([&](const ConfirmRequest &q) {
+        asked << q.key;
+        reason = q.reason;
+        return true;
+    });
+    QSignalSpy done(view.get(), &EncoderView::turnCountCleared);
+    QTest::mouseClick(clear, Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(done.count(), 1, kWaitMs);
+    QCOMPARE(done.at(0).at(0).toBool(), true);
+    QCOMPARE(asked, QStringList{QStringLiteral("clear_turn_count")});
+    QVERIFY(reason.contains("RAM or ROM"));
+    QCOMPARE(rig.count(3, Command::ClearTurnCount), 1);
+    const double after = rig.multiTurnDeg(3);
+    QVERIFY(std::fabs(after) < 360);
+    // Only whole turns went: the angle within the turn stays.
+    QVERIFY(std::fabs(std::fmod(before, 360.0) - after) < 0.5);
+    QVERIFY2(view->statusText().contains("cleared") &&
+                 view->statusText().contains(QString::number(after, 'f', 2)),
+             qPrintable(view->statusText()));
+    QCOMPARE(*view->lastMultiTurnDeg(), after); // read back, not assumed
+}
+
+void tst_EncoderView::declinedClearTurnCountSendsNothing()
+{
+    SimRig rig(kV235Bus);
+    QVERIFY(rig.open());
+    auto view = openView(rig, 3);
+    ConfirmDialog::ScopedPolicy no([](const ConfirmRequest &) { return false; });
+    QTest::mouseClick(view->findChild<QPushButton *>(QStringLiteral("clearTurns")), Qt::LeftButton);
+    QVERIFY(view->statusText().contains(QStringLiteral("nothing was sent")));
+    QVERIFY(rig.barrier(3));
+    QCOMPARE(rig.count(3, Command::ClearTurnCount), 0);
+}
+
+void tst_EncoderView::v23DriveHasNoClearTurnCount()
+{
+    SimRig rig(kV235Bus);
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    QVERIFY(!view->findChild<QPushButton *>(QStringLiteral("clearTurns"))->isEnabled());
+    QVERIFY2(labelText(*view, "clearTurnsNote").contains("v2.3") &&
+                 labelText(*view, "clearTurnsNote").contains("no clear turn count"),
+             qPrintable(labelText(*view, "clearTurnsNote")));
+    QStringList asked;
+    ConfirmDialog::ScopedPolicy yes([&](const ConfirmRequest &q) {
+        asked << q.key;
+        return true;
+    });
+    view->clearTurnCount();
+    QVERIFY(asked.isEmpty());
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::ClearTurnCount), 0);
 }
 
 QTEST_MAIN(tst_EncoderView)

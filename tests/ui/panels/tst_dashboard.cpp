@@ -1,3 +1,4 @@
+#include <drive/EncoderResolutions.h>
 #include <panels/BusModel.h>
 #include <panels/DashboardPanel.h>
 #include <panels/DriveTree.h>
@@ -68,6 +69,7 @@ private slots:
     void errorFlagsFollowTheGeneration();
     void statisticsClearedOnDisconnect();
     void selectionFollowsEveryView();
+    void encoderResolutionFromData();
 };
 
 void tst_Dashboard::showsValues_data()
@@ -244,6 +246,40 @@ void tst_Dashboard::selectionFollowsEveryView()
     QCOMPARE(overview.rowCount(), 2);
     QCOMPARE(overview.data(overview.index(1, lk::ui::OverviewModel::Errors)).toString(),
              QStringLiteral("Low voltage"));
+}
+
+void tst_Dashboard::encoderResolutionFromData()
+{
+    BusModel model;
+    DashboardPanel dash(&model);
+    lk::ui::EncoderResolutions resolutions;
+    dash.setEncoderResolutions(&resolutions);
+    dash.show();
+    auto m = found(3, protocol::Series::MS, QStringLiteral("MS4015"));
+    m.model.generation = protocol::Generation::V2_35;
+    model.addFound(m);
+    model.setCurrentId(3);
+    // lkstudio hands every telemetry batch to the model and to the resolutions.
+    auto feed = [&](int encoder) {
+        TelemetrySample s = motion(3, true);
+        s.encoder = encoder;
+        model.applyTelemetry({s});
+        resolutions.observe(lk::bus::TelemetryBatch{s});
+        dash.refresh();
+        return dash.readout(QStringLiteral("encoder"))->value();
+    };
+    QCOMPARE(feed(4000), QStringLiteral("4000 of 4096 (12-bit, series default)"));
+    QCOMPARE(feed(43388), QStringLiteral("43388 of 65536 (16-bit, from data)"));
+    // Never lowered by a smaller value afterwards: a real MS4015 on firmware 2.35.
+    QCOMPARE(feed(6437), QStringLiteral("6437 of 65536 (16-bit, from data)"));
+    // The user's choice wins, and both views read the same resolution.
+    lk::bus::KnownMotor known;
+    known.id = 3;
+    known.series = protocol::Series::MS;
+    known.model = m.model;
+    known.generation = m.model.generation;
+    resolutions.setUserBits(3, known, 18);
+    QCOMPARE(feed(6437), QStringLiteral("6437 of 65536 (18-bit, your setting)"));
 }
 
 QTEST_MAIN(tst_Dashboard)

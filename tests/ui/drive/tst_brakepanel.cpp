@@ -1,0 +1,190 @@
+#include "DriveTestRig.h"
+
+#include <drive/BrakePanel.h>
+#include <drive/ConfirmDialog.h>
+#include <drive/ControlView.h>
+
+#include <QtTest/QtTest>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QPushButton>
+
+using lk::drivetest::kWaitMs;
+using lk::drivetest::SimRig;
+using lk::protocol::Command;
+using lk::ui::BrakePanel;
+using lk::ui::ConfirmDialog;
+using lk::ui::ConfirmRequest;
+using lk::ui::ControlView;
+
+namespace {
+
+// Drive 1 speaks V2.3, drive 3 is an MS4015 on firmware 2.35.
+const QString kBus = QStringLiteral("1:MF,3:MS4015@2.35");
+
+std::unique_ptr<ControlView> openView(SimRig &rig, int id)
+{
+    auto view = std::make_unique<ControlView>();
+    view->resize(1200, 800);
+    view->setSession(&rig.session);
+    view->setConnected(true);
+    view->setDrive(id, rig.motor(id));
+    view->show();
+    return view;
+}
+
+QPushButton *button(QWidget &view, const char *name)
+{
+    return view.findChild<QPushButton *>(QLatin1String(name));
+}
+
+bool released(SimRig &rig, int id)
+{
+    return rig.read<bool>(id, [](const lk::sim::SimDrive &d) { return d.brakeReleased(); });
+}
+
+// The simulated drive's motor on (0x88 turns a V2.35 motor that is off back on).
+bool motorOn(SimRig &rig, int id)
+{
+    rig.session.send(*lk::protocol::build::plain(Command::MotorRun, id).request);
+    return rig.barrier(id);
+}
+
+} // namespace
+
+/// The Control view's brake panel (0x8C) on the built-in simulated bus.
+class tst_BrakePanel : public QObject {
+    Q_OBJECT
+private slots:
+    void readEngageRelease();
+    void releaseWithMotorOffNeedsASecondConfirmation();
+    void declinedReleaseSendsNothing();
+    void v23DriveHasNoBrake();
+};
+
+void tst_BrakePanel::readEngageRelease()
+{
+    SimRig rig(kBus);
+    QVERIFY(rig.open());
+    QVERIFY(motorOn(rig, 3));
+    auto view = openView(rig, 3);
+    BrakePanel *brake = view->brakePanel();
+    QVERIFY(brake->absence().isEmpty());
+    QStringList asked;
+    ConfirmDialog::ScopedPolicy yes([&](const ConfirmRequest &q) {
+        asked << q.key;
+        return true;
+    });
+
+    QTest::mouseClick(button(*view, "brakeRead"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(brake->lastState().has_value(), kWaitMs);
+    QVERIFY(!brake->lastState()->released());
+    QVERIFY(view->findChild<QLabel *>(QStringLiteral("brakeState"))->text().contains("engaged"));
+
+    QSignalSpy changed(brake, &BrakePanel::changeFinished);
+    QTest::mouseClick(button(*view, "brakeRelease"), Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(changed.count(), 1, kWaitMs);
+    QCOMPARE(changed.at(0).at(0).toBool(), true);
+    QCOMPARE(asked, QStringList{QStringLiteral("brake_release")}); // the motor is on: one question
+    QTRY_VERIFY_WITH_TIMEOUT(brake->statusText().contains("Read back"), kWaitMs);
+    QVERIFY(released(rig, 3));
+    QVERIFY(brake->lastState()->released());
+    QVERIFY2(brake->statusText().contains("release (0x8C 0x01)") &&
+                 brake->statusText().contains("answered: released"),
+             qPrintable(brake->statusText()));
+
+    asked.clear();
+    QTest::mouseClick(button(*view, "brakeEngage"), Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(changed.count(), 2, kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(brake->statusText().contains("Read back"), kWaitMs);
+    QVERIFY(asked.isEmpty()); // engaging holds the load: nothing to ask
+    QVERIFY(!released(rig, 3));
+    QVERIFY(!brake->lastState()->released());
+    QVERIFY(rig.barrier(3));
+    // read, release + read-back, engage + read-back
+    QCOMPARE(rig.count(3, Command::Brake), 5);
+}
+
+void tst_BrakePanel::releaseWithMotorOffNeedsASecondConfirmation()
+{
+    SimRig rig(kBus);
+    QVERIFY(rig.open()); // a drive powers up with its motor off
+    auto view = openView(rig, 3);
+    BrakePanel *brake = view->brakePanel();
+    QVERIFY(rig.barrier(3));
+    const int states = rig.count(3, Command::ReadState1);
+    QStringList asked;
+    {
+        ConfirmDialog::ScopedPolicy firstOnly([&](const ConfirmRequest &q) {
+            asked << q.key;
+            return q.key == QLatin1String("brake_release");
+        });
+        QTest::mouseClick(button(*view, "brakeRelease"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(brake->statusText().startsWith("Refused"), kWaitMs);
+    }
+    QCOMPARE(asked, (QStringList{QStringLiteral("brake_release"),
+                                 QStringLiteral("brake_release_motor_off")}));
+    QVERIFY(brake->statusText().contains("motor is off"));
+    QVERIFY(rig.barrier(3));
+    QCOMPARE(rig.count(3, Command::ReadState1), states + 2); // the motor's state, the barrier
+    QCOMPARE(rig.count(3, Command::Brake), 0);
+    QVERIFY(!released(rig, 3));
+
+    // Both warnings confirmed: released.
+    asked.clear();
+    ConfirmDialog::ScopedPolicy yes([&](const ConfirmRequest &q) {
+        asked << q.key;
+        return true;
+    });
+    QSignalSpy changed(brake, &BrakePanel::changeFinished);
+    QTest::mouseClick(button(*view, "brakeRelease"), Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(changed.count(), 1, kWaitMs);
+    QCOMPARE(asked.size(), 2);
+    QTRY_VERIFY_WITH_TIMEOUT(released(rig, 3), kWaitMs);
+}
+
+void tst_BrakePanel::declinedReleaseSendsNothing()
+{
+    SimRig rig(kBus);
+    QVERIFY(rig.open());
+    auto view = openView(rig, 3);
+    QVERIFY(rig.barrier(3));
+    const int states = rig.count(3, Command::ReadState1);
+    ConfirmDialog::ScopedPolicy no([](const ConfirmRequest &) { return false; });
+    QTest::mouseClick(button(*view, "brakeRelease"), Qt::LeftButton);
+    QVERIFY(view->brakePanel()->statusText().startsWith("Cancelled"));
+    QVERIFY(rig.barrier(3));
+    QCOMPARE(rig.count(3, Command::Brake), 0);
+    QCOMPARE(rig.count(3, Command::ReadState1), states + 1); // the barrier only
+    QVERIFY(!released(rig, 3));
+}
+
+void tst_BrakePanel::v23DriveHasNoBrake()
+{
+    SimRig rig(kBus);
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    BrakePanel *brake = view->brakePanel();
+    QVERIFY2(brake->absence().contains("v2.3") && brake->absence().contains("no brake control"),
+             qPrintable(brake->absence()));
+    QCOMPARE(view->findChild<QLabel *>(QStringLiteral("brakeState"))->text(), brake->absence());
+    for (const char *name : {"brakeRead", "brakeEngage", "brakeRelease"})
+        QVERIFY(!button(*view, name)->isEnabled());
+    QStringList asked;
+    ConfirmDialog::ScopedPolicy yes([&](const ConfirmRequest &q) {
+        asked << q.key;
+        return true;
+    });
+    brake->readState();
+    brake->engage();
+    brake->release();
+    QVERIFY(asked.isEmpty());
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::Brake), 0);
+    // Another drive of the same view: the V2.35 one offers the brake.
+    view->setDrive(3, rig.motor(3));
+    QVERIFY(brake->absence().isEmpty());
+    QVERIFY(button(*view, "brakeRead")->isEnabled());
+}
+
+QTEST_MAIN(tst_BrakePanel)
+#include "tst_brakepanel.moc"
