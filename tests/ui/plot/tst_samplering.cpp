@@ -25,6 +25,34 @@ QVector<double> fill(SampleRing &ring, int total, quint32 seed)
     return all;
 }
 
+// ring.minMax over 300 random index ranges against a scan of `all` (oldest first).
+void checkMinMaxAgainstBruteForce(const SampleRing &ring, const QVector<double> &all)
+{
+    const int oldest = int(all.size() - ring.size());
+    QRandomGenerator random(99);
+    for (int trial = 0; trial < 300; ++trial) {
+        qsizetype a = random.bounded(int(ring.size()));
+        qsizetype b = random.bounded(int(ring.size()) + 1);
+        if (trial == 0) {
+            a = 0;
+            b = ring.size(); // everything held
+        }
+        if (a > b) {
+            std::swap(a, b);
+        }
+        MinMax expected;
+        for (qsizetype i = a; i < b; ++i) {
+            expected.add(all[oldest + i]);
+        }
+        const MinMax got = ring.minMax(a, b);
+        QCOMPARE(got.isValid(), expected.isValid());
+        if (expected.isValid()) {
+            QCOMPARE(got.min, expected.min);
+            QCOMPARE(got.max, expected.max);
+        }
+    }
+}
+
 using ColumnExtremes = std::map<int, std::pair<double, double>>;
 
 ColumnExtremes extremes(const QList<QPointF> &points, double t0, double t1, int columns)
@@ -120,29 +148,7 @@ void tst_SampleRing::minMaxMatchesBruteForce()
     QFETCH(int, appended);
     SampleRing ring(capacity);
     const QVector<double> all = fill(ring, appended, 7);
-    const int oldest = appended - int(ring.size());
-    QRandomGenerator random(99);
-    for (int trial = 0; trial < 300; ++trial) {
-        qsizetype a = random.bounded(int(ring.size()));
-        qsizetype b = random.bounded(int(ring.size()) + 1);
-        if (trial == 0) {
-            a = 0;
-            b = ring.size(); // everything held
-        }
-        if (a > b) {
-            std::swap(a, b);
-        }
-        MinMax expected;
-        for (qsizetype i = a; i < b; ++i) {
-            expected.add(all[oldest + i]);
-        }
-        const MinMax got = ring.minMax(a, b);
-        QCOMPARE(got.isValid(), expected.isValid());
-        if (expected.isValid()) {
-            QCOMPARE(got.min, expected.min);
-            QCOMPARE(got.max, expected.max);
-        }
-    }
+    checkMinMaxAgainstBruteForce(ring, all);
 }
 
 void tst_SampleRing::pyramidMatchesScan_data()
@@ -244,27 +250,9 @@ void tst_SampleRing::retentionClosesTheRing()
 void tst_SampleRing::closedRingStaysExact()
 {
     SampleRing ring(100000, 3.0);
-    QVector<double> all = fill(ring, 25000, 11); // 1 kHz: closes at 3001 points
+    const QVector<double> all = fill(ring, 25000, 11); // 1 kHz: closes at 3001 points
     QCOMPARE(ring.capacity(), qsizetype(3001));
-    const int oldest = int(all.size() - ring.size());
-    QRandomGenerator random(5);
-    for (int trial = 0; trial < 300; ++trial) {
-        qsizetype a = random.bounded(int(ring.size()));
-        qsizetype b = random.bounded(int(ring.size()) + 1);
-        if (a > b) {
-            std::swap(a, b);
-        }
-        MinMax expected;
-        for (qsizetype i = a; i < b; ++i) {
-            expected.add(all[oldest + i]);
-        }
-        const MinMax got = ring.minMax(a, b);
-        QCOMPARE(got.isValid(), expected.isValid());
-        if (expected.isValid()) {
-            QCOMPARE(got.min, expected.min);
-            QCOMPARE(got.max, expected.max);
-        }
-    }
+    checkMinMaxAgainstBruteForce(ring, all);
     const double t0 = ring.timeAt(0), t1 = ring.timeAt(ring.size() - 1);
     const auto scan = ring.decimate(t0, t1, 97, DecimationMethod::Scan);
     const auto pyramid = ring.decimate(t0, t1, 97, DecimationMethod::Pyramid);
