@@ -11,8 +11,9 @@ namespace lk::lkctl {
 
 class LiveBus;
 
-/// `lkctl write ID pid ... --ram|--rom [--yes]` and `lkctl write ID accel DPS2 --ram`: write,
-/// read back, print what the drive now holds; a read-back that differs fails loudly.
+/// `lkctl write ID pid ... --ram|--rom [--yes]`, `lkctl write ID accel DPS2 --ram` and
+/// `lkctl write ID param NAME VALUE... --ram|--rom [--yes]` (V2.35): write, read back, print
+/// what the drive now holds; a read-back that differs fails loudly.
 class WriteCommand : public LiveCommand {
 public:
     QString name() const override { return QStringLiteral("write"); }
@@ -32,6 +33,10 @@ private:
         QString what; ///< "PID gains", "acceleration"
     };
     std::optional<Plan> parse(const ArgParser &parser, Console &console, int *status) const;
+    /// `write ID param NAME VALUE...` (V2.35), see ParamWrite.
+    int runParam(const ArgParser &parser, const BusOptions &busOptions, Console &console) const;
+    /// A ROM write without --yes: explain, send nothing, kExitRefused.
+    int refuseRom(Console &console, const QString &what) const;
     /// Read back what was written, print it; kExitMismatch when it differs.
     int readBack(LiveBus &bus, const Plan &plan);
 };
