@@ -62,14 +62,15 @@ QString DriveParams::helpLines(const QString &indent)
 {
     QString text;
     for (const DriveParam &p : all()) {
-        QStringList values;
-        for (const protocol::FieldSpec &f : p.fields)
-            values << (p.isLoop() ? f.name.section(QLatin1Char('_'), -1).toUpper() : QString());
-        const protocol::FieldSpec &f = p.fields.first();
+        QString values;
+        if (p.isLoop()) {
+            QStringList gains;
+            for (const protocol::FieldSpec &f : p.fields)
+                gains << f.name.section(QLatin1Char('_'), -1).toUpper();
+            values = gains.join(QLatin1Char(' ')) + QStringLiteral(", each ");
+        }
         text +=
-            indent + p.name.leftJustified(17) +
-            (p.isLoop() ? values.join(QLatin1Char(' ')) + QStringLiteral(", each ") : QString()) +
-            f.range + QLatin1Char('\n');
+            indent + p.name.leftJustified(17) + values + p.fields.first().range + QLatin1Char('\n');
     }
     return text;
 }
@@ -114,20 +115,22 @@ std::optional<QList<ParameterValue>> DriveParams::read(LiveBus &bus, int id,
     return values;
 }
 
+bool DriveParams::readFields(LiveBus &bus, int id, const DriveParam &param, QJsonObject &into)
+{
+    const std::optional<QList<ParameterValue>> values = read(bus, id, param);
+    if (!values)
+        return false;
+    const QJsonObject fields = valueFields(param, *values);
+    for (auto it = fields.begin(); it != fields.end(); ++it)
+        into.insert(it.key(), it.value());
+    return true;
+}
+
 bool DriveParams::readAll(LiveBus &bus, int id, QJsonObject &pid, QJsonObject &params)
 {
     bool ok = true;
-    for (const DriveParam &p : all()) {
-        const std::optional<QList<ParameterValue>> values = read(bus, id, p);
-        if (!values) {
-            ok = false;
-            continue;
-        }
-        QJsonObject &into = p.isLoop() ? pid : params;
-        const QJsonObject fields = valueFields(p, *values);
-        for (auto it = fields.begin(); it != fields.end(); ++it)
-            into.insert(it.key(), it.value());
-    }
+    for (const DriveParam &p : all())
+        ok &= readFields(bus, id, p, p.isLoop() ? pid : params);
     return ok;
 }
 

@@ -43,6 +43,8 @@ public:
     /// Read `param` with read_param (one request per ID); after printing why, nullopt.
     static std::optional<QList<protocol::ParameterValue>> read(LiveBus &bus, int id,
                                                                const DriveParam &param);
+    /// Read `param` and add its value fields to `into`; false after printing why.
+    static bool readFields(LiveBus &bus, int id, const DriveParam &param, QJsonObject &into);
     /// Read every parameter: loops' gains into `pid`, the others into `params`. False when a
     /// read failed (reported); what was read is kept.
     static bool readAll(LiveBus &bus, int id, QJsonObject &pid, QJsonObject &params);

@@ -125,26 +125,10 @@ bool ReadCommand::readInto(LiveBus &bus, Command command, int id, QJsonObject &f
 bool ReadCommand::readV235Params(LiveBus &bus, int id, bool gainsOnly, QJsonObject &fields)
 {
     // `pid`: the three loop parameters under the V2.3 names plus *_kd; `params`: all of
-    // them, the drive's limits and ramps after the gains (V2.35.md section 6).
-    QJsonObject params;
-    const bool ok =
-        gainsOnly ? readLoops(bus, id, fields) : DriveParams::readAll(bus, id, fields, params);
-    for (auto it = params.begin(); it != params.end(); ++it)
-        fields.insert(it.key(), it.value());
-    return ok;
-}
-
-bool ReadCommand::readLoops(LiveBus &bus, int id, QJsonObject &fields)
-{
+    // them (V2.35.md section 6).
     for (const DriveParam &p : DriveParams::all()) {
-        if (!p.isLoop())
-            continue;
-        const auto values = DriveParams::read(bus, id, p);
-        if (!values)
+        if ((p.isLoop() || !gainsOnly) && !DriveParams::readFields(bus, id, p, fields))
             return false;
-        const QJsonObject part = DriveParams::valueFields(p, *values);
-        for (auto it = part.begin(); it != part.end(); ++it)
-            fields.insert(it.key(), it.value());
     }
     return true;
 }

@@ -28,8 +28,6 @@ private:
     static bool readInto(LiveBus &bus, protocol::Command command, int id, QJsonObject &fields);
     /// `pid` (gainsOnly) or `params` on a V2.35 drive, with read_param.
     static bool readV235Params(LiveBus &bus, int id, bool gainsOnly, QJsonObject &fields);
-    /// The three loops' gains: V2.3 field names plus *_kd.
-    static bool readLoops(LiveBus &bus, int id, QJsonObject &fields);
 };
 
 } // namespace lk::lkctl

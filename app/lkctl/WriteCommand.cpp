@@ -44,6 +44,8 @@ QString WriteCommand::usage() const
                "\n"
                "Write drive ID's PID gains (each 0..255) or acceleration (0..2147483647 dps/s),\n"
                "then read them back (read_pid, read_accel) and print what the drive now holds.\n"
+               "The model is read first: pid and accel exist on V2.3 drives only (a V2.35\n"
+               "drive is refused, exit 1: write its param instead).\n"
                "\n"
                "param (firmware 2.35 and later, protocol V2.35) writes one parameter with\n"
                "write_param_ram / write_param_rom, then reads it back with read_param:\n"
@@ -82,7 +84,7 @@ QString WriteCommand::usage() const
                  "  5  the read-back differs from what was written: the drive holds other\n"
                  "     values (some firmware ignores write_accel_ram); both are printed\n"
                  "  (1 also: a V2.35 drive answered a parameter write with flag 1 = failure,\n"
-                 "     or a V2.3 drive was asked for a parameter)\n")),
+                 "     or the drive's generation lacks the command)\n")),
              DriveParams::helpLines(QStringLiteral("  ")));
 }
 
@@ -95,17 +97,15 @@ std::optional<WriteCommand::Plan> WriteCommand::parse(const ArgParser &parser, C
     };
     const QStringList &pos = parser.positionals();
     if (pos.size() < 2)
-        return fail(QStringLiteral("expected ID and pid|accel with their values"));
+        return fail(QStringLiteral("expected ID and pid|accel|param with their values"));
     QString error;
     if (!parseId(pos.at(0), &error))
         return fail(error);
-    const bool ram = parser.isSet(QStringLiteral("ram"));
     Plan plan;
-    plan.rom = parser.isSet(QStringLiteral("rom"));
-    if (ram == plan.rom)
-        return fail(ram ? QStringLiteral("give --ram or --rom, not both")
-                        : QStringLiteral("say where to write: --ram (until power-off) or --rom "
-                                         "--yes (kept)"));
+    const std::optional<bool> rom = romChosen(parser, &error);
+    if (!rom)
+        return fail(error);
+    plan.rom = *rom;
     protocol::FieldValues values;
     values.insert(QStringLiteral("id"), pos.at(0));
     if (pos.at(1) == QLatin1String("pid")) {
@@ -138,12 +138,15 @@ std::optional<WriteCommand::Plan> WriteCommand::parse(const ArgParser &parser, C
     return plan;
 }
 
-int WriteCommand::readBack(LiveBus &bus, const Plan &plan)
+int WriteCommand::readBack(LiveBus &bus, const Plan &plan, bool acknowledged)
 {
     const int id = plan.request.id;
     const bus::RequestResult r = bus.request(plan.readBack, id);
     if (!r.ok() || !r.reply) {
-        bus.error(QStringLiteral("the write was acknowledged but the read-back failed:"));
+        bus.error(acknowledged ? QStringLiteral("the write was acknowledged but the read-back "
+                                                "failed:")
+                               : QStringLiteral("the read-back failed too, so whether the write "
+                                                "took effect is unknown:"));
         bus.reportFailure(r);
         return kExitFailure;
     }
@@ -202,9 +205,20 @@ int WriteCommand::run(const QStringList &args, Console &console)
     LiveBus bus(console, name());
     if (!bus.open(*busOptions))
         return kExitFailure;
+    // The model first: a V2.35 drive has neither command, and is never sent one it lacks.
+    const int id = plan->request.id;
+    const QString lacks = protocol::CommandTable::name(plan->request.command);
+    if (!speaks(bus, id, protocol::Generation::V2_3,
+                QStringLiteral("drive %1 runs firmware 2.35 or later (protocol V2.35), which has "
+                               "no %2; nothing was sent. Its gains and ramps are parameters: "
+                               "'lkctl write %1 param angle_pid KP KI KD' (speed_pid, iq_pid), "
+                               "'lkctl write %1 param speed_ramp_dps2 DPS2'")
+                    .arg(id)
+                    .arg(lacks)))
+        return kExitFailure;
     const bus::RequestResult w = bus.request(plan->request);
     if (w.ok())
-        return readBack(bus, *plan);
+        return readBack(bus, *plan, true);
     bus.reportFailure(w);
     // A lost or corrupt reply does not mean the drive did not act (and ROM writes are never
     // repeated): what it holds now is the answer the user needs.
@@ -213,7 +227,31 @@ int WriteCommand::run(const QStringList &args, Console &console)
     bus.error(QStringLiteral("reading back what drive %1 holds now (if it matches, the write "
                              "took effect and only its reply was lost):")
                   .arg(plan->request.id));
-    return readBack(bus, *plan);
+    return readBack(bus, *plan, false);
+}
+
+bool WriteCommand::speaks(LiveBus &bus, int id, protocol::Generation generation,
+                          const QString &otherwise)
+{
+    const std::optional<LiveBus::Identity> who = bus.identify(id);
+    if (!who)
+        return false;
+    if (who->model.generation == generation)
+        return true;
+    bus.error(otherwise);
+    return false;
+}
+
+std::optional<bool> WriteCommand::romChosen(const ArgParser &parser, QString *error)
+{
+    const bool ram = parser.isSet(QStringLiteral("ram"));
+    const bool rom = parser.isSet(QStringLiteral("rom"));
+    if (ram != rom)
+        return rom;
+    *error = ram ? QStringLiteral("give --ram or --rom, not both")
+                 : QStringLiteral("say where to write: --ram (until power-off) or --rom --yes "
+                                  "(kept)");
+    return std::nullopt;
 }
 
 int WriteCommand::refuseRom(Console &console, const QString &what) const
@@ -234,30 +272,22 @@ int WriteCommand::runParam(const ArgParser &parser, const BusOptions &busOptions
     QString error;
     if (!parseId(pos.at(0), &error))
         return usageError(console, error);
-    const bool ram = parser.isSet(QStringLiteral("ram"));
-    const bool rom = parser.isSet(QStringLiteral("rom"));
-    if (ram == rom)
-        return usageError(console, ram ? QStringLiteral("give --ram or --rom, not both")
-                                       : QStringLiteral("say where to write: --ram (until "
-                                                        "power-off) or --rom --yes (kept)"));
+    const std::optional<bool> rom = romChosen(parser, &error);
+    if (!rom)
+        return usageError(console, error);
     const std::optional<ParamWrite::Plan> plan =
-        ParamWrite::plan(pos, rom, parser.isSet(QStringLiteral("json")), &error);
+        ParamWrite::plan(pos, *rom, parser.isSet(QStringLiteral("json")), &error);
     if (!plan)
         return usageError(console, error);
-    if (rom && !parser.isSet(QStringLiteral("yes")))
+    if (*rom && !parser.isSet(QStringLiteral("yes")))
         return refuseRom(console, plan->param.name);
     LiveBus bus(console, name());
     if (!bus.open(busOptions))
         return kExitFailure;
     // The model first: only a V2.35 drive has the parameter table.
-    const std::optional<LiveBus::Identity> who = bus.identify(plan->id);
-    if (!who)
+    if (!speaks(bus, plan->id, protocol::Generation::V2_35,
+                DriveParams::noTableMessage(plan->id, QStringLiteral("write ") + plan->param.name)))
         return kExitFailure;
-    if (who->model.generation != protocol::Generation::V2_35) {
-        bus.error(
-            DriveParams::noTableMessage(plan->id, QStringLiteral("write ") + plan->param.name));
-        return kExitFailure;
-    }
     return ParamWrite::run(bus, *plan);
 }
 

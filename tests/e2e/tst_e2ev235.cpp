@@ -13,18 +13,6 @@ using namespace lk::e2e;
 
 namespace {
 
-QJsonObject jsonObject(const QByteArray &line)
-{
-    return QJsonDocument::fromJson(line).object();
-}
-
-QString describe(const CtlResult &r)
-{
-    return QStringLiteral("exit %1\nstdout: %2\nstderr: %3")
-        .arg(r.exitCode)
-        .arg(QString::fromUtf8(r.out), QString::fromUtf8(r.err));
-}
-
 /// Frames lksim received that start with `prefix` ("3E 44 01").
 qsizetype countFrames(const QList<QByteArray> &frames, const QByteArray &prefix)
 {
@@ -45,6 +33,7 @@ private slots:
     void scanAndInfoTellTheGenerations();
     void readParamsUsesInfosNames();
     void v23DriveHasNoParameterTable();
+    void v235DriveIsNotSentV23Writes();
     void writeParamRamReadsBack();
     void maxAngleIsWrittenAndReadAsAPair();
     void outOfRangeParamSendsNothing();
@@ -101,15 +90,15 @@ void tst_E2eV235::scanAndInfoTellTheGenerations()
 {
     QVERIFY(startSim());
     const CtlResult scan = ctl({"scan", "--json", "--retries", "1"});
-    QVERIFY2(scan.exitCode == 0, qPrintable(describe(scan)));
+    QVERIFY2(scan.exitCode == 0, qPrintable(describeRun(scan)));
     const QJsonArray drives = QJsonDocument::fromJson(scan.out).array();
     QCOMPARE(drives.size(), 2);
     QCOMPARE(drives.at(0).toObject().value("generation").toString(), QStringLiteral("v2.35"));
     QCOMPARE(drives.at(1).toObject().value("generation").toString(), QStringLiteral("v2.3"));
 
     const CtlResult info = ctl({"info", "1", "--json"});
-    QVERIFY2(info.exitCode == 0, qPrintable(describe(info)));
-    const QJsonObject o = jsonObject(info.out);
+    QVERIFY2(info.exitCode == 0, qPrintable(describeRun(info)));
+    const QJsonObject o = jsonOf(info.out);
     QCOMPARE(o.value("pid").toObject().size(), 9);
     QVERIFY(o.value("params").toObject().contains("max_angle_deg"));
 }
@@ -118,16 +107,16 @@ void tst_E2eV235::readParamsUsesInfosNames()
 {
     QVERIFY(startSim());
     const CtlResult info = ctl({"info", "1", "--json"});
-    QVERIFY2(info.exitCode == 0, qPrintable(describe(info)));
+    QVERIFY2(info.exitCode == 0, qPrintable(describeRun(info)));
     const CtlResult r = ctl({"read", "1", "params", "--json"});
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
-    const QJsonObject o = jsonObject(r.out);
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    const QJsonObject o = jsonOf(r.out);
     QCOMPARE(o.value("command").toString(), QStringLiteral("read_param"));
     QCOMPARE(o.value("code").toString(), QStringLiteral("0x40"));
     const QJsonObject fields = o.value("fields").toObject();
     // Every parameter, under exactly the names info prints (gains and params together).
-    QJsonObject expected = jsonObject(info.out).value("pid").toObject();
-    const QJsonObject params = jsonObject(info.out).value("params").toObject();
+    QJsonObject expected = jsonOf(info.out).value("pid").toObject();
+    const QJsonObject params = jsonOf(info.out).value("params").toObject();
     for (auto it = params.begin(); it != params.end(); ++it)
         expected.insert(it.key(), it.value());
     QCOMPARE(fields.keys(), expected.keys());
@@ -159,23 +148,39 @@ void tst_E2eV235::v23DriveHasNoParameterTable()
     QCOMPARE(frames.size(), 3);
 }
 
+void tst_E2eV235::v235DriveIsNotSentV23Writes()
+{
+    // write pid / accel read the model first: a V2.35 drive has no 0x31, 0x32 or 0x34.
+    QVERIFY(startSim());
+    CtlResult r = ctl({"write", "1", "pid", "1", "2", "3", "4", "5", "6", "--ram"});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains("has no write_pid_ram; nothing was sent") &&
+                 r.err.contains("param angle_pid KP KI KD"),
+             r.err.constData());
+    r = ctl({"write", "1", "accel", "500", "--ram"});
+    QCOMPARE(r.exitCode, 1);
+    QVERIFY2(r.err.contains("speed_ramp_dps2"), r.err.constData());
+    for (const QByteArray &f : m_sim->receivedFrames())
+        QVERIFY2(f.startsWith("3E 12 01"), f.constData()); // read_model only
+}
+
 void tst_E2eV235::writeParamRamReadsBack()
 {
     QVERIFY(startSim());
     CtlResult r = ctl({"write", "1", "param", "speed_pid", "51", "21", "3", "--ram", "--json"});
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     QVERIFY(r.out.startsWith("{\"command\":\"write_param_ram\",\"id\":1,\"param\":\"speed_pid\","
                              "\"written\":{\"speed_kp\":51,\"speed_ki\":21,\"speed_kd\":3},"));
-    const QJsonObject o = jsonObject(r.out);
+    const QJsonObject o = jsonOf(r.out);
     QCOMPARE(o.value("match").toBool(), true);
     QCOMPARE(o.value("holds").toObject(), o.value("written").toObject());
     r = ctl({"write", "1", "param", "max_speed_dps", "360", "--ram", "--json"});
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     // The frame of V2.35.md section 13, then the read-back.
     const QList<QByteArray> frames = m_sim->receivedFrames();
     QCOMPARE(countFrames(frames, "3E 42 01 07 88 9A A0 8C 00 00 00 00 C6"), qsizetype(1));
     r = ctl({"read", "1", "params", "--json"});
-    const QJsonObject fields = jsonObject(r.out).value("fields").toObject();
+    const QJsonObject fields = jsonOf(r.out).value("fields").toObject();
     QCOMPARE(fields.value("speed_kp").toInt(), 51);
     QCOMPARE(fields.value("speed_kd").toInt(), 3);
     QCOMPARE(fields.value("max_speed_dps").toDouble(), 360.0);
@@ -187,8 +192,8 @@ void tst_E2eV235::maxAngleIsWrittenAndReadAsAPair()
     // 3e9 deg = 3e11 in 0.01 deg: both halves carry bits.
     const CtlResult r =
         ctl({"write", "1", "param", "max_angle_deg", "3000000000", "--ram", "--json"});
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
-    const QJsonObject o = jsonObject(r.out);
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    const QJsonObject o = jsonOf(r.out);
     QCOMPARE(o.value("holds").toObject().value("max_angle_raw").toInteger(), 300000000000LL);
     QCOMPARE(o.value("match").toBool(), true);
     const QList<QByteArray> frames = m_sim->receivedFrames();
@@ -203,8 +208,7 @@ void tst_E2eV235::maxAngleIsWrittenAndReadAsAPair()
     QCOMPARE(countFrames(frames, "3E 40 01 02 81 9B"), qsizetype(1));
     QCOMPARE(countFrames(frames, "3E 40 01 02 81 9C"), qsizetype(1));
     const CtlResult params = ctl({"read", "1", "params", "--json"});
-    QCOMPARE(jsonObject(params.out).value("fields").toObject().value("max_angle_deg").toDouble(),
-             3e9);
+    QCOMPARE(jsonOf(params.out).value("fields").toObject().value("max_angle_deg").toDouble(), 3e9);
 }
 
 void tst_E2eV235::outOfRangeParamSendsNothing()
@@ -234,22 +238,22 @@ void tst_E2eV235::romWriteNeedsYesAndIsSentOnce()
     QVERIFY2(r.err.contains("flash") && r.err.contains("speed_ramp_dps2"), r.err.constData());
     QVERIFY(m_sim->receivedFrames().isEmpty()); // not even read_model
     r = ctl({"write", "1", "param", "speed_ramp_dps2", "12345", "--rom", "--yes", "--json"});
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
-    QCOMPARE(jsonObject(r.out).value("command").toString(), QStringLiteral("write_param_rom"));
-    QCOMPARE(jsonObject(r.out).value("match").toBool(), true);
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    QCOMPARE(jsonOf(r.out).value("command").toString(), QStringLiteral("write_param_rom"));
+    QCOMPARE(jsonOf(r.out).value("match").toBool(), true);
     QCOMPARE(countFrames(m_sim->receivedFrames(), "3E 44 01"), qsizetype(1));
     // Kept across a restart of the drive.
     m_sim->stop();
     QVERIFY(startSim({QStringLiteral("--rom-dir"), romDir}));
     r = ctl({"read", "1", "params", "--json"});
-    QCOMPARE(jsonObject(r.out).value("fields").toObject().value("speed_ramp_dps2").toInt(), 12345);
+    QCOMPARE(jsonOf(r.out).value("fields").toObject().value("speed_ramp_dps2").toInt(), 12345);
 }
 
 void tst_E2eV235::brakeStatusEngageRelease()
 {
     QVERIFY(startSim());
     CtlResult r = ctl({"brake", "1", "status", "--json"});
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     QCOMPARE(r.out, QByteArray("{\"command\":\"brake\",\"id\":1,\"action\":\"status\","
                                "\"motor_on\":null,\"brake_released\":false,\"brake_raw\":0}\n"));
     r = ctl({"brake", "1", "release"});
@@ -257,14 +261,14 @@ void tst_E2eV235::brakeStatusEngageRelease()
     QVERIFY2(r.err.contains("--yes"), r.err.constData());
     // The motor on (a speed command), then release is allowed with --yes.
     r = ctl({"control", "1", "speed", "0"});
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     r = ctl({"brake", "1", "release", "--yes", "--json"});
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
-    QCOMPARE(jsonObject(r.out).value("motor_on").toBool(), true);
-    QCOMPARE(jsonObject(r.out).value("brake_released").toBool(), true);
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    QCOMPARE(jsonOf(r.out).value("motor_on").toBool(), true);
+    QCOMPARE(jsonOf(r.out).value("brake_released").toBool(), true);
     r = ctl({"brake", "1", "engage", "--json"});
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
-    QCOMPARE(jsonObject(r.out).value("brake_released").toBool(), false);
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    QCOMPARE(jsonOf(r.out).value("brake_released").toBool(), false);
     const QList<QByteArray> frames = m_sim->receivedFrames();
     QCOMPARE(countFrames(frames, "3E 8C 01 01 CC 10 10"), qsizetype(1));
     QCOMPARE(countFrames(frames, "3E 8C 01 01 CC 01 01"), qsizetype(1));
@@ -275,16 +279,16 @@ void tst_E2eV235::releaseRefusedWhileMotorOff()
 {
     QVERIFY(startSim());
     CtlResult r = ctl({"off", "1"});
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     r = ctl({"brake", "1", "release", "--yes"});
     QCOMPARE(r.exitCode, 4);
     QVERIFY2(r.err.contains("the motor is off") && r.err.contains("--motor-off-ok"),
              r.err.constData());
     QCOMPARE(countFrames(m_sim->receivedFrames(), "3E 8C"), qsizetype(0));
     r = ctl({"brake", "1", "release", "--yes", "--motor-off-ok", "--json"});
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
-    QCOMPARE(jsonObject(r.out).value("motor_on").toBool(true), false);
-    QCOMPARE(jsonObject(r.out).value("brake_released").toBool(), true);
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    QCOMPARE(jsonOf(r.out).value("motor_on").toBool(true), false);
+    QCOMPARE(jsonOf(r.out).value("brake_released").toBool(), true);
     QCOMPARE(countFrames(m_sim->receivedFrames(), "3E 8C 01 01 CC 01 01"), qsizetype(1));
 }
 
@@ -302,9 +306,9 @@ void tst_E2eV235::badChecksumIsCountedNeverSuccess()
     QCOMPARE(countFrames(m_sim->receivedFrames(), "3E A4 01"), qsizetype(2));
     // The V2.3 drive's 0xA4 replies are good, and monitoring goes on.
     r = ctl({"control", "3", "multi-position", "10", "--json"});
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     r = ctl({"monitor", "1", "3", "--count", "3", "--json"});
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     QCOMPARE(r.out.count('\n'), 3); // --count counts lines: one per drive and round
     QVERIFY(r.out.contains("\"id\":1,") && r.out.contains("\"id\":3,"));
     m_sim->stop();
