@@ -40,13 +40,6 @@ std::optional<DriveParam> DriveParams::find(const QString &name)
         if (p.name == name)
             return p;
     }
-    const std::optional<ParamId> id = ParamTable::fromName(name);
-    if (!id || ParamTable::info(*id).layout == ParamLayout::HalfInt64)
-        return std::nullopt; // a half of max_angle_deg is never written alone
-    for (const DriveParam &p : all()) {
-        if (p.ids.first() == *id)
-            return p;
-    }
     return std::nullopt;
 }
 

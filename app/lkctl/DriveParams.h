@@ -29,8 +29,8 @@ struct DriveParam {
 class DriveParams {
 public:
     static const QList<DriveParam> &all();
-    /// By lkctl name (angle_pid, max_speed_dps, max_angle_deg ...) or by ParamTable name of a
-    /// one-value parameter (max_speed); nullopt otherwise.
+    /// By lkctl name (angle_pid, max_speed_dps, max_angle_deg ...); nullopt otherwise (a
+    /// half of max_angle_deg is never written alone).
     static std::optional<DriveParam> find(const QString &name);
     static QString names(); ///< "angle_pid, speed_pid, ..." for help and errors
     /// One help line per parameter: its name, its values and their ranges.
