@@ -317,9 +317,16 @@ int ControlCommand::send(LiveBus &bus, const Plan &plan, const safety::MotionPla
     const bus::RequestResult r = bus.request(request);
     if (!r.ok() || !r.reply) {
         bus.reportFailure(r);
-        if (r.status == bus::RequestStatus::Timeout)
-            bus.error(QStringLiteral("the drive may have acted on it all the same: check "
-                                     "with 'lkctl read %1 state2' or 'multi-turn'")
+        // Sent but not answered cleanly (silence, or a corrupt reply such as fw 2.35's bad
+        // data checksum on 0xA4): the drive may be moving all the same.
+        const bool sent = r.attempts > 0 && (r.status == bus::RequestStatus::Timeout ||
+                                             r.status == bus::RequestStatus::Error);
+        if (sent)
+            bus.error(QStringLiteral("the command was sent %1 time(s) and the drive may have "
+                                     "acted on it all the same (it may be moving): check with "
+                                     "'lkctl read %2 state2' or 'multi-turn', or stop it with "
+                                     "'lkctl stop %2'")
+                          .arg(r.attempts)
                           .arg(id));
         return kExitFailure;
     }

@@ -60,8 +60,10 @@ QString Dispatcher::usage() const
         "  2  unusable arguments or input text; nothing was sent\n"
         "  3  decode: the input held bytes that were not valid frames\n"
         "  4  refused for safety, nothing was sent: a control command over a series or soft\n"
-        "     limit, or a ROM write without --yes\n"
-        "  5  write: the value read back differs from the value written\n");
+        "     limit, a ROM write without --yes, or a brake release without --yes (or with\n"
+        "     the motor off, without --motor-off-ok)\n"
+        "  5  write: the value read back differs from the value written; brake: the drive\n"
+        "     reports another brake state than the one asked for\n");
     return text;
 }
 

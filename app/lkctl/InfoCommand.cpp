@@ -1,6 +1,7 @@
 #include "InfoCommand.h"
 
 #include "Console.h"
+#include "DriveParams.h"
 #include "LiveBus.h"
 #include "OrderedJson.h"
 #include "ReplyText.h"
@@ -127,9 +128,7 @@ bool InfoCommand::readInto(LiveBus &bus, const protocol::Request &request, QJson
         bus.reportFailure(r);
         return false;
     }
-    QJsonObject fields = FieldJson::replyFields(*r.reply);
-    fields.remove(QStringLiteral("param")); // parameter replies: the object's key says which
-    fields.remove(QStringLiteral("param_id"));
+    const QJsonObject fields = FieldJson::replyFields(*r.reply);
     for (auto it = fields.begin(); it != fields.end(); ++it)
         into.insert(it.key(), it.value());
     return true;
@@ -154,26 +153,9 @@ bool InfoCommand::readV235(LiveBus &bus, int id, QList<QPair<QString, QJsonObjec
 {
     // V2.35 has no 0x30/0x33 (V2.35.md section 3): the gains come from the parameter table,
     // under the V2.3 names plus *_kd, and the drive's own limits and ramps beside them.
-    using protocol::ParamId;
-    bool ok = true;
     QJsonObject state1, pid, params;
-    ok &= readInto(bus, *protocol::build::plain(Command::ReadState1, id).request, state1);
-    for (ParamId p : {ParamId::AnglePid, ParamId::SpeedPid, ParamId::CurrentPid})
-        ok &= readInto(bus, *protocol::build::readParam(id, p).request, pid);
-    for (ParamId p :
-         {ParamId::MaxTorqueCurrent, ParamId::MaxSpeed, ParamId::CurrentRamp, ParamId::SpeedRamp})
-        ok &= readInto(bus, *protocol::build::readParam(id, p).request, params);
-    QJsonObject low, high;
-    if (readInto(bus, *protocol::build::readParam(id, ParamId::MaxAngleLow).request, low) &&
-        readInto(bus, *protocol::build::readParam(id, ParamId::MaxAngleHigh).request, high)) {
-        const qint64 raw =
-            (qint64(high.value(QStringLiteral("max_angle_half_raw")).toInteger()) << 32) |
-            qint64(low.value(QStringLiteral("max_angle_half_raw")).toInteger());
-        params.insert(QStringLiteral("max_angle_deg"), double(raw) / 100.0);
-        params.insert(QStringLiteral("max_angle_raw"), raw);
-    } else {
-        ok = false;
-    }
+    bool ok = readInto(bus, *protocol::build::plain(Command::ReadState1, id).request, state1);
+    ok &= DriveParams::readAll(bus, id, pid, params);
     if (!state1.isEmpty())
         parts.append({QStringLiteral("state1"), state1});
     if (!pid.isEmpty())

@@ -1,6 +1,7 @@
 #include "ReadCommand.h"
 
 #include "Console.h"
+#include "DriveParams.h"
 #include "LiveBus.h"
 #include "OrderedJson.h"
 #include "ReplyText.h"
@@ -28,6 +29,7 @@ const QList<QPair<QString, Command>> &whats()
         {QStringLiteral("state2"), Command::ReadState2},
         {QStringLiteral("state3"), Command::ReadState3},
         {QStringLiteral("model"), Command::ReadModel},
+        {QStringLiteral("params"), Command::ReadParam},
     };
     return kWhats;
 }
@@ -81,8 +83,17 @@ QString ReadCommand::usage() const
                "  state3       read_state3       temperature_c ia_a ib_a ic_a (not on MS)\n"
                "  model        read_model        driver_name motor_name hardware_version "
                "firmware_version\n"
-               "state2 and state3 read the model first, to know the series (MS replies carry "
-               "power).\n"
+               "  params       read_param        V2.35 only: angle_kp angle_ki angle_kd, speed_*, "
+               "iq_*,\n"
+               "                                 max_torque max_speed_dps max_angle_deg "
+               "current_ramp\n"
+               "                                 speed_ramp_dps2 (every parameter; "
+               "max_angle_deg\n"
+               "                                 joins 0x9B and 0x9C)\n"
+               "Every WHAT reads the model first, to know the series (MS replies carry power)\n"
+               "and the generation: on a V2.35 drive pid is read with read_param (plus *_kd)\n"
+               "and accel does not exist; on a V2.3 drive params does not exist (exit 1,\n"
+               "nothing more is sent).\n"
                "\n"
                "Options:\n"
                "  --json   one line: {\"command\":\"read_state2\",\"code\":\"0x9C\",\"id\":3,"
@@ -94,6 +105,7 @@ QString ReadCommand::usage() const
                "  lkctl read 3 pid --port /dev/ttyUSB0\n"
                "  lkctl read 3 multi-turn --port ttyUSB0 --json\n"
                "  lkctl read 17 state2 --sim 17:MS\n"
+               "  lkctl read 1 params --sim 1:MS4015@2.35 --json\n"
                "\n"
                "%2")
         .arg(BusOptions::helpText(), exitStatusText());
@@ -110,21 +122,13 @@ bool ReadCommand::readInto(LiveBus &bus, Command command, int id, QJsonObject &f
     return true;
 }
 
-bool ReadCommand::readV235Gains(LiveBus &bus, int id, QJsonObject &fields)
+bool ReadCommand::readV235Params(LiveBus &bus, int id, bool gainsOnly, QJsonObject &fields)
 {
-    // The three loop parameters under the V2.3 names plus *_kd (V2.35.md section 6).
-    using protocol::ParamId;
-    for (ParamId p : {ParamId::AnglePid, ParamId::SpeedPid, ParamId::CurrentPid}) {
-        const bus::RequestResult r = bus.request(*protocol::build::readParam(id, p).request);
-        if (!r.ok() || !r.reply) {
-            bus.reportFailure(r);
+    // `pid`: the three loop parameters under the V2.3 names plus *_kd; `params`: all of
+    // them (V2.35.md section 6).
+    for (const DriveParam &p : DriveParams::all()) {
+        if ((p.isLoop() || !gainsOnly) && !DriveParams::readFields(bus, id, p, fields))
             return false;
-        }
-        const QJsonObject part = protocol::FieldJson::replyFields(*r.reply);
-        for (auto it = part.begin(); it != part.end(); ++it) {
-            if (it.key() != QLatin1String("param") && it.key() != QLatin1String("param_id"))
-                fields.insert(it.key(), it.value());
-        }
     }
     return true;
 }
@@ -167,14 +171,19 @@ int ReadCommand::run(const QStringList &args, Console &console)
                 .arg(protocol::seriesName(*who->series), protocol::CommandTable::name(*command)));
         return kExitFailure;
     }
+    const bool v235 = who->model.generation == protocol::Generation::V2_35;
+    if (*command == Command::ReadParam && !v235) {
+        bus.error(DriveParams::noTableMessage(*id, QStringLiteral("read params")));
+        return kExitFailure;
+    }
     QJsonObject fields;
-    const bool v235Gains =
-        *command == Command::ReadPid && who->model.generation == protocol::Generation::V2_35;
-    if (v235Gains ? !readV235Gains(bus, *id, fields) : !readInto(bus, *command, *id, fields))
+    const bool viaParams = *command == Command::ReadParam || (*command == Command::ReadPid && v235);
+    if (viaParams ? !readV235Params(bus, *id, *command == Command::ReadPid, fields)
+                  : !readInto(bus, *command, *id, fields))
         return kExitFailure;
     if (parser.isSet(QStringLiteral("json"))) {
         OrderedJson o;
-        const Command sent = v235Gains ? Command::ReadParam : *command; // what went on the wire
+        const Command sent = viaParams ? Command::ReadParam : *command; // what went on the wire
         o.text(QStringLiteral("command"), protocol::CommandTable::name(sent))
             .text(QStringLiteral("code"), protocol::CommandTable::codeText(quint8(sent)))
             .integer(QStringLiteral("id"), *id)

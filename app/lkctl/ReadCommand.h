@@ -12,7 +12,7 @@
 namespace lk::lkctl {
 
 /// `lkctl read ID WHAT`: one read command (pid, accel, encoder, multi-turn, single-turn,
-/// state1, state2, state3, model), as text or as CLI.md JSON.
+/// state1, state2, state3, model, params), as text or as CLI.md JSON.
 class ReadCommand : public LiveCommand {
 public:
     QString name() const override { return QStringLiteral("read"); }
@@ -26,8 +26,8 @@ public:
 
 private:
     static bool readInto(LiveBus &bus, protocol::Command command, int id, QJsonObject &fields);
-    /// `pid` on a V2.35 drive: read_param of the three loops, V2.3 field names plus *_kd.
-    static bool readV235Gains(LiveBus &bus, int id, QJsonObject &fields);
+    /// `pid` (gainsOnly) or `params` on a V2.35 drive, with read_param.
+    static bool readV235Params(LiveBus &bus, int id, bool gainsOnly, QJsonObject &fields);
 };
 
 } // namespace lk::lkctl

@@ -131,4 +131,12 @@ QStringList ReplyText::lines(const QJsonObject &fields, const QString &indent)
     return out;
 }
 
+QString ReplyText::oneLine(const QJsonObject &fields)
+{
+    QStringList parts;
+    for (const QString &line : lines(fields))
+        parts << line.simplified();
+    return parts.join(QStringLiteral(", "));
+}
+
 } // namespace lk::lkctl

@@ -15,6 +15,8 @@ public:
     /// One line per field in CLI.md order, labels aligned; *_raw fields and the flag
     /// booleans (folded into "errors") are left out.
     static QStringList lines(const QJsonObject &fields, const QString &indent = QString());
+    /// The same lines on one line, comma-separated (error messages).
+    static QString oneLine(const QJsonObject &fields);
     /// "none" or "low voltage, over temperature (0x09)".
     /// "over-current, stall (0x50)" with the flags `generation` names, or "none".
     static QString errorText(int errorState, protocol::Generation generation);

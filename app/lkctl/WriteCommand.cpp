@@ -1,8 +1,10 @@
 #include "WriteCommand.h"
 
 #include "Console.h"
+#include "DriveParams.h"
 #include "LiveBus.h"
 #include "OrderedJson.h"
+#include "ParamWrite.h"
 #include "ReplyText.h"
 
 #include <protocol/FieldJson.h>
@@ -16,19 +18,12 @@ namespace {
 
 const QStringList kPidFields{"angle_kp", "angle_ki", "speed_kp", "speed_ki", "iq_kp", "iq_ki"};
 
-QString describe(const QJsonObject &fields)
-{
-    QStringList parts;
-    for (const QString &line : ReplyText::lines(fields))
-        parts << line.simplified();
-    return parts.join(QStringLiteral(", "));
-}
-
 } // namespace
 
 QString WriteCommand::summary() const
 {
-    return QStringLiteral("write PID gains (RAM or ROM) or acceleration, then read them back");
+    return QStringLiteral("write PID gains (RAM or ROM), acceleration or a V2.35 parameter, then "
+                          "read them back");
 }
 
 QString WriteCommand::example() const
@@ -44,18 +39,34 @@ QString WriteCommand::usage() const
                "[--json]\n"
                "       lkctl write ID accel DPS2 --ram (--port DEV [--baud N] | --sim SPEC) "
                "[--json]\n"
+               "       lkctl write ID param NAME VALUE... (--ram | --rom --yes)\n"
+               "                   (--port DEV [--baud N] | --sim SPEC) [--json]\n"
                "\n"
                "Write drive ID's PID gains (each 0..255) or acceleration (0..2147483647 dps/s),\n"
                "then read them back (read_pid, read_accel) and print what the drive now holds.\n"
+               "The model is read first: pid and accel exist on V2.3 drives only (a V2.35\n"
+               "drive is refused, exit 1: write its param instead).\n"
                "\n"
-               "  --ram   write_pid_ram / write_accel_ram: takes effect now, lost at power-off\n"
-               "  --rom   write_pid_rom: kept across power-off. ROM is the drive's flash, which\n"
-               "          wears out after a limited number of writes: try values with --ram,\n"
-               "          and write them to ROM once, with --yes to confirm. The protocol has\n"
-               "          no ROM write for acceleration.\n"
+               "param (firmware 2.35 and later, protocol V2.35) writes one parameter with\n"
+               "write_param_ram / write_param_rom, then reads it back with read_param:\n"
+               "%3"
+               "max_torque is in iq command units (max power on MS); current_ramp's unit is\n"
+               "undocumented; max_angle_deg is sent as the pair 0x9B then 0x9C.\n"
+               "A drive that answers a write with flag 1 (failure) makes the command fail\n"
+               "(exit 1), naming the parameter; the rest of a pair is then not sent. A V2.3\n"
+               "drive has no parameter table: refused after read_model (exit 1).\n"
+               "\n"
+               "  --ram   write_pid_ram / write_accel_ram / write_param_ram: takes effect now,\n"
+               "          lost at power-off\n"
+               "  --rom   write_pid_rom / write_param_rom: kept across power-off. ROM is the\n"
+               "          drive's flash, which wears out after a limited number of writes: try\n"
+               "          values with --ram, and write them to ROM once, with --yes to\n"
+               "          confirm. It is sent once, never repeated. The V2.3 protocol has no\n"
+               "          ROM write for acceleration.\n"
                "  --yes   confirm a ROM write\n"
                "  --json  one line: {\"command\":\"write_pid_ram\",\"id\":3,\"written\":{...},"
                "\"holds\":{...},\"match\":true}\n"
+               "          (param: \"param\":NAME after \"id\")\n"
                "\n"
                "%1"
                "\n"
@@ -63,13 +74,18 @@ QString WriteCommand::usage() const
                "  lkctl write 3 pid 100 100 50 40 50 50 --ram --port /dev/ttyUSB0\n"
                "  lkctl write 3 pid 100 100 50 40 50 50 --rom --yes --port /dev/ttyUSB0\n"
                "  lkctl write 3 accel 5000 --ram --port ttyUSB0 --json\n"
+               "  lkctl write 1 param speed_pid 50 20 0 --ram --port /dev/ttyUSB0\n"
+               "  lkctl write 1 param max_angle_deg 720 --rom --yes --port /dev/ttyUSB0 --json\n"
                "\n"
                "%2")
         .arg(BusOptions::helpText(),
              exitStatusText(QStringLiteral(
                  "  4  refused: a ROM write without --yes (nothing was sent)\n"
                  "  5  the read-back differs from what was written: the drive holds other\n"
-                 "     values (some firmware ignores write_accel_ram); both are printed\n")));
+                 "     values (some firmware ignores write_accel_ram); both are printed\n"
+                 "  (1 also: a V2.35 drive answered a parameter write with flag 1 = failure,\n"
+                 "     or the drive's generation lacks the command)\n")),
+             DriveParams::helpLines(QStringLiteral("  ")));
 }
 
 std::optional<WriteCommand::Plan> WriteCommand::parse(const ArgParser &parser, Console &console,
@@ -81,17 +97,15 @@ std::optional<WriteCommand::Plan> WriteCommand::parse(const ArgParser &parser, C
     };
     const QStringList &pos = parser.positionals();
     if (pos.size() < 2)
-        return fail(QStringLiteral("expected ID and pid|accel with their values"));
+        return fail(QStringLiteral("expected ID and pid|accel|param with their values"));
     QString error;
     if (!parseId(pos.at(0), &error))
         return fail(error);
-    const bool ram = parser.isSet(QStringLiteral("ram"));
     Plan plan;
-    plan.rom = parser.isSet(QStringLiteral("rom"));
-    if (ram == plan.rom)
-        return fail(ram ? QStringLiteral("give --ram or --rom, not both")
-                        : QStringLiteral("say where to write: --ram (until power-off) or --rom "
-                                         "--yes (kept)"));
+    const std::optional<bool> rom = romChosen(parser, &error);
+    if (!rom)
+        return fail(error);
+    plan.rom = *rom;
     protocol::FieldValues values;
     values.insert(QStringLiteral("id"), pos.at(0));
     if (pos.at(1) == QLatin1String("pid")) {
@@ -114,7 +128,7 @@ std::optional<WriteCommand::Plan> WriteCommand::parse(const ArgParser &parser, C
         plan.readBack = Command::ReadAccel;
         plan.what = QStringLiteral("acceleration");
     } else {
-        return fail(QStringLiteral("cannot write '%1'; write pid or accel").arg(pos.at(1)));
+        return fail(QStringLiteral("cannot write '%1'; write pid, accel or param").arg(pos.at(1)));
     }
     const protocol::FieldBuildResult built = FieldJson::buildRequest(plan.command, values);
     if (!built.ok())
@@ -124,12 +138,15 @@ std::optional<WriteCommand::Plan> WriteCommand::parse(const ArgParser &parser, C
     return plan;
 }
 
-int WriteCommand::readBack(LiveBus &bus, const Plan &plan)
+int WriteCommand::readBack(LiveBus &bus, const Plan &plan, bool acknowledged)
 {
     const int id = plan.request.id;
     const bus::RequestResult r = bus.request(plan.readBack, id);
     if (!r.ok() || !r.reply) {
-        bus.error(QStringLiteral("the write was acknowledged but the read-back failed:"));
+        bus.error(acknowledged ? QStringLiteral("the write was acknowledged but the read-back "
+                                                "failed:")
+                               : QStringLiteral("the read-back failed too, so whether the write "
+                                                "took effect is unknown:"));
         bus.reportFailure(r);
         return kExitFailure;
     }
@@ -163,7 +180,7 @@ int WriteCommand::readBack(LiveBus &bus, const Plan &plan)
     bus.error(QStringLiteral("read-back mismatch on drive %1: wrote %2 (%3) but the drive holds "
                              "%4.%5")
                   .arg(id)
-                  .arg(plan.what, describe(written), describe(holds), hint));
+                  .arg(plan.what, ReplyText::oneLine(written), ReplyText::oneLine(holds), hint));
     return kExitMismatch;
 }
 
@@ -177,23 +194,31 @@ int WriteCommand::run(const QStringList &args, Console &console)
     const std::optional<BusOptions> busOptions = parseBus(parser, args, console, &status);
     if (!busOptions)
         return status;
+    const QStringList &pos = parser.positionals();
+    if (pos.size() >= 2 && pos.at(1) == QLatin1String("param"))
+        return runParam(parser, *busOptions, console);
     const std::optional<Plan> plan = parse(parser, console, &status);
     if (!plan)
         return status;
-    if (plan->rom && !parser.isSet(QStringLiteral("yes"))) {
-        console.errLine(QStringLiteral(
-            "lkctl write: refusing to write PID gains to ROM without --yes. ROM is the drive's "
-            "flash memory, which wears out after a limited number of writes; nothing was sent. "
-            "Try the gains with --ram first (they last until power-off), then write them to ROM "
-            "once with --rom --yes."));
-        return kExitRefused;
-    }
+    if (plan->rom && !parser.isSet(QStringLiteral("yes")))
+        return refuseRom(console, plan->what);
     LiveBus bus(console, name());
     if (!bus.open(*busOptions))
         return kExitFailure;
+    // The model first: a V2.35 drive has neither command, and is never sent one it lacks.
+    const int id = plan->request.id;
+    const QString lacks = protocol::CommandTable::name(plan->request.command);
+    if (!speaks(bus, id, protocol::Generation::V2_3,
+                QStringLiteral("drive %1 runs firmware 2.35 or later (protocol V2.35), which has "
+                               "no %2; nothing was sent. Its gains and ramps are parameters: "
+                               "'lkctl write %1 param angle_pid KP KI KD' (speed_pid, iq_pid), "
+                               "'lkctl write %1 param speed_ramp_dps2 DPS2'")
+                    .arg(id)
+                    .arg(lacks)))
+        return kExitFailure;
     const bus::RequestResult w = bus.request(plan->request);
     if (w.ok())
-        return readBack(bus, *plan);
+        return readBack(bus, *plan, true);
     bus.reportFailure(w);
     // A lost or corrupt reply does not mean the drive did not act (and ROM writes are never
     // repeated): what it holds now is the answer the user needs.
@@ -202,7 +227,68 @@ int WriteCommand::run(const QStringList &args, Console &console)
     bus.error(QStringLiteral("reading back what drive %1 holds now (if it matches, the write "
                              "took effect and only its reply was lost):")
                   .arg(plan->request.id));
-    return readBack(bus, *plan);
+    return readBack(bus, *plan, false);
+}
+
+bool WriteCommand::speaks(LiveBus &bus, int id, protocol::Generation generation,
+                          const QString &otherwise)
+{
+    const std::optional<LiveBus::Identity> who = bus.identify(id);
+    if (!who)
+        return false;
+    if (who->model.generation == generation)
+        return true;
+    bus.error(otherwise);
+    return false;
+}
+
+std::optional<bool> WriteCommand::romChosen(const ArgParser &parser, QString *error)
+{
+    const bool ram = parser.isSet(QStringLiteral("ram"));
+    const bool rom = parser.isSet(QStringLiteral("rom"));
+    if (ram != rom)
+        return rom;
+    *error = ram ? QStringLiteral("give --ram or --rom, not both")
+                 : QStringLiteral("say where to write: --ram (until power-off) or --rom --yes "
+                                  "(kept)");
+    return std::nullopt;
+}
+
+int WriteCommand::refuseRom(Console &console, const QString &what) const
+{
+    console.errLine(
+        QStringLiteral("lkctl write: refusing to write %1 to ROM without --yes. ROM is the "
+                       "drive's flash memory, which wears out after a limited number of writes; "
+                       "nothing was sent. Try the values with --ram first (they last until "
+                       "power-off), then write them to ROM once with --rom --yes.")
+            .arg(what));
+    return kExitRefused;
+}
+
+int WriteCommand::runParam(const ArgParser &parser, const BusOptions &busOptions,
+                           Console &console) const
+{
+    const QStringList &pos = parser.positionals();
+    QString error;
+    if (!parseId(pos.at(0), &error))
+        return usageError(console, error);
+    const std::optional<bool> rom = romChosen(parser, &error);
+    if (!rom)
+        return usageError(console, error);
+    const std::optional<ParamWrite::Plan> plan =
+        ParamWrite::plan(pos, *rom, parser.isSet(QStringLiteral("json")), &error);
+    if (!plan)
+        return usageError(console, error);
+    if (*rom && !parser.isSet(QStringLiteral("yes")))
+        return refuseRom(console, plan->param.name);
+    LiveBus bus(console, name());
+    if (!bus.open(busOptions))
+        return kExitFailure;
+    // The model first: only a V2.35 drive has the parameter table.
+    if (!speaks(bus, plan->id, protocol::Generation::V2_35,
+                DriveParams::noTableMessage(plan->id, QStringLiteral("write ") + plan->param.name)))
+        return kExitFailure;
+    return ParamWrite::run(bus, *plan);
 }
 
 } // namespace lk::lkctl

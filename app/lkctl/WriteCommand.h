@@ -11,8 +11,9 @@ namespace lk::lkctl {
 
 class LiveBus;
 
-/// `lkctl write ID pid ... --ram|--rom [--yes]` and `lkctl write ID accel DPS2 --ram`: write,
-/// read back, print what the drive now holds; a read-back that differs fails loudly.
+/// `lkctl write ID pid ... --ram|--rom [--yes]`, `lkctl write ID accel DPS2 --ram` and
+/// `lkctl write ID param NAME VALUE... --ram|--rom [--yes]` (V2.35): write, read back, print
+/// what the drive now holds; a read-back that differs fails loudly.
 class WriteCommand : public LiveCommand {
 public:
     QString name() const override { return QStringLiteral("write"); }
@@ -32,8 +33,19 @@ private:
         QString what; ///< "PID gains", "acceleration"
     };
     std::optional<Plan> parse(const ArgParser &parser, Console &console, int *status) const;
-    /// Read back what was written, print it; kExitMismatch when it differs.
-    int readBack(LiveBus &bus, const Plan &plan);
+    /// `write ID param NAME VALUE...` (V2.35), see ParamWrite.
+    int runParam(const ArgParser &parser, const BusOptions &busOptions, Console &console) const;
+    /// --rom (true) or --ram (false); nullopt with `error` when neither or both are given.
+    static std::optional<bool> romChosen(const ArgParser &parser, QString *error);
+    /// A ROM write without --yes: explain, send nothing, kExitRefused.
+    int refuseRom(Console &console, const QString &what) const;
+    /// Read back what was written, print it; kExitMismatch when it differs. `acknowledged`:
+    /// the write's reply arrived (else the read-back answers whether it took effect).
+    int readBack(LiveBus &bus, const Plan &plan, bool acknowledged);
+    /// read_model first: whether drive `id` speaks `generation`; if not, prints `otherwise`
+    /// (or why the model could not be read) and nothing more is sent.
+    static bool speaks(LiveBus &bus, int id, protocol::Generation generation,
+                       const QString &otherwise);
 };
 
 } // namespace lk::lkctl

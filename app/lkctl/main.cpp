@@ -1,3 +1,4 @@
+#include "BrakeCommand.h"
 #include "Console.h"
 #include "ControlCommand.h"
 #include "DecodeCommand.h"
@@ -37,6 +38,7 @@ int main(int argc, char *argv[])
     dispatcher.add(std::make_unique<MotorStateCommand>(Command::MotorOff));
     dispatcher.add(std::make_unique<MotorStateCommand>(Command::MotorStop));
     dispatcher.add(std::make_unique<MotorStateCommand>(Command::MotorRun));
+    dispatcher.add(std::make_unique<BrakeCommand>());
     dispatcher.add(std::make_unique<MonitorCommand>());
     dispatcher.add(std::make_unique<EncodeCommand>());
     dispatcher.add(std::make_unique<DecodeCommand>());

@@ -104,9 +104,14 @@ void PtyBusServer::schedule(const sim::SimReply &reply, double now)
     m_pending.push_back(Pending{due, reply.bytes});
 }
 
+qint64 PtyBusServer::badChecksumReplies() const
+{
+    return m_bus.faults().injectedCount(sim::Fault::FirmwareChecksum);
+}
+
 bool PtyBusServer::writeStats(bool running)
 {
-    if (m_stats.write(m_wire.counters(), running))
+    if (m_stats.write(m_wire.counters(), badChecksumReplies(), running))
         return true;
     std::fprintf(stderr, "lksim: %s\n", qPrintable(m_stats.errorString()));
     return false;

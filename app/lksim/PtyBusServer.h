@@ -51,6 +51,8 @@ public:
     const WireCounters &counters() const { return m_wire.counters(); }
     /// Write the stats file now (if there is one); false with a message on standard error.
     bool writeStats(bool running);
+    /// V2.35 0xA4 replies sent with a bad data checksum (--bad-checksum-pct).
+    qint64 badChecksumReplies() const;
     static double monotonicSeconds();
 
 private:

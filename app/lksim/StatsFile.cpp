@@ -10,7 +10,7 @@
 
 namespace lk::app {
 
-bool StatsFile::write(const WireCounters &counters, bool running)
+bool StatsFile::write(const WireCounters &counters, qint64 badChecksumReplies, bool running)
 {
     if (!isEnabled())
         return true;
@@ -19,6 +19,7 @@ bool StatsFile::write(const WireCounters &counters, bool running)
                         {QStringLiteral("collisions"), counters.collisions()},
                         {QStringLiteral("collisions_before_reply"), counters.collisionsBefore},
                         {QStringLiteral("collisions_during_reply"), counters.collisionsDuring},
+                        {QStringLiteral("bad_checksum_replies"), badChecksumReplies},
                         {QStringLiteral("running"), running}};
     // A temporary file renamed over the old one: a reader sees the old or the new counters,
     // never half a file. No fsync: it is written after every collision, mid-traffic.

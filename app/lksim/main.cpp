@@ -121,6 +121,13 @@ int main(int argc, char *argv[])
                        "...: exactly the next N replies), delay_ms=N, silent=ID (repeatable), "
                        "seed=N. Example: drop=0.01,corrupt=0.01,silent=17"),
         QStringLiteral("spec"));
+    const QCommandLineOption badChecksumPct(
+        QStringLiteral("bad-checksum-pct"),
+        QStringLiteral("Copy firmware 2.35's bug: about P % (0..100, default 0) of the 0xA4 "
+                       "replies of @2.35 drives carry a data checksum off by 3 (the header is "
+                       "good); real drives do it to ~1 %. Counted as bad_checksum_replies in "
+                       "--stats-file; deterministic for a --faults seed=N (default 1)."),
+        QStringLiteral("p"), QStringLiteral("0"));
     const QCommandLineOption verbose(QStringLiteral("verbose"),
                                      QStringLiteral("Log every frame in and out on stderr."));
     const QCommandLineOption busyPoll(
@@ -138,12 +145,13 @@ int main(int argc, char *argv[])
         QStringLiteral("stats-file"),
         QStringLiteral("Keep the counters in PATH as one line of JSON: {\"requests\":N,"
                        "\"replies\":N,\"collisions\":N,\"collisions_before_reply\":N,"
-                       "\"collisions_during_reply\":N,\"running\":true}. Rewritten whole at "
+                       "\"collisions_during_reply\":N,\"bad_checksum_replies\":N,"
+                       "\"running\":true}. Rewritten whole at "
                        "start, after every collision (the collision count is always current), "
                        "on SIGUSR1 (all counters current) and at exit (\"running\":false)."),
         QStringLiteral("path"));
     parser.addOptions({motors, link, baud, wireTime, replyDelay, adapterLatency, romDir, faults,
-                       busyPoll, statsFile, verbose});
+                       badChecksumPct, busyPoll, statsFile, verbose});
     parser.process(app);
 
     if (!parser.isSet(motors))
@@ -171,6 +179,11 @@ int main(int argc, char *argv[])
         std::fprintf(stderr, "lksim: %s\n", qPrintable(e));
     if (parser.isSet(faults) && !bus->faults().configure(parser.value(faults), &error))
         return fail(QStringLiteral("--faults: %1").arg(error));
+    const double badChecksum = parser.value(badChecksumPct).toDouble(&ok);
+    if (!ok || !(badChecksum >= 0 && badChecksum <= 100))
+        return fail(QStringLiteral("--bad-checksum-pct must be a percentage 0..100, got '%1'")
+                        .arg(parser.value(badChecksumPct)));
+    bus->faults().setProbability(lk::sim::Fault::FirmwareChecksum, badChecksum / 100.0);
 
     lk::app::PtyDevice pty;
     if (!pty.open())
@@ -203,7 +216,8 @@ int main(int argc, char *argv[])
     const lk::app::WireCounters &c = server.counters();
     std::fprintf(stderr,
                  "lksim: %lld requests, %lld replies, %lld collisions (%lld before a reply "
-                 "began, %lld during one)\n",
-                 c.requests, c.replies, c.collisions(), c.collisionsBefore, c.collisionsDuring);
+                 "began, %lld during one), %lld bad-checksum 0xA4 replies\n",
+                 c.requests, c.replies, c.collisions(), c.collisionsBefore, c.collisionsDuring,
+                 server.badChecksumReplies());
     return rc;
 }

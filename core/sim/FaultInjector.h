@@ -18,8 +18,11 @@ enum class Fault {
     Garbage,      ///< 1..8 noise bytes (never 0x3E) before the reply
     ExtraDelay,   ///< the reply comes extraDelaySeconds() late
     SilencedId,   ///< counted when a request to a silenced ID is swallowed
+    /// Firmware 2.35's bug (V2.35.md section 12): a 0xA4 reply whose data checksum is off by
+    /// 3 while the header is good. SimBus applies it to V2.35 drives' 0xA4 replies only.
+    FirmwareChecksum,
 };
-constexpr int kFaultKinds = 6;
+constexpr int kFaultKinds = 7;
 
 /// Seeded, deterministic fault injection for SimBus: per-reply probabilities, one-shot
 /// counts ("the next 3 replies are dropped"), silenced IDs and a disconnect flag for the
@@ -63,6 +66,9 @@ public:
 
     /// SimBus side: note a swallowed request to a silenced ID.
     void countSilenced() { ++m_count[index(Fault::SilencedId)]; }
+    /// SimBus side: maybe spoil the data checksum of a V2.35 drive's 0xA4 reply by +-3, as
+    /// real fw 2.35 does (Fault::FirmwareChecksum). True when it did.
+    bool applyFirmwareChecksumBug(QByteArray &reply);
     /// SimBus side: apply faults to one encoded reply. Returns false when it is dropped;
     /// otherwise may change the bytes and add to extraDelay.
     bool apply(QByteArray &reply, double &extraDelay);

@@ -124,6 +124,9 @@ void SimBus::dispatch(const protocol::Request &request, QList<SimReply> &out)
     r.delaySeconds = m_replyDelay;
     r.id = id;
     r.command = request.command;
+    if (request.command == protocol::Command::MultiPositionLimited &&
+        target->generation() == protocol::Generation::V2_35)
+        m_faults.applyFirmwareChecksumBug(r.bytes);
     if (!m_faults.apply(r.bytes, r.delaySeconds))
         return;
     ++m_counters.replies;

@@ -3,6 +3,8 @@
 #include "LksimProcess.h"
 
 #include <QtCore/QByteArray>
+#include <QtCore/QJsonDocument>
+#include <QtCore/QJsonObject>
 #include <QtCore/QProcess>
 #include <QtCore/QProcessEnvironment>
 #include <QtCore/QStringList>
@@ -58,6 +60,20 @@ inline CtlResult lkctl(const QStringList &args, int timeoutMs = 120000)
     return lkctl(args, QProcessEnvironment::systemEnvironment(), timeoutMs);
 }
 #endif
+
+/// The JSON object of one line lkctl printed (empty when it is not one).
+inline QJsonObject jsonOf(const QByteArray &line)
+{
+    return QJsonDocument::fromJson(line).object();
+}
+
+/// What an lkctl run printed, for a failure message.
+inline QString describeRun(const CtlResult &r)
+{
+    return QStringLiteral("exit %1\nstdout: %2\nstderr: %3")
+        .arg(r.exitCode)
+        .arg(QString::fromUtf8(r.out), QString::fromUtf8(r.err));
+}
 
 /// The ordinary lksim command line of these tests: the drives, the link, wire time at 115200.
 inline QStringList simArgs(const QString &link, const QStringList &extra = {})

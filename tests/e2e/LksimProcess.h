@@ -14,7 +14,8 @@ namespace lk::e2e {
 struct LksimCounters {
     qint64 requests = 0;
     qint64 replies = 0;
-    qint64 collisions = 0; ///< requests that arrived while a reply was due or on the wire
+    qint64 collisions = 0;         ///< requests that arrived while a reply was due or on the wire
+    qint64 badChecksumReplies = 0; ///< 0xA4 replies spoilt by --bad-checksum-pct
 };
 
 /// One lksim process serving a simulated bus on a pseudo-terminal, for end-to-end tests and

@@ -18,18 +18,6 @@ namespace {
 
 constexpr int kWaitMs = 30000;
 
-QJsonObject jsonObject(const QByteArray &line)
-{
-    return QJsonDocument::fromJson(line).object();
-}
-
-QString describe(const CtlResult &r)
-{
-    return QStringLiteral("exit %1\nstdout: %2\nstderr: %3")
-        .arg(r.exitCode)
-        .arg(QString::fromUtf8(r.out), QString::fromUtf8(r.err));
-}
-
 } // namespace
 
 /// The lkctl binary against lksim on a pseudo-terminal: what a script on a production line
@@ -90,7 +78,7 @@ std::optional<QJsonObject> tst_E2eLkctl::read(int id, const char *what)
                               port());
     if (r.exitCode != 0)
         return std::nullopt;
-    return jsonObject(r.out).value(QStringLiteral("fields")).toObject();
+    return jsonOf(r.out).value(QStringLiteral("fields")).toObject();
 }
 
 void tst_E2eLkctl::init()
@@ -112,7 +100,7 @@ void tst_E2eLkctl::cleanup()
 void tst_E2eLkctl::scanJsonListsExactlyTheDrives()
 {
     const CtlResult r = lkctl(QStringList{"scan", "--json", "--retries", "1"} + port());
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     QVERIFY(r.out.endsWith("]\n"));
     const QJsonArray a = QJsonDocument::fromJson(r.out).array();
     QCOMPARE(a.size(), 3);
@@ -136,7 +124,7 @@ void tst_E2eLkctl::scanJsonListsExactlyTheDrives()
 void tst_E2eLkctl::scanTable()
 {
     const CtlResult r = lkctl(QStringList{"scan", "--retries", "1"} + port());
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     const QList<QByteArray> lines = r.out.split('\n');
     QVERIFY(lines.at(0).startsWith("ID  Series"));
     QVERIFY(lines.at(1).contains(" 3  MF"));
@@ -148,8 +136,8 @@ void tst_E2eLkctl::scanTable()
 void tst_E2eLkctl::info()
 {
     const CtlResult r = lkctl(QStringList{"info", "17", "--json"} + port());
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
-    const QJsonObject o = jsonObject(r.out);
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    const QJsonObject o = jsonOf(r.out);
     QCOMPARE(o.value("id").toInt(), 17);
     QCOMPARE(o.value("series").toString(), QStringLiteral("MS"));
     QVERIFY(o.value("model").toObject().value("motor_name").toString().startsWith("MS"));
@@ -207,9 +195,9 @@ void tst_E2eLkctl::readEveryWhat()
     QFETCH(QString, command);
     QFETCH(QString, field);
     const CtlResult r = lkctl(QStringList{"read", QString::number(id), what, "--json"} + port());
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     QCOMPARE(r.out.count('\n'), 1);
-    const QJsonObject o = jsonObject(r.out);
+    const QJsonObject o = jsonOf(r.out);
     QCOMPARE(o.value("command").toString(), command);
     QCOMPARE(o.value("id").toInt(), id);
     QVERIFY2(o.value("fields").toObject().contains(field), r.out.constData());
@@ -223,15 +211,15 @@ void tst_E2eLkctl::writeReadsBack()
     CtlResult r = lkctl(
         QStringList{"write", "3", "pid", "12", "34", "56", "78", "90", "123", "--ram", "--json"} +
         port());
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
-    QJsonObject o = jsonObject(r.out);
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    QJsonObject o = jsonOf(r.out);
     QCOMPARE(o.value("match").toBool(), true);
     QCOMPARE(o.value("holds").toObject().value("iq_ki").toInt(), 123);
     QCOMPARE(read(3, "pid")->value("speed_kp").toInt(), 56);
 
     r = lkctl(QStringList{"write", "17", "accel", "7777", "--ram", "--json"} + port());
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
-    QCOMPARE(jsonObject(r.out).value("holds").toObject().value("accel_dps2").toInt(), 7777);
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    QCOMPARE(jsonOf(r.out).value("holds").toObject().value("accel_dps2").toInt(), 7777);
     QCOMPARE(read(17, "accel")->value("accel_dps2").toInt(), 7777);
 
     r = lkctl(QStringList{"write", "3", "pid", "1", "2", "3", "4", "5", "6", "--ram"} + port());
@@ -244,15 +232,18 @@ void tst_E2eLkctl::lostRomWriteReplyIsReadBackNotRepeated()
 {
     // The drive writes its flash but the reply is lost: the tool must not write again (ROM
     // writes are never retried) and must tell what the drive holds now.
-    QVERIFY(startSim({QStringLiteral("--faults"), QStringLiteral("drop_next=1")}));
+    // lkctl reads the model first. Seed 2 with drop=0.5 keeps the 1st reply (read_model),
+    // drops the 2nd (write_pid_rom) and keeps the 3rd (read_pid): QRandomGenerator(2) draws
+    // 0.70, 0.17, 0.53.
+    QVERIFY(startSim({QStringLiteral("--faults"), QStringLiteral("drop=0.5,seed=2")}));
     const CtlResult r = lkctl(QStringList{"write", "3", "pid", "61", "62", "63", "64", "65", "66",
                                           "--rom", "--yes", "--json"} +
                               port());
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     QVERIFY2(r.err.contains("no reply to write_pid_rom (ID 3)") &&
                  r.err.contains("only its reply was lost"),
              r.err.constData());
-    const QJsonObject o = jsonObject(r.out);
+    const QJsonObject o = jsonOf(r.out);
     QCOMPARE(o.value("match").toBool(), true);
     QCOMPARE(o.value("holds").toObject().value("iq_ki").toInt(), 66);
     const QList<QByteArray> frames = m_sim->receivedFrames();
@@ -276,7 +267,7 @@ void tst_E2eLkctl::romWriteNeedsYesAndSurvivesRestart()
         QVERIFY2(!f.startsWith("3E 32"), f.constData()); // nothing reached the bus
 
     r = lkctl(QStringList{"write", "3", "pid"} + gains + QStringList{"--rom", "--yes"} + port());
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     // A RAM write on top is lost at the restart; the ROM one is not.
     r = lkctl(QStringList{"write", "3", "pid", "9", "9", "9", "9", "9", "9", "--ram"} + port());
     QCOMPARE(r.exitCode, 0);
@@ -336,9 +327,9 @@ void tst_E2eLkctl::controlModesMoveTheMotor()
     // Exit 1 naming the timeout is right when a stall of the loaded machine swallowed the
     // reply (never retried for an increment); lksim still acted, as the motion shows.
     const bool timedOut = r.exitCode == 1 && r.err.contains("no reply to");
-    QVERIFY2(r.exitCode == 0 || timedOut, qPrintable(describe(r)));
+    QVERIFY2(r.exitCode == 0 || timedOut, qPrintable(describeRun(r)));
     if (!timedOut) {
-        const QJsonObject sent = jsonObject(r.out);
+        const QJsonObject sent = jsonOf(r.out);
         QVERIFY(sent.contains("reply"));
         // Position moves always carry a max speed: the speed limit unless a lower one was given.
         if (args.first().endsWith(QLatin1String("position")) ||
@@ -448,21 +439,21 @@ void tst_E2eLkctl::refusedControlSendsNothing()
 void tst_E2eLkctl::offStopRunAll()
 {
     CtlResult r = lkctl(QStringList{"off", "all", "--json"} + port());
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
-    QJsonObject o = jsonObject(r.out);
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    QJsonObject o = jsonOf(r.out);
     QCOMPARE(o.value("command").toString(), QStringLiteral("motor_off"));
     QCOMPARE(o.value("acknowledged").toArray(), (QJsonArray{3, 17, 32}));
     QCOMPARE(o.value("silent").toArray().size(), 29); // every other ID was told too
 
     r = lkctl(QStringList{"stop", "all", "--json"} + port());
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
-    o = jsonObject(r.out);
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    o = jsonOf(r.out);
     QCOMPARE(o.value("command").toString(), QStringLiteral("motor_stop"));
     QCOMPARE(o.value("acknowledged").toArray(), (QJsonArray{3, 17, 32}));
     QCOMPARE(o.value("silent").toArray().size(), 29); // every ID, not just what a scan heard
     r = lkctl(QStringList{"run", "all", "--json"} + port());
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
-    QCOMPARE(jsonObject(r.out).value("acknowledged").toArray(), (QJsonArray{3, 17, 32}));
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    QCOMPARE(jsonOf(r.out).value("acknowledged").toArray(), (QJsonArray{3, 17, 32}));
     r = lkctl(QStringList{"stop", "17"} + port());
     QCOMPARE(r.exitCode, 0);
     QVERIFY(r.out.contains("motor_stop acknowledged by: 17"));
@@ -473,7 +464,7 @@ void tst_E2eLkctl::monitorCountsRows()
     CtlResult r = lkctl(
         QStringList{"monitor", "3", "17", "--count", "10", "--rate", "0", "--csv-layout", "long"} +
         port());
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     const QList<QByteArray> lines = r.out.trimmed().split('\n');
     QCOMPARE(lines.size(), 11);
     QCOMPARE(lines.first(), QByteArray("time_s,id,temperature_c,voltage_v,error_state,iq_a,power,"
@@ -489,10 +480,10 @@ void tst_E2eLkctl::monitorCountsRows()
     QVERIFY(r.err.contains("bus: requests"));
 
     r = lkctl(QStringList{"monitor", "32", "--count", "3", "--json", "--what", "state3"} + port());
-    QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     const QList<QByteArray> rows = r.out.trimmed().split('\n');
     QCOMPARE(rows.size(), 3);
-    const QJsonObject row = jsonObject(rows.first());
+    const QJsonObject row = jsonOf(rows.first());
     QCOMPARE(row.value("id").toInt(), 32);
     QVERIFY(row.contains("ia_a") && row.contains("time_s"));
 }

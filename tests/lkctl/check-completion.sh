@@ -48,5 +48,11 @@ expect "--speed-dps" encode speed --id 1 --speed-d
 expect "MF MG MH MS" decode --series ""
 expect "all" off a
 expect "ccw cw" control 3 single-position 90 --direction ""
+expect "params pid" read 1 p
+expect "param pid" write 1 p
+expect "max_angle_deg max_speed_dps max_torque" write 1 param max
+expect "brake" br
+expect "engage" brake 1 e
+expect "--motor-off-ok" brake 1 release --mo
 [ $fail -eq 0 ] && echo "bash completion ok"
 exit $fail

@@ -1,6 +1,7 @@
 #include "sim/SimBus.h"
 
 #include "SimTestUtil.h"
+#include "protocol/Checksum.h"
 
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QTest>
@@ -63,6 +64,7 @@ private slots:
     void corruptAndWrongLength();
     void garbageAndDelayFaults();
     void probabilisticFaultsAreSeeded();
+    void firmwareChecksumBugOnlyOnV235A4();
     void romPersistsAcrossBuses();
     void addDriveRefusesBadIds();
     void wireSeconds();
@@ -374,6 +376,48 @@ void tst_SimBus::probabilisticFaultsAreSeeded()
     QVERIFY2(a[0] > 120 && a[0] < 280, qPrintable(QString::number(a[0]))); // ~200
     QVERIFY(a[1] > 40 && a[1] < 150);                                      // ~90
     QCOMPARE(run(7), a);                                                   // same seed, same faults
+}
+
+void tst_SimBus::firmwareChecksumBugOnlyOnV235A4()
+{
+    // fw 2.35 spoils some 0xA4 data checksums by +-3 with a good header (V2.35.md section 12);
+    // a V2.3 drive, and other commands of the V2.35 drive, are not touched.
+    auto run = [](quint32 seed) {
+        auto bus = makeBus("1:MS4015@2.35,2:MF");
+        bus->faults().setSeed(seed);
+        bus->faults().setProbability(Fault::FirmwareChecksum, 0.25);
+        QList<int> offsets;
+        for (int i = 0; i < 400; ++i) {
+            for (int id : {1, 2}) {
+                const QList<sim::SimReply> replies =
+                    bus->receive(encode(build::multiPosition(id, 10.0, 100.0)), i * 0.01);
+                if (replies.size() != 1)
+                    return QList<int>{-1000};
+                const QByteArray &b = replies.first().bytes;
+                const QByteArray data = b.mid(protocol::kHeaderSize, b.size() - 6);
+                int sum = 0;
+                for (char c : data)
+                    sum += quint8(c);
+                const int offset = qint8(quint8(b.back()) - quint8(sum));
+                if (quint8(b[4]) != quint8(0x3E + b[1] + b[2] + b[3])) // the header stays good
+                    return QList<int>{-2000};
+                if (offset != 0)
+                    offsets.append(id == 1 ? offset : 1000);
+            }
+            if (bus->receive(hex("3E 9C 01 00 DB"), i * 0.01).first().bytes !=
+                bus->receive(hex("3E 9C 01 00 DB"), i * 0.01).first().bytes)
+                return QList<int>{-3000}; // read_state2 replies are never spoilt
+        }
+        if (offsets.size() != bus->faults().injectedCount(Fault::FirmwareChecksum))
+            return QList<int>{-4000};
+        return offsets;
+    };
+    const QList<int> offsets = run(5);
+    QVERIFY2(offsets.size() > 60 && offsets.size() < 140,
+             qPrintable(QString::number(offsets.size())));
+    for (int o : offsets)
+        QVERIFY2(o == 3 || o == -3, qPrintable(QString::number(o))); // never drive 2 (1000)
+    QCOMPARE(run(5), offsets); // the same seed, the same spoilt replies
 }
 
 void tst_SimBus::romPersistsAcrossBuses()
