@@ -92,7 +92,9 @@ int main(int argc, char *argv[])
                        "V2.35 (1:MS4015@2.35). Firmware quirks seen on real drives may follow: "
                        "3:MF+accel-ignored "
                        "(0x34 acknowledged, not applied, 0x33 reads 0), "
-                       "+clear-angle-ignored (0x95 acknowledged, angle unchanged)."),
+                       "+clear-angle-ignored (0x95 acknowledged, angle unchanged); for tests, "
+                       "+param-write-refused (a V2.35 drive answers 0x42/0x44 with the "
+                       "failure flag and changes nothing)."),
         QStringLiteral("spec"));
     const QCommandLineOption link(QStringLiteral("link"),
                                   QStringLiteral("Also make PATH a symlink to the device."),

@@ -953,10 +953,6 @@
         <translation>增量位置闭环控制 (0xA7/0xA8)</translation>
     </message>
     <message>
-        <source>Power (-1000..1000):</source>
-        <translation>功率 (-1000..1000)：</translation>
-    </message>
-    <message>
         <source>Not limited by the drive: your open-loop limit applies.</source>
         <translation>驱动不限制此值：由您的开环功率限值限制。</translation>
     </message>
@@ -1035,6 +1031,10 @@
     <message>
         <source>Starts at the drive&apos;s current angle; at most one output turn away.</source>
         <translation>从驱动的当前角度开始；最多相距输出轴一圈。</translation>
+    </message>
+    <message>
+        <source>Power (-850..850):</source>
+        <translation>功率（-850..850）：</translation>
     </message>
 </context>
 <context>
@@ -3043,8 +3043,8 @@
         </translation>
     </message>
     <message>
-        <source>Scan takes at most %1 at %2 baud</source>
-        <translation>在 %2 波特下扫描最多需要 %1</translation>
+        <source>Scan takes about %1 at %2 baud</source>
+        <translation>在 %2 波特率下扫描约需 %1</translation>
     </message>
 </context>
 <context>
@@ -3530,10 +3530,6 @@
         <translation>电流 (A)</translation>
     </message>
     <message>
-        <source>Power (-1000..1000)</source>
-        <translation>功率 (-1000..1000)</translation>
-    </message>
-    <message>
         <source>Speed (°/s)</source>
         <translation>速度 (°/s)</translation>
     </message>
@@ -3552,6 +3548,10 @@
     <message>
         <source>Voltage (V)</source>
         <translation>电压 (V)</translation>
+    </message>
+    <message>
+        <source>Power (rel.)</source>
+        <translation>功率（相对值）</translation>
     </message>
 </context>
 <context>

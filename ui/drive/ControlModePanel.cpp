@@ -146,7 +146,7 @@ QWidget *ControlModePanel::pageOpenLoop()
     m_power->setKeyboardTracking(false);
     connect(m_power->findChild<QLineEdit *>(), &QLineEdit::returnPressed, this,
             &ControlModePanel::sendRequested);
-    form->addRow(tr("Power (-1000..1000):"), m_power);
+    form->addRow(tr("Power (-850..850):"), m_power); // the stricter bound of V2.3 and V2.35
     auto *note = new QLabel(tr("Not limited by the drive: your open-loop limit applies."), page);
     note->setWordWrap(true);
     form->addRow(note);
