@@ -2209,6 +2209,10 @@
         <source>Drive %1 acknowledged 0x93, but its multi-turn angle reads %2° (was %3°): more than one turn, so the turn count was not cleared.</source>
         <translation>驱动 %1 确认了 0x93，但其多圈角度读数为 %2°（原为 %3°）：超过一圈，因此圈数没有被清除。</translation>
     </message>
+    <message>
+        <source>the encoder offset</source>
+        <translation>编码器偏移</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::Format</name>

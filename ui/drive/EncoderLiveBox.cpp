@@ -19,6 +19,9 @@ QLabel *readout(const QString &name, QWidget *parent)
     f.setPointSizeF(f.pointSizeF() * 1.25);
     f.setBold(true);
     l->setFont(f);
+    // "43388 of 65536 (16-bit, from data)  (238.33°)" must not widen the view past a small
+    // screen: it wraps instead.
+    l->setWordWrap(true);
     return l;
 }
 } // namespace

@@ -147,10 +147,8 @@ QWidget *EncoderView::buildOffsetBox()
     row->addWidget(m_writeOffset);
     auto *layout = new QVBoxLayout(box);
     layout->addLayout(row);
-    auto *text = note(box);
-    text->setText(tr("The offset is the raw position that reads as encoder 0. The spec's "
-                     "command table calls 0x91 a ROM write: it may write the drive's flash."));
-    layout->addWidget(text);
+    m_offsetNote = note(box);
+    layout->addWidget(m_offsetNote);
     return box;
 }
 
@@ -404,10 +402,17 @@ void EncoderView::refreshReadouts()
 void EncoderView::refreshEnabled()
 {
     const bool can = canSend() && !m_busy;
-    m_writeOffset->setEnabled(can);
+    // V2.35 has no 0x91 (V2.35.md): its drives would not answer, so it is not offered.
+    const QString noOffset = absenceOf(Command::WriteEncoderOffset);
+    m_writeOffset->setEnabled(can && noOffset.isEmpty());
+    m_offsetNote->setText(noOffset.isEmpty()
+                              ? tr("The offset is the raw position that reads as encoder 0. The "
+                                   "spec's command table calls 0x91 a ROM write: it may write the "
+                                   "drive's flash.")
+                              : noOffset);
     m_clearAngle->setEnabled(can);
     m_zeroRom->setEnabled(can);
-    const QString absent = turnCountAbsence();
+    const QString absent = absenceOf(Command::ClearTurnCount);
     m_clearTurns->setEnabled(can && absent.isEmpty());
     m_clearTurnsNote->setText(
         absent.isEmpty() ? tr("Whole turns of the multi-turn angle are dropped; the angle within "
@@ -438,6 +443,10 @@ void EncoderView::writeOffset(int offset)
 {
     if (!canSend() || m_busy)
         return;
+    if (const QString absent = absenceOf(Command::WriteEncoderOffset); !absent.isEmpty()) {
+        setStatus(absent, true);
+        return;
+    }
     const int counts = countsPerTurn();
     if (offset < 0 || offset >= counts) {
         setStatus(tr("Refused, nothing sent: the offset must be in 0..%1 for a %2-bit encoder.")
@@ -606,18 +615,20 @@ void EncoderView::writeZeroToRom()
         bus::Priority::Operator, 0);
 }
 
-QString EncoderView::turnCountAbsence() const
+QString EncoderView::absenceOf(Command command) const
 {
-    return hasDrive()
-               ? GenerationNote::absence(motor(), Command::ClearTurnCount, tr("clear turn count"))
-               : QString();
+    if (!hasDrive())
+        return QString();
+    return GenerationNote::absence(motor(), command,
+                                   command == Command::ClearTurnCount ? tr("clear turn count")
+                                                                      : tr("the encoder offset"));
 }
 
 void EncoderView::clearTurnCount()
 {
     if (!canSend() || m_busy)
         return;
-    if (const QString absent = turnCountAbsence(); !absent.isEmpty()) {
+    if (const QString absent = absenceOf(Command::ClearTurnCount); !absent.isEmpty()) {
         setStatus(absent, true);
         return;
     }

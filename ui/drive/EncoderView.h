@@ -65,7 +65,8 @@ public:
     /// V2.35: asks, then clears the turn count (0x93) and reads the multi-turn angle back.
     void clearTurnCount();
     /// Why clear turn count is not offered for the drive (empty: it is).
-    QString turnCountAbsence() const;
+    /// Empty when the drive's generation has `command`; else why it is absent.
+    QString absenceOf(protocol::Command command) const;
 
     std::optional<protocol::EncoderReading> lastEncoder() const { return m_encoder; }
     std::optional<double> lastMultiTurnDeg() const { return m_multiTurnDeg; }
@@ -128,6 +129,7 @@ private:
     QPushButton *m_zeroRom = nullptr;
     QPushButton *m_clearTurns = nullptr;
     QLabel *m_clearTurnsNote = nullptr;
+    QLabel *m_offsetNote = nullptr; // what 0x91 does, or why this drive has none
     QLabel *m_status = nullptr;
     QPlainTextEdit *m_log = nullptr;
 };

@@ -80,6 +80,7 @@ private slots:
     void clearTurnCount();
     void declinedClearTurnCountSendsNothing();
     void v23DriveHasNoClearTurnCount();
+    void v235DriveHasNoEncoderOffset();
 };
 
 void tst_EncoderView::readsLiveWhileVisible()
@@ -392,6 +393,30 @@ void tst_EncoderView::v23DriveHasNoClearTurnCount()
     QVERIFY(asked.isEmpty());
     QVERIFY(rig.barrier(1));
     QCOMPARE(rig.count(1, Command::ClearTurnCount), 0);
+}
+
+// V2.35 drives do not answer 0x91 (V2.35.md): the offset is not offered, says why, and a
+// write sends nothing (it used to go out and time out, the message blaming the wiring).
+void tst_EncoderView::v235DriveHasNoEncoderOffset()
+{
+    SimRig rig(kV235Bus);
+    QVERIFY(rig.open());
+    auto view = openView(rig, 3);
+    QVERIFY(!view->findChild<QPushButton *>(QStringLiteral("writeOffset"))->isEnabled());
+    QStringList asked;
+    ConfirmDialog::ScopedPolicy yes([&](const ConfirmRequest &q) {
+        asked << q.key;
+        return true;
+    });
+    view->writeOffset(100);
+    QVERIFY(asked.isEmpty());
+    QVERIFY2(view->statusText().contains(QStringLiteral("encoder offset")),
+             qPrintable(view->statusText()));
+    QVERIFY(rig.barrier(3));
+    QCOMPARE(rig.count(3, Command::WriteEncoderOffset), 0);
+    // The V2.3 drive beside it still has it.
+    auto v23 = openView(rig, 1);
+    QVERIFY(v23->findChild<QPushButton *>(QStringLiteral("writeOffset"))->isEnabled());
 }
 
 QTEST_MAIN(tst_EncoderView)
