@@ -26,6 +26,7 @@ const QList<FieldLabel> &labels()
         {"motor_name", "motor", "", -1, true},
         {"hardware_version", "hardware version", "", 1, true},
         {"firmware_version", "firmware version", "", 2, true},
+        {"motor_id", "motor ID", "", -1, true}, // V2.35: the 12-byte unique ID, hex
         {"temperature_c", "temperature", "C", -1, true},
         {"voltage_v", "voltage", "V", 1, false}, // 2 places for V2.35's 0.01 V (valueText)
         {"bus_current_a", "bus current", "A", 2, false},
