@@ -9,6 +9,7 @@
 
 #include <QtTest/QSignalSpy>
 #include <QtTest/QTest>
+#include <QtWidgets/QPushButton>
 
 #include <functional>
 #include <memory>
@@ -110,5 +111,23 @@ public:
     std::shared_ptr<ui::SimulatedBus> sim;
     bus::BusSession session;
 };
+
+/// A drive view of type View on drive `id` of the rig: sized, connected and shown.
+template <typename View> std::unique_ptr<View> showView(SimRig &rig, int id, QSize size)
+{
+    auto view = std::make_unique<View>();
+    view->resize(size);
+    view->setSession(&rig.session);
+    view->setConnected(true);
+    view->setDrive(id, rig.motor(id));
+    view->show();
+    return view;
+}
+
+/// The push button named `name` inside `view` (nullptr when there is none).
+inline QPushButton *button(QWidget &view, const char *name)
+{
+    return view.findChild<QPushButton *>(QLatin1String(name));
+}
 
 } // namespace lk::drivetest

@@ -8,6 +8,7 @@
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QPushButton>
 
+using lk::drivetest::button;
 using lk::drivetest::kWaitMs;
 using lk::drivetest::SimRig;
 using lk::protocol::Command;
@@ -23,18 +24,7 @@ const QString kBus = QStringLiteral("1:MF,3:MS4015@2.35");
 
 std::unique_ptr<ControlView> openView(SimRig &rig, int id)
 {
-    auto view = std::make_unique<ControlView>();
-    view->resize(1200, 800);
-    view->setSession(&rig.session);
-    view->setConnected(true);
-    view->setDrive(id, rig.motor(id));
-    view->show();
-    return view;
-}
-
-QPushButton *button(QWidget &view, const char *name)
-{
-    return view.findChild<QPushButton *>(QLatin1String(name));
+    return lk::drivetest::showView<ControlView>(rig, id, QSize(1200, 800));
 }
 
 bool released(SimRig &rig, int id)

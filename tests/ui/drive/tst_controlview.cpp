@@ -20,6 +20,7 @@
 
 #include <cmath>
 
+using lk::drivetest::button;
 using lk::drivetest::kWaitMs;
 using lk::drivetest::SimRig;
 using lk::protocol::Command;
@@ -34,18 +35,7 @@ namespace {
 
 std::unique_ptr<ControlView> openView(SimRig &rig, int id)
 {
-    auto view = std::make_unique<ControlView>();
-    view->resize(1200, 800);
-    view->setSession(&rig.session);
-    view->setConnected(true);
-    view->setDrive(id, rig.motor(id));
-    view->show();
-    return view;
-}
-
-QPushButton *button(QWidget &view, const char *name)
-{
-    return view.findChild<QPushButton *>(QLatin1String(name));
+    return lk::drivetest::showView<ControlView>(rig, id, QSize(1200, 800));
 }
 
 // Angles differ by at most `tol` degrees on a circle of `turn` degrees.

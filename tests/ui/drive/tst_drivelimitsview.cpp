@@ -31,12 +31,7 @@ namespace {
 /// A limits view on drive `id`, shown, with its first read finished (answered or not).
 std::unique_ptr<DriveLimitsView> openView(SimRig &rig, int id)
 {
-    auto view = std::make_unique<DriveLimitsView>();
-    view->resize(600, 600);
-    view->setSession(&rig.session);
-    view->setConnected(true);
-    view->setDrive(id, rig.motor(id));
-    view->show();
+    auto view = lk::drivetest::showView<DriveLimitsView>(rig, id, QSize(600, 600));
     if (!QTest::qWaitFor([&] { return !view->isBusy(); }, kWaitMs))
         return nullptr;
     return view;

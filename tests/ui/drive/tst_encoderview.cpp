@@ -24,13 +24,7 @@ namespace {
 
 std::unique_ptr<EncoderView> openView(SimRig &rig, int id)
 {
-    auto view = std::make_unique<EncoderView>();
-    view->resize(1100, 650);
-    view->setSession(&rig.session);
-    view->setConnected(true);
-    view->setDrive(id, rig.motor(id));
-    view->show();
-    return view;
+    return lk::drivetest::showView<EncoderView>(rig, id, QSize(1100, 650));
 }
 
 // Drive 1 speaks V2.3, drive 3 is an MS4015 on firmware 2.35 (16-bit encoder range).

@@ -61,12 +61,7 @@ qint32 pendingAccel(const TuningView &view)
 /// A view on drive `id` of the rig, shown, with its first read done.
 std::unique_ptr<TuningView> openView(SimRig &rig, int id)
 {
-    auto view = std::make_unique<TuningView>();
-    view->resize(1200, 700);
-    view->setSession(&rig.session);
-    view->setConnected(true);
-    view->setDrive(id, rig.motor(id));
-    view->show();
+    auto view = lk::drivetest::showView<TuningView>(rig, id, QSize(1200, 700));
     if (!QTest::qWaitFor([&] { return drivePid(*view).has_value() && !view->isBusy(); }, kWaitMs))
         return nullptr;
     return view;
