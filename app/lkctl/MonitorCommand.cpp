@@ -320,11 +320,14 @@ int MonitorCommand::run(const QStringList &args, Console &console)
     if (!bus.open(*busOptions))
         return kExitFailure;
     QMap<int, std::optional<protocol::Series>> series;
+    QSet<int> v235;
     for (int id : plan->ids) {
         const std::optional<LiveBus::Identity> who = bus.identify(id);
         if (!who)
             return kExitFailure;
         series.insert(id, who->series);
+        if (who->model.generation == protocol::Generation::V2_35)
+            v235.insert(id);
     }
     // A reader that goes away (`| head`) must end the loop, not kill the process silently.
     std::signal(SIGPIPE, SIG_IGN);
@@ -338,7 +341,7 @@ int MonitorCommand::run(const QStringList &args, Console &console)
     }
     plan->baud = busOptions->baud;
     plan->busLimit = bus::BusTiming::transactionsPerSecond(mix, plan->baud);
-    MonitorTable table(plan->commands, series, plan->format);
+    MonitorTable table(plan->commands, series, plan->format, v235);
     return stream(bus, *plan, table);
 }
 

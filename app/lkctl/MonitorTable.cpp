@@ -27,7 +27,7 @@ bool answers(std::optional<protocol::Series> series, Command command)
 /// The CSV layout of the columns each drive's series gives for the polled commands.
 TelemetryCsv layoutFor(const QVector<Command> &commands,
                        const QMap<int, std::optional<protocol::Series>> &series,
-                       MonitorFormat format)
+                       MonitorFormat format, const QSet<int> &v235)
 {
     QVector<TelemetryCsv::Cell> cells;
     TelemetryFields all;
@@ -35,7 +35,7 @@ TelemetryCsv layoutFor(const QVector<Command> &commands,
         TelemetryFields fields;
         for (Command c : commands) {
             if (answers(it.value(), c))
-                fields |= MonitorTable::fieldsOf(c, it.value());
+                fields |= MonitorTable::fieldsOf(c, it.value(), v235.contains(it.key()));
         }
         for (int column : TelemetryColumns::of(fields))
             cells.append({it.key(), column});
@@ -47,11 +47,13 @@ TelemetryCsv layoutFor(const QVector<Command> &commands,
 
 } // namespace
 
-TelemetryFields MonitorTable::fieldsOf(Command command, std::optional<protocol::Series> series)
+TelemetryFields MonitorTable::fieldsOf(Command command, std::optional<protocol::Series> series,
+                                       bool v235)
 {
     switch (command) {
     case Command::ReadState1:
-        return TelemetryField::Temperature | TelemetryField::Voltage | TelemetryField::ErrorState;
+        return TelemetryField::Temperature | TelemetryField::Voltage | TelemetryField::ErrorState |
+               (v235 ? TelemetryField::BusCurrent | TelemetryField::MotorOn : TelemetryFields{});
     case Command::ReadState2:
         return TelemetryField::Temperature | TelemetryField::Speed | TelemetryField::Encoder |
                (series == protocol::Series::MS ? TelemetryField::Power : TelemetryField::IqA);
@@ -70,8 +72,8 @@ TelemetryFields MonitorTable::fieldsOf(Command command, std::optional<protocol::
 
 MonitorTable::MonitorTable(const QVector<Command> &commands,
                            const QMap<int, std::optional<protocol::Series>> &series,
-                           MonitorFormat format)
-    : m_format(format), m_csv(layoutFor(commands, series, format))
+                           MonitorFormat format, const QSet<int> &v235)
+    : m_format(format), m_csv(layoutFor(commands, series, format, v235))
 {
     for (auto it = series.cbegin(); it != series.cend(); ++it) {
         for (Command c : commands)

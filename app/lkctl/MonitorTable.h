@@ -25,9 +25,12 @@ enum class MonitorFormat { CsvWide, CsvLong, Json };
 /// round's first reply arrives (a reply of it was lost: its cells stay empty).
 class MonitorTable {
 public:
-    /// `commands`: what is polled; `series`: per ID (nullopt: unknown, read as MF).
+    /// `commands`: what is polled; `series`: per ID (nullopt: unknown, read as MF);
+    /// `v235`: the IDs that speak V2.35 (their read_state1 also carries bus current and the
+    /// motor state).
     MonitorTable(const QVector<protocol::Command> &commands,
-                 const QMap<int, std::optional<protocol::Series>> &series, MonitorFormat format);
+                 const QMap<int, std::optional<protocol::Series>> &series, MonitorFormat format,
+                 const QSet<int> &v235 = {});
 
     /// The CSV header line (empty for JSON), newline included.
     QByteArray header() const;
@@ -41,9 +44,9 @@ public:
     /// From the first round written to the last, seconds.
     double elapsedS() const;
 
-    /// The fields a command's reply carries, for a series.
+    /// The fields a command's reply carries, for a series and protocol generation.
     static bus::TelemetryFields fieldsOf(protocol::Command command,
-                                         std::optional<protocol::Series> series);
+                                         std::optional<protocol::Series> series, bool v235 = false);
 
 private:
     struct Round {

@@ -11,6 +11,15 @@ void fill(TelemetrySample &s, const protocol::State1 &v)
     s.voltageV = v.voltageV();
     s.errorState = v.errorState;
     s.fields |= TelemetryField::Temperature | TelemetryField::Voltage | TelemetryField::ErrorState;
+    // V2.35 layouts only; a V2.3 reply has neither, and an undocumented state byte is no state.
+    if (const std::optional<double> a = v.busCurrentA()) {
+        s.busCurrentA = *a;
+        s.fields |= TelemetryField::BusCurrent;
+    }
+    if (const std::optional<bool> on = v.motorOn()) {
+        s.motorOn = *on;
+        s.fields |= TelemetryField::MotorOn;
+    }
 }
 
 void fill(TelemetrySample &s, const protocol::State2 &v)
@@ -67,6 +76,16 @@ std::optional<TelemetrySample> TelemetrySample::fromReply(const protocol::Reply 
     std::visit([&s](const auto &v) { fill(s, v); }, reply.payload);
     if (!s.fields)
         return std::nullopt;
+    return s;
+}
+
+TelemetrySample TelemetrySample::fromState1(int id, const protocol::State1 &state, double time)
+{
+    TelemetrySample s;
+    s.id = id;
+    s.time = time;
+    s.source = protocol::Command::ReadState1;
+    fill(s, state);
     return s;
 }
 

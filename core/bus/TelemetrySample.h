@@ -22,6 +22,8 @@ enum class TelemetryField : quint16 {
     MultiTurn = 0x0080,
     PhaseCurrents = 0x0100,
     SingleTurn = 0x0200,
+    BusCurrent = 0x0400, ///< V2.35 0x9A/0x9B only
+    MotorOn = 0x0800,    ///< V2.35 0x9A/0x9B only: the motor state byte (on/off)
 };
 Q_DECLARE_FLAGS(TelemetryFields, TelemetryField)
 Q_DECLARE_OPERATORS_FOR_FLAGS(TelemetryFields)
@@ -47,10 +49,14 @@ struct TelemetrySample {
     double multiTurnDeg = 0; ///< rotor degrees
     double singleTurnDeg = 0;
     double iaA = 0, ibA = 0, icA = 0;
+    double busCurrentA = 0;
+    bool motorOn = false;
     bool has(TelemetryField f) const { return fields.testFlag(f); }
 
     /// The sample a reply carries, or nullopt for replies without telemetry (model, PID, ack).
     static std::optional<TelemetrySample> fromReply(const protocol::Reply &reply, double time);
+    /// The sample of a 0x9A/0x9B state read outside a reply (a scan's probe).
+    static TelemetrySample fromState1(int id, const protocol::State1 &state, double time);
 };
 
 /// Samples delivered together (at most ~60 batches per second), in arrival order.

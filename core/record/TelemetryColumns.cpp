@@ -10,8 +10,8 @@ using bus::TelemetrySample;
 
 const QVector<TelemetryColumn> &TelemetryColumns::all()
 {
-    // Decimals follow the resolution on the wire: 0.1 V, 0.01 deg, 33/2048 A (iq), 1/64 A
-    // (phases), whole degrees/s, counts and degrees C.
+    // Decimals follow the resolution on the wire: 0.1 V (V2.3; V2.35 sends 0.01 V), 0.01 A bus
+    // current, 0.01 deg, 33/2048 A (iq), 1/64 A (phases), whole degrees/s, counts and degrees C.
     static const QVector<TelemetryColumn> kColumns{
         {"temperature_c", "°C", TelemetryField::Temperature, 0,
          [](const TelemetrySample &s) { return double(s.temperatureC); }},
@@ -36,6 +36,10 @@ const QVector<TelemetryColumn> &TelemetryColumns::all()
          [](const TelemetrySample &s) { return s.ibA; }},
         {"ic_a", "A", TelemetryField::PhaseCurrents, 4,
          [](const TelemetrySample &s) { return s.icA; }},
+        {"bus_current_a", "A", TelemetryField::BusCurrent, 2,
+         [](const TelemetrySample &s) { return s.busCurrentA; }},
+        {"motor_on", "1 on, 0 off", TelemetryField::MotorOn, 0,
+         [](const TelemetrySample &s) { return s.motorOn ? 1.0 : 0.0; }},
     };
     return kColumns;
 }

@@ -41,17 +41,8 @@ void BusModel::addFound(const bus::FoundMotor &found)
     d.model = found.model;
     d.nameInfo = motor::ModelNameInfo::parse(found.model.motorName);
     d.series = found.series ? found.series : d.nameInfo.series;
-    if (found.state1) {
-        bus::TelemetrySample s;
-        s.id = found.id;
-        s.source = protocol::Command::ReadState1;
-        s.fields = bus::TelemetryField::Temperature | bus::TelemetryField::Voltage |
-                   bus::TelemetryField::ErrorState;
-        s.temperatureC = found.state1->temperatureC;
-        s.voltageV = found.state1->voltageV();
-        s.errorState = found.state1->errorState;
-        d.apply(s, nowMs());
-    }
+    if (found.state1)
+        d.apply(bus::TelemetrySample::fromState1(found.id, *found.state1, 0), nowMs());
     emit drivesChanged();
     if (m_currentId == 0)
         setCurrentId(found.id);

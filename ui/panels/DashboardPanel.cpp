@@ -114,6 +114,9 @@ QWidget *DashboardPanel::buildElectrical()
     grid->addWidget(makeReadout(QStringLiteral("phaseA"), tr("Phase A"), box), 2, 0);
     grid->addWidget(makeReadout(QStringLiteral("phaseB"), tr("Phase B"), box), 2, 1);
     grid->addWidget(makeReadout(QStringLiteral("phaseC"), tr("Phase C"), box), 3, 0);
+    // Firmware 2.35 and later report these in 0x9A; older drives do not (shown only there).
+    grid->addWidget(makeReadout(QStringLiteral("busCurrent"), tr("Bus current"), box), 4, 0);
+    grid->addWidget(makeReadout(QStringLiteral("motorState"), tr("Motor"), box), 4, 1);
     return box;
 }
 
@@ -220,10 +223,13 @@ void DashboardPanel::updateElectrical(const DriveRecord &d, qint64 now)
                        : QString(),
                    d.isStale(F::Temperature, now));
     temp->setAlarm(v.temperatureC >= kHotTemperatureC);
+    const bool v235 = d.generation() == protocol::Generation::V2_35;
     readout(QStringLiteral("voltage"))
-        ->setValue(d.has(F::Voltage) ? Format::withUnit(v.voltageV, 1, QStringLiteral("V"))
-                                     : QString(),
+        ->setValue(d.has(F::Voltage)
+                       ? Format::withUnit(v.voltageV, v235 ? 2 : 1, QStringLiteral("V"))
+                       : QString(),
                    d.isStale(F::Voltage, now));
+    updateV235State(d, now);
     auto *torque = readout(QStringLiteral("torque"));
     if (d.reportsPower())
         torque->setValue(d.has(F::Power) ? Format::number(v.power, 0) : QString(),
@@ -245,6 +251,23 @@ void DashboardPanel::updateElectrical(const DriveRecord &d, qint64 now)
                                                 : QString(),
                         stale);
     }
+}
+
+void DashboardPanel::updateV235State(const DriveRecord &d, qint64 now)
+{
+    const bool v235 = d.generation() == protocol::Generation::V2_35;
+    auto *current = readout(QStringLiteral("busCurrent"));
+    auto *state = readout(QStringLiteral("motorState"));
+    current->setVisible(v235);
+    state->setVisible(v235);
+    if (!v235)
+        return;
+    const auto &v = d.latest;
+    current->setValue(d.has(F::BusCurrent) ? Format::withUnit(v.busCurrentA, 2, QStringLiteral("A"))
+                                           : QString(),
+                      d.isStale(F::BusCurrent, now));
+    state->setValue(d.has(F::MotorOn) ? (v.motorOn ? tr("on") : tr("off")) : QString(),
+                    d.isStale(F::MotorOn, now));
 }
 
 void DashboardPanel::updateMotion(const DriveRecord &d, qint64 now)

@@ -46,6 +46,8 @@ private:
     Readout *makeReadout(const QString &name, const QString &caption, QWidget *parent);
     void updateIdentity(const DriveRecord &d);
     void updateElectrical(const DriveRecord &d, qint64 now);
+    /// Bus current and motor state: firmware 2.35 and later only.
+    void updateV235State(const DriveRecord &d, qint64 now);
     void updateMotion(const DriveRecord &d, qint64 now);
     void updateErrors(const DriveRecord &d, qint64 now);
 

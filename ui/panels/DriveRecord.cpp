@@ -48,6 +48,10 @@ void DriveRecord::apply(const bus::TelemetrySample &s, qint64 nowMs)
         latest.multiTurnDeg = s.multiTurnDeg;
     if (s.has(F::SingleTurn))
         latest.singleTurnDeg = s.singleTurnDeg;
+    if (s.has(F::BusCurrent))
+        latest.busCurrentA = s.busCurrentA;
+    if (s.has(F::MotorOn))
+        latest.motorOn = s.motorOn;
     if (s.has(F::PhaseCurrents)) {
         latest.iaA = s.iaA;
         latest.ibA = s.ibA;

@@ -67,6 +67,7 @@ private slots:
     void greysStaleValues();
     void errorFlagsAndClearButton();
     void errorFlagsFollowTheGeneration();
+    void v235BusCurrentAndMotorState();
     void statisticsClearedOnDisconnect();
     void selectionFollowsEveryView();
     void encoderResolutionFromData();
@@ -196,6 +197,46 @@ void tst_Dashboard::errorFlagsFollowTheGeneration()
              QStringLiteral("Error bit 4, Error bit 6"));
     // Without the model read, the generation is unknown: numbers, never a guessed name.
     QCOMPARE(lk::ui::Format::errorFlagsText(0x01, std::nullopt), QStringLiteral("Error bit 0"));
+}
+
+// Firmware 2.35 reports bus current and the motor state in 0x9A (V2.35.md section 5); the
+// dashboard shows them for such a drive, with the voltage at its 0.01 V resolution, and hides
+// them for a V2.3 drive, whose reply has neither (never a made-up 0 A).
+void tst_Dashboard::v235BusCurrentAndMotorState()
+{
+    BusModel model;
+    DashboardPanel dash(&model);
+    dash.resize(1000, 700);
+    dash.show();
+    auto m = found(3, protocol::Series::MS, QStringLiteral("MS4015"));
+    m.model.generation = protocol::Generation::V2_35;
+    m.model.firmwareRaw = 235;
+    m.state1->generation = protocol::Generation::V2_35;
+    m.state1->voltageRaw = 2400;
+    m.state1->busCurrentRaw = 150;
+    m.state1->motorStateRaw = 0x00;
+    model.addFound(m);
+    model.addFound(found(5, protocol::Series::MF, QStringLiteral("MF4015")));
+    model.setCurrentId(3);
+    dash.refresh();
+    QCOMPARE(dash.readout(QStringLiteral("voltage"))->value(), QStringLiteral("24.00 V"));
+    QVERIFY(dash.readout(QStringLiteral("busCurrent"))->isVisible());
+    QCOMPARE(dash.readout(QStringLiteral("busCurrent"))->value(), QStringLiteral("1.50 A"));
+    QCOMPARE(dash.readout(QStringLiteral("motorState"))->value(), QStringLiteral("on"));
+
+    protocol::State1 off = *m.state1;
+    off.motorStateRaw = 0x10;
+    off.busCurrentRaw = -3;
+    model.applyTelemetry({TelemetrySample::fromState1(3, off, 1.0)});
+    dash.refresh();
+    QCOMPARE(dash.readout(QStringLiteral("motorState"))->value(), QStringLiteral("off"));
+    QCOMPARE(dash.readout(QStringLiteral("busCurrent"))->value(), QStringLiteral("-0.03 A"));
+
+    model.setCurrentId(5);
+    dash.refresh();
+    QCOMPARE(dash.readout(QStringLiteral("voltage"))->value(), QStringLiteral("24.0 V"));
+    QVERIFY(!dash.readout(QStringLiteral("busCurrent"))->isVisible());
+    QVERIFY(!dash.readout(QStringLiteral("motorState"))->isVisible());
 }
 
 // The status bar, the dashboard and the statistics view read the model's figures: closing the
