@@ -1,5 +1,7 @@
 #include "StepTestRunner.h"
 
+#include "StepMetrics.h"
+
 #include <bus/BusSession.h>
 #include <bus/ConnectionStatus.h>
 #include <protocol/Command.h>
@@ -305,9 +307,7 @@ void StepTestRunner::buildTrace()
                          s.cycle != 0 ? roundEffort.value(s.cycle, StepTrace::missing())
                                       : StepTrace::missing());
     }
-    const int n = trace.size();
-    const double span = n >= 2 ? trace.time.last() - trace.time.first() : 0;
-    m_result.sampleRateHz = span > 0 ? (n - 1) / span : 0;
+    m_result.sampleRateHz = StepMetrics::sampleRateHz(trace);
 }
 
 void StepTestRunner::end(StepTestFailure failure, const QString &message)

@@ -84,7 +84,7 @@ struct Rig {
     {
         const quint64 t = session.send(*protocol::build::plain(Command::ReadMultiTurn, 3).request);
         std::optional<double> angle;
-        QTest::qWaitFor(
+        (void)QTest::qWaitFor(
             [&] {
                 for (const auto &args : completed) {
                     const auto r = args.at(0).value<RequestResult>();
@@ -237,15 +237,20 @@ void tst_StepTestRunner::previousPollPlanIsRestored()
     Rig rig;
     const PollPlan dashboard = PollPlan::standard({3, 17}, 20);
     rig.session.startPolling(dashboard);
-    // The worker reports the limit of the mix it polls: the dashboard's, then the focus's.
+    // The worker reports the bus limit of the mix it polls, in polls and in rounds per second:
+    // their ratio, polls per round, tells the dashboard's plan (7 polls: drive 17 is an MS,
+    // without 0x9D) from the focus (9 polls of which 8 are drive 3's rounds).
     PollScheduler expected;
     expected.setSeriesLookup([&](int id) { return rig.session.series(id); });
     expected.setPlan(dashboard, 0);
-    const double dashboardLimit = expected.busLimitPerSecond(115200);
+    const double dashboardLimit =
+        expected.busLimitPerSecond(115200) / expected.cycleLimitHz(115200);
+    QCOMPARE(qRound(dashboardLimit), 7);
     const auto lastLimit = [&] {
-        return rig.statistics.isEmpty()
-                   ? 0.0
-                   : rig.statistics.last().at(0).value<BusStatistics>().pollLimitPerSecond;
+        if (rig.statistics.isEmpty())
+            return 0.0;
+        const auto s = rig.statistics.last().at(0).value<BusStatistics>();
+        return s.pollCycleLimitHz > 0 ? s.pollLimitPerSecond / s.pollCycleLimitHz : 0.0;
     };
     QVERIFY(
         QTest::qWaitFor([&] { return std::fabs(lastLimit() - dashboardLimit) < 1e-6; }, kWaitMs));
