@@ -113,6 +113,7 @@ void BusSession::close()
     if (!m_thread)
         return;
     join();
+    m_pollPlan.reset();
     // Deliver what the worker said on its way out (Cancelled completions, Closed state) now,
     // then ignore anything else the old worker may have queued.
     QCoreApplication::sendPostedEvents(this, QEvent::MetaCall);
@@ -199,11 +200,13 @@ void BusSession::cancelScan()
 
 void BusSession::startPolling(const PollPlan &plan)
 {
+    m_pollPlan = plan;
     post([w = m_worker, plan] { w->startPolling(plan); });
 }
 
 void BusSession::stopPolling()
 {
+    m_pollPlan.reset();
     post([w = m_worker] { w->stopPolling(); });
 }
 

@@ -76,6 +76,9 @@ public:
 
     void startPolling(const PollPlan &plan);
     void stopPolling();
+    /// The plan last given to startPolling() (as given); nullopt after stopPolling(), close()
+    /// or before any. A step test focuses it on its drive and gives it back afterwards.
+    std::optional<PollPlan> pollPlan() const { return m_pollPlan; }
 
     /// Tell the bus how to decode replies from `id` (iq vs power); also makes `id` known.
     void setSeries(int id, protocol::Series series);
@@ -121,6 +124,7 @@ private:
     ConnectionStatus m_connection;
     KnownMotors m_motors;
     BusConfig m_config;
+    std::optional<PollPlan> m_pollPlan;
 };
 
 } // namespace lk::bus

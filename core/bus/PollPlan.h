@@ -7,7 +7,13 @@
 
 namespace lk::bus {
 
-/// What to poll: every command for every ID, round robin.
+/// What to poll: every command for every ID, round robin; optionally with a focus on one drive.
+///
+/// With a focus (focusId 1..32) that drive's focusCommands are polled back to back, as fast as
+/// the bus allows (rateHz does not slow them), and the other IDs of `ids` keep their own round
+/// robin of `commands` (at most rateHz rounds a second, as without a focus), one of their polls
+/// after every focusOthersEvery focus polls: a step test gets the bus's full rate while the
+/// dashboard of the other drives stays alive.
 struct PollPlan {
     QVector<int> ids;
     /// read_* commands only (anything else is dropped from the plan by the worker).
@@ -15,6 +21,16 @@ struct PollPlan {
     QVector<protocol::Command> commands = standardCommands();
     /// Full cycles (every ID x command) per second; 0 = as fast as the bus allows.
     double rateHz = 0;
+    /// The drive polled back to back; 0 (or an ID outside 1..32): no focus.
+    int focusId = 0;
+    /// Read commands polled for focusId, in this order; empty: `commands`.
+    QVector<protocol::Command> focusCommands;
+    /// One poll of another drive after this many focus polls; 0: the others are not polled
+    /// while the focus lasts.
+    int focusOthersEvery = kDefaultFocusOthersEvery;
+    static constexpr int kDefaultFocusOthersEvery = 8;
+
+    bool hasFocus() const { return focusId > 0; }
 
     /// The dashboard's mix: 0x9C, 0x9A, 0x92, 0x9D. A shared list rather than a brace
     /// initialiser here: GCC 12 at -O2 warns (falsely) about the inlined initialiser array.
@@ -32,6 +48,17 @@ struct PollPlan {
         PollPlan p;
         p.ids = ids;
         p.rateHz = rateHz;
+        return p;
+    }
+
+    /// This plan with a focus on `id`'s `commands` (see above); the other IDs keep theirs.
+    PollPlan focusedOn(int id, const QVector<protocol::Command> &commands,
+                       int othersEvery = kDefaultFocusOthersEvery) const
+    {
+        PollPlan p = *this;
+        p.focusId = id;
+        p.focusCommands = commands;
+        p.focusOthersEvery = othersEvery;
         return p;
     }
 };

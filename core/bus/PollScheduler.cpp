@@ -30,36 +30,66 @@ bool PollScheduler::isPollable(Command command)
     }
 }
 
+namespace {
+QVector<Command> pollableOnly(const QVector<Command> &commands)
+{
+    QVector<Command> out;
+    for (Command c : commands) {
+        if (PollScheduler::isPollable(c) && !out.contains(c))
+            out.append(c);
+    }
+    return out;
+}
+} // namespace
+
 void PollScheduler::setPlan(const PollPlan &plan, double now)
 {
     m_plan = plan;
     m_plan.ids.clear();
-    m_plan.commands.clear();
-    m_slots.clear();
     for (int id : plan.ids) {
         if (id >= protocol::kMinId && id <= protocol::kMaxId && !m_plan.ids.contains(id))
             m_plan.ids.append(id);
     }
-    for (Command c : plan.commands) {
-        if (isPollable(c) && !m_plan.commands.contains(c))
-            m_plan.commands.append(c);
-    }
+    m_plan.commands = pollableOnly(plan.commands);
+    const bool focus = plan.focusId >= protocol::kMinId && plan.focusId <= protocol::kMaxId;
+    m_plan.focusId = focus ? plan.focusId : 0;
+    m_plan.focusCommands =
+        focus ? pollableOnly(plan.focusCommands.isEmpty() ? plan.commands : plan.focusCommands)
+              : QVector<Command>{};
+    m_plan.focusOthersEvery = std::max(0, plan.focusOthersEvery);
+
+    m_main = Ring{};
+    m_others = Ring{};
     // ID-major order: one drive's fields arrive close together in time.
     for (int id : m_plan.ids) {
+        if (id == m_plan.focusId)
+            continue;
         for (Command c : m_plan.commands)
-            m_slots.append(Slot{id, c, false});
+            (focus ? m_others : m_main).entries.append(Slot{id, c, false});
     }
-    m_cursor = 0;
-    m_cycleStart = now;
-    ++m_cycle;
+    for (Command c : m_plan.focusCommands)
+        m_main.entries.append(Slot{m_plan.focusId, c, false});
+    m_main.rateHz = focus ? 0 : m_plan.rateHz; // the focus drive goes at the bus's pace
+    m_main.current = Round{++m_rounds, now};
+    m_others.rateHz = m_plan.rateHz;
+    // The others' first poll opens their first round, due at once.
+    m_others.cursor = int(m_others.entries.size());
+    m_others.current.start = -std::numeric_limits<double>::infinity();
+    m_sinceOthers = 0;
+    m_current = m_main.current;
 }
 
 void PollScheduler::clear()
 {
     m_plan = PollPlan{};
     m_plan.commands.clear();
-    m_slots.clear();
-    m_cursor = 0;
+    m_main = Ring{};
+    m_others = Ring{};
+}
+
+bool PollScheduler::isActive() const
+{
+    return !m_main.entries.isEmpty() || !m_others.entries.isEmpty();
 }
 
 bool PollScheduler::eligible(const Slot &slot) const
@@ -75,21 +105,37 @@ bool PollScheduler::skipped(const Slot &slot) const
     return s && !motor::supports(*s, slot.command);
 }
 
-std::optional<protocol::Request> PollScheduler::next(double now)
+bool PollScheduler::pollable(const Ring &ring) const
 {
-    if (now < nextDueTime(now))
+    return std::any_of(ring.entries.begin(), ring.entries.end(),
+                       [this](const Slot &s) { return !skipped(s); });
+}
+
+bool PollScheduler::othersTurn() const
+{
+    if (m_others.entries.isEmpty())
+        return false;
+    // A focus the drive cannot answer (every command skipped) leaves the bus to the others.
+    if (!pollable(m_main))
+        return true;
+    return m_plan.focusOthersEvery > 0 && m_sinceOthers >= m_plan.focusOthersEvery;
+}
+
+std::optional<protocol::Request> PollScheduler::take(Ring &ring, double now)
+{
+    if (now < dueTime(ring, now))
         return std::nullopt;
-    // nextDueTime() found an eligible slot at or after the cursor, or allowed a new cycle.
-    for (int tried = 0; tried <= m_slots.size(); ++tried) {
-        if (m_cursor >= m_slots.size()) {
-            m_cursor = 0;
-            m_cycleStart = now;
-            ++m_cycle;
+    // dueTime() found an eligible slot at or after the cursor, or allowed a new round.
+    for (int tried = 0; tried <= ring.entries.size(); ++tried) {
+        if (ring.cursor >= ring.entries.size()) {
+            ring.cursor = 0;
+            ring.current = Round{++m_rounds, now};
         }
-        Slot &slot = m_slots[m_cursor++];
+        Slot &slot = ring.entries[ring.cursor++];
         if (!eligible(slot))
             continue;
         slot.outstanding = true;
+        m_current = ring.current;
         protocol::Request r;
         r.command = slot.command;
         r.id = static_cast<quint8>(slot.id);
@@ -98,55 +144,103 @@ std::optional<protocol::Request> PollScheduler::next(double now)
     return std::nullopt;
 }
 
-double PollScheduler::nextDueTime(double now) const
+std::optional<protocol::Request> PollScheduler::next(double now)
+{
+    if (othersTurn()) {
+        if (std::optional<protocol::Request> r = take(m_others, now)) {
+            m_sinceOthers = 0;
+            return r;
+        }
+    }
+    std::optional<protocol::Request> r = take(m_main, now);
+    if (r && m_plan.hasFocus())
+        ++m_sinceOthers;
+    return r;
+}
+
+double PollScheduler::dueTime(const Ring &ring, double now) const
 {
     bool any = false;
-    for (int i = 0; i < m_slots.size(); ++i) {
-        if (!eligible(m_slots[i]))
+    for (int i = 0; i < ring.entries.size(); ++i) {
+        if (!eligible(ring.entries[i]))
             continue;
-        if (i >= m_cursor)
-            return now; // still in the current cycle
+        if (i >= ring.cursor)
+            return now; // still in the current round
         any = true;
     }
     if (!any)
         return std::numeric_limits<double>::infinity(); // a completion will pump again
-    return m_plan.rateHz > 0 ? std::max(now, m_cycleStart + 1.0 / m_plan.rateHz) : now;
+    return ring.rateHz > 0 ? std::max(now, ring.current.start + 1.0 / ring.rateHz) : now;
+}
+
+double PollScheduler::nextDueTime(double now) const
+{
+    const double main = dueTime(m_main, now);
+    return othersTurn() ? std::min(main, dueTime(m_others, now)) : main;
 }
 
 void PollScheduler::completed(int id, Command command)
 {
-    for (Slot &s : m_slots) {
-        if (s.id == id && s.command == command)
-            s.outstanding = false;
+    for (Ring *ring : {&m_main, &m_others}) {
+        for (Slot &s : ring->entries) {
+            if (s.id == id && s.command == command)
+                s.outstanding = false;
+        }
     }
 }
 
 int PollScheduler::outstanding() const
 {
     int n = 0;
-    for (const Slot &s : m_slots)
-        n += s.outstanding ? 1 : 0;
+    for (const Ring *ring : {&m_main, &m_others}) {
+        for (const Slot &s : ring->entries)
+            n += s.outstanding ? 1 : 0;
+    }
     return n;
+}
+
+QVector<Command> PollScheduler::pollMix(int *rounds) const
+{
+    const auto unskipped = [this](const Ring &ring) {
+        QVector<Command> mix;
+        for (const Slot &s : ring.entries) {
+            if (!skipped(s))
+                mix.append(s.command);
+        }
+        return mix;
+    };
+    QVector<Command> mix = unskipped(m_main);
+    const QVector<Command> others = unskipped(m_others);
+    *rounds = 1;
+    if (others.isEmpty() || m_plan.focusOthersEvery == 0)
+        return mix.isEmpty() ? others : mix;
+    if (mix.isEmpty())
+        return others;
+    // focusOthersEvery focus polls, then one of the others, as next() hands them out: over
+    // focusOthersEvery focus rounds, one per focus command of the others' polls.
+    const int focusPolls = int(mix.size());
+    QVector<Command> stretch;
+    for (int k = 0; k < focusPolls * m_plan.focusOthersEvery; ++k)
+        stretch.append(mix.at(k % focusPolls));
+    for (int k = 0; k < focusPolls; ++k)
+        stretch.append(others.at(k % others.size()));
+    *rounds = m_plan.focusOthersEvery;
+    return stretch;
 }
 
 double PollScheduler::busLimitPerSecond(int baud, double turnaroundS) const
 {
-    QVector<Command> mix;
-    for (const Slot &s : m_slots) {
-        if (!skipped(s))
-            mix.append(s.command);
-    }
-    return BusTiming::transactionsPerSecond(mix, baud, turnaroundS);
+    int rounds = 0;
+    return BusTiming::transactionsPerSecond(pollMix(&rounds), baud, turnaroundS);
 }
 
 double PollScheduler::cycleLimitHz(int baud, double turnaroundS) const
 {
-    double cycleS = 0;
-    for (const Slot &s : m_slots) {
-        if (!skipped(s))
-            cycleS += BusTiming::transactionTimeS(s.command, baud, turnaroundS);
-    }
-    return cycleS > 0 ? 1.0 / cycleS : 0;
+    int rounds = 0;
+    double stretchS = 0;
+    for (Command c : pollMix(&rounds))
+        stretchS += BusTiming::transactionTimeS(c, baud, turnaroundS);
+    return stretchS > 0 ? rounds / stretchS : 0;
 }
 
 } // namespace lk::bus

@@ -14,9 +14,12 @@
 
 namespace lk::bus {
 
-/// Round robin over (ID, command) slots of a PollPlan. Pulled by the BusWorker whenever the
+/// Round robin over (ID, command) entries of a PollPlan. Pulled by the BusWorker whenever the
 /// bus is idle, so polls fill the gaps between operator requests. A slot is never handed out
 /// while its previous poll is outstanding; a cycle starts at most every 1/rateHz seconds.
+/// A plan with a focus runs two round robins: the focus drive's, back to back, and the other
+/// drives' (rate-limited as before), one of whose polls follows every focusOthersEvery focus
+/// polls.
 class PollScheduler {
 public:
     /// Series of an ID, to skip commands the series does not answer (0x9D on MS).
@@ -26,7 +29,7 @@ public:
     /// Replace the plan; non-read commands and IDs outside 1..32 are dropped.
     void setPlan(const PollPlan &plan, double now);
     void clear();
-    bool isActive() const { return !m_slots.isEmpty(); }
+    bool isActive() const;
     const PollPlan &plan() const { return m_plan; }
 
     /// The poll to send now, or nullopt (nothing due, or everything outstanding).
@@ -36,11 +39,13 @@ public:
     /// The poll for (id, command) ended (any status); its slot may be handed out again.
     void completed(int id, protocol::Command command);
     int outstanding() const;
-    /// The round the polls handed out by next() belong to: 1 for the first round of the
-    /// first plan, +1 for every new round and every new plan (never reused, never 0).
-    quint64 cycle() const { return m_cycle; }
+    /// The round the poll last handed out by next() belongs to (after setPlan(): the plan's
+    /// first round): 1 for the first round of the first plan, +1 for every new round and
+    /// every new plan (never reused, never 0). With a focus, the focus drive's rounds and the
+    /// other drives' rounds are numbered apart, from the same counter.
+    quint64 cycle() const { return m_current.round; }
     /// When that round began (the clock next() and setPlan() are given).
-    double cycleStart() const { return m_cycleStart; }
+    double cycleStart() const { return m_current.start; }
     /// The bus limit, in transactions/s, for the plan's command mix at `baud` with the
     /// drives' turnaround `turnaroundS` (the formula's 0.5 ms until one was measured).
     double busLimitPerSecond(int baud, double turnaroundS = BusTiming::kTurnaroundS) const;
@@ -55,15 +60,35 @@ private:
         protocol::Command command = protocol::Command::ReadState2;
         bool outstanding = false;
     };
+    struct Round {
+        quint64 round = 0;
+        double start = 0;
+    };
+    /// One round robin: the whole plan without a focus; with one, the focus drive's entries
+    /// (m_main) and the other drives' (m_others).
+    struct Ring {
+        QVector<Slot> entries;
+        int cursor = 0;
+        double rateHz = 0; ///< rounds per second at most; 0: as fast as the bus allows
+        Round current;
+    };
     bool skipped(const Slot &slot) const;
     bool eligible(const Slot &slot) const;
+    bool pollable(const Ring &ring) const; ///< some slot the series answers
+    bool othersTurn() const;
+    double dueTime(const Ring &ring, double now) const;
+    std::optional<protocol::Request> take(Ring &ring, double now);
+    /// The commands of one repeating stretch of polls and how many focus (or plain) rounds
+    /// it holds: what the bus limit is computed from.
+    QVector<protocol::Command> pollMix(int *rounds) const;
 
     PollPlan m_plan;
-    QVector<Slot> m_slots;
     SeriesLookup m_series;
-    int m_cursor = 0;
-    double m_cycleStart = 0;
-    quint64 m_cycle = 0;
+    Ring m_main;
+    Ring m_others;
+    int m_sinceOthers = 0; ///< focus polls handed out since the last poll of another drive
+    quint64 m_rounds = 0;  ///< round numbers given out so far
+    Round m_current;
 };
 
 } // namespace lk::bus

@@ -41,6 +41,17 @@ struct StepMetricOptions {
 
 /// The metrics of one edge of a step test. Window: from the edge to the next edge (or the
 /// trace's end). Amplitude A = to - from; levels are from + p x A.
+///
+/// Crossing times are interpolated linearly between samples (the sample just before the edge
+/// anchors a crossing before the window's first sample), so times do not quantise to the
+/// sample period. With A = 0 the response metrics (rise, overshoot, settling, oscillations)
+/// are NoStep; the steady-state error and the effort metrics are still measured. The
+/// steady-state error is NeverSettled when the response ends outside the 5 % band: the mean of
+/// a response still moving is no steady state. Oscillations count half-cycles (from one
+/// crossing of `to` to the next) whose peak leaves the 2 % band, so noise inside the band never
+/// counts and noise at the band's edge counts once. Effort samples that are missing neither
+/// break nor extend a saturated run; its ends are interpolated where |effort| crosses the
+/// threshold.
 struct EdgeMetrics {
     StepEdge edge;
     int samples = 0;         ///< samples in the window

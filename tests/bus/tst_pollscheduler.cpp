@@ -26,7 +26,8 @@ QPair<Command, int> key(const std::optional<protocol::Request> &r)
 }
 } // namespace
 
-/// Round robin, no double queueing, series skips and the rate limit of PollScheduler.
+/// Round robin, no double queueing, focus on one drive, series skips and the rate limit of
+/// PollScheduler.
 class tst_PollScheduler : public QObject {
     Q_OBJECT
 private slots:
@@ -38,6 +39,12 @@ private slots:
     void numbersRounds();
     void dropsNonReadsAndBadIds();
     void busLimitFollowsTheMix();
+    void focusPollsOneDriveBackToBack();
+    void focusKeepsTheOthersRate();
+    void focusWithoutOthers();
+    void focusTheDriveCannotAnswerLeavesTheBusToOthers();
+    void focusBusLimitFollowsItsMix();
+    void planWithoutFocusAfterFocus();
 };
 
 void tst_PollScheduler::roundRobin()
@@ -171,6 +178,105 @@ void tst_PollScheduler::busLimitFollowsTheMix()
     const double expected = BusTiming::transactionsPerSecond(
         {Command::ReadState2, Command::ReadState3, Command::ReadState2}, 115200);
     QVERIFY(qAbs(s.busLimitPerSecond(115200) - expected) < 1e-9);
+}
+
+namespace {
+// `n` polls at time `t`, each completed at once, as the worker pulls them on an idle bus.
+QVector<QPair<Command, int>> pull(PollScheduler &s, int n, double t = 0)
+{
+    QVector<QPair<Command, int>> got;
+    for (int i = 0; i < n; ++i) {
+        const auto r = s.next(t);
+        got.append(key(r));
+        if (r)
+            s.completed(r->id, r->command);
+    }
+    return got;
+}
+} // namespace
+
+void tst_PollScheduler::focusPollsOneDriveBackToBack()
+{
+    // Drive 2 in focus with its own commands; drives 1 and 3 share one poll per 3 focus polls.
+    PollScheduler s;
+    s.setPlan(plan({1, 2, 3}, {Command::ReadState1}, 0)
+                  .focusedOn(2, {Command::ReadMultiTurn, Command::ReadState2}, 3),
+              0);
+    const QVector<QPair<Command, int>> expected{
+        {Command::ReadMultiTurn, 2}, {Command::ReadState2, 2}, {Command::ReadMultiTurn, 2},
+        {Command::ReadState1, 1},    {Command::ReadState2, 2}, {Command::ReadMultiTurn, 2},
+        {Command::ReadState2, 2},    {Command::ReadState1, 3}, {Command::ReadMultiTurn, 2}};
+    QCOMPARE(pull(s, expected.size()), expected);
+    QCOMPARE(s.plan().focusId, 2);
+    QCOMPARE(s.plan().focusCommands,
+             (QVector<Command>{Command::ReadMultiTurn, Command::ReadState2}));
+}
+
+void tst_PollScheduler::focusKeepsTheOthersRate()
+{
+    // The plan's rate binds the other drives' rounds only: the focus never waits.
+    PollScheduler s;
+    s.setPlan(plan({1, 2}, {Command::ReadState2}, 10).focusedOn(2, {Command::ReadState2}, 1), 0);
+    QCOMPARE(pull(s, 2),
+             (QVector<QPair<Command, int>>{{Command::ReadState2, 2}, {Command::ReadState2, 1}}));
+    // Drive 1's round is done until t = 0.1; drive 2 goes on back to back.
+    QCOMPARE(pull(s, 3, 0.05), (QVector<QPair<Command, int>>(3, {Command::ReadState2, 2})));
+    QCOMPARE(s.nextDueTime(0.05), 0.05);
+    QCOMPARE(pull(s, 2, 0.1),
+             (QVector<QPair<Command, int>>{{Command::ReadState2, 1}, {Command::ReadState2, 2}}));
+}
+
+void tst_PollScheduler::focusWithoutOthers()
+{
+    // focusOthersEvery 0: only the focus drive is polled; its commands default to the plan's.
+    PollScheduler s;
+    s.setPlan(plan({1, 2}, {Command::ReadState2, Command::ReadState1}).focusedOn(1, {}, 0), 0);
+    const QVector<QPair<Command, int>> got = pull(s, 8);
+    for (const auto &k : got)
+        QCOMPARE(k.second, 1);
+    QCOMPARE(got.count({Command::ReadState1, 1}), 4);
+}
+
+void tst_PollScheduler::focusTheDriveCannotAnswerLeavesTheBusToOthers()
+{
+    PollScheduler s;
+    s.setSeriesLookup([](int id) -> std::optional<Series> {
+        return id == 2 ? std::optional<Series>(Series::MS) : std::nullopt;
+    });
+    s.setPlan(plan({1, 2}, {Command::ReadState2}).focusedOn(2, {Command::ReadState3}, 4), 0);
+    QCOMPARE(pull(s, 3), (QVector<QPair<Command, int>>(3, {Command::ReadState2, 1})));
+}
+
+void tst_PollScheduler::focusBusLimitFollowsItsMix()
+{
+    // Every 2 focus rounds (2 x 0x92 + 0x9C) two polls of the others (0x9A).
+    PollScheduler s;
+    s.setPlan(plan({1, 2}, {Command::ReadState1})
+                  .focusedOn(2, {Command::ReadMultiTurn, Command::ReadState2}, 2),
+              0);
+    const QVector<Command> stretch{Command::ReadMultiTurn, Command::ReadState2,
+                                   Command::ReadMultiTurn, Command::ReadState2,
+                                   Command::ReadState1,    Command::ReadState1};
+    const double expected = BusTiming::transactionsPerSecond(stretch, 115200);
+    QVERIFY(qAbs(s.busLimitPerSecond(115200) - expected) < 1e-9);
+    double stretchS = 0;
+    for (Command c : stretch)
+        stretchS += BusTiming::transactionTimeS(c, 115200);
+    QVERIFY(qAbs(s.cycleLimitHz(115200) - 2 / stretchS) < 1e-9);
+}
+
+void tst_PollScheduler::planWithoutFocusAfterFocus()
+{
+    // Restoring a plain plan after a focused one gives the plain round robin back.
+    PollScheduler s;
+    const PollPlan dashboard = plan({1, 2}, {Command::ReadState2});
+    s.setPlan(dashboard.focusedOn(2, {Command::ReadMultiTurn}, 0), 0);
+    pull(s, 3);
+    s.setPlan(dashboard, 1);
+    QVERIFY(!s.plan().hasFocus());
+    QCOMPARE(pull(s, 3, 1),
+             (QVector<QPair<Command, int>>{
+                 {Command::ReadState2, 1}, {Command::ReadState2, 2}, {Command::ReadState2, 1}}));
 }
 
 QTEST_APPLESS_MAIN(tst_PollScheduler)
