@@ -15,6 +15,7 @@
 #include <QtCore/QJsonDocument>
 
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 namespace lk::tuning {
@@ -358,7 +359,8 @@ QString StepRunFileError::toString() const
                                         "bad CSV header",
                                         "bad CSV row",
                                         "bad number",
-                                        "time not ascending"};
+                                        "time goes back"};
+    static_assert(std::size(names) == size_t(Kind::CsvTimeNotAscending) + 1);
     QString text = where + QStringLiteral(": ") + QLatin1String(names[int(kind)]);
     if (!found.isEmpty())
         text += QStringLiteral(" (found %1)").arg(found);

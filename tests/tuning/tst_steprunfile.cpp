@@ -427,6 +427,11 @@ void tst_StepRunFile::refused()
     QCOMPARE(error.key, key);
     QCOMPARE(error.line, line);
     QVERIFY(error.toString().contains(file));
+    if (line > 0)
+        QVERIFY2(error.toString().contains(QStringLiteral("line %1").arg(line)),
+                 qPrintable(error.toString()));
+    if (!key.isEmpty())
+        QVERIFY2(error.toString().contains(key), qPrintable(error.toString()));
 }
 
 // Two samples whose times round to the same microsecond in the file still load.
