@@ -9,6 +9,9 @@
 #include <protocol/FieldJson.h>
 #include <system/SignalWatcher.h>
 #include <tuning/StepMetrics.h>
+#include <tuning/StepRunJson.h>
+
+#include <QtCore/QDateTime>
 
 #include <QtCore/QJsonObject>
 
@@ -18,7 +21,6 @@ namespace lk::lkctl {
 
 using tuning::EdgeMetrics;
 using tuning::Metric;
-using tuning::MetricGap;
 using tuning::StepLoop;
 using tuning::StepSetpoint;
 using tuning::StepTestFailure;
@@ -26,44 +28,23 @@ using tuning::StepTestResult;
 
 namespace {
 
-/// One metric of an edge as lkctl prints it.
+/// One metric of an edge as lkctl prints it for people (the JSON is StepRunJson's).
 struct MetricRow {
-    const char *key;   ///< JSON key
     const char *label; ///< text label
     Metric EdgeMetrics::*member;
     enum Unit { Seconds, Percent, Value, Effort } unit;
 };
 
 const MetricRow kRows[] = {
-    {"rise_time_s", "rise time 10-90 %", &EdgeMetrics::riseTimeS, MetricRow::Seconds},
-    {"overshoot_pct", "overshoot", &EdgeMetrics::overshootPct, MetricRow::Percent},
-    {"settling_time_s", "settling time 2 %", &EdgeMetrics::settling2S, MetricRow::Seconds},
-    {"settling_time_5pct_s", "settling time 5 %", &EdgeMetrics::settling5S, MetricRow::Seconds},
-    {"steady_state_error", "steady-state error", &EdgeMetrics::steadyStateError, MetricRow::Value},
-    {"peak_iq_a", "peak iq", &EdgeMetrics::peakEffort, MetricRow::Effort},
-    {"oscillations", "oscillations", &EdgeMetrics::oscillations, MetricRow::Value},
+    {"rise time 10-90 %", &EdgeMetrics::riseTimeS, MetricRow::Seconds},
+    {"overshoot", &EdgeMetrics::overshootPct, MetricRow::Percent},
+    {"settling time 2 %", &EdgeMetrics::settling2S, MetricRow::Seconds},
+    {"settling time 5 %", &EdgeMetrics::settling5S, MetricRow::Seconds},
+    {"steady-state error", &EdgeMetrics::steadyStateError, MetricRow::Value},
+    {"peak iq", &EdgeMetrics::peakEffort, MetricRow::Effort},
+    {"saturated", &EdgeMetrics::saturatedS, MetricRow::Seconds},
+    {"oscillations", &EdgeMetrics::oscillations, MetricRow::Value},
 };
-
-const char *gapName(MetricGap gap)
-{
-    switch (gap) {
-    case MetricGap::None:
-        return "none";
-    case MetricGap::TooFewSamples:
-        return "too_few_samples";
-    case MetricGap::NoStep:
-        return "no_step";
-    case MetricGap::NotReached:
-        return "not_reached";
-    case MetricGap::NeverSettled:
-        return "never_settled";
-    case MetricGap::NoEffort:
-        return "no_effort";
-    case MetricGap::NoLimit:
-        return "no_limit";
-    }
-    return "unknown";
-}
 
 const char *roleName(StepSetpoint::Role role)
 {
@@ -83,26 +64,30 @@ QString unitOf(StepLoop loop)
     return loop == StepLoop::Speed ? QStringLiteral("dps") : QStringLiteral("deg");
 }
 
-/// The key of a row: the effort is power on MS.
-QString keyOf(const MetricRow &row, bool power)
-{
-    return row.unit == MetricRow::Effort && power ? QStringLiteral("peak_power")
-                                                  : QLatin1String(row.key);
-}
+/// The keys of StepRunJson::metricsObject() in the order lkctl prints them; each unknown
+/// metric's "<key>_why" follows it.
+const char *const kMetricKeys[] = {
+    "rise_time_s",        "overshoot_pct", "settling_time_s", "settling_time_5pct_s",
+    "steady_state_error", "peak_iq_a",     "peak_power",      "saturated_s",
+    "oscillations",       "samples",       "sample_rate_hz"};
 
-/// The metrics of one edge, keys in kRows order; unknown values are null and their reasons
-/// go to `gaps`.
-void addMetrics(OrderedJson &o, const EdgeMetrics &m, bool power, OrderedJson &gaps)
+/// StepRunJson's metrics (the one mapping of metrics to JSON), in kMetricKeys order.
+void addMetrics(OrderedJson &o, const QJsonObject &metrics)
 {
-    for (const MetricRow &row : kRows) {
-        const Metric &metric = m.*row.member;
-        const QString key = keyOf(row, power);
-        if (metric.known()) {
-            o.real(key, *metric.value);
-        } else {
+    for (const char *k : kMetricKeys) {
+        const QString key = QLatin1String(k);
+        if (!metrics.contains(key))
+            continue;
+        const QJsonValue v = metrics.value(key);
+        if (v.isNull())
             o.null(key);
-            gaps.text(key, QLatin1String(gapName(metric.gap)));
-        }
+        else if (key == QLatin1String("samples") || key == QLatin1String("oscillations"))
+            o.integer(key, v.toInteger());
+        else
+            o.real(key, v.toDouble());
+        const QString why = key + QLatin1String("_why");
+        if (metrics.contains(why))
+            o.text(why, metrics.value(why).toString());
     }
 }
 
@@ -114,10 +99,15 @@ double originOf(const StepTestResult &r)
     return r.sent.isEmpty() ? 0 : r.sent.first().time;
 }
 
+/// A time on the trace's clock from its origin, to 0.1 ms (as StepRunJson rounds times).
+double since(const StepTestResult &r, double t)
+{
+    return std::round((t - originOf(r)) * 1e4) / 1e4;
+}
+
 QByteArray sentJson(const StepTestResult &r)
 {
     QByteArray out = "[";
-    const double origin = originOf(r);
     for (const tuning::StepSent &s : r.sent) {
         OrderedJson o;
         o.text(QStringLiteral("role"), QLatin1String(roleName(s.setpoint.role)))
@@ -126,7 +116,7 @@ QByteArray sentJson(const StepTestResult &r)
         if (std::isnan(s.time))
             o.null(QStringLiteral("time_s"));
         else
-            o.real(QStringLiteral("time_s"), s.time - origin);
+            o.real(QStringLiteral("time_s"), since(r, s.time));
         o.boolean(QStringLiteral("acknowledged"), s.acknowledged)
             .text(QStringLiteral("command"),
                   protocol::CommandTable::name(s.setpoint.request.command))
@@ -141,7 +131,7 @@ QString metricText(const Metric &metric, MetricRow::Unit unit, const QString &va
 {
     if (!metric.known())
         return QStringLiteral("unknown (%1)")
-            .arg(QString::fromLatin1(gapName(metric.gap)).replace(QLatin1Char('_'), ' '));
+            .arg(tuning::StepRunJson::gapWord(metric.gap).replace(QLatin1Char('_'), ' '));
     const double v = *metric.value;
     switch (unit) {
     case MetricRow::Seconds:
@@ -203,14 +193,14 @@ QString StepCommand::usage() const
                "  --max-speed DPS        position only: a lower max speed than your speed limit\n"
                "%1"
                "  --json                 one line: command, id, loop, from, to, duration_s,\n"
-               "                         periods, pre_roll_s, gains, speed_bound, sent (each\n"
-               "                         setpoint: role, at_s, target, time_s, acknowledged,\n"
-               "                         command, fields), samples, sample_rate_hz, the first\n"
-               "                         edge's rise_time_s, overshoot_pct, settling_time_s,\n"
-               "                         settling_time_5pct_s, steady_state_error, peak_iq_a\n"
-               "                         (peak_power on MS), oscillations (null when unknown,\n"
-               "                         the reason in metric_gaps), edges (each edge's\n"
-               "                         time_s, from, to and metrics), still_moving\n"
+               "                         periods, pre_roll_s, the first edge's rise_time_s,\n"
+               "                         overshoot_pct, settling_time_s, settling_time_5pct_s,\n"
+               "                         steady_state_error, peak_iq_a (peak_power on MS),\n"
+               "                         saturated_s, oscillations (null when unknown, the\n"
+               "                         reason in <key>_why), samples, sample_rate_hz, gains,\n"
+               "                         speed_bound, sent (each setpoint: role, at_s, target,\n"
+               "                         time_s, acknowledged, command, fields), edges (each\n"
+               "                         edge's time_s, from, to and metrics), still_moving\n"
                "\n"
                "%2"
                "\n"
@@ -339,6 +329,23 @@ StepTestResult StepCommand::runTest(LiveBus &bus, const Plan &plan,
     return result.value_or(StepTestResult{});
 }
 
+tuning::StepRun StepCommand::keptRun(const Plan &plan, const LiveBus::Identity &who,
+                                     const QJsonObject &gains, const StepTestResult &result)
+{
+    tuning::StepRun run;
+    run.number = 1;
+    run.driveId = plan.spec.id;
+    run.series = who.series ? protocol::seriesName(*who.series) : QString();
+    run.model = who.model.motorName;
+    run.generation = protocol::generationName(who.model.generation);
+    run.spec = {plan.spec.loop, plan.spec.from, plan.spec.to, plan.spec.durationS,
+                plan.spec.periods};
+    run.gains = gains;
+    run.trace = result.trace;
+    run.ranAt = QDateTime::currentDateTimeUtc();
+    return run;
+}
+
 int StepCommand::run(const QStringList &args, Console &console)
 {
     ArgParser parser = makeParser();
@@ -383,45 +390,39 @@ int StepCommand::run(const QStringList &args, Console &console)
         bus.error(result.message);
         return kExitFailure;
     }
+    const tuning::StepRun run = keptRun(*plan, *who, *gains, result);
     if (plan->json)
-        printJson(console, *plan, *gains, result);
+        printJson(console, *plan, run, result);
     else
-        printText(console, *plan, *gains, result);
+        printText(console, *plan, run, result);
     return kExitOk;
 }
 
-void StepCommand::printJson(Console &console, const Plan &plan, const QJsonObject &gains,
+void StepCommand::printJson(Console &console, const Plan &plan, const tuning::StepRun &run,
                             const StepTestResult &r) const
 {
-    const QVector<EdgeMetrics> edges = tuning::StepMetrics::forAllEdges(r.trace);
-    const bool power = r.trace.effortIsPower;
     OrderedJson o;
     o.text(QStringLiteral("command"), QStringLiteral("step"))
         .integer(QStringLiteral("id"), plan.spec.id)
-        .text(QStringLiteral("loop"), plan.spec.loop == StepLoop::Speed
-                                          ? QStringLiteral("speed")
-                                          : QStringLiteral("position"))
+        .text(QStringLiteral("loop"), tuning::stepLoopWord(plan.spec.loop))
         .real(QStringLiteral("from"), plan.spec.from)
         .real(QStringLiteral("to"), plan.spec.to)
         .real(QStringLiteral("duration_s"), plan.spec.durationS)
         .integer(QStringLiteral("periods"), plan.spec.periods)
-        .real(QStringLiteral("pre_roll_s"), plan.spec.preRollS)
-        .fields(QStringLiteral("gains"), gains)
+        .real(QStringLiteral("pre_roll_s"), plan.spec.preRollS);
+    // The step under test (the first edge), as StepRunJson maps it, with the gains.
+    const QJsonObject step = tuning::StepRunJson::toJson(run);
+    addMetrics(o, step);
+    o.fields(QStringLiteral("gains"), step.value(QStringLiteral("gains")).toObject())
         .raw(QStringLiteral("speed_bound"), MotionLimitOptions::boundJson(r.bound, r.boundDps))
-        .raw(QStringLiteral("sent"), sentJson(r))
-        .integer(QStringLiteral("samples"), r.trace.size())
-        .real(QStringLiteral("sample_rate_hz"), r.sampleRateHz);
-    OrderedJson gaps;
-    if (!edges.isEmpty())
-        addMetrics(o, edges.first(), power, gaps);
-    o.raw(QStringLiteral("metric_gaps"), gaps.toJson());
+        .raw(QStringLiteral("sent"), sentJson(r));
     QByteArray list = "[";
-    for (const EdgeMetrics &m : edges) {
-        OrderedJson e, edgeGaps;
-        e.real(QStringLiteral("time_s"), m.edge.time - originOf(r))
+    for (const EdgeMetrics &m : run.metrics()) {
+        OrderedJson e;
+        e.real(QStringLiteral("time_s"), since(r, m.edge.time))
             .real(QStringLiteral("from"), m.edge.from)
             .real(QStringLiteral("to"), m.edge.to);
-        addMetrics(e, m, power, edgeGaps);
+        addMetrics(e, tuning::StepRunJson::metricsObject(m, run.trace.effortIsPower));
         list += (list.size() > 1 ? "," : "") + e.toJson();
     }
     o.raw(QStringLiteral("edges"), list + ']');
@@ -429,11 +430,11 @@ void StepCommand::printJson(Console &console, const Plan &plan, const QJsonObjec
     console.out(o.toJson() + '\n');
 }
 
-void StepCommand::printText(Console &console, const Plan &plan, const QJsonObject &gains,
+void StepCommand::printText(Console &console, const Plan &plan, const tuning::StepRun &run,
                             const StepTestResult &r) const
 {
     const QString unit = unitOf(plan.spec.loop);
-    const QVector<EdgeMetrics> edges = tuning::StepMetrics::forAllEdges(r.trace);
+    const QVector<EdgeMetrics> edges = run.metrics();
     console.outLine(QStringLiteral("Step test on drive %1, %2 loop: %3 -> %4 %5, %6 of %7 s "
                                    "after a %8 s pre-roll at FROM.")
                         .arg(plan.spec.id)
@@ -448,7 +449,7 @@ void StepCommand::printText(Console &console, const Plan &plan, const QJsonObjec
                         .arg(plan.spec.durationS)
                         .arg(plan.spec.preRollS));
     QStringList g;
-    for (const QString &line : ReplyText::lines(gains))
+    for (const QString &line : ReplyText::lines(run.gains))
         g << line.simplified();
     console.outLine(QStringLiteral("Gains: %1.").arg(g.join(QStringLiteral(", "))));
     safety::MotionPlan bound;

@@ -4,6 +4,7 @@
 #include "LiveCommand.h"
 #include "MotionLimitOptions.h"
 
+#include <tuning/StepRun.h>
 #include <tuning/StepTestRunner.h>
 
 #include <QtCore/QJsonObject>
@@ -38,9 +39,12 @@ private:
     /// Runs the test on the open bus; the result once finished() or failed() came.
     tuning::StepTestResult runTest(LiveBus &bus, const Plan &plan, const safety::SoftLimits &limits,
                                    double gearRatio) const;
-    void printJson(Console &console, const Plan &plan, const QJsonObject &gains,
+    /// The test as a kept run (tuning::StepRun): what the metrics and their JSON come from.
+    static tuning::StepRun keptRun(const Plan &plan, const LiveBus::Identity &who,
+                                   const QJsonObject &gains, const tuning::StepTestResult &result);
+    void printJson(Console &console, const Plan &plan, const tuning::StepRun &run,
                    const tuning::StepTestResult &result) const;
-    void printText(Console &console, const Plan &plan, const QJsonObject &gains,
+    void printText(Console &console, const Plan &plan, const tuning::StepRun &run,
                    const tuning::StepTestResult &result) const;
 };
 
