@@ -2,13 +2,12 @@
 
 #include "Console.h"
 #include "LiveBus.h"
+#include "MotionLimitOptions.h"
 #include "OrderedJson.h"
 #include "ReplyText.h"
 
 #include <motor/ModelNameInfo.h>
 #include <safety/MotionPlanner.h>
-
-#include <QtCore/QFile>
 
 namespace lk::lkctl {
 
@@ -96,24 +95,7 @@ QString ControlCommand::usage() const
                "  --direction cw|ccw     single-position only\n"
                "  --max-speed DPS        position modes: a lower max speed for this move (above\n"
                "                         your speed limit is refused)\n"
-               "Limits (defaults per series: a quarter of its rated current, open-loop power "
-               "200,\n"
-               "speed limit = its top speed; positions unbounded but one output turn per move):\n"
-               "  --limits FILE.json     soft limits, e.g. {\"max_torque_a\":1.5,\"max_power\":"
-               "300,\n"
-               "                         \"max_speed_dps\":720,\"min_angle_deg\":-360,"
-               "\"max_angle_deg\":360,\n"
-               "                         \"max_increment_deg\":90} (missing keys keep the "
-               "defaults;\n"
-               "                         unknown or repeated keys, wrong types and values out "
-               "of\n"
-               "                         range are refused naming the key and its range, exit "
-               "2):\n"
-               "                         max_torque_a 0..32, max_power 0..1000 (whole),\n"
-               "                         max_speed_dps 0.01..18000, min/max_angle_deg\n"
-               "                         -1e9..1e9, max_increment_deg 0..21474836.47\n"
-               "  --max-torque-a A, --max-speed-dps DPS (above 0), --max-power P\n"
-               "                         override the defaults and the file\n"
+               "%2"
                "  --json                 one line: {\"command\":\"speed\",\"id\":3,\"sent\":{...},"
                "\n"
                "                         \"speed_bound\":{\"source\":\"soft_limit\",\"dps\":720},"
@@ -132,8 +114,8 @@ QString ControlCommand::usage() const
                "  lkctl control 3 increment -45 --limits bench-limits.json --port ttyUSB0\n"
                "  lkctl control 17 open-loop 150 --sim 17:MS\n"
                "\n"
-               "%2")
-        .arg(BusOptions::helpText(),
+               "%3")
+        .arg(BusOptions::helpText(), MotionLimitOptions::helpText(),
              exitStatusText(QStringLiteral(
                  "  4  refused for safety: the series or one of your limits does not allow it\n"
                  "     (the message names the limit and both values); nothing was sent\n")));
@@ -183,48 +165,6 @@ std::optional<protocol::FieldBuildResult> ControlCommand::build(const QStringLis
     return built;
 }
 
-bool ControlCommand::readLimitFlags(const ArgParser &parser, Plan &plan, Console &console,
-                                    int *status) const
-{
-    const auto fail = [&](const QString &message) {
-        *status = usageError(console, message);
-        return false;
-    };
-    QString error;
-    if (parser.isSet(QStringLiteral("max-torque-a"))) {
-        plan.maxTorqueA = parser.numberValue(QStringLiteral("max-torque-a"), 0, &error);
-        if (!plan.maxTorqueA)
-            return fail(error);
-    }
-    if (parser.isSet(QStringLiteral("max-speed-dps"))) {
-        plan.maxSpeedDps = parser.numberValue(QStringLiteral("max-speed-dps"), 0, &error);
-        if (!plan.maxSpeedDps)
-            return fail(error);
-        if (!(*plan.maxSpeedDps > 0)) // a speed limit always exists; 0 would mean none
-            return fail(QStringLiteral("--max-speed-dps must be above 0"));
-    }
-    if (parser.isSet(QStringLiteral("max-power"))) {
-        const auto p = parser.intValue(QStringLiteral("max-power"), 0, 1000, &error);
-        if (!p)
-            return fail(error);
-        plan.maxPower = int(*p);
-    }
-    if (!parser.isSet(QStringLiteral("limits")))
-        return true;
-    const QString path = parser.value(QStringLiteral("limits"));
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
-        return fail(QStringLiteral("cannot read --limits %1: %2").arg(path, f.errorString()));
-    // Check the whole file now (keys, types, ranges, repeats), so that a bad file never gets
-    // as far as the bus; it is read again over the series' defaults once the series is known.
-    const QByteArray text = f.readAll();
-    if (!safety::SoftLimits::fromJsonText(text, safety::SoftLimits{}, &error))
-        return fail(QStringLiteral("--limits %1: %2; nothing was sent").arg(path, error));
-    plan.limitsText = text;
-    plan.limitsPath = path;
-    return true;
-}
-
 std::optional<ControlCommand::Plan> ControlCommand::parse(const ArgParser &parser, Console &console,
                                                           int *status) const
 {
@@ -240,31 +180,14 @@ std::optional<ControlCommand::Plan> ControlCommand::parse(const ArgParser &parse
     Plan plan;
     plan.request = *built->request;
     plan.json = parser.isSet(QStringLiteral("json"));
-    if (!readLimitFlags(parser, plan, console, status))
+    QString error;
+    const std::optional<MotionLimitOptions> limits = MotionLimitOptions::read(parser, &error);
+    if (!limits) {
+        *status = usageError(console, error);
         return std::nullopt;
-    return plan;
-}
-
-std::optional<safety::SoftLimits> ControlCommand::limitsFor(const Plan &plan,
-                                                            std::optional<protocol::Series> series,
-                                                            QString *error) const
-{
-    std::optional<safety::SoftLimits> limits = safety::SoftLimits::defaults(series);
-    if (plan.limitsText) {
-        limits = safety::SoftLimits::fromJsonText(*plan.limitsText, *limits, error);
-        if (!limits) {
-            *error =
-                QStringLiteral("--limits %1: %2; nothing was sent").arg(plan.limitsPath, *error);
-            return std::nullopt;
-        }
     }
-    if (plan.maxTorqueA)
-        limits->maxTorqueA = *plan.maxTorqueA;
-    if (plan.maxSpeedDps)
-        limits->maxSpeedDps = *plan.maxSpeedDps;
-    if (plan.maxPower)
-        limits->maxPower = *plan.maxPower;
-    return limits;
+    plan.limits = *limits;
+    return plan;
 }
 
 bool ControlCommand::readPosition(LiveBus &bus, const Plan &plan, const LiveBus::Identity &who,
@@ -286,28 +209,6 @@ bool ControlCommand::readPosition(LiveBus &bus, const Plan &plan, const LiveBus:
     position.angleDeg = angle->degrees();
     return true;
 }
-
-namespace {
-QByteArray boundJson(const safety::MotionPlan &motion)
-{
-    const char *source = "command";
-    switch (motion.bound) {
-    case safety::SpeedBound::SoftLimit:
-        source = "soft_limit";
-        break;
-    case safety::SpeedBound::SeriesTop:
-        source = "series_top";
-        break;
-    case safety::SpeedBound::UserMaxSpeed:
-        source = "max_speed";
-        break;
-    default:
-        break;
-    }
-    return QByteArray("{\"source\":\"") + source +
-           "\",\"dps\":" + QByteArray::number(motion.boundDps, 'g', 10) + '}';
-}
-} // namespace
 
 int ControlCommand::send(LiveBus &bus, const Plan &plan, const safety::MotionPlan &motion,
                          const safety::DrivePosition &position) const
@@ -339,7 +240,8 @@ int ControlCommand::send(LiveBus &bus, const Plan &plan, const safety::MotionPla
             .integer(QStringLiteral("id"), id)
             .fields(QStringLiteral("sent"), sent);
         if (motion.bound != safety::SpeedBound::None)
-            o.raw(QStringLiteral("speed_bound"), boundJson(motion));
+            o.raw(QStringLiteral("speed_bound"),
+                  MotionLimitOptions::boundJson(motion.bound, motion.boundDps));
         o.fields(QStringLiteral("reply"), reply);
         bus.console().out(o.toJson() + '\n');
         return kExitOk;
@@ -364,9 +266,9 @@ int ControlCommand::send(LiveBus &bus, const Plan &plan, const safety::MotionPla
 int ControlCommand::run(const QStringList &args, Console &console)
 {
     ArgParser parser = makeParser();
-    for (const char *o :
-         {"direction", "max-speed", "limits", "max-torque-a", "max-speed-dps", "max-power"})
+    for (const char *o : {"direction", "max-speed"})
         parser.addOption(QLatin1String(o), true);
+    MotionLimitOptions::declare(parser);
     int status = kExitOk;
     const std::optional<BusOptions> busOptions = parseBus(parser, args, console, &status);
     if (!busOptions)
@@ -382,7 +284,7 @@ int ControlCommand::run(const QStringList &args, Console &console)
     if (!who)
         return kExitFailure;
     QString error;
-    const std::optional<safety::SoftLimits> limits = limitsFor(*plan, who->series, &error);
+    const std::optional<safety::SoftLimits> limits = plan->limits.limitsFor(who->series, &error);
     if (!limits)
         return usageError(console, error);
     safety::DrivePosition position;

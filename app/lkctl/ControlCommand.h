@@ -3,6 +3,7 @@
 #include "LiveCommand.h"
 
 #include "LiveBus.h"
+#include "MotionLimitOptions.h"
 #include <protocol/FieldJson.h>
 
 #include <safety/MotionPlanner.h>
@@ -29,19 +30,12 @@ private:
     /// The command line, checked before the bus is touched.
     struct Plan {
         protocol::Request request;
-        std::optional<QByteArray> limitsText; ///< --limits FILE, already checked
-        QString limitsPath;
-        std::optional<double> maxTorqueA, maxSpeedDps;
-        std::optional<int> maxPower;
+        MotionLimitOptions limits;
         bool json = false;
     };
     std::optional<Plan> parse(const ArgParser &parser, Console &console, int *status) const;
     std::optional<protocol::FieldBuildResult> build(const QStringList &pos, const ArgParser &parser,
                                                     Console &console, int *status) const;
-    bool readLimitFlags(const ArgParser &parser, Plan &plan, Console &console, int *status) const;
-    /// The series' defaults, the --limits file over them, then the --max-* flags.
-    std::optional<safety::SoftLimits>
-    limitsFor(const Plan &plan, std::optional<protocol::Series> series, QString *error) const;
     /// Reads the multi-turn angle (0x92) when the move needs it; false after printing why.
     bool readPosition(LiveBus &bus, const Plan &plan, const LiveBus::Identity &who,
                       const safety::SoftLimits &limits, safety::DrivePosition &position) const;

@@ -9,6 +9,7 @@
 #include "MotorStateCommand.h"
 #include "ReadCommand.h"
 #include "ScanCommand.h"
+#include "StepCommand.h"
 #include "WriteCommand.h"
 
 #include <QtCore/QCoreApplication>
@@ -39,6 +40,7 @@ int main(int argc, char *argv[])
     dispatcher.add(std::make_unique<MotorStateCommand>(Command::MotorStop));
     dispatcher.add(std::make_unique<MotorStateCommand>(Command::MotorRun));
     dispatcher.add(std::make_unique<BrakeCommand>());
+    dispatcher.add(std::make_unique<StepCommand>());
     dispatcher.add(std::make_unique<MonitorCommand>());
     dispatcher.add(std::make_unique<EncodeCommand>());
     dispatcher.add(std::make_unique<DecodeCommand>());

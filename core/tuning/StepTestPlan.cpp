@@ -120,12 +120,16 @@ StepTestPlan StepTestPlan::make(const StepTestSpec &spec, std::optional<protocol
             safety::MotionPlanner::plan(*built.request, series, limits, at);
         if (!motion.allowed()) {
             plan.m_verdict = motion.verdict;
-            plan.m_refusedSetpoint = QStringLiteral("setpoint %1 of %2 (%3, %4 %5 at %6 s)")
+            const QString move = s.role == Role::PreRoll
+                                     ? QStringLiteral("%1 %2").arg(s.target).arg(unit(spec.loop))
+                                     : QStringLiteral("%1 -> %2 %3")
+                                           .arg(s.previous)
+                                           .arg(s.target)
+                                           .arg(unit(spec.loop));
+            plan.m_refusedSetpoint = QStringLiteral("setpoint %1 of %2 (%3, %4 at %5 s)")
                                          .arg(i + 1)
                                          .arg(setpoints.size())
-                                         .arg(QLatin1String(roleName(s.role)))
-                                         .arg(s.target)
-                                         .arg(unit(spec.loop))
+                                         .arg(QLatin1String(roleName(s.role)), move)
                                          .arg(s.atS);
             return plan;
         }

@@ -87,7 +87,7 @@ private:
     QVector<StepSetpoint> m_setpoints;
     safety::Verdict m_verdict;
     QString m_specError;
-    QString m_refusedSetpoint; ///< "setpoint 2 of 5 (TO 720 dps at 1 s)"
+    QString m_refusedSetpoint; ///< "setpoint 2 of 3 (step, 0 -> 720 dps at 1 s)"
     safety::SpeedBound m_bound = safety::SpeedBound::None;
     double m_boundDps = 0;
     double m_endS = 0;

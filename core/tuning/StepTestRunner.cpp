@@ -293,13 +293,13 @@ void StepTestRunner::buildTrace()
     for (const TelemetrySample &s : m_samples) {
         if (s.cycle != 0 && !StepTrace::isMissing(effortOf(s)))
             roundEffort.insert(s.cycle, effortOf(s));
+        trace.effortIsPower = trace.effortIsPower || s.has(TelemetryField::Power);
     }
     const TelemetryField valueField =
         m_spec.loop == StepLoop::Speed ? TelemetryField::Speed : TelemetryField::MultiTurn;
     for (const TelemetrySample &s : m_samples) {
         if (s.time < from || s.time > until || !s.has(valueField))
             continue;
-        trace.effortIsPower = trace.effortIsPower || s.has(TelemetryField::Power);
         if (m_spec.loop == StepLoop::Speed)
             trace.append(s.time, s.speedDps, effortOf(s));
         else
@@ -332,15 +332,20 @@ QString StepTestRunner::stillMoving() const
     if (m_result.sent.isEmpty())
         return QStringLiteral("nothing was sent");
     const StepSent &last = m_result.sent.last();
-    const QString what = m_spec.loop == StepLoop::Speed ? QStringLiteral("turning at %1 dps")
-                                                        : QStringLiteral("at or moving to %1 deg");
-    QString text = QStringLiteral("drive %1 keeps its last command: it is %2")
-                       .arg(m_spec.id)
-                       .arg(what.arg(last.setpoint.target));
+    const double target = last.setpoint.target;
+    QString what;
+    if (m_spec.loop == StepLoop::Position)
+        what = QStringLiteral("at or moving to %1 deg").arg(target);
+    else if (target == 0)
+        what = QStringLiteral("holding 0 dps (the motor stays on)");
+    else
+        what = QStringLiteral("turning at %1 dps").arg(target);
+    QString text =
+        QStringLiteral("drive %1 keeps its last command: it is %2").arg(m_spec.id).arg(what);
     if (!last.acknowledged)
         text += QStringLiteral(" (unanswered: it may have acted on it or still be on the "
                                "previous one)");
-    if (m_spec.loop == StepLoop::Speed && last.setpoint.target != 0)
+    if (m_spec.loop == StepLoop::Speed && target != 0)
         text += QStringLiteral("; stop it with motor stop or off");
     return text;
 }

@@ -35,7 +35,7 @@ expect()
     fi
 }
 
-expect "scan stop" s
+expect "scan step stop" s
 expect "decode" de
 expect "--baud --from --json --port --retries --sim --sim-rom-dir --sweep-bauds --to" scan --
 expect "--sweep-bauds" scan --sw
@@ -47,6 +47,8 @@ expect "increment_position increment_position_limited" encode incr
 expect "--speed-dps" encode speed --id 1 --speed-d
 expect "MF MG MH MS" decode --series ""
 expect "all" off a
+expect "position" step 3 p
+expect "--duration" step 3 speed 0 100 --du
 expect "ccw cw" control 3 single-position 90 --direction ""
 expect "params pid" read 1 p
 expect "param pid" write 1 p

@@ -1,0 +1,122 @@
+#include "MotionLimitOptions.h"
+
+#include "ArgParser.h"
+
+#include <QtCore/QFile>
+
+namespace lk::lkctl {
+
+void MotionLimitOptions::declare(ArgParser &parser)
+{
+    for (const char *o : {"limits", "max-torque-a", "max-speed-dps", "max-power"})
+        parser.addOption(QLatin1String(o), true);
+}
+
+QString MotionLimitOptions::helpText()
+{
+    return QStringLiteral(
+        "Limits (defaults per series: a quarter of its rated current, open-loop power "
+        "200,\n"
+        "speed limit = its top speed; positions unbounded but one output turn per move):\n"
+        "  --limits FILE.json     soft limits, e.g. {\"max_torque_a\":1.5,\"max_power\":"
+        "300,\n"
+        "                         \"max_speed_dps\":720,\"min_angle_deg\":-360,"
+        "\"max_angle_deg\":360,\n"
+        "                         \"max_increment_deg\":90} (missing keys keep the "
+        "defaults;\n"
+        "                         unknown or repeated keys, wrong types and values out "
+        "of\n"
+        "                         range are refused naming the key and its range, exit "
+        "2):\n"
+        "                         max_torque_a 0..32, max_power 0..1000 (whole),\n"
+        "                         max_speed_dps 0.01..18000, min/max_angle_deg\n"
+        "                         -1e9..1e9, max_increment_deg 0..21474836.47\n"
+        "  --max-torque-a A, --max-speed-dps DPS (above 0), --max-power P\n"
+        "                         override the defaults and the file\n");
+}
+
+std::optional<MotionLimitOptions> MotionLimitOptions::read(const ArgParser &parser, QString *error)
+{
+    MotionLimitOptions o;
+    if (parser.isSet(QStringLiteral("max-torque-a"))) {
+        o.m_maxTorqueA = parser.numberValue(QStringLiteral("max-torque-a"), 0, error);
+        if (!o.m_maxTorqueA)
+            return std::nullopt;
+    }
+    if (parser.isSet(QStringLiteral("max-speed-dps"))) {
+        o.m_maxSpeedDps = parser.numberValue(QStringLiteral("max-speed-dps"), 0, error);
+        if (!o.m_maxSpeedDps)
+            return std::nullopt;
+        if (!(*o.m_maxSpeedDps > 0)) { // a speed limit always exists; 0 would mean none
+            *error = QStringLiteral("--max-speed-dps must be above 0");
+            return std::nullopt;
+        }
+    }
+    if (parser.isSet(QStringLiteral("max-power"))) {
+        const auto p = parser.intValue(QStringLiteral("max-power"), 0, 1000, error);
+        if (!p)
+            return std::nullopt;
+        o.m_maxPower = int(*p);
+    }
+    if (!parser.isSet(QStringLiteral("limits")))
+        return o;
+    const QString path = parser.value(QStringLiteral("limits"));
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly)) {
+        *error = QStringLiteral("cannot read --limits %1: %2").arg(path, f.errorString());
+        return std::nullopt;
+    }
+    // Check the whole file now (keys, types, ranges, repeats), so that a bad file never gets
+    // as far as the bus; it is read again over the series' defaults once the series is known.
+    const QByteArray text = f.readAll();
+    QString why;
+    if (!safety::SoftLimits::fromJsonText(text, safety::SoftLimits{}, &why)) {
+        *error = QStringLiteral("--limits %1: %2; nothing was sent").arg(path, why);
+        return std::nullopt;
+    }
+    o.m_limitsText = text;
+    o.m_limitsPath = path;
+    return o;
+}
+
+std::optional<safety::SoftLimits>
+MotionLimitOptions::limitsFor(std::optional<protocol::Series> series, QString *error) const
+{
+    std::optional<safety::SoftLimits> limits = safety::SoftLimits::defaults(series);
+    if (m_limitsText) {
+        limits = safety::SoftLimits::fromJsonText(*m_limitsText, *limits, error);
+        if (!limits) {
+            *error = QStringLiteral("--limits %1: %2; nothing was sent").arg(m_limitsPath, *error);
+            return std::nullopt;
+        }
+    }
+    if (m_maxTorqueA)
+        limits->maxTorqueA = *m_maxTorqueA;
+    if (m_maxSpeedDps)
+        limits->maxSpeedDps = *m_maxSpeedDps;
+    if (m_maxPower)
+        limits->maxPower = *m_maxPower;
+    return limits;
+}
+
+QByteArray MotionLimitOptions::boundJson(safety::SpeedBound bound, double dps)
+{
+    const char *source = "command";
+    switch (bound) {
+    case safety::SpeedBound::SoftLimit:
+        source = "soft_limit";
+        break;
+    case safety::SpeedBound::SeriesTop:
+        source = "series_top";
+        break;
+    case safety::SpeedBound::UserMaxSpeed:
+        source = "max_speed";
+        break;
+    default:
+        break;
+    }
+    return QByteArray("{\"source\":\"") + source +
+           "\",\"dps\":" + QByteArray::number(dps, 'g', 10) + '}';
+}
+
+} // namespace lk::lkctl
