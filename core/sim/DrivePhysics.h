@@ -24,6 +24,11 @@ struct LoopTarget {
     double maxSpeedDps = 0;     ///< Speed/Position: limit, already capped by the series maximum
 };
 
+/// Derivative gains of the three loops (V2.35's Kd, 0..65535; V2.3 drives have none).
+struct DerivativeGains {
+    quint16 angleKd = 0, speedKd = 0, iqKd = 0;
+};
+
 /// Rotor, winding and cascaded PI loops of one drive.
 ///
 /// Integrates in fixed 0.2 ms substeps (the loops run at that rate, like drive firmware),
@@ -39,6 +44,7 @@ public:
     DrivePhysics(const RotorParams &params, double currentLimitA, double speedLimitDps);
 
     void setGains(const protocol::PidGains &gains);
+    void setDerivativeGains(const DerivativeGains &kd);
     /// dps/s applied to speed references; 0 or less means no limit.
     void setAccelerationDps2(double accel);
     void setSupplyVoltage(double volts) { m_supplyV = volts; }
@@ -71,6 +77,7 @@ private:
     void currentLoop(double iRef, double dt);
     void openWinding(double volts, double dt);
     void mechanics(double dt);
+    void measureSpeed(double dt);
     void thermal(double dt);
     bool atRest() const;
     void resetIntegrators();
@@ -83,10 +90,13 @@ private:
 
     // Physical gains derived from the uint8 gains (see setGains()).
     double m_kpPos = 0, m_kiPos = 0, m_kpSpeed = 0, m_kiSpeed = 0, m_kpIq = 0, m_kiIq = 0;
+    double m_kdPos = 0, m_kdSpeed = 0, m_kdIq = 0;
     double m_accel = 0; ///< rad/s^2, 0 = unlimited
 
     double m_theta = 0;   ///< rad, continuous
     double m_omega = 0;   ///< rad/s
+    double m_omegaMeasured = 0; ///< rad/s, the drive's filtered speed estimate
+    double m_accelMeasured = 0; ///< rad/s^2, its change per substep
     double m_current = 0; ///< A (q axis)
     double m_voltage = 0; ///< V applied (q axis)
     double m_temperature = kAmbientC;

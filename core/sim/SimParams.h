@@ -1,6 +1,7 @@
 #pragma once
 
 #include "protocol/Parameter.h"
+#include "DrivePhysics.h"
 #include "protocol/Values.h"
 
 #include <QtCore/QtGlobal>
@@ -29,6 +30,8 @@ struct SimParams {
     bool write(const protocol::ParameterValue &value);
     /// The gains the physics uses (it models V2.3's 0..255 gains: larger values saturate).
     protocol::PidGains physicsGains() const;
+    /// The Kd of each loop (the physics saturates them at 255 as well).
+    DerivativeGains derivativeGains() const;
 
     bool operator==(const SimParams &o) const;
     bool operator!=(const SimParams &o) const { return !(*this == o); }
