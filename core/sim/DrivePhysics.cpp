@@ -172,8 +172,7 @@ double DrivePhysics::outerLoops(double dt)
         command = clampAbs(m_target.speedDps * kRadPerDeg, limit);
     } else {
         const double error = m_target.positionDeg * kRadPerDeg - m_theta;
-        const double raw =
-            m_kpPos * error + m_kiPos * m_posIntegral - m_kdPos * m_omegaMeasured;
+        const double raw = m_kpPos * error + m_kiPos * m_posIntegral - m_kdPos * m_omegaMeasured;
         const double peakAccel =
             m_params.torqueConstant * m_currentLimit / m_params.inertia * kDecelMargin;
         const double decel = m_accel > 0 ? std::min(m_accel, peakAccel) : peakAccel;

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "protocol/Parameter.h"
 #include "DrivePhysics.h"
+#include "protocol/Parameter.h"
 #include "protocol/Values.h"
 
 #include <QtCore/QtGlobal>

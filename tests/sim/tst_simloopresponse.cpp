@@ -260,14 +260,20 @@ void writeSpeedGains(BusRig &rig, bool v235, int kp, int ki, int kd = 0)
     }
 }
 
-void addSeriesRows(bool withGenerations)
+/// Rows per series: physics alone (no protocol), through both generations, or V2.35 only.
+enum class Through { Physics, BothGenerations, V235 };
+
+void addSeriesRows(Through through)
 {
     QTest::addColumn<Series>("series");
     QTest::addColumn<bool>("v235");
     for (Series s : {Series::MS, Series::MF, Series::MG, Series::MH}) {
         const QByteArray name = protocol::seriesName(s).toLatin1();
-        QTest::newRow(name + " V2.3") << s << false;
-        if (withGenerations)
+        if (through == Through::Physics)
+            QTest::newRow(name) << s << false;
+        if (through == Through::BothGenerations)
+            QTest::newRow(name + " V2.3") << s << false;
+        if (through != Through::Physics)
             QTest::newRow(name + " V2.35") << s << true;
     }
 }
@@ -279,27 +285,26 @@ void addSeriesRows(bool withGenerations)
 class tst_SimLoopResponse : public QObject {
     Q_OBJECT
 private slots:
-    void defaultsAreWellDamped_data() { addSeriesRows(false); }
+    void defaultsAreWellDamped_data() { addSeriesRows(Through::Physics); }
     void defaultsAreWellDamped();
-    void speedKpSpeedsUpThenOvershoots_data() { addSeriesRows(false); }
+    void speedKpSpeedsUpThenOvershoots_data() { addSeriesRows(Through::Physics); }
     void speedKpSpeedsUpThenOvershoots();
-    void speedKiRemovesSteadyStateError_data() { addSeriesRows(false); }
+    void speedKiRemovesSteadyStateError_data() { addSeriesRows(Through::Physics); }
     void speedKiRemovesSteadyStateError();
-    void veryHighGainRingsButStaysBounded_data() { addSeriesRows(false); }
+    void veryHighGainRingsButStaysBounded_data() { addSeriesRows(Through::Physics); }
     void veryHighGainRingsButStaysBounded();
-    void angleKpSpeedsUpThenOvershoots_data() { addSeriesRows(false); }
+    void angleKpSpeedsUpThenOvershoots_data() { addSeriesRows(Through::Physics); }
     void angleKpSpeedsUpThenOvershoots();
-    void bigStepSaturatesAtTheCurrentLimit_data() { addSeriesRows(false); }
+    void bigStepSaturatesAtTheCurrentLimit_data() { addSeriesRows(Through::Physics); }
     void bigStepSaturatesAtTheCurrentLimit();
-    void derivativeTermsDamp_data() { addSeriesRows(false); }
+    void derivativeTermsDamp_data() { addSeriesRows(Through::Physics); }
     void derivativeTermsDamp();
-    void gainsThroughTheProtocol_data() { addSeriesRows(true); }
+    void gainsThroughTheProtocol_data() { addSeriesRows(Through::BothGenerations); }
     void gainsThroughTheProtocol();
-    void accelerationSlowsTheRise_data() { addSeriesRows(true); }
+    void accelerationSlowsTheRise_data() { addSeriesRows(Through::BothGenerations); }
     void accelerationSlowsTheRise();
-    void speedKdThroughParameterTable_data() { addSeriesRows(false); }
-    void speedKdThroughParameterTable();
-    void printSpeedKpTable();
+    void derivativeGainsThroughParameterTable_data() { addSeriesRows(Through::V235); }
+    void derivativeGainsThroughParameterTable();
 };
 
 void tst_SimLoopResponse::defaultsAreWellDamped()
@@ -327,19 +332,24 @@ void tst_SimLoopResponse::speedKpSpeedsUpThenOvershoots()
     rig.series = series;
     auto at = [&](quint8 kp) {
         rig.gains = withSpeed(kp, kDefaults.speedKi);
-        return speedStep(rig, kSmallSpeedStep);
+        const StepFigures f = speedStep(rig, kSmallSpeedStep);
+        qInfo("speed Kp %3d Ki %d: %s", kp, kDefaults.speedKi, qPrintable(describe(f)));
+        return f;
     };
+    at(10); // the sweep, for the record: low Kp with the default Ki swings slowly
     const StepFigures soft = at(25);
     const StepFigures normal = at(kDefaults.speedKp);
     const StepFigures stiff = at(120);
+    at(200);
     const StepFigures harsh = at(255);
     const QString all = describe(soft) + " | " + describe(normal) + " | " + describe(stiff) +
                         " | " + describe(harsh);
-    QVERIFY2(soft.riseS > normal.riseS && normal.riseS > stiff.riseS && stiff.riseS > 0,
+    QVERIFY2(soft.riseS > normal.riseS && normal.riseS > stiff.riseS && stiff.riseS > harsh.riseS &&
+                 harsh.riseS > 0,
              qPrintable(all));
     // Past a point the loop runs into its delays (current loop, speed filter): overshoot.
-    QVERIFY2(harsh.overshootPct > normal.overshootPct + 10.0, qPrintable(all));
-    QVERIFY2(harsh.overshootPct > stiff.overshootPct, qPrintable(all));
+    QVERIFY2(stiff.overshootPct > normal.overshootPct, qPrintable(all));
+    QVERIFY2(harsh.overshootPct > stiff.overshootPct + 10.0, qPrintable(all));
 }
 
 void tst_SimLoopResponse::speedKiRemovesSteadyStateError()
@@ -395,10 +405,15 @@ void tst_SimLoopResponse::angleKpSpeedsUpThenOvershoots()
     rig.seconds = 1.5;
     auto at = [&](quint8 kp) {
         rig.gains = withAngleKp(kp);
-        return positionStep(rig, kSmallAngleStep);
+        const StepFigures f = positionStep(rig, kSmallAngleStep);
+        qInfo("angle Kp %3d Ki %d: %s", kp, kDefaults.angleKi, qPrintable(describe(f)));
+        return f;
     };
+    at(10); // the sweep, for the record
     const StepFigures soft = at(30);
     const StepFigures normal = at(kDefaults.angleKp);
+    at(150);
+    at(200);
     const StepFigures harsh = at(255);
     const QString all = describe(soft) + " | " + describe(normal) + " | " + describe(harsh);
     QVERIFY2(soft.riseS > normal.riseS && normal.riseS > harsh.riseS && harsh.riseS > 0,
@@ -538,42 +553,33 @@ void tst_SimLoopResponse::accelerationSlowsTheRise()
     QVERIFY2(slow.overshootPct < 5.0, qPrintable(all));
 }
 
-void tst_SimLoopResponse::speedKdThroughParameterTable()
+void tst_SimLoopResponse::derivativeGainsThroughParameterTable()
 {
+    // V2.35: Kd is the third gain of 0x97 / 0x96, written with 0x42.
     QFETCH(Series, series);
-    auto run = [&](int kd) {
+    auto speedRun = [&](int kd) {
         BusRig rig(modelFor(series, true), 1000000);
         writeSpeedGains(rig, true, 200, kDefaults.speedKi, kd);
         rig.transact(build::speed(BusRig::kId, kSmallSpeedStep));
         return measure(rig.poll(Command::ReadState2, 0.5), 0, kSmallSpeedStep);
     };
-    const StepFigures none = run(0);
-    const StepFigures damped = run(200);
+    const StepFigures none = speedRun(0);
+    const StepFigures damped = speedRun(200);
     QVERIFY2(damped.overshootPct < none.overshootPct - 5.0,
              qPrintable(describe(none) + " | " + describe(damped)));
-}
 
-void tst_SimLoopResponse::printSpeedKpTable()
-{
-    for (Series s : {Series::MS, Series::MF, Series::MG, Series::MH}) {
-        for (int kp : {10, 25, 50, 100, 150, 200, 255}) {
-            PhysicsRig rig;
-            rig.series = s;
-            rig.gains = withSpeed(quint8(kp), kDefaults.speedKi);
-            const StepFigures f = speedStep(rig, kSmallSpeedStep);
-            qInfo("%s speed Kp %3d: %s", qPrintable(protocol::seriesName(s)), kp,
-                  qPrintable(describe(f)));
-        }
-        for (int kp : {10, 30, 60, 100, 150, 200, 255}) {
-            PhysicsRig rig;
-            rig.series = s;
-            rig.seconds = 1.5;
-            rig.gains = withAngleKp(quint8(kp));
-            const StepFigures f = positionStep(rig, kSmallAngleStep);
-            qInfo("%s angle Kp %3d: %s", qPrintable(protocol::seriesName(s)), kp,
-                  qPrintable(describe(f)));
-        }
-    }
+    auto positionRun = [&](int kd) {
+        BusRig rig(modelFor(series, true), 1000000);
+        const double start = rig.poll(Command::ReadMultiTurn, 0.001).last().y;
+        rig.transact(build::writeParamPid(BusRig::kId, ParamId::AnglePid, 255, 100, kd, false));
+        rig.transact(build::writeParam(BusRig::kId, ParamId::SpeedRamp, 0, false));
+        rig.transact(build::multiPosition(BusRig::kId, start + kSmallAngleStep));
+        return measure(rig.poll(Command::ReadMultiTurn, 1.0), start, start + kSmallAngleStep);
+    };
+    const StepFigures ringing = positionRun(0);
+    const StepFigures calm = positionRun(200);
+    QVERIFY2(calm.overshootPct < ringing.overshootPct - 5.0,
+             qPrintable(describe(ringing) + " | " + describe(calm)));
 }
 
 QTEST_APPLESS_MAIN(tst_SimLoopResponse)
