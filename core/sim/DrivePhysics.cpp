@@ -160,7 +160,7 @@ void DrivePhysics::step(double dt)
         break;
     }
     mechanics(dt);
-    measureSpeed(dt);
+    measureSpeed();
     thermal(dt);
 }
 
@@ -261,11 +261,13 @@ void DrivePhysics::mechanics(double dt)
     m_omega = w;
 }
 
-void DrivePhysics::measureSpeed(double dt)
+void DrivePhysics::measureSpeed()
 {
+    // Once per substep: the filter's constants fold at compile time.
+    constexpr double gain = kStepSeconds / (kSpeedFilterSeconds + kStepSeconds);
     const double before = m_omegaMeasured;
-    m_omegaMeasured += (m_omega - m_omegaMeasured) * dt / (kSpeedFilterSeconds + dt);
-    m_accelMeasured = (m_omegaMeasured - before) / dt;
+    m_omegaMeasured += (m_omega - m_omegaMeasured) * gain;
+    m_accelMeasured = (m_omegaMeasured - before) * (1.0 / kStepSeconds);
 }
 
 void DrivePhysics::thermal(double dt)

@@ -109,7 +109,7 @@ private:
     void currentLoop(double iRef, double dt);
     void openWinding(double volts, double dt);
     void mechanics(double dt);
-    void measureSpeed(double dt);
+    void measureSpeed();
     void thermal(double dt);
     bool atRest() const;
     void resetIntegrators();

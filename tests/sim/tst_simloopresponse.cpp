@@ -32,6 +32,7 @@ namespace {
 
 constexpr PidGains kDefaults{100, 100, 50, 40, 50, 50}; // the drives' factory gains
 constexpr double kSampleS = DrivePhysics::kStepSeconds;
+constexpr double kRadPerDeg = 3.14159265358979323846 / 180.0;
 
 struct Sample {
     double t = 0;
@@ -206,6 +207,14 @@ public:
                 return protocol::decodeReply(e.frame, m_drive->context()).reply;
         }
         return std::nullopt;
+    }
+
+    /// The multi-turn angle (0x92), degrees.
+    double angleDeg()
+    {
+        return payloadOf<protocol::MultiTurnAngle>(
+                   transact(build::plain(Command::ReadMultiTurn, kId)))
+            .degrees();
     }
 
     /// Polls `read` back to back for `seconds`; y from the reply. Time 0 = the call.
@@ -451,7 +460,7 @@ void tst_SimLoopResponse::bigStepSaturatesAtTheCurrentLimit()
     QVERIFY2(saturatedS > 0.002, qPrintable(QString::number(saturatedS)));
     QVERIFY(lastT > firstT);
     const double accelDps2 = (lastY - firstY) / (lastT - firstT);
-    const double bound = rotor.torqueConstant * l.maxCurrentA / rotor.inertia * 180.0 / M_PI;
+    const double bound = rotor.torqueConstant * l.maxCurrentA / rotor.inertia / kRadPerDeg;
     qInfo("at the current limit for %.1f ms, %.0f dps/s of at most %.0f", saturatedS * 1e3,
           accelDps2, bound);
     QVERIFY(accelDps2 <= bound);
@@ -501,15 +510,15 @@ void tst_SimLoopResponse::gainsThroughTheProtocol()
         rig.transact(build::speed(BusRig::kId, kSmallSpeedStep));
         return measure(rig.poll(Command::ReadState2, 0.5), 0, kSmallSpeedStep);
     };
-    const StepFigures soft = speedRun(25);
+    const StepFigures normal = speedRun(kDefaults.speedKp);
     const StepFigures harsh = speedRun(255);
-    const QString all = describe(soft) + " | " + describe(harsh);
-    QVERIFY2(soft.riseS > harsh.riseS && harsh.riseS > 0, qPrintable(all));
-    QVERIFY2(harsh.overshootPct > soft.overshootPct, qPrintable(all));
+    const QString all = describe(normal) + " | " + describe(harsh);
+    QVERIFY2(normal.riseS > harsh.riseS && harsh.riseS > 0, qPrintable(all));
+    QVERIFY2(harsh.overshootPct > normal.overshootPct + 10.0, qPrintable(all));
 
     auto positionRun = [&](int kp) {
         BusRig rig(modelFor(series, v235), 1000000);
-        const double start = rig.poll(Command::ReadMultiTurn, 0.001).last().y;
+        const double start = rig.angleDeg();
         if (v235) {
             rig.transact(build::writeParamPid(BusRig::kId, ParamId::AnglePid, kp, 100, 0, false));
             rig.transact(build::writeParam(BusRig::kId, ParamId::SpeedRamp, 0, false));
@@ -520,7 +529,7 @@ void tst_SimLoopResponse::gainsThroughTheProtocol()
         rig.transact(build::multiPosition(BusRig::kId, start + kSmallAngleStep));
         return measure(rig.poll(Command::ReadMultiTurn, 1.0), start, start + kSmallAngleStep);
     };
-    const StepFigures slow = positionRun(30);
+    const StepFigures slow = positionRun(kDefaults.angleKp);
     const StepFigures fast = positionRun(255);
     const QString moves = describe(slow) + " | " + describe(fast);
     QVERIFY2(slow.riseS > fast.riseS && fast.riseS > 0, qPrintable(moves));
@@ -570,7 +579,7 @@ void tst_SimLoopResponse::derivativeGainsThroughParameterTable()
 
     auto positionRun = [&](int kd) {
         BusRig rig(modelFor(series, true), 1000000);
-        const double start = rig.poll(Command::ReadMultiTurn, 0.001).last().y;
+        const double start = rig.angleDeg();
         rig.transact(build::writeParamPid(BusRig::kId, ParamId::AnglePid, 255, 100, kd, false));
         rig.transact(build::writeParam(BusRig::kId, ParamId::SpeedRamp, 0, false));
         rig.transact(build::multiPosition(BusRig::kId, start + kSmallAngleStep));
