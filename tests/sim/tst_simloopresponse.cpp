@@ -7,13 +7,11 @@
 
 #include "SimTestUtil.h"
 #include "motor/SeriesLimits.h"
-#include "protocol/Frame.h"
 
 #include <QtCore/QVector>
 #include <QtTest/QTest>
 
 #include <cmath>
-#include <functional>
 
 using namespace lk;
 using namespace lk::test;
@@ -185,9 +183,6 @@ public:
             qFatal("cannot add the drive");
     }
     static constexpr int kId = 1;
-
-    sim::SimDrive &drive() { return *m_drive; }
-    double now() const { return m_now; }
 
     /// Sends a request frame; returns the decoded reply (nullopt: the drive stayed silent).
     std::optional<protocol::Reply> transact(const protocol::BuildResult &build)
