@@ -16,9 +16,19 @@ constexpr double kRadPerDeg = kPi / 180.0;
 constexpr double kDefaultIqGain = 50.0;
 constexpr double kCurrentBandwidth = 2000.0;   // rad/s at the default iq gains
 constexpr double kSpeedBandwidthPerUnit = 4.0; // rad/s per unit of speed Kp
-constexpr double kSpeedKiPerUnit = 250.0;      // rad/s^2 per unit of speed Ki
-constexpr double kPosKpPerUnit = 0.5;          // 1/s per unit of angle Kp
+constexpr double kSpeedKiPerUnit = 150.0;      // rad/s^2 per unit of speed Ki
+constexpr double kPosKpPerUnit = 0.6;          // 1/s per unit of angle Kp
 constexpr double kPosKiPerUnit = 0.2;          // 1/s^2 per unit of angle Ki
+// Derivative gains (V2.35 Kd), saturated at 255 like the others: at 255 the speed loop's
+// acceleration feedback equals about half the rotor inertia, the angle loop's speed feedback
+// halves its bandwidth, and the current loop's acts like 50 % more inductance.
+constexpr double kMaxDerivativeUnits = 255.0;
+constexpr double kSpeedKdPerUnit = 0.002; // of J/Kt (A per rad/s^2)
+constexpr double kPosKdPerUnit = 0.004;   // dimensionless speed feedback
+constexpr double kIqKdPerUnit = 0.002;    // of the winding inductance
+// The drive estimates speed from encoder differences through a low-pass filter; its lag,
+// with the current loop's, is what makes a too stiff speed loop ring.
+constexpr double kSpeedFilterSeconds = 0.0008;
 
 // Longest interval simulated in one call: a caller that forgets the simulator for hours must
 // not stall its thread for seconds catching up.
@@ -48,6 +58,14 @@ void DrivePhysics::setGains(const protocol::PidGains &g)
     m_kiSpeed = g.speedKi * kSpeedKiPerUnit * inertiaPerKt;
     m_kpPos = g.angleKp * kPosKpPerUnit;
     m_kiPos = g.angleKi * kPosKiPerUnit;
+}
+
+void DrivePhysics::setDerivativeGains(const DerivativeGains &kd)
+{
+    auto units = [](quint16 v) { return std::min<double>(v, kMaxDerivativeUnits); };
+    m_kdSpeed = units(kd.speedKd) * kSpeedKdPerUnit * m_params.inertia / m_params.torqueConstant;
+    m_kdPos = units(kd.angleKd) * kPosKdPerUnit;
+    m_kdIq = units(kd.iqKd) * kIqKdPerUnit * m_params.inductance;
 }
 
 void DrivePhysics::setAccelerationDps2(double accel)
@@ -112,6 +130,8 @@ void DrivePhysics::advance(double seconds)
     }
     if (steps > 0) {
         // Nothing moves: only the winding cools, which has a closed form.
+        m_omegaMeasured = m_omega;
+        m_accelMeasured = 0;
         const double tau = m_params.thermalCapacity * m_params.thermalResistance;
         const double t = static_cast<double>(steps) * kStepSeconds;
         m_temperature = kAmbientC + (m_temperature - kAmbientC) * std::exp(-t / tau);
@@ -140,6 +160,7 @@ void DrivePhysics::step(double dt)
         break;
     }
     mechanics(dt);
+    measureSpeed();
     thermal(dt);
 }
 
@@ -151,7 +172,7 @@ double DrivePhysics::outerLoops(double dt)
         command = clampAbs(m_target.speedDps * kRadPerDeg, limit);
     } else {
         const double error = m_target.positionDeg * kRadPerDeg - m_theta;
-        const double raw = m_kpPos * error + m_kiPos * m_posIntegral;
+        const double raw = m_kpPos * error + m_kiPos * m_posIntegral - m_kdPos * m_omegaMeasured;
         const double peakAccel =
             m_params.torqueConstant * m_currentLimit / m_params.inertia * kDecelMargin;
         const double decel = m_accel > 0 ? std::min(m_accel, peakAccel) : peakAccel;
@@ -177,8 +198,10 @@ double DrivePhysics::slewSpeedReference(double omegaCmd, double dt)
 
 double DrivePhysics::speedLoop(double omegaRef, double dt)
 {
-    const double error = omegaRef - m_omega;
-    const double out = m_kpSpeed * error + m_kiSpeed * (m_speedIntegral + error * dt);
+    // Kd acts on the measured acceleration (derivative on measurement: no kick on a step).
+    const double error = omegaRef - m_omegaMeasured;
+    const double out = m_kpSpeed * error + m_kiSpeed * (m_speedIntegral + error * dt) -
+                       m_kdSpeed * m_accelMeasured;
     if (std::abs(out) > m_currentLimit)
         return clampAbs(out, m_currentLimit); // saturated: integrator frozen (anti-windup)
     m_speedIntegral += error * dt;
@@ -187,17 +210,20 @@ double DrivePhysics::speedLoop(double omegaRef, double dt)
 
 void DrivePhysics::currentLoop(double iRef, double dt)
 {
-    // Backward Euler on L di/dt = v - R i - Ke w with v = PI(iRef - i): unconditionally
-    // stable for any non-negative gains, whatever the substep.
-    const double a = m_params.inductance / dt;
+    // v = PI(iRef - i) - Kd di/dt + Ke w (back-EMF feed-forward, as FOC drives do), on
+    // L di/dt = v - R i - Ke w, solved by backward Euler: unconditionally stable for any
+    // non-negative gains, whatever the substep. The feed-forward cancels in the solution.
+    const double a = (m_params.inductance + m_kdIq) / dt;
     const double emf = m_params.torqueConstant * m_omega;
     const double denom = a + m_params.resistance + m_kpIq + m_kiIq * dt;
-    double i = (a * m_current + m_kpIq * iRef + m_kiIq * (m_iqIntegral + dt * iRef) - emf) / denom;
-    double v = m_kpIq * (iRef - i) + m_kiIq * (m_iqIntegral + dt * (iRef - i));
+    double i = (a * m_current + m_kpIq * iRef + m_kiIq * (m_iqIntegral + dt * iRef)) / denom;
+    double v = m_kpIq * (iRef - i) + m_kiIq * (m_iqIntegral + dt * (iRef - i)) -
+               m_kdIq * (i - m_current) / dt + emf;
     const double vMax = std::max(0.0, m_supplyV);
     if (std::abs(v) > vMax) {
         v = clampAbs(v, vMax); // voltage-limited: integrator frozen
-        i = (a * m_current + v - emf) / (a + m_params.resistance);
+        const double l = m_params.inductance / dt;
+        i = (l * m_current + v - emf) / (l + m_params.resistance);
     } else {
         m_iqIntegral += dt * (iRef - i);
     }
@@ -233,6 +259,15 @@ void DrivePhysics::mechanics(double dt)
     w = clampAbs(w, m_speedLimit);
     m_theta += w * dt;
     m_omega = w;
+}
+
+void DrivePhysics::measureSpeed()
+{
+    // Once per substep: the filter's constants fold at compile time.
+    constexpr double gain = kStepSeconds / (kSpeedFilterSeconds + kStepSeconds);
+    const double before = m_omegaMeasured;
+    m_omegaMeasured += (m_omega - m_omegaMeasured) * gain;
+    m_accelMeasured = (m_omegaMeasured - before) * (1.0 / kStepSeconds);
 }
 
 void DrivePhysics::thermal(double dt)

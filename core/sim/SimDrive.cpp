@@ -142,6 +142,7 @@ void SimDrive::applyParams()
     m_ramPid = m_ramParams.physicsGains();
     m_ramAccel = m_ramParams.speedRampDps2;
     m_physics.setGains(m_ramPid);
+    m_physics.setDerivativeGains(m_ramParams.derivativeGains());
     m_physics.setAccelerationDps2(m_ramAccel);
 }
 

@@ -88,6 +88,11 @@ protocol::PidGains SimParams::physicsGains() const
             saturate(speedPid[1]), saturate(currentPid[0]), saturate(currentPid[1])};
 }
 
+DerivativeGains SimParams::derivativeGains() const
+{
+    return {anglePid[2], speedPid[2], currentPid[2]};
+}
+
 bool SimParams::operator==(const SimParams &o) const
 {
     return anglePid == o.anglePid && speedPid == o.speedPid && currentPid == o.currentPid &&

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "DrivePhysics.h"
 #include "protocol/Parameter.h"
 #include "protocol/Values.h"
 
@@ -29,6 +30,8 @@ struct SimParams {
     bool write(const protocol::ParameterValue &value);
     /// The gains the physics uses (it models V2.3's 0..255 gains: larger values saturate).
     protocol::PidGains physicsGains() const;
+    /// The Kd of each loop (the physics saturates them at 255 as well).
+    DerivativeGains derivativeGains() const;
 
     bool operator==(const SimParams &o) const;
     bool operator!=(const SimParams &o) const { return !(*this == o); }
