@@ -44,7 +44,8 @@ double clampAbs(double v, double limit)
 } // namespace
 
 DrivePhysics::DrivePhysics(const RotorParams &params, double currentLimitA, double speedLimitDps)
-    : m_params(params), m_currentLimit(currentLimitA), m_speedLimit(speedLimitDps * kRadPerDeg)
+    : m_params(params), m_invInertia(1.0 / params.inertia), m_currentLimit(currentLimitA),
+      m_speedLimit(speedLimitDps * kRadPerDeg)
 {
     setGains({});
 }
@@ -245,11 +246,11 @@ void DrivePhysics::mechanics(double dt)
         m_omega = 0;
         return;
     }
-    const double j = m_params.inertia;
     const double torque = m_params.torqueConstant * m_current - m_loadTorque;
-    double w = (m_omega + dt * torque / j) / (1.0 + dt * m_params.viscousFriction / j);
+    double w = (m_omega + dt * torque * m_invInertia) /
+               (1.0 + dt * m_params.viscousFriction * m_invInertia);
     // Coulomb friction never reverses the motion within a step: that is what makes it stick.
-    const double dw = m_params.coulombFriction * dt / j;
+    const double dw = m_params.coulombFriction * dt * m_invInertia;
     if (w > dw)
         w -= dw;
     else if (w < -dw)

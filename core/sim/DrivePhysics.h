@@ -115,6 +115,7 @@ private:
     void resetIntegrators();
 
     RotorParams m_params;
+    double m_invInertia; ///< 1/J, so that a substep multiplies instead of dividing
     double m_currentLimit;
     double m_speedLimit; ///< rad/s, hard cap of the rotor
     double m_supplyV = 24;
