@@ -341,6 +341,7 @@ tuning::StepRun StepCommand::keptRun(const Plan &plan, const LiveBus::Identity &
     run.spec = {plan.spec.loop, plan.spec.from, plan.spec.to, plan.spec.durationS,
                 plan.spec.periods};
     run.gains = gains;
+    run.effortLimit = tuning::seriesEffortLimit(who.series);
     run.trace = result.trace;
     run.ranAt = QDateTime::currentDateTimeUtc();
     return run;

@@ -2,7 +2,17 @@
 
 #include <QtCore/QStringList>
 
+#include <motor/SeriesLimits.h>
+
 namespace lk::tuning {
+
+std::optional<double> seriesEffortLimit(std::optional<protocol::Series> series)
+{
+    if (!series)
+        return std::nullopt;
+    const motor::SeriesLimits &limits = motor::seriesLimits(*series);
+    return limits.repliesCarryPower ? 1000.0 : limits.maxCurrentA;
+}
 
 StepMetricOptions StepRun::metricOptions() const
 {

@@ -3,6 +3,8 @@
 #include "StepMetrics.h"
 #include "StepTrace.h"
 
+#include <protocol/Series.h>
+
 #include <QtCore/QDateTime>
 #include <QtCore/QJsonObject>
 #include <QtCore/QString>
@@ -55,6 +57,10 @@ struct StepRun {
     /// when the trace has no edge.
     EdgeMetrics stepMetrics() const;
 };
+
+/// What saturation is measured against: the closed loops' current limit of the series (A), or
+/// 1000 (relative power) on MS, whose replies carry power. nullopt for an unknown series.
+std::optional<double> seriesEffortLimit(std::optional<protocol::Series> series);
 
 /// The gain keys of lkctl (CLI.md), in display order: angle, speed, current loop; Kp, Ki, Kd.
 QStringList stepRunGainKeys();

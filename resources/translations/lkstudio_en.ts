@@ -99,4 +99,28 @@
         </translation>
     </message>
 </context>
+<context>
+    <name>lk::ui::StepRunsView</name>
+    <message numerus="yes">
+        <source>%n run(s) of the other loop hidden: the overlay shows one loop at a time.</source>
+        <translation>
+            <numerusform>%n run of the other loop hidden: the overlay shows one loop at a time.</numerusform>
+            <numerusform>%n runs of the other loop hidden: the overlay shows one loop at a time.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n run(s) to %1.</source>
+        <translation>
+            <numerusform>Saved %n run to %1.</numerusform>
+            <numerusform>Saved %n runs to %1.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Added %n run(s) from %1.</source>
+        <translation>
+            <numerusform>Added %n run from %1.</numerusform>
+            <numerusform>Added %n runs from %1.</numerusform>
+        </translation>
+    </message>
+</context>
 </TS>

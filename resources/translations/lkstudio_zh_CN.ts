@@ -1323,6 +1323,22 @@
         <source>(no update for over a second)</source>
         <translation>（超过一秒未更新）</translation>
     </message>
+    <message>
+        <source>Bus current</source>
+        <translation>母线电流</translation>
+    </message>
+    <message>
+        <source>Motor</source>
+        <translation>电机</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>开</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>关</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::DriveInfoView</name>
@@ -2511,6 +2527,105 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::MetricText</name>
+    <message>
+        <source>Rise 10-90 %</source>
+        <translation>上升时间 10-90 %</translation>
+    </message>
+    <message>
+        <source>Overshoot</source>
+        <translation>超调</translation>
+    </message>
+    <message>
+        <source>Settling 2 %</source>
+        <translation>调节时间 2 %</translation>
+    </message>
+    <message>
+        <source>Settling 5 %</source>
+        <translation>调节时间 5 %</translation>
+    </message>
+    <message>
+        <source>Steady-state error</source>
+        <translation>稳态误差</translation>
+    </message>
+    <message>
+        <source>Peak power</source>
+        <translation>峰值功率</translation>
+    </message>
+    <message>
+        <source>Peak iq</source>
+        <translation>峰值 iq</translation>
+    </message>
+    <message>
+        <source>At the limit</source>
+        <translation>处于限幅</translation>
+    </message>
+    <message>
+        <source>Oscillations</source>
+        <translation>振荡次数</translation>
+    </message>
+    <message>
+        <source>Time from the response first crossing 10 % of the step to first crossing 90 % of it (crossings interpolated between samples).</source>
+        <translation>响应首次越过阶跃幅值 10 % 到首次越过 90 % 之间的时间（越过时刻在采样点之间线性插值）。</translation>
+    </message>
+    <message>
+        <source>The largest excursion past the target, in % of the step size; 0 when the response never passes the target.</source>
+        <translation>越过目标值的最大偏移，以阶跃幅值的百分比表示；响应从未越过目标时为 0。</translation>
+    </message>
+    <message>
+        <source>Target minus the mean response over the last fifth of the step, in the loop&apos;s unit.</source>
+        <translation>目标值减去该阶跃最后五分之一时间内响应的平均值，单位与该环相同。</translation>
+    </message>
+    <message>
+        <source>The largest |power| (relative, of 1000) the drive reported during the step.</source>
+        <translation>阶跃期间驱动报告的最大 |功率|（相对值，满量程 1000）。</translation>
+    </message>
+    <message>
+        <source>The largest |iq| (torque current) the drive reported during the step.</source>
+        <translation>阶跃期间驱动报告的最大 |iq|（转矩电流）。</translation>
+    </message>
+    <message>
+        <source>The longest time the current (power) stayed at 98 % or more of the drive&apos;s limit; runs shorter than 20 ms count as 0. Needs the drive&apos;s limit.</source>
+        <translation>电流（功率）持续处于驱动限值 98 % 以上的最长时间；短于 20 ms 的记为 0。需要已知驱动的限值。</translation>
+    </message>
+    <message>
+        <source>Peaks outside the 2 % band after the response first reached the target.</source>
+        <translation>响应首次到达目标后，超出 2 % 范围的峰值个数。</translation>
+    </message>
+    <message>
+        <source>too few samples</source>
+        <translation>采样点太少</translation>
+    </message>
+    <message>
+        <source>no step</source>
+        <translation>无阶跃</translation>
+    </message>
+    <message>
+        <source>not reached</source>
+        <translation>未到达</translation>
+    </message>
+    <message>
+        <source>never settled</source>
+        <translation>未稳定</translation>
+    </message>
+    <message>
+        <source>no current read</source>
+        <translation>未读到电流</translation>
+    </message>
+    <message>
+        <source>limit unknown</source>
+        <translation>限值未知</translation>
+    </message>
+    <message>
+        <source>Time from the step until the response stays within ±2 % of the step size around the target, to the end of the step.</source>
+        <translation>从阶跃开始，到响应此后直至该阶跃结束都保持在目标值 ±2 %（阶跃幅值的百分比）范围内所需的时间。</translation>
+    </message>
+    <message>
+        <source>The same with a ±5 % band.</source>
+        <translation>同上，范围为 ±5 %。</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::MotionGate</name>
     <message>
         <source>Not connected.</source>
@@ -3445,6 +3560,403 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::StepOverlayChart</name>
+    <message>
+        <source>Time from the step (s)</source>
+        <translation>距阶跃的时间 (s)</translation>
+    </message>
+    <message>
+        <source>Speed (dps, rotor)</source>
+        <translation>速度（dps，转子）</translation>
+    </message>
+    <message>
+        <source>Angle (°, rotor)</source>
+        <translation>角度（°，转子）</translation>
+    </message>
+    <message>
+        <source>Power (rel.)</source>
+        <translation>功率（相对值）</translation>
+    </message>
+    <message>
+        <source>iq (A)</source>
+        <translation>iq (A)</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::StepRunFileText</name>
+    <message>
+        <source>an integer in %1..%2</source>
+        <translation>%1..%2 之间的整数</translation>
+    </message>
+    <message>
+        <source>a number in %1..%2</source>
+        <translation>%1..%2 之间的数值</translation>
+    </message>
+    <message>
+        <source>text</source>
+        <translation>文本</translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation>对象</translation>
+    </message>
+    <message>
+        <source>a list</source>
+        <translation>列表</translation>
+    </message>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is larger than any run file (%2 bytes at most)</source>
+        <translation>%1 超过了测试文件的最大长度（最多 %2 字节）</translation>
+    </message>
+    <message>
+        <source>%1 is not JSON (%2, at byte %3)</source>
+        <translation>%1 不是 JSON（%2，位于第 %3 字节）</translation>
+    </message>
+    <message>
+        <source>%1 does not hold a JSON object</source>
+        <translation>%1 不包含 JSON 对象</translation>
+    </message>
+    <message>
+        <source>%1 is not a step-run file (format %2)</source>
+        <translation>%1 不是阶跃测试文件（格式为 %2）</translation>
+    </message>
+    <message>
+        <source>%1 was written by a newer release (version %2; this one reads up to %3)</source>
+        <translation>%1 由更新的版本写入（版本 %2；本版本最多读取 %3）</translation>
+    </message>
+    <message>
+        <source>%1 lacks %2</source>
+        <translation>%1 缺少 %2</translation>
+    </message>
+    <message>
+        <source>%1 has a key this format does not have: %2</source>
+        <translation>%1 含有本格式没有的键：%2</translation>
+    </message>
+    <message>
+        <source>%1 gives %2 twice</source>
+        <translation>%1 中 %2 出现了两次</translation>
+    </message>
+    <message>
+        <source>%1: %2 is %3; it must be %4</source>
+        <translation>%1：%2 的值为 %3；应为 %4</translation>
+    </message>
+    <message>
+        <source>%1: %2 holds %3, which means nothing there</source>
+        <translation>%1：%2 的值 %3 在此处没有意义</translation>
+    </message>
+    <message>
+        <source>%1: the steps in %2 are not in time order</source>
+        <translation>%1：%2 中的阶跃没有按时间顺序排列</translation>
+    </message>
+    <message>
+        <source>%1 names a trace file that cannot be read (%2): %3</source>
+        <translation>%1 引用的曲线文件无法读取（%2）：%3</translation>
+    </message>
+    <message>
+        <source>%1, line 1: the header is %2, not time_s,value,effort</source>
+        <translation>%1 第 1 行：表头为 %2，而不是 time_s,value,effort</translation>
+    </message>
+    <message>
+        <source>%1, line %2: %3 is not three cells</source>
+        <translation>%1 第 %2 行：%3 不是三个单元格</translation>
+    </message>
+    <message>
+        <source>%1, line %2, %3: %4 is not a number</source>
+        <translation>%1 第 %2 行，%3：%4 不是数值</translation>
+    </message>
+    <message>
+        <source>%1, line %2: time %3 is not after the line before</source>
+        <translation>%1 第 %2 行：时间 %3 不晚于上一行</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::StepRunsModel</name>
+    <message>
+        <source>shown</source>
+        <translation>显示</translation>
+    </message>
+    <message>
+        <source>ID %1</source>
+        <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>%1 periods of %2 s</source>
+        <translation>%1 个周期，每半周期 %2 s</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 %2 → %3, %4</source>
+        <translation>%1 %2 → %3，%4</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>position</source>
+        <translation>位置</translation>
+    </message>
+    <message>
+        <source>%1 at %2 Hz</source>
+        <translation>%1 个，%2 Hz</translation>
+    </message>
+    <message>
+        <source>Best of the runs shown.</source>
+        <translation>所显示测试中的最佳值。</translation>
+    </message>
+    <message>
+        <source>Run %1</source>
+        <translation>测试 %1</translation>
+    </message>
+    <message>
+        <source>Overlay</source>
+        <translation>叠加显示</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>驱动</translation>
+    </message>
+    <message>
+        <source>Test</source>
+        <translation>测试</translation>
+    </message>
+    <message>
+        <source>Ran at</source>
+        <translation>测试时间</translation>
+    </message>
+    <message>
+        <source>Samples</source>
+        <translation>采样</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::StepRunsView</name>
+    <message>
+        <source>Save runs…</source>
+        <translation>保存测试…</translation>
+    </message>
+    <message>
+        <source>Load runs…</source>
+        <translation>加载测试…</translation>
+    </message>
+    <message>
+        <source>Remove run</source>
+        <translation>删除测试</translation>
+    </message>
+    <message>
+        <source>Clear all</source>
+        <translation>全部清除</translation>
+    </message>
+    <message>
+        <source>What do these mean?</source>
+        <translation>这些指标是什么意思？</translation>
+    </message>
+    <message>
+        <source>Save step runs</source>
+        <translation>保存阶跃测试</translation>
+    </message>
+    <message>
+        <source>Step runs (*.lkruns.json)</source>
+        <translation>阶跃测试 (*.lkruns.json)</translation>
+    </message>
+    <message>
+        <source>Load step runs</source>
+        <translation>加载阶跃测试</translation>
+    </message>
+    <message>
+        <source>Run %1</source>
+        <translation>测试 %1</translation>
+    </message>
+    <message>
+        <source>No runs yet: run a step test, change a gain, write it to RAM and repeat the test to compare.</source>
+        <translation>尚无测试：先做一次阶跃测试，修改参数并写入 RAM，再重复测试进行比较。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n run(s) of the other loop hidden: the overlay shows one loop at a time.</source>
+        <translation>
+            <numerusform>已隐藏 %n 个另一环的测试：叠加图一次只显示一个环。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Runs aligned on their step (0 s); dashed: each run&apos;s target. Best values of the runs shown are bold.</source>
+        <translation>各次测试按阶跃时刻（0 s）对齐；虚线为各自的目标值。所显示测试中的最佳值以粗体标出。</translation>
+    </message>
+    <message>
+        <source>Step response metrics</source>
+        <translation>阶跃响应指标</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %n run(s) to %1.</source>
+        <translation>
+            <numerusform>已将 %n 个测试保存到 %1。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Could not save: %1</source>
+        <translation>无法保存：%1</translation>
+    </message>
+    <message>
+        <source>Could not load: %1. Nothing was added.</source>
+        <translation>无法加载：%1。未添加任何测试。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Added %n run(s) from %1.</source>
+        <translation>
+            <numerusform>已从 %1 添加 %n 个测试。</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::StepTestPanel</name>
+    <message>
+        <source>Step test</source>
+        <translation>阶跃测试</translation>
+    </message>
+    <message>
+        <source>Test step</source>
+        <translation>阶跃测试</translation>
+    </message>
+    <message>
+        <source>Repeat last test</source>
+        <translation>重复上次测试</translation>
+    </message>
+    <message>
+        <source>Run the last test again with the gains the drive holds now.</source>
+        <translation>用驱动当前的参数再次执行上次的测试。</translation>
+    </message>
+    <message>
+        <source>Steps the speed or position loop of the selected drive and measures the response. Every setpoint is checked against the soft limits (Control view) before anything moves; Esc stops the motors.</source>
+        <translation>对所选驱动的速度环或位置环施加阶跃并测量响应。任何运动之前，每个设定值都先按软限位（控制页）检查；按 Esc 停止电机。</translation>
+    </message>
+    <message>
+        <source>Speed loop</source>
+        <translation>速度环</translation>
+    </message>
+    <message>
+        <source>Position loop</source>
+        <translation>位置环</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>1: one step from FROM to TO. More: a square wave of that many periods, each half held for the duration.</source>
+        <translation>1：从起点到终点的单次阶跃。更多：该周期数的方波，每半个周期保持设定的时间。</translation>
+    </message>
+    <message>
+        <source>periods</source>
+        <translation>个周期</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>环</translation>
+    </message>
+    <message>
+        <source>From → to</source>
+        <translation>起点 → 终点</translation>
+    </message>
+    <message>
+        <source>Each step</source>
+        <translation>每步保持</translation>
+    </message>
+    <message>
+        <source> dps</source>
+        <translation> dps</translation>
+    </message>
+    <message>
+        <source>Rotor speed. The drive is held at FROM before the step and goes back to FROM after it.</source>
+        <translation>转子速度。阶跃前驱动保持在起点速度，阶跃后回到起点速度。</translation>
+    </message>
+    <message>
+        <source>Multi-turn rotor angle. Filled in from where the drive is; each target may be at most one output turn away.</source>
+        <translation>转子多圈角度。按驱动当前位置填入；每个目标最多相距输出轴一圈。</translation>
+    </message>
+    <message>
+        <source> Max speed %1 dps.</source>
+        <translation> 最大速度 %1 dps。</translation>
+    </message>
+    <message>
+        <source>Testing drive %1: %2 setpoints over %3 s.%4</source>
+        <translation>正在测试驱动 %1：%3 s 内发送 %2 个设定值。%4</translation>
+    </message>
+    <message>
+        <source>Nothing was sent: connect and select a drive first.</source>
+        <translation>未发送任何命令：请先连接并选择驱动。</translation>
+    </message>
+    <message>
+        <source>Nothing was sent: FROM and TO are equal, there is no step.</source>
+        <translation>未发送任何命令：起点与终点相同，没有阶跃。</translation>
+    </message>
+    <message>
+        <source>Nothing was sent: no soft limits are in force.</source>
+        <translation>未发送任何命令：没有生效的软限位。</translation>
+    </message>
+    <message>
+        <source>Reading where drive %1 is…</source>
+        <translation>正在读取驱动 %1 的当前位置…</translation>
+    </message>
+    <message>
+        <source>Run %1: rise %2, overshoot %3, settling (2 %) %4; %5 samples at %6 Hz. %7</source>
+        <translation>测试 %1：上升时间 %2，超调 %3，调节时间（2 %）%4；%5 个采样，%6 Hz。%7</translation>
+    </message>
+    <message>
+        <source>Nothing was sent.</source>
+        <translation>未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>The test cannot run as set (%1).</source>
+        <translation>按当前设置无法执行测试（%1）。</translation>
+    </message>
+    <message>
+        <source>Refused: %1</source>
+        <translation>已拒绝：%1</translation>
+    </message>
+    <message>
+        <source>Drive %1 did not answer: the test stopped.</source>
+        <translation>驱动 %1 无应答：测试已停止。</translation>
+    </message>
+    <message>
+        <source>The link went down: the test stopped.</source>
+        <translation>连接已断开：测试已停止。</translation>
+    </message>
+    <message>
+        <source>The test was stopped.</source>
+        <translation>测试已停止。</translation>
+    </message>
+    <message>
+        <source>Drive %1 was last told to turn at %2 dps and keeps doing so until stopped.</source>
+        <translation>驱动 %1 最后收到的命令是以 %2 dps 转动，在停止之前会一直保持。</translation>
+    </message>
+    <message>
+        <source>Drive %1 was last told to stand still (0 dps).</source>
+        <translation>驱动 %1 最后收到的命令是静止（0 dps）。</translation>
+    </message>
+    <message>
+        <source>Drive %1 holds (or is moving to) %2°.</source>
+        <translation>驱动 %1 保持在（或正在运动到）%2°。</translation>
+    </message>
+    <message>
+        <source>Stop (Esc)</source>
+        <translation>停止 (Esc)</translation>
+    </message>
+    <message>
+        <source>Emergency stop: Motor Off to every drive.</source>
+        <translation>急停：向所有驱动发送电机关闭。</translation>
+    </message>
+    <message>
+        <source>Run the step test set above on the selected drive.</source>
+        <translation>在所选驱动上执行上面设置的阶跃测试。</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::StripChart</name>
     <message>
         <source>ID %1 %2</source>
@@ -4028,6 +4540,30 @@
     <message>
         <source>Nothing was loaded: a file is loaded against the drive&apos;s values, so read the drive&apos;s values first.</source>
         <translation>未加载任何内容：文件是对照驱动的数值加载的，请先读取驱动的数值。</translation>
+    </message>
+    <message>
+        <source>Live plot</source>
+        <translation>实时曲线</translation>
+    </message>
+    <message>
+        <source>Step response</source>
+        <translation>阶跃响应</translation>
+    </message>
+    <message>
+        <source>Repeat step test</source>
+        <translation>重复阶跃测试</translation>
+    </message>
+    <message>
+        <source>Run the last step test again with the gains the drive holds now, and compare it with the runs before (Step response tab).</source>
+        <translation>用驱动当前的参数再次执行上次的阶跃测试，并与之前的测试比较（阶跃响应页）。</translation>
+    </message>
+    <message>
+        <source>ROM write</source>
+        <translation>写入 ROM</translation>
+    </message>
+    <message>
+        <source>RAM write</source>
+        <translation>写入 RAM</translation>
     </message>
 </context>
 <context>

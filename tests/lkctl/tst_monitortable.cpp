@@ -100,7 +100,31 @@ private slots:
     void jsonRowsNeverMixRounds();
     void samplesOfNoPollAndLateOnesAreIgnored();
     void flushWritesTheOpenRound();
+    void v235State1CarriesBusCurrentAndMotorState();
 };
+
+// A firmware 2.35 drive's read_state1 also brings bus current and the motor state (V2.35.md
+// section 5): its columns follow the voltage's; a V2.3 drive on the same bus has none.
+void tst_MonitorTable::v235State1CarriesBusCurrentAndMotorState()
+{
+    MonitorTable table({Command::ReadState1}, drives({{3, Series::MS}, {5, Series::MF}}),
+                       MonitorFormat::CsvWide, {3});
+    QCOMPARE(table.header(), QByteArray("time_s,id3_temperature_c,id3_voltage_v,id3_error_state,"
+                                        "id3_bus_current_a,id3_motor_on,id5_temperature_c,"
+                                        "id5_voltage_v,id5_error_state\n"));
+    lk::protocol::State1 s1;
+    s1.generation = lk::protocol::Generation::V2_35;
+    s1.voltageRaw = 2400;
+    s1.busCurrentRaw = 125;
+    s1.motorStateRaw = 0x10;
+    TelemetrySample s = TelemetrySample::fromState1(3, s1, 0.5);
+    s.cycle = 1;
+    s.cycleTime = 0.5;
+    QVERIFY(table.add(s).isEmpty());
+    const QList<QByteArray> rows = table.flush();
+    QCOMPARE(rows.size(), 1);
+    QCOMPARE(rows.first(), QByteArray("0.500000,0,24.0,0,1.25,0,,,\n"));
+}
 
 void tst_MonitorTable::longRowsNeverMixRounds()
 {

@@ -214,6 +214,16 @@ void ControlView::loadLimits()
     m_limitsEditor->setProblem(m_limitsError);
 }
 
+std::optional<safety::SoftLimits> ControlView::limitsInForce(QString *why) const
+{
+    if (!m_limitsError.isEmpty()) {
+        if (why)
+            *why = m_limitsError;
+        return std::nullopt;
+    }
+    return m_limits;
+}
+
 void ControlView::setSoftLimits(const safety::SoftLimits &limits)
 {
     m_limits = limits;

@@ -47,6 +47,9 @@ public:
     /// Where soft limits persist, per drive (not owned; default: kept for this process).
     void setSettingsStore(DriveSettingsStore *store);
     safety::SoftLimits softLimits() const { return m_limits; }
+    /// The limits every motion of the selected drive is bounded by, or nullopt with the
+    /// refusal (`why`) while the stored limits are damaged and none were applied.
+    std::optional<safety::SoftLimits> limitsInForce(QString *why) const;
     /// Applies and persists the drive's soft limits.
     void setSoftLimits(const safety::SoftLimits &limits);
 

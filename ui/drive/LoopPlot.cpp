@@ -132,9 +132,22 @@ void LoopPlot::redraw()
         m_hint->setText(
             tr("Last %1 s of drive %2, rotor values.").arg(kDefaultWindowSeconds).arg(m_id));
     const double end = hasData ? ring->timeAt(ring->size() - 1) : kDefaultWindowSeconds;
+    m_chart->setMarkers(m_marks.value(m_id));
     refreshChart(TimeSpan{end - kDefaultWindowSeconds, end});
     m_drawnRevision = s->revision();
     ++m_redraws;
+}
+
+void LoopPlot::markChange(const QString &label)
+{
+    const std::optional<TimeSpan> span = store()->timeSpan();
+    if (m_id <= 0 || !span)
+        return;
+    QVector<TimeMarker> &marks = m_marks[m_id];
+    marks.append({span->end, label});
+    if (marks.size() > kMaxMarks)
+        marks.removeFirst();
+    redraw();
 }
 
 void LoopPlot::refreshChart(TimeSpan span)

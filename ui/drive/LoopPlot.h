@@ -6,6 +6,9 @@
 
 #include <bus/TelemetrySample.h>
 
+#include <plot/StripChart.h>
+
+#include <QtCore/QHash>
 #include <QtCore/QPointer>
 #include <QtCore/QTimer>
 #include <QtWidgets/QWidget>
@@ -14,8 +17,6 @@ class QComboBox;
 class QLabel;
 
 namespace lk::ui {
-
-class StripChart;
 
 /// Live plot of the loop being tuned: multi-turn angle for the angle loop, speed for the
 /// speed loop, iq (power on MS) for the current loop, over the last seconds. It reads a
@@ -26,6 +27,7 @@ class LoopPlot : public QWidget {
 public:
     static constexpr int kRedrawIntervalMs = 33;
     static constexpr double kDefaultWindowSeconds = 10;
+    static constexpr int kMaxMarks = 32;
 
     explicit LoopPlot(QWidget *parent = nullptr);
     ~LoopPlot() override;
@@ -44,6 +46,11 @@ public:
     quint64 redrawCount() const { return m_redraws; }
     /// Redraw now (tests, screenshots).
     void redraw();
+    /// Marks "now" (the newest sample of the shown drive) with `label` on that drive's plot:
+    /// a gain change, so its effect can be read off the trace. Nothing without samples.
+    void markChange(const QString &label);
+    /// The marks of drive `id`, oldest first.
+    QVector<TimeMarker> marks(int id) const { return m_marks.value(id); }
 
 protected:
     void showEvent(QShowEvent *event) override;
@@ -61,6 +68,7 @@ private:
     QLabel *m_hint;
     QTimer m_timer;
     int m_id = 0;
+    QHash<int, QVector<TimeMarker>> m_marks; ///< per drive, at most kMaxMarks
     bool m_power = false;
     TunedLoop m_loop = TunedLoop::Speed;
     quint64 m_drawnRevision = ~quint64(0);

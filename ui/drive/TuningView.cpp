@@ -11,9 +11,14 @@
 #include "TuningText.h"
 
 #include <bus/BusSession.h>
+#include <motor/ModelNameInfo.h>
 #include <panels/FileDialogs.h>
 #include <panels/StatusColors.h>
+#include <plot/SampleRing.h>
 #include <record/ParameterSet.h>
+#include <tuning/StepRunList.h>
+#include <tuning/StepRunsView.h>
+#include <tuning/StepTestPanel.h>
 
 #include <QtCore/QDateTime>
 #include <QtCore/QTime>
@@ -24,6 +29,8 @@
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QTabWidget>
 #include <QtWidgets/QVBoxLayout>
+
+#include <cmath>
 
 namespace lk::ui {
 
@@ -108,10 +115,94 @@ void TuningView::buildUi()
     leftWidget->setLayout(left);
     leftWidget->setFixedWidth(kLeftColumnWidth);
 
+    // Beside the table: the live loop, or the step tests and their runs compared.
     m_plot = new LoopPlot(this);
+    m_side = new QTabWidget(this);
+    m_side->setObjectName(QStringLiteral("tuningSide"));
+    m_side->addTab(m_plot, tr("Live plot"));
+    m_side->addTab(buildStepTab(), tr("Step response"));
     auto *layout = new QHBoxLayout(this);
     layout->addWidget(leftWidget);
-    layout->addWidget(m_plot, 1);
+    layout->addWidget(m_side, 1);
+}
+
+QWidget *TuningView::buildStepTab()
+{
+    m_runs = new StepRunList(this);
+    m_stepTest = new StepTestPanel(m_runs, this);
+    m_stepRuns = new StepRunsView(m_runs, this);
+    auto *tab = new QWidget(this);
+    auto *layout = new QVBoxLayout(tab);
+    layout->addWidget(m_stepTest);
+    layout->addWidget(m_stepRuns, 1);
+    StepTestSources sources;
+    sources.gains = [this] { return heldObject(false); };
+    sources.ramps = [this] { return heldObject(true); };
+    sources.effortLimit = [this] { return tuning::seriesEffortLimit(series()); };
+    sources.angleDeg = [this]() -> std::optional<double> {
+        const SampleRing *ring = m_plot->store()->ring(driveId(), TelemetryChannel::MultiTurn);
+        if (!ring || ring->isEmpty())
+            return std::nullopt;
+        return ring->valueAt(ring->size() - 1);
+    };
+    m_stepTest->setSources(sources);
+    connect(m_stepTest, &StepTestPanel::emergencyStopRequested, this,
+            &TuningView::emergencyStopRequested);
+    connect(m_stepTest, &StepTestPanel::runningChanged, this, &TuningView::refreshEnabled);
+    connect(m_stepTest, &StepTestPanel::runFinished, this, [this] { showStepResponse(true); });
+    return tab;
+}
+
+void TuningView::setStepTestLimits(
+    std::function<std::optional<safety::SoftLimits>(QString *why)> limits,
+    std::function<QString(const safety::Verdict &)> verdictText)
+{
+    StepTestSources sources = m_stepTest->sources();
+    sources.limits = std::move(limits);
+    sources.verdictText = std::move(verdictText);
+    m_stepTest->setSources(sources);
+}
+
+void TuningView::showStepResponse(bool show)
+{
+    m_side->setCurrentIndex(show ? 1 : 0);
+}
+
+void TuningView::haltLocalMotion(const QString &reason)
+{
+    m_stepTest->halt(reason);
+}
+
+QJsonObject TuningView::heldObject(bool ramps) const
+{
+    // Only values a complete read gave: a gain that was not read is absent, never 0.
+    QJsonObject out;
+    if (!m_readComplete)
+        return out;
+    const QStringList keys = ramps ? tuning::stepRunRampKeys() : tuning::stepRunGainKeys();
+    const QVector<ParamField> fields = m_spec->fields();
+    const HeldValues held = m_exchange->held();
+    for (int i = 0; i < fields.size() && i < held.size(); ++i) {
+        if (held.at(i) && keys.contains(fields.at(i).key))
+            out.insert(fields.at(i).key,
+                       double(*held.at(i)) / std::pow(10.0, fields.at(i).decimals));
+    }
+    return out;
+}
+
+void TuningView::updateStepDrive()
+{
+    StepTestDrive d;
+    d.session = session();
+    d.id = driveId();
+    d.canSend = canSend();
+    d.series = series();
+    if (const auto &m = motor().model) {
+        d.model = m->motorName;
+        d.generation = protocol::generationName(m->generation);
+        d.gearRatio = motor::ModelNameInfo::parse(m->motorName).gearRatio;
+    }
+    m_stepTest->setDrive(d);
 }
 
 QWidget *TuningView::buildButtons()
@@ -164,6 +255,15 @@ QWidget *TuningView::buildButtons()
     grid->addWidget(m_undo, 1, 0, 1, 3); // its name carries a time: the whole row
     grid->addWidget(m_save, 2, 0);
     grid->addWidget(m_load, 2, 1);
+    // The write-test-compare loop: write to RAM, then one click repeats the last step test.
+    m_repeatStep = make(QStringLiteral("repeatStepTest"), tr("Repeat step test"),
+                        tr("Run the last step test again with the gains the drive holds now, "
+                           "and compare it with the runs before (Step response tab)."));
+    connect(m_repeatStep, &QPushButton::clicked, this, [this] {
+        showStepResponse(true);
+        m_stepTest->repeatLast();
+    });
+    grid->addWidget(m_repeatStep, 2, 2);
     return w;
 }
 
@@ -279,6 +379,7 @@ void TuningView::contextChanged(Changes changes)
         setStatus(tr("Disconnected: the values shown are the last ones read. Tuning resumes "
                      "after the drive has been read again on the next connection."));
     forwardContext(changes); // after the gains' read: those go on the bus first
+    updateStepDrive();
     refreshWarnings();
     refreshEnabled();
 }
@@ -464,6 +565,8 @@ void TuningView::checkReadBack(const SentValues &sent)
         m_mismatch->show();
     }
     const QStringList failures = m_exchange->writeFailures();
+    if (failures.isEmpty()) // acknowledged: mark the moment on the live trace
+        m_plot->markChange(sent.rom ? tr("ROM write") : tr("RAM write"));
     if (!failures.isEmpty())
         setStatus(tr("The write failed: %1").arg(failures.join(QLatin1Char(' '))), true);
     else if (!m_readComplete)
@@ -511,7 +614,8 @@ void TuningView::refreshWarnings()
 
 void TuningView::refreshEnabled()
 {
-    const bool idle = !isBusy();
+    // No gain writes while a step test runs: its trace would mix two sets of gains.
+    const bool idle = !isBusy() && !m_stepTest->isRunning();
     const bool read = canSend() && m_readComplete;
     const bool pending = m_table->pending().has_value();
     m_read->setEnabled(canSend() && idle);
@@ -522,6 +626,7 @@ void TuningView::refreshEnabled()
     m_save->setEnabled(hasDrive() && m_spec->toFile(m_exchange->held(), probe));
     m_load->setEnabled(read && idle);
     m_table->setEditable(read);
+    m_repeatStep->setEnabled(m_stepTest->canRepeat() && idle);
     refreshRestoreButton();
 }
 

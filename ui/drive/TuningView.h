@@ -6,9 +6,14 @@
 #include "TuningSetV23.h"
 #include "TuningSetV235.h"
 
+#include <safety/MotionGuard.h>
+#include <safety/SoftLimits.h>
+
 #include <QtCore/QHash>
+#include <QtCore/QJsonObject>
 #include <QtCore/QTime>
 
+#include <functional>
 #include <optional>
 
 class QGroupBox;
@@ -20,6 +25,9 @@ namespace lk::ui {
 
 class DriveLimitsView;
 class LoopPlot;
+class StepRunList;
+class StepRunsView;
+class StepTestPanel;
 class ParamExchange;
 class TelemetryStore;
 
@@ -72,6 +80,18 @@ public:
     LoopPlot *plot() const { return m_plot; }
     /// The drive limits editor (the "Drive limits" tab; V2.35 only).
     DriveLimitsView *limits() const { return m_limits; }
+    /// The step test beside the gains, and the runs it kept (the "Step response" tab).
+    StepTestPanel *stepTest() const { return m_stepTest; }
+    StepRunsView *stepRuns() const { return m_stepRuns; }
+    StepRunList *runList() const { return m_runs; }
+    /// Where step tests get their soft limits (the Control view's, nullopt with the reason
+    /// when they cannot be used) and how a refusal is worded.
+    void setStepTestLimits(std::function<std::optional<safety::SoftLimits>(QString *why)> limits,
+                           std::function<QString(const safety::Verdict &)> verdictText);
+    /// Shows the live plot (false) or the step response (true) beside the table.
+    void showStepResponse(bool show);
+    /// Stops a running step test from sending (the emergency stop's first step).
+    void haltLocalMotion(const QString &reason);
     /// The set of the selected drive's generation.
     const ParamSetSpec &spec() const { return *m_spec; }
     /// What the drive holds (last read), one per field of spec(); nullopt while unknown.
@@ -89,6 +109,8 @@ public:
 signals:
     /// A read (or a write's read-back) of drive `id` completed.
     void parametersRead(int id);
+    /// The running step test's Stop button: the emergency stop's job.
+    void emergencyStopRequested();
 
 protected:
     void contextChanged(Changes changes) override;
@@ -110,6 +132,11 @@ private:
 
     void buildUi();
     QWidget *buildButtons();
+    QWidget *buildStepTab();
+    /// What the drive holds (last complete read), under lkctl's names: the gains, or the
+    /// ramps (accel_dps2, current_ramp, speed_ramp_dps2).
+    QJsonObject heldObject(bool ramps) const;
+    void updateStepDrive();
     const ParamSetSpec *specFor(protocol::Generation generation) const;
     /// Shows the set of the selected drive's generation.
     void selectSpec();
@@ -141,6 +168,11 @@ private:
     DriveLimitsView *m_limits = nullptr;
     QLabel *m_note = nullptr;
     LoopPlot *m_plot = nullptr;
+    QTabWidget *m_side = nullptr; ///< live plot | step response
+    StepRunList *m_runs = nullptr;
+    StepTestPanel *m_stepTest = nullptr;
+    StepRunsView *m_stepRuns = nullptr;
+    QPushButton *m_repeatStep = nullptr;
     QLabel *m_title = nullptr;
     QLabel *m_romWarning = nullptr;
     QLabel *m_mismatch = nullptr;

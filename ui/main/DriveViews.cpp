@@ -6,6 +6,7 @@
 #include <drive/ControlView.h>
 #include <drive/DriveInfoView.h>
 #include <drive/DriveSettingsStore.h>
+#include <drive/DriveText.h>
 #include <drive/EncoderResolutions.h>
 #include <drive/EncoderView.h>
 #include <drive/TuningView.h>
@@ -36,6 +37,12 @@ DriveViews::DriveViews(BusModel *model, BusController *controller, TelemetryStor
     m_control->setSession(session);
     m_encoder->setSession(session);
     m_info->setSession(session);
+    // Step tests obey the limits the Control view holds for the drive, worded the same way.
+    m_tuning->setStepTestLimits(
+        [this](QString *why) { return m_control->limitsInForce(why); },
+        [this](const safety::Verdict &v) { return DriveText::verdict(v, m_control->series()); });
+    connect(m_tuning, &TuningView::emergencyStopRequested, this,
+            &DriveViews::emergencyStopRequested);
 
     connect(m_model, &BusModel::currentDriveChanged, this, &DriveViews::syncDrive);
     connect(m_model, &BusModel::drivesChanged, this, &DriveViews::syncDrive);
@@ -50,6 +57,7 @@ DriveViews::~DriveViews() = default;
 
 void DriveViews::haltLocalMotion(const QString &reason)
 {
+    m_tuning->haltLocalMotion(reason);
     m_control->haltLocalMotion(reason);
 }
 

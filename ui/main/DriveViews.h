@@ -40,6 +40,10 @@ public:
     /// emergency stop reaches the bus: a generator tick must not restart a motor after it.
     void haltLocalMotion(const QString &reason);
 
+signals:
+    /// A view's own stop button (a running step test): the emergency stop's job.
+    void emergencyStopRequested();
+
 private:
     void syncDrive();
     void syncConnection();

@@ -131,6 +131,8 @@ void MainWindow::buildSafety()
     m_estop = new EmergencyStopControl(m_controller, m_motion, m_banner, this);
     // Local motion sources first, so that no generator tick follows the Motor Off frames.
     connect(m_estop, &EmergencyStopControl::halting, m_driveViews, &DriveViews::haltLocalMotion);
+    connect(m_driveViews, &DriveViews::emergencyStopRequested, m_estop,
+            &EmergencyStopControl::stop);
     m_linkLoss = new LinkLossWatch(m_model, m_motion, m_banner, this);
     connect(m_controller, &BusController::telemetryReceived, m_linkLoss,
             &LinkLossWatch::onTelemetry);

@@ -34,6 +34,8 @@ QString FileDialogs::purposeKey(Purpose purpose)
         return QStringLiteral("parameters");
     case Purpose::BusReport:
         return QStringLiteral("busReport");
+    case Purpose::StepRuns:
+        return QStringLiteral("stepRuns");
     }
     return QStringLiteral("other");
 }

@@ -15,7 +15,7 @@ namespace lk::ui {
 class FileDialogs {
 public:
     /// What a file is for; each purpose remembers its own folder.
-    enum class Purpose { PlotCsv, PlotImage, Traffic, Parameters, BusReport };
+    enum class Purpose { PlotCsv, PlotImage, Traffic, Parameters, BusReport, StepRuns };
 
     /// Where folders are remembered (lkstudio: AppSettings). Without one, nothing is kept.
     struct FolderMemory {

@@ -1,5 +1,7 @@
 #include "StripChart.h"
 
+#include "SeriesColors.h"
+
 #include <QtCharts/QChart>
 #include <QtCharts/QLegend>
 #include <QtCharts/QLegendMarker>
@@ -22,15 +24,6 @@ constexpr int kTimeTicks = 8;
 // fewer ticks rather than labels QtCharts shortens to "...".
 constexpr int kPixelsPerTimeTick = 90;
 constexpr int kValueTicks = 5;
-
-const std::array<QColor, 8> &seriesColors()
-{
-    static const std::array<QColor, 8> colors{QColor(0x1f, 0x77, 0xb4), QColor(0xd6, 0x27, 0x28),
-                                              QColor(0x2c, 0xa0, 0x2c), QColor(0x94, 0x67, 0xbd),
-                                              QColor(0xff, 0x7f, 0x0e), QColor(0x8c, 0x56, 0x4b),
-                                              QColor(0xe3, 0x77, 0xc2), QColor(0x17, 0xbe, 0xcf)};
-    return colors;
-}
 
 int decimalsFor(double step)
 {
@@ -142,9 +135,9 @@ QColor StripChart::traceColor(int index) const
 {
     const PlotTrace &trace = m_traces.at(index);
     if (m_coloring == Coloring::ByChannel) {
-        return seriesColors()[size_t(trace.channel) % seriesColors().size()];
+        return SeriesColors::at(int(trace.channel));
     }
-    return seriesColors()[size_t(driveOrder().indexOf(trace.driveId)) % seriesColors().size()];
+    return SeriesColors::at(int(driveOrder().indexOf(trace.driveId)));
 }
 
 QVector<int> StripChart::driveOrder() const
@@ -293,7 +286,42 @@ void StripChart::drawForeground(QPainter *painter, const QRectF &rect)
         }
         painter->restore();
     }
+    drawMarkers(painter);
     TimeChartView::drawForeground(painter, rect);
+}
+
+void StripChart::setMarkers(const QVector<TimeMarker> &markers)
+{
+    if (markers.size() == m_markers.size() &&
+        std::equal(markers.cbegin(), markers.cend(), m_markers.cbegin(),
+                   [](const TimeMarker &a, const TimeMarker &b) {
+                       return a.time == b.time && a.label == b.label;
+                   }))
+        return;
+    m_markers = markers;
+    viewport()->update();
+}
+
+void StripChart::drawMarkers(QPainter *painter)
+{
+    if (m_markers.isEmpty() || !(m_time->max() > m_time->min()))
+        return;
+    const QRectF area = chart()->plotArea();
+    const double scale = area.width() / (m_time->max() - m_time->min());
+    painter->save();
+    QPen pen(palette().color(QPalette::Highlight));
+    pen.setStyle(Qt::DashLine);
+    painter->setPen(pen);
+    for (const TimeMarker &m : std::as_const(m_markers)) {
+        const double x = area.left() + (m.time - m_time->min()) * scale;
+        if (x < area.left() || x > area.right())
+            continue;
+        const QPointF top = chart()->mapToScene(QPointF(x, area.top()));
+        const QPointF bottom = chart()->mapToScene(QPointF(x, area.bottom()));
+        painter->drawLine(top, bottom);
+        painter->drawText(top + QPointF(3, painter->fontMetrics().ascent()), m.label);
+    }
+    painter->restore();
 }
 
 QValueAxis *StripChart::valueAxis(Quantity quantity) const

@@ -16,6 +16,12 @@ class QValueAxis;
 
 namespace lk::ui {
 
+/// A labelled instant on a chart's time axis (e.g. "gains written").
+struct TimeMarker {
+    double time = 0; ///< same clock as the samples
+    QString label;
+};
+
 /// One chart of the plot panel: a time axis, one value axis per quantity (alternating left
 /// and right) and one line per trace, refreshed from the store decimated to its pixel width.
 /// A trace with gaps in its data (a silent drive, a dropped link) is drawn as separate line
@@ -36,6 +42,9 @@ public:
     QList<QLineSeries *> segments(int index) const;
     /// The outages shaded now (union over the traces, within the shown time span).
     const QVector<TimeSpan> &outageBands() const { return m_outages; }
+    /// Instants drawn as labelled vertical lines while they are in view.
+    void setMarkers(const QVector<TimeMarker> &markers);
+    const QVector<TimeMarker> &markers() const { return m_markers; }
     QValueAxis *valueAxis(Quantity quantity) const;
 
     void setTimeLabelsVisible(bool visible);
@@ -67,12 +76,14 @@ private:
     QLineSeries *addLineSeries(int index);
     void showSegments(int index, const LineSegments &segments);
     void collectOutages(const TelemetryStore &store, TimeSpan span);
+    void drawMarkers(QPainter *painter);
 
     QVector<PlotTrace> m_traces;
     Coloring m_coloring = Coloring::ByDrive;
     QList<QLineSeries *> m_series;
     QVector<QList<QLineSeries *>> m_extraPieces; ///< per trace: pieces after the first
     QVector<TimeSpan> m_outages;
+    QVector<TimeMarker> m_markers;
     std::map<Quantity, QValueAxis *> m_valueAxes;
     std::map<Quantity, QColor> m_axisColors; ///< overlay: an axis takes its trace's colour
     QValueAxis *m_time = nullptr;

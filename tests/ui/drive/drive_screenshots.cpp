@@ -1,5 +1,6 @@
 // Renders the drive views on the built-in simulated bus to PNG files for docs/:
-//   QT_QPA_PLATFORM=offscreen drive_screenshots [OUTPUT_DIR]
+//   QT_QPA_PLATFORM=offscreen drive_screenshots [OUTPUT_DIR [LANGUAGE]]
+// e.g. `drive_screenshots docs/zh_CN zh_CN` for the Chinese pictures.
 // Not a test: it produces pictures for people to look at.
 #include "DriveTestRig.h"
 
@@ -14,6 +15,10 @@
 #include <drive/SetpointPanel.h>
 #include <drive/TuningSetV23.h>
 #include <drive/TuningView.h>
+#include <main/LanguageLoader.h>
+#include <safety/SoftLimits.h>
+#include <tuning/StepRunList.h>
+#include <tuning/StepTestPanel.h>
 
 #include <QtCore/QDir>
 #include <QtTest/QTest>
@@ -65,6 +70,43 @@ bool tuning(SimRig &rig, const QString &dir)
     view.plot()->redraw();
     QTest::qWait(200);
     return save(view, dir, "screenshot-tuning.png");
+}
+
+/// Two speed steps of drive 1, the second after doubling the speed Kp in RAM, overlaid.
+bool steps(SimRig &rig, const QString &dir)
+{
+    lk::ui::TuningView view;
+    view.setStepTestLimits(
+        [&rig](QString *) {
+            return std::optional(lk::safety::SoftLimits::defaults(rig.motor(1).series));
+        },
+        {});
+    attach(view, rig, 1);
+    if (!QTest::qWaitFor([&] { return view.readComplete() && !view.isBusy(); }, 10000))
+        return false;
+    view.showStepResponse(true);
+    lk::tuning::StepTestSpec spec = view.stepTest()->spec();
+    spec.from = 0;
+    spec.to = 600;
+    spec.durationS = 0.8;
+    view.stepTest()->setSpec(spec);
+    auto runs = [&](int n) {
+        return QTest::qWaitFor(
+            [&] { return view.runList()->runs().size() >= n && !view.stepTest()->isRunning(); },
+            20000);
+    };
+    if (!view.stepTest()->runTest() || !runs(1))
+        return false;
+    const int kp = view.driveValues().value(lk::ui::TuningSetV23::SpeedKp).value_or(50);
+    view.table()->editor(lk::ui::TuningSetV23::SpeedKp)->setValue(double(kp * 3));
+    view.writeToRam();
+    if (!QTest::qWaitFor([&] { return !view.isBusy(); }, 10000))
+        return false;
+    QTest::qWait(300);
+    if (!view.stepTest()->repeatLast() || !runs(2))
+        return false;
+    QTest::qWait(300);
+    return save(view, dir, "screenshot-steps.png");
 }
 
 bool control(SimRig &rig, const QString &dir)
@@ -125,6 +167,8 @@ int main(int argc, char **argv)
 {
     QApplication app(argc, argv);
     const QString dir = argc > 1 ? QString::fromLocal8Bit(argv[1]) : QStringLiteral("docs");
+    if (argc > 2)
+        lk::ui::LanguageLoader::install(QString::fromLocal8Bit(argv[2]));
     QDir().mkpath(dir);
     SimRig rig;
     if (!rig.open()) {
@@ -133,6 +177,7 @@ int main(int argc, char **argv)
     }
     rig.session.startPolling(lk::bus::PollPlan::standard({1, 2, 3, 4}, 50));
     bool ok = tuning(rig, dir);
+    ok = steps(rig, dir) && ok;
     ok = control(rig, dir) && ok;
     ok = encoder(rig, dir) && ok;
     ok = info(rig, dir) && ok;

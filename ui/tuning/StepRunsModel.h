@@ -1,0 +1,51 @@
+#pragma once
+
+#include "MetricText.h"
+
+#include <QtCore/QAbstractTableModel>
+#include <QtCore/QStringList>
+
+namespace lk::ui {
+
+class StepRunList;
+
+/// The runs side by side: one column per run (in its overlay colour), one row per property:
+/// whether it is overlaid (checkable), the drive, the test, the sample rate, every metric and
+/// every gain and ramp any run has. In each metric row the best value of the overlaid runs is
+/// bold and tinted; a run without a value says why.
+class StepRunsModel : public QAbstractTableModel {
+    Q_OBJECT
+public:
+    enum FixedRow { Overlay, Drive, Test, When, Samples, kFixedRows };
+
+    explicit StepRunsModel(StepRunList *runs, QObject *parent = nullptr);
+
+    int rowCount(const QModelIndex &parent = {}) const override;
+    int columnCount(const QModelIndex &parent = {}) const override;
+    QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
+    bool setData(const QModelIndex &index, const QVariant &value, int role) override;
+    Qt::ItemFlags flags(const QModelIndex &index) const override;
+    QVariant headerData(int section, Qt::Orientation orientation,
+                        int role = Qt::DisplayRole) const override;
+
+    /// The row of a metric.
+    static int metricRow(StepMetricKind kind);
+    /// The row of a gain or ramp key ("speed_kp"), or -1 when no run has it.
+    int keyRow(const QString &key) const;
+    /// The columns holding the best value of `kind` among the overlaid runs (several when
+    /// they tie; none when no overlaid run has a value).
+    QVector<int> bestColumns(StepMetricKind kind) const;
+    static QColor runColor(int number);
+
+private:
+    void rebuild();
+    QVariant metricData(int column, StepMetricKind kind, int role) const;
+    QString fixedText(int column, FixedRow row) const;
+
+    StepRunList *m_runs;
+    QStringList m_keys;                     ///< gain and ramp keys some run has, in lkctl's order
+    QVector<tuning::EdgeMetrics> m_metrics; ///< per column: the run's step metrics
+    QVector<QVector<int>> m_best;           ///< per metric (MetricText::all() order): best columns
+};
+
+} // namespace lk::ui
