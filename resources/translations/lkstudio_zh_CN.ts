@@ -3566,20 +3566,20 @@
         <translation>距阶跃的时间 (s)</translation>
     </message>
     <message>
-        <source>Speed (dps, rotor)</source>
-        <translation>速度（dps，转子）</translation>
-    </message>
-    <message>
-        <source>Angle (°, rotor)</source>
-        <translation>角度（°，转子）</translation>
-    </message>
-    <message>
         <source>Power (rel.)</source>
         <translation>功率（相对值）</translation>
     </message>
     <message>
         <source>iq (A)</source>
         <translation>iq (A)</translation>
+    </message>
+    <message>
+        <source>Speed (dps)</source>
+        <translation>速度 (dps)</translation>
+    </message>
+    <message>
+        <source>Angle (°)</source>
+        <translation>角度 (°)</translation>
     </message>
 </context>
 <context>

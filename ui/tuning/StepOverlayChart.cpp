@@ -9,6 +9,7 @@
 #include <QtCharts/QLegendMarker>
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QValueAxis>
+#include <QtWidgets/QGraphicsLayout>
 #include <QtWidgets/QVBoxLayout>
 
 #include <algorithm>
@@ -94,24 +95,29 @@ StepOverlayChart::StepOverlayChart(QWidget *parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_response, 3);
     layout->addWidget(m_effort, 2);
-    m_response->setMinimumHeight(160);
-    m_effort->setMinimumHeight(110);
+    m_response->setMinimumHeight(170);
+    m_effort->setMinimumHeight(140);
     setRuns({});
 }
 
-void StepOverlayChart::rebuild(TimeChartView *view, const QString &valueTitle)
+void StepOverlayChart::rebuild(TimeChartView *view, const QString &valueTitle, bool timeTitle)
 {
     QChart *chart = view->chart();
     chart->removeAllSeries();
     for (QAbstractAxis *axis : chart->axes())
         chart->removeAxis(axis);
     auto *time = new QValueAxis(chart);
-    time->setTitleText(tr("Time from the step (s)"));
+    // One time title under the lower chart: QtCharts elides labels ("...") rather than
+    // dropping them when a short chart has no room for a title as well.
+    time->setTitleText(timeTitle ? tr("Time from the step (s)") : QString());
     auto *value = new QValueAxis(chart);
     value->setTitleText(valueTitle);
     chart->addAxis(time, Qt::AlignBottom);
     chart->addAxis(value, Qt::AlignLeft);
-    chart->setMargins(QMargins(4, 4, 4, 4));
+    chart->setMargins(QMargins(2, 2, 2, 2));
+    chart->layout()->setContentsMargins(0, 0, 0, 0);
+    chart->setBackgroundRoundness(0);
+    chart->legend()->setAlignment(Qt::AlignRight);
 }
 
 void StepOverlayChart::fitAxes(TimeChartView *view)
@@ -127,9 +133,21 @@ void StepOverlayChart::fitAxes(TimeChartView *view)
     const auto axes = chart->axes();
     if (axes.size() != 2 || !x.isValid())
         return;
-    static_cast<QValueAxis *>(axes.at(0))->setRange(x.min, x.max > x.min ? x.max : x.min + 1);
+    auto ticks = [](QValueAxis *axis, double lo, double hi, int count) {
+        // Fixed round steps, as the strip charts have: labels that fit, never "...".
+        const double step = niceStep((hi - lo) / count);
+        axis->setTickType(QValueAxis::TicksFixed); // no layout at the old interval
+        axis->setRange(lo, hi);
+        axis->setTickAnchor(0);
+        axis->setTickInterval(step);
+        axis->setTickType(QValueAxis::TicksDynamic);
+        const int decimals = std::clamp(int(std::ceil(-std::log10(step) - 1e-9)), 0, 6);
+        axis->setLabelFormat(QStringLiteral("%.%1f").arg(decimals));
+    };
+    ticks(static_cast<QValueAxis *>(axes.at(0)), x.min, x.max > x.min ? x.max : x.min + 1, 6);
     const auto [lo, hi] = scaledRange(y);
-    static_cast<QValueAxis *>(axes.at(1))->setRange(lo, hi);
+    // A short chart gets fewer value labels: QtCharts would shorten crowded ones to "...".
+    ticks(static_cast<QValueAxis *>(axes.at(1)), lo, hi, view->height() < 200 ? 2 : 4);
     view->applyPalette();
 }
 
@@ -137,8 +155,8 @@ void StepOverlayChart::setRuns(const QVector<OverlayRun> &runs)
 {
     const bool speed = runs.isEmpty() || runs.first().trace.loop == StepLoop::Speed;
     const bool power = !runs.isEmpty() && runs.first().trace.effortIsPower;
-    rebuild(m_response, speed ? tr("Speed (dps, rotor)") : tr("Angle (\u00b0, rotor)"));
-    rebuild(m_effort, power ? tr("Power (rel.)") : tr("iq (A)"));
+    rebuild(m_response, speed ? tr("Speed (dps)") : tr("Angle (\u00b0)"), false);
+    rebuild(m_effort, power ? tr("Power (rel.)") : tr("iq (A)"), true);
     m_responseLines.clear();
     for (const OverlayRun &run : runs) {
         m_responseLines.append(addLine(m_response->chart(), responsePoints(run.trace), run.color,
@@ -150,7 +168,8 @@ void StepOverlayChart::setRuns(const QVector<OverlayRun> &runs)
         m_response->chart()->legend()->markers(target).value(0)->setVisible(false);
         addLine(m_effort->chart(), effortPoints(run.trace), run.color, run.label, Qt::SolidLine);
     }
-    m_effort->chart()->legend()->setVisible(false);
+    // Both legends (on the right) keep the two plot areas the same width, so times line up.
+    m_effort->chart()->legend()->setVisible(!runs.isEmpty());
     m_response->chart()->legend()->setVisible(!runs.isEmpty());
     fitAxes(m_response);
     fitAxes(m_effort);

@@ -21,8 +21,8 @@ struct OverlayRun {
 };
 
 /// Step-test runs overlaid time-aligned on their first step (t = 0 at the edge): the response
-/// (speed or angle) above with each run's target as a dashed line in its colour, the torque
-/// current (power on MS) below. Runs of one loop only; the caller chooses which.
+/// (speed or angle, rotor values) above with each run's target as a dashed line in its colour,
+/// the torque current (power on MS) below. Runs of one loop only; the caller chooses which.
 class StepOverlayChart : public QWidget {
     Q_OBJECT
 public:
@@ -36,7 +36,7 @@ public:
     QLineSeries *responseSeries(int index) const;
 
 private:
-    static void rebuild(TimeChartView *view, const QString &valueTitle);
+    static void rebuild(TimeChartView *view, const QString &valueTitle, bool timeTitle);
     static void fitAxes(TimeChartView *view);
 
     TimeChartView *m_response;

@@ -64,7 +64,8 @@ StepRunsView::StepRunsView(StepRunList *runs, QWidget *parent)
     splitter->addWidget(m_overlay);
     splitter->addWidget(m_table);
     splitter->setStretchFactor(0, 3);
-    splitter->setStretchFactor(1, 2);
+    splitter->setStretchFactor(1, 1);
+    splitter->setSizes({600, 200}); // the curves first; the table scrolls
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(splitter, 1);

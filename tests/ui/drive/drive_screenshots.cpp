@@ -18,12 +18,15 @@
 #include <main/LanguageLoader.h>
 #include <safety/SoftLimits.h>
 #include <tuning/StepRunList.h>
+#include <tuning/StepRunsModel.h>
+#include <tuning/StepRunsView.h>
 #include <tuning/StepTestPanel.h>
 
 #include <QtCore/QDir>
 #include <QtTest/QTest>
 #include <QtWidgets/QApplication>
 #include <QtWidgets/QSpinBox>
+#include <QtWidgets/QTableView>
 
 #include <cstdio>
 
@@ -105,6 +108,11 @@ bool steps(SimRig &rig, const QString &dir)
     QTest::qWait(300);
     if (!view.stepTest()->repeatLast() || !runs(2))
         return false;
+    // The metrics, not the identity rows, at the top of the table.
+    auto *model = view.stepRuns()->model();
+    view.stepRuns()->table()->scrollTo(
+        model->index(lk::ui::StepRunsModel::metricRow(lk::ui::StepMetricKind::RiseTime), 0),
+        QAbstractItemView::PositionAtTop);
     QTest::qWait(300);
     return save(view, dir, "screenshot-steps.png");
 }
