@@ -167,7 +167,10 @@ void tst_E2eCsv::init()
     QVERIFY(m_dir->isValid());
     m_link = m_dir->filePath(QStringLiteral("lkbus"));
     m_sim = std::make_unique<LksimProcess>(QStringLiteral(LKSIM_PATH));
-    QVERIFY2(m_sim->start(simArgs(m_link)), qPrintable(m_sim->errorString()));
+    // Plus a firmware 2.35 drive: its read_state1 adds bus current and the motor state.
+    QStringList args = simArgs(m_link);
+    args[1] = simMotors() + QStringLiteral(",5:MS4015@2.35");
+    QVERIFY2(m_sim->start(args), qPrintable(m_sim->errorString()));
 }
 
 void tst_E2eCsv::cleanup()
@@ -199,18 +202,18 @@ void tst_E2eCsv::lkctlMonitorWritesTheDocumentedSchema()
 {
     QFETCH(CsvLayout, layout);
     const CtlResult r =
-        lkctl({"monitor", "3", "17", "32", "--port", m_link, "--what", kEverything, "--rate", "0",
-               "--count", "12", "--csv-layout", record::TelemetryCsv::layoutName(layout)});
+        lkctl({"monitor", "3", "5", "17", "32", "--port", m_link, "--what", kEverything, "--rate",
+               "0", "--count", "12", "--csv-layout", record::TelemetryCsv::layoutName(layout)});
     QVERIFY2(r.exitCode == 0, r.err.constData());
     const QList<QStringList> rows = parseCsv(r.out);
     QCOMPARE(rows.size(), 13);
     const QStringList header = rows.first();
-    const QString problem =
-        layout == CsvLayout::Wide ? checkWideHeader(header, {3, 17, 32}) : checkLongHeader(header);
+    const QString problem = layout == CsvLayout::Wide ? checkWideHeader(header, {3, 5, 17, 32})
+                                                      : checkLongHeader(header);
     QVERIFY2(problem.isEmpty(), qPrintable(problem + ": " + header.join(',')));
     QVERIFY2(checkRows(rows, layout).isEmpty(), qPrintable(checkRows(rows, layout)));
-    // Everything polled: every documented column is there (power for the MS drive 17, iq and
-    // phase currents for the others).
+    // Everything polled: every documented column is there (power for the MS drives 5 and 17,
+    // iq and phase currents for the others, bus current and motor state for drive 5).
     QSet<QString> keys;
     for (const QString &name : header.mid(1))
         keys.insert(name.section('_', layout == CsvLayout::Wide ? 1 : 0));
