@@ -90,6 +90,7 @@ private slots:
     void damagedLimitsSendNothing();
     void haltStopsSending();
     void positionStepStartsWhereTheDriveIs();
+    void v235DriveKeepsItsKdGains();
     void runsSaveAndLoad();
     void badRunFileAddsNothing();
     void metricDefinitionsOneClickAway();
@@ -237,6 +238,28 @@ void tst_StepTestView::positionStepStartsWhereTheDriveIs()
     QCOMPARE(run.spec.loop, lk::tuning::StepLoop::Position);
     QVERIFY(run.trace.size() > 5);
     QCOMPARE(rig.count(1, Command::MultiPosition), 0); // always the speed-limited form
+}
+
+// A firmware 2.35 drive (MS: power, not iq) is stepped the same way; its run keeps the Kd
+// gains its generation has, under lkctl's names.
+void tst_StepTestView::v235DriveKeepsItsKdGains()
+{
+    SimRig rig(QStringLiteral("1:MS4015@2.35"));
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1, limitsOf(rig, 1));
+    QVERIFY(view);
+    setSpec(*view, lk::tuning::StepLoop::Speed, 0, 300, 0.4);
+    QVERIFY(view->stepTest()->runTest());
+    QVERIFY2(waitForRuns(*view, 1), qPrintable(view->stepTest()->statusText()));
+    const lk::tuning::StepRun run = view->runList()->runs().first();
+    QCOMPARE(run.generation, QStringLiteral("v2.35"));
+    QVERIFY(run.trace.effortIsPower);
+    for (const char *key : {"angle_kd", "speed_kp", "speed_kd", "iq_kd"})
+        QVERIFY2(run.gains.contains(QLatin1String(key)), key);
+    QCOMPARE(run.effortLimit, std::optional<double>(1000.0));
+    QCOMPARE(view->stepRuns()->model()->headerData(
+                 StepRunsModel::metricRow(StepMetricKind::PeakEffort), Qt::Vertical),
+             QVariant(QStringLiteral("Peak power")));
 }
 
 void tst_StepTestView::runsSaveAndLoad()
