@@ -103,9 +103,11 @@ StepOverlayChart::StepOverlayChart(QWidget *parent)
 void StepOverlayChart::rebuild(TimeChartView *view, const QString &valueTitle, bool timeTitle)
 {
     QChart *chart = view->chart();
-    chart->removeAllSeries();
-    for (QAbstractAxis *axis : chart->axes())
-        chart->removeAxis(axis);
+    chart->removeAllSeries(); // deletes them
+    for (QAbstractAxis *axis : chart->axes()) {
+        chart->removeAxis(axis); // hands the axis back to us: it would leak
+        delete axis;
+    }
     auto *time = new QValueAxis(chart);
     // One time title under the lower chart: QtCharts elides labels ("...") rather than
     // dropping them when a short chart has no room for a title as well.
