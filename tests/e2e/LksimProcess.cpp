@@ -84,10 +84,28 @@ QByteArray LksimProcess::log()
 
 QList<QByteArray> LksimProcess::receivedFrames()
 {
-    QList<QByteArray> frames;
+    // lksim logs each read of the pty ("<- 3E 80 02 ..."), and a read of a loaded lksim can
+    // hold two frames (a motor_off to a silent ID and the next one) or part of one: cut the
+    // byte stream into frames by their header (0x3E, command, ID, length, checksum, then the
+    // data and its checksum when length > 0), skipping a byte that cannot start one.
+    QByteArray stream;
     for (const QByteArray &line : log().split('\n')) {
         if (line.startsWith("<- "))
-            frames.append(line.mid(3).trimmed());
+            stream += QByteArray::fromHex(line.mid(3).trimmed());
+    }
+    QList<QByteArray> frames;
+    qsizetype at = 0;
+    while (stream.size() - at >= 5) {
+        if (quint8(stream.at(at)) != 0x3E) {
+            ++at;
+            continue;
+        }
+        const int length = quint8(stream.at(at + 3));
+        const qsizetype size = 5 + (length > 0 ? length + 1 : 0);
+        if (stream.size() - at < size)
+            break; // the rest has not been read yet
+        frames.append(stream.mid(at, size).toHex(' ').toUpper());
+        at += size;
     }
     return frames;
 }

@@ -39,7 +39,8 @@ public:
     QString errorString() const { return m_error; }
     /// Everything lksim wrote on standard error so far (its --verbose frame log).
     QByteArray log();
-    /// Frames lksim received, from its --verbose log: upper-case hex lines after "<- ".
+    /// Frames lksim received, cut from its --verbose log of pty reads ("<- " lines, which may
+    /// hold several frames or part of one): each as upper-case hex with spaces.
     QList<QByteArray> receivedFrames();
     /// The counters of every lksim started so far, the running one included (its collision
     /// count is always current, the other counters as of its last write: ask after stop()).
