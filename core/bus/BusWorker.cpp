@@ -341,16 +341,24 @@ void BusWorker::sendAttempt(Pending p)
     ++p.attempts;
     const protocol::Request &r = p.req.request;
     m_stats.requestSent(r.id, p.attempts > 1);
-    m_sentNs = m_clock.nsecsElapsed();
-    m_matcher.expect(r, p.bytes, m_sentNs, m_sentNs + earliestReplyNs(r.command));
     recordTraffic(TrafficEvent::Kind::Sent, p.bytes, r.id, static_cast<quint8>(r.command));
     const double timeoutS = p.attempts == 1 && p.req.firstTimeoutS > 0
                                 ? p.req.firstTimeoutS
                                 : m_timeout.timeoutS(r.command, baud());
+    const protocol::Request request = r;
     const QByteArray bytes = p.bytes;
     m_inflight = std::move(p);
-    m_replyTimer.start(std::max(1, static_cast<int>(std::ceil(timeoutS * 1e3))));
     m_transport->write(bytes);
+    if (!m_inflight)
+        return; // the write lost the link, which failed the request
+    // The reply clock starts once the bytes are handed to the port, not before: a thread
+    // preempted between the two would otherwise have spent part of the timeout (and of a
+    // probe's quiet period) before the request even left, and could talk over a drive that
+    // answers in time. Replies are only read from the event loop, so expecting one now is
+    // early enough.
+    m_sentNs = m_clock.nsecsElapsed();
+    m_matcher.expect(request, bytes, m_sentNs, m_sentNs + earliestReplyNs(request.command));
+    m_replyTimer.start(std::max(1, static_cast<int>(std::ceil(timeoutS * 1e3))));
 }
 
 qint64 BusWorker::earliestReplyNs(Command command) const
