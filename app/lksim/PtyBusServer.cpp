@@ -1,6 +1,7 @@
 #include "PtyBusServer.h"
 
 #include "PtyDevice.h"
+#include "RunQueueDelay.h"
 
 #include <protocol/Checksum.h>
 #include <protocol/Command.h>
@@ -47,7 +48,7 @@ void PtyBusServer::log(const char *direction, const QByteArray &bytes) const
         std::fprintf(stderr, "%s %s\n", direction, bytes.toHex(' ').toUpper().constData());
 }
 
-void PtyBusServer::onInput(const QByteArray &bytes, double now)
+void PtyBusServer::onInput(const QByteArray &bytes, double now, double blindS)
 {
     log("<-", bytes);
     m_lastInputAt = now;
@@ -70,7 +71,7 @@ void PtyBusServer::onInput(const QByteArray &bytes, double now)
             m_collision.reset();
         }
         for (const sim::SimReply &reply : replies)
-            schedule(reply, now);
+            schedule(reply, now, blindS);
     }
 }
 
@@ -79,13 +80,14 @@ void PtyBusServer::noteRequestEnd()
     m_wire.requestEnded(m_collision);
     if (!m_collision)
         return;
-    std::fprintf(stderr, "lksim: collision: request %s arrived %s\n",
+    std::fprintf(stderr, "lksim: %s: request %s arrived %s\n",
+                 m_collision->unjudged ? "unjudged overlap" : "collision",
                  m_frameBytes.toHex(' ').toUpper().constData(),
                  qPrintable(m_collision->describe()));
     writeStats(true);
 }
 
-void PtyBusServer::schedule(const sim::SimReply &reply, double now)
+void PtyBusServer::schedule(const sim::SimReply &reply, double now, double blindS)
 {
     double wireEnd = now + reply.delaySeconds;
     double replyWire = 0;
@@ -96,7 +98,7 @@ void PtyBusServer::schedule(const sim::SimReply &reply, double now)
         m_wireFreeAt = wireEnd;
     }
     m_wire.replyScheduled(wireEnd - replyWire, wireEnd, reply.id,
-                          static_cast<quint8>(reply.command));
+                          static_cast<quint8>(reply.command), blindS);
     // Replies keep their order even when a fault delays one of them.
     double due = wireEnd + m_options.adapterLatencyS;
     if (!m_pending.empty())
@@ -134,6 +136,8 @@ int PtyBusServer::run(const std::atomic<bool> &stop, std::atomic<bool> &dumpStat
     // every timed wake-up come late by up to that much, a third of a 1 Mbps transaction.
     prctl(PR_SET_TIMERSLACK, 1UL);
     pollfd pfd{m_pty.masterFd(), POLLIN, 0};
+    const RunQueueDelay runQueue;         // opened here: it measures the thread that serves
+    double lookedAt = monotonicSeconds(); // when lksim last saw that no input was waiting
     while (!stop.load()) {
         if (dumpStats.exchange(false))
             writeStats(true);
@@ -151,6 +155,8 @@ int PtyBusServer::run(const std::atomic<bool> &stop, std::atomic<bool> &dumpStat
         if (m_options.busyPoll && m_lastInputAt >= 0 && now - m_lastInputAt < kBusyWindowS)
             wait = 0;
         timespec ts{static_cast<time_t>(wait), static_cast<long>(std::fmod(wait, 1.0) * 1e9)};
+        const double pollAt = monotonicSeconds();
+        const double waitedBefore = runQueue.seconds();
         const int n = ppoll(&pfd, 1, &ts, nullptr);
         if (n < 0 && errno != EINTR) {
             std::perror("lksim: ppoll");
@@ -158,10 +164,14 @@ int PtyBusServer::run(const std::atomic<bool> &stop, std::atomic<bool> &dumpStat
             return 1;
         }
         now = monotonicSeconds();
+        // Input may have arrived while lksim worked since it last looked, or while it waited
+        // for a CPU after ppoll should have woken it: that much earlier than `now`.
+        const double blindS = (pollAt - lookedAt) + (runQueue.seconds() - waitedBefore);
+        lookedAt = now;
         if (n > 0 && (pfd.revents & POLLIN)) {
             const QByteArray bytes = m_pty.readAvailable();
             if (!bytes.isEmpty())
-                onInput(bytes, now);
+                onInput(bytes, now, blindS);
         } else if (now - m_lastAdvanceAt >= kAdvanceStepS) {
             m_bus.advanceTo(now); // physics needs no finer steps; spinning must not run it
             m_lastAdvanceAt = now;

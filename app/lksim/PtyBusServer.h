@@ -60,8 +60,9 @@ private:
         double due = 0; ///< monotonic seconds at which the bytes are written to the pty
         QByteArray bytes;
     };
-    void onInput(const QByteArray &bytes, double now);
-    void schedule(const sim::SimReply &reply, double now);
+    /// Host bytes read at `now`; `blindS`: how long before that they may have arrived.
+    void onInput(const QByteArray &bytes, double now, double blindS);
+    void schedule(const sim::SimReply &reply, double now, double blindS);
     void noteRequestEnd();
     bool flushDue(double now);
     double requestWireSeconds(quint8 command) const;

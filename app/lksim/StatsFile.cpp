@@ -19,6 +19,7 @@ bool StatsFile::write(const WireCounters &counters, qint64 badChecksumReplies, b
                         {QStringLiteral("collisions"), counters.collisions()},
                         {QStringLiteral("collisions_before_reply"), counters.collisionsBefore},
                         {QStringLiteral("collisions_during_reply"), counters.collisionsDuring},
+                        {QStringLiteral("overlaps_unjudged"), counters.overlapsUnjudged},
                         {QStringLiteral("bad_checksum_replies"), badChecksumReplies},
                         {QStringLiteral("running"), running}};
     // A temporary file renamed over the old one: a reader sees the old or the new counters,

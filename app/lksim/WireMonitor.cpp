@@ -9,20 +9,26 @@ QString WireMonitor::Collision::describe() const
     const QString reply = QStringLiteral("ID %1's reply to %2")
                               .arg(id)
                               .arg(protocol::CommandTable::codeText(command));
-    if (beforeReply)
-        return QStringLiteral("before %1 began (due in %2 ms)")
-            .arg(reply)
-            .arg(offsetS * 1e3, 0, 'f', 3);
-    return QStringLiteral("%1 ms into %2 (%3 ms on the wire)")
-        .arg(offsetS * 1e3, 0, 'f', 3)
-        .arg(reply)
-        .arg(replyS * 1e3, 0, 'f', 3);
+    QString text = beforeReply ? QStringLiteral("before %1 began (due in %2 ms)")
+                                     .arg(reply)
+                                     .arg(offsetS * 1e3, 0, 'f', 3)
+                               : QStringLiteral("%1 ms into %2 (%3 ms on the wire)")
+                                     .arg(offsetS * 1e3, 0, 'f', 3)
+                                     .arg(reply)
+                                     .arg(replyS * 1e3, 0, 'f', 3);
+    if (unjudged)
+        text += QStringLiteral("; lksim may have read ID %1's request up to %2 ms late (it was "
+                               "busy or waited for a CPU), so a drive could have finished "
+                               "that reply in time")
+                    .arg(id)
+                    .arg(blindS * 1e3, 0, 'f', 3);
+    return text;
 }
 
-void WireMonitor::replyScheduled(double startS, double endS, int id, quint8 command)
+void WireMonitor::replyScheduled(double startS, double endS, int id, quint8 command, double blindS)
 {
     ++m_counters.replies;
-    m_windows.push_back(Window{startS, endS, id, command});
+    m_windows.push_back(Window{startS, endS, id, command, blindS});
 }
 
 std::optional<WireMonitor::Collision> WireMonitor::overlapAt(double nowS)
@@ -39,13 +45,20 @@ std::optional<WireMonitor::Collision> WireMonitor::overlapAt(double nowS)
     c.command = hit.command;
     c.offsetS = c.beforeReply ? hit.startS - nowS : nowS - hit.startS;
     c.replyS = hit.endS - hit.startS;
+    // Had the request come as early as it may have, the reply would have ended blindS sooner.
+    c.blindS = hit.blindS;
+    c.unjudged = nowS >= hit.endS - hit.blindS;
     return c;
 }
 
 void WireMonitor::requestEnded(const std::optional<Collision> &collision)
 {
     ++m_counters.requests;
-    if (collision)
+    if (!collision)
+        return;
+    if (collision->unjudged)
+        ++m_counters.overlapsUnjudged;
+    else
         ++(collision->beforeReply ? m_counters.collisionsBefore : m_counters.collisionsDuring);
 }
 

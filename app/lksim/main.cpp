@@ -77,8 +77,10 @@ int main(int argc, char *argv[])
         "both frames on a real bus. lksim counts each such request as a collision, logs it\n"
         "on standard error (\"lksim: collision: request ... arrived ...\"), prints a summary\n"
         "line on exit (\"lksim: N requests, N replies, N collisions ...\") and keeps the\n"
-        "counts in --stats-file. Without --wire-time a reply is on the wire for an instant,\n"
-        "--reply-delay-us after its request.\n\n"
+        "counts in --stats-file. A request that overlaps a reply only because lksim may have\n"
+        "read the request that asked for it late (a loaded machine) is logged as an\n"
+        "\"unjudged overlap\" and counted apart. Without --wire-time a reply is on the wire\n"
+        "for an instant, --reply-delay-us after its request.\n\n"
         "Example:\n"
         "  lksim --motors 3:MF,17:MS,32:MG --link /tmp/lkbus --wire-time --baud 115200\n"
         "  lkctl scan --port /tmp/lkbus"));
@@ -147,7 +149,8 @@ int main(int argc, char *argv[])
         QStringLiteral("stats-file"),
         QStringLiteral("Keep the counters in PATH as one line of JSON: {\"requests\":N,"
                        "\"replies\":N,\"collisions\":N,\"collisions_before_reply\":N,"
-                       "\"collisions_during_reply\":N,\"bad_checksum_replies\":N,"
+                       "\"collisions_during_reply\":N,\"overlaps_unjudged\":N,"
+                       "\"bad_checksum_replies\":N,"
                        "\"running\":true}. Rewritten whole at "
                        "start, after every collision (the collision count is always current), "
                        "on SIGUSR1 (all counters current) and at exit (\"running\":false)."),
@@ -218,8 +221,9 @@ int main(int argc, char *argv[])
     const lk::app::WireCounters &c = server.counters();
     std::fprintf(stderr,
                  "lksim: %lld requests, %lld replies, %lld collisions (%lld before a reply "
-                 "began, %lld during one), %lld bad-checksum 0xA4 replies\n",
+                 "began, %lld during one), %lld unjudged overlaps, %lld bad-checksum 0xA4 "
+                 "replies\n",
                  c.requests, c.replies, c.collisions(), c.collisionsBefore, c.collisionsDuring,
-                 server.badChecksumReplies());
+                 c.overlapsUnjudged, server.badChecksumReplies());
     return rc;
 }

@@ -87,7 +87,9 @@ inline QStringList simArgs(const QString &link, const QStringList &extra = {})
 
 /// Half duplex: no request may reach lksim while a reply is due or on the wire. Stops `sim`
 /// (its counters are then final) and fails the current test when lksim counted a collision,
-/// quoting lksim's log of them. Every end-to-end test ends with this check.
+/// quoting lksim's log of them. Every end-to-end test ends with this check. Overlaps lksim
+/// could not judge (it read the asking request late on a loaded machine) are reported, not
+/// failed: the host may have kept to a real drive's timing.
 inline void verifyNoCollisions(LksimProcess &sim)
 {
     sim.stop();
@@ -97,6 +99,8 @@ inline void verifyNoCollisions(LksimProcess &sim)
     for (const QByteArray &line : sim.log().split('\n')) {
         if (line.contains("collision:"))
             lines += line + '\n';
+        else if (line.contains("unjudged overlap:"))
+            qInfo("%s", line.constData());
     }
     QVERIFY2(c->collisions == 0, qPrintable(QStringLiteral("lksim counted %1 collision(s):\n%2")
                                                 .arg(c->collisions)

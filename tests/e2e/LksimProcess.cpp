@@ -125,6 +125,7 @@ std::optional<LksimCounters> LksimProcess::counters() const
         sum.requests += o.value(QStringLiteral("requests")).toInteger();
         sum.replies += o.value(QStringLiteral("replies")).toInteger();
         sum.collisions += o.value(QStringLiteral("collisions")).toInteger();
+        sum.overlapsUnjudged += o.value(QStringLiteral("overlaps_unjudged")).toInteger();
         sum.badChecksumReplies += o.value(QStringLiteral("bad_checksum_replies")).toInteger();
     }
     return sum;
