@@ -53,6 +53,8 @@ private:
     void onReadyRead();
     void onReopenPoll();
     void lostPort(TransportError::Kind kind, const QString &detail);
+    /// Through QSerialPort's buffer, written out at once (flush()).
+    void writeBuffered(const QByteArray &bytes);
     void setState(State state);
     void report(const TransportError &error);
     TransportError openFailure(QSerialPort::SerialPortError error, const QString &detail) const;
