@@ -30,13 +30,22 @@ int decimalsFor(double step)
     return std::clamp(int(std::ceil(-std::log10(step) - 1e-9)), 0, 6);
 }
 
+// Each setter is called only for a change: QValueAxis (Qt 6.4) emits its change signal on
+// every call, and QtCharts answers labelFormatChanged with a relayout of the whole chart (every
+// axis builds its labels again as rich text). Called at every frame as the time axis slides,
+// that relayout was a fifth of the GUI thread's time with every signal plotted.
 void setNiceTicks(QValueAxis *axis, double span, int ticks)
 {
     const double step = niceStep(span / ticks);
-    axis->setTickType(QValueAxis::TicksDynamic);
-    axis->setTickAnchor(0);
-    axis->setTickInterval(step);
-    axis->setLabelFormat(QStringLiteral("%.%1f").arg(decimalsFor(step)));
+    if (axis->tickType() != QValueAxis::TicksDynamic)
+        axis->setTickType(QValueAxis::TicksDynamic);
+    if (axis->tickAnchor() != 0)
+        axis->setTickAnchor(0);
+    if (axis->tickInterval() != step)
+        axis->setTickInterval(step);
+    const QString format = QStringLiteral("%.%1f").arg(decimalsFor(step));
+    if (axis->labelFormat() != format)
+        axis->setLabelFormat(format);
 }
 
 // QtCharts lays the ticks out on every setter. Going from a flat signal (range ~0.001) to a
@@ -186,6 +195,10 @@ QLineSeries *StripChart::addLineSeries(int index)
     series->setName(
         tr("ID %1 %2").arg(trace.driveId).arg(channelLabel(trace.channel, trace.power)));
     QPen pen(traceColor(index), 1);
+    // Cosmetic: the raster engine draws it directly, dashes included; a non-cosmetic pen goes
+    // through QPainterPathStroker on every frame (a tenth of the GUI thread with every signal
+    // plotted). At a width of one pixel both look the same.
+    pen.setCosmetic(true);
     if (m_coloring == Coloring::ByChannel) {
         // Several drives in one overlaid chart: the drive shows as the dash pattern.
         static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine,
