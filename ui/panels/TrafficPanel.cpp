@@ -84,6 +84,7 @@ TrafficPanel::TrafficPanel(BusModel *model, QWidget *parent, int capacity)
         }
         m_model->setSeries(series);
     });
+    connect(m_bus, &BusModel::statisticsChanged, this, &TrafficPanel::updateCounts);
     updateCounts();
 }
 
@@ -193,21 +194,33 @@ void TrafficPanel::flush()
 
 QString TrafficPanel::countsText() const
 {
+    // The bus's own counters first, the numbers the Dashboard and the status bar show: the
+    // log may have been paused, cleared or trimmed, the bus statistics were not.
+    const bus::LinkStatistics &b = m_bus->statistics().bus;
+    QStringList bus;
+    bus << tr("TX %1").arg(b.requests) << tr("RX %1").arg(b.replies)
+        << tr("timeouts %1").arg(b.timeouts) << tr("checksum errors %1").arg(b.checksumErrors);
+    if (b.parseErrors > 0)
+        bus << tr("other frame errors %1").arg(b.parseErrors);
+    if (b.lateReplies > 0)
+        bus << tr("late replies %1").arg(b.lateReplies);
+    if (b.unexpectedFrames > 0)
+        bus << tr("unexpected frames %1").arg(b.unexpectedFrames);
+    // Then what this log holds: its frame faults by kind, which the bus only totals.
     const TrafficCounts &c = m_model->counts();
-    QStringList parts;
-    parts << tr("TX %1").arg(c.sent) << tr("RX %1").arg(c.frames)
-          << tr("timeouts %1").arg(c.timeouts);
+    QStringList log;
     for (int i = 0; i < TrafficCounts::kParseErrorKinds; ++i) {
         if (c.faults[static_cast<size_t>(i)] > 0)
-            parts << QStringLiteral("%1 %2")
-                         .arg(QLatin1String(protocol::parseErrorName(protocol::ParseError(i))))
-                         .arg(c.faults[static_cast<size_t>(i)]);
+            log << QStringLiteral("%1 %2")
+                       .arg(QLatin1String(protocol::parseErrorName(protocol::ParseError(i))))
+                       .arg(c.faults[static_cast<size_t>(i)]);
     }
     if (c.faultTotal() == 0)
-        parts << tr("no frame faults");
+        log << tr("no frame faults");
     if (m_model->droppedRows() > 0)
-        parts << tr("%1 oldest rows dropped").arg(m_model->droppedRows());
-    return parts.join(QStringLiteral(" \u00b7 "));
+        log << tr("%1 oldest rows dropped").arg(m_model->droppedRows());
+    const QString dot = QStringLiteral(" \u00b7 ");
+    return tr("Bus: %1. This log: %2.").arg(bus.join(dot), log.join(dot));
 }
 
 void TrafficPanel::updateCounts()

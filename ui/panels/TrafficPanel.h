@@ -33,6 +33,8 @@ public:
     bool wantsCapture() const { return m_wantCapture; }
     /// Write the rows shown (after filters) for `lkctl decode -`; false with a message.
     bool exportTo(const QString &fileName, QString *error = nullptr) const;
+    /// The bus's counters (the same as the Dashboard's and the status bar's, cleared with
+    /// them when the link closes), then this log's frame faults by kind and dropped rows.
     QString countsText() const;
 
 public slots:

@@ -9,6 +9,7 @@
 
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
+#include <QtWidgets/QLabel>
 #include <QtWidgets/QToolButton>
 
 using lk::bus::TrafficBatch;
@@ -113,6 +114,7 @@ private slots:
     void filterByIdAndCommand();
     void exportParsesBack();
     void pauseKeepsCounting();
+    void countsAreTheBusStatistics();
     void exportReadByLkctl();
 };
 
@@ -264,6 +266,39 @@ void tst_TrafficModel::pauseKeepsCounting()
     QCOMPARE(panel.trafficModel()->rowCount(), 7); // frozen
     QCOMPARE(panel.trafficModel()->counts().timeouts, quint64(2));
     QVERIFY(panel.countsText().contains(QStringLiteral("bad_data_checksum 2")));
+}
+
+void tst_TrafficModel::countsAreTheBusStatistics()
+{
+    // The counts line shows the bus's counters (what the Dashboard and the status bar show),
+    // whatever the log holds; the log adds its faults by kind.
+    lk::ui::BusModel bus;
+    lk::ui::TrafficPanel panel(&bus);
+    panel.appendTraffic(sampleTraffic());
+    panel.flush();
+    lk::bus::BusStatistics st;
+    st.bus.requests = 120;
+    st.bus.replies = 117;
+    st.bus.timeouts = 3;
+    st.bus.checksumErrors = 1;
+    st.bus.lateReplies = 2;
+    bus.setStatistics(st);
+    const QString text = panel.countsText();
+    QVERIFY2(text.contains(QStringLiteral("TX 120")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("RX 117")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("timeouts 3")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("checksum errors 1")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("late replies 2")), qPrintable(text));
+    QVERIFY2(!text.contains(QStringLiteral("unexpected")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("bad_data_checksum 1")), qPrintable(text));
+    auto *counts = panel.findChild<QLabel *>(QStringLiteral("trafficCounts"));
+    QVERIFY(counts);
+    QCOMPARE(counts->text(), text); // updated as the statistics arrive
+
+    // Closing the link clears the statistics: the counts follow.
+    bus.setStatistics({});
+    QVERIFY2(panel.countsText().contains(QStringLiteral("TX 0")), qPrintable(panel.countsText()));
+    QCOMPARE(counts->text(), panel.countsText());
 }
 
 void tst_TrafficModel::exportReadByLkctl()
