@@ -7,6 +7,7 @@
 #include <main/BusController.h>
 #include <main/LanguageLoader.h>
 #include <main/MainWindow.h>
+#include <main/SettingsFile.h>
 #include <main/StartupOptions.h>
 #include <main/ThemePalette.h>
 #include <panels/BusModel.h>
@@ -184,7 +185,10 @@ int runStudio(const lk::ui::StartupOptions &options)
 {
     if (!options.palette.isEmpty())
         lk::ui::ThemePalette::apply(options.palette); // else the system's, untouched
-    lk::ui::AppSettings settings(options.settingsFile);
+    // One QSettings on the file for the whole window: AppSettings and the drive views' store
+    // both keep their keys in it.
+    lk::ui::SettingsFile settingsFile(options.settingsFile);
+    lk::ui::AppSettings settings(settingsFile);
     // Before any widget exists: texts are translated when the widgets are built.
     const QString preferred = options.language.isEmpty() ? settings.language() : options.language;
     lk::ui::LanguageLoader::install(

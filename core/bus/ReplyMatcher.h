@@ -54,7 +54,6 @@ public:
     void timedOut();
     /// The link was reopened: nothing old can arrive any more.
     void reset();
-    bool isExpecting() const { return m_expected.has_value(); }
 
     Outcome classify(const protocol::ParseEvent &event, const protocol::DecodeContext &context,
                      qint64 nowNs);

@@ -437,7 +437,10 @@ QString writeFileAtomically(const QString &path, const QByteArray &bytes)
     if (!file.open(QIODevice::WriteOnly))
         return QCoreApplication::translate("lk::record::ParameterSet", "cannot write %1: %2")
             .arg(path, file.errorString());
-    if (file.write(bytes) != bytes.size()) {
+    // A short file only reaches the disk when the buffer is flushed, and a flush that fails
+    // inside commit() (a full disk) does not stop Qt 6.4's QSaveFile from renaming the cut
+    // copy over the target: flush here, where a failure can still cancel.
+    if (file.write(bytes) != bytes.size() || !file.flush()) {
         const QString why = file.errorString();
         file.cancelWriting();
         return QCoreApplication::translate("lk::record::ParameterSet", "cannot write %1: %2")

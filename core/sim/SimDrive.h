@@ -47,7 +47,6 @@ public:
     // What the protocol exposes.
     RunState runState() const { return m_runState; }
     std::optional<protocol::Command> activeCommand() const { return m_activeCommand; }
-    const LoopTarget &commandTarget() const { return m_command; }
     protocol::PidGains ramPid() const { return m_ramPid; }
     const SimParams &ramParams() const { return m_ramParams; } ///< V2.35 drives
     bool brakeReleased() const { return m_brakeReleased; }

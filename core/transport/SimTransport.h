@@ -42,7 +42,6 @@ public:
     void setBaud(int baud);
     /// Delay replies by the time request and reply bytes take on the wire at baud().
     void setWireTimeEmulation(bool on) { m_wireTime = on; }
-    bool wireTimeEmulation() const { return m_wireTime; }
     /// Drive turnaround (seconds) before each reply; forwards to the bus.
     void setReplyDelay(double seconds);
     double replyDelay() const;

@@ -4199,10 +4199,6 @@
         <source>Traffic log (*.txt);;All files (*)</source>
         <translation>通信记录 (*.txt);;所有文件 (*)</translation>
     </message>
-    <message>
-        <source>Export failed: %1</source>
-        <translation>导出失败：%1</translation>
-    </message>
 </context>
 <context>
     <name>lk::ui::TuningFile</name>

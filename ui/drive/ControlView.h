@@ -78,7 +78,6 @@ public:
     void haltLocalMotion(const QString &reason);
 
     ControlModePanel *modePanel() const { return m_modes; }
-    SoftLimitsEditor *limitsEditor() const { return m_limitsEditor; }
     JogPanel *jogPanel() const { return m_jog; }
     SetpointPanel *setpointPanel() const { return m_setpointPanel; }
     BrakePanel *brakePanel() const { return m_brake; }

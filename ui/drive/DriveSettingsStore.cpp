@@ -78,23 +78,17 @@ void MemoryDriveStore::setGearRatio(const QString &driveKey, double ratio)
         m_ratios.insert(driveKey, ratio);
 }
 
-IniDriveStore::IniDriveStore(const QString &iniFile)
-    : m_settings(iniFile.isEmpty() ? std::make_unique<QSettings>()
-                                   : std::make_unique<QSettings>(iniFile, QSettings::IniFormat))
-{
-}
-
-IniDriveStore::~IniDriveStore() = default;
+IniDriveStore::IniDriveStore(QSettings &settings) : m_settings(settings) {}
 
 std::optional<safety::SoftLimits> IniDriveStore::softLimits(const QString &driveKey,
                                                             const safety::SoftLimits &fallback,
                                                             QString *error)
 {
     const QString key = softLimitsKey(driveKey);
-    if (!m_settings->contains(key))
+    if (!m_settings.contains(key))
         return std::nullopt;
     // An INI value with unquoted commas reads back as a list: rejoin it for the JSON check.
-    const QVariant value = m_settings->value(key);
+    const QVariant value = m_settings.value(key);
     const QString text = value.typeId() == QMetaType::QStringList
                              ? value.toStringList().join(QLatin1Char(','))
                              : value.toString();
@@ -113,7 +107,7 @@ QString IniDriveStore::softLimitsKey(const QString &driveKey)
 
 void IniDriveStore::setSoftLimits(const QString &driveKey, const safety::SoftLimits &limits)
 {
-    m_settings->setValue(
+    m_settings.setValue(
         keyPath(driveKey, "softLimits"),
         QString::fromUtf8(QJsonDocument(limits.toJson()).toJson(QJsonDocument::Compact)));
 }
@@ -121,27 +115,27 @@ void IniDriveStore::setSoftLimits(const QString &driveKey, const safety::SoftLim
 std::optional<int> IniDriveStore::encoderBits(const QString &driveKey)
 {
     bool ok = false;
-    const int bits = m_settings->value(keyPath(driveKey, "encoderBits")).toInt(&ok);
+    const int bits = m_settings.value(keyPath(driveKey, "encoderBits")).toInt(&ok);
     return ok && validBits(bits) ? std::optional<int>(bits) : std::nullopt;
 }
 
 void IniDriveStore::setEncoderBits(const QString &driveKey, int bits)
 {
     if (validBits(bits))
-        m_settings->setValue(keyPath(driveKey, "encoderBits"), bits);
+        m_settings.setValue(keyPath(driveKey, "encoderBits"), bits);
 }
 
 std::optional<double> IniDriveStore::gearRatio(const QString &driveKey)
 {
     bool ok = false;
-    const double ratio = m_settings->value(keyPath(driveKey, "gearRatio")).toDouble(&ok);
+    const double ratio = m_settings.value(keyPath(driveKey, "gearRatio")).toDouble(&ok);
     return ok && validRatio(ratio) ? std::optional<double>(ratio) : std::nullopt;
 }
 
 void IniDriveStore::setGearRatio(const QString &driveKey, double ratio)
 {
     if (validRatio(ratio))
-        m_settings->setValue(keyPath(driveKey, "gearRatio"), ratio);
+        m_settings.setValue(keyPath(driveKey, "gearRatio"), ratio);
 }
 
 QStringList IniDriveStore::damagedEntries(QSettings &settings)
@@ -184,7 +178,7 @@ QStringList IniDriveStore::damagedEntries(QSettings &settings)
 
 void IniDriveStore::sync()
 {
-    m_settings->sync();
+    m_settings.sync();
 }
 
 } // namespace lk::ui

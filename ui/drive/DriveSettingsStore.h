@@ -7,7 +7,6 @@
 #include <QtCore/QString>
 #include <QtCore/QStringList>
 
-#include <memory>
 #include <optional>
 
 class QSettings;
@@ -59,9 +58,9 @@ private:
 /// Settings in a QSettings INI file (group "drives/<key>"); values read back are validated.
 class IniDriveStore : public DriveSettingsStore {
 public:
-    /// `iniFile` empty: the user's lkstudio settings file.
-    explicit IniDriveStore(const QString &iniFile = {});
-    ~IniDriveStore() override;
+    /// Kept in `settings`, which outlives the store: lkstudio's one QSettings on its file
+    /// (SettingsFile), shared with AppSettings so that neither loses what the other wrote.
+    explicit IniDriveStore(QSettings &settings);
 
     std::optional<safety::SoftLimits> softLimits(const QString &driveKey,
                                                  const safety::SoftLimits &fallback,
@@ -79,7 +78,7 @@ public:
     static QStringList damagedEntries(QSettings &settings);
 
 private:
-    std::unique_ptr<QSettings> m_settings;
+    QSettings &m_settings;
 };
 
 } // namespace lk::ui

@@ -43,7 +43,6 @@ public:
     bool isChanged(int row) const;
     bool anyChanged() const;
     QDoubleSpinBox *editor(int row) const { return m_rows.at(row).edit; }
-    QLabel *holdsLabel(int row) const { return m_rows.at(row).holds; }
 
 signals:
     /// The user changed a pending value.

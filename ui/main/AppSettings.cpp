@@ -1,5 +1,7 @@
 #include "AppSettings.h"
 
+#include "SettingsFile.h"
+
 #include <bus/BusTiming.h>
 #include <drive/DriveSettingsStore.h>
 
@@ -126,15 +128,23 @@ void migrateFrom0(QSettings &s)
 
 } // namespace
 
+AppSettings::AppSettings(SettingsFile &file) : m_file(file), m_settings(file.settings())
+{
+    readFile();
+}
+
 AppSettings::AppSettings(const QString &iniFile)
-    : m_settings(iniFile.isEmpty() ? std::make_unique<QSettings>(
-                                         QSettings::IniFormat, QSettings::UserScope,
-                                         QStringLiteral("lkstudio"), QStringLiteral("lkstudio"))
-                                   : std::make_unique<QSettings>(iniFile, QSettings::IniFormat))
+    : m_ownFile(std::make_unique<SettingsFile>(iniFile)), m_file(*m_ownFile),
+      m_settings(m_file.settings())
+{
+    readFile();
+}
+
+void AppSettings::readFile()
 {
     // Before migrating: migration drops bad values, and the user must hear about them.
-    m_damage = findDamage(*m_settings);
-    m_loadedVersion = migrate(*m_settings);
+    m_damage = findDamage(m_settings);
+    m_loadedVersion = migrate(m_settings);
 }
 
 QStringList AppSettings::findDamage(QSettings &settings)
@@ -162,12 +172,12 @@ QString AppSettings::damageReport() const
 
 AppSettings::~AppSettings()
 {
-    m_settings->sync();
+    m_settings.sync();
 }
 
 QString AppSettings::fileName() const
 {
-    return m_settings->fileName();
+    return m_settings.fileName();
 }
 
 int AppSettings::migrate(QSettings &settings)
@@ -184,7 +194,7 @@ int AppSettings::migrate(QSettings &settings)
 
 ConnectionChoice AppSettings::connection() const
 {
-    const QSettings &s = *m_settings;
+    const QSettings &s = m_settings;
     ConnectionChoice c;
     const QString kind = s.value(QLatin1String(key::kConnectionKind)).toString();
     c.kind = kind == QLatin1String(kKindSerial) ? ConnectionChoice::Kind::Serial
@@ -198,7 +208,7 @@ ConnectionChoice AppSettings::connection() const
 
 void AppSettings::setConnection(const ConnectionChoice &choice)
 {
-    QSettings &s = *m_settings;
+    QSettings &s = m_settings;
     s.setValue(QLatin1String(key::kConnectionKind),
                QLatin1String(choice.isSimulator() ? kKindSimulator : kKindSerial));
     s.setValue(QLatin1String(key::kConnectionPort), choice.port);
@@ -208,93 +218,93 @@ void AppSettings::setConnection(const ConnectionChoice &choice)
 
 int AppSettings::scanFirstId() const
 {
-    const QVariant v = m_settings->value(QLatin1String(key::kScanFirstId));
+    const QVariant v = m_settings.value(QLatin1String(key::kScanFirstId));
     return validId(v) ? v.toInt() : kMinId;
 }
 
 int AppSettings::scanLastId() const
 {
-    const QVariant v = m_settings->value(QLatin1String(key::kScanLastId));
+    const QVariant v = m_settings.value(QLatin1String(key::kScanLastId));
     const int last = validId(v) ? v.toInt() : kMaxId;
     return qMax(last, scanFirstId());
 }
 
 bool AppSettings::scanSweepBauds() const
 {
-    return m_settings->value(QLatin1String(key::kScanSweepBauds), false).toBool();
+    return m_settings.value(QLatin1String(key::kScanSweepBauds), false).toBool();
 }
 
 void AppSettings::setScanRange(int firstId, int lastId, bool sweepBauds)
 {
-    m_settings->setValue(QLatin1String(key::kScanFirstId), qBound(kMinId, firstId, kMaxId));
-    m_settings->setValue(QLatin1String(key::kScanLastId), qBound(kMinId, lastId, kMaxId));
-    m_settings->setValue(QLatin1String(key::kScanSweepBauds), sweepBauds);
+    m_settings.setValue(QLatin1String(key::kScanFirstId), qBound(kMinId, firstId, kMaxId));
+    m_settings.setValue(QLatin1String(key::kScanLastId), qBound(kMinId, lastId, kMaxId));
+    m_settings.setValue(QLatin1String(key::kScanSweepBauds), sweepBauds);
 }
 
 double AppSettings::pollRateHz() const
 {
-    const QVariant v = m_settings->value(QLatin1String(key::kPollRateHz));
+    const QVariant v = m_settings.value(QLatin1String(key::kPollRateHz));
     return validRate(v) ? v.toDouble() : 0.0;
 }
 
 void AppSettings::setPollRateHz(double hz)
 {
-    m_settings->setValue(QLatin1String(key::kPollRateHz), qBound(0.0, hz, kMaxPollRateHz));
+    m_settings.setValue(QLatin1String(key::kPollRateHz), qBound(0.0, hz, kMaxPollRateHz));
 }
 
 QString AppSettings::language() const
 {
-    const QString language = m_settings->value(QLatin1String(key::kLanguage)).toString();
+    const QString language = m_settings.value(QLatin1String(key::kLanguage)).toString();
     return validLanguage(language) ? language : QString();
 }
 
 void AppSettings::setLanguage(const QString &language)
 {
     if (validLanguage(language) && !language.isEmpty())
-        m_settings->setValue(QLatin1String(key::kLanguage), language);
+        m_settings.setValue(QLatin1String(key::kLanguage), language);
     else
-        m_settings->remove(QLatin1String(key::kLanguage));
+        m_settings.remove(QLatin1String(key::kLanguage));
 }
 
 QString AppSettings::currentView() const
 {
-    return m_settings->value(QLatin1String(key::kCurrentView)).toString();
+    return m_settings.value(QLatin1String(key::kCurrentView)).toString();
 }
 
 void AppSettings::setCurrentView(const QString &name)
 {
-    m_settings->setValue(QLatin1String(key::kCurrentView), name);
+    m_settings.setValue(QLatin1String(key::kCurrentView), name);
 }
 
 QString AppSettings::lastFolder(const QString &purpose) const
 {
-    return m_settings->value(QLatin1String(key::kLastFolderGroup) + purpose).toString();
+    return m_settings.value(QLatin1String(key::kLastFolderGroup) + purpose).toString();
 }
 
 void AppSettings::setLastFolder(const QString &purpose, const QString &folder)
 {
-    m_settings->setValue(QLatin1String(key::kLastFolderGroup) + purpose, folder);
+    m_settings.setValue(QLatin1String(key::kLastFolderGroup) + purpose, folder);
 }
 
 QByteArray AppSettings::windowGeometry() const
 {
-    return m_settings->value(QLatin1String(key::kWindowGeometry)).toByteArray();
+    return m_settings.value(QLatin1String(key::kWindowGeometry)).toByteArray();
 }
 
 QByteArray AppSettings::windowState() const
 {
-    return m_settings->value(QLatin1String(key::kWindowState)).toByteArray();
+    return m_settings.value(QLatin1String(key::kWindowState)).toByteArray();
 }
 
 void AppSettings::setWindow(const QByteArray &geometry, const QByteArray &state)
 {
-    m_settings->setValue(QLatin1String(key::kWindowGeometry), geometry);
-    m_settings->setValue(QLatin1String(key::kWindowState), state);
+    m_settings.setValue(QLatin1String(key::kWindowGeometry), geometry);
+    m_settings.setValue(QLatin1String(key::kWindowState), state);
 }
 
 void AppSettings::sync()
 {
-    m_settings->sync();
+    m_settings.sync();
 }
 
 } // namespace lk::ui

@@ -13,6 +13,8 @@ class QSettings;
 
 namespace lk::ui {
 
+class SettingsFile;
+
 /// The one place lkstudio's settings live: every key is defined once (AppSettings.cpp), read
 /// through typed getters that validate what they read, and versioned with a migration step
 /// per release so that an upgrade never misreads an older file.
@@ -23,13 +25,19 @@ public:
     /// key changes meaning or name.
     static constexpr int kVersion = 1;
 
-    /// Settings in `iniFile` (tests, --settings), or the user's default file when empty.
+    /// Settings in `file`, which outlives this object and is shared with the other keepers of
+    /// settings in the same file (the drive views' store).
+    explicit AppSettings(SettingsFile &file);
+    /// Settings in a file of their own: `iniFile` (tests), or the user's default file when
+    /// empty. file() shares it.
     explicit AppSettings(const QString &iniFile = {});
     ~AppSettings();
     AppSettings(const AppSettings &) = delete;
     AppSettings &operator=(const AppSettings &) = delete;
 
     QString fileName() const;
+    /// The settings file these settings are kept in, for the others kept in it.
+    SettingsFile &file() const { return m_file; }
     /// The version of the file as found on disk before migration (0: unversioned or new).
     int loadedVersion() const { return m_loadedVersion; }
     /// The file was written by a newer lkstudio: it is read, never migrated downwards.
@@ -74,9 +82,12 @@ public:
     static int migrate(QSettings &settings);
 
 private:
+    void readFile();
     static QStringList findDamage(QSettings &settings);
 
-    std::unique_ptr<QSettings> m_settings;
+    std::unique_ptr<SettingsFile> m_ownFile; ///< only when built from a file name
+    SettingsFile &m_file;
+    QSettings &m_settings;
     int m_loadedVersion = 0;
     QStringList m_damage;
 };

@@ -41,7 +41,6 @@ public:
     std::shared_ptr<SimulatedBus> simulator() const { return m_sim; }
     /// Scan by itself once each new connection is open (default on).
     void setScanOnConnect(bool on) { m_scanOnConnect = on; }
-    ConnectionChoice currentChoice() const { return m_choice; }
     double pollRateHz() const { return m_pollRateHz; }
     /// Commands of the poll plan the dashboard needs (standard mix plus single-turn angle).
     static bus::PollPlan pollPlanFor(const QVector<int> &ids, double rateHz);

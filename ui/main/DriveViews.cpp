@@ -1,6 +1,7 @@
 #include "DriveViews.h"
 
 #include "BusController.h"
+#include "SettingsFile.h"
 
 #include <bus/BusSession.h>
 #include <drive/ControlView.h>
@@ -17,9 +18,9 @@
 namespace lk::ui {
 
 DriveViews::DriveViews(BusModel *model, BusController *controller, TelemetryStore *store,
-                       const QString &settingsFile, QWidget *parentWidget)
+                       SettingsFile &settingsFile, QWidget *parentWidget)
     : QObject(parentWidget), m_model(model), m_controller(controller),
-      m_settings(std::make_unique<IniDriveStore>(settingsFile)),
+      m_settings(std::make_unique<IniDriveStore>(settingsFile.settings())),
       m_resolutions(new EncoderResolutions(this)), m_tuning(new TuningView(parentWidget)),
       m_control(new ControlView(parentWidget)), m_encoder(new EncoderView(parentWidget)),
       m_info(new DriveInfoView(parentWidget))

@@ -14,6 +14,7 @@ class DriveInfoView;
 class DriveSettingsStore;
 class EncoderResolutions;
 class EncoderView;
+class SettingsFile;
 class TelemetryStore;
 class TuningView;
 
@@ -23,10 +24,10 @@ class TuningView;
 class DriveViews : public QObject {
     Q_OBJECT
 public:
-    /// `settingsFile`: the INI file where per-drive soft limits, encoder resolution and gear
-    /// ratio persist (the application's settings file).
+    /// `settingsFile`: where per-drive soft limits, encoder resolution and gear ratio persist
+    /// (the application's settings file, shared with AppSettings); it outlives the views.
     DriveViews(BusModel *model, BusController *controller, TelemetryStore *store,
-               const QString &settingsFile, QWidget *parentWidget);
+               SettingsFile &settingsFile, QWidget *parentWidget);
     ~DriveViews() override;
 
     TuningView *tuning() const { return m_tuning; }

@@ -104,7 +104,7 @@ void MainWindow::buildPanels()
             ThemedIcon::get(QStringLiteral(":/icons/plot.svg")));
     addView(m_traffic, QStringLiteral("traffic"), tr("Traffic"),
             ThemedIcon::get(QStringLiteral(":/icons/traffic.svg")));
-    m_driveViews = new DriveViews(m_model, m_controller, m_store, m_settings->fileName(), m_views);
+    m_driveViews = new DriveViews(m_model, m_controller, m_store, m_settings->file(), m_views);
     m_dashboard->setEncoderResolutions(m_driveViews->encoderResolutions());
     addView(m_driveViews->tuning(), QStringLiteral("tuning"), tr("Tuning"),
             ThemedIcon::get(QStringLiteral(":/icons/motor.svg")));

@@ -27,7 +27,6 @@ public:
     static QStringList errorFlags(int errorState, std::optional<protocol::Generation> generation);
     /// errorFlags() joined, or "No errors".
     static QString errorFlagsText(int errorState, std::optional<protocol::Generation> generation);
-    static bool hasErrors(int errorState) { return errorState != 0; }
 
     /// What a technician can do about a transport failure (translated, with the fix).
     static QString transportError(const transport::TransportError &error);

@@ -30,7 +30,6 @@ public:
     /// The style sheet of the transient line's tinted box (for tests of the light/dark tint).
     QString tintStyle() const;
     Level level() const { return m_level; }
-    int repeatCount() const { return m_repeats; }
 
     /// Show or replace the entry `key`: rich text (the caller escapes its pieces) that stays
     /// until dismissed (entryDismissed follows) or cleared.

@@ -16,7 +16,6 @@ class OverviewPanel : public QWidget {
     Q_OBJECT
 public:
     explicit OverviewPanel(BusModel *model, QWidget *parent = nullptr);
-    OverviewModel *tableModel() const { return m_table; }
     QTableView *view() const { return m_view; }
 
 private:

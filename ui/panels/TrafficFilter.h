@@ -13,8 +13,6 @@ public:
     void setIdFilter(int id);           ///< 0: every ID
     void setCommandFilter(int command); ///< wire code, -1: every command
     void setFaultsOnly(bool on);
-    int idFilter() const { return m_id; }
-    int commandFilter() const { return m_command; }
 
 protected:
     bool filterAcceptsRow(int sourceRow, const QModelIndex &sourceParent) const override;

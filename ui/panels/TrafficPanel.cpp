@@ -2,14 +2,15 @@
 
 #include "BusModel.h"
 #include "FileDialogs.h"
+#include "Format.h"
 #include "ThemedIcon.h"
 #include "TrafficFilter.h"
 #include "TrafficModel.h"
 
 #include <protocol/Command.h>
+#include <record/ParameterSet.h>
 
 #include <QtCore/QDateTime>
-#include <QtCore/QFile>
 #include <QtCore/QFileInfo>
 #include <QtCore/QTextStream>
 #include <QtCore/QTimer>
@@ -19,6 +20,7 @@
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QHeaderView>
 #include <QtWidgets/QLabel>
+#include <QtWidgets/QMessageBox>
 #include <QtWidgets/QScrollBar>
 #include <QtWidgets/QTableView>
 #include <QtWidgets/QToolButton>
@@ -230,13 +232,8 @@ void TrafficPanel::updateCounts()
 
 bool TrafficPanel::exportTo(const QString &fileName, QString *error) const
 {
-    QFile file(fileName);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text)) {
-        if (error)
-            *error = file.errorString();
-        return false;
-    }
-    QTextStream out(&file);
+    QString text;
+    QTextStream out(&text);
     out << "# lkstudio traffic log, " << QDateTime::currentDateTime().toString(Qt::ISODate) << ", "
         << m_bus->connection().description << "\n"
         << "# read it back with: lkctl decode - < " << QFileInfo(fileName).fileName() << "\n"
@@ -246,12 +243,12 @@ bool TrafficPanel::exportTo(const QString &fileName, QString *error) const
         out << m_model->exportLine(source) << '\n';
     }
     out.flush();
-    if (file.error() != QFile::NoError) {
-        if (error)
-            *error = file.errorString();
-        return false;
-    }
-    return true;
+    // Whole or not at all, as the other exports: a full disk or a crash halfway must not
+    // leave a cut log where an earlier export was (the log is bounded, so it fits in memory).
+    const QString problem = record::writeFileAtomically(fileName, text.toUtf8());
+    if (error)
+        *error = problem;
+    return problem.isEmpty();
 }
 
 void TrafficPanel::exportWithDialog()
@@ -266,7 +263,7 @@ void TrafficPanel::exportWithDialog()
         return;
     QString error;
     if (!exportTo(name, &error))
-        m_counts->setText(tr("Export failed: %1").arg(error));
+        QMessageBox::warning(this, tr("Export traffic"), Format::sentence(error));
 }
 
 void TrafficPanel::showEvent(QShowEvent *event)

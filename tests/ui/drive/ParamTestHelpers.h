@@ -2,10 +2,12 @@
 
 #include "DriveTestRig.h"
 
+#include <drive/ParameterTable.h>
 #include <sim/SimParams.h>
 
 #include <QtTest/QTest>
 #include <QtWidgets/QDoubleSpinBox>
+#include <QtWidgets/QLabel>
 
 namespace lk::drivetest {
 
@@ -26,6 +28,14 @@ inline int paramWrites(SimRig &rig, int id)
 {
     return rig.count(id, protocol::Command::WriteParamRam) +
            rig.count(id, protocol::Command::WriteParamRom);
+}
+
+/// What a parameter table's "Drive holds" column shows for `row`, found by its object name
+/// as a user-level test would; a missing label reads as a text no test expects.
+inline QString heldText(const ui::ParameterTable &table, int row)
+{
+    const auto *label = table.findChild<QLabel *>(QStringLiteral("holds_") + table.field(row).key);
+    return label ? label->text() : QStringLiteral("<no holds_%1 label>").arg(table.field(row).key);
 }
 
 /// Types `value` into a parameter table's edit field as a user would.

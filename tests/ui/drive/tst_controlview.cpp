@@ -7,6 +7,7 @@
 #include <drive/SetpointGenerator.h>
 #include <drive/SetpointPanel.h>
 #include <drive/SoftLimitsEditor.h>
+#include <main/SettingsFile.h>
 
 #include <QtCore/QSettings>
 #include <QtCore/QTemporaryDir>
@@ -287,7 +288,8 @@ void tst_ControlView::softLimitsPersistPerDrive()
     QTemporaryDir dir;
     const QString ini = dir.filePath(QStringLiteral("limits.ini"));
     {
-        lk::ui::IniDriveStore store(ini);
+        lk::ui::SettingsFile file(ini);
+        lk::ui::IniDriveStore store(file.settings());
         auto view = openView(rig, 1);
         view->setSettingsStore(&store);
         // Defaults: a quarter of the MF's 9 A.
@@ -300,7 +302,8 @@ void tst_ControlView::softLimitsPersistPerDrive()
         QCOMPARE(view->softLimits().maxTorqueA, 1.5);
         store.sync();
     }
-    lk::ui::IniDriveStore store(ini);
+    lk::ui::SettingsFile file(ini);
+    lk::ui::IniDriveStore store(file.settings());
     auto view = openView(rig, 1);
     view->setSettingsStore(&store);
     QCOMPARE(view->softLimits().maxTorqueA, 1.5);
@@ -409,7 +412,8 @@ void tst_ControlView::damagedStoredLimitsAreNeverReplacedSilently()
     const QString ini = dir.filePath(QStringLiteral("limits.ini"));
     const QString key =
         lk::ui::IniDriveStore::softLimitsKey(lk::ui::DriveSettingsStore::driveKey(1, rig.motor(1)));
-    lk::ui::IniDriveStore store(ini);
+    lk::ui::SettingsFile file(ini);
+    lk::ui::IniDriveStore store(file.settings());
     auto view = openView(rig, 1);
     view->setSettingsStore(&store);
     lk::safety::SoftLimits mine = view->softLimits();

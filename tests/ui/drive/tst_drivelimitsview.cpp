@@ -14,6 +14,7 @@
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QTabWidget>
 
+using lk::drivetest::heldText;
 using lk::drivetest::kWaitMs;
 using lk::drivetest::paramWrites;
 using lk::drivetest::ramParams;
@@ -87,7 +88,7 @@ void tst_DriveLimitsView::readsEveryLimitAsPair()
     const lk::ui::ParamValues expected{p.maxTorque, p.maxSpeedRaw, kWideAngle, p.currentRamp,
                                        p.speedRampDps2};
     QCOMPARE(*view->table()->pending(), expected);
-    QCOMPARE(view->table()->holdsLabel(Limit::MaxAngle)->text(), QStringLiteral("50000000.00 deg"));
+    QCOMPARE(heldText(*view->table(), Limit::MaxAngle), QStringLiteral("50000000.00 deg"));
     QCOMPARE(view->table()->field(Limit::MaxTorque).name, QStringLiteral("Max power (0x99)"));
     QCOMPARE(rig.count(1, Command::ReadParam), 6); // 0x9B and 0x9C both
     QVERIFY(button(*view, "limitsWriteRam")->isEnabled());

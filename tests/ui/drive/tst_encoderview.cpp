@@ -3,6 +3,7 @@
 #include <drive/ConfirmDialog.h>
 #include <drive/DriveSettingsStore.h>
 #include <drive/EncoderView.h>
+#include <main/SettingsFile.h>
 
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
@@ -129,14 +130,16 @@ void tst_EncoderView::resolutionAndGearPersist()
     QTemporaryDir dir;
     const QString ini = dir.filePath(QStringLiteral("drives.ini"));
     {
-        lk::ui::IniDriveStore store(ini);
+        lk::ui::SettingsFile file(ini);
+        lk::ui::IniDriveStore store(file.settings());
         auto view = openView(rig, 1);
         view->setSettingsStore(&store);
         view->setEncoderBits(16);
         view->setGearRatio(6);
         store.sync();
     }
-    lk::ui::IniDriveStore store(ini);
+    lk::ui::SettingsFile file(ini);
+    lk::ui::IniDriveStore store(file.settings());
     auto view = openView(rig, 1);
     view->setSettingsStore(&store);
     QCOMPARE(view->encoderBits(), 16);

@@ -1,4 +1,4 @@
-#include "DriveTestRig.h"
+#include "ParamTestHelpers.h"
 
 #include <drive/ConfirmDialog.h>
 #include <drive/LoopPlot.h>
@@ -17,6 +17,7 @@
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QPushButton>
 
+using lk::drivetest::heldText;
 using lk::drivetest::kWaitMs;
 using lk::drivetest::SimRig;
 using lk::protocol::Command;
@@ -172,7 +173,7 @@ void tst_TuningView::failedReadWritesNothing()
     QVERIFY(!drivePid(view));
     QCOMPARE(driveAccel(view), std::optional<qint32>(20000));
     verifyNothingWritable(view);
-    QCOMPARE(view.table()->holdsLabel(V23::SpeedKp)->text(), QStringLiteral("unknown"));
+    QCOMPARE(heldText(*view.table(), V23::SpeedKp), QStringLiteral("unknown"));
     QVERIFY2(view.statusText().contains(QStringLiteral("Could not read drive 1")),
              qPrintable(view.statusText()));
 

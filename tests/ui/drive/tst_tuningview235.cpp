@@ -14,6 +14,7 @@
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QPushButton>
 
+using lk::drivetest::heldText;
 using lk::drivetest::kWaitMs;
 using lk::drivetest::paramWrites;
 using lk::drivetest::ramParams;
@@ -100,7 +101,7 @@ void tst_TuningView235::readShowsKpKiKd()
     QCOMPARE(*view->table()->pending(), gainsOf(ramParams(rig, 1)));
     QCOMPARE(view->table()->pending()->at(V235::SpeedKd), 12);
     QCOMPARE(view->table()->pending()->at(V235::SpeedKp), 300); // above V2.3's 255
-    QCOMPARE(view->table()->holdsLabel(V235::SpeedKd)->text(), QStringLiteral("12"));
+    QCOMPARE(heldText(*view->table(), V235::SpeedKd), QStringLiteral("12"));
     QVERIFY(view->table()->editor(V235::AngleKd)->isEnabled());
     QCOMPARE(rig.count(1, Command::ReadParam), 3 + 6); // gains, then the limits tab
     QCOMPARE(rig.count(1, Command::ReadPid) + rig.count(1, Command::ReadAccel), 0);
@@ -126,7 +127,7 @@ void tst_TuningView235::nothingWritableBeforeRead()
         QCOMPARE(view->table()->editor(r)->text(), QStringLiteral("unknown"));
         QVERIFY(!view->table()->editor(r)->isEnabled());
     }
-    QCOMPARE(view->table()->holdsLabel(V235::AngleKp)->text(), QStringLiteral("unknown"));
+    QCOMPARE(heldText(*view->table(), V235::AngleKp), QStringLiteral("unknown"));
     for (const char *name : {"writeRam", "writeRom", "undo", "load", "save"})
         QVERIFY2(!button(*view, name)->isEnabled(), name);
     int asked = 0;

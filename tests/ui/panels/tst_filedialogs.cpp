@@ -1,6 +1,8 @@
 // FileDialogs: suggested names say what, which drive and when; each purpose remembers its
 // folder in the settings, and a save dialog (here the traffic export's) starts there.
 
+#include "FileSizeLimit.h"
+
 #include <main/AppSettings.h>
 #include <panels/BusModel.h>
 #include <panels/FileDialogs.h>
@@ -12,6 +14,7 @@
 #include <QtWidgets/QApplication>
 #include <QtWidgets/QFileDialog>
 #include <QtWidgets/QLineEdit>
+#include <QtWidgets/QMessageBox>
 
 using lk::ui::FileDialogs;
 using Purpose = lk::ui::FileDialogs::Purpose;
@@ -37,6 +40,19 @@ void answerFileDialog(QString *startDir, QString *startName, const QString &file
         static_cast<QDialog *>(dialog)->accept(); // QFileDialog::accept, checks the name
     });
 }
+/// Read the next modal message box's text, then close it.
+void answerMessageBox(QString *text)
+{
+    QTimer::singleShot(50, [=] {
+        auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+        if (!box) {
+            answerMessageBox(text); // the file dialog is still up, or the box not yet
+            return;
+        }
+        *text = box->text();
+        box->accept();
+    });
+}
 } // namespace
 
 class tst_FileDialogs : public QObject {
@@ -49,6 +65,7 @@ private slots:
     void foldersAreRememberedPerPurpose();
     void missingFolderFallsBack();
     void trafficExportStartsInTheRememberedFolder();
+    void failedTrafficExportIsShown();
 
 private:
     QTemporaryDir m_dir;
@@ -143,6 +160,25 @@ void tst_FileDialogs::trafficExportStartsInTheRememberedFolder()
     QVERIFY(QFile::exists(chosen));
     QCOMPARE(FileDialogs::startFolder(Purpose::Traffic),
              m_dir.filePath(QStringLiteral("elsewhere")));
+}
+
+void tst_FileDialogs::failedTrafficExportIsShown()
+{
+    lk::ui::BusModel model;
+    lk::ui::TrafficPanel panel(&model);
+    const QString chosen = m_dir.filePath(QStringLiteral("full-disk.txt"));
+    QString startDir, startName, shown;
+    answerFileDialog(&startDir, &startName, chosen);
+    answerMessageBox(&shown);
+    {
+        const lk::paneltest::FileSizeLimit diskFull(16); // less than the log's header
+        QVERIFY(diskFull.isActive());
+        panel.exportWithDialog();
+    }
+    // Told as the plot exports tell it (a warning naming the file), and nothing left behind.
+    QVERIFY2(shown.startsWith(QStringLiteral("Cannot write ")) && shown.contains(chosen),
+             qPrintable(shown));
+    QVERIFY(!QFile::exists(chosen));
 }
 
 QTEST_MAIN(tst_FileDialogs)

@@ -1,3 +1,5 @@
+#include "FileSizeLimit.h"
+
 #include <panels/BusModel.h>
 #include <panels/TrafficFilter.h>
 #include <panels/TrafficModel.h>
@@ -113,6 +115,7 @@ private slots:
     void filterByIdAndCommand_data();
     void filterByIdAndCommand();
     void exportParsesBack();
+    void failedExportKeepsTheEarlierFile();
     void pauseKeepsCounting();
     void countsAreTheBusStatistics();
     void exportReadByLkctl();
@@ -248,6 +251,35 @@ void tst_TrafficModel::exportParsesBack()
     in.close();
     QVERIFY(in.open(QIODevice::ReadOnly | QIODevice::Text));
     QCOMPARE(hexOf(QString::fromUtf8(in.readAll())), traffic[2].bytes + traffic[3].bytes);
+}
+
+void tst_TrafficModel::failedExportKeepsTheEarlierFile()
+{
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("traffic.txt"));
+    const QByteArray earlier("# an earlier export\n");
+    {
+        QFile out(file);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        QCOMPARE(out.write(earlier), earlier.size());
+    }
+    lk::ui::BusModel bus;
+    lk::ui::TrafficPanel panel(&bus);
+    panel.appendTraffic(sampleTraffic());
+    panel.flush();
+    QString error;
+    {
+        // The disk fills up halfway: the new log is longer than the earlier one.
+        const lk::paneltest::FileSizeLimit diskFull(earlier.size());
+        QVERIFY(diskFull.isActive());
+        QVERIFY(!panel.exportTo(file, &error));
+    }
+    QVERIFY2(error.contains(file), qPrintable(error));
+    QFile in(file);
+    QVERIFY(in.open(QIODevice::ReadOnly));
+    QCOMPARE(in.readAll(), earlier);
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden),
+             QStringList{QStringLiteral("traffic.txt")}); // no half-written copy beside it
 }
 
 void tst_TrafficModel::pauseKeepsCounting()
