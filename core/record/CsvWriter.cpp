@@ -52,6 +52,11 @@ QString CsvWriter::finish()
     }
     flushBuffer();
     m_open = false;
+    // Qt 6.4's QSaveFile renames the file into place even when the flush inside commit()
+    // fails (a full disk): flush first, where a failure still cancels.
+    if (m_error.isEmpty() && !m_file.flush())
+        m_error = QCoreApplication::translate("lk::record::CsvWriter", "Cannot write %1: %2")
+                      .arg(m_file.fileName(), m_file.errorString());
     if (!m_error.isEmpty()) {
         m_file.cancelWriting();
         return m_error;

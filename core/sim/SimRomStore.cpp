@@ -216,10 +216,15 @@ bool SimRomStore::save(int id, protocol::Series series, const SimRom &rom)
         return true;
     QSaveFile f(filePath(id));
     const QByteArray bytes = QJsonDocument(toJson(id, series, rom)).toJson(QJsonDocument::Indented);
-    if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size() || !f.commit()) {
+    // flush() before commit(): Qt 6.4's QSaveFile renames a cut file into place when the
+    // flush inside commit() fails (a full disk).
+    if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size() || !f.flush() ||
+        !f.commit()) {
+        const QString why = f.errorString();
+        f.cancelWriting(); // nothing replaces the earlier file
         addError(QStringLiteral("Cannot write ROM file %1 (%2): the change lasts only until "
                                 "the simulator exits.")
-                     .arg(QDir::toNativeSeparators(filePath(id)), f.errorString()));
+                     .arg(QDir::toNativeSeparators(filePath(id)), why));
         return false;
     }
     return true;

@@ -1,5 +1,7 @@
 #include "sim/SimRomStore.h"
 
+#include "../support/FileSizeLimit.h"
+
 #include <QtCore/QDir>
 #include <QtCore/QFile>
 #include <QtCore/QLoggingCategory>
@@ -38,6 +40,7 @@ private slots:
     void otherSeries();
     void memoryOnly();
     void unwritableDirectory();
+    void diskFullKeepsTheEarlierRom();
 };
 
 void tst_SimRomStore::initTestCase()
@@ -178,6 +181,29 @@ void tst_SimRomStore::unwritableDirectory()
     QVERIFY(store.errors().first().contains(QLatin1String("Cannot create")));
     QVERIFY(!store.save(1, Series::MF, SimRom{}));
     QCOMPARE(store.errors().size(), 2);
+}
+
+void tst_SimRomStore::diskFullKeepsTheEarlierRom()
+{
+    // The ROM file is small: it stays in QSaveFile's buffer until the last flush, where a
+    // full disk must still leave the earlier file whole.
+    QTemporaryDir dir;
+    const SimRom before{PidGains{1, 2, 3, 4, 5, 6}, 100, 200, {}};
+    SimRomStore store(dir.path());
+    QVERIFY(store.save(2, Series::MF, before));
+    QFile file(store.filePath(2));
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QByteArray earlier = file.readAll();
+    file.close();
+    {
+        const lk::testsupport::FileSizeLimit diskFull(16);
+        QVERIFY(diskFull.isActive());
+        QVERIFY(!store.save(2, Series::MF, SimRom{PidGains{9, 9, 9, 9, 9, 9}, 1, 2, {}}));
+    }
+    QVERIFY(store.errors().last().contains(QLatin1String("Cannot write ROM file")));
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(file.readAll(), earlier);
+    QCOMPARE(SimRomStore(dir.path()).rom(2, Series::MF), std::optional<SimRom>(before));
 }
 
 QTEST_APPLESS_MAIN(tst_SimRomStore)

@@ -165,6 +165,13 @@ QString PlotExporter::exportPng(QWidget *widget, const QString &path)
         file.cancelWriting();
         return tr("Cannot write %1: %2").arg(path, writer.errorString());
     }
+    // Qt 6.4's QSaveFile renames a cut file into place when the flush inside commit() fails
+    // (a full disk): flush here, where a failure still cancels.
+    if (!file.flush()) {
+        const QString why = file.errorString();
+        file.cancelWriting();
+        return tr("Cannot write %1: %2").arg(path, why);
+    }
     if (!file.commit()) {
         return tr("Cannot write %1: %2").arg(path, file.errorString());
     }

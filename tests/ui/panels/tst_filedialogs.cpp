@@ -1,7 +1,7 @@
 // FileDialogs: suggested names say what, which drive and when; each purpose remembers its
 // folder in the settings, and a save dialog (here the traffic export's) starts there.
 
-#include "FileSizeLimit.h"
+#include "../../support/FileSizeLimit.h"
 
 #include <main/AppSettings.h>
 #include <panels/BusModel.h>
@@ -171,7 +171,7 @@ void tst_FileDialogs::failedTrafficExportIsShown()
     answerFileDialog(&startDir, &startName, chosen);
     answerMessageBox(&shown);
     {
-        const lk::paneltest::FileSizeLimit diskFull(16); // less than the log's header
+        const lk::testsupport::FileSizeLimit diskFull(16); // less than the log's header
         QVERIFY(diskFull.isActive());
         panel.exportWithDialog();
     }

@@ -1,4 +1,4 @@
-#include "FileSizeLimit.h"
+#include "../../support/FileSizeLimit.h"
 
 #include <panels/BusModel.h>
 #include <panels/TrafficFilter.h>
@@ -270,7 +270,7 @@ void tst_TrafficModel::failedExportKeepsTheEarlierFile()
     QString error;
     {
         // The disk fills up halfway: the new log is longer than the earlier one.
-        const lk::paneltest::FileSizeLimit diskFull(earlier.size());
+        const lk::testsupport::FileSizeLimit diskFull(earlier.size());
         QVERIFY(diskFull.isActive());
         QVERIFY(!panel.exportTo(file, &error));
     }

@@ -1,6 +1,7 @@
 // The plot panel's exports: CSV of what is plotted (everything or the visible range) and PNG
 // of the charts, and the errors a failed write reports.
 
+#include "../../support/FileSizeLimit.h"
 #include "PlotPanelTestUtil.h"
 
 #include <plot/PlotPanel.h>
@@ -8,7 +9,9 @@
 #include <plot/TelemetryStore.h>
 
 #include <QtCharts/QLineSeries>
+#include <QtCore/QDir>
 #include <QtCore/QFile>
+#include <QtCore/QFileInfo>
 #include <QtCore/QTemporaryDir>
 #include <QtGui/QImage>
 #include <QtTest/QTest>
@@ -91,6 +94,7 @@ private slots:
     void exportCsvRowPerPollRound();
     void exportCsvLongLayoutFromTheMenu();
     void exportPngWritesImage();
+    void diskFullKeepsTheEarlierPng();
     void exportReportsErrors();
 };
 
@@ -213,6 +217,38 @@ void tst_PlotExport::exportPngWritesImage()
         }
     }
     QVERIFY(varied);
+}
+
+void tst_PlotExport::diskFullKeepsTheEarlierPng()
+{
+    TelemetryStore store;
+    PlotPanel panel(&store);
+    panel.setDrives({1});
+    showPanel(panel);
+    store.append(batch(1, 0, 1000, 0.01));
+    QTRY_VERIFY(panel.charts().first()->lineSeries().first()->count() > 0);
+    QTemporaryDir dir;
+    const QString path = dir.filePath("plot.png");
+    {
+        QFile earlier(path);
+        QVERIFY(earlier.open(QIODevice::WriteOnly));
+        earlier.write("earlier picture");
+    }
+    const QString probe = dir.filePath("probe.png");
+    QCOMPARE(panel.exportPng(probe), QString());
+    const qint64 size = QFileInfo(probe).size();
+    QVERIFY(QFile::remove(probe));
+    {
+        // One byte short of the picture: only the last flush fails (the end of a file stays
+        // in QSaveFile's buffer until then, and Qt 6.4's commit() renames it regardless).
+        const lk::testsupport::FileSizeLimit diskFull(rlim_t(size - 1));
+        QVERIFY(diskFull.isActive());
+        QVERIFY(!panel.exportPng(path).isEmpty());
+    }
+    QFile kept(path);
+    QVERIFY(kept.open(QIODevice::ReadOnly));
+    QCOMPARE(kept.readAll(), QByteArray("earlier picture"));
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{"plot.png"});
 }
 
 void tst_PlotExport::exportReportsErrors()

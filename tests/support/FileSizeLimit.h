@@ -4,7 +4,7 @@
 
 #include <sys/resource.h>
 
-namespace lk::paneltest {
+namespace lk::testsupport {
 
 /// While it lives, no file this process writes grows past `bytes`: a disk that fills up
 /// mid-file (a read-only folder would not stop the tests when they run as root). Writes past
@@ -36,4 +36,4 @@ private:
     bool m_active = false;
 };
 
-} // namespace lk::paneltest
+} // namespace lk::testsupport
