@@ -4199,6 +4199,26 @@
         <source>Traffic log (*.txt);;All files (*)</source>
         <translation>通信记录 (*.txt);;所有文件 (*)</translation>
     </message>
+    <message>
+        <source>checksum errors %1</source>
+        <translation>校验错误 %1</translation>
+    </message>
+    <message>
+        <source>other frame errors %1</source>
+        <translation>其他帧错误 %1</translation>
+    </message>
+    <message>
+        <source>late replies %1</source>
+        <translation>迟到应答 %1</translation>
+    </message>
+    <message>
+        <source>unexpected frames %1</source>
+        <translation>意外帧 %1</translation>
+    </message>
+    <message>
+        <source>Bus: %1. This log: %2.</source>
+        <translation>总线：%1。本日志：%2。</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::TuningFile</name>
