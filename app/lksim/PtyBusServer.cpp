@@ -62,7 +62,7 @@ void PtyBusServer::onInput(const QByteArray &bytes, double now, double blindS)
         const qint64 requestsBefore = m_bus.counters().requests;
         const QList<sim::SimReply> replies = m_bus.receive(bytes.constData() + i, 1, now);
         if (m_bus.counters().requests != requestsBefore)
-            noteRequestEnd();
+            noteRequestEnd(now);
         const sim::SimBusCounters &c = m_bus.counters();
         const qint64 events = c.requests + c.parseErrors + c.notRequests;
         if (events != m_frameEvents) { // a frame or a fault ended with this byte
@@ -75,9 +75,9 @@ void PtyBusServer::onInput(const QByteArray &bytes, double now, double blindS)
     }
 }
 
-void PtyBusServer::noteRequestEnd()
+void PtyBusServer::noteRequestEnd(double now)
 {
-    m_wire.requestEnded(m_collision);
+    m_wire.requestEnded(m_collision, now);
     if (!m_collision)
         return;
     std::fprintf(stderr, "lksim: %s: request %s arrived %s\n",

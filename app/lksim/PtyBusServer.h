@@ -63,7 +63,7 @@ private:
     /// Host bytes read at `now`; `blindS`: how long before that they may have arrived.
     void onInput(const QByteArray &bytes, double now, double blindS);
     void schedule(const sim::SimReply &reply, double now, double blindS);
-    void noteRequestEnd();
+    void noteRequestEnd(double now);
     bool flushDue(double now);
     double requestWireSeconds(quint8 command) const;
     void log(const char *direction, const QByteArray &bytes) const;

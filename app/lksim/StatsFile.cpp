@@ -5,6 +5,7 @@
 #include <QtCore/QJsonObject>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 
@@ -20,6 +21,9 @@ bool StatsFile::write(const WireCounters &counters, qint64 badChecksumReplies, b
                         {QStringLiteral("collisions_before_reply"), counters.collisionsBefore},
                         {QStringLiteral("collisions_during_reply"), counters.collisionsDuring},
                         {QStringLiteral("overlaps_unjudged"), counters.overlapsUnjudged},
+                        {QStringLiteral("longest_request_gap_ms"),
+                         std::round(counters.longestRequestGapS * 1e4) / 10},
+                        {QStringLiteral("request_gaps_over_100ms"), counters.requestGapsOver100ms},
                         {QStringLiteral("bad_checksum_replies"), badChecksumReplies},
                         {QStringLiteral("running"), running}};
     // A temporary file renamed over the old one: a reader sees the old or the new counters,

@@ -8,9 +8,10 @@ namespace lk::app {
 
 /// lksim's counters as a small JSON file that tests and benchmarks read (`--stats-file`):
 /// {"requests":N,"replies":N,"collisions":N,"collisions_before_reply":N,
-///  "collisions_during_reply":N,"overlaps_unjudged":N,"bad_checksum_replies":N,
-///  "running":BOOL}. Written whole (a reader never sees half of it) at start, after every
-/// collision, on SIGUSR1 and at exit ("running": false).
+///  "collisions_during_reply":N,"overlaps_unjudged":N,"longest_request_gap_ms":X,
+///  "request_gaps_over_100ms":N,"bad_checksum_replies":N,"running":BOOL}. Written whole (a
+/// reader never sees half of it) at start, after every collision, on SIGUSR1 and at exit
+/// ("running": false).
 class StatsFile {
 public:
     explicit StatsFile(QString path) : m_path(std::move(path)) {}

@@ -2,6 +2,8 @@
 
 #include <protocol/Command.h>
 
+#include <algorithm>
+
 namespace lk::app {
 
 QString WireMonitor::Collision::describe() const
@@ -51,9 +53,16 @@ std::optional<WireMonitor::Collision> WireMonitor::overlapAt(double nowS)
     return c;
 }
 
-void WireMonitor::requestEnded(const std::optional<Collision> &collision)
+void WireMonitor::requestEnded(const std::optional<Collision> &collision, double nowS)
 {
     ++m_counters.requests;
+    if (m_lastRequestS >= 0) {
+        const double gap = nowS - m_lastRequestS;
+        m_counters.longestRequestGapS = std::max(m_counters.longestRequestGapS, gap);
+        if (gap > 0.1)
+            ++m_counters.requestGapsOver100ms;
+    }
+    m_lastRequestS = nowS;
     if (!collision)
         return;
     if (collision->unjudged)

@@ -17,6 +17,10 @@ struct WireCounters {
     /// Requests that overlapped a reply only because lksim may have read the request that
     /// asked for it late (it waited for a CPU): not counted as collisions, see WireMonitor.
     qint64 overlapsUnjudged = 0;
+    /// The longest silence between two host requests, and how many silences passed 100 ms:
+    /// a host that polls without pause shows short ones only, so these show when it paused.
+    double longestRequestGapS = 0;
+    qint64 requestGapsOver100ms = 0;
     qint64 collisions() const { return collisionsBefore + collisionsDuring; }
 };
 
@@ -53,8 +57,9 @@ public:
     /// What a host byte arriving at `nowS` would collide with: a reply due or on the wire
     /// then (replies already sent are forgotten). Nothing is counted here.
     std::optional<Collision> overlapAt(double nowS);
-    /// A request from the host ended; `collision`: what its first colliding byte hit.
-    void requestEnded(const std::optional<Collision> &collision);
+    /// A request from the host ended at `nowS`; `collision`: what its first colliding byte
+    /// hit.
+    void requestEnded(const std::optional<Collision> &collision, double nowS);
 
     const WireCounters &counters() const { return m_counters; }
 
@@ -67,6 +72,7 @@ private:
         double blindS = 0;
     };
     std::deque<Window> m_windows; ///< in wire order
+    double m_lastRequestS = -1;   ///< when the previous request ended; < 0: none yet
     WireCounters m_counters;
 };
 

@@ -150,6 +150,7 @@ int main(int argc, char *argv[])
         QStringLiteral("Keep the counters in PATH as one line of JSON: {\"requests\":N,"
                        "\"replies\":N,\"collisions\":N,\"collisions_before_reply\":N,"
                        "\"collisions_during_reply\":N,\"overlaps_unjudged\":N,"
+                       "\"longest_request_gap_ms\":X,\"request_gaps_over_100ms\":N,"
                        "\"bad_checksum_replies\":N,"
                        "\"running\":true}. Rewritten whole at "
                        "start, after every collision (the collision count is always current), "
@@ -221,9 +222,10 @@ int main(int argc, char *argv[])
     const lk::app::WireCounters &c = server.counters();
     std::fprintf(stderr,
                  "lksim: %lld requests, %lld replies, %lld collisions (%lld before a reply "
-                 "began, %lld during one), %lld unjudged overlaps, %lld bad-checksum 0xA4 "
-                 "replies\n",
+                 "began, %lld during one), %lld unjudged overlaps, longest silence between "
+                 "requests %.1f ms (%lld over 100 ms), %lld bad-checksum 0xA4 replies\n",
                  c.requests, c.replies, c.collisions(), c.collisionsBefore, c.collisionsDuring,
-                 c.overlapsUnjudged, server.badChecksumReplies());
+                 c.overlapsUnjudged, c.longestRequestGapS * 1e3, c.requestGapsOver100ms,
+                 server.badChecksumReplies());
     return rc;
 }

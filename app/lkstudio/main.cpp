@@ -65,6 +65,19 @@ void plotEverythingFound(lk::ui::MainWindow &window)
                      [model] { model->setSelectedIds(model->ids()); });
 }
 
+/// --cycle-views: the next view every `periodMs`, as a user clicking through them, so that a
+/// benchmark can see whether GUI work (building and drawing a view) pauses the bus.
+void cycleViews(lk::ui::MainWindow &window, int periodMs)
+{
+    auto *timer = new QTimer(&window);
+    QObject::connect(timer, &QTimer::timeout, &window, [&window, next = 0]() mutable {
+        const QStringList names = window.viewNames();
+        if (!names.isEmpty())
+            window.showView(names.at(next++ % names.size()));
+    });
+    timer->start(periodMs);
+}
+
 /// --sim-low-voltage: once drive `id` is found on the simulator, its supply sags below the
 /// series minimum, so that the low-voltage warning can be seen (demos, documentation).
 void lowerSupplyWhenFound(lk::ui::MainWindow &window, int id)
@@ -216,6 +229,8 @@ int runStudio(const lk::ui::StartupOptions &options)
         lowerSupplyWhenFound(window, options.simLowVoltageId);
     if (options.plotAll)
         plotEverythingFound(window);
+    if (options.cycleViewsMs > 0)
+        cycleViews(window, options.cycleViewsMs);
     if (options.windowSize.isValid())
         window.resize(options.windowSize);
     if (options.minimized)

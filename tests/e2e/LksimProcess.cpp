@@ -5,6 +5,8 @@
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
 
+#include <algorithm>
+
 namespace lk::e2e {
 
 namespace {
@@ -126,6 +128,9 @@ std::optional<LksimCounters> LksimProcess::counters() const
         sum.replies += o.value(QStringLiteral("replies")).toInteger();
         sum.collisions += o.value(QStringLiteral("collisions")).toInteger();
         sum.overlapsUnjudged += o.value(QStringLiteral("overlaps_unjudged")).toInteger();
+        sum.longestRequestGapMs = std::max(
+            sum.longestRequestGapMs, o.value(QStringLiteral("longest_request_gap_ms")).toDouble());
+        sum.requestGapsOver100ms += o.value(QStringLiteral("request_gaps_over_100ms")).toInteger();
         sum.badChecksumReplies += o.value(QStringLiteral("bad_checksum_replies")).toInteger();
     }
     return sum;

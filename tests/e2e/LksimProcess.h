@@ -14,8 +14,10 @@ namespace lk::e2e {
 struct LksimCounters {
     qint64 requests = 0;
     qint64 replies = 0;
-    qint64 collisions = 0;         ///< requests that arrived while a reply was due or on the wire
-    qint64 overlapsUnjudged = 0;   ///< overlaps within how late lksim may have read a request
+    qint64 collisions = 0;          ///< requests that arrived while a reply was due or on the wire
+    qint64 overlapsUnjudged = 0;    ///< overlaps within how late lksim may have read a request
+    double longestRequestGapMs = 0; ///< the longest silence between two host requests
+    qint64 requestGapsOver100ms = 0;
     qint64 badChecksumReplies = 0; ///< 0xA4 replies spoilt by --bad-checksum-pct
 };
 

@@ -14,6 +14,7 @@ private slots:
     void requestAfterReplyIsClear();
     void overlapWithinLatenessIsUnjudged();
     void overlapBeyondLatenessStillCollides();
+    void longestRequestGap();
 };
 
 void tst_WireMonitor::requestDuringReplyCollides()
@@ -25,7 +26,7 @@ void tst_WireMonitor::requestDuringReplyCollides()
     QVERIFY(!c->beforeReply);
     QVERIFY(!c->unjudged);
     QCOMPARE(c->id, 3);
-    wire.requestEnded(c);
+    wire.requestEnded(c, 1.0);
     QCOMPARE(wire.counters().collisionsDuring, 1);
     QCOMPARE(wire.counters().collisions(), 1);
     QCOMPARE(wire.counters().overlapsUnjudged, 0);
@@ -39,7 +40,7 @@ void tst_WireMonitor::requestBeforeReplyCollides()
     const auto c = wire.overlapAt(0.9995);
     QVERIFY(c);
     QVERIFY(c->beforeReply);
-    wire.requestEnded(c);
+    wire.requestEnded(c, 1.0);
     QCOMPARE(wire.counters().collisionsBefore, 1);
 }
 
@@ -48,7 +49,7 @@ void tst_WireMonitor::requestAfterReplyIsClear()
     WireMonitor wire;
     wire.replyScheduled(1.000, 1.0005, 3, 0x80, 0.01);
     QVERIFY(!wire.overlapAt(1.0005));
-    wire.requestEnded(std::nullopt);
+    wire.requestEnded(std::nullopt, 1.0);
     QCOMPARE(wire.counters().requests, 1);
     QCOMPARE(wire.counters().collisions(), 0);
 }
@@ -62,7 +63,7 @@ void tst_WireMonitor::overlapWithinLatenessIsUnjudged()
     const auto c = wire.overlapAt(1.0002);
     QVERIFY(c);
     QVERIFY(c->unjudged);
-    wire.requestEnded(c);
+    wire.requestEnded(c, 1.0);
     QCOMPARE(wire.counters().collisions(), 0);
     QCOMPARE(wire.counters().overlapsUnjudged, 1);
     QVERIFY(c->describe().contains(QStringLiteral("up to 2.000 ms late")));
@@ -76,9 +77,22 @@ void tst_WireMonitor::overlapBeyondLatenessStillCollides()
     const auto c = wire.overlapAt(1.0002);
     QVERIFY(c);
     QVERIFY(!c->unjudged);
-    wire.requestEnded(c);
+    wire.requestEnded(c, 1.0);
     QCOMPARE(wire.counters().collisions(), 1);
     QCOMPARE(wire.counters().overlapsUnjudged, 0);
+}
+
+void tst_WireMonitor::longestRequestGap()
+{
+    WireMonitor wire;
+    wire.requestEnded(std::nullopt, 5.0); // the first request: no gap before it counts
+    wire.requestEnded(std::nullopt, 5.002);
+    wire.requestEnded(std::nullopt, 5.25);
+    wire.requestEnded(std::nullopt, 5.3);
+    wire.requestEnded(std::nullopt, 5.45);
+    QCOMPARE(wire.counters().requests, 5);
+    QVERIFY(qAbs(wire.counters().longestRequestGapS - 0.248) < 1e-9);
+    QCOMPARE(wire.counters().requestGapsOver100ms, 2);
 }
 
 QTEST_GUILESS_MAIN(tst_WireMonitor)

@@ -80,6 +80,10 @@ struct StartupOptions::Definitions {
                QStringLiteral("Plot every signal of every drive found (benchmarks)."));
     QCommandLineOption minimized =
         hidden(QStringLiteral("minimized"), QStringLiteral("Start with the window minimised."));
+    QCommandLineOption cycleViews =
+        hidden(QStringLiteral("cycle-views"),
+               QStringLiteral("Show the next view every MS milliseconds (benchmarks)."),
+               QStringLiteral("MS"));
     QCommandLineOption size =
         hidden(QStringLiteral("window-size"),
                QStringLiteral("Window size in pixels, e.g. 1600x1000."), QStringLiteral("WxH"));
@@ -95,8 +99,9 @@ struct StartupOptions::Definitions {
 
     QList<QCommandLineOption> all() const
     {
-        return {port,  baud,   sim,        simFaults, settings, noScan,    view,     select, shot,
-                delay, motion, lowVoltage, size,      plotAll,  minimized, language, palette};
+        return {port, baud,    sim,       simFaults,  settings, noScan,
+                view, select,  shot,      delay,      motion,   lowVoltage,
+                size, plotAll, minimized, cycleViews, language, palette};
     }
 };
 
@@ -190,6 +195,12 @@ QString StartupOptions::readDisplay(const QCommandLineParser &p, const Definitio
     view = p.value(d.view);
     plotAll = p.isSet(d.plotAll);
     minimized = p.isSet(d.minimized);
+    if (p.isSet(d.cycleViews)) {
+        bool ok = false;
+        cycleViewsMs = p.value(d.cycleViews).toInt(&ok);
+        if (!ok || cycleViewsMs < 100)
+            return tr("--cycle-views takes a period of at least 100 ms.");
+    }
     if (p.isSet(d.size)) {
         const QStringList wh = p.value(d.size).split(QLatin1Char('x'));
         const int w = wh.value(0).toInt();

@@ -36,7 +36,10 @@ public:
     QSize windowSize;                   ///< --window-size WxH (hidden); invalid: saved or default
     bool plotAll = false;   ///< --plot-all (hidden): every drive and signal plotted (benchmarks)
     bool minimized = false; ///< --minimized (hidden): the window starts minimised (benchmarks)
-    QString screenshotFile; ///< --screenshot FILE (hidden)
+    /// --cycle-views MS (hidden): show the next view every MS ms, as a user clicking through
+    /// them (benchmarks: do GUI actions pause the bus?); 0: off
+    int cycleViewsMs = 0;
+    QString screenshotFile;       ///< --screenshot FILE (hidden)
     int screenshotDelayMs = 3000; ///< --screenshot-delay-ms N (hidden)
     QString language;             ///< --language NAME (hidden): e.g. zh_CN, en; empty: setting
     QString palette;              ///< --palette dark|light (hidden): a Fusion palette

@@ -8,12 +8,16 @@
 //   plots      the Plots view shown, every signal of every drive
 //   other_tab  the same plots exist but the Dashboard is shown
 //   minimized  the Plots view, window minimised
+//   views_cycling  every signal plotted, the next view shown every second (GUI actions)
 //   plots_32   32 drives, Plots view, every signal (only with --drives32)
 //
 // Prints one JSON line:
 //   gui_cpu_pct_<scenario>   CPU time of lkstudio / wall time, % of one core
 //   gui_rss_mb_<scenario>    resident memory at the end of the window
 //   bus_replies_per_s_<scenario>  replies lksim sent per second (what was being plotted)
+//   bus_gaps_over_100ms_<scenario>  silences over 100 ms between requests in the window:
+//                            the bus paused (a GUI action must not pause it)
+//   bus_longest_gap_ms_<scenario>   the longest silence between requests of the whole run
 //   gui_rss_mb_series        with --rss-minutes M: RSS every 30 s of an M-minute plots run,
 //                            to show where memory levels off (the 10-minute window fills)
 //
@@ -76,6 +80,7 @@ struct Scenario {
     int drives = 4;
     QString view = QStringLiteral("plots");
     bool minimized = false;
+    int cycleViewsMs = 0; ///< lkstudio --cycle-views: GUI actions beside the polling
 };
 
 struct Options {
@@ -103,6 +108,8 @@ bool measure(const Scenario &sc, const Options &o, bench::JsonLine &json,
                      QStringLiteral("1400x900")};
     if (sc.minimized)
         args << QStringLiteral("--minimized");
+    if (sc.cycleViewsMs > 0)
+        args << QStringLiteral("--cycle-views") << QString::number(sc.cycleViewsMs);
     QProcess studio;
     auto env = QProcessEnvironment::systemEnvironment();
     env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
@@ -141,9 +148,16 @@ bool measure(const Scenario &sc, const Options &o, bench::JsonLine &json,
     json.add(QStringLiteral("gui_cpu_pct_") + sc.name,
              100.0 * (after->cpuSeconds - before->cpuSeconds) / seconds, 1);
     json.add(QStringLiteral("gui_rss_mb_") + sc.name, after->rssMb, 1);
-    if (countsBefore && countsAfter)
+    if (countsBefore && countsAfter) {
         json.add(QStringLiteral("bus_replies_per_s_") + sc.name,
                  (countsAfter->replies - countsBefore->replies) / seconds, 1);
+        // Pauses of the bus as lksim saw them: silences over 100 ms between requests in the
+        // window, and the longest silence of the whole run (warm-up and scan included).
+        json.addInt(QStringLiteral("bus_gaps_over_100ms_") + sc.name,
+                    countsAfter->requestGapsOver100ms - countsBefore->requestGapsOver100ms);
+        json.add(QStringLiteral("bus_longest_gap_ms_") + sc.name, countsAfter->longestRequestGapMs,
+                 1);
+    }
     return true;
 }
 
@@ -183,9 +197,11 @@ int main(int argc, char *argv[])
         json.print();
         return 0;
     }
-    QVector<Scenario> scenarios{{QStringLiteral("plots")},
-                                {QStringLiteral("other_tab"), 4, QStringLiteral("dashboard")},
-                                {QStringLiteral("minimized"), 4, QStringLiteral("plots"), true}};
+    QVector<Scenario> scenarios{
+        {QStringLiteral("plots")},
+        {QStringLiteral("other_tab"), 4, QStringLiteral("dashboard")},
+        {QStringLiteral("minimized"), 4, QStringLiteral("plots"), true},
+        {QStringLiteral("views_cycling"), 4, QStringLiteral("plots"), false, 1000}};
     if (p.isSet(drives32))
         scenarios.append({QStringLiteral("plots_32"), 32});
     for (const Scenario &sc : scenarios) {

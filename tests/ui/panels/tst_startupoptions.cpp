@@ -82,12 +82,21 @@ void tst_StartupOptions::display_data()
     QTest::addColumn<bool>("ok");
     QTest::addColumn<QString>("language");
     QTest::addColumn<QString>("palette");
-    QTest::newRow("defaults") << QStringList{} << true << QString() << QString();
-    QTest::newRow("chinese") << QStringList{"--language", "zh_CN"} << true << "zh_CN" << QString();
-    QTest::newRow("dark") << QStringList{"--palette", "dark"} << true << QString() << "dark";
-    QTest::newRow("light") << QStringList{"--palette", "light"} << true << QString() << "light";
+    QTest::addColumn<int>("cycleViewsMs");
+    QTest::newRow("defaults") << QStringList{} << true << QString() << QString() << 0;
+    QTest::newRow("chinese") << QStringList{"--language", "zh_CN"} << true << "zh_CN" << QString()
+                             << 0;
+    QTest::newRow("dark") << QStringList{"--palette", "dark"} << true << QString() << "dark" << 0;
+    QTest::newRow("light") << QStringList{"--palette", "light"} << true << QString() << "light"
+                           << 0;
     QTest::newRow("bad palette") << QStringList{"--palette", "purple"} << false << QString()
-                                 << QString();
+                                 << QString() << 0;
+    QTest::newRow("cycle views") << QStringList{"--cycle-views", "1000"} << true << QString()
+                                 << QString() << 1000;
+    QTest::newRow("cycle views too fast")
+        << QStringList{"--cycle-views", "10"} << false << QString() << QString() << 0;
+    QTest::newRow("cycle views text")
+        << QStringList{"--cycle-views", "often"} << false << QString() << QString() << 0;
 }
 
 void tst_StartupOptions::display()
@@ -96,6 +105,7 @@ void tst_StartupOptions::display()
     QFETCH(bool, ok);
     QFETCH(QString, language);
     QFETCH(QString, palette);
+    QFETCH(int, cycleViewsMs);
     QString error;
     const auto o = lk::ui::StartupOptions::parse(QStringList{"lkstudio"} + args, &error);
     QCOMPARE(o.has_value(), ok);
@@ -104,6 +114,7 @@ void tst_StartupOptions::display()
         return;
     QCOMPARE(o->language, language);
     QCOMPARE(o->palette, palette);
+    QCOMPARE(o->cycleViewsMs, cycleViewsMs);
 }
 
 void tst_StartupOptions::initialChoice_data()
