@@ -99,9 +99,8 @@ bus::TransportFactory BusOptions::factory() const
         const std::optional<sim::SimBusSpec> parsed = sim::SimBusSpec::parse(spec);
         if (!parsed)
             return nullptr;
-        auto t = std::make_unique<transport::SimTransport>(sim::SimBus::fromSpec(*parsed, romDir));
-        t->setBaud(b);
-        return t;
+        return transport::SimTransport::asTheToolsRunIt(sim::SimBus::fromSpec(*parsed, romDir),
+                                                        b);
     };
 }
 
@@ -117,7 +116,8 @@ QString BusOptions::helpText()
         "                     (series MS, MF, MG, MH; it lives only as long as this command;\n"
         "                     1:MS4015@2.35 is a firmware-2.35 drive (protocol V2.35);\n"
         "                     3:MF+accel-ignored copies firmware that ignores 0x34, and\n"
-        "                     +clear-angle-ignored firmware that ignores 0x95)\n"
+        "                     +clear-angle-ignored firmware that ignores 0x95); every frame\n"
+        "                     takes the wire time of --baud, as on a real bus\n"
         "  --sim-rom-dir DIR  keep the simulated drives' ROM in DIR between commands\n");
 }
 

@@ -33,6 +33,15 @@ SimTransport::SimTransport(std::unique_ptr<sim::SimBus> bus, QObject *parent)
 
 SimTransport::~SimTransport() = default;
 
+std::unique_ptr<SimTransport> SimTransport::asTheToolsRunIt(std::unique_ptr<sim::SimBus> bus,
+                                                           int baud)
+{
+    auto t = std::make_unique<SimTransport>(std::move(bus));
+    t->setBaud(baud);
+    t->setWireTimeEmulation(true);
+    return t;
+}
+
 QString SimTransport::description() const
 {
     const int n = static_cast<int>(m_bus->ids().size());

@@ -30,6 +30,11 @@ public:
 
     explicit SimTransport(std::unique_ptr<sim::SimBus> bus, QObject *parent = nullptr);
     ~SimTransport() override;
+    /// The simulated bus as the tools show it to a user (lkstudio's built-in bus, lkctl
+    /// --sim): at `baud`, with the wire time of that baud, so that both report the same rates
+    /// and timings as each other and as lksim --wire-time.
+    static std::unique_ptr<SimTransport> asTheToolsRunIt(std::unique_ptr<sim::SimBus> bus,
+                                                         int baud);
 
     bool open() override;
     void close() override;

@@ -16,9 +16,7 @@ bus::TransportFactory SimulatedBus::factory(const std::shared_ptr<SimulatedBus> 
         auto bus = sim::SimBus::fromSpec(self->m_spec);
         if (!self->m_faultSpec.isEmpty())
             bus->faults().configure(self->m_faultSpec);
-        auto t = std::make_unique<transport::SimTransport>(std::move(bus));
-        t->setBaud(baud);
-        t->setWireTimeEmulation(self->m_wireTime);
+        auto t = transport::SimTransport::asTheToolsRunIt(std::move(bus), baud);
         transport::SimTransport *raw = t.get();
         self->attach(raw);
         // No context object: runs directly on the bus thread while the transport dies.

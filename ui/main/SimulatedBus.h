@@ -32,9 +32,6 @@ public:
     explicit SimulatedBus(const sim::SimBusSpec &spec);
 
     const sim::SimBusSpec &spec() const { return m_spec; }
-    /// Emulate the 8N1 wire time at the chosen baud (default on): the bus then runs at the
-    /// speed a real bus would, so rates and the bus limit mean the same as on hardware.
-    void setWireTimeEmulation(bool on) { m_wireTime = on; }
     /// Faults to inject into every reply (sim::FaultInjector::configure syntax), for training
     /// and demos: "corrupt=0.01,garbage=0.01". Checked by the caller; applied on (re)open.
     void setFaultSpec(const QString &spec) { m_faultSpec = spec; }
@@ -55,7 +52,6 @@ private:
     void detach(transport::SimTransport *transport);
 
     sim::SimBusSpec m_spec;
-    bool m_wireTime = true;
     QString m_faultSpec;
     std::mutex m_mutex;
     transport::SimTransport *m_transport = nullptr; ///< lives on the bus thread
