@@ -121,9 +121,9 @@ QString ControlCommand::usage() const
                  "     (the message names the limit and both values); nothing was sent\n")));
 }
 
-std::optional<protocol::FieldBuildResult> ControlCommand::build(const QStringList &pos,
-                                                                const ArgParser &parser,
-                                                                Console &console, int *status) const
+std::optional<FieldBuildResult> ControlCommand::build(const QStringList &pos,
+                                                      const ArgParser &parser, Console &console,
+                                                      int *status) const
 {
     const Mode *mode = findMode(pos.at(1));
     if (!mode) {
@@ -149,15 +149,15 @@ std::optional<protocol::FieldBuildResult> ControlCommand::build(const QStringLis
         *status = usageError(console, problem);
         return std::nullopt;
     }
-    protocol::FieldValues values;
+    FieldValues values;
     values.insert(QStringLiteral("id"), pos.at(0));
     values.insert(QLatin1String(mode->field), pos.at(2));
     if (hasDirection)
         values.insert(QStringLiteral("direction"), parser.value(QStringLiteral("direction")));
     if (hasMaxSpeed)
         values.insert(QStringLiteral("max_speed_dps"), parser.value(QStringLiteral("max-speed")));
-    const protocol::FieldBuildResult built =
-        FieldJson::buildRequest(QLatin1String(hasMaxSpeed ? mode->limited : mode->command), values);
+    const FieldBuildResult built =
+        RequestText::build(QLatin1String(hasMaxSpeed ? mode->limited : mode->command), values);
     if (!built.ok()) {
         *status = usageError(console, built.message);
         return std::nullopt;
@@ -174,7 +174,7 @@ std::optional<ControlCommand::Plan> ControlCommand::parse(const ArgParser &parse
                              QStringLiteral("expected ID MODE VALUE (MODE: %1)").arg(modeList()));
         return std::nullopt;
     }
-    const std::optional<protocol::FieldBuildResult> built = build(pos, parser, console, status);
+    const std::optional<FieldBuildResult> built = build(pos, parser, console, status);
     if (!built)
         return std::nullopt;
     Plan plan;

@@ -4,6 +4,7 @@
 
 #include "LiveBus.h"
 #include "MotionLimitOptions.h"
+#include "RequestText.h"
 #include <protocol/FieldJson.h>
 
 #include <safety/MotionPlanner.h>
@@ -34,8 +35,8 @@ private:
         bool json = false;
     };
     std::optional<Plan> parse(const ArgParser &parser, Console &console, int *status) const;
-    std::optional<protocol::FieldBuildResult> build(const QStringList &pos, const ArgParser &parser,
-                                                    Console &console, int *status) const;
+    std::optional<FieldBuildResult> build(const QStringList &pos, const ArgParser &parser,
+                                          Console &console, int *status) const;
     /// Reads the multi-turn angle (0x92) when the move needs it; false after printing why.
     bool readPosition(LiveBus &bus, const Plan &plan, const LiveBus::Identity &who,
                       const safety::SoftLimits &limits, safety::DrivePosition &position) const;

@@ -19,7 +19,7 @@ const QList<DriveParam> &DriveParams::all()
             if (info.id == ParamId::MaxAngleHigh)
                 continue; // the second half of max_angle_deg
             DriveParam p;
-            p.fields = protocol::FieldJson::paramFieldSpecs(info.id);
+            p.fields = protocol::ProtocolFields::ofParam(info.id);
             p.ids = {info.id};
             if (info.id == ParamId::MaxAngleLow)
                 p.ids.append(ParamId::MaxAngleHigh);

@@ -2,6 +2,7 @@
 
 #include <protocol/FieldJson.h>
 #include <protocol/Parameter.h>
+#include <protocol/ProtocolFields.h>
 #include <protocol/Request.h>
 
 #include <QtCore/QJsonObject>
@@ -24,7 +25,7 @@ struct DriveParam {
     bool isLoop() const { return fields.size() == 3; }
 };
 
-/// The V2.35 parameter set, derived from protocol::ParamTable and FieldJson's value fields
+/// The V2.35 parameter set, derived from protocol::ParamTable and ProtocolFields' value fields
 /// (one source of names): lookup, reading with read_param, and the JSON of a value.
 class DriveParams {
 public:

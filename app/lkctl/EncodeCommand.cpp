@@ -1,9 +1,11 @@
 #include "EncodeCommand.h"
 
 #include "Console.h"
+#include "RequestText.h"
 
 #include "protocol/Command.h"
 #include "protocol/FieldJson.h"
+#include "protocol/ProtocolFields.h"
 
 #include <optional>
 
@@ -27,7 +29,7 @@ QString fieldName(const QString &option)
 /// The command line after NAME: the command name and its fields, or why it was refused.
 struct EncodeArgs {
     QString command;
-    protocol::FieldValues values;
+    FieldValues values;
     QString problem;
 };
 
@@ -96,7 +98,7 @@ QString EncodeCommand::commandList()
                 .arg(QLatin1String(info.name), CommandTable::codeText(quint8(info.command)));
         if (info.writesFlash)
             head += QStringLiteral(" ROM");
-        const QList<protocol::FieldSpec> specs = FieldJson::requestFieldSpecs(info.command);
+        const QList<protocol::FieldSpec> specs = protocol::ProtocolFields::ofCommand(info.command);
         if (specs.isEmpty()) {
             text += head + QLatin1Char('\n');
             continue;
@@ -165,7 +167,7 @@ int EncodeCommand::run(const QStringList &args, Console &console)
             QStringLiteral("lkctl encode: %1 (see lkctl encode --help)").arg(parsed.problem));
         return kExitUsage;
     }
-    const protocol::FieldBuildResult built = FieldJson::buildRequest(parsed.command, parsed.values);
+    const FieldBuildResult built = RequestText::build(parsed.command, parsed.values);
     if (!built.ok()) {
         // A refused value's message already names the field and its range; a wrong name
         // is best answered by the list in the help.

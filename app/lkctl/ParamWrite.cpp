@@ -4,6 +4,7 @@
 #include "LiveBus.h"
 #include "OrderedJson.h"
 #include "ReplyText.h"
+#include "RequestText.h"
 #include "Subcommand.h"
 
 namespace lk::lkctl {
@@ -56,14 +57,13 @@ std::optional<ParamWrite::Plan> ParamWrite::plan(const QStringList &pos, bool ro
     plan.rom = rom;
     plan.json = json;
     for (protocol::ParamId id : param->ids) {
-        protocol::FieldValues fields;
+        FieldValues fields;
         fields.insert(QStringLiteral("id"), pos.at(0));
         fields.insert(QStringLiteral("param"), ParamTable::name(id));
         for (qsizetype i = 0; i < values.size(); ++i)
             fields.insert(param->fields.at(i).name, values.at(i));
         // Every range is checked here, before anything is sent (a pair is sent whole or not).
-        const protocol::FieldBuildResult built =
-            protocol::FieldJson::buildRequest(plan.command(), fields);
+        const FieldBuildResult built = RequestText::build(plan.command(), fields);
         if (!built.ok()) {
             *error = built.message;
             return std::nullopt;

@@ -6,6 +6,7 @@
 #include "OrderedJson.h"
 #include "ParamWrite.h"
 #include "ReplyText.h"
+#include "RequestText.h"
 
 #include <protocol/FieldJson.h>
 
@@ -106,7 +107,7 @@ std::optional<WriteCommand::Plan> WriteCommand::parse(const ArgParser &parser, C
     if (!rom)
         return fail(error);
     plan.rom = *rom;
-    protocol::FieldValues values;
+    FieldValues values;
     values.insert(QStringLiteral("id"), pos.at(0));
     if (pos.at(1) == QLatin1String("pid")) {
         if (pos.size() != 2 + kPidFields.size())
@@ -130,7 +131,7 @@ std::optional<WriteCommand::Plan> WriteCommand::parse(const ArgParser &parser, C
     } else {
         return fail(QStringLiteral("cannot write '%1'; write pid, accel or param").arg(pos.at(1)));
     }
-    const protocol::FieldBuildResult built = FieldJson::buildRequest(plan.command, values);
+    const FieldBuildResult built = RequestText::build(plan.command, values);
     if (!built.ok())
         return fail(built.message);
     plan.request = *built.request;

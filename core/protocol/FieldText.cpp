@@ -1,6 +1,7 @@
 #include "FieldText.h"
 
 #include "ErrorFlags.h"
+#include "ProtocolFields.h"
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QStringList>
@@ -19,6 +20,12 @@ QString centi(qint64 raw)
     return fixed(static_cast<double>(raw) / 100.0, 2);
 }
 
+/// A request field's wire value in its physical unit, at the field table's scale.
+QString physical(FieldId field, qint64 raw)
+{
+    return fixed(ProtocolFields::field(field).physical(raw), 2);
+}
+
 QString pidText(const PidGains &g)
 {
     return QCoreApplication::translate("lk::protocol::FieldText",
@@ -35,7 +42,7 @@ QString withMaxSpeed(QString text, const std::optional<quint32> &maxSpeedRaw)
 {
     if (maxSpeedRaw)
         text += QCoreApplication::translate("lk::protocol::FieldText", ", max %1 dps")
-                    .arg(centi(*maxSpeedRaw));
+                    .arg(physical(FieldId::MaxSpeedDps, *maxSpeedRaw));
     return text;
 }
 
@@ -66,7 +73,9 @@ QString parameterText(const ParameterValue &v)
         return QStringLiteral("%1 %2").arg(paramName(v.paramId)).arg(v.asInt16());
     case ParamLayout::Int32:
         return *id == ParamId::MaxSpeed
-                   ? QStringLiteral("%1 %2 dps").arg(paramName(v.paramId), centi(v.asInt32()))
+                   ? QStringLiteral("%1 %2 dps")
+                         .arg(paramName(v.paramId),
+                              physical(FieldId::ParamMaxSpeedDps, v.asInt32()))
                    : QStringLiteral("%1 %2 dps/s").arg(paramName(v.paramId)).arg(v.asInt32());
     }
     return paramName(v.paramId);
@@ -112,12 +121,12 @@ struct RequestTextVisitor {
     QString operator()(const SpeedCommand &c) const
     {
         return QCoreApplication::translate("lk::protocol::FieldText", "speed %1 dps")
-            .arg(centi(c.speedRaw));
+            .arg(physical(FieldId::SpeedDps, c.speedRaw));
     }
     QString operator()(const MultiPositionCommand &c) const
     {
         return withMaxSpeed(QCoreApplication::translate("lk::protocol::FieldText", "angle %1 deg")
-                                .arg(centi(c.angleRaw)),
+                                .arg(physical(FieldId::MultiAngleDeg, c.angleRaw)),
                             c.maxSpeedRaw);
     }
     QString operator()(const SinglePositionCommand &c) const
@@ -126,14 +135,14 @@ struct RequestTextVisitor {
                                 ? QCoreApplication::translate("lk::protocol::FieldText", "cw")
                                 : QCoreApplication::translate("lk::protocol::FieldText", "ccw");
         return withMaxSpeed(QCoreApplication::translate("lk::protocol::FieldText", "%1 to %2 deg")
-                                .arg(dir, centi(c.angleRaw)),
+                                .arg(dir, physical(FieldId::SingleAngleDeg, c.angleRaw)),
                             c.maxSpeedRaw);
     }
     QString operator()(const IncrementPositionCommand &c) const
     {
         const QString sign = c.angleRaw > 0 ? QStringLiteral("+") : QString();
         return withMaxSpeed(QCoreApplication::translate("lk::protocol::FieldText", "by %1%2 deg")
-                                .arg(sign, centi(c.angleRaw)),
+                                .arg(sign, physical(FieldId::IncrementAngleDeg, c.angleRaw)),
                             c.maxSpeedRaw);
     }
 };

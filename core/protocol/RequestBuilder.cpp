@@ -1,21 +1,15 @@
 #include "RequestBuilder.h"
 
 #include "Checksum.h"
+#include "ProtocolFields.h"
 
 #include <QtCore/QCoreApplication>
 
 #include <cmath>
-#include <limits>
 
 namespace lk::protocol::build {
 
 namespace {
-
-constexpr qint64 kInt32Min = std::numeric_limits<qint32>::min();
-constexpr qint64 kInt32Max = std::numeric_limits<qint32>::max();
-constexpr qint64 kUInt32Max = std::numeric_limits<quint32>::max();
-// Largest angle whose 0.01-deg value still fits an int64 after rounding through a double.
-constexpr double kMultiTurnLimitDeg = 9.0e16;
 
 BuildResult fail(const QString &field, const QString &range, const QString &problem = {})
 {
@@ -36,6 +30,26 @@ QString got(double v)
     return QCoreApplication::translate("lk::protocol::RequestBuilder", "got %1").arg(v, 0, 'g', 12);
 }
 
+/// The refusal of a value of `id`, with the name and range of its row in the field table.
+FieldError refusal(FieldId id, const QString &problem)
+{
+    const ProtocolField &f = ProtocolFields::field(id);
+    return FieldError{QLatin1String(f.name), QLatin1String(f.range), problem};
+}
+
+BuildResult refuse(FieldId id, double value)
+{
+    BuildResult r;
+    r.error = refusal(id, got(value));
+    return r;
+}
+
+bool inRange(FieldId id, qint64 value)
+{
+    const ProtocolField &f = ProtocolFields::field(id);
+    return value >= f.min && value <= f.max;
+}
+
 /// A physical value scaled to wire units and rounded, if finite and within [min, max] raw.
 std::optional<qint64> scaled(double value, double unitsPerLsb, qint64 min, qint64 max)
 {
@@ -47,22 +61,28 @@ std::optional<qint64> scaled(double value, double unitsPerLsb, qint64 min, qint6
     return static_cast<qint64>(raw);
 }
 
+/// A physical value of field `id` in its wire units, if within the field's wire range.
+std::optional<qint64> scaled(FieldId id, double value)
+{
+    const ProtocolField &f = ProtocolFields::field(id);
+    return scaled(value, f.unitsPerLsb(), f.min, f.max);
+}
+
+/// max_speed_dps of the limited position commands (uint32 of 0.01 dps).
 std::optional<quint32> maxSpeedRaw(double maxSpeedDps)
 {
-    const auto raw = scaled(maxSpeedDps, kCentiUnits, 0, kUInt32Max);
+    const auto raw = scaled(FieldId::MaxSpeedDps, maxSpeedDps);
     if (!raw)
         return std::nullopt;
     return static_cast<quint32>(*raw);
 }
 
-const QString kMaxSpeedRange = QStringLiteral("0..42949672.95 dps");
-
 } // namespace
 
 std::optional<FieldError> checkId(int id)
 {
-    if (id < kMinId || id > kMaxId)
-        return FieldError{QStringLiteral("id"), QStringLiteral("1..32"), got(id)};
+    if (!inRange(FieldId::Id, id))
+        return refusal(FieldId::Id, got(id));
     return std::nullopt;
 }
 
@@ -85,12 +105,12 @@ BuildResult writePid(int id, int angleKp, int angleKi, int speedKp, int speedKi,
 {
     if (auto e = checkId(id))
         return fail(e->field, e->range, e->problem);
-    const std::pair<const char *, int> gains[] = {{"angle_kp", angleKp}, {"angle_ki", angleKi},
-                                                  {"speed_kp", speedKp}, {"speed_ki", speedKi},
-                                                  {"iq_kp", iqKp},       {"iq_ki", iqKi}};
-    for (const auto &[name, value] : gains) {
-        if (value < 0 || value > 255)
-            return fail(QString::fromLatin1(name), QStringLiteral("0..255"), got(value));
+    const std::pair<FieldId, int> gains[] = {
+        {FieldId::AngleKp, angleKp}, {FieldId::AngleKi, angleKi}, {FieldId::SpeedKp, speedKp},
+        {FieldId::SpeedKi, speedKi}, {FieldId::IqKp, iqKp},       {FieldId::IqKi, iqKi}};
+    for (const auto &[field, value] : gains) {
+        if (!inRange(field, value))
+            return refuse(field, value);
     }
     const PidGains g{quint8(angleKp), quint8(angleKi), quint8(speedKp),
                      quint8(speedKi), quint8(iqKp),    quint8(iqKi)};
@@ -106,10 +126,8 @@ BuildResult writeAcceleration(int id, qint64 accelDps2)
 {
     if (auto e = checkId(id))
         return fail(e->field, e->range, e->problem);
-    // int32 on the wire (ERRATA); a negative acceleration has no meaning, so it is refused.
-    if (accelDps2 < 0 || accelDps2 > kInt32Max)
-        return fail(QStringLiteral("accel_dps2"), QStringLiteral("0..2147483647 dps/s"),
-                    got(double(accelDps2)));
+    if (!inRange(FieldId::AccelDps2, accelDps2))
+        return refuse(FieldId::AccelDps2, double(accelDps2));
     return done(Command::WriteAccelRam, id, Acceleration{static_cast<qint32>(accelDps2)});
 }
 
@@ -117,9 +135,8 @@ BuildResult writeEncoderOffset(int id, qint64 offset)
 {
     if (auto e = checkId(id))
         return fail(e->field, e->range, e->problem);
-    if (offset < 0 || offset > 65535)
-        return fail(QStringLiteral("encoder_offset"), QStringLiteral("0..65535"),
-                    got(double(offset)));
+    if (!inRange(FieldId::EncoderOffset, offset))
+        return refuse(FieldId::EncoderOffset, double(offset));
     return done(Command::WriteEncoderOffset, id, EncoderOffset{static_cast<quint16>(offset)});
 }
 
@@ -127,9 +144,8 @@ BuildResult openLoop(int id, qint64 power)
 {
     if (auto e = checkId(id))
         return fail(e->field, e->range, e->problem);
-    // V2.3 allows +-1000, V2.35 +-850: the stricter bound serves both (V2.35.md section 11).
-    if (power < -850 || power > 850)
-        return fail(QStringLiteral("power"), QStringLiteral("-850..850"), got(double(power)));
+    if (!inRange(FieldId::Power, power))
+        return refuse(FieldId::Power, double(power));
     return done(Command::OpenLoop, id, OpenLoopCommand{static_cast<qint16>(power)});
 }
 
@@ -137,9 +153,9 @@ BuildResult torque(int id, double iqA)
 {
     if (auto e = checkId(id))
         return fail(e->field, e->range, e->problem);
-    const auto raw = scaled(iqA, kIqCommandAmpsPerLsb, -2000, 2000);
+    const auto raw = scaled(FieldId::TorqueIqA, iqA);
     if (!raw)
-        return fail(QStringLiteral("iq_a"), QStringLiteral("-32..32 A"), got(iqA));
+        return refuse(FieldId::TorqueIqA, iqA);
     return done(Command::Torque, id, TorqueCommand{static_cast<qint16>(*raw)});
 }
 
@@ -147,11 +163,13 @@ BuildResult torque(int id, double iqA, const DecodeContext &context)
 {
     if (auto e = checkId(id))
         return fail(e->field, e->range, e->problem);
+    // The wire range of the field table at the drive's own scale.
+    const ProtocolField &f = ProtocolFields::field(FieldId::TorqueIqA);
     const double lsb = iqCommandAmpsPerLsb(context);
-    const auto raw = scaled(iqA, lsb, -2000, 2000);
+    const auto raw = scaled(iqA, lsb, f.min, f.max);
     if (!raw) {
-        const QString limit = QString::number(2000 * lsb, 'f', 2);
-        return fail(QStringLiteral("iq_a"), QStringLiteral("-%1..%1 A").arg(limit), got(iqA));
+        const QString limit = QString::number(f.max * lsb, 'f', 2);
+        return fail(QLatin1String(f.name), QStringLiteral("-%1..%1 A").arg(limit), got(iqA));
     }
     return done(Command::Torque, id, TorqueCommand{static_cast<qint16>(*raw)});
 }
@@ -160,10 +178,9 @@ BuildResult speed(int id, double speedDps)
 {
     if (auto e = checkId(id))
         return fail(e->field, e->range, e->problem);
-    const auto raw = scaled(speedDps, kCentiUnits, kInt32Min, kInt32Max);
+    const auto raw = scaled(FieldId::SpeedDps, speedDps);
     if (!raw)
-        return fail(QStringLiteral("speed_dps"), QStringLiteral("-21474836.48..21474836.47 dps"),
-                    got(speedDps));
+        return refuse(FieldId::SpeedDps, speedDps);
     return done(Command::Speed, id, SpeedCommand{static_cast<qint32>(*raw)});
 }
 
@@ -172,15 +189,16 @@ BuildResult multi(int id, double angleDeg, std::optional<double> maxSpeedDps)
 {
     if (auto e = checkId(id))
         return fail(e->field, e->range, e->problem);
-    if (!std::isfinite(angleDeg) || std::fabs(angleDeg) > kMultiTurnLimitDeg)
-        return fail(QStringLiteral("angle_deg"), QStringLiteral("-9e16..9e16 deg"), got(angleDeg));
+    const auto raw = scaled(FieldId::MultiAngleDeg, angleDeg);
+    if (!raw)
+        return refuse(FieldId::MultiAngleDeg, angleDeg);
     MultiPositionCommand c;
-    c.angleRaw = static_cast<qint64>(std::llround(angleDeg / kCentiUnits));
+    c.angleRaw = *raw;
     if (!maxSpeedDps)
         return done(Command::MultiPosition, id, c);
     c.maxSpeedRaw = maxSpeedRaw(*maxSpeedDps);
     if (!c.maxSpeedRaw)
-        return fail(QStringLiteral("max_speed_dps"), kMaxSpeedRange, got(*maxSpeedDps));
+        return refuse(FieldId::MaxSpeedDps, *maxSpeedDps);
     return done(Command::MultiPositionLimited, id, c);
 }
 
@@ -188,9 +206,9 @@ BuildResult single(int id, SpinDirection dir, double angleDeg, std::optional<dou
 {
     if (auto e = checkId(id))
         return fail(e->field, e->range, e->problem);
-    const auto raw = scaled(angleDeg, kCentiUnits, 0, 35999);
+    const auto raw = scaled(FieldId::SingleAngleDeg, angleDeg);
     if (!raw)
-        return fail(QStringLiteral("angle_deg"), QStringLiteral("0..359.99 deg"), got(angleDeg));
+        return refuse(FieldId::SingleAngleDeg, angleDeg);
     SinglePositionCommand c;
     c.direction = dir;
     c.angleRaw = static_cast<quint16>(*raw);
@@ -198,7 +216,7 @@ BuildResult single(int id, SpinDirection dir, double angleDeg, std::optional<dou
         return done(Command::SinglePosition, id, c);
     c.maxSpeedRaw = maxSpeedRaw(*maxSpeedDps);
     if (!c.maxSpeedRaw)
-        return fail(QStringLiteral("max_speed_dps"), kMaxSpeedRange, got(*maxSpeedDps));
+        return refuse(FieldId::MaxSpeedDps, *maxSpeedDps);
     return done(Command::SinglePositionLimited, id, c);
 }
 
@@ -206,17 +224,16 @@ BuildResult increment(int id, double deltaDeg, std::optional<double> maxSpeedDps
 {
     if (auto e = checkId(id))
         return fail(e->field, e->range, e->problem);
-    const auto raw = scaled(deltaDeg, kCentiUnits, kInt32Min, kInt32Max);
+    const auto raw = scaled(FieldId::IncrementAngleDeg, deltaDeg);
     if (!raw)
-        return fail(QStringLiteral("angle_deg"), QStringLiteral("-21474836.48..21474836.47 deg"),
-                    got(deltaDeg));
+        return refuse(FieldId::IncrementAngleDeg, deltaDeg);
     IncrementPositionCommand c;
     c.angleRaw = static_cast<qint32>(*raw);
     if (!maxSpeedDps)
         return done(Command::IncrementPosition, id, c);
     c.maxSpeedRaw = maxSpeedRaw(*maxSpeedDps);
     if (!c.maxSpeedRaw)
-        return fail(QStringLiteral("max_speed_dps"), kMaxSpeedRange, got(*maxSpeedDps));
+        return refuse(FieldId::MaxSpeedDps, *maxSpeedDps);
     return done(Command::IncrementPositionLimited, id, c);
 }
 } // namespace
@@ -261,63 +278,31 @@ BuildResult writeParamPid(int id, ParamId param, qint64 kp, qint64 ki, qint64 kd
     if (info.layout != ParamLayout::Pid)
         return fail(QStringLiteral("param"), QStringLiteral("angle_pid|speed_pid|iq_pid"),
                     ParamTable::name(param));
-    const QString loop = ParamTable::name(param).chopped(4); // "speed_pid" -> "speed"
-    const std::pair<const char *, qint64> gains[] = {{"_kp", kp}, {"_ki", ki}, {"_kd", kd}};
-    for (const auto &[suffix, value] : gains) {
-        if (value < 0 || value > 65535)
-            return fail(loop + QLatin1String(suffix), QStringLiteral("0..65535"),
-                        got(double(value)));
+    const QList<FieldSpec> fields = ProtocolFields::ofParam(param); // Kp, Ki, Kd
+    const qint64 gains[] = {kp, ki, kd};
+    for (qsizetype i = 0; i < fields.size(); ++i) {
+        if (!inRange(fields.at(i).id, gains[i]))
+            return refuse(fields.at(i).id, double(gains[i]));
     }
     return done(rom ? Command::WriteParamRom : Command::WriteParamRam, id,
                 ParameterValue::pid(param, quint16(kp), quint16(ki), quint16(kd)));
 }
 
-namespace {
-struct ParamRange {
-    const char *field;
-    double unitsPerLsb;
-    qint64 min, max;
-    const char *text;
-};
-
-std::optional<ParamRange> paramRange(ParamId param)
-{
-    switch (param) {
-    case ParamId::MaxTorqueCurrent:
-        return ParamRange{"max_torque", 1, 0, 2048, "0..2048"};
-    case ParamId::MaxSpeed:
-        return ParamRange{"max_speed_dps", kCentiUnits, 0, kInt32Max, "0..21474836.47 dps"};
-    case ParamId::CurrentRamp:
-        return ParamRange{"current_ramp", 1, 0, 32767, "0..32767"};
-    case ParamId::SpeedRamp:
-        return ParamRange{"speed_ramp_dps2", 1, 0, kInt32Max, "0..2147483647 dps/s"};
-    case ParamId::MaxAngleLow:
-    case ParamId::MaxAngleHigh:
-        return ParamRange{"max_angle_deg", kCentiUnits, 0, std::numeric_limits<qint64>::max(),
-                          "0..9e16 deg"};
-    default:
-        return std::nullopt;
-    }
-}
-} // namespace
-
 BuildResult writeParam(int id, ParamId param, double value, bool rom)
 {
     if (auto e = checkId(id))
         return fail(e->field, e->range, e->problem);
-    const std::optional<ParamRange> range = paramRange(param);
-    if (!range)
+    if (ParamTable::info(param).layout == ParamLayout::Pid)
         return fail(QStringLiteral("param"),
                     QStringLiteral("max_torque|max_speed|max_angle_low|max_angle_high|"
                                    "current_ramp|speed_ramp"),
                     ParamTable::name(param));
+    const FieldId field = ProtocolFields::ofParam(param).constFirst().id;
     const bool angle = param == ParamId::MaxAngleLow || param == ParamId::MaxAngleHigh;
-    if (angle && (!std::isfinite(value) || value < 0 || value > kMultiTurnLimitDeg))
-        return fail(QLatin1String(range->field), QLatin1String(range->text), got(value));
-    const auto raw = angle ? std::optional<qint64>(std::llround(value / kCentiUnits))
-                           : scaled(value, range->unitsPerLsb, range->min, range->max);
+    // A negative limit has no meaning, not even one that rounds to 0.
+    const auto raw = angle && value < 0 ? std::nullopt : scaled(field, value);
     if (!raw)
-        return fail(QLatin1String(range->field), QLatin1String(range->text), got(value));
+        return refuse(field, value);
     ParameterValue v;
     if (angle)
         v = ParameterValue::maxAngleHalf(*raw, param == ParamId::MaxAngleHigh);

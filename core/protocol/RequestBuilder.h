@@ -4,8 +4,9 @@
 
 namespace lk::protocol::build {
 
-// Typed request builders. Each validates every argument against the wire range of the spec
-// and ERRATA.md and returns a FieldError naming the field and its range instead of clamping.
+// Typed request builders. Each validates every argument against its wire range in the field
+// table (ProtocolFields.h: the spec and ERRATA.md, the stricter bound where V2.3 and V2.35
+// differ) and returns a FieldError naming the field and its range instead of clamping.
 // Physical arguments (A, dps, deg) are rounded to the nearest wire unit; NaN and infinities
 // are refused. Field names follow CLI.md.
 

@@ -2,6 +2,7 @@
 // real captures of section 7 and 12, both directions, and what the same bytes mean to a V2.3
 // decoder (the cross-decoding that made a 24 V supply read 308 V).
 #include "ProtocolTestUtil.h"
+#include "RequestText.h"
 
 #include "protocol/ErrorFlags.h"
 #include "protocol/FieldJson.h"
@@ -11,6 +12,8 @@
 #include <QtTest/QtTest>
 
 using namespace lk::protocol;
+using lk::lkctl::FieldBuildResult;
+using lk::lkctl::RequestText;
 using lk::test::hex;
 using lk::test::spaced;
 
@@ -329,30 +332,30 @@ void tst_V235Codec::badDataChecksumCaptureCounted()
 void tst_V235Codec::encodeTextParams()
 {
     FieldBuildResult r =
-        FieldJson::buildRequest(QStringLiteral("write_param_ram"), {{"id", "1"},
-                                                                    {"param", "speed_pid"},
-                                                                    {"speed_kp", "50"},
-                                                                    {"speed_ki", "20"},
-                                                                    {"speed_kd", "0"}});
+        RequestText::build(QStringLiteral("write_param_ram"), {{"id", "1"},
+                                                               {"param", "speed_pid"},
+                                                               {"speed_kp", "50"},
+                                                               {"speed_ki", "20"},
+                                                               {"speed_kd", "0"}});
     QVERIFY2(r.ok(), qPrintable(r.message));
     QCOMPARE(spaced(r.request->encode()), QStringLiteral("3E 42 01 07 88 97 32 00 14 00 00 00 DD"));
-    r = FieldJson::buildRequest(QStringLiteral("write_param_rom"),
-                                {{"id", "1"}, {"param", "max_speed"}, {"max_speed_dps", "360"}});
+    r = RequestText::build(QStringLiteral("write_param_rom"),
+                           {{"id", "1"}, {"param", "max_speed"}, {"max_speed_dps", "360"}});
     QVERIFY2(r.ok(), qPrintable(r.message));
     QCOMPARE(spaced(r.request->encode()), QStringLiteral("3E 44 01 07 8A 9A A0 8C 00 00 00 00 C6"));
-    r = FieldJson::buildRequest(QStringLiteral("write_param_ram"), {{"id", "1"},
-                                                                    {"param", "speed_pid"},
-                                                                    {"speed_kp", "70000"},
-                                                                    {"speed_ki", "0"},
-                                                                    {"speed_kd", "0"}});
+    r = RequestText::build(QStringLiteral("write_param_ram"), {{"id", "1"},
+                                                               {"param", "speed_pid"},
+                                                               {"speed_kp", "70000"},
+                                                               {"speed_ki", "0"},
+                                                               {"speed_kd", "0"}});
     QVERIFY(!r.ok());
     QVERIFY2(r.message.contains(QLatin1String("speed_kp")) &&
                  r.message.contains(QLatin1String("0..65535")),
              qPrintable(r.message));
-    r = FieldJson::buildRequest(QStringLiteral("brake"), {{"id", "2"}, {"action", "release"}});
+    r = RequestText::build(QStringLiteral("brake"), {{"id", "2"}, {"action", "release"}});
     QVERIFY2(r.ok(), qPrintable(r.message));
     QCOMPARE(spaced(r.request->encode()), QStringLiteral("3E 8C 02 01 CD 01 01"));
-    r = FieldJson::buildRequest(QStringLiteral("read_param"), {{"id", "1"}, {"param", "nope"}});
+    r = RequestText::build(QStringLiteral("read_param"), {{"id", "1"}, {"param", "nope"}});
     QVERIFY(!r.ok());
 }
 

@@ -1,4 +1,6 @@
+#include "RequestText.h"
 #include "protocol/FieldJson.h"
+#include "protocol/ProtocolFields.h"
 #include "protocol/RequestBuilder.h"
 #include "protocol/StreamParser.h"
 
@@ -8,6 +10,9 @@
 #include <QtTest/QtTest>
 
 using namespace lk::protocol;
+using lk::lkctl::FieldBuildResult;
+using lk::lkctl::FieldValues;
+using lk::lkctl::RequestText;
 
 Q_DECLARE_METATYPE(lk::protocol::Request)
 Q_DECLARE_METATYPE(lk::protocol::Reply)
@@ -187,9 +192,9 @@ QString validText(const FieldSpec &s)
 // The specs of a command with valid values; a parameter write takes angle_pid's fields.
 QList<FieldSpec> specsWithParam(Command command)
 {
-    QList<FieldSpec> specs = FieldJson::requestFieldSpecs(command);
+    QList<FieldSpec> specs = ProtocolFields::ofCommand(command);
     if (command == Command::WriteParamRam || command == Command::WriteParamRom)
-        specs.append(FieldJson::paramFieldSpecs(lk::protocol::ParamId::AnglePid));
+        specs.append(ProtocolFields::ofParam(lk::protocol::ParamId::AnglePid));
     return specs;
 }
 } // namespace
@@ -210,7 +215,7 @@ void tst_FieldJson::requestFieldsCoverEveryCommand()
                 expectedKeys << QString(s.name).replace(QRegularExpression("_[a-z0-9]+$"),
                                                         QStringLiteral("_raw"));
         }
-        const FieldBuildResult r = FieldJson::buildRequest(info.command, values);
+        const FieldBuildResult r = RequestText::build(info.command, values);
         QVERIFY2(r.ok(), qPrintable(r.message));
         QStringList keys = FieldJson::requestFields(*r.request).keys();
         keys.sort();
@@ -374,7 +379,7 @@ void tst_FieldJson::roundTripThroughText()
                                     ? it.value().toString()
                                     : QString::number(it.value().toDouble(), 'g', 17));
     }
-    const FieldBuildResult r = FieldJson::buildRequest(request.command, values);
+    const FieldBuildResult r = RequestText::build(request.command, values);
     QVERIFY2(r.ok(), qPrintable(r.message));
     QCOMPARE(r.request->encode().toHex(' '), request.encode().toHex(' '));
 }
@@ -445,7 +450,7 @@ void tst_FieldJson::buildRequestRefuses()
     QFETCH(FieldValues, values);
     QFETCH(QString, field);
     QFETCH(QString, message);
-    const FieldBuildResult r = FieldJson::buildRequest(command, values);
+    const FieldBuildResult r = RequestText::build(command, values);
     QVERIFY(!r.ok());
     QCOMPARE(r.message, message);
     QCOMPARE(r.fieldError ? r.fieldError->field : QString(), field);
@@ -459,11 +464,11 @@ void tst_FieldJson::specRangesMatchBuilders()
     int checked = 0;
     for (const CommandInfo &info : CommandTable::all()) {
         QList<FieldSpec> specs = specsWithParam(info.command);
-        specs.prepend(FieldJson::idSpec());
+        specs.prepend(ProtocolFields::idSpec());
         FieldValues valid;
         for (const FieldSpec &s : specs)
             valid.insert(s.name, validText(s));
-        QVERIFY2(FieldJson::buildRequest(info.command, valid).ok(), info.name);
+        QVERIFY2(RequestText::build(info.command, valid).ok(), info.name);
         for (const FieldSpec &s : specs) {
             if (s.kind == FieldKind::Direction || s.kind == FieldKind::Choice)
                 continue; // not builder arguments: the builders take enums
@@ -473,7 +478,7 @@ void tst_FieldJson::specRangesMatchBuilders()
             for (const QString &v : bad) {
                 FieldValues values = valid;
                 values.insert(s.name, v);
-                const FieldBuildResult r = FieldJson::buildRequest(info.command, values);
+                const FieldBuildResult r = RequestText::build(info.command, values);
                 if (r.ok())
                     continue;
                 refused = true;

@@ -1,0 +1,311 @@
+#include "ProtocolFields.h"
+
+#include "Checksum.h"
+
+#include <QtCore/QHash>
+#include <QtCore/QSet>
+#include <QtCore/QStringList>
+
+#include <limits>
+
+namespace lk::protocol {
+
+namespace {
+
+constexpr qint64 kInt32Min = std::numeric_limits<qint32>::min();
+constexpr qint64 kInt32Max = std::numeric_limits<qint32>::max();
+constexpr qint64 kUInt32Max = std::numeric_limits<quint32>::max();
+// Multi-turn angles stop at 9e16 deg: beyond it the 0.01-deg value, rounded through a double,
+// may not fit an int64.
+constexpr qint64 kMultiTurnLimitRaw = 9'000'000'000'000'000'000;
+
+using K = FieldKind;
+
+/// A field that is only written: frame keys, reply values, `<field>_raw`.
+constexpr ProtocolField out(const char *name, const char *unit = "", bool real = false)
+{
+    return {name, FieldId::None, real, unit};
+}
+
+constexpr ProtocolField real(const char *name, const char *unit)
+{
+    return out(name, unit, true);
+}
+
+/// A request field of integer wire units.
+constexpr ProtocolField integer(FieldId id, const char *name, qint64 min, qint64 max,
+                                const char *range, const char *unit = "")
+{
+    return {name, id, false, unit, 1, 1, K::Integer, min, max, range};
+}
+
+/// A request field in physical units, rounded to the nearest wire unit (scaleNum/scaleDen
+/// each); `real`: JSON writes it as a real.
+constexpr ProtocolField number(FieldId id, const char *name, bool real, const char *unit,
+                               qint64 scaleNum, qint64 scaleDen, qint64 min, qint64 max,
+                               const char *range)
+{
+    return {name, id, real, unit, scaleNum, scaleDen, K::Number, min, max, range};
+}
+
+constexpr ProtocolField pidGain(FieldId id, const char *name)
+{
+    return integer(id, name, 0, 255, "0..255"); // V2.3 0x31/0x32: one byte each
+}
+
+constexpr ProtocolField paramGain(FieldId id, const char *name)
+{
+    return integer(id, name, 0, 65535, "0..65535"); // V2.35 loop parameters: uint16
+}
+
+// A function's static: built on first use, whatever the order of static initialisation.
+const QList<ProtocolField> &table()
+{
+    static const QList<ProtocolField> kFields{
+        // The frame keys; "direction" doubles as single_position's spin direction, "id" as the
+        // drive ID every request takes.
+        {"direction", FieldId::Direction, false, "", 1, 1, K::Direction, 0, 1, "cw|ccw"},
+        out("command"),
+        out("code"),
+        integer(FieldId::Id, "id", kMinId, kMaxId, "1..32"),
+        out("fields"),
+        out("error"),
+        out("bytes"),
+        // read_state1 (V2.35.md section 5).
+        out("temperature_c", "C"),
+        real("voltage_v", "V"),
+        out("voltage_raw"),
+        real("bus_current_a", "A"),
+        out("bus_current_raw"),
+        out("motor_on"),
+        out("motor_state_raw"),
+        out("error_state"),
+        out("low_voltage"),
+        out("over_voltage"),
+        out("driver_over_temperature"),
+        out("over_temperature"),
+        out("motor_over_temperature"),
+        out("over_current"),
+        out("short_circuit"),
+        out("stall"),
+        out("input_timeout"),
+        // Torque and speed: V2.3 32 A per 2000 LSB; V2.35 allows +-2048 at its own scale, the
+        // stricter +-2000 serves both (ERRATA).
+        number(FieldId::TorqueIqA, "iq_a", true, "A", 32, 2000, -2000, 2000, "-32..32 A"),
+        out("iq_raw"),
+        // V2.3 allows +-1000, V2.35 +-850: the stricter bound serves both (V2.35.md section 11).
+        integer(FieldId::Power, "power", -850, 850, "-850..850"),
+        number(FieldId::SpeedDps, "speed_dps", true, "dps", 1, 100, kInt32Min, kInt32Max,
+               "-21474836.48..21474836.47 dps"),
+        out("speed_raw"),
+        real("ia_a", "A"),
+        out("ia_raw"),
+        real("ib_a", "A"),
+        out("ib_raw"),
+        real("ic_a", "A"),
+        out("ic_raw"),
+        out("encoder"),
+        out("encoder_raw"),
+        integer(FieldId::EncoderOffset, "encoder_offset", 0, 65535, "0..65535"),
+        {"action", FieldId::Action, false, "", 1, 1, K::Choice, 0, 0, "engage|release|read"},
+        // The words are ParamTable's names (see spec()).
+        {"param", FieldId::Param, false, "", 1, 1, K::Choice, 0, 0, ""},
+        out("param_id"),
+        number(FieldId::MultiAngleDeg, "angle_deg", true, "deg", 1, 100, -kMultiTurnLimitRaw,
+               kMultiTurnLimitRaw, "-9e16..9e16 deg"),
+        number(FieldId::SingleAngleDeg, "angle_deg", true, "deg", 1, 100, 0, 35999,
+               "0..359.99 deg"),
+        number(FieldId::IncrementAngleDeg, "angle_deg", true, "deg", 1, 100, kInt32Min, kInt32Max,
+               "-21474836.48..21474836.47 deg"),
+        out("angle_raw"),
+        // uint32 of 0.01 dps in the limited position commands, int32 as a V2.35 parameter.
+        number(FieldId::MaxSpeedDps, "max_speed_dps", true, "dps", 1, 100, 0, kUInt32Max,
+               "0..42949672.95 dps"),
+        number(FieldId::ParamMaxSpeedDps, "max_speed_dps", true, "dps", 1, 100, 0, kInt32Max,
+               "0..21474836.47 dps"),
+        out("max_speed_raw"),
+        pidGain(FieldId::AngleKp, "angle_kp"),
+        paramGain(FieldId::AngleKpParam, "angle_kp"),
+        pidGain(FieldId::AngleKi, "angle_ki"),
+        paramGain(FieldId::AngleKiParam, "angle_ki"),
+        paramGain(FieldId::AngleKdParam, "angle_kd"),
+        pidGain(FieldId::SpeedKp, "speed_kp"),
+        paramGain(FieldId::SpeedKpParam, "speed_kp"),
+        pidGain(FieldId::SpeedKi, "speed_ki"),
+        paramGain(FieldId::SpeedKiParam, "speed_ki"),
+        paramGain(FieldId::SpeedKdParam, "speed_kd"),
+        pidGain(FieldId::IqKp, "iq_kp"),
+        paramGain(FieldId::IqKpParam, "iq_kp"),
+        pidGain(FieldId::IqKi, "iq_ki"),
+        paramGain(FieldId::IqKiParam, "iq_ki"),
+        paramGain(FieldId::IqKdParam, "iq_kd"),
+        // int32 on the wire (ERRATA); a negative acceleration has no meaning.
+        integer(FieldId::AccelDps2, "accel_dps2", 0, kInt32Max, "0..2147483647 dps/s", "dps/s"),
+        // V2.35 parameters (V2.35.md section 6); max_torque is in iq command units.
+        number(FieldId::MaxTorque, "max_torque", false, "", 1, 1, 0, 2048, "0..2048"),
+        number(FieldId::MaxAngleDeg, "max_angle_deg", true, "deg", 1, 100, 0, kMultiTurnLimitRaw,
+               "0..9e16 deg"),
+        out("max_angle_raw"),
+        out("max_angle_half_raw"),
+        number(FieldId::CurrentRamp, "current_ramp", false, "", 1, 1, 0, 32767, "0..32767"),
+        number(FieldId::SpeedRampDps2, "speed_ramp_dps2", false, "dps/s", 1, 1, 0, kInt32Max,
+               "0..2147483647 dps/s"),
+        out("value_bytes"),
+        out("success"),
+        out("success_flag"),
+        out("brake_released"),
+        out("brake_raw"),
+        out("driver_name"),
+        out("motor_name"),
+        real("hardware_version", ""),
+        out("hardware_version_raw"),
+        real("firmware_version", ""),
+        out("firmware_version_raw"),
+        out("motor_id"),
+        out("motor_version_raw"),
+    };
+    return kFields;
+}
+
+QString paramWords()
+{
+    QStringList names;
+    for (const ParamInfo &p : ParamTable::all())
+        names << QString::fromLatin1(p.name);
+    return names.join(QLatin1Char('|'));
+}
+
+QList<FieldSpec> specs(std::initializer_list<FieldId> ids)
+{
+    QList<FieldSpec> list;
+    for (FieldId id : ids)
+        list.append(ProtocolFields::spec(id));
+    return list;
+}
+
+} // namespace
+
+const QList<ProtocolField> &ProtocolFields::all()
+{
+    return table();
+}
+
+const ProtocolField &ProtocolFields::field(FieldId id)
+{
+    static const QHash<FieldId, qsizetype> index = [] {
+        QHash<FieldId, qsizetype> h;
+        for (qsizetype i = 0; i < table().size(); ++i) {
+            if (table().at(i).isRequestField())
+                h.insert(table().at(i).id, i);
+        }
+        return h;
+    }();
+    Q_ASSERT(index.contains(id));
+    return table().at(index.value(id));
+}
+
+FieldSpec ProtocolFields::spec(FieldId id)
+{
+    const ProtocolField &f = field(id);
+    return {QString::fromLatin1(f.name), f.kind,
+            id == FieldId::Param ? paramWords() : QString::fromLatin1(f.range), id};
+}
+
+FieldSpec ProtocolFields::idSpec()
+{
+    return spec(FieldId::Id);
+}
+
+int ProtocolFields::rank(const QString &name)
+{
+    // A name shared by several rows ranks at its first.
+    static const QHash<QString, int> ranks = [] {
+        QHash<QString, int> r;
+        for (qsizetype i = 0; i < table().size(); ++i) {
+            const QString name = QString::fromLatin1(table().at(i).name);
+            if (!r.contains(name))
+                r.insert(name, int(r.size()));
+        }
+        return r;
+    }();
+    return ranks.value(name, int(ranks.size()));
+}
+
+bool ProtocolFields::isReal(const QString &name)
+{
+    static const QSet<QString> reals = [] {
+        QSet<QString> s;
+        for (const ProtocolField &f : table()) {
+            if (f.real)
+                s.insert(QString::fromLatin1(f.name));
+        }
+        return s;
+    }();
+    return reals.contains(name);
+}
+
+QList<FieldSpec> ProtocolFields::ofCommand(Command command)
+{
+    switch (command) {
+    case Command::WritePidRam:
+    case Command::WritePidRom:
+        return specs({FieldId::AngleKp, FieldId::AngleKi, FieldId::SpeedKp, FieldId::SpeedKi,
+                      FieldId::IqKp, FieldId::IqKi});
+    case Command::WriteAccelRam:
+        return specs({FieldId::AccelDps2});
+    case Command::WriteEncoderOffset:
+        return specs({FieldId::EncoderOffset});
+    case Command::OpenLoop:
+        return specs({FieldId::Power});
+    case Command::Torque:
+        return specs({FieldId::TorqueIqA});
+    case Command::Speed:
+        return specs({FieldId::SpeedDps});
+    case Command::MultiPosition:
+        return specs({FieldId::MultiAngleDeg});
+    case Command::MultiPositionLimited:
+        return specs({FieldId::MultiAngleDeg, FieldId::MaxSpeedDps});
+    case Command::SinglePosition:
+        return specs({FieldId::Direction, FieldId::SingleAngleDeg});
+    case Command::SinglePositionLimited:
+        return specs({FieldId::Direction, FieldId::SingleAngleDeg, FieldId::MaxSpeedDps});
+    case Command::IncrementPosition:
+        return specs({FieldId::IncrementAngleDeg});
+    case Command::IncrementPositionLimited:
+        return specs({FieldId::IncrementAngleDeg, FieldId::MaxSpeedDps});
+    case Command::ReadParam:
+    case Command::WriteParamRam:
+    case Command::WriteParamRom:
+        return specs({FieldId::Param});
+    case Command::Brake:
+        return specs({FieldId::Action});
+    default:
+        return {};
+    }
+}
+
+QList<FieldSpec> ProtocolFields::ofParam(ParamId param)
+{
+    switch (param) {
+    case ParamId::AnglePid:
+        return specs({FieldId::AngleKpParam, FieldId::AngleKiParam, FieldId::AngleKdParam});
+    case ParamId::SpeedPid:
+        return specs({FieldId::SpeedKpParam, FieldId::SpeedKiParam, FieldId::SpeedKdParam});
+    case ParamId::CurrentPid:
+        return specs({FieldId::IqKpParam, FieldId::IqKiParam, FieldId::IqKdParam});
+    case ParamId::MaxTorqueCurrent:
+        return specs({FieldId::MaxTorque});
+    case ParamId::MaxSpeed:
+        return specs({FieldId::ParamMaxSpeedDps});
+    case ParamId::MaxAngleLow:
+    case ParamId::MaxAngleHigh:
+        return specs({FieldId::MaxAngleDeg});
+    case ParamId::CurrentRamp:
+        return specs({FieldId::CurrentRamp});
+    case ParamId::SpeedRamp:
+        return specs({FieldId::SpeedRampDps2});
+    }
+    return {};
+}
+
+} // namespace lk::protocol
