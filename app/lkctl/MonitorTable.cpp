@@ -10,7 +10,6 @@
 
 namespace lk::lkctl {
 
-using bus::TelemetryField;
 using bus::TelemetryFields;
 using bus::TelemetrySample;
 using protocol::Command;
@@ -35,7 +34,7 @@ TelemetryCsv layoutFor(const QVector<Command> &commands,
         TelemetryFields fields;
         for (Command c : commands) {
             if (answers(it.value(), c))
-                fields |= MonitorTable::fieldsOf(c, it.value(), v235.contains(it.key()));
+                fields |= TelemetrySample::fieldsOf(c, it.value(), v235.contains(it.key()));
         }
         for (int column : TelemetryColumns::of(fields))
             cells.append({it.key(), column});
@@ -46,29 +45,6 @@ TelemetryCsv layoutFor(const QVector<Command> &commands,
 }
 
 } // namespace
-
-TelemetryFields MonitorTable::fieldsOf(Command command, std::optional<protocol::Series> series,
-                                       bool v235)
-{
-    switch (command) {
-    case Command::ReadState1:
-        return TelemetryField::Temperature | TelemetryField::Voltage | TelemetryField::ErrorState |
-               (v235 ? TelemetryField::BusCurrent | TelemetryField::MotorOn : TelemetryFields{});
-    case Command::ReadState2:
-        return TelemetryField::Temperature | TelemetryField::Speed | TelemetryField::Encoder |
-               (series == protocol::Series::MS ? TelemetryField::Power : TelemetryField::IqA);
-    case Command::ReadState3:
-        return TelemetryField::Temperature | TelemetryField::PhaseCurrents;
-    case Command::ReadMultiTurn:
-        return TelemetryField::MultiTurn;
-    case Command::ReadSingleTurn:
-        return TelemetryField::SingleTurn;
-    case Command::ReadEncoder:
-        return TelemetryField::Encoder;
-    default:
-        return {};
-    }
-}
 
 MonitorTable::MonitorTable(const QVector<Command> &commands,
                            const QMap<int, std::optional<protocol::Series>> &series,
@@ -96,10 +72,10 @@ QList<QByteArray> MonitorTable::add(const TelemetrySample &sample)
     if (!m_open) {
         m_open = Round{};
         m_open->cycle = sample.cycle;
-        m_open->values.time = sample.cycleTime;
+        m_open->time = sample.cycleTime;
     }
-    auto drive = m_open->values.drives.try_emplace(sample.id, TelemetryColumns::empty()).first;
-    TelemetryColumns::merge(drive->second, TelemetryColumns::values(sample));
+    if (const auto [drive, first] = m_open->drives.try_emplace(sample.id, sample); !first)
+        drive->second.merge(sample); // a later reply of the same round wins
     m_open->seen.insert({sample.id, int(sample.source)});
     if (m_open->seen.size() >= m_expected)
         out << take();
@@ -117,9 +93,13 @@ QList<QByteArray> MonitorTable::take()
     m_open.reset();
     m_lastWritten = round.cycle;
     if (m_rounds++ == 0)
-        m_firstTime = round.values.time;
-    m_lastTime = round.values.time;
-    return format(round.values);
+        m_firstTime = round.time;
+    m_lastTime = round.time;
+    record::CycleValues values;
+    values.time = round.time;
+    for (const auto &[id, sample] : round.drives)
+        values.drives.emplace(id, TelemetryColumns::values(sample));
+    return format(values);
 }
 
 QList<QByteArray> MonitorTable::format(const record::CycleValues &round) const

@@ -11,6 +11,7 @@
 #include <QtCore/QSet>
 #include <QtCore/QVector>
 
+#include <map>
 #include <optional>
 
 namespace lk::lkctl {
@@ -44,16 +45,12 @@ public:
     /// From the first round written to the last, seconds.
     double elapsedS() const;
 
-    /// The fields a command's reply carries, for a series and protocol generation.
-    static bus::TelemetryFields fieldsOf(protocol::Command command,
-                                         std::optional<protocol::Series> series, bool v235 = false);
-
 private:
     struct Round {
         quint64 cycle = 0;
-        record::CycleValues values;
-        int answered = 0;           ///< polls of the round that brought a sample
-        QSet<QPair<int, int>> seen; ///< (id, command) that answered
+        double time = 0;                            ///< when the round began
+        std::map<int, bus::TelemetrySample> drives; ///< per ID, the round's replies merged
+        QSet<QPair<int, int>> seen;                 ///< (id, command) that answered
     };
     QList<QByteArray> take();
     QList<QByteArray> format(const record::CycleValues &round) const;

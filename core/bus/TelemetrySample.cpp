@@ -1,6 +1,6 @@
 #include "TelemetrySample.h"
 
-#include <type_traits>
+#include "TelemetryFieldInfo.h"
 
 namespace lk::bus {
 
@@ -87,6 +87,58 @@ TelemetrySample TelemetrySample::fromState1(int id, const protocol::State1 &stat
     s.source = protocol::Command::ReadState1;
     fill(s, state);
     return s;
+}
+
+TelemetryFields TelemetrySample::fieldsOf(protocol::Command command,
+                                          std::optional<protocol::Series> series, bool v235)
+{
+    // The decoder's own fill() on an empty payload of that reply: what it fills is what such
+    // a reply carries, so this cannot drift from fromReply().
+    using protocol::Command;
+    TelemetrySample s;
+    switch (command) {
+    case Command::ReadState1: {
+        protocol::State1 v;
+        v.generation = v235 ? protocol::Generation::V2_35 : protocol::Generation::V2_3;
+        fill(s, v);
+        break;
+    }
+    case Command::ReadState2: {
+        protocol::State2 v;
+        v.isPower = series == protocol::Series::MS;
+        fill(s, v);
+        break;
+    }
+    case Command::ReadState3:
+        fill(s, protocol::State3{});
+        break;
+    case Command::ReadMultiTurn:
+        fill(s, protocol::MultiTurnAngle{});
+        break;
+    case Command::ReadSingleTurn:
+        fill(s, protocol::SingleTurnAngle{});
+        break;
+    case Command::ReadEncoder:
+        fill(s, protocol::EncoderReading{});
+        break;
+    default:
+        break;
+    }
+    return s.fields;
+}
+
+void TelemetrySample::merge(const TelemetrySample &newer)
+{
+    for (const TelemetryFieldInfo &info : TelemetryFieldInfo::all()) {
+        if (newer.has(info.field))
+            info.copy(*this, newer);
+    }
+    fields |= newer.fields;
+    id = newer.id;
+    time = newer.time;
+    source = newer.source;
+    cycle = newer.cycle;
+    cycleTime = newer.cycleTime;
 }
 
 } // namespace lk::bus

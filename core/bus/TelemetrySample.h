@@ -4,13 +4,17 @@
 
 #include <QtCore/QFlags>
 #include <QtCore/QMetaType>
+#include <QtCore/QObject>
 #include <QtCore/QVector>
 
 #include <optional>
 
 namespace lk::bus {
-
-/// Which fields of a TelemetrySample carry a value.
+// TelemetryField's keys are enumerable: a test walks them against the table.
+Q_NAMESPACE
+/// Which fields of a TelemetrySample carry a value. Each field has its rows in
+/// TelemetryFieldInfo::all() (key, unit, label, ...): a new field takes the next bit, raises
+/// kTelemetryFieldCount and adds its row there, and its decoder fills it in TelemetrySample.cpp.
 enum class TelemetryField : quint16 {
     Temperature = 0x0001,
     IqA = 0x0002,   ///< MF/MG/MH torque current
@@ -25,6 +29,9 @@ enum class TelemetryField : quint16 {
     BusCurrent = 0x0400, ///< V2.35 0x9A/0x9B only
     MotorOn = 0x0800,    ///< V2.35 0x9A/0x9B only: the motor state byte (on/off)
 };
+Q_ENUM_NS(TelemetryField)
+/// The bits TelemetryField uses: 1 << 0 .. 1 << (kTelemetryFieldCount - 1).
+inline constexpr int kTelemetryFieldCount = 12;
 Q_DECLARE_FLAGS(TelemetryFields, TelemetryField)
 Q_DECLARE_OPERATORS_FOR_FLAGS(TelemetryFields)
 
@@ -52,11 +59,19 @@ struct TelemetrySample {
     double busCurrentA = 0;
     bool motorOn = false;
     bool has(TelemetryField f) const { return fields.testFlag(f); }
+    /// Takes the values `newer` carries (a later reply wins) and its id, times and source;
+    /// keeps the values of the fields it does not carry. `fields` becomes the union.
+    void merge(const TelemetrySample &newer);
 
     /// The sample a reply carries, or nullopt for replies without telemetry (model, PID, ack).
     static std::optional<TelemetrySample> fromReply(const protocol::Reply &reply, double time);
     /// The sample of a 0x9A/0x9B state read outside a reply (a scan's probe).
     static TelemetrySample fromState1(int id, const protocol::State1 &state, double time);
+    /// The fields a command's reply carries for a series (nullopt: unknown, read as MF) and
+    /// protocol generation: what fromReply() fills from such a reply; none for a command
+    /// without telemetry.
+    static TelemetryFields fieldsOf(protocol::Command command,
+                                    std::optional<protocol::Series> series, bool v235);
 };
 
 /// Samples delivered together (at most ~60 batches per second), in arrival order.

@@ -96,6 +96,65 @@
     </message>
 </context>
 <context>
+    <name>lk::bus::TelemetryFieldInfo</name>
+    <message>
+        <source>Temperature</source>
+        <translation>温度</translation>
+    </message>
+    <message>
+        <source>Voltage</source>
+        <translation>电压</translation>
+    </message>
+    <message>
+        <source>Error flags</source>
+        <translation>错误标志</translation>
+    </message>
+    <message>
+        <source>iq</source>
+        <translation>iq</translation>
+    </message>
+    <message>
+        <source>Power</source>
+        <translation>功率</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>Encoder</source>
+        <translation>编码器</translation>
+    </message>
+    <message>
+        <source>Multi-turn angle</source>
+        <translation>多圈角度</translation>
+    </message>
+    <message>
+        <source>Single-turn angle</source>
+        <translation>单圈角度</translation>
+    </message>
+    <message>
+        <source>Phase A</source>
+        <translation>A 相电流</translation>
+    </message>
+    <message>
+        <source>Phase B</source>
+        <translation>B 相电流</translation>
+    </message>
+    <message>
+        <source>Phase C</source>
+        <translation>C 相电流</translation>
+    </message>
+    <message>
+        <source>Bus current</source>
+        <translation>母线电流</translation>
+    </message>
+    <message>
+        <source>Motor</source>
+        <translation>电机</translation>
+    </message>
+</context>
+<context>
     <name>lk::bus::TrafficRecorder</name>
     <message>
         <source>%1 traffic events dropped (view too slow)</source>
@@ -3008,22 +3067,6 @@
         <translation>信号：</translation>
     </message>
     <message>
-        <source>iq / power</source>
-        <translation>iq / 功率</translation>
-    </message>
-    <message>
-        <source>Speed</source>
-        <translation>速度</translation>
-    </message>
-    <message>
-        <source>Encoder</source>
-        <translation>编码器</translation>
-    </message>
-    <message>
-        <source>Multi-turn angle</source>
-        <translation>多圈角度</translation>
-    </message>
-    <message>
         <source>CSV files (*.csv)</source>
         <translation>CSV 文件 (*.csv)</translation>
     </message>
@@ -3970,50 +4013,6 @@
 <context>
     <name>lk::ui::TelemetryChannel</name>
     <message>
-        <source>Power</source>
-        <translation>功率</translation>
-    </message>
-    <message>
-        <source>iq</source>
-        <translation>iq</translation>
-    </message>
-    <message>
-        <source>Speed</source>
-        <translation>速度</translation>
-    </message>
-    <message>
-        <source>Encoder</source>
-        <translation>编码器</translation>
-    </message>
-    <message>
-        <source>Multi-turn angle</source>
-        <translation>多圈角度</translation>
-    </message>
-    <message>
-        <source>Single-turn angle</source>
-        <translation>单圈角度</translation>
-    </message>
-    <message>
-        <source>Temperature</source>
-        <translation>温度</translation>
-    </message>
-    <message>
-        <source>Voltage</source>
-        <translation>电压</translation>
-    </message>
-    <message>
-        <source>Phase A</source>
-        <translation>A 相电流</translation>
-    </message>
-    <message>
-        <source>Phase B</source>
-        <translation>B 相电流</translation>
-    </message>
-    <message>
-        <source>Phase C</source>
-        <translation>C 相电流</translation>
-    </message>
-    <message>
         <source>A</source>
         <translation>A</translation>
     </message>
@@ -4068,6 +4067,10 @@
     <message>
         <source>Power (rel.)</source>
         <translation>功率（相对值）</translation>
+    </message>
+    <message>
+        <source>iq / power</source>
+        <translation>iq / 功率</translation>
     </message>
 </context>
 <context>

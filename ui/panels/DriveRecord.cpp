@@ -29,40 +29,9 @@ bool DriveRecord::isStale(bus::TelemetryField f, qint64 nowMs) const
 
 void DriveRecord::apply(const bus::TelemetrySample &s, qint64 nowMs)
 {
-    using F = bus::TelemetryField;
-    if (s.has(F::Temperature))
-        latest.temperatureC = s.temperatureC;
-    if (s.has(F::IqA))
-        latest.iqA = s.iqA;
-    if (s.has(F::Power))
-        latest.power = s.power;
-    if (s.has(F::Speed))
-        latest.speedDps = s.speedDps;
-    if (s.has(F::Encoder))
-        latest.encoder = s.encoder;
-    if (s.has(F::Voltage))
-        latest.voltageV = s.voltageV;
-    if (s.has(F::ErrorState))
-        latest.errorState = s.errorState;
-    if (s.has(F::MultiTurn))
-        latest.multiTurnDeg = s.multiTurnDeg;
-    if (s.has(F::SingleTurn))
-        latest.singleTurnDeg = s.singleTurnDeg;
-    if (s.has(F::BusCurrent))
-        latest.busCurrentA = s.busCurrentA;
-    if (s.has(F::MotorOn))
-        latest.motorOn = s.motorOn;
-    if (s.has(F::PhaseCurrents)) {
-        latest.iaA = s.iaA;
-        latest.ibA = s.ibA;
-        latest.icA = s.icA;
-    }
-    latest.id = s.id;
-    latest.time = s.time;
-    latest.source = s.source;
-    latest.fields |= s.fields;
+    latest.merge(s);
     for (int i = 0; i < kFieldCount; ++i) {
-        if (s.fields.testFlag(static_cast<F>(1u << i)))
+        if (s.fields.testFlag(static_cast<bus::TelemetryField>(1u << i)))
             updatedMs[static_cast<size_t>(i)] = nowMs;
     }
 }

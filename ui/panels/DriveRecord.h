@@ -14,7 +14,7 @@ namespace lk::ui {
 /// What the GUI knows about one drive: its identity from the scan and the latest value of
 /// every telemetry field, each with the host time it arrived (to grey out stale values).
 struct DriveRecord {
-    static constexpr int kFieldCount = 12; ///< bits of bus::TelemetryField
+    static constexpr int kFieldCount = bus::kTelemetryFieldCount;
     static constexpr qint64 kStaleMs = 1000;
 
     int id = 0;

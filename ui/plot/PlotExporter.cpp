@@ -18,33 +18,6 @@ using lk::record::TelemetryCsv;
 
 namespace {
 
-const char *columnKey(const PlotTrace &trace)
-{
-    switch (trace.channel) {
-    case TelemetryChannel::Torque:
-        return trace.power ? "power" : "iq_a";
-    case TelemetryChannel::Speed:
-        return "speed_dps";
-    case TelemetryChannel::Encoder:
-        return "encoder";
-    case TelemetryChannel::MultiTurn:
-        return "multi_turn_deg";
-    case TelemetryChannel::SingleTurn:
-        return "single_turn_deg";
-    case TelemetryChannel::Temperature:
-        return "temperature_c";
-    case TelemetryChannel::Voltage:
-        return "voltage_v";
-    case TelemetryChannel::PhaseA:
-        return "ia_a";
-    case TelemetryChannel::PhaseB:
-        return "ib_a";
-    case TelemetryChannel::PhaseC:
-        return "ic_a";
-    }
-    return "";
-}
-
 /// The row a point goes to: its poll round (the round's time and number), or, for a point
 /// that answered no poll, its own time with round 0.
 struct RowKey {
@@ -103,9 +76,7 @@ TelemetryCsv layoutFor(const QVector<PlotTrace> &traces, lk::record::CsvLayout l
 
 int PlotExporter::columnOf(const PlotTrace &trace)
 {
-    const std::optional<int> column = TelemetryColumns::indexOf(QLatin1String(columnKey(trace)));
-    Q_ASSERT(column);
-    return column.value_or(0);
+    return channelColumn(trace.channel, trace.power);
 }
 
 QString PlotExporter::columnName(const PlotTrace &trace)

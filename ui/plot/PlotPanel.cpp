@@ -127,11 +127,8 @@ QWidget *PlotPanel::buildSignalRow()
     auto *layout = new QHBoxLayout(row);
     layout->setContentsMargins(4, 0, 4, 0);
     layout->addWidget(new QLabel(tr("Signals:"), row));
-    const QString labels[] = {tr("iq / power"), tr("Speed"), tr("Encoder"), tr("Multi-turn angle")};
-    const QVector<TelemetryChannel> channels = pickableChannels();
-    for (int i = 0; i < channels.size(); ++i) {
-        const TelemetryChannel channel = channels.at(i);
-        auto *box = new QCheckBox(labels[i], row);
+    for (const TelemetryChannel channel : pickableChannels()) {
+        auto *box = new QCheckBox(channelPickerLabel(channel), row);
         box->setChecked(m_channels.contains(channel));
         connect(box, &QCheckBox::toggled, this,
                 [this, channel](bool on) { setChannelVisible(channel, on); });

@@ -2,81 +2,99 @@
 
 #include <QtCore/QCoreApplication>
 
+#include <array>
+
 namespace lk::ui {
+
+namespace {
+
+/// The table rows of each channel, by key (the table's stable names), in enum order.
+struct ChannelKeys {
+    const char *key;
+    const char *powerKey; ///< the row when the drive reports power; nullptr: same as key
+};
+constexpr ChannelKeys kChannelKeys[kTelemetryChannelCount] = {
+    {"iq_a", "power"},
+    {"speed_dps", nullptr},
+    {"encoder", nullptr},
+    {"multi_turn_deg", nullptr},
+    {"single_turn_deg", nullptr},
+    {"temperature_c", nullptr},
+    {"voltage_v", nullptr},
+    {"ia_a", nullptr},
+    {"ib_a", nullptr},
+    {"ic_a", nullptr},
+};
+
+struct ChannelColumns {
+    int column;
+    int powerColumn;
+};
+
+const std::array<ChannelColumns, kTelemetryChannelCount> &channelColumns()
+{
+    static const auto kColumns = [] {
+        std::array<ChannelColumns, kTelemetryChannelCount> out{};
+        const auto find = [](const char *key) {
+            const std::optional<int> column =
+                bus::TelemetryFieldInfo::indexOf(QString::fromLatin1(key));
+            Q_ASSERT(column);
+            return column.value_or(0);
+        };
+        for (int c = 0; c < kTelemetryChannelCount; ++c) {
+            const ChannelKeys &keys = kChannelKeys[c];
+            out[size_t(c)] = {find(keys.key), find(keys.powerKey ? keys.powerKey : keys.key)};
+        }
+        return out;
+    }();
+    return kColumns;
+}
+
+const bus::TelemetryFieldInfo &rowOf(TelemetryChannel channel, bool power)
+{
+    return bus::TelemetryFieldInfo::all().at(channelColumn(channel, power));
+}
+
+} // namespace
+
+int channelColumn(TelemetryChannel channel, bool power)
+{
+    const ChannelColumns &c = channelColumns()[size_t(channel)];
+    return power ? c.powerColumn : c.column;
+}
+
+std::optional<TelemetryChannel> channelOfColumn(int column)
+{
+    for (int c = 0; c < kTelemetryChannelCount; ++c) {
+        const ChannelColumns &columns = channelColumns()[size_t(c)];
+        if (columns.column == column || columns.powerColumn == column)
+            return TelemetryChannel(c);
+    }
+    return std::nullopt;
+}
 
 Quantity channelQuantity(TelemetryChannel channel, bool power)
 {
-    switch (channel) {
-    case TelemetryChannel::Torque:
-        return power ? Quantity::Power : Quantity::Current;
-    case TelemetryChannel::Speed:
-        return Quantity::Speed;
-    case TelemetryChannel::Encoder:
-        return Quantity::Encoder;
-    case TelemetryChannel::MultiTurn:
-    case TelemetryChannel::SingleTurn:
-        return Quantity::Angle;
-    case TelemetryChannel::Temperature:
-        return Quantity::Temperature;
-    case TelemetryChannel::Voltage:
-        return Quantity::Voltage;
-    case TelemetryChannel::PhaseA:
-    case TelemetryChannel::PhaseB:
-    case TelemetryChannel::PhaseC:
-        return Quantity::Current;
-    }
-    return Quantity::Current;
+    return rowOf(channel, power).quantity;
+}
+
+QString channelLabel(TelemetryChannel channel, bool power)
+{
+    return QCoreApplication::translate(bus::TelemetryFieldInfo::kLabelContext,
+                                       rowOf(channel, power).label);
 }
 
 // Free functions have no tr(): plain translate() calls with literal text, which lupdate reads.
-QString channelLabel(TelemetryChannel channel, bool power)
+QString channelPickerLabel(TelemetryChannel channel)
 {
-    switch (channel) {
-    case TelemetryChannel::Torque:
-        return power ? QCoreApplication::translate("lk::ui::TelemetryChannel", "Power")
-                     : QCoreApplication::translate("lk::ui::TelemetryChannel", "iq");
-    case TelemetryChannel::Speed:
-        return QCoreApplication::translate("lk::ui::TelemetryChannel", "Speed");
-    case TelemetryChannel::Encoder:
-        return QCoreApplication::translate("lk::ui::TelemetryChannel", "Encoder");
-    case TelemetryChannel::MultiTurn:
-        return QCoreApplication::translate("lk::ui::TelemetryChannel", "Multi-turn angle");
-    case TelemetryChannel::SingleTurn:
-        return QCoreApplication::translate("lk::ui::TelemetryChannel", "Single-turn angle");
-    case TelemetryChannel::Temperature:
-        return QCoreApplication::translate("lk::ui::TelemetryChannel", "Temperature");
-    case TelemetryChannel::Voltage:
-        return QCoreApplication::translate("lk::ui::TelemetryChannel", "Voltage");
-    case TelemetryChannel::PhaseA:
-        return QCoreApplication::translate("lk::ui::TelemetryChannel", "Phase A");
-    case TelemetryChannel::PhaseB:
-        return QCoreApplication::translate("lk::ui::TelemetryChannel", "Phase B");
-    case TelemetryChannel::PhaseC:
-        return QCoreApplication::translate("lk::ui::TelemetryChannel", "Phase C");
-    }
-    return {};
+    return channel == TelemetryChannel::Torque
+               ? QCoreApplication::translate("lk::ui::TelemetryChannel", "iq / power")
+               : channelLabel(channel, false);
 }
 
 int channelDecimals(TelemetryChannel channel, bool power)
 {
-    switch (channel) {
-    case TelemetryChannel::Torque:
-        return power ? 0 : 4; // iq steps are 33/2048 A; power is an integer
-    case TelemetryChannel::Speed:
-        return 2;
-    case TelemetryChannel::Encoder:
-    case TelemetryChannel::Temperature:
-        return 0;
-    case TelemetryChannel::MultiTurn:
-    case TelemetryChannel::SingleTurn:
-    case TelemetryChannel::Voltage:
-        return 2;
-    case TelemetryChannel::PhaseA:
-    case TelemetryChannel::PhaseB:
-    case TelemetryChannel::PhaseC:
-        return 4; // 1/64 A steps
-    }
-    return 6;
+    return rowOf(channel, power).displayDecimals;
 }
 
 QString quantityUnit(Quantity quantity)
@@ -96,6 +114,8 @@ QString quantityUnit(Quantity quantity)
         return QCoreApplication::translate("lk::ui::TelemetryChannel", "°C");
     case Quantity::Voltage:
         return QCoreApplication::translate("lk::ui::TelemetryChannel", "V");
+    case Quantity::State:
+        return {}; // a code or flag: no unit
     }
     return {};
 }
@@ -118,6 +138,8 @@ QString quantityTitle(Quantity quantity)
         return QCoreApplication::translate("lk::ui::TelemetryChannel", "Temperature (°C)");
     case Quantity::Voltage:
         return QCoreApplication::translate("lk::ui::TelemetryChannel", "Voltage (V)");
+    case Quantity::State:
+        return {}; // not plotted: no channel records one
     }
     return {};
 }

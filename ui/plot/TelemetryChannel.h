@@ -1,10 +1,15 @@
 #pragma once
 
+#include <bus/TelemetryFieldInfo.h>
+
 #include <QtCore/QString>
+
+#include <optional>
 
 namespace lk::ui {
 
-/// One recorded signal of a drive. Torque holds iq (A) on MF/MG/MH and power on MS drives.
+/// One recorded signal of a drive: a row of the telemetry table (channelColumn), except that
+/// Torque holds iq (A) on MF/MG/MH and power on MS drives.
 enum class TelemetryChannel {
     Torque,
     Speed,
@@ -20,13 +25,21 @@ enum class TelemetryChannel {
 inline constexpr int kTelemetryChannelCount = 10;
 
 /// What a channel measures, which decides its unit and which Y axis it shares.
-enum class Quantity { Current, Power, Speed, Encoder, Angle, Temperature, Voltage };
+using Quantity = lk::bus::Quantity;
 
-/// The quantity of a channel; `power` says the drive reports power instead of iq (MS).
+/// The row of bus::TelemetryFieldInfo::all() a channel records; `power` says the drive
+/// reports power instead of iq (MS), which only the Torque channel distinguishes.
+int channelColumn(TelemetryChannel channel, bool power);
+/// The channel that records a row of the table; nullopt for values not plotted (error flags,
+/// the V2.35 bus current and motor state).
+std::optional<TelemetryChannel> channelOfColumn(int column);
+/// The quantity of a channel (its table row's).
 Quantity channelQuantity(TelemetryChannel channel, bool power);
 /// Translated short name for legends and readouts: "iq", "Power", "Speed", ...
 QString channelLabel(TelemetryChannel channel, bool power);
-/// Digits worth showing and exporting for the channel's resolution on the wire.
+/// Translated name in the signal picker, where Torque stands for both: "iq / power".
+QString channelPickerLabel(TelemetryChannel channel);
+/// Digits worth showing for the channel's resolution on the wire (the row's readout digits).
 int channelDecimals(TelemetryChannel channel, bool power);
 
 /// Translated unit shown on axes and in the readout ("A", "°/s", "counts", ...; may be empty).

@@ -4,8 +4,6 @@
 
 namespace lk::ui {
 
-using lk::bus::TelemetryField;
-
 TelemetryStore::TelemetryStore(QObject *parent) : TelemetryStore(kDefaultCapacity, parent) {}
 
 TelemetryStore::TelemetryStore(qsizetype capacityPerChannel, QObject *parent)
@@ -35,39 +33,20 @@ void TelemetryStore::append(const lk::bus::TelemetryBatch &batch)
 void TelemetryStore::appendSample(const lk::bus::TelemetrySample &sample)
 {
     Drive &drive = m_drives[sample.id];
-    const double t = sample.time;
     m_cycles.add(sample);
-    if (sample.has(TelemetryField::IqA) || sample.has(TelemetryField::Power)) {
-        const bool power = sample.has(TelemetryField::Power);
-        auto &torque = drive.rings[size_t(TelemetryChannel::Torque)];
-        if (drive.torqueIsPower.has_value() && *drive.torqueIsPower != power) {
-            torque.reset(); // another unit: the old points would be read as the new one
+    const QVector<lk::bus::TelemetryFieldInfo> &rows = lk::bus::TelemetryFieldInfo::all();
+    for (int column : lk::bus::TelemetryFieldInfo::of(sample.fields)) {
+        const std::optional<TelemetryChannel> channel = channelOfColumn(column);
+        if (!channel) {
+            continue; // not plotted
         }
-        drive.torqueIsPower = power;
-        put(drive, TelemetryChannel::Torque, t, power ? double(sample.power) : sample.iqA);
-    }
-    if (sample.has(TelemetryField::Speed)) {
-        put(drive, TelemetryChannel::Speed, t, sample.speedDps);
-    }
-    if (sample.has(TelemetryField::Encoder)) {
-        put(drive, TelemetryChannel::Encoder, t, sample.encoder);
-    }
-    if (sample.has(TelemetryField::MultiTurn)) {
-        put(drive, TelemetryChannel::MultiTurn, t, sample.multiTurnDeg);
-    }
-    if (sample.has(TelemetryField::SingleTurn)) {
-        put(drive, TelemetryChannel::SingleTurn, t, sample.singleTurnDeg);
-    }
-    if (sample.has(TelemetryField::Temperature)) {
-        put(drive, TelemetryChannel::Temperature, t, sample.temperatureC);
-    }
-    if (sample.has(TelemetryField::Voltage)) {
-        put(drive, TelemetryChannel::Voltage, t, sample.voltageV);
-    }
-    if (sample.has(TelemetryField::PhaseCurrents)) {
-        put(drive, TelemetryChannel::PhaseA, t, sample.iaA);
-        put(drive, TelemetryChannel::PhaseB, t, sample.ibA);
-        put(drive, TelemetryChannel::PhaseC, t, sample.icA);
+        int &recorded = drive.columns[size_t(*channel)];
+        if (recorded >= 0 && recorded != column) {
+            // iq and power share Torque: the old points would be read in the new unit.
+            drive.rings[size_t(*channel)].reset();
+        }
+        recorded = column;
+        put(drive, *channel, sample.time, rows.at(column).value(sample));
     }
 }
 
@@ -115,7 +94,14 @@ QVector<int> TelemetryStore::driveIds() const
 std::optional<bool> TelemetryStore::torqueIsPower(int id) const
 {
     const auto it = m_drives.find(id);
-    return it == m_drives.end() ? std::nullopt : it->second.torqueIsPower;
+    if (it == m_drives.end()) {
+        return std::nullopt;
+    }
+    const int column = it->second.columns[size_t(TelemetryChannel::Torque)];
+    if (column < 0) {
+        return std::nullopt;
+    }
+    return column == channelColumn(TelemetryChannel::Torque, true);
 }
 
 const SampleRing *TelemetryStore::ring(int id, TelemetryChannel channel) const

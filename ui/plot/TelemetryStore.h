@@ -38,9 +38,9 @@ public:
     explicit TelemetryStore(qsizetype capacityPerChannel, QObject *parent = nullptr);
     ~TelemetryStore() override;
 
-    /// Routes each sample's fields to its drive's channels: iq, or power on MS drives (a
-    /// sample carrying Power), both go to TelemetryChannel::Torque. A drive whose torque kind
-    /// changes has its torque history dropped: its unit changed.
+    /// Routes each value a sample carries to its drive's channel (channelOfColumn): iq, or
+    /// power on MS drives (a sample carrying Power), both go to TelemetryChannel::Torque. A
+    /// drive whose torque kind changes has its torque history dropped: its unit changed.
     void append(const lk::bus::TelemetryBatch &batch);
     /// Drops every drive and frees its memory.
     void clear();
@@ -82,7 +82,10 @@ signals:
 
 private:
     struct Drive {
-        std::optional<bool> torqueIsPower;
+        Drive() { columns.fill(-1); }
+        /// Per channel, the table row its ring holds (-1: none yet); Torque's changes with
+        /// the drive's torque kind (iq or power).
+        std::array<int, kTelemetryChannelCount> columns;
         std::array<std::unique_ptr<SampleRing>, kTelemetryChannelCount> rings;
     };
     void appendSample(const lk::bus::TelemetrySample &sample);
