@@ -76,15 +76,10 @@ bool LiveBus::open(const BusOptions &options)
 RequestResult LiveBus::request(const protocol::Request &request, bus::Priority priority)
 {
     std::optional<RequestResult> result;
-    quint64 ticket = 0;
-    const auto c = QObject::connect(&m_session, &BusSession::requestCompleted,
-                                    [&result, &ticket](const RequestResult &r) {
-                                        if (r.ticket == ticket)
-                                            result = r;
-                                    });
-    ticket = m_session.send(request, priority);
+    QObject waiting; // gone on return: a result after the safety net finds no `result`
+    m_session.send(
+        request, &waiting, [&result](const RequestResult &r) { result = r; }, priority);
     waitUntil([&result] { return result.has_value(); });
-    QObject::disconnect(c);
     if (result)
         return *result;
     RequestResult r;
@@ -151,16 +146,12 @@ bus::ScanSummary LiveBus::scan(const bus::ScanOptions &options)
 LiveBus::StopOutcome LiveBus::emergencyStop(const QVector<int> &ids, protocol::Command halt)
 {
     std::optional<StopOutcome> outcome;
-    quint64 ticket = 0;
-    const auto c = QObject::connect(
-        &m_session, &BusSession::emergencyStopFinished,
-        [&outcome, &ticket](quint64 t, const QVector<int> &acked, const QVector<int> &silent) {
-            if (t == ticket)
-                outcome = StopOutcome{acked, silent};
-        });
-    ticket = m_session.emergencyStop(ids, halt);
+    QObject waiting; // gone on return: a late outcome finds no `outcome`
+    m_session.emergencyStop(ids, halt, &waiting,
+                            [&outcome](const QVector<int> &acked, const QVector<int> &silent) {
+                                outcome = StopOutcome{acked, silent};
+                            });
     waitUntil([&outcome] { return outcome.has_value(); });
-    QObject::disconnect(c);
     return outcome.value_or(StopOutcome{});
 }
 

@@ -18,7 +18,7 @@ DemoMotion::DemoMotion(lk::ui::BusController *controller, QObject *parent)
 {
     m_timer->setInterval(kStepMs);
     connect(m_timer, &QTimer::timeout, this, &DemoMotion::step);
-    connect(m_controller, &lk::ui::BusController::emergencyStopDone, this, [this] {
+    connect(m_controller->session(), &lk::bus::BusSession::emergencyStopFinished, this, [this] {
         m_stopped = true;
         m_timer->stop();
     });

@@ -58,8 +58,8 @@ void BusSession::connectWorker()
         emit knownMotorsChanged(m);
     });
     relay(&BusWorker::errorOccurred, &BusSession::errorOccurred);
-    relay(&BusWorker::requestCompleted, &BusSession::requestCompleted);
-    relay(&BusWorker::emergencyStopFinished, &BusSession::emergencyStopFinished);
+    relay(&BusWorker::requestCompleted, &BusSession::finishRequest);
+    relay(&BusWorker::emergencyStopFinished, &BusSession::finishStop);
     relay(&BusWorker::scanProgress, &BusSession::scanProgress);
     relay(&BusWorker::motorFound, &BusSession::motorFound);
     relay(&BusWorker::scanFinished, &BusSession::scanFinished);
@@ -67,6 +67,23 @@ void BusSession::connectWorker()
     relay(&BusWorker::telemetryReceived, &BusSession::telemetryReceived);
     relay(&BusWorker::statisticsUpdated, &BusSession::statisticsUpdated);
     relay(&BusWorker::trafficCaptured, &BusSession::trafficCaptured);
+}
+
+void BusSession::finishRequest(const RequestResult &result)
+{
+    const auto done = m_requestCallbacks.take(result.ticket);
+    emit requestCompleted(result); // observers (CommandedMotion, ...) first: they keep state
+    if (done)
+        done(result); // `this` may be gone by now: a listener may have deleted the session
+}
+
+void BusSession::finishStop(quint64 ticket, const QVector<int> &acknowledged,
+                            const QVector<int> &silent)
+{
+    const auto done = m_stopCallbacks.take(ticket);
+    emit emergencyStopFinished(ticket, acknowledged, silent);
+    if (done)
+        done(acknowledged, silent);
 }
 
 void BusSession::open(TransportFactory factory, int baud, const BusConfig &config)
@@ -118,6 +135,9 @@ void BusSession::close()
     // then ignore anything else the old worker may have queued.
     QCoreApplication::sendPostedEvents(this, QEvent::MetaCall);
     ++m_generation;
+    // Only a bus thread that did not stop leaves any: their ends will never be heard.
+    m_requestCallbacks.clear();
+    m_stopCallbacks.clear();
     if (m_connection.state != transport::Transport::State::Closed) {
         m_connection.state = transport::Transport::State::Closed;
         m_connection.reason = tr("session closed");
@@ -153,7 +173,7 @@ quint64 BusSession::send(const protocol::Request &request, Priority priority, in
         r.reason = tr("the bus is not open");
         // Queued, so that the caller holds the ticket before the result arrives.
         QMetaObject::invokeMethod(
-            this, [this, r] { emit requestCompleted(r); }, Qt::QueuedConnection);
+            this, [this, r] { finishRequest(r); }, Qt::QueuedConnection);
         return ticket;
     }
     BusRequest b;
@@ -166,6 +186,15 @@ quint64 BusSession::send(const protocol::Request &request, Priority priority, in
     return ticket;
 }
 
+quint64 BusSession::send(const protocol::Request &request, QObject *context, Completion done,
+                         Priority priority, int retries)
+{
+    const quint64 ticket = send(request, priority, retries);
+    // Its end comes back through the event loop at the earliest: the callback is in time.
+    m_requestCallbacks.add(ticket, context, std::move(done));
+    return ticket;
+}
+
 quint64 BusSession::emergencyStop(const QVector<int> &ids, protocol::Command halt)
 {
     const quint64 ticket = m_nextTicket++;
@@ -173,11 +202,18 @@ quint64 BusSession::emergencyStop(const QVector<int> &ids, protocol::Command hal
         // Nothing can be sent: every ID the stop would have reached stays unacknowledged.
         const QVector<int> silent = StopTargets::of(ids, m_motors.keys()).all();
         QMetaObject::invokeMethod(
-            this, [this, ticket, silent] { emit emergencyStopFinished(ticket, {}, silent); },
-            Qt::QueuedConnection);
+            this, [this, ticket, silent] { finishStop(ticket, {}, silent); }, Qt::QueuedConnection);
         return ticket;
     }
     post([w = m_worker, ticket, ids, halt] { w->emergencyStop(ticket, ids, halt); });
+    return ticket;
+}
+
+quint64 BusSession::emergencyStop(const QVector<int> &ids, protocol::Command halt, QObject *context,
+                                  StopCompletion done)
+{
+    const quint64 ticket = emergencyStop(ids, halt);
+    m_stopCallbacks.add(ticket, context, std::move(done));
     return ticket;
 }
 

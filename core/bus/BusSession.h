@@ -10,6 +10,7 @@
 #include "RequestResult.h"
 #include "ScanTypes.h"
 #include "TelemetrySample.h"
+#include "TicketCallbacks.h"
 #include "TrafficEvent.h"
 #include "TransportFactory.h"
 
@@ -18,6 +19,7 @@
 #include <QtCore/QObject>
 #include <QtCore/QVector>
 
+#include <functional>
 #include <optional>
 
 class QThread;
@@ -30,7 +32,8 @@ class BusWorker;
 ///
 /// Lives in the caller's thread; owns a QThread on which a BusWorker and its transport run.
 /// Every call returns at once and is forwarded as a queued invocation; every result comes
-/// back as a signal carrying plain values. Call it only from the thread it lives in.
+/// back as a signal carrying plain values, and to the callback given with the call, if any.
+/// Call it only from the thread it lives in.
 /// Several sessions (several adapters) may be open at once.
 ///
 /// Safety: the session does not apply soft limits. Every motion request (torque, speed,
@@ -56,12 +59,22 @@ public:
 
     void setConfig(const BusConfig &config);
 
+    using Completion = std::function<void(const RequestResult &)>;
+    using StopCompletion =
+        std::function<void(const QVector<int> &acknowledged, const QVector<int> &silent)>;
+
     /// Queue a request; returns its ticket, repeated in the requestCompleted it ends with.
     /// `retries` < 0 uses BusConfig::retries; incremental moves and ROM writes are never
     /// retried (the drive may have acted on the first one: read back instead). A closed
     /// session completes it as Disconnected.
     quint64 send(const protocol::Request &request, Priority priority = Priority::Operator,
                  int retries = -1);
+    /// send(), and `done` runs with the result right after the requestCompleted that carries
+    /// the ticket: once, never inside this call, on `context`'s thread, and not at all once
+    /// `context` is destroyed or the session is (a context on another thread must not be
+    /// deleted while the result is posted to it: Qt's rule for queued calls).
+    quint64 send(const protocol::Request &request, QObject *context, Completion done,
+                 Priority priority = Priority::Operator, int retries = -1);
     /// Motor off to every ID in `ids` and every known ID first, then to every other ID of
     /// 1..32, ahead of everything queued; a running scan and queued motion commands are
     /// cancelled first. Each motor_off ends with a requestCompleted carrying the returned
@@ -70,6 +83,10 @@ public:
     /// `halt` MotorStop sends motor_stop the same way (the drives keep their commands).
     quint64 emergencyStop(const QVector<int> &ids = {},
                           protocol::Command halt = protocol::Command::MotorOff);
+    /// emergencyStop(), and `done` runs right after its emergencyStopFinished, with send()'s
+    /// rules for `context`. What is sent, and when, is the same.
+    quint64 emergencyStop(const QVector<int> &ids, protocol::Command halt, QObject *context,
+                          StopCompletion done);
 
     void scan(const ScanOptions &options = {});
     void cancelScan();
@@ -113,6 +130,8 @@ signals:
 private:
     void connectWorker();
     void join();
+    void finishRequest(const RequestResult &result);
+    void finishStop(quint64 ticket, const QVector<int> &acknowledged, const QVector<int> &silent);
     template <typename F> void post(F &&f);
     template <typename... Args>
     void relay(void (BusWorker::*from)(Args...), void (BusSession::*to)(Args...));
@@ -125,6 +144,8 @@ private:
     KnownMotors m_motors;
     BusConfig m_config;
     std::optional<PollPlan> m_pollPlan;
+    TicketCallbacks<RequestResult> m_requestCallbacks;
+    TicketCallbacks<QVector<int>, QVector<int>> m_stopCallbacks;
 };
 
 } // namespace lk::bus

@@ -15,12 +15,8 @@ void RequestTracker::setSession(bus::BusSession *session)
 {
     if (m_session == session)
         return;
-    disconnect(m_connection);
     m_session = session;
     forgetAll();
-    if (session)
-        m_connection = connect(session, &bus::BusSession::requestCompleted, this,
-                               &RequestTracker::onCompleted);
 }
 
 quint64 RequestTracker::send(const protocol::Request &request, Callback callback,
@@ -28,31 +24,29 @@ quint64 RequestTracker::send(const protocol::Request &request, Callback callback
 {
     if (!m_session)
         return 0;
-    const quint64 ticket = m_session->send(request, priority, retries);
-    m_pending.insert(ticket, std::move(callback));
+    // The epoch, not the ticket alone, says whether a result is still wanted: tickets of
+    // another session may repeat the numbers.
+    auto done = [this, epoch = m_epoch,
+                 callback = std::move(callback)](const bus::RequestResult &result) {
+        if (epoch != m_epoch || !m_pending.remove(result.ticket))
+            return;
+        emit pendingChanged(pendingCount());
+        if (callback)
+            callback(result);
+    };
+    const quint64 ticket = m_session->send(request, this, std::move(done), priority, retries);
+    m_pending.insert(ticket);
     emit pendingChanged(pendingCount());
     return ticket;
 }
 
 void RequestTracker::forgetAll()
 {
+    ++m_epoch;
     if (m_pending.isEmpty())
         return;
     m_pending.clear();
     emit pendingChanged(0);
-}
-
-void RequestTracker::onCompleted(const bus::RequestResult &result)
-{
-    const auto it = m_pending.find(result.ticket);
-    if (it == m_pending.end())
-        return;
-    // Out of the table before the call: the callback may send again or forget everything.
-    const Callback callback = std::move(it.value());
-    m_pending.erase(it);
-    emit pendingChanged(pendingCount());
-    if (callback)
-        callback(result);
 }
 
 } // namespace lk::ui

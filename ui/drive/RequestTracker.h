@@ -4,9 +4,9 @@
 #include <bus/RequestResult.h>
 #include <protocol/Request.h>
 
-#include <QtCore/QHash>
 #include <QtCore/QObject>
 #include <QtCore/QPointer>
+#include <QtCore/QSet>
 
 #include <functional>
 
@@ -16,9 +16,9 @@ class BusSession;
 
 namespace lk::ui {
 
-/// Sends requests through a BusSession and hands each completion to the callback given with
-/// it, so a view reacts only to its own requests. Never waits: completions arrive later
-/// through BusSession::requestCompleted.
+/// Sends a view's requests through a BusSession (each with its callback) and counts those
+/// still awaited, so that the view can disable its buttons meanwhile and drop the results of
+/// requests made for another drive or link. Never waits.
 class RequestTracker : public QObject {
     Q_OBJECT
 public:
@@ -46,11 +46,9 @@ signals:
     void pendingChanged(int count);
 
 private:
-    void onCompleted(const bus::RequestResult &result);
-
     QPointer<bus::BusSession> m_session;
-    QMetaObject::Connection m_connection;
-    QHash<quint64, Callback> m_pending;
+    QSet<quint64> m_pending;
+    quint64 m_epoch = 0; ///< forgetAll() count: results of requests sent before it are dropped
 };
 
 } // namespace lk::ui

@@ -33,6 +33,7 @@ BusController::~BusController()
     // The model and the panels may be half destroyed: nothing more is delivered to them.
     m_session->disconnect(this);
     m_session->disconnect(m_model);
+    disconnect(); // a clear-errors result that close() still ends must not reach the banner
     m_session->close();
 }
 
@@ -43,14 +44,7 @@ void BusController::wireSession()
     connect(m_session, &S::errorOccurred, this, &BusController::onError);
     connect(m_session, &S::motorFound, m_model, &BusModel::addFound);
     connect(m_session, &S::scanFinished, this, &BusController::onScanFinished);
-    connect(m_session, &S::requestCompleted, this, &BusController::onRequestCompleted);
-    connect(m_session, &S::emergencyStopFinished, this,
-            [this](quint64, const QVector<int> &ack, const QVector<int> &silent) {
-                emit emergencyStopDone(ack, silent);
-            });
     connect(m_session, &S::telemetryReceived, m_model, &BusModel::applyTelemetry);
-    connect(m_session, &S::telemetryReceived, this, &BusController::telemetryReceived);
-    connect(m_session, &S::trafficCaptured, this, &BusController::trafficCaptured);
     connect(m_session, &S::statisticsUpdated, m_model, &BusModel::setStatistics);
     // The bus thread's own figure, with the turnaround it measured: one formula, one place.
     connect(m_session, &S::statisticsUpdated, this, [this](const bus::BusStatistics &s) {
@@ -285,13 +279,11 @@ void BusController::clearErrors(int id)
     const auto built = protocol::build::plain(protocol::Command::ClearErrors, id);
     if (!built.ok() || !m_model->canSend())
         return;
-    m_clearTickets.insert(m_session->send(*built.request));
+    m_session->send(*built.request, this, [this](const bus::RequestResult &r) { onCleared(r); });
 }
 
-void BusController::onRequestCompleted(const bus::RequestResult &result)
+void BusController::onCleared(const bus::RequestResult &result)
 {
-    if (!m_clearTickets.remove(result.ticket))
-        return;
     const int id = result.request.id;
     if (!result.ok()) {
         emit message(MessageBanner::Level::Warning,

@@ -8,7 +8,6 @@
 #include <sim/SimBusSpec.h>
 
 #include <QtCore/QObject>
-#include <QtCore/QSet>
 
 #include <memory>
 #include <utility>
@@ -23,7 +22,9 @@ class SimulatedBus;
 /// Runs one bus for the GUI: opens the chosen link (serial port or the built-in simulator),
 /// scans, tells the session each drive's series and polls what it found, reconnects after an
 /// unplug when allowed, and sends the operator's one-off commands (clear errors, emergency
-/// stop). It writes BusModel, which the panels read; it never draws anything.
+/// stop). It writes BusModel, which the panels read; it never draws anything. The session's
+/// own signals (telemetry, traffic, emergencyStopFinished, ...) are not repeated here:
+/// listeners connect to session().
 class BusController : public QObject {
     Q_OBJECT
 public:
@@ -65,18 +66,15 @@ signals:
     /// A new connection came up: a good moment to scan (when scanning on connect).
     void readyToScan();
     void scanStarted();
-    void telemetryReceived(const lk::bus::TelemetryBatch &batch);
-    void trafficCaptured(const lk::bus::TrafficBatch &batch);
     /// The bus limit of the poll plan, from the bus thread's statistics (~2 Hz, on change).
     void busLimitChanged(double transactionsPerSecond, double cycleLimitHz);
-    void emergencyStopDone(const QVector<int> &acknowledged, const QVector<int> &silent);
 
 private:
     void wireSession();
     void onConnectionChanged(const bus::ConnectionStatus &status);
     void onError(const transport::TransportError &error);
     void onScanFinished(const bus::ScanSummary &summary);
-    void onRequestCompleted(const bus::RequestResult &result);
+    void onCleared(const bus::RequestResult &result); ///< the end of a clearErrors()
     void keepDrivesAt(const bus::ScanSummary &summary);
     void startPolling();
     void tryReconnect();
@@ -96,7 +94,6 @@ private:
     bool m_reconnecting = false;
     bool m_traffic = false;
     std::pair<double, double> m_busLimit{-1, -1}; ///< last busLimitChanged (tx/s, rounds/s)
-    QSet<quint64> m_clearTickets;
 };
 
 } // namespace lk::ui

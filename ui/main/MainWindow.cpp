@@ -134,7 +134,7 @@ void MainWindow::buildSafety()
     connect(m_driveViews, &DriveViews::emergencyStopRequested, m_estop,
             &EmergencyStopControl::stop);
     m_linkLoss = new LinkLossWatch(m_model, m_motion, m_banner, this);
-    connect(m_controller, &BusController::telemetryReceived, m_linkLoss,
+    connect(m_controller->session(), &bus::BusSession::telemetryReceived, m_linkLoss,
             &LinkLossWatch::onTelemetry);
     connect(m_model, &BusModel::connectionChanged, this, [this] {
         if (!m_model->canSend())
@@ -224,7 +224,8 @@ void MainWindow::wirePanels()
             &BusController::clearErrors);
     connect(m_traffic, &TrafficPanel::captureWanted, m_controller,
             &BusController::setTrafficCapture);
-    connect(m_controller, &BusController::trafficCaptured, m_traffic, &TrafficPanel::appendTraffic);
+    connect(m_controller->session(), &bus::BusSession::trafficCaptured, m_traffic,
+            &TrafficPanel::appendTraffic);
     connect(m_controller, &BusController::message, m_banner, &MessageBanner::showMessage);
     connect(m_views, &QTabWidget::currentChanged, this, [this] {
         if (QWidget *w = viewAt(m_views->currentIndex()))
@@ -234,7 +235,8 @@ void MainWindow::wirePanels()
 
 void MainWindow::wirePlots()
 {
-    connect(m_controller, &BusController::telemetryReceived, m_store, &TelemetryStore::append);
+    connect(m_controller->session(), &bus::BusSession::telemetryReceived, m_store,
+            &TelemetryStore::append);
     connect(m_plots, &PlotPanel::pollRateRequested, this, [this](double hz) {
         m_controller->setPollRate(hz);
         m_settings->setPollRateHz(hz);

@@ -405,7 +405,8 @@ void tst_MainWindow::escapeSendsMotorOffToAllDrives()
 {
     QVERIFY(findAllDrives());
     const QVector<int> before = motorOffCounts();
-    QSignalSpy stops(m_window->controller(), &lk::ui::BusController::emergencyStopDone);
+    QSignalSpy stops(m_window->controller()->session(),
+                     &lk::bus::BusSession::emergencyStopFinished);
     // Esc typed into a child widget that has nothing to do with stopping.
     auto *first = m_window->findChild<QSpinBox *>(QStringLiteral("scanFirstId"));
     first->setFocus();
@@ -430,7 +431,8 @@ void tst_MainWindow::escapeWorksFromAModalDialog()
 {
     QVERIFY(findAllDrives());
     const QVector<int> before = motorOffCounts();
-    QSignalSpy stops(m_window->controller(), &lk::ui::BusController::emergencyStopDone);
+    QSignalSpy stops(m_window->controller()->session(),
+                     &lk::bus::BusSession::emergencyStopFinished);
     QDialog dialog(m_window.get());
     auto *edit = new QLineEdit(&dialog);
     auto *layout = new QVBoxLayout(&dialog);
