@@ -99,8 +99,7 @@ bus::TransportFactory BusOptions::factory() const
         const std::optional<sim::SimBusSpec> parsed = sim::SimBusSpec::parse(spec);
         if (!parsed)
             return nullptr;
-        return transport::SimTransport::asTheToolsRunIt(sim::SimBus::fromSpec(*parsed, romDir),
-                                                        b);
+        return transport::SimTransport::asTheToolsRunIt(sim::SimBus::fromSpec(*parsed, romDir), b);
     };
 }
 

@@ -34,7 +34,7 @@ SimTransport::SimTransport(std::unique_ptr<sim::SimBus> bus, QObject *parent)
 SimTransport::~SimTransport() = default;
 
 std::unique_ptr<SimTransport> SimTransport::asTheToolsRunIt(std::unique_ptr<sim::SimBus> bus,
-                                                           int baud)
+                                                            int baud)
 {
     auto t = std::make_unique<SimTransport>(std::move(bus));
     t->setBaud(baud);

@@ -3491,6 +3491,10 @@
         <source>Start on a view: dashboard, overview, plots, traffic, tuning, control, encoder, info.</source>
         <translation>启动时显示的视图：dashboard、overview、plots、traffic、tuning、control、encoder、info。</translation>
     </message>
+    <message>
+        <source>--cycle-views takes a period of at least 100 ms.</source>
+        <translation>--cycle-views 需要至少 100 毫秒的周期。</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::StatisticsView</name>
