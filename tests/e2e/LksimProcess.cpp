@@ -4,8 +4,11 @@
 #include <QtCore/QFile>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
+#include <QtCore/QThread>
 
 #include <algorithm>
+
+#include <signal.h>
 
 namespace lk::e2e {
 
@@ -110,6 +113,29 @@ QList<QByteArray> LksimProcess::receivedFrames()
         at += size;
     }
     return frames;
+}
+
+std::optional<LksimCounters> LksimProcess::currentCounters()
+{
+    if (m_process.state() == QProcess::Running && !m_statsFiles.isEmpty()) {
+        QFile file(m_statsFiles.last());
+        const QByteArray before = file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+        file.close();
+        ::kill(static_cast<pid_t>(m_process.processId()), SIGUSR1);
+        // Rewritten whole by a rename: a changed content is the new file. An idle bus may
+        // write the same counters again; then the old ones are current anyway.
+        QDeadlineTimer deadline(1000);
+        while (!deadline.hasExpired()) {
+            QThread::msleep(10);
+            if (file.open(QIODevice::ReadOnly)) {
+                const QByteArray now = file.readAll();
+                file.close();
+                if (now != before)
+                    break;
+            }
+        }
+    }
+    return counters();
 }
 
 std::optional<LksimCounters> LksimProcess::counters() const

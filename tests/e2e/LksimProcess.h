@@ -49,6 +49,9 @@ public:
     /// count is always current, the other counters as of its last write: ask after stop()).
     /// nullopt when a stats file could not be read: lksim wrote none, or it was unreadable.
     std::optional<LksimCounters> counters() const;
+    /// counters() with the running lksim's counters current: it is asked to rewrite its stats
+    /// file (SIGUSR1) and given up to a second to do so.
+    std::optional<LksimCounters> currentCounters();
 
 private:
     QString m_executable;

@@ -4,6 +4,9 @@
 
 #include <bus/BusSession.h>
 
+#include <algorithm>
+#include <map>
+
 namespace lk::ui {
 
 EncoderResolutions::EncoderResolutions(QObject *parent)
@@ -77,10 +80,18 @@ void EncoderResolutions::observe(const bus::TelemetryBatch &batch)
 {
     if (batch.isEmpty())
         return;
+    // Only the largest value of each drive can raise its resolution: one lookup per drive and
+    // batch, not one per sample (a settings key is built for each lookup).
+    std::map<int, int> largest;
     for (const bus::TelemetrySample &s : batch) {
-        if (s.has(bus::TelemetryField::Encoder))
-            observe(s.id, motorOf(s.id), s.encoder);
+        if (s.has(bus::TelemetryField::Encoder)) {
+            const auto [it, inserted] = largest.try_emplace(s.id, s.encoder);
+            if (!inserted)
+                it->second = std::max(it->second, s.encoder);
+        }
     }
+    for (const auto &[id, encoder] : largest)
+        observe(id, motorOf(id), encoder);
 }
 
 void EncoderResolutions::observe(int id, const bus::KnownMotor &motor, int encoder)

@@ -124,8 +124,8 @@ bool measure(const Scenario &sc, const Options &o, bench::JsonLine &json,
     }
     bench::spin(o.warmup * 1000);
     const qint64 pid = studio.processId();
+    const auto countsBefore = sim.currentCounters(); // the window starts now
     const auto before = usageOf(pid);
-    const auto countsBefore = sim.counters();
     QElapsedTimer wall;
     wall.start();
     for (int left = o.seconds; left > 0; left -= 30) {
@@ -137,10 +137,10 @@ bool measure(const Scenario &sc, const Options &o, bench::JsonLine &json,
     }
     const auto after = usageOf(pid);
     const double seconds = wall.elapsed() / 1e3;
+    const auto countsAfter = sim.currentCounters();
     studio.terminate();
     studio.waitForFinished(10000);
     sim.stop();
-    const auto countsAfter = sim.counters();
     if (!before || !after) {
         std::fprintf(stderr, "bench_gui: lkstudio ended during the measurement\n");
         return false;
