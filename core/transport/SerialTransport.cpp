@@ -70,15 +70,12 @@ SerialTransport::SerialTransport(const SerialSettings &settings, QObject *parent
     : Transport(parent), m_settings(settings), m_path(systemPath(settings.portName)),
       m_port(new QSerialPort(this))
 {
-    m_reopenTimer.setInterval(kReopenPollMs);
-    connect(&m_reopenTimer, &QTimer::timeout, this, &SerialTransport::onReopenPoll);
     connect(m_port, &QSerialPort::readyRead, this, &SerialTransport::onReadyRead);
     connect(m_port, &QSerialPort::errorOccurred, this, &SerialTransport::onPortError);
 }
 
 SerialTransport::~SerialTransport()
 {
-    m_reopenTimer.stop();
     if (m_port->isOpen())
         m_port->close();
 }
@@ -104,23 +101,19 @@ QString SerialTransport::description() const
 
 bool SerialTransport::open()
 {
-    m_reopenTimer.stop();
     if (m_state == State::Open)
         return true;
     m_errorReported = false;
-    const bool ok = openPort(true);
+    const bool ok = openPort();
     if (!ok && m_state == State::Disconnected)
         setState(State::Closed);
     return ok;
 }
 
-bool SerialTransport::openPort(bool reportErrors)
+bool SerialTransport::openPort()
 {
     const auto fail = [&](const TransportError &e) {
-        if (reportErrors)
-            report(e);
-        else
-            qCDebug(lcSerial) << "reopen failed:" << e.message;
+        report(e);
         return false;
     };
     if (m_settings.baud <= 0)
@@ -206,7 +199,6 @@ void SerialTransport::enableLowLatency()
 
 void SerialTransport::close()
 {
-    m_reopenTimer.stop();
     if (m_port->isOpen())
         m_port->close();
     m_lowLatency = false;
@@ -284,23 +276,6 @@ void SerialTransport::lostPort(TransportError::Kind kind, const QString &detail)
     m_lowLatency = false;
     report(e);
     setState(State::Disconnected);
-    if (m_settings.autoReopen)
-        m_reopenTimer.start();
-}
-
-void SerialTransport::onReopenPoll()
-{
-    if (m_state != State::Disconnected) {
-        m_reopenTimer.stop();
-        return;
-    }
-    if (!QFileInfo::exists(m_path))
-        return;
-    // The node may exist before udev has set its permissions: keep trying quietly.
-    if (openPort(false)) {
-        m_reopenTimer.stop();
-        qCInfo(lcSerial) << m_path << "is back";
-    }
 }
 
 void SerialTransport::report(const TransportError &error)

@@ -3,7 +3,6 @@
 #include "Transport.h"
 
 #include <QtCore/QString>
-#include <QtCore/QTimer>
 #include <QtSerialPort/QSerialPort>
 
 #include <functional>
@@ -13,21 +12,18 @@ namespace lk::transport {
 
 /// How to open a serial port: a plain value, as in Qt's serialport examples.
 struct SerialSettings {
-    QString portName;        ///< "/dev/ttyUSB0" or "ttyUSB0"
-    int baud = 115200;       ///< any of the nine LK bauds (others are passed to the driver)
-    bool autoReopen = false; ///< after an unplug, reopen when the device node returns
-    bool lowLatency = true;  ///< ask the Linux driver for ASYNC_LOW_LATENCY (FTDI: 16 -> 1 ms)
+    QString portName;       ///< "/dev/ttyUSB0" or "ttyUSB0"
+    int baud = 115200;      ///< any of the nine LK bauds (others are passed to the driver)
+    bool lowLatency = true; ///< ask the Linux driver for ASYNC_LOW_LATENCY (FTDI: 16 -> 1 ms)
 };
 
 /// A Transport over QSerialPort: 8N1, no flow control. Construct it on the thread that uses
 /// it (the bus thread). An unplug while open becomes state Disconnected plus one Unplugged
-/// error per connect cycle; with autoReopen the device node is polled every 500 ms and the
-/// port reopens by itself when it returns.
+/// error per connect cycle. Reconnecting is the owner's job (BusController, which the user
+/// can switch live): one reconnect mechanism, not two.
 class SerialTransport : public Transport {
     Q_OBJECT
 public:
-    static constexpr int kReopenPollMs = 500;
-
     explicit SerialTransport(const SerialSettings &settings, QObject *parent = nullptr);
     ~SerialTransport() override;
 
@@ -48,10 +44,9 @@ public:
     static std::function<std::unique_ptr<Transport>(int baud)> factory(SerialSettings settings);
 
 private:
-    bool openPort(bool reportErrors);
+    bool openPort();
     void onPortError(QSerialPort::SerialPortError error);
     void onReadyRead();
-    void onReopenPoll();
     void lostPort(TransportError::Kind kind, const QString &detail);
     /// Through QSerialPort's buffer, written out at once (flush()).
     void writeBuffered(const QByteArray &bytes);
@@ -63,7 +58,6 @@ private:
     SerialSettings m_settings;
     QString m_path;
     QSerialPort *m_port;
-    QTimer m_reopenTimer{this};
     State m_state = State::Closed;
     bool m_opening = false;
     bool m_errorReported = false; ///< one error per connect cycle

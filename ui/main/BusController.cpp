@@ -85,7 +85,6 @@ void BusController::connectTo(const ConnectionChoice &choice)
         transport::SerialSettings s;
         s.portName = choice.port;
         s.baud = choice.baud;
-        s.autoReopen = false; // reconnecting is this class's job, so that it can be switched live
         factory = transport::SerialTransport::factory(s);
     }
     m_model->clearDrives();
