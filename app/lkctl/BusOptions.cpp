@@ -89,8 +89,7 @@ bus::TransportFactory BusOptions::factory() const
 {
     if (!isSimulated()) {
         transport::SerialSettings s;
-        s.portName = port;
-        s.baud = baud;
+        s.portName = port; // the baud is the session's (BusSession::open)
         return transport::SerialTransport::factory(s);
     }
     const QString spec = simSpec;

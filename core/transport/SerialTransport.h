@@ -40,7 +40,9 @@ public:
 
     /// "ttyUSB0" -> "/dev/ttyUSB0"; absolute paths unchanged.
     static QString systemPath(const QString &portName);
-    /// A transport factory for BusSession: a new SerialTransport per (re)open at `baud`.
+    /// A transport factory for BusSession: a new SerialTransport per (re)open at `baud`, the
+    /// session's (open(), and each baud of a scan sweep): `settings.baud` is not used, so the
+    /// baud is given in one place.
     static std::function<std::unique_ptr<Transport>(int baud)> factory(SerialSettings settings);
 
 private:

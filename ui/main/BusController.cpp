@@ -83,8 +83,7 @@ void BusController::connectTo(const ConnectionChoice &choice)
     } else {
         m_sim.reset();
         transport::SerialSettings s;
-        s.portName = choice.port;
-        s.baud = choice.baud;
+        s.portName = choice.port; // the baud is the session's, given to open() below
         factory = transport::SerialTransport::factory(s);
     }
     m_model->clearDrives();
