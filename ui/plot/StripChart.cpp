@@ -43,7 +43,11 @@ void setNiceTicks(QValueAxis *axis, double span, int ticks)
         axis->setTickAnchor(0);
     if (axis->tickInterval() != step)
         axis->setTickInterval(step);
-    const QString format = QStringLiteral("%.%1f").arg(decimalsFor(step));
+    // An axis whose labels are hidden (the time axis of every strip but the bottom one) still
+    // has QtCharts format and lay out a rich-text label per tick whenever its range moves, at
+    // every frame: a format without a conversion gives empty labels, which cost next to nothing.
+    const QString format = axis->labelsVisible() ? QStringLiteral("%.%1f").arg(decimalsFor(step))
+                                                 : QStringLiteral("-");
     if (axis->labelFormat() != format)
         axis->setLabelFormat(format);
 }
@@ -347,6 +351,10 @@ void StripChart::setTimeLabelsVisible(bool visible)
 {
     m_time->setLabelsVisible(visible);
     m_time->setTitleText(visible ? tr("Time (s)") : QString());
+    // The label format follows the visibility (setNiceTicks): now, not at the next move of
+    // the time axis, which a paused plot may never make.
+    const int ticks = std::clamp(plotColumns() / kPixelsPerTimeTick, 2, kTimeTicks);
+    setNiceTicks(m_time, m_time->max() - m_time->min(), ticks);
 }
 
 int StripChart::plotColumns() const
