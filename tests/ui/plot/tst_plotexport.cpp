@@ -84,6 +84,15 @@ QAction *menuAction(PlotPanel &panel, const QString &startsWith)
     return nullptr;
 }
 
+/// Drive 1 plotted with 10 s of samples, drawn: what a PNG export pictures.
+void plotTenSeconds(TelemetryStore &store, PlotPanel &panel)
+{
+    panel.setDrives({1});
+    showPanel(panel);
+    store.append(batch(1, 0, 1000, 0.01));
+    QTRY_VERIFY(panel.charts().first()->lineSeries().first()->count() > 0);
+}
+
 } // namespace
 
 class tst_PlotExport : public QObject {
@@ -198,10 +207,9 @@ void tst_PlotExport::exportPngWritesImage()
 {
     TelemetryStore store;
     PlotPanel panel(&store);
-    panel.setDrives({1});
-    showPanel(panel);
-    store.append(batch(1, 0, 1000, 0.01));
-    QTRY_VERIFY(panel.charts().first()->lineSeries().first()->count() > 0);
+    plotTenSeconds(store, panel);
+    if (QTest::currentTestFailed())
+        return;
     QTemporaryDir dir;
     const QString path = dir.filePath("plot.png");
     QCOMPARE(panel.exportPng(path), QString());
@@ -223,10 +231,9 @@ void tst_PlotExport::diskFullKeepsTheEarlierPng()
 {
     TelemetryStore store;
     PlotPanel panel(&store);
-    panel.setDrives({1});
-    showPanel(panel);
-    store.append(batch(1, 0, 1000, 0.01));
-    QTRY_VERIFY(panel.charts().first()->lineSeries().first()->count() > 0);
+    plotTenSeconds(store, panel);
+    if (QTest::currentTestFailed())
+        return;
     QTemporaryDir dir;
     const QString path = dir.filePath("plot.png");
     {
