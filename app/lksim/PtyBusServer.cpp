@@ -1,6 +1,7 @@
 #include "PtyBusServer.h"
 
 #include "PtyDevice.h"
+#include "PtyLagProbe.h"
 #include "RunQueueDelay.h"
 
 #include <protocol/Checksum.h>
@@ -135,7 +136,17 @@ int PtyBusServer::run(const std::atomic<bool> &stop, std::atomic<bool> &dumpStat
     // Replies are timed to the microsecond; the kernel's default timer slack (50 us) would let
     // every timed wake-up come late by up to that much, a third of a 1 Mbps transaction.
     prctl(PR_SET_TIMERSLACK, 1UL);
-    pollfd pfd{m_pty.masterFd(), POLLIN, 0};
+    std::optional<PtyLagProbe> lagProbe;
+    if (m_options.ptyLagProbePeriodS > 0) {
+        lagProbe.emplace(m_options.ptyLagProbePeriodS);
+        if (!lagProbe->open()) {
+            std::fprintf(stderr, "lksim: pty lag probe: %s\n", qPrintable(lagProbe->errorString()));
+            return 1;
+        }
+    }
+    pollfd pfds[2] = {{m_pty.masterFd(), POLLIN, 0},
+                      {lagProbe ? lagProbe->readFd() : -1, POLLIN, 0}};
+    const nfds_t nfds = lagProbe ? 2 : 1;
     const RunQueueDelay runQueue;         // opened here: it measures the thread that serves
     double lookedAt = monotonicSeconds(); // when lksim last saw that no input was waiting
     while (!stop.load()) {
@@ -152,12 +163,14 @@ int PtyBusServer::run(const std::atomic<bool> &stop, std::atomic<bool> &dumpStat
         double wait = 0.05;
         if (!m_pending.empty())
             wait = std::clamp(m_pending.front().due - now, 0.0, wait);
+        if (lagProbe)
+            wait = std::min(wait, lagProbe->untilNextSendS(now));
         if (m_options.busyPoll && m_lastInputAt >= 0 && now - m_lastInputAt < kBusyWindowS)
             wait = 0;
         timespec ts{static_cast<time_t>(wait), static_cast<long>(std::fmod(wait, 1.0) * 1e9)};
         const double pollAt = monotonicSeconds();
         const double waitedBefore = runQueue.seconds();
-        const int n = ppoll(&pfd, 1, &ts, nullptr);
+        const int n = ppoll(pfds, nfds, &ts, nullptr);
         if (n < 0 && errno != EINTR) {
             std::perror("lksim: ppoll");
             writeStats(false);
@@ -165,10 +178,20 @@ int PtyBusServer::run(const std::atomic<bool> &stop, std::atomic<bool> &dumpStat
         }
         now = monotonicSeconds();
         // Input may have arrived while lksim worked since it last looked, or while it waited
-        // for a CPU after ppoll should have woken it: that much earlier than `now`.
-        const double blindS = (pollAt - lookedAt) + (runQueue.seconds() - waitedBefore);
+        // for a CPU after ppoll should have woken it: that much earlier than `now`. Before
+        // that the kernel may have held it in the pty, as long as it held the canary.
+        double blindS = (pollAt - lookedAt) + (runQueue.seconds() - waitedBefore);
         lookedAt = now;
-        if (n > 0 && (pfd.revents & POLLIN)) {
+        if (lagProbe) {
+            if (!lagProbe->service(now)) {
+                std::fprintf(stderr, "lksim: pty lag probe: %s\n",
+                             qPrintable(lagProbe->errorString()));
+                writeStats(false);
+                return 1;
+            }
+            blindS = std::max(blindS, lagProbe->heldS(now));
+        }
+        if (n > 0 && (pfds[0].revents & POLLIN)) {
             const QByteArray bytes = m_pty.readAvailable();
             if (!bytes.isEmpty())
                 onInput(bytes, now, blindS);

@@ -39,6 +39,9 @@ public:
         /// The host receives each reply this long after its last byte left the wire (a USB
         /// adapter's latency timer). The wire itself is free meanwhile.
         double adapterLatencyS = 0;
+        /// > 0: time how long the kernel holds the host's bytes with a canary through a
+        /// second pty this often (PtyLagProbe), and widen the unjudged margin by it.
+        double ptyLagProbePeriodS = 0;
         QString statsFile; ///< empty: none
     };
 

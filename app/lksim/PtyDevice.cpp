@@ -113,13 +113,23 @@ QByteArray PtyDevice::readAvailable()
 
 bool PtyDevice::writeAll(const QByteArray &bytes)
 {
+    return writeAllTo(m_master, bytes);
+}
+
+bool PtyDevice::writeToSlave(const QByteArray &bytes)
+{
+    return writeAllTo(m_slaveKeepAlive, bytes);
+}
+
+bool PtyDevice::writeAllTo(int fd, const QByteArray &bytes)
+{
     qsizetype done = 0;
     while (done < bytes.size()) {
-        const ssize_t n = ::write(m_master, bytes.constData() + done, bytes.size() - done);
+        const ssize_t n = ::write(fd, bytes.constData() + done, bytes.size() - done);
         if (n > 0) {
             done += n;
         } else if (n < 0 && (errno == EAGAIN || errno == EINTR)) {
-            usleep(100); // the client is not reading: wait for room
+            usleep(100); // the reader is not reading: wait for room
         } else {
             m_error = sysError("write");
             return false;

@@ -20,7 +20,8 @@ QString WireMonitor::Collision::describe() const
                                      .arg(replyS * 1e3, 0, 'f', 3);
     if (unjudged)
         text += QStringLiteral("; lksim may have read ID %1's request up to %2 ms late (it was "
-                               "busy or waited for a CPU), so a drive could have finished "
+                               "busy, waited for a CPU or the kernel held the bytes in the pty), "
+                               "so a drive could have finished "
                                "that reply in time")
                     .arg(id)
                     .arg(blindS * 1e3, 0, 'f', 3);

@@ -75,13 +75,15 @@ inline QString describeRun(const CtlResult &r)
         .arg(QString::fromUtf8(r.out), QString::fromUtf8(r.err));
 }
 
-/// The ordinary lksim command line of these tests: the drives, the link, wire time at 115200.
+/// The ordinary lksim command line of these tests: the drives, the link, wire time at 115200,
+/// and the pty's own delay measured (a loaded machine's kernel may hold the host's bytes for
+/// milliseconds, which lksim must not judge as the host talking over a drive).
 inline QStringList simArgs(const QString &link, const QStringList &extra = {})
 {
     return QStringList{QStringLiteral("--motors"),    simMotors(),
                        QStringLiteral("--link"),      link,
                        QStringLiteral("--wire-time"), QStringLiteral("--baud"),
-                       QStringLiteral("115200")} +
+                       QStringLiteral("115200"),      QStringLiteral("--measure-pty-lag")} +
            extra;
 }
 

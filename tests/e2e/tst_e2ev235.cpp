@@ -56,10 +56,11 @@ bool tst_E2eV235::startSim(const QStringList &extra)
 {
     if (!m_sim)
         m_sim = std::make_unique<LksimProcess>(QStringLiteral(LKSIM_PATH));
-    const QStringList args{QStringLiteral("--motors"),    QStringLiteral("1:MS4015@2.35,3:MF"),
-                           QStringLiteral("--link"),      m_link,
-                           QStringLiteral("--wire-time"), QStringLiteral("--baud"),
-                           QStringLiteral("115200"),      QStringLiteral("--verbose")};
+    const QStringList args{QStringLiteral("--motors"),         QStringLiteral("1:MS4015@2.35,3:MF"),
+                           QStringLiteral("--link"),           m_link,
+                           QStringLiteral("--wire-time"),      QStringLiteral("--baud"),
+                           QStringLiteral("115200"),           QStringLiteral("--verbose"),
+                           QStringLiteral("--measure-pty-lag")};
     const bool ok = m_sim->start(args + extra);
     if (!ok)
         qWarning("%s", qPrintable(m_sim->errorString()));
