@@ -4,10 +4,9 @@
 
 namespace lk::bus {
 
-TelemetryBatcher::TelemetryBatcher(QObject *parent) : QObject(parent)
+TelemetryBatcher::TelemetryBatcher(QObject *parent, const SingleShotTimerFactory &timers)
+    : QObject(parent), m_timer(timers(this, [this] { flush(); }))
 {
-    m_timer.setSingleShot(true);
-    connect(&m_timer, &QTimer::timeout, this, &TelemetryBatcher::flush);
 }
 
 void TelemetryBatcher::setRateHz(double rateHz)
@@ -18,13 +17,13 @@ void TelemetryBatcher::setRateHz(double rateHz)
 void TelemetryBatcher::add(const TelemetrySample &sample)
 {
     m_pending.append(sample);
-    if (!m_timer.isActive())
-        m_timer.start(m_intervalMs);
+    if (!m_timer->isActive())
+        m_timer->start(m_intervalMs);
 }
 
 void TelemetryBatcher::flush()
 {
-    m_timer.stop();
+    m_timer->stop();
     if (m_pending.isEmpty())
         return;
     TelemetryBatch batch;

@@ -1,9 +1,11 @@
 #pragma once
 
+#include "SingleShotTimer.h"
 #include "TelemetrySample.h"
 
 #include <QtCore/QObject>
-#include <QtCore/QTimer>
+
+#include <memory>
 
 namespace lk::bus {
 
@@ -14,9 +16,13 @@ namespace lk::bus {
 class TelemetryBatcher : public QObject {
     Q_OBJECT
 public:
-    explicit TelemetryBatcher(QObject *parent = nullptr);
+    /// `timers`: where its clock comes from (tests fire it by hand); default Qt's.
+    explicit TelemetryBatcher(QObject *parent = nullptr,
+                              const SingleShotTimerFactory &timers = makeQtSingleShotTimer);
 
     void setRateHz(double rateHz);
+    /// The wait between the first sample of a batch and its hand-on.
+    int intervalMs() const { return m_intervalMs; }
     void add(const TelemetrySample &sample);
     /// Hand on what is gathered now (nothing when empty) and stop the clock.
     void flush();
@@ -26,7 +32,7 @@ signals:
 
 private:
     TelemetryBatch m_pending;
-    QTimer m_timer{this}; // a child: it moves to the bus thread with its owner
+    std::unique_ptr<SingleShotTimer> m_timer;
     int m_intervalMs = 16;
 };
 

@@ -1,3 +1,5 @@
+#include "../support/ManualTimers.h"
+
 #include <bus/TelemetryBatcher.h>
 
 #include <QtTest/QSignalSpy>
@@ -6,6 +8,7 @@
 using lk::bus::TelemetryBatch;
 using lk::bus::TelemetryBatcher;
 using lk::bus::TelemetrySample;
+using lk::testsupport::ManualTimers;
 
 namespace {
 TelemetrySample sample(int id, double t)
@@ -23,6 +26,10 @@ class tst_TelemetryBatcher : public QObject {
 private slots:
     void samplesArriveAsOneBatch();
     void flushHandsOnAtOnceAndNothingWhenEmpty();
+    void atMostRateHzBatchesWhateverTheSampleRate_data();
+    void atMostRateHzBatchesWhateverTheSampleRate();
+    void intervalFollowsTheRate_data();
+    void intervalFollowsTheRate();
 };
 
 void tst_TelemetryBatcher::samplesArriveAsOneBatch()
@@ -55,6 +62,67 @@ void tst_TelemetryBatcher::flushHandsOnAtOnceAndNothingWhenEmpty()
     QCOMPARE(ready.count(), 1);
     QTest::qWait(1200); // the stopped clock sends no second, empty batch
     QCOMPARE(ready.count(), 1);
+}
+
+void tst_TelemetryBatcher::atMostRateHzBatchesWhateverTheSampleRate_data()
+{
+    QTest::addColumn<int>("samplesPerInterval");
+    QTest::newRow("one") << 1;
+    QTest::newRow("a 1 Mbaud bus of 4 drives") << 40;
+    QTest::newRow("a flood") << 5000;
+}
+
+void tst_TelemetryBatcher::atMostRateHzBatchesWhateverTheSampleRate()
+{
+    // The rate bound, on a clock the test runs: however many samples come, the receiving
+    // thread gets one batch per interval, and none between two ticks of the clock.
+    QFETCH(int, samplesPerInterval);
+    ManualTimers timers;
+    TelemetryBatcher b(nullptr, timers.factory());
+    b.setRateHz(60);
+    QSignalSpy ready(&b, &TelemetryBatcher::batchReady);
+    QCOMPARE(timers.count(), 1);
+    int sent = 0;
+    const int intervals = 100;
+    for (int k = 0; k < intervals; ++k) {
+        for (int i = 0; i < samplesPerInterval; ++i)
+            b.add(sample(1 + sent++ % 32, k + i * 1e-6));
+        QCOMPARE(ready.count(), k); // samples alone never hand a batch on
+        QVERIFY(timers.at(0).active);
+        QCOMPARE(timers.at(0).lastMs, 16);
+        QVERIFY(timers.fire());
+        QCOMPARE(ready.count(), k + 1);
+    }
+    QCOMPARE(timers.at(0).starts, intervals); // one start per batch, not per sample
+    int received = 0;
+    for (const QList<QVariant> &args : ready)
+        received += int(args.at(0).value<TelemetryBatch>().size());
+    QCOMPARE(received, sent);
+    QVERIFY(!timers.fire()); // idle: the clock is stopped, no empty batch follows
+    QCOMPARE(ready.count(), intervals);
+}
+
+void tst_TelemetryBatcher::intervalFollowsTheRate_data()
+{
+    QTest::addColumn<double>("rateHz");
+    QTest::addColumn<int>("intervalMs");
+    QTest::newRow("60 Hz (the product's)") << 60.0 << 16;
+    QTest::newRow("20 Hz") << 20.0 << 50;
+    QTest::newRow("1 Hz") << 1.0 << 1000;
+    QTest::newRow("below 1 Hz is 1 Hz") << 0.1 << 1000;
+    QTest::newRow("0 is 1 Hz, never a busy loop") << 0.0 << 1000;
+}
+
+void tst_TelemetryBatcher::intervalFollowsTheRate()
+{
+    QFETCH(double, rateHz);
+    QFETCH(int, intervalMs);
+    ManualTimers timers;
+    TelemetryBatcher b(nullptr, timers.factory());
+    b.setRateHz(rateHz);
+    QCOMPARE(b.intervalMs(), intervalMs);
+    b.add(sample(1, 0));
+    QCOMPARE(timers.at(0).lastMs, intervalMs);
 }
 
 QTEST_GUILESS_MAIN(tst_TelemetryBatcher)
