@@ -42,7 +42,6 @@ StepTestRunner::StepTestRunner(bus::BusSession &session, QObject *parent)
     m_graceTimer.setInterval(kSampleGraceMs);
     connect(&m_sendTimer, &QTimer::timeout, this, &StepTestRunner::sendDue);
     connect(&m_graceTimer, &QTimer::timeout, this, &StepTestRunner::finishRun);
-    connect(&m_session, &bus::BusSession::requestCompleted, this, &StepTestRunner::onCompleted);
     connect(&m_session, &bus::BusSession::telemetryReceived, this, &StepTestRunner::onTelemetry);
     connect(&m_session, &bus::BusSession::connectionChanged, this, &StepTestRunner::onConnection);
 }
@@ -64,7 +63,7 @@ bool StepTestRunner::start(const StepTestSpec &spec, const safety::SoftLimits &l
     m_plan = StepTestPlan{};
     m_result = StepTestResult{};
     m_result.spec = spec;
-    m_tickets.clear();
+    ++m_run;
     m_samples.clear();
     m_next = m_replySamples = m_completions = 0;
     m_focused = false;
@@ -89,7 +88,10 @@ bool StepTestRunner::start(const StepTestSpec &spec, const safety::SoftLimits &l
         });
         return true;
     }
-    m_readTicket = m_session.send(*built.request, bus::Priority::Operator);
+    m_session.send(*built.request, this, [this, run = m_run](const bus::RequestResult &result) {
+        if (run == m_run && m_phase == Phase::Reading)
+            onRead(result);
+    });
     return true;
 }
 
@@ -101,16 +103,11 @@ void StepTestRunner::abort()
         QStringLiteral("aborted: no further setpoint is sent; %1").arg(stillMoving()));
 }
 
-void StepTestRunner::onCompleted(const bus::RequestResult &result)
+void StepTestRunner::onSetpointDone(quint64 run, int index, const bus::RequestResult &result)
 {
-    if (m_phase == Phase::Reading && result.ticket == m_readTicket) {
-        onRead(result);
+    if (run != m_run || !isRunning())
         return;
-    }
-    const auto it = m_tickets.constFind(result.ticket);
-    if (it == m_tickets.constEnd() || !isRunning())
-        return;
-    StepSent &sent = m_result.sent[*it];
+    StepSent &sent = m_result.sent[index];
     ++m_completions;
     if (!result.ok()) {
         const StepTestFailure why = result.status == RequestStatus::Disconnected
@@ -212,9 +209,12 @@ void StepTestRunner::sendDue()
     while (m_next < setpoints.size() && setpoints.at(m_next).atS <= elapsed + 0.0005) {
         const StepSetpoint &s = setpoints.at(m_next++);
         // Absolute commands: the session's retries (BusConfig::retries) are the only repeats.
-        const quint64 ticket = m_session.send(s.request, bus::Priority::Operator);
-        m_tickets.insert(ticket, int(m_result.sent.size()));
+        const int index = int(m_result.sent.size());
         m_result.sent.append(StepSent{s});
+        m_session.send(s.request, this,
+                       [this, run = m_run, index](const bus::RequestResult &result) {
+                           onSetpointDone(run, index, result);
+                       });
     }
     const double nextAt = m_next < setpoints.size() ? setpoints.at(m_next).atS : m_plan.endS();
     elapsed = m_clock.nsecsElapsed() * 1e-9;

@@ -10,7 +10,6 @@
 #include <safety/SoftLimits.h>
 
 #include <QtCore/QElapsedTimer>
-#include <QtCore/QHash>
 #include <QtCore/QObject>
 #include <QtCore/QString>
 #include <QtCore/QTimer>
@@ -105,7 +104,8 @@ signals:
 private:
     enum class Phase { Idle, Reading, Running, Draining };
 
-    void onCompleted(const bus::RequestResult &result);
+    /// Setpoint `index` of run `run` ended (a callback of BusSession::send).
+    void onSetpointDone(quint64 run, int index, const bus::RequestResult &result);
     void onTelemetry(const QVector<bus::TelemetrySample> &batch);
     void onConnection(const bus::ConnectionStatus &status);
     void onRead(const bus::RequestResult &result);
@@ -126,11 +126,12 @@ private:
     double m_gearRatio = 1;
     StepTestPlan m_plan;
     StepTestResult m_result;
-    quint64 m_readTicket = 0;
-    QHash<quint64, int> m_tickets;           ///< setpoint tickets -> index in m_result.sent
+    /// Counts start(): a completion of an earlier run (aborted, then started again) finds a
+    /// different number and is ignored.
+    quint64 m_run = 0;
     int m_next = 0;                          ///< the next setpoint to send
     int m_replySamples = 0;                  ///< motion replies seen in the telemetry
-    int m_completions = 0;                   ///< setpoints whose requestCompleted arrived
+    int m_completions = 0;                   ///< setpoints whose completion arrived
     QVector<bus::TelemetrySample> m_samples; ///< the drive's samples since the pre-roll went out
     std::optional<bus::PollPlan> m_previousPlan;
     bool m_focused = false; ///< the session polls the focus plan: give m_previousPlan back
