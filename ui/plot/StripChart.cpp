@@ -1,10 +1,10 @@
 #include "StripChart.h"
 
 #include "SeriesColors.h"
+#include "TraceLayer.h"
 
 #include <QtCharts/QChart>
 #include <QtCharts/QLegend>
-#include <QtCharts/QLegendMarker>
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QValueAxis>
 #include <QtGui/QPainter>
@@ -116,6 +116,8 @@ StripChart::StripChart(QWidget *parent) : TimeChartView(parent)
     m_time = new QValueAxis(c);
     setAxisRange(m_time, 0, 10, kTimeTicks);
     c->addAxis(m_time, Qt::AlignBottom);
+    m_lines = new TraceLayer(c, m_time);
+    connect(c, &QChart::plotAreaChanged, this, [this] { m_lines->plotAreaChanged(); });
     applyPalette();
 }
 
@@ -123,7 +125,7 @@ void StripChart::clearChart()
 {
     chart()->removeAllSeries(); // deletes them
     m_series.clear();
-    m_extraPieces.clear();
+    m_lines->setTraces({});
     m_outages.clear();
     for (auto &[quantity, axis] : m_valueAxes) {
         chart()->removeAxis(axis);
@@ -172,6 +174,7 @@ void StripChart::setTraces(const QVector<PlotTrace> &traces, Coloring coloring)
     clearChart();
     m_traces = traces;
     m_coloring = coloring;
+    QVector<std::pair<QPen, QValueAxis *>> lines;
     for (int i = 0; i < m_traces.size(); ++i) {
         const PlotTrace &trace = m_traces.at(i);
         QValueAxis *&axis = m_valueAxes[trace.quantity()];
@@ -183,21 +186,19 @@ void StripChart::setTraces(const QVector<PlotTrace> &traces, Coloring coloring)
             if (m_coloring == Coloring::ByChannel)
                 m_axisColors[trace.quantity()] = traceColor(i);
         }
-        m_series.append(addLineSeries(i));
-        m_extraPieces.append(QList<QLineSeries *>());
+        const QPen pen = tracePen(i);
+        m_series.append(addLegendSeries(i, pen));
+        lines.append({pen, axis});
     }
+    m_lines->setTraces(lines);
     chart()->legend()->setVisible(driveOrder().size() > 1 || m_valueAxes.size() > 1);
     applyPalette(); // the new axes
     m_needsScale = true;
 }
 
-QLineSeries *StripChart::addLineSeries(int index)
+QPen StripChart::tracePen(int index) const
 {
     const PlotTrace &trace = m_traces.at(index);
-    auto *series = new QLineSeries(chart());
-    series->setUseOpenGL(false); // raster: works offscreen and on any remote display
-    series->setName(
-        tr("ID %1 %2").arg(trace.driveId).arg(channelLabel(trace.channel, trace.power)));
     QPen pen(traceColor(index), 1);
     // Cosmetic: the raster engine draws it directly, dashes included; a non-cosmetic pen goes
     // through QPainterPathStroker on every frame (a tenth of the GUI thread with every signal
@@ -209,6 +210,16 @@ QLineSeries *StripChart::addLineSeries(int index)
                                               Qt::DashDotLine, Qt::DashDotDotLine};
         pen.setStyle(styles[driveOrder().indexOf(trace.driveId) % 5]);
     }
+    return pen;
+}
+
+QLineSeries *StripChart::addLegendSeries(int index, const QPen &pen)
+{
+    const PlotTrace &trace = m_traces.at(index);
+    auto *series = new QLineSeries(chart());
+    series->setUseOpenGL(false); // raster: works offscreen and on any remote display
+    series->setName(
+        tr("ID %1 %2").arg(trace.driveId).arg(channelLabel(trace.channel, trace.power)));
     series->setPen(pen);
     chart()->addSeries(series);
     series->attachAxis(m_time);
@@ -218,35 +229,24 @@ QLineSeries *StripChart::addLineSeries(int index)
 
 void StripChart::showSegments(int index, const LineSegments &segments)
 {
-    // Piece k of the line goes to line series k: the first is the trace's own (named in the
-    // legend), the others are made when a gap first needs them and stay for reuse.
-    QList<QLineSeries *> &extra = m_extraPieces[index];
-    while (extra.size() < segments.size() - 1) {
-        QLineSeries *piece = addLineSeries(index);
-        for (QLegendMarker *marker : chart()->legend()->markers(piece)) {
-            marker->setVisible(false);
-        }
-        extra.append(piece);
-    }
-    m_series.at(index)->replace(segments.value(0));
-    for (int k = 0; k < extra.size(); ++k) {
-        if (k + 1 < segments.size()) {
-            extra.at(k)->replace(segments.at(k + 1));
-        } else if (extra.at(k)->count() > 0) {
-            extra.at(k)->clear();
-        }
-    }
+    m_lines->setPieces(index, segments);
 }
 
-QList<QLineSeries *> StripChart::segments(int index) const
+QList<QPointF> StripChart::points(int index) const
 {
-    QList<QLineSeries *> out;
-    if (index < 0 || index >= m_series.size()) {
+    const LineSegments pieces = segments(index);
+    return pieces.isEmpty() ? QList<QPointF>() : pieces.first();
+}
+
+LineSegments StripChart::segments(int index) const
+{
+    LineSegments out;
+    if (index < 0 || index >= m_lines->traceCount()) {
         return out;
     }
-    for (QLineSeries *s : QList<QLineSeries *>{m_series.at(index)} + m_extraPieces.at(index)) {
-        if (s->count() > 0) {
-            out.append(s);
+    for (const QList<QPointF> &piece : m_lines->pieces(index)) {
+        if (!piece.isEmpty()) {
+            out.append(piece);
         }
     }
     return out;
@@ -407,16 +407,6 @@ void StripChart::refresh(const TelemetryStore &store, TimeSpan span, bool autosc
         m_needsScale = m_needsScale && !scaled;
     }
     const bool timeMoves = m_time->min() != span.begin || m_time->max() != span.end;
-    if (timeMoves || !ranges.empty()) {
-        // QtCharts rebuilds every line (path and hover outline) on each axis change: empty
-        // the lines first so that only the final replace() below pays for that.
-        for (int i = 0; i < m_series.size(); ++i) {
-            m_series.at(i)->clear();
-            for (QLineSeries *piece : std::as_const(m_extraPieces.at(i))) {
-                piece->clear();
-            }
-        }
-    }
     if (timeMoves) {
         const int ticks = std::clamp(plotColumns() / kPixelsPerTimeTick, 2, kTimeTicks);
         setAxisRange(m_time, span.begin, span.end, ticks);
@@ -438,6 +428,7 @@ void StripChart::scaleValueAxes(double factor)
         const double half = (axis->max() - axis->min()) / 2 * factor;
         setAxisRange(axis, mid - half, mid + half, kValueTicks);
     }
+    m_lines->update();
 }
 
 double StripChart::axisInsetLeft() const

@@ -16,6 +16,8 @@ class QValueAxis;
 
 namespace lk::ui {
 
+class TraceLayer;
+
 /// A labelled instant on a chart's time axis (e.g. "gains written").
 struct TimeMarker {
     double time = 0; ///< same clock as the samples
@@ -25,7 +27,8 @@ struct TimeMarker {
 /// One chart of the plot panel: a time axis, one value axis per quantity (alternating left
 /// and right) and one line per trace, refreshed from the store decimated to its pixel width.
 /// A trace with gaps in its data (a silent drive, a dropped link) is drawn as separate line
-/// pieces, never joined across a gap, and each outage in view is shaded.
+/// pieces, never joined across a gap, and each outage in view is shaded. QtCharts draws the
+/// axes and the legend (from one empty line series per trace); a TraceLayer draws the lines.
 class StripChart : public TimeChartView {
     Q_OBJECT
 public:
@@ -36,10 +39,12 @@ public:
     /// Rebuilds series and axes when the traces or the colouring changed; else does nothing.
     void setTraces(const QVector<PlotTrace> &traces, Coloring coloring);
     const QVector<PlotTrace> &traces() const { return m_traces; }
-    /// The first line piece of each trace (the one named in the legend).
+    /// Each trace's legend entry (a line series without points: the lines are drawn apart).
     QList<QLineSeries *> lineSeries() const { return m_series; }
+    /// The points drawn for trace `index`: its first line piece (oldest), empty when none.
+    QList<QPointF> points(int index) const;
     /// Every line piece of trace `index` that holds points, oldest first.
-    QList<QLineSeries *> segments(int index) const;
+    LineSegments segments(int index) const;
     /// The outages shaded now (union over the traces, within the shown time span).
     const QVector<TimeSpan> &outageBands() const { return m_outages; }
     /// Instants drawn as labelled vertical lines while they are in view.
@@ -73,15 +78,16 @@ private:
     void clearChart();
     QColor traceColor(int index) const;
     QVector<int> driveOrder() const; ///< drives in the order their traces come
-    QLineSeries *addLineSeries(int index);
+    QLineSeries *addLegendSeries(int index, const QPen &pen);
+    QPen tracePen(int index) const;
     void showSegments(int index, const LineSegments &segments);
     void collectOutages(const TelemetryStore &store, TimeSpan span);
     void drawMarkers(QPainter *painter);
 
     QVector<PlotTrace> m_traces;
     Coloring m_coloring = Coloring::ByDrive;
-    QList<QLineSeries *> m_series;
-    QVector<QList<QLineSeries *>> m_extraPieces; ///< per trace: pieces after the first
+    QList<QLineSeries *> m_series; ///< per trace: its legend entry
+    TraceLayer *m_lines = nullptr; ///< a child of the chart
     QVector<TimeSpan> m_outages;
     QVector<TimeMarker> m_markers;
     std::map<Quantity, QValueAxis *> m_valueAxes;

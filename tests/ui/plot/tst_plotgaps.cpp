@@ -6,7 +6,6 @@
 #include <plot/StripChart.h>
 #include <plot/TelemetryStore.h>
 
-#include <QtCharts/QLineSeries>
 #include <QtTest/QTest>
 
 using lk::bus::TelemetryBatch;
@@ -177,11 +176,11 @@ void tst_PlotGaps::chartBreaksTheLineAndShadesTheOutage()
     chart.setTraces({lk::ui::PlotTrace{1, TelemetryChannel::Speed, false}},
                     lk::ui::StripChart::Coloring::ByDrive);
     chart.refresh(store, lk::ui::TimeSpan{0, 8}, true);
-    const QList<QLineSeries *> pieces = chart.segments(0);
+    const LineSegments pieces = chart.segments(0);
     QCOMPARE(pieces.size(), 2);
     const SampleGap gap{1.99, 6.0};
-    for (QLineSeries *piece : pieces) {
-        LineSegments one{piece->points()};
+    for (const QList<QPointF> &piece : pieces) {
+        LineSegments one{piece};
         QVERIFY(neverJoins(one, gap)); // no ramp from 360 to 0 across the outage
     }
     QCOMPARE(chart.outageBands().size(), 1);

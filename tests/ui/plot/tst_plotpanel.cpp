@@ -54,10 +54,12 @@ QAction *actionNamed(PlotPanel &panel, const QString &text)
     return nullptr;
 }
 
-// The newest x a series shows, NaN while it is empty (QTRY_ evaluates before any redraw).
-double lastX(const QLineSeries *series)
+// The newest x trace `index` of `chart` shows, NaN while it is empty (QTRY_ evaluates before
+// any redraw).
+double lastX(const StripChart *chart, int index = 0)
 {
-    return series->count() > 0 ? series->at(series->count() - 1).x() : qQNaN();
+    const QList<QPointF> points = chart->points(index);
+    return points.isEmpty() ? qQNaN() : points.last().x();
 }
 
 QPoint plotCentre(StripChart *chart)
@@ -99,15 +101,15 @@ void tst_PlotPanel::seriesHoldDecimatedPoints()
         store.append(batch(2, k, 1000, 0.001));
     }
     QCOMPARE(panel.charts().size(), 3); // iq, speed, encoder stacked
-    QTRY_VERIFY(!panel.charts().first()->lineSeries().first()->points().isEmpty());
+    QTRY_VERIFY(!panel.charts().first()->points(0).isEmpty());
     for (StripChart *chart : panel.charts()) {
         QCOMPARE(chart->lineSeries().size(), 2);
-        for (QLineSeries *series : chart->lineSeries()) {
-            QTRY_VERIFY(series->count() > 0);
-            QVERIFY2(series->count() <= 2 * chart->width(),
-                     qPrintable(QString::number(series->count())));
+        for (int i = 0; i < chart->lineSeries().size(); ++i) {
+            QTRY_VERIFY(chart->points(i).size() > 0);
+            QVERIFY2(chart->points(i).size() <= 2 * chart->width(),
+                     qPrintable(QString::number(chart->points(i).size())));
             // The live edge is the real newest sample.
-            QCOMPARE(lastX(series), 19.999);
+            QCOMPARE(lastX(chart, i), 19.999);
         }
         QCOMPARE(chart->timeAxis()->max(), 19.999);
         QCOMPARE(chart->timeAxis()->max() - chart->timeAxis()->min(), 10.0);
@@ -121,8 +123,8 @@ void tst_PlotPanel::pauseFreezesChartsButStoreGrows()
     panel.setDrives({1});
     showPanel(panel);
     store.append(batch(1, 0, 10000, 0.001));
-    QLineSeries *series = panel.charts().first()->lineSeries().first();
-    QTRY_COMPARE(lastX(series), 9.999);
+    StripChart *chart = panel.charts().first();
+    QTRY_COMPARE(lastX(chart), 9.999);
     waitUntilIdle(panel);
     const quint64 settled = panel.redrawCount();
     QTest::qWait(20 * PlotPanel::kRedrawIntervalMs);
@@ -132,19 +134,19 @@ void tst_PlotPanel::pauseFreezesChartsButStoreGrows()
     QVERIFY(pause);
     pause->trigger();
     QVERIFY(panel.isPaused());
-    const QList<QPointF> frozen = series->points();
+    const QList<QPointF> frozen = chart->points(0);
     const double frozenEnd = panel.charts().first()->timeAxis()->max();
     const quint64 redraws = panel.redrawCount();
     store.append(batch(1, 10, 2000, 0.001));
     QCOMPARE(store.count(1, TelemetryChannel::Torque), 12000); // still recording
     QTest::qWait(20 * PlotPanel::kRedrawIntervalMs);
     QCOMPARE(panel.redrawCount(), redraws);
-    QCOMPARE(series->points(), frozen);
+    QCOMPARE(chart->points(0), frozen);
     QCOMPARE(panel.charts().first()->timeAxis()->max(), frozenEnd);
 
     pause->trigger();
     QVERIFY(!panel.isPaused());
-    QTRY_COMPARE(lastX(series), 11.999);
+    QTRY_COMPARE(lastX(chart), 11.999);
 }
 
 void tst_PlotPanel::windowComboChangesRange_data()
@@ -197,7 +199,7 @@ void tst_PlotPanel::hiddenPanelDoesNotRedraw()
     QCOMPARE(panel.redrawCount(), redraws);
     panel.show();
     QTRY_VERIFY(panel.redrawCount() > redraws);
-    QTRY_COMPARE(lastX(panel.charts().first()->lineSeries().first()), 5.99);
+    QTRY_COMPARE(lastX(panel.charts().first()), 5.99);
 }
 
 void tst_PlotPanel::msDriveShowsPower()
@@ -218,8 +220,8 @@ void tst_PlotPanel::msDriveShowsPower()
     s.fields = TelemetryField::Power | TelemetryField::Speed;
     s.power = -300;
     store.append({s});
-    QTRY_COMPARE(torque->lineSeries().first()->count(), 1);
-    QCOMPARE(torque->lineSeries().first()->at(0).y(), -300.0);
+    QTRY_COMPARE(torque->points(0).size(), 1);
+    QCOMPARE(torque->points(0).at(0).y(), -300.0);
 
     // A drive that sends iq is labelled iq whatever it was declared as: the data decides.
     panel.setDriveSeries(4, lk::protocol::Series::MS);
@@ -248,7 +250,7 @@ void tst_PlotPanel::overlaidModeHasAxisPerUnit()
     QVERIFY(chart->valueAxis(Quantity::Encoder));
     QCOMPARE(chart->valueAxis(Quantity::Current)->alignment(), Qt::AlignLeft);
     QCOMPARE(chart->valueAxis(Quantity::Speed)->alignment(), Qt::AlignRight);
-    QTRY_VERIFY(chart->lineSeries().last()->count() > 0);
+    QTRY_VERIFY(chart->points(int(chart->lineSeries().size()) - 1).size() > 0);
     overlay->trigger();
     QTRY_COMPARE(panel.charts().size(), 3);
 }
@@ -451,7 +453,7 @@ void tst_PlotPanel::flatSignalThenJumpKeepsTicksBounded()
     store.append(flat);
     StripChart *chart = panel.charts().at(1); // speed
     QTRY_VERIFY(chart->valueAxis(Quantity::Speed) != nullptr);
-    QTRY_VERIFY(chart->lineSeries().first()->count() > 0);
+    QTRY_VERIFY(chart->points(0).size() > 0);
     TelemetryBatch jump;
     for (int i = 0; i < 200; ++i)
         jump.append(sample(1, 2 + i * 0.01, 0.0, 5000.0 * (i % 2), 0));
