@@ -12,8 +12,10 @@ QString baseText(TransportError::Kind kind, const QString &port, int baud)
     case Kind::None:
         return {};
     case Kind::NoSuchPort:
-        return QCoreApplication::translate("lk::transport::PortErrorText",
-                                           "No serial port %1. Is the adapter plugged in?")
+        return QCoreApplication::translate(
+                   "lk::transport::PortErrorText",
+                   "No serial port %1. The device does not exist: is the adapter "
+                   "plugged in?")
             .arg(port);
     case Kind::PermissionDenied:
         return QCoreApplication::translate(
@@ -48,7 +50,9 @@ QString baseText(TransportError::Kind kind, const QString &port, int baud)
                    "`ls /dev/serial/by-id/` lists the adapters plugged in.")
             .arg(port);
     case Kind::IoError:
-        return QCoreApplication::translate("lk::transport::PortErrorText", "Serial port %1 failed.")
+        return QCoreApplication::translate(
+                   "lk::transport::PortErrorText",
+                   "Serial port %1 failed (input/output error). Check the cable and the adapter.")
             .arg(port);
     }
     return {};

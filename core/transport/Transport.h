@@ -19,7 +19,9 @@ struct TransportError {
         IoError,          ///< any other read/write failure
     };
     Kind kind = Kind::None;
-    QString message; ///< English, complete sentence with the fix where there is one
+    /// A complete sentence with the fix where there is one, translated where it is made:
+    /// every surface (lkctl, the GUI's banner) shows it as it is, none words it again.
+    QString message;
 };
 
 /// Moves bytes to and from one RS485 bus and reports its connection state; nothing more.

@@ -558,10 +558,6 @@
 <context>
     <name>lk::transport::PortErrorText</name>
     <message>
-        <source>No serial port %1. Is the adapter plugged in?</source>
-        <translation>没有串口 %1。转换器插好了吗？</translation>
-    </message>
-    <message>
         <source>No permission to open %1. Add your user to the serial port group (`sudo usermod -aG dialout $USER` on Debian/Ubuntu, group `uucp` on Arch), then log out and in again.</source>
         <translation>没有权限打开 %1。请把您的用户加入串口用户组（Debian/Ubuntu 上执行 `sudo usermod -aG dialout $USER`，Arch 上为 `uucp` 组），然后注销并重新登录。</translation>
     </message>
@@ -578,12 +574,16 @@
         <translation>%1 不接受 %2 波特 8N1。请换一个波特率或换一个转换器。</translation>
     </message>
     <message>
-        <source>Serial port %1 failed.</source>
-        <translation>串口 %1 出错。</translation>
-    </message>
-    <message>
         <source>%1 is not a serial device. Give the adapter&apos;s port, e.g. /dev/ttyUSB0; `ls /dev/serial/by-id/` lists the adapters plugged in.</source>
         <translation>%1 不是串口设备。请指定转换器的串口，例如 /dev/ttyUSB0；`ls /dev/serial/by-id/` 会列出已插入的转换器。</translation>
+    </message>
+    <message>
+        <source>No serial port %1. The device does not exist: is the adapter plugged in?</source>
+        <translation>没有串口 %1。该设备不存在：转换器插好了吗？</translation>
+    </message>
+    <message>
+        <source>Serial port %1 failed (input/output error). Check the cable and the adapter.</source>
+        <translation>串口 %1 出错（输入/输出错误）。请检查线缆和转换器。</translation>
     </message>
 </context>
 <context>
@@ -2300,30 +2300,6 @@
         <translation>无错误</translation>
     </message>
     <message>
-        <source>The port does not exist. Check that the USB-RS485 adapter is plugged in and pick it again from the list.</source>
-        <translation>串口不存在。请检查 USB-RS485 转换器是否插好，然后在列表中重新选择。</translation>
-    </message>
-    <message>
-        <source>Permission denied. Add your user to the serial group (Debian/Ubuntu: sudo usermod -aG dialout $USER; Arch: uucp), then log out and back in.</source>
-        <translation>权限不足。请把您的用户加入串口用户组（Debian/Ubuntu：sudo usermod -aG dialout $USER；Arch：uucp），然后注销并重新登录。</translation>
-    </message>
-    <message>
-        <source>The port is busy: another program (a terminal, another lkstudio or lkctl) holds it. Close that program and connect again.</source>
-        <translation>串口被占用：另一个程序（终端、另一个 lkstudio 或 lkctl）正在使用它。关闭该程序后重新连接。</translation>
-    </message>
-    <message>
-        <source>The adapter was unplugged. Plug it back in; with auto-reconnect on, the connection comes back by itself.</source>
-        <translation>转换器已被拔出。请重新插上；开启自动重连时连接会自动恢复。</translation>
-    </message>
-    <message>
-        <source>The adapter refused the port settings. Pick another baud or another adapter.</source>
-        <translation>转换器不接受这些串口设置。请换一个波特率或换一个转换器。</translation>
-    </message>
-    <message>
-        <source>Input/output error on the port. Check the cable and the adapter.</source>
-        <translation>串口输入/输出错误。请检查电缆和转换器。</translation>
-    </message>
-    <message>
         <source>Connected: %1</source>
         <translation>已连接：%1</translation>
     </message>
@@ -2342,10 +2318,6 @@
     <message>
         <source>%1 s</source>
         <translation>%1 s</translation>
-    </message>
-    <message>
-        <source>This is not a serial port. Pick the USB-RS485 adapter from the list.</source>
-        <translation>这不是串口。请从列表中选择 USB-RS485 转换器。</translation>
     </message>
 </context>
 <context>

@@ -177,7 +177,7 @@ void BusController::onError(const transport::TransportError &error)
     emit message(MessageBanner::Level::Error,
                  tr("Cannot use %1: %2")
                      .arg(m_choice.isSimulator() ? tr("the simulator") : m_choice.port,
-                          Format::transportError(error)));
+                          error.message)); // worded (and translated) once, by the transport
 }
 
 void BusController::scan(const bus::ScanOptions &options)

@@ -51,44 +51,6 @@ QString Format::errorFlagsText(int errorState, std::optional<protocol::Generatio
     return flags.isEmpty() ? tr("No errors") : flags.join(QStringLiteral(", "));
 }
 
-QString Format::transportError(const transport::TransportError &error)
-{
-    using K = transport::TransportError::Kind;
-    QString what;
-    switch (error.kind) {
-    case K::None:
-        return {};
-    case K::NoSuchPort:
-        what = tr("The port does not exist. Check that the USB-RS485 adapter is plugged in and "
-                  "pick it again from the list.");
-        break;
-    case K::PermissionDenied:
-        what = tr("Permission denied. Add your user to the serial group (Debian/Ubuntu: "
-                  "sudo usermod -aG dialout $USER; Arch: uucp), then log out and back in.");
-        break;
-    case K::PortBusy:
-        what = tr("The port is busy: another program (a terminal, another lkstudio or lkctl) "
-                  "holds it. Close that program and connect again.");
-        break;
-    case K::Unplugged:
-        what = tr("The adapter was unplugged. Plug it back in; with auto-reconnect on, the "
-                  "connection comes back by itself.");
-        break;
-    case K::BadSettings:
-        what = tr("The adapter refused the port settings. Pick another baud or another adapter.");
-        break;
-    case K::NotSerialDevice:
-        what = tr("This is not a serial port. Pick the USB-RS485 adapter from the list.");
-        break;
-    case K::IoError:
-        what = tr("Input/output error on the port. Check the cable and the adapter.");
-        break;
-    }
-    if (!error.message.isEmpty())
-        what += QStringLiteral(" (%1)").arg(error.message);
-    return what;
-}
-
 QString Format::connectionState(const bus::ConnectionStatus &status)
 {
     using S = transport::Transport::State;

@@ -28,8 +28,6 @@ public:
     /// errorFlags() joined, or "No errors".
     static QString errorFlagsText(int errorState, std::optional<protocol::Generation> generation);
 
-    /// What a technician can do about a transport failure (translated, with the fix).
-    static QString transportError(const transport::TransportError &error);
     /// "Connected: /dev/ttyUSB0 @ 115200", "Disconnected", "Not connected" (short: the
     /// reason goes in a tooltip, see connectionDetail()).
     static QString connectionState(const bus::ConnectionStatus &status);
