@@ -131,6 +131,7 @@ void BusSession::close()
         return;
     join();
     m_pollPlan.reset();
+    m_pollExtras.clear();
     // Deliver what the worker said on its way out (Cancelled completions, Closed state) now,
     // then ignore anything else the old worker may have queued.
     QCoreApplication::sendPostedEvents(this, QEvent::MetaCall);
@@ -237,13 +238,52 @@ void BusSession::cancelScan()
 void BusSession::startPolling(const PollPlan &plan)
 {
     m_pollPlan = plan;
-    post([w = m_worker, plan] { w->startPolling(plan); });
+    postPollPlan();
 }
 
 void BusSession::stopPolling()
 {
     m_pollPlan.reset();
-    post([w = m_worker] { w->stopPolling(); });
+    postPollPlan();
+}
+
+quint64 BusSession::addPollExtras(int id, const QVector<protocol::Command> &commands)
+{
+    const quint64 handle = m_nextExtrasHandle++;
+    m_pollExtras.insert(handle, PollExtras{id, commands});
+    postPollPlan();
+    return handle;
+}
+
+void BusSession::removePollExtras(quint64 handle)
+{
+    if (m_pollExtras.remove(handle))
+        postPollPlan();
+}
+
+std::optional<PollPlan> BusSession::effectivePollPlan() const
+{
+    if (m_pollExtras.isEmpty())
+        return m_pollPlan;
+    PollPlan plan = m_pollPlan.value_or(PollPlan{});
+    if (!m_pollPlan)
+        plan.commands.clear(); // no plan: the extras alone
+    for (const PollExtras &e : m_pollExtras) {
+        QVector<protocol::Command> &commands = plan.extraCommands[e.id];
+        for (protocol::Command c : e.commands) {
+            if (!commands.contains(c))
+                commands.append(c);
+        }
+    }
+    return plan;
+}
+
+void BusSession::postPollPlan()
+{
+    if (const std::optional<PollPlan> plan = effectivePollPlan())
+        post([w = m_worker, p = *plan] { w->startPolling(p); });
+    else
+        post([w = m_worker] { w->stopPolling(); });
 }
 
 void BusSession::setSeries(int id, protocol::Series series)

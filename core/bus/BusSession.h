@@ -16,6 +16,7 @@
 
 #include <transport/Transport.h>
 
+#include <QtCore/QMap>
 #include <QtCore/QObject>
 #include <QtCore/QVector>
 
@@ -96,6 +97,16 @@ public:
     /// The plan last given to startPolling() (as given); nullopt after stopPolling(), close()
     /// or before any. A step test focuses it on its drive and gives it back afterwards.
     std::optional<PollPlan> pollPlan() const { return m_pollPlan; }
+    /// Read `commands` of drive `id` in its poll round besides the plan's (extra commands,
+    /// see PollPlan) until removePollExtras() with the returned handle (never 0). They outlive
+    /// startPolling() and stopPolling() (so a step test's focus and its end keep them, and
+    /// without a plan the bus polls them alone); close() drops them.
+    quint64 addPollExtras(int id, const QVector<protocol::Command> &commands);
+    void removePollExtras(quint64 handle); ///< a handle close() dropped is ignored
+    bool hasPollExtras(quint64 handle) const { return m_pollExtras.contains(handle); }
+    /// What the bus polls: pollPlan() (or nothing) with every extra command added; nullopt
+    /// when neither is there.
+    std::optional<PollPlan> effectivePollPlan() const;
 
     /// Tell the bus how to decode replies from `id` (iq vs power); also makes `id` known.
     void setSeries(int id, protocol::Series series);
@@ -131,6 +142,7 @@ private:
     void connectWorker();
     void join();
     void finishRequest(const RequestResult &result);
+    void postPollPlan(); ///< the worker polls effectivePollPlan()
     void finishStop(quint64 ticket, const QVector<int> &acknowledged, const QVector<int> &silent);
     template <typename F> void post(F &&f);
     template <typename... Args>
@@ -144,6 +156,12 @@ private:
     KnownMotors m_motors;
     BusConfig m_config;
     std::optional<PollPlan> m_pollPlan;
+    struct PollExtras {
+        int id = 0;
+        QVector<protocol::Command> commands;
+    };
+    QMap<quint64, PollExtras> m_pollExtras; ///< by handle
+    quint64 m_nextExtrasHandle = 1;
     TicketCallbacks<RequestResult> m_requestCallbacks;
     TicketCallbacks<QVector<int>, QVector<int>> m_stopCallbacks;
 };

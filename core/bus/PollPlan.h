@@ -2,6 +2,7 @@
 
 #include <protocol/Command.h>
 
+#include <QtCore/QMap>
 #include <QtCore/QMetaType>
 #include <QtCore/QVector>
 
@@ -14,6 +15,9 @@ namespace lk::bus {
 /// robin of `commands` (at most rateHz rounds a second, as without a focus), one of their polls
 /// after every focusOthersEvery focus polls: a step test gets the bus's full rate while the
 /// dashboard of the other drives stays alive.
+///
+/// extraCommands add reads for single drives (a view that shows more of one drive than the
+/// dashboard does) to that drive's round, without a second poll of what `commands` reads.
 struct PollPlan {
     QVector<int> ids;
     /// read_* commands only (anything else is dropped from the plan by the worker).
@@ -29,6 +33,10 @@ struct PollPlan {
     /// while the focus lasts.
     int focusOthersEvery = kDefaultFocusOthersEvery;
     static constexpr int kDefaultFocusOthersEvery = 8;
+    /// Read commands polled for one ID after `commands` in that ID's round; those `commands`
+    /// already reads are not polled twice. An ID not in `ids` is polled for its extras alone.
+    /// The focus drive polls its focusCommands only: a step test keeps the bus's full rate.
+    QMap<int, QVector<protocol::Command>> extraCommands;
 
     bool hasFocus() const { return focusId > 0; }
 

@@ -57,14 +57,15 @@ void PollScheduler::setPlan(const PollPlan &plan, double now)
         focus ? pollableOnly(plan.focusCommands.isEmpty() ? plan.commands : plan.focusCommands)
               : QVector<Command>{};
     m_plan.focusOthersEvery = std::max(0, plan.focusOthersEvery);
+    m_plan.extraCommands = extrasOf(plan.extraCommands);
 
     m_main = Ring{};
     m_others = Ring{};
     // ID-major order: one drive's fields arrive close together in time.
-    for (int id : m_plan.ids) {
+    for (int id : polledIds()) {
         if (id == m_plan.focusId)
             continue;
-        for (Command c : m_plan.commands)
+        for (Command c : commandsOf(id))
             (focus ? m_others : m_main).entries.append(Slot{id, c, false});
     }
     for (Command c : m_plan.focusCommands)
@@ -77,6 +78,40 @@ void PollScheduler::setPlan(const PollPlan &plan, double now)
     m_others.current.start = -std::numeric_limits<double>::infinity();
     m_sinceOthers = 0;
     m_current = m_main.current;
+}
+
+QMap<int, QVector<Command>> PollScheduler::extrasOf(const QMap<int, QVector<Command>> &extras) const
+{
+    QMap<int, QVector<Command>> out;
+    for (auto it = extras.begin(); it != extras.end(); ++it) {
+        if (it.key() < protocol::kMinId || it.key() > protocol::kMaxId)
+            continue;
+        const bool inPlan = m_plan.ids.contains(it.key());
+        QVector<Command> commands;
+        for (Command c : pollableOnly(it.value())) {
+            if (!inPlan || !m_plan.commands.contains(c)) // read once per round
+                commands.append(c);
+        }
+        if (!commands.isEmpty())
+            out.insert(it.key(), commands);
+    }
+    return out;
+}
+
+QVector<int> PollScheduler::polledIds() const
+{
+    QVector<int> ids = m_plan.ids;
+    for (auto it = m_plan.extraCommands.begin(); it != m_plan.extraCommands.end(); ++it) {
+        if (!ids.contains(it.key()))
+            ids.append(it.key());
+    }
+    return ids;
+}
+
+QVector<Command> PollScheduler::commandsOf(int id) const
+{
+    QVector<Command> commands = m_plan.ids.contains(id) ? m_plan.commands : QVector<Command>{};
+    return commands + m_plan.extraCommands.value(id);
 }
 
 void PollScheduler::clear()

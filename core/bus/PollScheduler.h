@@ -19,14 +19,15 @@ namespace lk::bus {
 /// while its previous poll is outstanding; a cycle starts at most every 1/rateHz seconds.
 /// A plan with a focus runs two round robins: the focus drive's, back to back, and the other
 /// drives' (rate-limited as before), one of whose polls follows every focusOthersEvery focus
-/// polls.
+/// polls. A drive's extra commands follow its `commands` in its round.
 class PollScheduler {
 public:
     /// Series of an ID, to skip commands the series does not answer (0x9D on MS).
     using SeriesLookup = std::function<std::optional<protocol::Series>(int id)>;
 
     void setSeriesLookup(SeriesLookup lookup) { m_series = std::move(lookup); }
-    /// Replace the plan; non-read commands and IDs outside 1..32 are dropped.
+    /// Replace the plan; non-read commands and IDs outside 1..32 are dropped, and so are the
+    /// extra commands of an ID that its `commands` poll already.
     void setPlan(const PollPlan &plan, double now);
     void clear();
     bool isActive() const;
@@ -72,6 +73,11 @@ private:
         double rateHz = 0; ///< rounds per second at most; 0: as fast as the bus allows
         Round current;
     };
+    /// plan.extraCommands for valid IDs, read commands only, without what `commands` polls.
+    QMap<int, QVector<protocol::Command>>
+    extrasOf(const QMap<int, QVector<protocol::Command>> &extras) const;
+    QVector<int> polledIds() const;                      ///< `ids`, then IDs with extras only
+    QVector<protocol::Command> commandsOf(int id) const; ///< one round of `id` (no focus)
     bool skipped(const Slot &slot) const;
     bool eligible(const Slot &slot) const;
     bool pollable(const Ring &ring) const; ///< some slot the series answers

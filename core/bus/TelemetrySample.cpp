@@ -62,6 +62,7 @@ void fill(TelemetrySample &s, const protocol::EncoderReading &v)
 {
     s.encoder = v.encoder;
     s.fields |= TelemetryField::Encoder;
+    s.encoderReading = v;
 }
 
 template <typename T> void fill(TelemetrySample &, const T &) {} // no telemetry in it
@@ -134,6 +135,8 @@ void TelemetrySample::merge(const TelemetrySample &newer)
             info.copy(*this, newer);
     }
     fields |= newer.fields;
+    if (newer.encoderReading)
+        encoderReading = newer.encoderReading;
     id = newer.id;
     time = newer.time;
     source = newer.source;

@@ -58,6 +58,9 @@ struct TelemetrySample {
     double iaA = 0, ibA = 0, icA = 0;
     double busCurrentA = 0;
     bool motorOn = false;
+    /// A 0x90 reply in full: its raw position and offset are no telemetry columns (only
+    /// `encoder` is), but the Encoder view shows them from the polls it adds.
+    std::optional<protocol::EncoderReading> encoderReading;
     bool has(TelemetryField f) const { return fields.testFlag(f); }
     /// Takes the values `newer` carries (a later reply wins) and its id, times and source;
     /// keeps the values of the fields it does not carry. `fields` becomes the union.

@@ -60,6 +60,7 @@ private slots:
     void unplugAndReconnect();
     void trafficCaptureOnlyWhenEnabled();
     void seriesIsVisibleAtOnce();
+    void pollExtrasOutlivePlans();
 };
 
 void tst_BusSession::roundTripAcrossThreads()
@@ -269,6 +270,60 @@ void tst_BusSession::seriesIsVisibleAtOnce()
     QVERIFY(motors.last().at(0).value<KnownMotors>().contains(4));
     session.forgetMotors();
     QCOMPARE(session.series(4), std::nullopt);
+}
+
+void tst_BusSession::pollExtrasOutlivePlans()
+{
+    // A view's extra reads survive every plan (a step test's focus, its end, a rescan's stop)
+    // and go with their handle; without a plan the bus polls them alone; close() drops them.
+    FactoryProbe probe;
+    BusSession session;
+    QSignalSpy telemetry(&session, &BusSession::telemetryReceived);
+    session.open(probe.factory(), 115200, relaxedConfig());
+    QTRY_VERIFY(session.connection().isOpen());
+    QVERIFY(!session.effectivePollPlan());
+    const quint64 a = session.addPollExtras(3, {Command::ReadEncoder, Command::ReadMultiTurn});
+    const quint64 b = session.addPollExtras(3, {Command::ReadMultiTurn, Command::ReadSingleTurn});
+    QVERIFY(a && b && a != b);
+    QVERIFY(!session.pollPlan());
+    std::optional<PollPlan> p = session.effectivePollPlan();
+    QVERIFY(p && p->ids.isEmpty() && p->commands.isEmpty());
+    QCOMPARE(
+        p->extraCommands.value(3),
+        (QVector<Command>{Command::ReadEncoder, Command::ReadMultiTurn, Command::ReadSingleTurn}));
+    // The worker polls them: a 0x90 reply arrives whole in the telemetry.
+    QTRY_VERIFY_WITH_TIMEOUT(
+        [&] {
+            for (const auto &args : telemetry) {
+                for (const TelemetrySample &s : args.at(0).value<TelemetryBatch>()) {
+                    if (s.id == 3 && s.source == Command::ReadEncoder && s.encoderReading)
+                        return true;
+                }
+            }
+            return false;
+        }(),
+        5000);
+
+    const PollPlan dashboard = PollPlan::standard({1, 3});
+    session.startPolling(dashboard.focusedOn(1, {Command::ReadState2}));
+    QVERIFY(session.pollPlan()->extraCommands.isEmpty()); // the plan as given
+    p = session.effectivePollPlan();
+    QCOMPARE(p->focusId, 1);
+    QCOMPARE(p->ids, dashboard.ids);
+    QCOMPARE(p->commands, dashboard.commands);
+    QCOMPARE(p->extraCommands.value(3).size(), 3);
+    session.startPolling(dashboard);
+    session.removePollExtras(a);
+    QVERIFY(!session.hasPollExtras(a) && session.hasPollExtras(b));
+    QCOMPARE(session.effectivePollPlan()->extraCommands.value(3),
+             (QVector<Command>{Command::ReadMultiTurn, Command::ReadSingleTurn}));
+    session.stopPolling();
+    QVERIFY(!session.pollPlan());
+    QCOMPARE(session.effectivePollPlan()->extraCommands.keys(), QList<int>{3});
+    session.close();
+    QVERIFY(!session.hasPollExtras(b));
+    QVERIFY(!session.effectivePollPlan());
+    session.removePollExtras(b); // a dropped handle is ignored
 }
 
 QTEST_GUILESS_MAIN(tst_BusSession)

@@ -45,6 +45,10 @@ private slots:
     void focusTheDriveCannotAnswerLeavesTheBusToOthers();
     void focusBusLimitFollowsItsMix();
     void planWithoutFocusAfterFocus();
+    void extraCommandsForTheirIdOnly();
+    void extraCommandsOfAnIdOutsideThePlan();
+    void focusDriveKeepsToItsFocusCommands();
+    void busLimitCountsExtraCommands();
 };
 
 void tst_PollScheduler::roundRobin()
@@ -277,6 +281,92 @@ void tst_PollScheduler::planWithoutFocusAfterFocus()
     QCOMPARE(pull(s, 3, 1),
              (QVector<QPair<Command, int>>{
                  {Command::ReadState2, 1}, {Command::ReadState2, 2}, {Command::ReadState2, 1}}));
+}
+
+void tst_PollScheduler::extraCommandsForTheirIdOnly()
+{
+    // Drive 1's extras follow its commands in its round, without a second 0x92 and without
+    // the write; drive 2 keeps the plain mix.
+    PollScheduler s;
+    PollPlan p = plan({1, 2}, {Command::ReadState2, Command::ReadMultiTurn});
+    p.extraCommands[1] = {Command::ReadEncoder, Command::ReadMultiTurn, Command::WriteEncoderOffset,
+                          Command::ReadSingleTurn, Command::ReadEncoder};
+    s.setPlan(p, 0);
+    QCOMPARE(s.plan().extraCommands.value(1),
+             (QVector<Command>{Command::ReadEncoder, Command::ReadSingleTurn}));
+    QCOMPARE(s.plan().extraCommands.size(), 1);
+    QCOMPARE(pull(s, 7), (QVector<QPair<Command, int>>{{Command::ReadState2, 1},
+                                                       {Command::ReadMultiTurn, 1},
+                                                       {Command::ReadEncoder, 1},
+                                                       {Command::ReadSingleTurn, 1},
+                                                       {Command::ReadState2, 2},
+                                                       {Command::ReadMultiTurn, 2},
+                                                       {Command::ReadState2, 1}}));
+    // Extras that the commands read already leave nothing to add.
+    p.extraCommands[1] = {Command::ReadMultiTurn};
+    s.setPlan(p, 1);
+    QVERIFY(s.plan().extraCommands.isEmpty());
+    QCOMPARE(pull(s, 5, 1), (QVector<QPair<Command, int>>{{Command::ReadState2, 1},
+                                                          {Command::ReadMultiTurn, 1},
+                                                          {Command::ReadState2, 2},
+                                                          {Command::ReadMultiTurn, 2},
+                                                          {Command::ReadState2, 1}}));
+}
+
+void tst_PollScheduler::extraCommandsOfAnIdOutsideThePlan()
+{
+    // Without a plan of its own (no ids, no commands) a drive's extras are polled alone;
+    // IDs outside 1..32 are dropped.
+    PollScheduler s;
+    PollPlan p = plan({}, {});
+    p.extraCommands[5] = {Command::ReadEncoder, Command::ReadMultiTurn};
+    p.extraCommands[40] = {Command::ReadEncoder};
+    s.setPlan(p, 0);
+    QVERIFY(s.isActive());
+    QCOMPARE(s.plan().extraCommands.keys(), QList<int>{5});
+    QCOMPARE(pull(s, 3), (QVector<QPair<Command, int>>{{Command::ReadEncoder, 5},
+                                                       {Command::ReadMultiTurn, 5},
+                                                       {Command::ReadEncoder, 5}}));
+    // Beside a plan: after the plan's IDs, and the plan's commands are not its.
+    p = plan({1}, {Command::ReadState2});
+    p.extraCommands[5] = {Command::ReadState2, Command::ReadEncoder};
+    s.setPlan(p, 1);
+    QCOMPARE(pull(s, 4, 1), (QVector<QPair<Command, int>>{{Command::ReadState2, 1},
+                                                          {Command::ReadState2, 5},
+                                                          {Command::ReadEncoder, 5},
+                                                          {Command::ReadState2, 1}}));
+}
+
+void tst_PollScheduler::focusDriveKeepsToItsFocusCommands()
+{
+    // A step test's focus is not slowed by the focus drive's extras; another drive's extras
+    // are polled in its own (rate-limited) round.
+    PollScheduler s;
+    PollPlan p = plan({1, 2}, {Command::ReadState2});
+    p.extraCommands[1] = {Command::ReadEncoder};
+    p.extraCommands[2] = {Command::ReadEncoder};
+    s.setPlan(p.focusedOn(2, {Command::ReadMultiTurn}, 1), 0);
+    QCOMPARE(pull(s, 6), (QVector<QPair<Command, int>>{{Command::ReadMultiTurn, 2},
+                                                       {Command::ReadState2, 1},
+                                                       {Command::ReadMultiTurn, 2},
+                                                       {Command::ReadEncoder, 1},
+                                                       {Command::ReadMultiTurn, 2},
+                                                       {Command::ReadState2, 1}}));
+}
+
+void tst_PollScheduler::busLimitCountsExtraCommands()
+{
+    PollScheduler s;
+    PollPlan p = plan({1, 2}, {Command::ReadState2});
+    p.extraCommands[2] = {Command::ReadEncoder};
+    s.setPlan(p, 0);
+    const QVector<Command> round{Command::ReadState2, Command::ReadState2, Command::ReadEncoder};
+    QVERIFY(qAbs(s.busLimitPerSecond(115200) - BusTiming::transactionsPerSecond(round, 115200)) <
+            1e-9);
+    double roundS = 0;
+    for (Command c : round)
+        roundS += BusTiming::transactionTimeS(c, 115200);
+    QVERIFY(qAbs(s.cycleLimitHz(115200) - 1 / roundS) < 1e-9);
 }
 
 QTEST_APPLESS_MAIN(tst_PollScheduler)

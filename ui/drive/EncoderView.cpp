@@ -8,6 +8,7 @@
 #include "GenerationNote.h"
 #include "RequestTracker.h"
 
+#include <bus/BusSession.h>
 #include <motor/ModelNameInfo.h>
 #include <panels/StatusColors.h>
 #include <protocol/Command.h>
@@ -90,14 +91,23 @@ EncoderView::EncoderView(QWidget *parent)
     layout->addLayout(left, 1);
     layout->addLayout(right, 1);
 
-    m_poll.setInterval(kDefaultPollMs);
-    connect(&m_poll, &QTimer::timeout, this, &EncoderView::poll);
     connect(tracker(), &RequestTracker::pendingChanged, this, &EncoderView::refreshEnabled);
     setEncoderResolutions(nullptr);
     contextChanged(Change::Session | Change::Drive);
 }
 
-EncoderView::~EncoderView() = default;
+EncoderView::~EncoderView()
+{
+    withdrawPollExtras();
+}
+
+const QVector<Command> &EncoderView::liveCommands()
+{
+    // 0x92 and 0x94 are in the dashboard's mix: the poll plan reads them once a round.
+    static const QVector<Command> kCommands{Command::ReadEncoder, Command::ReadMultiTurn,
+                                            Command::ReadSingleTurn};
+    return kCommands;
+}
 
 QWidget *EncoderView::buildSetupBox()
 {
@@ -263,11 +273,6 @@ void EncoderView::setGearRatio(double ratio)
     refreshReadouts();
 }
 
-void EncoderView::setPollInterval(int ms)
-{
-    m_poll.setInterval(std::max(20, ms));
-}
-
 QString EncoderView::statusText() const
 {
     return m_status->text();
@@ -292,13 +297,17 @@ void EncoderView::contextChanged(Changes changes)
         m_singleTurnDeg.reset();
         m_angleCheck.reset();
         m_busy = false;
-        m_pollTicket = 0;
         setStatus(QString());
     }
-    if (!tracker()->pendingCount()) {
+    if (!tracker()->pendingCount())
         m_busy = false;
-        m_pollTicket = 0;
+    if (changes & Change::Session) {
+        disconnect(m_telemetry);
+        if (session())
+            m_telemetry = connect(session(), &bus::BusSession::telemetryReceived, this,
+                                  &EncoderView::onTelemetry);
     }
+    syncPollExtras();
     if ((changes & Change::Session) && m_resolutions == m_ownResolutions.get())
         m_ownResolutions->setSession(session());
     if (changes & (Change::Session | Change::Drive | Change::MotorInfo))
@@ -313,32 +322,70 @@ void EncoderView::contextChanged(Changes changes)
 void EncoderView::showEvent(QShowEvent *event)
 {
     DriveView::showEvent(event);
-    m_poll.start();
-    poll();
+    m_shown = true;
+    syncPollExtras();
 }
 
 void EncoderView::hideEvent(QHideEvent *event)
 {
-    m_poll.stop(); // live reads only while someone looks
+    m_shown = false;
+    syncPollExtras(); // live reads only while someone looks
     DriveView::hideEvent(event);
 }
 
-void EncoderView::poll()
+void EncoderView::syncPollExtras()
 {
-    if (!canSend() || (m_pollTicket && tracker()->isPending(m_pollTicket)))
+    if (!m_shown || !canSend()) {
+        withdrawPollExtras();
         return;
-    readEncoder(bus::Priority::Background);
-    m_pollTicket = readMultiTurn(bus::Priority::Background);
-    const int id = driveId();
-    tracker()->send(
-        *build::plain(Command::ReadSingleTurn, id).request,
-        [this](const bus::RequestResult &r) {
-            if (const auto *a = payload<protocol::SingleTurnAngle>(r)) {
-                m_singleTurnDeg = a->degrees();
-                refreshReadouts();
-            }
-        },
-        bus::Priority::Background);
+    }
+    if (m_extrasHandle && m_extrasSession == session() && m_extrasId == driveId() &&
+        session()->hasPollExtras(m_extrasHandle))
+        return;
+    withdrawPollExtras();
+    m_extrasSession = session();
+    m_extrasId = driveId();
+    m_extrasHandle = session()->addPollExtras(m_extrasId, liveCommands());
+}
+
+void EncoderView::withdrawPollExtras()
+{
+    if (m_extrasSession && m_extrasHandle)
+        m_extrasSession->removePollExtras(m_extrasHandle);
+    m_extrasSession.clear();
+    m_extrasHandle = 0;
+    m_extrasId = 0;
+}
+
+void EncoderView::onTelemetry(const bus::TelemetryBatch &batch)
+{
+    if (!m_shown)
+        return; // as the reads: only while someone looks
+    // In arrival order, so the last value of a batch is the drive's latest. A batch that holds
+    // a poll from before a sequence's own read-back holds that read-back's reply after it.
+    bool changed = false;
+    for (const bus::TelemetrySample &s : batch) {
+        if (s.id != driveId() || !hasDrive())
+            continue;
+        if (s.encoderReading) {
+            m_encoder = *s.encoderReading;
+            m_resolutions->observe(driveId(), motor(), s.encoderReading->encoder);
+            changed = true;
+        }
+        if (s.has(bus::TelemetryField::MultiTurn)) {
+            m_multiTurnDeg = s.multiTurnDeg;
+            changed = true;
+        }
+        if (s.has(bus::TelemetryField::SingleTurn)) {
+            m_singleTurnDeg = s.singleTurnDeg;
+            changed = true;
+        }
+    }
+    if (!changed)
+        return;
+    refreshReadouts();
+    if (!m_useRaw->isEnabled() && m_encoder)
+        refreshEnabled(); // "Use current raw" needs a reading
 }
 
 void EncoderView::refreshNow()

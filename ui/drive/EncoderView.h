@@ -4,9 +4,10 @@
 #include "DriveView.h"
 
 #include <bus/RequestResult.h>
+#include <bus/TelemetrySample.h>
 #include <protocol/Values.h>
 
-#include <QtCore/QTimer>
+#include <QtCore/QPointer>
 
 #include <functional>
 #include <memory>
@@ -26,7 +27,8 @@ class EncoderLiveBox;
 class EncoderResolutions;
 
 /// Encoder and zero tools of one drive: encoder, raw encoder, offset and angles read live
-/// while the view is visible; encoder offset write (0x91); clear motor angle (0x95) verified
+/// while the view is visible (extra commands of the session's poll plan, read back from its
+/// telemetry); encoder offset write (0x91); clear motor angle (0x95) verified
 /// with read_multi_turn (firmware that acknowledges and ignores it is named); current
 /// position to ROM as zero (0x19) after a confirmation (power cycle, flash wear); on V2.35
 /// drives clear turn count (0x93) with a read-back of the multi-turn angle. The encoder
@@ -35,7 +37,6 @@ class EncoderResolutions;
 class EncoderView : public DriveView {
     Q_OBJECT
 public:
-    static constexpr int kDefaultPollMs = 100;
     static const QList<int> &resolutions(); ///< 12, 14, 15, 16, 18 bit
 
     explicit EncoderView(QWidget *parent = nullptr);
@@ -52,7 +53,10 @@ public:
     void setGearRatio(double ratio); ///< >= 1; persisted for the drive
     /// Counts per turn on the wire for the chosen resolution (18-bit reports 16 bits).
     int countsPerTurn() const;
-    void setPollInterval(int ms);
+    /// The reads the view adds to the poll plan for its drive while it is shown.
+    static const QVector<protocol::Command> &liveCommands();
+    /// The handle of those reads in the session (0: none added now).
+    quint64 pollExtrasHandle() const { return m_extrasHandle; }
 
     /// One read of encoder and angles now (the live poll does the same while visible).
     void refreshNow();
@@ -89,7 +93,11 @@ private:
     QWidget *buildOffsetBox();
     QWidget *buildZeroBox();
     void loadDriveSettings();
-    void poll();
+    /// Adds the live reads to the poll plan while shown with a drive to talk to, else takes
+    /// them out (from the session they went to).
+    void syncPollExtras();
+    void withdrawPollExtras();
+    void onTelemetry(const bus::TelemetryBatch &batch);
     quint64 readEncoder(bus::Priority priority);
     quint64 readMultiTurn(bus::Priority priority, std::function<void(double)> then = {});
     void readBackOffset(int offset);
@@ -104,7 +112,6 @@ private:
 
     std::unique_ptr<DriveSettingsStore> m_ownStore;
     DriveSettingsStore *m_store;
-    QTimer m_poll;
     std::unique_ptr<EncoderResolutions> m_ownResolutions;
     EncoderResolutions *m_resolutions;
     double m_ratio = 1.0;
@@ -113,7 +120,11 @@ private:
     std::optional<double> m_multiTurnDeg;
     std::optional<double> m_singleTurnDeg;
     std::optional<AngleCheck> m_angleCheck;
-    quint64 m_pollTicket = 0;
+    QPointer<bus::BusSession> m_extrasSession; ///< where m_extrasHandle was added
+    quint64 m_extrasHandle = 0;
+    int m_extrasId = 0;
+    bool m_shown = false;
+    QMetaObject::Connection m_telemetry;
     bool m_busy = false; ///< an offset, clear or zero sequence is running
 
     QLabel *m_title = nullptr;

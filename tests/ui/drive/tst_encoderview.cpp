@@ -3,9 +3,11 @@
 #include <drive/ConfirmDialog.h>
 #include <drive/DriveSettingsStore.h>
 #include <drive/EncoderView.h>
+#include <main/BusController.h>
 #include <main/SettingsFile.h>
 
 #include <QtCore/QTemporaryDir>
+#include <QtCore/QTimer>
 #include <QtTest/QtTest>
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QLabel>
@@ -59,6 +61,9 @@ class tst_EncoderView : public QObject {
     Q_OBJECT
 private slots:
     void readsLiveWhileVisible();
+    void addsPollExtrasWhileShown();
+    void keepsAStepTestsFocus();
+    void readsEachAngleOncePerRound();
     void resolutionAndGearFromName_data();
     void resolutionAndGearFromName();
     void resolutionAndGearPersist();
@@ -96,6 +101,102 @@ void tst_EncoderView::readsLiveWhileVisible()
     QTest::qWait(400); // four poll periods
     QVERIFY(rig.barrier(1));
     QCOMPARE(rig.count(1, Command::ReadEncoder), reads);
+}
+
+namespace {
+/// The extra commands the bus polls now, by drive.
+QMap<int, QVector<Command>> extrasOf(SimRig &rig)
+{
+    const std::optional<lk::bus::PollPlan> plan = rig.session.effectivePollPlan();
+    return plan ? plan->extraCommands : QMap<int, QVector<Command>>{};
+}
+} // namespace
+
+void tst_EncoderView::addsPollExtrasWhileShown()
+{
+    // The live reads are the poll plan's while the view is shown for its drive; no GUI timer.
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    for (const QTimer *t : view->findChildren<QTimer *>())
+        QVERIFY2(!t->isActive(), qPrintable(t->objectName()));
+    using Extras = QMap<int, QVector<Command>>;
+    const Extras drive1{{1, EncoderView::liveCommands()}};
+    QCOMPARE(
+        EncoderView::liveCommands(),
+        (QVector<Command>{Command::ReadEncoder, Command::ReadMultiTurn, Command::ReadSingleTurn}));
+    QCOMPARE(extrasOf(rig), drive1);
+    QVERIFY(view->pollExtrasHandle() != 0);
+    view->hide();
+    QCOMPARE(extrasOf(rig), Extras{});
+    QCOMPARE(view->pollExtrasHandle(), quint64(0));
+    QVERIFY(!rig.session.effectivePollPlan()); // nothing else polled here
+    view->show();
+    QCOMPARE(extrasOf(rig), drive1);
+    view->setDrive(2, rig.motor(2));
+    QCOMPARE(extrasOf(rig), (Extras{{2, EncoderView::liveCommands()}}));
+    view->clearDrive();
+    QCOMPARE(extrasOf(rig), Extras{});
+    view->setDrive(1, rig.motor(1));
+    QCOMPARE(extrasOf(rig), drive1);
+    view->setConnected(false);
+    QCOMPARE(extrasOf(rig), Extras{});
+    view->setConnected(true);
+    QCOMPARE(extrasOf(rig), drive1);
+    view->setSession(nullptr);
+    QCOMPARE(extrasOf(rig), Extras{});
+    view->setSession(&rig.session);
+    QCOMPARE(extrasOf(rig), drive1);
+    view.reset();
+    QCOMPARE(extrasOf(rig), Extras{});
+}
+
+void tst_EncoderView::keepsAStepTestsFocus()
+{
+    // The view adds to the plan through the session; it never replaces the plan, so a
+    // step test's focus stays while the view comes and goes.
+    SimRig rig;
+    QVERIFY(rig.open());
+    const lk::bus::PollPlan focus =
+        lk::ui::BusController::pollPlanFor({1, 2}, 0).focusedOn(2, {Command::ReadState2});
+    rig.session.startPolling(focus);
+    auto view = openView(rig, 1);
+    QCOMPARE(rig.session.pollPlan()->focusId, 2);
+    QCOMPARE(rig.session.effectivePollPlan()->focusId, 2);
+    QCOMPARE(rig.session.effectivePollPlan()->ids, focus.ids);
+    QCOMPARE(extrasOf(rig).value(1), EncoderView::liveCommands());
+    QTRY_VERIFY_WITH_TIMEOUT(view->lastEncoder().has_value(), kWaitMs);
+    view->hide();
+    QCOMPARE(rig.session.effectivePollPlan()->focusId, 2);
+    QVERIFY(rig.session.effectivePollPlan()->extraCommands.isEmpty());
+}
+
+void tst_EncoderView::readsEachAngleOncePerRound()
+{
+    // With the dashboard's plan (0x92 and 0x94 in every round) the view adds 0x90 only: the
+    // angles are not read a second time for it.
+    SimRig rig;
+    QVERIFY(rig.open());
+    rig.session.startPolling(lk::ui::BusController::pollPlanFor({1}, 0));
+    auto view = openView(rig, 1);
+    QTRY_VERIFY_WITH_TIMEOUT(view->lastEncoder().has_value(), kWaitMs);
+    QVERIFY(view->lastMultiTurnDeg().has_value());
+    QVERIFY(rig.barrier(1));
+    const int encoder0 = rig.count(1, Command::ReadEncoder);
+    const int multi0 = rig.count(1, Command::ReadMultiTurn);
+    const int single0 = rig.count(1, Command::ReadSingleTurn);
+    QVERIFY(QTest::qWaitFor([&] { return rig.count(1, Command::ReadEncoder) >= encoder0 + 20; },
+                            kWaitMs));
+    view->hide();
+    rig.session.stopPolling();
+    QVERIFY(rig.barrier(1));
+    const int encoders = rig.count(1, Command::ReadEncoder) - encoder0;
+    const int multis = rig.count(1, Command::ReadMultiTurn) - multi0;
+    const int singles = rig.count(1, Command::ReadSingleTurn) - single0;
+    QVERIFY2(
+        std::abs(multis - encoders) <= 2 && std::abs(singles - encoders) <= 2,
+        qPrintable(
+            QStringLiteral("0x90 %1, 0x92 %2, 0x94 %3").arg(encoders).arg(multis).arg(singles)));
 }
 
 void tst_EncoderView::resolutionAndGearFromName_data()
