@@ -24,6 +24,16 @@ Scanner::Scanner(BusWorker &worker, QObject *parent) : QObject(parent), m_worker
     connect(&m_grace, &QTimer::timeout, this, &Scanner::afterGrace);
 }
 
+double Scanner::estimatedSeconds(int idCount, int baud, const BusConfig &config)
+{
+    const protocol::Command probe = protocol::Command::ReadState1;
+    const double timeout = BusTiming::replyTimeoutS(probe, baud, config.minMarginMs / 1000.0);
+    const double quiet = BusTiming::kTurnaroundS +
+                         BusTiming::wireTimeS(0, BusTiming::maxReplyBytes(probe), baud) +
+                         config.initialMarginMs / 1000.0;
+    return idCount * (timeout + quiet);
+}
+
 std::optional<protocol::Series> Scanner::inferSeries(const protocol::ModelInfo &model)
 {
     if (auto s = motor::ModelNameInfo::parse(model.motorName).series)

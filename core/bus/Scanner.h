@@ -1,5 +1,6 @@
 #pragma once
 
+#include "BusConfig.h"
 #include "RequestResult.h"
 #include "ScanTypes.h"
 
@@ -47,6 +48,11 @@ public:
     bool isRunning() const { return m_running; }
     /// A baud sweep is replacing the transport: its close is not a disconnect.
     bool isReopening() const { return m_reopening; }
+
+    /// How long a scan of `idCount` IDs at `baud` takes before one was measured: every ID
+    /// silent (a sparse bus, the common case), each costing a probe's timeout and the quiet
+    /// after it with the margins of `config` as a new session has them.
+    static double estimatedSeconds(int idCount, int baud, const BusConfig &config);
 
     /// Series from the motor name, else from the driver name; nullopt when neither tells.
     static std::optional<protocol::Series> inferSeries(const protocol::ModelInfo &model);

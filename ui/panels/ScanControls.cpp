@@ -6,6 +6,7 @@
 #include "ThemedIcon.h"
 
 #include <bus/BusTiming.h>
+#include <bus/Scanner.h>
 
 #include <QtGui/QIcon>
 #include <QtWidgets/QCheckBox>
@@ -128,19 +129,10 @@ QVector<int> baudsOf(const bus::ScanOptions &o, int baud)
 
 double ScanControls::estimateSeconds(const bus::ScanOptions &o, int baud)
 {
-    const bus::BusConfig config;
     const int ids = o.lastId - o.firstId + 1;
     double total = 0;
-    for (int b : baudsOf(o, baud)) {
-        const double probe = bus::BusTiming::replyTimeoutS(protocol::Command::ReadState1, b,
-                                                           config.minMarginMs / 1000.0);
-        const double quiet =
-            bus::BusTiming::kTurnaroundS +
-            bus::BusTiming::wireTimeS(
-                0, bus::BusTiming::maxReplyBytes(protocol::Command::ReadState1), b) +
-            config.initialMarginMs / 1000.0;
-        total += ids * (probe + quiet);
-    }
+    for (int b : baudsOf(o, baud))
+        total += bus::Scanner::estimatedSeconds(ids, b, bus::BusConfig{});
     return total;
 }
 
