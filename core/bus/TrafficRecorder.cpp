@@ -6,6 +6,26 @@
 
 namespace lk::bus {
 
+namespace {
+
+/// The frame in bytes the host encoded itself (3E CMD ID LEN HCS [DATA..., DCS]): a slice,
+/// since they are well formed by construction and a parser would cost more than the event.
+protocol::Frame frameOfOwnBytes(const QByteArray &bytes)
+{
+    constexpr qsizetype kHeaderSize = 5;
+    protocol::Frame f;
+    if (bytes.size() < kHeaderSize)
+        return f;
+    f.command = static_cast<quint8>(bytes.at(1));
+    f.id = static_cast<quint8>(bytes.at(2));
+    const auto len = static_cast<quint8>(bytes.at(3));
+    if (len > 0)
+        f.data = bytes.mid(kHeaderSize, len);
+    return f;
+}
+
+} // namespace
+
 void TrafficRecorder::setEnabled(bool enabled)
 {
     m_enabled = enabled;
@@ -41,7 +61,24 @@ void TrafficRecorder::record(TrafficEvent::Kind kind, double time, const QByteAr
     record(std::move(e));
 }
 
-void TrafficRecorder::recordParseEvent(const protocol::ParseEvent &event, double time)
+void TrafficRecorder::recordSent(double time, const QByteArray &bytes,
+                                 const protocol::DecodeContext &context)
+{
+    if (!m_enabled)
+        return;
+    TrafficEvent e;
+    e.kind = TrafficEvent::Kind::Sent;
+    e.time = time;
+    e.bytes = bytes;
+    e.frame = frameOfOwnBytes(bytes);
+    e.id = e.frame.id;
+    e.command = e.frame.command;
+    e.context = context;
+    record(std::move(e));
+}
+
+void TrafficRecorder::recordParseEvent(const protocol::ParseEvent &event, double time,
+                                       const protocol::DecodeContext &context)
 {
     if (!m_enabled)
         return;
@@ -52,6 +89,10 @@ void TrafficRecorder::recordParseEvent(const protocol::ParseEvent &event, double
     e.error = event.error;
     e.id = event.frame.id;
     e.command = event.frame.command;
+    if (event.isFrame) {
+        e.frame = event.frame; // shares the parser's data bytes
+        e.context = context;
+    }
     record(std::move(e));
 }
 
