@@ -35,15 +35,21 @@ void TrafficRecorder::setEnabled(bool enabled)
     }
 }
 
-void TrafficRecorder::record(TrafficEvent event)
+bool TrafficRecorder::admit()
 {
     if (!m_enabled)
-        return;
+        return false;
     if (m_pending.size() >= kMaxPending) {
         ++m_dropped;
-        return;
+        return false;
     }
-    m_pending.append(std::move(event));
+    return true;
+}
+
+void TrafficRecorder::record(TrafficEvent event)
+{
+    if (admit())
+        m_pending.append(std::move(event));
 }
 
 void TrafficRecorder::record(TrafficEvent::Kind kind, double time, const QByteArray &bytes, int id,
@@ -64,7 +70,8 @@ void TrafficRecorder::record(TrafficEvent::Kind kind, double time, const QByteAr
 void TrafficRecorder::recordSent(double time, const QByteArray &bytes,
                                  const protocol::DecodeContext &context)
 {
-    if (!m_enabled)
+    // Checked before the frame is built: a full buffer drops the event at no cost.
+    if (!admit())
         return;
     TrafficEvent e;
     e.kind = TrafficEvent::Kind::Sent;
@@ -74,13 +81,13 @@ void TrafficRecorder::recordSent(double time, const QByteArray &bytes,
     e.id = e.frame.id;
     e.command = e.frame.command;
     e.context = context;
-    record(std::move(e));
+    m_pending.append(std::move(e));
 }
 
 void TrafficRecorder::recordParseEvent(const protocol::ParseEvent &event, double time,
                                        const protocol::DecodeContext &context)
 {
-    if (!m_enabled)
+    if (!admit())
         return;
     TrafficEvent e;
     e.kind = event.isFrame ? TrafficEvent::Kind::Frame : TrafficEvent::Kind::Fault;
@@ -93,7 +100,7 @@ void TrafficRecorder::recordParseEvent(const protocol::ParseEvent &event, double
         e.frame = event.frame; // shares the parser's data bytes
         e.context = context;
     }
-    record(std::move(e));
+    m_pending.append(std::move(e));
 }
 
 TrafficBatch TrafficRecorder::take(double now)

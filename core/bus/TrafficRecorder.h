@@ -27,6 +27,9 @@ public:
     TrafficBatch take(double now);
 
 private:
+    /// Whether an event may be kept now; counts it as dropped when the buffer is full.
+    bool admit();
+
     bool m_enabled = false;
     TrafficBatch m_pending;
     quint64 m_dropped = 0;
