@@ -750,14 +750,22 @@ void BusWorker::flushTraffic()
 
 void BusWorker::recordParseEvent(const protocol::ParseEvent &ev)
 {
-    if (m_traffic.isEnabled())
-        m_traffic.recordParseEvent(ev, now());
+    if (!m_traffic.isEnabled())
+        return;
+    // The context of this moment goes with the frame: a series learnt later must not change
+    // how an earlier row reads.
+    m_traffic.recordParseEvent(
+        ev, now(), ev.isFrame ? m_motors.decodeContext(ev.frame.id) : protocol::DecodeContext{});
 }
 
 void BusWorker::recordTraffic(TrafficEvent::Kind kind, const QByteArray &bytes, int id,
                               quint8 command, const QString &text)
 {
-    if (m_traffic.isEnabled())
+    if (!m_traffic.isEnabled())
+        return;
+    if (kind == TrafficEvent::Kind::Sent)
+        m_traffic.recordSent(now(), bytes, m_motors.decodeContext(id));
+    else
         m_traffic.record(kind, now(), bytes, id, command, text);
 }
 

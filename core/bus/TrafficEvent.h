@@ -1,5 +1,6 @@
 #pragma once
 
+#include <protocol/Series.h>
 #include <protocol/StreamParser.h>
 
 #include <QtCore/QByteArray>
@@ -10,6 +11,9 @@
 namespace lk::bus {
 
 /// One entry of the traffic view: bytes sent, a frame or fault received, or a note.
+/// A Sent or Frame event carries its frame as parsed on the bus thread and the decode context
+/// its ID had at that moment, so the view formats it without parsing again, and a row keeps
+/// its meaning when a drive's series is learnt or changed later.
 struct TrafficEvent {
     enum class Kind {
         Sent,    ///< bytes written to the transport (one request)
@@ -19,12 +23,14 @@ struct TrafficEvent {
         Note,    ///< connection changes, dropped events
     };
     Kind kind = Kind::Note;
-    double time = 0; ///< seconds since the session started
-    QByteArray bytes;
+    double time = 0;  ///< seconds since the session started
+    QByteArray bytes; ///< the wire bytes (hex column, export)
     protocol::ParseError error = protocol::ParseError::Garbage; ///< Fault only
-    int id = 0;         ///< Sent/Frame/Timeout; 0 when unknown
-    quint8 command = 0; ///< Sent/Frame/Timeout
-    QString text;       ///< Note text
+    int id = 0;            ///< Sent/Frame/Timeout; 0 when unknown
+    quint8 command = 0;    ///< Sent/Frame/Timeout
+    QString text;          ///< Note text
+    protocol::Frame frame; ///< Sent/Frame: the frame `bytes` hold, parsed once on the bus thread
+    protocol::DecodeContext context; ///< Sent/Frame: how `id` decoded when the event happened
 };
 
 using TrafficBatch = QVector<TrafficEvent>;

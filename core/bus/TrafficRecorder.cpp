@@ -6,6 +6,26 @@
 
 namespace lk::bus {
 
+namespace {
+
+/// The frame in bytes the host encoded itself (3E CMD ID LEN HCS [DATA..., DCS]): a slice,
+/// since they are well formed by construction and a parser would cost more than the event.
+protocol::Frame frameOfOwnBytes(const QByteArray &bytes)
+{
+    constexpr qsizetype kHeaderSize = 5;
+    protocol::Frame f;
+    if (bytes.size() < kHeaderSize)
+        return f;
+    f.command = static_cast<quint8>(bytes.at(1));
+    f.id = static_cast<quint8>(bytes.at(2));
+    const auto len = static_cast<quint8>(bytes.at(3));
+    if (len > 0)
+        f.data = bytes.mid(kHeaderSize, len);
+    return f;
+}
+
+} // namespace
+
 void TrafficRecorder::setEnabled(bool enabled)
 {
     m_enabled = enabled;
@@ -15,15 +35,21 @@ void TrafficRecorder::setEnabled(bool enabled)
     }
 }
 
-void TrafficRecorder::record(TrafficEvent event)
+bool TrafficRecorder::admit()
 {
     if (!m_enabled)
-        return;
+        return false;
     if (m_pending.size() >= kMaxPending) {
         ++m_dropped;
-        return;
+        return false;
     }
-    m_pending.append(std::move(event));
+    return true;
+}
+
+void TrafficRecorder::record(TrafficEvent event)
+{
+    if (admit())
+        m_pending.append(std::move(event));
 }
 
 void TrafficRecorder::record(TrafficEvent::Kind kind, double time, const QByteArray &bytes, int id,
@@ -41,9 +67,27 @@ void TrafficRecorder::record(TrafficEvent::Kind kind, double time, const QByteAr
     record(std::move(e));
 }
 
-void TrafficRecorder::recordParseEvent(const protocol::ParseEvent &event, double time)
+void TrafficRecorder::recordSent(double time, const QByteArray &bytes,
+                                 const protocol::DecodeContext &context)
 {
-    if (!m_enabled)
+    // Checked before the frame is built: a full buffer drops the event at no cost.
+    if (!admit())
+        return;
+    TrafficEvent e;
+    e.kind = TrafficEvent::Kind::Sent;
+    e.time = time;
+    e.bytes = bytes;
+    e.frame = frameOfOwnBytes(bytes);
+    e.id = e.frame.id;
+    e.command = e.frame.command;
+    e.context = context;
+    m_pending.append(std::move(e));
+}
+
+void TrafficRecorder::recordParseEvent(const protocol::ParseEvent &event, double time,
+                                       const protocol::DecodeContext &context)
+{
+    if (!admit())
         return;
     TrafficEvent e;
     e.kind = event.isFrame ? TrafficEvent::Kind::Frame : TrafficEvent::Kind::Fault;
@@ -52,7 +96,11 @@ void TrafficRecorder::recordParseEvent(const protocol::ParseEvent &event, double
     e.error = event.error;
     e.id = event.frame.id;
     e.command = event.frame.command;
-    record(std::move(e));
+    if (event.isFrame) {
+        e.frame = event.frame; // shares the parser's data bytes
+        e.context = context;
+    }
+    m_pending.append(std::move(e));
 }
 
 TrafficBatch TrafficRecorder::take(double now)

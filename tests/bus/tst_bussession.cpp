@@ -45,6 +45,15 @@ const RequestResult *findTicket(const QSignalSpy &spy, quint64 ticket)
     }
     return nullptr;
 }
+
+/// Every traffic event the spy on `trafficCaptured` has seen, in order.
+QVector<TrafficEvent> capturedTraffic(const QSignalSpy &spy)
+{
+    QVector<TrafficEvent> out;
+    for (const auto &args : spy)
+        out += args.at(0).value<TrafficBatch>();
+    return out;
+}
 } // namespace
 
 /// BusSession: the GUI-thread face over a bus thread, with the scripted FakeTransport.
@@ -59,6 +68,7 @@ private slots:
     void twoSessionsAtOnce();
     void unplugAndReconnect();
     void trafficCaptureOnlyWhenEnabled();
+    void trafficCarriesTheContextOfItsMoment();
     void seriesIsVisibleAtOnce();
     void pollExtrasOutlivePlans();
 };
@@ -244,10 +254,8 @@ void tst_BusSession::trafficCaptureOnlyWhenEnabled()
     QTRY_VERIFY_WITH_TIMEOUT(
         [&] {
             kinds.clear();
-            for (const auto &args : traffic) {
-                for (const TrafficEvent &e : args.at(0).value<TrafficBatch>())
-                    kinds.insert(int(e.kind));
-            }
+            for (const TrafficEvent &e : capturedTraffic(traffic))
+                kinds.insert(int(e.kind));
             return kinds.contains(int(TrafficEvent::Kind::Sent)) &&
                    kinds.contains(int(TrafficEvent::Kind::Frame));
         }(),
@@ -255,6 +263,45 @@ void tst_BusSession::trafficCaptureOnlyWhenEnabled()
     const TrafficEvent first = traffic.at(0).at(0).value<TrafficBatch>().at(0);
     QCOMPARE(first.kind, TrafficEvent::Kind::Sent);
     QCOMPARE(first.bytes, plainRequest(Command::ReadState2, 3).encode());
+}
+
+void tst_BusSession::trafficCarriesTheContextOfItsMoment()
+{
+    // Each request and reply is parsed once on the bus thread and carries how its ID decoded
+    // then: a series set between two exchanges changes the second, not the first.
+    FactoryProbe probe;
+    BusSession session;
+    QSignalSpy traffic(&session, &BusSession::trafficCaptured);
+    QSignalSpy done(&session, &BusSession::requestCompleted);
+    session.open(probe.factory(), 115200, relaxedConfig());
+    session.setTrafficCapture(true);
+    const quint64 first = session.send(plainRequest(Command::ReadState2, 3));
+    QTRY_VERIFY(findTicket(done, first));
+    session.setSeries(3, Series::MS);
+    const quint64 second = session.send(plainRequest(Command::ReadState2, 3));
+    QTRY_VERIFY(findTicket(done, second));
+    QVector<TrafficEvent> events;
+    QTRY_VERIFY_WITH_TIMEOUT(
+        [&] {
+            events.clear();
+            for (const TrafficEvent &e : capturedTraffic(traffic)) {
+                if (e.kind == TrafficEvent::Kind::Sent || e.kind == TrafficEvent::Kind::Frame)
+                    events << e;
+            }
+            return events.size() >= 4;
+        }(),
+        5000);
+    QCOMPARE(events.size(), 4);
+    const TrafficEvent::Kind order[] = {TrafficEvent::Kind::Sent, TrafficEvent::Kind::Frame,
+                                        TrafficEvent::Kind::Sent, TrafficEvent::Kind::Frame};
+    for (int i = 0; i < 4; ++i) {
+        const TrafficEvent &e = events.at(i);
+        QCOMPARE(e.kind, order[i]);
+        QCOMPARE(e.frame.encode(), e.bytes); // the parsed frame is the one on the wire
+        QCOMPARE(int(e.frame.id), 3);
+        QCOMPARE(e.frame.command, quint8(Command::ReadState2));
+        QCOMPARE(e.context.series, i < 2 ? Series::MF : Series::MS);
+    }
 }
 
 void tst_BusSession::seriesIsVisibleAtOnce()

@@ -5,12 +5,9 @@
 #include <protocol/Command.h>
 #include <protocol/FieldJson.h>
 #include <protocol/FieldText.h>
-#include <protocol/StreamParser.h>
 
 #include <QtGui/QBrush>
 #include <QtGui/QColor>
-
-#include <optional>
 
 namespace lk::ui {
 
@@ -18,16 +15,13 @@ namespace {
 
 using Kind = bus::TrafficEvent::Kind;
 
-/// The one frame `bytes` holds (a request as sent, or a received frame), if it is one.
-std::optional<protocol::Frame> frameOf(const QByteArray &bytes)
+/// The fields summary of a Sent or Frame event, from the frame and context it carries.
+QString formatFields(const bus::TrafficEvent &e)
 {
-    std::optional<protocol::Frame> out;
-    protocol::StreamParser parser;
-    parser.feed(bytes, [&](const protocol::ParseEvent &e) {
-        if (e.isFrame && !out)
-            out = e.frame;
-    });
-    return out;
+    const auto dir = e.kind == Kind::Sent
+                         ? protocol::FrameDirection::Request
+                         : e.frame.direction().value_or(protocol::FrameDirection::Reply);
+    return protocol::FieldText::frame(e.frame, dir, e.context);
 }
 
 } // namespace
@@ -102,7 +96,8 @@ void TrafficModel::append(const bus::TrafficBatch &batch)
     m_dropped += static_cast<quint64>(skip);
     const int first = static_cast<int>(m_rows.size());
     beginInsertRows({}, first, first + static_cast<int>(incoming) - 1);
-    m_rows.append(batch.mid(skip));
+    for (qsizetype i = skip; i < batch.size(); ++i)
+        m_rows.append(Row{batch.at(i), {}, false});
     endInsertRows();
 }
 
@@ -115,16 +110,9 @@ void TrafficModel::clear()
     endResetModel();
 }
 
-protocol::DecodeContext TrafficModel::contextFor(int id) const
-{
-    protocol::DecodeContext c;
-    c.series = m_series.value(id, protocol::Series::MF);
-    return c;
-}
-
 QString TrafficModel::directionText(int row) const
 {
-    switch (m_rows.at(row).kind) {
+    switch (m_rows.at(row).event.kind) {
     case Kind::Sent:
         return tr("TX");
     case Kind::Frame:
@@ -141,7 +129,7 @@ QString TrafficModel::directionText(int row) const
 
 QString TrafficModel::commandText(int row) const
 {
-    const auto &e = m_rows.at(row);
+    const auto &e = m_rows.at(row).event;
     if (e.kind == Kind::Fault)
         return QString::fromLatin1(protocol::parseErrorName(e.error));
     if (e.kind == Kind::Note)
@@ -152,10 +140,10 @@ QString TrafficModel::commandText(int row) const
 
 QString TrafficModel::fieldsText(int row) const
 {
-    const auto &e = m_rows.at(row);
-    switch (e.kind) {
+    const Row &r = m_rows.at(row);
+    switch (r.event.kind) {
     case Kind::Note:
-        return e.text;
+        return r.event.text;
     case Kind::Timeout:
         return tr("no reply");
     case Kind::Fault:
@@ -164,18 +152,17 @@ QString TrafficModel::fieldsText(int row) const
     case Kind::Frame:
         break;
     }
-    const auto frame = frameOf(e.bytes);
-    if (!frame)
-        return {};
-    const auto dir = e.kind == Kind::Sent
-                         ? protocol::FrameDirection::Request
-                         : frame->direction().value_or(protocol::FrameDirection::Reply);
-    return protocol::FieldText::frame(*frame, dir, contextFor(frame->id));
+    // The event's frame and context never change, so neither does its text: formatted once.
+    if (!r.fieldsFormatted) {
+        r.fields = formatFields(r.event);
+        r.fieldsFormatted = true;
+    }
+    return r.fields;
 }
 
 QString TrafficModel::exportLine(int row) const
 {
-    const auto &e = m_rows.at(row);
+    const auto &e = m_rows.at(row).event;
     QString details =
         QStringLiteral("%1 %2").arg(QString::number(e.time, 'f', 6), directionText(row));
     if (e.id > 0)
@@ -219,7 +206,7 @@ QVariant TrafficModel::data(const QModelIndex &index, int role) const
     if (!index.isValid() || index.row() >= m_rows.size())
         return {};
     const int row = index.row();
-    const auto &e = m_rows.at(row);
+    const auto &e = m_rows.at(row).event;
     const bool fault = e.kind == Kind::Fault || e.kind == Kind::Timeout;
     switch (role) {
     case Qt::DisplayRole:

@@ -1,11 +1,9 @@
 #pragma once
 
 #include <bus/TrafficEvent.h>
-#include <protocol/Series.h>
 
 #include <QtCore/QAbstractTableModel>
 #include <QtCore/QList>
-#include <QtCore/QMap>
 
 #include <array>
 
@@ -22,8 +20,10 @@ struct TrafficCounts {
 };
 
 /// The decoded bus log: a bounded ring of traffic events (oldest rows drop out past the
-/// capacity) with time, direction, ID, command, a fields summary and the raw hex. Field
-/// summaries are decoded when a row is shown, so appending stays cheap.
+/// capacity) with time, direction, ID, command, a fields summary and the raw hex. A row's
+/// fields summary is formatted from the frame and decode context its event carries (the bus
+/// thread parsed it once), the first time the row is shown, and kept: appending stays cheap,
+/// repainting formats nothing again, and no bytes are parsed here.
 class TrafficModel : public QAbstractTableModel {
     Q_OBJECT
 public:
@@ -47,14 +47,12 @@ public:
     /// Count events without keeping them (while the view is paused).
     void countOnly(const bus::TrafficBatch &batch);
     void clear();
-    const bus::TrafficEvent &event(int row) const { return m_rows.at(row); }
+    const bus::TrafficEvent &event(int row) const { return m_rows.at(row).event; }
     const TrafficCounts &counts() const { return m_counts; }
     quint64 droppedRows() const { return m_dropped; }
 
-    /// How replies from `id` decode (iq or power); unknown IDs decode as MF.
-    void setSeries(const QMap<int, protocol::Series> &series) { m_series = series; }
-
-    /// The decoded summary of a row's fields ("speed 100.00 dps"), empty when none.
+    /// The decoded summary of a row's fields ("speed 100.00 dps"), empty when none; decoded
+    /// with the context of the event's moment, not the drive's series of today.
     QString fieldsText(int row) const;
     QString directionText(int row) const;
     QString commandText(int row) const;
@@ -63,14 +61,18 @@ public:
     QString exportLine(int row) const;
 
 private:
+    /// An event and its fields summary, formatted on first use.
+    struct Row {
+        bus::TrafficEvent event;
+        mutable QString fields;
+        mutable bool fieldsFormatted = false;
+    };
     void count(const bus::TrafficEvent &e);
-    protocol::DecodeContext contextFor(int id) const;
 
-    QList<bus::TrafficEvent> m_rows;
+    QList<Row> m_rows;
     int m_capacity;
     quint64 m_dropped = 0;
     TrafficCounts m_counts;
-    QMap<int, protocol::Series> m_series;
 };
 
 } // namespace lk::ui

@@ -78,14 +78,6 @@ TrafficPanel::TrafficPanel(BusModel *model, QWidget *parent, int capacity)
     m_flush->setInterval(kFlushMs);
     connect(m_flush, &QTimer::timeout, this, &TrafficPanel::flush);
     m_flush->start();
-    connect(m_bus, &BusModel::drivesChanged, this, [this] {
-        QMap<int, protocol::Series> series;
-        for (int id : m_bus->ids()) {
-            if (const auto *d = m_bus->drive(id); d && d->series)
-                series.insert(id, *d->series);
-        }
-        m_model->setSeries(series);
-    });
     connect(m_bus, &BusModel::statisticsChanged, this, &TrafficPanel::updateCounts);
     updateCounts();
 }

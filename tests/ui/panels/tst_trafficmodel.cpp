@@ -21,25 +21,31 @@ namespace protocol = lk::protocol;
 
 namespace {
 
-TrafficEvent sent(double t, const protocol::Request &r)
+/// A request as the bus thread records it: bytes, parsed frame, decode context.
+TrafficEvent sent(double t, const protocol::Request &r, protocol::DecodeContext context = {})
 {
     TrafficEvent e;
     e.kind = TrafficEvent::Kind::Sent;
     e.time = t;
-    e.bytes = r.encode();
+    e.frame = r.toFrame();
+    e.bytes = e.frame.encode();
     e.id = r.id;
     e.command = quint8(r.command);
+    e.context = context;
     return e;
 }
 
-TrafficEvent received(double t, const protocol::Reply &r)
+/// A reply as the bus thread records it, decoded with `context` (its ID's series then).
+TrafficEvent received(double t, const protocol::Reply &r, protocol::DecodeContext context = {})
 {
     TrafficEvent e;
     e.kind = TrafficEvent::Kind::Frame;
     e.time = t;
-    e.bytes = r.encode();
+    e.frame = r.toFrame();
+    e.bytes = e.frame.encode();
     e.id = r.id;
     e.command = quint8(r.command);
+    e.context = context;
     return e;
 }
 
@@ -119,6 +125,8 @@ private slots:
     void pauseKeepsCounting();
     void countsAreTheBusStatistics();
     void exportReadByLkctl();
+    void rowKeepsTheContextOfItsMoment();
+    void fieldsComeFromTheCarriedFrame();
 };
 
 void tst_TrafficModel::columns()
@@ -356,6 +364,43 @@ void tst_TrafficModel::exportReadByLkctl()
     QVERIFY(lines[0].contains("\"command\":\"read_state2\""));
     QVERIFY(lines[2].contains("\"speed_dps\":100"));
     QVERIFY(lines[5].contains("bad_data_checksum"));
+}
+
+void tst_TrafficModel::rowKeepsTheContextOfItsMoment()
+{
+    // ID 5 replied while it was taken for an MF drive (iq), then was learnt to be an MS
+    // (power): the earlier row still reads as it was decoded then, in the view and the export.
+    protocol::DecodeContext mf;
+    mf.series = protocol::Series::MF;
+    protocol::DecodeContext ms;
+    ms.series = protocol::Series::MS;
+    TrafficModel m;
+    m.append({received(0.1, state2Reply(5, 360), mf)});
+    const QString before = m.data(m.index(0, TrafficModel::Fields)).toString();
+    QVERIFY2(before.contains(QStringLiteral("iq")), qPrintable(before));
+    const QString exportBefore = m.exportLine(0);
+    m.append({received(0.2, state2Reply(5, 360), ms)});
+    QCOMPARE(m.data(m.index(0, TrafficModel::Fields)).toString(), before);
+    QCOMPARE(m.exportLine(0), exportBefore);
+    const QString after = m.data(m.index(1, TrafficModel::Fields)).toString();
+    QVERIFY2(after.contains(QStringLiteral("power")), qPrintable(after));
+    QVERIFY(!after.contains(QStringLiteral("iq")));
+}
+
+void tst_TrafficModel::fieldsComeFromTheCarriedFrame()
+{
+    // The model formats the frame the bus thread parsed and never parses `bytes` itself
+    // (TrafficModel includes no parser): bytes that hold no frame still show the carried
+    // frame's fields, while the hex column keeps the bytes as they were.
+    TrafficEvent e = sent(0.1, *protocol::build::speed(2, 100.0).request);
+    e.bytes = QByteArray("\x01\x02\x03", 3);
+    TrafficModel m;
+    m.append({e});
+    const QString fields = m.data(m.index(0, TrafficModel::Fields)).toString();
+    QVERIFY2(fields.contains(QStringLiteral("100")), qPrintable(fields));
+    QCOMPARE(m.data(m.index(0, TrafficModel::Raw)).toString(), QStringLiteral("01 02 03"));
+    QCOMPARE(m.data(m.index(0, TrafficModel::Fields)).toString(), fields); // the cached text
+    QCOMPARE(m.fieldsText(0), fields);
 }
 
 QTEST_MAIN(tst_TrafficModel)
