@@ -99,7 +99,7 @@ void PtyBusServer::schedule(const sim::SimReply &reply, double now, double blind
         m_wireFreeAt = wireEnd;
     }
     m_wire.replyScheduled(wireEnd - replyWire, wireEnd, reply.id,
-                          static_cast<quint8>(reply.command), blindS);
+                          static_cast<quint8>(reply.command), blindS, now);
     // Replies keep their order even when a fault delays one of them.
     double due = wireEnd + m_options.adapterLatencyS;
     if (!m_pending.empty())

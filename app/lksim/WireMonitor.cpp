@@ -18,7 +18,19 @@ QString WireMonitor::Collision::describe() const
                                      .arg(offsetS * 1e3, 0, 'f', 3)
                                      .arg(reply)
                                      .arg(replyS * 1e3, 0, 'f', 3);
-    if (unjudged)
+    if (!unjudged && sinceAskedS >= 0)
+        // What a collision is judged on, for whoever reads the log: how far apart the two
+        // requests came, and how late lksim may have read the first.
+        text += QStringLiteral("; lksim read ID %1's request %2 ms before this one, at most "
+                               "%3 ms late")
+                    .arg(id)
+                    .arg(sinceAskedS * 1e3, 0, 'f', 3)
+                    .arg(blindS * 1e3, 0, 'f', 3);
+    if (sameRead)
+        text += QStringLiteral("; it came in the same read as ID %1's request, so lksim cannot "
+                               "tell how long the kernel held that one")
+                    .arg(id);
+    else if (unjudged)
         text += QStringLiteral("; lksim may have read ID %1's request up to %2 ms late (it was "
                                "busy, waited for a CPU or the kernel held the bytes in the pty), "
                                "so a drive could have finished "
@@ -28,10 +40,11 @@ QString WireMonitor::Collision::describe() const
     return text;
 }
 
-void WireMonitor::replyScheduled(double startS, double endS, int id, quint8 command, double blindS)
+void WireMonitor::replyScheduled(double startS, double endS, int id, quint8 command, double blindS,
+                                 double askedS)
 {
     ++m_counters.replies;
-    m_windows.push_back(Window{startS, endS, id, command, blindS});
+    m_windows.push_back(Window{startS, endS, id, command, blindS, askedS});
 }
 
 std::optional<WireMonitor::Collision> WireMonitor::overlapAt(double nowS)
@@ -50,7 +63,12 @@ std::optional<WireMonitor::Collision> WireMonitor::overlapAt(double nowS)
     c.replyS = hit.endS - hit.startS;
     // Had the request come as early as it may have, the reply would have ended blindS sooner.
     c.blindS = hit.blindS;
-    c.unjudged = nowS >= hit.endS - hit.blindS;
+    c.sinceAskedS = hit.askedS >= 0 ? nowS - hit.askedS : -1;
+    // Read together with the request the reply answers: lksim has no time at all for that
+    // one, only that it came no later than this, which the kernel may have held for as long
+    // as the host waited for the reply.
+    c.sameRead = c.sinceAskedS == 0;
+    c.unjudged = nowS >= hit.endS - hit.blindS || c.sameRead;
     return c;
 }
 

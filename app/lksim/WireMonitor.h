@@ -33,8 +33,9 @@ struct WireCounters {
 /// come late (lksim was busy or waited for a CPU), and the reply is then modelled later than a
 /// drive would send it: a host that moved on after the drive's real reply time would seem to
 /// collide. Each reply therefore carries how late its request may have been read ("blind"
-/// time); a request that overlaps it only within that uncertainty is an unjudged overlap,
-/// logged and counted apart, never a collision.
+/// time); a request that overlaps it only within that uncertainty, or that lksim read together
+/// with the reply's own request, is an unjudged overlap, logged and counted apart, never a
+/// collision.
 class WireMonitor {
 public:
     /// One collision, described for the log.
@@ -47,13 +48,19 @@ public:
         /// The overlap lies within how late lksim may have read the reply's request.
         bool unjudged = false;
         double blindS = 0; ///< that lateness bound
+        /// How long before this request lksim read the one the reply answers (0: in the
+        /// same read); < 0: unknown.
+        double sinceAskedS = -1;
+        bool sameRead = false; ///< lksim read both requests at once: unjudged
         QString describe() const;
     };
 
     /// A reply will occupy the wire from `startS` to `endS` (equal without wire-time
     /// emulation: it leaves at once). `blindS`: its request may have arrived this much
     /// earlier than lksim read it, so a drive could have finished the reply that much sooner.
-    void replyScheduled(double startS, double endS, int id, quint8 command, double blindS = 0);
+    /// `askedS`: when lksim read the request it answers (< 0: unknown), for the log.
+    void replyScheduled(double startS, double endS, int id, quint8 command, double blindS = 0,
+                        double askedS = -1);
     /// What a host byte arriving at `nowS` would collide with: a reply due or on the wire
     /// then (replies already sent are forgotten). Nothing is counted here.
     std::optional<Collision> overlapAt(double nowS);
@@ -70,6 +77,7 @@ private:
         int id = 0;
         quint8 command = 0;
         double blindS = 0;
+        double askedS = -1;
     };
     std::deque<Window> m_windows; ///< in wire order
     double m_lastRequestS = -1;   ///< when the previous request ended; < 0: none yet

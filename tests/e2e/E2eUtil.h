@@ -90,8 +90,9 @@ inline QStringList simArgs(const QString &link, const QStringList &extra = {})
 /// Half duplex: no request may reach lksim while a reply is due or on the wire. Stops `sim`
 /// (its counters are then final) and fails the current test when lksim counted a collision,
 /// quoting lksim's log of them. Every end-to-end test ends with this check. Overlaps lksim
-/// could not judge (it read the asking request late on a loaded machine) are reported, not
-/// failed: the host may have kept to a real drive's timing.
+/// could not judge (it read the asking request late on a loaded machine) are reported, and
+/// failed only when they are more than a loaded machine explains: a host that talked over
+/// the drives would overlap on a good share of its requests, not on a handful.
 inline void verifyNoCollisions(LksimProcess &sim)
 {
     sim.stop();
@@ -107,6 +108,15 @@ inline void verifyNoCollisions(LksimProcess &sim)
     QVERIFY2(c->collisions == 0, qPrintable(QStringLiteral("lksim counted %1 collision(s):\n%2")
                                                 .arg(c->collisions)
                                                 .arg(QString::fromUtf8(lines))));
+    // Seen under heavy load (three builds beside the suite): 4 in 5400 requests.
+    const qint64 unjudgedAllowed = 5 + c->requests / 100;
+    QVERIFY2(c->overlapsUnjudged <= unjudgedAllowed,
+             qPrintable(QStringLiteral("lksim could not judge %1 of %2 requests (at most %3 are "
+                                       "put down to a loaded machine): the host may be talking "
+                                       "over the drives")
+                            .arg(c->overlapsUnjudged)
+                            .arg(c->requests)
+                            .arg(unjudgedAllowed)));
 }
 
 } // namespace lk::e2e

@@ -14,6 +14,7 @@ private slots:
     void requestAfterReplyIsClear();
     void overlapWithinLatenessIsUnjudged();
     void overlapBeyondLatenessStillCollides();
+    void requestReadWithTheAskingOneIsUnjudged();
     void longestRequestGap();
 };
 
@@ -73,10 +74,14 @@ void tst_WireMonitor::overlapBeyondLatenessStillCollides()
 {
     // Read at most 0.1 ms late: the reply ends no sooner than 1.0004, after this request came.
     WireMonitor wire;
-    wire.replyScheduled(1.000, 1.0005, 3, 0x80, 0.0001);
+    wire.replyScheduled(1.000, 1.0005, 3, 0x80, 0.0001, 0.9995);
     const auto c = wire.overlapAt(1.0002);
     QVERIFY(c);
     QVERIFY(!c->unjudged);
+    // The log says what it was judged on: the requests 0.7 ms apart, the first read late by
+    // at most 0.1 ms.
+    QVERIFY2(c->describe().contains(QStringLiteral("0.700 ms before this one, at most 0.100 ms")),
+             qPrintable(c->describe()));
     wire.requestEnded(c, 1.0);
     QCOMPARE(wire.counters().collisions(), 1);
     QCOMPARE(wire.counters().overlapsUnjudged, 0);
@@ -93,6 +98,27 @@ void tst_WireMonitor::longestRequestGap()
     QCOMPARE(wire.counters().requests, 5);
     QVERIFY(qAbs(wire.counters().longestRequestGapS - 0.248) < 1e-9);
     QCOMPARE(wire.counters().requestGapsOver100ms, 2);
+}
+
+void tst_WireMonitor::requestReadWithTheAskingOneIsUnjudged()
+{
+    // Both requests came out of one read at 1.000: the first may have waited in the kernel
+    // for as long as the host waited for its reply.
+    WireMonitor wire;
+    wire.replyScheduled(1.0006, 1.0017, 32, 0x80, 0, 1.000);
+    const auto c = wire.overlapAt(1.000);
+    QVERIFY(c);
+    QVERIFY(c->sameRead);
+    QVERIFY(c->unjudged);
+    wire.requestEnded(c, 1.0);
+    QCOMPARE(wire.counters().collisions(), 0);
+    QCOMPARE(wire.counters().overlapsUnjudged, 1);
+    QVERIFY(c->describe().contains(QStringLiteral("same read as ID 32's request")));
+    // Read a moment apart, the same overlap is judged.
+    WireMonitor apart;
+    apart.replyScheduled(1.0006, 1.0017, 32, 0x80, 0, 1.000);
+    const auto d = apart.overlapAt(1.0001);
+    QVERIFY(d && !d->unjudged && !d->sameRead);
 }
 
 QTEST_GUILESS_MAIN(tst_WireMonitor)
