@@ -13,11 +13,11 @@ SimulatedBus::SimulatedBus(const sim::SimBusSpec &spec) : m_spec(spec) {}
 bus::TransportFactory SimulatedBus::factory(const std::shared_ptr<SimulatedBus> &self)
 {
     return [self](int baud) -> std::unique_ptr<transport::Transport> {
-        auto bus = sim::SimBus::fromSpec(self->m_spec);
-        if (!self->m_faultSpec.isEmpty())
-            bus->faults().configure(self->m_faultSpec);
-        auto t = transport::SimTransport::asTheToolsRunIt(std::move(bus), baud);
-        transport::SimTransport *raw = t.get();
+        transport::SimSettings settings;
+        settings.spec = self->m_spec;
+        settings.faultSpec = self->m_faultSpec;
+        std::unique_ptr<transport::Transport> t = transport::SimTransport::factory(settings)(baud);
+        auto *raw = qobject_cast<transport::SimTransport *>(t.get());
         self->attach(raw);
         // No context object: runs directly on the bus thread while the transport dies.
         QObject::connect(raw, &QObject::destroyed, [self, raw] { self->detach(raw); });
