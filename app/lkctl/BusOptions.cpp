@@ -3,7 +3,6 @@
 #include "ArgParser.h"
 
 #include <bus/BusTiming.h>
-#include <sim/SimBus.h>
 #include <sim/SimBusSpec.h>
 #include <transport/SerialTransport.h>
 #include <transport/SimTransport.h>
@@ -92,14 +91,13 @@ bus::TransportFactory BusOptions::factory() const
         s.portName = port; // the baud is the session's (BusSession::open)
         return transport::SerialTransport::factory(s);
     }
-    const QString spec = simSpec;
-    const QString romDir = simRomDir;
-    return [spec, romDir](int b) -> std::unique_ptr<transport::Transport> {
-        const std::optional<sim::SimBusSpec> parsed = sim::SimBusSpec::parse(spec);
-        if (!parsed)
-            return nullptr;
-        return transport::SimTransport::asTheToolsRunIt(sim::SimBus::fromSpec(*parsed, romDir), b);
-    };
+    const std::optional<sim::SimBusSpec> parsed = sim::SimBusSpec::parse(simSpec);
+    if (!parsed) // from() checked it; a hand-made BusOptions gets a link that does not open
+        return [](int) -> std::unique_ptr<transport::Transport> { return nullptr; };
+    transport::SimSettings s;
+    s.spec = *parsed;
+    s.romDirectory = simRomDir;
+    return transport::SimTransport::factory(s);
 }
 
 QString BusOptions::helpText()

@@ -15,12 +15,12 @@
 #include <panels/MessageBanner.h>
 #include <plot/PlotPanel.h>
 
-#include <main/SimulatedBus.h>
 #include <motor/SeriesLimits.h>
 #include <sim/SimBus.h>
 #include <system/LogFile.h>
 #include <system/SignalWatcher.h>
 #include <transport/SerialTransport.h>
+#include <transport/SimBusHandle.h>
 
 #include <QtCore/QDir>
 #include <QtCore/QFile>

@@ -33,13 +33,17 @@ SimTransport::SimTransport(std::unique_ptr<sim::SimBus> bus, QObject *parent)
 
 SimTransport::~SimTransport() = default;
 
-std::unique_ptr<SimTransport> SimTransport::asTheToolsRunIt(std::unique_ptr<sim::SimBus> bus,
-                                                            int baud)
+std::function<std::unique_ptr<Transport>(int)> SimTransport::factory(SimSettings settings)
 {
-    auto t = std::make_unique<SimTransport>(std::move(bus));
-    t->setBaud(baud);
-    t->setWireTimeEmulation(true);
-    return t;
+    return [settings](int baud) -> std::unique_ptr<Transport> {
+        auto bus = sim::SimBus::fromSpec(settings.spec, settings.romDirectory);
+        if (!settings.faultSpec.isEmpty())
+            bus->faults().configure(settings.faultSpec);
+        auto t = std::make_unique<SimTransport>(std::move(bus));
+        t->setBaud(baud);
+        t->setWireTimeEmulation(true);
+        return t;
+    };
 }
 
 QString SimTransport::description() const

@@ -2,9 +2,13 @@
 
 #include "Transport.h"
 
+#include <sim/SimBusSpec.h>
+
 #include <QtCore/QElapsedTimer>
+#include <QtCore/QString>
 
 #include <deque>
+#include <functional>
 #include <memory>
 
 class QTimer;
@@ -14,6 +18,14 @@ class SimBus;
 }
 
 namespace lk::transport {
+
+/// What a simulated link is made of: a plain value, the counterpart of SerialSettings.
+struct SimSettings {
+    sim::SimBusSpec spec; ///< the drives
+    QString romDirectory; ///< where the drives keep their ROM between links (empty: memory only)
+    QString faultSpec;    ///< faults in every reply (FaultInjector::configure syntax), checked
+                          ///< by the caller; empty: none
+};
 
 /// A Transport over an in-process simulated bus (sim::SimBus), for the embedded default
 /// bus of lkstudio, for tests and for benchmarks.
@@ -30,11 +42,11 @@ public:
 
     explicit SimTransport(std::unique_ptr<sim::SimBus> bus, QObject *parent = nullptr);
     ~SimTransport() override;
-    /// The simulated bus as the tools show it to a user (lkstudio's built-in bus, lkctl
-    /// --sim): at `baud`, with the wire time of that baud, so that both report the same rates
-    /// and timings as each other and as lksim --wire-time.
-    static std::unique_ptr<SimTransport> asTheToolsRunIt(std::unique_ptr<sim::SimBus> bus,
-                                                         int baud);
+    /// A transport factory for BusSession, beside SerialTransport::factory: a fresh simulated
+    /// bus of `settings` per (re)open, at the session's `baud` and with the wire time of that
+    /// baud. lkstudio's built-in bus and lkctl --sim both build their link with it, so that
+    /// they report the same rates and timings as each other and as lksim --wire-time.
+    static std::function<std::unique_ptr<Transport>(int baud)> factory(SimSettings settings);
 
     bool open() override;
     void close() override;

@@ -1,13 +1,12 @@
 #include "BusController.h"
 
-#include "SimulatedBus.h"
-
 #include <panels/BusModel.h>
 #include <panels/Format.h>
 
 #include <bus/BusTiming.h>
 #include <protocol/RequestBuilder.h>
 #include <transport/SerialTransport.h>
+#include <transport/SimBusHandle.h>
 
 #include <QtCore/QFile>
 #include <QtCore/QTimer>
@@ -22,7 +21,7 @@ BusController::BusController(BusModel *model, QObject *parent)
     : QObject(parent), m_model(model), m_session(new bus::BusSession(this)),
       m_reconnectTimer(new QTimer(this))
 {
-    m_simSpec = *sim::SimBusSpec::parse(SimulatedBus::defaultSpecText());
+    m_simSpec = *sim::SimBusSpec::parse(transport::SimBusHandle::defaultSpecText());
     m_reconnectTimer->setInterval(kReconnectMs);
     connect(m_reconnectTimer, &QTimer::timeout, this, &BusController::tryReconnect);
     wireSession();
@@ -77,9 +76,9 @@ void BusController::connectTo(const ConnectionChoice &choice)
     m_choice = choice;
     bus::TransportFactory factory;
     if (choice.isSimulator()) {
-        m_sim = std::make_shared<SimulatedBus>(m_simSpec);
+        m_sim = std::make_shared<transport::SimBusHandle>(m_simSpec);
         m_sim->setFaultSpec(m_simFaults);
-        factory = SimulatedBus::factory(m_sim);
+        factory = transport::SimBusHandle::factory(m_sim);
     } else {
         m_sim.reset();
         transport::SerialSettings s;

@@ -14,10 +14,13 @@
 
 class QTimer;
 
+namespace lk::transport {
+class SimBusHandle;
+}
+
 namespace lk::ui {
 
 class BusModel;
-class SimulatedBus;
 
 /// Runs one bus for the GUI: opens the chosen link (serial port or the built-in simulator),
 /// scans, tells the session each drive's series and polls what it found, reconnects after an
@@ -39,7 +42,7 @@ public:
     /// Faults the built-in simulated bus injects (FaultInjector syntax; empty: none).
     void setSimulatorFaults(const QString &spec) { m_simFaults = spec; }
     /// The simulated bus of the current connection; null when on a serial port.
-    std::shared_ptr<SimulatedBus> simulator() const { return m_sim; }
+    std::shared_ptr<transport::SimBusHandle> simulator() const { return m_sim; }
     /// Scan by itself once each new connection is open (default on).
     void setScanOnConnect(bool on) { m_scanOnConnect = on; }
     double pollRateHz() const { return m_pollRateHz; }
@@ -86,7 +89,7 @@ private:
     ConnectionChoice m_choice;
     sim::SimBusSpec m_simSpec;
     QString m_simFaults;
-    std::shared_ptr<SimulatedBus> m_sim;
+    std::shared_ptr<transport::SimBusHandle> m_sim;
     double m_pollRateHz = 0;
     bool m_scanOnConnect = true;
     bool m_awaitingFirstOpen = false;

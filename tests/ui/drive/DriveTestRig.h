@@ -1,11 +1,10 @@
 #pragma once
 
-#include <main/SimulatedBus.h>
-
 #include <bus/BusSession.h>
 #include <protocol/RequestBuilder.h>
 #include <sim/SimBus.h>
 #include <sim/SimBusSpec.h>
+#include <transport/SimBusHandle.h>
 
 #include <QtTest/QSignalSpy>
 #include <QtTest/QTest>
@@ -20,11 +19,11 @@ namespace lk::drivetest {
 constexpr int kWaitMs = 20000;
 
 /// A BusSession on lkstudio's built-in simulated bus, scanned, with access to the simulated
-/// drives on the bus thread (SimulatedBus::withBus) for checks on the simulator's side.
+/// drives on the bus thread (SimBusHandle::withBus) for checks on the simulator's side.
 class SimRig {
 public:
     explicit SimRig(const QString &spec = QStringLiteral("1:MF,2:MG,3:MS,4:MH"))
-        : sim(std::make_shared<ui::SimulatedBus>(*sim::SimBusSpec::parse(spec)))
+        : sim(std::make_shared<transport::SimBusHandle>(*sim::SimBusSpec::parse(spec)))
     {
     }
     ~SimRig() { session.close(); }
@@ -36,7 +35,7 @@ public:
         config.minMarginMs = 100; // a loaded machine must never turn a late reply into silence
         config.initialMarginMs = 100;
         config.maxMarginMs = 400;
-        session.open(ui::SimulatedBus::factory(sim), 115200, config);
+        session.open(transport::SimBusHandle::factory(sim), 115200, config);
         if (!QTest::qWaitFor([this] { return session.connection().isOpen(); }, kWaitMs))
             return false;
         QSignalSpy finished(&session, &bus::BusSession::scanFinished);
@@ -108,7 +107,7 @@ public:
             kWaitMs);
     }
 
-    std::shared_ptr<ui::SimulatedBus> sim;
+    std::shared_ptr<transport::SimBusHandle> sim;
     bus::BusSession session;
 };
 

@@ -12,7 +12,6 @@
 #include <main/EmergencyStopControl.h>
 #include <main/LinkLossWatch.h>
 #include <main/MainWindow.h>
-#include <main/SimulatedBus.h>
 #include <panels/BusModel.h>
 #include <panels/BusPanel.h>
 #include <panels/ConnectionBar.h>
@@ -34,6 +33,7 @@
 #include <protocol/StreamParser.h>
 #include <sim/SimBus.h>
 #include <sim/SimDrive.h>
+#include <transport/SimBusHandle.h>
 
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
@@ -92,7 +92,7 @@ private slots:
 
 private:
     lk::ui::BusModel *model() const { return m_window->busModel(); }
-    std::shared_ptr<lk::ui::SimulatedBus> sim() const
+    std::shared_ptr<lk::transport::SimBusHandle> sim() const
     {
         return m_window->controller()->simulator();
     }
