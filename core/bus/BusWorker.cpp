@@ -384,30 +384,20 @@ void BusWorker::onTimeout()
 
 void BusWorker::beginQuiet(const protocol::Request &request, bool probe)
 {
-    m_quietLengthNs = static_cast<qint64>(m_timeout.quietS(request.command, baud()) * 1e9);
-    if (probe) {
-        // Silence is the common answer to a probe (scan, emergency stop), so it is not made
-        // to wait twice: only until a reply from a drive that keeps its turnaround could have
-        // come through this link, counted from the send. Often that is over already.
-        m_quietUntilNs =
-            m_sentNs + static_cast<qint64>(m_timeout.replyDeadlineS(request.command, baud()) * 1e9);
-    } else {
-        m_quietUntilNs = m_clock.nsecsElapsed() + m_quietLengthNs;
-    }
-    m_quietId = request.id;
-    m_quietCommand = static_cast<quint8>(request.command);
-}
-
-void BusWorker::extendQuiet(qint64 nowNs)
-{
-    if (m_inflight || nowNs >= m_quietUntilNs)
-        return;
-    m_quietUntilNs = std::max(m_quietUntilNs, nowNs + m_quietLengthNs);
+    const qint64 lengthNs = static_cast<qint64>(m_timeout.quietS(request.command, baud()) * 1e9);
+    // Silence is the common answer to a probe (scan, emergency stop), so it is not made to
+    // wait twice: only until a reply from a drive that keeps its turnaround could have come
+    // through this link, counted from the send. Often that is over already.
+    const qint64 untilNs =
+        probe ? m_sentNs +
+                    static_cast<qint64>(m_timeout.replyDeadlineS(request.command, baud()) * 1e9)
+              : m_clock.nsecsElapsed() + lengthNs;
+    m_quiet.begin(untilNs, lengthNs, request.id, static_cast<quint8>(request.command));
 }
 
 bool BusWorker::holdForQuiet()
 {
-    const qint64 leftNs = m_quietUntilNs - m_clock.nsecsElapsed();
+    const qint64 leftNs = m_quiet.leftNs(m_clock.nsecsElapsed());
     if (leftNs <= 0)
         return false;
     if (!m_quietTimer.isActive() || m_quietTimer.remainingTime() * 1'000'000 < leftNs)
@@ -481,14 +471,14 @@ void BusWorker::failAll(RequestStatus status, const QString &reason)
 
 void BusWorker::onBytes(const QByteArray &bytes)
 {
-    extendQuiet(m_clock.nsecsElapsed());
-    m_quietAnswered = false;
+    if (!m_inflight) // with a request in flight these are its reply, not an old one's tail
+        m_quiet.bytesArrived(m_clock.nsecsElapsed());
+    m_quiet.chunkStarted();
     m_inBytes = true;
     m_parser.feed(bytes, [this](const protocol::ParseEvent &ev) { onParseEvent(ev); });
     m_inBytes = false;
-    if (m_quietAnswered && m_parser.pendingBytes() == 0 && isQuiet()) {
+    if (m_quiet.endIfAnswered(m_parser.pendingBytes() == 0, m_clock.nsecsElapsed())) {
         // The late reply is all here and nothing follows it: the wire is free again.
-        m_quietUntilNs = 0;
         m_quietTimer.stop();
         m_pumpWanted = true;
     }
@@ -531,7 +521,7 @@ void BusWorker::onParseEvent(const protocol::ParseEvent &ev)
         m_stats.lateReply(f.id);
         m_timeout.addLateReply(static_cast<Command>(f.command), baud(), out.lateLatencyS);
         m_lateRequestSentS = std::max(m_lateRequestSentS, now() - out.lateLatencyS);
-        m_quietAnswered = m_quietAnswered || (f.id == m_quietId && f.command == m_quietCommand);
+        m_quiet.lateFrameParsed(f.id, f.command);
         return;
     case V::Unexpected:
         m_stats.unexpectedFrame(f.id);

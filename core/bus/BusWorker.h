@@ -10,6 +10,7 @@
 #include "PollPlan.h"
 #include "PollScheduler.h"
 #include "Priority.h"
+#include "QuietPeriod.h"
 #include "RecentLatency.h"
 #include "ReplyMatcher.h"
 #include "RequestQueue.h"
@@ -108,7 +109,7 @@ public:
     int queuedCount() const;
     bool isBusy() const { return m_inflight.has_value(); }
     /// Whether transmissions are held back now: the quiet period after a timeout.
-    bool isQuiet() const { return m_quietUntilNs > m_clock.nsecsElapsed(); }
+    bool isQuiet() const { return m_quiet.isQuiet(m_clock.nsecsElapsed()); }
     double currentMarginMs() const { return m_timeout.marginS() * 1e3; }
     /// The shortest sensible reply timeout: wire time + turnaround + BusConfig::minMarginMs,
     /// for probes where silence is the common answer (scan pass 1, emergency stop).
@@ -161,7 +162,6 @@ private:
     /// `probe`: it had the short first timeout of a probe (BusRequest::firstTimeoutS).
     void beginQuiet(const protocol::Request &request, bool probe);
     /// Bytes arrived at `nowNs`: during the quiet period they are a reply on its way.
-    void extendQuiet(qint64 nowNs);
     /// True while the quiet period lasts (then the quiet timer will pump again).
     bool holdForQuiet();
     void failAttempt(RequestStatus status, const QString &reason);
@@ -194,11 +194,7 @@ private:
     RequestQueue m_queue;
     std::optional<Pending> m_inflight;
     qint64 m_sentNs = 0;
-    qint64 m_quietUntilNs = 0;  ///< no transmission before this (worker clock)
-    qint64 m_quietLengthNs = 0; ///< a quiet period's length; bytes meanwhile restart it
-    int m_quietId = -1;         ///< the timed-out request whose late reply ends it early
-    quint8 m_quietCommand = 0;
-    bool m_quietAnswered = false; ///< that late reply was parsed in the current chunk
+    QuietPeriod m_quiet; ///< on the worker clock
     ReplyMatcher m_matcher;
     static constexpr int kMaxDirectPumps = 64;
     bool m_pumpPosted = false;
