@@ -5,6 +5,7 @@
 #include "PlotPanelTestUtil.h"
 
 #include <plot/PlotPanel.h>
+#include <plot/SeriesColors.h>
 #include <plot/StripChart.h>
 #include <plot/TelemetryStore.h>
 
@@ -224,6 +225,15 @@ void tst_PlotExport::exportPngWritesImage()
         }
     }
     QVERIFY(varied);
+    // The lines themselves are in the picture, in their trace's colour (they are drawn by the
+    // chart's own item, not by QtCharts' series).
+    const QRgb trace = lk::ui::SeriesColors::at(0).rgb();
+    int tracePixels = 0;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x)
+            tracePixels += (image.pixel(x, y) & 0xffffff) == (trace & 0xffffff) ? 1 : 0;
+    }
+    QVERIFY2(tracePixels > 100, qPrintable(QString::number(tracePixels)));
 }
 
 void tst_PlotExport::diskFullKeepsTheEarlierPng()
