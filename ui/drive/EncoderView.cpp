@@ -96,10 +96,7 @@ EncoderView::EncoderView(QWidget *parent)
     contextChanged(Change::Session | Change::Drive);
 }
 
-EncoderView::~EncoderView()
-{
-    withdrawPollExtras();
-}
+EncoderView::~EncoderView() = default; // m_extras gives the live reads back
 
 const QVector<Command> &EncoderView::liveCommands()
 {
@@ -335,26 +332,10 @@ void EncoderView::hideEvent(QHideEvent *event)
 
 void EncoderView::syncPollExtras()
 {
-    if (!m_shown || !canSend()) {
-        withdrawPollExtras();
-        return;
-    }
-    if (m_extrasHandle && m_extrasSession == session() && m_extrasId == driveId() &&
-        session()->hasPollExtras(m_extrasHandle))
-        return;
-    withdrawPollExtras();
-    m_extrasSession = session();
-    m_extrasId = driveId();
-    m_extrasHandle = session()->addPollExtras(m_extrasId, liveCommands());
-}
-
-void EncoderView::withdrawPollExtras()
-{
-    if (m_extrasSession && m_extrasHandle)
-        m_extrasSession->removePollExtras(m_extrasHandle);
-    m_extrasSession.clear();
-    m_extrasHandle = 0;
-    m_extrasId = 0;
+    if (m_shown && canSend())
+        m_extras.hold(session(), driveId(), liveCommands());
+    else
+        m_extras.release();
 }
 
 void EncoderView::onTelemetry(const bus::TelemetryBatch &batch)

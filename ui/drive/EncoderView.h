@@ -3,11 +3,10 @@
 #include "AngleCheck.h"
 #include "DriveView.h"
 
+#include <bus/PollExtrasLease.h>
 #include <bus/RequestResult.h>
 #include <bus/TelemetrySample.h>
 #include <protocol/Values.h>
-
-#include <QtCore/QPointer>
 
 #include <functional>
 #include <memory>
@@ -56,7 +55,7 @@ public:
     /// The reads the view adds to the poll plan for its drive while it is shown.
     static const QVector<protocol::Command> &liveCommands();
     /// The handle of those reads in the session (0: none added now).
-    quint64 pollExtrasHandle() const { return m_extrasHandle; }
+    quint64 pollExtrasHandle() const { return m_extras.handle(); }
 
     /// One read of encoder and angles now (the live poll does the same while visible).
     void refreshNow();
@@ -96,7 +95,6 @@ private:
     /// Adds the live reads to the poll plan while shown with a drive to talk to, else takes
     /// them out (from the session they went to).
     void syncPollExtras();
-    void withdrawPollExtras();
     void onTelemetry(const bus::TelemetryBatch &batch);
     quint64 readEncoder(bus::Priority priority);
     quint64 readMultiTurn(bus::Priority priority, std::function<void(double)> then = {});
@@ -120,9 +118,7 @@ private:
     std::optional<double> m_multiTurnDeg;
     std::optional<double> m_singleTurnDeg;
     std::optional<AngleCheck> m_angleCheck;
-    QPointer<bus::BusSession> m_extrasSession; ///< where m_extrasHandle was added
-    quint64 m_extrasHandle = 0;
-    int m_extrasId = 0;
+    bus::PollExtrasLease m_extras; ///< the live reads, while shown for its drive
     bool m_shown = false;
     QMetaObject::Connection m_telemetry;
     bool m_busy = false; ///< an offset, clear or zero sequence is running
