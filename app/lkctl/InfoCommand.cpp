@@ -81,12 +81,13 @@ void InfoCommand::print(Console &console, int id, const LiveBus::Identity &who,
                         .arg(who.model.generation == protocol::Generation::V2_3
                                  ? QStringLiteral("V2.3")
                                  : QStringLiteral("V2.35")));
-    QJsonObject all = modelFields;
+    // The model first (it names the drive), then what it reports, one aligned block.
+    QJsonObject reported;
     for (const auto &[key, fields] : parts) {
         for (auto it = fields.begin(); it != fields.end(); ++it)
-            all.insert(it.key(), it.value());
+            reported.insert(it.key(), it.value());
     }
-    for (const QString &line : ReplyText::lines(all, QStringLiteral("  ")))
+    for (const QString &line : ReplyText::lines({modelFields, reported}, QStringLiteral("  ")))
         console.outLine(line);
 }
 

@@ -1,6 +1,7 @@
 #include "ReplyText.h"
 
 #include <protocol/ErrorFlags.h>
+#include <protocol/ProtocolFields.h>
 
 #include <QtCore/QList>
 
@@ -10,63 +11,27 @@ namespace lk::lkctl {
 
 namespace {
 
-struct FieldLabel {
-    const char *key;
-    const char *label;
-    const char *unit;
-    int decimals; ///< places for reals; -1 for text, integers and flags
-    bool trim;    ///< drop trailing zeros (speeds, currents); keep them for voltage, angles
-};
+using protocol::ProtocolField;
 
-// CLI.md field order.
-const QList<FieldLabel> &labels()
+/// The rows lkctl's text mode shows, in CLI.md order: the labelled rows of the field table.
+const QList<const ProtocolField *> &shownFields()
 {
-    static const QList<FieldLabel> kLabels{
-        {"driver_name", "driver", "", -1, true},
-        {"motor_name", "motor", "", -1, true},
-        {"hardware_version", "hardware version", "", 1, true},
-        {"firmware_version", "firmware version", "", 2, true},
-        {"motor_id", "motor ID", "", -1, true}, // V2.35: the 12-byte unique ID, hex
-        {"temperature_c", "temperature", "C", -1, true},
-        {"voltage_v", "voltage", "V", 1, false}, // 2 places for V2.35's 0.01 V (valueText)
-        {"bus_current_a", "bus current", "A", 2, false},
-        {"motor_on", "motor on", "", -1, true},
-        {"error_state", "errors", "", -1, true},
-        {"iq_a", "torque current", "A", 3, true},
-        {"power", "power", "(of 1000)", -1, true},
-        {"speed_dps", "speed", "dps", 2, true},
-        {"ia_a", "phase A current", "A", 3, true},
-        {"ib_a", "phase B current", "A", 3, true},
-        {"ic_a", "phase C current", "A", 3, true},
-        {"encoder", "encoder", "counts", -1, true},
-        {"encoder_raw", "encoder raw", "counts", -1, true},
-        {"encoder_offset", "encoder offset", "counts", -1, true},
-        {"direction", "direction", "", -1, true},
-        {"angle_deg", "angle", "deg", 2, false},
-        {"max_speed_dps", "max speed", "dps", 2, false},
-        {"angle_kp", "angle Kp", "", -1, true},
-        {"angle_ki", "angle Ki", "", -1, true},
-        {"speed_kp", "speed Kp", "", -1, true},
-        {"speed_ki", "speed Ki", "", -1, true},
-        {"angle_kd", "angle Kd", "", -1, true},
-        {"speed_kd", "speed Kd", "", -1, true},
-        {"iq_kp", "iq Kp", "", -1, true},
-        {"iq_ki", "iq Ki", "", -1, true},
-        {"iq_kd", "iq Kd", "", -1, true},
-        {"accel_dps2", "acceleration", "dps/s", -1, true},
-        {"max_torque", "max torque current", "(of 2048)", -1, true},
-        {"max_angle_deg", "max angle", "deg", 2, false},
-        {"current_ramp", "current ramp", "", -1, true},
-        {"speed_ramp_dps2", "speed ramp", "dps/s", -1, true},
-    };
-    return kLabels;
+    static const QList<const ProtocolField *> kShown = [] {
+        QList<const ProtocolField *> rows;
+        for (const ProtocolField &f : protocol::ProtocolFields::all()) {
+            if (f.label)
+                rows.append(&f);
+        }
+        return rows;
+    }();
+    return kShown;
 }
 
-QString valueText(const FieldLabel &l, const QJsonValue &v, const QJsonObject &fields)
+QString valueText(const ProtocolField &l, const QJsonValue &v, const QJsonObject &fields)
 {
-    if (QLatin1String(l.key) == QLatin1String("error_state"))
+    if (QLatin1String(l.name) == QLatin1String("error_state"))
         return ReplyText::errorText(v.toInt(), fields);
-    if (QLatin1String(l.key) == QLatin1String("voltage_v") &&
+    if (QLatin1String(l.name) == QLatin1String("voltage_v") &&
         fields.contains(QStringLiteral("bus_current_a")))
         return QString::number(v.toDouble(), 'f', 2) + QStringLiteral(" V");
     if (v.isString())
@@ -74,12 +39,12 @@ QString valueText(const FieldLabel &l, const QJsonValue &v, const QJsonObject &f
     if (v.isBool())
         return v.toBool() ? QStringLiteral("yes") : QStringLiteral("no");
     QString n = QString::number(v.toInteger());
-    if (l.decimals >= 0)
-        n = l.trim ? ReplyText::number(v.toDouble(), l.decimals)
-                   : QString::number(v.toDouble(), 'f', l.decimals);
-    if (QByteArray(l.key).endsWith("_version") && !n.contains(QLatin1Char('.')))
+    if (l.places >= 0)
+        n = l.trim ? ReplyText::number(v.toDouble(), l.places)
+                   : QString::number(v.toDouble(), 'f', l.places);
+    if (QByteArray(l.name).endsWith("_version") && !n.contains(QLatin1Char('.')))
         n += QStringLiteral(".0"); // "1.0", as the vendor's tools show versions
-    return *l.unit ? n + QLatin1Char(' ') + QLatin1String(l.unit) : n;
+    return *l.textUnit ? n + QLatin1Char(' ') + QString::fromUtf8(l.textUnit) : n;
 }
 
 } // namespace
@@ -116,18 +81,27 @@ QString ReplyText::errorText(int errorState, const QJsonObject &fields)
 
 QStringList ReplyText::lines(const QJsonObject &fields, const QString &indent)
 {
+    return lines(QList<QJsonObject>{fields}, indent);
+}
+
+QStringList ReplyText::lines(const QList<QJsonObject> &groups, const QString &indent)
+{
     qsizetype width = 0;
-    for (const FieldLabel &l : labels()) {
-        if (fields.contains(QLatin1String(l.key)))
-            width = std::max(width, qsizetype(qstrlen(l.label)));
+    for (const QJsonObject &fields : groups) {
+        for (const ProtocolField *f : shownFields()) {
+            if (fields.contains(QLatin1String(f->name)))
+                width = std::max(width, qsizetype(qstrlen(f->label)));
+        }
     }
     QStringList out;
-    for (const FieldLabel &l : labels()) {
-        const QJsonValue v = fields.value(QLatin1String(l.key));
-        if (v.isUndefined())
-            continue;
-        out << indent + QString::fromLatin1(l.label).leftJustified(width + 2) +
-                   valueText(l, v, fields);
+    for (const QJsonObject &fields : groups) {
+        for (const ProtocolField *f : shownFields()) {
+            const QJsonValue v = fields.value(QLatin1String(f->name));
+            if (v.isUndefined())
+                continue;
+            out << indent + QString::fromLatin1(f->label).leftJustified(width + 2) +
+                       valueText(*f, v, fields);
+        }
     }
     return out;
 }

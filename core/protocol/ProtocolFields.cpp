@@ -64,7 +64,9 @@ const QList<ProtocolField> &table()
     static const QList<ProtocolField> kFields{
         // The frame keys; "direction" doubles as single_position's spin direction, "id" as the
         // drive ID every request takes.
-        {"direction", FieldId::Direction, false, "", 1, 1, K::Direction, 0, 1, "cw|ccw"},
+        ProtocolField{"direction", FieldId::Direction, false, "", 1, 1, K::Direction, 0, 1,
+                      "cw|ccw"}
+            .shown("direction"),
         out("command"),
         out("code"),
         integer(FieldId::Id, "id", kMinId, kMaxId, "1..32"),
@@ -72,14 +74,14 @@ const QList<ProtocolField> &table()
         out("error"),
         out("bytes"),
         // read_state1 (V2.35.md section 5).
-        out("temperature_c", "C"),
-        real("voltage_v", "V"),
+        out("temperature_c", "C").shown("temperature", "C"),
+        real("voltage_v", "V").shown("voltage", "V", 1, false),
         out("voltage_raw"),
-        real("bus_current_a", "A"),
+        real("bus_current_a", "A").shown("bus current", "A", 2, false),
         out("bus_current_raw"),
-        out("motor_on"),
+        out("motor_on").shown("motor on"),
         out("motor_state_raw"),
-        out("error_state"),
+        out("error_state").shown("errors"),
         out("low_voltage"),
         out("over_voltage"),
         out("driver_over_temperature"),
@@ -91,28 +93,32 @@ const QList<ProtocolField> &table()
         out("input_timeout"),
         // Torque and speed: V2.3 32 A per 2000 LSB; V2.35 allows +-2048 at its own scale, the
         // stricter +-2000 serves both (ERRATA).
-        number(FieldId::TorqueIqA, "iq_a", true, "A", 32, 2000, -2000, 2000, "-32..32 A"),
+        number(FieldId::TorqueIqA, "iq_a", true, "A", 32, 2000, -2000, 2000, "-32..32 A")
+            .shown("torque current", "A", 3),
         out("iq_raw"),
         // V2.3 allows +-1000, V2.35 +-850: the stricter bound serves both (V2.35.md section 11).
-        integer(FieldId::Power, "power", -850, 850, "-850..850"),
+        integer(FieldId::Power, "power", -850, 850, "-850..850").shown("power", "(of 1000)"),
         number(FieldId::SpeedDps, "speed_dps", true, "dps", 1, 100, kInt32Min, kInt32Max,
-               "-21474836.48..21474836.47 dps"),
+               "-21474836.48..21474836.47 dps")
+            .shown("speed", "dps", 2),
         out("speed_raw"),
-        real("ia_a", "A"),
+        real("ia_a", "A").shown("phase A current", "A", 3),
         out("ia_raw"),
-        real("ib_a", "A"),
+        real("ib_a", "A").shown("phase B current", "A", 3),
         out("ib_raw"),
-        real("ic_a", "A"),
+        real("ic_a", "A").shown("phase C current", "A", 3),
         out("ic_raw"),
-        out("encoder"),
-        out("encoder_raw"),
-        integer(FieldId::EncoderOffset, "encoder_offset", 0, 65535, "0..65535"),
+        out("encoder").shown("encoder", "counts"),
+        out("encoder_raw").shown("encoder raw", "counts"),
+        integer(FieldId::EncoderOffset, "encoder_offset", 0, 65535, "0..65535")
+            .shown("encoder offset", "counts"),
         {"action", FieldId::Action, false, "", 1, 1, K::Choice, 0, 0, "engage|release|read"},
         // The words are ParamTable's names (see spec()).
         {"param", FieldId::Param, false, "", 1, 1, K::Choice, 0, 0, ""},
         out("param_id"),
         number(FieldId::MultiAngleDeg, "angle_deg", true, "deg", 1, 100, -kMultiTurnLimitRaw,
-               kMultiTurnLimitRaw, "-9e16..9e16 deg"),
+               kMultiTurnLimitRaw, "-9e16..9e16 deg")
+            .shown("angle", "deg", 2, false),
         number(FieldId::SingleAngleDeg, "angle_deg", true, "deg", 1, 100, 0, 35999,
                "0..359.99 deg"),
         number(FieldId::IncrementAngleDeg, "angle_deg", true, "deg", 1, 100, kInt32Min, kInt32Max,
@@ -120,48 +126,54 @@ const QList<ProtocolField> &table()
         out("angle_raw"),
         // uint32 of 0.01 dps in the limited position commands, int32 as a V2.35 parameter.
         number(FieldId::MaxSpeedDps, "max_speed_dps", true, "dps", 1, 100, 0, kUInt32Max,
-               "0..42949672.95 dps"),
+               "0..42949672.95 dps")
+            .shown("max speed", "dps", 2, false),
         number(FieldId::ParamMaxSpeedDps, "max_speed_dps", true, "dps", 1, 100, 0, kInt32Max,
                "0..21474836.47 dps"),
         out("max_speed_raw"),
-        pidGain(FieldId::AngleKp, "angle_kp"),
+        pidGain(FieldId::AngleKp, "angle_kp").shown("angle Kp"),
         paramGain(FieldId::AngleKpParam, "angle_kp"),
-        pidGain(FieldId::AngleKi, "angle_ki"),
+        pidGain(FieldId::AngleKi, "angle_ki").shown("angle Ki"),
         paramGain(FieldId::AngleKiParam, "angle_ki"),
-        paramGain(FieldId::AngleKdParam, "angle_kd"),
-        pidGain(FieldId::SpeedKp, "speed_kp"),
+        paramGain(FieldId::AngleKdParam, "angle_kd").shown("angle Kd"),
+        pidGain(FieldId::SpeedKp, "speed_kp").shown("speed Kp"),
         paramGain(FieldId::SpeedKpParam, "speed_kp"),
-        pidGain(FieldId::SpeedKi, "speed_ki"),
+        pidGain(FieldId::SpeedKi, "speed_ki").shown("speed Ki"),
         paramGain(FieldId::SpeedKiParam, "speed_ki"),
-        paramGain(FieldId::SpeedKdParam, "speed_kd"),
-        pidGain(FieldId::IqKp, "iq_kp"),
+        paramGain(FieldId::SpeedKdParam, "speed_kd").shown("speed Kd"),
+        pidGain(FieldId::IqKp, "iq_kp").shown("iq Kp"),
         paramGain(FieldId::IqKpParam, "iq_kp"),
-        pidGain(FieldId::IqKi, "iq_ki"),
+        pidGain(FieldId::IqKi, "iq_ki").shown("iq Ki"),
         paramGain(FieldId::IqKiParam, "iq_ki"),
-        paramGain(FieldId::IqKdParam, "iq_kd"),
+        paramGain(FieldId::IqKdParam, "iq_kd").shown("iq Kd"),
         // int32 on the wire (ERRATA); a negative acceleration has no meaning.
-        integer(FieldId::AccelDps2, "accel_dps2", 0, kInt32Max, "0..2147483647 dps/s", "dps/s"),
+        integer(FieldId::AccelDps2, "accel_dps2", 0, kInt32Max, "0..2147483647 dps/s", "dps/s")
+            .shown("acceleration", "dps/s"),
         // V2.35 parameters (V2.35.md section 6); max_torque is in iq command units.
-        number(FieldId::MaxTorque, "max_torque", false, "", 1, 1, 0, 2048, "0..2048"),
+        number(FieldId::MaxTorque, "max_torque", false, "", 1, 1, 0, 2048, "0..2048")
+            .shown("max torque current", "(of 2048)"),
         number(FieldId::MaxAngleDeg, "max_angle_deg", true, "deg", 1, 100, 0, kMultiTurnLimitRaw,
-               "0..9e16 deg"),
+               "0..9e16 deg")
+            .shown("max angle", "deg", 2, false),
         out("max_angle_raw"),
         out("max_angle_half_raw"),
-        number(FieldId::CurrentRamp, "current_ramp", false, "", 1, 1, 0, 32767, "0..32767"),
+        number(FieldId::CurrentRamp, "current_ramp", false, "", 1, 1, 0, 32767, "0..32767")
+            .shown("current ramp"),
         number(FieldId::SpeedRampDps2, "speed_ramp_dps2", false, "dps/s", 1, 1, 0, kInt32Max,
-               "0..2147483647 dps/s"),
+               "0..2147483647 dps/s")
+            .shown("speed ramp", "dps/s"),
         out("value_bytes"),
         out("success"),
         out("success_flag"),
         out("brake_released"),
         out("brake_raw"),
-        out("driver_name"),
-        out("motor_name"),
-        real("hardware_version", ""),
+        out("driver_name").shown("driver"),
+        out("motor_name").shown("motor"),
+        real("hardware_version", "").shown("hardware version", "", 1),
         out("hardware_version_raw"),
-        real("firmware_version", ""),
+        real("firmware_version", "").shown("firmware version", "", 2),
         out("firmware_version_raw"),
-        out("motor_id"),
+        out("motor_id").shown("motor ID"), // V2.35: the 12-byte unique ID, hex
         out("motor_version_raw"),
     };
     return kFields;

@@ -67,6 +67,25 @@ struct ProtocolField {
     FieldKind kind = FieldKind::Integer;
     qint64 min = 0, max = 0; ///< the wire range (request fields)
     const char *range = "";  ///< its text, as FieldError and `lkctl encode --help` print it
+    /// How lkctl's text mode shows the field (ReplyText): nullptr for fields it leaves out
+    /// (`*_raw` values, the flags folded into "errors", frame keys). A name shared by several
+    /// rows is labelled on its first.
+    const char *label = nullptr;
+    const char *textUnit = ""; ///< "counts", "(of 1000)": what a person needs beside the value
+    int places = -1;           ///< digits after the point for reals; -1: as the JSON has it
+    bool trim = true;          ///< drop trailing zeros (speeds); keep them (voltage, angles)
+
+    /// This row as lkctl's text mode shows it.
+    constexpr ProtocolField shown(const char *textLabel, const char *unitText = "",
+                                  int decimals = -1, bool trimZeros = true) const
+    {
+        ProtocolField f = *this;
+        f.label = textLabel;
+        f.textUnit = unitText;
+        f.places = decimals;
+        f.trim = trimZeros;
+        return f;
+    }
 
     bool isRequestField() const { return id != FieldId::None; }
     /// The physical unit of one wire LSB (0.01 for 0.01 dps).
