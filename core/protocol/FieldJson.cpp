@@ -2,6 +2,7 @@
 
 #include "ErrorFlags.h"
 #include "OrderedJson.h"
+#include "ProtocolFields.h"
 
 #include <QtCore/QJsonValue>
 
@@ -81,17 +82,15 @@ QJsonObject parameterFields(const ParameterValue &v)
     case ParamLayout::HalfInt64:
         o.insert(QStringLiteral("max_angle_half_raw"), integer(v.asUInt32()));
         break;
-    case ParamLayout::Int16:
-        o.insert(*id == ParamId::MaxTorqueCurrent ? QStringLiteral("max_torque")
-                                                  : QStringLiteral("current_ramp"),
-                 integer(v.asInt16()));
+    case ParamLayout::Int16: // one integer field: its name is the field table's
+        o.insert(ProtocolFields::ofParam(*id).constFirst().name, integer(v.asInt16()));
         break;
     case ParamLayout::Int32:
         if (*id == ParamId::MaxSpeed) {
             o.insert(QStringLiteral("max_speed_dps"), centi(v.asInt32()));
             o.insert(QStringLiteral("max_speed_raw"), integer(v.asInt32()));
         } else {
-            o.insert(QStringLiteral("speed_ramp_dps2"), integer(v.asInt32()));
+            o.insert(ProtocolFields::ofParam(*id).constFirst().name, integer(v.asInt32()));
         }
         break;
     }
