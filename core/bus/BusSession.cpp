@@ -78,10 +78,10 @@ void BusSession::finishRequest(const RequestResult &result)
 }
 
 void BusSession::finishStop(quint64 ticket, const QVector<int> &acknowledged,
-                            const QVector<int> &silent)
+                            const QVector<int> &silent, const QVector<int> &unsent)
 {
     const auto done = m_stopCallbacks.take(ticket);
-    emit emergencyStopFinished(ticket, acknowledged, silent);
+    emit emergencyStopFinished(ticket, acknowledged, silent, unsent);
     if (done)
         done(acknowledged, silent);
 }
@@ -203,7 +203,8 @@ quint64 BusSession::emergencyStop(const QVector<int> &ids, protocol::Command hal
         // Nothing can be sent: every ID the stop would have reached stays unacknowledged.
         const QVector<int> silent = StopTargets::of(ids, m_motors.keys()).all();
         QMetaObject::invokeMethod(
-            this, [this, ticket, silent] { finishStop(ticket, {}, silent); }, Qt::QueuedConnection);
+            this, [this, ticket, silent] { finishStop(ticket, {}, silent, silent); },
+            Qt::QueuedConnection);
         return ticket;
     }
     post([w = m_worker, ticket, ids, halt] { w->emergencyStop(ticket, ids, halt); });

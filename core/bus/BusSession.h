@@ -126,8 +126,10 @@ signals:
     /// The end of a send() or of one emergency motor_off. Polls and scan probes do not
     /// report here: their replies arrive as telemetry and scan signals.
     void requestCompleted(const lk::bus::RequestResult &result);
+    /// Every ID has answered or stayed silent. `unsent`: the silent IDs whose motor_off never
+    /// reached the wire (the link dropped, or the session was closed: then all of them).
     void emergencyStopFinished(quint64 ticket, const QVector<int> &acknowledged,
-                               const QVector<int> &silent);
+                               const QVector<int> &silent, const QVector<int> &unsent);
     void scanProgress(const lk::bus::ScanProgress &progress);
     void motorFound(const lk::bus::FoundMotor &motor);
     void scanFinished(const lk::bus::ScanSummary &summary);
@@ -143,7 +145,8 @@ private:
     void join();
     void finishRequest(const RequestResult &result);
     void postPollPlan(); ///< the worker polls effectivePollPlan()
-    void finishStop(quint64 ticket, const QVector<int> &acknowledged, const QVector<int> &silent);
+    void finishStop(quint64 ticket, const QVector<int> &acknowledged, const QVector<int> &silent,
+                    const QVector<int> &unsent);
     template <typename F> void post(F &&f);
     template <typename... Args>
     void relay(void (BusWorker::*from)(Args...), void (BusSession::*to)(Args...));

@@ -587,7 +587,8 @@ void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command h
         submit(r, [this, stop](const RequestResult &res) {
             emit requestCompleted(res);
             if (stop->record(res))
-                emit emergencyStopFinished(stop->ticket(), stop->acknowledged(), stop->silent());
+                emit emergencyStopFinished(stop->ticket(), stop->acknowledged(), stop->silent(),
+                                           stop->unsent());
         });
     }
 }

@@ -127,8 +127,9 @@ signals:
     void connectionChanged(const lk::bus::ConnectionStatus &status);
     void errorOccurred(const lk::transport::TransportError &error);
     void requestCompleted(const lk::bus::RequestResult &result);
+    /// `unsent`: the silent IDs whose halt never reached the wire.
     void emergencyStopFinished(quint64 ticket, const QVector<int> &acknowledged,
-                               const QVector<int> &silent);
+                               const QVector<int> &silent, const QVector<int> &unsent);
     void scanProgress(const lk::bus::ScanProgress &progress);
     void motorFound(const lk::bus::FoundMotor &motor);
     void scanFinished(const lk::bus::ScanSummary &summary);

@@ -32,11 +32,14 @@ QVector<BusRequest> EmergencyStop::requests() const
 bool EmergencyStop::record(const RequestResult &result)
 {
     (result.ok() ? m_acknowledged : m_silent).append(result.request.id);
+    if (result.attempts == 0)
+        m_unsent.append(result.request.id);
     if (--m_remaining > 0)
         return false;
     // Retries go to the back of the lane, so completions come in no useful order.
     std::sort(m_acknowledged.begin(), m_acknowledged.end());
     std::sort(m_silent.begin(), m_silent.end());
+    std::sort(m_unsent.begin(), m_unsent.end());
     return true;
 }
 

@@ -28,6 +28,8 @@ public:
     quint64 ticket() const { return m_ticket; }
     const QVector<int> &acknowledged() const { return m_acknowledged; }
     const QVector<int> &silent() const { return m_silent; }
+    /// The silent IDs whose halt never reached the wire (the link dropped first).
+    const QVector<int> &unsent() const { return m_unsent; }
 
 private:
     quint64 m_ticket;
@@ -35,7 +37,7 @@ private:
     StopTargets m_targets;
     int m_retries;
     int m_remaining;
-    QVector<int> m_acknowledged, m_silent;
+    QVector<int> m_acknowledged, m_silent, m_unsent;
 };
 
 } // namespace lk::bus

@@ -42,6 +42,8 @@ private slots:
     void stopDuringScanReachesEveryDrive_data();
     void stopDuringScanReachesEveryDrive();
     void closedSessionReportsEveryIdSilent();
+    void tallyNamesTheUnsent();
+    void stopOnAClosedLinkReportsEveryIdUnsent();
 };
 
 void tst_EmergencyTargets::targetsAlwaysCoverEveryId_data()
@@ -159,6 +161,43 @@ void tst_EmergencyTargets::closedSessionReportsEveryIdSilent()
     const QVector<int> silent = finished.at(0).at(2).value<QVector<int>>();
     QCOMPARE(silent.size(), 32);
     QCOMPARE(silent.first(), 3);
+    QCOMPARE(finished.at(0).at(3).value<QVector<int>>(), silent); // none reached the wire
+}
+
+void tst_EmergencyTargets::tallyNamesTheUnsent()
+{
+    // The report says how many halts reached the wire: a silent ID whose motor_off was sent
+    // and one whose motor_off never left (the link dropped) are told apart.
+    EmergencyStop stop(7, StopTargets::of({}, {}), 0);
+    bool last = false;
+    for (const BusRequest &r : stop.requests()) {
+        RequestResult result;
+        result.ticket = r.ticket;
+        result.request = r.request;
+        const int id = r.request.id;
+        result.status = id == 2   ? RequestStatus::Ok
+                        : id > 30 ? RequestStatus::Disconnected
+                                  : RequestStatus::Timeout;
+        result.attempts = id > 30 ? 0 : 1;
+        QVERIFY(!last);
+        last = stop.record(result);
+    }
+    QVERIFY(last);
+    QCOMPARE(stop.acknowledged(), (QVector<int>{2}));
+    QCOMPARE(stop.silent(), range(1, 32, {2}));
+    QCOMPARE(stop.unsent(), (QVector<int>{31, 32}));
+}
+
+void tst_EmergencyTargets::stopOnAClosedLinkReportsEveryIdUnsent()
+{
+    WorkerRig rig([](FakeTransport &t) { t.setFailOpen(true); });
+    QSignalSpy stopped(rig.worker.get(), &BusWorker::emergencyStopFinished);
+    rig.worker->emergencyStop(9, {5});
+    QTRY_COMPARE(stopped.size(), 1);
+    QVERIFY(stopped.at(0).at(1).value<QVector<int>>().isEmpty());
+    QCOMPARE(stopped.at(0).at(2).value<QVector<int>>(), range(1, 32));
+    QCOMPARE(stopped.at(0).at(3).value<QVector<int>>(), range(1, 32));
+    QVERIFY(rig.log->writtenCopy().isEmpty());
 }
 
 QTEST_GUILESS_MAIN(tst_EmergencyTargets)

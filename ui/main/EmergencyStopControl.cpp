@@ -40,7 +40,6 @@ EmergencyStopControl::EmergencyStopControl(BusController *controller, CommandedM
     qApp->installEventFilter(m_keys);
     connect(m_keys, &EmergencyKeyFilter::escapePressed, this, &EmergencyStopControl::stop);
     bus::BusSession *session = m_controller->session();
-    connect(session, &bus::BusSession::requestCompleted, this, &EmergencyStopControl::onCompleted);
     connect(session, &bus::BusSession::emergencyStopFinished, this,
             &EmergencyStopControl::onFinished);
 }
@@ -66,33 +65,25 @@ void EmergencyStopControl::stop()
     m_pending.insert(m_controller->emergencyStop(p.watched), p);
 }
 
-void EmergencyStopControl::onCompleted(const bus::RequestResult &result)
-{
-    const auto it = m_pending.find(result.ticket);
-    if (it == m_pending.end())
-        return;
-    ++it->total;
-    if (result.attempts > 0)
-        ++it->sent;
-}
-
 void EmergencyStopControl::onFinished(quint64 ticket, const QVector<int> &acknowledged,
-                                      const QVector<int> &silent)
+                                      const QVector<int> &silent, const QVector<int> &unsent)
 {
     const auto it = m_pending.find(ticket);
     if (it == m_pending.end())
         return;
     const Pending p = *it;
     m_pending.erase(it);
-    report(p, acknowledged, silent);
+    report(p, {acknowledged, silent, unsent});
     emit reported();
 }
 
-void EmergencyStopControl::report(const Pending &p, const QVector<int> &acknowledged,
-                                  const QVector<int> &silent)
+void EmergencyStopControl::report(const Pending &p, const Outcome &outcome)
 {
     using Level = MessageBanner::Level;
-    if (p.sent == 0) {
+    const QVector<int> &acknowledged = outcome.acknowledged;
+    const int total = int(acknowledged.size() + outcome.silent.size());
+    const int sent = total - int(outcome.unsent.size());
+    if (sent == 0) {
         const QString what =
             p.commanded.isEmpty()
                 ? tr("Emergency stop: NOTHING could be sent, the bus is not connected. lkstudio "
@@ -105,29 +96,28 @@ void EmergencyStopControl::report(const Pending &p, const QVector<int> &acknowle
         return;
     }
     QVector<int> missing;
-    for (int id : silent) {
+    for (int id : outcome.silent) {
         if (p.watched.contains(id))
             missing.append(id);
     }
     QString text =
         acknowledged.isEmpty()
-            ? tr("Emergency stop: Motor Off sent to %n ID(s); no drive answered.", nullptr, p.sent)
+            ? tr("Emergency stop: Motor Off sent to %n ID(s); no drive answered.", nullptr, sent)
             : tr("Emergency stop: Motor Off sent to %n ID(s); acknowledged by "
                  "drive(s) %1.",
-                 nullptr, p.sent)
+                 nullptr, sent)
                   .arg(idList(acknowledged));
-    if (p.sent < p.total)
-        text +=
-            QLatin1Char(' ') +
-            tr("%1 of %2 could not be sent: the link dropped.").arg(p.total - p.sent).arg(p.total);
+    if (sent < total)
+        text += QLatin1Char(' ') +
+                tr("%1 of %2 could not be sent: the link dropped.").arg(total - sent).arg(total);
     text = text.toHtmlEscaped();
     if (!missing.isEmpty())
         text += QLatin1Char(' ') +
                 redBold(tr("NO answer from drive(s) %1: check them and cut their power if needed.")
                             .arg(idList(missing)));
-    const Level level = !missing.isEmpty() || p.sent < p.total ? Level::Error
-                        : acknowledged.isEmpty()               ? Level::Warning
-                                                               : Level::Info;
+    const Level level = !missing.isEmpty() || sent < total ? Level::Error
+                        : acknowledged.isEmpty()           ? Level::Warning
+                                                           : Level::Info;
     m_banner->setEntry(entryKey(), level, text);
 }
 

@@ -1,7 +1,5 @@
 #pragma once
 
-#include <bus/RequestResult.h>
-
 #include <QtCore/QHash>
 #include <QtCore/QObject>
 #include <QtCore/QStringList>
@@ -47,12 +45,15 @@ private:
     struct Pending {
         QVector<int> watched;  ///< known or commanded when the stop began
         QStringList commanded; ///< "Drive 2 (speed 360 dps at 12:03:04)", at that moment
-        int sent = 0;          ///< motor_off requests that reached the wire
-        int total = 0;         ///< completions seen
     };
-    void onCompleted(const bus::RequestResult &result);
-    void onFinished(quint64 ticket, const QVector<int> &acknowledged, const QVector<int> &silent);
-    void report(const Pending &p, const QVector<int> &acknowledged, const QVector<int> &silent);
+    /// The bus's account of one stop: who acknowledged, who stayed silent, and which of the
+    /// silent never got the motor_off on the wire.
+    struct Outcome {
+        QVector<int> acknowledged, silent, unsent;
+    };
+    void onFinished(quint64 ticket, const QVector<int> &acknowledged, const QVector<int> &silent,
+                    const QVector<int> &unsent);
+    void report(const Pending &p, const Outcome &outcome);
 
     BusController *m_controller;
     CommandedMotion *m_motion;
