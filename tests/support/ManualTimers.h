@@ -30,8 +30,9 @@ public:
         int lastMs = -1; ///< the interval of the last start(); -1: never started
         int starts = 0;
         Qt::TimerType type = Qt::CoarseTimer;
-        qint64 dueNs = 0;  ///< clock time of the timeout (with a clock)
-        quint64 order = 0; ///< start sequence: ties fire in start order
+        qint64 dueNs = 0;     ///< clock time of the timeout (with a clock)
+        quint64 order = 0;    ///< start sequence: ties fire in start order
+        bool oneShot = false; ///< made by singleShot(): forgotten once it has fired
     };
 
     ManualTimers() = default;
@@ -57,19 +58,23 @@ public:
     /// not.
     bool fire(int i = 0)
     {
-        State &s = *m_timers.at(i);
-        if (!s.active)
+        const std::shared_ptr<State> s = m_timers.at(i); // alive while its callback runs
+        if (!s->active)
             return false;
-        s.active = false;
-        s.onTimeout();
+        s->active = false;
+        s->onTimeout();
         return true;
     }
 
     /// Run `f` once, `ms` from now on the clock (a QTimer::singleShot that advance() fires).
     void singleShot(int ms, std::function<void()> f)
     {
+        // Fired ones go: a test that schedules every reply must not slow down as it runs.
+        m_timers.removeIf([](const std::shared_ptr<State> &t) { return t->oneShot && !t->active; });
+        m_oneShots.removeIf([](const std::shared_ptr<Timer> &t) { return !t->isActive(); });
         auto state = std::make_shared<State>();
         state->onTimeout = std::move(f);
+        state->oneShot = true;
         m_timers.append(state);
         m_oneShots.append(std::make_shared<Timer>(state, this));
         m_oneShots.last()->start(ms);
