@@ -86,7 +86,9 @@ public:
     {
         EventCounter counter;
         QCoreApplication::instance()->installEventFilter(&counter);
-        for (int round = 0; round < 100000; ++round) {
+        constexpr int kMaxRounds = 100000;
+        int round = 0;
+        for (; round < kMaxRounds; ++round) {
             counter.count = 0;
             QCoreApplication::processEvents(QEventLoop::AllEvents);
             QCoreApplication::sendPostedEvents();
@@ -94,6 +96,8 @@ public:
                 break;
         }
         QCoreApplication::instance()->removeEventFilter(&counter);
+        if (round == kMaxRounds)
+            qWarning("ManualTimers::settle: events keep coming while the clock stands still");
     }
 
     /// Advance the clock by `ms`, firing every timer due on the way in due order.
