@@ -32,25 +32,37 @@ QString commandText(const protocol::Request &r)
 }
 } // namespace
 
-BusWorker::BusWorker(TransportFactory factory, int baud, const BusConfig &config, QObject *parent)
+BusWorker::BusWorker(TransportFactory factory, int baud, const BusConfig &config,
+                     BusTimeSource time, QObject *parent)
     : QObject(parent), m_factory(std::move(factory)), m_baud(baud), m_config(config),
-      m_timeout(config)
+      m_clock(std::move(time.clock)), m_timers(std::move(time.timers)), m_timeout(config),
+      m_telemetry(this, m_timers)
 {
-    m_clock.start();
     m_matcher.setLocalEcho(config.localEcho);
-    m_replyTimer.setSingleShot(true);
-    m_replyTimer.setTimerType(Qt::PreciseTimer);
-    m_pollTimer.setSingleShot(true);
-    m_pollTimer.setTimerType(Qt::PreciseTimer);
-    m_quietTimer.setSingleShot(true);
-    m_quietTimer.setTimerType(Qt::PreciseTimer);
+    // The reply, quiet and poll timers pace the wire: precise. Statistics and traffic only
+    // feed the screen: coarse, each restarted on its timeout (a periodic timer).
+    m_replyTimer = m_timers(
+        this, [this] { onTimeout(); }, Qt::PreciseTimer);
+    m_pollTimer = m_timers(
+        this, [this] { pumpNow(); }, Qt::PreciseTimer);
+    m_quietTimer = m_timers(
+        this, [this] { pumpNow(); }, Qt::PreciseTimer);
+    m_statsTimer = m_timers(
+        this,
+        [this] {
+            m_statsTimer->start(statisticsIntervalMs());
+            emitStatistics();
+        },
+        Qt::CoarseTimer);
+    m_trafficTimer = m_timers(
+        this,
+        [this] {
+            m_trafficTimer->start(kTrafficIntervalMs);
+            flushTraffic();
+        },
+        Qt::CoarseTimer);
     m_telemetry.setRateHz(config.telemetryHz);
-    connect(&m_replyTimer, &QTimer::timeout, this, &BusWorker::onTimeout);
-    connect(&m_pollTimer, &QTimer::timeout, this, &BusWorker::pumpNow);
-    connect(&m_quietTimer, &QTimer::timeout, this, &BusWorker::pumpNow);
     connect(&m_telemetry, &TelemetryBatcher::batchReady, this, &BusWorker::telemetryReceived);
-    connect(&m_statsTimer, &QTimer::timeout, this, &BusWorker::emitStatistics);
-    connect(&m_trafficTimer, &QTimer::timeout, this, &BusWorker::flushTraffic);
     m_poller.setSeriesLookup([this](int id) { return seriesOf(id); });
     m_reported.baud = baud;
 }
@@ -62,7 +74,7 @@ BusWorker::~BusWorker()
 
 void BusWorker::start()
 {
-    m_statsTimer.start(static_cast<int>(1000.0 / std::max(0.1, m_config.statisticsHz)));
+    m_statsTimer->start(statisticsIntervalMs());
     attachTransport(m_factory ? m_factory(m_baud) : nullptr);
     openTransport();
 }
@@ -136,7 +148,8 @@ void BusWorker::shutdown(const QString &reason)
     m_poller.clear();
     failAll(RequestStatus::Cancelled, reason);
     dropTransport();
-    for (QTimer *t : {&m_replyTimer, &m_quietTimer, &m_pollTimer, &m_statsTimer, &m_trafficTimer})
+    for (SingleShotTimer *t : {m_replyTimer.get(), m_quietTimer.get(), m_pollTimer.get(),
+                               m_statsTimer.get(), m_trafficTimer.get()})
         t->stop();
     m_telemetry.flush();
     m_reported.state = Transport::State::Closed;
@@ -156,7 +169,7 @@ int BusWorker::baud() const
 
 double BusWorker::now() const
 {
-    return static_cast<double>(m_clock.nsecsElapsed()) * 1e-9;
+    return static_cast<double>(m_clock->nowNs()) * 1e-9;
 }
 
 void BusWorker::onTransportError(const transport::TransportError &error)
@@ -212,8 +225,8 @@ void BusWorker::setConfig(const BusConfig &config)
     m_timeout.setConfig(config);
     m_telemetry.setRateHz(config.telemetryHz);
     m_matcher.setLocalEcho(config.localEcho);
-    if (m_statsTimer.isActive())
-        m_statsTimer.setInterval(static_cast<int>(1000.0 / std::max(0.1, config.statisticsHz)));
+    if (m_statsTimer->isActive())
+        m_statsTimer->start(statisticsIntervalMs()); // as QTimer::setInterval: from now
 }
 
 bool BusWorker::isRetrySafe(Command command)
@@ -324,7 +337,7 @@ std::optional<BusWorker::Pending> BusWorker::takeNext()
     }
     const double due = m_poller.nextDueTime(t);
     if (std::isfinite(due))
-        m_pollTimer.start(std::max(0, static_cast<int>(std::ceil((due - t) * 1e3))));
+        m_pollTimer->start(std::max(0, static_cast<int>(std::ceil((due - t) * 1e3))));
     return std::nullopt;
 }
 
@@ -356,9 +369,9 @@ void BusWorker::sendAttempt(Pending p)
     // probe's quiet period) before the request even left, and could talk over a drive that
     // answers in time. Replies are only read from the event loop, so expecting one now is
     // early enough.
-    m_sentNs = m_clock.nsecsElapsed();
+    m_sentNs = m_clock->nowNs();
     m_matcher.expect(request, bytes, m_sentNs, m_sentNs + earliestReplyNs(request.command));
-    m_replyTimer.start(std::max(1, static_cast<int>(std::ceil(timeoutS * 1e3))));
+    m_replyTimer->start(std::max(1, static_cast<int>(std::ceil(timeoutS * 1e3))));
 }
 
 qint64 BusWorker::earliestReplyNs(Command command) const
@@ -391,17 +404,21 @@ void BusWorker::beginQuiet(const protocol::Request &request, bool probe)
     const qint64 untilNs =
         probe ? m_sentNs +
                     static_cast<qint64>(m_timeout.replyDeadlineS(request.command, baud()) * 1e9)
-              : m_clock.nsecsElapsed() + lengthNs;
+              : m_clock->nowNs() + lengthNs;
     m_quiet.begin(untilNs, lengthNs, request.id, static_cast<quint8>(request.command));
 }
 
 bool BusWorker::holdForQuiet()
 {
-    const qint64 leftNs = m_quiet.leftNs(m_clock.nsecsElapsed());
+    const qint64 nowNs = m_clock->nowNs();
+    const qint64 leftNs = m_quiet.leftNs(nowNs);
     if (leftNs <= 0)
         return false;
-    if (!m_quietTimer.isActive() || m_quietTimer.remainingTime() * 1'000'000 < leftNs)
-        m_quietTimer.start(static_cast<int>((leftNs + 999'999) / 1'000'000));
+    if (!m_quietTimer->isActive() || m_quietTimerDueNs < nowNs + leftNs) {
+        const int ms = static_cast<int>((leftNs + 999'999) / 1'000'000);
+        m_quietTimer->start(ms);
+        m_quietTimerDueNs = nowNs + qint64(ms) * 1'000'000;
+    }
     return true;
 }
 
@@ -410,7 +427,7 @@ void BusWorker::failAttempt(RequestStatus status, const QString &reason)
     Pending p = std::move(*m_inflight);
     m_inflight.reset();
     m_matcher.clear();
-    m_replyTimer.stop();
+    m_replyTimer->stop();
     if (!p.noRetry && p.attempts <= retriesFor(p.req)) {
         // Back to the head of its own lane: an emergency stop still overtakes a retry. An
         // emergency motor_off retries at the back instead, so that every drive hears its
@@ -459,7 +476,7 @@ void BusWorker::abortInflight(RequestStatus status, const QString &reason)
     Pending p = std::move(*m_inflight);
     m_inflight.reset();
     m_matcher.clear();
-    m_replyTimer.stop();
+    m_replyTimer->stop();
     complete(std::move(p), status, std::nullopt, reason, 0);
 }
 
@@ -472,14 +489,14 @@ void BusWorker::failAll(RequestStatus status, const QString &reason)
 void BusWorker::onBytes(const QByteArray &bytes)
 {
     if (!m_inflight) // with a request in flight these are its reply, not an old one's tail
-        m_quiet.bytesArrived(m_clock.nsecsElapsed());
+        m_quiet.bytesArrived(m_clock->nowNs());
     m_quiet.chunkStarted();
     m_inBytes = true;
     m_parser.feed(bytes, [this](const protocol::ParseEvent &ev) { onParseEvent(ev); });
     m_inBytes = false;
-    if (m_quiet.endIfAnswered(m_parser.pendingBytes() == 0, m_clock.nsecsElapsed())) {
+    if (m_quiet.endIfAnswered(m_parser.pendingBytes() == 0, m_clock->nowNs())) {
         // The late reply is all here and nothing follows it: the wire is free again.
-        m_quietTimer.stop();
+        m_quietTimer->stop();
         m_pumpWanted = true;
     }
     if (m_pumpWanted) {
@@ -497,7 +514,7 @@ void BusWorker::onParseEvent(const protocol::ParseEvent &ev)
     using V = ReplyMatcher::Verdict;
     const protocol::Frame &f = ev.frame;
     ReplyMatcher::Outcome out =
-        m_matcher.classify(ev, m_motors.decodeContext(f.id), m_clock.nsecsElapsed());
+        m_matcher.classify(ev, m_motors.decodeContext(f.id), m_clock->nowNs());
     switch (out.verdict) {
     case V::Fault:
         m_stats.parseFault(ev);
@@ -534,14 +551,14 @@ void BusWorker::onParseEvent(const protocol::ParseEvent &ev)
 
 void BusWorker::completeWithReply(protocol::Reply reply)
 {
-    const double latency = static_cast<double>(m_clock.nsecsElapsed() - m_sentNs) * 1e-9;
+    const double latency = static_cast<double>(m_clock->nowNs() - m_sentNs) * 1e-9;
     m_recentLatency.add(latency);
     m_stats.replyReceived(reply.id, latency);
     m_timeout.addReply(reply.command, baud(), latency);
     Pending p = std::move(*m_inflight);
     m_inflight.reset();
     m_matcher.clear();
-    m_replyTimer.stop();
+    m_replyTimer->stop();
     noteReply(reply, now(), p);
     complete(std::move(p), RequestStatus::Ok, std::move(reply), {}, latency);
     schedulePump();
@@ -596,7 +613,7 @@ void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command h
 void BusWorker::scan(const ScanOptions &options)
 {
     if (!m_scanner) {
-        m_scanner = new Scanner(*this, this);
+        m_scanner = new Scanner(*this, m_timers, this);
         connect(m_scanner, &Scanner::progress, this, &BusWorker::scanProgress);
         connect(m_scanner, &Scanner::found, this, &BusWorker::motorFound);
         connect(m_scanner, &Scanner::finished, this, [this](const ScanSummary &s) {
@@ -632,7 +649,7 @@ void BusWorker::stopPolling()
 {
     const bool was = m_poller.isActive() && !m_pollSuspended;
     m_poller.clear();
-    m_pollTimer.stop();
+    m_pollTimer->stop();
     m_pollSuspended = false;
     if (was)
         emit pollingChanged(false);
@@ -644,7 +661,7 @@ void BusWorker::setPollingSuspended(bool suspended)
         return;
     m_pollSuspended = suspended;
     if (suspended)
-        m_pollTimer.stop();
+        m_pollTimer->stop();
     emit pollingChanged(!suspended);
 }
 
@@ -724,13 +741,18 @@ void BusWorker::emitStatistics()
     emit statisticsUpdated(statisticsSnapshot());
 }
 
+int BusWorker::statisticsIntervalMs() const
+{
+    return static_cast<int>(1000.0 / std::max(0.1, m_config.statisticsHz));
+}
+
 void BusWorker::setTrafficCapture(bool enabled)
 {
     m_traffic.setEnabled(enabled);
     if (enabled)
-        m_trafficTimer.start(kTrafficIntervalMs);
+        m_trafficTimer->start(kTrafficIntervalMs);
     else
-        m_trafficTimer.stop();
+        m_trafficTimer->stop();
 }
 
 void BusWorker::flushTraffic()

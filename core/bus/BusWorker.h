@@ -4,6 +4,7 @@
 #include "BusConfig.h"
 #include "BusRequest.h"
 #include "BusStatistics.h"
+#include "BusTimeSource.h"
 #include "ConnectionStatus.h"
 #include "KnownMotor.h"
 #include "MotorRegistry.h"
@@ -16,6 +17,7 @@
 #include "RequestQueue.h"
 #include "RequestResult.h"
 #include "ScanTypes.h"
+#include "SingleShotTimer.h"
 #include "StatisticsCollector.h"
 #include "TelemetryBatcher.h"
 #include "TelemetrySample.h"
@@ -26,9 +28,7 @@
 #include <protocol/StreamParser.h>
 #include <transport/Transport.h>
 
-#include <QtCore/QElapsedTimer>
 #include <QtCore/QObject>
-#include <QtCore/QTimer>
 
 #include <functional>
 #include <memory>
@@ -67,7 +67,9 @@ class BusWorker : public QObject {
 public:
     using Completion = PendingRequest::Completion;
 
-    BusWorker(TransportFactory factory, int baud, const BusConfig &config,
+    /// `time`: the clock and timers it runs on (default the product's; tests run it on a
+    /// clock they advance by hand).
+    BusWorker(TransportFactory factory, int baud, const BusConfig &config, BusTimeSource time = {},
               QObject *parent = nullptr);
     ~BusWorker() override;
 
@@ -109,7 +111,7 @@ public:
     int queuedCount() const;
     bool isBusy() const { return m_inflight.has_value(); }
     /// Whether transmissions are held back now: the quiet period after a timeout.
-    bool isQuiet() const { return m_quiet.isQuiet(m_clock.nsecsElapsed()); }
+    bool isQuiet() const { return m_quiet.isQuiet(m_clock->nowNs()); }
     double currentMarginMs() const { return m_timeout.marginS() * 1e3; }
     /// The shortest sensible reply timeout: wire time + turnaround + BusConfig::minMarginMs,
     /// for probes where silence is the common answer (scan pass 1, emergency stop).
@@ -175,6 +177,7 @@ private:
     void onPollDone(const RequestResult &r);
     void noteReply(const protocol::Reply &reply, double time, const Pending &request);
     void emitStatistics();
+    int statisticsIntervalMs() const;
     void flushTraffic();
     void recordTraffic(TrafficEvent::Kind kind, const QByteArray &bytes, int id, quint8 command,
                        const QString &text = {});
@@ -190,7 +193,8 @@ private:
     BusConfig m_config;
     std::unique_ptr<transport::Transport> m_transport;
     protocol::StreamParser m_parser;
-    QElapsedTimer m_clock;
+    std::shared_ptr<BusClock> m_clock; ///< the session clock: now() and every ns figure
+    SingleShotTimerFactory m_timers;   ///< also the Scanner's
 
     RequestQueue m_queue;
     std::optional<Pending> m_inflight;
@@ -213,15 +217,17 @@ private:
     bool m_pollSuspended = false;
     Scanner *m_scanner = nullptr;
     MotorRegistry m_motors;
-    TelemetryBatcher m_telemetry{this};
+    TelemetryBatcher m_telemetry;
     ConnectionStatus m_reported;
     QString m_lastError;
 
-    QTimer m_replyTimer{this}; // children: they move to the bus thread with the worker
-    QTimer m_quietTimer{this};
-    QTimer m_pollTimer{this};
-    QTimer m_statsTimer{this};
-    QTimer m_trafficTimer{this};
+    // Owned by this object (Qt's are its children): they move to the bus thread with it.
+    std::unique_ptr<SingleShotTimer> m_replyTimer;
+    std::unique_ptr<SingleShotTimer> m_quietTimer;
+    qint64 m_quietTimerDueNs = 0; ///< when the running quiet timer fires (worker clock)
+    std::unique_ptr<SingleShotTimer> m_pollTimer;
+    std::unique_ptr<SingleShotTimer> m_statsTimer;   ///< periodic: restarted on its timeout
+    std::unique_ptr<SingleShotTimer> m_trafficTimer; ///< periodic while capturing
 };
 
 } // namespace lk::bus

@@ -17,11 +17,10 @@ namespace lk::bus {
 
 using protocol::Command;
 
-Scanner::Scanner(BusWorker &worker, QObject *parent) : QObject(parent), m_worker(worker)
+Scanner::Scanner(BusWorker &worker, const SingleShotTimerFactory &timers, QObject *parent)
+    : QObject(parent), m_worker(worker), m_grace(timers(
+                                             this, [this] { afterGrace(); }, Qt::PreciseTimer))
 {
-    m_grace.setSingleShot(true);
-    m_grace.setTimerType(Qt::PreciseTimer);
-    connect(&m_grace, &QTimer::timeout, this, &Scanner::afterGrace);
 }
 
 double Scanner::estimatedSeconds(int idCount, int baud, const BusConfig &config)
@@ -56,7 +55,7 @@ void Scanner::start(const ScanOptions &options)
     m_waiting = false;
     m_reopening = false;
     m_running = true;
-    m_elapsed.start();
+    m_startS = m_worker.now();
     m_originalBaud = m_worker.baud();
 
     if (options.firstId < protocol::kMinId || options.lastId > protocol::kMaxId ||
@@ -283,7 +282,7 @@ void Scanner::endPass()
     const BusConfig &c = m_worker.config();
     const double graceMs =
         std::min(c.maxMarginMs, std::max(m_worker.currentMarginMs(), c.initialMarginMs));
-    m_grace.start(std::max(1, static_cast<int>(std::ceil(graceMs))));
+    m_grace->start(std::max(1, static_cast<int>(std::ceil(graceMs))));
 }
 
 void Scanner::afterGrace()
@@ -369,13 +368,13 @@ void Scanner::finish()
     if (!m_running)
         return;
     m_running = false;
-    m_grace.stop();
+    m_grace->stop();
     ++m_generation;
     ScanSummary s;
     s.cancelled = m_cancelled && m_error.isEmpty();
     s.error = m_error;
     s.finalBaud = m_worker.baud();
-    s.elapsedS = m_elapsed.isValid() ? m_elapsed.nsecsElapsed() * 1e-9 : 0;
+    s.elapsedS = m_worker.now() - m_startS; // finish() runs only after start()
     if (!s.cancelled && s.error.isEmpty()) {
         // A complete scan is the truth for its range: forget IDs that did not answer there.
         m_worker.forgetMotors(m_options.firstId, m_options.lastId);

@@ -3,13 +3,13 @@
 #include "BusConfig.h"
 #include "RequestResult.h"
 #include "ScanTypes.h"
+#include "SingleShotTimer.h"
 
-#include <QtCore/QElapsedTimer>
 #include <QtCore/QObject>
-#include <QtCore/QTimer>
 #include <QtCore/QVector>
 
 #include <functional>
+#include <memory>
 
 namespace lk::bus {
 
@@ -37,7 +37,8 @@ public:
     static constexpr int kMaxReprobes = 2; ///< immediate re-probes after a corrupt reply
     static constexpr int kMaxPasses = 3;
 
-    Scanner(BusWorker &worker, QObject *parent = nullptr);
+    /// `timers`: the worker's (its grace timer runs on the worker's time, like its probes).
+    Scanner(BusWorker &worker, const SingleShotTimerFactory &timers, QObject *parent = nullptr);
 
     /// Start a scan; a running one is cancelled first.
     void start(const ScanOptions &options);
@@ -96,9 +97,9 @@ private:
     int m_total = 0;
     int m_originalBaud = 0;
     QVector<FoundMotor> m_found;
-    QElapsedTimer m_elapsed;
-    QTimer m_grace;           ///< listening for late replies after pass 1
-    quint64 m_generation = 0; ///< callbacks of an older scan are ignored
+    double m_startS = 0;                      ///< session time the scan started
+    std::unique_ptr<SingleShotTimer> m_grace; ///< listening for late replies after pass 1
+    quint64 m_generation = 0;                 ///< callbacks of an older scan are ignored
     bool m_running = false;
     bool m_waiting = false; ///< one of our requests is queued or on the wire
     bool m_reopening = false;

@@ -9,9 +9,11 @@ namespace {
 /// SingleShotTimer on a QTimer that is a child of the owner: it lives on the owner's thread.
 class QtSingleShotTimer final : public SingleShotTimer {
 public:
-    QtSingleShotTimer(QObject *owner, std::function<void()> onTimeout) : m_timer(new QTimer(owner))
+    QtSingleShotTimer(QObject *owner, std::function<void()> onTimeout, Qt::TimerType type)
+        : m_timer(new QTimer(owner))
     {
         m_timer->setSingleShot(true);
+        m_timer->setTimerType(type);
         QObject::connect(m_timer, &QTimer::timeout, owner, std::move(onTimeout));
     }
     ~QtSingleShotTimer() override { delete m_timer.data(); } // null if the owner went first
@@ -24,10 +26,10 @@ private:
 };
 } // namespace
 
-std::unique_ptr<SingleShotTimer> makeQtSingleShotTimer(QObject *owner,
-                                                       std::function<void()> onTimeout)
+std::unique_ptr<SingleShotTimer>
+makeQtSingleShotTimer(QObject *owner, std::function<void()> onTimeout, Qt::TimerType type)
 {
-    return std::make_unique<QtSingleShotTimer>(owner, std::move(onTimeout));
+    return std::make_unique<QtSingleShotTimer>(owner, std::move(onTimeout), type);
 }
 
 } // namespace lk::bus

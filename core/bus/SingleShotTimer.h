@@ -19,12 +19,14 @@ public:
 };
 
 /// Makes a timer whose timeout calls `onTimeout`; `owner` is the object that uses it (a Qt
-/// timer becomes its child, so that it moves threads with it).
+/// timer becomes its child, so that it moves threads with it). `type`: how precisely it must
+/// keep its interval (Qt::PreciseTimer for reply timeouts; Qt::CoarseTimer may fire up to 5 %
+/// late, which saves wake-ups where that does not matter).
 using SingleShotTimerFactory = std::function<std::unique_ptr<SingleShotTimer>(
-    QObject *owner, std::function<void()> onTimeout)>;
+    QObject *owner, std::function<void()> onTimeout, Qt::TimerType type)>;
 
-/// The product's timers: QTimer, precise to the millisecond.
-std::unique_ptr<SingleShotTimer> makeQtSingleShotTimer(QObject *owner,
-                                                       std::function<void()> onTimeout);
+/// The product's timers: a QTimer of the given type.
+std::unique_ptr<SingleShotTimer>
+makeQtSingleShotTimer(QObject *owner, std::function<void()> onTimeout, Qt::TimerType type);
 
 } // namespace lk::bus

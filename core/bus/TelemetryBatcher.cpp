@@ -5,7 +5,8 @@
 namespace lk::bus {
 
 TelemetryBatcher::TelemetryBatcher(QObject *parent, const SingleShotTimerFactory &timers)
-    : QObject(parent), m_timer(timers(this, [this] { flush(); }))
+    : QObject(parent), m_timer(timers(
+                           this, [this] { flush(); }, Qt::CoarseTimer))
 {
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "../support/ManualTimers.h"
 #include "FakeTransport.h"
 
 #include <bus/BusWorker.h>
@@ -32,14 +33,24 @@ inline protocol::Request plainRequest(protocol::Command c, int id)
     return r;
 }
 
+/// Where a WorkerRig's time comes from.
+enum class RigTime {
+    Wall,   ///< the steady clock and QTimers: the test waits (QTRY_*)
+    Manual, ///< a ManualClock and ManualTimers: the test advances time (runUntil())
+};
+
 /// A BusWorker on the test thread over a FakeTransport, collecting completions.
 class WorkerRig {
 public:
     using Setup = std::function<void(FakeTransport &)>;
 
-    explicit WorkerRig(Setup setup = {}, bus::BusConfig config = relaxedConfig(), int baud = 115200)
+    explicit WorkerRig(Setup setup = {}, bus::BusConfig config = relaxedConfig(), int baud = 115200,
+                       RigTime time = RigTime::Wall)
         : m_setup(std::move(setup))
     {
+        if (time == RigTime::Manual)
+            timers = std::make_unique<testsupport::ManualTimers>(
+                std::make_shared<testsupport::ManualClock>());
         worker = std::make_unique<bus::BusWorker>(
             [this](int b) {
                 {
@@ -48,16 +59,30 @@ public:
                 }
                 auto t = std::make_unique<FakeTransport>(b, log);
                 transport = t.get();
+                if (timers) {
+                    t->setScheduler([this](int ms, std::function<void()> f) {
+                        timers->singleShot(ms, std::move(f));
+                    });
+                }
                 if (m_setup)
                     m_setup(*t);
                 return t;
             },
-            baud, config);
+            baud, config, timers ? timers->timeSource() : bus::BusTimeSource{});
         QObject::connect(worker.get(), &bus::BusWorker::requestCompleted, worker.get(),
                          [this](const bus::RequestResult &r) { results.append(r); });
         worker->start();
     }
     ~WorkerRig() { worker.reset(); } // its last completions still land in `results`
+
+    /// Manual time: advance the clock timer by timer until `done()` holds, at most `limitMs`;
+    /// whether it holds.
+    bool runUntil(const std::function<bool()> &done, double limitMs = 60000)
+    {
+        return timers->advanceUntil(done, limitMs);
+    }
+    /// Manual time: the clock (ms since the worker was made).
+    double nowMs() const { return timers->clock()->nowMs(); }
 
     quint64 send(const protocol::Request &r, bus::Priority p = bus::Priority::Operator,
                  int retries = -1)
@@ -97,7 +122,8 @@ public:
     }
 
     std::shared_ptr<FakeLog> log = std::make_shared<FakeLog>();
-    FakeTransport *transport = nullptr; ///< the current one (the worker owns it)
+    FakeTransport *transport = nullptr;                ///< the current one (the worker owns it)
+    std::unique_ptr<testsupport::ManualTimers> timers; ///< RigTime::Manual only; outlives worker
     std::unique_ptr<bus::BusWorker> worker;
     QVector<bus::RequestResult> results;
 

@@ -3,6 +3,7 @@
 #include <protocol/StreamParser.h>
 
 #include <QtCore/QMetaObject>
+#include <QtCore/QPointer>
 #include <QtCore/QTimer>
 
 namespace lk::bustest {
@@ -73,9 +74,25 @@ void FakeTransport::write(const QByteArray &bytes)
 
 void FakeTransport::deliver(const QByteArray &bytes, int delayMs)
 {
-    QTimer::singleShot(delayMs, this, [this, bytes] {
+    auto arrive = [this, bytes] {
         if (m_state == State::Open)
             emit bytesReceived(bytes);
+    };
+    if (delayMs <= 0)
+        QTimer::singleShot(0, this, std::move(arrive)); // queued, as a port's readyRead
+    else
+        after(delayMs, std::move(arrive));
+}
+
+void FakeTransport::after(int ms, std::function<void()> f)
+{
+    if (!m_scheduler) {
+        QTimer::singleShot(ms, this, std::move(f));
+        return;
+    }
+    m_scheduler(ms, [alive = QPointer<FakeTransport>(this), f = std::move(f)] {
+        if (alive)
+            f();
     });
 }
 

@@ -29,12 +29,15 @@ struct FakeLog {
 
 /// A scripted Transport for bus tests. Each write is answered by the responder (by default
 /// the FakeDrives table) after `replyDelayMs` (0: queued delivery, never inside write()).
+/// Delays run on QTimer, or on the scheduler a test sets (a clock it advances by hand).
 class FakeTransport : public transport::Transport {
     Q_OBJECT
 public:
     /// Bytes to deliver for one written request frame (empty: stay silent). `index` counts
     /// writes from 0.
     using Responder = std::function<QByteArray(const protocol::Frame &request, int index)>;
+    /// Runs a callback `ms` from now on the test's clock.
+    using Scheduler = std::function<void(int ms, std::function<void()> f)>;
 
     explicit FakeTransport(int baud = 115200, std::shared_ptr<FakeLog> log = {},
                            QObject *parent = nullptr);
@@ -49,6 +52,9 @@ public:
     FakeDrives &drives() { return m_drives; }
     void setResponder(Responder r) { m_responder = std::move(r); }
     void setReplyDelayMs(int ms) { m_delayMs = ms; }
+    void setScheduler(Scheduler s) { m_scheduler = std::move(s); }
+    /// Run `f` `ms` from now (on the scheduler if set, else a QTimer); never after this dies.
+    void after(int ms, std::function<void()> f);
     void setLocalEcho(bool on) { m_localEcho = on; } ///< deliver each write back first
     void setFailOpen(bool fail) { m_failOpen = fail; }
     /// The adapter vanishes: Unplugged error, then state Disconnected.
@@ -69,6 +75,7 @@ private:
     std::shared_ptr<FakeLog> m_log;
     FakeDrives m_drives;
     Responder m_responder;
+    Scheduler m_scheduler;
     int m_delayMs = 0;
     int m_index = 0;
     bool m_localEcho = false;

@@ -4,9 +4,6 @@
 #include <bus/BusWorker.h>
 #include <protocol/RequestBuilder.h>
 
-#include <QtCore/QElapsedTimer>
-#include <QtCore/QTimer>
-
 #include <QtTest/QSignalSpy>
 #include <QtTest/QTest>
 #include <memory>
@@ -22,7 +19,9 @@ using protocol::Series;
 
 Q_DECLARE_METATYPE(protocol::Command)
 
-/// BusWorker on the test thread over a scripted FakeTransport.
+/// BusWorker on the test thread over a scripted FakeTransport, on a clock the test advances
+/// (RigTime::Manual): timeouts, quiet periods and reply delays do not depend on the machine's
+/// load, and a wait of seconds costs none.
 class tst_BusWorker : public QObject {
     Q_OBJECT
 private slots:
@@ -51,22 +50,24 @@ private slots:
 
 void tst_BusWorker::replyMatchedByCommandAndId()
 {
-    WorkerRig rig([](FakeTransport &t) {
-        t.drives().add(3, Series::MF);
-        t.drives().add(4, Series::MF);
-        FakeTransport *tp = &t;
-        t.setResponder([tp](const protocol::Frame &req, int) {
-            // Another ID's reply to the same command and this ID's reply to another command
-            // come first: neither may complete the request.
-            protocol::Frame otherId = req;
-            otherId.id = 4;
-            const protocol::Frame otherCommand{quint8(Command::ReadState1), req.id, {}};
-            return tp->defaultReply(otherId) + tp->defaultReply(otherCommand) +
-                   tp->defaultReply(req);
-        });
-    });
+    WorkerRig rig(
+        [](FakeTransport &t) {
+            t.drives().add(3, Series::MF);
+            t.drives().add(4, Series::MF);
+            FakeTransport *tp = &t;
+            t.setResponder([tp](const protocol::Frame &req, int) {
+                // Another ID's reply to the same command and this ID's reply to another command
+                // come first: neither may complete the request.
+                protocol::Frame otherId = req;
+                otherId.id = 4;
+                const protocol::Frame otherCommand{quint8(Command::ReadState1), req.id, {}};
+                return tp->defaultReply(otherId) + tp->defaultReply(otherCommand) +
+                       tp->defaultReply(req);
+            });
+        },
+        relaxedConfig(), 115200, RigTime::Manual);
     const quint64 ticket = rig.send(plainRequest(Command::ReadState2, 3));
-    QTRY_VERIFY(rig.result(ticket));
+    QVERIFY(rig.runUntil([&] { return rig.result(ticket); }, 5000));
     const RequestResult &r = *rig.result(ticket);
     QCOMPARE(r.status, RequestStatus::Ok);
     QCOMPARE(r.attempts, 1);
@@ -94,11 +95,12 @@ void tst_BusWorker::timeoutThenRetry_data()
 void tst_BusWorker::timeoutThenRetry()
 {
     QFETCH(int, retries);
-    WorkerRig rig([](FakeTransport &t) { t.drives().add(3, Series::MF); });
+    WorkerRig rig([](FakeTransport &t) { t.drives().add(3, Series::MF); }, relaxedConfig(), 115200,
+                  RigTime::Manual);
     const quint64 silent =
         rig.send(plainRequest(Command::ReadState1, 9), Priority::Operator, retries);
     const quint64 after = rig.send(plainRequest(Command::ReadState1, 3));
-    QTRY_VERIFY_WITH_TIMEOUT(rig.result(after), 20000);
+    QVERIFY(rig.runUntil([&] { return rig.result(after); }, 20000));
     QCOMPARE(rig.result(silent)->status, RequestStatus::Timeout);
     QCOMPARE(rig.result(silent)->attempts, retries + 1);
     QVERIFY(!rig.result(silent)->reason.isEmpty());
@@ -112,15 +114,17 @@ void tst_BusWorker::timeoutThenRetry()
 
 void tst_BusWorker::retryRecoversAfterSilence()
 {
-    WorkerRig rig([](FakeTransport &t) {
-        t.drives().add(3, Series::MF);
-        FakeTransport *tp = &t;
-        t.setResponder([tp](const protocol::Frame &req, int index) {
-            return index == 0 ? QByteArray() : tp->defaultReply(req);
-        });
-    });
+    WorkerRig rig(
+        [](FakeTransport &t) {
+            t.drives().add(3, Series::MF);
+            FakeTransport *tp = &t;
+            t.setResponder([tp](const protocol::Frame &req, int index) {
+                return index == 0 ? QByteArray() : tp->defaultReply(req);
+            });
+        },
+        relaxedConfig(), 115200, RigTime::Manual);
     const quint64 ticket = rig.send(plainRequest(Command::ReadMultiTurn, 3), Priority::Operator, 1);
-    QTRY_VERIFY_WITH_TIMEOUT(rig.result(ticket), 10000);
+    QVERIFY(rig.runUntil([&] { return rig.result(ticket); }, 10000));
     QCOMPARE(rig.result(ticket)->status, RequestStatus::Ok);
     QCOMPARE(rig.result(ticket)->attempts, 2);
     QCOMPARE(std::get<protocol::MultiTurnAngle>(rig.result(ticket)->reply->payload).raw,
@@ -148,9 +152,9 @@ void tst_BusWorker::nonIdempotentCommandsAreNeverRetried()
     QFETCH(int, attempts);
     BusConfig c = relaxedConfig();
     c.minMarginMs = c.initialMarginMs = 10;
-    WorkerRig rig({}, c); // ID 9 is silent: every attempt times out
+    WorkerRig rig({}, c, 115200, RigTime::Manual); // ID 9 is silent: every attempt times out
     const quint64 t = rig.send(request, Priority::Operator, 2);
-    QTRY_VERIFY_WITH_TIMEOUT(rig.result(t), 10000);
+    QVERIFY(rig.runUntil([&] { return rig.result(t); }, 10000));
     QCOMPARE(rig.result(t)->status, RequestStatus::Timeout);
     QCOMPARE(rig.result(t)->attempts, attempts);
     QCOMPARE(rig.log->writtenCopy().size(), attempts);
@@ -159,26 +163,30 @@ void tst_BusWorker::nonIdempotentCommandsAreNeverRetried()
 void tst_BusWorker::silentCommandDoesNotStall()
 {
     // An MS drive does not answer read_state3: that is a timeout, and the queue moves on.
-    WorkerRig rig([](FakeTransport &t) { t.drives().add(5, Series::MS); });
+    WorkerRig rig([](FakeTransport &t) { t.drives().add(5, Series::MS); }, relaxedConfig(), 115200,
+                  RigTime::Manual);
     const quint64 s3 = rig.send(plainRequest(Command::ReadState3, 5), Priority::Operator, 0);
     const quint64 s2 = rig.send(plainRequest(Command::ReadState2, 5));
-    QTRY_VERIFY_WITH_TIMEOUT(rig.result(s2), 10000);
+    QVERIFY(rig.runUntil([&] { return rig.result(s2); }, 10000));
     QCOMPARE(rig.result(s3)->status, RequestStatus::Timeout);
     QCOMPARE(rig.result(s2)->status, RequestStatus::Ok);
 }
 
 void tst_BusWorker::operatorAheadOfBackground()
 {
-    WorkerRig rig([](FakeTransport &t) {
-        t.drives().add(1, Series::MF);
-        t.setReplyDelayMs(20);
-    });
+    WorkerRig rig(
+        [](FakeTransport &t) {
+            t.drives().add(1, Series::MF);
+            t.setReplyDelayMs(20);
+        },
+        relaxedConfig(), 115200, RigTime::Manual);
     rig.send(plainRequest(Command::ReadState1, 1), Priority::Background);
-    QTRY_COMPARE(rig.log->writtenCopy().size(), 1); // on the wire, waiting for its reply
+    rig.runUntil([&] { return rig.log->writtenCopy().size() == 1; }, 5000);
+    QCOMPARE(rig.log->writtenCopy().size(), 1); // on the wire, waiting for its reply
     for (int i = 0; i < 3; ++i)
         rig.send(plainRequest(Command::ReadState3, 1), Priority::Background);
     const quint64 op = rig.send(plainRequest(Command::ReadState2, 1), Priority::Operator);
-    QTRY_VERIFY_WITH_TIMEOUT(rig.results.size() == 5, 10000);
+    QVERIFY(rig.runUntil([&] { return rig.results.size() == 5; }, 10000));
     const auto order = rig.writtenRequests();
     QCOMPARE(order.size(), 5);
     QCOMPARE(order.at(1).first, Command::ReadState2);
@@ -189,16 +197,19 @@ void tst_BusWorker::operatorAheadOfBackground()
 
 void tst_BusWorker::emergencyStopOvertakesEverything()
 {
-    WorkerRig rig([](FakeTransport &t) {
-        t.drives().add(3, Series::MF);
-        t.drives().add(17, Series::MS);
-        t.setReplyDelayMs(20);
-    });
+    WorkerRig rig(
+        [](FakeTransport &t) {
+            t.drives().add(3, Series::MF);
+            t.drives().add(17, Series::MS);
+            t.setReplyDelayMs(20);
+        },
+        relaxedConfig(), 115200, RigTime::Manual);
     rig.worker->setSeries(3, Series::MF);
     rig.worker->setSeries(17, Series::MS);
     QSignalSpy finished(rig.worker.get(), &BusWorker::emergencyStopFinished);
     rig.send(plainRequest(Command::ReadState1, 3));
-    QTRY_COMPARE(rig.log->writtenCopy().size(), 1);
+    rig.runUntil([&] { return rig.log->writtenCopy().size() == 1; }, 5000);
+    QCOMPARE(rig.log->writtenCopy().size(), 1);
     const quint64 bg = rig.send(plainRequest(Command::ReadState2, 17), Priority::Background);
     protocol::Request speed = plainRequest(Command::Speed, 3);
     speed.payload = protocol::SpeedCommand{10000};
@@ -206,13 +217,14 @@ void tst_BusWorker::emergencyStopOvertakesEverything()
     const quint64 op = rig.send(plainRequest(Command::ReadState1, 17));
     rig.worker->emergencyStop(99, {});
 
-    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 20000);
+    rig.runUntil([&] { return finished.size() == 1; }, 20000);
+    QCOMPARE(finished.size(), 1);
     QCOMPARE(finished.at(0).at(0).toULongLong(), quint64(99));
     QCOMPARE(finished.at(0).at(1).value<QVector<int>>(), (QVector<int>{3, 17}));
     QCOMPARE(finished.at(0).at(2).value<QVector<int>>().size(), 30); // every other ID
     QCOMPARE(rig.result(motion)->status, RequestStatus::Cancelled);
     QCOMPARE(rig.resultCount(99), 32);
-    QTRY_VERIFY(rig.result(bg) && rig.result(op));
+    QVERIFY(rig.runUntil([&] { return rig.result(bg) && rig.result(op); }, 5000));
     const auto order = rig.writtenRequests();
     // In flight first, then motor_off to both known IDs, then to every other ID (once each:
     // they are not known), then the operator read, then polls.
@@ -230,10 +242,12 @@ void tst_BusWorker::emergencyStopWithNoKnownIdReachesAll()
 {
     BusConfig c = relaxedConfig();
     c.minMarginMs = c.initialMarginMs = 15;
-    WorkerRig rig([](FakeTransport &t) { t.drives().add(7, Series::MF); }, c);
+    WorkerRig rig([](FakeTransport &t) { t.drives().add(7, Series::MF); }, c, 115200,
+                  RigTime::Manual);
     QSignalSpy finished(rig.worker.get(), &BusWorker::emergencyStopFinished);
     rig.worker->emergencyStop(5, {});
-    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 30000);
+    rig.runUntil([&] { return finished.size() == 1; }, 30000);
+    QCOMPARE(finished.size(), 1);
     const auto acked = finished.at(0).at(1).value<QVector<int>>();
     const auto silent = finished.at(0).at(2).value<QVector<int>>();
     QCOMPARE(acked.size() + silent.size(), 32);
@@ -277,18 +291,20 @@ void tst_BusWorker::faultsAreCountedNotFatal()
     QFETCH(int, checksum);
     QFETCH(int, parse);
     QFETCH(int, attempts);
-    WorkerRig rig([&](FakeTransport &t) {
-        t.drives().add(3, Series::MF);
-        FakeTransport *tp = &t;
-        t.setResponder([tp, prefix, corruptFirstReply](const protocol::Frame &req, int index) {
-            QByteArray reply = tp->defaultReply(req);
-            if (corruptFirstReply && index == 0)
-                reply[reply.size() - 1] = char(reply.at(reply.size() - 1) ^ 0x5A);
-            return index == 0 ? prefix + reply : reply;
-        });
-    });
+    WorkerRig rig(
+        [&](FakeTransport &t) {
+            t.drives().add(3, Series::MF);
+            FakeTransport *tp = &t;
+            t.setResponder([tp, prefix, corruptFirstReply](const protocol::Frame &req, int index) {
+                QByteArray reply = tp->defaultReply(req);
+                if (corruptFirstReply && index == 0)
+                    reply[reply.size() - 1] = char(reply.at(reply.size() - 1) ^ 0x5A);
+                return index == 0 ? prefix + reply : reply;
+            });
+        },
+        relaxedConfig(), 115200, RigTime::Manual);
     const quint64 ticket = rig.send(plainRequest(Command::ReadState2, 3), Priority::Operator, 1);
-    QTRY_VERIFY_WITH_TIMEOUT(rig.result(ticket), 10000);
+    QVERIFY(rig.runUntil([&] { return rig.result(ticket); }, 10000));
     QCOMPARE(rig.result(ticket)->status, RequestStatus::Ok);
     QCOMPARE(rig.result(ticket)->attempts, attempts);
     const BusStatistics st = rig.worker->statisticsSnapshot();
@@ -303,17 +319,19 @@ void tst_BusWorker::faultsAreCountedNotFatal()
 
 void tst_BusWorker::disconnectFailsPendingOnce()
 {
-    WorkerRig rig([](FakeTransport &t) {
-        t.drives().add(1, Series::MF);
-        t.setReplyDelayMs(50);
-    });
+    WorkerRig rig(
+        [](FakeTransport &t) {
+            t.drives().add(1, Series::MF);
+            t.setReplyDelayMs(50);
+        },
+        relaxedConfig(), 115200, RigTime::Manual);
     QSignalSpy conn(rig.worker.get(), &BusWorker::connectionChanged);
     QSignalSpy errors(rig.worker.get(), &BusWorker::errorOccurred);
     rig.worker->startPolling(PollPlan::standard({1}));
     const quint64 a = rig.send(plainRequest(Command::ReadState1, 1));
     const quint64 b = rig.send(plainRequest(Command::ReadState2, 1));
     const quint64 c = rig.send(plainRequest(Command::ReadPid, 1), Priority::Background);
-    QTRY_VERIFY(!rig.log->writtenCopy().isEmpty());
+    QVERIFY(rig.runUntil([&] { return !rig.log->writtenCopy().isEmpty(); }, 5000));
     rig.transport->unplug();
     for (quint64 t : {a, b, c}) {
         QVERIFY(rig.result(t));
@@ -326,7 +344,7 @@ void tst_BusWorker::disconnectFailsPendingOnce()
              transport::Transport::State::Disconnected);
     // Nothing goes out while disconnected; polls are suspended, not lost.
     const int writes = rig.log->writtenCopy().size();
-    QTest::qWait(200);
+    rig.timers->advance(200);
     QCOMPARE(rig.log->writtenCopy().size(), writes);
     for (quint64 t : {a, b, c})
         QCOMPARE(rig.resultCount(t), 1);
@@ -334,9 +352,10 @@ void tst_BusWorker::disconnectFailsPendingOnce()
     rig.worker->reconnect();
     QVERIFY(rig.worker->isOpen());
     const quint64 d = rig.send(plainRequest(Command::ReadState1, 1));
-    QTRY_VERIFY_WITH_TIMEOUT(rig.result(d), 10000);
+    QVERIFY(rig.runUntil([&] { return rig.result(d); }, 10000));
     QCOMPARE(rig.result(d)->status, RequestStatus::Ok);
-    QTRY_VERIFY(rig.log->writtenCopy().size() > writes + 3); // polling resumed
+    QVERIFY(rig.runUntil([&] { return rig.log->writtenCopy().size() > writes + 3; },
+                         5000)); // polling resumed
 }
 
 void tst_BusWorker::localEchoIsSkipped_data()
@@ -364,10 +383,10 @@ void tst_BusWorker::localEchoIsSkipped()
             t.setLocalEcho(true);
             t.setReplyDelayMs(20); // the drive answers after the adapter's echo
         },
-        c);
+        c, 115200, RigTime::Manual);
     const quint64 ticket = rig.send(request);
     const quint64 next = rig.send(plainRequest(Command::ReadState1, 2));
-    QTRY_VERIFY_WITH_TIMEOUT(rig.result(next), 10000);
+    QVERIFY(rig.runUntil([&] { return rig.result(next); }, 10000));
     QCOMPARE(rig.result(ticket)->status, RequestStatus::Ok);
     QCOMPARE(rig.result(next)->status, RequestStatus::Ok);
     const BusStatistics st = rig.worker->statisticsSnapshot();
@@ -385,12 +404,13 @@ void tst_BusWorker::lateReplyWidensMargin()
             t.drives().add(1, Series::MF);
             t.setReplyDelayMs(150);
         },
-        c);
+        c, 115200, RigTime::Manual);
     const double before = rig.worker->currentMarginMs();
     const quint64 ticket = rig.send(plainRequest(Command::ReadState1, 1), Priority::Operator, 0);
-    QTRY_VERIFY(rig.result(ticket));
+    QVERIFY(rig.runUntil([&] { return rig.result(ticket); }, 5000));
     QCOMPARE(rig.result(ticket)->status, RequestStatus::Timeout);
-    QTRY_COMPARE(rig.worker->statisticsSnapshot().bus.lateReplies, quint64(1));
+    rig.runUntil([&] { return rig.worker->statisticsSnapshot().bus.lateReplies == 1; }, 5000);
+    QCOMPARE(rig.worker->statisticsSnapshot().bus.lateReplies, quint64(1));
     QVERIFY2(rig.worker->currentMarginMs() > 3 * before,
              qPrintable(QString::number(rig.worker->currentMarginMs())));
     QVERIFY(rig.worker->currentMarginMs() <= c.maxMarginMs);
@@ -410,7 +430,7 @@ void tst_BusWorker::quietPeriodHoldsTheRetry()
 {
     // ID 9 is silent. Timeout ~43 ms after the write, then a quiet period of at least 40 ms
     // (the margin floor): a marker timer due at 64 ms from the write fires before the quiet
-    // ends, whatever the machine's load, since timers of one thread fire in due order.
+    // ends (the test's clock fires timers in due order).
     auto markerFired = std::make_shared<bool>(false);
     auto firedAtRetry = std::make_shared<std::optional<bool>>();
     WorkerRig rig(
@@ -418,15 +438,15 @@ void tst_BusWorker::quietPeriodHoldsTheRetry()
             FakeTransport *tp = &t;
             t.setResponder([=](const protocol::Frame &, int index) {
                 if (index == 0)
-                    QTimer::singleShot(64, tp, [markerFired] { *markerFired = true; });
+                    tp->after(64, [markerFired] { *markerFired = true; });
                 else if (index == 1)
                     *firedAtRetry = *markerFired;
                 return QByteArray();
             });
         },
-        quietTestConfig());
+        quietTestConfig(), 115200, RigTime::Manual);
     const quint64 t = rig.send(plainRequest(Command::ReadState1, 9), Priority::Operator, 1);
-    QTRY_VERIFY_WITH_TIMEOUT(rig.result(t), 10000);
+    QVERIFY(rig.runUntil([&] { return rig.result(t); }, 10000));
     QCOMPARE(rig.result(t)->status, RequestStatus::Timeout);
     QCOMPARE(rig.result(t)->attempts, 2);
     QVERIFY(firedAtRetry->has_value());
@@ -452,9 +472,8 @@ void tst_BusWorker::lateReplyInQuietPeriodIsCountedNotMatched()
                     const QByteArray late = tp->defaultReply(req);
                     // Emitted directly (not through inject(), which queues once more): the
                     // bytes arrive exactly in timer order.
-                    QTimer::singleShot(60, tp,
-                                       [tp, late] { emit tp->bytesReceived(late.left(4)); });
-                    QTimer::singleShot(95, tp, [tp, late] { emit tp->bytesReceived(late.mid(4)); });
+                    tp->after(60, [tp, late] { emit tp->bytesReceived(late.left(4)); });
+                    tp->after(95, [tp, late] { emit tp->bytesReceived(late.mid(4)); });
                     return QByteArray();
                 }
                 if (index == 1)
@@ -462,11 +481,11 @@ void tst_BusWorker::lateReplyInQuietPeriodIsCountedNotMatched()
                 return tp->defaultReply(req);
             });
         },
-        quietTestConfig());
+        quietTestConfig(), 115200, RigTime::Manual);
     worker = rig.worker.get();
     const quint64 first = rig.send(plainRequest(Command::ReadState1, 1), Priority::Operator, 0);
     const quint64 next = rig.send(plainRequest(Command::ReadState1, 2), Priority::Operator, 0);
-    QTRY_VERIFY_WITH_TIMEOUT(rig.result(next), 10000);
+    QVERIFY(rig.runUntil([&] { return rig.result(next); }, 10000));
     QCOMPARE(rig.result(first)->status, RequestStatus::Timeout);
     QVERIFY(lateSeenAtNextWrite->has_value());
     QCOMPARE(**lateSeenAtNextWrite, quint64(1)); // the whole late reply came before the write

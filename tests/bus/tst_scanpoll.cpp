@@ -4,7 +4,6 @@
 #include <bus/BusWorker.h>
 #include <bus/Scanner.h>
 
-#include <QtCore/QElapsedTimer>
 #include <QtCore/QSet>
 #include <QtTest/QSignalSpy>
 #include <QtTest/QTest>
@@ -43,7 +42,9 @@ int samplesIn(const QSignalSpy &spy, int id, TelemetryField field)
 }
 } // namespace
 
-/// Scanner and polling on a BusWorker over a scripted FakeTransport.
+/// Scanner and polling on a BusWorker over a scripted FakeTransport, on a clock the test
+/// advances (RigTime::Manual): probe timeouts, late replies and poll pacing do not depend on
+/// the machine's load.
 class tst_ScanPoll : public QObject {
     Q_OBJECT
 private slots:
@@ -98,7 +99,7 @@ void tst_ScanPoll::seriesInference()
 
 void tst_ScanPoll::scanFindsExactlyTheAnsweringIds()
 {
-    WorkerRig rig(addDrives, scanConfig());
+    WorkerRig rig(addDrives, scanConfig(), 115200, RigTime::Manual);
     rig.worker->setSeries(5, Series::MF); // known before, silent now: forgotten by the scan
     QSignalSpy found(rig.worker.get(), &BusWorker::motorFound);
     QSignalSpy progress(rig.worker.get(), &BusWorker::scanProgress);
@@ -106,7 +107,8 @@ void tst_ScanPoll::scanFindsExactlyTheAnsweringIds()
     ScanOptions o;
     o.retries = 1; // a loaded machine may delay a reply past the margin once
     rig.worker->scan(o);
-    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 60000);
+    rig.runUntil([&] { return finished.size() == 1; }, 60000);
+    QCOMPARE(finished.size(), 1);
     const auto summary = finished.at(0).at(0).value<ScanSummary>();
     QVERIFY(!summary.cancelled);
     QVERIFY(summary.error.isEmpty());
@@ -139,20 +141,21 @@ void tst_ScanPoll::scanFindsExactlyTheAnsweringIds()
 
 void tst_ScanPoll::scanHonoursCancel()
 {
-    WorkerRig rig(addDrives, scanConfig());
+    WorkerRig rig(addDrives, scanConfig(), 115200, RigTime::Manual);
     QSignalSpy progress(rig.worker.get(), &BusWorker::scanProgress);
     QSignalSpy finished(rig.worker.get(), &BusWorker::scanFinished);
     ScanOptions o;
     o.retries = 1; // a loaded machine may delay a reply past the margin once
     rig.worker->scan(o);
-    QTRY_VERIFY_WITH_TIMEOUT(progress.size() >= 2, 20000);
+    QVERIFY(rig.runUntil([&] { return progress.size() >= 2; }, 20000));
     rig.worker->cancelScan();
-    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 20000);
+    rig.runUntil([&] { return finished.size() == 1; }, 20000);
+    QCOMPARE(finished.size(), 1);
     const auto summary = finished.at(0).at(0).value<ScanSummary>();
     QVERIFY(summary.cancelled);
     QVERIFY(progress.last().at(0).value<ScanProgress>().done < 32);
     const int writes = rig.log->writtenCopy().size();
-    QTest::qWait(300);
+    rig.timers->advance(300);
     QCOMPARE(rig.log->writtenCopy().size(), writes); // nothing more goes out
     QVERIFY(!rig.worker->isScanning());
 }
@@ -168,7 +171,7 @@ void tst_ScanPoll::scanBaudSweepStaysWhereDrivesAnswer()
                 return tp->baud() == 38400 ? tp->defaultReply(req) : QByteArray();
             });
         },
-        scanConfig());
+        scanConfig(), 115200, RigTime::Manual);
     QSignalSpy finished(rig.worker.get(), &BusWorker::scanFinished);
     ScanOptions o;
     o.firstId = 1;
@@ -177,7 +180,8 @@ void tst_ScanPoll::scanBaudSweepStaysWhereDrivesAnswer()
     o.bauds = {9600, 38400, 115200};
     o.retries = 1;
     rig.worker->scan(o);
-    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 60000);
+    rig.runUntil([&] { return finished.size() == 1; }, 60000);
+    QCOMPARE(finished.size(), 1);
     const auto summary = finished.at(0).at(0).value<ScanSummary>();
     QVERIFY2(summary.error.isEmpty(), qPrintable(summary.error));
     QCOMPARE(summary.motors.size(), 1);
@@ -194,7 +198,7 @@ void tst_ScanPoll::scanBaudSweepStaysWhereDrivesAnswer()
 
 void tst_ScanPoll::scanRejectsBadRange()
 {
-    WorkerRig rig(addDrives, scanConfig());
+    WorkerRig rig(addDrives, scanConfig(), 115200, RigTime::Manual);
     QSignalSpy finished(rig.worker.get(), &BusWorker::scanFinished);
     ScanOptions o;
     o.firstId = 0;
@@ -221,13 +225,14 @@ void tst_ScanPoll::scanReprobesACorruptReply()
                 return reply;
             });
         },
-        scanConfig());
+        scanConfig(), 115200, RigTime::Manual);
     QSignalSpy finished(rig.worker.get(), &BusWorker::scanFinished);
     ScanOptions o;
     o.lastId = 3;
     o.retries = 0;
     rig.worker->scan(o);
-    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 20000);
+    rig.runUntil([&] { return finished.size() == 1; }, 20000);
+    QCOMPARE(finished.size(), 1);
     const auto summary = finished.at(0).at(0).value<ScanSummary>();
     QCOMPARE(summary.motors.size(), 1);
     QCOMPARE(summary.motors.at(0).id, 2);
@@ -237,10 +242,11 @@ void tst_ScanPoll::scanReprobesACorruptReply()
 
 void tst_ScanPoll::scanFastLinkProbesEachIdOnce()
 {
-    WorkerRig rig(addDrives, scanConfig());
+    WorkerRig rig(addDrives, scanConfig(), 115200, RigTime::Manual);
     QSignalSpy finished(rig.worker.get(), &BusWorker::scanFinished);
     rig.worker->scan(ScanOptions{});
-    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 60000);
+    rig.runUntil([&] { return finished.size() == 1; }, 60000);
+    QCOMPARE(finished.size(), 1);
     int probes = 0;
     for (const auto &w : rig.writtenRequests())
         probes += w.first == Command::ReadState1 ? 1 : 0;
@@ -267,10 +273,11 @@ void tst_ScanPoll::scanSlowLinkIsCompleteWithSecondPass()
             addDrives(t);
             t.setReplyDelayMs(40);
         },
-        c);
+        c, 115200, RigTime::Manual);
     QSignalSpy finished(rig.worker.get(), &BusWorker::scanFinished);
     rig.worker->scan(ScanOptions{});
-    QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 120000);
+    rig.runUntil([&] { return finished.size() == 1; }, 120000);
+    QCOMPARE(finished.size(), 1);
     const auto summary = finished.at(0).at(0).value<ScanSummary>();
     QVERIFY2(summary.error.isEmpty(), qPrintable(summary.error));
     QSet<int> found;
@@ -284,19 +291,24 @@ void tst_ScanPoll::scanSlowLinkIsCompleteWithSecondPass()
 
 void tst_ScanPoll::pollingSkipsUnsupportedAndBatches()
 {
-    WorkerRig rig([](FakeTransport &t) {
-        t.drives().add(1, Series::MF);
-        t.drives().add(2, Series::MS);
-    });
+    WorkerRig rig(
+        [](FakeTransport &t) {
+            t.drives().add(1, Series::MF);
+            t.drives().add(2, Series::MS);
+            // Every reply takes time, as on a wire: the clock only moves on timers, and
+            // replies in no time would poll without end between two of them.
+            t.setReplyDelayMs(2);
+        },
+        relaxedConfig(), 115200, RigTime::Manual);
     rig.worker->setSeries(1, Series::MF);
     rig.worker->setSeries(2, Series::MS);
     QSignalSpy batches(rig.worker.get(), &BusWorker::telemetryReceived);
-    QElapsedTimer clock;
-    clock.start();
+    const double startMs = rig.nowMs();
     rig.worker->startPolling(PollPlan::standard({1, 2}));
-    QTRY_VERIFY_WITH_TIMEOUT(samplesIn(batches, 2, TelemetryField::MultiTurn) >= 20, 30000);
+    QVERIFY(rig.runUntil([&] { return samplesIn(batches, 2, TelemetryField::MultiTurn) >= 20; },
+                         30000));
     rig.worker->stopPolling();
-    const double elapsed = clock.nsecsElapsed() * 1e-9;
+    const double elapsed = (rig.nowMs() - startMs) * 1e-3;
 
     QVERIFY(samplesIn(batches, 1, TelemetryField::IqA) > 0);
     QVERIFY(samplesIn(batches, 1, TelemetryField::PhaseCurrents) > 0);
@@ -321,35 +333,36 @@ void tst_ScanPoll::pollingSkipsUnsupportedAndBatches()
 void tst_ScanPoll::pollingContinuesPastSilentCommands()
 {
     // Series not declared: read_state3 is polled, the MS drive stays silent, polling goes on.
-    WorkerRig rig([](FakeTransport &t) { t.drives().add(5, Series::MS); });
+    WorkerRig rig([](FakeTransport &t) { t.drives().add(5, Series::MS); }, relaxedConfig(), 115200,
+                  RigTime::Manual);
     QSignalSpy batches(rig.worker.get(), &BusWorker::telemetryReceived);
     PollPlan p = PollPlan::standard({5});
     p.commands = {Command::ReadState3, Command::ReadState2};
     rig.worker->startPolling(p);
-    QTRY_VERIFY_WITH_TIMEOUT(samplesIn(batches, 5, TelemetryField::Speed) >= 3, 30000);
+    QVERIFY(rig.runUntil([&] { return samplesIn(batches, 5, TelemetryField::Speed) >= 3; }, 30000));
     QVERIFY(rig.worker->statisticsSnapshot().perId.value(5).timeouts >= 2);
 }
 
 void tst_ScanPoll::pollingHonoursRateAndStops()
 {
-    WorkerRig rig([](FakeTransport &t) { t.drives().add(1, Series::MF); });
+    WorkerRig rig([](FakeTransport &t) { t.drives().add(1, Series::MF); }, relaxedConfig(), 115200,
+                  RigTime::Manual);
     QSignalSpy polling(rig.worker.get(), &BusWorker::pollingChanged);
-    QElapsedTimer clock;
-    clock.start();
+    const double startMs = rig.nowMs();
     PollPlan p = PollPlan::standard({1}, 20);
     p.commands = {Command::ReadState2};
     rig.worker->startPolling(p);
-    QTRY_VERIFY_WITH_TIMEOUT(rig.log->writtenCopy().size() >= 5, 20000);
-    QTest::qWait(200);
-    const double elapsed = clock.nsecsElapsed() * 1e-9;
+    QVERIFY(rig.runUntil([&] { return rig.log->writtenCopy().size() >= 5; }, 20000));
+    rig.timers->advance(200);
+    const double elapsed = (rig.nowMs() - startMs) * 1e-3;
     const int polls = rig.log->writtenCopy().size();
     QVERIFY2(polls <= elapsed * 20 + 2,
              qPrintable(QStringLiteral("%1 polls in %2 s").arg(polls).arg(elapsed)));
     rig.worker->stopPolling();
     QCOMPARE(polling.last().at(0).toBool(), false);
-    QTest::qWait(100); // a poll already on the wire may still complete
+    rig.timers->advance(100); // a poll already on the wire may still complete
     const int after = rig.log->writtenCopy().size();
-    QTest::qWait(300);
+    rig.timers->advance(300);
     QCOMPARE(rig.log->writtenCopy().size(), after);
 }
 
