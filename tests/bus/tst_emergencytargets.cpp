@@ -120,19 +120,19 @@ void tst_EmergencyTargets::stopDuringScanReachesEveryDrive()
                 t.drives().add(id, Series::MF);
             t.setReplyDelayMs(1);
         },
-        c);
-    QTRY_VERIFY(rig.worker->isOpen());
+        c, 115200, RigTime::Manual);
+    QVERIFY(rig.runUntil([&] { return rig.worker->isOpen(); }));
     QSignalSpy scanned(rig.worker.get(), &BusWorker::scanFinished);
     QSignalSpy stopped(rig.worker.get(), &BusWorker::emergencyStopFinished);
     rig.worker->forgetMotors();
     rig.worker->scan({});
     if (probesBeforeStop > 0)
-        QTRY_VERIFY(rig.log->writtenCopy().size() >= probesBeforeStop);
+        QVERIFY(rig.runUntil([&] { return rig.log->writtenCopy().size() >= probesBeforeStop; }));
     rig.worker->emergencyStop(42, {});
     QVERIFY(!rig.worker->isScanning() || rig.worker->isBusy()); // ends with the probe in flight
-    QTRY_COMPARE_WITH_TIMEOUT(stopped.size(), 1, 20000);
+    QVERIFY(rig.runUntil([&] { return stopped.size() == 1; }, 20000));
     QCOMPARE(stopped.at(0).at(1).value<QVector<int>>(), (QVector<int>{1, 2, 3, 4}));
-    QTRY_COMPARE(scanned.size(), 1);
+    QVERIFY(rig.runUntil([&] { return scanned.size() == 1; }, 5000));
     QVERIFY(scanned.at(0).at(0).value<ScanSummary>().cancelled);
 
     const auto written = rig.writtenRequests();

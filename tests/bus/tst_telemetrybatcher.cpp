@@ -8,6 +8,7 @@
 using lk::bus::TelemetryBatch;
 using lk::bus::TelemetryBatcher;
 using lk::bus::TelemetrySample;
+using lk::testsupport::ManualClock;
 using lk::testsupport::ManualTimers;
 
 namespace {
@@ -34,25 +35,30 @@ private slots:
 
 void tst_TelemetryBatcher::samplesArriveAsOneBatch()
 {
-    TelemetryBatcher b;
+    ManualTimers timers(std::make_shared<ManualClock>());
+    TelemetryBatcher b(nullptr, timers.factory());
     b.setRateHz(20);
     QSignalSpy ready(&b, &TelemetryBatcher::batchReady);
     for (int i = 0; i < 5; ++i)
         b.add(sample(i + 1, i * 0.001));
+    timers.advance(49);
     QCOMPARE(ready.count(), 0); // nothing until the interval has passed
-    QTRY_COMPARE_WITH_TIMEOUT(ready.count(), 1, 10000);
+    timers.advance(1);
+    QCOMPARE(ready.count(), 1);
     const auto batch = ready.at(0).at(0).value<TelemetryBatch>();
     QCOMPARE(batch.size(), 5);
     for (int i = 0; i < 5; ++i)
         QCOMPARE(batch.at(i).id, i + 1);
     b.add(sample(9, 1.0)); // the next sample starts the next batch
-    QTRY_COMPARE_WITH_TIMEOUT(ready.count(), 2, 10000);
+    timers.advance(50);
+    QCOMPARE(ready.count(), 2);
     QCOMPARE(ready.at(1).at(0).value<TelemetryBatch>().size(), 1);
 }
 
 void tst_TelemetryBatcher::flushHandsOnAtOnceAndNothingWhenEmpty()
 {
-    TelemetryBatcher b;
+    ManualTimers timers(std::make_shared<ManualClock>());
+    TelemetryBatcher b(nullptr, timers.factory());
     b.setRateHz(1); // a second: flush() must not wait for it
     QSignalSpy ready(&b, &TelemetryBatcher::batchReady);
     b.flush();
@@ -60,7 +66,7 @@ void tst_TelemetryBatcher::flushHandsOnAtOnceAndNothingWhenEmpty()
     b.add(sample(3, 0));
     b.flush();
     QCOMPARE(ready.count(), 1);
-    QTest::qWait(1200); // the stopped clock sends no second, empty batch
+    timers.advance(1200); // the stopped clock sends no second, empty batch
     QCOMPARE(ready.count(), 1);
 }
 
