@@ -12,6 +12,7 @@ public:
     QtSingleShotTimer(QObject *owner, std::function<void()> onTimeout) : m_timer(new QTimer(owner))
     {
         m_timer->setSingleShot(true);
+        m_timer->setTimerType(Qt::PreciseTimer); // a coarse timer may be 5 % late
         QObject::connect(m_timer, &QTimer::timeout, owner, std::move(onTimeout));
     }
     ~QtSingleShotTimer() override { delete m_timer.data(); } // null if the owner went first
