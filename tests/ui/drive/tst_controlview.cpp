@@ -11,6 +11,7 @@
 
 #include <QtCore/QSettings>
 #include <QtCore/QTemporaryDir>
+#include <QtCore/QThread>
 #include <QtTest/QtTest>
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
@@ -70,6 +71,7 @@ private slots:
     void keyboardJogNotInTextField();
     void generatorStartsAndStopStops();
     void generatorStopsOnDriveChange();
+    void generatorKeepsPaceWhileTheGuiIsBusy();
     void generatorWaveforms_data();
     void generatorWaveforms();
 };
@@ -632,6 +634,28 @@ void tst_ControlView::generatorStopsOnDriveChange()
     QVERIFY(view->generator()->isRunning());
     view->setConnected(false);
     QVERIFY(!view->generator()->isRunning());
+}
+
+void tst_ControlView::generatorKeepsPaceWhileTheGuiIsBusy()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    SetpointWaveform::Settings s;
+    s.target = SetpointWaveform::Target::Speed;
+    s.rateHz = 20;
+    view->startGenerator(s);
+    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::Speed) >= 1, kWaitMs);
+    // The GUI thread is busy for 600 ms (12 ticks at 20 Hz): the bus thread paces setpoints
+    // on its own, so they keep going out meanwhile instead of waiting for the GUI.
+    const int before = rig.count(1, Command::Speed);
+    QThread::msleep(600);
+    QVERIFY2(rig.count(1, Command::Speed) - before >= 4,
+             qPrintable(QString::number(rig.count(1, Command::Speed) - before)));
+    view->stopGenerator();
+    QVERIFY(!view->generator()->isRunning());
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::MotorStop), 1);
 }
 
 void tst_ControlView::generatorWaveforms_data()
