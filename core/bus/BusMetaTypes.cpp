@@ -7,6 +7,8 @@
 #include "PollPlan.h"
 #include "RequestResult.h"
 #include "ScanTypes.h"
+#include "SetpointStop.h"
+#include "SetpointStreamPlan.h"
 #include "TelemetrySample.h"
 #include "TrafficEvent.h"
 
@@ -32,6 +34,8 @@ void registerBusMetaTypes()
         qRegisterMetaType<TrafficEvent>("lk::bus::TrafficEvent");
         qRegisterMetaType<TrafficBatch>("lk::bus::TrafficBatch");
         qRegisterMetaType<PollPlan>("lk::bus::PollPlan");
+        qRegisterMetaType<SetpointStreamPlan>("lk::bus::SetpointStreamPlan");
+        qRegisterMetaType<SetpointStop>("lk::bus::SetpointStop");
         qRegisterMetaType<BusConfig>("lk::bus::BusConfig");
         qRegisterMetaType<transport::TransportError>("lk::transport::TransportError");
         qRegisterMetaType<QVector<int>>("QVector<int>");

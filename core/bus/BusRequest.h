@@ -12,7 +12,7 @@
 namespace lk::bus {
 
 /// Where a queued request came from: decides who hears about its end.
-enum class RequestOrigin { User, Emergency, Poll, Scan };
+enum class RequestOrigin { User, Emergency, Poll, Scan, Setpoint };
 
 /// A request as queued on the bus thread.
 struct BusRequest {

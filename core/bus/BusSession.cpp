@@ -64,6 +64,8 @@ void BusSession::connectWorker()
     relay(&BusWorker::motorFound, &BusSession::motorFound);
     relay(&BusWorker::scanFinished, &BusSession::scanFinished);
     relay(&BusWorker::pollingChanged, &BusSession::pollingChanged);
+    relay(&BusWorker::setpointStreamStarted, &BusSession::setpointStreamStarted);
+    relay(&BusWorker::setpointStreamStopped, &BusSession::setpointStreamStopped);
     relay(&BusWorker::telemetryReceived, &BusSession::telemetryReceived);
     relay(&BusWorker::statisticsUpdated, &BusSession::statisticsUpdated);
     relay(&BusWorker::trafficCaptured, &BusSession::trafficCaptured);
@@ -285,6 +287,26 @@ void BusSession::postPollPlan()
         post([w = m_worker, p = *plan] { w->startPolling(p); });
     else
         post([w = m_worker] { w->stopPolling(); });
+}
+
+quint64 BusSession::startSetpointStream(SetpointStreamPlan plan)
+{
+    plan.stream = m_nextStream++;
+    if (!m_worker) {
+        SetpointStop s;
+        s.stream = plan.stream;
+        s.reason = SetpointStopReason::Closed;
+        QMetaObject::invokeMethod(
+            this, [this, s] { emit setpointStreamStopped(s); }, Qt::QueuedConnection);
+        return plan.stream;
+    }
+    post([w = m_worker, plan] { w->startSetpointStream(plan); });
+    return plan.stream;
+}
+
+void BusSession::stopSetpointStream()
+{
+    post([w = m_worker] { w->stopSetpointStream(); });
 }
 
 void BusSession::setSeries(int id, protocol::Series series)

@@ -9,6 +9,8 @@
 #include "Priority.h"
 #include "RequestResult.h"
 #include "ScanTypes.h"
+#include "SetpointStop.h"
+#include "SetpointStreamPlan.h"
 #include "TelemetrySample.h"
 #include "TicketCallbacks.h"
 #include "TrafficEvent.h"
@@ -108,6 +110,17 @@ public:
     /// when neither is there.
     std::optional<PollPlan> effectivePollPlan() const;
 
+    /// Run the setpoint stream of `plan` on the bus thread (SetpointStream: paced there, each
+    /// setpoint checked with the plan's limits before it is queued), replacing a running one.
+    /// Returns its handle (plan.stream is set to it), repeated in setpointStreamStarted and
+    /// setpointStreamStopped. A closed session stops it at once (SetpointStopReason::Closed).
+    /// An emergency stop, a disconnect, close() and a reopen at another baud stop it on the
+    /// bus thread before anything else happens.
+    quint64 startSetpointStream(SetpointStreamPlan plan);
+    /// Stop the running stream; its setpoint still queued is dropped, one on the wire may
+    /// finish. Sends nothing: the caller decides whether the drive is stopped too.
+    void stopSetpointStream();
+
     /// Tell the bus how to decode replies from `id` (iq vs power); also makes `id` known.
     void setSeries(int id, protocol::Series series);
     /// Forget every known ID (e.g. before telling the bus a new set by hand).
@@ -135,6 +148,9 @@ signals:
     void scanFinished(const lk::bus::ScanSummary &summary);
     void knownMotorsChanged(const lk::bus::KnownMotors &motors);
     void pollingChanged(bool active); ///< polling started, stopped, suspended or resumed
+    void setpointStreamStarted(quint64 stream);
+    /// Why the stream ended and what it sent (also after stopSetpointStream()).
+    void setpointStreamStopped(const lk::bus::SetpointStop &stop);
     /// Samples from every reply that carries telemetry (polls and operator commands alike).
     void telemetryReceived(const lk::bus::TelemetryBatch &batch);
     void statisticsUpdated(const lk::bus::BusStatistics &statistics);
@@ -165,6 +181,7 @@ private:
     };
     QMap<quint64, PollExtras> m_pollExtras; ///< by handle
     quint64 m_nextExtrasHandle = 1;
+    quint64 m_nextStream = 1;
     TicketCallbacks<RequestResult> m_requestCallbacks;
     TicketCallbacks<QVector<int>, QVector<int>> m_stopCallbacks;
 };

@@ -63,6 +63,9 @@ BusWorker::BusWorker(TransportFactory factory, int baud, const BusConfig &config
         Qt::CoarseTimer);
     m_telemetry.setRateHz(config.telemetryHz);
     connect(&m_telemetry, &TelemetryBatcher::batchReady, this, &BusWorker::telemetryReceived);
+    connect(&m_setpoints, &SetpointStream::started, this, &BusWorker::setpointStreamStarted);
+    connect(&m_setpoints, &SetpointStream::stopped, this, &BusWorker::setpointStreamStopped);
+    connect(&m_setpoints, &SetpointStream::setpointCompleted, this, &BusWorker::requestCompleted);
     m_poller.setSeriesLookup([this](int id) { return seriesOf(id); });
     m_reported.baud = baud;
 }
@@ -130,6 +133,7 @@ bool BusWorker::reopenAt(int baud)
 {
     if (m_shutDown)
         return false;
+    m_setpoints.stop(SetpointStopReason::BusChanged);
     abortInflight(RequestStatus::Cancelled, tr("the port was reopened at another baud"));
     m_matcher.reset();
     m_recentLatency.clear(); // another baud, other latencies
@@ -482,6 +486,8 @@ void BusWorker::abortInflight(RequestStatus status, const QString &reason)
 
 void BusWorker::failAll(RequestStatus status, const QString &reason)
 {
+    m_setpoints.stop(status == RequestStatus::Disconnected ? SetpointStopReason::Disconnected
+                                                           : SetpointStopReason::Closed);
     abortInflight(status, reason);
     cancelQueued([](const Pending &) { return true; }, status, reason);
 }
@@ -582,6 +588,8 @@ void BusWorker::noteReply(const protocol::Reply &reply, double time, const Pendi
 
 void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command halt)
 {
+    // The setpoint stream first: no setpoint may follow the stop, whatever the GUI does.
+    m_setpoints.stop(SetpointStopReason::EmergencyStop);
     if (halt != Command::MotorStop)
         halt = Command::MotorOff; // nothing else may ride in this lane
     // A running scan would go on probing (and a baud sweep reopening the port) behind the
@@ -653,6 +661,19 @@ void BusWorker::stopPolling()
     m_pollSuspended = false;
     if (was)
         emit pollingChanged(false);
+}
+
+void BusWorker::startSetpointStream(const SetpointStreamPlan &plan)
+{
+    m_setpoints.start(plan);
+}
+
+void BusWorker::stopSetpointStream()
+{
+    m_setpoints.stop(SetpointStopReason::Requested);
+    // A setpoint still queued would go out after the stop the caller sends next.
+    cancelQueued([](const Pending &p) { return p.req.origin == RequestOrigin::Setpoint; },
+                 RequestStatus::Cancelled, tr("setpoint stream stopped"));
 }
 
 void BusWorker::setPollingSuspended(bool suspended)

@@ -17,6 +17,9 @@
 #include "RequestQueue.h"
 #include "RequestResult.h"
 #include "ScanTypes.h"
+#include "SetpointStop.h"
+#include "SetpointStream.h"
+#include "SetpointStreamPlan.h"
 #include "SingleShotTimer.h"
 #include "StatisticsCollector.h"
 #include "TelemetryBatcher.h"
@@ -61,6 +64,10 @@ class Scanner;
 /// (motor_off, ...) the first identical frame is taken as the reply, unless
 /// BusConfig::localEcho says the adapter echoes, in which case the first one is skipped.
 ///
+/// Setpoints for tuning come from a SetpointStream, a command source beside the poll
+/// scheduler that queues at Operator priority. emergencyStop() stops it before its first
+/// motor_off is queued; a disconnect, shutdown and a reopen stop it too.
+///
 /// All public functions must be called on the worker's thread (BusSession posts them).
 class BusWorker : public QObject {
     Q_OBJECT
@@ -92,6 +99,11 @@ public:
     bool isScanning() const;
     void startPolling(const PollPlan &plan);
     void stopPolling();
+    /// Runs a setpoint stream (SetpointStream), replacing a running one.
+    void startSetpointStream(const SetpointStreamPlan &plan);
+    /// Stops the stream and drops its setpoint still queued (one on the wire may finish).
+    void stopSetpointStream();
+    SetpointStream &setpointStream() { return m_setpoints; }
     void setSeries(int id, protocol::Series series);
     void learnModel(int id, const protocol::ModelInfo &model,
                     std::optional<protocol::Series> series);
@@ -137,6 +149,8 @@ signals:
     void scanFinished(const lk::bus::ScanSummary &summary);
     void knownMotorsChanged(const lk::bus::KnownMotors &motors);
     void pollingChanged(bool active);
+    void setpointStreamStarted(quint64 stream);
+    void setpointStreamStopped(const lk::bus::SetpointStop &stop);
     void telemetryReceived(const lk::bus::TelemetryBatch &batch);
     void statisticsUpdated(const lk::bus::BusStatistics &statistics);
     void trafficCaptured(const lk::bus::TrafficBatch &batch);
@@ -218,6 +232,7 @@ private:
     Scanner *m_scanner = nullptr;
     MotorRegistry m_motors;
     TelemetryBatcher m_telemetry;
+    SetpointStream m_setpoints{*this, m_timers};
     ConnectionStatus m_reported;
     QString m_lastError;
 

@@ -83,6 +83,10 @@
         <source>drive %1 speaks protocol V2.3, which has no %2 (firmware 2.35 added it); nothing was sent</source>
         <translation>驱动器 %1 使用 V2.3 协议，该协议没有 %2（2.35 固件才加入）；未发送任何内容</translation>
     </message>
+    <message>
+        <source>setpoint stream stopped</source>
+        <translation>设定值流已停止</translation>
+    </message>
 </context>
 <context>
     <name>lk::bus::Scanner</name>
@@ -1853,6 +1857,34 @@
     <message>
         <source>Refused: a move of %1° is more than one output turn (%2°). Move in smaller steps.</source>
         <translation>已拒绝：移动 %1° 超过输出轴一圈（%2°）。请分小步移动。</translation>
+    </message>
+    <message>
+        <source>Stopped by the user.</source>
+        <translation>已被用户停止。</translation>
+    </message>
+    <message>
+        <source>Stopped: another waveform started.</source>
+        <translation>已停止：另一个波形已启动。</translation>
+    </message>
+    <message>
+        <source>Stopped by the emergency stop.</source>
+        <translation>已被急停停止。</translation>
+    </message>
+    <message>
+        <source>Stopped: the bus cancelled motion commands (emergency stop).</source>
+        <translation>已停止：总线取消了运动命令（急停）。</translation>
+    </message>
+    <message>
+        <source>Stopped: the connection was lost.</source>
+        <translation>已停止：连接已断开。</translation>
+    </message>
+    <message>
+        <source>Stopped: the bus was closed.</source>
+        <translation>已停止：总线已关闭。</translation>
+    </message>
+    <message>
+        <source>Stopped: the port was reopened at another baud.</source>
+        <translation>已停止：端口已以另一波特率重新打开。</translation>
     </message>
 </context>
 <context>

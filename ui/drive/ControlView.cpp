@@ -150,7 +150,6 @@ void ControlView::wire()
     connect(m_limitsEditor, &SoftLimitsEditor::limitsApplied, this, &ControlView::setSoftLimits);
     connect(m_setpointPanel, &SetpointPanel::startRequested, this, &ControlView::startGenerator);
     connect(m_setpointPanel, &SetpointPanel::stopRequested, this, &ControlView::stopGenerator);
-    connect(m_generator, &SetpointGenerator::setpointDue, this, &ControlView::onSetpoint);
     // The plot follows what the command moves: angle for positions, iq for torque.
     connect(m_modes, &ControlModePanel::modeChanged, this, [this](ControlMode mode) {
         switch (mode) {
@@ -170,6 +169,10 @@ void ControlView::wire()
             [this] { m_setpointPanel->setRunning(true); });
     connect(m_generator, &SetpointGenerator::stopped, this,
             [this](const QString &reason) { m_setpointPanel->setRunning(false, reason); });
+    // The stream refused a setpoint on the bus thread: said here as any refused command.
+    connect(m_generator, &SetpointGenerator::refused, this,
+            [this](const MotionOutcome &out) { report(out, {}); });
+    connect(m_generator, &SetpointGenerator::setpointFailed, this, &ControlView::onMotionResult);
 }
 
 void ControlView::setTelemetryStore(TelemetryStore *store)
@@ -321,6 +324,7 @@ void ControlView::contextChanged(Changes changes)
         const bool moving = m_generator->isRunning() || m_jogging;
         const int previous = m_motionId;
         haltLocalMotion(tr("Stopped: the drive or the connection changed."));
+        m_generator->setSession(session());
         if (moving && !(changes & Change::Session))
             stopMotionOf(previous);
         m_readout->clear();
@@ -530,11 +534,11 @@ void ControlView::step(int direction)
         setStatus(tr("Step of %1\u00b0 sent.").arg(delta));
 }
 
-void ControlView::startGenerator(const SetpointGenerator::Settings &settings)
+void ControlView::startGenerator(const bus::SetpointWaveform::Settings &settings)
 {
     if (!canSend())
         return;
-    if (settings.target == SetpointGenerator::Target::Position) {
+    if (settings.target == bus::SetpointWaveform::Target::Position) {
         // Position setpoints are checked from where the drive is: read it first.
         readAngle([this, settings] { startGeneratorNow(settings); });
         return;
@@ -542,15 +546,28 @@ void ControlView::startGenerator(const SetpointGenerator::Settings &settings)
     startGeneratorNow(settings);
 }
 
-void ControlView::startGeneratorNow(const SetpointGenerator::Settings &settings)
+void ControlView::startGeneratorNow(const bus::SetpointWaveform::Settings &settings)
 {
     if (!canSend())
         return;
     endJog();
+    if (!m_limitsError.isEmpty()) {
+        MotionOutcome none;
+        none.refusal = m_limitsError;
+        report(none, {});
+        m_setpointPanel->setRunning(false, m_limitsError);
+        return;
+    }
     m_motionId = driveId();
-    m_generatorTicket = 0;
-    m_generatorSkipped = 0;
-    m_generator->start(settings);
+    // The bus thread checks every setpoint as submitMotion() would: these limits, the
+    // series, and position targets from the angle just read (not read again meanwhile).
+    bus::SetpointStreamPlan plan;
+    plan.id = driveId();
+    plan.settings = settings;
+    plan.series = series();
+    plan.limits = m_limits;
+    plan.position = drivePosition();
+    m_generator->start(plan);
 }
 
 void ControlView::stopGenerator()
@@ -567,40 +584,6 @@ void ControlView::haltLocalMotion(const QString &reason)
     m_generator->stop(reason);
     m_jogging = false;
     m_keyJogging = false;
-}
-
-void ControlView::onSetpoint(double value)
-{
-    if (!canSend() || m_motionId != driveId()) {
-        m_generator->stop(tr("Stopped: the drive or the connection changed."));
-        return;
-    }
-    // One command in flight at most: a slow bus gets fewer setpoints, never a backlog.
-    if (m_generatorTicket && tracker()->isPending(m_generatorTicket)) {
-        ++m_generatorSkipped;
-        return;
-    }
-    const int id = driveId();
-    protocol::BuildResult built;
-    switch (m_generator->settings().target) {
-    case SetpointGenerator::Target::Speed:
-        built = build::speed(id, value);
-        break;
-    case SetpointGenerator::Target::Position:
-        built = build::multiPosition(id, value);
-        break;
-    case SetpointGenerator::Target::Torque:
-        built = build::torque(id, value);
-        break;
-    }
-    // Setpoints follow each other fast: each is checked from the last angle known (read when
-    // the generator started), not read again.
-    const MotionOutcome out = submitMotion(built);
-    if (!out.sent) {
-        m_generator->stop(out.refusal);
-        return;
-    }
-    m_generatorTicket = out.ticket;
 }
 
 void ControlView::onTelemetry(const bus::TelemetryBatch &batch)

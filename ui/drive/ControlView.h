@@ -5,6 +5,7 @@
 #include "SetpointGenerator.h"
 
 #include <bus/RequestResult.h>
+#include <bus/SetpointWaveform.h>
 #include <bus/TelemetrySample.h>
 #include <safety/SoftLimits.h>
 
@@ -29,7 +30,9 @@ class TelemetryStore;
 /// offered), with Motor Off / Stop / Run, jog (hold-to-run speed, step moves, optional arrow
 /// keys) and a setpoint generator for tuning. Every motion command passes the protocol
 /// builders and MotionGuard (series and the drive's soft limits, editable and persisted)
-/// before it is sent; a refusal sends nothing and says which limit stopped it. A V2.35 drive's
+/// before it is sent; a refusal sends nothing and says which limit stopped it. The generator's
+/// setpoints are paced and checked the same way on the bus thread (bus::SetpointStream), with
+/// the limits and the angle this view hands it at the start. A V2.35 drive's
 /// holding brake (0x8C) is in its own BrakePanel, which sends through this view's path.
 ///
 /// An emergency stop on the session, a drive or connection change and Motor Off/Stop all halt
@@ -69,7 +72,7 @@ public:
     void startJog(int direction); ///< speed command at the jog speed, sign = direction
     void endJog();                ///< speed 0 when a jog is running
     void step(int direction);     ///< one incremental move of the jog step
-    void startGenerator(const SetpointGenerator::Settings &settings);
+    void startGenerator(const bus::SetpointWaveform::Settings &settings);
     /// Stops the generator and sends motor_stop (the last setpoint must not stay active).
     void stopGenerator();
     /// Stops generator and jog without sending anything (emergency stop is under way).
@@ -102,13 +105,12 @@ private:
     QWidget *buildRunButtons();
     void wire();
     void loadLimits();
-    void startGeneratorNow(const SetpointGenerator::Settings &settings);
+    void startGeneratorNow(const bus::SetpointWaveform::Settings &settings);
     void readAngle(std::function<void()> then = {});
     void onAngle(int id, double deg);
     MotionOutcome submitMotion(const protocol::BuildResult &built);
     safety::DrivePosition drivePosition() const;
     void refreshSelectionNote();
-    void onSetpoint(double value);
     void onMotionResult(const bus::RequestResult &result);
     bool handleJogKey(QKeyEvent *event);
     bool focusInTextField() const;
@@ -147,8 +149,6 @@ private:
     int m_motionId = 0;        ///< drive the generator or jog commands
     bool m_jogging = false;    ///< a hold-to-run speed command is active
     bool m_keyJogging = false; ///< ... started by an arrow key
-    quint64 m_generatorTicket = 0;
-    qint64 m_generatorSkipped = 0;
 };
 
 } // namespace lk::ui

@@ -76,6 +76,31 @@ QString DriveText::fieldError(const protocol::FieldError &e)
     return tr("Refused, nothing sent: %1 must be in %2 (%3).").arg(e.field, e.range, e.problem);
 }
 
+QString DriveText::setpointStop(const bus::SetpointStop &stop,
+                                std::optional<protocol::Series> series)
+{
+    using Reason = bus::SetpointStopReason;
+    switch (stop.reason) {
+    case Reason::Requested:
+        return tr("Stopped by the user.");
+    case Reason::Replaced:
+        return tr("Stopped: another waveform started.");
+    case Reason::Refused:
+        return stop.fieldError ? fieldError(*stop.fieldError) : verdict(stop.verdict, series);
+    case Reason::EmergencyStop:
+        return tr("Stopped by the emergency stop.");
+    case Reason::Cancelled:
+        return tr("Stopped: the bus cancelled motion commands (emergency stop).");
+    case Reason::Disconnected:
+        return tr("Stopped: the connection was lost.");
+    case Reason::Closed:
+        return tr("Stopped: the bus was closed.");
+    case Reason::BusChanged:
+        return tr("Stopped: the port was reopened at another baud.");
+    }
+    return QString();
+}
+
 QString DriveText::command(protocol::Command c)
 {
     return QStringLiteral("%1 (%2)").arg(protocol::CommandTable::name(c),

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <bus/RequestResult.h>
+#include <bus/SetpointStop.h>
 #include <protocol/FieldError.h>
 #include <protocol/Series.h>
 #include <safety/MotionGuard.h>
@@ -23,6 +24,9 @@ public:
     static QString fieldError(const protocol::FieldError &error);
     /// Why a request did not complete (timeout, disconnected, ...); empty when it did.
     static QString failure(const bus::RequestResult &result);
+    /// Why a setpoint stream stopped; a refusal says which limit or field, like verdict().
+    static QString setpointStop(const bus::SetpointStop &stop,
+                                std::optional<protocol::Series> series);
     /// "write_pid_rom (0x32)".
     static QString command(protocol::Command command);
     /// "MF" or "unknown series".

@@ -1,66 +1,73 @@
 #include "SetpointGenerator.h"
 
-#include <algorithm>
-#include <cmath>
+#include "DriveText.h"
+
+#include <bus/BusSession.h>
+#include <bus/SetpointStream.h>
 
 namespace lk::ui {
 
-namespace {
-constexpr double kPi = 3.14159265358979323846;
+SetpointGenerator::SetpointGenerator(QObject *parent) : QObject(parent) {}
+
+void SetpointGenerator::setSession(bus::BusSession *session)
+{
+    if (session == m_session)
+        return;
+    if (isRunning() && m_session)
+        m_session->stopSetpointStream();
+    m_stream = 0;
+    disconnect(m_stoppedConnection);
+    disconnect(m_completedConnection);
+    m_session = session;
+    if (!session)
+        return;
+    m_stoppedConnection = connect(session, &bus::BusSession::setpointStreamStopped, this,
+                                  &SetpointGenerator::onStopped);
+    m_completedConnection =
+        connect(session, &bus::BusSession::requestCompleted, this, &SetpointGenerator::onCompleted);
 }
 
-SetpointGenerator::SetpointGenerator(QObject *parent) : QObject(parent)
+void SetpointGenerator::start(const bus::SetpointStreamPlan &plan)
 {
-    m_timer.setTimerType(Qt::PreciseTimer);
-    connect(&m_timer, &QTimer::timeout, this, &SetpointGenerator::tick);
-}
-
-double SetpointGenerator::valueAt(const Settings &s, double t)
-{
-    const double period = std::max(s.periodS, kMinPeriodS);
-    const double phase = std::fmod(std::max(t, 0.0), period) / period; // 0..1
-    switch (s.waveform) {
-    case Waveform::Step:
-        return t < period / 2 ? s.offset : s.offset + s.amplitude;
-    case Waveform::Square:
-        return phase < 0.5 ? s.offset + s.amplitude : s.offset - s.amplitude;
-    case Waveform::Sine:
-        return s.offset + s.amplitude * std::sin(2 * kPi * phase);
-    case Waveform::Ramp: {
-        // Triangle starting at the offset: up to +A at 1/4, down to -A at 3/4, back at 1.
-        const double tri = phase < 0.25 ? phase * 4 : phase < 0.75 ? 2 - phase * 4 : phase * 4 - 4;
-        return s.offset + s.amplitude * tri;
-    }
-    }
-    return s.offset;
-}
-
-void SetpointGenerator::start(const Settings &settings)
-{
-    m_settings = settings;
-    m_settings.rateHz = std::clamp(settings.rateHz, kMinRateHz, kMaxRateHz);
-    m_settings.periodS = std::max(settings.periodS, kMinPeriodS);
-    m_emitted = 0;
-    m_clock.start();
-    m_timer.start(static_cast<int>(std::lround(1000.0 / m_settings.rateHz)));
+    if (!m_session)
+        return;
+    m_plan = plan;
+    m_stream = m_session->startSetpointStream(plan);
+    m_plan.stream = m_stream;
     emit started();
-    tick();
 }
 
 void SetpointGenerator::stop(const QString &reason)
 {
-    if (!m_timer.isActive())
+    if (!isRunning())
         return;
-    m_timer.stop();
+    m_stream = 0;
+    if (m_session)
+        m_session->stopSetpointStream();
     emit stopped(reason);
 }
 
-void SetpointGenerator::tick()
+void SetpointGenerator::onStopped(const bus::SetpointStop &stop)
 {
-    if (!m_timer.isActive())
+    // A stream stopped here already, or replaced since, has nothing more to say.
+    if (stop.stream != m_stream || m_stream == 0)
         return;
-    ++m_emitted;
-    emit setpointDue(valueAt(m_settings, m_clock.nsecsElapsed() * 1e-9));
+    m_stream = 0;
+    const QString text = DriveText::setpointStop(stop, m_plan.series);
+    if (stop.reason == bus::SetpointStopReason::Refused) {
+        MotionOutcome out;
+        out.refusal = text;
+        out.limit = stop.verdict.kind;
+        out.fieldError = stop.fieldError;
+        emit refused(out);
+    }
+    emit stopped(text);
+}
+
+void SetpointGenerator::onCompleted(const bus::RequestResult &result)
+{
+    if (isRunning() && bus::SetpointStream::isSetpointTicket(result.ticket) && !result.ok())
+        emit setpointFailed(result);
 }
 
 } // namespace lk::ui

@@ -1,60 +1,60 @@
 #pragma once
 
-#include <QtCore/QElapsedTimer>
+#include "MotionGate.h"
+
+#include <bus/RequestResult.h>
+#include <bus/SetpointStop.h>
+#include <bus/SetpointStreamPlan.h>
+
 #include <QtCore/QObject>
-#include <QtCore/QTimer>
+#include <QtCore/QPointer>
+#include <QtCore/QString>
+
+namespace lk::bus {
+class BusSession;
+}
 
 namespace lk::ui {
 
-/// Setpoints for tuning: step, square, sine or ramp (triangle) around an offset, at a
-/// bounded rate. It only computes and emits values; the control view turns each into a
-/// command and sends it through the motion gate.
+/// The GUI's side of a session's setpoint stream: the waveform runs on the bus thread
+/// (bus::SetpointStream, which also checks every setpoint against the limits), so a busy GUI
+/// neither delays nor bunches setpoints. This starts and stops it, knows at once whether it
+/// runs (before the bus thread has heard), and words why the stream stopped itself.
 class SetpointGenerator : public QObject {
     Q_OBJECT
 public:
-    enum class Waveform { Step, Square, Sine, Ramp };
-    enum class Target { Speed, Position, Torque };
-    static constexpr double kMinRateHz = 1;
-    static constexpr double kMaxRateHz = 50; ///< leaves room on the bus for polling
-    static constexpr double kMinPeriodS = 0.1;
-
-    struct Settings {
-        Waveform waveform = Waveform::Square;
-        Target target = Target::Speed;
-        double amplitude = 90; ///< dps, deg or A
-        double offset = 0;
-        double periodS = 2;
-        double rateHz = 20;
-    };
-
     explicit SetpointGenerator(QObject *parent = nullptr);
 
-    /// The value at `t` seconds after the start. Step: offset for the first half period, then
-    /// offset + amplitude. Square/sine/ramp: offset +- amplitude, one cycle per period (the
-    /// ramp is a triangle, so the setpoint never jumps).
-    static double valueAt(const Settings &settings, double t);
-
-    /// Starts (or restarts) with `settings`; rate and period are clamped to their bounds. The
-    /// first setpoint is emitted at once.
-    void start(const Settings &settings);
-    /// Stops; emits stopped(reason) when it was running.
-    void stop(const QString &reason = {});
-    bool isRunning() const { return m_timer.isActive(); }
-    const Settings &settings() const { return m_settings; }
-    qint64 emitted() const { return m_emitted; }
+    /// The session the stream runs on (not owned); a stream running on the previous one is
+    /// stopped there.
+    void setSession(bus::BusSession *session);
+    /// Starts `plan` on the session, replacing a running stream; running from now on, and the
+    /// first setpoint goes out as soon as the bus thread has it.
+    void start(const bus::SetpointStreamPlan &plan);
+    /// Stops the stream (a setpoint still queued is dropped, nothing else is sent); emits
+    /// stopped(reason) when it was running.
+    void stop(const QString &reason);
+    bool isRunning() const { return m_stream != 0; }
+    const bus::SetpointStreamPlan &plan() const { return m_plan; }
 
 signals:
-    void setpointDue(double value);
     void started();
     void stopped(const QString &reason);
+    /// The stream stopped at a value the builder or the limits refused; nothing of it was
+    /// sent (emitted before stopped()).
+    void refused(const lk::ui::MotionOutcome &outcome);
+    /// A setpoint of the running stream did not complete (timeout, lost link, ...).
+    void setpointFailed(const lk::bus::RequestResult &result);
 
 private:
-    void tick();
+    void onStopped(const bus::SetpointStop &stop);
+    void onCompleted(const bus::RequestResult &result);
 
-    Settings m_settings;
-    QTimer m_timer;
-    QElapsedTimer m_clock;
-    qint64 m_emitted = 0;
+    QPointer<bus::BusSession> m_session;
+    QMetaObject::Connection m_stoppedConnection;
+    QMetaObject::Connection m_completedConnection;
+    bus::SetpointStreamPlan m_plan;
+    quint64 m_stream = 0; ///< the running stream's handle; 0: none
 };
 
 } // namespace lk::ui

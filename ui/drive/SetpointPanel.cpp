@@ -14,7 +14,7 @@ namespace lk::ui {
 
 namespace {
 constexpr double kWide = 1e7;
-using Gen = SetpointGenerator;
+using Gen = bus::SetpointWaveform;
 } // namespace
 
 SetpointPanel::SetpointPanel(QWidget *parent) : QGroupBox(tr("Setpoint generator"), parent)
@@ -102,7 +102,7 @@ void SetpointPanel::refreshUnits()
     m_offset->setSuffix(unit);
 }
 
-SetpointGenerator::Settings SetpointPanel::settings() const
+bus::SetpointWaveform::Settings SetpointPanel::settings() const
 {
     Gen::Settings s;
     s.waveform = Gen::Waveform(m_waveform->currentData().toInt());
@@ -114,7 +114,7 @@ SetpointGenerator::Settings SetpointPanel::settings() const
     return s;
 }
 
-void SetpointPanel::setSettings(const SetpointGenerator::Settings &s)
+void SetpointPanel::setSettings(const bus::SetpointWaveform::Settings &s)
 {
     m_waveform->setCurrentIndex(m_waveform->findData(int(s.waveform)));
     const int target = m_target->findData(int(s.target));

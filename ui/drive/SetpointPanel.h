@@ -1,7 +1,6 @@
 #pragma once
 
-#include "SetpointGenerator.h"
-
+#include <bus/SetpointWaveform.h>
 #include <protocol/Series.h>
 
 #include <QtWidgets/QGroupBox>
@@ -23,8 +22,8 @@ public:
     explicit SetpointPanel(QWidget *parent = nullptr);
 
     void setSeries(std::optional<protocol::Series> series);
-    SetpointGenerator::Settings settings() const;
-    void setSettings(const SetpointGenerator::Settings &settings);
+    bus::SetpointWaveform::Settings settings() const;
+    void setSettings(const bus::SetpointWaveform::Settings &settings);
     /// Shows running/stopped and the last message.
     void setRunning(bool running, const QString &message = {});
     void setStartEnabled(bool enabled);
@@ -33,7 +32,7 @@ public:
     void setDriveAngle(std::optional<double> deg);
 
 signals:
-    void startRequested(const lk::ui::SetpointGenerator::Settings &settings);
+    void startRequested(const lk::bus::SetpointWaveform::Settings &settings);
     void stopRequested();
 
 private:

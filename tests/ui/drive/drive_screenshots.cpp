@@ -4,6 +4,7 @@
 // Not a test: it produces pictures for people to look at.
 #include "DriveTestRig.h"
 
+#include <bus/SetpointWaveform.h>
 #include <drive/ConfirmDialog.h>
 #include <drive/ControlModePanel.h>
 #include <drive/ControlView.h>
@@ -11,7 +12,6 @@
 #include <drive/EncoderView.h>
 #include <drive/LoopPlot.h>
 #include <drive/ParameterTable.h>
-#include <drive/SetpointGenerator.h>
 #include <drive/SetpointPanel.h>
 #include <drive/TuningSetV23.h>
 #include <drive/TuningView.h>
@@ -122,9 +122,9 @@ bool control(SimRig &rig, const QString &dir)
     lk::ui::ControlView view;
     attach(view, rig, 1);
     // A few seconds of a sine on position for the live plot, then a refused command.
-    lk::ui::SetpointGenerator::Settings sine;
-    sine.waveform = lk::ui::SetpointGenerator::Waveform::Sine;
-    sine.target = lk::ui::SetpointGenerator::Target::Position;
+    lk::bus::SetpointWaveform::Settings sine;
+    sine.waveform = lk::bus::SetpointWaveform::Waveform::Sine;
+    sine.target = lk::bus::SetpointWaveform::Target::Position;
     sine.offset = rig.multiTurnDeg(1);
     sine.amplitude = 90;
     sine.periodS = 2;

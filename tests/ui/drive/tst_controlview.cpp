@@ -1,16 +1,17 @@
 #include "DriveTestRig.h"
 
+#include <bus/SetpointWaveform.h>
 #include <drive/ControlModePanel.h>
 #include <drive/ControlView.h>
 #include <drive/DriveSettingsStore.h>
 #include <drive/JogPanel.h>
-#include <drive/SetpointGenerator.h>
 #include <drive/SetpointPanel.h>
 #include <drive/SoftLimitsEditor.h>
 #include <main/SettingsFile.h>
 
 #include <QtCore/QSettings>
 #include <QtCore/QTemporaryDir>
+#include <QtCore/QThread>
 #include <QtTest/QtTest>
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
@@ -21,6 +22,7 @@
 
 #include <cmath>
 
+using lk::bus::SetpointWaveform;
 using lk::drivetest::button;
 using lk::drivetest::kWaitMs;
 using lk::drivetest::SimRig;
@@ -30,7 +32,6 @@ using lk::protocol::SpinDirection;
 using lk::safety::LimitKind;
 using lk::ui::ControlMode;
 using lk::ui::ControlView;
-using lk::ui::SetpointGenerator;
 
 namespace {
 
@@ -70,6 +71,7 @@ private slots:
     void keyboardJogNotInTextField();
     void generatorStartsAndStopStops();
     void generatorStopsOnDriveChange();
+    void generatorKeepsPaceWhileTheGuiIsBusy();
     void generatorWaveforms_data();
     void generatorWaveforms();
 };
@@ -467,11 +469,11 @@ void tst_ControlView::generatorPositionCentredOnTheDrive()
     }
     auto view = openView(rig, 1);
     auto *target = view->findChild<QComboBox *>(QStringLiteral("target"));
-    target->setCurrentIndex(target->findData(int(SetpointGenerator::Target::Position)));
+    target->setCurrentIndex(target->findData(int(SetpointWaveform::Target::Position)));
     QTRY_VERIFY_WITH_TIMEOUT(
         std::fabs(view->setpointPanel()->settings().offset - rig.multiTurnDeg(1)) < 1, kWaitMs);
     // A waveform around 0 absolute is turns away: the first setpoint is refused, none sent.
-    SetpointGenerator::Settings far = view->setpointPanel()->settings();
+    SetpointWaveform::Settings far = view->setpointPanel()->settings();
     far.offset = 0;
     view->startGenerator(far);
     QTRY_VERIFY_WITH_TIMEOUT(view->statusText().contains(QStringLiteral("one output turn")),
@@ -591,9 +593,9 @@ void tst_ControlView::generatorStartsAndStopStops()
     SimRig rig;
     QVERIFY(rig.open());
     auto view = openView(rig, 1);
-    SetpointGenerator::Settings s;
-    s.waveform = SetpointGenerator::Waveform::Square;
-    s.target = SetpointGenerator::Target::Speed;
+    SetpointWaveform::Settings s;
+    s.waveform = SetpointWaveform::Waveform::Square;
+    s.target = SetpointWaveform::Target::Speed;
     s.amplitude = 90;
     s.periodS = 0.5;
     s.rateHz = 20;
@@ -617,8 +619,8 @@ void tst_ControlView::generatorStopsOnDriveChange()
     SimRig rig;
     QVERIFY(rig.open());
     auto view = openView(rig, 1);
-    SetpointGenerator::Settings s;
-    s.target = SetpointGenerator::Target::Speed;
+    SetpointWaveform::Settings s;
+    s.target = SetpointWaveform::Target::Speed;
     view->startGenerator(s);
     QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::Speed) >= 2, kWaitMs);
     view->setDrive(2, rig.motor(2));
@@ -634,12 +636,34 @@ void tst_ControlView::generatorStopsOnDriveChange()
     QVERIFY(!view->generator()->isRunning());
 }
 
+void tst_ControlView::generatorKeepsPaceWhileTheGuiIsBusy()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    SetpointWaveform::Settings s;
+    s.target = SetpointWaveform::Target::Speed;
+    s.rateHz = 20;
+    view->startGenerator(s);
+    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::Speed) >= 1, kWaitMs);
+    // The GUI thread is busy for 600 ms (12 ticks at 20 Hz): the bus thread paces setpoints
+    // on its own, so they keep going out meanwhile instead of waiting for the GUI.
+    const int before = rig.count(1, Command::Speed);
+    QThread::msleep(600);
+    QVERIFY2(rig.count(1, Command::Speed) - before >= 4,
+             qPrintable(QString::number(rig.count(1, Command::Speed) - before)));
+    view->stopGenerator();
+    QVERIFY(!view->generator()->isRunning());
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::MotorStop), 1);
+}
+
 void tst_ControlView::generatorWaveforms_data()
 {
     QTest::addColumn<int>("waveform");
     QTest::addColumn<double>("t");
     QTest::addColumn<double>("expected");
-    using W = SetpointGenerator::Waveform;
+    using W = SetpointWaveform::Waveform;
     // amplitude 10, offset 5, period 2 s
     QTest::newRow("step before") << int(W::Step) << 0.5 << 5.0;
     QTest::newRow("step after") << int(W::Step) << 1.5 << 15.0;
@@ -661,12 +685,12 @@ void tst_ControlView::generatorWaveforms()
     QFETCH(int, waveform);
     QFETCH(double, t);
     QFETCH(double, expected);
-    SetpointGenerator::Settings s;
-    s.waveform = SetpointGenerator::Waveform(waveform);
+    SetpointWaveform::Settings s;
+    s.waveform = SetpointWaveform::Waveform(waveform);
     s.amplitude = 10;
     s.offset = 5;
     s.periodS = 2;
-    QVERIFY(std::fabs(SetpointGenerator::valueAt(s, t) - expected) < 1e-9);
+    QVERIFY(std::fabs(SetpointWaveform::valueAt(s, t) - expected) < 1e-9);
 }
 
 QTEST_MAIN(tst_ControlView)

@@ -28,7 +28,7 @@
 #include <plot/PlotPanel.h>
 #include <plot/TelemetryStore.h>
 
-#include <drive/SetpointGenerator.h>
+#include <bus/SetpointWaveform.h>
 #include <protocol/RequestBuilder.h>
 #include <protocol/StreamParser.h>
 #include <sim/SimBus.h>
@@ -494,8 +494,8 @@ void tst_MainWindow::escapeHaltsTheGeneratorFirst()
     model()->setCurrentId(1);
     auto *control = m_window->driveViews()->control();
     QTRY_COMPARE_WITH_TIMEOUT(control->driveId(), 1, kWaitMs);
-    lk::ui::SetpointGenerator::Settings s;
-    s.target = lk::ui::SetpointGenerator::Target::Speed;
+    lk::bus::SetpointWaveform::Settings s;
+    s.target = lk::bus::SetpointWaveform::Target::Speed;
     control->startGenerator(s);
     QVERIFY(control->generator()->isRunning());
     QTest::keyClick(m_window->views(), Qt::Key_Escape);
