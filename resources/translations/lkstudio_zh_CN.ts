@@ -1816,14 +1816,6 @@
 <context>
     <name>lk::ui::DriveText</name>
     <message>
-        <source>Refused, nothing sent: %1 must be in %2.</source>
-        <translation>已拒绝，未发送：%1 必须在 %2 范围内。</translation>
-    </message>
-    <message>
-        <source>Refused, nothing sent: %1 must be in %2 (%3).</source>
-        <translation>已拒绝，未发送：%1 必须在 %2 范围内（%3）。</translation>
-    </message>
-    <message>
         <source>%1: drive %2 did not answer.</source>
         <translation>%1：驱动 %2 无应答。</translation>
     </message>
@@ -1838,6 +1830,10 @@
     <message>
         <source>%1: the reply was corrupt (%2).</source>
         <translation>%1：回复数据损坏（%2）。</translation>
+    </message>
+    <message>
+        <source>Refused, nothing sent: %1.</source>
+        <translation>已拒绝，未发送：%1。</translation>
     </message>
 </context>
 <context>

@@ -12,9 +12,8 @@ QString DriveText::series(std::optional<protocol::Series> s)
 
 QString DriveText::fieldError(const protocol::FieldError &e)
 {
-    if (e.problem.isEmpty())
-        return tr("Refused, nothing sent: %1 must be in %2.").arg(e.field, e.range);
-    return tr("Refused, nothing sent: %1 must be in %2 (%3).").arg(e.field, e.range, e.problem);
+    // The field and its range are worded once, by FieldError (lkctl prints the same).
+    return tr("Refused, nothing sent: %1.").arg(e.message());
 }
 
 QString DriveText::command(protocol::Command c)
