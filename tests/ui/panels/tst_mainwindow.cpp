@@ -69,8 +69,8 @@ ConnectionChoice simulatorChoice()
 class tst_MainWindow : public QObject {
     Q_OBJECT
 private slots:
-    void initTestCase();
-    void cleanupTestCase();
+    void init();
+    void cleanup();
     void connectsToSimulator();
     void scanFindsSimulatedIds();
     void baudSweepKeepsOneBaud();
@@ -106,36 +106,38 @@ private:
     bool allOff() const;
     int inState(lk::sim::SimDrive::RunState state) const;
 
-    // The tests share one window, each leaving the bus as the next expects it. So that each
-    // also runs alone, a test first brings about what the earlier ones would have left (and
-    // does nothing when they have).
-    /// Connected to the simulated bus, auto-reconnect off (as connectsToSimulator leaves it).
+    // Each test gets a window of its own, with settings of its own (init/cleanup), so that
+    // each runs alone and in any order; it first brings about the bus it needs.
+    /// Connected to the simulated bus, auto-reconnect off.
     bool connectToSimulator();
-    /// Connected, every simulated drive found and polled (as the scan tests leave it).
+    /// Connected, every simulated drive found and polled.
     bool findAllDrives();
-    /// Every drive found, drive 2 the current one (as selectingADriveSelectsItEverywhere).
+    /// Every drive found, drive 2 the current one.
     bool selectDrive2();
-    /// Drive 2 turning when the link drops (unplugShowsDisconnectedAndDisablesSending).
+    /// Drive 2 turning when the link drops.
     void turnDrive2AndUnplug();
 
-    QTemporaryDir m_dir;
+    std::unique_ptr<QTemporaryDir> m_dir;
     std::unique_ptr<lk::ui::AppSettings> m_settings;
     std::unique_ptr<MainWindow> m_window;
 };
 
-void tst_MainWindow::initTestCase()
+void tst_MainWindow::init()
 {
-    QVERIFY(m_dir.isValid());
-    m_settings = std::make_unique<lk::ui::AppSettings>(m_dir.filePath("lkstudio.ini"));
+    m_dir = std::make_unique<QTemporaryDir>();
+    QVERIFY(m_dir->isValid());
+    m_settings = std::make_unique<lk::ui::AppSettings>(m_dir->filePath("lkstudio.ini"));
     m_window = std::make_unique<MainWindow>(m_settings.get());
     m_window->resize(1400, 900);
     m_window->show();
     QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
 }
 
-void tst_MainWindow::cleanupTestCase()
+void tst_MainWindow::cleanup()
 {
     m_window.reset();
+    m_settings.reset();
+    m_dir.reset();
 }
 
 QVector<int> tst_MainWindow::motorOffCounts() const
@@ -180,8 +182,6 @@ bool tst_MainWindow::connectToSimulator()
 
 bool tst_MainWindow::findAllDrives()
 {
-    if (model()->canSend() && model()->isSimulated())
-        return true;
     // Scanning on connect is on by default: the scan finds the four drives, then polls them.
     return connectToSimulator() &&
            QTest::qWaitFor([this] { return model()->ids() == kSimIds && model()->isPolling(); },
@@ -372,7 +372,7 @@ void tst_MainWindow::trafficFillsAndExportParses()
         sawReply = m->directionText(row) == QLatin1String("RX") && !m->fieldsText(row).isEmpty();
     QVERIFY(sawReply);
 
-    const QString file = m_dir.filePath("traffic.txt");
+    const QString file = m_dir->filePath("traffic.txt");
     traffic->flush();
     QVERIFY(traffic->exportTo(file));
     QFile in(file);
@@ -625,7 +625,7 @@ void tst_MainWindow::openFailureIsExplainedInABanner()
 {
     ConnectionChoice c;
     c.kind = ConnectionChoice::Kind::Serial;
-    c.port = m_dir.filePath("no-such-adapter");
+    c.port = m_dir->filePath("no-such-adapter");
     c.autoReconnect = false;
     m_window->connectTo(c);
     // The message line (reports of earlier tests may stay below it until dismissed).
