@@ -8,6 +8,7 @@
 
 #include <motor/ModelNameInfo.h>
 #include <safety/MotionPlanner.h>
+#include <text/VerdictText.h>
 
 namespace lk::lkctl {
 
@@ -251,7 +252,8 @@ int ControlCommand::send(LiveBus &bus, const Plan &plan, const safety::MotionPla
         sentText << line.simplified();
     QString extra;
     if (motion.bound != safety::SpeedBound::None)
-        extra += QStringLiteral(" Speed bound: %1.").arg(motion.boundText());
+        extra += QStringLiteral(" Speed bound: %1.")
+                     .arg(text::VerdictText::speedBound(motion.bound, motion.boundDps));
     if (position.angleDeg)
         extra += QStringLiteral(" The drive was at %1 deg.").arg(*position.angleDeg);
     bus.console().outLine(QStringLiteral("Sent %1 to drive %2: %3.%4 Reply:")
@@ -293,8 +295,8 @@ int ControlCommand::run(const QStringList &args, Console &console)
     const safety::MotionPlan motion =
         safety::MotionPlanner::plan(plan->request, who->series, *limits, position);
     if (!motion.allowed()) {
-        bus.error(
-            QStringLiteral("refused for safety, nothing was sent: %1").arg(motion.verdict.message));
+        bus.error(QStringLiteral("refused for safety, nothing was sent: %1")
+                      .arg(text::VerdictText::verdict(motion.verdict, who->series)));
         return kExitRefused;
     }
     return send(bus, *plan, motion, position);

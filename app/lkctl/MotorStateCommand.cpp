@@ -5,6 +5,7 @@
 #include "OrderedJson.h"
 
 #include <safety/MotionGuard.h>
+#include <text/VerdictText.h>
 
 namespace lk::lkctl {
 
@@ -137,7 +138,7 @@ bool MotorStateCommand::allowed(LiveBus &bus, int id, std::optional<protocol::Se
     if (!v.allowed())
         bus.error(QStringLiteral("refused for safety for drive %1, nothing was sent: %2")
                       .arg(id)
-                      .arg(v.message));
+                      .arg(text::VerdictText::verdict(v, series)));
     return v.allowed();
 }
 

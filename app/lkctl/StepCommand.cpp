@@ -8,6 +8,7 @@
 #include <motor/ModelNameInfo.h>
 #include <protocol/FieldJson.h>
 #include <system/SignalWatcher.h>
+#include <text/VerdictText.h>
 #include <tuning/StepMetrics.h>
 #include <tuning/StepRunJson.h>
 
@@ -383,7 +384,8 @@ int StepCommand::run(const QStringList &args, Console &console)
     case StepTestFailure::None:
         break;
     case StepTestFailure::Refused:
-        bus.error(result.message);
+        bus.error(QStringLiteral("%1: %2").arg(result.message,
+                                               text::VerdictText::stepRefusal(result.refusal)));
         return kExitRefused;
     case StepTestFailure::BadSpec:
         return usageError(console, result.message);
@@ -453,12 +455,9 @@ void StepCommand::printText(Console &console, const Plan &plan, const tuning::St
     for (const QString &line : ReplyText::lines(run.gains))
         g << line.simplified();
     console.outLine(QStringLiteral("Gains: %1.").arg(g.join(QStringLiteral(", "))));
-    safety::MotionPlan bound;
-    bound.bound = r.bound;
-    bound.boundDps = r.boundDps;
     console.outLine(QStringLiteral("Sent %1 setpoints (%2); %3 samples at %4 Hz.")
                         .arg(r.sent.size())
-                        .arg(bound.boundText())
+                        .arg(text::VerdictText::speedBound(r.bound, r.boundDps))
                         .arg(r.trace.size())
                         .arg(r.sampleRateHz, 0, 'f', 1));
     for (int i = 0; i < edges.size(); ++i) {

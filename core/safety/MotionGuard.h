@@ -5,13 +5,11 @@
 #include <protocol/Request.h>
 #include <protocol/Series.h>
 
-#include <QtCore/QString>
-
 #include <optional>
 
 namespace lk::safety {
 
-/// Which limit stopped a command (the UI translates from this, the CLI prints `message`).
+/// Which limit stopped a command: lktext's VerdictText words it for lkstudio and lkctl alike.
 enum class LimitKind {
     None,          ///< allowed
     UnknownSeries, ///< torque/open loop need a known series
@@ -28,12 +26,17 @@ enum class LimitKind {
     OutputTurn,    ///< a position move of more than one output turn
 };
 
-/// The outcome of a check: allowed, or the limit that refused it with both numbers.
+/// The outcome of a check: allowed, or the limit that refused it with both numbers. Typed data
+/// only: the core never words it (VerdictText does, once).
 struct Verdict {
     LimitKind kind = LimitKind::None;
     double value = 0; ///< what was asked (A, power, dps or deg)
     double limit = 0; ///< the limit it broke, same unit
-    QString message;  ///< English sentence naming the limit
+    /// The command refused: says whether a speed was its speed or its max speed, and whether
+    /// a move over one output turn was an increment. nullopt for a bare target check.
+    std::optional<protocol::Command> command;
+    /// OutputTurn of a multi-turn target: the angle (deg) the move would start from.
+    std::optional<double> fromDeg;
     bool allowed() const { return kind == LimitKind::None; }
 };
 

@@ -1,7 +1,5 @@
 #include "MotionPlanner.h"
 
-#include <QtCore/QCoreApplication>
-
 #include <algorithm>
 #include <cmath>
 
@@ -11,15 +9,11 @@ namespace {
 
 using protocol::Command;
 
-QString translated(const char *text)
-{
-    return QCoreApplication::translate("lk::safety::MotionPlanner", text);
-}
-
-MotionPlan refused(LimitKind kind, double value, double limit, const QString &message)
+MotionPlan refused(LimitKind kind, double value, double limit, const protocol::Request &r,
+                   std::optional<double> fromDeg = std::nullopt)
 {
     MotionPlan p;
-    p.verdict = Verdict{kind, value, limit, message};
+    p.verdict = Verdict{kind, value, limit, r.command, fromDeg};
     return p;
 }
 
@@ -67,14 +61,6 @@ double singleTurnTravelDeg(const protocol::SinglePositionCommand &c, double from
                : -positiveMod(current - target, 360.0);
 }
 
-MotionPlan angleRangeNeedsAngle()
-{
-    return refused(LimitKind::AngleUnknown, 0, 0,
-                   translated(QT_TRANSLATE_NOOP("lk::safety::MotionPlanner",
-                                                "your angle range needs the drive's current "
-                                                "angle: read it (0x92) first")));
-}
-
 // The one-output-turn and angle-window rules that need to know where the drive is.
 std::optional<MotionPlan> checkDistance(const protocol::Request &r, const SoftLimits &limits,
                                         const DrivePosition &at)
@@ -83,35 +69,19 @@ std::optional<MotionPlan> checkDistance(const protocol::Request &r, const SoftLi
     std::optional<double> target;
     if (const auto *c = std::get_if<protocol::MultiPositionCommand>(&r.payload)) {
         if (!at.angleDeg)
-            return refused(LimitKind::AngleUnknown, 0, 0,
-                           translated(QT_TRANSLATE_NOOP(
-                               "lk::safety::MotionPlanner",
-                               "the drive's current angle is unknown: read it (0x92) first")));
+            return refused(LimitKind::AngleUnknown, 0, 0, r);
         // MotionGuard checks the target against the angle range.
         const double distance =
             std::fabs(static_cast<double>(c->angleRaw) * protocol::kCentiUnits - *at.angleDeg);
         if (distance > turn)
-            return refused(
-                LimitKind::OutputTurn, distance, turn,
-                translated(
-                    QT_TRANSLATE_NOOP("lk::safety::MotionPlanner",
-                                      "a move of %1 deg from the current angle %2 deg exceeds one "
-                                      "output turn (%3 deg)"))
-                    .arg(distance)
-                    .arg(*at.angleDeg)
-                    .arg(turn));
+            return refused(LimitKind::OutputTurn, distance, turn, r, at.angleDeg);
     } else if (const auto *c = std::get_if<protocol::IncrementPositionCommand>(&r.payload)) {
         const double step = c->angleRaw * protocol::kCentiUnits;
         if (std::fabs(step) > turn)
-            return refused(LimitKind::OutputTurn, std::fabs(step), turn,
-                           translated(QT_TRANSLATE_NOOP("lk::safety::MotionPlanner",
-                                                        "an increment of %1 deg exceeds one "
-                                                        "output turn (%2 deg)"))
-                               .arg(std::fabs(step))
-                               .arg(turn));
+            return refused(LimitKind::OutputTurn, std::fabs(step), turn, r);
         if (limits.minAngleDeg || limits.maxAngleDeg) {
             if (!at.angleDeg)
-                return angleRangeNeedsAngle();
+                return refused(LimitKind::AngleUnknown, 0, 0, r);
             target = *at.angleDeg + step;
         }
     } else if (const auto *c = std::get_if<protocol::SinglePositionCommand>(&r.payload)) {
@@ -119,14 +89,14 @@ std::optional<MotionPlan> checkDistance(const protocol::Request &r, const SoftLi
         // (from the angle within the turn, in the direction given) must lie inside it.
         if (limits.minAngleDeg || limits.maxAngleDeg) {
             if (!at.angleDeg)
-                return angleRangeNeedsAngle();
+                return refused(LimitKind::AngleUnknown, 0, 0, r);
             target = *at.angleDeg + singleTurnTravelDeg(*c, *at.angleDeg);
         }
     }
     if (target) {
         const Verdict window = MotionGuard::checkTarget(*target, limits);
         if (!window.allowed())
-            return refused(window.kind, window.value, window.limit, window.message);
+            return refused(window.kind, window.value, window.limit, r);
     }
     return std::nullopt;
 }
@@ -181,32 +151,6 @@ MotionPlan MotionPlanner::plan(const protocol::Request &request,
     }
     p.request = out;
     return p;
-}
-
-QString MotionPlan::boundText() const
-{
-    const QString value = QString::number(boundDps, 'g', 10);
-    switch (bound) {
-    case SpeedBound::None:
-        return QString();
-    case SpeedBound::Command:
-        return translated(QT_TRANSLATE_NOOP("lk::safety::MotionPlanner",
-                                            "within your speed limit of %1 dps"))
-            .arg(value);
-    case SpeedBound::SoftLimit:
-        return translated(QT_TRANSLATE_NOOP("lk::safety::MotionPlanner",
-                                            "max speed %1 dps (your speed limit)"))
-            .arg(value);
-    case SpeedBound::SeriesTop:
-        return translated(QT_TRANSLATE_NOOP("lk::safety::MotionPlanner",
-                                            "max speed %1 dps (the series top speed)"))
-            .arg(value);
-    case SpeedBound::UserMaxSpeed:
-        return translated(QT_TRANSLATE_NOOP("lk::safety::MotionPlanner",
-                                            "max speed %1 dps (the max speed you gave)"))
-            .arg(value);
-    }
-    return QString();
 }
 
 } // namespace lk::safety

@@ -6,8 +6,6 @@
 #include <protocol/Request.h>
 #include <protocol/Series.h>
 
-#include <QtCore/QString>
-
 #include <optional>
 
 namespace lk::safety {
@@ -21,7 +19,7 @@ struct DrivePosition {
     double outputTurnDeg() const { return 360.0 * gearRatio; }
 };
 
-/// Which speed bound a command went out with.
+/// Which speed bound a command went out with (VerdictText::speedBound words it).
 enum class SpeedBound {
     None,         ///< the command carries no speed (torque, open loop, motor_run)
     Command,      ///< a speed command: its own speed, within the speed limit
@@ -38,9 +36,6 @@ struct MotionPlan {
     double boundDps = 0;  ///< the speed bound's value (dps) when bound is not None
     bool limited = false; ///< an unlimited position command became its limited form
     bool allowed() const { return request.has_value(); }
-    /// One English/translated phrase saying which speed bound applied, e.g. "max speed 720
-    /// dps (your speed limit)"; empty for SpeedBound::None.
-    QString boundText() const;
 };
 
 /// The one conversion every motion request passes before it is sent, for lkstudio and lkctl

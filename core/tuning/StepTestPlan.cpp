@@ -15,19 +15,6 @@ QString unit(StepLoop loop)
     return loop == StepLoop::Speed ? QStringLiteral("dps") : QStringLiteral("deg");
 }
 
-const char *roleName(Role role)
-{
-    switch (role) {
-    case Role::PreRoll:
-        return "pre-roll to FROM";
-    case Role::Edge:
-        return "step";
-    case Role::Return:
-        return "return to FROM";
-    }
-    return "";
-}
-
 // The setpoints' times and targets, before any is turned into a request.
 QVector<StepSetpoint> timeline(const StepTestSpec &spec, double *endS)
 {
@@ -119,18 +106,8 @@ StepTestPlan StepTestPlan::make(const StepTestSpec &spec, std::optional<protocol
         const safety::MotionPlan motion =
             safety::MotionPlanner::plan(*built.request, series, limits, at);
         if (!motion.allowed()) {
-            plan.m_verdict = motion.verdict;
-            const QString move = s.role == Role::PreRoll
-                                     ? QStringLiteral("%1 %2").arg(s.target).arg(unit(spec.loop))
-                                     : QStringLiteral("%1 -> %2 %3")
-                                           .arg(s.previous)
-                                           .arg(s.target)
-                                           .arg(unit(spec.loop));
-            plan.m_refusedSetpoint = QStringLiteral("setpoint %1 of %2 (%3, %4 at %5 s)")
-                                         .arg(i + 1)
-                                         .arg(setpoints.size())
-                                         .arg(QLatin1String(roleName(s.role)), move)
-                                         .arg(s.atS);
+            plan.m_refusal =
+                StepRefusal{motion.verdict, i, int(setpoints.size()), s, spec.loop, series};
             return plan;
         }
         s.request = *motion.request;
@@ -141,15 +118,6 @@ StepTestPlan StepTestPlan::make(const StepTestSpec &spec, std::optional<protocol
     plan.m_setpoints = setpoints;
     plan.m_endS = endS;
     return plan;
-}
-
-QString StepTestPlan::refusal() const
-{
-    if (!m_specError.isEmpty())
-        return m_specError;
-    if (!m_verdict.allowed())
-        return QStringLiteral("%1: %2").arg(m_refusedSetpoint, m_verdict.message);
-    return QString();
 }
 
 } // namespace lk::tuning

@@ -47,6 +47,17 @@ struct StepSetpoint {
     protocol::Request request; ///< as MotionPlanner made it (position: 0xA4 with its max speed)
 };
 
+/// Which setpoint of a planned step test a limit refused, and the verdict: typed data that
+/// VerdictText::stepRefusal words for lkstudio and lkctl.
+struct StepRefusal {
+    safety::Verdict verdict; ///< kind None: nothing was refused by a limit
+    int index = -1;          ///< the refused setpoint, 0-based
+    int count = 0;           ///< how many setpoints the test has
+    StepSetpoint setpoint;   ///< the refused one (no request)
+    StepLoop loop = StepLoop::Speed;
+    std::optional<protocol::Series> series; ///< the series the plan was checked against
+};
+
 /// The timed setpoints of one step test, every one of them checked by safety::MotionPlanner
 /// before anything is sent (speed bound, series and soft limits; each position target within
 /// one output turn of the drive's read angle or of the target before it), or the refusal of
@@ -71,11 +82,11 @@ public:
     const StepTestSpec &spec() const { return m_spec; }
     const QVector<StepSetpoint> &setpoints() const { return m_setpoints; }
     /// The limit that refused the test (kind None when allowed or when the spec was bad).
-    const safety::Verdict &verdict() const { return m_verdict; }
+    const safety::Verdict &verdict() const { return m_refusal.verdict; }
     const QString &specError() const { return m_specError; }
-    /// The refusal in one English sentence (the bad spec, or the setpoint and the limit);
-    /// empty when allowed.
-    QString refusal() const;
+    /// The setpoint a limit refused, with the verdict (verdict kind None when allowed or when
+    /// the spec was bad).
+    const StepRefusal &refusal() const { return m_refusal; }
     /// Which speed bound the commands went out with (MotionPlanner's; the same for each).
     safety::SpeedBound bound() const { return m_bound; }
     double boundDps() const { return m_boundDps; }
@@ -85,9 +96,8 @@ public:
 private:
     StepTestSpec m_spec;
     QVector<StepSetpoint> m_setpoints;
-    safety::Verdict m_verdict;
     QString m_specError;
-    QString m_refusedSetpoint; ///< "setpoint 2 of 3 (step, 0 -> 720 dps at 1 s)"
+    StepRefusal m_refusal;
     safety::SpeedBound m_bound = safety::SpeedBound::None;
     double m_boundDps = 0;
     double m_endS = 0;

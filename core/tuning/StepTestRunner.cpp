@@ -158,12 +158,13 @@ void StepTestRunner::begin(std::optional<double> angleDeg)
     position.gearRatio = m_gearRatio;
     m_plan = StepTestPlan::make(m_spec, m_session.series(m_spec.id), m_limits, position);
     if (!m_plan.allowed()) {
-        m_result.verdict = m_plan.verdict();
-        const bool limit = !m_plan.verdict().allowed();
-        end(limit ? StepTestFailure::Refused : StepTestFailure::BadSpec,
-            (limit ? QStringLiteral("refused for safety, nothing was sent: %1")
-                   : QStringLiteral("%1; nothing was sent"))
-                .arg(m_plan.refusal()));
+        m_result.refusal = m_plan.refusal();
+        // The limit's refusal is typed (result.refusal): lkctl and the UI word it.
+        if (!m_plan.verdict().allowed())
+            end(StepTestFailure::Refused, QStringLiteral("refused for safety, nothing was sent"));
+        else
+            end(StepTestFailure::BadSpec,
+                QStringLiteral("%1; nothing was sent").arg(m_plan.specError()));
         return;
     }
     m_result.bound = m_plan.bound();

@@ -53,8 +53,8 @@ struct StepTestResult {
     safety::SpeedBound bound = safety::SpeedBound::None; ///< as StepTestPlan::bound()
     double boundDps = 0;
     StepTestFailure failure = StepTestFailure::None;
-    safety::Verdict verdict; ///< the limit of a Refused test
-    QString message;         ///< English: why it failed, and what may still be moving
+    StepRefusal refusal; ///< a Refused test: the setpoint and the limit (VerdictText words it)
+    QString message;     ///< English: why it failed, and what may still be moving
     bool ok() const { return failure == StepTestFailure::None; }
     bool anythingSent() const { return !sent.isEmpty(); }
 };

@@ -431,104 +431,6 @@
     </message>
 </context>
 <context>
-    <name>lk::safety::MotionGuard</name>
-    <message>
-        <source>%1 %2 dps exceeds the %3 series top speed of %4 dps</source>
-        <translation>%1 %2 dps 超过 %3 系列的最高速度 %4 dps</translation>
-    </message>
-    <message>
-        <source>%1 %2 dps exceeds your speed limit of %3 dps</source>
-        <translation>%1 %2 dps 超过您的速度限值 %3 dps</translation>
-    </message>
-    <message>
-        <source>max speed</source>
-        <translation>最大速度</translation>
-    </message>
-    <message>
-        <source>torque needs the drive&apos;s series: scan the bus first</source>
-        <translation>转矩控制需要知道驱动的系列：请先扫描总线</translation>
-    </message>
-    <message>
-        <source>torque current %1 A exceeds the %2 series rating of %3 A</source>
-        <translation>转矩电流 %1 A 超过 %2 系列的额定值 %3 A</translation>
-    </message>
-    <message>
-        <source>torque current %1 A exceeds your torque limit of %2 A</source>
-        <translation>转矩电流 %1 A 超过您的转矩限值 %2 A</translation>
-    </message>
-    <message>
-        <source>target %1 deg is below your angle range (min %2 deg)</source>
-        <translation>目标 %1° 低于您的角度范围（最小 %2°）</translation>
-    </message>
-    <message>
-        <source>target %1 deg is above your angle range (max %2 deg)</source>
-        <translation>目标 %1° 高于您的角度范围（最大 %2°）</translation>
-    </message>
-    <message>
-        <source>increment of %1 deg exceeds your step limit of %2 deg</source>
-        <translation>增量 %1° 超过您的步长限值 %2°</translation>
-    </message>
-    <message>
-        <source>open loop needs the drive&apos;s series: scan the bus first</source>
-        <translation>开环控制需要知道驱动的系列：请先扫描总线</translation>
-    </message>
-    <message>
-        <source>%1 drives do not implement %2</source>
-        <translation>%1 驱动不支持 %2</translation>
-    </message>
-    <message>
-        <source>open-loop power %1 exceeds your power limit of %2</source>
-        <translation>开环功率 %1 超过您的功率限值 %2</translation>
-    </message>
-    <message>
-        <source>speed</source>
-        <translation>速度</translation>
-    </message>
-    <message>
-        <source>%1 %2 dps exceeds %3 dps, the top speed of the slowest series (the drive&apos;s series is unknown)</source>
-        <translation>%1 %2 dps 超过 %3 dps，即最慢系列的最高速度（驱动的系列未知）</translation>
-    </message>
-    <message>
-        <source>no speed limit is set: set one first</source>
-        <translation>未设置速度限值：请先设置</translation>
-    </message>
-</context>
-<context>
-    <name>lk::safety::MotionPlanner</name>
-    <message>
-        <source>the drive&apos;s current angle is unknown: read it (0x92) first</source>
-        <translation>驱动的当前角度未知：请先读取 (0x92)</translation>
-    </message>
-    <message>
-        <source>a move of %1 deg from the current angle %2 deg exceeds one output turn (%3 deg)</source>
-        <translation>从当前角度 %2° 移动 %1° 超过输出轴一圈（%3°）</translation>
-    </message>
-    <message>
-        <source>an increment of %1 deg exceeds one output turn (%2 deg)</source>
-        <translation>增量 %1° 超过输出轴一圈（%2°）</translation>
-    </message>
-    <message>
-        <source>your angle range needs the drive&apos;s current angle: read it (0x92) first</source>
-        <translation>您的角度范围需要驱动的当前角度：请先读取 (0x92)</translation>
-    </message>
-    <message>
-        <source>within your speed limit of %1 dps</source>
-        <translation>在您的速度限值 %1 dps 以内</translation>
-    </message>
-    <message>
-        <source>max speed %1 dps (your speed limit)</source>
-        <translation>最大速度 %1 dps（您的速度限值）</translation>
-    </message>
-    <message>
-        <source>max speed %1 dps (the series top speed)</source>
-        <translation>最大速度 %1 dps（该系列的最高速度）</translation>
-    </message>
-    <message>
-        <source>max speed %1 dps (the max speed you gave)</source>
-        <translation>最大速度 %1 dps（您给定的最大速度）</translation>
-    </message>
-</context>
-<context>
     <name>lk::safety::SoftLimits</name>
     <message>
         <source>%1 must be a whole number in %2 (got %3)</source>
@@ -557,6 +459,141 @@
     <message>
         <source>key &quot;%1&quot; is given twice</source>
         <translation>键“%1”出现了两次</translation>
+    </message>
+</context>
+<context>
+    <name>lk::text::VerdictText</name>
+    <message>
+        <source>this command</source>
+        <translation>此命令</translation>
+    </message>
+    <message>
+        <source>the max speed %1 dps is over %2 dps, the top speed of the slowest series (the drive&apos;s series is unknown)</source>
+        <translation>最大速度 %1 dps 超过 %2 dps，即最慢系列的最高速度（驱动的系列未知）</translation>
+    </message>
+    <message>
+        <source>the speed %1 dps is over %2 dps, the top speed of the slowest series (the drive&apos;s series is unknown)</source>
+        <translation>速度 %1 dps 超过 %2 dps，即最慢系列的最高速度（驱动的系列未知）</translation>
+    </message>
+    <message>
+        <source>the max speed %1 dps is over the %2 series top speed of %3 dps</source>
+        <translation>最大速度 %1 dps 超过 %2 系列的最高速度 %3 dps</translation>
+    </message>
+    <message>
+        <source>the speed %1 dps is over the %2 series top speed of %3 dps</source>
+        <translation>速度 %1 dps 超过 %2 系列的最高速度 %3 dps</translation>
+    </message>
+    <message>
+        <source>no speed limit is set: set one first</source>
+        <translation>未设置速度限值：请先设置</translation>
+    </message>
+    <message>
+        <source>the max speed %1 dps is over your speed limit of %2 dps</source>
+        <translation>最大速度 %1 dps 超过您的速度限值 %2 dps</translation>
+    </message>
+    <message>
+        <source>the speed %1 dps is over your speed limit of %2 dps</source>
+        <translation>速度 %1 dps 超过您的速度限值 %2 dps</translation>
+    </message>
+    <message>
+        <source>a move of %1° from the current angle %2° is more than one output turn (%3°): move in smaller steps</source>
+        <translation>从当前角度 %2° 移动 %1° 超过输出轴一圈（%3°）：请分小步移动</translation>
+    </message>
+    <message>
+        <source>an increment of %1° is more than one output turn (%2°): move in smaller steps</source>
+        <translation>增量 %1° 超过输出轴一圈（%2°）：请分小步移动</translation>
+    </message>
+    <message>
+        <source>a move of %1° is more than one output turn (%2°): move in smaller steps</source>
+        <translation>移动 %1° 超过输出轴一圈（%2°）：请分小步移动</translation>
+    </message>
+    <message>
+        <source>pre-roll to FROM</source>
+        <translation>预运行到 FROM</translation>
+    </message>
+    <message>
+        <source>step</source>
+        <translation>阶跃</translation>
+    </message>
+    <message>
+        <source>return to FROM</source>
+        <translation>返回 FROM</translation>
+    </message>
+    <message>
+        <source>unknown series</source>
+        <translation>未知系列</translation>
+    </message>
+    <message>
+        <source>%1 needs the drive&apos;s series, whose current limits are unknown: scan the bus first</source>
+        <translation>%1 需要知道驱动的系列，其电流限值未知：请先扫描总线</translation>
+    </message>
+    <message>
+        <source>%1 drives do not implement %2</source>
+        <translation>%1 驱动不支持 %2</translation>
+    </message>
+    <message>
+        <source>the torque current %1 A is over the %2 series rating of %3 A</source>
+        <translation>转矩电流 %1 A 超过 %2 系列的额定值 %3 A</translation>
+    </message>
+    <message>
+        <source>the torque current %1 A is over your torque limit of %2 A</source>
+        <translation>转矩电流 %1 A 超过您的转矩限值 %2 A</translation>
+    </message>
+    <message>
+        <source>the open-loop power %1 is over your power limit of %2 (of 1000)</source>
+        <translation>开环功率 %1 超过您的功率限值 %2（满量程 1000）</translation>
+    </message>
+    <message>
+        <source>the target %1° is below your angle range (min %2°)</source>
+        <translation>目标 %1° 低于您的角度范围（最小 %2°）</translation>
+    </message>
+    <message>
+        <source>the target %1° is above your angle range (max %2°)</source>
+        <translation>目标 %1° 高于您的角度范围（最大 %2°）</translation>
+    </message>
+    <message>
+        <source>an increment of %1° is over your step limit of %2°</source>
+        <translation>增量 %1° 超过您的步长限值 %2°</translation>
+    </message>
+    <message>
+        <source>the drive&apos;s current angle is not known, so the move cannot be checked: read it (0x92) first</source>
+        <translation>驱动的当前角度未知，无法检查此次运动：请先读取 (0x92)</translation>
+    </message>
+    <message>
+        <source>within your speed limit of %1 dps</source>
+        <translation>在您的速度限值 %1 dps 以内</translation>
+    </message>
+    <message>
+        <source>max speed %1 dps (your speed limit)</source>
+        <translation>最大速度 %1 dps（您的速度限值）</translation>
+    </message>
+    <message>
+        <source>max speed %1 dps (the series top speed)</source>
+        <translation>最大速度 %1 dps（该系列的最高速度）</translation>
+    </message>
+    <message>
+        <source>max speed %1 dps (the max speed you gave)</source>
+        <translation>最大速度 %1 dps（您给定的最大速度）</translation>
+    </message>
+    <message>
+        <source>%1 dps</source>
+        <translation>%1 dps</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>%1 -&gt; %2 dps</source>
+        <translation>%1 -&gt; %2 dps</translation>
+    </message>
+    <message>
+        <source>%1° -&gt; %2°</source>
+        <translation>%1° -&gt; %2°</translation>
+    </message>
+    <message>
+        <source>setpoint %1 of %2 (%3, %4 at %5 s): %6</source>
+        <translation>第 %1 个设定点（共 %2 个；%3，%4，于 %5 s）：%6</translation>
     </message>
 </context>
 <context>
@@ -1783,58 +1820,6 @@
 <context>
     <name>lk::ui::DriveText</name>
     <message>
-        <source>unknown series</source>
-        <translation>未知系列</translation>
-    </message>
-    <message>
-        <source>Refused: the drive&apos;s series is unknown, so its current limits are unknown. Scan the bus first.</source>
-        <translation>已拒绝：驱动的系列未知，因此其电流限值未知。请先扫描总线。</translation>
-    </message>
-    <message>
-        <source>Refused: %1 drives do not implement this command.</source>
-        <translation>已拒绝：%1 驱动不支持此命令。</translation>
-    </message>
-    <message>
-        <source>Refused by the series limit: %1 A is over the %2 rating of %3 A.</source>
-        <translation>被系列限值拒绝：%1 A 超过 %2 的额定值 %3 A。</translation>
-    </message>
-    <message>
-        <source>Refused by your torque limit: %1 A is over %2 A.</source>
-        <translation>被您的转矩限值拒绝：%1 A 超过 %2 A。</translation>
-    </message>
-    <message>
-        <source>Refused by your open-loop power limit: %1 is over %2 (of 1000).</source>
-        <translation>被您的开环功率限值拒绝：%1 超过 %2（满量程 1000）。</translation>
-    </message>
-    <message>
-        <source>Refused by the series limit: %1 dps is over the %2 top speed of %3 dps.</source>
-        <translation>被系列限值拒绝：%1 dps 超过 %2 的最高速度 %3 dps。</translation>
-    </message>
-    <message>
-        <source>Refused by your speed limit: %1 dps is over %2 dps.</source>
-        <translation>被您的速度限值拒绝：%1 dps 超过 %2 dps。</translation>
-    </message>
-    <message>
-        <source>Refused by your angle range: %1° is below the minimum of %2°.</source>
-        <translation>被您的角度范围拒绝：%1° 低于最小值 %2°。</translation>
-    </message>
-    <message>
-        <source>Refused by your angle range: %1° is above the maximum of %2°.</source>
-        <translation>被您的角度范围拒绝：%1° 高于最大值 %2°。</translation>
-    </message>
-    <message>
-        <source>Refused by your step limit: a move of %1° is more than %2°.</source>
-        <translation>被您的步长限值拒绝：移动 %1° 超过 %2°。</translation>
-    </message>
-    <message>
-        <source>Refused, nothing sent: %1 must be in %2.</source>
-        <translation>已拒绝，未发送：%1 必须在 %2 范围内。</translation>
-    </message>
-    <message>
-        <source>Refused, nothing sent: %1 must be in %2 (%3).</source>
-        <translation>已拒绝，未发送：%1 必须在 %2 范围内（%3）。</translation>
-    </message>
-    <message>
         <source>%1: drive %2 did not answer.</source>
         <translation>%1：驱动 %2 无应答。</translation>
     </message>
@@ -1851,12 +1836,8 @@
         <translation>%1：回复数据损坏（%2）。</translation>
     </message>
     <message>
-        <source>Refused: the drive&apos;s current angle is not known (read with 0x92 first), so the move cannot be checked. Nothing sent.</source>
-        <translation>已拒绝：驱动的当前角度未知（请先用 0x92 读取），无法检查此次运动。未发送任何命令。</translation>
-    </message>
-    <message>
-        <source>Refused: a move of %1° is more than one output turn (%2°). Move in smaller steps.</source>
-        <translation>已拒绝：移动 %1° 超过输出轴一圈（%2°）。请分小步移动。</translation>
+        <source>Refused, nothing sent: %1.</source>
+        <translation>已拒绝，未发送：%1。</translation>
     </message>
     <message>
         <source>Stopped by the user.</source>
@@ -1885,6 +1866,10 @@
     <message>
         <source>Stopped: the port was reopened at another baud.</source>
         <translation>已停止：端口已以另一波特率重新打开。</translation>
+    </message>
+    <message>
+        <source>Refused: %1.</source>
+        <translation>已拒绝：%1。</translation>
     </message>
 </context>
 <context>
@@ -3967,10 +3952,6 @@
         <translation>按当前设置无法执行测试（%1）。</translation>
     </message>
     <message>
-        <source>Refused: %1</source>
-        <translation>已拒绝：%1</translation>
-    </message>
-    <message>
         <source>Drive %1 did not answer: the test stopped.</source>
         <translation>驱动 %1 无应答：测试已停止。</translation>
     </message>
@@ -4005,6 +3986,10 @@
     <message>
         <source>Run the step test set above on the selected drive.</source>
         <translation>在所选驱动上执行上面设置的阶跃测试。</translation>
+    </message>
+    <message>
+        <source>Refused: %1.</source>
+        <translation>已拒绝：%1。</translation>
     </message>
 </context>
 <context>

@@ -3,6 +3,7 @@
 #include <bus/BusSession.h>
 #include <protocol/RequestBuilder.h>
 #include <safety/MotionGuard.h>
+#include <text/VerdictText.h>
 #include <transport/SerialTransport.h>
 
 #include <QtCore/QDir>
@@ -343,7 +344,8 @@ void tst_E2eBus::controlModesMoveTheMotor()
     const Series series = *session.series(c.id);
     const safety::Verdict v =
         safety::MotionGuard::check(*built.request, series, safety::SoftLimits::defaults(series));
-    QVERIFY2(v.allowed(), qPrintable(v.message)); // the gate every motion command passes
+    QVERIFY2(v.allowed(), qPrintable(lk::text::VerdictText::verdict(
+                              v, series))); // the gate every motion command passes
     const std::optional<RequestResult> sent = sendAndWait(session, *built.request);
     QVERIFY(sent);
     // A reply lost to a stall of the loaded machine is not retried for an increment (it

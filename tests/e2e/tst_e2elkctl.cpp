@@ -404,10 +404,10 @@ void tst_E2eLkctl::refusedControlSendsNothing_data()
                                << QByteArray("max speed") << QByteArray("3E A8 03");
     // Targets start where the drive is: a far target is refused, whatever the speed.
     QTest::newRow("position beyond one turn")
-        << QStringList{"3", "multi-position", "100000"} << QByteArray("exceeds one output turn")
-        << QByteArray("3E A4 03");
+        << QStringList{"3", "multi-position", "100000"}
+        << QByteArray("is more than one output turn") << QByteArray("3E A4 03");
     QTest::newRow("increment beyond one turn")
-        << QStringList{"3", "increment", "-361"} << QByteArray("exceeds one output turn")
+        << QStringList{"3", "increment", "-361"} << QByteArray("is more than one output turn")
         << QByteArray("3E A8 03");
 }
 

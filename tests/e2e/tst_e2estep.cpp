@@ -150,14 +150,14 @@ void tst_E2eStep::refusalNamesTheLimitAndSendsNothing_data()
     QTest::addColumn<QByteArray>("frame");
     QTest::newRow("speed over the speed limit")
         << QStringList{"3", "speed", "0", "720", "--max-speed-dps", "360"}
-        << QByteArray("setpoint 2 of 3 (step, 0 -> 720 dps at 1 s): speed 720 dps exceeds your "
-                      "speed limit of 360 dps")
+        << QByteArray("setpoint 2 of 3 (step, 0 -> 720 dps at 1 s): the speed 720 dps is over "
+                      "your speed limit of 360 dps")
         << QByteArray("3E A2 03");
     QTest::newRow("square: the last edge too")
         << QStringList{"32", "speed", "-100", "100", "--periods", "2", "--max-speed-dps", "99"}
         << QByteArray("setpoint 1 of 5") << QByteArray("3E A2 20");
     QTest::newRow("position beyond one output turn")
-        << QStringList{"3", "position", "0", "5000"} << QByteArray("exceeds one output turn")
+        << QStringList{"3", "position", "0", "5000"} << QByteArray("is more than one output turn")
         << QByteArray("3E A4 03");
 }
 

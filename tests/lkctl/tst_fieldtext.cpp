@@ -1,32 +1,13 @@
+#include "FieldJsonTestUtil.h"
 #include "protocol/FieldText.h"
-#include "protocol/RequestBuilder.h"
 
 #include <QtTest/QtTest>
 
 using namespace lk::protocol;
-
-Q_DECLARE_METATYPE(lk::protocol::Request)
-Q_DECLARE_METATYPE(lk::protocol::Reply)
+using lk::fieldjsontest::req;
+using lk::fieldjsontest::state2;
 
 namespace {
-
-Request req(const BuildResult &r)
-{
-    if (!r.ok())
-        qFatal("test vector refused: %s", qPrintable(r.error.message()));
-    return *r.request;
-}
-
-State2 state2(qint8 t, qint16 torque, bool isPower, qint16 speed, quint16 enc)
-{
-    State2 s;
-    s.temperatureC = t;
-    s.torqueRaw = torque;
-    s.isPower = isPower;
-    s.speedDps = speed;
-    s.encoder = enc;
-    return s;
-}
 
 State1 state1(qint8 t, quint16 voltageRaw, quint8 errors)
 {

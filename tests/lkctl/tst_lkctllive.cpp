@@ -281,16 +281,16 @@ void tst_LkctlLive::controlWithinAndOverLimits_data()
                               << QByteArray();
     QTest::newRow("geared position over one output turn")
         << sim("control 32 multi-position 5000") << 4
-        << QByteArray("exceeds one output turn (3600 deg)");
+        << QByteArray("is more than one output turn (3600°)");
     QTest::newRow("position over one turn")
         << sim("control 3 multi-position 11000") << 4
-        << QByteArray("from the current angle 52.52 deg exceeds one output turn (360 deg)");
+        << QByteArray("from the current angle 52.52° is more than one output turn (360°)");
     QTest::newRow("increment over one turn")
         << sim("control 3 increment -400") << 4
-        << QByteArray("an increment of 400 deg exceeds one output turn (360 deg)");
+        << QByteArray("an increment of 400° is more than one output turn (360°)");
     QTest::newRow("max speed over the speed limit")
         << sim("control 3 multi-position 100 --max-speed 800 --max-speed-dps 720") << 4
-        << QByteArray("max speed 800 dps exceeds your speed limit of 720 dps");
+        << QByteArray("max speed 800 dps is over your speed limit of 720 dps");
     QTest::newRow("silent drive") << sim("control 5 speed 10") << 1
                                   << QByteArray("read_model (ID 5)");
 }
@@ -330,7 +330,7 @@ void tst_LkctlLive::limitsFile()
     QVERIFY2(r.err.contains("your speed limit of 50 dps"), r.err.constData());
     r = lkctl(words("control 3 increment 45 --limits") + QStringList{good} + words(kSim));
     QCOMPARE(r.exitCode, 4);
-    QVERIFY2(r.err.contains("your step limit of 30 deg"), r.err.constData());
+    QVERIFY2(r.err.contains("your step limit of 30°"), r.err.constData());
     r = lkctl(words("control 3 speed 60 --max-speed-dps 70 --limits") + QStringList{good} +
               words(kSim));
     QCOMPARE(r.exitCode, 0); // the flag overrides the file

@@ -3,6 +3,7 @@
 #include <motor/SeriesLimits.h>
 #include <protocol/RequestBuilder.h>
 #include <safety/MotionGuard.h>
+#include <text/VerdictText.h>
 
 #include <QtCore/QJsonDocument>
 #include <QtTest/QtTest>
@@ -88,7 +89,7 @@ void tst_MotionGuard::check()
     const safety::Verdict v = safety::MotionGuard::check(request, series, limits);
     QCOMPARE(v.kind, expected);
     QCOMPARE(v.allowed(), expected == LimitKind::None);
-    QCOMPARE(v.message.isEmpty(), expected == LimitKind::None);
+    QCOMPARE(text::VerdictText::verdict(v, series).isEmpty(), expected == LimitKind::None);
 }
 
 void tst_MotionGuard::defaultsAreSafe()
@@ -119,7 +120,7 @@ void tst_MotionGuard::defaultsAreSafe()
     const auto v = safety::MotionGuard::check(req(speed(2, 150)), MG, l);
     QCOMPARE(v.kind, LimitKind::SoftSpeed);
     QCOMPARE(v.limit, 100.0);
-    QVERIFY(v.message.contains(QLatin1String("100")));
+    QVERIFY(text::VerdictText::verdict(v, MG).contains(QLatin1String("100")));
 }
 
 void tst_MotionGuard::json_roundTrip()

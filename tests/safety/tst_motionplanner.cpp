@@ -3,6 +3,7 @@
 
 #include <protocol/RequestBuilder.h>
 #include <safety/MotionPlanner.h>
+#include <text/VerdictText.h>
 
 #include <QtTest/QtTest>
 
@@ -81,13 +82,14 @@ void tst_MotionPlanner::unlimitedPositionsGetTheSpeedLimit()
     QFETCH(int, limited);
     const safety::MotionPlan p =
         safety::MotionPlanner::plan(request, Series::MF, limits720(), at(0));
-    QVERIFY2(p.allowed(), qPrintable(p.verdict.message));
+    QVERIFY2(p.allowed(), qPrintable(text::VerdictText::verdict(p.verdict, Series::MF)));
     QCOMPARE(int(p.request->command), limited);
     QCOMPARE(maxSpeedRaw(*p.request), std::optional<quint32>(72000));
     QCOMPARE(p.bound, SpeedBound::SoftLimit);
     QCOMPARE(p.boundDps, 720.0);
     QVERIFY(p.limited);
-    QCOMPARE(p.boundText(), QStringLiteral("max speed 720 dps (your speed limit)"));
+    QCOMPARE(text::VerdictText::speedBound(p.bound, p.boundDps),
+             QStringLiteral("max speed 720 dps (your speed limit)"));
 }
 
 void tst_MotionPlanner::lowerMaxSpeedIsKept()
@@ -107,7 +109,7 @@ void tst_MotionPlanner::higherMaxSpeedIsRefused()
         req(protocol::build::incrementPosition(1, 10, 5000)), Series::MF, limits720(), at(0));
     QVERIFY(!p.allowed());
     QCOMPARE(p.verdict.kind, LimitKind::SoftSpeed);
-    QVERIFY(p.verdict.message.contains(QStringLiteral("720")));
+    QVERIFY(text::VerdictText::verdict(p.verdict, Series::MF).contains(QStringLiteral("720")));
 }
 
 void tst_MotionPlanner::seriesTopBelowTheLimit()
@@ -136,7 +138,8 @@ void tst_MotionPlanner::multiTurnWithinOneOutputTurn()
     QVERIFY(!p.allowed());
     QCOMPARE(p.verdict.kind, LimitKind::OutputTurn);
     QCOMPARE(p.verdict.limit, 360.0);
-    QVERIFY(p.verdict.message.contains(QStringLiteral("one output turn")));
+    QVERIFY(text::VerdictText::verdict(p.verdict, Series::MF)
+                .contains(QStringLiteral("one output turn")));
     p = safety::MotionPlanner::plan(req(protocol::build::multiPosition(1, 11360)), Series::MF,
                                     limits720(), at(11000));
     QVERIFY(p.allowed());
@@ -149,7 +152,8 @@ void tst_MotionPlanner::gearedDriveTurnIsLonger()
 {
     const safety::MotionPlan p = safety::MotionPlanner::plan(
         req(protocol::build::multiPosition(1, 3000)), Series::MG, limits720(), at(0, 10));
-    QVERIFY2(p.allowed(), qPrintable(p.verdict.message)); // 3600 rotor deg per output turn
+    QVERIFY2(p.allowed(), qPrintable(text::VerdictText::verdict(
+                              p.verdict, Series::MG))); // 3600 rotor deg per output turn
 }
 
 void tst_MotionPlanner::incrementWithinOneOutputTurn()

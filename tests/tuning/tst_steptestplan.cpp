@@ -1,3 +1,4 @@
+#include <text/VerdictText.h>
 #include <tuning/StepTestPlan.h>
 
 #include <QtTest/QTest>
@@ -14,6 +15,12 @@ using Role = StepSetpoint::Role;
 Q_DECLARE_METATYPE(lk::tuning::StepTestSpec)
 
 namespace {
+// Why a plan was refused, as lkctl and the GUI word it: the bad spec, or the setpoint and limit.
+QString refusalText(const StepTestPlan &p)
+{
+    return p.specError().isEmpty() ? text::VerdictText::stepRefusal(p.refusal()) : p.specError();
+}
+
 StepTestSpec speedSpec(double from, double to, int periods = 1)
 {
     StepTestSpec s;
@@ -77,7 +84,7 @@ void tst_StepTestPlan::singleSpeedStepReturnsToFrom()
     const StepTestPlan p =
         StepTestPlan::make(speedSpec(100, 400), Series::MF,
                            safety::SoftLimits::defaults(Series::MF), at(std::nullopt));
-    QVERIFY2(p.allowed(), qPrintable(p.refusal()));
+    QVERIFY2(p.allowed(), qPrintable(refusalText(p)));
     QCOMPARE(p.setpoints().size(), 3);
     const QVector<Role> roles{Role::PreRoll, Role::Edge, Role::Return};
     const QVector<double> times{0, 0.25, 0.75};
@@ -100,7 +107,7 @@ void tst_StepTestPlan::squareWaveEndsAtFrom()
 {
     const StepTestPlan p = StepTestPlan::make(speedSpec(0, -200, 3), Series::MG,
                                               safety::SoftLimits::defaults(Series::MG), at(0));
-    QVERIFY2(p.allowed(), qPrintable(p.refusal()));
+    QVERIFY2(p.allowed(), qPrintable(refusalText(p)));
     QCOMPARE(p.setpoints().size(), 7); // pre-roll + 6 edges, no return: the last edge is it
     for (int k = 0; k < 6; ++k) {
         const StepSetpoint &s = p.setpoints().at(k + 1);
@@ -117,7 +124,7 @@ void tst_StepTestPlan::positionMovesAreLimitedAndBounded()
     safety::SoftLimits limits = safety::SoftLimits::defaults(Series::MF);
     limits.maxSpeedDps = 720;
     const StepTestPlan p = StepTestPlan::make(positionSpec(10, 100, 2), Series::MF, limits, at(5));
-    QVERIFY2(p.allowed(), qPrintable(p.refusal()));
+    QVERIFY2(p.allowed(), qPrintable(refusalText(p)));
     QCOMPARE(p.setpoints().size(), 5);
     for (const StepSetpoint &s : p.setpoints()) {
         QCOMPARE(s.request.command, Command::MultiPositionLimited);
@@ -185,8 +192,9 @@ void tst_StepTestPlan::positionTargetsStartWhereTheDriveIs()
     QVERIFY(!p.allowed());
     QVERIFY(p.setpoints().isEmpty());
     QCOMPARE(int(p.verdict().kind), kind);
-    QVERIFY2(p.refusal().startsWith(setpoint), qPrintable(p.refusal()));
-    QVERIFY(p.refusal().contains(p.verdict().message));
+    QVERIFY2(refusalText(p).startsWith(setpoint), qPrintable(refusalText(p)));
+    QVERIFY(refusalText(p).contains(text::VerdictText::verdict(p.verdict(), Series::MF)));
+    QCOMPARE(p.refusal().series, std::optional<Series>(Series::MF));
 }
 
 void tst_StepTestPlan::gearRatioWidensTheTurn()
@@ -194,7 +202,7 @@ void tst_StepTestPlan::gearRatioWidensTheTurn()
     // One output turn of a 1:10 gear is 3600 rotor degrees.
     const StepTestPlan p = StepTestPlan::make(positionSpec(0, 3000), Series::MG,
                                               safety::SoftLimits::defaults(Series::MG), at(0, 10));
-    QVERIFY2(p.allowed(), qPrintable(p.refusal()));
+    QVERIFY2(p.allowed(), qPrintable(refusalText(p)));
 }
 
 void tst_StepTestPlan::speedOverTheLimitIsRefused_data()
@@ -218,7 +226,7 @@ void tst_StepTestPlan::speedOverTheLimitIsRefused()
     QVERIFY(p.setpoints().isEmpty());
     QCOMPARE(p.verdict().kind, LimitKind::SoftSpeed);
     QCOMPARE(p.verdict().limit, 720.0);
-    QVERIFY2(p.refusal().startsWith(setpoint), qPrintable(p.refusal()));
+    QVERIFY2(refusalText(p).startsWith(setpoint), qPrintable(refusalText(p)));
 }
 
 void tst_StepTestPlan::angleRangeRefusesTheTarget()
@@ -269,7 +277,8 @@ void tst_StepTestPlan::badSpecs()
     QVERIFY(p.setpoints().isEmpty());
     QVERIFY(p.verdict().allowed()); // not a limit: the spec itself
     QVERIFY2(p.specError().contains(problem), qPrintable(p.specError()));
-    QCOMPARE(p.refusal(), p.specError());
+    QCOMPARE(refusalText(p), p.specError());
+    QVERIFY(text::VerdictText::stepRefusal(p.refusal()).isEmpty()); // no setpoint refused
 }
 
 QTEST_APPLESS_MAIN(tst_StepTestPlan)

@@ -193,7 +193,7 @@ void tst_StepTestRunner::refusedPlanSendsNothing()
     const StepTestResult r = rig.waitForEnd();
     QCOMPARE(rig.failed.size(), 1);
     QCOMPARE(r.failure, StepTestFailure::Refused);
-    QCOMPARE(r.verdict.kind, safety::LimitKind::SoftSpeed);
+    QCOMPARE(r.refusal.verdict.kind, safety::LimitKind::SoftSpeed);
     QVERIFY2(r.message.contains(QLatin1String("nothing was sent")), qPrintable(r.message));
     QVERIFY(!r.anythingSent());
     QTest::qWait(300); // anything sent would have completed by now

@@ -14,22 +14,23 @@
 namespace lk::ui {
 
 /// Translated sentences the drive views show for refusals and failed requests: the core
-/// returns typed reasons (LimitKind, FieldError, RequestStatus), the UI words them.
+/// returns typed reasons (FieldError, RequestStatus), the UI words them (a safety verdict:
+/// text::VerdictText, shared with lkctl).
 class DriveText {
     Q_DECLARE_TR_FUNCTIONS(lk::ui::DriveText)
 public:
-    /// Which limit stopped a command, with both numbers; empty when it was allowed.
-    static QString verdict(const safety::Verdict &verdict, std::optional<protocol::Series> series);
     /// A builder's refusal: the field and its allowed range.
     static QString fieldError(const protocol::FieldError &error);
     /// Why a request did not complete (timeout, disconnected, ...); empty when it did.
     static QString failure(const bus::RequestResult &result);
-    /// Why a setpoint stream stopped; a refusal says which limit or field, like verdict().
+    /// The safety gate's refusal, framed: "Refused: <which limit, both numbers>."
+    static QString refusal(const safety::Verdict &verdict, std::optional<protocol::Series> series);
+    /// Why a setpoint stream stopped; a refusal says which limit or field, like refusal().
     static QString setpointStop(const bus::SetpointStop &stop,
                                 std::optional<protocol::Series> series);
     /// "write_pid_rom (0x32)".
     static QString command(protocol::Command command);
-    /// "MF" or "unknown series".
+    /// "MF" or "unknown series" (VerdictText's).
     static QString series(std::optional<protocol::Series> series);
 };
 

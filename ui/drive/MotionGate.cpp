@@ -2,6 +2,8 @@
 
 #include "DriveText.h"
 
+#include <text/VerdictText.h>
+
 namespace lk::ui {
 
 MotionOutcome MotionGate::submit(RequestTracker &tracker, const protocol::BuildResult &built,
@@ -20,7 +22,7 @@ MotionOutcome MotionGate::submit(RequestTracker &tracker, const protocol::BuildR
         safety::MotionPlanner::plan(*built.request, series, limits, position);
     if (!plan.allowed()) {
         out.limit = plan.verdict.kind;
-        out.refusal = DriveText::verdict(plan.verdict, series);
+        out.refusal = DriveText::refusal(plan.verdict, series);
         return out;
     }
     const protocol::Request &request = *plan.request;
@@ -32,7 +34,7 @@ MotionOutcome MotionGate::submit(RequestTracker &tracker, const protocol::BuildR
     out.sent = out.ticket != 0;
     if (out.sent) {
         out.request = request;
-        out.bound = plan.boundText();
+        out.bound = text::VerdictText::speedBound(plan.bound, plan.boundDps);
     }
     if (!out.sent)
         out.refusal = QCoreApplication::translate("lk::ui::MotionGate", "Not connected.");

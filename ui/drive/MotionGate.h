@@ -20,7 +20,7 @@ struct MotionOutcome {
     quint64 ticket = 0;
     bool pending = false; ///< waits for the drive's angle (0x92) before it is planned and sent
     QString refusal;      ///< translated reason when nothing was sent
-    QString bound;        ///< which speed bound applied (MotionPlan::boundText), when sent
+    QString bound;        ///< which speed bound applied (VerdictText::speedBound), when sent
     std::optional<protocol::Request> request; ///< what was sent (a position move: its limited form)
     safety::LimitKind limit = safety::LimitKind::None;
     std::optional<protocol::FieldError> fieldError; ///< the builder refused a value

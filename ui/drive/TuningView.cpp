@@ -154,12 +154,10 @@ QWidget *TuningView::buildStepTab()
 }
 
 void TuningView::setStepTestLimits(
-    std::function<std::optional<safety::SoftLimits>(QString *why)> limits,
-    std::function<QString(const safety::Verdict &)> verdictText)
+    std::function<std::optional<safety::SoftLimits>(QString *why)> limits)
 {
     StepTestSources sources = m_stepTest->sources();
     sources.limits = std::move(limits);
-    sources.verdictText = std::move(verdictText);
     m_stepTest->setSources(sources);
 }
 

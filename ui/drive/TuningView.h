@@ -85,9 +85,8 @@ public:
     StepRunsView *stepRuns() const { return m_stepRuns; }
     StepRunList *runList() const { return m_runs; }
     /// Where step tests get their soft limits (the Control view's, nullopt with the reason
-    /// when they cannot be used) and how a refusal is worded.
-    void setStepTestLimits(std::function<std::optional<safety::SoftLimits>(QString *why)> limits,
-                           std::function<QString(const safety::Verdict &)> verdictText);
+    /// when they cannot be used).
+    void setStepTestLimits(std::function<std::optional<safety::SoftLimits>(QString *why)> limits);
     /// Shows the live plot (false) or the step response (true) beside the table.
     void showStepResponse(bool show);
     /// Stops a running step test from sending (the emergency stop's first step).

@@ -7,7 +7,6 @@
 #include <drive/ControlView.h>
 #include <drive/DriveInfoView.h>
 #include <drive/DriveSettingsStore.h>
-#include <drive/DriveText.h>
 #include <drive/EncoderResolutions.h>
 #include <drive/EncoderView.h>
 #include <drive/TuningView.h>
@@ -38,10 +37,8 @@ DriveViews::DriveViews(BusModel *model, BusController *controller, TelemetryStor
     m_control->setSession(session);
     m_encoder->setSession(session);
     m_info->setSession(session);
-    // Step tests obey the limits the Control view holds for the drive, worded the same way.
-    m_tuning->setStepTestLimits(
-        [this](QString *why) { return m_control->limitsInForce(why); },
-        [this](const safety::Verdict &v) { return DriveText::verdict(v, m_control->series()); });
+    // Step tests obey the limits the Control view holds for the drive.
+    m_tuning->setStepTestLimits([this](QString *why) { return m_control->limitsInForce(why); });
     connect(m_tuning, &TuningView::emergencyStopRequested, this,
             &DriveViews::emergencyStopRequested);
 

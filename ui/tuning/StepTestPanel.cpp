@@ -7,6 +7,7 @@
 #include <panels/StatusColors.h>
 
 #include <bus/BusSession.h>
+#include <text/VerdictText.h>
 
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QDoubleSpinBox>
@@ -308,10 +309,8 @@ QString StepTestPanel::failureText(const StepTestResult &result) const
     case StepTestFailure::BadSpec:
         return tr("The test cannot run as set (%1).").arg(result.message) + moving;
     case StepTestFailure::Refused:
-        return tr("Refused: %1")
-                   .arg(m_sources.verdictText ? m_sources.verdictText(result.verdict)
-                                              : result.message) +
-               moving;
+        // Worded as the Control view words a refusal (and as lkctl step prints it).
+        return tr("Refused: %1.").arg(text::VerdictText::stepRefusal(result.refusal)) + moving;
     case StepTestFailure::Silent:
         return tr("Drive %1 did not answer: the test stopped.").arg(result.spec.id) + moving;
     case StepTestFailure::Disconnected:

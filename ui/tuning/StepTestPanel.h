@@ -48,8 +48,6 @@ struct StepTestSources {
     std::function<std::optional<double>()> effortLimit;
     /// The drive's multi-turn angle last polled (rotor deg): a position test's default FROM.
     std::function<std::optional<double>()> angleDeg;
-    /// The limit that refused a test, worded as the Control view words it.
-    std::function<QString(const safety::Verdict &)> verdictText;
 };
 
 /// Runs a step test on the selected drive (tuning::StepTestRunner: every setpoint checked

@@ -79,11 +79,9 @@ bool tuning(SimRig &rig, const QString &dir)
 bool steps(SimRig &rig, const QString &dir)
 {
     lk::ui::TuningView view;
-    view.setStepTestLimits(
-        [&rig](QString *) {
-            return std::optional(lk::safety::SoftLimits::defaults(rig.motor(1).series));
-        },
-        {});
+    view.setStepTestLimits([&rig](QString *) {
+        return std::optional(lk::safety::SoftLimits::defaults(rig.motor(1).series));
+    });
     attach(view, rig, 1);
     if (!QTest::qWaitFor([&] { return view.readComplete() && !view.isBusy(); }, 10000))
         return false;

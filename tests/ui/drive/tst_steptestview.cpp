@@ -35,8 +35,7 @@ namespace {
 std::unique_ptr<TuningView> openView(SimRig &rig, int id, const lk::safety::SoftLimits &limits)
 {
     auto view = lk::drivetest::showView<TuningView>(rig, id, QSize(1366, 728));
-    view->setStepTestLimits([limits](QString *) { return std::optional(limits); },
-                            [](const lk::safety::Verdict &v) { return v.message; });
+    view->setStepTestLimits([limits](QString *) { return std::optional(limits); });
     if (!QTest::qWaitFor([&] { return view->readComplete() && !view->isBusy(); }, kWaitMs))
         return nullptr;
     return view;
@@ -179,12 +178,10 @@ void tst_StepTestView::damagedLimitsSendNothing()
     QVERIFY(rig.open());
     auto view = openView(rig, 1, limitsOf(rig, 1));
     QVERIFY(view);
-    view->setStepTestLimits(
-        [](QString *why) {
-            *why = QStringLiteral("Refused: the soft limits stored for drive 1 are damaged.");
-            return std::optional<lk::safety::SoftLimits>();
-        },
-        {});
+    view->setStepTestLimits([](QString *why) {
+        *why = QStringLiteral("Refused: the soft limits stored for drive 1 are damaged.");
+        return std::optional<lk::safety::SoftLimits>();
+    });
     QVERIFY(rig.barrier());
     const int before = motionTo(rig, 1);
     QVERIFY(!view->stepTest()->runTest());

@@ -1,24 +1,19 @@
 // The whole window against the in-process simulated bus: connect, scan, select, live values,
-// plots, traffic and its export, emergency stop (checked on the simulator's side), unplug.
+// plots, traffic and its export, clearing errors. Emergency stop: tst_mainwindowstop; link loss
+// and reconnect: tst_mainwindowlink.
+
+#include "MainWindowFixture.h"
 
 #include <drive/ControlView.h>
 #include <drive/DriveInfoView.h>
 #include <drive/EncoderView.h>
 #include <drive/TuningView.h>
-#include <main/AppSettings.h>
-#include <main/BusController.h>
-#include <main/CommandedMotion.h>
 #include <main/DriveViews.h>
-#include <main/EmergencyStopControl.h>
-#include <main/LinkLossWatch.h>
 #include <main/MainWindow.h>
-#include <panels/BusModel.h>
 #include <panels/BusPanel.h>
 #include <panels/ConnectionBar.h>
 #include <panels/DashboardPanel.h>
 #include <panels/DriveTree.h>
-#include <panels/EmergencyStopButton.h>
-#include <panels/MessageBanner.h>
 #include <panels/OverviewPanel.h>
 #include <panels/Readout.h>
 #include <panels/StatisticsView.h>
@@ -27,50 +22,25 @@
 #include <panels/TrafficPanel.h>
 #include <plot/PlotPanel.h>
 #include <plot/TelemetryStore.h>
-
-#include <bus/SetpointWaveform.h>
-#include <protocol/RequestBuilder.h>
 #include <protocol/StreamParser.h>
 #include <sim/SimBus.h>
-#include <sim/SimDrive.h>
-#include <transport/SimBusHandle.h>
 
-#include <QtCore/QTemporaryDir>
-#include <QtTest/QtTest>
 #include <QtWidgets/QCheckBox>
-#include <QtWidgets/QDialog>
 #include <QtWidgets/QLabel>
-#include <QtWidgets/QLineEdit>
 #include <QtWidgets/QProgressBar>
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QSpinBox>
 #include <QtWidgets/QTableView>
-#include <QtWidgets/QVBoxLayout>
-
-#include <memory>
 
 using lk::protocol::Command;
 using lk::ui::ConnectionChoice;
-using lk::ui::MainWindow;
+using namespace lk::uitest;
 
-namespace {
-constexpr int kWaitMs = 20000; // generous: a loaded 2-core CI machine
-const QVector<int> kSimIds{1, 2, 3, 4};
-
-ConnectionChoice simulatorChoice()
-{
-    ConnectionChoice c;
-    c.kind = ConnectionChoice::Kind::Simulator;
-    c.autoReconnect = false;
-    return c;
-}
-} // namespace
-
-class tst_MainWindow : public QObject {
+class tst_MainWindow : public MainWindowFixture {
     Q_OBJECT
 private slots:
-    void initTestCase();
-    void cleanupTestCase();
+    void init() { QVERIFY(openWindow()); }
+    void cleanup() { closeWindow(); }
     void connectsToSimulator();
     void scanFindsSimulatedIds();
     void baudSweepKeepsOneBaud();
@@ -79,132 +49,9 @@ private slots:
     void dashboardValuesUpdate();
     void plotReceivesPoints();
     void trafficFillsAndExportParses();
-    void escapeSendsMotorOffToAllDrives();
-    void escapeWorksFromAModalDialog();
-    void escapeDuringAScanStopsEveryDrive_data();
-    void escapeDuringAScanStopsEveryDrive();
-    void escapeHaltsTheGeneratorFirst();
     void clearErrorsSendsClearErrors();
     void lowVoltageIsAWarningYouCannotMiss();
-    void unplugShowsDisconnectedAndDisablesSending();
-    void reconnectsWhenAllowed();
-    void openFailureIsExplainedInABanner();
-
-private:
-    lk::ui::BusModel *model() const { return m_window->busModel(); }
-    std::shared_ptr<lk::transport::SimBusHandle> sim() const
-    {
-        return m_window->controller()->simulator();
-    }
-    QVector<int> motorOffCounts() const;
-    QString stopReport() const
-    {
-        return m_window->banner()->entryText(lk::ui::EmergencyStopControl::entryKey());
-    }
-    /// Command every simulated drive to turn at 360 dps (as the Control view would).
-    void spinAll();
-    bool allOff() const;
-    int inState(lk::sim::SimDrive::RunState state) const;
-
-    // The tests share one window, each leaving the bus as the next expects it. So that each
-    // also runs alone, a test first brings about what the earlier ones would have left (and
-    // does nothing when they have).
-    /// Connected to the simulated bus, auto-reconnect off (as connectsToSimulator leaves it).
-    bool connectToSimulator();
-    /// Connected, every simulated drive found and polled (as the scan tests leave it).
-    bool findAllDrives();
-    /// Every drive found, drive 2 the current one (as selectingADriveSelectsItEverywhere).
-    bool selectDrive2();
-    /// Drive 2 turning when the link drops (unplugShowsDisconnectedAndDisablesSending).
-    void turnDrive2AndUnplug();
-
-    QTemporaryDir m_dir;
-    std::unique_ptr<lk::ui::AppSettings> m_settings;
-    std::unique_ptr<MainWindow> m_window;
 };
-
-void tst_MainWindow::initTestCase()
-{
-    QVERIFY(m_dir.isValid());
-    m_settings = std::make_unique<lk::ui::AppSettings>(m_dir.filePath("lkstudio.ini"));
-    m_window = std::make_unique<MainWindow>(m_settings.get());
-    m_window->resize(1400, 900);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-}
-
-void tst_MainWindow::cleanupTestCase()
-{
-    m_window.reset();
-}
-
-QVector<int> tst_MainWindow::motorOffCounts() const
-{
-    QVector<int> counts;
-    for (int id : kSimIds)
-        counts << sim()->requestCount(id, Command::MotorOff);
-    return counts;
-}
-
-void tst_MainWindow::spinAll()
-{
-    for (int id : kSimIds)
-        m_window->controller()->session()->send(*lk::protocol::build::speed(id, 360).request);
-    QTRY_VERIFY_WITH_TIMEOUT(inState(lk::sim::SimDrive::RunState::Running) == kSimIds.size() &&
-                                 m_window->commandedMotion()->movingIds() == kSimIds,
-                             kWaitMs);
-}
-
-int tst_MainWindow::inState(lk::sim::SimDrive::RunState state) const
-{
-    int n = 0;
-    sim()->withBus([&n, state](lk::sim::SimBus &bus) {
-        for (int id : kSimIds)
-            n += bus.drive(id)->runState() == state ? 1 : 0;
-    });
-    return n;
-}
-
-bool tst_MainWindow::allOff() const
-{
-    return inState(lk::sim::SimDrive::RunState::Off) == kSimIds.size();
-}
-
-bool tst_MainWindow::connectToSimulator()
-{
-    if (model()->canSend() && model()->isSimulated())
-        return true;
-    m_window->connectTo(simulatorChoice());
-    return QTest::qWaitFor([this] { return model()->canSend(); }, kWaitMs);
-}
-
-bool tst_MainWindow::findAllDrives()
-{
-    if (model()->canSend() && model()->isSimulated())
-        return true;
-    // Scanning on connect is on by default: the scan finds the four drives, then polls them.
-    return connectToSimulator() &&
-           QTest::qWaitFor([this] { return model()->ids() == kSimIds && model()->isPolling(); },
-                           kWaitMs);
-}
-
-bool tst_MainWindow::selectDrive2()
-{
-    if (!findAllDrives())
-        return false;
-    if (model()->currentId() != 2)
-        model()->setCurrentId(2);
-    return true;
-}
-
-void tst_MainWindow::turnDrive2AndUnplug()
-{
-    m_window->controller()->session()->send(*lk::protocol::build::speed(2, 360).request);
-    QTRY_COMPARE_WITH_TIMEOUT(m_window->commandedMotion()->movingIds(), QVector<int>{2}, kWaitMs);
-    QVERIFY(sim()->requestDisconnect());
-    QTRY_COMPARE_WITH_TIMEOUT(model()->connection().state,
-                              lk::transport::Transport::State::Disconnected, kWaitMs);
-}
 
 void tst_MainWindow::connectsToSimulator()
 {
@@ -372,7 +219,7 @@ void tst_MainWindow::trafficFillsAndExportParses()
         sawReply = m->directionText(row) == QLatin1String("RX") && !m->fieldsText(row).isEmpty();
     QVERIFY(sawReply);
 
-    const QString file = m_dir.filePath("traffic.txt");
+    const QString file = m_dir->filePath("traffic.txt");
     traffic->flush();
     QVERIFY(traffic->exportTo(file));
     QFile in(file);
@@ -399,110 +246,6 @@ void tst_MainWindow::trafficFillsAndExportParses()
 
     m_window->showView(QStringLiteral("dashboard"));
     QVERIFY(!traffic->wantsCapture()); // capture runs only while the view is shown
-}
-
-void tst_MainWindow::escapeSendsMotorOffToAllDrives()
-{
-    QVERIFY(findAllDrives());
-    const QVector<int> before = motorOffCounts();
-    QSignalSpy stops(m_window->controller()->session(),
-                     &lk::bus::BusSession::emergencyStopFinished);
-    // Esc typed into a child widget that has nothing to do with stopping.
-    auto *first = m_window->findChild<QSpinBox *>(QStringLiteral("scanFirstId"));
-    first->setFocus();
-    QTest::keyClick(first, Qt::Key_Escape);
-    for (int i = 0; i < kSimIds.size(); ++i)
-        QTRY_VERIFY_WITH_TIMEOUT(sim()->requestCount(kSimIds[i], Command::MotorOff) > before[i],
-                                 kWaitMs);
-    QTRY_VERIFY_WITH_TIMEOUT(stopReport().contains(QStringLiteral("1, 2, 3, 4")), kWaitMs);
-    QTest::qWait(300);
-    QCOMPARE(stops.count(), 1); // one press, one stop
-    // The report stays until dismissed (it is not an 8-second Info line).
-    auto *banner = m_window->banner();
-    QCOMPARE(banner->entryLevel(lk::ui::EmergencyStopControl::entryKey()),
-             lk::ui::MessageBanner::Level::Info);
-    QVERIFY(banner->isVisible());
-    QTest::mouseClick(banner->entryCloseButton(lk::ui::EmergencyStopControl::entryKey()),
-                      Qt::LeftButton);
-    QVERIFY(!banner->hasEntry(lk::ui::EmergencyStopControl::entryKey()));
-}
-
-void tst_MainWindow::escapeWorksFromAModalDialog()
-{
-    QVERIFY(findAllDrives());
-    const QVector<int> before = motorOffCounts();
-    QSignalSpy stops(m_window->controller()->session(),
-                     &lk::bus::BusSession::emergencyStopFinished);
-    QDialog dialog(m_window.get());
-    auto *edit = new QLineEdit(&dialog);
-    auto *layout = new QVBoxLayout(&dialog);
-    layout->addWidget(edit);
-    dialog.setModal(true);
-    dialog.open();
-    QVERIFY(QTest::qWaitForWindowExposed(&dialog));
-    edit->setFocus();
-    QTest::keyClick(edit, Qt::Key_Escape);
-    for (int i = 0; i < kSimIds.size(); ++i)
-        QTRY_VERIFY_WITH_TIMEOUT(sim()->requestCount(kSimIds[i], Command::MotorOff) > before[i],
-                                 kWaitMs);
-    // One press, one stop: never a second one from the key propagating to parent widgets.
-    QTRY_COMPARE_WITH_TIMEOUT(stops.count(), 1, kWaitMs);
-    QTest::qWait(300);
-    QCOMPARE(stops.count(), 1);
-    QVERIFY(!dialog.isVisible()); // and the dialog still closes on Esc
-}
-
-void tst_MainWindow::escapeDuringAScanStopsEveryDrive_data()
-{
-    QTest::addColumn<int>("delayMs");
-    for (int ms : {0, 10, 30, 60, 100, 150, 200})
-        QTest::newRow(qPrintable(QStringLiteral("Esc %1 ms after Scan").arg(ms))) << ms;
-}
-
-void tst_MainWindow::escapeDuringAScanStopsEveryDrive()
-{
-    QVERIFY(findAllDrives());
-    // Four drives at 360 dps, Scan, then Esc before the scan has found them all: the scan
-    // has emptied the known drives, and still every drive must end with its motor off.
-    QFETCH(int, delayMs);
-    QTRY_VERIFY_WITH_TIMEOUT(model()->isPolling(), kWaitMs);
-    spinAll();
-    QSignalSpy scans(m_window->controller()->session(), &lk::bus::BusSession::scanFinished);
-    QSignalSpy reports(m_window->emergencyStopControl(), &lk::ui::EmergencyStopControl::reported);
-    QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("scanButton")),
-                      Qt::LeftButton);
-    if (delayMs > 0)
-        QTest::qWait(delayMs);
-    QTest::keyClick(m_window->views(), Qt::Key_Escape);
-    QTRY_COMPARE_WITH_TIMEOUT(reports.count(), 1, kWaitMs);
-    QTRY_COMPARE_WITH_TIMEOUT(scans.count(), 1, kWaitMs);
-    QVERIFY2(allOff(), qPrintable(stopReport()));
-    QVERIFY2(stopReport().contains(QStringLiteral("acknowledged by drive(s) 1, 2, 3, 4")),
-             qPrintable(stopReport()));
-    QVERIFY(!stopReport().contains(QStringLiteral("NO answer")));
-    QVERIFY(m_window->commandedMotion()->movingIds().isEmpty()); // every off was acknowledged
-    // Leave the bus as the next test expects it: every drive found and polled.
-    QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("scanButton")),
-                      Qt::LeftButton);
-    QTRY_COMPARE_WITH_TIMEOUT(model()->ids(), kSimIds, kWaitMs);
-}
-
-void tst_MainWindow::escapeHaltsTheGeneratorFirst()
-{
-    QVERIFY(findAllDrives());
-    QTRY_VERIFY_WITH_TIMEOUT(model()->isPolling(), kWaitMs);
-    model()->setCurrentId(1);
-    auto *control = m_window->driveViews()->control();
-    QTRY_COMPARE_WITH_TIMEOUT(control->driveId(), 1, kWaitMs);
-    lk::bus::SetpointWaveform::Settings s;
-    s.target = lk::bus::SetpointWaveform::Target::Speed;
-    control->startGenerator(s);
-    QVERIFY(control->generator()->isRunning());
-    QTest::keyClick(m_window->views(), Qt::Key_Escape);
-    QVERIFY(!control->generator()->isRunning()); // before the bus has said anything
-    QTRY_VERIFY_WITH_TIMEOUT(!stopReport().isEmpty(), kWaitMs);
-    QTRY_VERIFY_WITH_TIMEOUT(allOff(), kWaitMs);
-    model()->setCurrentId(2); // what the next tests expect
 }
 
 void tst_MainWindow::clearErrorsSendsClearErrors()
@@ -540,103 +283,6 @@ void tst_MainWindow::lowVoltageIsAWarningYouCannotMiss()
     QTRY_COMPARE_WITH_TIMEOUT(tree->itemForId(4)->text(lk::ui::DriveTree::ErrorsCol),
                               QStringLiteral("No errors"), kWaitMs);
     model()->setCurrentId(2);
-}
-
-void tst_MainWindow::unplugShowsDisconnectedAndDisablesSending()
-{
-    QVERIFY(selectDrive2());
-    auto *dash = m_window->dashboard();
-    dash->refresh();
-    const QString temperature = dash->readout(QStringLiteral("temperature"))->value();
-    turnDrive2AndUnplug();
-    if (QTest::currentTestFailed())
-        return;
-    QVERIFY(!model()->canSend());
-    QTRY_VERIFY_WITH_TIMEOUT(
-        !m_window->findChild<QPushButton *>(QStringLiteral("clearErrorsButton"))->isEnabled(),
-        kWaitMs);
-    QVERIFY(!m_window->findChild<QPushButton *>(QStringLiteral("scanButton"))->isEnabled());
-    QVERIFY(m_window->statusSummary()->linkText().startsWith(QStringLiteral("Disconnected")));
-    QCOMPARE(m_window->banner()->level(), lk::ui::MessageBanner::Level::Warning);
-    QVERIFY(m_window->banner()->isVisible());
-    // What may still be moving is said, per drive, and stays.
-    const QString warning = m_window->banner()->entryText(lk::ui::LinkLossWatch::entryKey(2));
-    QVERIFY2(warning.contains(QStringLiteral("Drive 2 may still be moving")) &&
-                 warning.contains(QStringLiteral("speed 360 dps")) &&
-                 warning.contains(QStringLiteral("input-timeout protection")),
-             qPrintable(warning));
-    QCOMPARE(m_window->linkLossWatch()->warnedIds(), QVector<int>{2});
-    QCOMPARE(m_window->driveViews()->control()->statusText(),
-             QStringLiteral("Disconnected: nothing can be sent."));
-    // Esc while disconnected: nothing can be sent, and the report says so and names drive 2.
-    QSignalSpy reports(m_window->emergencyStopControl(), &lk::ui::EmergencyStopControl::reported);
-    QTest::keyClick(m_window->views(), Qt::Key_Escape);
-    QTRY_COMPARE_WITH_TIMEOUT(reports.count(), 1, kWaitMs);
-    QVERIFY2(stopReport().contains(QStringLiteral("NOTHING could be sent")) &&
-                 stopReport().contains(QStringLiteral("Drive 2 (speed 360 dps")) &&
-                 !stopReport().contains(QStringLiteral("acknowledged")),
-             qPrintable(stopReport()));
-    QCOMPARE(m_window->banner()->entryLevel(lk::ui::EmergencyStopControl::entryKey()),
-             lk::ui::MessageBanner::Level::Error);
-    QVERIFY(m_window->banner()->hasEntry(lk::ui::LinkLossWatch::entryKey(2)));
-    // Everything stays on screen, greyed once stale.
-    QCOMPARE(model()->ids(), kSimIds);
-    QCOMPARE(dash->readout(QStringLiteral("temperature"))->value(), temperature);
-    QTRY_VERIFY_WITH_TIMEOUT(dash->readout(QStringLiteral("temperature"))->isStale(), kWaitMs);
-    // Auto-reconnect is off in this test: it stays down.
-    QTest::qWait(1500);
-    QCOMPARE(model()->connection().state, lk::transport::Transport::State::Disconnected);
-    QVERIFY(m_window->emergencyStopButton()->isEnabled()); // never disabled
-}
-
-void tst_MainWindow::reconnectsWhenAllowed()
-{
-    if (model()->connection().state != lk::transport::Transport::State::Disconnected) {
-        QVERIFY(selectDrive2());
-        turnDrive2AndUnplug();
-        if (QTest::currentTestFailed())
-            return;
-    }
-    auto *box = m_window->findChild<QCheckBox *>(QStringLiteral("autoReconnect"));
-    QVERIFY(!box->isChecked());
-    QTest::mouseClick(box, Qt::LeftButton);
-    QVERIFY(box->isChecked());
-    QTRY_VERIFY_WITH_TIMEOUT(model()->canSend(), kWaitMs);
-    // The offline notice goes with the outage.
-    QTRY_VERIFY_WITH_TIMEOUT(m_window->driveViews()->control()->statusText() !=
-                                 QStringLiteral("Disconnected: nothing can be sent."),
-                             kWaitMs);
-    // Drive 2's warning stays until a state read shows it stopped: stop it, and it goes.
-    QSignalSpy reports(m_window->emergencyStopControl(), &lk::ui::EmergencyStopControl::reported);
-    QTest::keyClick(m_window->views(), Qt::Key_Escape);
-    QTRY_COMPARE_WITH_TIMEOUT(reports.count(), 1, kWaitMs);
-    QVERIFY2(stopReport().contains(QStringLiteral("acknowledged by")), qPrintable(stopReport()));
-    QTRY_VERIFY_WITH_TIMEOUT(!m_window->banner()->hasEntry(lk::ui::LinkLossWatch::entryKey(2)),
-                             kWaitMs);
-    QVERIFY(m_window->linkLossWatch()->warnedIds().isEmpty());
-    // Polling resumes by itself: values come back to life.
-    QTRY_VERIFY_WITH_TIMEOUT(
-        !m_window->dashboard()->readout(QStringLiteral("temperature"))->isStale(), kWaitMs);
-    QVERIFY(m_window->findChild<QPushButton *>(QStringLiteral("clearErrorsButton"))->isEnabled());
-    QCOMPARE(model()->ids(), kSimIds);
-}
-
-void tst_MainWindow::openFailureIsExplainedInABanner()
-{
-    ConnectionChoice c;
-    c.kind = ConnectionChoice::Kind::Serial;
-    c.port = m_dir.filePath("no-such-adapter");
-    c.autoReconnect = false;
-    m_window->connectTo(c);
-    // The message line (reports of earlier tests may stay below it until dismissed).
-    QTRY_VERIFY_WITH_TIMEOUT(!m_window->banner()->text().isEmpty(), kWaitMs);
-    QVERIFY(m_window->banner()->isVisible());
-    QCOMPARE(m_window->banner()->level(), lk::ui::MessageBanner::Level::Error);
-    QVERIFY2(m_window->banner()->text().contains(QStringLiteral("does not exist")),
-             qPrintable(m_window->banner()->text()));
-    QVERIFY(!model()->canSend());
-    QVERIFY(!m_window->statusSummary()->isSimulatedBadgeShown());
-    QVERIFY(model()->ids().isEmpty());
 }
 
 QTEST_MAIN(tst_MainWindow)

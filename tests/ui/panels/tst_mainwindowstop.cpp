@@ -1,0 +1,144 @@
+// The whole window's emergency stop against the in-process simulated bus: Esc from anywhere
+// (a child widget, a modal dialog, during a scan, with the setpoint generator running) sends
+// motor off to every drive, checked on the simulator's side.
+
+#include "MainWindowFixture.h"
+
+#include <drive/ControlView.h>
+#include <drive/SetpointGenerator.h>
+#include <main/DriveViews.h>
+#include <main/EmergencyStopControl.h>
+#include <main/MainWindow.h>
+#include <panels/MessageBanner.h>
+
+#include <bus/SetpointWaveform.h>
+
+#include <QtWidgets/QDialog>
+#include <QtWidgets/QLineEdit>
+#include <QtWidgets/QPushButton>
+#include <QtWidgets/QSpinBox>
+#include <QtWidgets/QTabWidget>
+#include <QtWidgets/QVBoxLayout>
+
+using lk::protocol::Command;
+using lk::ui::ConnectionChoice;
+using namespace lk::uitest;
+
+class tst_MainWindowStop : public MainWindowFixture {
+    Q_OBJECT
+private slots:
+    void init() { QVERIFY(openWindow()); }
+    void cleanup() { closeWindow(); }
+    void escapeSendsMotorOffToAllDrives();
+    void escapeWorksFromAModalDialog();
+    void escapeDuringAScanStopsEveryDrive_data();
+    void escapeDuringAScanStopsEveryDrive();
+    void escapeHaltsTheGeneratorFirst();
+};
+
+void tst_MainWindowStop::escapeSendsMotorOffToAllDrives()
+{
+    QVERIFY(findAllDrives());
+    const QVector<int> before = motorOffCounts();
+    QSignalSpy stops(m_window->controller()->session(),
+                     &lk::bus::BusSession::emergencyStopFinished);
+    // Esc typed into a child widget that has nothing to do with stopping.
+    auto *first = m_window->findChild<QSpinBox *>(QStringLiteral("scanFirstId"));
+    first->setFocus();
+    QTest::keyClick(first, Qt::Key_Escape);
+    for (int i = 0; i < kSimIds.size(); ++i)
+        QTRY_VERIFY_WITH_TIMEOUT(sim()->requestCount(kSimIds[i], Command::MotorOff) > before[i],
+                                 kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(stopReport().contains(QStringLiteral("1, 2, 3, 4")), kWaitMs);
+    QTest::qWait(300);
+    QCOMPARE(stops.count(), 1); // one press, one stop
+    // The report stays until dismissed (it is not an 8-second Info line).
+    auto *banner = m_window->banner();
+    QCOMPARE(banner->entryLevel(lk::ui::EmergencyStopControl::entryKey()),
+             lk::ui::MessageBanner::Level::Info);
+    QVERIFY(banner->isVisible());
+    QTest::mouseClick(banner->entryCloseButton(lk::ui::EmergencyStopControl::entryKey()),
+                      Qt::LeftButton);
+    QVERIFY(!banner->hasEntry(lk::ui::EmergencyStopControl::entryKey()));
+}
+
+void tst_MainWindowStop::escapeWorksFromAModalDialog()
+{
+    QVERIFY(findAllDrives());
+    const QVector<int> before = motorOffCounts();
+    QSignalSpy stops(m_window->controller()->session(),
+                     &lk::bus::BusSession::emergencyStopFinished);
+    QDialog dialog(m_window.get());
+    auto *edit = new QLineEdit(&dialog);
+    auto *layout = new QVBoxLayout(&dialog);
+    layout->addWidget(edit);
+    dialog.setModal(true);
+    dialog.open();
+    QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+    edit->setFocus();
+    QTest::keyClick(edit, Qt::Key_Escape);
+    for (int i = 0; i < kSimIds.size(); ++i)
+        QTRY_VERIFY_WITH_TIMEOUT(sim()->requestCount(kSimIds[i], Command::MotorOff) > before[i],
+                                 kWaitMs);
+    // One press, one stop: never a second one from the key propagating to parent widgets.
+    QTRY_COMPARE_WITH_TIMEOUT(stops.count(), 1, kWaitMs);
+    QTest::qWait(300);
+    QCOMPARE(stops.count(), 1);
+    QVERIFY(!dialog.isVisible()); // and the dialog still closes on Esc
+}
+
+void tst_MainWindowStop::escapeDuringAScanStopsEveryDrive_data()
+{
+    QTest::addColumn<int>("delayMs");
+    for (int ms : {0, 10, 30, 60, 100, 150, 200})
+        QTest::newRow(qPrintable(QStringLiteral("Esc %1 ms after Scan").arg(ms))) << ms;
+}
+
+void tst_MainWindowStop::escapeDuringAScanStopsEveryDrive()
+{
+    QVERIFY(findAllDrives());
+    // Four drives at 360 dps, Scan, then Esc before the scan has found them all: the scan
+    // has emptied the known drives, and still every drive must end with its motor off.
+    QFETCH(int, delayMs);
+    QTRY_VERIFY_WITH_TIMEOUT(model()->isPolling(), kWaitMs);
+    spinAll();
+    QSignalSpy scans(m_window->controller()->session(), &lk::bus::BusSession::scanFinished);
+    QSignalSpy reports(m_window->emergencyStopControl(), &lk::ui::EmergencyStopControl::reported);
+    QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("scanButton")),
+                      Qt::LeftButton);
+    if (delayMs > 0)
+        QTest::qWait(delayMs);
+    QTest::keyClick(m_window->views(), Qt::Key_Escape);
+    QTRY_COMPARE_WITH_TIMEOUT(reports.count(), 1, kWaitMs);
+    QTRY_COMPARE_WITH_TIMEOUT(scans.count(), 1, kWaitMs);
+    QVERIFY2(allOff(), qPrintable(stopReport()));
+    QVERIFY2(stopReport().contains(QStringLiteral("acknowledged by drive(s) 1, 2, 3, 4")),
+             qPrintable(stopReport()));
+    QVERIFY(!stopReport().contains(QStringLiteral("NO answer")));
+    QVERIFY(m_window->commandedMotion()->movingIds().isEmpty()); // every off was acknowledged
+    // Leave the bus as the next test expects it: every drive found and polled.
+    QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("scanButton")),
+                      Qt::LeftButton);
+    QTRY_COMPARE_WITH_TIMEOUT(model()->ids(), kSimIds, kWaitMs);
+}
+
+void tst_MainWindowStop::escapeHaltsTheGeneratorFirst()
+{
+    QVERIFY(findAllDrives());
+    QTRY_VERIFY_WITH_TIMEOUT(model()->isPolling(), kWaitMs);
+    model()->setCurrentId(1);
+    auto *control = m_window->driveViews()->control();
+    QTRY_COMPARE_WITH_TIMEOUT(control->driveId(), 1, kWaitMs);
+    lk::bus::SetpointWaveform::Settings s;
+    s.target = lk::bus::SetpointWaveform::Target::Speed;
+    control->startGenerator(s);
+    QVERIFY(control->generator()->isRunning());
+    QTest::keyClick(m_window->views(), Qt::Key_Escape);
+    QVERIFY(!control->generator()->isRunning()); // before the bus has said anything
+    QTRY_VERIFY_WITH_TIMEOUT(!stopReport().isEmpty(), kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(allOff(), kWaitMs);
+    model()->setCurrentId(2); // what the next tests expect
+}
+
+QTEST_MAIN(tst_MainWindowStop)
+#include "tst_mainwindowstop.moc"
