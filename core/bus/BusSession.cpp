@@ -66,6 +66,7 @@ void BusSession::connectWorker()
     relay(&BusWorker::pollingChanged, &BusSession::pollingChanged);
     relay(&BusWorker::setpointStreamStarted, &BusSession::setpointStreamStarted);
     relay(&BusWorker::setpointStreamStopped, &BusSession::setpointStreamStopped);
+    relay(&BusWorker::setpointFailed, &BusSession::setpointFailed);
     relay(&BusWorker::telemetryReceived, &BusSession::telemetryReceived);
     relay(&BusWorker::statisticsUpdated, &BusSession::statisticsUpdated);
     relay(&BusWorker::trafficCaptured, &BusSession::trafficCaptured);

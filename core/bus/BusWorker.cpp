@@ -66,6 +66,7 @@ BusWorker::BusWorker(TransportFactory factory, int baud, const BusConfig &config
     connect(&m_setpoints, &SetpointStream::started, this, &BusWorker::setpointStreamStarted);
     connect(&m_setpoints, &SetpointStream::stopped, this, &BusWorker::setpointStreamStopped);
     connect(&m_setpoints, &SetpointStream::setpointCompleted, this, &BusWorker::requestCompleted);
+    connect(&m_setpoints, &SetpointStream::setpointFailed, this, &BusWorker::setpointFailed);
     m_poller.setSeriesLookup([this](int id) { return seriesOf(id); });
     m_reported.baud = baud;
 }

@@ -151,6 +151,7 @@ signals:
     void pollingChanged(bool active);
     void setpointStreamStarted(quint64 stream);
     void setpointStreamStopped(const lk::bus::SetpointStop &stop);
+    void setpointFailed(const lk::bus::RequestResult &result);
     void telemetryReceived(const lk::bus::TelemetryBatch &batch);
     void statisticsUpdated(const lk::bus::BusStatistics &statistics);
     void trafficCaptured(const lk::bus::TrafficBatch &batch);

@@ -159,6 +159,8 @@ void SetpointStream::onCompleted(const RequestResult &result)
     if (result.ticket == m_ticket)
         m_ticket = 0;
     emit setpointCompleted(result);
+    if (!result.ok())
+        emit setpointFailed(result);
     // The bus dropped it (an emergency stop cancels motion; a lost link): never send more.
     if (result.status == RequestStatus::Cancelled)
         stop(SetpointStopReason::Cancelled);

@@ -60,6 +60,8 @@ signals:
     void stopped(const lk::bus::SetpointStop &stop);
     /// The end of one setpoint request (every one, also after the stream stopped).
     void setpointCompleted(const lk::bus::RequestResult &result);
+    /// One setpoint did not complete (timeout, corrupt reply, cancelled, link lost).
+    void setpointFailed(const lk::bus::RequestResult &result);
 
 private:
     void tick();

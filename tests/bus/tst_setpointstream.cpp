@@ -175,10 +175,13 @@ void tst_SetpointStream::positionSetpointsAreNeverRetried()
     StreamRig r;
     SetpointStreamPlan position = plan(Target::Position, 100, 1);
     position.id = 9; // silent
+    QSignalSpy failed(&r.stream(), &SetpointStream::setpointFailed);
     r.stream().start(position);
     QTRY_VERIFY_WITH_TIMEOUT(!r.rig.results.isEmpty(), 5000);
     QCOMPARE(r.rig.results.at(0).status, RequestStatus::Timeout);
     QCOMPARE(r.rig.results.at(0).attempts, 1);
+    QCOMPARE(failed.count(), 1); // the one failed setpoint, said as such
+    QCOMPARE(failed.at(0).at(0).value<RequestResult>().ticket, r.rig.results.at(0).ticket);
     QVERIFY(r.stream().isRunning()); // a lost setpoint is followed by the next one
 
     // Speed setpoints keep the gate's retries (BusConfig::retries).

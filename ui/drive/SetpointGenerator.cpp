@@ -3,7 +3,6 @@
 #include "DriveText.h"
 
 #include <bus/BusSession.h>
-#include <bus/SetpointStream.h>
 
 namespace lk::ui {
 
@@ -17,14 +16,14 @@ void SetpointGenerator::setSession(bus::BusSession *session)
         m_session->stopSetpointStream();
     m_stream = 0;
     disconnect(m_stoppedConnection);
-    disconnect(m_completedConnection);
+    disconnect(m_failedConnection);
     m_session = session;
     if (!session)
         return;
     m_stoppedConnection = connect(session, &bus::BusSession::setpointStreamStopped, this,
                                   &SetpointGenerator::onStopped);
-    m_completedConnection =
-        connect(session, &bus::BusSession::requestCompleted, this, &SetpointGenerator::onCompleted);
+    m_failedConnection =
+        connect(session, &bus::BusSession::setpointFailed, this, &SetpointGenerator::onFailed);
 }
 
 void SetpointGenerator::start(const bus::SetpointStreamPlan &plan)
@@ -64,9 +63,9 @@ void SetpointGenerator::onStopped(const bus::SetpointStop &stop)
     emit stopped(text);
 }
 
-void SetpointGenerator::onCompleted(const bus::RequestResult &result)
+void SetpointGenerator::onFailed(const bus::RequestResult &result)
 {
-    if (isRunning() && bus::SetpointStream::isSetpointTicket(result.ticket) && !result.ok())
+    if (isRunning())
         emit setpointFailed(result);
 }
 

@@ -48,11 +48,11 @@ signals:
 
 private:
     void onStopped(const bus::SetpointStop &stop);
-    void onCompleted(const bus::RequestResult &result);
+    void onFailed(const bus::RequestResult &result);
 
     QPointer<bus::BusSession> m_session;
     QMetaObject::Connection m_stoppedConnection;
-    QMetaObject::Connection m_completedConnection;
+    QMetaObject::Connection m_failedConnection;
     bus::SetpointStreamPlan m_plan;
     quint64 m_stream = 0; ///< the running stream's handle; 0: none
 };
