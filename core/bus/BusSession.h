@@ -152,7 +152,7 @@ signals:
     /// Why the stream ended and what it sent (also after stopSetpointStream()).
     void setpointStreamStopped(const lk::bus::SetpointStop &stop);
     /// A setpoint of the stream did not complete; its end also comes as requestCompleted.
-    void setpointFailed(const lk::bus::RequestResult &result);
+    void setpointFailed(quint64 stream, const lk::bus::RequestResult &result);
     /// Samples from every reply that carries telemetry (polls and operator commands alike).
     void telemetryReceived(const lk::bus::TelemetryBatch &batch);
     void statisticsUpdated(const lk::bus::BusStatistics &statistics);

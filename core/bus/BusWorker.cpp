@@ -134,7 +134,7 @@ bool BusWorker::reopenAt(int baud)
 {
     if (m_shutDown)
         return false;
-    m_setpoints.stop(SetpointStopReason::BusChanged);
+    haltSetpoints(SetpointStopReason::BusChanged);
     abortInflight(RequestStatus::Cancelled, tr("the port was reopened at another baud"));
     m_matcher.reset();
     m_recentLatency.clear(); // another baud, other latencies
@@ -487,8 +487,8 @@ void BusWorker::abortInflight(RequestStatus status, const QString &reason)
 
 void BusWorker::failAll(RequestStatus status, const QString &reason)
 {
-    m_setpoints.stop(status == RequestStatus::Disconnected ? SetpointStopReason::Disconnected
-                                                           : SetpointStopReason::Closed);
+    haltSetpoints(status == RequestStatus::Disconnected ? SetpointStopReason::Disconnected
+                                                        : SetpointStopReason::Closed);
     abortInflight(status, reason);
     cancelQueued([](const Pending &) { return true; }, status, reason);
 }
@@ -590,7 +590,7 @@ void BusWorker::noteReply(const protocol::Reply &reply, double time, const Pendi
 void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command halt)
 {
     // The setpoint stream first: no setpoint may follow the stop, whatever the GUI does.
-    m_setpoints.stop(SetpointStopReason::EmergencyStop);
+    haltSetpoints(SetpointStopReason::EmergencyStop);
     if (halt != Command::MotorStop)
         halt = Command::MotorOff; // nothing else may ride in this lane
     // A running scan would go on probing (and a baud sweep reopening the port) behind the
@@ -671,10 +671,19 @@ void BusWorker::startSetpointStream(const SetpointStreamPlan &plan)
 
 void BusWorker::stopSetpointStream()
 {
-    m_setpoints.stop(SetpointStopReason::Requested);
-    // A setpoint still queued would go out after the stop the caller sends next.
+    haltSetpoints(SetpointStopReason::Requested);
+}
+
+void BusWorker::haltSetpoints(SetpointStopReason reason)
+{
+    m_setpoints.stop(reason);
+    // A setpoint still queued would go out after the stop the caller sends next (or at the
+    // next baud); one on the wire may finish, but a timeout must not send it again ahead of
+    // that stop.
     cancelQueued([](const Pending &p) { return p.req.origin == RequestOrigin::Setpoint; },
                  RequestStatus::Cancelled, tr("setpoint stream stopped"));
+    if (m_inflight && m_inflight->req.origin == RequestOrigin::Setpoint)
+        m_inflight->noRetry = true;
 }
 
 void BusWorker::setPollingSuspended(bool suspended)

@@ -45,7 +45,8 @@ class Scanner;
 /// that thread). Half duplex: exactly one request on the wire; replies are matched by command
 /// and ID; the timeout comes from BusTiming plus an adaptive margin; queues run Emergency >
 /// Operator > Background, then the poll scheduler fills idle time. Every request completes
-/// exactly once: through its callback when it has one, else through requestCompleted.
+/// exactly once: through its callback when it has one, else through requestCompleted (the
+/// callbacks of setpoints and emergency offs pass their ends on to requestCompleted too).
 ///
 /// Quiet period: after a timeout nothing is transmitted until a late reply to the request
 /// could no longer be on its way (AdaptiveTimeout::quietS: the drive's longest turnaround,
@@ -151,7 +152,7 @@ signals:
     void pollingChanged(bool active);
     void setpointStreamStarted(quint64 stream);
     void setpointStreamStopped(const lk::bus::SetpointStop &stop);
-    void setpointFailed(const lk::bus::RequestResult &result);
+    void setpointFailed(quint64 stream, const lk::bus::RequestResult &result);
     void telemetryReceived(const lk::bus::TelemetryBatch &batch);
     void statisticsUpdated(const lk::bus::BusStatistics &statistics);
     void trafficCaptured(const lk::bus::TrafficBatch &batch);
@@ -189,6 +190,9 @@ private:
                       const QString &reason);
     void abortInflight(RequestStatus status, const QString &reason);
     void failAll(RequestStatus status, const QString &reason);
+    /// Every way of stopping the setpoint stream: stops it, drops its queued setpoint and
+    /// keeps the one on the wire from being sent again.
+    void haltSetpoints(SetpointStopReason reason);
     void onPollDone(const RequestResult &r);
     void noteReply(const protocol::Reply &reply, double time, const Pending &request);
     void emitStatistics();

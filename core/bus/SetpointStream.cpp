@@ -151,16 +151,20 @@ void SetpointStream::tick()
     b.origin = RequestOrigin::Setpoint;
     m_ticket = b.ticket;
     ++m_emitted;
-    m_worker.submit(b, [this](const RequestResult &r) { onCompleted(r); });
+    m_worker.submit(
+        b, [this, stream = m_plan.stream](const RequestResult &r) { onCompleted(stream, r); });
 }
 
-void SetpointStream::onCompleted(const RequestResult &result)
+void SetpointStream::onCompleted(quint64 stream, const RequestResult &result)
 {
     if (result.ticket == m_ticket)
         m_ticket = 0;
     emit setpointCompleted(result);
     if (!result.ok())
-        emit setpointFailed(result);
+        emit setpointFailed(stream, result);
+    // A setpoint of a stream stopped or replaced since says nothing about the running one.
+    if (!m_running || stream != m_plan.stream)
+        return;
     // The bus dropped it (an emergency stop cancels motion; a lost link): never send more.
     if (result.status == RequestStatus::Cancelled)
         stop(SetpointStopReason::Cancelled);

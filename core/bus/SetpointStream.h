@@ -46,7 +46,6 @@ public:
     /// Stops the stream, if running; stopped() says why. Sends nothing.
     void stop(SetpointStopReason reason);
     bool isRunning() const { return m_running; }
-    const SetpointStreamPlan &plan() const { return m_plan; }
     qint64 emitted() const { return m_emitted; }
     qint64 skipped() const { return m_skipped; }
 
@@ -60,13 +59,14 @@ signals:
     void stopped(const lk::bus::SetpointStop &stop);
     /// The end of one setpoint request (every one, also after the stream stopped).
     void setpointCompleted(const lk::bus::RequestResult &result);
-    /// One setpoint did not complete (timeout, corrupt reply, cancelled, link lost).
-    void setpointFailed(const lk::bus::RequestResult &result);
+    /// One setpoint of stream `stream` did not complete (timeout, corrupt reply, cancelled,
+    /// link lost).
+    void setpointFailed(quint64 stream, const lk::bus::RequestResult &result);
 
 private:
     void tick();
     void scheduleNext(double t);
-    void onCompleted(const RequestResult &result);
+    void onCompleted(quint64 stream, const RequestResult &result);
     void stopRefused(const safety::Verdict &verdict,
                      const std::optional<protocol::FieldError> &fieldError);
     void finish(SetpointStop stop);

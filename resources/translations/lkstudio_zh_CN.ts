@@ -1180,10 +1180,6 @@
         <translation>已应用并保存 %1 的软限位。</translation>
     </message>
     <message>
-        <source>Stopped by the emergency stop.</source>
-        <translation>已被急停停止。</translation>
-    </message>
-    <message>
         <source>Stopped: the drive or the connection changed.</source>
         <translation>已停止：驱动或连接已改变。</translation>
     </message>
@@ -1198,10 +1194,6 @@
     <message>
         <source>Sent %1 to drive %2.</source>
         <translation>已向驱动 %2 发送 %1。</translation>
-    </message>
-    <message>
-        <source>Stopped: the bus cancelled motion commands (emergency stop).</source>
-        <translation>已停止：总线取消了运动命令（急停）。</translation>
     </message>
     <message>
         <source>Stopped by Motor Off.</source>
@@ -1226,10 +1218,6 @@
     <message>
         <source>Step of %1° sent.</source>
         <translation>已发送 %1° 的步进。</translation>
-    </message>
-    <message>
-        <source>Stopped by the user.</source>
-        <translation>已被用户停止。</translation>
     </message>
     <message>
         <source>Now: %1 dps</source>
@@ -1276,6 +1264,10 @@
     <message>
         <source>Refused: could not read the drive&apos;s current angle, so nothing was sent. %1</source>
         <translation>已拒绝：无法读取驱动的当前角度，因此未发送任何命令。%1</translation>
+    </message>
+    <message>
+        <source>Stopped: the soft limits or the series changed.</source>
+        <translation>已停止：软限位或系列已更改。</translation>
     </message>
 </context>
 <context>
@@ -1870,6 +1862,10 @@
     <message>
         <source>Refused: %1.</source>
         <translation>已拒绝：%1。</translation>
+    </message>
+    <message>
+        <source>Refused: a setpoint broke a limit.</source>
+        <translation>已拒绝：某个设定点超出限位。</translation>
     </message>
 </context>
 <context>

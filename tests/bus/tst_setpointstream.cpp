@@ -53,9 +53,10 @@ struct StreamRig {
             out.append(r.first);
         return out;
     }
-    WorkerRig rig;
+    // Declared before the rig: the worker's stream holds a timer of theirs until it goes.
     ManualTimers timers;
     double clockS = 0;
+    WorkerRig rig;
 };
 
 safety::SoftLimits limits()
@@ -106,6 +107,8 @@ private slots:
     void refusedValueStopsWithTheVerdict();
     void skipsWhileThePreviousIsPending();
     void stopDropsTheQueuedSetpoint();
+    void stopKeepsTheSetpointOnTheWireFromRetrying_data();
+    void stopKeepsTheSetpointOnTheWireFromRetrying();
     void emergencyStopStopsTheStreamBeforeMotorOff();
     void busEventsStopTheStream_data();
     void busEventsStopTheStream();
@@ -181,7 +184,8 @@ void tst_SetpointStream::positionSetpointsAreNeverRetried()
     QCOMPARE(r.rig.results.at(0).status, RequestStatus::Timeout);
     QCOMPARE(r.rig.results.at(0).attempts, 1);
     QCOMPARE(failed.count(), 1); // the one failed setpoint, said as such
-    QCOMPARE(failed.at(0).at(0).value<RequestResult>().ticket, r.rig.results.at(0).ticket);
+    QCOMPARE(failed.at(0).at(0).value<quint64>(), position.stream);
+    QCOMPARE(failed.at(0).at(1).value<RequestResult>().ticket, r.rig.results.at(0).ticket);
     QVERIFY(r.stream().isRunning()); // a lost setpoint is followed by the next one
 
     // Speed setpoints keep the gate's retries (BusConfig::retries).
@@ -299,6 +303,34 @@ void tst_SetpointStream::stopDropsTheQueuedSetpoint()
     QTest::qWait(50);
     QCOMPARE(r.written(), QVector<Command>{Command::ReadState1});
     QVERIFY(!r.tickAt(1));
+}
+
+void tst_SetpointStream::stopKeepsTheSetpointOnTheWireFromRetrying_data()
+{
+    QTest::addColumn<bool>("reopen");
+    QTest::newRow("stopSetpointStream") << false;
+    QTest::newRow("reopen at another baud") << true;
+}
+
+void tst_SetpointStream::stopKeepsTheSetpointOnTheWireFromRetrying()
+{
+    // A speed setpoint keeps the gate's retries while the stream runs; stopped while it is on
+    // the wire to a silent drive, its timeout must not send it again ahead of what follows.
+    QFETCH(bool, reopen);
+    StreamRig r;
+    SetpointStreamPlan speed = plan(Target::Speed, 0, 1);
+    speed.id = 9; // silent
+    r.stream().start(speed);
+    QTRY_COMPARE(r.rig.log->writtenCopy().size(), 1);
+    if (reopen)
+        QVERIFY(r.rig.worker->reopenAt(57600));
+    else
+        r.rig.worker->stopSetpointStream();
+    QVERIFY(!r.stream().isRunning());
+    QTRY_VERIFY_WITH_TIMEOUT(!r.rig.results.isEmpty(), 5000);
+    QCOMPARE(r.rig.results.at(0).attempts, 1);
+    QTest::qWait(100);
+    QCOMPARE(r.written(), QVector<Command>{Command::Speed});
 }
 
 void tst_SetpointStream::emergencyStopStopsTheStreamBeforeMotorOff()

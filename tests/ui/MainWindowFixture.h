@@ -1,8 +1,8 @@
 #pragma once
 
 // The whole window against the in-process simulated bus, for the tst_mainwindow* tests: each
-// test function gets a window and settings of its own (open() in init(), close() in
-// cleanup()), so that every function runs alone and in any order.
+// test function gets a window and settings of its own (openWindow() in init(), closeWindow()
+// in cleanup()), so that every function runs alone and in any order.
 
 #include <main/AppSettings.h>
 #include <main/BusController.h>

@@ -237,6 +237,21 @@ void ControlView::setSoftLimits(const safety::SoftLimits &limits)
     if (!(m_limitsEditor->limits() == limits))
         m_limitsEditor->setLimits(limits, series());
     setStatus(tr("Soft limits of %1 applied and saved.").arg(driveTitle()));
+    keepGeneratorWithinLimits();
+}
+
+void ControlView::keepGeneratorWithinLimits()
+{
+    // The bus thread checks each setpoint against the limits and series the generator started
+    // with: once either changes, it must not go on under the old ones.
+    if (!m_generator->isRunning())
+        return;
+    const bus::SetpointStreamPlan &plan = m_generator->plan();
+    if (plan.limits == m_limits && plan.series == series() && m_limitsError.isEmpty())
+        return;
+    m_generator->stop(tr("Stopped: the soft limits or the series changed."));
+    if (m_motionId == driveId())
+        sendRunState(Command::MotorStop);
 }
 
 void ControlView::setSelectedDrives(const QVector<int> &ids)
@@ -315,8 +330,9 @@ void ControlView::contextChanged(Changes changes)
                                                 onTelemetry(batch);
                                             });
             m_stopConnection =
-                connect(session(), &bus::BusSession::emergencyStopFinished, this,
-                        [this] { haltLocalMotion(tr("Stopped by the emergency stop.")); });
+                connect(session(), &bus::BusSession::emergencyStopFinished, this, [this] {
+                    haltLocalMotion(DriveText::stopReason(bus::SetpointStopReason::EmergencyStop));
+                });
         }
     }
     if (changes & (Change::Session | Change::Drive | Change::Connection)) {
@@ -341,6 +357,7 @@ void ControlView::contextChanged(Changes changes)
         m_setpointPanel->setSeries(series());
         m_plot->setDrive(driveId(), series() == protocol::Series::MS);
         loadLimits();
+        keepGeneratorWithinLimits();
     }
     m_title->setText(driveTitle());
     refreshSelectionNote();
@@ -438,7 +455,7 @@ void ControlView::onMotionResult(const bus::RequestResult &result)
         return;
     // The bus cancels queued motion on an emergency stop: nothing here may send more.
     if (result.status == bus::RequestStatus::Cancelled)
-        haltLocalMotion(tr("Stopped: the bus cancelled motion commands (emergency stop)."));
+        haltLocalMotion(DriveText::stopReason(bus::SetpointStopReason::Cancelled));
     setStatus(DriveText::failure(result), true);
 }
 
@@ -539,8 +556,13 @@ void ControlView::startGenerator(const bus::SetpointWaveform::Settings &settings
     if (!canSend())
         return;
     if (settings.target == bus::SetpointWaveform::Target::Position) {
-        // Position setpoints are checked from where the drive is: read it first.
-        readAngle([this, settings] { startGeneratorNow(settings); });
+        // Position setpoints are checked from where the drive is: read it first. A halt while
+        // the angle is read (an emergency stop, Stop, Motor Off) cancels the start.
+        const quint64 halts = m_halts;
+        readAngle([this, settings, halts] {
+            if (halts == m_halts)
+                startGeneratorNow(settings);
+        });
         return;
     }
     startGeneratorNow(settings);
@@ -574,13 +596,14 @@ void ControlView::stopGenerator()
 {
     if (!m_generator->isRunning())
         return;
-    m_generator->stop(tr("Stopped by the user."));
+    m_generator->stop(DriveText::stopReason(bus::SetpointStopReason::Requested));
     if (m_motionId == driveId())
         sendRunState(Command::MotorStop);
 }
 
 void ControlView::haltLocalMotion(const QString &reason)
 {
+    ++m_halts;
     m_generator->stop(reason);
     m_jogging = false;
     m_keyJogging = false;

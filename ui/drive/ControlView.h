@@ -106,6 +106,8 @@ private:
     void wire();
     void loadLimits();
     void startGeneratorNow(const bus::SetpointWaveform::Settings &settings);
+    /// Stops the generator (and the drive) when the limits or series it runs under changed.
+    void keepGeneratorWithinLimits();
     void readAngle(std::function<void()> then = {});
     void onAngle(int id, double deg);
     MotionOutcome submitMotion(const protocol::BuildResult &built);
@@ -147,6 +149,7 @@ private:
     QMetaObject::Connection m_stopConnection;
     MotionOutcome m_last;
     int m_motionId = 0;        ///< drive the generator or jog commands
+    quint64 m_halts = 0;       ///< haltLocalMotion() calls: a start waiting on a read checks it
     bool m_jogging = false;    ///< a hold-to-run speed command is active
     bool m_keyJogging = false; ///< ... started by an arrow key
 };

@@ -24,14 +24,21 @@ QString DriveText::refusal(const safety::Verdict &verdict, std::optional<protoco
 QString DriveText::setpointStop(const bus::SetpointStop &stop,
                                 std::optional<protocol::Series> series)
 {
+    if (stop.reason == bus::SetpointStopReason::Refused)
+        return stop.fieldError ? fieldError(*stop.fieldError) : refusal(stop.verdict, series);
+    return stopReason(stop.reason);
+}
+
+QString DriveText::stopReason(bus::SetpointStopReason reason)
+{
     using Reason = bus::SetpointStopReason;
-    switch (stop.reason) {
+    switch (reason) {
     case Reason::Requested:
         return tr("Stopped by the user.");
     case Reason::Replaced:
         return tr("Stopped: another waveform started.");
     case Reason::Refused:
-        return stop.fieldError ? fieldError(*stop.fieldError) : refusal(stop.verdict, series);
+        return tr("Refused: a setpoint broke a limit.");
     case Reason::EmergencyStop:
         return tr("Stopped by the emergency stop.");
     case Reason::Cancelled:

@@ -28,6 +28,9 @@ public:
     /// Why a setpoint stream stopped; a refusal says which limit or field, like refusal().
     static QString setpointStop(const bus::SetpointStop &stop,
                                 std::optional<protocol::Series> series);
+    /// Why motion stopped, for every reason but a refusal (which setpointStop() words with
+    /// its limit); the control view says the same when it halts for that reason.
+    static QString stopReason(bus::SetpointStopReason reason);
     /// "write_pid_rom (0x32)".
     static QString command(protocol::Command command);
     /// "MF" or "unknown series" (VerdictText's).

@@ -8,6 +8,12 @@ namespace lk::ui {
 
 SetpointGenerator::SetpointGenerator(QObject *parent) : QObject(parent) {}
 
+SetpointGenerator::~SetpointGenerator()
+{
+    if (isRunning() && m_session)
+        m_session->stopSetpointStream();
+}
+
 void SetpointGenerator::setSession(bus::BusSession *session)
 {
     if (session == m_session)
@@ -63,9 +69,9 @@ void SetpointGenerator::onStopped(const bus::SetpointStop &stop)
     emit stopped(text);
 }
 
-void SetpointGenerator::onFailed(const bus::RequestResult &result)
+void SetpointGenerator::onFailed(quint64 stream, const bus::RequestResult &result)
 {
-    if (isRunning())
+    if (isRunning() && stream == m_stream)
         emit setpointFailed(result);
 }
 

@@ -24,6 +24,9 @@ class SetpointGenerator : public QObject {
     Q_OBJECT
 public:
     explicit SetpointGenerator(QObject *parent = nullptr);
+    /// A running stream stops with its view: nothing on the bus thread drives a drive that no
+    /// view shows.
+    ~SetpointGenerator() override;
 
     /// The session the stream runs on (not owned); a stream running on the previous one is
     /// stopped there.
@@ -48,7 +51,7 @@ signals:
 
 private:
     void onStopped(const bus::SetpointStop &stop);
-    void onFailed(const bus::RequestResult &result);
+    void onFailed(quint64 stream, const bus::RequestResult &result);
 
     QPointer<bus::BusSession> m_session;
     QMetaObject::Connection m_stoppedConnection;

@@ -5,6 +5,7 @@
 #include <drive/ControlView.h>
 #include <drive/DriveSettingsStore.h>
 #include <drive/JogPanel.h>
+#include <drive/SetpointGenerator.h>
 #include <drive/SetpointPanel.h>
 #include <drive/SoftLimitsEditor.h>
 #include <main/SettingsFile.h>
@@ -72,6 +73,8 @@ private slots:
     void generatorStartsAndStopStops();
     void generatorStopsOnDriveChange();
     void generatorKeepsPaceWhileTheGuiIsBusy();
+    void generatorStopsWhenTheLimitsChange();
+    void haltWhileTheAngleIsReadCancelsThePositionStart();
     void generatorWaveforms_data();
     void generatorWaveforms();
 };
@@ -656,6 +659,52 @@ void tst_ControlView::generatorKeepsPaceWhileTheGuiIsBusy()
     QVERIFY(!view->generator()->isRunning());
     QVERIFY(rig.barrier(1));
     QCOMPARE(rig.count(1, Command::MotorStop), 1);
+}
+
+void tst_ControlView::generatorStopsWhenTheLimitsChange()
+{
+    // The bus thread checks setpoints against the limits the generator started with: lowered
+    // limits stop it (and the drive) rather than leaving it to run under the old ones.
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    SetpointWaveform::Settings s;
+    s.target = SetpointWaveform::Target::Speed;
+    s.amplitude = 90;
+    view->startGenerator(s);
+    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::Speed) >= 2, kWaitMs);
+    QSignalSpy stopped(view->generator(), &lk::ui::SetpointGenerator::stopped);
+    lk::safety::SoftLimits lower = view->softLimits();
+    lower.maxSpeedDps = 30;
+    view->setSoftLimits(lower);
+    QVERIFY(!view->generator()->isRunning());
+    QCOMPARE(stopped.size(), 1);
+    QVERIFY(stopped.at(0).at(0).toString().contains(QStringLiteral("soft limits")));
+    QTRY_COMPARE_WITH_TIMEOUT(rig.count(1, Command::MotorStop), 1, kWaitMs);
+    const int sent = rig.count(1, Command::Speed);
+    QTest::qWait(300);
+    QVERIFY(rig.barrier(1));
+    QCOMPARE(rig.count(1, Command::Speed), sent);
+}
+
+void tst_ControlView::haltWhileTheAngleIsReadCancelsThePositionStart()
+{
+    // A position waveform starts once the drive's angle is read; Stop pressed meanwhile (as an
+    // emergency stop would) cancels that start: nothing follows the stop.
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    SetpointWaveform::Settings s;
+    s.target = SetpointWaveform::Target::Position;
+    s.offset = rig.multiTurnDeg(1);
+    s.amplitude = 5;
+    view->startGenerator(s); // reads the angle first
+    view->motorStop();
+    QTest::qWait(300);
+    QVERIFY(rig.barrier(1));
+    QVERIFY(!view->generator()->isRunning());
+    QCOMPARE(rig.count(1, Command::MotorStop), 1);
+    QCOMPARE(rig.count(1, Command::MultiPosition) + rig.count(1, Command::MultiPositionLimited), 0);
 }
 
 void tst_ControlView::generatorWaveforms_data()

@@ -116,10 +116,6 @@ void tst_MainWindowStop::escapeDuringAScanStopsEveryDrive()
              qPrintable(stopReport()));
     QVERIFY(!stopReport().contains(QStringLiteral("NO answer")));
     QVERIFY(m_window->commandedMotion()->movingIds().isEmpty()); // every off was acknowledged
-    // Leave the bus as the next test expects it: every drive found and polled.
-    QTest::mouseClick(m_window->findChild<QPushButton *>(QStringLiteral("scanButton")),
-                      Qt::LeftButton);
-    QTRY_COMPARE_WITH_TIMEOUT(model()->ids(), kSimIds, kWaitMs);
 }
 
 void tst_MainWindowStop::escapeHaltsTheGeneratorFirst()
@@ -133,11 +129,17 @@ void tst_MainWindowStop::escapeHaltsTheGeneratorFirst()
     s.target = lk::bus::SetpointWaveform::Target::Speed;
     control->startGenerator(s);
     QVERIFY(control->generator()->isRunning());
+    // The bus thread's stream is sending: a few setpoints have reached drive 1.
+    QTRY_VERIFY_WITH_TIMEOUT(sim()->requestCount(1, Command::Speed) >= 3, kWaitMs);
     QTest::keyClick(m_window->views(), Qt::Key_Escape);
     QVERIFY(!control->generator()->isRunning()); // before the bus has said anything
     QTRY_VERIFY_WITH_TIMEOUT(!stopReport().isEmpty(), kWaitMs);
     QTRY_VERIFY_WITH_TIMEOUT(allOff(), kWaitMs);
-    model()->setCurrentId(2); // what the next tests expect
+    // And the stream on the bus thread has stopped too: no setpoint after the stop.
+    const int setpoints = sim()->requestCount(1, Command::Speed);
+    QTest::qWait(300); // six intervals at the default 20 Hz
+    QCOMPARE(sim()->requestCount(1, Command::Speed), setpoints);
+    QVERIFY2(allOff(), "a setpoint after the emergency stop turned a drive back on");
 }
 
 QTEST_MAIN(tst_MainWindowStop)
