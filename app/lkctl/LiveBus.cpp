@@ -148,8 +148,9 @@ LiveBus::StopOutcome LiveBus::emergencyStop(const QVector<int> &ids, protocol::C
     std::optional<StopOutcome> outcome;
     QObject waiting; // gone on return: a late outcome finds no `outcome`
     m_session.emergencyStop(ids, halt, &waiting,
-                            [&outcome](const QVector<int> &acked, const QVector<int> &silent) {
-                                outcome = StopOutcome{acked, silent};
+                            [&outcome](const QVector<int> &acked, const QVector<int> &silent,
+                                       const QVector<int> &unsent) {
+                                outcome = StopOutcome{acked, silent, unsent};
                             });
     waitUntil([&outcome] { return outcome.has_value(); });
     return outcome.value_or(StopOutcome{});

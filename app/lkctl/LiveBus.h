@@ -49,6 +49,7 @@ public:
     /// ahead of all else.
     struct StopOutcome {
         QVector<int> acknowledged, silent;
+        QVector<int> unsent; ///< of the silent, those the halt never reached the wire for
     };
     StopOutcome emergencyStop(const QVector<int> &ids = {},
                               protocol::Command halt = protocol::Command::MotorOff);

@@ -170,6 +170,11 @@ int MotorStateCommand::runAll(LiveBus &bus, bool json)
         // happened to hear: a drive missed on a slow link must still stop.
         const LiveBus::StopOutcome o = bus.emergencyStop({}, m_command);
         print(bus.console(), json, o.acknowledged, o.silent);
+        // The JSON keeps CLI.md's shape (they are silent too); a person is told the truth.
+        if (!o.unsent.isEmpty())
+            bus.error(QStringLiteral("%1 never went out to %2: the link was lost; they may still "
+                                     "be moving")
+                          .arg(protocol::CommandTable::name(m_command), idText(o.unsent)));
         return o.acknowledged.isEmpty() ? kExitFailure : kExitOk;
     }
     bus::ScanOptions options;

@@ -86,7 +86,7 @@ void BusSession::finishStop(quint64 ticket, const QVector<int> &acknowledged,
     const auto done = m_stopCallbacks.take(ticket);
     emit emergencyStopFinished(ticket, acknowledged, silent, unsent);
     if (done)
-        done(acknowledged, silent);
+        done(acknowledged, silent, unsent);
 }
 
 void BusSession::open(TransportFactory factory, int baud, const BusConfig &config)

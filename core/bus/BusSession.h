@@ -63,8 +63,10 @@ public:
     void setConfig(const BusConfig &config);
 
     using Completion = std::function<void(const RequestResult &)>;
-    using StopCompletion =
-        std::function<void(const QVector<int> &acknowledged, const QVector<int> &silent)>;
+    /// An emergency stop's end: who acknowledged, who stayed silent, and which of the silent
+    /// never got the halt onto the wire (the link was gone).
+    using StopCompletion = std::function<void(
+        const QVector<int> &acknowledged, const QVector<int> &silent, const QVector<int> &unsent)>;
 
     /// Queue a request; returns its ticket, repeated in the requestCompleted it ends with.
     /// `retries` < 0 uses BusConfig::retries; incremental moves and ROM writes are never
@@ -185,7 +187,7 @@ private:
     quint64 m_nextExtrasHandle = 1;
     quint64 m_nextStream = 1;
     TicketCallbacks<RequestResult> m_requestCallbacks;
-    TicketCallbacks<QVector<int>, QVector<int>> m_stopCallbacks;
+    TicketCallbacks<QVector<int>, QVector<int>, QVector<int>> m_stopCallbacks;
 };
 
 } // namespace lk::bus

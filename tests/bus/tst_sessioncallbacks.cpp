@@ -232,11 +232,13 @@ void tst_SessionCallbacks::emergencyStopCallback()
     session.setSeries(3, Series::MF);
     QObject context;
     QVector<QPair<QVector<int>, QVector<int>>> outcomes;
-    const quint64 t =
-        session.emergencyStop({9}, Command::MotorOff, &context,
-                              [&outcomes](const QVector<int> &ack, const QVector<int> &silent) {
-                                  outcomes.append({ack, silent});
-                              });
+    QVector<QVector<int>> unsent;
+    const auto record = [&outcomes, &unsent](const QVector<int> &ack, const QVector<int> &silent,
+                                             const QVector<int> &never) {
+        outcomes.append({ack, silent});
+        unsent.append(never);
+    };
+    const quint64 t = session.emergencyStop({9}, Command::MotorOff, &context, record);
     QVERIFY(outcomes.isEmpty());
     QTRY_COMPARE_WITH_TIMEOUT(outcomes.size(), 1, 20000);
     QCOMPARE(finished.size(), 1);
@@ -244,22 +246,22 @@ void tst_SessionCallbacks::emergencyStopCallback()
     QCOMPARE(outcomes.at(0).first, (QVector<int>{3, 9}));
     QCOMPARE(outcomes.at(0).first, finished.at(0).at(1).value<QVector<int>>());
     QCOMPARE(outcomes.at(0).second, finished.at(0).at(2).value<QVector<int>>());
+    QVERIFY(unsent.at(0).isEmpty()); // the link was up: every off went out
     session.close();
 
     // Closed: every ID silent, reported the same way.
     QObject gone;
     int calls = 0;
     auto dead = std::make_unique<QObject>();
-    session.emergencyStop({}, Command::MotorOff, dead.get(),
-                          [&calls](const QVector<int> &, const QVector<int> &) { ++calls; });
-    session.emergencyStop({}, Command::MotorOff, &gone,
-                          [&outcomes](const QVector<int> &ack, const QVector<int> &silent) {
-                              outcomes.append({ack, silent});
-                          });
+    session.emergencyStop(
+        {}, Command::MotorOff, dead.get(),
+        [&calls](const QVector<int> &, const QVector<int> &, const QVector<int> &) { ++calls; });
+    session.emergencyStop({}, Command::MotorOff, &gone, record);
     dead.reset();
     QTRY_COMPARE(outcomes.size(), 2);
     QVERIFY(outcomes.at(1).first.isEmpty());
     QCOMPARE(outcomes.at(1).second.size(), 32);
+    QCOMPARE(unsent.at(1), outcomes.at(1).second); // none of them went out
     QCOMPARE(calls, 0);
 }
 
