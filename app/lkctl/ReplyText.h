@@ -14,8 +14,9 @@ namespace lk::lkctl {
 /// --json instead; this text is not a contract.
 class ReplyText {
 public:
-    /// One line per field in CLI.md order, labels aligned; *_raw fields and the flag
-    /// booleans (folded into "errors") are left out.
+    /// One line per field in the field table's order (ProtocolFields::all(), which puts
+    /// driver/motor last: `info` orders its groups itself), labels aligned; *_raw fields and the
+    /// flag booleans (folded into "errors") are left out.
     static QStringList lines(const QJsonObject &fields, const QString &indent = QString());
     /// The lines of several objects, one after the other, labels aligned across them.
     static QStringList lines(const QList<QJsonObject> &groups, const QString &indent = QString());
