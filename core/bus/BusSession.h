@@ -115,12 +115,14 @@ public:
     /// Run the setpoint stream of `plan` on the bus thread (SetpointStream: paced there, each
     /// setpoint checked with the plan's limits before it is queued), replacing a running one.
     /// Returns its handle (plan.stream is set to it), repeated in setpointStreamStarted and
-    /// setpointStreamStopped. A closed session stops it at once (SetpointStopReason::Closed).
+    /// setpointStreamStopped. A closed session never starts it: setpointStreamStopped alone
+    /// follows (SetpointStopReason::Closed).
     /// An emergency stop, a disconnect, close() and a reopen at another baud stop it on the
     /// bus thread before anything else happens.
     quint64 startSetpointStream(SetpointStreamPlan plan);
     /// Stop the running stream; its setpoint still queued is dropped, one on the wire may
-    /// finish. Sends nothing: the caller decides whether the drive is stopped too.
+    /// finish but is not sent again. Sends nothing: the caller decides whether the drive is
+    /// stopped too.
     void stopSetpointStream();
 
     /// Tell the bus how to decode replies from `id` (iq vs power); also makes `id` known.
