@@ -42,7 +42,7 @@
     </message>
 </context>
 <context>
-    <name>lk::ui::EmergencyStopControl</name>
+    <name>lk::ui::EmergencyStopReport</name>
     <message numerus="yes">
         <source>Emergency stop: Motor Off sent to %n ID(s); no drive answered.</source>
         <translation>

@@ -1952,6 +1952,9 @@
         <source>Emergency stop.</source>
         <translation>急停。</translation>
     </message>
+</context>
+<context>
+    <name>lk::ui::EmergencyStopReport</name>
     <message>
         <source>Emergency stop: NOTHING could be sent, the bus is not connected. lkstudio has not commanded any drive to move.</source>
         <translation>急停：总线未连接，任何命令都无法发送。lkstudio 没有命令任何驱动运动。</translation>
@@ -1975,6 +1978,10 @@
     <message>
         <source>%1 of %2 could not be sent: the link dropped.</source>
         <translation>%2 个中有 %1 个无法发送：链路已断开。</translation>
+    </message>
+    <message>
+        <source>Motor Off NEVER reached drive(s) %1: they may still be moving, cut their power if needed.</source>
+        <translation>电机关闭命令从未到达驱动 %1：它们可能仍在运动，必要时请切断其电源。</translation>
     </message>
     <message>
         <source>NO answer from drive(s) %1: check them and cut their power if needed.</source>

@@ -3,10 +3,10 @@
 #include "BusController.h"
 #include "CommandedMotion.h"
 #include "EmergencyKeyFilter.h"
+#include "EmergencyStopReport.h"
 
 #include <panels/BusModel.h>
 #include <panels/MessageBanner.h>
-#include <panels/StatusColors.h>
 
 #include <bus/BusSession.h>
 
@@ -15,22 +15,6 @@
 #include <algorithm>
 
 namespace lk::ui {
-
-namespace {
-QString idList(const QVector<int> &ids)
-{
-    QStringList parts;
-    for (int id : ids)
-        parts << QString::number(id);
-    return parts.join(QStringLiteral(", "));
-}
-
-QString redBold(const QString &html)
-{
-    return QStringLiteral("<b><span style=\"color:%1\">%2</span></b>")
-        .arg(StatusColors::text(StatusColors::Role::Error).name(), html);
-}
-} // namespace
 
 EmergencyStopControl::EmergencyStopControl(BusController *controller, CommandedMotion *motion,
                                            MessageBanner *banner, QObject *parent)
@@ -79,46 +63,8 @@ void EmergencyStopControl::onFinished(quint64 ticket, const QVector<int> &acknow
 
 void EmergencyStopControl::report(const Pending &p, const Outcome &outcome)
 {
-    using Level = MessageBanner::Level;
-    const QVector<int> &acknowledged = outcome.acknowledged;
-    const int total = int(acknowledged.size() + outcome.silent.size());
-    const int sent = total - int(outcome.unsent.size());
-    if (sent == 0) {
-        const QString what =
-            p.commanded.isEmpty()
-                ? tr("Emergency stop: NOTHING could be sent, the bus is not connected. lkstudio "
-                     "has not commanded any drive to move.")
-                : tr("Emergency stop: NOTHING could be sent, the bus is not connected. Last "
-                     "commanded to move: %1. They may still be moving: cut their power if "
-                     "needed.")
-                      .arg(p.commanded.join(QStringLiteral("; ")).toHtmlEscaped());
-        m_banner->setEntry(entryKey(), Level::Error, redBold(what));
-        return;
-    }
-    QVector<int> missing;
-    for (int id : outcome.silent) {
-        if (p.watched.contains(id))
-            missing.append(id);
-    }
-    QString text =
-        acknowledged.isEmpty()
-            ? tr("Emergency stop: Motor Off sent to %n ID(s); no drive answered.", nullptr, sent)
-            : tr("Emergency stop: Motor Off sent to %n ID(s); acknowledged by "
-                 "drive(s) %1.",
-                 nullptr, sent)
-                  .arg(idList(acknowledged));
-    if (sent < total)
-        text += QLatin1Char(' ') +
-                tr("%1 of %2 could not be sent: the link dropped.").arg(total - sent).arg(total);
-    text = text.toHtmlEscaped();
-    if (!missing.isEmpty())
-        text += QLatin1Char(' ') +
-                redBold(tr("NO answer from drive(s) %1: check them and cut their power if needed.")
-                            .arg(idList(missing)));
-    const Level level = !missing.isEmpty() || sent < total ? Level::Error
-                        : acknowledged.isEmpty()           ? Level::Warning
-                                                           : Level::Info;
-    m_banner->setEntry(entryKey(), level, text);
+    const EmergencyStopReport::Text text = EmergencyStopReport::compose(p, outcome);
+    m_banner->setEntry(entryKey(), text.level, text.html);
 }
 
 } // namespace lk::ui

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "EmergencyStopReport.h"
+
 #include <QtCore/QHash>
 #include <QtCore/QObject>
 #include <QtCore/QStringList>
@@ -42,15 +44,8 @@ signals:
     void reported();
 
 private:
-    struct Pending {
-        QVector<int> watched;  ///< known or commanded when the stop began
-        QStringList commanded; ///< "Drive 2 (speed 360 dps at 12:03:04)", at that moment
-    };
-    /// The bus's account of one stop: who acknowledged, who stayed silent, and which of the
-    /// silent never got the motor_off on the wire.
-    struct Outcome {
-        QVector<int> acknowledged, silent, unsent;
-    };
+    using Pending = EmergencyStopReport::Context;
+    using Outcome = EmergencyStopReport::Outcome;
     void onFinished(quint64 ticket, const QVector<int> &acknowledged, const QVector<int> &silent,
                     const QVector<int> &unsent);
     void report(const Pending &p, const Outcome &outcome);
