@@ -295,8 +295,7 @@ int ControlCommand::run(const QStringList &args, Console &console)
     const safety::MotionPlan motion =
         safety::MotionPlanner::plan(plan->request, who->series, *limits, position);
     if (!motion.allowed()) {
-        bus.error(QStringLiteral("refused for safety, nothing was sent: %1")
-                      .arg(text::VerdictText::verdict(motion.verdict, who->series)));
+        bus.refused(text::VerdictText::verdict(motion.verdict, who->series));
         return kExitRefused;
     }
     return send(bus, *plan, motion, position);

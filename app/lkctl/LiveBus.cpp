@@ -32,6 +32,12 @@ void LiveBus::error(const QString &message)
     m_console.errLine(QStringLiteral("lkctl %1: %2").arg(m_command, message));
 }
 
+void LiveBus::refused(const QString &clause, int id)
+{
+    const QString who = id > 0 ? QStringLiteral(" for drive %1").arg(id) : QString();
+    error(QStringLiteral("refused for safety%1, nothing was sent: %2").arg(who, clause));
+}
+
 bool LiveBus::waitUntil(const std::function<bool()> &done, int maxMs)
 {
     // Sleep in the event loop until something happens; the tick only bounds the sleep so

@@ -62,6 +62,9 @@ public:
     bus::BusSession &session() { return m_session; }
     Console &console() { return m_console; }
     void error(const QString &message); ///< "lkctl CMD: message" on standard error
+    /// lkctl's one framing of a safety refusal (exit 4): "refused for safety[ for drive ID],
+    /// nothing was sent: <clause>", the clause worded by text::VerdictText.
+    void refused(const QString &clause, int id = 0);
 
     static constexpr int kMaxWaitMs = 120000;
     static constexpr int kTickMs = 100; ///< how late waitUntil may notice its deadline

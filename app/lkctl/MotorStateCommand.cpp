@@ -136,9 +136,7 @@ bool MotorStateCommand::allowed(LiveBus &bus, int id, std::optional<protocol::Se
     const safety::Verdict v =
         safety::MotionGuard::check(r, series, safety::SoftLimits::defaults(series));
     if (!v.allowed())
-        bus.error(QStringLiteral("refused for safety for drive %1, nothing was sent: %2")
-                      .arg(id)
-                      .arg(text::VerdictText::verdict(v, series)));
+        bus.refused(text::VerdictText::verdict(v, series), id);
     return v.allowed();
 }
 

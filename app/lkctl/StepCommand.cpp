@@ -384,8 +384,7 @@ int StepCommand::run(const QStringList &args, Console &console)
     case StepTestFailure::None:
         break;
     case StepTestFailure::Refused:
-        bus.error(QStringLiteral("%1: %2").arg(result.message,
-                                               text::VerdictText::stepRefusal(result.refusal)));
+        bus.refused(text::VerdictText::stepRefusal(result.refusal));
         return kExitRefused;
     case StepTestFailure::BadSpec:
         return usageError(console, result.message);
