@@ -1,18 +1,14 @@
 #include "DriveTestRig.h"
 
-#include <bus/SetpointWaveform.h>
 #include <drive/ControlModePanel.h>
 #include <drive/ControlView.h>
 #include <drive/DriveSettingsStore.h>
 #include <drive/JogPanel.h>
-#include <drive/SetpointGenerator.h>
-#include <drive/SetpointPanel.h>
 #include <drive/SoftLimitsEditor.h>
 #include <main/SettingsFile.h>
 
 #include <QtCore/QSettings>
 #include <QtCore/QTemporaryDir>
-#include <QtCore/QThread>
 #include <QtTest/QtTest>
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
@@ -23,7 +19,6 @@
 
 #include <cmath>
 
-using lk::bus::SetpointWaveform;
 using lk::drivetest::button;
 using lk::drivetest::kWaitMs;
 using lk::drivetest::SimRig;
@@ -65,18 +60,10 @@ private slots:
     void valueDoesNotCarryOverToAnotherDrive();
     void severalDrivesSelectedNamesTheOne();
     void damagedStoredLimitsAreNeverReplacedSilently();
-    void generatorPositionCentredOnTheDrive();
     void offStopRun();
     void jogHoldAndRelease();
     void jogStep();
     void keyboardJogNotInTextField();
-    void generatorStartsAndStopStops();
-    void generatorStopsOnDriveChange();
-    void generatorKeepsPaceWhileTheGuiIsBusy();
-    void generatorStopsWhenTheLimitsChange();
-    void haltWhileTheAngleIsReadCancelsThePositionStart();
-    void generatorWaveforms_data();
-    void generatorWaveforms();
 };
 
 void tst_ControlView::modesOfferedPerSeries_data()
@@ -457,35 +444,6 @@ void tst_ControlView::damagedStoredLimitsAreNeverReplacedSilently()
     QVERIFY2(fresh->lastOutcome().sent, qPrintable(fresh->statusText()));
 }
 
-void tst_ControlView::generatorPositionCentredOnTheDrive()
-{
-    SimRig rig;
-    QVERIFY(rig.open());
-    {
-        auto mover = openView(rig, 1);
-        QVERIFY(mover->sendMotion(lk::protocol::build::speed(1, 5000)).sent);
-        QTRY_VERIFY_WITH_TIMEOUT(rig.multiTurnDeg(1) > 2000, kWaitMs);
-        mover->sendMotion(lk::protocol::build::speed(1, 0));
-        QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.speedDps(1)) < 1, kWaitMs);
-        mover->motorOff();
-        QVERIFY(rig.barrier(1));
-    }
-    auto view = openView(rig, 1);
-    auto *target = view->findChild<QComboBox *>(QStringLiteral("target"));
-    target->setCurrentIndex(target->findData(int(SetpointWaveform::Target::Position)));
-    QTRY_VERIFY_WITH_TIMEOUT(
-        std::fabs(view->setpointPanel()->settings().offset - rig.multiTurnDeg(1)) < 1, kWaitMs);
-    // A waveform around 0 absolute is turns away: the first setpoint is refused, none sent.
-    SetpointWaveform::Settings far = view->setpointPanel()->settings();
-    far.offset = 0;
-    view->startGenerator(far);
-    QTRY_VERIFY_WITH_TIMEOUT(view->statusText().contains(QStringLiteral("one output turn")),
-                             kWaitMs);
-    QVERIFY(!view->generator()->isRunning());
-    QVERIFY(rig.barrier(1));
-    QCOMPARE(rig.count(1, Command::MultiPosition) + rig.count(1, Command::MultiPositionLimited), 0);
-}
-
 void tst_ControlView::offStopRun()
 {
     SimRig rig;
@@ -589,157 +547,6 @@ void tst_ControlView::keyboardJogNotInTextField()
     QTest::keyRelease(view.get(), Qt::Key_Left);
     QVERIFY(rig.barrier(1));
     QCOMPARE(rig.count(1, Command::Speed), 2);
-}
-
-void tst_ControlView::generatorStartsAndStopStops()
-{
-    SimRig rig;
-    QVERIFY(rig.open());
-    auto view = openView(rig, 1);
-    SetpointWaveform::Settings s;
-    s.waveform = SetpointWaveform::Waveform::Square;
-    s.target = SetpointWaveform::Target::Speed;
-    s.amplitude = 90;
-    s.periodS = 0.5;
-    s.rateHz = 20;
-    view->startGenerator(s);
-    QVERIFY(view->generator()->isRunning());
-    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::Speed) >= 3, kWaitMs);
-    QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.speedDps(1)) > 30, kWaitMs);
-    QTest::mouseClick(view->findChild<QPushButton *>(QStringLiteral("stopGenerator")),
-                      Qt::LeftButton);
-    QVERIFY(!view->generator()->isRunning());
-    QVERIFY(rig.barrier(1));
-    QCOMPARE(rig.count(1, Command::MotorStop), 1);
-    const int sent = rig.count(1, Command::Speed);
-    QTest::qWait(300); // several generator periods: nothing more may be sent
-    QVERIFY(rig.barrier(1));
-    QCOMPARE(rig.count(1, Command::Speed), sent);
-}
-
-void tst_ControlView::generatorStopsOnDriveChange()
-{
-    SimRig rig;
-    QVERIFY(rig.open());
-    auto view = openView(rig, 1);
-    SetpointWaveform::Settings s;
-    s.target = SetpointWaveform::Target::Speed;
-    view->startGenerator(s);
-    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::Speed) >= 2, kWaitMs);
-    view->setDrive(2, rig.motor(2));
-    QVERIFY(!view->generator()->isRunning());
-    QTRY_COMPARE_WITH_TIMEOUT(rig.count(1, Command::MotorStop), 1, kWaitMs);
-    QVERIFY(rig.barrier(2));
-    QCOMPARE(rig.count(2, Command::Speed), 0);
-
-    view->setDrive(1, rig.motor(1));
-    view->startGenerator(s);
-    QVERIFY(view->generator()->isRunning());
-    view->setConnected(false);
-    QVERIFY(!view->generator()->isRunning());
-}
-
-void tst_ControlView::generatorKeepsPaceWhileTheGuiIsBusy()
-{
-    SimRig rig;
-    QVERIFY(rig.open());
-    auto view = openView(rig, 1);
-    SetpointWaveform::Settings s;
-    s.target = SetpointWaveform::Target::Speed;
-    s.rateHz = 20;
-    view->startGenerator(s);
-    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::Speed) >= 1, kWaitMs);
-    // The GUI thread is busy for 600 ms (12 ticks at 20 Hz): the bus thread paces setpoints
-    // on its own, so they keep going out meanwhile instead of waiting for the GUI.
-    const int before = rig.count(1, Command::Speed);
-    QThread::msleep(600);
-    QVERIFY2(rig.count(1, Command::Speed) - before >= 4,
-             qPrintable(QString::number(rig.count(1, Command::Speed) - before)));
-    view->stopGenerator();
-    QVERIFY(!view->generator()->isRunning());
-    QVERIFY(rig.barrier(1));
-    QCOMPARE(rig.count(1, Command::MotorStop), 1);
-}
-
-void tst_ControlView::generatorStopsWhenTheLimitsChange()
-{
-    // The bus thread checks setpoints against the limits the generator started with: lowered
-    // limits stop it (and the drive) rather than leaving it to run under the old ones.
-    SimRig rig;
-    QVERIFY(rig.open());
-    auto view = openView(rig, 1);
-    SetpointWaveform::Settings s;
-    s.target = SetpointWaveform::Target::Speed;
-    s.amplitude = 90;
-    view->startGenerator(s);
-    QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::Speed) >= 2, kWaitMs);
-    QSignalSpy stopped(view->generator(), &lk::ui::SetpointGenerator::stopped);
-    lk::safety::SoftLimits lower = view->softLimits();
-    lower.maxSpeedDps = 30;
-    view->setSoftLimits(lower);
-    QVERIFY(!view->generator()->isRunning());
-    QCOMPARE(stopped.size(), 1);
-    QVERIFY(stopped.at(0).at(0).toString().contains(QStringLiteral("soft limits")));
-    QTRY_COMPARE_WITH_TIMEOUT(rig.count(1, Command::MotorStop), 1, kWaitMs);
-    const int sent = rig.count(1, Command::Speed);
-    QTest::qWait(300);
-    QVERIFY(rig.barrier(1));
-    QCOMPARE(rig.count(1, Command::Speed), sent);
-}
-
-void tst_ControlView::haltWhileTheAngleIsReadCancelsThePositionStart()
-{
-    // A position waveform starts once the drive's angle is read; Stop pressed meanwhile (as an
-    // emergency stop would) cancels that start: nothing follows the stop.
-    SimRig rig;
-    QVERIFY(rig.open());
-    auto view = openView(rig, 1);
-    SetpointWaveform::Settings s;
-    s.target = SetpointWaveform::Target::Position;
-    s.offset = rig.multiTurnDeg(1);
-    s.amplitude = 5;
-    view->startGenerator(s); // reads the angle first
-    view->motorStop();
-    QTest::qWait(300);
-    QVERIFY(rig.barrier(1));
-    QVERIFY(!view->generator()->isRunning());
-    QCOMPARE(rig.count(1, Command::MotorStop), 1);
-    QCOMPARE(rig.count(1, Command::MultiPosition) + rig.count(1, Command::MultiPositionLimited), 0);
-}
-
-void tst_ControlView::generatorWaveforms_data()
-{
-    QTest::addColumn<int>("waveform");
-    QTest::addColumn<double>("t");
-    QTest::addColumn<double>("expected");
-    using W = SetpointWaveform::Waveform;
-    // amplitude 10, offset 5, period 2 s
-    QTest::newRow("step before") << int(W::Step) << 0.5 << 5.0;
-    QTest::newRow("step after") << int(W::Step) << 1.5 << 15.0;
-    QTest::newRow("step stays") << int(W::Step) << 9.0 << 15.0;
-    QTest::newRow("square high") << int(W::Square) << 0.2 << 15.0;
-    QTest::newRow("square low") << int(W::Square) << 1.2 << -5.0;
-    QTest::newRow("sine 0") << int(W::Sine) << 0.0 << 5.0;
-    QTest::newRow("sine peak") << int(W::Sine) << 0.5 << 15.0;
-    QTest::newRow("sine trough") << int(W::Sine) << 1.5 << -5.0;
-    QTest::newRow("ramp 0") << int(W::Ramp) << 0.0 << 5.0;
-    QTest::newRow("ramp up") << int(W::Ramp) << 0.25 << 10.0;
-    QTest::newRow("ramp top") << int(W::Ramp) << 0.5 << 15.0;
-    QTest::newRow("ramp bottom") << int(W::Ramp) << 1.5 << -5.0;
-    QTest::newRow("ramp next cycle") << int(W::Ramp) << 2.5 << 15.0;
-}
-
-void tst_ControlView::generatorWaveforms()
-{
-    QFETCH(int, waveform);
-    QFETCH(double, t);
-    QFETCH(double, expected);
-    SetpointWaveform::Settings s;
-    s.waveform = SetpointWaveform::Waveform(waveform);
-    s.amplitude = 10;
-    s.offset = 5;
-    s.periodS = 2;
-    QVERIFY(std::fabs(SetpointWaveform::valueAt(s, t) - expected) < 1e-9);
 }
 
 QTEST_MAIN(tst_ControlView)
