@@ -10,6 +10,7 @@
 #include <QtTest/QTest>
 #include <QtWidgets/QPushButton>
 
+#include <cmath>
 #include <functional>
 #include <memory>
 
@@ -105,6 +106,22 @@ public:
                 return false;
             },
             kWaitMs);
+    }
+
+    /// Winds drive `id` more than 2000 deg from 0 and leaves it still with its motor off: for
+    /// tests of targets that must start where the drive is, never at 0 absolute.
+    bool windAway(int id)
+    {
+        using protocol::build::speed;
+        if (session.send(*speed(id, 5000).request) == 0 ||
+            !QTest::qWaitFor([&] { return multiTurnDeg(id) > 2000; }, kWaitMs))
+            return false;
+        session.send(*speed(id, 0).request);
+        if (!QTest::qWaitFor([&] { return std::fabs(speedDps(id)) < 1; }, kWaitMs))
+            return false;
+        session.send(*protocol::build::plain(protocol::Command::MotorOff, id).request,
+                     bus::Priority::Emergency);
+        return barrier(id);
     }
 
     std::shared_ptr<transport::SimBusHandle> sim;

@@ -62,15 +62,7 @@ void tst_ControlGenerator::generatorPositionCentredOnTheDrive()
 {
     SimRig rig;
     QVERIFY(rig.open());
-    {
-        auto mover = openView(rig, 1);
-        QVERIFY(mover->sendMotion(lk::protocol::build::speed(1, 5000)).sent);
-        QTRY_VERIFY_WITH_TIMEOUT(rig.multiTurnDeg(1) > 2000, kWaitMs);
-        mover->sendMotion(lk::protocol::build::speed(1, 0));
-        QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.speedDps(1)) < 1, kWaitMs);
-        mover->motorOff();
-        QVERIFY(rig.barrier(1));
-    }
+    QVERIFY(rig.windAway(1));
     auto view = openView(rig, 1);
     auto *target = view->findChild<QComboBox *>(QStringLiteral("target"));
     target->setCurrentIndex(target->findData(int(SetpointWaveform::Target::Position)));

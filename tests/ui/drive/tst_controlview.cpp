@@ -337,16 +337,7 @@ void tst_ControlView::targetStartsAtTheDrivesAngle()
 {
     SimRig rig;
     QVERIFY(rig.open());
-    {
-        // Wind the rotor several turns away from 0 first.
-        auto mover = openView(rig, 1);
-        QVERIFY(mover->sendMotion(lk::protocol::build::speed(1, 5000)).sent);
-        QTRY_VERIFY_WITH_TIMEOUT(rig.multiTurnDeg(1) > 2000, kWaitMs);
-        mover->sendMotion(lk::protocol::build::speed(1, 0));
-        QTRY_VERIFY_WITH_TIMEOUT(std::fabs(rig.speedDps(1)) < 1, kWaitMs);
-        mover->motorOff();
-        QVERIFY(rig.barrier(1));
-    }
+    QVERIFY(rig.windAway(1)); // several turns away from 0
     auto view = openView(rig, 1);
     auto *modes = view->modePanel();
     QVERIFY(modes->setMode(ControlMode::MultiPosition));
