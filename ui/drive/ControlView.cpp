@@ -4,6 +4,7 @@
 #include "ControlModePanel.h"
 #include "DriveSettingsStore.h"
 #include "DriveText.h"
+#include "JogKeys.h"
 #include "JogPanel.h"
 #include "LoopPlot.h"
 #include "RequestTracker.h"
@@ -15,17 +16,10 @@
 #include <panels/StatusColors.h>
 #include <protocol/RequestBuilder.h>
 
-#include <QtGui/QKeyEvent>
-#include <QtWidgets/QAbstractSpinBox>
-#include <QtWidgets/QApplication>
-#include <QtWidgets/QComboBox>
 #include <QtWidgets/QGroupBox>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
-#include <QtWidgets/QLineEdit>
-#include <QtWidgets/QPlainTextEdit>
 #include <QtWidgets/QPushButton>
-#include <QtWidgets/QTextEdit>
 #include <QtWidgets/QVBoxLayout>
 
 namespace lk::ui {
@@ -89,14 +83,18 @@ ControlView::ControlView(QWidget *parent)
     layout->addWidget(rightWidget);
 
     wire();
-    // Sees the jog keys wherever the focus is inside the view (see handleJogKey).
-    qApp->installEventFilter(this);
+    m_keys = new JogKeys(this, {[this] { return m_jog->keyboardJog() && canSend(); },
+                                [this](int direction) {
+                                    startJog(direction);
+                                    return m_jogging;
+                                },
+                                [this] { endJog(); }, [this](int direction) { step(direction); }});
     contextChanged(Change::Session | Change::Drive);
 }
 
 ControlView::~ControlView()
 {
-    qApp->removeEventFilter(this);
+    delete m_keys; // off the application's filters before this view's members go
 }
 
 QWidget *ControlView::buildCommandBox()
@@ -533,7 +531,7 @@ void ControlView::endJog()
     if (!m_jogging)
         return;
     m_jogging = false;
-    m_keyJogging = false;
+    m_keys->jogEnded();
     if (m_motionId == driveId() && canSend()) {
         sendMotion(build::speed(driveId(), 0));
         setStatus(tr("Jog released: speed 0 sent."));
@@ -606,7 +604,7 @@ void ControlView::haltLocalMotion(const QString &reason)
     ++m_halts;
     m_generator->stop(reason);
     m_jogging = false;
-    m_keyJogging = false;
+    m_keys->jogEnded();
 }
 
 void ControlView::onTelemetry(const bus::TelemetryBatch &batch)
@@ -626,54 +624,6 @@ void ControlView::onTelemetry(const bus::TelemetryBatch &batch)
         m_readout->setText(text);
         return;
     }
-}
-
-bool ControlView::focusInTextField() const
-{
-    for (QWidget *w = QApplication::focusWidget(); w; w = w->parentWidget()) {
-        if (qobject_cast<QLineEdit *>(w) || qobject_cast<QAbstractSpinBox *>(w) ||
-            qobject_cast<QTextEdit *>(w) || qobject_cast<QPlainTextEdit *>(w))
-            return true;
-        if (auto *combo = qobject_cast<QComboBox *>(w); combo && combo->isEditable())
-            return true;
-    }
-    return false;
-}
-
-bool ControlView::handleJogKey(QKeyEvent *event)
-{
-    const int key = event->key();
-    if (key != Qt::Key_Left && key != Qt::Key_Right && key != Qt::Key_Up && key != Qt::Key_Down)
-        return false;
-    if (event->type() == QEvent::KeyRelease) {
-        // Always honour a release of the key that started the jog, wherever the focus went.
-        if (m_keyJogging && !event->isAutoRepeat() && (key == Qt::Key_Left || key == Qt::Key_Right))
-            endJog();
-        return m_keyJogging;
-    }
-    QWidget *focus = QApplication::focusWidget();
-    const bool focusHere = focus && (focus == this || isAncestorOf(focus));
-    if (!m_jog->keyboardJog() || !canSend() || !focusHere || focusInTextField())
-        return false;
-    if (event->isAutoRepeat())
-        return true; // held key: the jog is already running
-    if (key == Qt::Key_Left || key == Qt::Key_Right) {
-        startJog(key == Qt::Key_Left ? -1 : +1);
-        m_keyJogging = m_jogging;
-    } else {
-        step(key == Qt::Key_Down ? -1 : +1);
-    }
-    return true;
-}
-
-bool ControlView::eventFilter(QObject *watched, QEvent *event)
-{
-    if ((event->type() == QEvent::KeyPress || event->type() == QEvent::KeyRelease) &&
-        watched->isWidgetType() && handleJogKey(static_cast<QKeyEvent *>(event)))
-        return true;
-    if (event->type() == QEvent::ApplicationDeactivate && m_keyJogging)
-        endJog(); // the key release will never arrive here
-    return DriveView::eventFilter(watched, event);
 }
 
 void ControlView::changeEvent(QEvent *event)

@@ -20,6 +20,7 @@ namespace lk::ui {
 class BrakePanel;
 class ControlModePanel;
 class DriveSettingsStore;
+class JogKeys;
 class JogPanel;
 class LoopPlot;
 class SetpointPanel;
@@ -97,7 +98,6 @@ signals:
 protected:
     void contextChanged(Changes changes) override;
     void changeEvent(QEvent *event) override;
-    bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
     void applyPaletteStyles();
@@ -114,8 +114,6 @@ private:
     safety::DrivePosition drivePosition() const;
     void refreshSelectionNote();
     void onMotionResult(const bus::RequestResult &result);
-    bool handleJogKey(QKeyEvent *event);
-    bool focusInTextField() const;
     void sendRunState(protocol::Command command);
     void stopMotionOf(int id);
     void onTelemetry(const bus::TelemetryBatch &batch);
@@ -133,6 +131,7 @@ private:
     ControlModePanel *m_modes = nullptr;
     SoftLimitsEditor *m_limitsEditor = nullptr;
     JogPanel *m_jog = nullptr;
+    JogKeys *m_keys = nullptr; ///< the arrow keys as jog controls
     SetpointPanel *m_setpointPanel = nullptr;
     BrakePanel *m_brake = nullptr;
     SetpointGenerator *m_generator = nullptr;
@@ -148,10 +147,9 @@ private:
     QMetaObject::Connection m_telemetryConnection;
     QMetaObject::Connection m_stopConnection;
     MotionOutcome m_last;
-    int m_motionId = 0;        ///< drive the generator or jog commands
-    quint64 m_halts = 0;       ///< haltLocalMotion() calls: a start waiting on a read checks it
-    bool m_jogging = false;    ///< a hold-to-run speed command is active
-    bool m_keyJogging = false; ///< ... started by an arrow key
+    int m_motionId = 0;     ///< drive the generator or jog commands
+    quint64 m_halts = 0;    ///< haltLocalMotion() calls: a start waiting on a read checks it
+    bool m_jogging = false; ///< a hold-to-run speed command is active
 };
 
 } // namespace lk::ui
