@@ -152,7 +152,7 @@ bool InfoCommand::readV23(LiveBus &bus, int id, QList<QPair<QString, QJsonObject
 
 bool InfoCommand::readV235(LiveBus &bus, int id, QList<QPair<QString, QJsonObject>> &parts)
 {
-    // V2.35 has no 0x30/0x33 (V2.35.md section 3): the gains come from the parameter table,
+    // V2.35 has no 0x30/0x33 (docs/V2.35.md section 3): the gains come from the parameter table,
     // under the V2.3 names plus *_kd, and the drive's own limits and ramps beside them.
     QJsonObject state1, pid, params;
     bool ok = readInto(bus, *protocol::build::plain(Command::ReadState1, id).request, state1);

@@ -331,7 +331,7 @@ int MonitorCommand::run(const QStringList &args, Console &console)
     }
     // A reader that goes away (`| head`) must end the loop, not kill the process silently.
     std::signal(SIGPIPE, SIG_IGN);
-    // The bus limit of the mix (ARCHITECTURE.md), without what a series never answers.
+    // The bus limit of the mix (docs/ARCHITECTURE.md), without what a series never answers.
     QVector<Command> mix;
     for (int id : plan->ids) {
         for (Command c : plan->commands) {

@@ -125,7 +125,7 @@ bool ReadCommand::readInto(LiveBus &bus, Command command, int id, QJsonObject &f
 bool ReadCommand::readV235Params(LiveBus &bus, int id, bool gainsOnly, QJsonObject &fields)
 {
     // `pid`: the three loop parameters under the V2.3 names plus *_kd; `params`: all of
-    // them (V2.35.md section 6).
+    // them (docs/V2.35.md section 6).
     for (const DriveParam &p : DriveParams::all()) {
         if ((p.isLoop() || !gainsOnly) && !DriveParams::readFields(bus, id, p, fields))
             return false;

@@ -15,7 +15,7 @@ int frameBytes(int len)
 
 const std::array<int, 10> &BusTiming::standardBauds()
 {
-    // V2.3's nine and V2.35's 4 Mbaud (V2.35.md section 1).
+    // V2.3's nine and V2.35's 4 Mbaud (docs/V2.35.md section 1).
     static const std::array<int, 10> kBauds{9600,   19200,  38400,   57600,   115200,
                                             230400, 460800, 1000000, 2000000, 4000000};
     return kBauds;

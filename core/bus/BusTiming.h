@@ -8,7 +8,7 @@
 
 namespace lk::bus {
 
-/// The bus-limit formula of ARCHITECTURE.md: a half-duplex 8N1 transaction costs
+/// The bus-limit formula of docs/ARCHITECTURE.md: a half-duplex 8N1 transaction costs
 /// (request_bytes + reply_bytes) * 10 / baud + t_turnaround.
 class BusTiming {
 public:

@@ -275,7 +275,7 @@ void BusWorker::submit(BusRequest request, Completion done)
 
 std::optional<QString> BusWorker::unavailableReason(const protocol::Request &request) const
 {
-    // Nothing a drive's generation lacks is sent to it (V2.35.md section 3): it would stay
+    // Nothing a drive's generation lacks is sent to it (docs/V2.35.md section 3): it would stay
     // silent and the timeout would blame the wiring. Known only once its model was read.
     const auto it = m_motors.all().constFind(request.id);
     if (it == m_motors.all().cend() || !it->model ||

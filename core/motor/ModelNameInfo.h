@@ -25,7 +25,7 @@ struct ModelNameInfo {
 };
 
 /// Encoder counts per turn as reported on the wire: 2^bits for up to 16 bits; 18-bit models
-/// report their top 16 bits, so anything above 16 bits reads 0..65535 (ERRATA.md).
+/// report their top 16 bits, so anything above 16 bits reads 0..65535 (docs/ERRATA.md).
 int encoderCountsPerTurn(int bits);
 
 /// Default encoder resolution of a series (MS 12, MF 14, MG 18, MH 14 bit).

@@ -7,7 +7,7 @@
 
 namespace lk::motor {
 
-/// What one drive series can do, from the series table of the spec (ERRATA.md).
+/// What one drive series can do, from the series table of the spec (docs/ERRATA.md).
 struct SeriesLimits {
     protocol::Series series = protocol::Series::MF;
     double minSupplyV = 0; ///< below this the drive raises low-voltage protection

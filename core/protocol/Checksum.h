@@ -5,7 +5,7 @@
 namespace lk::protocol {
 
 /// Frame constants and the two checksums of the LK RS485 frame.
-/// Checksums are the byte sum & 0xFF, never % 255 (ERRATA.md: drives ignore % 255 frames).
+/// Checksums are the byte sum & 0xFF, never % 255 (docs/ERRATA.md: drives ignore % 255 frames).
 constexpr quint8 kFrameHead = 0x3E;
 constexpr int kHeaderSize = 5;     ///< 3E CMD ID LEN HCS
 constexpr int kMaxDataLength = 60; ///< spec: data 0..60 bytes

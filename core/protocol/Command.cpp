@@ -3,9 +3,9 @@
 namespace lk::protocol {
 
 namespace {
-// Lengths follow the spec as corrected by ERRATA.md: 0xA7 request LEN 4 (spec says 3),
+// Lengths follow the spec as corrected by docs/ERRATA.md: 0xA7 request LEN 4 (spec says 3),
 // 0xA8 reply LEN 7 (spec says 8), 0x19 reply LEN 0 or 2, 0x12 reply LEN 42 or 58. The V2.35
-// commands follow V2.35.md section 4 (0x93 replies with an echo: the "8 byte" is a typo).
+// commands follow docs/V2.35.md section 4 (0x93 replies with an echo: the "8 byte" is a typo).
 constexpr std::array<CommandInfo, CommandTable::kCount> kCommands{{
     {Command::ReadPid, "read_pid", 0, 6, -1, false, false, false, kOnV23},
     {Command::WritePidRam, "write_pid_ram", 6, 6, -1, true, false, false, kOnV23},

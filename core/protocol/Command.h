@@ -66,7 +66,7 @@ struct CommandInfo {
     bool movesMotor;         ///< sending it can make the shaft move (0xA0..0xA8, 0x88)
     bool writesFlash;   ///< writes the drive's ROM (0x32, 0x91, 0x19, 0x44): ask first, never loop
     quint8 generations; ///< GenerationMask: V2.3-only 0x30..0x34 and 0x91, V2.35-only
-                        ///< 0x40..0x44, 0x8C, 0x93 (V2.35.md section 3)
+                        ///< 0x40..0x44, 0x8C, 0x93 (docs/V2.35.md section 3)
 };
 
 /// The command table: lookup by code or by name.

@@ -17,7 +17,7 @@ struct ErrorFlag {
 };
 
 /// The error bits each generation names: V2.3 low voltage (bit 0) and over-temperature
-/// (bit 3); V2.35 all eight (V2.35.md section 5).
+/// (bit 3); V2.35 all eight (docs/V2.35.md section 5).
 class ErrorFlags {
 public:
     static const QVector<ErrorFlag> &of(Generation generation);

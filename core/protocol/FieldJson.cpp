@@ -204,7 +204,7 @@ struct ReplyFieldVisitor {
     QJsonObject operator()(const SingleTurnAngle &a) const { return angleFields(a.raw, {}); }
     QJsonObject operator()(const State1 &s) const
     {
-        // Every flag the drive's generation names, true or false (V2.35.md section 5).
+        // Every flag the drive's generation names, true or false (docs/V2.35.md section 5).
         QJsonObject o{{QStringLiteral("temperature_c"), integer(s.temperatureC)},
                       {QStringLiteral("error_state"), integer(s.errorState)}};
         for (const ErrorFlag &f : ErrorFlags::of(s.generation))

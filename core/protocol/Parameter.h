@@ -21,7 +21,7 @@ enum class ParamId : quint8 {
     SpeedRamp = 0x9E,
 };
 
-/// How a parameter's six value bytes are laid out (V2.35.md section 6).
+/// How a parameter's six value bytes are laid out (docs/V2.35.md section 6).
 enum class ParamLayout {
     Pid,      ///< Kp, Ki, Kd as 3 x uint16
     Int16,    ///< D1-D2
@@ -79,13 +79,13 @@ private:
 /// The int64 max angle (0.01 deg) from its two halves.
 qint64 joinMaxAngle(const ParameterValue &low, const ParameterValue &high);
 
-/// 0x40 request: which parameter to read (data `[ParamID, 0x00]`, V2.35.md; one public driver
+/// 0x40 request: which parameter to read (data `[ParamID, 0x00]`, docs/V2.35.md; one public driver
 /// sends them reversed).
 struct ParamRead {
     quint8 paramId = 0;
 };
 
-/// 0x42/0x44 reply: `[ParamID, flag]`, flag 0 = success, 1 = failure (V2.35.md section 8).
+/// 0x42/0x44 reply: `[ParamID, flag]`, flag 0 = success, 1 = failure (docs/V2.35.md section 8).
 struct ParamWriteResult {
     quint8 paramId = 0;
     quint8 flag = 0;

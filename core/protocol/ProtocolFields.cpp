@@ -73,7 +73,7 @@ const QList<ProtocolField> &table()
         out("fields"),
         out("error"),
         out("bytes"),
-        // read_state1 (V2.35.md section 5).
+        // read_state1 (docs/V2.35.md section 5).
         out("temperature_c", "C").shown("temperature", "C"),
         real("voltage_v", "V").shown("voltage", "V", 1, false),
         out("voltage_raw"),
@@ -96,7 +96,8 @@ const QList<ProtocolField> &table()
         number(FieldId::TorqueIqA, "iq_a", true, "A", 32, 2000, -2000, 2000, "-32..32 A")
             .shown("torque current", "A", 3),
         out("iq_raw"),
-        // V2.3 allows +-1000, V2.35 +-850: the stricter bound serves both (V2.35.md section 11).
+        // V2.3 allows +-1000, V2.35 +-850: the stricter bound serves both (docs/V2.35.md section
+        // 11).
         integer(FieldId::Power, "power", -850, 850, "-850..850").shown("power", "(of 1000)"),
         number(FieldId::SpeedDps, "speed_dps", true, "dps", 1, 100, kInt32Min, kInt32Max,
                "-21474836.48..21474836.47 dps")
@@ -149,7 +150,7 @@ const QList<ProtocolField> &table()
         // int32 on the wire (ERRATA); a negative acceleration has no meaning.
         integer(FieldId::AccelDps2, "accel_dps2", 0, kInt32Max, "0..2147483647 dps/s", "dps/s")
             .shown("acceleration", "dps/s"),
-        // V2.35 parameters (V2.35.md section 6); max_torque is in iq command units.
+        // V2.35 parameters (docs/V2.35.md section 6); max_torque is in iq command units.
         number(FieldId::MaxTorque, "max_torque", false, "", 1, 1, 0, 2048, "0..2048")
             .shown("max torque current", "(of 2048)"),
         number(FieldId::MaxAngleDeg, "max_angle_deg", true, "deg", 1, 100, 0, kMultiTurnLimitRaw,

@@ -5,7 +5,7 @@
 namespace lk::protocol::build {
 
 // Typed request builders. Each validates every argument against its wire range in the field
-// table (ProtocolFields.h: the spec and ERRATA.md, the stricter bound where V2.3 and V2.35
+// table (ProtocolFields.h: the spec and docs/ERRATA.md, the stricter bound where V2.3 and V2.35
 // differ) and returns a FieldError naming the field and its range instead of clamping.
 // Physical arguments (A, dps, deg) are rounded to the nearest wire unit; NaN and infinities
 // are refused. Field names follow CLI.md.
@@ -32,7 +32,7 @@ BuildResult singlePosition(int id, SpinDirection dir, double angleDeg, double ma
 BuildResult incrementPosition(int id, double deltaDeg); ///< int32 of 0.01 deg
 BuildResult incrementPosition(int id, double deltaDeg, double maxSpeedDps);
 
-// V2.35 only (V2.35.md sections 4.2 and 6).
+// V2.35 only (docs/V2.35.md sections 4.2 and 6).
 BuildResult readParam(int id, ParamId param);
 /// PID loop parameter (angle_pid, speed_pid, iq_pid): Kp, Ki, Kd each 0..65535.
 BuildResult writeParamPid(int id, ParamId param, qint64 kp, qint64 ki, qint64 kd, bool rom);

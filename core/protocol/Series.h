@@ -12,7 +12,7 @@ enum class Series { MS, MF, MG, MH };
 /// Protocol generation: V2.3 is the mission; V2.35 is told apart by its 58-byte 0x12 reply.
 enum class Generation { V2_3, V2_35 };
 
-/// How to read replies whose layout depends on the drive (ERRATA.md).
+/// How to read replies whose layout depends on the drive (docs/ERRATA.md).
 struct DecodeContext {
     Series series = Series::MF;
     Generation generation = Generation::V2_3;

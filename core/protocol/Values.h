@@ -12,7 +12,7 @@
 namespace lk::protocol {
 
 // Plain values carried by requests and replies, in wire units, with physical-unit accessors.
-// Scales from ERRATA.md "Units and ranges (V2.3)".
+// Scales from docs/ERRATA.md "Units and ranges (V2.3)".
 
 constexpr double kIqReplyAmpsPerLsb = 33.0 / 2048.0;   ///< iq in replies (V2.3; V2.35 MG/MH)
 constexpr double kIqMfV235AmpsPerLsb = 33.0 / 4096.0;  ///< iq of an MF drive on V2.35
@@ -87,7 +87,7 @@ struct SingleTurnAngle {
 };
 
 /// Temperature, voltage and error flags (0x9A and 0x9B replies). The layout depends on the
-/// generation (V2.35.md section 5): V2.3 `temp, 0, u16 voltage 0.1 V, 0, 0, err`; V2.35
+/// generation (docs/V2.35.md section 5): V2.3 `temp, 0, u16 voltage 0.1 V, 0, 0, err`; V2.35
 /// `temp, i16 voltage 0.01 V, i16 bus current 0.01 A, motorState, err`.
 struct State1 {
     State1() = default;

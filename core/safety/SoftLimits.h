@@ -12,7 +12,7 @@ namespace lk::safety {
 /// The user's own limits for one drive, checked before any command that can move it.
 ///
 /// Angles and speeds are rotor values, as on the wire. Torque and open-loop power are not
-/// limited by the drive itself (ERRATA.md), so their defaults are deliberately low. The speed
+/// limited by the drive itself (docs/ERRATA.md), so their defaults are deliberately low. The speed
 /// limit always exists: it bounds speed commands and is the max speed of every position move
 /// that names none. Positions are unbounded until the user sets a range (each move is still
 /// held to one output turn by MotionPlanner).

@@ -106,7 +106,7 @@ bool FaultInjector::applyFirmwareChecksumBug(QByteArray &reply)
 {
     if (reply.size() <= protocol::kHeaderSize || !fires(Fault::FirmwareChecksum))
         return false;
-    // The captured bad frames were off by +3 or -3 from the right sum (V2.35.md section 12).
+    // The captured bad frames were off by +3 or -3 from the right sum (docs/V2.35.md section 12).
     const int offset = m_rng.bounded(2) ? 3 : -3;
     reply[reply.size() - 1] = static_cast<char>(static_cast<quint8>(reply.back()) + offset);
     return true;

@@ -18,7 +18,7 @@ enum class Fault {
     Garbage,      ///< 1..8 noise bytes (never 0x3E) before the reply
     ExtraDelay,   ///< the reply comes extraDelaySeconds() late
     SilencedId,   ///< counted when a request to a silenced ID is swallowed
-    /// Firmware 2.35's bug (V2.35.md section 12): a 0xA4 reply whose data checksum is off by
+    /// Firmware 2.35's bug (docs/V2.35.md section 12): a 0xA4 reply whose data checksum is off by
     /// 3 while the header is good. SimBus applies it to V2.35 drives' 0xA4 replies only.
     FirmwareChecksum,
 };

@@ -138,7 +138,7 @@ void SimDrive::writeRom()
 
 void SimDrive::applyParams()
 {
-    // V2.35 keeps gains and the speed ramp in the parameter table (V2.35.md section 6).
+    // V2.35 keeps gains and the speed ramp in the parameter table (docs/V2.35.md section 6).
     m_ramPid = m_ramParams.physicsGains();
     m_ramAccel = m_ramParams.speedRampDps2;
     m_physics.setGains(m_ramPid);
@@ -322,7 +322,7 @@ double SimDrive::maxSpeedFor(const std::optional<quint32> &maxSpeedRaw) const
     double driveMax = m_limits.maxSpeedDps();
     if (generation() == protocol::Generation::V2_35) // bounded by the stored Max Speed too
         driveMax = std::min(driveMax, m_ramParams.maxSpeedRaw * protocol::kCentiUnits);
-    // A max speed of 0 still moves: the drive then uses its stored maximum (V2.35.md s.12).
+    // A max speed of 0 still moves: the drive then uses its stored maximum (docs/V2.35.md s.12).
     if (!maxSpeedRaw || *maxSpeedRaw == 0)
         return driveMax;
     return std::min(driveMax, *maxSpeedRaw * protocol::kCentiUnits);

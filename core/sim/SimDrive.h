@@ -13,8 +13,8 @@
 namespace lk::sim {
 
 /// One simulated LK drive: parameters in RAM and ROM, motion state, error flags and the
-/// physics behind them. Answers typed requests the way the spec and ERRATA.md say a V2.3
-/// drive does, or, with a firmware-2.35 model, the way V2.35.md says (silent to the commands
+/// physics behind them. Answers typed requests the way the spec and docs/ERRATA.md say a V2.3
+/// drive does, or, with a firmware-2.35 model, the way docs/V2.35.md says (silent to the commands
 /// its generation lacks). Plain value logic: not thread-safe, owned by one thread.
 class SimDrive {
 public:

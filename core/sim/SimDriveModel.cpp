@@ -17,7 +17,7 @@ QString driverNameFor(const QString &motorName)
 motor::ModelNameInfo SimDriveModel::nameInfo() const
 {
     motor::ModelNameInfo info = motor::ModelNameInfo::parse(motorName);
-    // A real MS4015 on firmware 2.35 reports encoder values up to 43388 (V2.35.md section 12):
+    // A real MS4015 on firmware 2.35 reports encoder values up to 43388 (docs/V2.35.md section 12):
     // its wire range is 16 bits, not the series default.
     if (!info.encoderBitsFromName)
         info.encoderBits =

@@ -17,7 +17,7 @@ struct SimDriveModel {
     QString motorName;        ///< e.g. "MF4015"; gear ratio and encoder bits are read from it
     quint16 hardwareRaw = 10; ///< shown /10: 1.0 (V2.35: /100, 300 = 3.00)
     quint16 firmwareRaw = 23; ///< shown /10: 2.3 (V2.35: /100, 235 = 2.35)
-    /// V2.3 (default) or V2.35: firmware 2.35 and later speak V2.35.md's protocol.
+    /// V2.3 (default) or V2.35: firmware 2.35 and later speak docs/V2.35.md's protocol.
     protocol::Generation generation = protocol::Generation::V2_3;
     quint16 motorVersionRaw = 0; ///< V2.35 only
     /// Switch to firmware 2.35 (hw 3.00, motor 2.00, fw 2.35, as the captured MS4015 reports).

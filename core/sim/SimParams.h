@@ -11,7 +11,7 @@
 
 namespace lk::sim {
 
-/// The V2.35 setting parameters (ParamIDs 0x96..0x9E, V2.35.md section 6) of one simulated
+/// The V2.35 setting parameters (ParamIDs 0x96..0x9E, docs/V2.35.md section 6) of one simulated
 /// drive: one copy lives in RAM, one in ROM.
 struct SimParams {
     using Pid = std::array<quint16, 3>; ///< Kp, Ki, Kd

@@ -61,7 +61,7 @@ void tst_BusTiming::wireTime()
 
 void tst_BusTiming::workedExample()
 {
-    // ARCHITECTURE.md: Read State 2, 5 + 13 bytes at 115200 = 1.5625 ms on the wire; with
+    // docs/ARCHITECTURE.md: Read State 2, 5 + 13 bytes at 115200 = 1.5625 ms on the wire; with
     // 0.5 ms turnaround at most ~485 transactions/s.
     QCOMPARE(BusTiming::requestBytes(Command::ReadState2), 5);
     QCOMPARE(BusTiming::replyBytes(Command::ReadState2), 13);

@@ -13,7 +13,7 @@ namespace lk::test {
 /// Helpers shared by the protocol tests: hex vectors and a parser event collector.
 
 /// "3E 80 01 00 BF" -> bytes. Vectors in the tests are written by hand from the spec and
-/// ERRATA.md (checked with an independent script), never produced by the code under test.
+/// docs/ERRATA.md (checked with an independent script), never produced by the code under test.
 inline QByteArray hex(const char *text)
 {
     return QByteArray::fromHex(QByteArray(text));
@@ -67,7 +67,7 @@ inline QString describe(const protocol::ParseEvent &ev)
     return kind + QLatin1Char(' ') + spaced(ev.bytes);
 }
 
-/// The data lengths of one command, by hand from CLI.md and ERRATA.md (not from the table
+/// The data lengths of one command, by hand from CLI.md and docs/ERRATA.md (not from the table
 /// under test): the request LEN and every LEN a reply may carry (echoes included).
 struct CommandLengths {
     const char *name;

@@ -7,7 +7,7 @@ using lk::protocol::Command;
 using lk::protocol::CommandInfo;
 using lk::protocol::CommandTable;
 
-/// The command table against CLI.md (names, codes) and ERRATA.md (lengths, flags).
+/// The command table against CLI.md (names, codes) and docs/ERRATA.md (lengths, flags).
 class tst_CommandTable : public QObject {
     Q_OBJECT
 
@@ -25,8 +25,8 @@ private slots:
 };
 
 namespace {
-// The V2.3 command set as written in CLI.md, ERRATA.md and the vendor spec, by hand, and the
-// five commands V2.35 added (V2.35.md section 4).
+// The V2.3 command set as written in CLI.md, docs/ERRATA.md and the vendor spec, by hand, and the
+// five commands V2.35 added (docs/V2.35.md section 4).
 // Columns: code, name, request LEN, reply LEN, alt reply LEN, echo, moves motor, writes flash.
 struct Expected {
     int code;

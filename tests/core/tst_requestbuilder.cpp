@@ -19,7 +19,7 @@ namespace build = lk::protocol::build;
 using BuildFn = std::function<BuildResult()>;
 Q_DECLARE_METATYPE(BuildFn)
 
-/// Request builders: wire vectors for every command (by hand from the spec and ERRATA.md),
+/// Request builders: wire vectors for every command (by hand from the spec and docs/ERRATA.md),
 /// range edges accepted, just-outside values refused with the right field name.
 class tst_RequestBuilder : public QObject {
     Q_OBJECT

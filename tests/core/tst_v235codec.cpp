@@ -1,4 +1,4 @@
-// Firmware 2.35 (protocol V2.35) codec: the example frames of V2.35.md section 13 and the
+// Firmware 2.35 (protocol V2.35) codec: the example frames of docs/V2.35.md section 13 and the
 // real captures of section 7 and 12, both directions, and what the same bytes mean to a V2.3
 // decoder (the cross-decoding that made a 24 V supply read 308 V).
 #include "ProtocolTestUtil.h"
@@ -139,7 +139,7 @@ void tst_V235Codec::requestsEncode()
 
 void tst_V235Codec::state1V235()
 {
-    // 30 C, 24.00 V, -0.20 A, motor off, low voltage (V2.35.md section 13).
+    // 30 C, 24.00 V, -0.20 A, motor off, low voltage (docs/V2.35.md section 13).
     const Reply r = replyOf("3E 9A 01 07 E0 1E 60 09 EC FF 10 01 83", kV235Ms);
     const auto &s = std::get<State1>(r.payload);
     QCOMPARE(int(s.temperatureC), 30);
@@ -160,8 +160,8 @@ void tst_V235Codec::state1V235()
 
 void tst_V235Codec::state1CrossDecodesWrongly()
 {
-    // 24.00 V, 1.50 A, on (V2.35.md section 5). Read as V2.3, D2-D3 = 09 96 is 3840.9 V
-    // (V2.35.md says 384.0 V: its own arithmetic slips; the bytes say 0x9609 x 0.1 V). The
+    // 24.00 V, 1.50 A, on (docs/V2.35.md section 5). Read as V2.3, D2-D3 = 09 96 is 3840.9 V
+    // (docs/V2.35.md says 384.0 V: its own arithmetic slips; the bytes say 0x9609 x 0.1 V). The
     // generation must come from the drive, never from a default.
     const char *frame = "3E 9A 01 07 E0 1E 60 09 96 00 00 00 1D";
     QCOMPARE(std::get<State1>(replyOf(frame, kV235Mf).payload).voltageV(), 24.0);

@@ -177,7 +177,7 @@ void tst_E2eV235::writeParamRamReadsBack()
     QCOMPARE(o.value("holds").toObject(), o.value("written").toObject());
     r = ctl({"write", "1", "param", "max_speed_dps", "360", "--ram", "--json"});
     QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
-    // The frame of V2.35.md section 13, then the read-back.
+    // The frame of docs/V2.35.md section 13, then the read-back.
     const QList<QByteArray> frames = m_sim->receivedFrames();
     QCOMPARE(countFrames(frames, "3E 42 01 07 88 9A A0 8C 00 00 00 00 C6"), qsizetype(1));
     r = ctl({"read", "1", "params", "--json"});

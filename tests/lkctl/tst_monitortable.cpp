@@ -103,7 +103,7 @@ private slots:
     void v235State1CarriesBusCurrentAndMotorState();
 };
 
-// A firmware 2.35 drive's read_state1 also brings bus current and the motor state (V2.35.md
+// A firmware 2.35 drive's read_state1 also brings bus current and the motor state (docs/V2.35.md
 // section 5): its columns follow the voltage's; a V2.3 drive on the same bus has none.
 void tst_MonitorTable::v235State1CarriesBusCurrentAndMotorState()
 {

@@ -11,7 +11,7 @@ using lk::protocol::Series;
 Q_DECLARE_METATYPE(Series)
 Q_DECLARE_METATYPE(Command)
 
-/// Series capabilities against the series table in ERRATA.md.
+/// Series capabilities against the series table in docs/ERRATA.md.
 class tst_SeriesLimits : public QObject {
     Q_OBJECT
 private slots:

@@ -380,7 +380,7 @@ void tst_SimBus::probabilisticFaultsAreSeeded()
 
 void tst_SimBus::firmwareChecksumBugOnlyOnV235A4()
 {
-    // fw 2.35 spoils some 0xA4 data checksums by +-3 with a good header (V2.35.md section 12);
+    // fw 2.35 spoils some 0xA4 data checksums by +-3 with a good header (docs/V2.35.md section 12);
     // a V2.3 drive, and other commands of the V2.35 drive, are not touched.
     auto run = [](quint32 seed) {
         auto bus = makeBus("1:MS4015@2.35,2:MF");
@@ -456,7 +456,7 @@ void tst_SimBus::addDriveRefusesBadIds()
 
 void tst_SimBus::wireSeconds()
 {
-    // ARCHITECTURE.md: Read State 2 (5 + 13 bytes) at 115200 baud is 1.5625 ms.
+    // docs/ARCHITECTURE.md: Read State 2 (5 + 13 bytes) at 115200 baud is 1.5625 ms.
     QCOMPARE(SimBus::wireSeconds(18, 115200), 18 * 10.0 / 115200);
     QVERIFY(std::abs(SimBus::wireSeconds(18, 115200) - 0.0015625) < 1e-9);
     QCOMPARE(SimBus::wireSeconds(10, 0), 0.0);

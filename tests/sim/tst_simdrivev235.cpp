@@ -1,4 +1,4 @@
-// A simulated drive on firmware 2.35 (V2.35.md): what it answers, what it ignores, its
+// A simulated drive on firmware 2.35 (docs/V2.35.md): what it answers, what it ignores, its
 // parameter table in RAM and ROM, brake, turn count, and the layouts of its replies.
 #include "SimDriveTestUtil.h"
 

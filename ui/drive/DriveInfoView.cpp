@@ -36,7 +36,7 @@ QString protocolText(const protocol::ModelInfo &m)
                                                       : QStringLiteral("V2.35");
 }
 
-/// The 12-byte motor ID is binary (V2.35.md section 7): hex, as the vendor tool shows it.
+/// The 12-byte motor ID is binary (docs/V2.35.md section 7): hex, as the vendor tool shows it.
 QString uniqueIdText(const protocol::ModelInfo &m)
 {
     return QString::fromLatin1(m.motorId.toHex(' ').toUpper());

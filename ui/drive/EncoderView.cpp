@@ -430,7 +430,7 @@ void EncoderView::refreshReadouts()
 void EncoderView::refreshEnabled()
 {
     const bool can = canSend() && !m_busy;
-    // V2.35 has no 0x91 (V2.35.md): its drives would not answer, so it is not offered.
+    // V2.35 has no 0x91 (docs/V2.35.md): its drives would not answer, so it is not offered.
     const QString noOffset = absenceOf(Command::WriteEncoderOffset);
     m_writeOffset->setEnabled(can && noOffset.isEmpty());
     m_offsetNote->setText(noOffset.isEmpty()
@@ -660,7 +660,7 @@ void EncoderView::clearTurnCount()
         setStatus(absent, true);
         return;
     }
-    // V2.35.md names 0x93 only: neither RAM nor ROM, nor whether the motor must be off, is
+    // docs/V2.35.md names 0x93 only: neither RAM nor ROM, nor whether the motor must be off, is
     // documented, so the confirmation says so rather than guess.
     if (!confirm(QStringLiteral("clear_turn_count"), tr("Clear turn count"),
                  tr("Set the turn count of drive %1 to 0?").arg(driveId()),

@@ -1,4 +1,4 @@
-// Achieved poll rate as a fraction of the bus limit (ARCHITECTURE.md "Timing model"), with
+// Achieved poll rate as a fraction of the bus limit (docs/ARCHITECTURE.md "Timing model"), with
 // lksim serving 3 drives on a pseudo-terminal and the engine talking to it through
 // SerialTransport (a real QSerialPort) and BusSession. lksim emulates the wire time at the
 // baud and answers after 500 us, the formula's turnaround, so the simulated transaction takes

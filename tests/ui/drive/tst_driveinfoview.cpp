@@ -57,7 +57,7 @@ void tst_DriveInfoView::showsModelAndCopies()
 }
 
 // A V2.35 drive (58-byte 0x12): versions /100, the motor version and the binary unique ID
-// as hex (V2.35.md section 7; the simulator answers hw 300, motor 200, fw 235).
+// as hex (docs/V2.35.md section 7; the simulator answers hw 300, motor 200, fw 235).
 void tst_DriveInfoView::showsV235Identity()
 {
     SimRig rig(QStringLiteral("1:MS4015@2.35"));

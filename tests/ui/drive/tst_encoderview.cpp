@@ -493,7 +493,7 @@ void tst_EncoderView::v23DriveHasNoClearTurnCount()
     QCOMPARE(rig.count(1, Command::ClearTurnCount), 0);
 }
 
-// V2.35 drives do not answer 0x91 (V2.35.md): the offset is not offered, says why, and a
+// V2.35 drives do not answer 0x91 (docs/V2.35.md): the offset is not offered, says why, and a
 // write sends nothing (it used to go out and time out, the message blaming the wiring).
 void tst_EncoderView::v235DriveHasNoEncoderOffset()
 {

@@ -176,7 +176,7 @@ void tst_Dashboard::errorFlagsAndClearButton()
     QVERIFY(!button->isEnabled()); // nothing that sends while the link is down
 }
 
-// V2.35 names all eight bits (V2.35.md section 5): 0x50 is over-current and stall, where the
+// V2.35 names all eight bits (docs/V2.35.md section 5): 0x50 is over-current and stall, where the
 // V2.3 names would say nothing but "Error bit 4, Error bit 6".
 void tst_Dashboard::errorFlagsFollowTheGeneration()
 {
@@ -199,7 +199,7 @@ void tst_Dashboard::errorFlagsFollowTheGeneration()
     QCOMPARE(lk::ui::Format::errorFlagsText(0x01, std::nullopt), QStringLiteral("Error bit 0"));
 }
 
-// Firmware 2.35 reports bus current and the motor state in 0x9A (V2.35.md section 5); the
+// Firmware 2.35 reports bus current and the motor state in 0x9A (docs/V2.35.md section 5); the
 // dashboard shows them for such a drive, with the voltage at its 0.01 V resolution, and hides
 // them for a V2.3 drive, whose reply has neither (never a made-up 0 A).
 void tst_Dashboard::v235BusCurrentAndMotorState()
