@@ -1,20 +1,33 @@
-// Emergency stop latency: four drives turning at 360 dps on lksim (pseudo-terminal, wire-time
-// emulation, 500 us turnaround), known from a scan, through SerialTransport and BusSession.
+// Emergency stop latency: four drives at IDs 1, 9, 20 and 31 turning at 360 dps on lksim
+// (pseudo-terminal, wire-time emulation, 500 us turnaround), through SerialTransport and
+// BusSession, as lkctl or lkstudio would stop them (no IDs given: the bus decides the order).
 // Each trial starts the four motors, then times BusSession::emergencyStop() to the first and
 // to the last of the four drives' motor_off acknowledgements, and to the end of the stop
-// (every ID 1..32 answered or timed out). 20 trials at 115200 and at 1000000 baud.
+// (every ID 1..32 answered or timed out). 20 trials per scenario and baud (115200, 1000000):
 //
-// Prints one JSON line, per baud B:
-//   estop_first_ms_median_B, estop_first_ms_max_B   stop() to the first drive's acknowledge
-//   estop_last_ms_median_B,  estop_last_ms_max_B    stop() to the last of the four drives'
-//   estop_done_ms_median_B                          stop() to emergencyStopFinished
-//   estop_ids_sent_B                                motor_off requests sent per stop (min)
-//   estop_drives_missed_B                           drive acknowledgements missing, all trials
+//   clean  the drives are known from a scan; nothing else happens on the bus
+//   scan   the stop comes during a re-scan (which forgot the drives it had found), at a
+//          point that moves through the scan from trial to trial
+//   drops  lksim drops 10 % of the replies and sends 1 % late (20 ms), drives known
+//
+// The four drives are polled as lkstudio's dashboard polls them (as fast as the bus allows)
+// from the first scan on, so that late replies and timeouts happen just before a stop.
+//
+// Prints one JSON line; per scenario S and baud B:
+//   estop_S_first_ms_median_B, estop_S_first_ms_max_B   stop() to the first drive's acknowledge
+//   estop_S_last_ms_median_B,  estop_S_last_ms_max_B    stop() to the last of the four drives'
+//   estop_S_done_ms_median_B                            stop() to emergencyStopFinished
+//   estop_S_ids_sent_B                                  IDs that got a motor_off per stop (min)
+//   estop_S_drives_missed_B                             drives never acknowledged, all trials
+//   estop_S_last_ratio_B                                last-drive median over the clean one's
+//
+// Run: build/tests/bench/bus/bench_estop
 
 #include "BenchUtil.h"
 #include "LksimProcess.h"
 
 #include <bus/BusSession.h>
+#include <bus/PollPlan.h>
 #include <protocol/RequestBuilder.h>
 #include <transport/SerialTransport.h>
 
@@ -30,7 +43,9 @@ using namespace lk::bus;
 namespace {
 
 constexpr int kTrials = 20;
-const QVector<int> kDrives{1, 2, 3, 4};
+const QVector<int> kDrives{1, 9, 20, 31};
+
+enum class Scenario { Clean, ScanRace, Drops };
 
 struct StopFigures {
     std::vector<double> firstMs, lastMs, doneMs;
@@ -43,35 +58,60 @@ struct StopFigures {
 bool spin(BusSession &session)
 {
     QSet<quint64> tickets;
-    int acknowledged = 0;
+    QSet<int> acknowledged;
     auto c = QObject::connect(&session, &BusSession::requestCompleted, [&](const RequestResult &r) {
         if (tickets.contains(r.ticket) && r.ok())
-            ++acknowledged;
+            acknowledged.insert(r.request.id);
     });
     for (int id : kDrives)
         tickets.insert(session.send(*protocol::build::speed(id, 360).request));
-    const bool ok = bench::waitUntil([&] { return acknowledged == kDrives.size(); }, 10000);
+    bool ok = bench::waitUntil([&] { return acknowledged.size() == kDrives.size(); }, 10000);
+    // A lost acknowledgement (drops) does not mean the drive did not start: ask again once.
+    for (int id : kDrives)
+        if (!acknowledged.contains(id))
+            tickets.insert(session.send(*protocol::build::speed(id, 360).request));
+    ok = bench::waitUntil([&] { return acknowledged.size() == kDrives.size(); }, 10000);
     QObject::disconnect(c);
     bench::spin(50); // turning
     return ok;
 }
 
-/// One stop: fills first/last/done times; false when it did not finish.
-bool timeOneStop(BusSession &session, StopFigures &f)
+bool scanOnce(BusSession &session)
 {
+    bool scanned = false;
+    auto c = QObject::connect(&session, &BusSession::scanFinished,
+                              [&scanned](const ScanSummary &) { scanned = true; });
+    session.scan();
+    const bool ok = bench::waitUntil([&] { return scanned; }, 60000);
+    QObject::disconnect(c);
+    return ok;
+}
+
+/// One stop: fills first/last/done times; false when it did not finish. `delayMs` >= 0
+/// starts a re-scan that long before the stop.
+bool timeOneStop(BusSession &session, StopFigures &f, double delayMs)
+{
+    if (delayMs >= 0) {
+        session.scan();
+        QElapsedTimer wait;
+        wait.start();
+        while (wait.nsecsElapsed() < qint64(delayMs * 1e6))
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
+    }
     QElapsedTimer clock;
     quint64 ticket = 0;
-    QVector<double> ackMs;
-    int sent = 0;
+    QMap<int, double> ackMs;
+    QSet<int> sent;
     bool done = false;
     double doneMs = 0;
     auto c1 =
         QObject::connect(&session, &BusSession::requestCompleted, [&](const RequestResult &r) {
             if (r.ticket != ticket)
                 return;
-            sent += r.attempts > 0 ? 1 : 0;
-            if (r.ok() && kDrives.contains(r.request.id))
-                ackMs.append(clock.nsecsElapsed() * 1e-6);
+            if (r.attempts > 0)
+                sent.insert(r.request.id);
+            if (r.ok() && kDrives.contains(r.request.id) && !ackMs.contains(r.request.id))
+                ackMs.insert(r.request.id, clock.nsecsElapsed() * 1e-6);
         });
     auto c2 = QObject::connect(&session, &BusSession::emergencyStopFinished,
                                [&](quint64 t, const QVector<int> &, const QVector<int> &) {
@@ -89,20 +129,38 @@ bool timeOneStop(BusSession &session, StopFigures &f)
         return false;
     f.missed += int(kDrives.size() - ackMs.size());
     if (!ackMs.isEmpty()) {
-        f.firstMs.push_back(*std::min_element(ackMs.cbegin(), ackMs.cend()));
-        f.lastMs.push_back(*std::max_element(ackMs.cbegin(), ackMs.cend()));
+        const QList<double> times = ackMs.values();
+        f.firstMs.push_back(*std::min_element(times.cbegin(), times.cend()));
+        f.lastMs.push_back(*std::max_element(times.cbegin(), times.cend()));
     }
     f.doneMs.push_back(doneMs);
-    f.idsSent = std::min(f.idsSent, sent);
+    f.idsSent = std::min(f.idsSent, int(sent.size()));
     return true;
 }
 
-StopFigures stops(int baud)
+QStringList lksimArgs(int baud, Scenario scenario)
+{
+    QStringList args{"--motors",         "1:MF,9:MG,20:MF,31:MG", "--wire-time", "--baud",
+                     QString::number(baud), "--reply-delay-us",     "500"};
+    if (scenario == Scenario::Drops)
+        args << "--faults" << "drop=0.1,delay=0.01,delay_ms=20,seed=7";
+    return args;
+}
+
+/// How long a scan of 1..32 takes here, for spreading the stops through it.
+double scanMs(BusSession &session)
+{
+    QElapsedTimer t;
+    t.start();
+    scanOnce(session);
+    return t.nsecsElapsed() * 1e-6;
+}
+
+StopFigures stops(int baud, Scenario scenario)
 {
     StopFigures f;
     e2e::LksimProcess sim(QStringLiteral(LKSIM_PATH));
-    if (!sim.start({"--motors", "1:MF,2:MG,3:MF,4:MG", "--wire-time", "--baud",
-                    QString::number(baud), "--reply-delay-us", "500"})) {
+    if (!sim.start(lksimArgs(baud, scenario))) {
         std::fprintf(stderr, "bench_estop: %s\n", qPrintable(sim.errorString()));
         f.ok = false;
         return f;
@@ -116,15 +174,18 @@ StopFigures stops(int baud)
         f.ok = false;
         return f;
     }
-    // lkstudio scans first: the drives are known, so their offs go first.
-    bool scanned = false;
-    auto c = QObject::connect(&session, &BusSession::scanFinished,
-                              [&scanned](const ScanSummary &) { scanned = true; });
-    session.scan();
-    bench::waitUntil([&] { return scanned; }, 60000);
-    QObject::disconnect(c);
-    for (int i = 0; i < kTrials && f.ok; ++i)
-        f.ok = spin(session) && timeOneStop(session, f);
+    // lkstudio scans first: the drives are known, and the dashboard polls them.
+    const double scanDuration = scanMs(session);
+    session.startPolling(PollPlan::standard(kDrives));
+    for (int i = 0; i < kTrials && f.ok; ++i) {
+        // The stop lands at a point moving through the first 90 % of the re-scan.
+        const double delay =
+            scenario == Scenario::ScanRace ? scanDuration * 0.9 * (i + 0.5) / kTrials : -1;
+        f.ok = spin(session) && timeOneStop(session, f, delay);
+        if (f.ok && scenario == Scenario::ScanRace)
+            f.ok = scanOnce(session); // the stop cancelled it: learn the drives again
+        bench::spin(200); // polling again, late replies included
+    }
     session.close();
     return f;
 }
@@ -138,22 +199,34 @@ double maxOf(const std::vector<double> &v)
 
 int main(int argc, char *argv[])
 {
+    qputenv("QT_LOGGING_RULES", "lk.bus.info=false"); // one line per stop otherwise
     QCoreApplication app(argc, argv);
     bench::JsonLine json;
+    const QList<QPair<Scenario, QString>> scenarios{
+        {Scenario::Clean, "clean"}, {Scenario::ScanRace, "scan"}, {Scenario::Drops, "drops"}};
     for (int baud : {115200, 1000000}) {
-        const StopFigures f = stops(baud);
-        if (!f.ok) {
-            std::fprintf(stderr, "bench_estop: the stops at %d baud did not run\n", baud);
-            return 1;
-        }
         const QString b = QString::number(baud);
-        json.add(QStringLiteral("estop_first_ms_median_") + b, bench::median(f.firstMs), 2);
-        json.add(QStringLiteral("estop_first_ms_max_") + b, maxOf(f.firstMs), 2);
-        json.add(QStringLiteral("estop_last_ms_median_") + b, bench::median(f.lastMs), 2);
-        json.add(QStringLiteral("estop_last_ms_max_") + b, maxOf(f.lastMs), 2);
-        json.add(QStringLiteral("estop_done_ms_median_") + b, bench::median(f.doneMs), 1);
-        json.addInt(QStringLiteral("estop_ids_sent_") + b, f.idsSent);
-        json.addInt(QStringLiteral("estop_drives_missed_") + b, f.missed);
+        double cleanLast = 0;
+        for (const auto &[scenario, name] : scenarios) {
+            const StopFigures f = stops(baud, scenario);
+            if (!f.ok) {
+                std::fprintf(stderr, "bench_estop: the %s stops at %d baud did not run\n",
+                             qPrintable(name), baud);
+                return 1;
+            }
+            const QString k = QStringLiteral("estop_") + name + QLatin1Char('_');
+            const double last = bench::median(f.lastMs);
+            if (scenario == Scenario::Clean)
+                cleanLast = last;
+            json.add(k + "first_ms_median_" + b, bench::median(f.firstMs), 2);
+            json.add(k + "first_ms_max_" + b, maxOf(f.firstMs), 2);
+            json.add(k + "last_ms_median_" + b, last, 2);
+            json.add(k + "last_ms_max_" + b, maxOf(f.lastMs), 2);
+            json.add(k + "done_ms_median_" + b, bench::median(f.doneMs), 1);
+            json.addInt(k + "ids_sent_" + b, f.idsSent);
+            json.addInt(k + "drives_missed_" + b, f.missed);
+            json.add(k + "last_ratio_" + b, cleanLast > 0 ? last / cleanLast : 0, 2);
+        }
     }
     json.print();
     return 0;
