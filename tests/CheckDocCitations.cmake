@@ -119,6 +119,7 @@ function(lk_check_file root file)
     string(REGEX MATCHALL
            "docs/[A-Za-z0-9_.-]+\\.md,?[ \n]+(sections?|s\\.)[ \n]*[0-9]+(\\.[0-9]+)?(([ \n]*,[ \n]*|[ \n]+and[ \n]+|[ \n]+or[ \n]+)[0-9]+(\\.[0-9]+)?)*"
            numbered "${joined}")
+    list(REMOVE_DUPLICATES numbered)
     foreach(citation IN LISTS numbered)
         string(REGEX REPLACE "^(docs/[A-Za-z0-9_.-]+\\.md).*" "\\1" path "${citation}")
         string(REGEX REPLACE "^docs/[A-Za-z0-9_.-]+\\.md,?[ \n]+(sections?|s\\.)[ \n]*" "" rest
@@ -144,6 +145,7 @@ function(lk_check_file root file)
 
     # Quoted section names: docs/NAME.md "Title", or NAME "Title" where docs/NAME.md exists.
     string(REGEX MATCHALL "(docs/)?[A-Za-z0-9_.-]+[ \n]\"[^\"\n]+\"" quoted "${joined}")
+    list(REMOVE_DUPLICATES quoted)
     foreach(citation IN LISTS quoted)
         string(REGEX REPLACE "^((docs/)?[A-Za-z0-9_.-]+)[ \n]\"([^\"]+)\"$" "\\1" name "${citation}")
         string(REGEX REPLACE "^((docs/)?[A-Za-z0-9_.-]+)[ \n]\"([^\"]+)\"$" "\\3" title "${citation}")
