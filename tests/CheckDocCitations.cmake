@@ -56,6 +56,16 @@ function(lk_doc_headings path out)
     set(${out} "${text}" PARENT_SCOPE)
 endfunction()
 
+# In lk_check_file: unless `target` exists, a problem "<file>:<line>: <what>, which does not
+# exist", at the first occurrence of `needle` in `content`.
+function(lk_doc_require target what needle)
+    if(NOT EXISTS "${target}")
+        lk_doc_where("${file}" "${content}" "${needle}" where)
+        list(APPEND problems "${where}: ${what}, which does not exist")
+        set(problems "${problems}" PARENT_SCOPE)
+    endif()
+endfunction()
+
 # Appends to `problems` (in the caller) every citation of `file` (relative to `root`) that
 # points at nothing.
 function(lk_check_file root file)
@@ -78,10 +88,7 @@ function(lk_check_file root file)
             if(target STREQUAL "" OR target MATCHES "^[a-zA-Z][a-zA-Z+.-]*:" OR target MATCHES "^/")
                 continue()
             endif()
-            if(NOT EXISTS "${dir}/${target}")
-                lk_doc_where("${file}" "${content}" "](${target}" where)
-                list(APPEND problems "${where}: link to ${target}, which does not exist")
-            endif()
+            lk_doc_require("${dir}/${target}" "link to ${target}" "](${target}")
         endforeach()
         # What remains is prose: its paths are repository-relative.
         string(REGEX REPLACE "@link[(][^)\n]*[)]" " " text "${text}")
@@ -104,12 +111,8 @@ function(lk_check_file root file)
         endif()
         list(APPEND seen "${path}")
         # A path inside an installed system (check-deb.sh: usr/share/doc/lkstudio/CLI.md).
-        if(path MATCHES "^(usr|etc|var|opt|lib|run|tmp|home)/")
-            continue()
-        endif()
-        if(NOT EXISTS "${root}/${path}")
-            lk_doc_where("${file}" "${content}" "${path}" where)
-            list(APPEND problems "${where}: cites ${path}, which does not exist")
+        if(NOT path MATCHES "^(usr|etc|var|opt|lib|run|tmp|home)/")
+            lk_doc_require("${root}/${path}" "cites ${path}" "${path}")
         endif()
     endforeach()
 
