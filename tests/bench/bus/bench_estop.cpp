@@ -181,7 +181,13 @@ StopFigures stops(int baud, Scenario scenario)
         // The stop lands at a point moving through the first 90 % of the re-scan.
         const double delay =
             scenario == Scenario::ScanRace ? scanDuration * 0.9 * (i + 0.5) / kTrials : -1;
-        f.ok = spin(session) && timeOneStop(session, f, delay);
+        if (!spin(session)) {
+            std::fprintf(stderr, "bench_estop: trial %d: the drives did not start\n", i);
+            f.ok = false;
+        } else if (!timeOneStop(session, f, delay)) {
+            std::fprintf(stderr, "bench_estop: trial %d: the stop did not finish\n", i);
+            f.ok = false;
+        }
         if (f.ok && scenario == Scenario::ScanRace)
             f.ok = scanOnce(session); // the stop cancelled it: learn the drives again
         bench::spin(200); // polling again, late replies included
