@@ -1,6 +1,9 @@
 #include "MotorRegistry.h"
 
 #include <protocol/Checksum.h>
+#include <protocol/Command.h>
+
+#include <QtCore/QCoreApplication>
 
 #include <algorithm>
 
@@ -33,6 +36,27 @@ protocol::DecodeContext MotorRegistry::decodeContext(int id) const
 StopTargets MotorRegistry::emergencyTargets(const QVector<int> &ids) const
 {
     return StopTargets::of(ids, m_motors.keys());
+}
+
+std::optional<QString> MotorRegistry::unavailableReason(const protocol::Request &request) const
+{
+    // Nothing a drive's generation lacks is sent to it (docs/V2.35.md section 3): it would stay
+    // silent and the timeout would blame the wiring.
+    const auto it = m_motors.constFind(request.id);
+    if (it == m_motors.cend() || !it->model ||
+        protocol::CommandTable::availableOn(request.command, it->generation))
+        return std::nullopt;
+    const char *text =
+        it->generation == protocol::Generation::V2_35
+            ? QT_TRANSLATE_NOOP("lk::bus::MotorRegistry",
+                                "drive %1 runs firmware 2.35 or later (protocol V2.35), which "
+                                "has no %2; nothing was sent")
+            : QT_TRANSLATE_NOOP("lk::bus::MotorRegistry",
+                                "drive %1 speaks protocol V2.3, which has no %2 (firmware 2.35 "
+                                "added it); nothing was sent");
+    return QCoreApplication::translate("lk::bus::MotorRegistry", text)
+        .arg(request.id)
+        .arg(protocol::CommandTable::name(request.command));
 }
 
 bool MotorRegistry::noteSeen(int id)

@@ -3,8 +3,10 @@
 #include "KnownMotor.h"
 #include "StopTargets.h"
 
+#include <protocol/Request.h>
 #include <protocol/Series.h>
 
+#include <QtCore/QString>
 #include <QtCore/QVector>
 
 #include <optional>
@@ -24,6 +26,9 @@ public:
     /// Who an emergency stop must reach: `ids` (the caller's known and recently commanded
     /// drives) and every known ID first, then every other ID of 1..32: always all 32.
     StopTargets emergencyTargets(const QVector<int> &ids) const;
+    /// Why `request` must not be sent: its drive's generation lacks the command (known once
+    /// the drive's model was read). nullopt: it may go.
+    std::optional<QString> unavailableReason(const protocol::Request &request) const;
 
     bool noteSeen(int id);
     bool setSeries(int id, protocol::Series series);

@@ -30,20 +30,8 @@
         <translation>总线已关闭</translation>
     </message>
     <message>
-        <source>No transport: the transport factory returned nothing.</source>
-        <translation>没有可用的传输通道：传输工厂未返回任何对象。</translation>
-    </message>
-    <message>
         <source>the port was reopened at another baud</source>
         <translation>串口已按其他波特率重新打开</translation>
-    </message>
-    <message>
-        <source>closed</source>
-        <translation>已关闭</translation>
-    </message>
-    <message>
-        <source>disconnected</source>
-        <translation>已断开</translation>
     </message>
     <message>
         <source>open</source>
@@ -52,20 +40,6 @@
     <message>
         <source>the bus is not open</source>
         <translation>总线未打开</translation>
-    </message>
-    <message numerus="yes">
-        <source>no reply to %1 after %n attempt(s)</source>
-        <translation>
-            <numerusform>%1 无回复（已尝试 %n 次）</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>corrupt reply to %1 (bad data checksum)</source>
-        <translation>%1 的回复已损坏（数据校验和错误）</translation>
-    </message>
-    <message>
-        <source>undecodable reply to %1</source>
-        <translation>%1 的回复无法解码</translation>
     </message>
     <message>
         <source>cancelled by emergency stop</source>
@@ -76,16 +50,19 @@
         <translation>扫描已取消</translation>
     </message>
     <message>
+        <source>setpoint stream stopped</source>
+        <translation>设定值流已停止</translation>
+    </message>
+</context>
+<context>
+    <name>lk::bus::MotorRegistry</name>
+    <message>
         <source>drive %1 runs firmware 2.35 or later (protocol V2.35), which has no %2; nothing was sent</source>
         <translation>驱动器 %1 运行 2.35 或更高版本固件（V2.35 协议），该协议没有 %2；未发送任何内容</translation>
     </message>
     <message>
         <source>drive %1 speaks protocol V2.3, which has no %2 (firmware 2.35 added it); nothing was sent</source>
         <translation>驱动器 %1 使用 V2.3 协议，该协议没有 %2（2.35 固件才加入）；未发送任何内容</translation>
-    </message>
-    <message>
-        <source>setpoint stream stopped</source>
-        <translation>设定值流已停止</translation>
     </message>
 </context>
 <context>
@@ -163,6 +140,38 @@
     <message>
         <source>%1 traffic events dropped (view too slow)</source>
         <translation>丢弃了 %1 条通信记录（视图刷新过慢）</translation>
+    </message>
+</context>
+<context>
+    <name>lk::bus::TransportLink</name>
+    <message>
+        <source>No transport: the transport factory returned nothing.</source>
+        <translation>没有可用的传输通道：传输工厂未返回任何对象。</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>已关闭</translation>
+    </message>
+    <message>
+        <source>disconnected</source>
+        <translation>已断开</translation>
+    </message>
+</context>
+<context>
+    <name>lk::bus::WireExchange</name>
+    <message numerus="yes">
+        <source>no reply to %1 after %n attempt(s)</source>
+        <translation>
+            <numerusform>%1 无回复（已尝试 %n 次）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>corrupt reply to %1 (bad data checksum)</source>
+        <translation>%1 的回复已损坏（数据校验和错误）</translation>
+    </message>
+    <message>
+        <source>undecodable reply to %1</source>
+        <translation>%1 的回复无法解码</translation>
     </message>
 </context>
 <context>
