@@ -1,5 +1,6 @@
 #include "MotorRegistry.h"
 
+#include <motor/ModelNameInfo.h>
 #include <protocol/Checksum.h>
 #include <protocol/Command.h>
 
@@ -89,9 +90,18 @@ bool MotorRegistry::learnModel(int id, const protocol::ModelInfo &model,
     m.id = id;
     m.model = model;
     m.generation = model.generation;
+    if (!series)
+        series = seriesOf(model); // a model read outside a scan tells it just as well
     if (series)
         m.series = series;
     return true;
+}
+
+std::optional<protocol::Series> MotorRegistry::seriesOf(const protocol::ModelInfo &model)
+{
+    if (const auto s = motor::ModelNameInfo::parse(model.motorName).series)
+        return s;
+    return motor::ModelNameInfo::parse(model.driverName).series;
 }
 
 bool MotorRegistry::forget(int firstId, int lastId)

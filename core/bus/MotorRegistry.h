@@ -32,9 +32,15 @@ public:
 
     bool noteSeen(int id);
     bool setSeries(int id, protocol::Series series);
+    /// The drive's model and generation; its series is `series`, or else what the model's
+    /// names tell (seriesOf()), wherever the model was read (a scan, lkctl info, a view).
     bool learnModel(int id, const protocol::ModelInfo &model,
                     std::optional<protocol::Series> series);
     bool forget(int firstId, int lastId);
+
+    /// The series a model's names tell: the motor's ("MS5005"), else the driver's; nullopt
+    /// when neither does.
+    static std::optional<protocol::Series> seriesOf(const protocol::ModelInfo &model);
 
 private:
     KnownMotors m_motors;

@@ -18,6 +18,7 @@ using protocol::Command;
 using protocol::Series;
 
 Q_DECLARE_METATYPE(protocol::Command)
+Q_DECLARE_METATYPE(protocol::Series)
 
 /// BusWorker on the test thread over a scripted FakeTransport, on a clock the test advances
 /// (RigTime::Manual): timeouts, quiet periods and reply delays do not depend on the machine's
@@ -46,6 +47,8 @@ private slots:
     void lateReplyInQuietPeriodIsCountedNotMatched();
     void sendWhileClosedCompletesDisconnected();
     void failedOpenReportsError();
+    void modelReadOutsideScanGivesSeries_data();
+    void modelReadOutsideScanGivesSeries();
 };
 
 void tst_BusWorker::replyMatchedByCommandAndId()
@@ -525,6 +528,30 @@ void tst_BusWorker::failedOpenReportsError()
     QVERIFY(!worker->isOpen());
     QVERIFY(!conn.isEmpty());
     QVERIFY(conn.last().at(0).value<ConnectionStatus>().reason.contains(QStringLiteral("fake")));
+}
+
+void tst_BusWorker::modelReadOutsideScanGivesSeries_data()
+{
+    QTest::addColumn<Series>("series");
+    QTest::newRow("MS") << Series::MS;
+    QTest::newRow("MF") << Series::MF;
+    QTest::newRow("MG") << Series::MG;
+    QTest::newRow("MH") << Series::MH;
+}
+
+void tst_BusWorker::modelReadOutsideScanGivesSeries()
+{
+    // lkctl info, the drive-info view: a model read by hand tells the series as a scan does,
+    // so that the drive's replies decode as its series (power on MS, iq on the others).
+    QFETCH(Series, series);
+    WorkerRig rig([series](FakeTransport &t) { t.drives().add(5, series); }, relaxedConfig(),
+                  115200, RigTime::Manual);
+    QVERIFY(!rig.worker->seriesOf(5));
+    const quint64 ticket = rig.send(plainRequest(Command::ReadModel, 5));
+    QVERIFY(rig.runUntil([&] { return rig.result(ticket); }, 5000));
+    QCOMPARE(rig.result(ticket)->status, RequestStatus::Ok);
+    QVERIFY(rig.worker->knownMotors().value(5).model);
+    QCOMPARE(rig.worker->seriesOf(5), std::optional<Series>(series));
 }
 
 QTEST_GUILESS_MAIN(tst_BusWorker)

@@ -206,13 +206,8 @@ void BusController::onScanFinished(const bus::ScanSummary &summary)
                         "A/B wiring, the drives' supply and the 120-ohm termination."));
     keepDrivesAt(summary);
     // The scan's silent IDs are timeouts by design: start the figures afresh for polling.
+    // Each drive's series is the bus's already: learnt with its model (MotorRegistry).
     m_session->resetStatistics();
-    for (const auto &m : summary.motors) {
-        if (m.series)
-            m_session->setSeries(m.id, *m.series);
-        else if (const DriveRecord *d = m_model->drive(m.id); d && d->series)
-            m_session->setSeries(m.id, *d->series);
-    }
     startPolling();
 }
 
