@@ -99,6 +99,10 @@ int TransportLink::baud() const
 void TransportLink::onTransportError(const transport::TransportError &error)
 {
     m_lastError = error.message;
+    // An unplug is a state, not an error: its words are the reason of the Disconnected state
+    // that follows, and that state is its one report (banner, log, traffic).
+    if (error.kind == transport::TransportError::Kind::Unplugged)
+        return;
     emit errorOccurred(error);
 }
 

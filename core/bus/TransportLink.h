@@ -15,8 +15,10 @@ namespace lk::bus {
 /// (at a baud), opens it, opens it again after a disconnect, replaces it by one at another
 /// baud, and closes it on purpose without that counting as a disconnect. It words why the link
 /// is not open (the transport's last error, else "closed" / "disconnected") and reports each
-/// change of ConnectionStatus once. What a change means for the requests is its owner's
-/// business (BusWorker): stateChanged comes first, the owner reacts, then calls report().
+/// change of ConnectionStatus once. An unplug is such a change, not an error: errorOccurred
+/// carries only failures (an open that failed, an I/O error). What a change means for the requests
+/// is its owner's business (BusWorker): stateChanged comes first, the owner reacts, then calls
+/// report().
 class TransportLink : public QObject {
     Q_OBJECT
 public:
@@ -52,6 +54,7 @@ signals:
     /// The link opened, closed or dropped; `reason` says why when it is not open. Not
     /// emitted for close() nor for the transport a start() or reopenAt() replaces.
     void stateChanged(lk::transport::Transport::State state, const QString &reason);
+    /// A failure of the transport; never an unplug (TransportError::Kind::Unplugged).
     void errorOccurred(const lk::transport::TransportError &error);
     void connectionChanged(const lk::bus::ConnectionStatus &status);
 

@@ -169,10 +169,9 @@ void BusController::onConnectionChanged(const bus::ConnectionStatus &status)
 
 void BusController::onError(const transport::TransportError &error)
 {
+    // An unplug never comes here: it is a state (onConnectionChanged), with what happens next.
     if (m_reconnecting)
         return; // the banner already says we are waiting for the adapter: no flood per retry
-    if (error.kind == transport::TransportError::Kind::Unplugged)
-        return; // reported as a state change (onConnectionChanged), with what happens next
     emit message(MessageBanner::Level::Error,
                  tr("Cannot use %1: %2")
                      .arg(m_choice.isSimulator() ? tr("the simulator") : m_choice.port,
