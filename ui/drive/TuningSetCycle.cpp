@@ -104,7 +104,7 @@ void TuningSetCycle::keepUnsentEdit()
 
 void TuningSetCycle::readFromDrive()
 {
-    if (!m_view->canSend() || isBusy())
+    if (!m_view->canSendToDrive() || isBusy())
         return;
     setStatus(QString());
     read(!m_table->pending() || !m_table->anyChanged());
@@ -164,7 +164,7 @@ void TuningSetCycle::takeReadValues(DriveMemory &mem)
 
 bool TuningSetCycle::mayWrite()
 {
-    if (!m_view->canSend() || isBusy())
+    if (!m_view->canSendToDrive() || isBusy())
         return false; // the buttons say so: disabled
     if (!m_readComplete) {
         setStatus(tr("Nothing was sent: the drive's values have not all been read on this "
@@ -204,7 +204,7 @@ void TuningSetCycle::write(WriteKind kind)
         return;
     }
     // The dialog ran an event loop: the drive, the link or the read may have changed meanwhile.
-    if (!m_view->canSend() || m_view->driveId() != id || isBusy() || !m_readComplete) {
+    if (!m_view->canSendToDrive() || m_view->driveId() != id || isBusy() || !m_readComplete) {
         setStatus(tr("The drive or the connection changed: nothing was sent."), true);
         return;
     }

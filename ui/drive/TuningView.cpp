@@ -215,7 +215,7 @@ void TuningView::updateStepDrive()
     StepTestDrive d;
     d.session = session();
     d.id = driveId();
-    d.canSend = canSend();
+    d.canSend = canSendToDrive();
     d.series = series();
     if (const auto &m = motor().model) {
         d.model = m->motorName;
@@ -385,7 +385,7 @@ void TuningView::contextChanged(Changes changes)
     m_cycle->showDrive();
     m_plot->setDrive(driveId(), series() == protocol::Series::MS);
     m_title->setText(driveTitle());
-    if (canSend() && (changes & (Change::Session | Change::Drive | Change::Connection)))
+    if (canSendToDrive() && (changes & (Change::Session | Change::Drive | Change::Connection)))
         m_cycle->read(true);
     if (linkDown && hasDrive())
         setStatus(tr("Disconnected: the values shown are the last ones read. Tuning resumes "
@@ -426,9 +426,9 @@ void TuningView::refreshEnabled()
 {
     // No gain writes while a step test runs: its trace would mix two sets of gains.
     const bool idle = !isBusy() && !m_stepTest->isRunning();
-    const bool read = canSend() && m_cycle->readComplete();
+    const bool read = canSendToDrive() && m_cycle->readComplete();
     const bool pending = m_table->pending().has_value();
-    m_read->setEnabled(canSend() && idle);
+    m_read->setEnabled(canSendToDrive() && idle);
     m_writeRam->setEnabled(read && idle && pending);
     m_writeRom->setEnabled(read && idle && pending);
     m_undo->setEnabled(read && idle && m_cycle->firstReadAt().has_value());
@@ -470,7 +470,7 @@ QString TuningView::saveParameters(const QString &path)
 
 QString TuningView::loadParameters(const QString &path)
 {
-    if (!canSend() || !m_cycle->readComplete() || isBusy()) {
+    if (!canSendToDrive() || !m_cycle->readComplete() || isBusy()) {
         const QString error = tr("Nothing was loaded: a file is loaded against the drive's "
                                  "values, so read the drive's values first.");
         setStatus(error, true);

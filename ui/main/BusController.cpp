@@ -180,7 +180,7 @@ void BusController::onError(const transport::TransportError &error)
 
 void BusController::scan(const bus::ScanOptions &options)
 {
-    if (!m_model->canSend())
+    if (!m_model->connection().isOpen())
         return;
     m_session->stopPolling();
     m_session->forgetMotors();
@@ -268,7 +268,7 @@ quint64 BusController::emergencyStop(const QVector<int> &first)
 void BusController::clearErrors(int id)
 {
     const auto built = protocol::build::plain(protocol::Command::ClearErrors, id);
-    if (!built.ok() || !m_model->canSend())
+    if (!built.ok() || !m_model->connection().isOpen())
         return;
     m_session->send(*built.request, this, [this](const bus::RequestResult &r) { onCleared(r); });
 }
