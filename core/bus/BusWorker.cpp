@@ -197,11 +197,6 @@ void BusWorker::submit(BusRequest request, Completion done)
     schedulePump();
 }
 
-int BusWorker::queuedCount() const
-{
-    return m_queue.size();
-}
-
 void BusWorker::schedulePump()
 {
     if (m_shutDown)

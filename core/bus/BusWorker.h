@@ -124,7 +124,6 @@ public:
     bool isOpen() const { return state() == transport::Transport::State::Open; }
     int baud() const;
     double now() const; ///< seconds since the worker was made (the session clock)
-    int queuedCount() const;
     bool isBusy() const { return m_wire.isBusy(); }
     /// Whether transmissions are held back now: the quiet period after a timeout.
     bool isQuiet() const { return m_wire.isQuiet(); }

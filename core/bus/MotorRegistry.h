@@ -18,7 +18,6 @@ namespace lk::bus {
 class MotorRegistry {
 public:
     const KnownMotors &all() const { return m_motors; }
-    bool contains(int id) const { return m_motors.contains(id); }
     std::optional<protocol::Series> series(int id) const;
     /// Series and generation for the decoder; unknown IDs decode as MF (iq), V2.3.
     protocol::DecodeContext decodeContext(int id) const;

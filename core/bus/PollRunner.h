@@ -26,7 +26,6 @@ public:
     ~PollRunner() override;
 
     PollScheduler &scheduler() { return m_poller; }
-    const PollScheduler &scheduler() const { return m_poller; }
     bool isActive() const { return m_poller.isActive(); }
     bool isSuspended() const { return m_suspended; }
 

@@ -39,7 +39,6 @@ public:
     /// Hands bytes to the transport (none, closed or disconnected: dropped).
     void write(const QByteArray &bytes);
     transport::Transport::State state() const;
-    bool isOpen() const { return state() == transport::Transport::State::Open; }
     /// The transport's baud, or the baud the next one is made at.
     int baud() const;
     /// The transport's last error since the last open attempt (empty: none).
