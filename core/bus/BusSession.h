@@ -138,7 +138,8 @@ public:
 
 signals:
     void connectionChanged(const lk::bus::ConnectionStatus &status);
-    /// Once per connect cycle for an unplug; once per failed open.
+    /// Once per failed open, and for an I/O failure of an open link. Never for an unplug:
+    /// that is connectionChanged to Disconnected, whose reason says what happened.
     void errorOccurred(const lk::transport::TransportError &error);
     /// The end of a send() or of one emergency motor_off. Polls and scan probes do not
     /// report here: their replies arrive as telemetry and scan signals.

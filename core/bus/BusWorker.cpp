@@ -19,56 +19,39 @@ using protocol::CommandTable;
 using transport::Transport;
 
 namespace {
-constexpr int kTrafficIntervalMs = 50;
-
 bool movesMotor(Command c)
 {
     return CommandTable::info(c).movesMotor;
-}
-
-QString commandText(const protocol::Request &r)
-{
-    return QStringLiteral("%1 (ID %2)").arg(CommandTable::name(r.command)).arg(r.id);
 }
 } // namespace
 
 BusWorker::BusWorker(TransportFactory factory, int baud, const BusConfig &config,
                      BusTimeSource time, QObject *parent)
-    : QObject(parent), m_factory(std::move(factory)), m_baud(baud), m_config(config),
-      m_clock(std::move(time.clock)), m_timers(std::move(time.timers)), m_timeout(config),
+    : QObject(parent), m_config(config), m_link(std::move(factory), baud, this),
+      m_clock(std::move(time.clock)), m_timers(std::move(time.timers)),
+      m_diagnostics(m_motors, m_clock, m_timers, this),
+      m_wire(m_link, m_motors, m_diagnostics, m_clock, m_timers, config, this),
       m_telemetry(this, m_timers)
 {
-    m_matcher.setLocalEcho(config.localEcho);
-    // The reply, quiet and poll timers pace the wire: precise. Statistics and traffic only
-    // feed the screen: coarse, each restarted on its timeout (a periodic timer).
-    m_replyTimer = m_timers(
-        this, [this] { onTimeout(); }, Qt::PreciseTimer);
-    m_pollTimer = m_timers(
-        this, [this] { pumpNow(); }, Qt::PreciseTimer);
-    m_quietTimer = m_timers(
-        this, [this] { pumpNow(); }, Qt::PreciseTimer);
-    m_statsTimer = m_timers(
-        this,
-        [this] {
-            m_statsTimer->start(statisticsIntervalMs());
-            emitStatistics();
-        },
-        Qt::CoarseTimer);
-    m_trafficTimer = m_timers(
-        this,
-        [this] {
-            m_trafficTimer->start(kTrafficIntervalMs);
-            flushTraffic();
-        },
-        Qt::CoarseTimer);
+    m_wire.setOutcomes({[this](Pending p, protocol::Reply reply, double latencyS) {
+                            onReplied(std::move(p), std::move(reply), latencyS);
+                        },
+                        [this](Pending p, RequestStatus status, const QString &reason) {
+                            onAttemptFailed(std::move(p), status, reason);
+                        },
+                        [this] { pumpNow(); }});
+    connect(&m_diagnostics, &BusDiagnostics::statisticsDue, this,
+            [this] { emit statisticsUpdated(statisticsSnapshot()); });
+    connect(&m_diagnostics, &BusDiagnostics::trafficCaptured, this, &BusWorker::trafficCaptured);
     m_telemetry.setRateHz(config.telemetryHz);
     connect(&m_telemetry, &TelemetryBatcher::batchReady, this, &BusWorker::telemetryReceived);
     connect(&m_setpoints, &SetpointStream::started, this, &BusWorker::setpointStreamStarted);
     connect(&m_setpoints, &SetpointStream::stopped, this, &BusWorker::setpointStreamStopped);
     connect(&m_setpoints, &SetpointStream::setpointCompleted, this, &BusWorker::requestCompleted);
     connect(&m_setpoints, &SetpointStream::setpointFailed, this, &BusWorker::setpointFailed);
-    m_poller.setSeriesLookup([this](int id) { return seriesOf(id); });
-    m_reported.baud = baud;
+    m_polls.scheduler().setSeriesLookup([this](int id) { return seriesOf(id); });
+    connect(&m_polls, &PollRunner::pollingChanged, this, &BusWorker::pollingChanged);
+    wireLink();
 }
 
 BusWorker::~BusWorker()
@@ -76,58 +59,34 @@ BusWorker::~BusWorker()
     shutdown(tr("bus closed"));
 }
 
+void BusWorker::wireLink()
+{
+    connect(&m_link, &TransportLink::bytesReceived, this, &BusWorker::onBytes);
+    connect(&m_link, &TransportLink::stateChanged, this, &BusWorker::onLinkState);
+    connect(&m_link, &TransportLink::errorOccurred, this,
+            [this](const transport::TransportError &error) {
+                m_diagnostics.recordNote(error.message);
+                emit errorOccurred(error);
+            });
+    connect(&m_link, &TransportLink::connectionChanged, this, [this](const ConnectionStatus &s) {
+        if (!m_shutDown) // the last word of shutdown(): no capture is delivered after it
+            m_diagnostics.recordNote(
+                QStringLiteral("%1: %2").arg(s.description, s.isOpen() ? tr("open") : s.reason));
+        emit connectionChanged(s);
+    });
+}
+
 void BusWorker::start()
 {
-    m_statsTimer->start(statisticsIntervalMs());
-    attachTransport(m_factory ? m_factory(m_baud) : nullptr);
-    openTransport();
-}
-
-void BusWorker::attachTransport(std::unique_ptr<Transport> t)
-{
-    dropTransport();
-    m_transport = std::move(t);
-    if (!m_transport)
-        return;
-    connect(m_transport.get(), &Transport::bytesReceived, this, &BusWorker::onBytes);
-    connect(m_transport.get(), &Transport::stateChanged, this, &BusWorker::onTransportState);
-    connect(m_transport.get(), &Transport::errorOccurred, this, &BusWorker::onTransportError);
-}
-
-void BusWorker::dropTransport()
-{
-    if (!m_transport)
-        return;
-    // Silence it first: closing on purpose is not a disconnect to report or to fail on.
-    disconnect(m_transport.get(), nullptr, this, nullptr);
-    m_transport->close();
-    m_transport.reset();
-}
-
-bool BusWorker::openTransport()
-{
-    if (!m_transport) {
-        m_lastError = tr("No transport: the transport factory returned nothing.");
-        reportConnection(m_lastError);
-        return false;
-    }
-    m_lastError.clear();
-    m_parser.reset();
-    const bool ok = m_transport->state() == Transport::State::Open || m_transport->open();
-    if (ok)
-        onTransportState(Transport::State::Open);
-    else
-        reportConnection(m_lastError);
-    return ok;
+    m_diagnostics.startStatistics(m_config.statisticsHz);
+    m_link.start();
 }
 
 void BusWorker::reconnect()
 {
     if (m_shutDown)
         return;
-    if (!m_transport)
-        attachTransport(m_factory ? m_factory(m_baud) : nullptr);
-    openTransport();
+    m_link.reopen();
 }
 
 bool BusWorker::reopenAt(int baud)
@@ -136,11 +95,9 @@ bool BusWorker::reopenAt(int baud)
         return false;
     haltSetpoints(SetpointStopReason::BusChanged);
     abortInflight(RequestStatus::Cancelled, tr("the port was reopened at another baud"));
-    m_matcher.reset();
-    m_recentLatency.clear(); // another baud, other latencies
-    m_baud = baud;
-    attachTransport(m_factory ? m_factory(baud) : nullptr);
-    return openTransport();
+    m_wire.restartStream();
+    m_wire.forgetLatencies(); // another baud, other latencies
+    return m_link.reopenAt(baud);
 }
 
 void BusWorker::shutdown(const QString &reason)
@@ -150,26 +107,22 @@ void BusWorker::shutdown(const QString &reason)
     m_shutDown = true;
     if (m_scanner)
         m_scanner->cancel();
-    m_poller.clear();
+    m_polls.clear();
     failAll(RequestStatus::Cancelled, reason);
-    dropTransport();
-    for (SingleShotTimer *t : {m_replyTimer.get(), m_quietTimer.get(), m_pollTimer.get(),
-                               m_statsTimer.get(), m_trafficTimer.get()})
-        t->stop();
+    m_wire.stop();
+    m_diagnostics.stop();
     m_telemetry.flush();
-    m_reported.state = Transport::State::Closed;
-    m_reported.reason = reason;
-    emit connectionChanged(m_reported);
+    m_link.close(reason);
 }
 
 Transport::State BusWorker::state() const
 {
-    return m_transport ? m_transport->state() : Transport::State::Closed;
+    return m_link.state();
 }
 
 int BusWorker::baud() const
 {
-    return m_transport ? m_transport->baud() : m_baud;
+    return m_link.baud();
 }
 
 double BusWorker::now() const
@@ -177,61 +130,31 @@ double BusWorker::now() const
     return static_cast<double>(m_clock->nowNs()) * 1e-9;
 }
 
-void BusWorker::onTransportError(const transport::TransportError &error)
-{
-    m_lastError = error.message;
-    recordTraffic(TrafficEvent::Kind::Note, {}, 0, 0, error.message);
-    emit errorOccurred(error);
-}
-
-void BusWorker::onTransportState(Transport::State state)
+void BusWorker::onLinkState(Transport::State state, const QString &reason)
 {
     if (m_shutDown)
         return;
     if (state == Transport::State::Open) {
-        m_parser.reset();
-        m_matcher.reset();
-        reportConnection();
-        if (m_pollSuspended && (m_config.resumePollingOnReconnect || !m_poller.isActive()))
-            setPollingSuspended(false);
+        m_wire.restartStream();
+        m_link.report();
+        if (m_polls.isSuspended() && (m_config.resumePollingOnReconnect || !m_polls.isActive()))
+            m_polls.setSuspended(false);
         schedulePump();
         return;
     }
-    const QString reason =
-        m_lastError.isEmpty()
-            ? (state == Transport::State::Closed ? tr("closed") : tr("disconnected"))
-            : m_lastError;
     if (m_scanner && m_scanner->isRunning() && !m_scanner->isReopening())
         m_scanner->abort(reason);
     failAll(RequestStatus::Disconnected, reason);
-    setPollingSuspended(true);
-    reportConnection(reason);
-}
-
-void BusWorker::reportConnection(const QString &reason)
-{
-    ConnectionStatus s;
-    s.state = state();
-    s.description = m_transport ? m_transport->description() : QString();
-    s.baud = baud();
-    s.reason = s.state == Transport::State::Open ? QString() : reason;
-    if (s.state == m_reported.state && s.description == m_reported.description &&
-        s.baud == m_reported.baud && s.reason == m_reported.reason)
-        return;
-    m_reported = s;
-    recordTraffic(TrafficEvent::Kind::Note, {}, 0, 0,
-                  QStringLiteral("%1: %2").arg(s.description, s.isOpen() ? tr("open") : s.reason));
-    emit connectionChanged(s);
+    m_polls.setSuspended(true);
+    m_link.report(reason);
 }
 
 void BusWorker::setConfig(const BusConfig &config)
 {
     m_config = config;
-    m_timeout.setConfig(config);
+    m_wire.setConfig(config);
     m_telemetry.setRateHz(config.telemetryHz);
-    m_matcher.setLocalEcho(config.localEcho);
-    if (m_statsTimer->isActive())
-        m_statsTimer->start(statisticsIntervalMs()); // as QTimer::setInterval: from now
+    m_diagnostics.setStatisticsHz(config.statisticsHz);
 }
 
 bool BusWorker::isRetrySafe(Command command)
@@ -260,41 +183,18 @@ void BusWorker::submit(BusRequest request, Completion done)
     p.req = request;
     p.done = std::move(done);
     if (m_shutDown || !isOpen()) {
-        const QString why = m_lastError.isEmpty() ? tr("the bus is not open") : m_lastError;
+        const QString why =
+            m_link.lastError().isEmpty() ? tr("the bus is not open") : m_link.lastError();
         complete(std::move(p), RequestStatus::Disconnected, std::nullopt, why, 0);
         return;
     }
-    if (const std::optional<QString> why = unavailableReason(request.request)) {
+    if (const std::optional<QString> why = m_motors.unavailableReason(request.request)) {
         complete(std::move(p), RequestStatus::Error, std::nullopt, *why, 0);
         return;
     }
     p.bytes = request.request.encode();
     m_queue.push(std::move(p));
     schedulePump();
-}
-
-std::optional<QString> BusWorker::unavailableReason(const protocol::Request &request) const
-{
-    // Nothing a drive's generation lacks is sent to it (docs/V2.35.md section 3): it would stay
-    // silent and the timeout would blame the wiring. Known only once its model was read.
-    const auto it = m_motors.all().constFind(request.id);
-    if (it == m_motors.all().cend() || !it->model ||
-        protocol::CommandTable::availableOn(request.command, it->generation))
-        return std::nullopt;
-    return it->generation == protocol::Generation::V2_35
-               ? tr("drive %1 runs firmware 2.35 or later (protocol V2.35), which has no %2; "
-                    "nothing was sent")
-                     .arg(request.id)
-                     .arg(protocol::CommandTable::name(request.command))
-               : tr("drive %1 speaks protocol V2.3, which has no %2 (firmware 2.35 added it); "
-                    "nothing was sent")
-                     .arg(request.id)
-                     .arg(protocol::CommandTable::name(request.command));
-}
-
-int BusWorker::queuedCount() const
-{
-    return m_queue.size();
 }
 
 void BusWorker::schedulePump()
@@ -325,114 +225,21 @@ std::optional<BusWorker::Pending> BusWorker::takeNext()
 {
     if (std::optional<Pending> p = m_queue.takeNext())
         return p;
-    if (!m_poller.isActive() || m_pollSuspended || isScanning())
+    if (isScanning())
         return std::nullopt;
-    const double t = now();
-    if (std::optional<protocol::Request> r = m_poller.next(t)) {
-        Pending p;
-        p.req.request = *r;
-        p.req.priority = Priority::Background;
-        p.req.retries = 0; // a missed sample is read again next cycle
-        p.req.origin = RequestOrigin::Poll;
-        p.bytes = r->encode();
-        p.done = [this](const RequestResult &res) { onPollDone(res); };
-        p.pollCycle = m_poller.cycle();
-        p.pollCycleStart = m_poller.cycleStart();
-        return p;
-    }
-    const double due = m_poller.nextDueTime(t);
-    if (std::isfinite(due))
-        m_pollTimer->start(std::max(0, static_cast<int>(std::ceil((due - t) * 1e3))));
-    return std::nullopt;
+    return m_polls.next(now());
 }
 
 void BusWorker::pumpNow()
 {
-    if (m_inflight || m_shutDown || !isOpen() || holdForQuiet())
+    if (m_wire.isBusy() || m_shutDown || !isOpen() || m_wire.holdForQuiet())
         return;
     if (std::optional<Pending> p = takeNext())
-        sendAttempt(std::move(*p));
+        m_wire.send(std::move(*p));
 }
 
-void BusWorker::sendAttempt(Pending p)
+void BusWorker::onAttemptFailed(Pending p, RequestStatus status, const QString &reason)
 {
-    ++p.attempts;
-    const protocol::Request &r = p.req.request;
-    m_stats.requestSent(r.id, p.attempts > 1);
-    recordTraffic(TrafficEvent::Kind::Sent, p.bytes, r.id, static_cast<quint8>(r.command));
-    const double timeoutS = p.attempts == 1 && p.req.firstTimeoutS > 0
-                                ? p.req.firstTimeoutS
-                                : m_timeout.timeoutS(r.command, baud());
-    const protocol::Request request = r;
-    const QByteArray bytes = p.bytes;
-    m_inflight = std::move(p);
-    m_transport->write(bytes);
-    if (!m_inflight)
-        return; // the write lost the link, which failed the request
-    // The reply clock starts once the bytes are handed to the port, not before: a thread
-    // preempted between the two would otherwise have spent part of the timeout (and of a
-    // probe's quiet period) before the request even left, and could talk over a drive that
-    // answers in time. Replies are only read from the event loop, so expecting one now is
-    // early enough.
-    m_sentNs = m_clock->nowNs();
-    m_matcher.expect(request, bytes, m_sentNs, m_sentNs + earliestReplyNs(request.command));
-    m_replyTimer->start(std::max(1, static_cast<int>(std::ceil(timeoutS * 1e3))));
-}
-
-qint64 BusWorker::earliestReplyNs(Command command) const
-{
-    const double wireS = BusTiming::wireTimeS(BusTiming::requestBytes(command),
-                                              BusTiming::replyBytes(command), baud());
-    return static_cast<qint64>(m_recentLatency.earliestReplyS(wireS) * 1e9);
-}
-
-void BusWorker::onTimeout()
-{
-    if (!m_inflight)
-        return;
-    const protocol::Request &r = m_inflight->req.request;
-    m_stats.timedOut(r.id);
-    m_matcher.timedOut();
-    beginQuiet(r, m_inflight->attempts == 1 && m_inflight->req.firstTimeoutS > 0);
-    recordTraffic(TrafficEvent::Kind::Timeout, {}, r.id, static_cast<quint8>(r.command));
-    failAttempt(RequestStatus::Timeout,
-                tr("no reply to %1 after %n attempt(s)", nullptr, m_inflight->attempts)
-                    .arg(commandText(r)));
-}
-
-void BusWorker::beginQuiet(const protocol::Request &request, bool probe)
-{
-    const qint64 lengthNs = static_cast<qint64>(m_timeout.quietS(request.command, baud()) * 1e9);
-    // Silence is the common answer to a probe (scan, emergency stop), so it is not made to
-    // wait twice: only until a reply from a drive that keeps its turnaround could have come
-    // through this link, counted from the send. Often that is over already.
-    const qint64 untilNs =
-        probe ? m_sentNs +
-                    static_cast<qint64>(m_timeout.replyDeadlineS(request.command, baud()) * 1e9)
-              : m_clock->nowNs() + lengthNs;
-    m_quiet.begin(untilNs, lengthNs, request.id, static_cast<quint8>(request.command));
-}
-
-bool BusWorker::holdForQuiet()
-{
-    const qint64 nowNs = m_clock->nowNs();
-    const qint64 leftNs = m_quiet.leftNs(nowNs);
-    if (leftNs <= 0)
-        return false;
-    if (!m_quietTimer->isActive() || m_quietTimerDueNs < nowNs + leftNs) {
-        const int ms = static_cast<int>((leftNs + 999'999) / 1'000'000);
-        m_quietTimer->start(ms);
-        m_quietTimerDueNs = nowNs + qint64(ms) * 1'000'000;
-    }
-    return true;
-}
-
-void BusWorker::failAttempt(RequestStatus status, const QString &reason)
-{
-    Pending p = std::move(*m_inflight);
-    m_inflight.reset();
-    m_matcher.clear();
-    m_replyTimer->stop();
     if (!p.noRetry && p.attempts <= retriesFor(p.req)) {
         // Back to the head of its own lane: an emergency stop still overtakes a retry. An
         // emergency motor_off retries at the back instead, so that every drive hears its
@@ -476,13 +283,8 @@ void BusWorker::cancelQueued(const std::function<bool(const Pending &)> &which,
 
 void BusWorker::abortInflight(RequestStatus status, const QString &reason)
 {
-    if (!m_inflight)
-        return;
-    Pending p = std::move(*m_inflight);
-    m_inflight.reset();
-    m_matcher.clear();
-    m_replyTimer->stop();
-    complete(std::move(p), status, std::nullopt, reason, 0);
+    if (std::optional<Pending> p = m_wire.abort())
+        complete(std::move(*p), status, std::nullopt, reason, 0);
 }
 
 void BusWorker::failAll(RequestStatus status, const QString &reason)
@@ -495,17 +297,11 @@ void BusWorker::failAll(RequestStatus status, const QString &reason)
 
 void BusWorker::onBytes(const QByteArray &bytes)
 {
-    if (!m_inflight) // with a request in flight these are its reply, not an old one's tail
-        m_quiet.bytesArrived(m_clock->nowNs());
-    m_quiet.chunkStarted();
+    // Completions inside the parser's callback only ask for the next send (schedulePump).
     m_inBytes = true;
-    m_parser.feed(bytes, [this](const protocol::ParseEvent &ev) { onParseEvent(ev); });
+    if (m_wire.feed(bytes))
+        m_pumpWanted = true; // the late reply is all here and nothing follows: the wire is free
     m_inBytes = false;
-    if (m_quiet.endIfAnswered(m_parser.pendingBytes() == 0, m_clock->nowNs())) {
-        // The late reply is all here and nothing follows it: the wire is free again.
-        m_quietTimer->stop();
-        m_pumpWanted = true;
-    }
     if (m_pumpWanted) {
         // A transport that delivers at once (SimTransport without delays) would otherwise
         // keep us inside its signal forever: every kMaxDirectPumps the event loop gets a turn.
@@ -515,59 +311,10 @@ void BusWorker::onBytes(const QByteArray &bytes)
     }
 }
 
-void BusWorker::onParseEvent(const protocol::ParseEvent &ev)
+void BusWorker::onReplied(Pending p, protocol::Reply reply, double latencyS)
 {
-    recordParseEvent(ev);
-    using V = ReplyMatcher::Verdict;
-    const protocol::Frame &f = ev.frame;
-    ReplyMatcher::Outcome out =
-        m_matcher.classify(ev, m_motors.decodeContext(f.id), m_clock->nowNs());
-    switch (out.verdict) {
-    case V::Fault:
-        m_stats.parseFault(ev);
-        return;
-    case V::CorruptReply:
-        // Retry now rather than wait for the timeout.
-        m_stats.parseFault(ev);
-        failAttempt(RequestStatus::Error, tr("corrupt reply to %1 (bad data checksum)")
-                                              .arg(commandText(m_inflight->req.request)));
-        return;
-    case V::LocalEcho:
-        m_stats.localEcho();
-        return;
-    case V::Undecodable:
-        m_stats.undecodable(f.id);
-        failAttempt(RequestStatus::Error,
-                    tr("undecodable reply to %1").arg(commandText(m_inflight->req.request)));
-        return;
-    case V::LateReply:
-        // The link is slower than the margin assumed: let the margin learn from it.
-        m_stats.lateReply(f.id);
-        m_timeout.addLateReply(static_cast<Command>(f.command), baud(), out.lateLatencyS);
-        m_lateRequestSentS = std::max(m_lateRequestSentS, now() - out.lateLatencyS);
-        m_quiet.lateFrameParsed(f.id, f.command);
-        return;
-    case V::Unexpected:
-        m_stats.unexpectedFrame(f.id);
-        return;
-    case V::Reply:
-        completeWithReply(std::move(*out.reply));
-        return;
-    }
-}
-
-void BusWorker::completeWithReply(protocol::Reply reply)
-{
-    const double latency = static_cast<double>(m_clock->nowNs() - m_sentNs) * 1e-9;
-    m_recentLatency.add(latency);
-    m_stats.replyReceived(reply.id, latency);
-    m_timeout.addReply(reply.command, baud(), latency);
-    Pending p = std::move(*m_inflight);
-    m_inflight.reset();
-    m_matcher.clear();
-    m_replyTimer->stop();
     noteReply(reply, now(), p);
-    complete(std::move(p), RequestStatus::Ok, std::move(reply), {}, latency);
+    complete(std::move(p), RequestStatus::Ok, std::move(reply), {}, latencyS);
     schedulePump();
 }
 
@@ -607,8 +354,8 @@ void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command h
     qCInfo(lcBus) << "emergency" << CommandTable::name(halt) << "to" << offs.size() << "ID(s)";
     cancelQueued([](const Pending &p) { return movesMotor(p.req.request.command); },
                  RequestStatus::Cancelled, tr("cancelled by emergency stop"));
-    if (m_inflight && movesMotor(m_inflight->req.request.command))
-        m_inflight->noRetry = true; // it may finish, but it is not sent again
+    if (Pending *p = m_wire.inflight(); p && movesMotor(p->req.request.command))
+        p->noRetry = true; // it may finish, but it is not sent again
     for (const BusRequest &r : offs) {
         submit(r, [this, stop](const RequestResult &res) {
             emit requestCompleted(res);
@@ -648,20 +395,13 @@ bool BusWorker::isScanning() const
 
 void BusWorker::startPolling(const PollPlan &plan)
 {
-    m_poller.setPlan(plan, now());
-    m_pollSuspended = !isOpen();
-    emit pollingChanged(m_poller.isActive() && !m_pollSuspended);
+    m_polls.start(plan, now(), isOpen());
     schedulePump();
 }
 
 void BusWorker::stopPolling()
 {
-    const bool was = m_poller.isActive() && !m_pollSuspended;
-    m_poller.clear();
-    m_pollTimer->stop();
-    m_pollSuspended = false;
-    if (was)
-        emit pollingChanged(false);
+    m_polls.stop();
 }
 
 void BusWorker::startSetpointStream(const SetpointStreamPlan &plan)
@@ -682,24 +422,8 @@ void BusWorker::haltSetpoints(SetpointStopReason reason)
     // that stop.
     cancelQueued([](const Pending &p) { return p.req.origin == RequestOrigin::Setpoint; },
                  RequestStatus::Cancelled, tr("setpoint stream stopped"));
-    if (m_inflight && m_inflight->req.origin == RequestOrigin::Setpoint)
-        m_inflight->noRetry = true;
-}
-
-void BusWorker::setPollingSuspended(bool suspended)
-{
-    if (!m_poller.isActive() || m_pollSuspended == suspended)
-        return;
-    m_pollSuspended = suspended;
-    if (suspended)
-        m_pollTimer->stop();
-    emit pollingChanged(!suspended);
-}
-
-void BusWorker::onPollDone(const RequestResult &r)
-{
-    m_poller.completed(r.request.id, r.request.command);
-    schedulePump();
+    if (Pending *p = m_wire.inflight(); p && p->req.origin == RequestOrigin::Setpoint)
+        p->noRetry = true;
 }
 
 std::optional<protocol::Series> BusWorker::seriesOf(int id) const
@@ -733,7 +457,7 @@ double BusWorker::probeTimeoutS(Command command) const
 
 quint64 BusWorker::lateReplyCount() const
 {
-    return m_stats.busCounters().lateReplies;
+    return m_diagnostics.counters().busCounters().lateReplies;
 }
 
 void BusWorker::forgetMotors()
@@ -749,68 +473,27 @@ void BusWorker::forgetMotors(int firstId, int lastId)
 
 void BusWorker::resetStatistics()
 {
-    m_stats.reset();
+    m_diagnostics.counters().reset();
 }
 
 BusStatistics BusWorker::statisticsSnapshot()
 {
-    BusStatistics s = m_stats.snapshot(now());
+    BusStatistics s = m_diagnostics.counters().snapshot(now());
     s.baud = baud();
     s.timeoutMarginMs = currentMarginMs();
-    const std::optional<double> turnaround = m_timeout.measuredTurnaroundS();
+    const std::optional<double> turnaround = m_wire.timeouts().measuredTurnaroundS();
     const double turnaroundS = turnaround.value_or(BusTiming::kTurnaroundS);
     s.turnaroundMs = turnaroundS * 1e3;
     s.turnaroundMeasured = turnaround.has_value();
-    s.pollLimitPerSecond =
-        m_poller.isActive() ? m_poller.busLimitPerSecond(baud(), turnaroundS) : 0;
-    s.pollCycleLimitHz = m_poller.isActive() ? m_poller.cycleLimitHz(baud(), turnaroundS) : 0;
+    const PollScheduler &polls = m_polls.scheduler();
+    s.pollLimitPerSecond = polls.isActive() ? polls.busLimitPerSecond(baud(), turnaroundS) : 0;
+    s.pollCycleLimitHz = polls.isActive() ? polls.cycleLimitHz(baud(), turnaroundS) : 0;
     return s;
-}
-
-void BusWorker::emitStatistics()
-{
-    emit statisticsUpdated(statisticsSnapshot());
-}
-
-int BusWorker::statisticsIntervalMs() const
-{
-    return static_cast<int>(1000.0 / std::max(0.1, m_config.statisticsHz));
 }
 
 void BusWorker::setTrafficCapture(bool enabled)
 {
-    m_traffic.setEnabled(enabled);
-    if (enabled)
-        m_trafficTimer->start(kTrafficIntervalMs);
-    else
-        m_trafficTimer->stop();
-}
-
-void BusWorker::flushTraffic()
-{
-    if (m_traffic.hasPending())
-        emit trafficCaptured(m_traffic.take(now()));
-}
-
-void BusWorker::recordParseEvent(const protocol::ParseEvent &ev)
-{
-    if (!m_traffic.isEnabled())
-        return;
-    // The context of this moment goes with the frame: a series learnt later must not change
-    // how an earlier row reads.
-    m_traffic.recordParseEvent(
-        ev, now(), ev.isFrame ? m_motors.decodeContext(ev.frame.id) : protocol::DecodeContext{});
-}
-
-void BusWorker::recordTraffic(TrafficEvent::Kind kind, const QByteArray &bytes, int id,
-                              quint8 command, const QString &text)
-{
-    if (!m_traffic.isEnabled())
-        return;
-    if (kind == TrafficEvent::Kind::Sent)
-        m_traffic.recordSent(now(), bytes, m_motors.decodeContext(id));
-    else
-        m_traffic.record(kind, now(), bytes, id, command, text);
+    m_diagnostics.setTrafficCapture(enabled);
 }
 
 } // namespace lk::bus

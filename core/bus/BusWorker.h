@@ -1,7 +1,7 @@
 #pragma once
 
-#include "AdaptiveTimeout.h"
 #include "BusConfig.h"
+#include "BusDiagnostics.h"
 #include "BusRequest.h"
 #include "BusStatistics.h"
 #include "BusTimeSource.h"
@@ -9,11 +9,9 @@
 #include "KnownMotor.h"
 #include "MotorRegistry.h"
 #include "PollPlan.h"
+#include "PollRunner.h"
 #include "PollScheduler.h"
 #include "Priority.h"
-#include "QuietPeriod.h"
-#include "RecentLatency.h"
-#include "ReplyMatcher.h"
 #include "RequestQueue.h"
 #include "RequestResult.h"
 #include "ScanTypes.h"
@@ -21,14 +19,13 @@
 #include "SetpointStream.h"
 #include "SetpointStreamPlan.h"
 #include "SingleShotTimer.h"
-#include "StatisticsCollector.h"
 #include "TelemetryBatcher.h"
 #include "TelemetrySample.h"
 #include "TrafficEvent.h"
-#include "TrafficRecorder.h"
 #include "TransportFactory.h"
+#include "TransportLink.h"
+#include "WireExchange.h"
 
-#include <protocol/StreamParser.h>
 #include <transport/Transport.h>
 
 #include <QtCore/QObject>
@@ -41,12 +38,18 @@ namespace lk::bus {
 
 class Scanner;
 
-/// The bus engine. Lives on the bus thread and owns the transport (made by the factory on
-/// that thread). Half duplex: exactly one request on the wire; replies are matched by command
-/// and ID; the timeout comes from BusTiming plus an adaptive margin; queues run Emergency >
-/// Operator > Background, then the poll scheduler fills idle time. Every request completes
-/// exactly once: through its callback when it has one, else through requestCompleted (the
-/// callbacks of setpoints and emergency offs pass their ends on to requestCompleted too).
+/// The bus engine. Lives on the bus thread. Half duplex: exactly one request on the wire;
+/// queues run Emergency > Operator > Background, then the poll scheduler fills idle time.
+/// Every request completes exactly once: through its callback when it has one, else through
+/// requestCompleted (the callbacks of setpoints and emergency offs pass their ends on to
+/// requestCompleted too). Its parts, each its own object on the same thread:
+/// - TransportLink: the transport's lifecycle (made by the factory on this thread, opened,
+///   reopened, closed) and the connection status it reports;
+/// - WireExchange: the request on the wire: sent, its reply matched by command and ID, timed
+///   out (BusTiming plus an adaptive margin), the quiet period after a timeout;
+/// - BusDiagnostics: the statistics and the traffic capture;
+/// - MotorRegistry: the drives known, how their replies decode, what their generation lacks.
+/// The worker decides what is sent next, retries, completes, and reacts to the link.
 ///
 /// Quiet period: after a timeout nothing is transmitted until a late reply to the request
 /// could no longer be on its way (AdaptiveTimeout::quietS: the drive's longest turnaround,
@@ -121,11 +124,10 @@ public:
     bool isOpen() const { return state() == transport::Transport::State::Open; }
     int baud() const;
     double now() const; ///< seconds since the worker was made (the session clock)
-    int queuedCount() const;
-    bool isBusy() const { return m_inflight.has_value(); }
+    bool isBusy() const { return m_wire.isBusy(); }
     /// Whether transmissions are held back now: the quiet period after a timeout.
-    bool isQuiet() const { return m_quiet.isQuiet(m_clock->nowNs()); }
-    double currentMarginMs() const { return m_timeout.marginS() * 1e3; }
+    bool isQuiet() const { return m_wire.isQuiet(); }
+    double currentMarginMs() const { return m_wire.timeouts().marginS() * 1e3; }
     /// The shortest sensible reply timeout: wire time + turnaround + BusConfig::minMarginMs,
     /// for probes where silence is the common answer (scan pass 1, emergency stop).
     double probeTimeoutS(protocol::Command command) const;
@@ -133,7 +135,7 @@ public:
     quint64 lateReplyCount() const;
     /// When the latest-sent request that got a late reply went out (session clock, seconds;
     /// -1: none yet). A scan pass asks whether one of its own probes was answered late.
-    double lateRequestSentTime() const { return m_lateRequestSentS; }
+    double lateRequestSentTime() const { return m_wire.lateRequestSentTime(); }
     const BusConfig &config() const { return m_config; }
     /// The statistics now (also emitted by statisticsUpdated at BusConfig::statisticsHz).
     BusStatistics statisticsSnapshot();
@@ -160,30 +162,17 @@ signals:
 private:
     using Pending = PendingRequest;
 
-    bool openTransport();
-    void attachTransport(std::unique_ptr<transport::Transport> t);
-    void dropTransport();
+    void wireLink();
+    /// The link opened or dropped: start the stream afresh, or fail what is pending and hold
+    /// polling; then the link reports its new state.
+    void onLinkState(transport::Transport::State state, const QString &reason);
     void onBytes(const QByteArray &bytes);
-    void onParseEvent(const protocol::ParseEvent &ev);
-    void completeWithReply(protocol::Reply reply);
-    void recordParseEvent(const protocol::ParseEvent &ev);
-    void onTransportState(transport::Transport::State state);
-    void onTransportError(const transport::TransportError &error);
-    void reportConnection(const QString &reason = {});
+    void onReplied(Pending p, protocol::Reply reply, double latencyS);
+    /// An attempt failed: sent again when its command allows it, else completed.
+    void onAttemptFailed(Pending p, RequestStatus status, const QString &reason);
     void schedulePump();
     void pumpNow();
     std::optional<Pending> takeNext();
-    void sendAttempt(Pending p);
-    /// How soon after a send a reply can physically arrive (for the matcher), nanoseconds.
-    qint64 earliestReplyNs(protocol::Command command) const;
-    void onTimeout();
-    /// The request on the wire timed out: hold transmissions until its reply cannot come.
-    /// `probe`: it had the short first timeout of a probe (BusRequest::firstTimeoutS).
-    void beginQuiet(const protocol::Request &request, bool probe);
-    /// Bytes arrived at `nowNs`: during the quiet period they are a reply on its way.
-    /// True while the quiet period lasts (then the quiet timer will pump again).
-    bool holdForQuiet();
-    void failAttempt(RequestStatus status, const QString &reason);
     void complete(Pending p, RequestStatus status, std::optional<protocol::Reply> reply,
                   const QString &reason, double latencyS);
     void cancelQueued(const std::function<bool(const Pending &)> &which, RequestStatus status,
@@ -193,33 +182,20 @@ private:
     /// Every way of stopping the setpoint stream: stops it, drops its queued setpoint and
     /// keeps the one on the wire from being sent again.
     void haltSetpoints(SetpointStopReason reason);
-    void onPollDone(const RequestResult &r);
     void noteReply(const protocol::Reply &reply, double time, const Pending &request);
-    void emitStatistics();
-    int statisticsIntervalMs() const;
-    void flushTraffic();
-    void recordTraffic(TrafficEvent::Kind kind, const QByteArray &bytes, int id, quint8 command,
-                       const QString &text = {});
-    void setPollingSuspended(bool suspended);
     int retriesFor(const BusRequest &r) const;
-    /// Why `request` must not be sent: its drive's generation lacks the command.
-    std::optional<QString> unavailableReason(const protocol::Request &request) const;
     /// Whether sending `command` again after a timeout or a corrupt reply is harmless.
     static bool isRetrySafe(protocol::Command command);
 
-    TransportFactory m_factory;
-    int m_baud;
     BusConfig m_config;
-    std::unique_ptr<transport::Transport> m_transport;
-    protocol::StreamParser m_parser;
+    TransportLink m_link; ///< a child, as the other QObjects here: they move threads with it
     std::shared_ptr<BusClock> m_clock; ///< the session clock: now() and every ns figure
     SingleShotTimerFactory m_timers;   ///< also the Scanner's
+    MotorRegistry m_motors;
+    BusDiagnostics m_diagnostics;
+    WireExchange m_wire;
 
     RequestQueue m_queue;
-    std::optional<Pending> m_inflight;
-    qint64 m_sentNs = 0;
-    QuietPeriod m_quiet; ///< on the worker clock
-    ReplyMatcher m_matcher;
     static constexpr int kMaxDirectPumps = 64;
     bool m_pumpPosted = false;
     bool m_inBytes = false;    ///< inside onBytes(): the parser is delivering events
@@ -227,27 +203,10 @@ private:
     int m_directPumps = 0;     ///< sends started from onBytes() since the event loop's turn
     bool m_shutDown = false;
 
-    AdaptiveTimeout m_timeout;
-    RecentLatency m_recentLatency;
-    double m_lateRequestSentS = -1;
-    StatisticsCollector m_stats;
-    TrafficRecorder m_traffic;
-    PollScheduler m_poller;
-    bool m_pollSuspended = false;
+    PollRunner m_polls{m_timers, [this] { pumpNow(); }, [this] { schedulePump(); }, this};
     Scanner *m_scanner = nullptr;
-    MotorRegistry m_motors;
     TelemetryBatcher m_telemetry;
     SetpointStream m_setpoints{*this, m_timers};
-    ConnectionStatus m_reported;
-    QString m_lastError;
-
-    // Owned by this object (Qt's are its children): they move to the bus thread with it.
-    std::unique_ptr<SingleShotTimer> m_replyTimer;
-    std::unique_ptr<SingleShotTimer> m_quietTimer;
-    qint64 m_quietTimerDueNs = 0; ///< when the running quiet timer fires (worker clock)
-    std::unique_ptr<SingleShotTimer> m_pollTimer;
-    std::unique_ptr<SingleShotTimer> m_statsTimer;   ///< periodic: restarted on its timeout
-    std::unique_ptr<SingleShotTimer> m_trafficTimer; ///< periodic while capturing
 };
 
 } // namespace lk::bus

@@ -1,6 +1,10 @@
 #include "MotorRegistry.h"
 
+#include <motor/ModelNameInfo.h>
 #include <protocol/Checksum.h>
+#include <protocol/Command.h>
+
+#include <QtCore/QCoreApplication>
 
 #include <algorithm>
 
@@ -35,6 +39,27 @@ StopTargets MotorRegistry::emergencyTargets(const QVector<int> &ids) const
     return StopTargets::of(ids, m_motors.keys());
 }
 
+std::optional<QString> MotorRegistry::unavailableReason(const protocol::Request &request) const
+{
+    // Nothing a drive's generation lacks is sent to it (docs/V2.35.md section 3): it would stay
+    // silent and the timeout would blame the wiring.
+    const auto it = m_motors.constFind(request.id);
+    if (it == m_motors.cend() || !it->model ||
+        protocol::CommandTable::availableOn(request.command, it->generation))
+        return std::nullopt;
+    const char *text =
+        it->generation == protocol::Generation::V2_35
+            ? QT_TRANSLATE_NOOP("lk::bus::MotorRegistry",
+                                "drive %1 runs firmware 2.35 or later (protocol V2.35), which "
+                                "has no %2; nothing was sent")
+            : QT_TRANSLATE_NOOP("lk::bus::MotorRegistry",
+                                "drive %1 speaks protocol V2.3, which has no %2 (firmware 2.35 "
+                                "added it); nothing was sent");
+    return QCoreApplication::translate("lk::bus::MotorRegistry", text)
+        .arg(request.id)
+        .arg(protocol::CommandTable::name(request.command));
+}
+
 bool MotorRegistry::noteSeen(int id)
 {
     if (!validId(id) || m_motors.contains(id))
@@ -65,9 +90,18 @@ bool MotorRegistry::learnModel(int id, const protocol::ModelInfo &model,
     m.id = id;
     m.model = model;
     m.generation = model.generation;
+    if (!series)
+        series = seriesOf(model); // a model read outside a scan tells it just as well
     if (series)
         m.series = series;
     return true;
+}
+
+std::optional<protocol::Series> MotorRegistry::seriesOf(const protocol::ModelInfo &model)
+{
+    if (const auto s = motor::ModelNameInfo::parse(model.motorName).series)
+        return s;
+    return motor::ModelNameInfo::parse(model.driverName).series;
 }
 
 bool MotorRegistry::forget(int firstId, int lastId)

@@ -3,8 +3,10 @@
 #include "KnownMotor.h"
 #include "StopTargets.h"
 
+#include <protocol/Request.h>
 #include <protocol/Series.h>
 
+#include <QtCore/QString>
 #include <QtCore/QVector>
 
 #include <optional>
@@ -16,7 +18,6 @@ namespace lk::bus {
 class MotorRegistry {
 public:
     const KnownMotors &all() const { return m_motors; }
-    bool contains(int id) const { return m_motors.contains(id); }
     std::optional<protocol::Series> series(int id) const;
     /// Series and generation for the decoder; unknown IDs decode as MF (iq), V2.3.
     protocol::DecodeContext decodeContext(int id) const;
@@ -24,12 +25,21 @@ public:
     /// Who an emergency stop must reach: `ids` (the caller's known and recently commanded
     /// drives) and every known ID first, then every other ID of 1..32: always all 32.
     StopTargets emergencyTargets(const QVector<int> &ids) const;
+    /// Why `request` must not be sent: its drive's generation lacks the command (known once
+    /// the drive's model was read). nullopt: it may go.
+    std::optional<QString> unavailableReason(const protocol::Request &request) const;
 
     bool noteSeen(int id);
     bool setSeries(int id, protocol::Series series);
+    /// The drive's model and generation; its series is `series`, or else what the model's
+    /// names tell (seriesOf()), wherever the model was read (a scan, lkctl info, a view).
     bool learnModel(int id, const protocol::ModelInfo &model,
                     std::optional<protocol::Series> series);
     bool forget(int firstId, int lastId);
+
+    /// The series a model's names tell: the motor's ("MS5005"), else the driver's; nullopt
+    /// when neither does.
+    static std::optional<protocol::Series> seriesOf(const protocol::ModelInfo &model);
 
 private:
     KnownMotors m_motors;

@@ -189,13 +189,14 @@ void SimTransport::goDisconnected()
     m_pending.clear();
     m_timer->stop();
     m_housekeeping->stop();
-    setState(State::Disconnected);
+    // The cause first, as a serial port says it: the state's reason then names it.
     emit errorOccurred(
         TransportError{TransportError::Kind::Unplugged,
                        QCoreApplication::translate(
                            "lk::transport::SimTransport",
                            "The simulated bus was disconnected (fault injection). Open it again "
                            "to reconnect.")});
+    setState(State::Disconnected);
 }
 
 } // namespace lk::transport

@@ -50,6 +50,8 @@ public:
 signals:
     void bytesReceived(const QByteArray &bytes);
     void stateChanged(lk::transport::Transport::State state);
+    /// A link lost while open says why first (Unplugged, IoError), then goes Disconnected:
+    /// the state's reason can name the cause.
     void errorOccurred(const lk::transport::TransportError &error);
 };
 

@@ -2,7 +2,7 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en">
 <context>
-    <name>lk::bus::BusWorker</name>
+    <name>lk::bus::WireExchange</name>
     <message numerus="yes">
         <source>no reply to %1 after %n attempt(s)</source>
         <translation>

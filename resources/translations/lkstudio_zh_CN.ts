@@ -30,20 +30,8 @@
         <translation>总线已关闭</translation>
     </message>
     <message>
-        <source>No transport: the transport factory returned nothing.</source>
-        <translation>没有可用的传输通道：传输工厂未返回任何对象。</translation>
-    </message>
-    <message>
         <source>the port was reopened at another baud</source>
         <translation>串口已按其他波特率重新打开</translation>
-    </message>
-    <message>
-        <source>closed</source>
-        <translation>已关闭</translation>
-    </message>
-    <message>
-        <source>disconnected</source>
-        <translation>已断开</translation>
     </message>
     <message>
         <source>open</source>
@@ -52,20 +40,6 @@
     <message>
         <source>the bus is not open</source>
         <translation>总线未打开</translation>
-    </message>
-    <message numerus="yes">
-        <source>no reply to %1 after %n attempt(s)</source>
-        <translation>
-            <numerusform>%1 无回复（已尝试 %n 次）</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>corrupt reply to %1 (bad data checksum)</source>
-        <translation>%1 的回复已损坏（数据校验和错误）</translation>
-    </message>
-    <message>
-        <source>undecodable reply to %1</source>
-        <translation>%1 的回复无法解码</translation>
     </message>
     <message>
         <source>cancelled by emergency stop</source>
@@ -76,16 +50,19 @@
         <translation>扫描已取消</translation>
     </message>
     <message>
+        <source>setpoint stream stopped</source>
+        <translation>设定值流已停止</translation>
+    </message>
+</context>
+<context>
+    <name>lk::bus::MotorRegistry</name>
+    <message>
         <source>drive %1 runs firmware 2.35 or later (protocol V2.35), which has no %2; nothing was sent</source>
         <translation>驱动器 %1 运行 2.35 或更高版本固件（V2.35 协议），该协议没有 %2；未发送任何内容</translation>
     </message>
     <message>
         <source>drive %1 speaks protocol V2.3, which has no %2 (firmware 2.35 added it); nothing was sent</source>
         <translation>驱动器 %1 使用 V2.3 协议，该协议没有 %2（2.35 固件才加入）；未发送任何内容</translation>
-    </message>
-    <message>
-        <source>setpoint stream stopped</source>
-        <translation>设定值流已停止</translation>
     </message>
 </context>
 <context>
@@ -163,6 +140,38 @@
     <message>
         <source>%1 traffic events dropped (view too slow)</source>
         <translation>丢弃了 %1 条通信记录（视图刷新过慢）</translation>
+    </message>
+</context>
+<context>
+    <name>lk::bus::TransportLink</name>
+    <message>
+        <source>No transport: the transport factory returned nothing.</source>
+        <translation>没有可用的传输通道：传输工厂未返回任何对象。</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>已关闭</translation>
+    </message>
+    <message>
+        <source>disconnected</source>
+        <translation>已断开</translation>
+    </message>
+</context>
+<context>
+    <name>lk::bus::WireExchange</name>
+    <message numerus="yes">
+        <source>no reply to %1 after %n attempt(s)</source>
+        <translation>
+            <numerusform>%1 无回复（已尝试 %n 次）</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>corrupt reply to %1 (bad data checksum)</source>
+        <translation>%1 的回复已损坏（数据校验和错误）</translation>
+    </message>
+    <message>
+        <source>undecodable reply to %1</source>
+        <translation>%1 的回复无法解码</translation>
     </message>
 </context>
 <context>
@@ -4255,6 +4264,77 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::TuningSetCycle</name>
+    <message>
+        <source>Could not read drive %1: %2 Editing and writing stay off until every value shown has been read; press Read from drive to try again.</source>
+        <translation>无法读取驱动 %1：%2 在显示的全部数值读取成功之前，编辑和写入保持禁用；请按“从驱动读取”重试。</translation>
+    </message>
+    <message>
+        <source>Read from drive %1 at %2.</source>
+        <translation>于 %2 从驱动 %1 读取。</translation>
+    </message>
+    <message>
+        <source>Your unsent edit of drive %1 is back in the pending edit; values that differ from the drive are highlighted.</source>
+        <translation>驱动 %1 未发送的编辑已放回待写入区；与驱动不同的值以高亮显示。</translation>
+    </message>
+    <message>
+        <source>Nothing was sent: the drive&apos;s values have not all been read on this connection. Read from drive first.</source>
+        <translation>未发送任何命令：本次连接中尚未读取驱动的全部数值。请先从驱动读取。</translation>
+    </message>
+    <message>
+        <source>ROM write cancelled: nothing was sent.</source>
+        <translation>已取消 ROM 写入：未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Restore cancelled: nothing was sent.</source>
+        <translation>已取消恢复：未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>The drive or the connection changed: nothing was sent.</source>
+        <translation>驱动或连接已改变：未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Nothing was sent: %1</source>
+        <translation>未发送任何命令：%1</translation>
+    </message>
+    <message>
+        <source>Writing gains to the ROM of drive %1…</source>
+        <translation>正在把 PID 参数写入驱动 %1 的 ROM…</translation>
+    </message>
+    <message>
+        <source>Writing to the RAM of drive %1…</source>
+        <translation>正在写入驱动 %1 的 RAM…</translation>
+    </message>
+    <message>
+        <source>The write failed: %1</source>
+        <translation>写入失败：%1</translation>
+    </message>
+    <message>
+        <source>Sent to drive %1, but the read-back did not complete (below).</source>
+        <translation>已发送到驱动 %1，但回读未完成（见下方）。</translation>
+    </message>
+    <message>
+        <source>Written, but the read-back differs (below).</source>
+        <translation>已写入，但回读值不同（见下方）。</translation>
+    </message>
+    <message>
+        <source>RAM gains differ from what was last written to ROM (%1): a power cycle brings back the ROM values.</source>
+        <translation>RAM 中的参数与上次写入 ROM 的不同（%1）：断电重启后恢复为 ROM 中的值。</translation>
+    </message>
+    <message>
+        <source>RAM gains were changed in this session and not written to ROM: they are lost at power-off.</source>
+        <translation>RAM 中的参数在本次会话中已修改但未写入 ROM：断电后会丢失。</translation>
+    </message>
+    <message>
+        <source>RAM holds the gains last written to ROM in this session.</source>
+        <translation>RAM 中是本次会话最后写入 ROM 的参数。</translation>
+    </message>
+    <message>
+        <source>Nothing written to this drive in this session: RAM holds what the drive loaded from ROM at power-on (unless another tool changed it).</source>
+        <translation>本次会话未向此驱动写入任何值：RAM 中是驱动上电时从 ROM 载入的值（除非其他工具修改过）。</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::TuningSetV235</name>
     <message>
         <source>0..65535, raw gain (V2.35 ParamIDs 0x96..0x98)</source>
@@ -4449,46 +4529,6 @@
         <translation>加载驱动参数</translation>
     </message>
     <message>
-        <source>Read from drive %1 at %2.</source>
-        <translation>于 %2 从驱动 %1 读取。</translation>
-    </message>
-    <message>
-        <source>ROM write cancelled: nothing was sent.</source>
-        <translation>已取消 ROM 写入：未发送任何命令。</translation>
-    </message>
-    <message>
-        <source>The drive or the connection changed: nothing was sent.</source>
-        <translation>驱动或连接已改变：未发送任何命令。</translation>
-    </message>
-    <message>
-        <source>Writing gains to the ROM of drive %1…</source>
-        <translation>正在把 PID 参数写入驱动 %1 的 ROM…</translation>
-    </message>
-    <message>
-        <source>Writing to the RAM of drive %1…</source>
-        <translation>正在写入驱动 %1 的 RAM…</translation>
-    </message>
-    <message>
-        <source>Written, but the read-back differs (below).</source>
-        <translation>已写入，但回读值不同（见下方）。</translation>
-    </message>
-    <message>
-        <source>RAM gains differ from what was last written to ROM (%1): a power cycle brings back the ROM values.</source>
-        <translation>RAM 中的参数与上次写入 ROM 的不同（%1）：断电重启后恢复为 ROM 中的值。</translation>
-    </message>
-    <message>
-        <source>RAM gains were changed in this session and not written to ROM: they are lost at power-off.</source>
-        <translation>RAM 中的参数在本次会话中已修改但未写入 ROM：断电后会丢失。</translation>
-    </message>
-    <message>
-        <source>RAM holds the gains last written to ROM in this session.</source>
-        <translation>RAM 中是本次会话最后写入 ROM 的参数。</translation>
-    </message>
-    <message>
-        <source>Nothing written to this drive in this session: RAM holds what the drive loaded from ROM at power-on (unless another tool changed it).</source>
-        <translation>本次会话未向此驱动写入任何值：RAM 中是驱动上电时从 ROM 载入的值（除非其他工具修改过）。</translation>
-    </message>
-    <message>
         <source>RAM and ROM: %1</source>
         <translation>RAM 和 ROM：%1</translation>
     </message>
@@ -4499,18 +4539,6 @@
     <message>
         <source>Disconnected: the values shown are the last ones read. Tuning resumes after the drive has been read again on the next connection.</source>
         <translation>已断开：显示的是最后读取的数值。重新连接并再次读取驱动后才能继续调参。</translation>
-    </message>
-    <message>
-        <source>Your unsent edit of drive %1 is back in the pending edit; values that differ from the drive are highlighted.</source>
-        <translation>驱动 %1 未发送的编辑已放回待写入区；与驱动不同的值以高亮显示。</translation>
-    </message>
-    <message>
-        <source>Restore cancelled: nothing was sent.</source>
-        <translation>已取消恢复：未发送任何内容。</translation>
-    </message>
-    <message>
-        <source>Sent to drive %1, but the read-back did not complete (below).</source>
-        <translation>已发送到驱动 %1，但回读未完成（见下方）。</translation>
     </message>
     <message>
         <source>Restore values read at %1…</source>
@@ -4531,22 +4559,6 @@
     <message>
         <source>Drive limits</source>
         <translation>驱动限值</translation>
-    </message>
-    <message>
-        <source>Could not read drive %1: %2 Editing and writing stay off until every value shown has been read; press Read from drive to try again.</source>
-        <translation>无法读取驱动 %1：%2 在显示的全部数值读取成功之前，编辑和写入保持禁用；请按“从驱动读取”重试。</translation>
-    </message>
-    <message>
-        <source>Nothing was sent: the drive&apos;s values have not all been read on this connection. Read from drive first.</source>
-        <translation>未发送任何命令：本次连接中尚未读取驱动的全部数值。请先从驱动读取。</translation>
-    </message>
-    <message>
-        <source>Nothing was sent: %1</source>
-        <translation>未发送任何命令：%1</translation>
-    </message>
-    <message>
-        <source>The write failed: %1</source>
-        <translation>写入失败：%1</translation>
     </message>
     <message>
         <source>Write the values first read from this drive at %1 back to its RAM (asks first), then read back.</source>

@@ -133,11 +133,10 @@ void tst_BusOverPty::simulatorExitIsAnUnplug()
     m_sim.waitForFinished(5000);
     QTRY_COMPARE_WITH_TIMEOUT(session.connection().state, transport::Transport::State::Disconnected,
                               10000);
-    QTRY_COMPARE(errors.size(), 1);
-    QCOMPARE(errors.at(0).at(0).value<transport::TransportError>().kind,
-             transport::TransportError::Kind::Unplugged);
+    QVERIFY2(session.connection().reason.contains(QStringLiteral("unplugged")),
+             qPrintable(session.connection().reason));
     QTest::qWait(300);
-    QCOMPARE(errors.size(), 1); // once per connect cycle
+    QCOMPARE(errors.size(), 0); // an unplug is a state, not an error
 }
 
 QTEST_GUILESS_MAIN(tst_BusOverPty)

@@ -18,6 +18,7 @@ using protocol::Command;
 using protocol::Series;
 
 Q_DECLARE_METATYPE(protocol::Command)
+Q_DECLARE_METATYPE(protocol::Series)
 
 /// BusWorker on the test thread over a scripted FakeTransport, on a clock the test advances
 /// (RigTime::Manual): timeouts, quiet periods and reply delays do not depend on the machine's
@@ -46,6 +47,9 @@ private slots:
     void lateReplyInQuietPeriodIsCountedNotMatched();
     void sendWhileClosedCompletesDisconnected();
     void failedOpenReportsError();
+    void unplugIsReportedOnce();
+    void modelReadOutsideScanGivesSeries_data();
+    void modelReadOutsideScanGivesSeries();
 };
 
 void tst_BusWorker::replyMatchedByCommandAndId()
@@ -338,7 +342,7 @@ void tst_BusWorker::disconnectFailsPendingOnce()
         QCOMPARE(rig.result(t)->status, RequestStatus::Disconnected);
         QVERIFY(rig.result(t)->reason.contains(QStringLiteral("unplugged")));
     }
-    QCOMPARE(errors.size(), 1);
+    QCOMPARE(errors.size(), 0); // an unplug is a state (below), not an error
     QVERIFY(!conn.isEmpty());
     QCOMPARE(conn.last().at(0).value<ConnectionStatus>().state,
              transport::Transport::State::Disconnected);
@@ -525,6 +529,56 @@ void tst_BusWorker::failedOpenReportsError()
     QVERIFY(!worker->isOpen());
     QVERIFY(!conn.isEmpty());
     QVERIFY(conn.last().at(0).value<ConnectionStatus>().reason.contains(QStringLiteral("fake")));
+}
+
+void tst_BusWorker::unplugIsReportedOnce()
+{
+    // One unplug, one report: the Disconnected state with the adapter's words as its reason
+    // (one traffic note), and no error besides it.
+    WorkerRig rig([](FakeTransport &t) { t.drives().add(1, Series::MF); }, relaxedConfig(), 115200,
+                  RigTime::Manual);
+    QSignalSpy conn(rig.worker.get(), &BusWorker::connectionChanged);
+    QSignalSpy errors(rig.worker.get(), &BusWorker::errorOccurred);
+    QSignalSpy traffic(rig.worker.get(), &BusWorker::trafficCaptured);
+    rig.worker->setTrafficCapture(true);
+    rig.transport->unplug();
+    QVERIFY(rig.runUntil([&] { return !traffic.isEmpty(); }, 1000));
+    QCOMPARE(errors.size(), 0);
+    QCOMPARE(conn.size(), 1);
+    const ConnectionStatus s = conn.first().first().value<ConnectionStatus>();
+    QCOMPARE(s.state, transport::Transport::State::Disconnected);
+    QCOMPARE(s.reason, QStringLiteral("The fake adapter was unplugged."));
+    int notes = 0;
+    for (const QList<QVariant> &args : std::as_const(traffic)) {
+        for (const TrafficEvent &e : args.first().value<TrafficBatch>())
+            notes +=
+                e.kind == TrafficEvent::Kind::Note && e.text.contains(QStringLiteral("unplugged"));
+    }
+    QCOMPARE(notes, 1);
+}
+
+void tst_BusWorker::modelReadOutsideScanGivesSeries_data()
+{
+    QTest::addColumn<Series>("series");
+    QTest::newRow("MS") << Series::MS;
+    QTest::newRow("MF") << Series::MF;
+    QTest::newRow("MG") << Series::MG;
+    QTest::newRow("MH") << Series::MH;
+}
+
+void tst_BusWorker::modelReadOutsideScanGivesSeries()
+{
+    // lkctl info, the drive-info view: a model read by hand tells the series as a scan does,
+    // so that the drive's replies decode as its series (power on MS, iq on the others).
+    QFETCH(Series, series);
+    WorkerRig rig([series](FakeTransport &t) { t.drives().add(5, series); }, relaxedConfig(),
+                  115200, RigTime::Manual);
+    QVERIFY(!rig.worker->seriesOf(5));
+    const quint64 ticket = rig.send(plainRequest(Command::ReadModel, 5));
+    QVERIFY(rig.runUntil([&] { return rig.result(ticket); }, 5000));
+    QCOMPARE(rig.result(ticket)->status, RequestStatus::Ok);
+    QVERIFY(rig.worker->knownMotors().value(5).model);
+    QCOMPARE(rig.worker->seriesOf(5), std::optional<Series>(series));
 }
 
 QTEST_GUILESS_MAIN(tst_BusWorker)

@@ -66,7 +66,7 @@ std::optional<protocol::Series> DriveView::series() const
     return std::nullopt;
 }
 
-bool DriveView::canSend() const
+bool DriveView::canSendToDrive() const
 {
     return m_session && m_connected && m_id > 0;
 }

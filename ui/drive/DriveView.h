@@ -19,7 +19,7 @@ class RequestTracker;
 
 /// Common face of the drive views (tuning, control, encoder, info) towards the main window:
 /// a session, the selected drive (or none) and whether the link is up. Everything that sends
-/// is disabled unless all three are there (canSend()).
+/// is disabled unless all three are there (canSendToDrive()).
 class DriveView : public QWidget {
     Q_OBJECT
 public:
@@ -49,8 +49,12 @@ public:
     bool isConnected() const { return m_connected; }
     /// The drive's series: from the KnownMotor given, else what the session knows.
     std::optional<protocol::Series> series() const;
-    /// A session, a connected link and a drive: sending is possible.
-    bool canSend() const;
+    /// A session, a connected link and a selected drive: this view can send to its drive.
+    /// More than the link being open (BusModel::connection().isOpen()).
+    bool canSendToDrive() const;
+    /// The former name of canSendToDrive(), kept only while ControlView, EncoderView,
+    /// DriveLimitsView and DriveInfoView still call it (issue #21): use canSendToDrive().
+    bool canSend() const { return canSendToDrive(); }
     /// "Drive 3 (MF4015)" or "no drive selected".
     QString driveTitle() const;
 

@@ -1,13 +1,12 @@
 #include "TuningView.h"
 
-#include "ConfirmDialog.h"
 #include "DriveLimitsView.h"
 #include "DriveText.h"
 #include "LoopPlot.h"
-#include "ParamExchange.h"
 #include "ParameterTable.h"
 #include "RequestTracker.h"
 #include "TuningFile.h"
+#include "TuningSetCycle.h"
 #include "TuningText.h"
 
 #include <bus/BusSession.h>
@@ -51,13 +50,10 @@ QLabel *banner(const QString &name, const QString &style, QWidget *parent)
 TuningView::TuningView(QWidget *parent) : DriveView(parent)
 {
     setObjectName(QStringLiteral("tuning"));
-    m_exchange = new ParamExchange(tracker(), this);
-    m_exchange->setSpec(m_spec);
     buildUi();
-    connect(m_exchange, &ParamExchange::readFinished, this, &TuningView::onReadDone);
-    connect(m_exchange, &ParamExchange::romWritten, this, &TuningView::onRomWritten);
-    connect(m_exchange, &ParamExchange::ramWritten, this,
-            [this](int id) { m_memory[id].ramWritten = true; });
+    m_cycle = new TuningSetCycle(this, tracker(), m_table);
+    m_cycle->setSpec(m_spec);
+    wireCycle();
     connect(tracker(), &RequestTracker::pendingChanged, this, &TuningView::refreshEnabled);
     connect(m_table, &ParameterTable::loopFocused, m_plot, &LoopPlot::setLoop);
     connect(m_table, &ParameterTable::edited, this, &TuningView::refreshEnabled);
@@ -65,6 +61,32 @@ TuningView::TuningView(QWidget *parent) : DriveView(parent)
 }
 
 TuningView::~TuningView() = default;
+
+void TuningView::wireCycle()
+{
+    connect(m_cycle, &TuningSetCycle::statusChanged, this, [this](const QString &text, bool error) {
+        m_status->setText(text);
+        m_status->setStyleSheet(
+            error ? StatusColors::textStyle(StatusColors::Role::Error, palette()) : QString());
+    });
+    connect(m_cycle, &TuningSetCycle::mismatchChanged, this, [this](const QString &text) {
+        if (text.isEmpty()) {
+            m_mismatch->hide();
+            return;
+        }
+        m_mismatch->setText(text);
+        m_mismatch->show();
+    });
+    connect(m_cycle, &TuningSetCycle::writeAcknowledged, this, [this](bool rom) {
+        m_plot->markChange(rom ? tr("ROM write") : tr("RAM write")); // the moment on the trace
+    });
+    connect(m_cycle, &TuningSetCycle::readFinished, this, [this](int id) {
+        refreshWarnings();
+        refreshEnabled();
+        emit parametersRead(id);
+    });
+    connect(m_cycle, &TuningSetCycle::stateChanged, this, &TuningView::refreshEnabled);
+}
 
 void TuningView::buildUi()
 {
@@ -175,11 +197,11 @@ QJsonObject TuningView::heldObject(bool ramps) const
 {
     // Only values a complete read gave: a gain that was not read is absent, never 0.
     QJsonObject out;
-    if (!m_readComplete)
+    if (!m_cycle->readComplete())
         return out;
     const QStringList keys = ramps ? tuning::stepRunRampKeys() : tuning::stepRunGainKeys();
     const QVector<ParamField> fields = m_spec->fields();
-    const HeldValues held = m_exchange->held();
+    const HeldValues held = m_cycle->held();
     for (int i = 0; i < fields.size() && i < held.size(); ++i) {
         if (held.at(i) && keys.contains(fields.at(i).key))
             out.insert(fields.at(i).key,
@@ -193,7 +215,7 @@ void TuningView::updateStepDrive()
     StepTestDrive d;
     d.session = session();
     d.id = driveId();
-    d.canSend = canSend();
+    d.canSend = canSendToDrive();
     d.series = series();
     if (const auto &m = motor().model) {
         d.model = m->motorName;
@@ -214,8 +236,7 @@ QWidget *TuningView::buildButtons()
     m_read = make(QStringLiteral("read"), tr("Read from drive"), QString());
     m_writeRam = make(QStringLiteral("writeRam"), tr("Write to RAM"), QString());
     m_writeRom = make(QStringLiteral("writeRom"), tr("Write to ROM\u2026"), QString());
-    m_undo = make(QStringLiteral("undo"), QString(), QString());
-    refreshRestoreButton();
+    m_undo = make(QStringLiteral("undo"), QString(), QString()); // named by refreshEnabled()
     m_save = make(QStringLiteral("save"), tr("Save to file\u2026"),
                   tr("Save what the drive holds, with model, firmware and time, as JSON."));
     m_load = make(QStringLiteral("load"), tr("Load from file\u2026"),
@@ -272,7 +293,32 @@ void TuningView::setTelemetryStore(TelemetryStore *store)
 
 HeldValues TuningView::driveValues() const
 {
-    return m_exchange->held();
+    return m_cycle->held();
+}
+
+bool TuningView::readComplete() const
+{
+    return m_cycle->readComplete();
+}
+
+void TuningView::readFromDrive()
+{
+    m_cycle->readFromDrive();
+}
+
+void TuningView::writeToRam()
+{
+    m_cycle->write(TuningSetCycle::WriteKind::Ram);
+}
+
+void TuningView::writeToRom()
+{
+    m_cycle->write(TuningSetCycle::WriteKind::Rom);
+}
+
+void TuningView::restoreFirstRead()
+{
+    m_cycle->write(TuningSetCycle::WriteKind::RestoreFirstRead);
 }
 
 const ParamSetSpec *TuningView::specFor(protocol::Generation generation) const
@@ -287,7 +333,7 @@ void TuningView::selectSpec()
     const ParamSetSpec *spec = specFor(motor().generation);
     if (spec != m_spec || m_table->rowCount() == 0) {
         m_spec = spec;
-        m_exchange->setSpec(spec);
+        m_cycle->setSpec(spec);
         m_table->setFields(spec->fields());
     }
     const ParamSetTexts texts = spec->texts();
@@ -296,17 +342,6 @@ void TuningView::selectSpec()
     m_read->setToolTip(texts.readTip);
     m_writeRam->setToolTip(texts.ramTip);
     m_writeRom->setToolTip(texts.romTip);
-}
-
-void TuningView::forgetOtherGeneration()
-{
-    // An ID answered by a drive of the other generation is another drive.
-    for (auto it = m_memory.begin(); it != m_memory.end();) {
-        if (it.key() == driveId() && it->generation != m_spec->generation())
-            it = m_memory.erase(it);
-        else
-            ++it;
-    }
 }
 
 bool TuningView::romWarningShown() const
@@ -326,7 +361,7 @@ QString TuningView::statusText() const
 
 bool TuningView::isBusy() const
 {
-    return tracker()->pendingCount() > 0;
+    return m_cycle->isBusy();
 }
 
 void TuningView::contextChanged(Changes changes)
@@ -342,37 +377,16 @@ void TuningView::contextChanged(Changes changes)
             m_telemetry = connect(session(), &bus::BusSession::telemetryReceived, m_plot,
                                   &LoopPlot::appendTelemetry);
     }
-    // What was read belongs to one connection: the next one may reach other drives. What was
-    // written stays for the session (the RAM/ROM warning errs on the side of caution).
-    if (changes & Change::Session) {
-        m_memory.clear();
-    } else if (linkDown) {
-        for (DriveMemory &mem : m_memory) {
-            mem.firstRead.reset();
-            mem.unsentEdit.reset();
-        }
-    } else if (changes & Change::Drive) {
-        keepUnsentEdit();
-    }
-    if (tracker()->pendingCount() == 0)
-        m_exchange->forgetOutstanding(); // the tracker forgot them with the drive or the link
-    if (changes & (Change::Session | Change::Drive | Change::Connection))
-        m_readComplete = false;
+    m_cycle->contextChanged(changes);
     if (changes & (Change::Session | Change::Drive) || linkUp) {
         selectSpec();
-        forgetOtherGeneration();
-        m_exchange->clear();
-        m_mismatch->hide();
-        m_table->setHolds(m_exchange->held());
-        m_table->clearPending(); // never another drive's (or connection's) values
-        setStatus(QString());
+        m_cycle->startOver();
     }
-    m_shownId = driveId();
-    m_table->setOriginal(m_memory.value(driveId()).firstRead);
+    m_cycle->showDrive();
     m_plot->setDrive(driveId(), series() == protocol::Series::MS);
     m_title->setText(driveTitle());
-    if (canSend() && (changes & (Change::Session | Change::Drive | Change::Connection)))
-        startRead(true);
+    if (canSendToDrive() && (changes & (Change::Session | Change::Drive | Change::Connection)))
+        m_cycle->read(true);
     if (linkDown && hasDrive())
         setStatus(tr("Disconnected: the values shown are the last ones read. Tuning resumes "
                      "after the drive has been read again on the next connection."));
@@ -396,213 +410,11 @@ void TuningView::forwardContext(Changes changes)
     }
 }
 
-void TuningView::keepUnsentEdit()
-{
-    if (m_shownId <= 0 || !m_readComplete || !m_table->anyChanged())
-        return;
-    m_memory[m_shownId].unsentEdit = m_table->pending();
-}
-
-void TuningView::readFromDrive()
-{
-    if (!canSend() || isBusy())
-        return;
-    setStatus(QString());
-    startRead(!m_table->pending() || !m_table->anyChanged());
-}
-
-void TuningView::startRead(bool takePending)
-{
-    m_takePending = takePending;
-    m_exchange->read(driveId());
-}
-
-void TuningView::onReadDone(int id)
-{
-    if (id != driveId())
-        return;
-    m_readComplete = m_exchange->complete();
-    DriveMemory &mem = m_memory[id];
-    mem.generation = m_spec->generation();
-    if (m_readComplete && !mem.firstRead) {
-        mem.firstRead = ParamSetSpec::known(m_exchange->held());
-        mem.firstReadAt = QTime::currentTime();
-    }
-    m_table->setOriginal(mem.firstRead);
-    m_table->setHolds(m_exchange->held());
-    if (m_readComplete)
-        takeReadValues(mem);
-    else if (m_takePending)
-        m_table->clearPending(); // it showed the drive's values, which are not known now
-    m_takePending = false;
-    if (const std::optional<SentValues> sent = m_exchange->takeSent())
-        checkReadBack(*sent);
-    else if (!m_readComplete)
-        setStatus(tr("Could not read drive %1: %2 Editing and writing stay off until every "
-                     "value shown has been read; press Read from drive to try again.")
-                      .arg(id)
-                      .arg(m_exchange->readFailure()),
-                  true);
-    else if (m_status->text().isEmpty())
-        setStatus(tr("Read from drive %1 at %2.")
-                      .arg(id)
-                      .arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss"))));
-    refreshWarnings();
-    refreshEnabled();
-    emit parametersRead(id);
-}
-
-void TuningView::takeReadValues(DriveMemory &mem)
-{
-    if (mem.unsentEdit) {
-        m_table->setPending(*mem.unsentEdit);
-        mem.unsentEdit.reset();
-        setStatus(tr("Your unsent edit of drive %1 is back in the pending edit; values that "
-                     "differ from the drive are highlighted.")
-                      .arg(driveId()));
-    } else if (m_takePending || !m_table->pending()) {
-        m_table->setPending(*ParamSetSpec::known(m_exchange->held()));
-    }
-}
-
-void TuningView::writeToRam()
-{
-    writeParameters(WriteKind::Ram);
-}
-
-void TuningView::writeToRom()
-{
-    writeParameters(WriteKind::Rom);
-}
-
-void TuningView::restoreFirstRead()
-{
-    writeParameters(WriteKind::RestoreFirstRead);
-}
-
-bool TuningView::mayWrite()
-{
-    if (!canSend() || isBusy())
-        return false; // the buttons say so: disabled
-    if (!m_readComplete) {
-        setStatus(tr("Nothing was sent: the drive's values have not all been read on this "
-                     "connection. Read from drive first."),
-                  true);
-        return false;
-    }
-    return true;
-}
-
-bool TuningView::confirmWrite(WriteKind kind, int id, const ParamValues &values)
-{
-    switch (kind) {
-    case WriteKind::Ram:
-        return true; // RAM is the place to try: lost at power-off
-    case WriteKind::Rom:
-        return ConfirmDialog::ask(this, m_spec->romQuestion(id, values));
-    case WriteKind::RestoreFirstRead:
-        return ConfirmDialog::ask(this, TuningText::restore(id, m_memory.value(id).firstReadAt,
-                                                            m_spec->valuesText(values)));
-    }
-    return false;
-}
-
-void TuningView::writeParameters(WriteKind kind)
-{
-    if (!mayWrite())
-        return;
-    const int id = driveId();
-    const std::optional<ParamValues> values =
-        kind == WriteKind::RestoreFirstRead ? m_memory.value(id).firstRead : m_table->pending();
-    if (!values)
-        return; // no first read to restore, or no pending edit: nothing to write
-    if (!confirmWrite(kind, id, *values)) {
-        setStatus(kind == WriteKind::Rom ? tr("ROM write cancelled: nothing was sent.")
-                                         : tr("Restore cancelled: nothing was sent."));
-        return;
-    }
-    // The dialog ran an event loop: the drive, the link or the read may have changed meanwhile.
-    if (!canSend() || driveId() != id || isBusy() || !m_readComplete) {
-        setStatus(tr("The drive or the connection changed: nothing was sent."), true);
-        return;
-    }
-    const bool rom = kind == WriteKind::Rom;
-    m_takePending = false; // the read-back must not overwrite the pending edit
-    const QString error = m_exchange->write(id, *values, rom);
-    if (!error.isEmpty()) {
-        setStatus(tr("Nothing was sent: %1").arg(error), true);
-        return;
-    }
-    if (kind == WriteKind::RestoreFirstRead)
-        m_table->setPending(*values);
-    m_mismatch->hide();
-    setStatus(rom ? tr("Writing gains to the ROM of drive %1\u2026").arg(id)
-                  : tr("Writing to the RAM of drive %1\u2026").arg(id));
-    refreshEnabled();
-}
-
-void TuningView::onRomWritten(int id, const ParamValues &values, const QVector<int> &fields)
-{
-    DriveMemory &mem = m_memory[id];
-    if (mem.lastRom != values)
-        mem.romFields.clear();
-    mem.lastRom = values;
-    for (int f : fields) {
-        if (!mem.romFields.contains(f))
-            mem.romFields << f;
-    }
-    mem.ramWritten = false;
-}
-
-void TuningView::checkReadBack(const SentValues &sent)
-{
-    const HeldValues held = m_exchange->held();
-    const QStringList problems = m_spec->readBackProblems(sent, held);
-    if (!problems.isEmpty()) {
-        m_mismatch->setText(problems.join(QLatin1Char('\n')));
-        m_mismatch->show();
-    }
-    const QStringList failures = m_exchange->writeFailures();
-    if (failures.isEmpty()) // acknowledged: mark the moment on the live trace
-        m_plot->markChange(sent.rom ? tr("ROM write") : tr("RAM write"));
-    if (!failures.isEmpty())
-        setStatus(tr("The write failed: %1").arg(failures.join(QLatin1Char(' '))), true);
-    else if (!m_readComplete)
-        setStatus(
-            tr("Sent to drive %1, but the read-back did not complete (below).").arg(driveId()),
-            true);
-    else if (!problems.isEmpty())
-        setStatus(tr("Written, but the read-back differs (below)."), true);
-    else
-        setStatus(m_spec->written(sent, driveId()));
-}
-
 void TuningView::refreshWarnings()
 {
-    const DriveMemory mem = m_memory.value(driveId());
-    const HeldValues held = m_exchange->held();
-    bool differs = false;
-    for (int f : mem.romFields) {
-        const std::optional<qint64> v = held.value(f);
-        differs = differs || (mem.lastRom && v && *v != mem.lastRom->value(f));
-    }
-    QString text;
-    if (differs)
-        text = tr("RAM gains differ from what was last written to ROM (%1): a power cycle "
-                  "brings back the ROM values.")
-                   .arg(m_spec->fieldsText(*mem.lastRom, mem.romFields));
-    else if (!mem.lastRom && mem.ramWritten)
-        text = tr("RAM gains were changed in this session and not written to ROM: they are lost "
-                  "at power-off.");
-    m_romWarningActive = hasDrive() && !text.isEmpty();
-    if (!m_romWarningActive && hasDrive()) {
-        if (mem.lastRom)
-            text = tr("RAM holds the gains last written to ROM in this session.");
-        else
-            text = tr("Nothing written to this drive in this session: RAM holds what the drive "
-                      "loaded from ROM at power-on (unless another tool changed it).");
-    }
-    m_romWarning->setText(tr("RAM and ROM: %1").arg(text));
+    const TuningSetCycle::RamRomNote note = m_cycle->ramRomNote();
+    m_romWarningActive = note.warning;
+    m_romWarning->setText(tr("RAM and ROM: %1").arg(note.text));
     const QPalette pal = StatusColors::current();
     m_romWarning->setStyleSheet(m_romWarningActive
                                     ? StatusColors::boxStyle(StatusColors::Role::Warning, pal)
@@ -614,14 +426,14 @@ void TuningView::refreshEnabled()
 {
     // No gain writes while a step test runs: its trace would mix two sets of gains.
     const bool idle = !isBusy() && !m_stepTest->isRunning();
-    const bool read = canSend() && m_readComplete;
+    const bool read = canSendToDrive() && m_cycle->readComplete();
     const bool pending = m_table->pending().has_value();
-    m_read->setEnabled(canSend() && idle);
+    m_read->setEnabled(canSendToDrive() && idle);
     m_writeRam->setEnabled(read && idle && pending);
     m_writeRom->setEnabled(read && idle && pending);
-    m_undo->setEnabled(read && idle && m_memory.value(driveId()).firstRead.has_value());
+    m_undo->setEnabled(read && idle && m_cycle->firstReadAt().has_value());
     record::ParameterSet probe;
-    m_save->setEnabled(hasDrive() && m_spec->toFile(m_exchange->held(), probe));
+    m_save->setEnabled(hasDrive() && m_spec->toFile(m_cycle->held(), probe));
     m_load->setEnabled(read && idle);
     m_table->setEditable(read);
     m_repeatStep->setEnabled(m_stepTest->canRepeat() && idle);
@@ -630,9 +442,8 @@ void TuningView::refreshEnabled()
 
 void TuningView::refreshRestoreButton()
 {
-    const DriveMemory mem = m_memory.value(driveId());
-    if (mem.firstRead) {
-        const QString at = TuningText::time(mem.firstReadAt);
+    if (const std::optional<QTime> firstRead = m_cycle->firstReadAt()) {
+        const QString at = TuningText::time(*firstRead);
         m_undo->setText(tr("Restore values read at %1\u2026").arg(at));
         m_undo->setToolTip(tr("Write the values first read from this drive at %1 back to its "
                               "RAM (asks first), then read back.")
@@ -646,30 +457,27 @@ void TuningView::refreshRestoreButton()
 
 void TuningView::setStatus(const QString &text, bool error)
 {
-    m_status->setText(text);
-    m_status->setStyleSheet(error ? StatusColors::textStyle(StatusColors::Role::Error, palette())
-                                  : QString());
+    m_cycle->setStatus(text, error);
 }
 
 QString TuningView::saveParameters(const QString &path)
 {
     const TuningFileResult r =
-        TuningFile::save(path, *m_spec, m_exchange->held(), driveId(), motor(), series());
+        TuningFile::save(path, *m_spec, m_cycle->held(), driveId(), motor(), series());
     setStatus(r.status, !r.error.isEmpty());
     return r.error;
 }
 
 QString TuningView::loadParameters(const QString &path)
 {
-    if (!canSend() || !m_readComplete || isBusy()) {
+    if (!canSendToDrive() || !m_cycle->readComplete() || isBusy()) {
         const QString error = tr("Nothing was loaded: a file is loaded against the drive's "
                                  "values, so read the drive's values first.");
         setStatus(error, true);
         return error;
     }
     const TuningFileResult r = TuningFile::load(
-        path, *m_spec, m_table->pending().value_or(*ParamSetSpec::known(m_exchange->held())),
-        motor());
+        path, *m_spec, m_table->pending().value_or(*ParamSetSpec::known(m_cycle->held())), motor());
     if (r.values)
         m_table->setPending(*r.values);
     setStatus(r.status, !r.error.isEmpty());

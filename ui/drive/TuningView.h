@@ -9,9 +9,7 @@
 #include <safety/MotionGuard.h>
 #include <safety/SoftLimits.h>
 
-#include <QtCore/QHash>
 #include <QtCore/QJsonObject>
-#include <QtCore/QTime>
 
 #include <functional>
 #include <optional>
@@ -28,8 +26,8 @@ class LoopPlot;
 class StepRunList;
 class StepRunsView;
 class StepTestPanel;
-class ParamExchange;
 class TelemetryStore;
+class TuningSetCycle;
 
 /// Tuning of one drive, in the set its protocol generation has: on V2.3 PID gains (angle, speed,
 /// iq; Kp/Ki 0..255) and acceleration, on V2.35 Kp/Ki/Kd (0..65535) of the three loops
@@ -38,7 +36,8 @@ class TelemetryStore;
 /// RAM (try) or ROM (keep, after a confirmation that says why), and reads back after every write so
 /// that what the drive really holds is shown, mismatches included.
 ///
-/// Never writes what was not read: edits, writes, restores and file loads stay disabled until
+/// Never writes what was not read (TuningSetCycle runs the read / write / read-back cycle and
+/// keeps that rule): edits, writes, restores and file loads stay disabled until
 /// a complete read (every value of the set answered) of the selected drive succeeded on
 /// the current connection; another drive, another session or a reconnection starts over, and
 /// unknown values show as unknown. Unsent edits stay with their drive (kept while another
@@ -97,7 +96,7 @@ public:
     HeldValues driveValues() const;
     /// Every value of the selected drive's set was read on this connection: edits and writes
     /// are possible.
-    bool readComplete() const { return m_readComplete; }
+    bool readComplete() const;
     /// The "RAM differs from ROM" warning is up (the RAM/ROM line shows it highlighted).
     bool romWarningShown() const;
     /// The read-back disagreed with what was written (empty when it agreed).
@@ -116,19 +115,6 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
-    /// What the view remembers about a drive: reads and edits while the connection lasts
-    /// (the next connection may reach other drives at the same IDs), writes for the session.
-    struct DriveMemory {
-        protocol::Generation generation = protocol::Generation::V2_3; ///< of the values below
-        std::optional<ParamValues> firstRead; ///< first complete read on this connection
-        QTime firstReadAt;
-        std::optional<ParamValues> unsentEdit; ///< kept while another drive was selected
-        std::optional<ParamValues> lastRom;    ///< last ROM write this session
-        QVector<int> romFields;                ///< the fields of lastRom that went to ROM
-        bool ramWritten = false; ///< RAM gains written this session after the last ROM write
-    };
-    enum class WriteKind { Ram, Rom, RestoreFirstRead };
-
     void buildUi();
     QWidget *buildButtons();
     QWidget *buildStepTab();
@@ -139,19 +125,9 @@ private:
     const ParamSetSpec *specFor(protocol::Generation generation) const;
     /// Shows the set of the selected drive's generation.
     void selectSpec();
-    void forgetOtherGeneration();
     /// Keeps the drive limits tab on the same session, drive and connection.
     void forwardContext(Changes changes);
-    void startRead(bool takePending);
-    void onReadDone(int id);
-    void takeReadValues(DriveMemory &mem);
-    void keepUnsentEdit();
-    /// Writing is possible now; otherwise says why in the status line.
-    bool mayWrite();
-    void writeParameters(WriteKind kind);
-    bool confirmWrite(WriteKind kind, int id, const ParamValues &values);
-    void onRomWritten(int id, const ParamValues &values, const QVector<int> &fields);
-    void checkReadBack(const SentValues &sent);
+    void wireCycle();
     void refreshWarnings();
     void refreshEnabled();
     void refreshRestoreButton();
@@ -160,7 +136,7 @@ private:
     TuningSetV23 m_v23;
     TuningSetV235 m_v235;
     const ParamSetSpec *m_spec = &m_v23;
-    ParamExchange *m_exchange = nullptr;
+    TuningSetCycle *m_cycle = nullptr;
     ParameterTable *m_table = nullptr;
     QGroupBox *m_box = nullptr;
     QTabWidget *m_tabs = nullptr;
@@ -184,10 +160,6 @@ private:
     QPushButton *m_load = nullptr;
     QMetaObject::Connection m_telemetry;
 
-    QHash<int, DriveMemory> m_memory; ///< per drive ID, for this session
-    int m_shownId = 0; ///< the drive the table shows (DriveView's ID has already changed)
-    bool m_readComplete = false;
-    bool m_takePending = false;
     bool m_romWarningActive = false;
 };
 

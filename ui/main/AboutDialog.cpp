@@ -16,6 +16,7 @@ namespace lk::ui {
 namespace {
 constexpr int kIconSize = 64;
 const char kLicenceUrl[] = "https://www.gnu.org/licenses/gpl-3.0.html";
+const char kLicenceId[] = "GPL-3.0-or-later";
 } // namespace
 
 AboutDialog::AboutDialog(std::function<QString()> diagnostics, QWidget *parent)
@@ -52,7 +53,7 @@ AboutDialog::AboutDialog(std::function<QString()> diagnostics, QWidget *parent)
         tr("<p>Licence: <a href=\"%1\">%2</a>. LK Servo Studio is free software: you may "
            "redistribute and modify it under the terms of the GNU General Public License, "
            "version 3 or any later version. It comes with ABSOLUTELY NO WARRANTY.</p>")
-            .arg(QLatin1String(kLicenceUrl), licenceId()));
+            .arg(QLatin1String(kLicenceUrl), QLatin1String(kLicenceId)));
 
     auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     m_copy = buttons->addButton(tr("Copy diagnostics"), QDialogButtonBox::ActionRole);

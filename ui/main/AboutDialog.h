@@ -17,7 +17,6 @@ public:
     /// `diagnostics` makes the report text when Copy diagnostics is pressed.
     explicit AboutDialog(std::function<QString()> diagnostics, QWidget *parent = nullptr);
 
-    static QString licenceId() { return QStringLiteral("GPL-3.0-or-later"); }
     /// The text of the versions block (program, Qt, system), as shown.
     QString versionsText() const;
     QString licenceText() const;

@@ -169,10 +169,9 @@ void BusController::onConnectionChanged(const bus::ConnectionStatus &status)
 
 void BusController::onError(const transport::TransportError &error)
 {
+    // An unplug never comes here: it is a state (onConnectionChanged), with what happens next.
     if (m_reconnecting)
         return; // the banner already says we are waiting for the adapter: no flood per retry
-    if (error.kind == transport::TransportError::Kind::Unplugged)
-        return; // reported as a state change (onConnectionChanged), with what happens next
     emit message(MessageBanner::Level::Error,
                  tr("Cannot use %1: %2")
                      .arg(m_choice.isSimulator() ? tr("the simulator") : m_choice.port,
@@ -181,7 +180,7 @@ void BusController::onError(const transport::TransportError &error)
 
 void BusController::scan(const bus::ScanOptions &options)
 {
-    if (!m_model->canSend())
+    if (!m_model->connection().isOpen())
         return;
     m_session->stopPolling();
     m_session->forgetMotors();
@@ -206,13 +205,8 @@ void BusController::onScanFinished(const bus::ScanSummary &summary)
                         "A/B wiring, the drives' supply and the 120-ohm termination."));
     keepDrivesAt(summary);
     // The scan's silent IDs are timeouts by design: start the figures afresh for polling.
+    // Each drive's series is the bus's already: learnt with its model (MotorRegistry).
     m_session->resetStatistics();
-    for (const auto &m : summary.motors) {
-        if (m.series)
-            m_session->setSeries(m.id, *m.series);
-        else if (const DriveRecord *d = m_model->drive(m.id); d && d->series)
-            m_session->setSeries(m.id, *d->series);
-    }
     startPolling();
 }
 
@@ -274,7 +268,7 @@ quint64 BusController::emergencyStop(const QVector<int> &first)
 void BusController::clearErrors(int id)
 {
     const auto built = protocol::build::plain(protocol::Command::ClearErrors, id);
-    if (!built.ok() || !m_model->canSend())
+    if (!built.ok() || !m_model->connection().isOpen())
         return;
     m_session->send(*built.request, this, [this](const bus::RequestResult &r) { onCleared(r); });
 }

@@ -23,7 +23,7 @@ namespace lk::ui {
 class BusModel;
 
 /// Runs one bus for the GUI: opens the chosen link (serial port or the built-in simulator),
-/// scans, tells the session each drive's series and polls what it found, reconnects after an
+/// scans and polls what it found, reconnects after an
 /// unplug when allowed, and sends the operator's one-off commands (clear errors, emergency
 /// stop). It writes BusModel, which the panels read; it never draws anything. The session's
 /// own signals (telemetry, traffic, emergencyStopFinished, ...) are not repeated here:

@@ -90,7 +90,7 @@ void DriveViews::syncDrive()
 
 void DriveViews::syncConnection()
 {
-    const bool open = m_model->canSend();
+    const bool open = m_model->connection().isOpen();
     m_tuning->setConnected(open);
     m_control->setConnected(open);
     m_encoder->setConnected(open);

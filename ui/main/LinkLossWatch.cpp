@@ -12,7 +12,7 @@ namespace lk::ui {
 LinkLossWatch::LinkLossWatch(BusModel *model, CommandedMotion *motion, MessageBanner *banner,
                              QObject *parent)
     : QObject(parent), m_model(model), m_motion(motion), m_banner(banner),
-      m_wasOpen(model->canSend())
+      m_wasOpen(model->connection().isOpen())
 {
     connect(m_model, &BusModel::connectionChanged, this, &LinkLossWatch::onConnectionChanged);
     connect(m_banner, &MessageBanner::entryDismissed, this, [this](const QString &key) {
@@ -32,7 +32,7 @@ QVector<int> LinkLossWatch::warnedIds() const
 
 void LinkLossWatch::onConnectionChanged()
 {
-    const bool open = m_model->canSend();
+    const bool open = m_model->connection().isOpen();
     if (m_wasOpen && !open) {
         for (int id : m_motion->movingIds())
             warn(id);
@@ -65,7 +65,7 @@ void LinkLossWatch::onTelemetry(const bus::TelemetryBatch &batch)
 {
     // Samples arrive only while the link is open, after the status that said so: a sample
     // seen now was read after the reconnect.
-    if (m_warned.isEmpty() || !m_model->canSend())
+    if (m_warned.isEmpty() || !m_model->connection().isOpen())
         return;
     for (const bus::TelemetrySample &s : batch) {
         if (m_warned.contains(s.id) && s.has(bus::TelemetryField::Speed) && s.speedDps == 0)

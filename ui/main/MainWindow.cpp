@@ -137,7 +137,7 @@ void MainWindow::buildSafety()
     connect(m_controller->session(), &bus::BusSession::telemetryReceived, m_linkLoss,
             &LinkLossWatch::onTelemetry);
     connect(m_model, &BusModel::connectionChanged, this, [this] {
-        if (!m_model->canSend())
+        if (!m_model->connection().isOpen())
             m_store->breakLines(); // the plots never draw a line across the outage
     });
 }

@@ -1,0 +1,76 @@
+#include "PollRunner.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lk::bus {
+
+PollRunner::PollRunner(const SingleShotTimerFactory &timers, std::function<void()> due,
+                       std::function<void()> ended, QObject *parent)
+    : QObject(parent), m_ended(std::move(ended))
+{
+    // It paces the wire: precise.
+    m_timer = timers(this, std::move(due), Qt::PreciseTimer);
+}
+
+PollRunner::~PollRunner() = default;
+
+void PollRunner::start(const PollPlan &plan, double now, bool linkOpen)
+{
+    m_poller.setPlan(plan, now);
+    m_suspended = !linkOpen;
+    emit pollingChanged(m_poller.isActive() && !m_suspended);
+}
+
+void PollRunner::stop()
+{
+    const bool was = m_poller.isActive() && !m_suspended;
+    m_poller.clear();
+    m_timer->stop();
+    m_suspended = false;
+    if (was)
+        emit pollingChanged(false);
+}
+
+void PollRunner::clear()
+{
+    m_poller.clear();
+    m_timer->stop();
+}
+
+void PollRunner::setSuspended(bool suspended)
+{
+    if (!m_poller.isActive() || m_suspended == suspended)
+        return;
+    m_suspended = suspended;
+    if (suspended)
+        m_timer->stop();
+    emit pollingChanged(!suspended);
+}
+
+std::optional<PendingRequest> PollRunner::next(double now)
+{
+    if (!m_poller.isActive() || m_suspended)
+        return std::nullopt;
+    if (std::optional<protocol::Request> r = m_poller.next(now)) {
+        PendingRequest p;
+        p.req.request = *r;
+        p.req.priority = Priority::Background;
+        p.req.retries = 0; // a missed sample is read again next cycle
+        p.req.origin = RequestOrigin::Poll;
+        p.bytes = r->encode();
+        p.done = [this](const RequestResult &res) {
+            m_poller.completed(res.request.id, res.request.command);
+            m_ended();
+        };
+        p.pollCycle = m_poller.cycle();
+        p.pollCycleStart = m_poller.cycleStart();
+        return p;
+    }
+    const double due = m_poller.nextDueTime(now);
+    if (std::isfinite(due))
+        m_timer->start(std::max(0, static_cast<int>(std::ceil((due - now) * 1e3))));
+    return std::nullopt;
+}
+
+} // namespace lk::bus

@@ -1,0 +1,74 @@
+#pragma once
+
+#include "ConnectionStatus.h"
+#include "TransportFactory.h"
+
+#include <transport/Transport.h>
+
+#include <QtCore/QObject>
+
+#include <memory>
+
+namespace lk::bus {
+
+/// The transport of one bus and its lifecycle, on the bus thread: makes it with the factory
+/// (at a baud), opens it, opens it again after a disconnect, replaces it by one at another
+/// baud, and closes it on purpose without that counting as a disconnect. It words why the link
+/// is not open (the transport's last error, else "closed" / "disconnected") and reports each
+/// change of ConnectionStatus once. An unplug is such a change, not an error: errorOccurred
+/// carries only failures (an open that failed, an I/O error). What a change means for the requests
+/// is its owner's business (BusWorker): stateChanged comes first, the owner reacts, then calls
+/// report().
+class TransportLink : public QObject {
+    Q_OBJECT
+public:
+    TransportLink(TransportFactory factory, int baud, QObject *parent = nullptr);
+    ~TransportLink() override;
+
+    /// Makes a new transport at the current baud (replacing one there is) and opens it.
+    bool start();
+    /// Opens the transport there is, making one first if there is none (after a failed
+    /// start, say). True when it is open.
+    bool reopen();
+    /// Replaces the transport by a new one from the factory at `baud` and opens it.
+    bool reopenAt(int baud);
+    /// Closes and deletes the transport without reporting a disconnect, then reports the link
+    /// Closed for `reason` (always, even when it was already).
+    void close(const QString &reason);
+
+    /// Hands bytes to the transport (none, closed or disconnected: dropped).
+    void write(const QByteArray &bytes);
+    transport::Transport::State state() const;
+    /// The transport's baud, or the baud the next one is made at.
+    int baud() const;
+    /// The transport's last error since the last open attempt (empty: none).
+    QString lastError() const { return m_lastError; }
+
+    /// Emits connectionChanged with the link as it is now, when that differs from the last
+    /// report; `reason` says why it is not open.
+    void report(const QString &reason = {});
+
+signals:
+    void bytesReceived(const QByteArray &bytes);
+    /// The link opened, closed or dropped; `reason` says why when it is not open. Not
+    /// emitted for close() nor for the transport a start() or reopenAt() replaces.
+    void stateChanged(lk::transport::Transport::State state, const QString &reason);
+    /// A failure of the transport; never an unplug (TransportError::Kind::Unplugged).
+    void errorOccurred(const lk::transport::TransportError &error);
+    void connectionChanged(const lk::bus::ConnectionStatus &status);
+
+private:
+    bool open();
+    void attach(std::unique_ptr<transport::Transport> t);
+    void drop();
+    void onTransportState(transport::Transport::State state);
+    void onTransportError(const transport::TransportError &error);
+
+    TransportFactory m_factory;
+    int m_baud;
+    std::unique_ptr<transport::Transport> m_transport;
+    ConnectionStatus m_reported;
+    QString m_lastError;
+};
+
+} // namespace lk::bus

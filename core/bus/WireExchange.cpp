@@ -1,0 +1,223 @@
+#include "WireExchange.h"
+
+#include "BusDiagnostics.h"
+#include "BusTiming.h"
+#include "MotorRegistry.h"
+#include "TransportLink.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lk::bus {
+
+using protocol::Command;
+
+namespace {
+QString commandText(const protocol::Request &r)
+{
+    return QStringLiteral("%1 (ID %2)").arg(protocol::CommandTable::name(r.command)).arg(r.id);
+}
+} // namespace
+
+WireExchange::WireExchange(TransportLink &link, const MotorRegistry &motors,
+                           BusDiagnostics &diagnostics, std::shared_ptr<BusClock> clock,
+                           const SingleShotTimerFactory &timers, const BusConfig &config,
+                           QObject *parent)
+    : QObject(parent), m_link(link), m_motors(motors), m_diagnostics(diagnostics),
+      m_clock(std::move(clock)), m_timeout(config)
+{
+    m_matcher.setLocalEcho(config.localEcho);
+    // Both pace the wire: precise.
+    m_replyTimer = timers(
+        this, [this] { onTimeout(); }, Qt::PreciseTimer);
+    m_quietTimer = timers(
+        this,
+        [this] {
+            if (m_outcomes.quietOver)
+                m_outcomes.quietOver();
+        },
+        Qt::PreciseTimer);
+}
+
+WireExchange::~WireExchange() = default;
+
+void WireExchange::setConfig(const BusConfig &config)
+{
+    m_timeout.setConfig(config);
+    m_matcher.setLocalEcho(config.localEcho);
+}
+
+void WireExchange::restartStream()
+{
+    m_parser.reset();
+    m_matcher.reset();
+}
+
+int WireExchange::baud() const
+{
+    return m_link.baud();
+}
+
+void WireExchange::send(Pending p)
+{
+    ++p.attempts;
+    const protocol::Request &r = p.req.request;
+    m_diagnostics.counters().requestSent(r.id, p.attempts > 1);
+    m_diagnostics.recordSent(p.bytes, r.id);
+    const double timeoutS = p.attempts == 1 && p.req.firstTimeoutS > 0
+                                ? p.req.firstTimeoutS
+                                : m_timeout.timeoutS(r.command, baud());
+    const protocol::Request request = r;
+    const QByteArray bytes = p.bytes;
+    m_inflight = std::move(p);
+    m_link.write(bytes);
+    if (!m_inflight)
+        return; // the write lost the link, which failed the request
+    // The reply clock starts once the bytes are handed to the port, not before: a thread
+    // preempted between the two would otherwise have spent part of the timeout (and of a
+    // probe's quiet period) before the request even left, and could talk over a drive that
+    // answers in time. Replies are only read from the event loop, so expecting one now is
+    // early enough.
+    m_sentNs = m_clock->nowNs();
+    m_matcher.expect(request, bytes, m_sentNs, m_sentNs + earliestReplyNs(request.command));
+    m_replyTimer->start(std::max(1, static_cast<int>(std::ceil(timeoutS * 1e3))));
+}
+
+qint64 WireExchange::earliestReplyNs(Command command) const
+{
+    const double wireS = BusTiming::wireTimeS(BusTiming::requestBytes(command),
+                                              BusTiming::replyBytes(command), baud());
+    return static_cast<qint64>(m_recentLatency.earliestReplyS(wireS) * 1e9);
+}
+
+std::optional<PendingRequest> WireExchange::abort()
+{
+    if (!m_inflight)
+        return std::nullopt;
+    std::optional<Pending> p = std::move(m_inflight);
+    m_inflight.reset();
+    m_matcher.clear();
+    m_replyTimer->stop();
+    return p;
+}
+
+void WireExchange::fail(RequestStatus status, const QString &reason)
+{
+    std::optional<Pending> p = abort();
+    if (p && m_outcomes.failed)
+        m_outcomes.failed(std::move(*p), status, reason);
+}
+
+void WireExchange::onTimeout()
+{
+    if (!m_inflight)
+        return;
+    const protocol::Request &r = m_inflight->req.request;
+    m_diagnostics.counters().timedOut(r.id);
+    m_matcher.timedOut();
+    beginQuiet(r, m_inflight->attempts == 1 && m_inflight->req.firstTimeoutS > 0);
+    m_diagnostics.recordTimeout(r.id, static_cast<quint8>(r.command));
+    fail(RequestStatus::Timeout,
+         tr("no reply to %1 after %n attempt(s)", nullptr, m_inflight->attempts)
+             .arg(commandText(r)));
+}
+
+void WireExchange::beginQuiet(const protocol::Request &request, bool probe)
+{
+    const qint64 lengthNs = static_cast<qint64>(m_timeout.quietS(request.command, baud()) * 1e9);
+    // Silence is the common answer to a probe (scan, emergency stop), so it is not made to
+    // wait twice: only until a reply from a drive that keeps its turnaround could have come
+    // through this link, counted from the send. Often that is over already.
+    const qint64 untilNs =
+        probe ? m_sentNs +
+                    static_cast<qint64>(m_timeout.replyDeadlineS(request.command, baud()) * 1e9)
+              : m_clock->nowNs() + lengthNs;
+    m_quiet.begin(untilNs, lengthNs, request.id, static_cast<quint8>(request.command));
+}
+
+bool WireExchange::holdForQuiet()
+{
+    const qint64 nowNs = m_clock->nowNs();
+    const qint64 leftNs = m_quiet.leftNs(nowNs);
+    if (leftNs <= 0)
+        return false;
+    if (!m_quietTimer->isActive() || m_quietTimerDueNs < nowNs + leftNs) {
+        const int ms = static_cast<int>((leftNs + 999'999) / 1'000'000);
+        m_quietTimer->start(ms);
+        m_quietTimerDueNs = nowNs + qint64(ms) * 1'000'000;
+    }
+    return true;
+}
+
+void WireExchange::stop()
+{
+    m_replyTimer->stop();
+    m_quietTimer->stop();
+}
+
+bool WireExchange::feed(const QByteArray &bytes)
+{
+    if (!m_inflight) // with a request in flight these are its reply, not an old one's tail
+        m_quiet.bytesArrived(m_clock->nowNs());
+    m_quiet.chunkStarted();
+    m_parser.feed(bytes, [this](const protocol::ParseEvent &ev) { onParseEvent(ev); });
+    if (!m_quiet.endIfAnswered(m_parser.pendingBytes() == 0, m_clock->nowNs()))
+        return false;
+    m_quietTimer->stop();
+    return true;
+}
+
+void WireExchange::onParseEvent(const protocol::ParseEvent &ev)
+{
+    m_diagnostics.recordParseEvent(ev);
+    StatisticsCollector &stats = m_diagnostics.counters();
+    using V = ReplyMatcher::Verdict;
+    const protocol::Frame &f = ev.frame;
+    ReplyMatcher::Outcome out =
+        m_matcher.classify(ev, m_motors.decodeContext(f.id), m_clock->nowNs());
+    switch (out.verdict) {
+    case V::Fault:
+        stats.parseFault(ev);
+        return;
+    case V::CorruptReply:
+        // Retry now rather than wait for the timeout.
+        stats.parseFault(ev);
+        fail(RequestStatus::Error, tr("corrupt reply to %1 (bad data checksum)")
+                                       .arg(commandText(m_inflight->req.request)));
+        return;
+    case V::LocalEcho:
+        stats.localEcho();
+        return;
+    case V::Undecodable:
+        stats.undecodable(f.id);
+        fail(RequestStatus::Error,
+             tr("undecodable reply to %1").arg(commandText(m_inflight->req.request)));
+        return;
+    case V::LateReply:
+        // The link is slower than the margin assumed: let the margin learn from it.
+        stats.lateReply(f.id);
+        m_timeout.addLateReply(static_cast<Command>(f.command), baud(), out.lateLatencyS);
+        m_lateRequestSentS = std::max(m_lateRequestSentS, now() - out.lateLatencyS);
+        m_quiet.lateFrameParsed(f.id, f.command);
+        return;
+    case V::Unexpected:
+        stats.unexpectedFrame(f.id);
+        return;
+    case V::Reply:
+        takeReply(std::move(*out.reply));
+        return;
+    }
+}
+
+void WireExchange::takeReply(protocol::Reply reply)
+{
+    const double latency = static_cast<double>(m_clock->nowNs() - m_sentNs) * 1e-9;
+    m_recentLatency.add(latency);
+    m_diagnostics.counters().replyReceived(reply.id, latency);
+    m_timeout.addReply(reply.command, baud(), latency);
+    std::optional<Pending> p = abort();
+    if (p && m_outcomes.replied)
+        m_outcomes.replied(std::move(*p), std::move(reply), latency);
+}
+
+} // namespace lk::bus
