@@ -2339,6 +2339,10 @@
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
+    <message>
+        <source>rel.</source>
+        <translation>相对值</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::HelpMenu</name>
@@ -2674,6 +2678,10 @@
     <message>
         <source>The same with a ±5 % band.</source>
         <translation>同上，范围为 ±5 %。</translation>
+    </message>
+    <message>
+        <source>Peak iq or power</source>
+        <translation>峰值 iq 或功率</translation>
     </message>
 </context>
 <context>
@@ -3620,6 +3628,22 @@
         <source>Angle (°)</source>
         <translation>角度 (°)</translation>
     </message>
+    <message>
+        <source>Reset zoom</source>
+        <translation>重置缩放</translation>
+    </message>
+    <message>
+        <source>Show every sample again after zooming or panning</source>
+        <translation>缩放或平移后重新显示全部采样</translation>
+    </message>
+    <message>
+        <source>Hover for values · wheel: zoom · drag: pan · Shift+drag: select a range</source>
+        <translation>悬停查看数值 · 滚轮：缩放 · 拖动：平移 · Shift+拖动：选择范围</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::StepRunFileText</name>
@@ -3747,10 +3771,6 @@
         <translation>%1 个，%2 Hz</translation>
     </message>
     <message>
-        <source>Best of the runs shown.</source>
-        <translation>所显示测试中的最佳值。</translation>
-    </message>
-    <message>
         <source>Run %1</source>
         <translation>测试 %1</translation>
     </message>
@@ -3773,6 +3793,16 @@
     <message>
         <source>Samples</source>
         <translation>采样</translation>
+    </message>
+    <message numerus="yes">
+        <source>Best of the %n comparable run(s) shown (same loop and unit).</source>
+        <translation>
+            <numerusform>所显示的 %n 个可比测试中最佳（相同环路和单位）。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not compared: no other run shown has the same loop and unit.</source>
+        <translation>未比较：所显示的其他测试中没有相同环路和单位的。</translation>
     </message>
 </context>
 <context>
@@ -4011,10 +4041,6 @@
     <message>
         <source>A</source>
         <translation>A</translation>
-    </message>
-    <message>
-        <source>rel.</source>
-        <translation>相对值</translation>
     </message>
     <message>
         <source>°/s</source>

@@ -10,6 +10,8 @@
 #include <QtCore/QLocale>
 #include <QtGui/QFont>
 
+#include <algorithm>
+
 namespace lk::ui {
 
 using tuning::StepLoop;
@@ -37,23 +39,32 @@ void StepRunsModel::rebuild()
         }
     }
     // Metrics once per change, not per painted cell. Best values among the overlaid runs
-    // only: the comparison the user is looking at.
+    // only (the comparison the user is looking at), and only between runs that measure the
+    // metric alike: the same loop, the same unit (RunComparison::comparableKey()).
     m_metrics.clear();
     QVector<StepRun> shown;
+    QVector<tuning::EdgeMetrics> shownMetrics;
     QVector<int> columns;
     for (int c = 0; c < m_runs->runs().size(); ++c) {
         m_metrics << m_runs->runs().at(c).stepMetrics();
         if (m_runs->isShown(m_runs->runs().at(c).number)) {
             shown << m_runs->runs().at(c);
+            shownMetrics << m_metrics.last();
             columns << c;
         }
     }
     m_best.clear();
+    m_peers.clear();
     for (StepMetricKind kind : MetricText::all()) {
         QVector<int> best;
-        for (int i : tuning::RunComparison::best(shown, kind))
+        for (int i : tuning::RunComparison::best(shown, kind, shownMetrics))
             best << columns.at(i);
         m_best << best;
+        QVector<int> peers(m_runs->runs().size(), 0);
+        for (int i = 0; i < shown.size(); ++i)
+            peers[columns.at(i)] =
+                int(tuning::RunComparison::comparableWith(shown, i, kind).size());
+        m_peers << peers;
     }
     endResetModel();
 }
@@ -145,8 +156,15 @@ QVariant StepRunsModel::metricData(int column, StepMetricKind kind, int role) co
     }
     case Qt::BackgroundRole:
         return best ? QVariant(StatusColors::background(StatusColors::Role::Ok)) : QVariant();
-    case Qt::ToolTipRole:
-        return best ? tr("Best of the runs shown.") : QVariant();
+    case Qt::ToolTipRole: {
+        const int peers = m_peers.value(int(MetricText::all().indexOf(kind))).value(column);
+        if (best)
+            return tr("Best of the %n comparable run(s) shown (same loop and unit).", nullptr,
+                      peers);
+        if (peers == 1)
+            return tr("Not compared: no other run shown has the same loop and unit.");
+        return {};
+    }
     default:
         return {};
     }
@@ -203,10 +221,17 @@ QVariant StepRunsModel::headerData(int section, Qt::Orientation orientation, int
             return runColor(run.number);
         return {};
     }
+    const bool anyPower = std::any_of(m_runs->runs().begin(), m_runs->runs().end(),
+                                      [](const StepRun &r) { return r.trace.effortIsPower; });
+    const bool anyCurrent = std::any_of(m_runs->runs().begin(), m_runs->runs().end(),
+                                        [](const StepRun &r) { return !r.trace.effortIsPower; });
     if (role == Qt::ToolTipRole && section >= kFixedRows &&
         section < kFixedRows + MetricText::all().size()) {
-        const bool power = !m_runs->runs().isEmpty() && m_runs->runs().first().trace.effortIsPower;
-        return MetricText::definition(MetricText::all().at(section - kFixedRows), power);
+        const StepMetricKind kind = MetricText::all().at(section - kFixedRows);
+        if (anyPower && anyCurrent)
+            return MetricText::definition(kind, false) + QLatin1Char(' ') +
+                   MetricText::definition(kind, true);
+        return MetricText::definition(kind, anyPower);
     }
     if (role != Qt::DisplayRole)
         return {};
@@ -226,8 +251,9 @@ QVariant StepRunsModel::headerData(int section, Qt::Orientation orientation, int
     }
     const int metric = section - kFixedRows;
     if (metric < MetricText::all().size()) {
-        const bool power = !m_runs->runs().isEmpty() && m_runs->runs().first().trace.effortIsPower;
-        return MetricText::name(MetricText::all().at(metric), power);
+        const StepMetricKind kind = MetricText::all().at(metric);
+        return anyPower && anyCurrent ? MetricText::mixedName(kind)
+                                      : MetricText::name(kind, anyPower);
     }
     return m_keys.value(metric - int(MetricText::all().size()));
 }
