@@ -3737,6 +3737,17 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::StepRunList</name>
+    <message>
+        <source>Run %1</source>
+        <translation>测试 %1</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::StepRunsModel</name>
     <message>
         <source>shown</source>
@@ -3769,10 +3780,6 @@
     <message>
         <source>%1 at %2 Hz</source>
         <translation>%1 个，%2 Hz</translation>
-    </message>
-    <message>
-        <source>Run %1</source>
-        <translation>测试 %1</translation>
     </message>
     <message>
         <source>Overlay</source>
@@ -3838,10 +3845,6 @@
     <message>
         <source>Load step runs</source>
         <translation>加载阶跃测试</translation>
-    </message>
-    <message>
-        <source>Run %1</source>
-        <translation>测试 %1</translation>
     </message>
     <message>
         <source>No runs yet: run a step test, change a gain, write it to RAM and repeat the test to compare.</source>

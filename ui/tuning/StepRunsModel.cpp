@@ -47,7 +47,7 @@ void StepRunsModel::rebuild()
     QVector<int> columns;
     for (int c = 0; c < m_runs->runs().size(); ++c) {
         m_metrics << m_runs->runs().at(c).stepMetrics();
-        if (m_runs->isShown(m_runs->runs().at(c).number)) {
+        if (m_runs->isShown(m_runs->keyAt(c))) {
             shown << m_runs->runs().at(c);
             shownMetrics << m_metrics.last();
             columns << c;
@@ -95,9 +95,9 @@ QVector<int> StepRunsModel::bestColumns(StepMetricKind kind) const
     return m_best.value(int(MetricText::all().indexOf(kind)));
 }
 
-QColor StepRunsModel::runColor(int number)
+QColor StepRunsModel::runColor(int key)
 {
-    return SeriesColors::at(number - 1);
+    return SeriesColors::at(key - 1);
 }
 
 QString StepRunsModel::fixedText(int column, FixedRow row) const
@@ -177,7 +177,7 @@ QVariant StepRunsModel::data(const QModelIndex &index, int role) const
     const int row = index.row();
     const StepRun &run = m_runs->runs().at(index.column());
     if (row == Overlay && role == Qt::CheckStateRole)
-        return m_runs->isShown(run.number) ? Qt::Checked : Qt::Unchecked;
+        return m_runs->isShown(m_runs->keyAt(index.column())) ? Qt::Checked : Qt::Unchecked;
     if (row < kFixedRows)
         return role == Qt::DisplayRole ? QVariant(fixedText(index.column(), FixedRow(row)))
                                        : QVariant();
@@ -196,7 +196,7 @@ bool StepRunsModel::setData(const QModelIndex &index, const QVariant &value, int
 {
     if (!index.isValid() || index.row() != Overlay || role != Qt::CheckStateRole)
         return false;
-    m_runs->setShown(m_runs->runs().at(index.column()).number,
+    m_runs->setShown(m_runs->keyAt(index.column()),
                      value.toInt() == Qt::Checked); // rebuild() resets the model
     return true;
 }
@@ -214,11 +214,10 @@ QVariant StepRunsModel::headerData(int section, Qt::Orientation orientation, int
     if (orientation == Qt::Horizontal) {
         if (section >= columnCount())
             return {};
-        const StepRun &run = m_runs->runs().at(section);
         if (role == Qt::DisplayRole)
-            return run.label.isEmpty() ? tr("Run %1").arg(run.number) : run.label;
+            return m_runs->title(section);
         if (role == Qt::DecorationRole)
-            return runColor(run.number);
+            return runColor(m_runs->keyAt(section));
         return {};
     }
     const bool anyPower = std::any_of(m_runs->runs().begin(), m_runs->runs().end(),

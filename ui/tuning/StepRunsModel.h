@@ -35,7 +35,8 @@ public:
     /// The columns holding the best value of `kind` among comparable overlaid runs (several
     /// when they tie; one per group of comparable runs; none for a run alone in its group).
     QVector<int> bestColumns(StepMetricKind kind) const;
-    static QColor runColor(int number);
+    /// The colour of the run with StepRunList key `key` (table header and overlay alike).
+    static QColor runColor(int key);
 
 private:
     void rebuild();

@@ -9,6 +9,7 @@
 #include <tuning/StepOverlayChart.h>
 #include <tuning/StepRunList.h>
 #include <tuning/StepRunsModel.h>
+#include <tuning/StepRunsView.h>
 
 #include <QtCharts/QChart>
 #include <QtCharts/QLineSeries>
@@ -58,6 +59,7 @@ private slots:
     void wheelZoomsDragPansResetRestores();
     void selectingARangeShowsIt();
     void hoverReadsEveryRunAtTheCursor();
+    void loadedRunsKeepTheirNumbersAndNames();
 };
 
 void tst_StepRunsView::runsOfAnotherLoopAreNotCompared()
@@ -81,7 +83,7 @@ void tst_StepRunsView::runsOfAnotherLoopAreNotCompared()
                 .toString()
                 .contains(QStringLiteral("Not compared")));
     // A run alone in its loop is best of nothing, however good its numbers.
-    runs.setShown(runs.runs().at(2).number, false);
+    runs.setShown(runs.keyAt(2), false);
     QVERIFY(model.bestColumns(StepMetricKind::RiseTime).isEmpty());
 }
 
@@ -234,6 +236,50 @@ void tst_StepRunsView::hoverReadsEveryRunAtTheCursor()
              qPrintable(text));
     QTest::mouseMove(view->viewport(), QPoint(1, 1)); // off the plot area
     QTRY_VERIFY(!chart.cursorTime().has_value());
+}
+
+// Runs come back from a file as they were saved: "Run 3" stays "Run 3", a named run keeps its
+// name; a run of this session is numbered after them; a loaded run whose title the session
+// already shows says which file it came from.
+void tst_StepRunsView::loadedRunsKeepTheirNumbersAndNames()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("monday.lkruns.json"));
+    {
+        ui::StepRunList monday;
+        ui::StepRunsView view(&monday);
+        for (int i = 0; i < 4; ++i)
+            monday.add(makeRun(RunShape{}));
+        monday.remove(monday.keyAt(0)); // Run 1 and Run 2 dropped: 3 and 4 are kept
+        monday.remove(monday.keyAt(0));
+        tuning::StepRun named = makeRun(RunShape{});
+        named.label = QStringLiteral("stiffer");
+        monday.add(named); // Run 5, named
+        QCOMPARE(view.saveRuns(path), QString());
+    }
+    ui::StepRunList runs;
+    ui::StepRunsView view(&runs);
+    QCOMPARE(view.loadRuns(path), QString());
+    QCOMPARE(runs.runs().size(), 3);
+    QCOMPARE(runs.runs().at(0).number, 3);
+    QCOMPARE(runs.runs().at(1).number, 4);
+    QCOMPARE(runs.runs().at(2).number, 5);
+    StepRunsModel *model = view.model();
+    QCOMPARE(model->headerData(0, Qt::Horizontal).toString(), QStringLiteral("Run 3"));
+    QCOMPARE(model->headerData(1, Qt::Horizontal).toString(), QStringLiteral("Run 4"));
+    QCOMPARE(model->headerData(2, Qt::Horizontal).toString(), QStringLiteral("stiffer"));
+    QCOMPARE(view.overlay()->responseSeries(0)->name(), QStringLiteral("Run 3"));
+    // This session's next run follows the numbers shown.
+    const int key = runs.add(makeRun(RunShape{}));
+    QCOMPARE(runs.find(key)->number, 6);
+    // The same file again: the same titles, told apart by the file.
+    QCOMPARE(view.loadRuns(path), QString());
+    QCOMPARE(runs.runs().at(4).number, 3);
+    QCOMPARE(model->headerData(4, Qt::Horizontal).toString(),
+             QStringLiteral("Run 3 (monday.lkruns.json)"));
+    // Each run keeps a colour of its own.
+    QVERIFY(model->headerData(0, Qt::Horizontal, Qt::DecorationRole) !=
+            model->headerData(4, Qt::Horizontal, Qt::DecorationRole));
 }
 
 QTEST_MAIN(tst_StepRunsView)
