@@ -1,6 +1,7 @@
 #include "CommandedMotion.h"
 
 #include <bus/BusSession.h>
+#include <panels/Format.h>
 #include <protocol/Command.h>
 
 #include <QtCore/QRegularExpression>
@@ -76,7 +77,7 @@ QString CommandedMotion::describe(const protocol::Request &r)
     if (const auto *t = std::get_if<TorqueCommand>(&r.payload))
         return tr("torque %1 A").arg(number(t->iqA()));
     if (const auto *p = std::get_if<OpenLoopCommand>(&r.payload))
-        return tr("open-loop power %1").arg(p->power);
+        return tr("open-loop power %1").arg(Format::power(p->power));
     if (const auto *m = std::get_if<MultiPositionCommand>(&r.payload))
         return tr("position %1\u00b0").arg(number(m->angleRaw * 0.01));
     if (const auto *a = std::get_if<SinglePositionCommand>(&r.payload))
