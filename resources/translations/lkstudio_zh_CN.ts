@@ -4747,5 +4747,9 @@
         <source>%1 is not plugged in: showing the built-in simulated bus. Pick the port and press Connect when the adapter is in.</source>
         <translation>%1 未插上：显示内置模拟总线。转换器插好后，请选择串口并点击“连接”。</translation>
     </message>
+    <message>
+        <source>The simulated drives move on their own (a demo) so that the plots show live values. Command any drive, or press Esc, and the demo stops.</source>
+        <translation>模拟驱动正在自行运动（演示），以便曲线显示实时数值。对任一驱动发出命令或按 Esc，演示即停止。</translation>
+    </message>
 </context>
 </TS>
