@@ -43,6 +43,14 @@ bool near(double a, double b, double tolerance = 1e-9)
     return std::abs(a - b) <= tolerance * std::max(1.0, std::abs(b));
 }
 
+/// The chart on screen at a size where its gestures have room.
+bool showChart(ui::StepOverlayChart &chart)
+{
+    chart.resize(900, 600);
+    chart.show();
+    return QTest::qWaitForWindowExposed(&chart);
+}
+
 ui::OverlayRun overlay(const QString &label, const RunShape &shape)
 {
     return {label, Qt::blue, makeRun(shape).trace};
@@ -147,9 +155,7 @@ void tst_StepRunsView::powerHasAnAxisOfItsOwn()
 void tst_StepRunsView::wheelZoomsDragPansResetRestores()
 {
     ui::StepOverlayChart chart;
-    chart.resize(900, 600);
-    chart.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&chart));
+    QVERIFY(showChart(chart));
     chart.setRuns({overlay("A", RunShape{})});
     const ui::TimeSpan all = chart.dataRange();
     QVERIFY(near(all.begin, -0.1) && near(all.end, 0.9));
@@ -187,9 +193,7 @@ void tst_StepRunsView::wheelZoomsDragPansResetRestores()
 void tst_StepRunsView::selectingARangeShowsIt()
 {
     ui::StepOverlayChart chart;
-    chart.resize(900, 600);
-    chart.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&chart));
+    QVERIFY(showChart(chart));
     chart.setRuns({overlay("A", RunShape{})});
     ui::TimeChartView *view = chart.responseView();
     const QPoint from = plotPoint(view, 0.1);
@@ -207,9 +211,7 @@ void tst_StepRunsView::selectingARangeShowsIt()
 void tst_StepRunsView::hoverReadsEveryRunAtTheCursor()
 {
     ui::StepOverlayChart chart;
-    chart.resize(900, 600);
-    chart.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&chart));
+    QVERIFY(showChart(chart));
     const tuning::StepRun a = makeRun(RunShape{});
     const tuning::StepRun b = makeRun(msPower(250, 0.02));
     chart.setRuns({{"Run A", Qt::blue, a.trace}, {"Run B", Qt::red, b.trace}});
