@@ -97,6 +97,22 @@ void lowerSupplyWhenFound(lk::ui::MainWindow &window, int id)
     });
 }
 
+/// The built-in bus moves on its own (a first run shows live plots), and the banner says so
+/// for as long as it does.
+void startDemo(lk::ui::MainWindow &window, DemoMotion &demo)
+{
+    const QString key = QStringLiteral("demo-motion");
+    window.banner()->setEntry(
+        key, lk::ui::MessageBanner::Level::Info,
+        QApplication::translate("main", "The simulated drives move on their own (a demo) so that "
+                                        "the plots show live values. Command any drive, or "
+                                        "press Esc, and the demo stops.")
+            .toHtmlEscaped());
+    QObject::connect(&demo, &DemoMotion::stopped, window.banner(),
+                     [&window, key] { window.banner()->clearEntry(key); });
+    demo.start();
+}
+
 /// Save the window to `file` after `delayMs`, then quit (exit code 1 if it could not).
 void screenshotLater(lk::ui::MainWindow &window, const QString &file, int delayMs)
 {
@@ -258,13 +274,12 @@ int runStudio(const lk::ui::StartupOptions &options)
                 .arg(rememberedPort));
     }
     DemoMotion demo(window.controller());
-    if (options.simMotion) {
-        if (!choice.isSimulator()) {
-            std::fprintf(stderr, "lkstudio: --sim-motion works only on the simulated bus\n");
-            return 2;
-        }
-        demo.start();
+    if (options.simMotion && !choice.isSimulator()) {
+        std::fprintf(stderr, "lkstudio: --sim-motion works only on the simulated bus\n");
+        return 2;
     }
+    if (DemoMotion::startsOnItsOwn(options, choice))
+        startDemo(window, demo);
     if (!options.screenshotFile.isEmpty())
         screenshotLater(window, options.screenshotFile, options.screenshotDelayMs);
     return QApplication::exec();

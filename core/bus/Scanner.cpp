@@ -23,14 +23,68 @@ Scanner::Scanner(BusWorker &worker, const SingleShotTimerFactory &timers, QObjec
 {
 }
 
-double Scanner::estimatedSeconds(int idCount, int baud, const BusConfig &config)
+double Scanner::estimatedSeconds(int idCount, int baud, const BusConfig &config, int answering)
 {
-    const protocol::Command probe = protocol::Command::ReadState1;
-    const double timeout = BusTiming::replyTimeoutS(probe, baud, config.minMarginMs / 1000.0);
-    const double quiet = BusTiming::kTurnaroundS +
-                         BusTiming::wireTimeS(0, BusTiming::maxReplyBytes(probe), baud) +
-                         config.initialMarginMs / 1000.0;
-    return idCount * (timeout + quiet);
+    answering = std::clamp(answering, 0, std::max(0, idCount));
+    const int silent = std::max(0, idCount) - answering;
+    // The reply timer runs in whole milliseconds (BusWorker::sendAttempt rounds up), and for
+    // a probe the quiet period ends at the same deadline (BusWorker::beginQuiet): a silent ID
+    // costs the rounded timeout and no more.
+    const double timeoutMs =
+        1000 * BusTiming::replyTimeoutS(Command::ReadState1, baud, config.minMarginMs / 1000.0);
+    const double silentS = std::max(1.0, std::ceil(timeoutMs - 1e-9)) / 1000;
+    const double driveS = BusTiming::transactionTimeS(Command::ReadState1, baud) +
+                          BusTiming::transactionTimeS(Command::ReadModel, baud);
+    // After pass 1 the scan listens for late replies (endPass) as long as a fresh link's
+    // margin, when an ID was silent.
+    const double graceS =
+        silent > 0
+            ? std::max(1.0, std::ceil(std::min(config.maxMarginMs, config.initialMarginMs))) / 1000
+            : 0.0;
+    return silent * silentS + answering * driveS + graceS;
+}
+
+double Scanner::estimatedSeconds(const ScanOptions &options, int baud, const BusConfig &config,
+                                 const QMap<int, int> &answeringAt)
+{
+    const int ids = std::max(0, options.lastId - options.firstId + 1);
+    double total = 0;
+    for (int b : baudsToScan(options, baud))
+        total += estimatedSeconds(ids, b, config, answeringAt.value(b));
+    return total;
+}
+
+QVector<int> Scanner::baudsToScan(const ScanOptions &options, int baud)
+{
+    if (!options.sweepBauds)
+        return {baud};
+    QVector<int> bauds;
+    const QVector<int> asked =
+        options.bauds.isEmpty()
+            ? QVector<int>(BusTiming::standardBauds().begin(), BusTiming::standardBauds().end())
+            : options.bauds;
+    for (int b : asked) {
+        if (BusTiming::isStandardBaud(b) && !bauds.contains(b))
+            bauds.append(b);
+    }
+    return bauds;
+}
+
+int Scanner::driveCount(const QVector<FoundMotor> &motors)
+{
+    const auto sameDrive = [](const FoundMotor &a, const FoundMotor &b) {
+        if (a.id != b.id)
+            return false;
+        return !a.modelKnown || !b.modelKnown ||
+               (a.model.motorName == b.model.motorName && a.model.driverName == b.model.driverName);
+    };
+    int count = 0;
+    for (int i = 0; i < motors.size(); ++i) {
+        const bool seen = std::any_of(motors.begin(), motors.begin() + i,
+                                      [&](const FoundMotor &m) { return sameDrive(m, motors[i]); });
+        count += seen ? 0 : 1;
+    }
+    return count;
 }
 
 std::optional<protocol::Series> Scanner::inferSeries(const protocol::ModelInfo &model)
@@ -64,16 +118,7 @@ void Scanner::start(const ScanOptions &options)
              tr("scan range %1..%2 is outside 1..32").arg(options.firstId).arg(options.lastId));
         return;
     }
-    if (options.sweepBauds) {
-        for (int b : options.bauds.isEmpty() ? QVector<int>(BusTiming::standardBauds().begin(),
-                                                            BusTiming::standardBauds().end())
-                                             : options.bauds) {
-            if (BusTiming::isStandardBaud(b) && !m_bauds.contains(b))
-                m_bauds.append(b);
-        }
-    } else {
-        m_bauds.append(m_originalBaud);
-    }
+    m_bauds = baudsToScan(options, m_originalBaud);
     if (m_bauds.isEmpty()) {
         stop(false, tr("no valid baud to scan"));
         return;
@@ -244,7 +289,7 @@ void Scanner::next()
     if (m_pass == 1) {
         ++m_done;
         emit progress(
-            ScanProgress{currentBaud(), currentId(), m_done, m_total, int(m_found.size())});
+            ScanProgress{currentBaud(), currentId(), m_done, m_total, driveCount(m_found)});
     }
     if (m_cancelled) {
         finish();

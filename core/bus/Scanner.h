@@ -5,6 +5,7 @@
 #include "ScanTypes.h"
 #include "SingleShotTimer.h"
 
+#include <QtCore/QMap>
 #include <QtCore/QObject>
 #include <QtCore/QVector>
 
@@ -50,10 +51,26 @@ public:
     /// A baud sweep is replacing the transport: its close is not a disconnect.
     bool isReopening() const { return m_reopening; }
 
-    /// How long a scan of `idCount` IDs at `baud` takes before one was measured: every ID
-    /// silent (a sparse bus, the common case), each costing a probe's timeout and the quiet
-    /// after it with the margins of `config` as a new session has them.
-    static double estimatedSeconds(int idCount, int baud, const BusConfig &config);
+    /// How long pass 1 of a scan of `idCount` IDs at `baud` takes when `answering` of them
+    /// answer, with the margins of `config` as a new session has them: each silent ID waits
+    /// out the probe's timeout (BusConfig::minMarginMs, on a timer of whole milliseconds;
+    /// a probe's quiet period ends with it while the link is as fast as that margin), each
+    /// drive costs its probe and its read_model on the wire, and a pass with a silent ID then
+    /// listens for stragglers (BusConfig::initialMarginMs, as a fresh link has it). A slow
+    /// link's second pass and the host's own delays are left out.
+    static double estimatedSeconds(int idCount, int baud, const BusConfig &config,
+                                   int answering = 0);
+    /// estimatedSeconds() over every baud `options` scans (the link's `baud` unless it
+    /// sweeps); `answeringAt` gives how many IDs of the range are expected to answer at a
+    /// baud (none when absent).
+    static double estimatedSeconds(const ScanOptions &options, int baud, const BusConfig &config,
+                                   const QMap<int, int> &answeringAt = {});
+    /// The bauds `options` scans, in order, when the link is at `baud`.
+    static QVector<int> baudsToScan(const ScanOptions &options, int baud);
+    /// How many drives `motors` holds: a drive that answered at several bauds (a simulated
+    /// bus answers at every one) is one drive. Hits of one ID are one drive unless both
+    /// read their model and the models differ.
+    static int driveCount(const QVector<FoundMotor> &motors);
 
     /// Series from the motor name, else from the driver name; nullopt when neither tells.
     static std::optional<protocol::Series> inferSeries(const protocol::ModelInfo &model);

@@ -1,5 +1,7 @@
 #include "RunComparison.h"
 
+#include <QtCore/QStringList>
+
 #include <algorithm>
 #include <cmath>
 
@@ -60,21 +62,52 @@ QVector<int> RunComparison::best(const QVector<EdgeMetrics> &metrics, MetricColu
     return closestToZero(values);
 }
 
-QVector<int> RunComparison::best(const QVector<StepRun> &runs, MetricColumn column)
+QString RunComparison::comparableKey(const StepRun &run, MetricColumn column)
 {
-    if (column == MetricColumn::PeakEffort && !runs.isEmpty()) {
-        const bool power = runs.first().trace.effortIsPower;
-        const bool mixed = std::any_of(runs.begin(), runs.end(), [&](const StepRun &r) {
-            return r.trace.effortIsPower != power;
-        });
-        if (mixed)
-            return {};
+    QString key = stepLoopWord(run.spec.loop);
+    if (column != MetricColumn::PeakEffort && column != MetricColumn::Saturation)
+        return key;
+    if (!run.trace.effortIsPower)
+        return key + QStringLiteral("/A");
+    const QString drive = run.model.isEmpty() ? QStringLiteral("id%1").arg(run.driveId) : run.model;
+    return key + QStringLiteral("/power/%1/%2").arg(run.series, drive);
+}
+
+QVector<int> RunComparison::comparableWith(const QVector<StepRun> &runs, int index,
+                                           MetricColumn column)
+{
+    QVector<int> out;
+    if (index < 0 || index >= runs.size())
+        return out;
+    const QString key = comparableKey(runs.at(index), column);
+    for (int i = 0; i < runs.size(); ++i)
+        if (comparableKey(runs.at(i), column) == key)
+            out.append(i);
+    return out;
+}
+
+QVector<int> RunComparison::best(const QVector<StepRun> &runs, MetricColumn column,
+                                 const QVector<EdgeMetrics> &metrics)
+{
+    QVector<int> out;
+    QStringList done;
+    for (int i = 0; i < runs.size(); ++i) {
+        const QString key = comparableKey(runs.at(i), column);
+        if (done.contains(key))
+            continue;
+        done.append(key);
+        const QVector<int> group = comparableWith(runs, i, column);
+        if (group.size() < 2)
+            continue;
+        QVector<Metric> values;
+        for (int g : group)
+            values.append(metric(
+                metrics.size() == runs.size() ? metrics.at(g) : runs.at(g).stepMetrics(), column));
+        for (int b : closestToZero(values))
+            out.append(group.at(b));
     }
-    QVector<EdgeMetrics> metrics;
-    metrics.reserve(runs.size());
-    for (const StepRun &run : runs)
-        metrics.append(run.stepMetrics());
-    return best(metrics, column);
+    std::sort(out.begin(), out.end());
+    return out;
 }
 
 } // namespace lk::tuning

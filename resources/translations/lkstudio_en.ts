@@ -100,6 +100,16 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::StepRunsModel</name>
+    <message numerus="yes">
+        <source>Best of the %n comparable run(s) shown (same loop and unit).</source>
+        <translation>
+            <numerusform>Best of the %n comparable run shown (same loop and unit).</numerusform>
+            <numerusform>Best of the %n comparable runs shown (same loop and unit).</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::StepRunsView</name>
     <message numerus="yes">
         <source>%n run(s) of the other loop hidden: the overlay shows one loop at a time.</source>

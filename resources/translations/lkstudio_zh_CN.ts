@@ -930,6 +930,141 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::CommandTitle</name>
+    <message>
+        <source>Read model</source>
+        <translation>读取型号</translation>
+    </message>
+    <message>
+        <source>Write the position as zero to ROM</source>
+        <translation>将当前位置作为零点写入 ROM</translation>
+    </message>
+    <message>
+        <source>Read PID gains</source>
+        <translation>读取 PID 参数</translation>
+    </message>
+    <message>
+        <source>Write PID gains to RAM</source>
+        <translation>写入 PID 参数到 RAM</translation>
+    </message>
+    <message>
+        <source>Write PID gains to ROM</source>
+        <translation>写入 PID 参数到 ROM</translation>
+    </message>
+    <message>
+        <source>Read acceleration</source>
+        <translation>读取加速度</translation>
+    </message>
+    <message>
+        <source>Write acceleration to RAM</source>
+        <translation>写入加速度到 RAM</translation>
+    </message>
+    <message>
+        <source>Read parameter</source>
+        <translation>读取参数</translation>
+    </message>
+    <message>
+        <source>Write parameter to RAM</source>
+        <translation>写入参数到 RAM</translation>
+    </message>
+    <message>
+        <source>Write parameter to ROM</source>
+        <translation>写入参数到 ROM</translation>
+    </message>
+    <message>
+        <source>Motor Off</source>
+        <translation>电机关闭</translation>
+    </message>
+    <message>
+        <source>Motor Stop</source>
+        <translation>电机停止</translation>
+    </message>
+    <message>
+        <source>Motor Run</source>
+        <translation>电机运行</translation>
+    </message>
+    <message>
+        <source>Brake control</source>
+        <translation>抱闸控制</translation>
+    </message>
+    <message>
+        <source>Read encoder</source>
+        <translation>读取编码器</translation>
+    </message>
+    <message>
+        <source>Write encoder offset to ROM</source>
+        <translation>写入编码器零偏到 ROM</translation>
+    </message>
+    <message>
+        <source>Read multi-turn angle</source>
+        <translation>读取多圈角度</translation>
+    </message>
+    <message>
+        <source>Clear turn count</source>
+        <translation>清除圈数</translation>
+    </message>
+    <message>
+        <source>Read single-turn angle</source>
+        <translation>读取单圈角度</translation>
+    </message>
+    <message>
+        <source>Clear angle</source>
+        <translation>清除角度</translation>
+    </message>
+    <message>
+        <source>Read state 1 (temperature, voltage, errors)</source>
+        <translation>读取状态 1（温度、电压、错误）</translation>
+    </message>
+    <message>
+        <source>Clear errors</source>
+        <translation>清除错误</translation>
+    </message>
+    <message>
+        <source>Read state 2 (current, speed, encoder)</source>
+        <translation>读取状态 2（电流、速度、编码器）</translation>
+    </message>
+    <message>
+        <source>Read state 3 (phase currents)</source>
+        <translation>读取状态 3（相电流）</translation>
+    </message>
+    <message>
+        <source>Open loop power</source>
+        <translation>开环功率控制</translation>
+    </message>
+    <message>
+        <source>Torque current</source>
+        <translation>转矩电流控制</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度控制</translation>
+    </message>
+    <message>
+        <source>Multi-turn position</source>
+        <translation>多圈位置控制</translation>
+    </message>
+    <message>
+        <source>Multi-turn position with speed limit</source>
+        <translation>限速多圈位置控制</translation>
+    </message>
+    <message>
+        <source>Single-turn position</source>
+        <translation>单圈位置控制</translation>
+    </message>
+    <message>
+        <source>Single-turn position with speed limit</source>
+        <translation>限速单圈位置控制</translation>
+    </message>
+    <message>
+        <source>Incremental position</source>
+        <translation>增量位置控制</translation>
+    </message>
+    <message>
+        <source>Incremental position with speed limit</source>
+        <translation>限速增量位置控制</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::CommandedMotion</name>
     <message>
         <source>speed %1 dps</source>
@@ -954,10 +1089,6 @@
     <message>
         <source>move by %1°</source>
         <translation>增量移动 %1°</translation>
-    </message>
-    <message>
-        <source>Motor Run</source>
-        <translation>电机运行</translation>
     </message>
     <message>
         <source>Drive %1</source>
@@ -2348,6 +2479,10 @@
         <source>%1 s</source>
         <translation>%1 s</translation>
     </message>
+    <message>
+        <source>rel.</source>
+        <translation>相对值</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::HelpMenu</name>
@@ -2683,6 +2818,10 @@
     <message>
         <source>The same with a ±5 % band.</source>
         <translation>同上，范围为 ±5 %。</translation>
+    </message>
+    <message>
+        <source>Peak iq or power</source>
+        <translation>峰值 iq 或功率</translation>
     </message>
 </context>
 <context>
@@ -3629,6 +3768,22 @@
         <source>Angle (°)</source>
         <translation>角度 (°)</translation>
     </message>
+    <message>
+        <source>Reset zoom</source>
+        <translation>重置缩放</translation>
+    </message>
+    <message>
+        <source>Show every sample again after zooming or panning</source>
+        <translation>缩放或平移后重新显示全部采样</translation>
+    </message>
+    <message>
+        <source>Hover for values · wheel: zoom · drag: pan · Shift+drag: select a range</source>
+        <translation>悬停查看数值 · 滚轮：缩放 · 拖动：平移 · Shift+拖动：选择范围</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1：%2</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::StepRunFileText</name>
@@ -3722,6 +3877,17 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::StepRunList</name>
+    <message>
+        <source>Run %1</source>
+        <translation>测试 %1</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::StepRunsModel</name>
     <message>
         <source>shown</source>
@@ -3756,14 +3922,6 @@
         <translation>%1 个，%2 Hz</translation>
     </message>
     <message>
-        <source>Best of the runs shown.</source>
-        <translation>所显示测试中的最佳值。</translation>
-    </message>
-    <message>
-        <source>Run %1</source>
-        <translation>测试 %1</translation>
-    </message>
-    <message>
         <source>Overlay</source>
         <translation>叠加显示</translation>
     </message>
@@ -3782,6 +3940,16 @@
     <message>
         <source>Samples</source>
         <translation>采样</translation>
+    </message>
+    <message numerus="yes">
+        <source>Best of the %n comparable run(s) shown (same loop and unit).</source>
+        <translation>
+            <numerusform>所显示的 %n 个可比测试中最佳（相同环路和单位）。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Not compared: no other run shown has the same loop and unit.</source>
+        <translation>未比较：所显示的其他测试中没有相同环路和单位的。</translation>
     </message>
 </context>
 <context>
@@ -3817,10 +3985,6 @@
     <message>
         <source>Load step runs</source>
         <translation>加载阶跃测试</translation>
-    </message>
-    <message>
-        <source>Run %1</source>
-        <translation>测试 %1</translation>
     </message>
     <message>
         <source>No runs yet: run a step test, change a gain, write it to RAM and repeat the test to compare.</source>
@@ -4020,10 +4184,6 @@
     <message>
         <source>A</source>
         <translation>A</translation>
-    </message>
-    <message>
-        <source>rel.</source>
-        <translation>相对值</translation>
     </message>
     <message>
         <source>°/s</source>
@@ -4598,6 +4758,10 @@
     <message>
         <source>%1 is not plugged in: showing the built-in simulated bus. Pick the port and press Connect when the adapter is in.</source>
         <translation>%1 未插上：显示内置模拟总线。转换器插好后，请选择串口并点击“连接”。</translation>
+    </message>
+    <message>
+        <source>The simulated drives move on their own (a demo) so that the plots show live values. Command any drive, or press Esc, and the demo stops.</source>
+        <translation>模拟驱动正在自行运动（演示），以便曲线显示实时数值。对任一驱动发出命令或按 Esc，演示即停止。</translation>
     </message>
 </context>
 </TS>

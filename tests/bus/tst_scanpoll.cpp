@@ -58,6 +58,11 @@ private slots:
     void scanReprobesACorruptReply();
     void scanFastLinkProbesEachIdOnce();
     void scanSlowLinkIsCompleteWithSecondPass();
+    void estimateIsWhatTheScanTakes_data();
+    void estimateIsWhatTheScanTakes();
+    void sweepCountsEachDriveOnce();
+    void driveCount_data();
+    void driveCount();
     void pollingSkipsUnsupportedAndBatches();
     void pollingContinuesPastSilentCommands();
     void pollingHonoursRateAndStops();
@@ -287,6 +292,105 @@ void tst_ScanPoll::scanSlowLinkIsCompleteWithSecondPass()
     QVERIFY(rig.worker->lateReplyCount() > 0);
     QVERIFY(rig.worker->currentMarginMs() > 30);
     QCOMPARE(rig.worker->knownMotors().keys(), (QList<int>{3, 17, 32}));
+}
+
+// The estimate models pass 1 as the scanner runs it: on a bus where every ID is silent (the
+// estimate's case) the scan takes what it said, on the clock the test advances. (The old
+// formula added a quiet period of BusConfig::initialMarginMs per ID that a probe does not
+// wait: 9.0 s for a 3.4 s baud sweep.)
+void tst_ScanPoll::estimateIsWhatTheScanTakes_data()
+{
+    QTest::addColumn<int>("baud");
+    QTest::addColumn<int>("firstId");
+    QTest::addColumn<int>("lastId");
+    QTest::addColumn<QVector<int>>("sweep"); // empty: no sweep
+    QTest::newRow("1..32 at 9600") << 9600 << 1 << 32 << QVector<int>{};
+    QTest::newRow("1..32 at 115200") << 115200 << 1 << 32 << QVector<int>{};
+    QTest::newRow("1..32 at 1000000") << 1000000 << 1 << 32 << QVector<int>{};
+    QTest::newRow("5..12 at 57600") << 57600 << 5 << 12 << QVector<int>{};
+    QTest::newRow("1..32 at 4000000") << 4000000 << 1 << 32 << QVector<int>{};
+    QTest::newRow("sweep 1..8, three bauds")
+        << 115200 << 1 << 8 << QVector<int>{9600, 115200, 1000000};
+    QTest::newRow("sweep 1..32, every baud") << 115200 << 1 << 32 << QVector<int>{0};
+}
+
+void tst_ScanPoll::estimateIsWhatTheScanTakes()
+{
+    QFETCH(int, baud);
+    QFETCH(int, firstId);
+    QFETCH(int, lastId);
+    QFETCH(QVector<int>, sweep);
+    const BusConfig config; // the defaults lkstudio runs with
+    WorkerRig rig({}, config, baud, RigTime::Manual);
+    QSignalSpy finished(rig.worker.get(), &BusWorker::scanFinished);
+    ScanOptions o;
+    o.firstId = firstId;
+    o.lastId = lastId;
+    o.sweepBauds = !sweep.isEmpty();
+    if (sweep != QVector<int>{0})
+        o.bauds = sweep;
+    rig.worker->scan(o);
+    QVERIFY(rig.runUntil([&] { return finished.size() == 1; }, 120000));
+    const auto summary = finished.at(0).at(0).value<ScanSummary>();
+    QVERIFY2(summary.error.isEmpty(), qPrintable(summary.error));
+    const double estimate = Scanner::estimatedSeconds(o, baud, config);
+    QVERIFY2(
+        std::abs(estimate - summary.elapsedS) <= 0.02 * summary.elapsedS,
+        qPrintable(QStringLiteral("estimate %1 s, scan %2 s").arg(estimate).arg(summary.elapsedS)));
+}
+
+// A drive that answers at every baud of a sweep (as lkstudio's built-in bus does) is one
+// drive, in the progress and in the count the summary gives.
+void tst_ScanPoll::sweepCountsEachDriveOnce()
+{
+    WorkerRig rig(addDrives, scanConfig(), 115200, RigTime::Manual);
+    QSignalSpy progress(rig.worker.get(), &BusWorker::scanProgress);
+    QSignalSpy finished(rig.worker.get(), &BusWorker::scanFinished);
+    ScanOptions o;
+    o.sweepBauds = true;
+    o.bauds = {9600, 115200, 1000000};
+    o.retries = 1;
+    rig.worker->scan(o);
+    QVERIFY(rig.runUntil([&] { return finished.size() == 1; }, 120000));
+    const auto summary = finished.at(0).at(0).value<ScanSummary>();
+    QCOMPARE(summary.motors.size(), 9); // three drives heard at three bauds
+    QCOMPARE(Scanner::driveCount(summary.motors), 3);
+    QCOMPARE(progress.last().at(0).value<ScanProgress>().found, 3);
+    int most = 0;
+    for (const auto &args : progress)
+        most = std::max(most, args.at(0).value<ScanProgress>().found);
+    QCOMPARE(most, 3);
+}
+
+void tst_ScanPoll::driveCount_data()
+{
+    QTest::addColumn<QVector<FoundMotor>>("motors");
+    QTest::addColumn<int>("drives");
+    auto hit = [](int id, int baud, const char *motor) {
+        FoundMotor m;
+        m.id = id;
+        m.baud = baud;
+        m.modelKnown = motor != nullptr;
+        if (motor)
+            m.model.motorName = QString::fromLatin1(motor);
+        return m;
+    };
+    QTest::newRow("none") << QVector<FoundMotor>{} << 0;
+    QTest::newRow("one baud") << QVector<FoundMotor>{hit(1, 9600, "MF4015"), hit(2, 9600, "MG6010")}
+                              << 2;
+    QTest::newRow("same drive, two bauds")
+        << QVector<FoundMotor>{hit(1, 9600, "MF4015"), hit(1, 115200, "MF4015")} << 1;
+    QTest::newRow("model unread at one baud")
+        << QVector<FoundMotor>{hit(1, 9600, nullptr), hit(1, 115200, "MF4015")} << 1;
+    QTest::newRow("two drives sharing an ID at two bauds")
+        << QVector<FoundMotor>{hit(1, 9600, "MF4015"), hit(1, 115200, "MH7015")} << 2;
+}
+
+void tst_ScanPoll::driveCount()
+{
+    QFETCH(QVector<FoundMotor>, motors);
+    QFETCH(int, drives);
+    QCOMPARE(Scanner::driveCount(motors), drives);
 }
 
 void tst_ScanPoll::pollingSkipsUnsupportedAndBatches()

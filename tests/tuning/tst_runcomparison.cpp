@@ -50,6 +50,8 @@ private slots:
     void everyColumnReadsItsOwnMetric();
     void runsFromTraces();
     void mixedEffortKindsHaveNoBestPeak();
+    void onlyLikeRunsCompare_data();
+    void onlyLikeRunsCompare();
 };
 
 void tst_RunComparison::lowestWins()
@@ -131,6 +133,44 @@ void tst_RunComparison::mixedEffortKindsHaveNoBestPeak()
     QCOMPARE(RunComparison::best(mixed, MetricColumn::RiseTime), QVector<int>{1});
     const QVector<StepRun> power = {run(0.05, 400, true), run(0.03, 300, true)};
     QCOMPARE(RunComparison::best(power, MetricColumn::PeakEffort), QVector<int>{1});
+}
+
+// Each row: three runs (rise-time constants 0.05, 0.01, 0.08 s: the middle one is fastest and
+// has the least effort) that differ in one respect; which runs are best.
+void tst_RunComparison::onlyLikeRunsCompare_data()
+{
+    QTest::addColumn<QString>("middle"); // how the middle run differs
+    QTest::addColumn<int>("column");
+    QTest::addColumn<QVector<int>>("best");
+    const int rise = int(MetricColumn::RiseTime);
+    const int peak = int(MetricColumn::PeakEffort);
+    QTest::newRow("alike: the fastest wins") << "" << rise << QVector<int>{1};
+    QTest::newRow("position step: apart") << "position" << rise << QVector<int>{0};
+    QTest::newRow("position step: error in degrees")
+        << "position" << int(MetricColumn::SteadyStateError) << QVector<int>{0};
+    QTest::newRow("power: peak apart") << "power" << peak << QVector<int>{2};
+    QTest::newRow("power: its time compares") << "power" << rise << QVector<int>{1};
+    QTest::newRow("another drive, amps: compares") << "drive" << peak << QVector<int>{1};
+}
+
+void tst_RunComparison::onlyLikeRunsCompare()
+{
+    QFETCH(QString, middle);
+    QFETCH(int, column);
+    QFETCH(QVector<int>, best);
+    StepRun a = run(0.05, 3.0, false);
+    StepRun b = run(0.01, 1.0, middle == QLatin1String("power"));
+    StepRun c = run(0.08, 2.5, false);
+    for (StepRun *r : {&a, &b, &c}) {
+        r->series = QStringLiteral("MF");
+        r->model = QStringLiteral("MF4015");
+        r->driveId = 1;
+    }
+    if (middle == QLatin1String("position"))
+        b.spec.loop = b.trace.loop = StepLoop::Position;
+    if (middle == QLatin1String("drive"))
+        b.driveId = 2;
+    QCOMPARE(RunComparison::best({a, b, c}, MetricColumn(column)), best);
 }
 
 QTEST_GUILESS_MAIN(tst_RunComparison)

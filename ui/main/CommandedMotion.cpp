@@ -1,6 +1,8 @@
 #include "CommandedMotion.h"
 
 #include <bus/BusSession.h>
+#include <panels/CommandTitle.h>
+#include <panels/Format.h>
 #include <protocol/Command.h>
 
 #include <QtCore/QRegularExpression>
@@ -76,16 +78,14 @@ QString CommandedMotion::describe(const protocol::Request &r)
     if (const auto *t = std::get_if<TorqueCommand>(&r.payload))
         return tr("torque %1 A").arg(number(t->iqA()));
     if (const auto *p = std::get_if<OpenLoopCommand>(&r.payload))
-        return tr("open-loop power %1").arg(p->power);
+        return tr("open-loop power %1").arg(Format::power(p->power));
     if (const auto *m = std::get_if<MultiPositionCommand>(&r.payload))
         return tr("position %1\u00b0").arg(number(m->angleRaw * 0.01));
     if (const auto *a = std::get_if<SinglePositionCommand>(&r.payload))
         return tr("single-turn position %1\u00b0").arg(number(a->angleRaw * 0.01));
     if (const auto *i = std::get_if<IncrementPositionCommand>(&r.payload))
         return tr("move by %1\u00b0").arg(number(i->angleRaw * 0.01));
-    if (r.command == Command::MotorRun)
-        return tr("Motor Run");
-    return CommandTable::name(r.command);
+    return CommandTitle::name(r.command); // Motor Run, or a command without a value
 }
 
 QString CommandedMotion::driveText(int id) const

@@ -27,9 +27,15 @@ const DriveRecord *BusModel::drive(int id) const
 
 void BusModel::clearDrives()
 {
+    // A rescan or a reconnect finds the same drives again: the user's choice comes back with
+    // them (addFound) instead of falling to the first drive found.
+    if (m_currentId != 0 && !m_currentIsStandIn) {
+        m_wantedCurrent = m_currentId;
+        m_wantedSelection = m_selected;
+    }
     m_drives.clear();
     emit drivesChanged();
-    setCurrentId(0);
+    setCurrent(0);
     setSelectedIds({});
 }
 
@@ -44,8 +50,17 @@ void BusModel::addFound(const bus::FoundMotor &found)
     if (found.state1)
         d.apply(bus::TelemetrySample::fromState1(found.id, *found.state1, 0), nowMs());
     emit drivesChanged();
-    if (m_currentId == 0)
-        setCurrentId(found.id);
+    if (found.id == m_wantedCurrent && (m_currentId == 0 || m_currentIsStandIn)) {
+        setCurrent(found.id);
+        if (!m_wantedSelection.isEmpty())
+            setSelectedIds(m_wantedSelection); // those found so far; more come back below
+    } else if (m_currentId == 0) {
+        setCurrent(found.id);
+        m_currentIsStandIn = m_wantedCurrent != 0; // until the wanted drive answers
+    } else if (m_currentId == m_wantedCurrent && m_wantedSelection.contains(found.id) &&
+               !m_selected.contains(found.id)) {
+        setSelectedIds(m_selected + QVector<int>{found.id});
+    }
 }
 
 void BusModel::applyTelemetry(const bus::TelemetryBatch &batch)
@@ -96,6 +111,15 @@ void BusModel::setCurrentId(int id)
 {
     if (id != 0 && !m_drives.contains(id))
         return;
+    // The user's own choice: it is what comes back after the next reconnect.
+    m_wantedCurrent = id;
+    m_wantedSelection.clear();
+    setCurrent(id);
+}
+
+void BusModel::setCurrent(int id)
+{
+    m_currentIsStandIn = false;
     if (id == m_currentId)
         return;
     m_currentId = id;

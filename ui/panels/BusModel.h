@@ -48,8 +48,11 @@ public:
     /// Transactions per second the poll plan asks for (0 = as fast as the bus allows).
     double requestedTransactionsPerSecond() const;
 
-    // Selection.
+    // Selection. It outlives clearDrives(): when the drives come back (a rescan, a
+    // reconnect), the drive the user chose is current again and the drives picked with it
+    // are picked again; until it answers, the first drive found stands in.
     int currentId() const { return m_currentId; } ///< 0: none
+    /// The user (or a view) chose drive `id` (0: none).
     void setCurrentId(int id);
     /// Drives picked together (plots show them all); the current drive when none.
     QVector<int> selectedIds() const;
@@ -65,6 +68,8 @@ signals:
     void selectionChanged();
 
 private:
+    void setCurrent(int id);
+
     bus::ConnectionStatus m_connection;
     bool m_simulated = false;
     QMap<int, DriveRecord> m_drives;
@@ -73,6 +78,9 @@ private:
     bool m_polling = false;
     int m_currentId = 0;
     QVector<int> m_selected;
+    int m_wantedCurrent = 0;         ///< the drive chosen last, current again when found
+    QVector<int> m_wantedSelection;  ///< the drives picked with it when the drives went
+    bool m_currentIsStandIn = false; ///< current only until m_wantedCurrent is found
     QElapsedTimer m_clock;
 };
 

@@ -232,7 +232,7 @@ void DashboardPanel::updateElectrical(const DriveRecord &d, qint64 now)
     updateV235State(d, now);
     auto *torque = readout(QStringLiteral("torque"));
     if (d.reportsPower())
-        torque->setValue(d.has(F::Power) ? Format::number(v.power, 0) : QString(),
+        torque->setValue(d.has(F::Power) ? Format::power(v.power) : QString(),
                          d.isStale(F::Power, now));
     else
         torque->setValue(d.has(F::IqA) ? Format::withUnit(v.iqA, 2, QStringLiteral("A"))

@@ -5,6 +5,7 @@
 #include "StatusColors.h"
 #include "ThemedIcon.h"
 
+#include <QtCore/QScopedValueRollback>
 #include <QtCore/QTimer>
 #include <QtGui/QIcon>
 #include <QtWidgets/QHeaderView>
@@ -58,9 +59,12 @@ DriveTree::DriveTree(BusModel *model, QWidget *parent) : QTreeWidget(parent), m_
     connect(m_model, &BusModel::connectionChanged, this, &DriveTree::updateBusItem);
     connect(m_model, &BusModel::telemetryChanged, this, [this] { m_dirty = true; });
     connect(m_model, &BusModel::currentDriveChanged, this, &DriveTree::selectCurrent);
+    connect(m_model, &BusModel::selectionChanged, this, &DriveTree::selectCurrent);
     connect(this, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem *item) {
-        if (item && item != m_bus)
+        if (item && item != m_bus) {
+            const QScopedValueRollback<bool> mine(m_choosing, true);
             m_model->setCurrentId(item->data(IdCol, kIdRole).toInt());
+        }
     });
     connect(this, &QTreeWidget::itemSelectionChanged, this, [this] {
         QVector<int> ids;
@@ -70,6 +74,7 @@ DriveTree::DriveTree(BusModel *model, QWidget *parent) : QTreeWidget(parent), m_
                 ids << item->data(IdCol, kIdRole).toInt();
         }
         std::sort(ids.begin(), ids.end());
+        const QScopedValueRollback<bool> mine(m_choosing, true);
         m_model->setSelectedIds(ids);
     });
 }
@@ -169,10 +174,20 @@ void DriveTree::updateItem(QTreeWidgetItem *item, int id)
 
 void DriveTree::selectCurrent()
 {
+    if (m_choosing)
+        return; // the model follows a click here: the tree is where the user put it
+    // The rows follow the model (the drives picked together as well, after a rescan brought
+    // them back): not echoed back as a choice of the user's.
+    const QSignalBlocker block(this);
     QTreeWidgetItem *item = itemForId(m_model->currentId());
-    if (item && item != currentItem()) {
-        const QSignalBlocker block(this);
+    if (item && item != currentItem())
         setCurrentItem(item);
+    const QVector<int> picked = m_model->selectedIds();
+    for (int i = 0; i < m_bus->childCount(); ++i) {
+        QTreeWidgetItem *child = m_bus->child(i);
+        const bool want = picked.contains(child->data(IdCol, kIdRole).toInt());
+        if (child->isSelected() != want)
+            child->setSelected(want);
     }
 }
 

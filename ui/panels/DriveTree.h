@@ -41,6 +41,7 @@ private:
     QTreeWidgetItem *m_bus = nullptr;
     QTimer *m_refresh = nullptr;
     bool m_dirty = false;
+    bool m_choosing = false; ///< a click here is being handed to the model
 };
 
 } // namespace lk::ui

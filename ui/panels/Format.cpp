@@ -27,6 +27,16 @@ QString Format::withUnit(double value, int decimals, const QString &unit)
     return QStringLiteral("%1 %2").arg(number(value, decimals), unit);
 }
 
+QString Format::powerUnit()
+{
+    return tr("rel.");
+}
+
+QString Format::power(double value)
+{
+    return withUnit(value, 0, powerUnit());
+}
+
 QStringList Format::errorFlags(int errorState, std::optional<protocol::Generation> generation)
 {
     QStringList flags;

@@ -20,6 +20,11 @@ public:
     static QString number(double value, int decimals);
     /// "12.3 V"-style value with a unit; units are not translated (SI).
     static QString withUnit(double value, int decimals, const QString &unit);
+    /// The unit of an MS drive's power (relative, -1000..1000; the protocol names no
+    /// physical unit): every power value shown carries it, 0 included.
+    static QString powerUnit();
+    /// "134 rel.": an MS drive's power with its unit.
+    static QString power(double value);
 
     /// Names of the error bits set in a drive's errorState as its protocol generation names
     /// them ("Low voltage", ...); bits the generation does not name, or every bit when the

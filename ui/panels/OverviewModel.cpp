@@ -184,7 +184,7 @@ QVariant OverviewModel::display(int id, int column) const
                    : QString();
     case Torque:
         if (d.reportsPower())
-            return d.has(F::Power) ? Format::number(v.power, 0) : QString();
+            return d.has(F::Power) ? Format::power(v.power) : QString();
         return d.has(F::IqA) ? Format::withUnit(v.iqA, 2, QStringLiteral("A")) : QString();
     case Speed:
         return d.has(F::Speed) ? Format::withUnit(v.speedDps / ratio, 0, QStringLiteral("dps"))

@@ -5,7 +5,6 @@
 #include "Format.h"
 #include "ThemedIcon.h"
 
-#include <bus/BusTiming.h>
 #include <bus/Scanner.h>
 
 #include <QtGui/QIcon>
@@ -113,38 +112,27 @@ void ScanControls::setBaud(int baud)
         showEstimate();
 }
 
-namespace {
-QVector<int> baudsOf(const bus::ScanOptions &o, int baud)
+double ScanControls::estimateSeconds(const bus::ScanOptions &o, int baud,
+                                     const QMap<int, int> &answeringAt)
 {
-    if (!o.sweepBauds)
-        return {baud};
-    if (!o.bauds.isEmpty())
-        return o.bauds;
-    QVector<int> all;
-    for (int b : bus::BusTiming::standardBauds())
-        all << b;
-    return all;
-}
-} // namespace
-
-double ScanControls::estimateSeconds(const bus::ScanOptions &o, int baud)
-{
-    const int ids = o.lastId - o.firstId + 1;
-    double total = 0;
-    for (int b : baudsOf(o, baud))
-        total += bus::Scanner::estimatedSeconds(ids, b, bus::BusConfig{});
-    return total;
+    return bus::Scanner::estimatedSeconds(o, baud, bus::BusConfig{}, answeringAt);
 }
 
 double ScanControls::expectedSeconds(const bus::ScanOptions &o) const
 {
     const int ids = o.lastId - o.firstId + 1;
+    // The drives of the last complete scan are expected where they answered, in this range.
+    QMap<int, int> answering;
+    for (const auto &[baud, id] : m_lastAnswers) {
+        if (id >= o.firstId && id <= o.lastId)
+            ++answering[baud];
+    }
     double total = 0;
-    for (int b : baudsOf(o, m_baud)) {
+    for (int b : bus::Scanner::baudsToScan(o, m_baud)) {
         bus::ScanOptions one = o;
         one.sweepBauds = false;
-        total +=
-            m_measuredPerId.contains(b) ? ids * m_measuredPerId.value(b) : estimateSeconds(one, b);
+        total += m_measuredPerId.contains(b) ? ids * m_measuredPerId.value(b)
+                                             : estimateSeconds(one, b, answering);
     }
     return total;
 }
@@ -192,21 +180,28 @@ void ScanControls::onScanFinished(const bus::ScanSummary &s)
     m_scanning = false;
     m_progress->setRange(0, 1);
     m_progress->setValue(1);
+    // Drives, not answers: a sweep hears a drive at every baud it answers at.
+    const int drives = bus::Scanner::driveCount(s.motors);
     QString text;
     // A cancel that lands while the sweep reopens the port also carries that error: the user
     // asked for the stop, so it is reported as a cancel.
     if (s.cancelled)
-        text = tr("Scan cancelled after %1: %n drive(s) found", nullptr, s.motors.size())
+        text = tr("Scan cancelled after %1: %n drive(s) found", nullptr, drives)
                    .arg(Format::duration(s.elapsedS));
     else if (!s.error.isEmpty())
         text = tr("Scan stopped: %1").arg(s.error);
     else
-        text = tr("Scan done in %1: %n drive(s) found", nullptr, s.motors.size())
+        text = tr("Scan done in %1: %n drive(s) found", nullptr, drives)
                    .arg(Format::duration(s.elapsedS));
     // A complete scan at one baud times this bus: the next estimate says what it took.
     const bus::ScanOptions o = options();
     if (!s.cancelled && s.error.isEmpty() && !o.sweepBauds && s.elapsedS > 0)
         m_measuredPerId.insert(s.finalBaud, s.elapsedS / qMax(1, o.lastId - o.firstId + 1));
+    if (!s.cancelled && s.error.isEmpty()) {
+        m_lastAnswers.clear();
+        for (const bus::FoundMotor &m : s.motors)
+            m_lastAnswers.append({m.baud, m.id});
+    }
     m_status->setText(text);
     updateEnabled();
 }

@@ -4,6 +4,9 @@
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QHash>
+#include <QtCore/QMap>
+#include <QtCore/QPair>
+#include <QtCore/QVector>
 #include <QtWidgets/QWidget>
 
 class QCheckBox;
@@ -27,13 +30,16 @@ public:
     void setCanSend(bool canSend);
     /// The baud of the link, which the estimate is for.
     void setBaud(int baud);
-    /// Seconds for `options` with every ID silent on a fresh link: per ID the first pass's
-    /// probe timeout (BusConfig::minMarginMs) and the quiet period after it (a fresh link is
-    /// trusted no faster than BusConfig::initialMarginMs). It does not follow the adaptive
-    /// margin, which moves with the host's load, so it stays put for the same bus.
-    static double estimateSeconds(const bus::ScanOptions &options, int baud);
+    /// Seconds for `options` as the scanner spends them on a sparse bus with the default
+    /// margins (bus::Scanner::estimatedSeconds: per ID the first pass's probe timeout, per
+    /// baud the listening for late replies). It does not follow the adaptive margin, which
+    /// moves with the host's load, so it stays put for the same bus.
+    /// `answeringAt`: how many IDs of the range are expected to answer at a baud.
+    static double estimateSeconds(const bus::ScanOptions &options, int baud,
+                                  const QMap<int, int> &answeringAt = {});
     /// The estimate shown: from the last complete scan at that baud when there was one (its
-    /// time per ID), else estimateSeconds().
+    /// time per ID), else estimateSeconds() with the drives that scan found where they
+    /// answered.
     double expectedSeconds(const bus::ScanOptions &options) const;
 
 public slots:
@@ -61,7 +67,8 @@ private:
     bool m_scanning = false;
     bool m_canSend = false;
     int m_baud = 115200;
-    QHash<int, double> m_measuredPerId; ///< seconds per ID of the last complete scan, by baud
+    QHash<int, double> m_measuredPerId;     ///< seconds per ID of the last complete scan, by baud
+    QVector<QPair<int, int>> m_lastAnswers; ///< (baud, ID) of each answer of the last scan
     QElapsedTimer m_elapsed;
 };
 

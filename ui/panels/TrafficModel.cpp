@@ -1,5 +1,6 @@
 #include "TrafficModel.h"
 
+#include "CommandTitle.h"
 #include "StatusColors.h"
 
 #include <protocol/Command.h>
@@ -239,6 +240,13 @@ QVariant TrafficModel::data(const QModelIndex &index, int role) const
         return e.id;
     case kIsFaultRole:
         return fault;
+    case Qt::ToolTipRole:
+        // The column keeps CLI.md's names (what lkctl and the exports say); its words are
+        // one hover away.
+        if (index.column() == Command &&
+            (e.kind == Kind::Sent || e.kind == Kind::Frame || e.kind == Kind::Timeout))
+            return CommandTitle::withCode(protocol::Command(e.command));
+        return {};
     default:
         return {};
     }

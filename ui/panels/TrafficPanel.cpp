@@ -1,6 +1,7 @@
 #include "TrafficPanel.h"
 
 #include "BusModel.h"
+#include "CommandTitle.h"
 #include "FileDialogs.h"
 #include "Format.h"
 #include "ThemedIcon.h"
@@ -151,6 +152,8 @@ void TrafficPanel::fillCommandFilter()
             QStringLiteral("%1 (%2)").arg(QLatin1String(info.name),
                                           protocol::CommandTable::codeText(quint8(info.command))),
             int(info.command));
+        m_commandFilter->setItemData(m_commandFilter->count() - 1, CommandTitle::name(info.command),
+                                     Qt::ToolTipRole);
     }
 }
 

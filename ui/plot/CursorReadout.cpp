@@ -2,6 +2,7 @@
 
 #include "TelemetryStore.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace lk::ui {
@@ -16,22 +17,43 @@ CursorReadout::CursorReadout(QWidget *parent) : QLabel(parent)
 void CursorReadout::showValues(const TelemetryStore &store, const QVector<PlotTrace> &traces,
                                std::optional<double> cursorTime)
 {
-    const QString text = format(store, traces, cursorTime);
+    showText(format(store, traces, cursorTime));
+}
+
+void CursorReadout::showText(const QString &text)
+{
     if (text != this->text()) {
         setText(text);
     }
+}
+
+QString CursorReadout::line(std::optional<double> cursorTime, const QStringList &groups)
+{
+    QString text = cursorTime ? tr("t = %1 s").arg(*cursorTime, 0, 'f', 3) : tr("Latest");
+    for (const QString &group : groups) {
+        text += QStringLiteral("   ") + group;
+    }
+    return text;
+}
+
+QString CursorReadout::value(const QString &label, std::optional<double> v, int decimals,
+                             const QString &unit)
+{
+    const QString number = v ? QString::number(*v, 'f', decimals) : QStringLiteral("–");
+    return QStringLiteral("%1 %2%3").arg(
+        label, number, unit.isEmpty() || !v ? QString() : QStringLiteral(" ") + unit);
 }
 
 QString CursorReadout::format(const TelemetryStore &store, const QVector<PlotTrace> &traces,
                               std::optional<double> cursorTime)
 {
     const double at = cursorTime.value_or(std::numeric_limits<double>::infinity());
-    QString text = cursorTime ? tr("t = %1 s").arg(*cursorTime, 0, 'f', 3) : tr("Latest");
+    QStringList groups;
     int drive = -1;
     QStringList values;
     auto flush = [&] {
         if (drive >= 0) {
-            text += QStringLiteral("   ") + tr("ID %1: %2").arg(drive).arg(values.join(", "));
+            groups << tr("ID %1: %2").arg(drive).arg(values.join(", "));
         }
         values.clear();
     };
@@ -40,17 +62,13 @@ QString CursorReadout::format(const TelemetryStore &store, const QVector<PlotTra
             flush();
             drive = trace.driveId;
         }
-        const std::optional<double> v = store.valueAt(trace.driveId, trace.channel, at);
-        const QString number =
-            v ? QString::number(*v, 'f', std::min(channelDecimals(trace.channel, trace.power), 3))
-              : QStringLiteral("–");
-        const QString unit = quantityUnit(trace.quantity());
-        values << QStringLiteral("%1 %2%3").arg(channelLabel(trace.channel, trace.power), number,
-                                                unit.isEmpty() || !v ? QString()
-                                                                     : QStringLiteral(" ") + unit);
+        values << value(channelLabel(trace.channel, trace.power),
+                        store.valueAt(trace.driveId, trace.channel, at),
+                        std::min(channelDecimals(trace.channel, trace.power), 3),
+                        quantityUnit(trace.quantity()));
     }
     flush();
-    return text;
+    return line(cursorTime, groups);
 }
 
 } // namespace lk::ui

@@ -52,6 +52,8 @@ void setNiceTicks(QValueAxis *axis, double span, int ticks)
         axis->setLabelFormat(format);
 }
 
+} // namespace
+
 // QtCharts lays the ticks out on every setter. Going from a flat signal (range ~0.001) to a
 // real one with the old interval would lay out millions of ticks and freeze the GUI, and the
 // reverse order has the same problem when the range shrinks; so a growing interval is set
@@ -67,6 +69,8 @@ void setAxisRange(QValueAxis *axis, double min, double max, int ticks)
     if (!grows)
         setNiceTicks(axis, max - min, ticks);
 }
+
+namespace {
 
 // Autoscale keeps the value axis while the data stays inside it and fills at least this share
 // of it: the axis then changes a few times a second at most instead of every frame, which

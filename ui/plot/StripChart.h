@@ -101,5 +101,8 @@ private:
 double niceStep(double raw);
 /// The autoscaled value range for data spanning `data`: padded and rounded out to ticks.
 std::pair<double, double> scaledRange(const MinMax &data);
+/// Shows [min, max] on `axis` with about `ticks` round steps (1, 2 or 5 x 10^k) and labels
+/// with the decimals the step needs; never lays out a tick spacing that does not fit.
+void setAxisRange(QValueAxis *axis, double min, double max, int ticks);
 
 } // namespace lk::ui

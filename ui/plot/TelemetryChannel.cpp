@@ -1,5 +1,7 @@
 #include "TelemetryChannel.h"
 
+#include <panels/Format.h>
+
 #include <QtCore/QCoreApplication>
 
 #include <array>
@@ -103,7 +105,7 @@ QString quantityUnit(Quantity quantity)
     case Quantity::Current:
         return QCoreApplication::translate("lk::ui::TelemetryChannel", "A");
     case Quantity::Power:
-        return QCoreApplication::translate("lk::ui::TelemetryChannel", "rel.");
+        return Format::powerUnit(); // one wording for every power shown
     case Quantity::Speed:
         return QCoreApplication::translate("lk::ui::TelemetryChannel", "°/s");
     case Quantity::Encoder:

@@ -40,6 +40,11 @@ QString MetricText::name(StepMetricKind kind, bool effortIsPower)
     return {};
 }
 
+QString MetricText::mixedName(StepMetricKind kind)
+{
+    return kind == StepMetricKind::PeakEffort ? tr("Peak iq or power") : name(kind, false);
+}
+
 QString MetricText::definition(StepMetricKind kind, bool effortIsPower)
 {
     switch (kind) {
@@ -91,7 +96,7 @@ QString MetricText::value(const EdgeMetrics &m, StepMetricKind kind, tuning::Ste
                                 loop == tuning::StepLoop::Speed ? QStringLiteral("dps")
                                                                 : QString::fromUtf8("\u00b0"));
     case StepMetricKind::PeakEffort:
-        return effortIsPower ? Format::number(v, 0) : Format::withUnit(v, 2, QStringLiteral("A"));
+        return effortIsPower ? Format::power(v) : Format::withUnit(v, 2, QStringLiteral("A"));
     case StepMetricKind::Oscillations:
         return Format::number(v, 0);
     }

@@ -20,6 +20,8 @@ public:
     /// Every metric, in table order.
     static const QVector<StepMetricKind> &all();
     static QString name(StepMetricKind kind, bool effortIsPower);
+    /// The name of a row that holds current (A) and power values side by side.
+    static QString mixedName(StepMetricKind kind);
     /// The metric's definition in one or two sentences.
     static QString definition(StepMetricKind kind, bool effortIsPower);
     /// "0.084 s", "12.5 %", "3", or the reason it has none ("never settled").

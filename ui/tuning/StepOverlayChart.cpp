@@ -1,7 +1,10 @@
 #include "StepOverlayChart.h"
 
+#include <panels/Format.h>
+#include <plot/CursorReadout.h>
 #include <plot/MinMax.h>
 #include <plot/StripChart.h>
+#include <plot/TelemetryChannel.h>
 #include <plot/TimeChartView.h>
 
 #include <QtCharts/QChart>
@@ -10,6 +13,8 @@
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QValueAxis>
 #include <QtWidgets/QGraphicsLayout>
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QToolButton>
 #include <QtWidgets/QVBoxLayout>
 
 #include <algorithm>
@@ -21,6 +26,8 @@ using tuning::StepLoop;
 using tuning::StepTrace;
 
 namespace {
+
+constexpr int kTimeTicks = 6;
 
 /// Time of a run's samples relative to its first edge; the trace's own start without edges.
 double alignTime(const StepTrace &trace)
@@ -68,8 +75,24 @@ QList<QPointF> targetPoints(const StepTrace &trace)
     return points;
 }
 
+/// The newest sample at or before `time` (aligned) that carries the value, as the live plots
+/// readout holds a value until the next sample; none before the first or past the last.
+std::optional<double> heldAt(const StepTrace &trace, double time, bool effort)
+{
+    const double t = time + alignTime(trace);
+    if (trace.time.isEmpty() || t < trace.time.first() || t > trace.time.last())
+        return std::nullopt;
+    const auto after = std::upper_bound(trace.time.begin(), trace.time.end(), t);
+    for (qsizetype i = (after - trace.time.begin()) - 1; i >= 0; --i) {
+        const double v = effort ? trace.effort.at(i) : trace.value.at(i);
+        if (!StepTrace::isMissing(v))
+            return v;
+    }
+    return std::nullopt;
+}
+
 QLineSeries *addLine(QChart *chart, const QList<QPointF> &points, const QColor &color,
-                     const QString &name, Qt::PenStyle style)
+                     const QString &name, Qt::PenStyle style, QValueAxis *valueAxis)
 {
     auto *line = new QLineSeries(chart);
     line->setName(name);
@@ -79,28 +102,14 @@ QLineSeries *addLine(QChart *chart, const QList<QPointF> &points, const QColor &
     line->setPen(pen);
     line->replace(points);
     chart->addSeries(line);
-    for (QAbstractAxis *axis : chart->axes())
-        line->attachAxis(axis);
+    line->attachAxis(chart->axes(Qt::Horizontal).value(0));
+    line->attachAxis(valueAxis);
     return line;
 }
 
-} // namespace
-
-StepOverlayChart::StepOverlayChart(QWidget *parent)
-    : QWidget(parent), m_response(new TimeChartView(this)), m_effort(new TimeChartView(this))
-{
-    m_response->setObjectName(QStringLiteral("stepResponseChart"));
-    m_effort->setObjectName(QStringLiteral("stepEffortChart"));
-    auto *layout = new QVBoxLayout(this);
-    layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_response, 3);
-    layout->addWidget(m_effort, 2);
-    m_response->setMinimumHeight(170);
-    m_effort->setMinimumHeight(140);
-    setRuns({});
-}
-
-void StepOverlayChart::rebuild(TimeChartView *view, const QString &valueTitle, bool timeTitle)
+/// Empties `view`'s chart and gives it a time axis (titled only under the lower chart:
+/// QtCharts elides labels rather than dropping them when a short chart has no room for both).
+void clearChart(TimeChartView *view, bool timeTitle)
 {
     QChart *chart = view->chart();
     chart->removeAllSeries(); // deletes them
@@ -109,73 +118,225 @@ void StepOverlayChart::rebuild(TimeChartView *view, const QString &valueTitle, b
         delete axis;
     }
     auto *time = new QValueAxis(chart);
-    // One time title under the lower chart: QtCharts elides labels ("...") rather than
-    // dropping them when a short chart has no room for a title as well.
-    time->setTitleText(timeTitle ? tr("Time from the step (s)") : QString());
-    auto *value = new QValueAxis(chart);
-    value->setTitleText(valueTitle);
+    time->setTitleText(timeTitle ? StepOverlayChart::tr("Time from the step (s)") : QString());
     chart->addAxis(time, Qt::AlignBottom);
-    chart->addAxis(value, Qt::AlignLeft);
     chart->setMargins(QMargins(2, 2, 2, 2));
     chart->layout()->setContentsMargins(0, 0, 0, 0);
     chart->setBackgroundRoundness(0);
     chart->legend()->setAlignment(Qt::AlignRight);
 }
 
-void StepOverlayChart::fitAxes(TimeChartView *view)
+QValueAxis *addValueAxis(TimeChartView *view, const QString &title, Qt::Alignment side)
 {
-    QChart *chart = view->chart();
-    MinMax x, y;
-    for (QAbstractSeries *s : chart->series()) {
-        for (const QPointF &p : static_cast<QLineSeries *>(s)->points()) {
-            x.add(p.x());
-            y.add(p.y());
+    auto *axis = new QValueAxis(view->chart());
+    axis->setTitleText(title);
+    view->chart()->addAxis(axis, side);
+    return axis;
+}
+
+/// A short chart gets fewer value labels: QtCharts would shorten crowded ones to "...".
+int valueTicks(const TimeChartView *view)
+{
+    return view->height() < 200 ? 2 : 4;
+}
+
+/// Every value axis of `view` to the data of the series attached to it.
+void fitValueAxes(TimeChartView *view)
+{
+    for (QAbstractAxis *a : view->chart()->axes(Qt::Vertical)) {
+        auto *axis = static_cast<QValueAxis *>(a);
+        MinMax y;
+        for (QAbstractSeries *s : view->chart()->series()) {
+            if (!s->attachedAxes().contains(axis))
+                continue;
+            for (const QPointF &p : static_cast<QLineSeries *>(s)->points())
+                y.add(p.y());
         }
+        const auto [lo, hi] = y.isValid() ? scaledRange(y) : std::pair<double, double>{0, 1};
+        setAxisRange(axis, lo, hi, valueTicks(view));
     }
-    const auto axes = chart->axes();
-    if (axes.size() != 2 || !x.isValid())
-        return;
-    auto ticks = [](QValueAxis *axis, double lo, double hi, int count) {
-        // Fixed round steps, as the strip charts have: labels that fit, never "...".
-        const double step = niceStep((hi - lo) / count);
-        axis->setTickType(QValueAxis::TicksFixed); // no layout at the old interval
-        axis->setRange(lo, hi);
-        axis->setTickAnchor(0);
-        axis->setTickInterval(step);
-        axis->setTickType(QValueAxis::TicksDynamic);
-        const int decimals = std::clamp(int(std::ceil(-std::log10(step) - 1e-9)), 0, 6);
-        axis->setLabelFormat(QStringLiteral("%.%1f").arg(decimals));
-    };
-    ticks(static_cast<QValueAxis *>(axes.at(0)), x.min, x.max > x.min ? x.max : x.min + 1, 6);
-    const auto [lo, hi] = scaledRange(y);
-    // A short chart gets fewer value labels: QtCharts would shorten crowded ones to "...".
-    ticks(static_cast<QValueAxis *>(axes.at(1)), lo, hi, view->height() < 200 ? 2 : 4);
-    view->applyPalette();
+}
+
+QString responseValue(const StepTrace &trace, double time)
+{
+    const bool speed = trace.loop == StepLoop::Speed;
+    return CursorReadout::value(
+        channelLabel(speed ? TelemetryChannel::Speed : TelemetryChannel::MultiTurn, false),
+        heldAt(trace, time, false), speed ? 1 : 2,
+        speed ? QStringLiteral("dps") : QStringLiteral("\u00b0"));
+}
+
+QString effortValue(const StepTrace &trace, double time)
+{
+    const bool power = trace.effortIsPower;
+    return CursorReadout::value(channelLabel(TelemetryChannel::Torque, power),
+                                heldAt(trace, time, true), power ? 0 : 3,
+                                power ? Format::powerUnit() : QStringLiteral("A"));
+}
+
+} // namespace
+
+StepOverlayChart::StepOverlayChart(QWidget *parent)
+    : QWidget(parent), m_response(new TimeChartView(this)), m_effort(new TimeChartView(this)),
+      m_readout(new CursorReadout(this)), m_reset(new QToolButton(this))
+{
+    m_response->setObjectName(QStringLiteral("stepResponseChart"));
+    m_effort->setObjectName(QStringLiteral("stepEffortChart"));
+    m_readout->setObjectName(QStringLiteral("stepReadout"));
+    m_reset->setObjectName(QStringLiteral("stepResetZoom"));
+    m_reset->setText(tr("Reset zoom"));
+    m_reset->setToolTip(tr("Show every sample again after zooming or panning"));
+    auto *bar = new QHBoxLayout;
+    bar->addWidget(m_readout, 1);
+    bar->addWidget(m_reset);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addLayout(bar);
+    layout->addWidget(m_response, 3);
+    layout->addWidget(m_effort, 2);
+    m_response->setMinimumHeight(170);
+    m_effort->setMinimumHeight(140);
+    connect(m_reset, &QToolButton::clicked, this, &StepOverlayChart::resetZoom);
+    connectGestures(m_response);
+    connectGestures(m_effort);
+    setRuns({});
+}
+
+void StepOverlayChart::connectGestures(TimeChartView *view)
+{
+    connect(view, &TimeChartView::panRequested, this, [this](double seconds) {
+        m_viewport.pan(seconds, m_data.end);
+        showRange();
+    });
+    connect(view, &TimeChartView::zoomRequested, this, [this](double factor, double anchor) {
+        m_viewport.zoom(factor, anchor, m_data.end);
+        showRange();
+    });
+    connect(view, &TimeChartView::rangeSelected, this, [this](double t0, double t1) {
+        m_viewport.select(t0, t1);
+        showRange();
+    });
+    connect(view, &TimeChartView::valueZoomRequested, this,
+            [view](double factor) { scaleValueAxes(view, factor); });
+    connect(view, &TimeChartView::cursorMoved, this, [this](double t) { setCursorTime(t); });
+    connect(view, &TimeChartView::cursorLeft, this, [this] { setCursorTime(std::nullopt); });
+}
+
+void StepOverlayChart::rebuildCharts()
+{
+    const bool speed = m_runs.isEmpty() || m_runs.first().trace.loop == StepLoop::Speed;
+    const bool anyPower = std::any_of(m_runs.begin(), m_runs.end(),
+                                      [](const OverlayRun &r) { return r.trace.effortIsPower; });
+    const bool anyCurrent =
+        m_runs.isEmpty() || std::any_of(m_runs.begin(), m_runs.end(),
+                                        [](const OverlayRun &r) { return !r.trace.effortIsPower; });
+    clearChart(m_response, false);
+    clearChart(m_effort, true);
+    addValueAxis(m_response, speed ? tr("Speed (dps)") : tr("Angle (\u00b0)"), Qt::AlignLeft);
+    // Power and current have no common scale: each its own axis, named for what it holds.
+    m_currentAxis = anyCurrent ? addValueAxis(m_effort, tr("iq (A)"), Qt::AlignLeft) : nullptr;
+    m_powerAxis = anyPower ? addValueAxis(m_effort, tr("Power (rel.)"),
+                                          anyCurrent ? Qt::AlignRight : Qt::AlignLeft)
+                           : nullptr;
+}
+
+void StepOverlayChart::addRun(const OverlayRun &run)
+{
+    QValueAxis *response = static_cast<QValueAxis *>(m_response->chart()->axes(Qt::Vertical)[0]);
+    m_responseLines.append(addLine(m_response->chart(), responsePoints(run.trace), run.color,
+                                   run.label, Qt::SolidLine, response));
+    QColor faint = run.color;
+    faint.setAlpha(150);
+    QLineSeries *target = addLine(m_response->chart(), targetPoints(run.trace), faint, QString(),
+                                  Qt::DashLine, response);
+    m_response->chart()->legend()->markers(target).value(0)->setVisible(false);
+    addLine(m_effort->chart(), effortPoints(run.trace), run.color, run.label, Qt::SolidLine,
+            run.trace.effortIsPower ? m_powerAxis : m_currentAxis);
 }
 
 void StepOverlayChart::setRuns(const QVector<OverlayRun> &runs)
 {
-    const bool speed = runs.isEmpty() || runs.first().trace.loop == StepLoop::Speed;
-    const bool power = !runs.isEmpty() && runs.first().trace.effortIsPower;
-    rebuild(m_response, speed ? tr("Speed (dps)") : tr("Angle (\u00b0)"), false);
-    rebuild(m_effort, power ? tr("Power (rel.)") : tr("iq (A)"), true);
+    m_runs = runs;
     m_responseLines.clear();
+    rebuildCharts();
+    MinMax x;
     for (const OverlayRun &run : runs) {
-        m_responseLines.append(addLine(m_response->chart(), responsePoints(run.trace), run.color,
-                                       run.label, Qt::SolidLine));
-        QColor faint = run.color;
-        faint.setAlpha(150);
-        QLineSeries *target =
-            addLine(m_response->chart(), targetPoints(run.trace), faint, QString(), Qt::DashLine);
-        m_response->chart()->legend()->markers(target).value(0)->setVisible(false);
-        addLine(m_effort->chart(), effortPoints(run.trace), run.color, run.label, Qt::SolidLine);
+        addRun(run);
+        for (const QPointF &p : responsePoints(run.trace))
+            x.add(p.x());
     }
     // Both legends (on the right) keep the two plot areas the same width, so times line up.
     m_effort->chart()->legend()->setVisible(!runs.isEmpty());
     m_response->chart()->legend()->setVisible(!runs.isEmpty());
-    fitAxes(m_response);
-    fitAxes(m_effort);
-    m_runCount = int(runs.size());
+    m_data = x.isValid() ? TimeSpan{x.min, x.max > x.min ? x.max : x.min + 1} : TimeSpan{0, 1};
+    m_cursor.reset();
+    resetZoom();
+}
+
+void StepOverlayChart::resetZoom()
+{
+    m_viewport.select(m_data.begin, m_data.end);
+    fitValueAxes(m_response);
+    fitValueAxes(m_effort);
+    showRange();
+}
+
+TimeSpan StepOverlayChart::shownRange() const
+{
+    return m_viewport.range(m_data.end);
+}
+
+void StepOverlayChart::showRange()
+{
+    const TimeSpan r = shownRange();
+    for (TimeChartView *view : {m_response, m_effort}) {
+        if (QValueAxis *time = view->timeAxis())
+            setAxisRange(time, r.begin, r.end, kTimeTicks);
+        view->applyPalette();
+    }
+    const double same = 1e-9 * m_data.length(); // select() centres: rounding is not a zoom
+    m_reset->setEnabled(std::abs(r.begin - m_data.begin) > same ||
+                        std::abs(r.end - m_data.end) > same);
+    setCursorTime(m_cursor);
+}
+
+void StepOverlayChart::scaleValueAxes(TimeChartView *view, double factor)
+{
+    for (QAbstractAxis *a : view->chart()->axes(Qt::Vertical)) {
+        auto *axis = static_cast<QValueAxis *>(a);
+        const double mid = (axis->min() + axis->max()) / 2;
+        const double half = (axis->max() - axis->min()) / 2 * factor;
+        setAxisRange(axis, mid - half, mid + half, valueTicks(view));
+    }
+}
+
+void StepOverlayChart::setCursorTime(std::optional<double> time)
+{
+    m_cursor = time;
+    m_response->setCursorTime(time);
+    m_effort->setCursorTime(time);
+    if (time)
+        m_readout->showText(readoutAt(*time));
+    else if (m_runs.isEmpty())
+        m_readout->showText(QString());
+    else
+        m_readout->showText(tr("Hover for values \u00b7 wheel: zoom \u00b7 drag: pan \u00b7 "
+                               "Shift+drag: select a range"));
+}
+
+QString StepOverlayChart::readoutAt(double time) const
+{
+    QStringList groups;
+    for (const OverlayRun &run : m_runs)
+        groups << tr("%1: %2").arg(run.label, responseValue(run.trace, time) +
+                                                  QStringLiteral(", ") +
+                                                  effortValue(run.trace, time));
+    return CursorReadout::line(time, groups);
+}
+
+QString StepOverlayChart::readoutText() const
+{
+    return m_readout->text();
 }
 
 QLineSeries *StepOverlayChart::responseSeries(int index) const

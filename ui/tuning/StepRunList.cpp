@@ -1,25 +1,43 @@
 #include "StepRunList.h"
 
+#include <QtCore/QFileInfo>
+
+#include <algorithm>
+
 namespace lk::ui {
 
 StepRunList::StepRunList(QObject *parent) : QObject(parent) {}
 
 int StepRunList::add(tuning::StepRun run)
 {
-    run.number = m_nextNumber++;
-    m_runs.append(std::move(run));
-    m_shown.append(true);
-    emit changed();
-    return m_runs.last().number;
+    // After every number held, loaded runs' included: a new run never takes a shown number.
+    int highest = 0;
+    for (const tuning::StepRun &r : std::as_const(m_runs))
+        highest = std::max(highest, r.number);
+    run.number = highest + 1;
+    return append(std::move(run), {});
 }
 
-void StepRunList::remove(int number)
+int StepRunList::addLoaded(tuning::StepRun run, const QString &file)
 {
-    const int i = indexOf(number);
+    return append(std::move(run), QFileInfo(file).fileName());
+}
+
+int StepRunList::append(tuning::StepRun run, const QString &file)
+{
+    m_runs.append(std::move(run));
+    m_entries.append(Entry{m_nextKey++, true, file});
+    emit changed();
+    return m_entries.last().key;
+}
+
+void StepRunList::remove(int key)
+{
+    const int i = indexOf(key);
     if (i < 0)
         return;
     m_runs.removeAt(i);
-    m_shown.removeAt(i);
+    m_entries.removeAt(i);
     emit changed();
 }
 
@@ -28,37 +46,42 @@ void StepRunList::clear()
     if (m_runs.isEmpty())
         return;
     m_runs.clear();
-    m_shown.clear();
+    m_entries.clear();
     emit changed();
 }
 
-int StepRunList::indexOf(int number) const
+int StepRunList::keyAt(int index) const
 {
-    for (int i = 0; i < m_runs.size(); ++i) {
-        if (m_runs.at(i).number == number)
+    return index >= 0 && index < m_entries.size() ? m_entries.at(index).key : 0;
+}
+
+int StepRunList::indexOf(int key) const
+{
+    for (int i = 0; i < m_entries.size(); ++i) {
+        if (m_entries.at(i).key == key)
             return i;
     }
     return -1;
 }
 
-const tuning::StepRun *StepRunList::find(int number) const
+const tuning::StepRun *StepRunList::find(int key) const
 {
-    const int i = indexOf(number);
+    const int i = indexOf(key);
     return i < 0 ? nullptr : &m_runs.at(i);
 }
 
-bool StepRunList::isShown(int number) const
+bool StepRunList::isShown(int key) const
 {
-    const int i = indexOf(number);
-    return i >= 0 && m_shown.at(i);
+    const int i = indexOf(key);
+    return i >= 0 && m_entries.at(i).shown;
 }
 
-void StepRunList::setShown(int number, bool shown)
+void StepRunList::setShown(int key, bool shown)
 {
-    const int i = indexOf(number);
-    if (i < 0 || m_shown.at(i) == shown)
+    const int i = indexOf(key);
+    if (i < 0 || m_entries.at(i).shown == shown)
         return;
-    m_shown[i] = shown;
+    m_entries[i].shown = shown;
     emit changed();
 }
 
@@ -66,10 +89,41 @@ QVector<tuning::StepRun> StepRunList::shownRuns() const
 {
     QVector<tuning::StepRun> out;
     for (int i = 0; i < m_runs.size(); ++i) {
-        if (m_shown.at(i))
+        if (m_entries.at(i).shown)
             out.append(m_runs.at(i));
     }
     return out;
+}
+
+QVector<int> StepRunList::shownKeys() const
+{
+    QVector<int> out;
+    for (const Entry &e : m_entries) {
+        if (e.shown)
+            out.append(e.key);
+    }
+    return out;
+}
+
+QString StepRunList::baseTitle(int index) const
+{
+    const tuning::StepRun &run = m_runs.at(index);
+    return run.label.isEmpty() ? tr("Run %1").arg(run.number) : run.label;
+}
+
+QString StepRunList::title(int index) const
+{
+    if (index < 0 || index >= m_runs.size())
+        return {};
+    const QString base = baseTitle(index);
+    const QString &file = m_entries.at(index).file;
+    if (file.isEmpty())
+        return base;
+    for (int i = 0; i < m_runs.size(); ++i) {
+        if (i != index && baseTitle(i) == base)
+            return tr("%1 (%2)").arg(base, file);
+    }
+    return base;
 }
 
 } // namespace lk::ui

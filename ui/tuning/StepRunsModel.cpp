@@ -10,6 +10,8 @@
 #include <QtCore/QLocale>
 #include <QtGui/QFont>
 
+#include <algorithm>
+
 namespace lk::ui {
 
 using tuning::StepLoop;
@@ -37,23 +39,32 @@ void StepRunsModel::rebuild()
         }
     }
     // Metrics once per change, not per painted cell. Best values among the overlaid runs
-    // only: the comparison the user is looking at.
+    // only (the comparison the user is looking at), and only between runs that measure the
+    // metric alike: the same loop, the same unit (RunComparison::comparableKey()).
     m_metrics.clear();
     QVector<StepRun> shown;
+    QVector<tuning::EdgeMetrics> shownMetrics;
     QVector<int> columns;
     for (int c = 0; c < m_runs->runs().size(); ++c) {
         m_metrics << m_runs->runs().at(c).stepMetrics();
-        if (m_runs->isShown(m_runs->runs().at(c).number)) {
+        if (m_runs->isShown(m_runs->keyAt(c))) {
             shown << m_runs->runs().at(c);
+            shownMetrics << m_metrics.last();
             columns << c;
         }
     }
     m_best.clear();
+    m_peers.clear();
     for (StepMetricKind kind : MetricText::all()) {
         QVector<int> best;
-        for (int i : tuning::RunComparison::best(shown, kind))
+        for (int i : tuning::RunComparison::best(shown, kind, shownMetrics))
             best << columns.at(i);
         m_best << best;
+        QVector<int> peers(m_runs->runs().size(), 0);
+        for (int i = 0; i < shown.size(); ++i)
+            peers[columns.at(i)] =
+                int(tuning::RunComparison::comparableWith(shown, i, kind).size());
+        m_peers << peers;
     }
     endResetModel();
 }
@@ -84,9 +95,9 @@ QVector<int> StepRunsModel::bestColumns(StepMetricKind kind) const
     return m_best.value(int(MetricText::all().indexOf(kind)));
 }
 
-QColor StepRunsModel::runColor(int number)
+QColor StepRunsModel::runColor(int key)
 {
-    return SeriesColors::at(number - 1);
+    return SeriesColors::at(key - 1);
 }
 
 QString StepRunsModel::fixedText(int column, FixedRow row) const
@@ -145,8 +156,15 @@ QVariant StepRunsModel::metricData(int column, StepMetricKind kind, int role) co
     }
     case Qt::BackgroundRole:
         return best ? QVariant(StatusColors::background(StatusColors::Role::Ok)) : QVariant();
-    case Qt::ToolTipRole:
-        return best ? tr("Best of the runs shown.") : QVariant();
+    case Qt::ToolTipRole: {
+        const int peers = m_peers.value(int(MetricText::all().indexOf(kind))).value(column);
+        if (best)
+            return tr("Best of the %n comparable run(s) shown (same loop and unit).", nullptr,
+                      peers);
+        if (peers == 1)
+            return tr("Not compared: no other run shown has the same loop and unit.");
+        return {};
+    }
     default:
         return {};
     }
@@ -159,7 +177,7 @@ QVariant StepRunsModel::data(const QModelIndex &index, int role) const
     const int row = index.row();
     const StepRun &run = m_runs->runs().at(index.column());
     if (row == Overlay && role == Qt::CheckStateRole)
-        return m_runs->isShown(run.number) ? Qt::Checked : Qt::Unchecked;
+        return m_runs->isShown(m_runs->keyAt(index.column())) ? Qt::Checked : Qt::Unchecked;
     if (row < kFixedRows)
         return role == Qt::DisplayRole ? QVariant(fixedText(index.column(), FixedRow(row)))
                                        : QVariant();
@@ -178,7 +196,7 @@ bool StepRunsModel::setData(const QModelIndex &index, const QVariant &value, int
 {
     if (!index.isValid() || index.row() != Overlay || role != Qt::CheckStateRole)
         return false;
-    m_runs->setShown(m_runs->runs().at(index.column()).number,
+    m_runs->setShown(m_runs->keyAt(index.column()),
                      value.toInt() == Qt::Checked); // rebuild() resets the model
     return true;
 }
@@ -196,17 +214,23 @@ QVariant StepRunsModel::headerData(int section, Qt::Orientation orientation, int
     if (orientation == Qt::Horizontal) {
         if (section >= columnCount())
             return {};
-        const StepRun &run = m_runs->runs().at(section);
         if (role == Qt::DisplayRole)
-            return run.label.isEmpty() ? tr("Run %1").arg(run.number) : run.label;
+            return m_runs->title(section);
         if (role == Qt::DecorationRole)
-            return runColor(run.number);
+            return runColor(m_runs->keyAt(section));
         return {};
     }
+    const bool anyPower = std::any_of(m_runs->runs().begin(), m_runs->runs().end(),
+                                      [](const StepRun &r) { return r.trace.effortIsPower; });
+    const bool anyCurrent = std::any_of(m_runs->runs().begin(), m_runs->runs().end(),
+                                        [](const StepRun &r) { return !r.trace.effortIsPower; });
     if (role == Qt::ToolTipRole && section >= kFixedRows &&
         section < kFixedRows + MetricText::all().size()) {
-        const bool power = !m_runs->runs().isEmpty() && m_runs->runs().first().trace.effortIsPower;
-        return MetricText::definition(MetricText::all().at(section - kFixedRows), power);
+        const StepMetricKind kind = MetricText::all().at(section - kFixedRows);
+        if (anyPower && anyCurrent)
+            return MetricText::definition(kind, false) + QLatin1Char(' ') +
+                   MetricText::definition(kind, true);
+        return MetricText::definition(kind, anyPower);
     }
     if (role != Qt::DisplayRole)
         return {};
@@ -226,8 +250,9 @@ QVariant StepRunsModel::headerData(int section, Qt::Orientation orientation, int
     }
     const int metric = section - kFixedRows;
     if (metric < MetricText::all().size()) {
-        const bool power = !m_runs->runs().isEmpty() && m_runs->runs().first().trace.effortIsPower;
-        return MetricText::name(MetricText::all().at(metric), power);
+        const StepMetricKind kind = MetricText::all().at(metric);
+        return anyPower && anyCurrent ? MetricText::mixedName(kind)
+                                      : MetricText::name(kind, anyPower);
     }
     return m_keys.value(metric - int(MetricText::all().size()));
 }

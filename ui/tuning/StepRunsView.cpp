@@ -99,18 +99,19 @@ StepRunsView::StepRunsView(StepRunList *runs, QWidget *parent)
 void StepRunsView::refreshOverlay()
 {
     const QVector<StepRun> shown = m_runs->shownRuns();
+    const QVector<int> keys = m_runs->shownKeys();
     QVector<OverlayRun> overlay;
     int hidden = 0;
     // One loop at a time (speed and angle have no common axis): the newest shown run's.
     const std::optional<tuning::StepLoop> loop =
         shown.isEmpty() ? std::nullopt : std::optional(shown.last().spec.loop);
-    for (const StepRun &run : shown) {
-        if (run.spec.loop != *loop) {
+    for (int i = 0; i < shown.size(); ++i) {
+        if (shown.at(i).spec.loop != *loop) {
             ++hidden;
             continue;
         }
-        overlay.append({run.label.isEmpty() ? tr("Run %1").arg(run.number) : run.label,
-                        StepRunsModel::runColor(run.number), run.trace});
+        overlay.append({m_runs->title(m_runs->indexOf(keys.at(i))),
+                        StepRunsModel::runColor(keys.at(i)), shown.at(i).trace});
     }
     m_overlay->setRuns(overlay);
     if (m_runs->runs().isEmpty())
@@ -136,7 +137,7 @@ void StepRunsView::removeSelected()
         selected.isEmpty() ? int(m_runs->runs().size()) - 1 : selected.first().column();
     if (column < 0 || column >= m_runs->runs().size())
         return;
-    m_runs->remove(m_runs->runs().at(column).number);
+    m_runs->remove(m_runs->keyAt(column));
 }
 
 void StepRunsView::showDefinitions()
@@ -169,7 +170,7 @@ QString StepRunsView::loadRuns(const QString &path)
         return error;
     }
     for (const StepRun &run : *loaded)
-        m_runs->add(run);
+        m_runs->addLoaded(run, path); // as saved: its number and name kept
     setStatus(tr("Added %n run(s) from %1.", nullptr, int(loaded->size())).arg(path));
     return {};
 }

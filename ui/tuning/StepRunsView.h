@@ -23,7 +23,8 @@ public:
 
     /// Saves every run; returns an error text, empty on success.
     QString saveRuns(const QString &path);
-    /// Adds the runs of a file; a bad file adds nothing. Returns an error text, empty on success.
+    /// Adds the runs of a file as they were saved (numbers and names kept); a bad file adds
+    /// nothing. Returns an error text, empty on success.
     QString loadRuns(const QString &path);
 
     StepOverlayChart *overlay() const { return m_overlay; }

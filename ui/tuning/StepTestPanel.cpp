@@ -276,8 +276,9 @@ void StepTestPanel::onFinished(const StepTestResult &result)
 {
     tuning::StepRun run = m_pending;
     run.trace = result.trace;
-    const int number = m_runs->add(run);
-    const tuning::EdgeMetrics m = m_runs->find(number)->stepMetrics();
+    const int key = m_runs->add(run);
+    const int number = m_runs->find(key)->number;
+    const tuning::EdgeMetrics m = m_runs->find(key)->stepMetrics();
     const bool power = run.trace.effortIsPower;
     setStatus(tr("Run %1: rise %2, overshoot %3, settling (2 %) %4; %5 samples at %6 Hz. %7")
                   .arg(number)
@@ -289,7 +290,7 @@ void StepTestPanel::onFinished(const StepTestResult &result)
                   .arg(stillMoving(result)));
     refreshEnabled();
     emit runningChanged(false);
-    emit runFinished(number);
+    emit runFinished(key);
 }
 
 void StepTestPanel::onFailed(const StepTestResult &result)

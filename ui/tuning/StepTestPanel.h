@@ -78,8 +78,8 @@ public:
     QString statusText() const;
 
 signals:
-    /// A run finished and was added to the list.
-    void runFinished(int number);
+    /// A run finished and was added to the list under StepRunList key `key`.
+    void runFinished(int key);
     /// The user asked to stop a running test: the emergency stop's job (Motor Off to all).
     void emergencyStopRequested();
     void runningChanged(bool running);

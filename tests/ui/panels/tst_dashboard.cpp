@@ -71,6 +71,8 @@ private slots:
     void statisticsClearedOnDisconnect();
     void selectionFollowsEveryView();
     void encoderResolutionFromData();
+    void powerAlwaysHasItsUnit_data();
+    void powerAlwaysHasItsUnit();
 };
 
 void tst_Dashboard::showsValues_data()
@@ -96,7 +98,7 @@ void tst_Dashboard::showsValues_data()
                                << ""
                                << "output shaft";
     QTest::newRow("MS power") << int(protocol::Series::MS) << "MS5005"
-                              << "300"
+                              << "300 rel."
                               << "600.0 rpm"
                               << "7200.00 \u00b0"
                               << "not on MS"
@@ -321,6 +323,37 @@ void tst_Dashboard::encoderResolutionFromData()
     known.generation = m.model.generation;
     resolutions.setUserBits(3, known, 18);
     QCOMPARE(feed(6437), QStringLiteral("6437 of 65536 (18-bit, your setting)"));
+}
+
+// An MS drive's power, 0 included, is shown with its unit wherever it is shown (the
+// dashboard said "0" beside "0.00 A" for a current).
+void tst_Dashboard::powerAlwaysHasItsUnit_data()
+{
+    QTest::addColumn<double>("power");
+    QTest::addColumn<QString>("shown");
+    QTest::newRow("0") << 0.0 << "0 rel.";
+    QTest::newRow("300") << 300.0 << "300 rel.";
+    QTest::newRow("-1000") << -1000.0 << "-1000 rel.";
+}
+
+void tst_Dashboard::powerAlwaysHasItsUnit()
+{
+    QFETCH(double, power);
+    QFETCH(QString, shown);
+    BusModel model;
+    DashboardPanel dash(&model);
+    dash.resize(1000, 700);
+    dash.show();
+    lk::ui::OverviewModel overview(&model);
+    model.addFound(found(3, protocol::Series::MS, QStringLiteral("MS4015")));
+    TelemetrySample s = motion(3, true);
+    s.power = power;
+    model.applyTelemetry({s});
+    dash.refresh();
+    QCOMPARE(dash.readout(QStringLiteral("torque"))->value(), shown);
+    overview.refresh();
+    QCOMPARE(overview.data(overview.index(0, lk::ui::OverviewModel::Torque)).toString(), shown);
+    QCOMPARE(lk::ui::Format::power(power), shown);
 }
 
 QTEST_MAIN(tst_Dashboard)

@@ -1,39 +1,35 @@
 // The scan estimate: stable for the same bus (it followed the adaptive timeout margin, which
 // moves with the host's load, and jumped between 272 ms and 1.7 s while scans took 207 ms),
-// and, once a scan at that baud completed, what that scan took.
+// and, once a scan at that baud completed, what that scan took. The counts are of drives.
 
 #include <bus/BusConfig.h>
 #include <bus/BusTiming.h>
 #include <bus/ScanTypes.h>
+#include <bus/Scanner.h>
 #include <panels/ScanControls.h>
 
 #include <QtTest/QtTest>
 #include <QtWidgets/QLabel>
 
 using lk::bus::BusTiming;
+using lk::bus::Scanner;
 using lk::ui::ScanControls;
 
 class tst_ScanControls : public QObject {
     Q_OBJECT
 private slots:
-    void estimateIsProbePlusQuietPerId();
+    void estimateIsTheScannersPerBaud();
+    void sweepCountsDrivesNotAnswers();
     void lastScanTimesTheBus();
 };
 
-void tst_ScanControls::estimateIsProbePlusQuietPerId()
+void tst_ScanControls::estimateIsTheScannersPerBaud()
 {
     lk::bus::ScanOptions o;
     o.firstId = 1;
     o.lastId = 32;
-    const lk::bus::BusConfig config;
-    const double probe = BusTiming::replyTimeoutS(lk::protocol::Command::ReadState1, 1000000,
-                                                  config.minMarginMs / 1000);
-    const double quiet =
-        BusTiming::kTurnaroundS +
-        BusTiming::wireTimeS(0, BusTiming::maxReplyBytes(lk::protocol::Command::ReadState1),
-                             1000000) +
-        config.initialMarginMs / 1000;
-    QCOMPARE(ScanControls::estimateSeconds(o, 1000000), 32 * (probe + quiet));
+    QCOMPARE(ScanControls::estimateSeconds(o, 1000000),
+             Scanner::estimatedSeconds(32, 1000000, lk::bus::BusConfig{}));
     o.sweepBauds = true;
     o.bauds = {115200, 1000000};
     o.lastId = 1;
@@ -41,6 +37,49 @@ void tst_ScanControls::estimateIsProbePlusQuietPerId()
     one.sweepBauds = false;
     QCOMPARE(ScanControls::estimateSeconds(o, 0), ScanControls::estimateSeconds(one, 115200) +
                                                       ScanControls::estimateSeconds(one, 1000000));
+    // Every baud of the sweep, the slowest costing the most.
+    o.bauds.clear();
+    o.lastId = 32;
+    QVERIFY(ScanControls::estimateSeconds(o, 115200) >
+            ScanControls::estimateSeconds(one, 9600) * 32);
+}
+
+// The built-in bus answers at every baud: a sweep hears its four drives forty times. The
+// summary counts drives, and the next sweep's estimate counts their answers' wire time.
+void tst_ScanControls::sweepCountsDrivesNotAnswers()
+{
+    ScanControls controls;
+    controls.setRange(1, 32, true);
+    controls.setBaud(115200);
+    auto *status = controls.findChild<QLabel *>(QStringLiteral("scanStatus"));
+    const double silent = controls.expectedSeconds(controls.options());
+    controls.onScanStarted();
+    lk::bus::ScanSummary done;
+    done.finalBaud = 115200;
+    done.elapsedS = 3.4;
+    for (int baud : BusTiming::standardBauds()) {
+        for (int id = 1; id <= 4; ++id) {
+            lk::bus::FoundMotor m;
+            m.id = id;
+            m.baud = baud;
+            m.modelKnown = true;
+            m.model.motorName = QStringLiteral("MF4015");
+            done.motors << m;
+        }
+    }
+    lk::bus::ScanProgress p;
+    p.baud = 4000000;
+    p.id = 32;
+    p.done = 319;
+    p.total = 320;
+    p.found = Scanner::driveCount(done.motors);
+    controls.onScanProgress(p);
+    QVERIFY2(status->text().contains(QStringLiteral("4 drive(s) found")),
+             qPrintable(status->text()));
+    controls.onScanFinished(done);
+    QCOMPARE(status->text(), QStringLiteral("Scan done in 3.4 s: 4 drive(s) found"));
+    // Four drives at each baud: at 9600 baud their replies take longer than a silent ID.
+    QVERIFY(controls.expectedSeconds(controls.options()) > silent);
 }
 
 void tst_ScanControls::lastScanTimesTheBus()

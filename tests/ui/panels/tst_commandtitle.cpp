@@ -1,0 +1,103 @@
+// A command goes by a translated human name in the GUI (CommandTitle), never by its
+// snake_case CLI.md name, except in the traffic view's command column (CLI.md), whose cells
+// and filter give the human name on hover.
+
+#include <drive/DriveText.h>
+#include <main/CommandedMotion.h>
+#include <panels/BusModel.h>
+#include <panels/CommandTitle.h>
+#include <panels/TrafficModel.h>
+#include <panels/TrafficPanel.h>
+
+#include <bus/TrafficEvent.h>
+#include <protocol/RequestBuilder.h>
+#include <safety/MotionGuard.h>
+
+#include <QtTest/QtTest>
+#include <QtWidgets/QComboBox>
+
+using lk::protocol::Command;
+using lk::protocol::CommandTable;
+using lk::ui::CommandTitle;
+
+class tst_CommandTitle : public QObject {
+    Q_OBJECT
+private slots:
+    void everyCommandHasAHumanName_data();
+    void everyCommandHasAHumanName();
+    void motionIsDescribedByName();
+    void trafficColumnKeepsCliNamesAndHoversTheTitle();
+    void driveViewsNameCommandsByTitle();
+};
+
+void tst_CommandTitle::everyCommandHasAHumanName_data()
+{
+    QTest::addColumn<int>("code");
+    for (const auto &info : CommandTable::all())
+        QTest::newRow(info.name) << int(info.command);
+}
+
+void tst_CommandTitle::everyCommandHasAHumanName()
+{
+    QFETCH(int, code);
+    const Command c = Command(code);
+    const QString title = CommandTitle::name(c);
+    QVERIFY(!title.isEmpty());
+    QVERIFY2(!title.contains(QLatin1Char('_')), qPrintable(title));
+    QVERIFY(title != CommandTable::name(c));
+    QCOMPARE(CommandTitle::withCode(c),
+             QStringLiteral("%1 (%2)").arg(title, CommandTable::codeText(quint8(code))));
+}
+
+void tst_CommandTitle::motionIsDescribedByName()
+{
+    QCOMPARE(CommandTitle::name(Command::MultiPositionLimited),
+             QStringLiteral("Multi-turn position with speed limit"));
+    // A motion command without a value to tell: its title.
+    QCOMPARE(lk::ui::CommandedMotion::describe(
+                 *lk::protocol::build::plain(Command::MotorRun, 1).request),
+             QStringLiteral("Motor Run"));
+}
+
+void tst_CommandTitle::trafficColumnKeepsCliNamesAndHoversTheTitle()
+{
+    lk::ui::TrafficModel model;
+    lk::bus::TrafficEvent sent;
+    sent.kind = lk::bus::TrafficEvent::Kind::Sent;
+    sent.id = 1;
+    sent.command = quint8(Command::MultiPositionLimited);
+    model.append({sent});
+    const QModelIndex cell = model.index(0, lk::ui::TrafficModel::Command);
+    QCOMPARE(cell.data().toString(), QStringLiteral("multi_position_limited"));
+    QCOMPARE(cell.data(Qt::ToolTipRole).toString(),
+             QStringLiteral("Multi-turn position with speed limit (0xA4)"));
+
+    lk::ui::BusModel bus;
+    lk::ui::TrafficPanel panel(&bus);
+    auto *filter = panel.findChild<QComboBox *>(QStringLiteral("trafficCommandFilter"));
+    QVERIFY(filter);
+    const int item = filter->findData(int(Command::MultiPositionLimited));
+    QVERIFY(item > 0);
+    QCOMPARE(filter->itemText(item), QStringLiteral("multi_position_limited (0xA4)"));
+    QCOMPARE(filter->itemData(item, Qt::ToolTipRole).toString(),
+             QStringLiteral("Multi-turn position with speed limit"));
+}
+
+// What the drive views say after sending ("Sent ... to drive 1.") and when the gate refuses:
+// still the snake_case names, worded in ui/drive and ui/text, which this branch does not own.
+void tst_CommandTitle::driveViewsNameCommandsByTitle()
+{
+    QEXPECT_FAIL("", "needs ui/drive/DriveText::command to word CommandTitle::withCode", Continue);
+    QCOMPARE(lk::ui::DriveText::command(Command::MultiPositionLimited),
+             CommandTitle::withCode(Command::MultiPositionLimited));
+    lk::safety::Verdict unknown;
+    unknown.kind = lk::safety::LimitKind::UnknownSeries;
+    unknown.command = Command::MultiPositionLimited;
+    const QString refusal = lk::ui::DriveText::refusal(unknown, std::nullopt);
+    QEXPECT_FAIL("", "needs ui/text/VerdictText to name the command by its title in the GUI",
+                 Continue);
+    QVERIFY2(!refusal.contains(QStringLiteral("multi_position_limited")), qPrintable(refusal));
+}
+
+QTEST_MAIN(tst_CommandTitle)
+#include "tst_commandtitle.moc"

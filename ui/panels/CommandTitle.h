@@ -1,0 +1,24 @@
+#pragma once
+
+#include <protocol/Command.h>
+
+#include <QtCore/QCoreApplication>
+#include <QtCore/QString>
+
+namespace lk::ui {
+
+/// The name a user reads for a protocol command: "Multi-turn position with speed limit",
+/// translated. The snake_case names (CommandTable::name, CLI.md) are for lkctl, JSON and the
+/// traffic view's command column; everywhere else in the GUI a command goes by this one.
+/// QtCore only, so that the wording of verdicts (ui/text) can use it as well.
+class CommandTitle {
+    Q_DECLARE_TR_FUNCTIONS(lk::ui::CommandTitle)
+public:
+    /// "Multi-turn position with speed limit"; the code ("0xA4") for a value outside the
+    /// command table.
+    static QString name(protocol::Command command);
+    /// "Multi-turn position with speed limit (0xA4)".
+    static QString withCode(protocol::Command command);
+};
+
+} // namespace lk::ui
