@@ -1,6 +1,7 @@
 #include "ControlCommand.h"
 
 #include "Console.h"
+#include "ControlWatch.h"
 #include "LiveBus.h"
 #include "MotionLimitOptions.h"
 #include "OrderedJson.h"
@@ -97,6 +98,7 @@ QString ControlCommand::usage() const
                "  --max-speed DPS        position modes: a lower max speed for this move (above\n"
                "                         your speed limit is refused)\n"
                "%2"
+               "%4"
                "  --json                 one line: {\"command\":\"speed\",\"id\":3,\"sent\":{...},"
                "\n"
                "                         \"speed_bound\":{\"source\":\"soft_limit\",\"dps\":720},"
@@ -119,7 +121,9 @@ QString ControlCommand::usage() const
         .arg(BusOptions::helpText(), MotionLimitOptions::helpText(),
              exitStatusText(QStringLiteral(
                  "  4  refused for safety: the series or one of your limits does not allow it\n"
-                 "     (the message names the limit and both values); nothing was sent\n")));
+                 "     (the message names the limit and both values); nothing was sent\n") +
+                            ControlWatch::exitStatusLine()),
+             ControlWatch::helpText());
 }
 
 std::optional<FieldBuildResult> ControlCommand::build(const QStringList &pos,
@@ -271,6 +275,7 @@ int ControlCommand::run(const QStringList &args, Console &console)
     for (const char *o : {"direction", "max-speed"})
         parser.addOption(QLatin1String(o), true);
     MotionLimitOptions::declare(parser);
+    ControlWatch::declare(parser);
     int status = kExitOk;
     const std::optional<BusOptions> busOptions = parseBus(parser, args, console, &status);
     if (!busOptions)
@@ -278,6 +283,10 @@ int ControlCommand::run(const QStringList &args, Console &console)
     const std::optional<Plan> plan = parse(parser, console, &status);
     if (!plan)
         return status;
+    QString watchError; // --watch: the speed watch after torque and open loop (ControlWatch)
+    std::optional<ControlWatch> watch = ControlWatch::read(parser, &watchError);
+    if (!watch)
+        return usageError(console, watchError);
 
     LiveBus bus(console, name());
     if (!bus.open(*busOptions))
@@ -298,7 +307,8 @@ int ControlCommand::run(const QStringList &args, Console &console)
         bus.refused(text::VerdictText::verdict(motion.verdict, who->series));
         return kExitRefused;
     }
-    return send(bus, *plan, motion, position);
+    watch->arm(bus, plan->request.id, *limits);
+    return watch->follow(bus, *motion.request, plan->json, send(bus, *plan, motion, position));
 }
 
 } // namespace lk::lkctl

@@ -80,6 +80,9 @@ public:
     /// lkstudio's emergency stop (button or Esc) should call it before stopping the bus, so
     /// that no setpoint can follow the emergency motor_off.
     void haltLocalMotion(const QString &reason);
+    /// Drive `id` stopped without this view stopping it (a fault trip, the speed watch): the
+    /// status says `why` instead of the command last sent; its generator and jog halt.
+    void showDriveStopped(int id, const QString &why);
 
     ControlModePanel *modePanel() const { return m_modes; }
     JogPanel *jogPanel() const { return m_jog; }

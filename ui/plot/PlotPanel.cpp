@@ -144,8 +144,9 @@ QWidget *PlotPanel::buildSignalRow()
 
 QVector<TelemetryChannel> PlotPanel::pickableChannels()
 {
-    return {TelemetryChannel::Torque, TelemetryChannel::Speed, TelemetryChannel::Encoder,
-            TelemetryChannel::MultiTurn};
+    return {TelemetryChannel::Torque,      TelemetryChannel::Speed,
+            TelemetryChannel::Encoder,     TelemetryChannel::MultiTurn,
+            TelemetryChannel::Temperature, TelemetryChannel::Voltage};
 }
 
 void PlotPanel::setDrives(const QVector<int> &ids)
