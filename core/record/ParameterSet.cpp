@@ -1,12 +1,13 @@
 #include "ParameterSet.h"
 
+#include <system/AtomicFile.h>
+
 #include <QtCore/QCoreApplication>
 
 #include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonValue>
-#include <QtCore/QSaveFile>
 #include <QtCore/QSet>
 
 #include <algorithm>
@@ -433,23 +434,11 @@ std::optional<ParameterSet> ParameterSet::load(const QString &path, ParameterFil
 
 QString writeFileAtomically(const QString &path, const QByteArray &bytes)
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return QCoreApplication::translate("lk::record::ParameterSet", "cannot write %1: %2")
-            .arg(path, file.errorString());
-    // A short file only reaches the disk when the buffer is flushed, and a flush that fails
-    // inside commit() (a full disk) does not stop Qt 6.4's QSaveFile from renaming the cut
-    // copy over the target: flush here, where a failure can still cancel.
-    if (file.write(bytes) != bytes.size() || !file.flush()) {
-        const QString why = file.errorString();
-        file.cancelWriting();
-        return QCoreApplication::translate("lk::record::ParameterSet", "cannot write %1: %2")
-            .arg(path, why);
-    }
-    if (!file.commit())
-        return QCoreApplication::translate("lk::record::ParameterSet", "cannot write %1: %2")
-            .arg(path, file.errorString());
-    return QString();
+    const QString why = system::AtomicFile::writeAll(path, bytes);
+    if (why.isEmpty())
+        return QString();
+    return QCoreApplication::translate("lk::record::ParameterSet", "cannot write %1: %2")
+        .arg(path, why);
 }
 
 } // namespace lk::record

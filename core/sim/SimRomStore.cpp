@@ -2,12 +2,13 @@
 
 #include "SimLog.h"
 
+#include <system/AtomicFile.h>
+
 #include <QtCore/QDir>
 #include <QtCore/QFile>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
 #include <QtCore/QRegularExpression>
-#include <QtCore/QSaveFile>
 
 #include <limits>
 
@@ -214,14 +215,9 @@ bool SimRomStore::save(int id, protocol::Series series, const SimRom &rom)
     m_entries.insert(id, Entry{series, rom});
     if (!persistent())
         return true;
-    QSaveFile f(filePath(id));
     const QByteArray bytes = QJsonDocument(toJson(id, series, rom)).toJson(QJsonDocument::Indented);
-    // flush() before commit(): Qt 6.4's QSaveFile renames a cut file into place when the
-    // flush inside commit() fails (a full disk).
-    if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size() || !f.flush() ||
-        !f.commit()) {
-        const QString why = f.errorString();
-        f.cancelWriting(); // nothing replaces the earlier file
+    const QString why = system::AtomicFile::writeAll(filePath(id), bytes);
+    if (!why.isEmpty()) { // nothing replaced the earlier file
         addError(QStringLiteral("Cannot write ROM file %1 (%2): the change lasts only until "
                                 "the simulator exits.")
                      .arg(QDir::toNativeSeparators(filePath(id)), why));

@@ -2,8 +2,8 @@
 
 #include <record/CsvWriter.h>
 #include <record/TelemetryColumns.h>
+#include <system/AtomicFile.h>
 
-#include <QtCore/QSaveFile>
 #include <QtGui/QImageWriter>
 #include <QtGui/QPixmap>
 #include <QtWidgets/QWidget>
@@ -127,21 +127,13 @@ QString PlotExporter::exportCsv(const TelemetryStore &store, const QVector<PlotT
 QString PlotExporter::exportPng(QWidget *widget, const QString &path)
 {
     const QImage image = widget->grab().toImage();
-    QSaveFile file(path); // as for CSV: the whole image or nothing
-    if (!file.open(QIODevice::WriteOnly)) {
+    system::AtomicFile file(path); // as for CSV: the whole image or nothing
+    if (!file.open()) {
         return tr("Cannot open %1: %2").arg(path, file.errorString());
     }
-    QImageWriter writer(&file, "png");
+    QImageWriter writer(file.device(), "png");
     if (!writer.write(image)) {
-        file.cancelWriting();
-        return tr("Cannot write %1: %2").arg(path, writer.errorString());
-    }
-    // Qt 6.4's QSaveFile renames a cut file into place when the flush inside commit() fails
-    // (a full disk): flush here, where a failure still cancels.
-    if (!file.flush()) {
-        const QString why = file.errorString();
-        file.cancelWriting();
-        return tr("Cannot write %1: %2").arg(path, why);
+        file.fail(writer.errorString());
     }
     if (!file.commit()) {
         return tr("Cannot write %1: %2").arg(path, file.errorString());
