@@ -2,7 +2,7 @@
 
 #include "ArgParser.h"
 
-#include <QtCore/QFile>
+#include <system/BoundedFile.h>
 
 namespace lk::lkctl {
 
@@ -61,14 +61,17 @@ std::optional<MotionLimitOptions> MotionLimitOptions::read(const ArgParser &pars
     if (!parser.isSet(QStringLiteral("limits")))
         return o;
     const QString path = parser.value(QStringLiteral("limits"));
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
-        *error = QStringLiteral("cannot read --limits %1: %2").arg(path, f.errorString());
+    // Bounded: a limits file is a few hundred bytes, and /dev/zero or a FIFO must not hang
+    // or exhaust lkctl.
+    const system::BoundedRead file = system::BoundedFile::read(path, kMaxFileBytes);
+    if (!file.ok()) {
+        *error = QStringLiteral("cannot read --limits %1: %2; nothing was sent")
+                     .arg(path, file.error->reason());
         return std::nullopt;
     }
     // Check the whole file now (keys, types, ranges, repeats), so that a bad file never gets
     // as far as the bus; it is read again over the series' defaults once the series is known.
-    const QByteArray text = f.readAll();
+    const QByteArray text = file.bytes;
     QString why;
     if (!safety::SoftLimits::fromJsonText(text, safety::SoftLimits{}, &why)) {
         *error = QStringLiteral("--limits %1: %2; nothing was sent").arg(path, why);

@@ -18,6 +18,9 @@ class ArgParser;
 /// defaults once the drive's series is known.
 class MotionLimitOptions {
 public:
+    /// A limits file is a few hundred bytes; a larger one is refused unread.
+    static constexpr qint64 kMaxFileBytes = 64 * 1024;
+
     /// Declare --limits, --max-torque-a, --max-speed-dps and --max-power.
     static void declare(ArgParser &parser);
     /// The options' help section ("Limits (defaults per series: ...").

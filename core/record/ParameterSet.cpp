@@ -1,10 +1,9 @@
 #include "ParameterSet.h"
 
 #include <system/AtomicFile.h>
+#include <system/BoundedFile.h>
 
 #include <QtCore/QCoreApplication>
-
-#include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonValue>
@@ -23,7 +22,6 @@ using Kind = ParameterFileError::Kind;
 using ValueType = ParameterFileError::ValueType;
 
 const char *const kFormat = ParameterSet::kFormatName;
-constexpr qint64 kMaxFileBytes = 1 << 20;         // a parameter set is a few hundred bytes
 constexpr double kMaxVersionShown = 65535 / 10.0; // u16 raw / 10 (V2.3) or / 100 (V2.35)
 constexpr int kGainMax = 255;
 constexpr int kGainMaxV235 = 65535;
@@ -414,19 +412,20 @@ QString ParameterSet::save(const QString &path) const
 std::optional<ParameterSet> ParameterSet::load(const QString &path, ParameterFileError *error)
 {
     ParameterFileError e;
-    e.path = path;
-    QFile file(path);
+    const system::BoundedRead file = system::BoundedFile::read(path, kMaxFileBytes);
     std::optional<ParameterSet> set;
-    if (!file.open(QIODevice::ReadOnly)) {
-        e.kind = Kind::CannotRead;
-        e.detail = file.errorString();
-    } else if (file.size() > kMaxFileBytes) {
+    if (file.ok()) {
+        set = fromJson(file.bytes, &e);
+    } else if (file.error->kind == system::FileReadError::Kind::TooLarge) {
         e.kind = Kind::TooLarge;
         e.max = double(kMaxFileBytes);
+        e.found = QString::number(file.error->size);
+        e.detail = file.error->reason();
     } else {
-        set = fromJson(file.readAll(), &e);
-        e.path = path;
+        e.kind = Kind::CannotRead; // a directory, a FIFO, a device: refused unopened
+        e.detail = file.error->reason();
     }
+    e.path = path;
     if (!set && error)
         *error = e;
     return set;

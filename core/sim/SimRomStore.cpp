@@ -3,9 +3,9 @@
 #include "SimLog.h"
 
 #include <system/AtomicFile.h>
+#include <system/BoundedFile.h>
 
 #include <QtCore/QDir>
-#include <QtCore/QFile>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
 #include <QtCore/QRegularExpression>
@@ -160,22 +160,15 @@ void SimRomStore::loadAll()
 void SimRomStore::loadFile(const QString &path, int id)
 {
     const QString shown = QDir::toNativeSeparators(path);
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
+    const system::BoundedRead file = system::BoundedFile::read(path, kMaxFileSize);
+    if (!file.ok()) { // unreadable, not a regular file, or too large to be a ROM file
         addError(QStringLiteral("Cannot read ROM file %1 (%2): drive %3 starts with defaults.")
-                     .arg(shown, f.errorString())
-                     .arg(id));
-        return;
-    }
-    if (f.size() > kMaxFileSize) {
-        addError(QStringLiteral("ROM file %1 is too large to be a ROM file: drive %2 starts "
-                                "with defaults.")
-                     .arg(shown)
+                     .arg(shown, file.error->reason())
                      .arg(id));
         return;
     }
     QJsonParseError parseError;
-    const QJsonDocument doc = QJsonDocument::fromJson(f.readAll(), &parseError);
+    const QJsonDocument doc = QJsonDocument::fromJson(file.bytes, &parseError);
     QString problem;
     if (parseError.error != QJsonParseError::NoError)
         problem = QStringLiteral("invalid JSON at offset %1: %2")

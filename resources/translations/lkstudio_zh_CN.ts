@@ -462,6 +462,60 @@
     </message>
 </context>
 <context>
+    <name>lk::system::AtomicFile</name>
+    <message>
+        <source>the file was not opened</source>
+        <translation>文件未打开</translation>
+    </message>
+</context>
+<context>
+    <name>lk::system::BoundedFile</name>
+    <message>
+        <source>a directory</source>
+        <translation>一个目录</translation>
+    </message>
+    <message>
+        <source>a FIFO (named pipe)</source>
+        <translation>一个 FIFO（命名管道）</translation>
+    </message>
+    <message>
+        <source>a character device</source>
+        <translation>一个字符设备</translation>
+    </message>
+    <message>
+        <source>a block device</source>
+        <translation>一个块设备</translation>
+    </message>
+    <message>
+        <source>a socket</source>
+        <translation>一个套接字</translation>
+    </message>
+    <message>
+        <source>not a regular file</source>
+        <translation>不是普通文件</translation>
+    </message>
+    <message>
+        <source>it is %1, not a regular file</source>
+        <translation>它是%1，不是普通文件</translation>
+    </message>
+    <message>
+        <source>%1 bytes</source>
+        <translation>%1 字节</translation>
+    </message>
+    <message>
+        <source>it is %1, more than the %2 such a file may have</source>
+        <translation>它有 %1，超过此类文件允许的 %2</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 MB</source>
+        <translation>%1 MB</translation>
+    </message>
+</context>
+<context>
     <name>lk::text::VerdictText</name>
     <message>
         <source>this command</source>
@@ -674,6 +728,13 @@
     </message>
 </context>
 <context>
+    <name>lk::tuning::StepRunFile</name>
+    <message>
+        <source>Run %1 was not saved: its trace is %2, and a trace file may hold %3 (a set&apos;s traces %4 in all). Keep a shorter run.</source>
+        <translation>运行 %1 未保存：其曲线有 %2，而一个曲线文件最多 %3（一组运行的曲线合计最多 %4）。请保留较短的运行。</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::AboutDialog</name>
     <message>
         <source>About LK Servo Studio</source>
@@ -713,6 +774,10 @@
     <message>
         <source>Your settings file %1 is damaged; these values were not used: %2.</source>
         <translation>您的设置文件 %1 已损坏；以下值未被使用：%2。</translation>
+    </message>
+    <message>
+        <source>Your settings file %1 was not read (%2): lkstudio runs with default settings, and what you change now is not saved.</source>
+        <translation>未读取您的设置文件 %1（%2）：lkstudio 以默认设置运行，现在所做的更改不会被保存。</translation>
     </message>
 </context>
 <context>
@@ -3486,6 +3551,10 @@
     <message>
         <source>--cycle-views takes a period of at least 100 ms.</source>
         <translation>--cycle-views 需要至少 100 毫秒的周期。</translation>
+    </message>
+    <message>
+        <source>--settings %1: %2</source>
+        <translation>--settings %1：%2</translation>
     </message>
 </context>
 <context>
