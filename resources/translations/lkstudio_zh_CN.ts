@@ -779,6 +779,10 @@
         <source>Your settings file %1 was not read (%2): lkstudio runs with default settings, and what you change now is not saved.</source>
         <translation>未读取您的设置文件 %1（%2）：lkstudio 以默认设置运行，现在所做的更改不会被保存。</translation>
     </message>
+    <message>
+        <source>Your settings file %1 was written by a newer lkstudio (%2 is %3; this release knows up to %4): only the values this release understands are used, and the file is not converted.</source>
+        <translation>您的设置文件 %1 由较新版本的 lkstudio 写入（%2 为 %3；本版本最高只认识 %4）：只使用本版本能理解的值，文件不会被转换。</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::BannerEntry</name>

@@ -174,6 +174,13 @@ QString AppSettings::damageReport() const
                   "settings, and what you change now is not saved.")
             .arg(fileName(), problem->reason());
     QStringList parts;
+    if (isFromNewerRelease())
+        parts << tr("Your settings file %1 was written by a newer lkstudio (%2 is %3; this "
+                    "release knows up to %4): only the values this release understands are "
+                    "used, and the file is not converted.")
+                     .arg(fileName(), QLatin1String(key::kVersion))
+                     .arg(m_loadedVersion)
+                     .arg(kVersion);
     if (!m_damage.isEmpty())
         parts << tr("Your settings file %1 is damaged; these values were not used: %2.")
                      .arg(fileName(), m_damage.join(QStringLiteral("; ")));

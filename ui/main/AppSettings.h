@@ -48,7 +48,8 @@ public:
     /// are not used.
     QStringList damage() const { return m_damage; }
     /// Translated sentences for the banner: the file was not read (a directory, too large:
-    /// SettingsFile::problem()), or which keys are damaged; empty when none.
+    /// SettingsFile::problem()), it comes from a newer release (naming settingsVersion), or
+    /// which keys are damaged; empty when none.
     QString damageReport() const;
 
     ConnectionChoice connection() const;

@@ -31,6 +31,7 @@ private slots:
     void refusedFile();
     void refusedOnTheCommandLine_data() { refusedFile_data(); }
     void refusedOnTheCommandLine();
+    void newerReleaseIsNamed();
     void windowTellsAboutARefusedFile();
     void defaultPathIsQSettingsOwn();
     void osReleaseIsBounded();
@@ -99,6 +100,23 @@ void tst_SettingsFile::refusedOnTheCommandLine()
     // A settings file that does not exist yet is fine: it is created.
     QVERIFY(lk::ui::StartupOptions::parse(
         {"lkstudio", "--settings", path(QStringLiteral("new.ini"))}, &error));
+}
+
+void tst_SettingsFile::newerReleaseIsNamed()
+{
+    const QString ini = path(QStringLiteral("newer.ini"));
+    {
+        QSettings raw(ini, QSettings::IniFormat);
+        raw.setValue(QStringLiteral("settingsVersion"), 999);
+        raw.setValue(QStringLiteral("scan/firstId"), 4);
+    }
+    AppSettings s(ini);
+    QVERIFY(s.isFromNewerRelease());
+    QCOMPARE(s.damage(), QStringList());
+    const QString report = s.damageReport();
+    QVERIFY2(report.contains(QLatin1String("settingsVersion is 999")), qPrintable(report));
+    QVERIFY2(report.contains(ini), qPrintable(report));
+    QCOMPARE(s.scanFirstId(), 4); // what this release understands is used
 }
 
 void tst_SettingsFile::windowTellsAboutARefusedFile()
