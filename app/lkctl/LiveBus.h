@@ -26,8 +26,11 @@ public:
     ~LiveBus(); ///< closes the session
 
     /// Open the bus; on failure prints the transport's own message (with its fix) and
-    /// returns false.
+    /// returns false. A port another program holds is followed by which processes hold it
+    /// (where the system tells), and `off`/`stop` say that no drive was stopped.
     bool open(const BusOptions &options);
+    /// "/dev/ttyUSB0 is held open by process 4242 (lkstudio)", or that none is visible.
+    static QString holdersText(const QString &device);
 
     /// Send one request (already checked by MotionGuard if it moves a motor) and wait.
     bus::RequestResult request(const protocol::Request &request,
