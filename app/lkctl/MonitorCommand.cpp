@@ -12,6 +12,7 @@
 
 #include <QtCore/QTimer>
 
+#include <algorithm>
 #include <climits>
 #include <csignal>
 #include <limits>
@@ -106,8 +107,11 @@ QString MonitorCommand::usage() const
         .arg(kPollable.join(QStringLiteral(", ")), QLatin1String(kDefaultWhat))
         .arg(kDefaultRateHz)
         .arg(BusOptions::helpText(),
-             exitStatusText(QStringLiteral("  An interrupt ends monitoring normally (status 0); "
-                                           "losing the bus gives 1.\n")))
+             exitStatusText(QStringLiteral(
+                 "  An interrupt ends monitoring normally (status 0); losing the bus, or no\n"
+                 "  reply from any drive for 5 s (three poll periods and a second at a slow\n"
+                 "  --rate), gives 1. A --what set a drive's series lacks (state3 on MS) is\n"
+                 "  refused after read_model with 2, before anything is polled.\n")))
         .arg(columnList());
 }
 
@@ -188,6 +192,35 @@ std::optional<MonitorFormat> MonitorCommand::parseFormat(const ArgParser &parser
     return *layout == record::CsvLayout::Long ? MonitorFormat::CsvLong : MonitorFormat::CsvWide;
 }
 
+QString MonitorCommand::lackingSet(const Plan &plan,
+                                   const QMap<int, std::optional<protocol::Series>> &series)
+{
+    for (int id : plan.ids) {
+        const std::optional<protocol::Series> s = series.value(id);
+        for (Command c : plan.commands) {
+            if (!s || motor::supports(*s, c))
+                continue;
+            QString what;
+            for (const QString &w : kPollable) {
+                if (ReadCommand::commandFor(w) == c)
+                    what = w;
+            }
+            return QStringLiteral("drive %1 is %2, and the %2 series has no %3 (--what %4): "
+                                  "nothing was polled; leave %4 out for this drive")
+                .arg(id)
+                .arg(protocol::seriesName(*s), protocol::CommandTable::name(c), what);
+        }
+    }
+    return {};
+}
+
+double MonitorCommand::silenceLimitS(const Plan &plan)
+{
+    // Long enough for a few poll periods at a slow rate and for a loaded machine; short
+    // enough that a bus gone quiet ends monitoring instead of holding it forever.
+    return std::max(kSilenceS, plan.rateHz > 0 ? 3 / plan.rateHz + 1 : 0.0);
+}
+
 int MonitorCommand::stream(LiveBus &bus, const Plan &plan, MonitorTable &table)
 {
     Console &console = bus.console();
@@ -205,6 +238,23 @@ int MonitorCommand::stream(LiveBus &bus, const Plan &plan, MonitorTable &table)
     QTimer duration;
     duration.setSingleShot(true);
     QObject::connect(&duration, &QTimer::timeout, &context, [&stop] { stop = true; });
+    // No reply from any drive for silenceLimitS(): the drives went quiet (unplugged, powered
+    // off); say so and end, rather than wait for rows that cannot come.
+    QTimer silence;
+    silence.setSingleShot(true);
+    silence.setInterval(int(silenceLimitS(plan) * 1000));
+    QObject::connect(&silence, &QTimer::timeout, &context, [&] {
+        if (stop)
+            return;
+        lost = stop = true;
+        QStringList ids;
+        for (int id : plan.ids)
+            ids << QString::number(id);
+        bus.error(QStringLiteral("no reply from drive %1 for %2 s: check the power, the wiring "
+                                 "and the baud (--baud)")
+                      .arg(ids.join(QStringLiteral(", ")))
+                      .arg(silenceLimitS(plan), 0, 'f', 1));
+    });
     QObject::connect(&session, &bus::BusSession::statisticsUpdated, &context,
                      [&stats](const bus::BusStatistics &s) { stats = s; });
     QObject::connect(&session, &bus::BusSession::connectionChanged, &context,
@@ -220,6 +270,7 @@ int MonitorCommand::stream(LiveBus &bus, const Plan &plan, MonitorTable &table)
                              if (stop || !plan.ids.contains(s.id))
                                  continue;
                              ++samples;
+                             silence.start();
                              firstSample = firstSample < 0 ? s.time : firstSample;
                              lastSample = s.time;
                              for (const QByteArray &row : table.add(s)) {
@@ -242,6 +293,7 @@ int MonitorCommand::stream(LiveBus &bus, const Plan &plan, MonitorTable &table)
     poll.rateHz = plan.rateHz;
     session.resetStatistics();
     session.startPolling(poll);
+    silence.start();
     if (plan.durationS)
         duration.start(int(std::min(*plan.durationS * 1000, double(INT_MAX))));
     bus.waitUntil([&stop] { return stop; }, std::numeric_limits<int>::max());
@@ -328,6 +380,12 @@ int MonitorCommand::run(const QStringList &args, Console &console)
         series.insert(id, who->series);
         if (who->model.generation == protocol::Generation::V2_35)
             v235.insert(id);
+    }
+    // A set a drive's series lacks would never be polled, and its rows never complete:
+    // refused here, before the first poll, rather than waited for.
+    if (const QString lacking = lackingSet(*plan, series); !lacking.isEmpty()) {
+        bus.error(lacking);
+        return kExitUsage;
     }
     // A reader that goes away (`| head`) must end the loop, not kill the process silently.
     std::signal(SIGPIPE, SIG_IGN);
