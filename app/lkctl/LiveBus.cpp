@@ -104,12 +104,13 @@ QString LiveBus::holdersText(const QString &device)
              names.join(QStringLiteral(", ")));
 }
 
-RequestResult LiveBus::request(const protocol::Request &request, bus::Priority priority)
+RequestResult LiveBus::request(const protocol::Request &request, bus::Priority priority,
+                               int retries)
 {
     std::optional<RequestResult> result;
     QObject waiting; // gone on return: a result after the safety net finds no `result`
     m_session.send(
-        request, &waiting, [&result](const RequestResult &r) { result = r; }, priority);
+        request, &waiting, [&result](const RequestResult &r) { result = r; }, priority, retries);
     waitUntil([&result] { return result.has_value(); });
     if (result)
         return *result;
@@ -122,12 +123,13 @@ RequestResult LiveBus::request(const protocol::Request &request, bus::Priority p
     return r;
 }
 
-RequestResult LiveBus::request(protocol::Command command, int id, bus::Priority priority)
+RequestResult LiveBus::request(protocol::Command command, int id, bus::Priority priority,
+                               int retries)
 {
     protocol::Request r;
     r.command = command;
     r.id = static_cast<quint8>(id);
-    return request(r, priority);
+    return request(r, priority, retries);
 }
 
 void LiveBus::reportFailure(const RequestResult &result)

@@ -33,11 +33,12 @@ public:
     static QString holdersText(const QString &device);
 
     /// Send one request (already checked by MotionGuard if it moves a motor) and wait.
+    /// `retries` as BusSession::send (0: sent exactly once, whatever it is).
     bus::RequestResult request(const protocol::Request &request,
-                               bus::Priority priority = bus::Priority::Operator);
+                               bus::Priority priority = bus::Priority::Operator, int retries = -1);
     /// Send a request without data (reads, off/stop/run) to `id` and wait.
     bus::RequestResult request(protocol::Command command, int id,
-                               bus::Priority priority = bus::Priority::Operator);
+                               bus::Priority priority = bus::Priority::Operator, int retries = -1);
 
     /// read_model from `id`; on success the session decodes its replies by the series the
     /// model names. nullopt after printing why (no reply, ...).
