@@ -110,8 +110,9 @@ QString MonitorCommand::usage() const
              exitStatusText(QStringLiteral(
                  "  An interrupt ends monitoring normally (status 0); losing the bus, or no\n"
                  "  reply from any drive for 5 s (three poll periods and a second at a slow\n"
-                 "  --rate), gives 1. A --what set a drive's series lacks (state3 on MS) is\n"
-                 "  refused after read_model with 2, before anything is polled.\n")))
+                 "  --rate), gives 1. A --what set no drive's series has, or a drive with\n"
+                 "  none of the sets (--what state3 on MS), is refused after read_model\n"
+                 "  with 2, before anything is polled.\n")))
         .arg(columnList());
 }
 
@@ -195,21 +196,34 @@ std::optional<MonitorFormat> MonitorCommand::parseFormat(const ArgParser &parser
 QString MonitorCommand::lackingSet(const Plan &plan,
                                    const QMap<int, std::optional<protocol::Series>> &series)
 {
-    for (int id : plan.ids) {
+    const auto answers = [&series](int id, Command c) {
         const std::optional<protocol::Series> s = series.value(id);
-        for (Command c : plan.commands) {
-            if (!s || motor::supports(*s, c))
-                continue;
-            QString what;
-            for (const QString &w : kPollable) {
-                if (ReadCommand::commandFor(w) == c)
-                    what = w;
-            }
-            return QStringLiteral("drive %1 is %2, and the %2 series has no %3 (--what %4): "
-                                  "nothing was polled; leave %4 out for this drive")
-                .arg(id)
-                .arg(protocol::seriesName(*s), protocol::CommandTable::name(c), what);
+        return !s || motor::supports(*s, c);
+    };
+    const auto refusal = [&series](int id, Command c) {
+        QString what;
+        for (const QString &w : kPollable) {
+            if (ReadCommand::commandFor(w) == c)
+                what = w;
         }
+        const QString name = protocol::seriesName(*series.value(id));
+        return QStringLiteral("drive %1 is %2, and the %2 series has no %3 (--what %4): "
+                              "nothing was polled; leave %4 out for this drive")
+            .arg(id)
+            .arg(name, protocol::CommandTable::name(c), what);
+    };
+    // Drives of several series may share a set some of them lack (state3 for an MF beside
+    // an MS: the MS's columns go without it). What cannot be is a set no drive has, or a
+    // drive with nothing to poll: its rows would never come.
+    for (Command c : plan.commands) {
+        if (std::none_of(plan.ids.cbegin(), plan.ids.cend(),
+                         [&](int id) { return answers(id, c); }))
+            return refusal(plan.ids.first(), c);
+    }
+    for (int id : plan.ids) {
+        if (std::none_of(plan.commands.cbegin(), plan.commands.cend(),
+                         [&](Command c) { return answers(id, c); }))
+            return refusal(id, plan.commands.first());
     }
     return {};
 }

@@ -46,8 +46,9 @@ private:
     std::optional<Plan> parse(const ArgParser &parser, Console &console, int *status) const;
     /// --csv, --csv-layout and --json; nullopt with `error` set when they conflict.
     static std::optional<MonitorFormat> parseFormat(const ArgParser &parser, QString *error);
-    /// Why the plan cannot be polled: a drive whose series lacks a --what set (MS has no
-    /// read_state3), naming the drive, the series, the command and the set; empty when fine.
+    /// Why the plan cannot be polled: a --what set no drive's series has, or a drive whose
+    /// series has none of them (MS has no read_state3), naming the drive, the series, the
+    /// command and the set; empty when fine.
     static QString lackingSet(const Plan &plan,
                               const QMap<int, std::optional<protocol::Series>> &series);
     static double silenceLimitS(const Plan &plan);
