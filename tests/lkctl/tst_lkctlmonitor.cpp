@@ -1,6 +1,7 @@
 #include "E2eUtil.h"
 
 #include <QtCore/QElapsedTimer>
+#include <QtCore/QRegularExpression>
 #include <QtTest/QtTest>
 
 // lkctl monitor on the in-process simulated bus: a --what set a drive's series lacks is refused
@@ -21,6 +22,8 @@ class tst_LkctlMonitor : public QObject {
 private slots:
     void setTheSeriesLacksIsRefused_data();
     void setTheSeriesLacksIsRefused();
+    void voltageKeepsItsResolution_data();
+    void voltageKeepsItsResolution();
 };
 
 void tst_LkctlMonitor::setTheSeriesLacksIsRefused_data()
@@ -58,6 +61,31 @@ void tst_LkctlMonitor::setTheSeriesLacksIsRefused()
     QCOMPARE(ok.exitCode, 0);
     QCOMPARE(ok.out.count('\n'), 2); // --count counts JSON lines: a round of two drives
     QVERIFY(ok.out.contains("\"id\":3,") && ok.out.contains("\"ia_a\""));
+}
+
+void tst_LkctlMonitor::voltageKeepsItsResolution_data()
+{
+    QTest::addColumn<QString>("args");
+    QTest::addColumn<QString>("pattern");
+    // V2.35 sends 0.01 V: a value such as 24.37 must not read 24.4. One column, one
+    // resolution: V2.3's 0.1 V values read with a trailing 0.
+    QTest::newRow("V2.35 JSON") << "monitor 1 --what state1 --count 2 --json --sim 1:MS4015@2.35"
+                                << R"("voltage_v":\d+\.\d\d[,}])";
+    QTest::newRow("V2.35 CSV") << "monitor 1 --what state1 --count 2 --csv-layout long "
+                                  "--sim 1:MS4015@2.35"
+                               << R"(^[0-9.]+,1,\d+,\d+\.\d\d,)";
+    QTest::newRow("V2.3 JSON") << "monitor 3 --what state1 --count 2 --json --sim 3:MF"
+                               << R"("voltage_v":\d+\.\d0[,}])";
+}
+
+void tst_LkctlMonitor::voltageKeepsItsResolution()
+{
+    QFETCH(QString, args);
+    QFETCH(QString, pattern);
+    const CtlResult r = lk::e2e::lkctl(args.split(QLatin1Char(' ')), 60000);
+    QCOMPARE(r.exitCode, 0);
+    const QRegularExpression re(pattern, QRegularExpression::MultilineOption);
+    QVERIFY2(re.match(QString::fromUtf8(r.out)).hasMatch(), r.out.constData());
 }
 
 QTEST_GUILESS_MAIN(tst_LkctlMonitor)
