@@ -41,7 +41,10 @@ private:
         MonitorFormat format = MonitorFormat::CsvWide;
         bool simulated = false; ///< --sim: no wire time, so no bus limit to compare with
         int baud = 0;
-        double busLimit = 0; ///< transactions/s the bus carries for this mix (BusTiming)
+        /// Transactions/s for this mix (BusTiming): the wire time alone (no rate can pass
+        /// it), and with the 0.5 ms turnaround a drive may take (a rate can pass that one).
+        double wireLimit = 0;
+        double slowDriveLimit = 0;
     };
     std::optional<Plan> parse(const ArgParser &parser, Console &console, int *status) const;
     /// --csv, --csv-layout and --json; nullopt with `error` set when they conflict.

@@ -3,6 +3,7 @@
 #include <system/FileHolders.h>
 
 #include <QtCore/QElapsedTimer>
+#include <QtCore/QRegularExpression>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QTest>
 
@@ -19,6 +20,8 @@ private slots:
     void init();
     void cleanup();
     void quietDrivesEndMonitoring();
+    void rateIsAShareOfTheWire_data();
+    void rateIsAShareOfTheWire();
 
 private:
     /// lksim's process: the holder of its own pty that is called lksim.
@@ -79,6 +82,34 @@ void tst_E2eMonitor::quietDrivesEndMonitoring()
     const QByteArray err = monitor.readAllStandardError();
     QCOMPARE(monitor.exitCode(), 1);
     QVERIFY2(err.contains("no reply from drive 3, 17 for 5.0 s"), err.constData());
+}
+
+void tst_E2eMonitor::rateIsAShareOfTheWire_data()
+{
+    QTest::addColumn<QString>("what");
+    QTest::newRow("state2") << "state2";
+    QTest::newRow("default mix, three drives") << "state2,state1,multi-turn";
+}
+
+// lksim answers after 0.2 ms, sooner than the 0.5 ms a drive may take: a rate measured against
+// a 0.5 ms turnaround passed 100 % ("107 % of the bus limit"). The share is of what the wire
+// alone carries, which no rate can pass.
+void tst_E2eMonitor::rateIsAShareOfTheWire()
+{
+    QFETCH(QString, what);
+    const CtlResult r = lkctl({"monitor", "3", "17", "32", "--what", what, "--rate", "0",
+                               "--duration", "2", "--port", m_link});
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    const QRegularExpression share(
+        QStringLiteral("(\\d+) replies/s, (\\d+)% of the (\\d+)/s the wire carries for this mix "
+                       "at 115200 baud \\((\\d+)/s if every drive took the 0.5 ms it may to "
+                       "answer\\)"));
+    const QRegularExpressionMatch m = share.match(QString::fromUtf8(r.err));
+    QVERIFY2(m.hasMatch(), r.err.constData());
+    const int percent = m.captured(2).toInt();
+    QVERIFY2(percent > 30 && percent <= 100, r.err.constData());
+    QVERIFY(m.captured(4).toInt() < m.captured(3).toInt());
+    QVERIFY(m.captured(1).toInt() <= m.captured(3).toInt());
 }
 
 QTEST_GUILESS_MAIN(tst_E2eMonitor)
