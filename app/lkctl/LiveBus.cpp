@@ -155,6 +155,7 @@ std::optional<LiveBus::Identity> LiveBus::identify(int id)
     }
     Identity i;
     i.model = std::get<protocol::ModelInfo>(r.reply->payload);
+    i.reply = *r.reply;
     i.series = bus::Scanner::inferSeries(i.model);
     if (i.series)
         m_session.setSeries(id, *i.series);

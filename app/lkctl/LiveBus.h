@@ -3,6 +3,7 @@
 #include "BusOptions.h"
 
 #include <bus/BusSession.h>
+#include <protocol/Reply.h>
 #include <protocol/Request.h>
 #include <protocol/Series.h>
 #include <protocol/Values.h>
@@ -45,6 +46,7 @@ public:
     struct Identity {
         protocol::ModelInfo model;
         std::optional<protocol::Series> series; ///< nullopt: the model names no series
+        protocol::Reply reply; ///< the read_model reply itself (`read model` prints it)
     };
     std::optional<Identity> identify(int id);
 
