@@ -360,28 +360,12 @@
         <translation>固件</translation>
     </message>
     <message>
-        <source>PID (angle Kp/Ki · speed Kp/Ki · iq Kp/Ki)</source>
-        <translation>PID（角度 Kp/Ki · 速度 Kp/Ki · iq Kp/Ki）</translation>
-    </message>
-    <message>
-        <source>Acceleration (dps/s)</source>
-        <translation>加速度 (dps/s)</translation>
-    </message>
-    <message>
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
         <source>Problems</source>
         <translation>问题</translation>
-    </message>
-    <message>
-        <source>LOW VOLTAGE</source>
-        <translation>低压保护</translation>
-    </message>
-    <message>
-        <source>OVER TEMPERATURE</source>
-        <translation>过温保护</translation>
     </message>
     <message>
         <source>none</source>
@@ -406,6 +390,50 @@
     <message>
         <source>Written by: %1</source>
         <translation>生成工具：%1</translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation>协议</translation>
+    </message>
+    <message>
+        <source>Gains (angle · speed · iq: Kp/Ki, V2.35 Kp/Ki/Kd)</source>
+        <translation>增益（角度 · 速度 · iq：Kp/Ki，V2.35 为 Kp/Ki/Kd）</translation>
+    </message>
+    <message>
+        <source>Acceleration or limits</source>
+        <translation>加速度或限值</translation>
+    </message>
+    <message>
+        <source>unknown bits 0x%1</source>
+        <translation>未知位 0x%1</translation>
+    </message>
+    <message>
+        <source>%1 dps/s</source>
+        <translation>%1 dps/s</translation>
+    </message>
+    <message>
+        <source>max power %1</source>
+        <translation>最大功率 %1</translation>
+    </message>
+    <message>
+        <source>max torque %1</source>
+        <translation>最大转矩 %1</translation>
+    </message>
+    <message>
+        <source>max speed %1 dps</source>
+        <translation>最大速度 %1 dps</translation>
+    </message>
+    <message>
+        <source>max angle %1°</source>
+        <translation>最大角度 %1°</translation>
+    </message>
+    <message>
+        <source>current ramp %1</source>
+        <translation>电流斜率 %1</translation>
+    </message>
+    <message>
+        <source>speed ramp %1 dps/s</source>
+        <translation>速度斜率 %1 dps/s</translation>
     </message>
 </context>
 <context>
