@@ -3072,6 +3072,18 @@
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
+    <message>
+        <source>nothing plotted</source>
+        <translation>未绘制任何信号</translation>
+    </message>
+    <message>
+        <source>drive %1</source>
+        <translation>驱动 %1</translation>
+    </message>
+    <message>
+        <source>drives %1</source>
+        <translation>驱动 %1</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::PlotPanel</name>
