@@ -86,15 +86,9 @@ int ClearErrorsCommand::run(const QStringList &args, Console &console)
     const std::optional<BusOptions> busOptions = parseBus(parser, args, console, &status);
     if (!busOptions)
         return status;
-    const QStringList &pos = parser.positionals();
-    if (pos.size() != 1)
-        return usageError(console, pos.isEmpty()
-                                       ? QStringLiteral("missing the drive ID")
-                                       : QStringLiteral("unexpected argument '%1'").arg(pos.at(1)));
-    QString error;
-    const std::optional<int> id = parseId(pos.at(0), &error);
+    const std::optional<int> id = singleId(parser, console, &status);
     if (!id)
-        return usageError(console, error);
+        return status;
     LiveBus bus(console, name());
     if (!bus.open(*busOptions))
         return kExitFailure;

@@ -111,15 +111,10 @@ std::optional<ZeroCommand::Plan> ZeroCommand::parse(const ArgParser &parser, Con
         *status = usageError(console, message);
         return std::nullopt;
     };
-    const QStringList &pos = parser.positionals();
-    if (pos.size() != 1)
-        return fail(pos.isEmpty() ? QStringLiteral("missing the drive ID")
-                                  : QStringLiteral("unexpected argument '%1'").arg(pos.at(1)));
     Plan plan;
-    QString error;
-    const std::optional<int> id = parseId(pos.at(0), &error);
+    const std::optional<int> id = singleId(parser, console, status);
     if (!id)
-        return fail(error);
+        return std::nullopt;
     plan.id = *id;
     plan.json = parser.isSet(QStringLiteral("json"));
     if (m_kind == Kind::Zero) {
@@ -204,41 +199,57 @@ void ZeroCommand::printAngles(LiveBus &bus, const Plan &plan, Command sent, doub
     bus.console().outLine(QStringLiteral("  %1").arg(text));
 }
 
-int ZeroCommand::clearAngle(LiveBus &bus, const Plan &plan) const
+std::optional<ZeroCommand::Angles> ZeroCommand::sendBetweenAngles(LiveBus &bus, int id,
+                                                                  Command command)
 {
-    const std::optional<double> before = multiTurnDeg(bus, plan.id);
+    const QString name = protocol::CommandTable::name(command);
+    const std::optional<double> before = multiTurnDeg(bus, id);
     if (!before) {
-        bus.error(QStringLiteral("the angle could not be read, so clear_angle was not sent"));
-        return kExitFailure;
+        bus.error(QStringLiteral("the angle could not be read, so %1 was not sent").arg(name));
+        return std::nullopt;
     }
-    const bus::RequestResult r = bus.request(Command::ClearAngle, plan.id);
+    // Sent once: 0x93 may write flash (undocumented), and a lost reply is answered by the
+    // angle read after, not by sending again.
+    const bus::RequestResult r = bus.request(command, id, bus::Priority::Operator, 0);
     if (!r.ok()) {
         bus.reportFailure(r);
-        bus.error(QStringLiteral("whether drive %1 cleared its angle is not known: 'lkctl read "
-                                 "%1 multi-turn' shows it")
-                      .arg(plan.id));
-        return kExitFailure;
+        bus.error(QStringLiteral("whether drive %1 applied %2 is not known (it was not sent "
+                                 "again): 'lkctl read %1 multi-turn' shows its angle")
+                      .arg(id)
+                      .arg(name));
+        return std::nullopt;
     }
-    const std::optional<double> after = multiTurnDeg(bus, plan.id);
+    const std::optional<double> after = multiTurnDeg(bus, id);
     if (!after) {
-        bus.error(QStringLiteral("drive %1 acknowledged clear_angle, but its angle could not be "
-                                 "read back: whether it took is not known")
-                      .arg(plan.id));
-        return kExitFailure;
+        bus.error(QStringLiteral("drive %1 acknowledged %2, but its angle could not be read "
+                                 "back: whether it took is not known")
+                      .arg(id)
+                      .arg(name));
+        return std::nullopt;
     }
-    const bool zeroAfter = std::fabs(*after) <= kZeroToleranceDeg;
+    return Angles{*before, *after};
+}
+
+int ZeroCommand::clearAngle(LiveBus &bus, const Plan &plan) const
+{
+    const std::optional<Angles> angles = sendBetweenAngles(bus, plan.id, Command::ClearAngle);
+    if (!angles)
+        return kExitFailure;
+    const double before = angles->before;
+    const double after = angles->after;
+    const bool zeroAfter = std::fabs(after) <= kZeroToleranceDeg;
     if (zeroAfter) {
-        const bool already = std::fabs(*before) <= kZeroToleranceDeg;
-        printAngles(bus, plan, Command::ClearAngle, *before, *after,
+        const bool already = std::fabs(before) <= kZeroToleranceDeg;
+        printAngles(bus, plan, Command::ClearAngle, before, after,
                     already ? QStringLiteral("already_zero") : QStringLiteral("cleared"));
         if (already)
             bus.error(QStringLiteral("the angle read %1 deg before already: whether the drive "
                                      "applied clear_angle cannot be told")
-                          .arg(ReplyText::number(*before, 2)));
+                          .arg(ReplyText::number(before, 2)));
         return kExitOk;
     }
-    const bool unchanged = std::fabs(*after - *before) <= kZeroToleranceDeg;
-    printAngles(bus, plan, Command::ClearAngle, *before, *after,
+    const bool unchanged = std::fabs(after - before) <= kZeroToleranceDeg;
+    printAngles(bus, plan, Command::ClearAngle, before, after,
                 unchanged ? QStringLiteral("unchanged") : QStringLiteral("changed_not_zero"));
     if (unchanged)
         bus.error(QStringLiteral("drive %1 acknowledged clear_angle (0x95) but its angle did not "
@@ -246,12 +257,12 @@ int ZeroCommand::clearAngle(LiveBus &bus, const Plan &plan) const
                                  "zero %1 --rom --yes' (0x19) sets a zero from the next "
                                  "power-on instead")
                       .arg(plan.id)
-                      .arg(ReplyText::number(*after, 2)));
+                      .arg(ReplyText::number(after, 2)));
     else
         bus.error(QStringLiteral("the angle of drive %1 changed from %2 deg to %3 deg but is "
                                  "not 0: was the motor turning? Stop it and clear again")
                       .arg(plan.id)
-                      .arg(ReplyText::number(*before, 2), ReplyText::number(*after, 2)));
+                      .arg(ReplyText::number(before, 2), ReplyText::number(after, 2)));
     return kExitMismatch;
 }
 
@@ -298,31 +309,14 @@ int ZeroCommand::writeZeroRom(LiveBus &bus, const Plan &plan) const
 
 int ZeroCommand::clearTurns(LiveBus &bus, const Plan &plan, double gearRatio) const
 {
-    const std::optional<double> before = multiTurnDeg(bus, plan.id);
-    if (!before) {
-        bus.error(QStringLiteral("the angle could not be read, so clear_turn_count was not sent"));
+    const std::optional<Angles> angles = sendBetweenAngles(bus, plan.id, Command::ClearTurnCount);
+    if (!angles)
         return kExitFailure;
-    }
-    // Sent once: whether it writes flash is not documented.
-    const bus::RequestResult r =
-        bus.request(Command::ClearTurnCount, plan.id, bus::Priority::Operator, 0);
-    if (!r.ok()) {
-        bus.reportFailure(r);
-        bus.error(QStringLiteral("whether drive %1 cleared its turn count is not known (not sent "
-                                 "again): 'lkctl read %1 multi-turn' shows it")
-                      .arg(plan.id));
-        return kExitFailure;
-    }
-    const std::optional<double> after = multiTurnDeg(bus, plan.id);
-    if (!after) {
-        bus.error(QStringLiteral("drive %1 acknowledged clear_turn_count, but its angle could "
-                                 "not be read back: whether it took is not known")
-                      .arg(plan.id));
-        return kExitFailure;
-    }
+    const double before = angles->before;
+    const double after = angles->after;
     // Within one output turn (360 deg x the gear ratio of rotor angle) means no whole turns.
-    const bool cleared = std::fabs(*after) < 360.0 * gearRatio;
-    printAngles(bus, plan, Command::ClearTurnCount, *before, *after,
+    const bool cleared = std::fabs(after) < 360.0 * gearRatio;
+    printAngles(bus, plan, Command::ClearTurnCount, before, after,
                 cleared ? QStringLiteral("cleared") : QStringLiteral("not_cleared"));
     if (cleared)
         return kExitOk;
@@ -330,7 +324,7 @@ int ZeroCommand::clearTurns(LiveBus &bus, const Plan &plan, double gearRatio) co
                              "angle reads %2 deg (was %3 deg): more than one turn, so the turn "
                              "count was not cleared")
                   .arg(plan.id)
-                  .arg(ReplyText::number(*after, 2), ReplyText::number(*before, 2)));
+                  .arg(ReplyText::number(after, 2), ReplyText::number(before, 2)));
     return kExitMismatch;
 }
 

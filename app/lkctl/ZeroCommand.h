@@ -42,6 +42,12 @@ private:
     int refuseWithoutYes(Console &console, const Plan &plan) const;
     /// read_multi_turn; nullopt after printing why.
     static std::optional<double> multiTurnDeg(LiveBus &bus, int id);
+    struct Angles {
+        double before = 0, after = 0; ///< multi-turn, rotor degrees
+    };
+    /// read_multi_turn, `command` sent once, read_multi_turn; nullopt after printing why
+    /// (and whether the command may have been applied).
+    static std::optional<Angles> sendBetweenAngles(LiveBus &bus, int id, protocol::Command command);
     int clearAngle(LiveBus &bus, const Plan &plan) const;
     int writeZeroRom(LiveBus &bus, const Plan &plan) const;
     int clearTurns(LiveBus &bus, const Plan &plan, double gearRatio) const;

@@ -194,27 +194,23 @@ QString BusReportDrive::limitsText() const
     ParameterFields::split(params, gains, values);
     if (values.isEmpty())
         return dash();
-    const bool power = series == protocol::Series::MS; // 0x99 bounds power on MS
-    const auto number = [&values](const char *key) {
-        return QString::number(values.value(QLatin1String(key)).toDouble(), 'g', 12);
+    // 0x99 bounds the power on MS, the torque current elsewhere.
+    const char *torque = series == protocol::Series::MS
+                             ? QT_TRANSLATE_NOOP("lk::record::BusReport", "max power %1")
+                             : QT_TRANSLATE_NOOP("lk::record::BusReport", "max torque %1");
+    const std::pair<const char *, const char *> shown[] = {
+        {"max_torque", torque},
+        {"max_speed_dps", QT_TRANSLATE_NOOP("lk::record::BusReport", "max speed %1 dps")},
+        {"max_angle_deg", QT_TRANSLATE_NOOP("lk::record::BusReport", "max angle %1\u00b0")},
+        {"current_ramp", QT_TRANSLATE_NOOP("lk::record::BusReport", "current ramp %1")},
+        {"speed_ramp_dps2", QT_TRANSLATE_NOOP("lk::record::BusReport", "speed ramp %1 dps/s")},
     };
     QStringList parts;
-    if (values.contains(QStringLiteral("max_torque")))
-        parts << (power ? say(QT_TRANSLATE_NOOP("lk::record::BusReport", "max power %1"))
-                        : say(QT_TRANSLATE_NOOP("lk::record::BusReport", "max torque %1")))
-                     .arg(number("max_torque"));
-    if (values.contains(QStringLiteral("max_speed_dps")))
-        parts << say(QT_TRANSLATE_NOOP("lk::record::BusReport", "max speed %1 dps"))
-                     .arg(number("max_speed_dps"));
-    if (values.contains(QStringLiteral("max_angle_deg")))
-        parts << say(QT_TRANSLATE_NOOP("lk::record::BusReport", "max angle %1\u00b0"))
-                     .arg(number("max_angle_deg"));
-    if (values.contains(QStringLiteral("current_ramp")))
-        parts << say(QT_TRANSLATE_NOOP("lk::record::BusReport", "current ramp %1"))
-                     .arg(number("current_ramp"));
-    if (values.contains(QStringLiteral("speed_ramp_dps2")))
-        parts << say(QT_TRANSLATE_NOOP("lk::record::BusReport", "speed ramp %1 dps/s"))
-                     .arg(number("speed_ramp_dps2"));
+    for (const auto &[key, text] : shown) {
+        if (values.contains(QLatin1String(key)))
+            parts << say(text).arg(
+                QString::number(values.value(QLatin1String(key)).toDouble(), 'g', 12));
+    }
     return parts.join(QStringLiteral(" \u00b7 "));
 }
 

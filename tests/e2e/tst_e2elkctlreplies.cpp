@@ -1,9 +1,8 @@
 #include "E2eUtil.h"
+#include "LksimFrames.h"
 
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QTest>
-
-#include <algorithm>
 
 using namespace lk::e2e;
 
@@ -31,9 +30,7 @@ private:
 bool tst_E2eLkctlReplies::startSim(const QString &motors, const QStringList &extra)
 {
     m_sim = std::make_unique<LksimProcess>(QStringLiteral(LKSIM_PATH));
-    QStringList args = simArgs(m_link, QStringList{QStringLiteral("--verbose")} + extra);
-    args[1] = motors; // simArgs: --motors first
-    const bool ok = m_sim->start(args);
+    const bool ok = m_sim->start(loggedSimArgs(m_link, motors, extra));
     if (!ok)
         qWarning("%s", qPrintable(m_sim->errorString()));
     return ok;
@@ -41,9 +38,7 @@ bool tst_E2eLkctlReplies::startSim(const QString &motors, const QStringList &ext
 
 qsizetype tst_E2eLkctlReplies::framesStartingWith(const QByteArray &start) const
 {
-    const QList<QByteArray> frames = m_sim->receivedFrames();
-    return std::count_if(frames.cbegin(), frames.cend(),
-                         [&start](const QByteArray &f) { return f.startsWith(start); });
+    return lk::e2e::framesStartingWith(*m_sim, start);
 }
 
 void tst_E2eLkctlReplies::init()

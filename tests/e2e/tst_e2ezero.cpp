@@ -1,11 +1,11 @@
 #include "E2eUtil.h"
+#include "LksimFrames.h"
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QJsonArray>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QTest>
 
-#include <algorithm>
 #include <cmath>
 
 using namespace lk::e2e;
@@ -46,9 +46,7 @@ private:
 bool tst_E2eZero::startSim(const QString &motors, const QStringList &extra)
 {
     m_sim = std::make_unique<LksimProcess>(QStringLiteral(LKSIM_PATH));
-    QStringList args = simArgs(m_link, QStringList{QStringLiteral("--verbose")} + extra);
-    args[1] = motors; // simArgs: --motors first
-    const bool ok = m_sim->start(args);
+    const bool ok = m_sim->start(loggedSimArgs(m_link, motors, extra));
     if (!ok)
         qWarning("%s", qPrintable(m_sim->errorString()));
     return ok;
@@ -69,9 +67,7 @@ void tst_E2eZero::cleanup()
 
 qsizetype tst_E2eZero::framesStartingWith(const QByteArray &start) const
 {
-    const QList<QByteArray> frames = m_sim->receivedFrames();
-    return std::count_if(frames.cbegin(), frames.cend(),
-                         [&start](const QByteArray &f) { return f.startsWith(start); });
+    return lk::e2e::framesStartingWith(*m_sim, start);
 }
 
 double tst_E2eZero::multiTurnDeg(int id) const
