@@ -369,28 +369,12 @@
         <translation>固件</translation>
     </message>
     <message>
-        <source>PID (angle Kp/Ki · speed Kp/Ki · iq Kp/Ki)</source>
-        <translation>PID（角度 Kp/Ki · 速度 Kp/Ki · iq Kp/Ki）</translation>
-    </message>
-    <message>
-        <source>Acceleration (dps/s)</source>
-        <translation>加速度 (dps/s)</translation>
-    </message>
-    <message>
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
         <source>Problems</source>
         <translation>问题</translation>
-    </message>
-    <message>
-        <source>LOW VOLTAGE</source>
-        <translation>低压保护</translation>
-    </message>
-    <message>
-        <source>OVER TEMPERATURE</source>
-        <translation>过温保护</translation>
     </message>
     <message>
         <source>none</source>
@@ -415,6 +399,50 @@
     <message>
         <source>Written by: %1</source>
         <translation>生成工具：%1</translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation>协议</translation>
+    </message>
+    <message>
+        <source>Gains (angle · speed · iq: Kp/Ki, V2.35 Kp/Ki/Kd)</source>
+        <translation>增益（角度 · 速度 · iq：Kp/Ki，V2.35 为 Kp/Ki/Kd）</translation>
+    </message>
+    <message>
+        <source>Acceleration or limits</source>
+        <translation>加速度或限值</translation>
+    </message>
+    <message>
+        <source>unknown bits 0x%1</source>
+        <translation>未知位 0x%1</translation>
+    </message>
+    <message>
+        <source>%1 dps/s</source>
+        <translation>%1 dps/s</translation>
+    </message>
+    <message>
+        <source>max power %1</source>
+        <translation>最大功率 %1</translation>
+    </message>
+    <message>
+        <source>max torque %1</source>
+        <translation>最大转矩 %1</translation>
+    </message>
+    <message>
+        <source>max speed %1 dps</source>
+        <translation>最大速度 %1 dps</translation>
+    </message>
+    <message>
+        <source>max angle %1°</source>
+        <translation>最大角度 %1°</translation>
+    </message>
+    <message>
+        <source>current ramp %1</source>
+        <translation>电流斜率 %1</translation>
+    </message>
+    <message>
+        <source>speed ramp %1 dps/s</source>
+        <translation>速度斜率 %1 dps/s</translation>
     </message>
 </context>
 <context>
@@ -468,6 +496,60 @@
     <message>
         <source>key &quot;%1&quot; is given twice</source>
         <translation>键“%1”出现了两次</translation>
+    </message>
+</context>
+<context>
+    <name>lk::system::AtomicFile</name>
+    <message>
+        <source>the file was not opened</source>
+        <translation>文件未打开</translation>
+    </message>
+</context>
+<context>
+    <name>lk::system::BoundedFile</name>
+    <message>
+        <source>a directory</source>
+        <translation>一个目录</translation>
+    </message>
+    <message>
+        <source>a FIFO (named pipe)</source>
+        <translation>一个 FIFO（命名管道）</translation>
+    </message>
+    <message>
+        <source>a character device</source>
+        <translation>一个字符设备</translation>
+    </message>
+    <message>
+        <source>a block device</source>
+        <translation>一个块设备</translation>
+    </message>
+    <message>
+        <source>a socket</source>
+        <translation>一个套接字</translation>
+    </message>
+    <message>
+        <source>not a regular file</source>
+        <translation>不是普通文件</translation>
+    </message>
+    <message>
+        <source>it is %1, not a regular file</source>
+        <translation>它是%1，不是普通文件</translation>
+    </message>
+    <message>
+        <source>%1 bytes</source>
+        <translation>%1 字节</translation>
+    </message>
+    <message>
+        <source>it is %1, more than the %2 such a file may have</source>
+        <translation>它有 %1，超过此类文件允许的 %2</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 MB</source>
+        <translation>%1 MB</translation>
     </message>
 </context>
 <context>
@@ -683,6 +765,13 @@
     </message>
 </context>
 <context>
+    <name>lk::tuning::StepRunFile</name>
+    <message>
+        <source>Run %1 was not saved: its trace is %2, and a trace file may hold %3 (a set&apos;s traces %4 in all). Keep a shorter run.</source>
+        <translation>运行 %1 未保存：其曲线有 %2，而一个曲线文件最多 %3（一组运行的曲线合计最多 %4）。请保留较短的运行。</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::AboutDialog</name>
     <message>
         <source>About LK Servo Studio</source>
@@ -722,6 +811,14 @@
     <message>
         <source>Your settings file %1 is damaged; these values were not used: %2.</source>
         <translation>您的设置文件 %1 已损坏；以下值未被使用：%2。</translation>
+    </message>
+    <message>
+        <source>Your settings file %1 was not read (%2): lkstudio runs with default settings, and what you change now is not saved.</source>
+        <translation>未读取您的设置文件 %1（%2）：lkstudio 以默认设置运行，现在所做的更改不会被保存。</translation>
+    </message>
+    <message>
+        <source>Your settings file %1 was written by a newer lkstudio (%2 is %3; this release knows up to %4): only the values this release understands are used, and the file is not converted.</source>
+        <translation>您的设置文件 %1 由较新版本的 lkstudio 写入（%2 为 %3；本版本最高只认识 %4）：只使用本版本能理解的值，文件不会被转换。</translation>
     </message>
 </context>
 <context>
@@ -3123,6 +3220,18 @@
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
+    <message>
+        <source>nothing plotted</source>
+        <translation>未绘制任何信号</translation>
+    </message>
+    <message>
+        <source>drive %1</source>
+        <translation>驱动 %1</translation>
+    </message>
+    <message>
+        <source>drives %1</source>
+        <translation>驱动 %1</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::PlotPanel</name>
@@ -3634,6 +3743,10 @@
     <message>
         <source>--cycle-views takes a period of at least 100 ms.</source>
         <translation>--cycle-views 需要至少 100 毫秒的周期。</translation>
+    </message>
+    <message>
+        <source>--settings %1: %2</source>
+        <translation>--settings %1：%2</translation>
     </message>
 </context>
 <context>
