@@ -1,6 +1,7 @@
 #include "ControlView.h"
 
 #include "BrakePanel.h"
+#include "ControlCommandBox.h"
 #include "ControlModePanel.h"
 #include "DriveSettingsStore.h"
 #include "DriveText.h"
@@ -16,10 +17,8 @@
 #include <panels/StatusColors.h>
 #include <protocol/RequestBuilder.h>
 
-#include <QtWidgets/QGroupBox>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
-#include <QtWidgets/QPushButton>
 #include <QtWidgets/QVBoxLayout>
 
 namespace lk::ui {
@@ -62,9 +61,9 @@ ControlView::ControlView(QWidget *parent)
     auto *left = new QVBoxLayout;
     left->addWidget(m_title);
     left->addWidget(m_selection);
-    left->addWidget(buildCommandBox());
-    left->addWidget(buildRunButtons());
-    applyPaletteStyles();
+    m_commandBox = new ControlCommandBox(this);
+    m_modes = m_commandBox->modePanel();
+    left->addWidget(m_commandBox);
     left->addWidget(m_jog);
     left->addWidget(m_readout);
     left->addWidget(m_status);
@@ -97,51 +96,12 @@ ControlView::~ControlView()
     delete m_keys; // off the application's filters before this view's members go
 }
 
-QWidget *ControlView::buildCommandBox()
-{
-    auto *box = new QGroupBox(tr("Command"), this);
-    m_modes = new ControlModePanel(box);
-    m_send = new QPushButton(tr("Send"), box);
-    m_send->setObjectName(QStringLiteral("send"));
-    m_send->setToolTip(tr("Checked against the series and your soft limits before sending"));
-    auto *row = new QHBoxLayout;
-    row->addStretch();
-    row->addWidget(m_send);
-    auto *layout = new QVBoxLayout(box);
-    layout->addWidget(m_modes);
-    layout->addLayout(row);
-    return box;
-}
-
-QWidget *ControlView::buildRunButtons()
-{
-    auto *w = new QWidget(this);
-    auto make = [w](const QString &name, const QString &text, const QString &tip) {
-        auto *b = new QPushButton(text, w);
-        b->setObjectName(name);
-        b->setToolTip(tip);
-        return b;
-    };
-    m_off = make(QStringLiteral("motorOff"), tr("Motor Off"),
-                 tr("0x80: output off, the stored command is cleared"));
-    m_stop = make(QStringLiteral("motorStop"), tr("Stop"),
-                  tr("0x81: output off, the stored command is kept for Run"));
-    m_run = make(QStringLiteral("motorRun"), tr("Run"), tr("0x88: resume after Stop"));
-    auto *row = new QHBoxLayout(w);
-    row->setContentsMargins(0, 0, 0, 0);
-    row->addWidget(m_off);
-    row->addWidget(m_stop);
-    row->addWidget(m_run);
-    return w;
-}
-
 void ControlView::wire()
 {
-    connect(m_send, &QPushButton::clicked, this, [this] { sendCommand(); });
-    connect(m_modes, &ControlModePanel::sendRequested, this, [this] { sendCommand(); });
-    connect(m_off, &QPushButton::clicked, this, &ControlView::motorOff);
-    connect(m_stop, &QPushButton::clicked, this, &ControlView::motorStop);
-    connect(m_run, &QPushButton::clicked, this, &ControlView::motorRun);
+    connect(m_commandBox, &ControlCommandBox::sendRequested, this, [this] { sendCommand(); });
+    connect(m_commandBox, &ControlCommandBox::motorOffRequested, this, &ControlView::motorOff);
+    connect(m_commandBox, &ControlCommandBox::motorStopRequested, this, &ControlView::motorStop);
+    connect(m_commandBox, &ControlCommandBox::motorRunRequested, this, &ControlView::motorRun);
     connect(m_jog, &JogPanel::holdStarted, this, &ControlView::startJog);
     connect(m_jog, &JogPanel::holdEnded, this, &ControlView::endJog);
     connect(m_jog, &JogPanel::stepRequested, this, &ControlView::step);
@@ -149,20 +109,7 @@ void ControlView::wire()
     connect(m_setpointPanel, &SetpointPanel::startRequested, this, &ControlView::startGenerator);
     connect(m_setpointPanel, &SetpointPanel::stopRequested, this, &ControlView::stopGenerator);
     // The plot follows what the command moves: angle for positions, iq for torque.
-    connect(m_modes, &ControlModePanel::modeChanged, this, [this](ControlMode mode) {
-        switch (mode) {
-        case ControlMode::OpenLoop:
-        case ControlMode::Torque:
-            m_plot->setLoop(TunedLoop::Current);
-            break;
-        case ControlMode::Speed:
-            m_plot->setLoop(TunedLoop::Speed);
-            break;
-        default:
-            m_plot->setLoop(TunedLoop::Angle);
-            break;
-        }
-    });
+    connect(m_commandBox, &ControlCommandBox::loopChanged, m_plot, &LoopPlot::setLoop);
     connect(m_generator, &SetpointGenerator::started, this,
             [this] { m_setpointPanel->setRunning(true); });
     connect(m_generator, &SetpointGenerator::stopped, this,
@@ -370,10 +317,8 @@ void ControlView::contextChanged(Changes changes)
 void ControlView::refreshEnabled()
 {
     const bool can = canSend();
-    for (QWidget *w : {static_cast<QWidget *>(m_send), static_cast<QWidget *>(m_off),
-                       static_cast<QWidget *>(m_stop), static_cast<QWidget *>(m_run),
-                       static_cast<QWidget *>(m_jog)})
-        w->setEnabled(can);
+    m_commandBox->setSendEnabled(can);
+    m_jog->setEnabled(can);
     m_setpointPanel->setStartEnabled(can);
     m_limitsEditor->setEnabled(hasDrive());
     m_modes->setEnabled(hasDrive());
@@ -624,21 +569,6 @@ void ControlView::onTelemetry(const bus::TelemetryBatch &batch)
         m_readout->setText(text);
         return;
     }
-}
-
-void ControlView::changeEvent(QEvent *event)
-{
-    DriveView::changeEvent(event);
-    // The palette (light/dark) changed while running: the styles derived from it follow. The
-    // sheets are set on children, so this does not loop.
-    if (event->type() == QEvent::PaletteChange)
-        applyPaletteStyles();
-}
-
-void ControlView::applyPaletteStyles()
-{
-    m_off->setStyleSheet(
-        StatusColors::textStyle(StatusColors::Role::Error, StatusColors::current(), true));
 }
 
 } // namespace lk::ui

@@ -13,11 +13,11 @@
 #include <memory>
 
 class QLabel;
-class QPushButton;
 
 namespace lk::ui {
 
 class BrakePanel;
+class ControlCommandBox;
 class ControlModePanel;
 class DriveSettingsStore;
 class JogKeys;
@@ -97,12 +97,8 @@ signals:
 
 protected:
     void contextChanged(Changes changes) override;
-    void changeEvent(QEvent *event) override;
 
 private:
-    void applyPaletteStyles();
-    QWidget *buildCommandBox();
-    QWidget *buildRunButtons();
     void wire();
     void loadLimits();
     void startGeneratorNow(const bus::SetpointWaveform::Settings &settings);
@@ -128,7 +124,8 @@ private:
     QString m_limitsError; ///< the stored limits are damaged: motion is refused until applied
     std::optional<double> m_angleDeg;
     QVector<int> m_selected;
-    ControlModePanel *m_modes = nullptr;
+    ControlCommandBox *m_commandBox = nullptr;
+    ControlModePanel *m_modes = nullptr; ///< the command box's
     SoftLimitsEditor *m_limitsEditor = nullptr;
     JogPanel *m_jog = nullptr;
     JogKeys *m_keys = nullptr; ///< the arrow keys as jog controls
@@ -140,10 +137,6 @@ private:
     QLabel *m_selection = nullptr;
     QLabel *m_readout = nullptr;
     QLabel *m_status = nullptr;
-    QPushButton *m_send = nullptr;
-    QPushButton *m_off = nullptr;
-    QPushButton *m_stop = nullptr;
-    QPushButton *m_run = nullptr;
     QMetaObject::Connection m_telemetryConnection;
     QMetaObject::Connection m_stopConnection;
     MotionOutcome m_last;
