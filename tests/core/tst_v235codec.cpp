@@ -290,6 +290,16 @@ void tst_V235Codec::torqueBuilderScale()
     const BuildResult mf = build::torque(1, 8.25, kV235Mf);
     QVERIFY(mf.ok());
     QCOMPARE(int(std::get<TorqueCommand>(mf.request->payload).iqRaw), 1024);
+    // The command carries the drive's scale: what the drive makes of it, for the limit checks
+    // and every text that shows the torque sent.
+    QCOMPARE(std::get<TorqueCommand>(mf.request->payload).iqA(), 8.25);
+    // 2 A: V2.35 MF 248 LSB, MG 124 LSB (66/4096 A), V2.3 125 LSB (32/2000 A).
+    const auto raw = [](const DecodeContext &c) {
+        return int(std::get<TorqueCommand>(build::torque(1, 2.0, c).request->payload).iqRaw);
+    };
+    QCOMPARE(raw(kV235Mf), 248);
+    QCOMPARE(raw(kV235Mg), 124);
+    QCOMPARE(raw(kV23Mf), 125);
     QCOMPARE(int(std::get<TorqueCommand>(build::torque(1, 8.25, kV23Mf).request->payload).iqRaw),
              516);
     const BuildResult over = build::torque(1, 16.5, kV235Mf); // 2048 LSB

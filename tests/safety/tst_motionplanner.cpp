@@ -214,7 +214,7 @@ void tst_MotionPlanner::speedAndTorqueStayBounded()
     QVERIFY(p.allowed());
     QCOMPARE(p.bound, SpeedBound::Command);
     QCOMPARE(p.request->command, Command::Speed);
-    p = safety::MotionPlanner::plan(req(protocol::build::torque(1, 5)), Series::MF, limits720(),
+    p = safety::MotionPlanner::plan(req(protocol::build::torque(1, 5, {})), Series::MF, limits720(),
                                     {});
     QCOMPARE(p.verdict.kind, LimitKind::SoftTorque);
 }

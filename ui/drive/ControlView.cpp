@@ -299,6 +299,7 @@ void ControlView::contextChanged(Changes changes)
     }
     if (changes & (Change::Session | Change::Drive | Change::MotorInfo)) {
         m_modes->setSeries(series());
+        m_modes->setGeneration(motor().generation);
         m_setpointPanel->setSeries(series());
         m_plot->setDrive(driveId(), series() == protocol::Series::MS);
         loadLimits();
