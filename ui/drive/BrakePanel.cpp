@@ -137,6 +137,7 @@ void BrakePanel::showState(const protocol::BrakeState &state)
 {
     m_state = state;
     m_stateLabel->setText(tr("Brake state: %1.").arg(stateText(state)));
+    emit stateRead(state);
 }
 
 void BrakePanel::readState()

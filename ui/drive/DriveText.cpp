@@ -1,6 +1,7 @@
 #include "DriveText.h"
 
 #include <protocol/Command.h>
+#include <safety/DriveLimits.h>
 #include <text/VerdictText.h>
 
 namespace lk::ui {
@@ -18,7 +19,10 @@ QString DriveText::fieldError(const protocol::FieldError &e)
 
 QString DriveText::refusal(const safety::Verdict &verdict, std::optional<protocol::Series> series)
 {
-    return tr("Refused: %1.").arg(text::VerdictText::verdict(verdict, series));
+    // A limit the drive holds itself (lower than the soft one) is named as the drive's.
+    return tr("Refused: %1.")
+        .arg(verdict.drivesOwn ? safety::DriveLimits::refusal(verdict)
+                               : text::VerdictText::verdict(verdict, series));
 }
 
 QString DriveText::setpointStop(const bus::SetpointStop &stop,
