@@ -6,6 +6,7 @@
 
 #include "protocol/ErrorFlags.h"
 #include "protocol/FieldJson.h"
+#include "protocol/ProtocolFields.h"
 #include "protocol/Reply.h"
 #include "protocol/RequestBuilder.h"
 
@@ -62,6 +63,7 @@ private slots:
     void zeroReplyWithEncoderZero();
     void currentScales();
     void torqueBuilderScale();
+    void maxTorqueParamNamedPerSeries();
     void openLoopStricterRange();
     void singleTurnThreeBytes();
     void badDataChecksumCaptureCounted();
@@ -281,6 +283,20 @@ void tst_V235Codec::currentScales()
     QCOMPARE(std::get<State2>(replyOf(s2, kV23Mf).payload).iqA(), 33.0);
     QCOMPARE(int(std::get<State2>(replyOf(s2, kV235Mf).payload).speedDps), -121);
     QCOMPARE(int(std::get<State2>(replyOf(s2, kV235Mf).payload).encoder), 43388);
+}
+
+void tst_V235Codec::maxTorqueParamNamedPerSeries()
+{
+    // One name per series, from the field table: lkctl and lkstudio read it there.
+    QCOMPARE(ProtocolFields::paramLabel(ParamId::MaxTorqueCurrent, Series::MS),
+             QStringLiteral("max power"));
+    for (Series s : {Series::MF, Series::MG, Series::MH})
+        QCOMPARE(ProtocolFields::paramLabel(ParamId::MaxTorqueCurrent, s),
+                 QStringLiteral("max torque current"));
+    QCOMPARE(ProtocolFields::paramLabel(ParamId::MaxTorqueCurrent, std::nullopt),
+             QStringLiteral("max torque current"));
+    QCOMPARE(ProtocolFields::paramLabel(ParamId::MaxSpeed, Series::MS),
+             QStringLiteral("max speed"));
 }
 
 void tst_V235Codec::torqueBuilderScale()

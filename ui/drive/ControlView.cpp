@@ -427,7 +427,7 @@ void ControlView::onMotionResult(const bus::RequestResult &result)
     // The bus cancels queued motion on an emergency stop: nothing here may send more.
     if (result.status == bus::RequestStatus::Cancelled)
         haltLocalMotion(DriveText::stopReason(bus::SetpointStopReason::Cancelled));
-    setStatus(DriveText::failure(result), true);
+    setStatus(DriveText::motionFailure(result), true);
 }
 
 MotionOutcome ControlView::sendCommand()

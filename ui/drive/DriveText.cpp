@@ -17,6 +17,19 @@ QString DriveText::fieldError(const protocol::FieldError &e)
     return tr("Refused, nothing sent: %1.").arg(e.message());
 }
 
+QString DriveText::motionFailure(const bus::RequestResult &r)
+{
+    const QString text = failure(r);
+    const bool wentOut = r.attempts > 0 && (r.status == bus::RequestStatus::Timeout ||
+                                            r.status == bus::RequestStatus::Error);
+    if (!wentOut || !protocol::CommandTable::info(r.request.command).movesMotor)
+        return text;
+    return text + QLatin1Char(' ') +
+           tr("It was sent, so drive %1 may have acted on it and may be moving: check it, or "
+              "stop it.")
+               .arg(r.request.id);
+}
+
 QString DriveText::refusal(const safety::Verdict &verdict, std::optional<protocol::Series> series)
 {
     // A limit the drive holds itself (lower than the soft one) is named as the drive's.

@@ -539,7 +539,7 @@ QString EncoderView::absenceOf(Command command) const
         return QString();
     if (command == Command::ClearTurnCount)
         return m_zero->turnCountAbsence();
-    return GenerationNote::absence(motor(), command, tr("the encoder offset"));
+    return GenerationNote::absence(motor(), command, tr("encoder offset"));
 }
 
 } // namespace lk::ui

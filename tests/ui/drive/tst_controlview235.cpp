@@ -6,6 +6,7 @@
 #include <drive/ControlModePanel.h>
 #include <drive/ControlView.h>
 #include <drive/DriveStateCheck.h>
+#include <sim/FaultInjector.h>
 
 #include <QtTest/QtTest>
 #include <QtWidgets/QLabel>
@@ -66,6 +67,7 @@ private slots:
     void engagedBrakeWarns();
     void drivesOwnMaxSpeedBoundsMotion();
     void v23DriveHasNoStateLine();
+    void corruptReplyToMotionSaysItMayHaveMoved();
 };
 
 void tst_ControlView235::torqueGoesOutAtTheDrivesScale_data()
@@ -237,6 +239,27 @@ void tst_ControlView235::v23DriveHasNoStateLine()
     QVERIFY(!view->limits()->drive().any());
     // V2.3: a control command is sent at once, no state read first.
     QVERIFY(view->sendMotion(lk::protocol::build::speed(2, 90)).sent);
+    view->motorOff();
+    QVERIFY(rig.barrier(2));
+}
+
+void tst_ControlView235::corruptReplyToMotionSaysItMayHaveMoved()
+{
+    // Every reply corrupt (as fw 2.35 does to some 0xA4 replies): the drive got the command
+    // and moves, and the view must not leave it at "the reply was corrupt".
+    SimRig rig(kBus);
+    QVERIFY(rig.open());
+    auto view = openView(rig, 2);
+    rig.sim->withBus([](lk::sim::SimBus &bus) {
+        bus.faults().setProbability(lk::sim::Fault::CorruptReply, 1.0);
+    });
+    QVERIFY(view->sendMotion(lk::protocol::build::speed(2, 180)).sent);
+    QTRY_VERIFY_WITH_TIMEOUT(view->statusText().contains("may be moving"), kWaitMs);
+    QVERIFY2(view->statusText().contains("corrupt"), qPrintable(view->statusText()));
+    QTRY_VERIFY_WITH_TIMEOUT(rig.speedDps(2) > 100, kWaitMs); // it did move
+    rig.sim->withBus([](lk::sim::SimBus &bus) {
+        bus.faults().setProbability(lk::sim::Fault::CorruptReply, 0.0);
+    });
     view->motorOff();
     QVERIFY(rig.barrier(2));
 }

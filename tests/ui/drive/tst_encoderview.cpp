@@ -512,7 +512,7 @@ void tst_EncoderView::v235DriveHasNoEncoderOffset()
     });
     view->writeOffset(100);
     QVERIFY(asked.isEmpty());
-    QVERIFY2(view->statusText().contains(QStringLiteral("encoder offset")),
+    QVERIFY2(view->statusText().contains(QStringLiteral("has no encoder offset command")),
              qPrintable(view->statusText()));
     QVERIFY(rig.barrier(3));
     QCOMPARE(rig.count(3, Command::WriteEncoderOffset), 0);
