@@ -25,6 +25,7 @@ private slots:
     void engagedBrakeHoldsTheShaftAndWarns();
     void scheduledFaultStopsTheDrive();
     void ms235IsTheCapturedDrive();
+    void drivesOwnMaxSpeedBoundsControl();
 
 private:
     bool startSim(const QString &motors, const QStringList &extra = {});
@@ -204,6 +205,26 @@ void tst_E2eDriveState::ms235IsTheCapturedDrive()
     QCOMPARE(state(1, QStringLiteral("state1")).value("motor_on").toBool(), true);
     const CtlResult brake = ctl({"brake", "1", "status", "--json"});
     QCOMPARE(jsonOf(brake.out).value("brake_released").toBool(), true);
+}
+
+void tst_E2eDriveState::drivesOwnMaxSpeedBoundsControl()
+{
+    // The drive holds a Max Speed of 720 dps; the MF soft limit is the series' 18000.
+    QVERIFY(startSim(QStringLiteral("1:MF4015@2.35")));
+    CtlResult r = ctl({"write", "1", "param", "max_speed_dps", "720", "--ram"});
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    r = ctl({"control", "1", "speed", "800"});
+    QCOMPARE(r.exitCode, 4);
+    QVERIFY2(r.err.contains("the drive's own Max Speed of 720 dps"), r.err.constData());
+    QVERIFY(r.out.isEmpty());
+    // A position move goes out capped at it, and says whose bound it is.
+    r = ctl({"control", "1", "increment", "90", "--json"});
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    const QJsonObject o = jsonOf(r.out);
+    QCOMPARE(o.value("sent").toObject().value("max_speed_raw").toInt(), 72000);
+    QCOMPARE(o.value("speed_bound").toObject().value("source").toString(),
+             QStringLiteral("drive_max_speed"));
+    QCOMPARE(o.value("speed_bound").toObject().value("dps").toDouble(), 720.0);
 }
 
 QTEST_GUILESS_MAIN(tst_E2eDriveState)
