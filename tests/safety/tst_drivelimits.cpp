@@ -2,6 +2,8 @@
 // where read, every motion bound is the lower of it and the soft limit, and a refusal or a
 // speed bound the drive's value decided names the drive's limit.
 
+#include "SafetyTestUtil.h"
+
 #include <protocol/RequestBuilder.h>
 #include <safety/DriveLimits.h>
 #include <safety/MotionPlanner.h>
@@ -9,6 +11,7 @@
 #include <QtTest/QtTest>
 
 using namespace lk;
+using lk::test::req;
 using protocol::Command;
 using protocol::DecodeContext;
 using protocol::Generation;
@@ -21,13 +24,6 @@ using safety::MotionPlanner;
 using safety::SpeedBound;
 
 namespace {
-protocol::Request req(const protocol::BuildResult &r)
-{
-    if (!r.ok())
-        qFatal("test request did not build: %s", qPrintable(r.error.message()));
-    return *r.request;
-}
-
 const DecodeContext kV235Mf{Series::MF, Generation::V2_35};
 
 /// What a V2.35 MF drive with Max Speed 720 dps, max torque 248 (2 A), Max Angle 3600 deg

@@ -1,5 +1,7 @@
 // The gate in front of every motion command: series capabilities, series limits, soft limits.
 
+#include "SafetyTestUtil.h"
+
 #include <motor/SeriesLimits.h>
 #include <protocol/RequestBuilder.h>
 #include <safety/MotionGuard.h>
@@ -9,21 +11,13 @@
 #include <QtTest/QtTest>
 
 using namespace lk;
+using lk::test::req;
 using protocol::Series;
 using safety::LimitKind;
 
 Q_DECLARE_METATYPE(std::optional<protocol::Series>)
 Q_DECLARE_METATYPE(lk::protocol::Request)
 Q_DECLARE_METATYPE(lk::safety::LimitKind)
-
-namespace {
-protocol::Request req(const protocol::BuildResult &r)
-{
-    if (!r.ok())
-        qFatal("test request did not build: %s", qPrintable(r.error.message()));
-    return *r.request;
-}
-} // namespace
 
 class tst_MotionGuard : public QObject {
     Q_OBJECT

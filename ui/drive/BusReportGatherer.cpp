@@ -17,22 +17,17 @@ using protocol::Command;
 constexpr Command kReads[] = {Command::ReadModel, Command::ReadPid, Command::ReadAccel,
                               Command::ReadState1};
 
-template <typename T> const T *payload(const bus::RequestResult &r)
-{
-    return r.ok() && r.reply ? std::get_if<T>(&r.reply->payload) : nullptr;
-}
-
 void store(record::BusReportDrive &d, const bus::RequestResult &r)
 {
-    if (const auto *m = payload<protocol::ModelInfo>(r)) {
+    if (const auto *m = replyPayload<protocol::ModelInfo>(r)) {
         d.model = *m;
         if (!d.series)
             d.series = motor::ModelNameInfo::parse(m->motorName).series;
-    } else if (const auto *p = payload<protocol::PidGains>(r))
+    } else if (const auto *p = replyPayload<protocol::PidGains>(r))
         d.pid = *p;
-    else if (const auto *a = payload<protocol::Acceleration>(r))
+    else if (const auto *a = replyPayload<protocol::Acceleration>(r))
         d.accelDps2 = a->dps2;
-    else if (const auto *s = payload<protocol::State1>(r))
+    else if (const auto *s = replyPayload<protocol::State1>(r))
         d.state1 = *s;
     else
         d.problems << QStringLiteral("%1: %2").arg(

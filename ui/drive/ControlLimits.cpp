@@ -80,9 +80,7 @@ void ControlLimits::readDriveLimits(int id, const bus::KnownMotor &motor,
     for (protocol::ParamId param : safety::DriveLimits::params()) {
         m_send(*protocol::build::readParam(id, param).request,
                [this, id, read, context, values, left](const bus::RequestResult &r) {
-                   const auto *v = r.ok() && r.reply
-                                       ? std::get_if<protocol::ParameterValue>(&r.reply->payload)
-                                       : nullptr;
+                   const auto *v = replyPayload<protocol::ParameterValue>(r);
                    if (v)
                        values->append(*v);
                    if (--*left > 0 || read != m_reads || id != m_driveId)

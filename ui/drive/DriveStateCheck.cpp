@@ -63,26 +63,23 @@ void DriveStateCheck::refresh(std::function<void(bool ok)> then, bool motorOnly)
     }
     const int id = m_id;
     const quint64 sent =
-        m_send(*build::plain(Command::ReadState1, id).request, [this, id,
-                                                                then](const bus::RequestResult &r) {
-            if (id != m_id)
-                return;
-            const auto *s =
-                r.ok() && r.reply ? std::get_if<protocol::State1>(&r.reply->payload) : nullptr;
-            // Unknown is not off: a failed read leaves the state unknown, and says so.
-            setMotorOn(s ? s->as(protocol::Generation::V2_35).motorOn() : std::nullopt);
-            if (then)
-                then(s != nullptr);
-        });
+        m_send(*build::plain(Command::ReadState1, id).request,
+               [this, id, then](const bus::RequestResult &r) {
+                   if (id != m_id)
+                       return;
+                   const auto *s = replyPayload<protocol::State1>(r);
+                   // Unknown is not off: a failed read leaves the state unknown, and says so.
+                   setMotorOn(s ? s->as(protocol::Generation::V2_35).motorOn() : std::nullopt);
+                   if (then)
+                       then(s != nullptr);
+               });
     if (!sent && then)
         then(false);
     if (motorOnly || !sent)
         return;
     m_send(*build::brake(id, protocol::BrakeAction::Read).request,
            [this, id](const bus::RequestResult &r) {
-               const auto *b = r.ok() && r.reply
-                                   ? std::get_if<protocol::BrakeState>(&r.reply->payload)
-                                   : nullptr;
+               const auto *b = replyPayload<protocol::BrakeState>(r);
                if (id == m_id && b)
                    noteBrake(*b);
            });

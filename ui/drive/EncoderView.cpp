@@ -44,11 +44,6 @@ QLabel *note(QWidget *parent)
     l->setWordWrap(true);
     return l;
 }
-
-template <typename T> const T *payload(const bus::RequestResult &r)
-{
-    return r.ok() && r.reply ? std::get_if<T>(&r.reply->payload) : nullptr;
-}
 } // namespace
 
 const QList<int> &EncoderView::resolutions()
@@ -394,7 +389,7 @@ quint64 EncoderView::readEncoder(bus::Priority priority)
     return tracker()->send(
         *build::plain(Command::ReadEncoder, driveId()).request,
         [this](const bus::RequestResult &r) {
-            if (const auto *e = payload<protocol::EncoderReading>(r)) {
+            if (const auto *e = replyPayload<protocol::EncoderReading>(r)) {
                 m_encoder = *e;
                 m_resolutions->observe(driveId(), motor(), e->encoder);
                 refreshReadouts();
@@ -408,7 +403,7 @@ quint64 EncoderView::readMultiTurn(bus::Priority priority)
     return tracker()->send(
         *build::plain(Command::ReadMultiTurn, driveId()).request,
         [this](const bus::RequestResult &r) {
-            if (const auto *a = payload<protocol::MultiTurnAngle>(r)) {
+            if (const auto *a = replyPayload<protocol::MultiTurnAngle>(r)) {
                 m_multiTurnDeg = a->degrees();
                 refreshReadouts();
             }
@@ -515,7 +510,7 @@ void EncoderView::readBackOffset(int offset)
     tracker()->send(*build::plain(Command::ReadEncoder, driveId()).request,
                     [this, offset](const bus::RequestResult &back) {
                         m_busy = false;
-                        const auto *e = payload<protocol::EncoderReading>(back);
+                        const auto *e = replyPayload<protocol::EncoderReading>(back);
                         const bool ok = e && e->encoderOffset == offset;
                         if (e) {
                             m_encoder = *e;

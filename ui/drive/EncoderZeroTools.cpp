@@ -18,17 +18,6 @@ namespace {
 using protocol::Command;
 namespace build = protocol::build;
 
-QLabel *note(QWidget *parent)
-{
-    auto *l = new QLabel(parent);
-    l->setWordWrap(true);
-    return l;
-}
-
-template <typename T> const T *payload(const bus::RequestResult &r)
-{
-    return r.ok() && r.reply ? std::get_if<T>(&r.reply->payload) : nullptr;
-}
 } // namespace
 
 EncoderZeroTools::EncoderZeroTools(QWidget *parent) : QGroupBox(tr("Zero"), parent)
@@ -40,17 +29,21 @@ EncoderZeroTools::EncoderZeroTools(QWidget *parent) : QGroupBox(tr("Zero"), pare
     m_zeroRom->setObjectName(QStringLiteral("zeroRom"));
     connect(m_clearAngle, &QPushButton::clicked, this, &EncoderZeroTools::clearAngle);
     connect(m_zeroRom, &QPushButton::clicked, this, &EncoderZeroTools::writeZeroToRom);
-    auto *clearText = note(this);
-    clearText->setText(tr("Multi-turn and single-turn angle become 0 here until power-off; the "
-                          "result is checked with read_multi_turn (0x92)."));
-    auto *zeroText = note(this);
-    zeroText->setText(tr("Stores the present encoder position as the zero in flash. Takes "
-                         "effect only after a power cycle; each write wears the flash."));
+    auto *clearText = new QLabel(tr("Multi-turn and single-turn angle become 0 here until "
+                                    "power-off; the result is checked with read_multi_turn "
+                                    "(0x92)."),
+                                 this);
+    auto *zeroText = new QLabel(tr("Stores the present encoder position as the zero in flash. "
+                                   "Takes effect only after a power cycle; each write wears the "
+                                   "flash."),
+                                this);
     m_clearTurns = new QPushButton(tr("Clear turn count (0x93)\u2026"), this);
     m_clearTurns->setObjectName(QStringLiteral("clearTurns"));
     connect(m_clearTurns, &QPushButton::clicked, this, &EncoderZeroTools::clearTurnCount);
-    m_clearTurnsNote = note(this);
+    m_clearTurnsNote = new QLabel(this);
     m_clearTurnsNote->setObjectName(QStringLiteral("clearTurnsNote"));
+    for (QLabel *l : {clearText, zeroText, m_clearTurnsNote})
+        l->setWordWrap(true);
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_clearAngle);
     layout->addWidget(clearText);
@@ -134,7 +127,7 @@ void EncoderZeroTools::readMultiTurn(std::function<void(double)> then)
     m_send(
         *build::plain(Command::ReadMultiTurn, m_id).request,
         [this, then](const bus::RequestResult &r) {
-            const auto *a = payload<protocol::MultiTurnAngle>(r);
+            const auto *a = replyPayload<protocol::MultiTurnAngle>(r);
             if (!a) {
                 fail(r);
                 return;
@@ -231,7 +224,7 @@ void EncoderZeroTools::writeZeroToRom()
     m_send(
         *build::plain(Command::WriteZeroRom, id).request,
         [this, id](const bus::RequestResult &r) {
-            const auto *z = payload<protocol::ZeroWritten>(r);
+            const auto *z = replyPayload<protocol::ZeroWritten>(r);
             if (!z) {
                 fail(r);
                 emit zeroWriteFinished(false);
