@@ -14,11 +14,6 @@ namespace {
 using protocol::Command;
 using protocol::Generation;
 
-template <typename T> const T *payload(const bus::RequestResult &r)
-{
-    return r.ok() && r.reply ? std::get_if<T>(&r.reply->payload) : nullptr;
-}
-
 void noteProblem(record::BusReportDrive &d, const bus::RequestResult &r)
 {
     QString what = protocol::CommandTable::name(r.request.command);
@@ -30,18 +25,18 @@ void noteProblem(record::BusReportDrive &d, const bus::RequestResult &r)
 
 void store(record::BusReportDrive &d, const bus::RequestResult &r)
 {
-    if (const auto *m = payload<protocol::ModelInfo>(r)) {
+    if (const auto *m = replyPayload<protocol::ModelInfo>(r)) {
         d.model = *m;
         d.generation = m->generation;
         if (!d.series)
             d.series = motor::ModelNameInfo::parse(m->motorName).series;
-    } else if (const auto *p = payload<protocol::PidGains>(r))
+    } else if (const auto *p = replyPayload<protocol::PidGains>(r))
         d.pid = *p;
-    else if (const auto *a = payload<protocol::Acceleration>(r))
+    else if (const auto *a = replyPayload<protocol::Acceleration>(r))
         d.accelDps2 = a->dps2;
-    else if (const auto *v = payload<protocol::ParameterValue>(r))
+    else if (const auto *v = replyPayload<protocol::ParameterValue>(r))
         d.params.append(*v);
-    else if (const auto *s = payload<protocol::State1>(r))
+    else if (const auto *s = replyPayload<protocol::State1>(r))
         d.state1 = d.generation ? s->as(*d.generation) : *s; // the layout of its generation
     else
         noteProblem(d, r);
