@@ -168,8 +168,9 @@ std::optional<std::optional<bool>> BrakeCommand::checkRelease(LiveBus &bus, int 
         return on;
     bus.error(QStringLiteral("refusing to release the brake of drive %1: the motor is %2, so "
                              "nothing holds the load once the brake lets go (a vertical axis "
-                             "drops); nothing was sent. Turn the motor on first (a control "
-                             "command), or add --motor-off-ok if the axis cannot fall.")
+                             "drops); nothing was sent. Turn the motor on first with 'lkctl "
+                             "run %1' (motor_run, 0x88: a control command does not turn a "
+                             "V2.35 drive on), or add --motor-off-ok if the axis cannot fall.")
                   .arg(id)
                   .arg(on ? QStringLiteral("off")
                           : QStringLiteral("in an undocumented state (0x%1)")

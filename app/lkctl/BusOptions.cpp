@@ -7,6 +7,7 @@
 #include <transport/SerialTransport.h>
 #include <transport/SimTransport.h>
 
+#include <QtCore/QDir>
 #include <QtCore/QStringList>
 
 namespace lk::lkctl {
@@ -72,6 +73,7 @@ std::optional<BusOptions> BusOptions::from(const ArgParser &parser, QString *err
             *error = QStringLiteral("--port needs a device, e.g. /dev/ttyUSB0");
             return std::nullopt;
         }
+        o.port = portPath(o.port);
         return o;
     }
     o.simSpec = parser.value(QStringLiteral("sim"));
@@ -82,6 +84,15 @@ std::optional<BusOptions> BusOptions::from(const ArgParser &parser, QString *err
         return std::nullopt;
     }
     return o;
+}
+
+QString BusOptions::portPath(const QString &port)
+{
+    // A name with a slash is a path (./bus, ../lksim/bus, serial/by-id/...): relative to the
+    // working directory, not to /dev, where only a bare name (ttyUSB0) is looked for.
+    if (!port.contains(QLatin1Char('/')) || QDir::isAbsolutePath(port))
+        return port;
+    return QDir::cleanPath(QDir::current().absoluteFilePath(port));
 }
 
 bus::TransportFactory BusOptions::factory() const
@@ -104,7 +115,8 @@ QString BusOptions::helpText()
 {
     return QStringLiteral(
         "Bus (one of --port and --sim is required, unless LKCTL_PORT names the port):\n"
-        "  --port DEV         serial adapter, e.g. /dev/ttyUSB0 or ttyUSB0 (8N1);\n"
+        "  --port DEV         serial adapter, e.g. /dev/ttyUSB0 or ttyUSB0 (8N1); a name\n"
+        "                     with a slash is a path (./bus: in this folder);\n"
         "                     default: the environment variable LKCTL_PORT\n"
         "  --baud N           9600, 19200, 38400, 57600, 115200, 230400, 460800, 1000000,\n"
         "                     2000000 or 4000000; default: LKCTL_BAUD, else 115200\n"

@@ -30,6 +30,9 @@ struct BusOptions {
     static std::optional<BusOptions> from(const ArgParser &parser, QString *error);
 
     bool isSimulated() const { return !simSpec.isEmpty(); }
+    /// The port as a device path: a bare name stays (the transport looks in /dev), a name
+    /// with a slash is a path, made absolute against the working directory ("./bus").
+    static QString portPath(const QString &port);
     bus::TransportFactory factory() const;
     /// The text of `lkctl CMD --help` that documents these options.
     static QString helpText();

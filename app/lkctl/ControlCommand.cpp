@@ -8,6 +8,7 @@
 #include "ReplyText.h"
 
 #include <motor/ModelNameInfo.h>
+#include <protocol/RequestBuilder.h>
 #include <safety/MotionPlanner.h>
 #include <text/VerdictText.h>
 
@@ -84,6 +85,14 @@ QString ControlCommand::usage() const
                "of the motor name, e.g. -i10: 3600 rotor deg) and inside your angle range. An\n"
                "increment may be at most one output turn (with an angle range set, the angle\n"
                "is read and the end point checked too).\n"
+               "A torque is sent at the drive's own scale (V2.35 MF 33/4096 A, MG 66/4096 A\n"
+               "per LSB; V2.3 32/2000 A). On a V2.35 drive (firmware 2.35) the motor state\n"
+               "(read_state1) and the brake (brake read) are read first: a drive that is off\n"
+               "is refused (Motor On first: lkctl run ID; a control command does not turn it\n"
+               "on), and an engaged brake is a warning (the shaft is held). Its own limits\n"
+               "(read_param: Max Speed, max torque current or Max Power, Max Angle) bound the\n"
+               "command where they are lower than yours, and a refusal or speed bound says\n"
+               "so (speed_bound source drive_max_speed).\n"
                "\n"
                "MODE and VALUE:\n"
                "  open-loop POWER        open_loop, -850..850 (MS only; V2.35 narrowed V2.3's "
@@ -103,8 +112,8 @@ QString ControlCommand::usage() const
                "\n"
                "                         \"speed_bound\":{\"source\":\"soft_limit\",\"dps\":720},"
                "\"reply\":{...}}\n"
-               "                         (source: command, soft_limit, series_top or max_speed; "
-               "no\n"
+               "                         (source: command, soft_limit, series_top, max_speed or\n"
+               "                         drive_max_speed (a V2.35 drive's own Max Speed); no\n"
                "                         speed_bound for torque and open loop)\n"
                "\n"
                "%1"
@@ -121,14 +130,15 @@ QString ControlCommand::usage() const
         .arg(BusOptions::helpText(), MotionLimitOptions::helpText(),
              exitStatusText(QStringLiteral(
                  "  4  refused for safety: the series or one of your limits does not allow it\n"
-                 "     (the message names the limit and both values); nothing was sent\n") +
+                 "     (the message names the limit and both values), or a V2.35 drive is\n"
+                 "     off; nothing was sent\n") +
                             ControlWatch::exitStatusLine()),
              ControlWatch::helpText());
 }
 
 std::optional<FieldBuildResult> ControlCommand::build(const QStringList &pos,
                                                       const ArgParser &parser, Console &console,
-                                                      int *status) const
+                                                      int *status, Plan &plan) const
 {
     const Mode *mode = findMode(pos.at(1));
     if (!mode) {
@@ -161,8 +171,9 @@ std::optional<FieldBuildResult> ControlCommand::build(const QStringList &pos,
         values.insert(QStringLiteral("direction"), parser.value(QStringLiteral("direction")));
     if (hasMaxSpeed)
         values.insert(QStringLiteral("max_speed_dps"), parser.value(QStringLiteral("max-speed")));
-    const FieldBuildResult built =
-        RequestText::build(QLatin1String(hasMaxSpeed ? mode->limited : mode->command), values);
+    plan.command = QLatin1String(hasMaxSpeed ? mode->limited : mode->command);
+    plan.values = values;
+    const FieldBuildResult built = RequestText::build(plan.command, values);
     if (!built.ok()) {
         *status = usageError(console, built.message);
         return std::nullopt;
@@ -179,10 +190,10 @@ std::optional<ControlCommand::Plan> ControlCommand::parse(const ArgParser &parse
                              QStringLiteral("expected ID MODE VALUE (MODE: %1)").arg(modeList()));
         return std::nullopt;
     }
-    const std::optional<FieldBuildResult> built = build(pos, parser, console, status);
+    Plan plan;
+    const std::optional<FieldBuildResult> built = build(pos, parser, console, status, plan);
     if (!built)
         return std::nullopt;
-    Plan plan;
     plan.request = *built->request;
     plan.json = parser.isSet(QStringLiteral("json"));
     QString error;
@@ -215,8 +226,65 @@ bool ControlCommand::readPosition(LiveBus &bus, const Plan &plan, const LiveBus:
     return true;
 }
 
+safety::DriveLimits ControlCommand::readDriveLimits(LiveBus &bus, int id,
+                                                    const protocol::DecodeContext &drive) const
+{
+    QList<protocol::ParameterValue> values;
+    for (protocol::ParamId param : safety::DriveLimits::params()) {
+        const bus::RequestResult r = bus.request(*protocol::build::readParam(id, param).request);
+        if (const auto *v = r.ok() && r.reply
+                                ? std::get_if<protocol::ParameterValue>(&r.reply->payload)
+                                : nullptr)
+            values.append(*v);
+    }
+    return safety::DriveLimits::fromParams(values, drive);
+}
+
+bool ControlCommand::checkDriveState(LiveBus &bus, int id, int *status) const
+{
+    const bus::RequestResult r = bus.request(protocol::Command::ReadState1, id);
+    const auto *state =
+        r.ok() && r.reply ? std::get_if<protocol::State1>(&r.reply->payload) : nullptr;
+    if (!state) {
+        bus.reportFailure(r);
+        bus.error(QStringLiteral("whether the motor of drive %1 is on is unknown (read_state1 "
+                                 "failed); nothing was sent")
+                      .arg(id));
+        *status = kExitFailure;
+        return false;
+    }
+    const std::optional<bool> on = state->motorOn();
+    if (!on.value_or(false)) {
+        bus.refused(QStringLiteral("drive %1 is %2: Motor On first with 'lkctl run %1' "
+                                   "(motor_run, 0x88). A V2.35 drive stays off after motor_off "
+                                   "or a protection trip, and a control command does not turn "
+                                   "it on.")
+                        .arg(id)
+                        .arg(on ? QStringLiteral("off")
+                                : QStringLiteral("in an undocumented motor state (0x%1)")
+                                      .arg(state->motorStateRaw, 2, 16, QLatin1Char('0'))));
+        *status = kExitRefused;
+        return false;
+    }
+    const bus::RequestResult b =
+        bus.request(*protocol::build::brake(id, protocol::BrakeAction::Read).request);
+    const auto *brake =
+        b.ok() && b.reply ? std::get_if<protocol::BrakeState>(&b.reply->payload) : nullptr;
+    if (!brake)
+        bus.error(QStringLiteral("warning: the brake of drive %1 could not be read: if it is "
+                                 "engaged, the shaft is held and will not move")
+                      .arg(id));
+    else if (!brake->released())
+        bus.error(QStringLiteral("warning: the brake of drive %1 reads engaged: the shaft is "
+                                 "held and will not move until it is released ('lkctl brake %1 "
+                                 "release --yes')")
+                      .arg(id));
+    return true;
+}
+
 int ControlCommand::send(LiveBus &bus, const Plan &plan, const safety::MotionPlan &motion,
-                         const safety::DrivePosition &position) const
+                         const safety::DrivePosition &position,
+                         const protocol::DecodeContext &drive) const
 {
     const protocol::Request &request = *motion.request;
     const int id = request.id;
@@ -236,7 +304,7 @@ int ControlCommand::send(LiveBus &bus, const Plan &plan, const safety::MotionPla
                           .arg(id));
         return kExitFailure;
     }
-    const QJsonObject sent = FieldJson::requestFields(request);
+    const QJsonObject sent = FieldJson::requestFields(request, drive);
     const QJsonObject reply = FieldJson::replyFields(*r.reply);
     const QString command = protocol::CommandTable::name(request.command);
     if (plan.json) {
@@ -244,7 +312,11 @@ int ControlCommand::send(LiveBus &bus, const Plan &plan, const safety::MotionPla
         o.text(QStringLiteral("command"), command)
             .integer(QStringLiteral("id"), id)
             .fields(QStringLiteral("sent"), sent);
-        if (motion.bound != safety::SpeedBound::None)
+        if (motion.drivesOwnSpeed)
+            o.raw(QStringLiteral("speed_bound"),
+                  QByteArray("{\"source\":\"drive_max_speed\",\"dps\":") +
+                      QByteArray::number(motion.boundDps, 'g', 10) + '}');
+        else if (motion.bound != safety::SpeedBound::None)
             o.raw(QStringLiteral("speed_bound"),
                   MotionLimitOptions::boundJson(motion.bound, motion.boundDps));
         o.fields(QStringLiteral("reply"), reply);
@@ -257,7 +329,9 @@ int ControlCommand::send(LiveBus &bus, const Plan &plan, const safety::MotionPla
     QString extra;
     if (motion.bound != safety::SpeedBound::None)
         extra += QStringLiteral(" Speed bound: %1.")
-                     .arg(text::VerdictText::speedBound(motion.bound, motion.boundDps));
+                     .arg(motion.drivesOwnSpeed
+                              ? safety::DriveLimits::speedBound(motion.bound, motion.boundDps)
+                              : text::VerdictText::speedBound(motion.bound, motion.boundDps));
     if (position.angleDeg)
         extra += QStringLiteral(" The drive was at %1 deg.").arg(*position.angleDeg);
     bus.console().outLine(QStringLiteral("Sent %1 to drive %2: %3.%4 Reply:")
@@ -294,21 +368,45 @@ int ControlCommand::run(const QStringList &args, Console &console)
     const std::optional<LiveBus::Identity> who = bus.identify(plan->request.id);
     if (!who)
         return kExitFailure;
+    return runFor(bus, *plan, *who, *watch);
+}
+
+int ControlCommand::runFor(LiveBus &bus, Plan plan, const LiveBus::Identity &who,
+                           ControlWatch &watch) const
+{
+    // A torque is in the drive's own units (V2.35 MF and MG differ from V2.3): built again
+    // now that the drive is known.
+    const protocol::DecodeContext drive{who.series.value_or(protocol::Series::MF),
+                                        who.model.generation};
+    const FieldBuildResult rebuilt = RequestText::build(plan.command, plan.values, drive);
+    if (!rebuilt.ok())
+        return usageError(bus.console(), rebuilt.message);
+    plan.request = *rebuilt.request;
     QString error;
-    const std::optional<safety::SoftLimits> limits = plan->limits.limitsFor(who->series, &error);
+    const std::optional<safety::SoftLimits> limits = plan.limits.limitsFor(who.series, &error);
     if (!limits)
-        return usageError(console, error);
+        return usageError(bus.console(), error);
     safety::DrivePosition position;
-    if (!readPosition(bus, *plan, *who, *limits, position))
+    if (!readPosition(bus, plan, who, *limits, position))
         return kExitFailure;
+    // Each bound is the lower of the soft limit and the drive's own, where it holds one.
+    const bool v235 = who.model.generation == protocol::Generation::V2_35;
+    const safety::DriveLimits own =
+        v235 ? readDriveLimits(bus, plan.request.id, drive) : safety::DriveLimits{};
     const safety::MotionPlan motion =
-        safety::MotionPlanner::plan(plan->request, who->series, *limits, position);
+        safety::MotionPlanner::plan(plan.request, who.series, *limits, position, own);
     if (!motion.allowed()) {
-        bus.refused(text::VerdictText::verdict(motion.verdict, who->series));
+        bus.refused(motion.verdict.drivesOwn
+                        ? safety::DriveLimits::refusal(motion.verdict)
+                        : text::VerdictText::verdict(motion.verdict, who.series));
         return kExitRefused;
     }
-    watch->arm(bus, plan->request.id, *limits);
-    return watch->follow(bus, *motion.request, plan->json, send(bus, *plan, motion, position));
+    int status = kExitOk;
+    if (v235 && !checkDriveState(bus, plan.request.id, &status))
+        return status;
+    watch.arm(bus, plan.request.id, *limits);
+    return watch.follow(bus, *motion.request, plan.json,
+                        send(bus, plan, motion, position, drive));
 }
 
 } // namespace lk::lkctl

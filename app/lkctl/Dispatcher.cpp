@@ -60,10 +60,12 @@ QString Dispatcher::usage() const
         "  2  unusable arguments or input text; nothing was sent\n"
         "  3  decode: the input held bytes that were not valid frames\n"
         "  4  refused for safety, nothing was sent: a control command over a series or soft\n"
-        "     limit, a ROM write without --yes, or a brake release without --yes (or with\n"
-        "     the motor off, without --motor-off-ok)\n"
+        "     limit, a ROM write without --yes, a brake release without --yes (or with\n"
+        "     the motor off, without --motor-off-ok), or a zero or turn-count clear\n"
+        "     without --yes\n"
         "  5  write: the value read back differs from the value written; brake: the drive\n"
-        "     reports another brake state than the one asked for\n");
+        "     reports another brake state than the one asked for; clear-errors, zero,\n"
+        "     clear-turns: the drive read back does not show the change\n");
     return text;
 }
 

@@ -3,6 +3,7 @@
 #include "LiveBus.h"
 
 #include <protocol/RequestBuilder.h>
+#include <record/ParameterFields.h>
 
 namespace lk::lkctl {
 
@@ -68,22 +69,6 @@ QString DriveParams::helpLines(const QString &indent)
     return text;
 }
 
-QJsonObject DriveParams::valueFields(const DriveParam &param, const QList<ParameterValue> &values)
-{
-    if (param.ids.size() == 2 && values.size() == 2) {
-        const qint64 raw = protocol::joinMaxAngle(values.at(0), values.at(1));
-        return {{QStringLiteral("max_angle_deg"), double(raw) / 100.0},
-                {QStringLiteral("max_angle_raw"), raw}};
-    }
-    protocol::Reply r;
-    r.command = protocol::Command::ReadParam;
-    r.payload = values.value(0);
-    QJsonObject o = protocol::FieldJson::replyFields(r);
-    o.remove(QStringLiteral("param")); // the caller names the parameter
-    o.remove(QStringLiteral("param_id"));
-    return o;
-}
-
 std::optional<QList<ParameterValue>> DriveParams::read(LiveBus &bus, int id,
                                                        const DriveParam &param)
 {
@@ -113,7 +98,7 @@ bool DriveParams::readFields(LiveBus &bus, int id, const DriveParam &param, QJso
     const std::optional<QList<ParameterValue>> values = read(bus, id, param);
     if (!values)
         return false;
-    const QJsonObject fields = valueFields(param, *values);
+    const QJsonObject fields = record::ParameterFields::of(*values);
     for (auto it = fields.begin(); it != fields.end(); ++it)
         into.insert(it.key(), it.value());
     return true;

@@ -37,10 +37,6 @@ public:
     /// One help line per parameter: its name, its values and their ranges.
     static QString helpLines(const QString &indent);
 
-    /// The value fields of `values` (one per ID of `param`, as read or as written): the loop's
-    /// gains, the one value (with its _raw), or max_angle_deg and max_angle_raw joined.
-    static QJsonObject valueFields(const DriveParam &param,
-                                   const QList<protocol::ParameterValue> &values);
     /// Read `param` with read_param (one request per ID); after printing why, nullopt.
     static std::optional<QList<protocol::ParameterValue>> read(LiveBus &bus, int id,
                                                                const DriveParam &param);

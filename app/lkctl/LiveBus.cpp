@@ -4,6 +4,8 @@
 
 #include <bus/Scanner.h>
 #include <protocol/Command.h>
+#include <system/FileHolders.h>
+#include <transport/SerialTransport.h>
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QDeadlineTimer>
@@ -76,15 +78,39 @@ bool LiveBus::open(const BusOptions &options)
         error(QStringLiteral("the bus did not open: %1").arg(state->reason));
     else
         error(QStringLiteral("the bus did not open in time"));
+    if (failure && failure->kind == transport::TransportError::Kind::PortBusy)
+        error(holdersText(transport::SerialTransport::systemPath(options.port)));
+    // An emergency stop that never reached the wire must not read like one that did.
+    if (m_command == QLatin1String("off") || m_command == QLatin1String("stop"))
+        error(QStringLiteral("NO drive was stopped: nothing was sent (%1)")
+                  .arg(m_command == QLatin1String("off") ? QStringLiteral("motor_off")
+                                                         : QStringLiteral("motor_stop")));
     return false;
 }
 
-RequestResult LiveBus::request(const protocol::Request &request, bus::Priority priority)
+QString LiveBus::holdersText(const QString &device)
+{
+    const QVector<system::FileHolder> holders = system::FileHolders::of(device);
+    if (holders.isEmpty())
+        return QStringLiteral("no process that holds %1 is visible to this user (`sudo fuser "
+                              "-v %1` shows every one)")
+            .arg(device);
+    QStringList names;
+    for (const system::FileHolder &h : holders)
+        names << (h.command.isEmpty() ? QString::number(h.pid)
+                                      : QStringLiteral("%1 (%2)").arg(h.pid).arg(h.command));
+    return QStringLiteral("%1 is held open by %2 %3")
+        .arg(device, holders.size() == 1 ? QStringLiteral("process") : QStringLiteral("processes"),
+             names.join(QStringLiteral(", ")));
+}
+
+RequestResult LiveBus::request(const protocol::Request &request, bus::Priority priority,
+                               int retries)
 {
     std::optional<RequestResult> result;
     QObject waiting; // gone on return: a result after the safety net finds no `result`
     m_session.send(
-        request, &waiting, [&result](const RequestResult &r) { result = r; }, priority);
+        request, &waiting, [&result](const RequestResult &r) { result = r; }, priority, retries);
     waitUntil([&result] { return result.has_value(); });
     if (result)
         return *result;
@@ -97,12 +123,13 @@ RequestResult LiveBus::request(const protocol::Request &request, bus::Priority p
     return r;
 }
 
-RequestResult LiveBus::request(protocol::Command command, int id, bus::Priority priority)
+RequestResult LiveBus::request(protocol::Command command, int id, bus::Priority priority,
+                               int retries)
 {
     protocol::Request r;
     r.command = command;
     r.id = static_cast<quint8>(id);
-    return request(r, priority);
+    return request(r, priority, retries);
 }
 
 void LiveBus::reportFailure(const RequestResult &result)
@@ -128,6 +155,7 @@ std::optional<LiveBus::Identity> LiveBus::identify(int id)
     }
     Identity i;
     i.model = std::get<protocol::ModelInfo>(r.reply->payload);
+    i.reply = *r.reply;
     i.series = bus::Scanner::inferSeries(i.model);
     if (i.series)
         m_session.setSeries(id, *i.series);

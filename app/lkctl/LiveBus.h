@@ -3,6 +3,7 @@
 #include "BusOptions.h"
 
 #include <bus/BusSession.h>
+#include <protocol/Reply.h>
 #include <protocol/Request.h>
 #include <protocol/Series.h>
 #include <protocol/Values.h>
@@ -26,21 +27,26 @@ public:
     ~LiveBus(); ///< closes the session
 
     /// Open the bus; on failure prints the transport's own message (with its fix) and
-    /// returns false.
+    /// returns false. A port another program holds is followed by which processes hold it
+    /// (where the system tells), and `off`/`stop` say that no drive was stopped.
     bool open(const BusOptions &options);
+    /// "/dev/ttyUSB0 is held open by process 4242 (lkstudio)", or that none is visible.
+    static QString holdersText(const QString &device);
 
     /// Send one request (already checked by MotionGuard if it moves a motor) and wait.
+    /// `retries` as BusSession::send (0: sent exactly once, whatever it is).
     bus::RequestResult request(const protocol::Request &request,
-                               bus::Priority priority = bus::Priority::Operator);
+                               bus::Priority priority = bus::Priority::Operator, int retries = -1);
     /// Send a request without data (reads, off/stop/run) to `id` and wait.
     bus::RequestResult request(protocol::Command command, int id,
-                               bus::Priority priority = bus::Priority::Operator);
+                               bus::Priority priority = bus::Priority::Operator, int retries = -1);
 
     /// read_model from `id`; on success the session decodes its replies by the series the
     /// model names. nullopt after printing why (no reply, ...).
     struct Identity {
         protocol::ModelInfo model;
         std::optional<protocol::Series> series; ///< nullopt: the model names no series
+        protocol::Reply reply; ///< the read_model reply itself (`read model` prints it)
     };
     std::optional<Identity> identify(int id);
 

@@ -23,6 +23,22 @@ std::optional<int> LiveCommand::parseId(const QString &text, QString *error, con
     return id;
 }
 
+std::optional<int> LiveCommand::singleId(const ArgParser &parser, Console &console,
+                                         int *status) const
+{
+    const QStringList &pos = parser.positionals();
+    QString error;
+    std::optional<int> id;
+    if (pos.size() != 1)
+        error = pos.isEmpty() ? QStringLiteral("missing the drive ID")
+                              : QStringLiteral("unexpected argument '%1'").arg(pos.at(1));
+    else
+        id = parseId(pos.at(0), &error);
+    if (!id)
+        *status = usageError(console, error);
+    return id;
+}
+
 ArgParser LiveCommand::makeParser(bool json)
 {
     ArgParser p;

@@ -16,6 +16,9 @@ class LiveCommand : public Subcommand {
 public:
     /// `lkctl NAME: message (see lkctl NAME --help)` on standard error; returns kExitUsage.
     int usageError(Console &console, const QString &message) const;
+    /// The one positional argument, a drive ID; nullopt after the usage error (missing, two
+    /// arguments, not 1..32), with `status` set.
+    std::optional<int> singleId(const ArgParser &parser, Console &console, int *status) const;
     /// "3" -> 3; nullopt with `error` naming `what` unless it is 1..32.
     static std::optional<int> parseId(const QString &text, QString *error,
                                       const QString &what = QStringLiteral("ID"));

@@ -6,6 +6,7 @@
 #include <bus/BusStatistics.h>
 #include <protocol/Command.h>
 
+#include <QtCore/QMap>
 #include <QtCore/QVector>
 
 #include <optional>
@@ -26,6 +27,9 @@ public:
     int run(const QStringList &args, Console &console) override;
 
     static constexpr double kDefaultRateHz = 10;
+    /// Without a reply from any drive for this long (or three poll periods and a second, if
+    /// longer), monitoring ends with status 1.
+    static constexpr double kSilenceS = 5;
 
 private:
     struct Plan {
@@ -37,11 +41,20 @@ private:
         MonitorFormat format = MonitorFormat::CsvWide;
         bool simulated = false; ///< --sim: no wire time, so no bus limit to compare with
         int baud = 0;
-        double busLimit = 0; ///< transactions/s the bus carries for this mix (BusTiming)
+        /// Transactions/s for this mix (BusTiming): the wire time alone (no rate can pass
+        /// it), and with the 0.5 ms turnaround a drive may take (a rate can pass that one).
+        double wireLimit = 0;
+        double slowDriveLimit = 0;
     };
     std::optional<Plan> parse(const ArgParser &parser, Console &console, int *status) const;
     /// --csv, --csv-layout and --json; nullopt with `error` set when they conflict.
     static std::optional<MonitorFormat> parseFormat(const ArgParser &parser, QString *error);
+    /// Why the plan cannot be polled: a --what set no drive's series has, or a drive whose
+    /// series has none of them (MS has no read_state3), naming the drive, the series, the
+    /// command and the set; empty when fine.
+    static QString lackingSet(const Plan &plan,
+                              const QMap<int, std::optional<protocol::Series>> &series);
+    static double silenceLimitS(const Plan &plan);
     /// Poll until a stop condition; returns the exit status.
     int stream(LiveBus &bus, const Plan &plan, MonitorTable &table);
     void report(LiveBus &bus, const Plan &plan, const MonitorTable &table, qint64 rows,

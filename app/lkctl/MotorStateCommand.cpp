@@ -51,7 +51,7 @@ QString MotorStateCommand::summary() const
     case Command::MotorStop:
         return QStringLiteral("motor stop (keeps the command; 'run' resumes it)");
     default:
-        return QStringLiteral("motor run: resume after a stop");
+        return QStringLiteral("motor run: resume after a stop (V2.3); Motor On (V2.35)");
     }
 }
 
@@ -76,10 +76,14 @@ QString MotorStateCommand::usage() const
                              "running state and command; 'lkctl run' resumes it.\n"
                              "'stop all' sends motor_stop to every ID 1..32 ahead of anything\n"
                              "else, like 'off all'.\n")
-            : QStringLiteral("Send motor_run (0x88) to drive ID: it resumes the command it held "
-                             "when\nstopped. The drive's series is read first and checked "
-                             "like any motion command.\n'run all' resumes every drive a scan "
-                             "finds, and sends\nnothing if any of them refuses.\n");
+            : QStringLiteral("Send motor_run (0x88) to drive ID. A V2.3 drive resumes the "
+                             "command it held\nwhen stopped. A V2.35 drive (firmware 2.35) "
+                             "turns its motor on after motor_off\nor a protection trip: it "
+                             "stays off until then, whatever control command comes,\nand holds "
+                             "no command (a stop is left by a new control command). The\ndrive's "
+                             "series is read first and checked like any motion command.\n'run "
+                             "all' sends it to every drive a scan finds, and sends nothing if\n"
+                             "any of them refuses.\n");
     return QStringLiteral("Usage: lkctl %1 ID|all (--port DEV [--baud N] | --sim SPEC) [--json]\n"
                           "\n"
                           "%2"

@@ -7,6 +7,8 @@
 #include "RequestText.h"
 #include "Subcommand.h"
 
+#include <record/ParameterFields.h>
+
 namespace lk::lkctl {
 
 using protocol::ParameterValue;
@@ -121,8 +123,8 @@ int ParamWrite::readBack(LiveBus &bus, const Plan &plan)
         bus.error(QStringLiteral("the read-back of %1 failed").arg(plan.param.name));
         return kExitFailure;
     }
-    const QJsonObject written = DriveParams::valueFields(plan.param, plan.written);
-    const QJsonObject holds = DriveParams::valueFields(plan.param, *values);
+    const QJsonObject written = record::ParameterFields::of(plan.written);
+    const QJsonObject holds = record::ParameterFields::of(*values);
     const bool same = written == holds;
     Console &console = bus.console();
     if (plan.json) {

@@ -178,8 +178,10 @@ int ReadCommand::run(const QStringList &args, Console &console)
     }
     QJsonObject fields;
     const bool viaParams = *command == Command::ReadParam || (*command == Command::ReadPid && v235);
-    if (viaParams ? !readV235Params(bus, *id, *command == Command::ReadPid, fields)
-                  : !readInto(bus, *command, *id, fields))
+    if (*command == Command::ReadModel)
+        fields = protocol::FieldJson::replyFields(who->reply); // read once, above
+    else if (viaParams ? !readV235Params(bus, *id, *command == Command::ReadPid, fields)
+                       : !readInto(bus, *command, *id, fields))
         return kExitFailure;
     if (parser.isSet(QStringLiteral("json"))) {
         OrderedJson o;

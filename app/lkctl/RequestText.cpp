@@ -149,7 +149,7 @@ BuildResult buildParamWrite(int id, const ParsedFields &p, bool rom)
     return build::writeParam(id, param, p.numbers.value(specs[0].id), rom);
 }
 
-BuildResult buildParsed(Command command, int id, const ParsedFields &p)
+BuildResult buildParsed(Command command, int id, const ParsedFields &p, const DecodeContext &drive)
 {
     const auto num = [&p](FieldId field) { return p.numbers.value(field); };
     const auto in = [&p](FieldId field) { return p.integers.value(field); };
@@ -167,7 +167,7 @@ BuildResult buildParsed(Command command, int id, const ParsedFields &p)
     case Command::OpenLoop:
         return build::openLoop(id, in(FieldId::Power));
     case Command::Torque:
-        return build::torque(id, num(FieldId::TorqueIqA));
+        return build::torque(id, num(FieldId::TorqueIqA), drive);
     case Command::Speed:
         return build::speed(id, num(FieldId::SpeedDps));
     case Command::MultiPosition:
@@ -213,14 +213,16 @@ std::optional<FieldBuildResult> checkIntArguments(Command command, const FieldVa
 
 } // namespace
 
-FieldBuildResult RequestText::build(Command command, const FieldValues &values)
+FieldBuildResult RequestText::build(Command command, const FieldValues &values,
+                                    const DecodeContext &drive)
 {
     ParsedFields parsed;
     if (auto failed = parseAll(command, values, parsed))
         return *failed;
     if (auto failed = checkIntArguments(command, values, parsed))
         return *failed;
-    const BuildResult built = buildParsed(command, int(parsed.integers.value(FieldId::Id)), parsed);
+    const BuildResult built =
+        buildParsed(command, int(parsed.integers.value(FieldId::Id)), parsed, drive);
     FieldBuildResult r;
     if (built.ok()) {
         r.request = built.request;
@@ -231,12 +233,13 @@ FieldBuildResult RequestText::build(Command command, const FieldValues &values)
     return r;
 }
 
-FieldBuildResult RequestText::build(const QString &commandName, const FieldValues &values)
+FieldBuildResult RequestText::build(const QString &commandName, const FieldValues &values,
+                                    const DecodeContext &drive)
 {
     const std::optional<Command> command = CommandTable::fromName(commandName);
     if (!command)
         return failMessage(QStringLiteral("unknown command '%1'").arg(commandName));
-    return build(*command, values);
+    return build(*command, values, drive);
 }
 
 } // namespace lk::lkctl

@@ -28,8 +28,13 @@ struct FieldBuildResult {
 /// non-numeric and out-of-range fields are refused.
 class RequestText {
 public:
-    static FieldBuildResult build(protocol::Command command, const FieldValues &values);
-    static FieldBuildResult build(const QString &commandName, const FieldValues &values);
+    /// `drive`: the series and generation of the drive the request is for, which give the
+    /// torque command's scale (V2.35 MF and MG differ from V2.3). Without a drive (encode,
+    /// write) the V2.3 scale applies; `lkctl control` passes the drive it identified.
+    static FieldBuildResult build(protocol::Command command, const FieldValues &values,
+                                  const protocol::DecodeContext &drive = {});
+    static FieldBuildResult build(const QString &commandName, const FieldValues &values,
+                                  const protocol::DecodeContext &drive = {});
 };
 
 } // namespace lk::lkctl

@@ -308,7 +308,7 @@ std::optional<QJsonObject> StepCommand::readGains(LiveBus &bus, int id,
 }
 
 StepTestResult StepCommand::runTest(LiveBus &bus, const Plan &plan,
-                                    const safety::SoftLimits &limits, double gearRatio) const
+                                    const safety::SoftLimits &limits, double gearRatio)
 {
     tuning::StepTestRunner runner(bus.session());
     std::optional<StepTestResult> result;
@@ -316,6 +316,13 @@ StepTestResult StepCommand::runTest(LiveBus &bus, const Plan &plan,
                      [&](const StepTestResult &r) { result = r; });
     QObject::connect(&runner, &tuning::StepTestRunner::failed,
                      [&](const StepTestResult &r) { result = r; });
+    // The last request of this drive that failed: the runner says "did not answer" for any
+    // failure, and a corrupt reply is an answer (the drive heard, and may have acted).
+    QObject::connect(&bus.session(), &bus::BusSession::requestCompleted, &runner,
+                     [&, id = plan.spec.id](const bus::RequestResult &r) {
+                         if (r.request.id == id && !r.ok())
+                             m_lastFailure = r;
+                     });
     // Ctrl-C ends the test at once: no further setpoint; the output says what still moves.
     system::SignalWatcher watcher;
     QObject::connect(&watcher, &system::SignalWatcher::signalled, &runner,
@@ -328,6 +335,31 @@ StepTestResult StepCommand::runTest(LiveBus &bus, const Plan &plan,
         runner.abort(); // the safety net: never returns without a result
     }
     return result.value_or(StepTestResult{});
+}
+
+QString StepCommand::failureText(const StepTestResult &result) const
+{
+    if (result.failure != StepTestFailure::Silent || !m_lastFailure ||
+        m_lastFailure->status != bus::RequestStatus::Error || m_lastFailure->reason.isEmpty())
+        return result.message;
+    // The drive answered, but its reply was corrupt (a bad checksum, as fw 2.35 drives send
+    // now and then): say so, and that a motion command may have been acted on.
+    const bus::RequestResult &r = *m_lastFailure;
+    const bool motion = protocol::CommandTable::info(r.request.command).movesMotor;
+    QString text = QStringLiteral("%1, sent %2 time(s): drive %3 answered, but not one reply "
+                                  "was whole")
+                       .arg(r.reason)
+                       .arg(r.attempts)
+                       .arg(r.request.id);
+    if (motion)
+        text += QStringLiteral("; it heard %1 and may have acted on it: it may be moving")
+                    .arg(protocol::CommandTable::name(r.request.command));
+    // The runner's own account of what the drive was last told follows its first clause.
+    const QString rest = QStringLiteral(": the test stopped");
+    const qsizetype at = result.message.indexOf(rest);
+    return text + (at >= 0
+                       ? QStringLiteral("; the test stopped") + result.message.mid(at + rest.size())
+                       : QStringLiteral("; ") + result.message);
 }
 
 tuning::StepRun StepCommand::keptRun(const Plan &plan, const LiveBus::Identity &who,
@@ -389,7 +421,7 @@ int StepCommand::run(const QStringList &args, Console &console)
     case StepTestFailure::BadSpec:
         return usageError(console, result.message);
     default:
-        bus.error(result.message);
+        bus.error(failureText(result));
         return kExitFailure;
     }
     const tuning::StepRun run = keptRun(*plan, *who, *gains, result);

@@ -38,7 +38,10 @@ private:
     std::optional<QJsonObject> readGains(LiveBus &bus, int id, const LiveBus::Identity &who) const;
     /// Runs the test on the open bus; the result once finished() or failed() came.
     tuning::StepTestResult runTest(LiveBus &bus, const Plan &plan, const safety::SoftLimits &limits,
-                                   double gearRatio) const;
+                                   double gearRatio);
+    /// Why a test failed, in words: the runner's message, but a corrupt reply (the drive
+    /// answered, the checksum was bad) told as such rather than as "did not answer".
+    QString failureText(const tuning::StepTestResult &result) const;
     /// The test as a kept run (tuning::StepRun): what the metrics and their JSON come from.
     static tuning::StepRun keptRun(const Plan &plan, const LiveBus::Identity &who,
                                    const QJsonObject &gains, const tuning::StepTestResult &result);
@@ -46,6 +49,8 @@ private:
                    const tuning::StepTestResult &result) const;
     void printText(Console &console, const Plan &plan, const tuning::StepRun &run,
                    const tuning::StepTestResult &result) const;
+
+    std::optional<bus::RequestResult> m_lastFailure; ///< of the drive under test
 };
 
 } // namespace lk::lkctl

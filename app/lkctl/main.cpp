@@ -1,4 +1,5 @@
 #include "BrakeCommand.h"
+#include "ClearErrorsCommand.h"
 #include "Console.h"
 #include "ControlCommand.h"
 #include "DecodeCommand.h"
@@ -11,6 +12,7 @@
 #include "ScanCommand.h"
 #include "StepCommand.h"
 #include "WriteCommand.h"
+#include "ZeroCommand.h"
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QLoggingCategory>
@@ -40,6 +42,9 @@ int main(int argc, char *argv[])
     dispatcher.add(std::make_unique<MotorStateCommand>(Command::MotorStop));
     dispatcher.add(std::make_unique<MotorStateCommand>(Command::MotorRun));
     dispatcher.add(std::make_unique<BrakeCommand>());
+    dispatcher.add(std::make_unique<ClearErrorsCommand>());
+    dispatcher.add(std::make_unique<ZeroCommand>(ZeroCommand::Kind::Zero));
+    dispatcher.add(std::make_unique<ZeroCommand>(ZeroCommand::Kind::ClearTurns));
     dispatcher.add(std::make_unique<StepCommand>());
     dispatcher.add(std::make_unique<MonitorCommand>());
     dispatcher.add(std::make_unique<EncodeCommand>());

@@ -127,6 +127,23 @@ int main(int argc, char *argv[])
                        "...: exactly the next N replies), delay_ms=N, silent=ID (repeatable), "
                        "seed=N. Example: drop=0.01,corrupt=0.01,silent=17"),
         QStringLiteral("spec"));
+    const QCommandLineOption fault(
+        QStringLiteral("fault"),
+        QStringLiteral(
+            "A drive raises a protection fault by itself: ID:FAULT[@START[-END]], "
+            "comma-separated, repeatable. FAULT is an error flag of the drive's generation: "
+            "V2.3 low_voltage, over_temperature; V2.35 low_voltage, over_voltage, "
+            "driver_over_temperature, motor_over_temperature (or over_temperature), "
+            "over_current, short_circuit, stall, input_timeout. START and END are seconds "
+            "after lksim started (\"5s\" or \"5\"): the cause appears at START (default "
+            "0) and goes at END (default: never). The flag latches in 0x9A, the drive stops "
+            "as a real one does (motion ends; a V2.35 drive's motor state reads off until "
+            "0x88), and 0x9B clears the flag once its cause has gone. Low and over voltage "
+            "show in the supply voltage, over-temperature in the motor temperature. "
+            "In --motors and in lkctl/lkstudio --sim the same is written "
+            "ID:MODEL+fault=FAULT[@START[-END]]. Example: --fault 1:over_temperature@5s,"
+            "2:stall@2-4s"),
+        QStringLiteral("spec"));
     const QCommandLineOption badChecksumPct(
         QStringLiteral("bad-checksum-pct"),
         QStringLiteral("Copy firmware 2.35's bug: about P % (0..100, default 0) of the 0xA4 "
@@ -166,17 +183,21 @@ int main(int argc, char *argv[])
                        "start, after every collision (the collision count is always current), "
                        "on SIGUSR1 (all counters current) and at exit (\"running\":false)."),
         QStringLiteral("path"));
-    parser.addOptions({motors, link, baud, wireTime, replyDelay, adapterLatency, romDir, faults,
-                       badChecksumPct, busyPoll, measurePtyLag, statsFile, verbose});
+    parser.addOptions({motors, fault, link, baud, wireTime, replyDelay, adapterLatency, romDir,
+                       faults, badChecksumPct, busyPoll, measurePtyLag, statsFile, verbose});
     parser.process(app);
 
     if (!parser.isSet(motors))
         return fail(QStringLiteral("--motors is required, e.g. --motors 1:MF,2:MS"));
     QString error;
-    const std::optional<lk::sim::SimBusSpec> spec =
+    std::optional<lk::sim::SimBusSpec> spec =
         lk::sim::SimBusSpec::parse(parser.value(motors), &error);
     if (!spec)
         return fail(error);
+    for (const QString &faultSpec : parser.values(fault)) {
+        if (!spec->addFaults(faultSpec, &error))
+            return fail(QStringLiteral("--fault: %1").arg(error));
+    }
     bool ok = false;
     const int baudValue = parser.value(baud).toInt(&ok);
     if (!ok || !isLkBaud(baudValue))

@@ -40,7 +40,8 @@ bool SetpointStream::isSetpointTicket(quint64 ticket)
     return (ticket & kTicketBit) != 0;
 }
 
-protocol::BuildResult SetpointStream::build(const SetpointStreamPlan &plan, double value)
+protocol::BuildResult SetpointStream::build(const SetpointStreamPlan &plan, double value,
+                                            protocol::Generation generation)
 {
     namespace build = protocol::build;
     switch (plan.settings.target) {
@@ -49,7 +50,8 @@ protocol::BuildResult SetpointStream::build(const SetpointStreamPlan &plan, doub
     case Target::Position:
         return build::multiPosition(plan.id, value);
     case Target::Torque:
-        return build::torque(plan.id, value);
+        return build::torque(plan.id, value,
+                             {plan.series.value_or(protocol::Series::MF), generation});
     }
     return build::speed(plan.id, value);
 }
@@ -59,6 +61,8 @@ void SetpointStream::start(const SetpointStreamPlan &plan)
     stop(SetpointStopReason::Replaced);
     m_plan = plan;
     m_plan.settings = SetpointWaveform::bounded(plan.settings);
+    // The bus knows the drive's generation (its model reply): torques go out at its scale.
+    m_generation = m_worker.knownMotors().value(plan.id).generation;
     m_emitted = 0;
     m_skipped = 0;
     // m_ticket stays: a setpoint of the previous stream still on its way is waited for.
@@ -127,7 +131,7 @@ void SetpointStream::tick()
         return;
     }
     const protocol::BuildResult built =
-        build(m_plan, SetpointWaveform::valueAt(m_plan.settings, t));
+        build(m_plan, SetpointWaveform::valueAt(m_plan.settings, t), m_generation);
     if (!built.ok()) {
         stopRefused({}, built.error);
         return;

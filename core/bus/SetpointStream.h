@@ -49,8 +49,10 @@ public:
     qint64 emitted() const { return m_emitted; }
     qint64 skipped() const { return m_skipped; }
 
-    /// The request for setpoint `value` of `plan`, as built (before the limits are applied).
-    static protocol::BuildResult build(const SetpointStreamPlan &plan, double value);
+    /// The request for setpoint `value` of `plan` to a drive of `generation` (a torque is in
+    /// the drive's own units), as built (before the limits are applied).
+    static protocol::BuildResult build(const SetpointStreamPlan &plan, double value,
+                                       protocol::Generation generation);
     /// Whether `ticket` belongs to a setpoint (its own range: never one BusSession gives out).
     static bool isSetpointTicket(quint64 ticket);
 
@@ -75,6 +77,7 @@ private:
     std::unique_ptr<SingleShotTimer> m_timer;
     std::function<double()> m_clock;
     SetpointStreamPlan m_plan;
+    protocol::Generation m_generation = protocol::Generation::V2_3; ///< the plan's drive's
     bool m_running = false;
     double m_startS = 0; ///< clock time of the start
     double m_nextS = 0;  ///< when the next tick is due, seconds after the start

@@ -7,6 +7,7 @@ namespace lk::motor {
 namespace {
 // What a reported value can prove: the wire field is 16 bits wide, so data never shows more.
 constexpr int kDataBits[] = {14, 15, 16};
+constexpr int kV235MsBits = 16;
 } // namespace
 
 const QList<int> &EncoderResolution::choices()
@@ -15,13 +16,27 @@ const QList<int> &EncoderResolution::choices()
     return bits;
 }
 
+std::optional<int> EncoderResolution::documentedBits(std::optional<protocol::Series> series,
+                                                     protocol::Generation generation)
+{
+    // docs/V2.35.md section 12: the encoder field of an MS4015 on firmware 2.35 spans 16 bits
+    // (values up to 43388), where V2.3's series table says 12/18 bit.
+    if (series == protocol::Series::MS && generation == protocol::Generation::V2_35)
+        return kV235MsBits;
+    return std::nullopt;
+}
+
 EncoderResolution EncoderResolution::fromModel(const ModelNameInfo &name,
-                                               std::optional<protocol::Series> series)
+                                               std::optional<protocol::Series> series,
+                                               protocol::Generation generation)
 {
     EncoderResolution r;
     if (name.encoderBitsFromName) {
         r.m_bits = name.encoderBits;
         r.m_source = Source::Name;
+    } else if (const auto bits = documentedBits(series, generation)) {
+        r.m_bits = *bits;
+        r.m_source = Source::Generation;
     } else if (series) {
         r.m_bits = defaultEncoderBits(*series);
         r.m_source = Source::SeriesDefault;

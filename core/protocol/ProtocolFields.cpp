@@ -2,10 +2,12 @@
 
 #include "Checksum.h"
 
+#include <QtCore/QCoreApplication>
 #include <QtCore/QHash>
 #include <QtCore/QSet>
 #include <QtCore/QStringList>
 
+#include <algorithm>
 #include <limits>
 
 namespace lk::protocol {
@@ -151,8 +153,12 @@ const QList<ProtocolField> &table()
         integer(FieldId::AccelDps2, "accel_dps2", 0, kInt32Max, "0..2147483647 dps/s", "dps/s")
             .shown("acceleration", "dps/s"),
         // V2.35 parameters (docs/V2.35.md section 6); max_torque is in iq command units.
+        // One name per series for ParamID 0x99 (paramLabel()): MS drives carry power.
         number(FieldId::MaxTorque, "max_torque", false, "", 1, 1, 0, 2048, "0..2048")
-            .shown("max torque current", "(of 2048)"),
+            .shown(QT_TRANSLATE_NOOP("lk::protocol::ProtocolFields", "max torque current"),
+                   "(of 2048)"),
+        out("max_power")
+            .shown(QT_TRANSLATE_NOOP("lk::protocol::ProtocolFields", "max power"), "(of 1000)"),
         number(FieldId::MaxAngleDeg, "max_angle_deg", true, "deg", 1, 100, 0, kMultiTurnLimitRaw,
                "0..9e16 deg")
             .shown("max angle", "deg", 2, false),
@@ -295,6 +301,28 @@ QList<FieldSpec> ProtocolFields::ofCommand(Command command)
     default:
         return {};
     }
+}
+
+const ProtocolField &ProtocolFields::paramRow(ParamId param, std::optional<Series> series)
+{
+    // A name shared by several rows is labelled on its first.
+    const char *name = param == ParamId::MaxTorqueCurrent && series == Series::MS
+                           ? "max_power"
+                           : field(ofParam(param).constFirst().id).name;
+    return *std::find_if(table().cbegin(), table().cend(), [name](const ProtocolField &f) {
+        return f.label && qstrcmp(f.name, name) == 0;
+    });
+}
+
+QString ProtocolFields::paramLabel(ParamId param, std::optional<Series> series)
+{
+    return QString::fromLatin1(paramRow(param, series).label);
+}
+
+QString ProtocolFields::paramLabelTranslated(ParamId param, std::optional<Series> series)
+{
+    return QCoreApplication::translate("lk::protocol::ProtocolFields",
+                                       paramRow(param, series).label);
 }
 
 QList<FieldSpec> ProtocolFields::ofParam(ParamId param)

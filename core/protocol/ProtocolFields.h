@@ -2,10 +2,13 @@
 
 #include "Command.h"
 #include "Parameter.h"
+#include "Series.h"
 
 #include <QtCore/QList>
 #include <QtCore/QString>
 #include <QtCore/QtGlobal>
+
+#include <optional>
 
 namespace lk::protocol {
 
@@ -128,6 +131,14 @@ public:
     static QList<FieldSpec> ofCommand(Command command);
     /// The value fields of one V2.35 parameter (write_param_ram/rom after `param`).
     static QList<FieldSpec> ofParam(ParamId param);
+    /// The row that names a one-value V2.35 parameter on a drive of `series`: ParamID 0x99 is
+    /// "max power" on MS (whose commands and replies carry power) and "max torque current"
+    /// on MF/MG/MH (and an unknown series). The one place both names live.
+    static const ProtocolField &paramRow(ParamId param, std::optional<Series> series);
+    /// paramRow()'s label, as lkctl prints it ("max power").
+    static QString paramLabel(ParamId param, std::optional<Series> series);
+    /// The same label translated for lkstudio.
+    static QString paramLabelTranslated(ParamId param, std::optional<Series> series);
 };
 
 } // namespace lk::protocol

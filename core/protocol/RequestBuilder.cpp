@@ -149,16 +149,6 @@ BuildResult openLoop(int id, qint64 power)
     return done(Command::OpenLoop, id, OpenLoopCommand{static_cast<qint16>(power)});
 }
 
-BuildResult torque(int id, double iqA)
-{
-    if (auto e = checkId(id))
-        return fail(e->field, e->range, e->problem);
-    const auto raw = scaled(FieldId::TorqueIqA, iqA);
-    if (!raw)
-        return refuse(FieldId::TorqueIqA, iqA);
-    return done(Command::Torque, id, TorqueCommand{static_cast<qint16>(*raw)});
-}
-
 BuildResult torque(int id, double iqA, const DecodeContext &context)
 {
     if (auto e = checkId(id))
@@ -167,11 +157,16 @@ BuildResult torque(int id, double iqA, const DecodeContext &context)
     const ProtocolField &f = ProtocolFields::field(FieldId::TorqueIqA);
     const double lsb = iqCommandAmpsPerLsb(context);
     const auto raw = scaled(iqA, lsb, f.min, f.max);
+    if (!raw && context.generation == Generation::V2_3)
+        return refuse(FieldId::TorqueIqA, iqA); // the table's range is V2.3's
     if (!raw) {
         const QString limit = QString::number(f.max * lsb, 'f', 2);
         return fail(QLatin1String(f.name), QStringLiteral("-%1..%1 A").arg(limit), got(iqA));
     }
-    return done(Command::Torque, id, TorqueCommand{static_cast<qint16>(*raw)});
+    TorqueCommand c;
+    c.iqRaw = static_cast<qint16>(*raw);
+    c.ampsPerLsb = lsb;
+    return done(Command::Torque, id, c);
 }
 
 BuildResult speed(int id, double speedDps)

@@ -20,9 +20,9 @@ BuildResult writeAcceleration(int id, qint64 accelDps2); ///< 0..2147483647 dps/
 BuildResult writeEncoderOffset(int id, qint64 offset);   ///< 0..65535 counts
 /// -850..850 (MS): the stricter of V2.3's +-1000 and V2.35's +-850.
 BuildResult openLoop(int id, qint64 power);
-BuildResult torque(int id, double iqA); ///< -32..32 A at V2.3's 32 A / 2000 LSB
-/// Torque at the scale of the drive in `context` (V2.35 MF: 33/4096 A per LSB); the raw value
-/// stays within +-2000, the stricter of both generations.
+/// Torque at the scale of the drive in `context`: V2.3 32 A / 2000 LSB (-32..32 A); V2.35 MF
+/// 33/4096 A, MG 66/4096 A per LSB. The raw value stays within +-2000, the stricter of both
+/// generations. The only torque builder: a torque is never built without knowing the drive.
 BuildResult torque(int id, double iqA, const DecodeContext &context);
 BuildResult speed(int id, double speedDps);         ///< int32 of 0.01 dps
 BuildResult multiPosition(int id, double angleDeg); ///< int64 of 0.01 deg

@@ -171,8 +171,12 @@ struct OpenLoopCommand {
     qint16 power = 0; ///< -850..850 (the stricter of V2.3's +-1000 and V2.35's +-850)
 };
 struct TorqueCommand {
-    qint16 iqRaw = 0; ///< -2000..2000 = -32..32 A
-    double iqA() const { return iqRaw * kIqCommandAmpsPerLsb; }
+    qint16 iqRaw = 0; ///< -2000..2000, the stricter range of both generations
+    /// Amps per LSB at the scale of the drive it was built for (build::torque(): V2.3 32/2000
+    /// A; V2.35 MF 33/4096, MG 66/4096). A request read back from bytes has the V2.3 scale:
+    /// the frame does not say which drive it is for.
+    double ampsPerLsb = kIqCommandAmpsPerLsb;
+    double iqA() const { return iqRaw * ampsPerLsb; }
 };
 struct SpeedCommand {
     qint32 speedRaw = 0; ///< 0.01 dps

@@ -1,6 +1,11 @@
 #include "BusReport.h"
 
+#include "ParameterFields.h"
 #include "ParameterSet.h"
+
+#include <protocol/ErrorFlags.h>
+#include <protocol/FieldJson.h>
+#include <protocol/Reply.h>
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QJsonArray>
@@ -20,9 +25,10 @@ const char *const kHeaders[] = {
     QT_TRANSLATE_NOOP("lk::record::BusReport", "Motor"),
     QT_TRANSLATE_NOOP("lk::record::BusReport", "Hardware"),
     QT_TRANSLATE_NOOP("lk::record::BusReport", "Firmware"),
+    QT_TRANSLATE_NOOP("lk::record::BusReport", "Protocol"),
     QT_TRANSLATE_NOOP("lk::record::BusReport",
-                      "PID (angle Kp/Ki \u00b7 speed Kp/Ki \u00b7 iq Kp/Ki)"),
-    QT_TRANSLATE_NOOP("lk::record::BusReport", "Acceleration (dps/s)"),
+                      "Gains (angle \u00b7 speed \u00b7 iq: Kp/Ki, V2.35 Kp/Ki/Kd)"),
+    QT_TRANSLATE_NOOP("lk::record::BusReport", "Acceleration or limits"),
     QT_TRANSLATE_NOOP("lk::record::BusReport", "State"),
     QT_TRANSLATE_NOOP("lk::record::BusReport", "Problems"),
 };
@@ -57,14 +63,20 @@ QJsonObject pidJson(const protocol::PidGains &p)
     return o;
 }
 
+/// The fields lkctl prints for read_state1 (by the reply's generation), and the set flags by
+/// name as `lkctl scan` lists them.
 QJsonObject state1Json(const protocol::State1 &s)
 {
-    QJsonObject o;
-    o.insert(QStringLiteral("temperature_c"), s.temperatureC);
-    o.insert(QStringLiteral("voltage_v"), s.voltageV());
-    o.insert(QStringLiteral("error_state"), s.errorState);
-    o.insert(QStringLiteral("low_voltage"), s.lowVoltage());
-    o.insert(QStringLiteral("over_temperature"), s.overTemperature());
+    protocol::Reply r;
+    r.command = protocol::Command::ReadState1;
+    r.payload = s;
+    QJsonObject o = protocol::FieldJson::replyFields(r);
+    QStringList errors;
+    for (const protocol::ErrorFlag &f : protocol::ErrorFlags::set(s.errorState, s.generation))
+        errors << QLatin1String(f.key);
+    if (protocol::ErrorFlags::unnamedBits(s.errorState, s.generation))
+        errors << QStringLiteral("unknown_bits");
+    o.insert(QStringLiteral("errors"), QJsonArray::fromStringList(errors));
     return o;
 }
 
@@ -77,10 +89,21 @@ QJsonObject driveJson(const BusReportDrive &d)
         o.insert(QStringLiteral("series"), protocol::seriesName(*d.series));
     if (d.model)
         o.insert(QStringLiteral("model"), modelJson(*d.model));
+    if (d.generation)
+        o.insert(QStringLiteral("generation"), protocol::generationName(*d.generation));
     if (d.pid)
         o.insert(QStringLiteral("pid"), pidJson(*d.pid));
     if (d.accelDps2)
         o.insert(QStringLiteral("accel_dps2"), qint64(*d.accelDps2));
+    if (!d.params.isEmpty()) {
+        // V2.35: the gains with Kd under the V2.3 names, and `params` as `lkctl info` has them.
+        QJsonObject pid, params;
+        ParameterFields::split(d.params, pid, params);
+        if (!pid.isEmpty())
+            o.insert(QStringLiteral("pid"), pid);
+        if (!params.isEmpty())
+            o.insert(QStringLiteral("params"), params);
+    }
     if (d.state1)
         o.insert(QStringLiteral("state1"), state1Json(*d.state1));
     o.insert(QStringLiteral("problems"), QJsonArray::fromStringList(d.problems));
@@ -97,34 +120,6 @@ QString dash()
     return QStringLiteral("\u2013");
 }
 
-QString pidText(const std::optional<protocol::PidGains> &p)
-{
-    if (!p)
-        return dash();
-    return QStringLiteral("%1 / %2 \u00b7 %3 / %4 \u00b7 %5 / %6")
-        .arg(p->angleKp)
-        .arg(p->angleKi)
-        .arg(p->speedKp)
-        .arg(p->speedKi)
-        .arg(p->iqKp)
-        .arg(p->iqKi);
-}
-
-QString stateText(const std::optional<protocol::State1> &s)
-{
-    if (!s)
-        return dash();
-    QString t =
-        QStringLiteral("%1 \u00b0C, %2 V").arg(s->temperatureC).arg(s->voltageV(), 0, 'f', 1);
-    if (s->lowVoltage())
-        t += QStringLiteral(", ") +
-             QCoreApplication::translate("lk::record::BusReport", "LOW VOLTAGE");
-    if (s->overTemperature())
-        t += QStringLiteral(", ") +
-             QCoreApplication::translate("lk::record::BusReport", "OVER TEMPERATURE");
-    return t;
-}
-
 QString driveRow(const BusReportDrive &d)
 {
     const auto &m = d.model;
@@ -135,15 +130,89 @@ QString driveRow(const BusReportDrive &d)
     row += cell(m ? m->motorName : dash());
     row += cell(m ? QString::number(m->hardwareVersion(), 'f', m->divisor() > 10 ? 2 : 1) : dash());
     row += cell(m ? QString::number(m->firmwareVersion(), 'f', m->divisor() > 10 ? 2 : 1) : dash());
-    row += cell(pidText(d.pid));
-    row += cell(d.accelDps2 ? QString::number(*d.accelDps2) : dash());
-    row += cell(stateText(d.state1));
+    row += cell(d.generation ? protocol::generationName(*d.generation).toUpper() : dash());
+    row += cell(d.gainsText());
+    row += cell(d.limitsText());
+    row += cell(d.stateText());
     row += cell(d.problems.isEmpty() ? QCoreApplication::translate("lk::record::BusReport", "none")
                                      : d.problems.join(QStringLiteral("; ")));
     return row + QStringLiteral("</tr>\n");
 }
 
 } // namespace
+
+QString BusReportDrive::stateText() const
+{
+    if (!state1)
+        return dash();
+    const protocol::State1 &s = *state1;
+    const int decimals = s.generation == protocol::Generation::V2_3 ? 1 : 2;
+    QString t =
+        QStringLiteral("%1 \u00b0C, %2 V").arg(s.temperatureC).arg(s.voltageV(), 0, 'f', decimals);
+    QStringList flags;
+    for (const protocol::ErrorFlag &f : protocol::ErrorFlags::set(s.errorState, s.generation))
+        flags << QCoreApplication::translate("lk::protocol::ErrorFlags", f.text);
+    if (const quint8 rest = protocol::ErrorFlags::unnamedBits(s.errorState, s.generation))
+        flags << QCoreApplication::translate("lk::record::BusReport", "unknown bits 0x%1")
+                     .arg(rest, 2, 16, QLatin1Char('0'));
+    if (!flags.isEmpty())
+        t += QStringLiteral("; ") + flags.join(QStringLiteral(", "));
+    return t;
+}
+
+QString BusReportDrive::gainsText() const
+{
+    if (pid)
+        return QStringLiteral("%1/%2 \u00b7 %3/%4 \u00b7 %5/%6")
+            .arg(pid->angleKp)
+            .arg(pid->angleKi)
+            .arg(pid->speedKp)
+            .arg(pid->speedKi)
+            .arg(pid->iqKp)
+            .arg(pid->iqKi);
+    QStringList loops;
+    for (protocol::ParamId id : {protocol::ParamId::AnglePid, protocol::ParamId::SpeedPid,
+                                 protocol::ParamId::CurrentPid}) {
+        QString loop = dash();
+        for (const protocol::ParameterValue &v : params) {
+            if (v.id() == id)
+                loop = QStringLiteral("%1/%2/%3").arg(v.pidKp()).arg(v.pidKi()).arg(v.pidKd());
+        }
+        loops << loop;
+    }
+    return loops == QStringList(3, dash()) ? dash() : loops.join(QStringLiteral(" \u00b7 "));
+}
+
+QString BusReportDrive::limitsText() const
+{
+    const auto say = [](const char *text) {
+        return QCoreApplication::translate("lk::record::BusReport", text);
+    };
+    if (accelDps2)
+        return say(QT_TRANSLATE_NOOP("lk::record::BusReport", "%1 dps/s")).arg(*accelDps2);
+    QJsonObject gains, values;
+    ParameterFields::split(params, gains, values);
+    if (values.isEmpty())
+        return dash();
+    // 0x99 bounds the power on MS, the torque current elsewhere.
+    const char *torque = series == protocol::Series::MS
+                             ? QT_TRANSLATE_NOOP("lk::record::BusReport", "max power %1")
+                             : QT_TRANSLATE_NOOP("lk::record::BusReport", "max torque %1");
+    const std::pair<const char *, const char *> shown[] = {
+        {"max_torque", torque},
+        {"max_speed_dps", QT_TRANSLATE_NOOP("lk::record::BusReport", "max speed %1 dps")},
+        {"max_angle_deg", QT_TRANSLATE_NOOP("lk::record::BusReport", "max angle %1\u00b0")},
+        {"current_ramp", QT_TRANSLATE_NOOP("lk::record::BusReport", "current ramp %1")},
+        {"speed_ramp_dps2", QT_TRANSLATE_NOOP("lk::record::BusReport", "speed ramp %1 dps/s")},
+    };
+    QStringList parts;
+    for (const auto &[key, text] : shown) {
+        if (values.contains(QLatin1String(key)))
+            parts << say(text).arg(
+                QString::number(values.value(QLatin1String(key)).toDouble(), 'g', 12));
+    }
+    return parts.join(QStringLiteral(" \u00b7 "));
+}
 
 QJsonObject BusReport::toJson() const
 {

@@ -15,21 +15,13 @@ constexpr qsizetype kFlushBytes = 1 << 16;
 
 CsvWriter::CsvWriter(const QString &path) : m_file(path) {}
 
-CsvWriter::~CsvWriter()
-{
-    if (m_open) {
-        m_file.cancelWriting(); // never leave a half file behind
-    }
-}
-
 QString CsvWriter::begin(const QByteArray &header)
 {
-    if (!m_file.open(QIODevice::WriteOnly)) {
+    if (!m_file.open()) {
         return QCoreApplication::translate("lk::record::CsvWriter", "Cannot open %1: %2")
             .arg(m_file.fileName(), m_file.errorString());
     }
     m_open = true;
-    m_error.clear();
     m_buffer = header;
     return {};
 }
@@ -46,21 +38,10 @@ void CsvWriter::write(const QByteArray &text)
 QString CsvWriter::finish()
 {
     if (!m_open) {
-        return m_error.isEmpty()
-                   ? QCoreApplication::translate("lk::record::CsvWriter", "The file was not opened")
-                   : m_error;
+        return QCoreApplication::translate("lk::record::CsvWriter", "The file was not opened");
     }
     flushBuffer();
     m_open = false;
-    // Qt 6.4's QSaveFile renames the file into place even when the flush inside commit()
-    // fails (a full disk): flush first, where a failure still cancels.
-    if (m_error.isEmpty() && !m_file.flush())
-        m_error = QCoreApplication::translate("lk::record::CsvWriter", "Cannot write %1: %2")
-                      .arg(m_file.fileName(), m_file.errorString());
-    if (!m_error.isEmpty()) {
-        m_file.cancelWriting();
-        return m_error;
-    }
     if (!m_file.commit()) {
         return QCoreApplication::translate("lk::record::CsvWriter", "Cannot write %1: %2")
             .arg(m_file.fileName(), m_file.errorString());
@@ -70,22 +51,9 @@ QString CsvWriter::finish()
 
 void CsvWriter::flushBuffer()
 {
-    if (m_buffer.isEmpty() || !m_error.isEmpty()) {
-        m_buffer.clear();
-        return;
-    }
-    if (m_file.write(m_buffer) != m_buffer.size()) {
-        fail(QCoreApplication::translate("lk::record::CsvWriter", "Cannot write %1: %2")
-                 .arg(m_file.fileName(), m_file.errorString()));
-    }
+    // A failed write is kept by the file: finish() reports the first one and discards it all.
+    m_file.write(m_buffer);
     m_buffer.clear();
-}
-
-void CsvWriter::fail(const QString &error)
-{
-    if (m_error.isEmpty()) {
-        m_error = error; // the first error is the cause; later ones are consequences
-    }
 }
 
 QByteArray CsvWriter::formatNumber(double value, int decimals)

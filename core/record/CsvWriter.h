@@ -1,19 +1,20 @@
 #pragma once
 
+#include <system/AtomicFile.h>
+
 #include <QtCore/QByteArray>
-#include <QtCore/QSaveFile>
 #include <QtCore/QString>
 
 namespace lk::record {
 
-/// Writes a CSV file through QSaveFile: either the complete file appears at the path or the
-/// path is left as it was (an error, or a writer destroyed before finish(), discards it).
-/// The text comes formatted (TelemetryCsv); formatNumber() is the one number format of every
-/// telemetry CSV: C locale, fixed decimals, NaN and infinities as empty cells (no value).
+/// Writes a CSV file atomically (system::AtomicFile): either the complete file appears at the
+/// path or the path is left as it was (an error, or a writer destroyed before finish(),
+/// discards it). The text comes formatted (TelemetryCsv); formatNumber() is the one number
+/// format of every telemetry CSV: C locale, fixed decimals, NaN and infinities as empty cells
+/// (no value).
 class CsvWriter {
 public:
     explicit CsvWriter(const QString &path);
-    ~CsvWriter();
     CsvWriter(const CsvWriter &) = delete;
     CsvWriter &operator=(const CsvWriter &) = delete;
 
@@ -31,11 +32,9 @@ public:
 
 private:
     void flushBuffer();
-    void fail(const QString &error);
 
-    QSaveFile m_file;
+    system::AtomicFile m_file;
     QByteArray m_buffer;
-    QString m_error;
     bool m_open = false;
 };
 

@@ -1,12 +1,12 @@
 #include "ParameterSet.h"
 
-#include <QtCore/QCoreApplication>
+#include <system/AtomicFile.h>
+#include <system/BoundedFile.h>
 
-#include <QtCore/QFile>
+#include <QtCore/QCoreApplication>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonValue>
-#include <QtCore/QSaveFile>
 #include <QtCore/QSet>
 
 #include <algorithm>
@@ -22,7 +22,6 @@ using Kind = ParameterFileError::Kind;
 using ValueType = ParameterFileError::ValueType;
 
 const char *const kFormat = ParameterSet::kFormatName;
-constexpr qint64 kMaxFileBytes = 1 << 20;         // a parameter set is a few hundred bytes
 constexpr double kMaxVersionShown = 65535 / 10.0; // u16 raw / 10 (V2.3) or / 100 (V2.35)
 constexpr int kGainMax = 255;
 constexpr int kGainMaxV235 = 65535;
@@ -413,19 +412,20 @@ QString ParameterSet::save(const QString &path) const
 std::optional<ParameterSet> ParameterSet::load(const QString &path, ParameterFileError *error)
 {
     ParameterFileError e;
-    e.path = path;
-    QFile file(path);
+    const system::BoundedRead file = system::BoundedFile::read(path, kMaxFileBytes);
     std::optional<ParameterSet> set;
-    if (!file.open(QIODevice::ReadOnly)) {
-        e.kind = Kind::CannotRead;
-        e.detail = file.errorString();
-    } else if (file.size() > kMaxFileBytes) {
+    if (file.ok()) {
+        set = fromJson(file.bytes, &e);
+    } else if (file.error->kind == system::FileReadError::Kind::TooLarge) {
         e.kind = Kind::TooLarge;
         e.max = double(kMaxFileBytes);
+        e.found = QString::number(file.error->size);
+        e.detail = file.error->reason();
     } else {
-        set = fromJson(file.readAll(), &e);
-        e.path = path;
+        e.kind = Kind::CannotRead; // a directory, a FIFO, a device: refused unopened
+        e.detail = file.error->reason();
     }
+    e.path = path;
     if (!set && error)
         *error = e;
     return set;
@@ -433,23 +433,11 @@ std::optional<ParameterSet> ParameterSet::load(const QString &path, ParameterFil
 
 QString writeFileAtomically(const QString &path, const QByteArray &bytes)
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return QCoreApplication::translate("lk::record::ParameterSet", "cannot write %1: %2")
-            .arg(path, file.errorString());
-    // A short file only reaches the disk when the buffer is flushed, and a flush that fails
-    // inside commit() (a full disk) does not stop Qt 6.4's QSaveFile from renaming the cut
-    // copy over the target: flush here, where a failure can still cancel.
-    if (file.write(bytes) != bytes.size() || !file.flush()) {
-        const QString why = file.errorString();
-        file.cancelWriting();
-        return QCoreApplication::translate("lk::record::ParameterSet", "cannot write %1: %2")
-            .arg(path, why);
-    }
-    if (!file.commit())
-        return QCoreApplication::translate("lk::record::ParameterSet", "cannot write %1: %2")
-            .arg(path, file.errorString());
-    return QString();
+    const QString why = system::AtomicFile::writeAll(path, bytes);
+    if (why.isEmpty())
+        return QString();
+    return QCoreApplication::translate("lk::record::ParameterSet", "cannot write %1: %2")
+        .arg(path, why);
 }
 
 } // namespace lk::record

@@ -17,8 +17,10 @@ namespace lk::record {
 /// the UI words it (ui/drive/ParameterFileText).
 struct ParameterFileError {
     enum class Kind {
-        CannotRead,        ///< detail: the file system's reason
-        TooLarge,          ///< bigger than any parameter file (max: the limit in bytes)
+        CannotRead,        ///< detail: the file system's reason, or what the path is instead
+                           ///< of a regular file (a directory, a FIFO, a device)
+        TooLarge,          ///< bigger than any parameter file (max: the limit in bytes,
+                           ///< found: the file's size, detail: both in words)
         NotJson,           ///< detail: the JSON parser's reason, offset: where
         NotObject,         ///< the document is not a JSON object
         WrongFormat,       ///< "format" is not "lkstudio-parameters" (found: what it is)
@@ -42,7 +44,7 @@ struct ParameterFileError {
     double max = 0;
     QString found;      ///< what the file holds at the key, as JSON text
     qint64 offset = -1; ///< NotJson: byte offset of the fault
-    QString detail;     ///< CannotRead, NotJson: the reason from the system or the parser
+    QString detail;     ///< CannotRead, TooLarge, NotJson: the reason from the system or the parser
     QString path;       ///< the file, when loaded from one
 };
 
@@ -51,6 +53,8 @@ struct ParameterFileError {
 struct ParameterSet {
     static constexpr int kFormatVersion = 1;
     static constexpr char kFormatName[] = "lkstudio-parameters"; ///< the "format" value
+    /// A set is a few hundred bytes; load() refuses a larger file unread.
+    static constexpr qint64 kMaxFileBytes = 1 << 20;
 
     int driveId = 1;
     QString driverName;
@@ -78,7 +82,7 @@ struct ParameterSet {
     static std::optional<ParameterSet> fromJson(const QByteArray &bytes,
                                                 ParameterFileError *error = nullptr);
 
-    /// Writes the file atomically (QSaveFile): the path holds either the whole new file or
+    /// Writes the file atomically (system::AtomicFile): the path holds either the whole new file or
     /// what it held before. Returns an error text, empty on success.
     QString save(const QString &path) const;
     /// Reads a file; nullopt with `error` set when it cannot be read or is not a valid set.
@@ -86,7 +90,8 @@ struct ParameterSet {
                                             ParameterFileError *error = nullptr);
 };
 
-/// Writes `bytes` to `path` atomically (QSaveFile). Returns an error text, empty on success.
+/// Writes `bytes` to `path` atomically (system::AtomicFile). Returns an error text, empty on
+/// success.
 QString writeFileAtomically(const QString &path, const QByteArray &bytes);
 
 } // namespace lk::record

@@ -17,8 +17,13 @@ using TelemetryColumn = bus::TelemetryFieldInfo;
 /// bus::TelemetryFieldInfo::all(), a round's values as one number per column.
 class TelemetryColumns {
 public:
-    /// Every column, in canonical order; a column's index in this list identifies it.
-    static const QVector<TelemetryColumn> &all() { return bus::TelemetryFieldInfo::all(); }
+    /// V2.35 drives send the supply voltage in 0.01 V (docs/V2.35.md section 5).
+    static constexpr int kV235VoltageDecimals = 2;
+    /// Every column, in canonical order; a column's index in this list identifies it. The
+    /// rows of bus::TelemetryFieldInfo::all(), with the decimals of a column set to the finest
+    /// resolution any generation sends: voltage_v 2 (V2.35's 0.01 V; a V2.3 0.1 V value
+    /// reads the same with a trailing 0).
+    static const QVector<TelemetryColumn> &all();
     /// Index of the column named `key`, or nullopt.
     static std::optional<int> indexOf(const QString &key)
     {

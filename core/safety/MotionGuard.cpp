@@ -14,7 +14,7 @@ using protocol::Series;
 
 Verdict refuse(LimitKind kind, double value, double limit)
 {
-    return Verdict{kind, value, limit, std::nullopt, std::nullopt};
+    return Verdict{kind, value, limit, std::nullopt, std::nullopt, false};
 }
 
 Verdict checkSpeed(double dps, std::optional<Series> series, const SoftLimits &limits)

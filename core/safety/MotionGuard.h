@@ -37,6 +37,9 @@ struct Verdict {
     std::optional<protocol::Command> command;
     /// OutputTurn of a multi-turn target: the angle (deg) the move would start from.
     std::optional<double> fromDeg;
+    /// The limit broken is the drive's own (a V2.35 parameter read from it, DriveLimits),
+    /// lower than the soft limit of the same kind: DriveLimits::refusal() words it.
+    bool drivesOwn = false;
     bool allowed() const { return kind == LimitKind::None; }
 };
 

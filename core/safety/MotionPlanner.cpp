@@ -13,7 +13,7 @@ MotionPlan refused(LimitKind kind, double value, double limit, const protocol::R
                    std::optional<double> fromDeg = std::nullopt)
 {
     MotionPlan p;
-    p.verdict = Verdict{kind, value, limit, r.command, fromDeg};
+    p.verdict = Verdict{kind, value, limit, r.command, fromDeg, false};
     return p;
 }
 
@@ -119,8 +119,20 @@ bool MotionPlanner::isPosition(Command c)
 }
 
 MotionPlan MotionPlanner::plan(const protocol::Request &request,
-                               std::optional<protocol::Series> series, const SoftLimits &limits,
-                               const DrivePosition &position)
+                               std::optional<protocol::Series> series, const SoftLimits &soft,
+                               const DrivePosition &position, const DriveLimits &drive)
+{
+    MotionPlan p = planWithin(request, series, drive.narrow(soft), position);
+    if (!p.allowed())
+        p.verdict.drivesOwn = drive.decided(p.verdict, soft);
+    else if (p.bound == SpeedBound::SoftLimit || p.bound == SpeedBound::Command)
+        p.drivesOwnSpeed = drive.capsSpeed(soft);
+    return p;
+}
+
+MotionPlan MotionPlanner::planWithin(const protocol::Request &request,
+                                     std::optional<protocol::Series> series,
+                                     const SoftLimits &limits, const DrivePosition &position)
 {
     protocol::Request out = request;
     MotionPlan p;

@@ -22,7 +22,7 @@ SimDrive *SimBus::addDrive(int id, const SimDriveModel &model)
 {
     if (id < protocol::kMinId || id > protocol::kMaxId || m_drives.count(id))
         return nullptr;
-    const SimRom rom = m_rom.rom(id, model.series).value_or(SimRom{});
+    const std::optional<SimRom> rom = m_rom.rom(id, model.series); // none: factory ROM
     auto drive = std::make_unique<SimDrive>(id, model, rom);
     drive->setRomWrittenHandler([this](int driveId, protocol::Series series, const SimRom &r) {
         m_rom.save(driveId, series, r);

@@ -9,6 +9,8 @@ namespace lk::sim {
 
 namespace {
 
+const QLatin1String kFaultPrefix("fault=");
+
 std::optional<SimDriveModel> modelFor(const QString &token)
 {
     if (const auto series = protocol::seriesFromName(token))
@@ -17,6 +19,38 @@ std::optional<SimDriveModel> modelFor(const QString &token)
 }
 
 } // namespace
+
+bool SimBusSpec::addFaults(const QString &text, QString *error)
+{
+    auto fail = [error](const QString &message) {
+        if (error)
+            *error = message;
+        return false;
+    };
+    for (const QString &raw : text.split(QLatin1Char(','))) {
+        const QString item = raw.trimmed();
+        const qsizetype colon = item.indexOf(QLatin1Char(':'));
+        bool ok = false;
+        const int id = colon < 0 ? 0 : item.left(colon).trimmed().toInt(&ok);
+        if (!ok)
+            return fail(QStringLiteral("'%1' is not ID:FAULT[@START[-END]] (e.g. "
+                                       "1:over_temperature@5s)")
+                            .arg(item));
+        Entry *entry = nullptr;
+        for (Entry &e : drives) {
+            if (e.id == id)
+                entry = &e;
+        }
+        if (!entry)
+            return fail(QStringLiteral("'%1': there is no drive %2 on the bus").arg(item).arg(id));
+        QString why;
+        const auto fault = SimFault::parse(item.mid(colon + 1), entry->model.generation, &why);
+        if (!fault)
+            return fail(QStringLiteral("'%1': %2").arg(item, why));
+        entry->model.faults.append(*fault);
+    }
+    return true;
+}
 
 std::optional<SimBusSpec> SimBusSpec::parse(const QString &text, QString *error)
 {
@@ -70,11 +104,21 @@ std::optional<SimBusSpec> SimBusSpec::parse(const QString &text, QString *error)
             if (*generation == protocol::Generation::V2_35)
                 model->useFirmware235();
         }
-        for (const QString &quirk : parts) {
-            if (!model->quirks.enable(quirk.trimmed()))
-                return fail(QStringLiteral("'%1': unknown firmware quirk '%2' (known: %3)")
-                                .arg(item, quirk.trimmed(),
-                                     FirmwareQuirks::allNames().join(QStringLiteral(", "))));
+        for (const QString &part : parts) {
+            const QString quirk = part.trimmed();
+            if (quirk.startsWith(kFaultPrefix, Qt::CaseInsensitive)) {
+                QString why;
+                const auto fault =
+                    SimFault::parse(quirk.mid(kFaultPrefix.size()), model->generation, &why);
+                if (!fault)
+                    return fail(QStringLiteral("'%1': %2").arg(item, why));
+                model->faults.append(*fault);
+                continue;
+            }
+            if (!model->quirks.enable(quirk))
+                return fail(
+                    QStringLiteral("'%1': unknown firmware quirk '%2' (known: %3)")
+                        .arg(item, quirk, FirmwareQuirks::allNames().join(QStringLiteral(", "))));
         }
         seen.insert(id);
         spec.drives.append(Entry{id, *model});
@@ -93,6 +137,8 @@ QString SimBusSpec::toString() const
             name += QStringLiteral("@2.35");
         QStringList model{name};
         model << e.model.quirks.names();
+        for (const SimFault &f : e.model.faults)
+            model << kFaultPrefix + f.toString(e.model.generation);
         parts << QStringLiteral("%1:%2").arg(e.id).arg(model.join(QLatin1Char('+')));
     }
     return parts.join(QLatin1Char(','));

@@ -15,7 +15,8 @@ namespace lk::sim {
 /// a motor name that starts with a series ("5:MG5010E-i36", "6:MF4015-18bit"), optionally
 /// followed by firmware quirks the drive copies ("3:MF+accel-ignored", see FirmwareQuirks).
 /// "@2.35" after the model makes a firmware-2.35 drive speaking V2.35 ("1:MS4015@2.35");
-/// "@2.3" (the default) a V2.3 one.
+/// "@2.3" (the default) a V2.3 one. "+fault=NAME[@START[-END]]" (repeatable) makes the drive
+/// raise a protection fault by itself (SimFault: "1:MF+fault=over_temperature@5s").
 struct SimBusSpec {
     struct Entry {
         int id = 1;
@@ -26,6 +27,10 @@ struct SimBusSpec {
     /// Parse; on failure returns nullopt and, if `error` is set, one sentence naming the
     /// offending entry (bad ID, duplicate ID, unknown series, empty entry).
     static std::optional<SimBusSpec> parse(const QString &text, QString *error = nullptr);
+    /// Adds the faults of lksim's --fault: "ID:FAULT[@START[-END]][,...]" (SimFault) to the
+    /// drives given; false with one sentence in `error` for an ID not on the bus or a fault
+    /// its generation does not have.
+    bool addFaults(const QString &text, QString *error = nullptr);
     /// Back to text ("3:MF,17:MS" or "5:MG5010E-i36" where the motor is not the default).
     QString toString() const;
 };

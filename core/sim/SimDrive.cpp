@@ -10,8 +10,6 @@ using protocol::Reply;
 using protocol::Request;
 
 namespace {
-constexpr quint8 kLowVoltageBit = 0x01;
-constexpr quint8 kOverTemperatureBit = 0x08;
 constexpr double kProtectionCheckSeconds = 0.01; // protection reacts within 10 ms
 constexpr double kMaxAdvanceSeconds = 60.0;
 constexpr double kPi = 3.14159265358979323846;
@@ -28,15 +26,15 @@ template <typename T> T clampRound(double v, double lo, double hi)
 }
 } // namespace
 
-SimDrive::SimDrive(int id, const SimDriveModel &model, const SimRom &rom)
+SimDrive::SimDrive(int id, const SimDriveModel &model, const std::optional<SimRom> &rom)
     : m_id(id), m_model(model), m_limits(motor::seriesLimits(model.series)),
       m_physics(RotorParams::forSeries(model.series), m_limits.maxCurrentA, m_limits.maxSpeedDps()),
-      m_rom(rom)
+      m_rom(rom.value_or(model.factoryRom(id))), m_protection(m_limits, model.faults)
 {
     const motor::ModelNameInfo info = model.nameInfo();
     m_gearRatio = info.gearRatio;
     m_counts = info.countsPerTurn();
-    m_physics.setSupplyVoltage(m_limits.nominalSupplyV);
+    m_protection.setSupplyVoltage(m_limits.nominalSupplyV, m_physics);
     // Spread the drives' initial shaft angles (golden angle) so that a bus does not look
     // cloned; deterministic for tests.
     m_physics.setPositionDeg(positiveMod(id * 137.508, 360.0));
@@ -57,10 +55,15 @@ void SimDrive::restart()
     m_physics.setAccelerationDps2(m_ramAccel);
     if (generation() == protocol::Generation::V2_35)
         applyParams();
-    m_runState = RunState::Off;
+    // A V2.35 drive powers up with the motor on and its brake released, as a real one does;
+    // a V2.3 drive waits for its first control command.
+    m_runState = isV235() ? RunState::Running : RunState::Off;
+    m_brakeReleased = isV235();
     m_command = LoopTarget{};
     m_activeCommand.reset();
-    m_errorState = 0;
+    m_protection.restart();
+    m_protection.advance(0, m_physics);
+    holdShaft();
     checkProtection();
     applyOutput();
     resetAngleReference();
@@ -77,8 +80,20 @@ void SimDrive::resetAngleReference()
 
 void SimDrive::setSupplyVoltage(double volts)
 {
-    m_physics.setSupplyVoltage(volts);
+    m_protection.setSupplyVoltage(volts, m_physics);
     checkProtection();
+}
+
+void SimDrive::setRotorLocked(bool locked)
+{
+    m_rotorLocked = locked;
+    holdShaft();
+}
+
+void SimDrive::holdShaft()
+{
+    // An engaged brake holds the shaft whatever the motor does (V2.35 drives have one).
+    m_physics.setRotorLocked(m_rotorLocked || (isV235() && !m_brakeReleased));
 }
 
 void SimDrive::advance(double seconds)
@@ -89,6 +104,7 @@ void SimDrive::advance(double seconds)
     while (seconds > 0) {
         const double chunk = std::min(seconds, kProtectionCheckSeconds);
         m_physics.advance(chunk);
+        m_protection.advance(chunk, m_physics);
         checkProtection();
         seconds -= chunk;
     }
@@ -96,24 +112,10 @@ void SimDrive::advance(double seconds)
 
 void SimDrive::checkProtection()
 {
-    quint8 causes = 0;
-    if (m_physics.supplyVoltage() < m_limits.minSupplyV)
-        causes |= kLowVoltageBit;
-    if (m_physics.temperatureC() > kOverTemperatureC)
-        causes |= kOverTemperatureBit;
-    // Flags latch until 0x9B; a tripped protection switches the output off, like 0x80.
-    if (causes & ~m_errorState) {
-        m_errorState |= causes;
+    // Flags latch until 0x9B; a tripped protection switches the output off, like 0x80 (on
+    // V2.35 the motor state then reads off until 0x88).
+    if (m_protection.trip(m_physics))
         switchOff();
-    }
-}
-
-void SimDrive::clearErrors()
-{
-    if ((m_errorState & kLowVoltageBit) && m_physics.supplyVoltage() >= m_limits.minSupplyV)
-        m_errorState &= ~kLowVoltageBit;
-    if ((m_errorState & kOverTemperatureBit) && m_physics.temperatureC() < kOverTemperatureClearC)
-        m_errorState &= ~kOverTemperatureBit;
 }
 
 void SimDrive::switchOff()
@@ -126,7 +128,7 @@ void SimDrive::switchOff()
 
 void SimDrive::applyOutput()
 {
-    const bool on = m_runState == RunState::Running && m_errorState == 0;
+    const bool on = m_runState == RunState::Running && errorState() == 0;
     m_physics.setTarget(on ? m_command : LoopTarget{});
 }
 
@@ -204,7 +206,7 @@ std::optional<Reply> SimDrive::handleParameter(const Request &r)
             m_refDeg = m_physics.positionDeg(); // until power-off (ERRATA)
         return Reply{r.command, r.id, protocol::Acknowledged{}};
     case Command::ClearErrors:
-        clearErrors();
+        m_protection.clear(m_physics);
         return Reply{r.command, r.id, state1()};
     default:
         return std::nullopt;
@@ -240,6 +242,7 @@ std::optional<Reply> SimDrive::handleV235(const Request &r)
             m_brakeReleased = true;
         else if (action == protocol::BrakeAction::Engage)
             m_brakeReleased = false;
+        holdShaft();
         return Reply{r.command, r.id, protocol::BrakeState{quint8(m_brakeReleased ? 1 : 0)}};
     }
     case Command::ClearTurnCount: {
@@ -293,7 +296,9 @@ std::optional<Reply> SimDrive::handleRunState(const Request &r)
         applyOutput();
         break;
     case Command::MotorRun:
-        if (m_errorState == 0)
+        // V2.3: resumes after 0x81. V2.35: turns a motor that is off back on (with no
+        // command: 0x80 cleared it); a stop is left by a new control command instead.
+        if (errorState() == 0 && (!isV235() || m_runState == RunState::Off))
             m_runState = RunState::Running;
         applyOutput();
         break;
@@ -305,8 +310,9 @@ std::optional<Reply> SimDrive::handleRunState(const Request &r)
 
 Reply SimDrive::handleMotion(const Request &r)
 {
-    // A drive in protection answers with its state but does not move until 0x9B clears it.
-    if (m_errorState == 0) {
+    // A drive in protection answers with its state but does not move until 0x9B clears it; a
+    // V2.35 drive that is off answers too, and stays off until 0x88 (docs/V2.35.md section 11).
+    if (errorState() == 0 && !(isV235() && m_runState == RunState::Off)) {
         if (const auto target = motionTarget(r)) {
             m_command = *target;
             m_activeCommand = r.command;
@@ -418,7 +424,7 @@ protocol::State1 SimDrive::state1() const
     protocol::State1 s;
     s.generation = generation();
     s.temperatureC = clampRound<qint8>(temperatureC(), -128, 127);
-    s.errorState = m_errorState;
+    s.errorState = errorState();
     if (generation() == protocol::Generation::V2_3) {
         s.voltageRaw = clampRound<quint16>(busVoltage() * 10.0, 0, 65535);
         return s;

@@ -2,6 +2,7 @@
 
 #include "DrivePhysics.h"
 #include "SimDriveModel.h"
+#include "SimProtection.h"
 #include "SimRomStore.h"
 #include "motor/SeriesLimits.h"
 #include "protocol/Reply.h"
@@ -16,15 +17,23 @@ namespace lk::sim {
 /// physics behind them. Answers typed requests the way the spec and docs/ERRATA.md say a V2.3
 /// drive does, or, with a firmware-2.35 model, the way docs/V2.35.md says (silent to the commands
 /// its generation lacks). Plain value logic: not thread-safe, owned by one thread.
+///
+/// Motor on and off (docs/V2.35.md sections 3 and 11): a V2.3 drive is turned on by any control
+/// command. A V2.35 drive powers up on; after 0x80 (or a protection trip) it stays off until
+/// 0x88, and a control command meanwhile is answered but not acted on; 0x81 is left by a new
+/// control command. Its holding brake (0x8C) holds the shaft while engaged; it powers up
+/// released. Protection faults (SimProtection, and the model's scheduled SimFaults) switch the
+/// output off as 0x80 does.
 class SimDrive {
 public:
     enum class RunState { Off, Running, Stopped };
-    static constexpr double kOverTemperatureC = 85.0;      ///< protection trips above this
-    static constexpr double kOverTemperatureClearC = 80.0; ///< 0x9B clears bit3 below this
+    static constexpr double kOverTemperatureC = SimProtection::kOverTemperatureC;
+    static constexpr double kOverTemperatureClearC = SimProtection::kOverTemperatureClearC;
 
     using RomWrittenHandler = std::function<void(int id, protocol::Series, const SimRom &)>;
 
-    SimDrive(int id, const SimDriveModel &model, const SimRom &rom = {});
+    /// `rom`: what a ROM store kept for the drive; nullopt: the model's factory ROM.
+    SimDrive(int id, const SimDriveModel &model, const std::optional<SimRom> &rom = std::nullopt);
 
     int id() const { return m_id; }
     const SimDriveModel &model() const { return m_model; }
@@ -46,13 +55,17 @@ public:
 
     // What the protocol exposes.
     RunState runState() const { return m_runState; }
+    /// The motor state 0x9A reports on V2.35: on unless switched off (0x80, a trip).
+    bool motorOn() const { return m_runState != RunState::Off; }
     std::optional<protocol::Command> activeCommand() const { return m_activeCommand; }
     protocol::PidGains ramPid() const { return m_ramPid; }
     const SimParams &ramParams() const { return m_ramParams; } ///< V2.35 drives
     bool brakeReleased() const { return m_brakeReleased; }
     qint32 accelerationDps2() const { return m_ramAccel; }
     const SimRom &rom() const { return m_rom; }
-    quint8 errorState() const { return m_errorState; }
+    quint8 errorState() const { return m_protection.errorState(); }
+    /// Seconds since power-up (the clock of the model's scheduled faults).
+    double uptimeS() const { return m_protection.uptimeS(); }
     quint16 encoderRaw() const;
     quint16 encoder() const;
     quint16 encoderOffset() const { return m_encoderOffset; }
@@ -75,7 +88,7 @@ public:
     void setSupplyVoltage(double volts);
     void setTemperatureC(double celsius) { m_physics.setTemperatureC(celsius); }
     void setLoadTorque(double nm) { m_physics.setLoadTorque(nm); }
-    void setRotorLocked(bool locked) { m_physics.setRotorLocked(locked); }
+    void setRotorLocked(bool locked);
     /// Newer firmware answers 0x19 with LEN 2 (the new zero); V2.3 echoes (default).
     void setZeroReplyCarriesOffset(bool on) { m_zeroReplyWithOffset = on; }
     void setRomWrittenHandler(RomWrittenHandler handler) { m_romWritten = std::move(handler); }
@@ -91,8 +104,9 @@ private:
     std::optional<LoopTarget> motionTarget(const protocol::Request &r) const;
     double singleTurnTargetDeg(const protocol::SinglePositionCommand &c) const;
     double maxSpeedFor(const std::optional<quint32> &maxSpeedRaw) const;
-    void clearErrors();
+    bool isV235() const { return generation() == protocol::Generation::V2_35; }
     void checkProtection();
+    void holdShaft();
     void switchOff();
     void applyOutput();
     void resetAngleReference();
@@ -109,14 +123,15 @@ private:
     protocol::PidGains m_ramPid;
     qint32 m_ramAccel = 0;
     SimParams m_ramParams;
-    bool m_brakeReleased = false; ///< no physical brake is modelled: the state is remembered
+    bool m_brakeReleased = false; ///< V2.35: engaged, the brake holds the shaft
+    bool m_rotorLocked = false;   ///< the bench's blocked rotor (setRotorLocked)
     quint16 m_encoderOffset = 0;
     double m_refDeg = 0; ///< physics angle where multi-turn and single-turn angles are zero
 
     RunState m_runState = RunState::Off;
     LoopTarget m_command; ///< the stored control command (kept by 0x81, cleared by 0x80)
     std::optional<protocol::Command> m_activeCommand;
-    quint8 m_errorState = 0;
+    SimProtection m_protection;
     bool m_zeroReplyWithOffset = false;
     RomWrittenHandler m_romWritten;
 };

@@ -1,10 +1,18 @@
 #include "SimDriveModel.h"
 
+#include "SimRomStore.h"
+
 namespace lk::sim {
 
 namespace {
 constexpr int kNameSize = 20; // 0x12 name fields are 20 bytes
 constexpr int kMs235EncoderBits = 16;
+// docs/V2.35.md sections 7 and 12: the captured fw 2.35 drive is a DS40R7 driving an MS4015,
+// whose encoder zero (0x19) lies at 1244 counts.
+const char *const kCapturedMsDriver = "DS40R7";
+constexpr int kFactoryZeroCounts = 1244;
+constexpr int kFactoryZeroSpread = 977; // a prime: each ID's zero lies elsewhere
+constexpr qint16 kMsMaxPower = 1000;    // MS power runs -1000..1000 (section 4.3)
 
 QString driverNameFor(const QString &motorName)
 {
@@ -34,6 +42,20 @@ void SimDriveModel::useFirmware235()
     hardwareRaw = 300;
     motorVersionRaw = 200;
     firmwareRaw = 235;
+    if (series == protocol::Series::MS && motorName.startsWith(QLatin1String("MS40")))
+        driverName = QLatin1String(kCapturedMsDriver);
+}
+
+SimRom SimDriveModel::factoryRom(int id) const
+{
+    SimRom rom;
+    if (generation != protocol::Generation::V2_35)
+        return rom;
+    const int counts = nameInfo().countsPerTurn();
+    rom.encoderZero = static_cast<quint16>((kFactoryZeroCounts + id * kFactoryZeroSpread) % counts);
+    if (series == protocol::Series::MS)
+        rom.params.maxTorque = kMsMaxPower;
+    return rom;
 }
 
 SimDriveModel SimDriveModel::forSeries(protocol::Series series)

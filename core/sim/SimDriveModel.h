@@ -1,14 +1,18 @@
 #pragma once
 
 #include "FirmwareQuirks.h"
+#include "SimFault.h"
 #include "motor/ModelNameInfo.h"
 #include "protocol/Series.h"
 
+#include <QtCore/QList>
 #include <QtCore/QString>
 
 #include <optional>
 
 namespace lk::sim {
+
+struct SimRom;
 
 /// Identity of a simulated drive, as its 0x12 reply shows it, and its protocol generation.
 struct SimDriveModel {
@@ -20,9 +24,14 @@ struct SimDriveModel {
     /// V2.3 (default) or V2.35: firmware 2.35 and later speak docs/V2.35.md's protocol.
     protocol::Generation generation = protocol::Generation::V2_3;
     quint16 motorVersionRaw = 0; ///< V2.35 only
-    /// Switch to firmware 2.35 (hw 3.00, motor 2.00, fw 2.35, as the captured MS4015 reports).
+    /// Switch to firmware 2.35 (hw 3.00, motor 2.00, fw 2.35, as the captured MS4015 reports;
+    /// an MS40xx motor's driver is the captured DS40R7).
     void useFirmware235();
-    FirmwareQuirks quirks; ///< firmware oddities this drive copies (none by default)
+    /// What a new drive of this model holds in ROM: the defaults, and on V2.35 a factory
+    /// encoder zero that is not 0 (one per ID) and a Max Power within MS's +-1000.
+    SimRom factoryRom(int id) const;
+    FirmwareQuirks quirks;  ///< firmware oddities this drive copies (none by default)
+    QList<SimFault> faults; ///< protection faults it raises by itself (none by default)
 
     /// Gear ratio and encoder resolution implied by the motor name (series default otherwise).
     motor::ModelNameInfo nameInfo() const;

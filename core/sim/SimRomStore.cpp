@@ -2,12 +2,13 @@
 
 #include "SimLog.h"
 
+#include <system/AtomicFile.h>
+#include <system/BoundedFile.h>
+
 #include <QtCore/QDir>
-#include <QtCore/QFile>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
 #include <QtCore/QRegularExpression>
-#include <QtCore/QSaveFile>
 
 #include <limits>
 
@@ -159,22 +160,15 @@ void SimRomStore::loadAll()
 void SimRomStore::loadFile(const QString &path, int id)
 {
     const QString shown = QDir::toNativeSeparators(path);
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
+    const system::BoundedRead file = system::BoundedFile::read(path, kMaxFileSize);
+    if (!file.ok()) { // unreadable, not a regular file, or too large to be a ROM file
         addError(QStringLiteral("Cannot read ROM file %1 (%2): drive %3 starts with defaults.")
-                     .arg(shown, f.errorString())
-                     .arg(id));
-        return;
-    }
-    if (f.size() > kMaxFileSize) {
-        addError(QStringLiteral("ROM file %1 is too large to be a ROM file: drive %2 starts "
-                                "with defaults.")
-                     .arg(shown)
+                     .arg(shown, file.error->reason())
                      .arg(id));
         return;
     }
     QJsonParseError parseError;
-    const QJsonDocument doc = QJsonDocument::fromJson(f.readAll(), &parseError);
+    const QJsonDocument doc = QJsonDocument::fromJson(file.bytes, &parseError);
     QString problem;
     if (parseError.error != QJsonParseError::NoError)
         problem = QStringLiteral("invalid JSON at offset %1: %2")
@@ -214,14 +208,9 @@ bool SimRomStore::save(int id, protocol::Series series, const SimRom &rom)
     m_entries.insert(id, Entry{series, rom});
     if (!persistent())
         return true;
-    QSaveFile f(filePath(id));
     const QByteArray bytes = QJsonDocument(toJson(id, series, rom)).toJson(QJsonDocument::Indented);
-    // flush() before commit(): Qt 6.4's QSaveFile renames a cut file into place when the
-    // flush inside commit() fails (a full disk).
-    if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size() || !f.flush() ||
-        !f.commit()) {
-        const QString why = f.errorString();
-        f.cancelWriting(); // nothing replaces the earlier file
+    const QString why = system::AtomicFile::writeAll(filePath(id), bytes);
+    if (!why.isEmpty()) { // nothing replaced the earlier file
         addError(QStringLiteral("Cannot write ROM file %1 (%2): the change lasts only until "
                                 "the simulator exits.")
                      .arg(QDir::toNativeSeparators(filePath(id)), why));

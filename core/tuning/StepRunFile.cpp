@@ -7,9 +7,11 @@
 #include <record/CsvWriter.h>
 #include <record/ParameterSet.h>
 #include <safety/JsonKeyCheck.h>
+#include <system/BoundedFile.h>
 
+#include <QtCore/QBuffer>
+#include <QtCore/QCoreApplication>
 #include <QtCore/QDir>
-#include <QtCore/QFile>
 #include <QtCore/QFileInfo>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
@@ -276,18 +278,26 @@ bool readDocument(Reader &r, const QJsonObject &root, QVector<StepRun> &runs,
     return true;
 }
 
+/// `file`'s failure as the error of a run file: too large, or unreadable as `unreadable`.
+void fileError(const system::FileReadError &file, qint64 maxBytes, Kind unreadable,
+               StepRunFileError &e)
+{
+    e.kind = file.kind == system::FileReadError::Kind::TooLarge ? Kind::TooLarge : unreadable;
+    e.detail = file.reason(); // a directory, a FIFO, a device: refused unopened
+    if (e.kind == Kind::TooLarge) {
+        e.max = double(maxBytes);
+        e.found = QString::number(file.size);
+    }
+}
+
 bool readJsonFile(const QString &path, QJsonObject &root, StepRunFileError *error)
 {
     StepRunFileError e;
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        e.kind = Kind::CannotRead;
-        e.detail = file.errorString();
-    } else if (file.size() > StepRunFile::kMaxJsonBytes) {
-        e.kind = Kind::TooLarge;
-        e.max = double(StepRunFile::kMaxJsonBytes);
+    const system::BoundedRead file = system::BoundedFile::read(path, StepRunFile::kMaxJsonBytes);
+    if (!file.ok()) {
+        fileError(*file.error, StepRunFile::kMaxJsonBytes, Kind::CannotRead, e);
     } else {
-        const QByteArray bytes = file.readAll();
+        const QByteArray &bytes = file.bytes;
         QJsonParseError parseError;
         const QJsonDocument doc = QJsonDocument::fromJson(bytes, &parseError);
         if (parseError.error != QJsonParseError::NoError) {
@@ -310,21 +320,28 @@ bool readJsonFile(const QString &path, QJsonObject &root, StepRunFileError *erro
     return false;
 }
 
-/// The samples of `run` from the CSV `name` beside `jsonPath`.
+/// The samples of `run` from the CSV `name` beside `jsonPath`; `budget` is what the set's
+/// traces may still take (kMaxSetTraceBytes in all), less this one's size on success.
 bool readTrace(const QString &jsonPath, const QString &name, int index, StepRun &run,
-               StepRunFileError *error)
+               qint64 &budget, StepRunFileError *error)
 {
     StepRunFileError e;
     e.path = QFileInfo(jsonPath).dir().filePath(name);
-    QFile file(e.path);
+    const qint64 bound = std::min(StepRunFile::kMaxTraceBytes, budget);
+    const system::BoundedRead file = system::BoundedFile::read(e.path, bound);
     bool ok = false;
-    if (!file.open(QIODevice::ReadOnly)) {
-        e.kind = Kind::MissingTrace;
-        e.key = QStringLiteral("runs[%1].trace").arg(index);
-        e.found = jsonText(name);
-        e.detail = file.errorString();
+    if (!file.ok()) {
+        fileError(*file.error, bound, Kind::MissingTrace, e);
+        if (e.kind == Kind::MissingTrace) {
+            e.key = QStringLiteral("runs[%1].trace").arg(index);
+            e.found = jsonText(name);
+        }
     } else {
-        ok = StepTraceCsv::read(file, run.trace, &e);
+        QBuffer buffer;
+        buffer.setData(file.bytes);
+        buffer.open(QIODevice::ReadOnly);
+        ok = StepTraceCsv::read(buffer, run.trace, &e);
+        budget -= file.bytes.size();
     }
     if (!ok && error)
         *error = e;
@@ -434,14 +451,30 @@ QByteArray StepRunFile::traceCsv(const StepRun &run)
 
 QString StepRunFile::save(const QString &jsonPath, const QVector<StepRun> &runs)
 {
+    // Never write a set load() would refuse: the traces are checked against its bounds first.
+    QVector<QByteArray> traces;
+    qint64 total = 0;
+    for (const StepRun &run : runs) {
+        traces.append(traceCsv(run));
+        total += traces.last().size();
+        if (traces.last().size() > kMaxTraceBytes || total > kMaxSetTraceBytes)
+            return QCoreApplication::translate("lk::tuning::StepRunFile",
+                                               "Run %1 was not saved: its trace is %2, and a "
+                                               "trace file may hold %3 (a set's traces %4 in "
+                                               "all). Keep a shorter run.")
+                .arg(run.number)
+                .arg(system::BoundedFile::sizeText(traces.last().size()),
+                     system::BoundedFile::sizeText(kMaxTraceBytes),
+                     system::BoundedFile::sizeText(kMaxSetTraceBytes));
+    }
     const QDir dir = QFileInfo(jsonPath).dir();
     QStringList names;
     for (int i = 0; i < runs.size(); ++i) {
         names.append(traceFileName(jsonPath, i));
         record::CsvWriter csv(dir.filePath(names.last()));
-        QString error = csv.begin(StepTraceCsv::header());
+        QString error = csv.begin(QByteArray());
         if (error.isEmpty()) {
-            csv.write(StepTraceCsv::rows(runs[i].trace, timeOrigin(runs[i].trace)));
+            csv.write(traces.at(i));
             error = csv.finish();
         }
         if (!error.isEmpty())
@@ -465,8 +498,9 @@ std::optional<QVector<StepRun>> StepRunFile::load(const QString &jsonPath, StepR
             *error = e;
         return std::nullopt;
     }
+    qint64 budget = kMaxSetTraceBytes;
     for (int i = 0; i < runs.size(); ++i)
-        if (!readTrace(jsonPath, traceNames[i], i, runs[i], error))
+        if (!readTrace(jsonPath, traceNames[i], i, runs[i], budget, error))
             return std::nullopt;
     return runs;
 }

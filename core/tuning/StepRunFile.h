@@ -16,8 +16,10 @@ namespace lk::tuning {
 /// words it (toString() is an English line for logs and tests, not for the UI).
 struct StepRunFileError {
     enum class Kind {
-        CannotRead,          ///< path, detail: the file system's reason
-        TooLarge,            ///< path, max: the limit in bytes
+        CannotRead,          ///< path, detail: the file system's reason, or what the path
+                             ///< is instead of a regular file (a directory, a FIFO, ...)
+        TooLarge,            ///< path (the JSON or a CSV), max: the limit in bytes, found:
+                             ///< the file's size, detail: both in words
         NotJson,             ///< path, detail: the parser's reason, offset: where
         NotObject,           ///< path: the document is not a JSON object
         WrongFormat,         ///< path, found: "format" is not kFormatName
@@ -72,15 +74,20 @@ public:
     static constexpr char kFormatName[] = "lkstudio-step-runs";
     static constexpr int kFormatVersion = 1;
     static constexpr char kSuffix[] = ".lkruns.json";
+    /// Size bounds: load() refuses a larger file unread, save() refuses to write one. A
+    /// trace of 16 MiB holds about half a million samples (a 100-period square of 1 s steps
+    /// at 2 kHz); a set's traces hold 64 MiB together.
     static constexpr qint64 kMaxJsonBytes = 16 * 1024 * 1024;
+    static constexpr qint64 kMaxTraceBytes = 16 * 1024 * 1024;
+    static constexpr qint64 kMaxSetTraceBytes = 64 * 1024 * 1024;
 
     /// The CSV file name of the run at `index` (0-based) of a set saved as `jsonPath`:
     /// "NAME.run<index + 1>.csv", NAME being the file name without kSuffix (or ".json").
     static QString traceFileName(const QString &jsonPath, int index);
 
-    /// Writes every run's CSV, then the JSON file, each atomically (QSaveFile): a file either
-    /// holds its complete new content or what it held before. The JSON is written last, so it
-    /// never names a CSV that failed. Returns an error text, empty on success.
+    /// Writes every run's CSV, then the JSON file, each atomically (system::AtomicFile): a file
+    /// either holds its complete new content or what it held before. The JSON is written last, so
+    /// it never names a CSV that failed. Returns an error text, empty on success.
     static QString save(const QString &jsonPath, const QVector<StepRun> &runs);
     /// Reads a set saved by save(). Anything missing, unknown, of the wrong type, out of range
     /// or unreadable, in the JSON file or any CSV, refuses the whole set (nullopt) with `error`

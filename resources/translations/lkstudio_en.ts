@@ -12,7 +12,7 @@
     </message>
 </context>
 <context>
-    <name>lk::ui::ControlView</name>
+    <name>lk::ui::ControlCommandBox</name>
     <message numerus="yes">
         <source>%n drives are selected: every command here acts on %1 only.</source>
         <translation>

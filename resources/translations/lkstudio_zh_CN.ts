@@ -336,6 +336,17 @@
     </message>
 </context>
 <context>
+    <name>lk::protocol::ProtocolFields</name>
+    <message>
+        <source>max torque current</source>
+        <translation>最大转矩电流</translation>
+    </message>
+    <message>
+        <source>max power</source>
+        <translation>最大功率</translation>
+    </message>
+</context>
+<context>
     <name>lk::protocol::RequestBuilder</name>
     <message>
         <source>got %1</source>
@@ -369,28 +380,12 @@
         <translation>固件</translation>
     </message>
     <message>
-        <source>PID (angle Kp/Ki · speed Kp/Ki · iq Kp/Ki)</source>
-        <translation>PID（角度 Kp/Ki · 速度 Kp/Ki · iq Kp/Ki）</translation>
-    </message>
-    <message>
-        <source>Acceleration (dps/s)</source>
-        <translation>加速度 (dps/s)</translation>
-    </message>
-    <message>
         <source>State</source>
         <translation>状态</translation>
     </message>
     <message>
         <source>Problems</source>
         <translation>问题</translation>
-    </message>
-    <message>
-        <source>LOW VOLTAGE</source>
-        <translation>低压保护</translation>
-    </message>
-    <message>
-        <source>OVER TEMPERATURE</source>
-        <translation>过温保护</translation>
     </message>
     <message>
         <source>none</source>
@@ -416,6 +411,50 @@
         <source>Written by: %1</source>
         <translation>生成工具：%1</translation>
     </message>
+    <message>
+        <source>Protocol</source>
+        <translation>协议</translation>
+    </message>
+    <message>
+        <source>Gains (angle · speed · iq: Kp/Ki, V2.35 Kp/Ki/Kd)</source>
+        <translation>增益（角度 · 速度 · iq：Kp/Ki，V2.35 为 Kp/Ki/Kd）</translation>
+    </message>
+    <message>
+        <source>Acceleration or limits</source>
+        <translation>加速度或限值</translation>
+    </message>
+    <message>
+        <source>unknown bits 0x%1</source>
+        <translation>未知位 0x%1</translation>
+    </message>
+    <message>
+        <source>%1 dps/s</source>
+        <translation>%1 dps/s</translation>
+    </message>
+    <message>
+        <source>max power %1</source>
+        <translation>最大功率 %1</translation>
+    </message>
+    <message>
+        <source>max torque %1</source>
+        <translation>最大转矩 %1</translation>
+    </message>
+    <message>
+        <source>max speed %1 dps</source>
+        <translation>最大速度 %1 dps</translation>
+    </message>
+    <message>
+        <source>max angle %1°</source>
+        <translation>最大角度 %1°</translation>
+    </message>
+    <message>
+        <source>current ramp %1</source>
+        <translation>电流斜率 %1</translation>
+    </message>
+    <message>
+        <source>speed ramp %1 dps/s</source>
+        <translation>速度斜率 %1 dps/s</translation>
+    </message>
 </context>
 <context>
     <name>lk::record::CsvWriter</name>
@@ -437,6 +476,37 @@
     <message>
         <source>cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
+    </message>
+</context>
+<context>
+    <name>lk::safety::DriveLimits</name>
+    <message>
+        <source>the max speed %1 dps is over the drive&apos;s own Max Speed of %2 dps (read from it), which is lower than your speed limit</source>
+        <translation>最大速度 %1 dps 超过驱动器自身的最大速度 %2 dps（从驱动器读取），它低于您的速度限制</translation>
+    </message>
+    <message>
+        <source>the speed %1 dps is over the drive&apos;s own Max Speed of %2 dps (read from it), which is lower than your speed limit</source>
+        <translation>速度 %1 dps 超过驱动器自身的最大速度 %2 dps（从驱动器读取），它低于您的速度限制</translation>
+    </message>
+    <message>
+        <source>the torque current %1 A is over the drive&apos;s own max torque current of %2 A (read from it), which is lower than your torque limit</source>
+        <translation>转矩电流 %1 A 超过驱动器自身的最大转矩电流 %2 A（从驱动器读取），它低于您的转矩限制</translation>
+    </message>
+    <message>
+        <source>the open-loop power %1 is over the drive&apos;s own Max Power of %2 (read from it), which is lower than your power limit</source>
+        <translation>开环功率 %1 超过驱动器自身的最大功率 %2（从驱动器读取），它低于您的功率限制</translation>
+    </message>
+    <message>
+        <source>the target %1° is outside the drive&apos;s own Max Angle of ±%2° (read from it), which is narrower than your angle range</source>
+        <translation>目标 %1° 超出驱动器自身的最大角度 ±%2°（从驱动器读取），它比您的角度范围更窄</translation>
+    </message>
+    <message>
+        <source>within the drive&apos;s own Max Speed of %1 dps (read from it)</source>
+        <translation>在驱动器自身的最大速度 %1 dps 之内（从驱动器读取）</translation>
+    </message>
+    <message>
+        <source>max speed %1 dps (the drive&apos;s own Max Speed, read from it)</source>
+        <translation>最大速度 %1 dps（驱动器自身的最大速度，从驱动器读取）</translation>
     </message>
 </context>
 <context>
@@ -468,6 +538,60 @@
     <message>
         <source>key &quot;%1&quot; is given twice</source>
         <translation>键“%1”出现了两次</translation>
+    </message>
+</context>
+<context>
+    <name>lk::system::AtomicFile</name>
+    <message>
+        <source>the file was not opened</source>
+        <translation>文件未打开</translation>
+    </message>
+</context>
+<context>
+    <name>lk::system::BoundedFile</name>
+    <message>
+        <source>a directory</source>
+        <translation>一个目录</translation>
+    </message>
+    <message>
+        <source>a FIFO (named pipe)</source>
+        <translation>一个 FIFO（命名管道）</translation>
+    </message>
+    <message>
+        <source>a character device</source>
+        <translation>一个字符设备</translation>
+    </message>
+    <message>
+        <source>a block device</source>
+        <translation>一个块设备</translation>
+    </message>
+    <message>
+        <source>a socket</source>
+        <translation>一个套接字</translation>
+    </message>
+    <message>
+        <source>not a regular file</source>
+        <translation>不是普通文件</translation>
+    </message>
+    <message>
+        <source>it is %1, not a regular file</source>
+        <translation>它是%1，不是普通文件</translation>
+    </message>
+    <message>
+        <source>%1 bytes</source>
+        <translation>%1 字节</translation>
+    </message>
+    <message>
+        <source>it is %1, more than the %2 such a file may have</source>
+        <translation>它有 %1，超过此类文件允许的 %2</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 MB</source>
+        <translation>%1 MB</translation>
     </message>
 </context>
 <context>
@@ -683,6 +807,13 @@
     </message>
 </context>
 <context>
+    <name>lk::tuning::StepRunFile</name>
+    <message>
+        <source>Run %1 was not saved: its trace is %2, and a trace file may hold %3 (a set&apos;s traces %4 in all). Keep a shorter run.</source>
+        <translation>运行 %1 未保存：其曲线有 %2，而一个曲线文件最多 %3（一组运行的曲线合计最多 %4）。请保留较短的运行。</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::AboutDialog</name>
     <message>
         <source>About LK Servo Studio</source>
@@ -722,6 +853,14 @@
     <message>
         <source>Your settings file %1 is damaged; these values were not used: %2.</source>
         <translation>您的设置文件 %1 已损坏；以下值未被使用：%2。</translation>
+    </message>
+    <message>
+        <source>Your settings file %1 was not read (%2): lkstudio runs with default settings, and what you change now is not saved.</source>
+        <translation>未读取您的设置文件 %1（%2）：lkstudio 以默认设置运行，现在所做的更改不会被保存。</translation>
+    </message>
+    <message>
+        <source>Your settings file %1 was written by a newer lkstudio (%2 is %3; this release knows up to %4): only the values this release understands are used, and the file is not converted.</source>
+        <translation>您的设置文件 %1 由较新版本的 lkstudio 写入（%2 为 %3；本版本最高只认识 %4）：只使用本版本能理解的值，文件不会被转换。</translation>
     </message>
 </context>
 <context>
@@ -1100,6 +1239,17 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::ConfirmDialog</name>
+    <message>
+        <source>The drive or the connection changed: nothing was sent.</source>
+        <translation>驱动或连接已改变：未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Cancelled: nothing was sent.</source>
+        <translation>已取消：未发送任何命令。</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::ConnectionBar</name>
     <message>
         <source>Serial port of the USB-RS485 adapter, or the built-in simulated bus. You can also type a device path, e.g. a pseudo-terminal from lksim.</source>
@@ -1144,6 +1294,90 @@
     <message>
         <source>The port was refused: show the command that gives you access</source>
         <translation>端口被拒绝访问：显示获取访问权限的命令</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::ControlCommandBox</name>
+    <message>
+        <source>Command</source>
+        <translation>命令</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>发送</translation>
+    </message>
+    <message>
+        <source>Checked against the series and your soft limits before sending</source>
+        <translation>发送前按系列限值和您的软限位检查</translation>
+    </message>
+    <message>
+        <source>Motor Off</source>
+        <translation>电机关闭</translation>
+    </message>
+    <message>
+        <source>0x80: output off, the stored command is cleared</source>
+        <translation>0x80：关闭输出，清除已保存的命令</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>电机停止</translation>
+    </message>
+    <message>
+        <source>0x81: output off, the stored command is kept for Run</source>
+        <translation>0x81：关闭输出，保留命令供“电机运行”恢复</translation>
+    </message>
+    <message>
+        <source>Run</source>
+        <translation>电机运行</translation>
+    </message>
+    <message>
+        <source>0x88: resume after Stop</source>
+        <translation>0x88：在“电机停止”后恢复</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drives are selected: every command here acts on %1 only.</source>
+        <translation>
+            <numerusform>已选择 %n 个驱动：此处的每条命令只作用于 %1。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Motor On</source>
+        <translation>电机开启</translation>
+    </message>
+    <message>
+        <source>0x88: turns the motor on after Motor Off or a protection trip (V2.35: a control command does not); it holds no command</source>
+        <translation>0x88：在电机关闭或保护跳闸后开启电机（V2.35：控制命令不会开启电机）；不保留任何命令</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::ControlLimits</name>
+    <message>
+        <source>The soft limits stored for %1 are damaged (%2); the limits in force stay. Apply them to store them again.</source>
+        <translation>%1 保存的软限位已损坏（%2）；当前生效的限值保持不变。点“应用”可重新保存。</translation>
+    </message>
+    <message>
+        <source>Refused: the soft limits stored for %1 are damaged (%2). Check and apply the limits first; nothing sent.</source>
+        <translation>已拒绝：%1 保存的软限位已损坏（%2）。请先检查并应用限值；未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Max Speed %1 dps</source>
+        <translation>最大速度 %1 dps</translation>
+    </message>
+    <message>
+        <source>max torque current %1 A</source>
+        <translation>最大转矩电流 %1 A</translation>
+    </message>
+    <message>
+        <source>Max Power %1</source>
+        <translation>最大功率 %1</translation>
+    </message>
+    <message>
+        <source>Max Angle %1°</source>
+        <translation>最大角度 %1°</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s own limits (read from it) also apply where lower: %1.</source>
+        <translation>驱动器自身的限制（从驱动器读取）在更低时同样生效：%1。</translation>
     </message>
 </context>
 <context>
@@ -1280,42 +1514,6 @@
 <context>
     <name>lk::ui::ControlView</name>
     <message>
-        <source>Command</source>
-        <translation>命令</translation>
-    </message>
-    <message>
-        <source>Send</source>
-        <translation>发送</translation>
-    </message>
-    <message>
-        <source>Checked against the series and your soft limits before sending</source>
-        <translation>发送前按系列限值和您的软限位检查</translation>
-    </message>
-    <message>
-        <source>Motor Off</source>
-        <translation>电机关闭</translation>
-    </message>
-    <message>
-        <source>0x80: output off, the stored command is cleared</source>
-        <translation>0x80：关闭输出，清除已保存的命令</translation>
-    </message>
-    <message>
-        <source>Stop</source>
-        <translation>电机停止</translation>
-    </message>
-    <message>
-        <source>0x81: output off, the stored command is kept for Run</source>
-        <translation>0x81：关闭输出，保留命令供“电机运行”恢复</translation>
-    </message>
-    <message>
-        <source>Run</source>
-        <translation>电机运行</translation>
-    </message>
-    <message>
-        <source>0x88: resume after Stop</source>
-        <translation>0x88：在“电机停止”后恢复</translation>
-    </message>
-    <message>
         <source>Soft limits of %1 applied and saved.</source>
         <translation>已应用并保存 %1 的软限位。</translation>
     </message>
@@ -1372,20 +1570,6 @@
         <translation>，功率 %1</translation>
     </message>
     <message>
-        <source>The soft limits stored for %1 are damaged (%2); the limits in force stay. Apply them to store them again.</source>
-        <translation>%1 保存的软限位已损坏（%2）；当前生效的限值保持不变。点“应用”可重新保存。</translation>
-    </message>
-    <message>
-        <source>Refused: the soft limits stored for %1 are damaged (%2). Check and apply the limits first; nothing sent.</source>
-        <translation>已拒绝：%1 保存的软限位已损坏（%2）。请先检查并应用限值；未发送任何命令。</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n drives are selected: every command here acts on %1 only.</source>
-        <translation>
-            <numerusform>已选择 %n 个驱动：此处的每条命令只作用于 %1。</numerusform>
-        </translation>
-    </message>
-    <message>
         <source>Reading the drive&apos;s current angle before the move…</source>
         <translation>运动前正在读取驱动的当前角度…</translation>
     </message>
@@ -1408,6 +1592,10 @@
     <message>
         <source>Stopped: the soft limits or the series changed.</source>
         <translation>已停止：软限位或系列已更改。</translation>
+    </message>
+    <message>
+        <source>Reading whether the motor of %1 is on before the command…</source>
+        <translation>发送命令前正在读取 %1 的电机是否开启…</translation>
     </message>
 </context>
 <context>
@@ -1784,14 +1972,6 @@
 <context>
     <name>lk::ui::DriveLimitSet</name>
     <message>
-        <source>Max power (0x99)</source>
-        <translation>最大功率 (0x99)</translation>
-    </message>
-    <message>
-        <source>Max torque current (0x99)</source>
-        <translation>最大转矩电流 (0x99)</translation>
-    </message>
-    <message>
         <source>On MS drives ParamID 0x99 limits power (0..1000 is the power command&apos;s range); the unit is not documented.</source>
         <translation>在 MS 驱动上，参数 ID 0x99 限制的是功率（功率命令的范围为 0..1000）；单位未见文档说明。</translation>
     </message>
@@ -1889,6 +2069,10 @@
         <source>Limits written to the RAM of drive %1 and read back: the drive holds what was sent. Lost at power-off unless written to ROM.</source>
         <translation>限值已写入驱动 %1 的 RAM 并回读：驱动保存的就是发送的值。除非写入 ROM，否则断电丢失。</translation>
     </message>
+    <message>
+        <source>%1 (0x99)</source>
+        <translation>%1 (0x99)</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::DriveLimitsView</name>
@@ -1950,6 +2134,49 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::DriveStateCheck</name>
+    <message>
+        <source>Refused: whether the motor of drive %1 is on could not be told (read_state1). Nothing sent.</source>
+        <translation>已拒绝：无法确定驱动器 %1 的电机是否开启（read_state1）。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Refused: drive %1 is off: Motor On first (a V2.35 drive stays off after Motor Off or a protection trip, and a control command does not turn it on). Nothing sent.</source>
+        <translation>已拒绝：驱动器 %1 处于关闭状态：请先开启电机（V2.35 驱动器在电机关闭或保护跳闸后保持关闭，控制命令不会开启它）。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>The brake of drive %1 reads engaged: the shaft is held and does not move until the brake is released.</source>
+        <translation>驱动器 %1 的抱闸读数为已抱闸：轴被锁住，松开抱闸前不会转动。</translation>
+    </message>
+    <message>
+        <source>motor state not read yet</source>
+        <translation>尚未读取电机状态</translation>
+    </message>
+    <message>
+        <source>motor on</source>
+        <translation>电机运行</translation>
+    </message>
+    <message>
+        <source>motor OFF: Motor On first</source>
+        <translation>电机关闭：请先开启电机</translation>
+    </message>
+    <message>
+        <source>brake not read</source>
+        <translation>尚未读取抱闸</translation>
+    </message>
+    <message>
+        <source>brake released</source>
+        <translation>抱闸已释放</translation>
+    </message>
+    <message>
+        <source>brake ENGAGED: the shaft is held</source>
+        <translation>抱闸已抱紧：轴被锁住</translation>
+    </message>
+    <message>
+        <source>Drive %1: %2; %3.</source>
+        <translation>驱动器 %1：%2；%3。</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::DriveText</name>
     <message>
         <source>%1: drive %2 did not answer.</source>
@@ -2006,6 +2233,10 @@
     <message>
         <source>Refused: a setpoint broke a limit.</source>
         <translation>已拒绝：某个设定点超出限位。</translation>
+    </message>
+    <message>
+        <source>It was sent, so drive %1 may have acted on it and may be moving: check it, or stop it.</source>
+        <translation>该命令已发送，驱动器 %1 可能已执行并可能正在运动：请检查或停止它。</translation>
     </message>
 </context>
 <context>
@@ -2174,6 +2405,10 @@
         <source>%1 (÷ %2)</source>
         <translation>%1 (÷ %2)</translation>
     </message>
+    <message>
+        <source>%1  (no angle: the single-turn angle disagrees, so the resolution is not known yet)</source>
+        <translation>%1  （不显示角度：与单圈角度不一致，分辨率尚不确定）</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::EncoderResolutions</name>
@@ -2225,6 +2460,14 @@
         <source>but the drive reported %1, beyond this range</source>
         <translation>但驱动报告了 %1，超出了此范围</translation>
     </message>
+    <message>
+        <source>%1-bit, protocol V2.35</source>
+        <translation>%1 位，协议 V2.35</translation>
+    </message>
+    <message>
+        <source>what protocol V2.35 documents for %1 drives (a real MS4015 on firmware 2.35 reports 16 bits)</source>
+        <translation>协议 V2.35 对 %1 驱动器的说明（固件 2.35 的真实 MS4015 报告 16 位）</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::EncoderView</name>
@@ -2273,26 +2516,6 @@
         <translation>零偏是编码器读数为 0 时的原始位置。协议命令表将 0x91 列为 ROM 写入：它可能会写入驱动的闪存。</translation>
     </message>
     <message>
-        <source>Zero</source>
-        <translation>零点</translation>
-    </message>
-    <message>
-        <source>Clear motor angle (0x95)…</source>
-        <translation>清除电机角度 (0x95)…</translation>
-    </message>
-    <message>
-        <source>Write current position to ROM as zero (0x19)…</source>
-        <translation>写入当前位置到 ROM 作为零点 (0x19)…</translation>
-    </message>
-    <message>
-        <source>Multi-turn and single-turn angle become 0 here until power-off; the result is checked with read_multi_turn (0x92).</source>
-        <translation>多圈角度和单圈角度在此处变为 0，直到断电；结果用 read_multi_turn (0x92) 检查。</translation>
-    </message>
-    <message>
-        <source>Stores the present encoder position as the zero in flash. Takes effect only after a power cycle; each write wears the flash.</source>
-        <translation>将当前编码器位置作为零点存入闪存。断电重启后才生效；每次写入都会磨损闪存。</translation>
-    </message>
-    <message>
         <source>from the model name &quot;%1&quot;</source>
         <translation>取自型号名“%1”</translation>
     </message>
@@ -2315,14 +2538,6 @@
     <message>
         <source>Output shaft = rotor ÷ ratio; %1.</source>
         <translation>输出轴 = 转子 ÷ 减速比；%1。</translation>
-    </message>
-    <message>
-        <source>The drive or the connection changed: nothing was sent.</source>
-        <translation>驱动或连接已改变：未发送任何命令。</translation>
-    </message>
-    <message>
-        <source>Cancelled: nothing was sent.</source>
-        <translation>已取消：未发送任何命令。</translation>
     </message>
     <message>
         <source>Refused, nothing sent: the offset must be in 0..%1 for a %2-bit encoder.</source>
@@ -2351,6 +2566,45 @@
     <message>
         <source>Wrote offset %1, but the drive reports %2.</source>
         <translation>已写入零偏 %1，但驱动报告为 %2。</translation>
+    </message>
+    <message>
+        <source>encoder offset</source>
+        <translation>编码器偏移</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::EncoderZeroTools</name>
+    <message>
+        <source>Zero</source>
+        <translation>零点</translation>
+    </message>
+    <message>
+        <source>Clear motor angle (0x95)…</source>
+        <translation>清除电机角度 (0x95)…</translation>
+    </message>
+    <message>
+        <source>Write current position to ROM as zero (0x19)…</source>
+        <translation>写入当前位置到 ROM 作为零点 (0x19)…</translation>
+    </message>
+    <message>
+        <source>Multi-turn and single-turn angle become 0 here until power-off; the result is checked with read_multi_turn (0x92).</source>
+        <translation>多圈角度和单圈角度在此处变为 0，直到断电；结果用 read_multi_turn (0x92) 检查。</translation>
+    </message>
+    <message>
+        <source>Stores the present encoder position as the zero in flash. Takes effect only after a power cycle; each write wears the flash.</source>
+        <translation>将当前编码器位置作为零点存入闪存。断电重启后才生效；每次写入都会磨损闪存。</translation>
+    </message>
+    <message>
+        <source>Clear turn count (0x93)…</source>
+        <translation>清除圈数 (0x93)…</translation>
+    </message>
+    <message>
+        <source>clear turn count</source>
+        <translation>清除圈数</translation>
+    </message>
+    <message>
+        <source>Whole turns of the multi-turn angle are dropped; the angle within the present turn stays. Checked with read_multi_turn (0x92).</source>
+        <translation>多圈角度中的整圈被清除；当前圈内的角度保持不变。用 read_multi_turn (0x92) 检查。</translation>
     </message>
     <message>
         <source>Clear motor angle</source>
@@ -2409,18 +2663,6 @@
         <translation>驱动报告新零点为编码器 %1。</translation>
     </message>
     <message>
-        <source>Clear turn count (0x93)…</source>
-        <translation>清除圈数 (0x93)…</translation>
-    </message>
-    <message>
-        <source>Whole turns of the multi-turn angle are dropped; the angle within the present turn stays. Checked with read_multi_turn (0x92).</source>
-        <translation>多圈角度中的整圈被清除；当前圈内的角度保持不变。用 read_multi_turn (0x92) 检查。</translation>
-    </message>
-    <message>
-        <source>clear turn count</source>
-        <translation>清除圈数</translation>
-    </message>
-    <message>
         <source>Clear turn count</source>
         <translation>清除圈数</translation>
     </message>
@@ -2443,10 +2685,6 @@
     <message>
         <source>Drive %1 acknowledged 0x93, but its multi-turn angle reads %2° (was %3°): more than one turn, so the turn count was not cleared.</source>
         <translation>驱动 %1 确认了 0x93，但其多圈角度读数为 %2°（原为 %3°）：超过一圈，因此圈数没有被清除。</translation>
-    </message>
-    <message>
-        <source>the encoder offset</source>
-        <translation>编码器偏移</translation>
     </message>
 </context>
 <context>
@@ -3123,6 +3361,18 @@
         <source>Cannot write %1: %2</source>
         <translation>无法写入 %1：%2</translation>
     </message>
+    <message>
+        <source>nothing plotted</source>
+        <translation>未绘制任何信号</translation>
+    </message>
+    <message>
+        <source>drive %1</source>
+        <translation>驱动 %1</translation>
+    </message>
+    <message>
+        <source>drives %1</source>
+        <translation>驱动 %1</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::PlotPanel</name>
@@ -3634,6 +3884,10 @@
     <message>
         <source>--cycle-views takes a period of at least 100 ms.</source>
         <translation>--cycle-views 需要至少 100 毫秒的周期。</translation>
+    </message>
+    <message>
+        <source>--settings %1: %2</source>
+        <translation>--settings %1：%2</translation>
     </message>
 </context>
 <context>

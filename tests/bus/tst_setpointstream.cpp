@@ -87,7 +87,7 @@ SetpointStreamPlan plan(Target target, double offset, double amplitude, Waveform
 /// The frame the GUI's motion gate would send for `value`: the builder, then MotionPlanner.
 QByteArray gateFrame(const SetpointStreamPlan &p, double value)
 {
-    const protocol::BuildResult built = SetpointStream::build(p, value);
+    const protocol::BuildResult built = SetpointStream::build(p, value, protocol::Generation::V2_3);
     const safety::MotionPlan planned =
         safety::MotionPlanner::plan(*built.request, p.series, p.limits, p.position);
     return planned.request->encode();

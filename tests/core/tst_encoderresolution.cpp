@@ -13,6 +13,7 @@ class tst_EncoderResolution : public QObject {
     Q_OBJECT
 private slots:
     void startsFromNameOrSeries();
+    void v235MsStartsAt16Bits();
     void raisesToSmallestThatHoldsTheValue_data();
     void raisesToSmallestThatHoldsTheValue();
     void neverLowers();
@@ -35,6 +36,33 @@ void tst_EncoderResolution::startsFromNameOrSeries()
     QCOMPARE(guess.bits(), 14);
     QCOMPARE(guess.source(), Source::Guess);
     QVERIFY(!guess.largestSeen());
+}
+
+void tst_EncoderResolution::v235MsStartsAt16Bits()
+{
+    // docs/V2.35.md section 12: the encoder field of an MS4015 on fw 2.35 spans 16 bits.
+    const auto v235 = EncoderResolution::fromModel(ModelNameInfo::parse("MS4015"), Series::MS,
+                                                   lk::protocol::Generation::V2_35);
+    QCOMPARE(v235.bits(), 16);
+    QCOMPARE(v235.source(), Source::Generation);
+    // 6437 is then 35.36 deg, as the drive's single-turn angle says, not 141.44 (14 bit).
+    QCOMPARE(qRound(36000.0 * 6437 / v235.countsPerTurn()), 3536);
+    auto seen = v235;
+    QVERIFY(!seen.observe(43388)); // within: nothing to raise
+    QCOMPARE(seen.source(), Source::Generation);
+    // The name's hint still comes first; V2.3 and other series keep their defaults.
+    QCOMPARE(EncoderResolution::fromModel(ModelNameInfo::parse("MS4015-18bit"), Series::MS,
+                                          lk::protocol::Generation::V2_35)
+                 .source(),
+             Source::Name);
+    QCOMPARE(EncoderResolution::fromModel(ModelNameInfo::parse("MS4015"), Series::MS,
+                                          lk::protocol::Generation::V2_3)
+                 .bits(),
+             12);
+    QCOMPARE(EncoderResolution::fromModel(ModelNameInfo::parse("MF4015"), Series::MF,
+                                          lk::protocol::Generation::V2_35)
+                 .source(),
+             Source::SeriesDefault);
 }
 
 void tst_EncoderResolution::raisesToSmallestThatHoldsTheValue_data()

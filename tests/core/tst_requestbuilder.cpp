@@ -123,16 +123,18 @@ void addCurrentAndSpeedVectors()
     addVector(
         "open_loop 0 id 32", [] { return build::openLoop(32, 0); }, "3E A0 20 02 00 00 00 00");
     addVector(
-        "torque -32 A = -2000", [] { return build::torque(1, -32.0); }, "3E A1 01 02 E2 30 F8 28");
+        "torque -32 A = -2000", [] { return build::torque(1, -32.0, {}); },
+        "3E A1 01 02 E2 30 F8 28");
     addVector(
-        "torque 32 A = 2000", [] { return build::torque(1, 32.0); }, "3E A1 01 02 E2 D0 07 D7");
+        "torque 32 A = 2000", [] { return build::torque(1, 32.0, {}); }, "3E A1 01 02 E2 D0 07 D7");
     addVector(
-        "torque -16 A = -1000", [] { return build::torque(1, -16.0); }, "3E A1 01 02 E2 18 FC 14");
+        "torque -16 A = -1000", [] { return build::torque(1, -16.0, {}); },
+        "3E A1 01 02 E2 18 FC 14");
     addVector(
-        "torque 0.5 A rounds to 31", [] { return build::torque(1, 0.5); },
+        "torque 0.5 A rounds to 31", [] { return build::torque(1, 0.5, {}); },
         "3E A1 01 02 E2 1F 00 1F");
     addVector(
-        "torque 1.6 A id 32 = 100", [] { return build::torque(32, 1.6); },
+        "torque 1.6 A id 32 = 100", [] { return build::torque(32, 1.6, {}); },
         "3E A1 20 02 01 64 00 64");
     addVector(
         "speed 100 dps", [] { return build::speed(1, 100.0); }, "3E A2 01 04 E5 10 27 00 00 37");
@@ -261,7 +263,7 @@ void addIdRefusals()
         QTest::addRow("plain id %d", id)
             << BuildFn([id] { return build::plain(Command::MotorOff, id); }) << "id";
         QTest::addRow("torque id %d", id)
-            << BuildFn([id] { return build::torque(id, 1.0); }) << "id";
+            << BuildFn([id] { return build::torque(id, 1.0, {}); }) << "id";
     }
     addRefused(
         "pid id 0", [] { return build::writePid(0, 1, 1, 1, 1, 1, 1, false); }, "id");
@@ -287,21 +289,21 @@ void addIdRefusals()
         "increment limited id 0", [] { return build::incrementPosition(0, 1, 1); }, "id");
     // The id is checked before the value: both bad names the id.
     addRefused(
-        "torque id 0 and 99 A", [] { return build::torque(0, 99.0); }, "id");
+        "torque id 0 and 99 A", [] { return build::torque(0, 99.0, {}); }, "id");
 }
 
 void addValueRefusals()
 {
     addRefused(
-        "torque 32.02 A", [] { return build::torque(1, 32.02); }, "iq_a");
+        "torque 32.02 A", [] { return build::torque(1, 32.02, {}); }, "iq_a");
     addRefused(
-        "torque -32.02 A", [] { return build::torque(1, -32.02); }, "iq_a");
+        "torque -32.02 A", [] { return build::torque(1, -32.02, {}); }, "iq_a");
     addRefused(
-        "torque NaN", [] { return build::torque(1, kNaN); }, "iq_a");
+        "torque NaN", [] { return build::torque(1, kNaN, {}); }, "iq_a");
     addRefused(
-        "torque +inf", [] { return build::torque(1, kInf); }, "iq_a");
+        "torque +inf", [] { return build::torque(1, kInf, {}); }, "iq_a");
     addRefused(
-        "torque -inf", [] { return build::torque(1, -kInf); }, "iq_a");
+        "torque -inf", [] { return build::torque(1, -kInf, {}); }, "iq_a");
     addRefused(
         "open_loop 851 (V2.35 allows +-850)", [] { return build::openLoop(1, 851); }, "power");
     addRefused(
@@ -470,7 +472,7 @@ void tst_RequestBuilder::pidOverloadsAgree()
 
 void tst_RequestBuilder::fieldErrorMessage()
 {
-    const BuildResult r = build::torque(1, 40.0);
+    const BuildResult r = build::torque(1, 40.0, {});
     QVERIFY(!r.ok());
     const QString m = r.error.message();
     QVERIFY2(m.contains(QStringLiteral("iq_a")), qPrintable(m));

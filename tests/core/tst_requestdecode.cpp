@@ -145,8 +145,8 @@ void tst_RequestDecode::roundTrip_data()
                  [] { return build::writeEncoderOffset(5, 0x8000); });
     addRoundTrip("open_loop -850", [] { return build::openLoop(1, -850); });
     addRoundTrip("open_loop 850", [] { return build::openLoop(32, 850); });
-    addRoundTrip("torque -32", [] { return build::torque(1, -32.0); });
-    addRoundTrip("torque 31.5", [] { return build::torque(9, 31.5); });
+    addRoundTrip("torque -32", [] { return build::torque(1, -32.0, {}); });
+    addRoundTrip("torque 31.5", [] { return build::torque(9, 31.5, {}); });
     addRoundTrip("speed int32 min", [] { return build::speed(1, -21474836.48); });
     addRoundTrip("speed int32 max", [] { return build::speed(1, 21474836.47); });
     addRoundTrip("multi_position -123456.78", [] { return build::multiPosition(1, -123456.78); });

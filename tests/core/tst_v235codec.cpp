@@ -6,6 +6,7 @@
 
 #include "protocol/ErrorFlags.h"
 #include "protocol/FieldJson.h"
+#include "protocol/ProtocolFields.h"
 #include "protocol/Reply.h"
 #include "protocol/RequestBuilder.h"
 
@@ -62,6 +63,7 @@ private slots:
     void zeroReplyWithEncoderZero();
     void currentScales();
     void torqueBuilderScale();
+    void maxTorqueParamNamedPerSeries();
     void openLoopStricterRange();
     void singleTurnThreeBytes();
     void badDataChecksumCaptureCounted();
@@ -283,6 +285,20 @@ void tst_V235Codec::currentScales()
     QCOMPARE(int(std::get<State2>(replyOf(s2, kV235Mf).payload).encoder), 43388);
 }
 
+void tst_V235Codec::maxTorqueParamNamedPerSeries()
+{
+    // One name per series, from the field table: lkctl and lkstudio read it there.
+    QCOMPARE(ProtocolFields::paramLabel(ParamId::MaxTorqueCurrent, Series::MS),
+             QStringLiteral("max power"));
+    for (Series s : {Series::MF, Series::MG, Series::MH})
+        QCOMPARE(ProtocolFields::paramLabel(ParamId::MaxTorqueCurrent, s),
+                 QStringLiteral("max torque current"));
+    QCOMPARE(ProtocolFields::paramLabel(ParamId::MaxTorqueCurrent, std::nullopt),
+             QStringLiteral("max torque current"));
+    QCOMPARE(ProtocolFields::paramLabel(ParamId::MaxSpeed, Series::MS),
+             QStringLiteral("max speed"));
+}
+
 void tst_V235Codec::torqueBuilderScale()
 {
     // The raw range stays +-2000 (the stricter of both generations); the scale follows the
@@ -290,6 +306,16 @@ void tst_V235Codec::torqueBuilderScale()
     const BuildResult mf = build::torque(1, 8.25, kV235Mf);
     QVERIFY(mf.ok());
     QCOMPARE(int(std::get<TorqueCommand>(mf.request->payload).iqRaw), 1024);
+    // The command carries the drive's scale: what the drive makes of it, for the limit checks
+    // and every text that shows the torque sent.
+    QCOMPARE(std::get<TorqueCommand>(mf.request->payload).iqA(), 8.25);
+    // 2 A: V2.35 MF 248 LSB, MG 124 LSB (66/4096 A), V2.3 125 LSB (32/2000 A).
+    const auto raw = [](const DecodeContext &c) {
+        return int(std::get<TorqueCommand>(build::torque(1, 2.0, c).request->payload).iqRaw);
+    };
+    QCOMPARE(raw(kV235Mf), 248);
+    QCOMPARE(raw(kV235Mg), 124);
+    QCOMPARE(raw(kV23Mf), 125);
     QCOMPARE(int(std::get<TorqueCommand>(build::torque(1, 8.25, kV23Mf).request->payload).iqRaw),
              516);
     const BuildResult over = build::torque(1, 16.5, kV235Mf); // 2048 LSB

@@ -75,8 +75,8 @@ const QList<MotionCase> &motionCases()
     static const QList<MotionCase> kCases{
         {"speed cw", 3, [](double) { return speed(3, 360); }, +1, none},
         {"speed ccw", 3, [](double) { return speed(3, -360); }, -1, none},
-        {"torque +", 3, [](double) { return torque(3, 0.3); }, +1, none},
-        {"torque -", 3, [](double) { return torque(3, -0.3); }, -1, none},
+        {"torque +", 3, [](double) { return torque(3, 0.3, {}); }, +1, none},
+        {"torque -", 3, [](double) { return torque(3, -0.3, {}); }, -1, none},
         {"open loop (MS)", 17, [](double) { return openLoop(17, 150); }, +1, none},
         {"speed (MG)", 32, [](double) { return speed(32, -720); }, -1, none},
         {"multi position", 3, [](double a) { return multiPosition(3, a + 90); }, +1,

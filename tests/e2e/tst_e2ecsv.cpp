@@ -9,6 +9,7 @@
 #include <bus/BusSession.h>
 #include <plot/PlotExporter.h>
 #include <plot/TelemetryStore.h>
+#include <protocol/ErrorFlags.h>
 #include <record/TelemetryColumns.h>
 #include <transport/SerialTransport.h>
 
@@ -145,6 +146,8 @@ private slots:
     void init();
     void cleanup();
     void documentMatchesTheColumnTable();
+    void documentNamesEveryErrorBit_data();
+    void documentNamesEveryErrorBit();
     void lkctlMonitorWritesTheDocumentedSchema_data();
     void lkctlMonitorWritesTheDocumentedSchema();
     void plotExportWritesTheDocumentedSchema_data();
@@ -188,6 +191,49 @@ void tst_E2eCsv::documentMatchesTheColumnTable()
         QCOMPARE(doc.at(i).key, QString::fromLatin1(table.at(i).key));
         QCOMPARE(doc.at(i).unit, QString::fromUtf8(table.at(i).unit));
         QCOMPARE(doc.at(i).decimals, table.at(i).decimals);
+    }
+}
+
+void tst_E2eCsv::documentNamesEveryErrorBit_data()
+{
+    QTest::addColumn<int>("generation");
+    QTest::addColumn<int>("column"); // of the bit table: | bit | value | V2.3 | V2.35 |
+    QTest::newRow("V2.3") << int(protocol::Generation::V2_3) << 3;
+    QTest::newRow("V2.35") << int(protocol::Generation::V2_35) << 4;
+}
+
+// error_state's bits by generation: each bit the protocol names, by its words, in the
+// document's bit table; the others "unused".
+void tst_E2eCsv::documentNamesEveryErrorBit()
+{
+    QFETCH(int, generation);
+    QFETCH(int, column);
+    QFile file(QStringLiteral(LK_SOURCE_DIR "/docs/CSV.md"));
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QMap<int, QString> documented; // bit -> cell
+    bool inTable = false;
+    for (const QString &line : QString::fromUtf8(file.readAll()).split('\n')) {
+        if (line.startsWith(QLatin1String("| bit | value |"))) {
+            inTable = true;
+        } else if (inTable && line.startsWith(QLatin1String("| ---"))) {
+            continue;
+        } else if (inTable && line.startsWith('|')) {
+            const QStringList cells = line.split('|');
+            documented.insert(cells.value(1).trimmed().toInt(), cells.value(column).trimmed());
+        } else if (inTable) {
+            break;
+        }
+    }
+    QCOMPARE(documented.keys(), (QList<int>{0, 1, 2, 3, 4, 5, 6, 7}));
+    const auto gen = protocol::Generation(generation);
+    for (int bit = 0; bit < 8; ++bit) {
+        const QVector<protocol::ErrorFlag> set = protocol::ErrorFlags::set(quint8(1u << bit), gen);
+        const QString expected =
+            set.isEmpty() ? QStringLiteral("unused") : QString::fromLatin1(set.first().text);
+        QVERIFY2(documented.value(bit).startsWith(expected),
+                 qPrintable(QStringLiteral("bit %1: documented \"%2\", the protocol says \"%3\"")
+                                .arg(bit)
+                                .arg(documented.value(bit), expected)));
     }
 }
 

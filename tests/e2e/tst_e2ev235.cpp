@@ -255,14 +255,16 @@ void tst_E2eV235::brakeStatusEngageRelease()
     QVERIFY(startSim());
     CtlResult r = ctl({"brake", "1", "status", "--json"});
     QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    // A real drive powers up with its motor on and its brake released (docs/V2.35.md).
     QCOMPARE(r.out, QByteArray("{\"command\":\"brake\",\"id\":1,\"action\":\"status\","
-                               "\"motor_on\":null,\"brake_released\":false,\"brake_raw\":0}\n"));
+                               "\"motor_on\":null,\"brake_released\":true,\"brake_raw\":1}\n"));
+    r = ctl({"brake", "1", "engage", "--json"});
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    QCOMPARE(jsonOf(r.out).value("brake_released").toBool(true), false);
     r = ctl({"brake", "1", "release"});
     QCOMPARE(r.exitCode, 4);
     QVERIFY2(r.err.contains("--yes"), r.err.constData());
-    // The motor on (a speed command), then release is allowed with --yes.
-    r = ctl({"control", "1", "speed", "0"});
-    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    // The motor is on, so release is allowed with --yes.
     r = ctl({"brake", "1", "release", "--yes", "--json"});
     QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     QCOMPARE(jsonOf(r.out).value("motor_on").toBool(), true);
@@ -273,7 +275,7 @@ void tst_E2eV235::brakeStatusEngageRelease()
     const QList<QByteArray> frames = m_sim->receivedFrames();
     QCOMPARE(countFrames(frames, "3E 8C 01 01 CC 10 10"), qsizetype(1));
     QCOMPARE(countFrames(frames, "3E 8C 01 01 CC 01 01"), qsizetype(1));
-    QCOMPARE(countFrames(frames, "3E 8C 01 01 CC 00 00"), qsizetype(1));
+    QCOMPARE(countFrames(frames, "3E 8C 01 01 CC 00 00"), qsizetype(2));
 }
 
 void tst_E2eV235::releaseRefusedWhileMotorOff()

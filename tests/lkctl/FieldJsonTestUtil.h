@@ -112,9 +112,9 @@ inline void addRequestRows()
     QTest::newRow("write_encoder_offset")
         << req(build::writeEncoderOffset(1, 40000)) << QByteArray(R"({"encoder_offset":40000})");
     QTest::newRow("open_loop") << req(build::openLoop(1, -500)) << QByteArray(R"({"power":-500})");
-    QTest::newRow("torque") << req(build::torque(1, 1.6))
+    QTest::newRow("torque") << req(build::torque(1, 1.6, {}))
                             << QByteArray(R"({"iq_a":1.6,"iq_raw":100})");
-    QTest::newRow("torque -32") << req(build::torque(1, -32))
+    QTest::newRow("torque -32") << req(build::torque(1, -32, {}))
                                 << QByteArray(R"({"iq_a":-32.0,"iq_raw":-2000})");
     QTest::newRow("speed (CLI.md)")
         << req(build::speed(1, 100)) << QByteArray(R"({"speed_dps":100.0,"speed_raw":10000})");

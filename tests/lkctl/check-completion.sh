@@ -56,5 +56,9 @@ expect "max_angle_deg max_speed_dps max_torque" write 1 param max
 expect "brake" br
 expect "engage" brake 1 e
 expect "--motor-off-ok" brake 1 release --mo
+expect "clear-errors clear-turns" clear
+expect "zero" ze
+expect "--ram --rom" zero 3 --r
+expect "--yes" clear-turns 1 --y
 [ $fail -eq 0 ] && echo "bash completion ok"
 exit $fail

@@ -37,7 +37,7 @@ void tst_FieldText::request_data()
     QTest::addColumn<QString>("expected");
     QTest::newRow("speed") << req(build::speed(1, 100)) << "speed 100.00 dps";
     QTest::newRow("speed negative") << req(build::speed(1, -0.5)) << "speed -0.50 dps";
-    QTest::newRow("torque") << req(build::torque(1, 1.5)) << "iq 1.50 A";
+    QTest::newRow("torque") << req(build::torque(1, 1.5, {})) << "iq 1.50 A";
     QTest::newRow("open_loop") << req(build::openLoop(1, -500)) << "power -500";
     QTest::newRow("multi") << req(build::multiPosition(1, 720)) << "angle 720.00 deg";
     QTest::newRow("multi limited")

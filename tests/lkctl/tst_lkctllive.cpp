@@ -271,8 +271,12 @@ void tst_LkctlLive::controlWithinAndOverLimits_data()
         << sim("control 3 torque 2.5") << 4 << QByteArray("your torque limit of 2.25 A");
     QTest::newRow("torque raised")
         << sim("control 3 torque 2.5 --max-torque-a 3") << 0 << QByteArray();
-    QTest::newRow("torque over series even when raised")
-        << sim("control 3 torque 10 --max-torque-a 20") << 4 << QByteArray("series rating");
+    // A limit above the series' own is no limit: the flag is refused as such.
+    QTest::newRow("torque limit over the series")
+        << sim("control 3 torque 10 --max-torque-a 20") << 2
+        << QByteArray("--max-torque-a 20 A is above 9 A, the current limit of the MF series");
+    QTest::newRow("torque over the limit at the series rating")
+        << sim("control 3 torque 10 --max-torque-a 9") << 4 << QByteArray("series rating");
     QTest::newRow("open loop on MF") << sim("control 3 open-loop 100") << 4
                                      << QByteArray("MF drives do not implement open_loop");
     QTest::newRow("open loop on MS") << sim("control 17 open-loop 100") << 0 << QByteArray();

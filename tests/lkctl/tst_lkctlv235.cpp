@@ -51,7 +51,7 @@ void tst_LkctlV235::scanShowsEachGeneration()
     // same bytes would be far off (the bug: 308 V for 24 V).
     QCOMPARE(v235.value("voltage_v").toDouble(), 12.0);
     QVERIFY(v235.value("bus_current_a").isDouble());
-    QCOMPARE(v235.value("motor_on").toBool(true), false);
+    QCOMPARE(v235.value("motor_on").toBool(false), true); // on after power-up, as a real drive
     QCOMPARE(v235.value("errors").toArray().size(), 0);
     const QJsonObject v23 = drives.at(1).toObject();
     QCOMPARE(v23.value("generation").toString(), QStringLiteral("v2.3"));

@@ -123,7 +123,7 @@ void tst_MonitorTable::v235State1CarriesBusCurrentAndMotorState()
     QVERIFY(table.add(s).isEmpty());
     const QList<QByteArray> rows = table.flush();
     QCOMPARE(rows.size(), 1);
-    QCOMPARE(rows.first(), QByteArray("0.500000,0,24.0,0,1.25,0,,,\n"));
+    QCOMPARE(rows.first(), QByteArray("0.500000,0,24.00,0,1.25,0,,,\n"));
 }
 
 void tst_MonitorTable::longRowsNeverMixRounds()
@@ -140,7 +140,7 @@ void tst_MonitorTable::longRowsNeverMixRounds()
         QCOMPARE(cells.at(0), QByteArray::number(roundTime(round), 'f', 6));
         QCOMPARE(cells.at(1), QByteArray("3"));
         QCOMPARE(cells.at(2), QByteArray::number(round)); // temperature: from state1 or state2
-        QCOMPARE(cells.at(3), round == 3 ? QByteArray() : QByteArray::number(round + 0.5, 'f', 1));
+        QCOMPARE(cells.at(3), round == 3 ? QByteArray() : QByteArray::number(round + 0.5, 'f', 2));
         QCOMPARE(cells.at(6), round == 1 ? QByteArray() : QByteArray::number(10 * round));
         QCOMPARE(round, i + 1);
     }
@@ -166,8 +166,9 @@ void tst_MonitorTable::wideRowPerRound()
     }
     const QList<QByteArray> rows = feed(table, samples);
     QCOMPARE(rows.size(), 3); // every round complete but the lossy one, written at round 3
-    QCOMPARE(rows.at(0), QByteArray("0.100000,1,1.5,0,0.0161,10,1,100.00,1,1.5,0,1,10,1,100.00\n"));
-    QCOMPARE(rows.at(1), QByteArray("0.200000,2,2.5,0,0.0322,20,2,200.00,2,2.5,0,,,,200.00\n"));
+    QCOMPARE(rows.at(0),
+             QByteArray("0.100000,1,1.50,0,0.0161,10,1,100.00,1,1.50,0,1,10,1,100.00\n"));
+    QCOMPARE(rows.at(1), QByteArray("0.200000,2,2.50,0,0.0322,20,2,200.00,2,2.50,0,,,,200.00\n"));
 }
 
 void tst_MonitorTable::jsonRowsNeverMixRounds()

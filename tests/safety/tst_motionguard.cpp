@@ -1,5 +1,7 @@
 // The gate in front of every motion command: series capabilities, series limits, soft limits.
 
+#include "SafetyTestUtil.h"
+
 #include <motor/SeriesLimits.h>
 #include <protocol/RequestBuilder.h>
 #include <safety/MotionGuard.h>
@@ -9,21 +11,13 @@
 #include <QtTest/QtTest>
 
 using namespace lk;
+using lk::test::req;
 using protocol::Series;
 using safety::LimitKind;
 
 Q_DECLARE_METATYPE(std::optional<protocol::Series>)
 Q_DECLARE_METATYPE(lk::protocol::Request)
 Q_DECLARE_METATYPE(lk::safety::LimitKind)
-
-namespace {
-protocol::Request req(const protocol::BuildResult &r)
-{
-    if (!r.ok())
-        qFatal("test request did not build: %s", qPrintable(r.error.message()));
-    return *r.request;
-}
-} // namespace
 
 class tst_MotionGuard : public QObject {
     Q_OBJECT
@@ -50,13 +44,20 @@ void tst_MotionGuard::check_data()
                                  << LimitKind::None;
     QTest::newRow("pid rom write passes (not motion)")
         << req(writePid(1, 1, 2, 3, 4, 5, 6, true)) << unknown << LimitKind::None;
-    QTest::newRow("torque within") << req(torque(1, 2.0)) << MF << LimitKind::None;
-    QTest::newRow("torque negative within") << req(torque(1, -2.0)) << MF << LimitKind::None;
-    QTest::newRow("torque over soft") << req(torque(1, 2.5)) << MF << LimitKind::SoftTorque;
-    QTest::newRow("torque over series") << req(torque(1, -10.0)) << MF << LimitKind::SeriesCurrent;
+    QTest::newRow("torque within") << req(torque(1, 2.0, {})) << MF << LimitKind::None;
+    QTest::newRow("torque negative within") << req(torque(1, -2.0, {})) << MF << LimitKind::None;
+    QTest::newRow("torque over soft") << req(torque(1, 2.5, {})) << MF << LimitKind::SoftTorque;
+    QTest::newRow("torque over series")
+        << req(torque(1, -10.0, {})) << MF << LimitKind::SeriesCurrent;
     QTest::newRow("torque unknown series")
-        << req(torque(1, 0.1)) << unknown << LimitKind::UnknownSeries;
-    QTest::newRow("torque on MS") << req(torque(1, 0.1)) << MS << LimitKind::Unsupported;
+        << req(torque(1, 0.1, {})) << unknown << LimitKind::UnknownSeries;
+    QTest::newRow("torque on MS") << req(torque(1, 0.1, {})) << MS << LimitKind::Unsupported;
+    // A V2.35 MF drive's torque is checked at its own scale (33/4096 A per LSB): 2.2 A is
+    // 273 LSB, which the V2.3 scale would read as 4.37 A.
+    const protocol::DecodeContext v235Mf{Series::MF, protocol::Generation::V2_35};
+    QTest::newRow("torque V2.35 MF within") << req(torque(1, 2.2, v235Mf)) << MF << LimitKind::None;
+    QTest::newRow("torque V2.35 MF over soft")
+        << req(torque(1, -2.3, v235Mf)) << MF << LimitKind::SoftTorque;
     QTest::newRow("open loop on MF") << req(openLoop(1, 10)) << MF << LimitKind::Unsupported;
     QTest::newRow("open loop within") << req(openLoop(1, -200)) << MS << LimitKind::None;
     QTest::newRow("open loop over") << req(openLoop(1, 201)) << MS << LimitKind::SoftPower;

@@ -1,6 +1,8 @@
 // The conversion every motion request passes before it is sent (lkstudio and lkctl): position
 // moves always carry a max speed, targets start where the drive is.
 
+#include "SafetyTestUtil.h"
+
 #include <protocol/RequestBuilder.h>
 #include <safety/MotionPlanner.h>
 #include <text/VerdictText.h>
@@ -8,19 +10,13 @@
 #include <QtTest/QtTest>
 
 using namespace lk;
+using lk::test::req;
 using protocol::Command;
 using protocol::Series;
 using safety::LimitKind;
 using safety::SpeedBound;
 
 namespace {
-protocol::Request req(const protocol::BuildResult &r)
-{
-    if (!r.ok())
-        qFatal("test request did not build: %s", qPrintable(r.error.message()));
-    return *r.request;
-}
-
 safety::SoftLimits limits720()
 {
     safety::SoftLimits l = safety::SoftLimits::defaults(Series::MF);
@@ -214,7 +210,7 @@ void tst_MotionPlanner::speedAndTorqueStayBounded()
     QVERIFY(p.allowed());
     QCOMPARE(p.bound, SpeedBound::Command);
     QCOMPARE(p.request->command, Command::Speed);
-    p = safety::MotionPlanner::plan(req(protocol::build::torque(1, 5)), Series::MF, limits720(),
+    p = safety::MotionPlanner::plan(req(protocol::build::torque(1, 5, {})), Series::MF, limits720(),
                                     {});
     QCOMPARE(p.verdict.kind, LimitKind::SoftTorque);
 }

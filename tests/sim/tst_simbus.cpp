@@ -156,12 +156,12 @@ void tst_SimBus::unsupportedCommandSilence_data()
     QTest::addColumn<bool>("answered");
     // Bus 1:MF 2:MS 3:MG 4:MH.
     QTest::newRow("MS open_loop") << 2 << encode(build::openLoop(2, 100)) << true;
-    QTest::newRow("MS torque") << 2 << encode(build::torque(2, 1.0)) << false;
+    QTest::newRow("MS torque") << 2 << encode(build::torque(2, 1.0, {})) << false;
     QTest::newRow("MS read_state3") << 2 << encode(build::plain(Command::ReadState3, 2)) << false;
     QTest::newRow("MF open_loop") << 1 << encode(build::openLoop(1, 100)) << false;
     QTest::newRow("MG open_loop") << 3 << encode(build::openLoop(3, 100)) << false;
     QTest::newRow("MH open_loop") << 4 << encode(build::openLoop(4, 100)) << false;
-    QTest::newRow("MF torque") << 1 << encode(build::torque(1, 1.0)) << true;
+    QTest::newRow("MF torque") << 1 << encode(build::torque(1, 1.0, {})) << true;
     QTest::newRow("MH read_state3") << 4 << encode(build::plain(Command::ReadState3, 4)) << true;
     QTest::newRow("MS speed") << 2 << encode(build::speed(2, 10.0)) << true;
 }

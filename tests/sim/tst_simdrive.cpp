@@ -236,7 +236,7 @@ void tst_SimDrive::torqueNotLimitedByDrive()
     SimDrive d = makeDrive(Series::MF);
     d.setRotorLocked(true);
     const double max = d.limits().maxCurrentA; // 9 A
-    send(d, build::torque(kId, max * 1.5));
+    send(d, build::torque(kId, max * 1.5, {}));
     d.advance(0.05);
     QVERIFY2(d.iqA() > max * 1.4, qPrintable(QString::number(d.iqA())));
     const auto s2 = readBack<protocol::State2>(d, Command::ReadState2);
@@ -290,7 +290,7 @@ void tst_SimDrive::unsupportedCommandsSilent()
     QFETCH(bool, answers);
     SimDrive d = makeDrive(series);
     const protocol::BuildResult r = which == 0   ? build::openLoop(kId, 200)
-                                    : which == 1 ? build::torque(kId, 1.0)
+                                    : which == 1 ? build::torque(kId, 1.0, {})
                                                  : build::plain(Command::ReadState3, kId);
     QCOMPARE(d.handle(req(r)).has_value(), answers);
     if (!answers)

@@ -41,14 +41,14 @@ void tst_SimDriveState::temperatureRisesWithCurrent()
     SimDrive d = makeDrive(Series::MF);
     d.setRotorLocked(true);
     QCOMPARE(qRound(d.temperatureC()), 25);
-    send(d, build::torque(kId, 3.0));
+    send(d, build::torque(kId, 3.0, {}));
     d.advance(2.0);
     const double lowCurrent = d.temperatureC() - 25.0;
     QVERIFY(lowCurrent > 0.1);
 
     SimDrive h = makeDrive(Series::MF);
     h.setRotorLocked(true);
-    send(h, build::torque(kId, 6.0));
+    send(h, build::torque(kId, 6.0, {}));
     h.advance(2.0);
     const double highCurrent = h.temperatureC() - 25.0;
     // Heating goes with current squared: twice the current, about four times the rise.
@@ -68,7 +68,7 @@ void tst_SimDriveState::overTemperatureProtection()
 {
     SimDrive d = makeDrive(Series::MF);
     d.setRotorLocked(true);
-    send(d, build::torque(kId, 9.0));
+    send(d, build::torque(kId, 9.0, {}));
     const double t = runUntil(
         d, 120.0, [&] { return d.errorState() != 0; }, 0.05);
     QVERIFY(t < 120.0);
@@ -83,7 +83,7 @@ void tst_SimDriveState::overTemperatureProtection()
     // Still hot: 0x9B cannot clear it, and motion commands are answered but not run.
     auto cleared = readBack<protocol::State1>(d, Command::ClearErrors);
     QCOMPARE(cleared.errorState, quint8(0x08));
-    QVERIFY(send(d, build::torque(kId, 1.0)));
+    QVERIFY(send(d, build::torque(kId, 1.0, {})));
     QCOMPARE(d.runState(), SimDrive::RunState::Off);
 
     runUntil(
@@ -91,7 +91,7 @@ void tst_SimDriveState::overTemperatureProtection()
     QCOMPARE(d.errorState(), quint8(0x08)); // latched until cleared
     cleared = readBack<protocol::State1>(d, Command::ClearErrors);
     QCOMPARE(cleared.errorState, quint8(0));
-    send(d, build::torque(kId, 1.0));
+    send(d, build::torque(kId, 1.0, {}));
     QCOMPARE(d.runState(), SimDrive::RunState::Running);
 }
 

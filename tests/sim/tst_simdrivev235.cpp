@@ -97,9 +97,10 @@ void tst_SimDriveV235::state1HasV235Layout()
     const auto back = protocol::decodeReply(protocol::Frame{0x9A, 1, reply->toFrame().data}, ctx);
     const auto s = std::get<protocol::State1>(back.reply->payload);
     QCOMPARE(s.voltageV(), d.busVoltage());
-    QCOMPARE(*s.motorOn(), false);
+    QCOMPARE(*s.motorOn(), true); // a real drive powers up with its motor on
+    plain(d, Command::MotorOff);
+    QCOMPARE(*readBack<protocol::State1>(d, Command::ReadState1).motorOn(), false);
     plain(d, Command::MotorRun);
-    QVERIFY(send(d, protocol::build::speed(kDriveId, 90)));
     QCOMPARE(*readBack<protocol::State1>(d, Command::ReadState1).motorOn(), true);
 }
 
@@ -159,6 +160,8 @@ void tst_SimDriveV235::brakeStateRemembered()
 {
     sim::SimDrive d = makeV235();
     auto r = send(d, protocol::build::brake(kDriveId, protocol::BrakeAction::Read));
+    QVERIFY(std::get<protocol::BrakeState>(r->payload).released()); // released at power-up
+    r = send(d, protocol::build::brake(kDriveId, protocol::BrakeAction::Engage));
     QVERIFY(!std::get<protocol::BrakeState>(r->payload).released());
     r = send(d, protocol::build::brake(kDriveId, protocol::BrakeAction::Release));
     QVERIFY(std::get<protocol::BrakeState>(r->payload).released());

@@ -19,11 +19,6 @@ namespace {
 using protocol::BrakeAction;
 using protocol::Command;
 namespace build = protocol::build;
-
-template <typename T> const T *payload(const bus::RequestResult &r)
-{
-    return r.ok() && r.reply ? std::get_if<T>(&r.reply->payload) : nullptr;
-}
 } // namespace
 
 BrakePanel::BrakePanel(QWidget *parent) : QGroupBox(tr("Brake (0x8C)"), parent)
@@ -137,6 +132,7 @@ void BrakePanel::showState(const protocol::BrakeState &state)
 {
     m_state = state;
     m_stateLabel->setText(tr("Brake state: %1.").arg(stateText(state)));
+    emit stateRead(state);
 }
 
 void BrakePanel::readState()
@@ -151,7 +147,7 @@ void BrakePanel::readState()
             if (id != m_id)
                 return;
             setBusy(false);
-            if (const auto *s = payload<protocol::BrakeState>(r)) {
+            if (const auto *s = replyPayload<protocol::BrakeState>(r)) {
                 showState(*s);
                 setStatus(tr("Read the brake of drive %1: %2.").arg(id).arg(stateText(*s)));
             } else {
@@ -204,7 +200,7 @@ void BrakePanel::release()
 
 void BrakePanel::releaseAfterMotorState(int id, const bus::RequestResult &state)
 {
-    const auto *s = payload<protocol::State1>(state);
+    const auto *s = replyPayload<protocol::State1>(state);
     if (!s) {
         setStatus(tr("Refused: could not read whether the motor is on, so the brake was not "
                      "released. Nothing sent. %1")
@@ -253,7 +249,7 @@ void BrakePanel::sendAction(int id, BrakeAction action)
         [this, id, what](const bus::RequestResult &r) {
             if (id != m_id)
                 return;
-            const auto *s = payload<protocol::BrakeState>(r);
+            const auto *s = replyPayload<protocol::BrakeState>(r);
             const QString answered =
                 s ? tr("Sent %1 to drive %2; it answered: %3.").arg(what).arg(id).arg(stateText(*s))
                   : tr("Sent %1 to drive %2; %3").arg(what).arg(id).arg(DriveText::failure(r));
@@ -268,7 +264,7 @@ void BrakePanel::sendAction(int id, BrakeAction action)
                     if (id != m_id)
                         return;
                     setBusy(false);
-                    const auto *b = payload<protocol::BrakeState>(back);
+                    const auto *b = replyPayload<protocol::BrakeState>(back);
                     if (b)
                         showState(*b);
                     setStatus(

@@ -46,6 +46,8 @@ public:
 signals:
     /// A brake change was answered (`ok`) or failed; the read-back follows.
     void changeFinished(bool ok);
+    /// The drive told its brake state (a read, a change's answer or its read-back).
+    void stateRead(const lk::protocol::BrakeState &state);
 
 private:
     bool usable() const;

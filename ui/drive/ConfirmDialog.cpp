@@ -69,6 +69,19 @@ bool ConfirmDialog::ask(QWidget *parent, const ConfirmRequest &request)
     return dialog.exec() == QDialog::Accepted;
 }
 
+bool ConfirmDialog::askUnchanged(QWidget *parent, const ConfirmRequest &request,
+                                 const std::function<bool()> &unchanged, QString *why,
+                                 bool *changed)
+{
+    const bool yes = ask(parent, request);
+    *changed = yes && !unchanged();
+    if (*changed)
+        *why = tr("The drive or the connection changed: nothing was sent.");
+    else if (!yes)
+        *why = tr("Cancelled: nothing was sent.");
+    return yes && !*changed;
+}
+
 void ConfirmDialog::setPolicy(Policy policy)
 {
     policySlot() = std::move(policy);

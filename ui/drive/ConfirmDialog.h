@@ -30,6 +30,13 @@ public:
     /// Shows the dialog modally (or asks the installed policy) and returns the answer.
     static bool ask(QWidget *parent, const ConfirmRequest &request);
 
+    /// ask(), for an action whose target may change while the dialog is open (its event loop
+    /// runs): true to go ahead only when the answer was yes and `unchanged()` still holds.
+    /// Otherwise `why` gets the sentence to show ("Cancelled: nothing was sent." or that the
+    /// drive or connection changed) and `changed` whether it was the latter (an error).
+    static bool askUnchanged(QWidget *parent, const ConfirmRequest &request,
+                             const std::function<bool()> &unchanged, QString *why, bool *changed);
+
     /// Answer every question with `policy` instead of a dialog (tests); empty: ask the user.
     static void setPolicy(Policy policy);
 

@@ -245,6 +245,7 @@ QWidget *ControlModePanel::pageIncrement()
 void ControlModePanel::setSeries(std::optional<protocol::Series> series)
 {
     const ControlMode previous = m_offered.isEmpty() ? ControlMode::Speed : mode();
+    m_series = series;
     m_offered.clear();
     for (ControlMode m : kAllModes) {
         const protocol::Command c = commandOf(m);
@@ -388,7 +389,8 @@ protocol::BuildResult ControlModePanel::buildRequest(int id) const
     case ControlMode::OpenLoop:
         return build::openLoop(id, m_power->value());
     case ControlMode::Torque:
-        return build::torque(id, m_torque->value());
+        return build::torque(id, m_torque->value(),
+                             {m_series.value_or(protocol::Series::MF), m_generation});
     case ControlMode::Speed:
         return build::speed(id, toDps(m_speed->value()));
     case ControlMode::MultiPosition: {

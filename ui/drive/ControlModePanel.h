@@ -40,6 +40,9 @@ public:
 
     /// Offers the modes of the series; torque and open loop need a known series.
     void setSeries(std::optional<protocol::Series> series);
+    /// The drive's protocol generation: a torque is built at its scale (V2.35 MF and MG differ
+    /// from V2.3).
+    void setGeneration(protocol::Generation generation) { m_generation = generation; }
     QVector<ControlMode> offeredModes() const;
     bool isOffered(ControlMode mode) const;
     /// Shows the page of `mode`; false (nothing changes) when it is not offered.
@@ -102,6 +105,8 @@ private:
     QComboBox *m_unit;
     QStackedWidget *m_pages;
     QVector<ControlMode> m_offered;
+    std::optional<protocol::Series> m_series;
+    protocol::Generation m_generation = protocol::Generation::V2_3;
     QSpinBox *m_power = nullptr;
     QDoubleSpinBox *m_torque = nullptr;
     QDoubleSpinBox *m_speed = nullptr;

@@ -1,8 +1,10 @@
 #include "ControlView.h"
 
 #include "BrakePanel.h"
+#include "ControlCommandBox.h"
+#include "ControlLimits.h"
 #include "ControlModePanel.h"
-#include "DriveSettingsStore.h"
+#include "DriveStateCheck.h"
 #include "DriveText.h"
 #include "JogKeys.h"
 #include "JogPanel.h"
@@ -16,10 +18,8 @@
 #include <panels/StatusColors.h>
 #include <protocol/RequestBuilder.h>
 
-#include <QtWidgets/QGroupBox>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
-#include <QtWidgets/QPushButton>
 #include <QtWidgets/QVBoxLayout>
 
 namespace lk::ui {
@@ -31,9 +31,13 @@ namespace build = protocol::build;
 } // namespace
 
 ControlView::ControlView(QWidget *parent)
-    : DriveView(parent), m_ownStore(std::make_unique<MemoryDriveStore>()),
-      m_store(m_ownStore.get()), m_generator(new SetpointGenerator(this))
+    : DriveView(parent), m_generator(new SetpointGenerator(this))
 {
+    const auto reader = [this](const protocol::Request &request, RequestTracker::Callback done) {
+        return tracker()->send(request, std::move(done));
+    };
+    m_limitSet = new ControlLimits(reader, this);
+    m_driveState = new DriveStateCheck(reader, this);
     setObjectName(QStringLiteral("control"));
     setFocusPolicy(Qt::StrongFocus);
     m_title = new QLabel(this);
@@ -41,10 +45,6 @@ ControlView::ControlView(QWidget *parent)
     big.setPointSizeF(big.pointSizeF() * 1.2);
     big.setBold(true);
     m_title->setFont(big);
-    m_selection = new QLabel(this);
-    m_selection->setObjectName(QStringLiteral("selectionNote"));
-    m_selection->setWordWrap(true);
-    m_selection->hide();
     m_readout = new QLabel(this);
     m_readout->setObjectName(QStringLiteral("readout"));
     m_status = new QLabel(this);
@@ -61,10 +61,9 @@ ControlView::ControlView(QWidget *parent)
 
     auto *left = new QVBoxLayout;
     left->addWidget(m_title);
-    left->addWidget(m_selection);
-    left->addWidget(buildCommandBox());
-    left->addWidget(buildRunButtons());
-    applyPaletteStyles();
+    m_commandBox = new ControlCommandBox(this);
+    m_modes = m_commandBox->modePanel();
+    left->addWidget(m_commandBox);
     left->addWidget(m_jog);
     left->addWidget(m_readout);
     left->addWidget(m_status);
@@ -97,51 +96,12 @@ ControlView::~ControlView()
     delete m_keys; // off the application's filters before this view's members go
 }
 
-QWidget *ControlView::buildCommandBox()
-{
-    auto *box = new QGroupBox(tr("Command"), this);
-    m_modes = new ControlModePanel(box);
-    m_send = new QPushButton(tr("Send"), box);
-    m_send->setObjectName(QStringLiteral("send"));
-    m_send->setToolTip(tr("Checked against the series and your soft limits before sending"));
-    auto *row = new QHBoxLayout;
-    row->addStretch();
-    row->addWidget(m_send);
-    auto *layout = new QVBoxLayout(box);
-    layout->addWidget(m_modes);
-    layout->addLayout(row);
-    return box;
-}
-
-QWidget *ControlView::buildRunButtons()
-{
-    auto *w = new QWidget(this);
-    auto make = [w](const QString &name, const QString &text, const QString &tip) {
-        auto *b = new QPushButton(text, w);
-        b->setObjectName(name);
-        b->setToolTip(tip);
-        return b;
-    };
-    m_off = make(QStringLiteral("motorOff"), tr("Motor Off"),
-                 tr("0x80: output off, the stored command is cleared"));
-    m_stop = make(QStringLiteral("motorStop"), tr("Stop"),
-                  tr("0x81: output off, the stored command is kept for Run"));
-    m_run = make(QStringLiteral("motorRun"), tr("Run"), tr("0x88: resume after Stop"));
-    auto *row = new QHBoxLayout(w);
-    row->setContentsMargins(0, 0, 0, 0);
-    row->addWidget(m_off);
-    row->addWidget(m_stop);
-    row->addWidget(m_run);
-    return w;
-}
-
 void ControlView::wire()
 {
-    connect(m_send, &QPushButton::clicked, this, [this] { sendCommand(); });
-    connect(m_modes, &ControlModePanel::sendRequested, this, [this] { sendCommand(); });
-    connect(m_off, &QPushButton::clicked, this, &ControlView::motorOff);
-    connect(m_stop, &QPushButton::clicked, this, &ControlView::motorStop);
-    connect(m_run, &QPushButton::clicked, this, &ControlView::motorRun);
+    connect(m_commandBox, &ControlCommandBox::sendRequested, this, [this] { sendCommand(); });
+    connect(m_commandBox, &ControlCommandBox::motorOffRequested, this, &ControlView::motorOff);
+    connect(m_commandBox, &ControlCommandBox::motorStopRequested, this, &ControlView::motorStop);
+    connect(m_commandBox, &ControlCommandBox::motorRunRequested, this, &ControlView::motorRun);
     connect(m_jog, &JogPanel::holdStarted, this, &ControlView::startJog);
     connect(m_jog, &JogPanel::holdEnded, this, &ControlView::endJog);
     connect(m_jog, &JogPanel::stepRequested, this, &ControlView::step);
@@ -149,28 +109,18 @@ void ControlView::wire()
     connect(m_setpointPanel, &SetpointPanel::startRequested, this, &ControlView::startGenerator);
     connect(m_setpointPanel, &SetpointPanel::stopRequested, this, &ControlView::stopGenerator);
     // The plot follows what the command moves: angle for positions, iq for torque.
-    connect(m_modes, &ControlModePanel::modeChanged, this, [this](ControlMode mode) {
-        switch (mode) {
-        case ControlMode::OpenLoop:
-        case ControlMode::Torque:
-            m_plot->setLoop(TunedLoop::Current);
-            break;
-        case ControlMode::Speed:
-            m_plot->setLoop(TunedLoop::Speed);
-            break;
-        default:
-            m_plot->setLoop(TunedLoop::Angle);
-            break;
-        }
-    });
-    connect(m_generator, &SetpointGenerator::started, this,
-            [this] { m_setpointPanel->setRunning(true); });
-    connect(m_generator, &SetpointGenerator::stopped, this,
-            [this](const QString &reason) { m_setpointPanel->setRunning(false, reason); });
+    connect(m_commandBox, &ControlCommandBox::loopChanged, m_plot, &LoopPlot::setLoop);
+    m_setpointPanel->follow(m_generator);
     // The stream refused a setpoint on the bus thread: said here as any refused command.
     connect(m_generator, &SetpointGenerator::refused, this,
             [this](const MotionOutcome &out) { report(out, {}); });
     connect(m_generator, &SetpointGenerator::setpointFailed, this, &ControlView::onMotionResult);
+    connect(m_driveState, &DriveStateCheck::changed, this, &ControlView::showDriveState);
+    connect(m_brake, &BrakePanel::stateRead, m_driveState, &DriveStateCheck::noteBrake);
+    connect(m_limitSet, &ControlLimits::driveLimitsChanged, this, [this] {
+        showDriveState();
+        keepGeneratorWithinLimits();
+    });
 }
 
 void ControlView::setTelemetryStore(TelemetryStore *store)
@@ -180,58 +130,38 @@ void ControlView::setTelemetryStore(TelemetryStore *store)
 
 void ControlView::setSettingsStore(DriveSettingsStore *store)
 {
-    m_store = store ? store : m_ownStore.get();
-    m_limitsKey.clear(); // nothing in force came from this store yet
+    m_limitSet->setStore(store);
     loadLimits();
 }
 
 void ControlView::loadLimits()
 {
-    const auto s = series();
-    const safety::SoftLimits defaults = safety::SoftLimits::defaults(s);
-    const QString key = hasDrive() ? DriveSettingsStore::driveKey(driveId(), motor()) : QString();
-    QString error;
-    const std::optional<safety::SoftLimits> stored =
-        hasDrive() ? m_store->softLimits(key, defaults, &error) : std::nullopt;
-    if (error.isEmpty()) {
-        m_limits = stored.value_or(defaults);
-        m_limitsError.clear();
-    } else if (key == m_limitsKey && m_limitsError.isEmpty()) {
-        // Damaged under our feet: the limits in force stay, never the series defaults.
-        setStatus(tr("The soft limits stored for %1 are damaged (%2); the limits in force "
-                     "stay. Apply them to store them again.")
-                      .arg(driveTitle(), error),
-                  true);
-    } else {
-        // Nothing to keep for this drive: show the defaults as a proposal, send nothing until
-        // the user applies limits.
-        m_limits = defaults;
-        m_limitsError = tr("Refused: the soft limits stored for %1 are damaged (%2). Check "
-                           "and apply the limits first; nothing sent.")
-                            .arg(driveTitle(), error);
-    }
-    m_limitsKey = key;
-    m_limitsEditor->setLimits(m_limits, s);
-    m_limitsEditor->setProblem(m_limitsError);
+    const QString broke = m_limitSet->load(driveId(), motor(), series(), driveTitle());
+    if (!broke.isEmpty())
+        setStatus(broke, true);
+    m_limitsEditor->setLimits(m_limitSet->soft(), series());
+    m_limitsEditor->setProblem(m_limitSet->problem());
+}
+
+safety::SoftLimits ControlView::softLimits() const
+{
+    return m_limitSet->soft();
 }
 
 std::optional<safety::SoftLimits> ControlView::limitsInForce(QString *why) const
 {
-    if (!m_limitsError.isEmpty()) {
+    if (!m_limitSet->problem().isEmpty()) {
         if (why)
-            *why = m_limitsError;
+            *why = m_limitSet->problem();
         return std::nullopt;
     }
-    return m_limits;
+    return m_limitSet->inForce();
 }
 
 void ControlView::setSoftLimits(const safety::SoftLimits &limits)
 {
-    m_limits = limits;
-    m_limitsError.clear();
+    m_limitSet->apply(driveId(), motor(), limits);
     m_limitsEditor->setProblem(QString());
-    if (hasDrive())
-        m_store->setSoftLimits(DriveSettingsStore::driveKey(driveId(), motor()), limits);
     if (!(m_limitsEditor->limits() == limits))
         m_limitsEditor->setLimits(limits, series());
     setStatus(tr("Soft limits of %1 applied and saved.").arg(driveTitle()));
@@ -245,7 +175,8 @@ void ControlView::keepGeneratorWithinLimits()
     if (!m_generator->isRunning())
         return;
     const bus::SetpointStreamPlan &plan = m_generator->plan();
-    if (plan.limits == m_limits && plan.series == series() && m_limitsError.isEmpty())
+    if (plan.limits == m_limitSet->inForce() && plan.series == series() &&
+        m_limitSet->problem().isEmpty())
         return;
     m_generator->stop(tr("Stopped: the soft limits or the series changed."));
     if (m_motionId == driveId())
@@ -260,12 +191,7 @@ void ControlView::setSelectedDrives(const QVector<int> &ids)
 
 void ControlView::refreshSelectionNote()
 {
-    const bool several = m_selected.size() > 1 && hasDrive();
-    m_selection->setVisible(several);
-    if (several)
-        m_selection->setText(tr("%n drives are selected: every command here acts on %1 only.",
-                                nullptr, int(m_selected.size()))
-                                 .arg(driveTitle()));
+    m_commandBox->setSelection(hasDrive() ? int(m_selected.size()) : 0, driveTitle());
 }
 
 safety::DrivePosition ControlView::drivePosition() const
@@ -294,13 +220,10 @@ void ControlView::readAngle(std::function<void()> then)
             return;
         }
         // What waited for the angle is dropped, and says so.
-        MotionOutcome none;
-        none.refusal = a ? tr("Refused: the drive changed while its angle was read. Nothing "
-                              "sent.")
-                         : tr("Refused: could not read the drive's current angle, so nothing "
-                              "was sent. %1")
-                               .arg(DriveText::failure(r));
-        report(none, {});
+        refuse(a ? tr("Refused: the drive changed while its angle was read. Nothing sent.")
+                 : tr("Refused: could not read the drive's current angle, so nothing was sent. "
+                      "%1")
+                       .arg(DriveText::failure(r)));
     };
     tracker()->send(*build::plain(Command::ReadMultiTurn, id).request, done);
 }
@@ -339,8 +262,10 @@ void ControlView::contextChanged(Changes changes)
         const int previous = m_motionId;
         haltLocalMotion(tr("Stopped: the drive or the connection changed."));
         m_generator->setSession(session());
-        if (moving && !(changes & Change::Session))
-            stopMotionOf(previous);
+        // The drive is no longer selected: reach it directly, ahead of queued work.
+        if (moving && !(changes & Change::Session) && isConnected() && previous > 0)
+            session()->send(*build::plain(Command::MotorStop, previous).request,
+                            bus::Priority::Emergency);
         m_readout->clear();
         // Nothing typed for one drive goes to another, and no angle is assumed.
         if (changes & (Change::Session | Change::Drive))
@@ -352,11 +277,14 @@ void ControlView::contextChanged(Changes changes)
     }
     if (changes & (Change::Session | Change::Drive | Change::MotorInfo)) {
         m_modes->setSeries(series());
+        m_modes->setGeneration(motor().generation);
         m_setpointPanel->setSeries(series());
         m_plot->setDrive(driveId(), series() == protocol::Series::MS);
         loadLimits();
         keepGeneratorWithinLimits();
     }
+    if (changes & (Change::Session | Change::Drive | Change::MotorInfo | Change::Connection))
+        readDriveState();
     m_title->setText(driveTitle());
     refreshSelectionNote();
     const QString offline = tr("Disconnected: nothing can be sent.");
@@ -367,13 +295,27 @@ void ControlView::contextChanged(Changes changes)
     refreshEnabled();
 }
 
+void ControlView::readDriveState()
+{
+    // A V2.35 drive tells whether it is on, its brake and its own limits: read them now.
+    m_driveState->setDrive(driveId(), motor());
+    m_commandBox->setGeneration(motor().generation);
+    if (!canSend())
+        return;
+    m_driveState->refresh();
+    m_limitSet->readDriveLimits(driveId(), motor(), series());
+}
+
+void ControlView::showDriveState()
+{
+    m_commandBox->showDriveState(*m_driveState, m_limitSet->driveText());
+}
+
 void ControlView::refreshEnabled()
 {
     const bool can = canSend();
-    for (QWidget *w : {static_cast<QWidget *>(m_send), static_cast<QWidget *>(m_off),
-                       static_cast<QWidget *>(m_stop), static_cast<QWidget *>(m_run),
-                       static_cast<QWidget *>(m_jog)})
-        w->setEnabled(can);
+    m_commandBox->setSendEnabled(can);
+    m_jog->setEnabled(can);
     m_setpointPanel->setStartEnabled(can);
     m_limitsEditor->setEnabled(hasDrive());
     m_modes->setEnabled(hasDrive());
@@ -403,38 +345,64 @@ void ControlView::report(const MotionOutcome &outcome, const QString &sentText)
     emit commandRefused(outcome.refusal);
 }
 
+MotionOutcome ControlView::refuse(const QString &why, safety::LimitKind limit)
+{
+    MotionOutcome none;
+    none.refusal = why;
+    none.limit = limit;
+    report(none, {});
+    return none;
+}
+
+MotionOutcome ControlView::pendingOn(const QString &status)
+{
+    MotionOutcome pending;
+    pending.pending = true;
+    m_last = pending;
+    setStatus(status);
+    return pending;
+}
+
 MotionOutcome ControlView::sendMotion(const protocol::BuildResult &built)
 {
-    if (!canSend()) {
-        MotionOutcome none;
-        none.refusal = tr("Not connected or no drive selected: nothing sent.");
-        report(none, {});
-        return none;
+    if (!canSend())
+        return refuse(tr("Not connected or no drive selected: nothing sent."));
+    // V2.35: a drive that is off does not act on a control command (docs/V2.35.md s. 11), and
+    // it may have been switched off (or tripped) since it was last read: read it now.
+    if (built.ok() && m_driveState->gates(*built.request)) {
+        m_driveState->whenKnown(
+            [this, built] {
+                const QString off = m_driveState->refusal();
+                if (off.isEmpty())
+                    moveFromWhereTheDriveIs(built);
+                else
+                    refuse(off);
+            },
+            [this](const QString &why) { refuse(why); });
+        return pendingOn(
+            tr("Reading whether the motor of %1 is on before the command\u2026").arg(driveTitle()));
     }
+    return moveFromWhereTheDriveIs(built);
+}
+
+MotionOutcome ControlView::moveFromWhereTheDriveIs(const protocol::BuildResult &built)
+{
     // Targets start where the drive is: read its angle now rather than trust an old one.
-    if (built.ok() && safety::MotionPlanner::needsAngle(*built.request, m_limits)) {
-        MotionOutcome pending;
-        pending.pending = true;
-        m_last = pending;
-        setStatus(tr("Reading the drive's current angle before the move\u2026"));
+    if (built.ok() && safety::MotionPlanner::needsAngle(*built.request, m_limitSet->inForce())) {
         readAngle([this, built] { submitMotion(built); });
-        return pending;
+        return pendingOn(tr("Reading the drive's current angle before the move\u2026"));
     }
     return submitMotion(built);
 }
 
 MotionOutcome ControlView::submitMotion(const protocol::BuildResult &built)
 {
-    if (!m_limitsError.isEmpty()) {
-        MotionOutcome none;
-        none.refusal = m_limitsError;
-        report(none, {});
-        return none;
-    }
+    if (!m_limitSet->problem().isEmpty())
+        return refuse(m_limitSet->problem());
     const int id = driveId();
-    MotionOutcome out =
-        MotionGate::submit(*tracker(), built, series(), m_limits, drivePosition(),
-                           [this](const bus::RequestResult &r) { onMotionResult(r); });
+    MotionOutcome out = MotionGate::submit(
+        *tracker(), built, series(), m_limitSet->soft(), drivePosition(),
+        [this](const bus::RequestResult &r) { onMotionResult(r); }, m_limitSet->drive());
     QString sent;
     if (out.sent && out.bound.isEmpty())
         sent = tr("Sent %1 to drive %2.").arg(DriveText::command(out.request->command)).arg(id);
@@ -443,30 +411,32 @@ MotionOutcome ControlView::submitMotion(const protocol::BuildResult &built)
                    .arg(DriveText::command(out.request->command))
                    .arg(id)
                    .arg(out.bound);
+    // The brake holds the shaft whatever is sent: said with the command, not only beside it.
+    if (out.sent && m_driveState->gates(*out.request) && !m_driveState->warning().isEmpty())
+        sent += QLatin1Char(' ') + m_driveState->warning();
     report(out, sent);
     return out;
 }
 
 void ControlView::onMotionResult(const bus::RequestResult &result)
 {
+    if (result.ok() && result.request.command == Command::MotorRun)
+        m_driveState->refresh({}, true); // V2.35 Motor On: read what the drive says now
     if (result.ok())
         return;
     // The bus cancels queued motion on an emergency stop: nothing here may send more.
     if (result.status == bus::RequestStatus::Cancelled)
         haltLocalMotion(DriveText::stopReason(bus::SetpointStopReason::Cancelled));
-    setStatus(DriveText::failure(result), true);
+    setStatus(DriveText::motionFailure(result), true);
 }
 
 MotionOutcome ControlView::sendCommand()
 {
     if (m_modes->mode() == ControlMode::MultiPosition && !m_modes->hasMultiTarget()) {
-        MotionOutcome none;
-        none.limit = safety::LimitKind::AngleUnknown;
-        none.refusal = tr("Refused: the target starts at the drive's current angle, which is "
-                          "being read. Nothing sent.");
-        report(none, {});
         readAngle();
-        return none;
+        return refuse(tr("Refused: the target starts at the drive's current angle, which is "
+                         "being read. Nothing sent."),
+                      safety::LimitKind::AngleUnknown);
     }
     return sendMotion(m_modes->buildRequest(driveId()));
 }
@@ -485,6 +455,8 @@ void ControlView::sendRunState(Command command)
         [this](const bus::RequestResult &r) {
             if (!r.ok())
                 setStatus(DriveText::failure(r), true);
+            else
+                m_driveState->refresh({}, true); // V2.35: off now reads off
         },
         bus::Priority::Emergency);
     setStatus(tr("Sent %1 to drive %2.").arg(DriveText::command(command)).arg(driveId()));
@@ -505,13 +477,6 @@ void ControlView::motorStop()
 void ControlView::motorRun()
 {
     sendRunState(Command::MotorRun);
-}
-
-void ControlView::stopMotionOf(int id)
-{
-    // The drive is no longer selected: reach it directly, ahead of queued work.
-    if (session() && isConnected() && id > 0)
-        session()->send(*build::plain(Command::MotorStop, id).request, bus::Priority::Emergency);
 }
 
 void ControlView::startJog(int direction)
@@ -571,11 +536,13 @@ void ControlView::startGeneratorNow(const bus::SetpointWaveform::Settings &setti
     if (!canSend())
         return;
     endJog();
-    if (!m_limitsError.isEmpty()) {
-        MotionOutcome none;
-        none.refusal = m_limitsError;
-        report(none, {});
-        m_setpointPanel->setRunning(false, m_limitsError);
+    // Damaged limits, or a V2.35 drive that reads off (it would not act on a setpoint).
+    QString problem = m_limitSet->problem();
+    if (problem.isEmpty())
+        problem = m_driveState->refusal();
+    if (!problem.isEmpty()) {
+        refuse(problem);
+        m_setpointPanel->setRunning(false, problem);
         return;
     }
     m_motionId = driveId();
@@ -585,7 +552,7 @@ void ControlView::startGeneratorNow(const bus::SetpointWaveform::Settings &setti
     plan.id = driveId();
     plan.settings = settings;
     plan.series = series();
-    plan.limits = m_limits;
+    plan.limits = m_limitSet->inForce();
     plan.position = drivePosition();
     m_generator->start(plan);
 }
@@ -617,6 +584,7 @@ void ControlView::showDriveStopped(int id, const QString &why)
 
 void ControlView::onTelemetry(const bus::TelemetryBatch &batch)
 {
+    m_driveState->noteTelemetry(batch);
     for (const bus::TelemetrySample &sample : batch) {
         if (sample.id == driveId() && sample.has(bus::TelemetryField::MultiTurn))
             onAngle(sample.id, sample.multiTurnDeg);
@@ -632,21 +600,6 @@ void ControlView::onTelemetry(const bus::TelemetryBatch &batch)
         m_readout->setText(text);
         return;
     }
-}
-
-void ControlView::changeEvent(QEvent *event)
-{
-    DriveView::changeEvent(event);
-    // The palette (light/dark) changed while running: the styles derived from it follow. The
-    // sheets are set on children, so this does not loop.
-    if (event->type() == QEvent::PaletteChange)
-        applyPaletteStyles();
-}
-
-void ControlView::applyPaletteStyles()
-{
-    m_off->setStyleSheet(
-        StatusColors::textStyle(StatusColors::Role::Error, StatusColors::current(), true));
 }
 
 } // namespace lk::ui

@@ -10,14 +10,15 @@
 #include <safety/SoftLimits.h>
 
 #include <functional>
-#include <memory>
 
 class QLabel;
-class QPushButton;
 
 namespace lk::ui {
 
 class BrakePanel;
+class ControlCommandBox;
+class ControlLimits;
+class DriveStateCheck;
 class ControlModePanel;
 class DriveSettingsStore;
 class JogKeys;
@@ -50,9 +51,10 @@ public:
     void setTelemetryStore(TelemetryStore *store);
     /// Where soft limits persist, per drive (not owned; default: kept for this process).
     void setSettingsStore(DriveSettingsStore *store);
-    safety::SoftLimits softLimits() const { return m_limits; }
-    /// The limits every motion of the selected drive is bounded by, or nullopt with the
-    /// refusal (`why`) while the stored limits are damaged and none were applied.
+    safety::SoftLimits softLimits() const;
+    /// The limits every motion of the selected drive is bounded by (the soft limits, lowered
+    /// to the drive's own where a V2.35 drive's were read), or nullopt with the refusal
+    /// (`why`) while the stored limits are damaged and none were applied.
     std::optional<safety::SoftLimits> limitsInForce(QString *why) const;
     /// Applies and persists the drive's soft limits.
     void setSoftLimits(const safety::SoftLimits &limits);
@@ -60,8 +62,10 @@ public:
     /// Sends the command of the current mode and inputs through the gate.
     MotionOutcome sendCommand();
     /// Any motion request through the gate (builder error, MotionPlanner, then the bus). A
-    /// move that needs the drive's angle reads it (0x92) first: the outcome is then pending
-    /// and lastOutcome() tells the result once the read has answered.
+    /// move that needs the drive's angle reads it (0x92) first, and motion to a V2.35 drive
+    /// reads its motor state (0x9A) first: the outcome is then pending and lastOutcome()
+    /// tells the result once the reads have answered. A V2.35 drive that reads off is
+    /// refused (Motor On first, DriveStateCheck).
     MotionOutcome sendMotion(const protocol::BuildResult &built);
     /// The multi-turn angle last read from the drive (0x92 or telemetry); nullopt: not yet.
     std::optional<double> currentAngle() const { return m_angleDeg; }
@@ -69,7 +73,7 @@ public:
     void setSelectedDrives(const QVector<int> &ids);
     void motorOff();              ///< 0x80, ahead of queued work; halts generator and jog
     void motorStop();             ///< 0x81, ahead of queued work; halts generator and jog
-    void motorRun();              ///< 0x88 through the gate
+    void motorRun();              ///< 0x88 through the gate (V2.35: Motor On)
     void startJog(int direction); ///< speed command at the jog speed, sign = direction
     void endJog();                ///< speed 0 when a jog is running
     void step(int direction);     ///< one incremental move of the jog step
@@ -88,6 +92,8 @@ public:
     JogPanel *jogPanel() const { return m_jog; }
     SetpointPanel *setpointPanel() const { return m_setpointPanel; }
     BrakePanel *brakePanel() const { return m_brake; }
+    DriveStateCheck *driveState() const { return m_driveState; }
+    ControlLimits *limits() const { return m_limitSet; }
     SetpointGenerator *generator() const { return m_generator; }
     LoopPlot *plot() const { return m_plot; }
     bool isJogging() const { return m_jogging; }
@@ -100,14 +106,14 @@ signals:
 
 protected:
     void contextChanged(Changes changes) override;
-    void changeEvent(QEvent *event) override;
 
 private:
-    void applyPaletteStyles();
-    QWidget *buildCommandBox();
-    QWidget *buildRunButtons();
     void wire();
     void loadLimits();
+    void readDriveState();
+    void showDriveState();
+    /// sendMotion() once the motor state allows it: reads the angle first where needed.
+    MotionOutcome moveFromWhereTheDriveIs(const protocol::BuildResult &built);
     void startGeneratorNow(const bus::SetpointWaveform::Settings &settings);
     /// Stops the generator (and the drive) when the limits or series it runs under changed.
     void keepGeneratorWithinLimits();
@@ -118,20 +124,21 @@ private:
     void refreshSelectionNote();
     void onMotionResult(const bus::RequestResult &result);
     void sendRunState(protocol::Command command);
-    void stopMotionOf(int id);
     void onTelemetry(const bus::TelemetryBatch &batch);
     void report(const MotionOutcome &outcome, const QString &sentText);
+    /// Says why nothing was sent (as report()) and returns that outcome.
+    MotionOutcome refuse(const QString &why, safety::LimitKind limit = safety::LimitKind::None);
+    /// A motion that waits for a read: the outcome is pending, `status` says what is read.
+    MotionOutcome pendingOn(const QString &status);
     void setStatus(const QString &text, bool error = false);
     void refreshEnabled();
 
-    std::unique_ptr<DriveSettingsStore> m_ownStore;
-    DriveSettingsStore *m_store;
-    safety::SoftLimits m_limits;
-    QString m_limitsKey;   ///< the drive key m_limits belong to
-    QString m_limitsError; ///< the stored limits are damaged: motion is refused until applied
+    ControlLimits *m_limitSet;     ///< soft limits (stored per drive) and the drive's own
+    DriveStateCheck *m_driveState; ///< V2.35: motor on and brake before motion
     std::optional<double> m_angleDeg;
     QVector<int> m_selected;
-    ControlModePanel *m_modes = nullptr;
+    ControlCommandBox *m_commandBox = nullptr;
+    ControlModePanel *m_modes = nullptr; ///< the command box's
     SoftLimitsEditor *m_limitsEditor = nullptr;
     JogPanel *m_jog = nullptr;
     JogKeys *m_keys = nullptr; ///< the arrow keys as jog controls
@@ -140,13 +147,8 @@ private:
     SetpointGenerator *m_generator = nullptr;
     LoopPlot *m_plot = nullptr;
     QLabel *m_title = nullptr;
-    QLabel *m_selection = nullptr;
     QLabel *m_readout = nullptr;
     QLabel *m_status = nullptr;
-    QPushButton *m_send = nullptr;
-    QPushButton *m_off = nullptr;
-    QPushButton *m_stop = nullptr;
-    QPushButton *m_run = nullptr;
     QMetaObject::Connection m_telemetryConnection;
     QMetaObject::Connection m_stopConnection;
     MotionOutcome m_last;

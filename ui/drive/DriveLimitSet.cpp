@@ -1,5 +1,6 @@
 #include "DriveLimitSet.h"
 
+#include <protocol/ProtocolFields.h>
 #include <protocol/RequestBuilder.h>
 #include <protocol/Values.h>
 
@@ -9,6 +10,7 @@ namespace lk::ui {
 
 namespace {
 using protocol::ParamId;
+using protocol::ProtocolFields;
 
 constexpr qint64 kInt32Max = std::numeric_limits<qint32>::max();
 // The largest max angle (0.01 deg) an editor holds exactly (a double's 53-bit mantissa).
@@ -38,8 +40,12 @@ double shownValue(int field, qint64 raw)
 
 QVector<ParamField> DriveLimitSet::fields() const
 {
+    // The name of 0x99 for the series comes from the field table, as lkctl's does.
+    QString torqueName = ProtocolFields::paramLabelTranslated(
+        ParamId::MaxTorqueCurrent, m_power ? protocol::Series::MS : protocol::Series::MF);
+    torqueName[0] = torqueName[0].toUpper();
     ParamField torque{QStringLiteral("max_torque"),
-                      m_power ? tr("Max power (0x99)") : tr("Max torque current (0x99)"),
+                      tr("%1 (0x99)").arg(torqueName),
                       TunedLoop::Current,
                       0,
                       2048,

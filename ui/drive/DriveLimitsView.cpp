@@ -124,6 +124,7 @@ void DriveLimitsView::contextChanged(Changes changes)
         m_readComplete = false; // what was read belongs to one drive on one connection
         m_exchange->clear();
         m_table->setHolds(m_exchange->held());
+        m_firstRead.reset();
         m_table->setOriginal(std::nullopt);
         m_table->clearPending();
         m_mismatch->hide();
@@ -152,6 +153,10 @@ void DriveLimitsView::onReadDone(int id)
     m_readComplete = m_exchange->complete();
     const HeldValues held = m_exchange->held();
     m_table->setHolds(held);
+    if (m_readComplete && !m_firstRead) {
+        m_firstRead = ParamSetSpec::known(held);
+        m_table->setOriginal(m_firstRead);
+    }
     if (m_readComplete && (m_takePending || !m_table->pending()))
         m_table->setPending(*ParamSetSpec::known(held));
     else if (!m_readComplete)

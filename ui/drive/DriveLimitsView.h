@@ -69,6 +69,9 @@ private:
     bool m_readComplete = false;
     bool m_shownSupported = false; ///< isSupported() when the table was last reset
     bool m_takePending = true;
+    /// What the first complete read of this drive (on this connection) found: the table's
+    /// "First read" column.
+    std::optional<ParamValues> m_firstRead;
 };
 
 } // namespace lk::ui

@@ -1,6 +1,7 @@
 #include "DriveText.h"
 
 #include <protocol/Command.h>
+#include <safety/DriveLimits.h>
 #include <text/VerdictText.h>
 
 namespace lk::ui {
@@ -16,9 +17,25 @@ QString DriveText::fieldError(const protocol::FieldError &e)
     return tr("Refused, nothing sent: %1.").arg(e.message());
 }
 
+QString DriveText::motionFailure(const bus::RequestResult &r)
+{
+    const QString text = failure(r);
+    const bool wentOut = r.attempts > 0 && (r.status == bus::RequestStatus::Timeout ||
+                                            r.status == bus::RequestStatus::Error);
+    if (!wentOut || !protocol::CommandTable::info(r.request.command).movesMotor)
+        return text;
+    return text + QLatin1Char(' ') +
+           tr("It was sent, so drive %1 may have acted on it and may be moving: check it, or "
+              "stop it.")
+               .arg(r.request.id);
+}
+
 QString DriveText::refusal(const safety::Verdict &verdict, std::optional<protocol::Series> series)
 {
-    return tr("Refused: %1.").arg(text::VerdictText::verdict(verdict, series));
+    // A limit the drive holds itself (lower than the soft one) is named as the drive's.
+    return tr("Refused: %1.")
+        .arg(verdict.drivesOwn ? safety::DriveLimits::refusal(verdict)
+                               : text::VerdictText::verdict(verdict, series));
 }
 
 QString DriveText::setpointStop(const bus::SetpointStop &stop,

@@ -23,6 +23,10 @@ public:
     static QString fieldError(const protocol::FieldError &error);
     /// Why a request did not complete (timeout, disconnected, ...); empty when it did.
     static QString failure(const bus::RequestResult &result);
+    /// failure() of a command that can move a motor: when it went out but its reply was lost
+    /// or corrupt (fw 2.35 spoils ~1 % of 0xA4 checksums), the drive may have acted on it,
+    /// and the text says so.
+    static QString motionFailure(const bus::RequestResult &result);
     /// The safety gate's refusal, framed: "Refused: <which limit, both numbers>."
     static QString refusal(const safety::Verdict &verdict, std::optional<protocol::Series> series);
     /// Why a setpoint stream stopped; a refusal says which limit or field, like refusal().

@@ -7,6 +7,9 @@
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QVBoxLayout>
 
+#include <algorithm>
+#include <cmath>
+
 namespace lk::ui {
 
 namespace {
@@ -53,6 +56,22 @@ EncoderLiveBox::EncoderLiveBox(QWidget *parent)
     column->addWidget(legend);
 }
 
+bool EncoderLiveBox::anglesDisagree(const std::optional<protocol::EncoderReading> &encoder,
+                                    const std::optional<double> &singleTurnDeg,
+                                    const motor::EncoderResolution &resolution, double ratio)
+{
+    using Source = motor::EncoderResolution::Source;
+    // Both start at the encoder zero: without a gearbox they name the same angle of the rotor.
+    if (!encoder || !singleTurnDeg || ratio != 1.0)
+        return false;
+    const Source source = resolution.source();
+    if (source == Source::Name || source == Source::Generation || source == Source::User)
+        return false; // known: a difference is a zero moved since (0x95), not the resolution
+    const double deg = 360.0 * encoder->encoder / resolution.countsPerTurn();
+    const double apart = std::fmod(std::fabs(deg - *singleTurnDeg), 360.0);
+    return std::min(apart, 360.0 - apart) > kAgreeDeg;
+}
+
 void EncoderLiveBox::setValues(const std::optional<protocol::EncoderReading> &encoder,
                                const std::optional<double> &multiTurnDeg,
                                const std::optional<double> &singleTurnDeg,
@@ -60,17 +79,25 @@ void EncoderLiveBox::setValues(const std::optional<protocol::EncoderReading> &en
 {
     const QString none = QStringLiteral("\u2013");
     const int counts = resolution.countsPerTurn();
-    auto countText = [counts](int v) {
-        return tr("%1  (%2\u00b0)").arg(v).arg(360.0 * v / counts, 0, 'f', 2);
+    // Two angles for one shaft, one of them from a resolution only assumed: the encoder's
+    // degrees are left out rather than shown beside the single-turn angle they contradict.
+    const bool unsure = anglesDisagree(encoder, singleTurnDeg, resolution, ratio);
+    auto countText = [counts, unsure](int v) {
+        return unsure ? QString::number(v)
+                      : tr("%1  (%2\u00b0)").arg(v).arg(360.0 * v / counts, 0, 'f', 2);
     };
     auto degText = [](double deg) { return tr("%1\u00b0").arg(deg, 0, 'f', 2); };
     // The encoder reads as on the dashboard: value, counts per turn, and where the resolution
     // comes from.
-    m_encoder->setText(encoder
-                           ? tr("%1  (%2\u00b0)")
-                                 .arg(EncoderResolutions::readoutText(encoder->encoder, resolution))
-                                 .arg(360.0 * encoder->encoder / counts, 0, 'f', 2)
-                           : none);
+    const QString reading =
+        encoder ? EncoderResolutions::readoutText(encoder->encoder, resolution) : QString();
+    m_encoder->setText(
+        !encoder ? none
+        : unsure
+            ? tr("%1  (no angle: the single-turn angle disagrees, so the "
+                 "resolution is not known yet)")
+                  .arg(reading)
+            : tr("%1  (%2\u00b0)").arg(reading).arg(360.0 * encoder->encoder / counts, 0, 'f', 2));
     m_raw->setText(encoder ? countText(encoder->encoderRaw) : none);
     m_offset->setText(encoder ? countText(encoder->encoderOffset) : none);
     m_multi->setText(multiTurnDeg ? degText(*multiTurnDeg) : none);

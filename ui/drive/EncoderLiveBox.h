@@ -25,6 +25,14 @@ public:
                    const std::optional<double> &multiTurnDeg,
                    const std::optional<double> &singleTurnDeg,
                    const motor::EncoderResolution &resolution, double gearRatio);
+    /// How far (deg) the encoder's angle and the single-turn angle may differ and agree: the
+    /// two come from reads a poll round apart.
+    static constexpr double kAgreeDeg = 2.0;
+    /// True when the encoder's angle at `resolution` contradicts the single-turn angle while
+    /// the resolution is only assumed (series default, guess, data): it is then not shown.
+    static bool anglesDisagree(const std::optional<protocol::EncoderReading> &encoder,
+                               const std::optional<double> &singleTurnDeg,
+                               const motor::EncoderResolution &resolution, double gearRatio);
 
 private:
     QLabel *m_encoder;

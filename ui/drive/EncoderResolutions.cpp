@@ -41,8 +41,8 @@ motor::EncoderResolution &EncoderResolutions::entry(int id, const bus::KnownMoto
     auto it = m_byKey.find(key);
     if (it == m_byKey.end()) {
         const QString name = motor.model ? motor.model->motorName : QString();
-        auto r =
-            motor::EncoderResolution::fromModel(motor::ModelNameInfo::parse(name), motor.series);
+        auto r = motor::EncoderResolution::fromModel(motor::ModelNameInfo::parse(name),
+                                                     motor.series, motor.generation);
         if (const auto bits = m_store->encoderBits(key))
             r.setUserBits(*bits);
         it = m_byKey.insert(key, r);
@@ -109,6 +109,9 @@ QString EncoderResolutions::readoutText(int value, const motor::EncoderResolutio
     case Source::Name:
         how = tr("%1-bit, from the model name").arg(bits);
         break;
+    case Source::Generation:
+        how = tr("%1-bit, protocol V2.35").arg(bits);
+        break;
     case Source::SeriesDefault:
         how = tr("%1-bit, series default").arg(bits);
         break;
@@ -134,6 +137,11 @@ QString EncoderResolutions::sourceText(const motor::EncoderResolution &resolutio
     switch (resolution.source()) {
     case Source::Name:
         text = tr("from the model name \"%1\"").arg(motorName);
+        break;
+    case Source::Generation:
+        text = tr("what protocol V2.35 documents for %1 drives (a real MS4015 on firmware 2.35 "
+                  "reports 16 bits)")
+                   .arg(series ? protocol::seriesName(*series) : QString());
         break;
     case Source::SeriesDefault:
         text = series ? tr("the %1 series default").arg(protocol::seriesName(*series))

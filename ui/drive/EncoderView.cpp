@@ -5,6 +5,7 @@
 #include "DriveText.h"
 #include "EncoderLiveBox.h"
 #include "EncoderResolutions.h"
+#include "EncoderZeroTools.h"
 #include "GenerationNote.h"
 #include "RequestTracker.h"
 
@@ -43,11 +44,6 @@ QLabel *note(QWidget *parent)
     l->setWordWrap(true);
     return l;
 }
-
-template <typename T> const T *payload(const bus::RequestResult &r)
-{
-    return r.ok() && r.reply ? std::get_if<T>(&r.reply->payload) : nullptr;
-}
 } // namespace
 
 const QList<int> &EncoderView::resolutions()
@@ -84,7 +80,8 @@ EncoderView::EncoderView(QWidget *parent)
     logLayout->addWidget(m_log);
     auto *right = new QVBoxLayout;
     right->addWidget(buildOffsetBox());
-    right->addWidget(buildZeroBox());
+    m_zero = new EncoderZeroTools(this);
+    right->addWidget(m_zero);
     right->addWidget(m_status);
     right->addWidget(logBox, 1);
     auto *layout = new QHBoxLayout(this);
@@ -92,6 +89,7 @@ EncoderView::EncoderView(QWidget *parent)
     layout->addLayout(right, 1);
 
     connect(tracker(), &RequestTracker::pendingChanged, this, &EncoderView::refreshEnabled);
+    wireZeroTools();
     setEncoderResolutions(nullptr);
     contextChanged(Change::Session | Change::Drive);
 }
@@ -159,34 +157,41 @@ QWidget *EncoderView::buildOffsetBox()
     return box;
 }
 
-QWidget *EncoderView::buildZeroBox()
+void EncoderView::wireZeroTools()
 {
-    auto *box = new QGroupBox(tr("Zero"), this);
-    m_clearAngle = new QPushButton(tr("Clear motor angle (0x95)\u2026"), box);
-    m_clearAngle->setObjectName(QStringLiteral("clearAngle"));
-    m_zeroRom = new QPushButton(tr("Write current position to ROM as zero (0x19)\u2026"), box);
-    m_zeroRom->setObjectName(QStringLiteral("zeroRom"));
-    connect(m_clearAngle, &QPushButton::clicked, this, &EncoderView::clearAngle);
-    connect(m_zeroRom, &QPushButton::clicked, this, &EncoderView::writeZeroToRom);
-    auto *clearText = note(box);
-    clearText->setText(tr("Multi-turn and single-turn angle become 0 here until power-off; the "
-                          "result is checked with read_multi_turn (0x92)."));
-    auto *zeroText = note(box);
-    zeroText->setText(tr("Stores the present encoder position as the zero in flash. Takes "
-                         "effect only after a power cycle; each write wears the flash."));
-    m_clearTurns = new QPushButton(tr("Clear turn count (0x93)\u2026"), box);
-    m_clearTurns->setObjectName(QStringLiteral("clearTurns"));
-    connect(m_clearTurns, &QPushButton::clicked, this, &EncoderView::clearTurnCount);
-    m_clearTurnsNote = note(box);
-    m_clearTurnsNote->setObjectName(QStringLiteral("clearTurnsNote"));
-    auto *layout = new QVBoxLayout(box);
-    layout->addWidget(m_clearAngle);
-    layout->addWidget(clearText);
-    layout->addWidget(m_clearTurns);
-    layout->addWidget(m_clearTurnsNote);
-    layout->addWidget(m_zeroRom);
-    layout->addWidget(zeroText);
-    return box;
+    m_zero->setSender(
+        [this](const protocol::Request &request, RequestTracker::Callback done, int retries) {
+            return tracker()->send(request, std::move(done), bus::Priority::Operator, retries);
+        });
+    connect(m_zero, &EncoderZeroTools::statusChanged, this, &EncoderView::setStatus);
+    connect(m_zero, &EncoderZeroTools::busyChanged, this, &EncoderView::refreshEnabled);
+    connect(m_zero, &EncoderZeroTools::multiTurnRead, this, [this](double deg) {
+        m_multiTurnDeg = deg;
+        refreshReadouts();
+    });
+    connect(m_zero, &EncoderZeroTools::angleCheckFinished, this, &EncoderView::angleCheckFinished);
+    connect(m_zero, &EncoderZeroTools::zeroWriteFinished, this, &EncoderView::zeroWriteFinished);
+    connect(m_zero, &EncoderZeroTools::turnCountCleared, this, &EncoderView::turnCountCleared);
+}
+
+void EncoderView::clearAngle()
+{
+    m_zero->clearAngle();
+}
+
+void EncoderView::writeZeroToRom()
+{
+    m_zero->writeZeroToRom();
+}
+
+void EncoderView::clearTurnCount()
+{
+    m_zero->clearTurnCount();
+}
+
+std::optional<AngleCheck> EncoderView::lastAngleCheck() const
+{
+    return m_zero->lastAngleCheck();
 }
 
 void EncoderView::setSettingsStore(DriveSettingsStore *store)
@@ -292,12 +297,14 @@ void EncoderView::contextChanged(Changes changes)
         m_encoder.reset();
         m_multiTurnDeg.reset();
         m_singleTurnDeg.reset();
-        m_angleCheck.reset();
         m_busy = false;
+        m_zero->abandon(true);
         setStatus(QString());
     }
-    if (!tracker()->pendingCount())
+    if (!tracker()->pendingCount()) {
         m_busy = false;
+        m_zero->abandon(false);
+    }
     if (changes & Change::Session) {
         disconnect(m_telemetry);
         if (session())
@@ -382,7 +389,7 @@ quint64 EncoderView::readEncoder(bus::Priority priority)
     return tracker()->send(
         *build::plain(Command::ReadEncoder, driveId()).request,
         [this](const bus::RequestResult &r) {
-            if (const auto *e = payload<protocol::EncoderReading>(r)) {
+            if (const auto *e = replyPayload<protocol::EncoderReading>(r)) {
                 m_encoder = *e;
                 m_resolutions->observe(driveId(), motor(), e->encoder);
                 refreshReadouts();
@@ -391,24 +398,14 @@ quint64 EncoderView::readEncoder(bus::Priority priority)
         priority);
 }
 
-quint64 EncoderView::readMultiTurn(bus::Priority priority, std::function<void(double)> then)
+quint64 EncoderView::readMultiTurn(bus::Priority priority)
 {
     return tracker()->send(
         *build::plain(Command::ReadMultiTurn, driveId()).request,
-        [this, then](const bus::RequestResult &r) {
-            const auto *a = payload<protocol::MultiTurnAngle>(r);
-            if (a) {
+        [this](const bus::RequestResult &r) {
+            if (const auto *a = replyPayload<protocol::MultiTurnAngle>(r)) {
                 m_multiTurnDeg = a->degrees();
                 refreshReadouts();
-            }
-            if (then) {
-                if (a)
-                    then(a->degrees());
-                else {
-                    m_busy = false;
-                    setStatus(DriveText::failure(r), true);
-                    refreshEnabled();
-                }
             }
         },
         priority);
@@ -429,7 +426,7 @@ void EncoderView::refreshReadouts()
 
 void EncoderView::refreshEnabled()
 {
-    const bool can = canSend() && !m_busy;
+    const bool can = canSend() && !m_busy && !m_zero->isBusy();
     // V2.35 has no 0x91 (docs/V2.35.md): its drives would not answer, so it is not offered.
     const QString noOffset = absenceOf(Command::WriteEncoderOffset);
     m_writeOffset->setEnabled(can && noOffset.isEmpty());
@@ -438,38 +435,33 @@ void EncoderView::refreshEnabled()
                                    "spec's command table calls 0x91 a ROM write: it may write the "
                                    "drive's flash.")
                               : noOffset);
-    m_clearAngle->setEnabled(can);
-    m_zeroRom->setEnabled(can);
-    const QString absent = absenceOf(Command::ClearTurnCount);
-    m_clearTurns->setEnabled(can && absent.isEmpty());
-    m_clearTurnsNote->setText(
-        absent.isEmpty() ? tr("Whole turns of the multi-turn angle are dropped; the angle within "
-                              "the present turn stays. Checked with read_multi_turn (0x92).")
-                         : absent);
+    m_zero->setDrive(driveId(), motor(), canSend());
+    m_zero->setGearRatio(m_ratio);
+    m_zero->setBlocked(m_busy);
     m_useRaw->setEnabled(hasDrive() && m_encoder.has_value());
     m_bitsCombo->setEnabled(hasDrive());
     m_ratioSpin->setEnabled(hasDrive());
     m_offsetSpin->setEnabled(hasDrive());
 }
 
-bool EncoderView::confirm(const QString &key, const QString &title, const QString &question,
-                          const QString &reason, const QString &accept)
+bool EncoderView::confirm(const ConfirmRequest &request)
 {
     const int id = driveId();
-    const bool yes = ConfirmDialog::ask(this, ConfirmRequest{key, title, question, reason, accept});
+    QString why;
+    bool changed = false;
     // The dialog ran an event loop: the drive or the link may have changed meanwhile.
-    if (yes && (!canSend() || driveId() != id || m_busy)) {
-        setStatus(tr("The drive or the connection changed: nothing was sent."), true);
-        return false;
-    }
-    if (!yes)
-        setStatus(tr("Cancelled: nothing was sent."));
-    return yes;
+    if (ConfirmDialog::askUnchanged(
+            this, request,
+            [this, id] { return canSend() && driveId() == id && !m_busy && !m_zero->isBusy(); },
+            &why, &changed))
+        return true;
+    setStatus(why, changed);
+    return false;
 }
 
 void EncoderView::writeOffset(int offset)
 {
-    if (!canSend() || m_busy)
+    if (!canSend() || m_busy || m_zero->isBusy())
         return;
     if (const QString absent = absenceOf(Command::WriteEncoderOffset); !absent.isEmpty()) {
         setStatus(absent, true);
@@ -488,12 +480,12 @@ void EncoderView::writeOffset(int offset)
         setStatus(DriveText::fieldError(built.error), true);
         return;
     }
-    if (!confirm(QStringLiteral("write_encoder_offset"), tr("Write encoder offset"),
-                 tr("Write encoder offset %1 to drive %2?").arg(offset).arg(driveId()),
-                 tr("The zero of the encoder and of every angle moves, so position commands "
-                    "go elsewhere afterwards. The spec's command table calls 0x91 a ROM write: "
-                    "it may wear the drive's flash."),
-                 tr("Write offset")))
+    if (!confirm({QStringLiteral("write_encoder_offset"), tr("Write encoder offset"),
+                  tr("Write encoder offset %1 to drive %2?").arg(offset).arg(driveId()),
+                  tr("The zero of the encoder and of every angle moves, so position commands "
+                     "go elsewhere afterwards. The spec's command table calls 0x91 a ROM write: "
+                     "it may wear the drive's flash."),
+                  tr("Write offset")}))
         return;
     m_busy = true;
     refreshEnabled();
@@ -518,7 +510,7 @@ void EncoderView::readBackOffset(int offset)
     tracker()->send(*build::plain(Command::ReadEncoder, driveId()).request,
                     [this, offset](const bus::RequestResult &back) {
                         m_busy = false;
-                        const auto *e = payload<protocol::EncoderReading>(back);
+                        const auto *e = replyPayload<protocol::EncoderReading>(back);
                         const bool ok = e && e->encoderOffset == offset;
                         if (e) {
                             m_encoder = *e;
@@ -536,185 +528,13 @@ void EncoderView::readBackOffset(int offset)
                     });
 }
 
-void EncoderView::clearAngle()
-{
-    if (!canSend() || m_busy)
-        return;
-    if (!confirm(QStringLiteral("clear_angle"), tr("Clear motor angle"),
-                 tr("Make the present position of drive %1 angle 0?").arg(driveId()),
-                 tr("Multi-turn and single-turn angles restart from 0 here until power-off, so "
-                    "absolute position commands go elsewhere afterwards."),
-                 tr("Clear angle")))
-        return;
-    m_busy = true;
-    refreshEnabled();
-    const int id = driveId();
-    setStatus(tr("Clearing the angle of drive %1\u2026").arg(id));
-    readMultiTurn(bus::Priority::Operator, [this, id](double before) {
-        tracker()->send(*build::plain(Command::ClearAngle, id).request,
-                        [this, id, before](const bus::RequestResult &r) {
-                            if (!r.ok()) {
-                                m_busy = false;
-                                setStatus(DriveText::failure(r), true);
-                                refreshEnabled();
-                                return;
-                            }
-                            onClearAcknowledged(id, before);
-                        });
-    });
-}
-
-void EncoderView::onClearAcknowledged(int id, double before)
-{
-    readMultiTurn(bus::Priority::Operator, [this, id, before](double after) {
-        m_busy = false;
-        if (id == driveId())
-            showAngleCheck(AngleCheck::classify(before, after));
-        refreshEnabled();
-    });
-}
-
-void EncoderView::showAngleCheck(const AngleCheck &check)
-{
-    m_angleCheck = check;
-    switch (check.outcome) {
-    case AngleCheck::Outcome::Cleared:
-        setStatus(tr("Angle cleared: the drive reads %1\u00b0 (was %2\u00b0).")
-                      .arg(check.afterDeg, 0, 'f', 2)
-                      .arg(check.beforeDeg, 0, 'f', 2));
-        break;
-    case AngleCheck::Outcome::AlreadyZero:
-        setStatus(tr("The angle read %1\u00b0 before already: whether the drive applied 0x95 "
-                     "cannot be told.")
-                      .arg(check.beforeDeg, 0, 'f', 2));
-        break;
-    case AngleCheck::Outcome::Unchanged:
-        setStatus(tr("The drive acknowledged 0x95 but its angle did not change (%1\u00b0): this "
-                     "firmware ignores clear-angle. Use the encoder offset or 0x19 instead.")
-                      .arg(check.afterDeg, 0, 'f', 2),
-                  true);
-        break;
-    case AngleCheck::Outcome::ChangedNotZero:
-        setStatus(tr("The angle changed from %1\u00b0 to %2\u00b0 but is not 0: was the motor "
-                     "turning? Stop it and clear again.")
-                      .arg(check.beforeDeg, 0, 'f', 2)
-                      .arg(check.afterDeg, 0, 'f', 2),
-                  true);
-        break;
-    }
-    emit angleCheckFinished(check);
-}
-
-void EncoderView::writeZeroToRom()
-{
-    if (!canSend() || m_busy)
-        return;
-    if (!confirm(QStringLiteral("write_zero_rom"), tr("Write zero to ROM"),
-                 tr("Store the present position of drive %1 as its zero in ROM?").arg(driveId()),
-                 tr("It takes effect only after the drive is powered off and on again. It "
-                    "writes the drive's flash, which wears with every write: do it once, "
-                    "not as a routine."),
-                 tr("Write zero to ROM")))
-        return;
-    m_busy = true;
-    refreshEnabled();
-    const int id = driveId();
-    // Sent exactly once: a lost reply is reported, never retried.
-    tracker()->send(
-        *build::plain(Command::WriteZeroRom, id).request,
-        [this, id](const bus::RequestResult &r) {
-            m_busy = false;
-            refreshEnabled();
-            const auto *z = payload<protocol::ZeroWritten>(r);
-            if (!z) {
-                setStatus(DriveText::failure(r), true);
-                emit zeroWriteFinished(false);
-                return;
-            }
-            QString text = tr("Zero written to the ROM of drive %1. Power the drive off and on "
-                              "for it to take effect.")
-                               .arg(id);
-            if (z->encoderOffset)
-                text += QLatin1Char(' ') +
-                        tr("The drive reports the new zero as encoder %1.").arg(*z->encoderOffset);
-            setStatus(text);
-            emit zeroWriteFinished(true);
-        },
-        bus::Priority::Operator, 0);
-}
-
 QString EncoderView::absenceOf(Command command) const
 {
     if (!hasDrive())
         return QString();
-    return GenerationNote::absence(motor(), command,
-                                   command == Command::ClearTurnCount ? tr("clear turn count")
-                                                                      : tr("the encoder offset"));
-}
-
-void EncoderView::clearTurnCount()
-{
-    if (!canSend() || m_busy)
-        return;
-    if (const QString absent = absenceOf(Command::ClearTurnCount); !absent.isEmpty()) {
-        setStatus(absent, true);
-        return;
-    }
-    // docs/V2.35.md names 0x93 only: neither RAM nor ROM, nor whether the motor must be off, is
-    // documented, so the confirmation says so rather than guess.
-    if (!confirm(QStringLiteral("clear_turn_count"), tr("Clear turn count"),
-                 tr("Set the turn count of drive %1 to 0?").arg(driveId()),
-                 tr("The multi-turn angle keeps only the angle within the present turn, so "
-                    "multi-turn position commands go elsewhere afterwards. The V2.35 document "
-                    "does not say whether this survives a power cycle (RAM or ROM) or whether "
-                    "the motor must be off: stop the motor first."),
-                 tr("Clear turn count")))
-        return;
-    m_busy = true;
-    refreshEnabled();
-    const int id = driveId();
-    setStatus(tr("Clearing the turn count of drive %1\u2026").arg(id));
-    readMultiTurn(bus::Priority::Operator, [this, id](double before) {
-        // Sent once: whether it writes flash is not documented.
-        tracker()->send(
-            *build::plain(Command::ClearTurnCount, id).request,
-            [this, id, before](const bus::RequestResult &r) {
-                if (!r.ok()) {
-                    m_busy = false;
-                    setStatus(DriveText::failure(r), true);
-                    refreshEnabled();
-                    emit turnCountCleared(false);
-                    return;
-                }
-                onTurnsCleared(id, before);
-            },
-            bus::Priority::Operator, 0);
-    });
-}
-
-void EncoderView::onTurnsCleared(int id, double before)
-{
-    readMultiTurn(bus::Priority::Operator, [this, id, before](double after) {
-        m_busy = false;
-        refreshEnabled();
-        if (id != driveId())
-            return;
-        // One output turn is 360 degrees times the gear ratio of rotor angle.
-        const bool ok = std::abs(after) < 360.0 * m_ratio;
-        setStatus(ok ? tr("Turn count of drive %1 cleared: the multi-turn angle reads %2\u00b0 "
-                          "(was %3\u00b0).")
-                           .arg(id)
-                           .arg(after, 0, 'f', 2)
-                           .arg(before, 0, 'f', 2)
-                     : tr("Drive %1 acknowledged 0x93, but its multi-turn angle reads %2\u00b0 "
-                          "(was %3\u00b0): more than one turn, so the turn count was not "
-                          "cleared.")
-                           .arg(id)
-                           .arg(after, 0, 'f', 2)
-                           .arg(before, 0, 'f', 2),
-                  !ok);
-        emit turnCountCleared(ok);
-    });
+    if (command == Command::ClearTurnCount)
+        return m_zero->turnCountAbsence();
+    return GenerationNote::absence(motor(), command, tr("encoder offset"));
 }
 
 } // namespace lk::ui

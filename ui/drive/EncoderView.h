@@ -8,7 +8,6 @@
 #include <bus/TelemetrySample.h>
 #include <protocol/Values.h>
 
-#include <functional>
 #include <memory>
 #include <optional>
 
@@ -24,13 +23,13 @@ namespace lk::ui {
 class DriveSettingsStore;
 class EncoderLiveBox;
 class EncoderResolutions;
+class EncoderZeroTools;
+struct ConfirmRequest;
 
 /// Encoder and zero tools of one drive: encoder, raw encoder, offset and angles read live
 /// while the view is visible (extra commands of the session's poll plan, read back from its
-/// telemetry); encoder offset write (0x91); clear motor angle (0x95) verified
-/// with read_multi_turn (firmware that acknowledges and ignores it is named); current
-/// position to ROM as zero (0x19) after a confirmation (power cycle, flash wear); on V2.35
-/// drives clear turn count (0x93) with a read-back of the multi-turn angle. The encoder
+/// telemetry); encoder offset write (0x91); the zero tools (EncoderZeroTools: clear motor
+/// angle 0x95, zero to ROM 0x19, V2.35 clear turn count 0x93). The encoder
 /// resolution is the one EncoderResolutions believes (name, series, data, user); the gear
 /// ratio is inferred from the model name; both are editable and kept per drive.
 class EncoderView : public DriveView {
@@ -73,7 +72,7 @@ public:
 
     std::optional<protocol::EncoderReading> lastEncoder() const { return m_encoder; }
     std::optional<double> lastMultiTurnDeg() const { return m_multiTurnDeg; }
-    std::optional<AngleCheck> lastAngleCheck() const { return m_angleCheck; }
+    std::optional<AngleCheck> lastAngleCheck() const;
     QString statusText() const;
 
 signals:
@@ -90,23 +89,19 @@ protected:
 private:
     QWidget *buildSetupBox();
     QWidget *buildOffsetBox();
-    QWidget *buildZeroBox();
+    void wireZeroTools();
     void loadDriveSettings();
     /// Adds the live reads to the poll plan while shown with a drive to talk to, else takes
     /// them out (from the session they went to).
     void syncPollExtras();
     void onTelemetry(const bus::TelemetryBatch &batch);
     quint64 readEncoder(bus::Priority priority);
-    quint64 readMultiTurn(bus::Priority priority, std::function<void(double)> then = {});
+    quint64 readMultiTurn(bus::Priority priority);
     void readBackOffset(int offset);
-    void onClearAcknowledged(int id, double before);
-    void onTurnsCleared(int id, double before);
-    void showAngleCheck(const AngleCheck &check);
     void refreshReadouts();
     void refreshEnabled();
     void setStatus(const QString &text, bool error = false);
-    bool confirm(const QString &key, const QString &title, const QString &question,
-                 const QString &reason, const QString &accept);
+    bool confirm(const ConfirmRequest &request);
 
     std::unique_ptr<DriveSettingsStore> m_ownStore;
     DriveSettingsStore *m_store;
@@ -117,11 +112,10 @@ private:
     std::optional<protocol::EncoderReading> m_encoder;
     std::optional<double> m_multiTurnDeg;
     std::optional<double> m_singleTurnDeg;
-    std::optional<AngleCheck> m_angleCheck;
     bus::PollExtrasLease m_extras; ///< the live reads, while shown for its drive
     bool m_shown = false;
     QMetaObject::Connection m_telemetry;
-    bool m_busy = false; ///< an offset, clear or zero sequence is running
+    bool m_busy = false; ///< an offset write is running (the zero tools keep their own)
 
     QLabel *m_title = nullptr;
     EncoderLiveBox *m_live = nullptr;
@@ -132,10 +126,7 @@ private:
     QSpinBox *m_offsetSpin = nullptr;
     QPushButton *m_useRaw = nullptr;
     QPushButton *m_writeOffset = nullptr;
-    QPushButton *m_clearAngle = nullptr;
-    QPushButton *m_zeroRom = nullptr;
-    QPushButton *m_clearTurns = nullptr;
-    QLabel *m_clearTurnsNote = nullptr;
+    EncoderZeroTools *m_zero = nullptr;
     QLabel *m_offsetNote = nullptr; // what 0x91 does, or why this drive has none
     QLabel *m_status = nullptr;
     QPlainTextEdit *m_log = nullptr;

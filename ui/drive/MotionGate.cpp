@@ -10,7 +10,8 @@ MotionOutcome MotionGate::submit(RequestTracker &tracker, const protocol::BuildR
                                  std::optional<protocol::Series> series,
                                  const safety::SoftLimits &limits,
                                  const safety::DrivePosition &position,
-                                 RequestTracker::Callback callback)
+                                 RequestTracker::Callback callback,
+                                 const safety::DriveLimits &drive)
 {
     MotionOutcome out;
     if (!built.ok()) {
@@ -19,7 +20,7 @@ MotionOutcome MotionGate::submit(RequestTracker &tracker, const protocol::BuildR
         return out;
     }
     const safety::MotionPlan plan =
-        safety::MotionPlanner::plan(*built.request, series, limits, position);
+        safety::MotionPlanner::plan(*built.request, series, limits, position, drive);
     if (!plan.allowed()) {
         out.limit = plan.verdict.kind;
         out.refusal = DriveText::refusal(plan.verdict, series);
@@ -34,7 +35,8 @@ MotionOutcome MotionGate::submit(RequestTracker &tracker, const protocol::BuildR
     out.sent = out.ticket != 0;
     if (out.sent) {
         out.request = request;
-        out.bound = text::VerdictText::speedBound(plan.bound, plan.boundDps);
+        out.bound = plan.drivesOwnSpeed ? safety::DriveLimits::speedBound(plan.bound, plan.boundDps)
+                                        : text::VerdictText::speedBound(plan.bound, plan.boundDps);
     }
     if (!out.sent)
         out.refusal = QCoreApplication::translate("lk::ui::MotionGate", "Not connected.");

@@ -28,15 +28,17 @@ struct MotionOutcome {
 
 /// The only way the drive views send a command that can move a motor: the builder's
 /// verdict first (FieldError), then safety::MotionPlanner (speed bound on every move, targets
-/// checked from the drive's angle, series and soft limits), then the bus. A refused command
-/// sends nothing and says which check stopped it.
+/// checked from the drive's angle, series and soft limits, each lowered to the drive's own
+/// limit where one was read), then the bus. A refused command sends nothing and says which
+/// check stopped it, naming a limit of the drive's own as such.
 class MotionGate {
 public:
     static MotionOutcome submit(RequestTracker &tracker, const protocol::BuildResult &built,
                                 std::optional<protocol::Series> series,
                                 const safety::SoftLimits &limits,
                                 const safety::DrivePosition &position,
-                                RequestTracker::Callback callback = {});
+                                RequestTracker::Callback callback = {},
+                                const safety::DriveLimits &drive = {});
 };
 
 } // namespace lk::ui

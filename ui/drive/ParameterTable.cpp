@@ -70,6 +70,7 @@ void ParameterTable::buildRow(const ParamField &field, int gridRow)
     w.edit = new QDoubleSpinBox(this);
     w.edit->setObjectName(QStringLiteral("pending_") + field.key);
     w.holds->setObjectName(QStringLiteral("holds_") + field.key);
+    w.original->setObjectName(QStringLiteral("first_") + field.key);
     w.original->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     w.holds->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     w.edit->setDecimals(field.decimals);
@@ -127,6 +128,9 @@ void ParameterTable::setPending(const ParamValues &values)
     for (int r = 0; r < rowCount(); ++r) {
         RowWidgets &w = m_rows[r];
         QSignalBlocker block(w.edit);
+        // A known value at the field's minimum (a limit of 0) is that value, not "unknown":
+        // the special text shows at the minimum, so it goes while the values are known.
+        w.edit->setSpecialValueText(QString());
         w.edit->setMinimum(double(w.field.min) / scaleOf(w.field));
         w.edit->setValue(double(values.value(r)) / scaleOf(w.field));
     }
@@ -138,6 +142,7 @@ void ParameterTable::clearPending()
     m_pendingKnown = false;
     for (RowWidgets &w : m_rows) {
         QSignalBlocker block(w.edit);
+        w.edit->setSpecialValueText(tr("unknown"));
         w.edit->setMinimum(unknownOf(w.field));
         w.edit->setValue(unknownOf(w.field));
     }

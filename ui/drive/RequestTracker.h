@@ -16,6 +16,13 @@ class BusSession;
 
 namespace lk::ui {
 
+/// The reply's payload of type T, for a request that completed with a reply carrying one;
+/// nullptr otherwise (failed, or another payload).
+template <typename T> const T *replyPayload(const bus::RequestResult &r)
+{
+    return r.ok() && r.reply ? std::get_if<T>(&r.reply->payload) : nullptr;
+}
+
 /// Sends a view's requests through a BusSession (each with its callback) and counts those
 /// still awaited, so that the view can disable its buttons meanwhile and drop the results of
 /// requests made for another drive or link. Never waits.

@@ -1,5 +1,7 @@
 #include "SetpointPanel.h"
 
+#include "SetpointGenerator.h"
+
 #include <motor/SeriesLimits.h>
 #include <panels/StatusColors.h>
 
@@ -156,6 +158,13 @@ void SetpointPanel::setRunning(bool running, const QString &message)
 void SetpointPanel::setStartEnabled(bool enabled)
 {
     m_start->setEnabled(enabled);
+}
+
+void SetpointPanel::follow(SetpointGenerator *generator)
+{
+    connect(generator, &SetpointGenerator::started, this, [this] { setRunning(true); });
+    connect(generator, &SetpointGenerator::stopped, this,
+            [this](const QString &reason) { setRunning(false, reason); });
 }
 
 } // namespace lk::ui

@@ -14,6 +14,8 @@ class QPushButton;
 
 namespace lk::ui {
 
+class SetpointGenerator;
+
 /// The setpoint generator's settings and Start/Stop. Torque is offered only where the
 /// series has a torque loop. Start emits startRequested; the control view runs the generator.
 class SetpointPanel : public QGroupBox {
@@ -26,6 +28,8 @@ public:
     void setSettings(const bus::SetpointWaveform::Settings &settings);
     /// Shows running/stopped and the last message.
     void setRunning(bool running, const QString &message = {});
+    /// Shows whether `generator` runs, and why it stopped, from now on.
+    void follow(SetpointGenerator *generator);
     void setStartEnabled(bool enabled);
     /// The drive's multi-turn angle (nullopt: another drive, not read yet). A position
     /// waveform is centred on it: the offset follows it until the user edits the offset.

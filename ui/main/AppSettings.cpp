@@ -142,6 +142,11 @@ AppSettings::AppSettings(const QString &iniFile)
 
 void AppSettings::readFile()
 {
+    if (const std::optional<system::FileReadError> &problem = m_file.problem()) {
+        // Not read at all: the settings start empty (defaults) in memory.
+        m_damage = {QStringLiteral("%1: %2").arg(m_file.fileName(), problem->reason())};
+        return;
+    }
     // Before migrating: migration drops bad values, and the user must hear about them.
     m_damage = findDamage(m_settings);
     m_loadedVersion = migrate(m_settings);
@@ -164,10 +169,22 @@ QStringList AppSettings::findDamage(QSettings &settings)
 
 QString AppSettings::damageReport() const
 {
-    if (m_damage.isEmpty())
-        return QString();
-    return tr("Your settings file %1 is damaged; these values were not used: %2.")
-        .arg(fileName(), m_damage.join(QStringLiteral("; ")));
+    if (const std::optional<system::FileReadError> &problem = m_file.problem())
+        return tr("Your settings file %1 was not read (%2): lkstudio runs with default "
+                  "settings, and what you change now is not saved.")
+            .arg(fileName(), problem->reason());
+    QStringList parts;
+    if (isFromNewerRelease())
+        parts << tr("Your settings file %1 was written by a newer lkstudio (%2 is %3; this "
+                    "release knows up to %4): only the values this release understands are "
+                    "used, and the file is not converted.")
+                     .arg(fileName(), QLatin1String(key::kVersion))
+                     .arg(m_loadedVersion)
+                     .arg(kVersion);
+    if (!m_damage.isEmpty())
+        parts << tr("Your settings file %1 is damaged; these values were not used: %2.")
+                     .arg(fileName(), m_damage.join(QStringLiteral("; ")));
+    return parts.join(QLatin1Char(' '));
 }
 
 AppSettings::~AppSettings()
@@ -177,7 +194,7 @@ AppSettings::~AppSettings()
 
 QString AppSettings::fileName() const
 {
-    return m_settings.fileName();
+    return m_file.fileName(); // the user's file, also when it was refused
 }
 
 int AppSettings::migrate(QSettings &settings)

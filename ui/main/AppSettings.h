@@ -44,9 +44,12 @@ public:
     bool isFromNewerRelease() const { return m_loadedVersion > kVersion; }
 
     /// What was damaged in the file as found at start, one "key: what is wrong" per entry
-    /// (a file that cannot be parsed at all names the file). Those values are not used.
+    /// (a file that cannot be parsed or was not read at all names the file). Those values
+    /// are not used.
     QStringList damage() const { return m_damage; }
-    /// One translated sentence for the banner naming the damaged keys; empty when none.
+    /// Translated sentences for the banner: the file was not read (a directory, too large:
+    /// SettingsFile::problem()), it comes from a newer release (naming settingsVersion), or
+    /// which keys are damaged; empty when none.
     QString damageReport() const;
 
     ConnectionChoice connection() const;

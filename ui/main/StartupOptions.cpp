@@ -1,6 +1,7 @@
 #include "StartupOptions.h"
 
 #include "AppSettings.h"
+#include "SettingsFile.h"
 
 #include <bus/BusTiming.h>
 #include <sim/FaultInjector.h>
@@ -173,6 +174,11 @@ QString StartupOptions::readBus(const QCommandLineParser &p, const Definitions &
         simFaults = p.value(d.simFaults);
     }
     settingsFile = p.value(d.settings);
+    if (p.isSet(d.settings)) {
+        // Refused here, where the user typed it; the default file is checked by SettingsFile.
+        if (const std::optional<system::FileReadError> problem = SettingsFile::check(settingsFile))
+            return tr("--settings %1: %2").arg(settingsFile, problem->reason());
+    }
     scan = !p.isSet(d.noScan);
     simMotion = p.isSet(d.motion);
     if (simMotion && port)

@@ -1,6 +1,7 @@
 #include "SerialGroupAdvice.h"
 
-#include <QtCore/QFile>
+#include <system/BoundedFile.h>
+
 #include <QtCore/QStringList>
 
 namespace lk::ui {
@@ -96,10 +97,17 @@ SerialGroupAdvice SerialGroupAdvice::fromOsRelease(const QByteArray &text)
 
 SerialGroupAdvice SerialGroupAdvice::forThisSystem()
 {
-    for (const char *path : {"/etc/os-release", "/usr/lib/os-release"}) {
-        QFile file(QString::fromLatin1(path));
-        if (file.open(QIODevice::ReadOnly))
-            return fromOsRelease(file.readAll());
+    return fromFirstReadable(
+        {QStringLiteral("/etc/os-release"), QStringLiteral("/usr/lib/os-release")});
+}
+
+SerialGroupAdvice SerialGroupAdvice::fromFirstReadable(const QStringList &paths)
+{
+    for (const QString &path : paths) {
+        // Bounded like every file read, so an odd system cannot hang or exhaust lkstudio.
+        const system::BoundedRead file = system::BoundedFile::read(path, kMaxOsReleaseBytes);
+        if (file.ok())
+            return fromOsRelease(file.bytes);
     }
     return fromOsRelease({});
 }

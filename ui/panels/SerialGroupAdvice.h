@@ -4,6 +4,7 @@
 #include <QtCore/QCoreApplication>
 #include <QtCore/QMap>
 #include <QtCore/QString>
+#include <QtCore/QStringList>
 
 namespace lk::ui {
 
@@ -27,6 +28,11 @@ public:
     static SerialGroupAdvice fromOsRelease(const QByteArray &text);
     /// From /etc/os-release, else /usr/lib/os-release (the os-release(5) order).
     static SerialGroupAdvice forThisSystem();
+    /// From the first of `paths` that is a regular file of at most kMaxOsReleaseBytes.
+    static SerialGroupAdvice fromFirstReadable(const QStringList &paths);
+
+    /// os-release is a few hundred bytes: a larger file (or a FIFO, a device) is skipped.
+    static constexpr qint64 kMaxOsReleaseBytes = 64 * 1024;
 };
 
 } // namespace lk::ui

@@ -1,10 +1,14 @@
 #include "PlotExporter.h"
 
+#include "PlotPanel.h"
+
 #include <record/CsvWriter.h>
 #include <record/TelemetryColumns.h>
+#include <system/AtomicFile.h>
 
-#include <QtCore/QSaveFile>
+#include <QtGui/QFontMetrics>
 #include <QtGui/QImageWriter>
+#include <QtGui/QPainter>
 #include <QtGui/QPixmap>
 #include <QtWidgets/QWidget>
 
@@ -72,6 +76,28 @@ TelemetryCsv layoutFor(const QVector<PlotTrace> &traces, lk::record::CsvLayout l
                                                  : TelemetryCsv::longLayout(columns);
 }
 
+/// `image` under a band with `title`, in the widget's colours and a bold form of its font.
+QImage withTitle(const QImage &image, const QString &title, const QPalette &palette, QFont font)
+{
+    font.setBold(true);
+    const QFontMetrics metrics(font);
+    const int margin = metrics.height() / 2;
+    const int band = metrics.height() + 2 * margin;
+    const qreal dpr = image.devicePixelRatio();
+    QImage out(image.width(), image.height() + int(band * dpr),
+               QImage::Format_ARGB32_Premultiplied);
+    out.setDevicePixelRatio(dpr);
+    out.fill(palette.color(QPalette::Window));
+    QPainter p(&out);
+    p.setFont(font);
+    p.setPen(palette.color(QPalette::WindowText));
+    const QRect textRect(margin, 0, int(image.width() / dpr) - 2 * margin, band);
+    p.drawText(textRect, Qt::AlignVCenter | Qt::AlignLeft,
+               metrics.elidedText(title, Qt::ElideRight, textRect.width()));
+    p.drawImage(QPointF(0, band), image);
+    return out;
+}
+
 } // namespace
 
 int PlotExporter::columnOf(const PlotTrace &trace)
@@ -124,24 +150,57 @@ QString PlotExporter::exportCsv(const TelemetryStore &store, const QVector<PlotT
     return writer.finish();
 }
 
+QString PlotExporter::pngTitle(const QVector<PlotTrace> &traces, const QDateTime &when)
+{
+    QStringList what;
+    QVector<int> drives;
+    for (const PlotTrace &t : traces) {
+        const QString label = channelLabel(t.channel, t.power);
+        if (!what.contains(label))
+            what << label;
+        if (!drives.contains(t.driveId))
+            drives << t.driveId;
+    }
+    std::sort(drives.begin(), drives.end());
+    QStringList ids;
+    for (int id : drives)
+        ids << QString::number(id);
+    const QString signalsText =
+        what.isEmpty() ? tr("nothing plotted") : what.join(QStringLiteral(", "));
+    const QString drivesText = drives.size() == 1
+                                   ? tr("drive %1").arg(ids.first())
+                                   : tr("drives %1").arg(ids.join(QStringLiteral(", ")));
+    const QString whenText = when.toString(QStringLiteral("yyyy-MM-dd HH:mm:ss"));
+    if (drives.isEmpty())
+        return QStringLiteral("%1 \u2014 %2").arg(signalsText, whenText);
+    return QStringLiteral("%1 \u2014 %2 \u2014 %3").arg(signalsText, drivesText, whenText);
+}
+
 QString PlotExporter::exportPng(QWidget *widget, const QString &path)
 {
-    const QImage image = widget->grab().toImage();
-    QSaveFile file(path); // as for CSV: the whole image or nothing
-    if (!file.open(QIODevice::WriteOnly)) {
+    // The plot panel the widget belongs to knows what it shows.
+    for (QWidget *w = widget; w; w = w->parentWidget()) {
+        if (const auto *panel = qobject_cast<const PlotPanel *>(w))
+            return exportPng(widget, path,
+                             pngTitle(panel->plottedTraces(), QDateTime::currentDateTime()));
+    }
+    return exportPng(widget, path, QString());
+}
+
+QString PlotExporter::exportPng(QWidget *widget, const QString &path, const QString &title)
+{
+    QImage image = widget->grab().toImage();
+    if (!title.isEmpty())
+        image = withTitle(image, title, widget->palette(), widget->font());
+    system::AtomicFile file(path); // as for CSV: the whole image or nothing
+    if (!file.open()) {
         return tr("Cannot open %1: %2").arg(path, file.errorString());
     }
-    QImageWriter writer(&file, "png");
+    QImageWriter writer(file.device(), "png");
+    if (!title.isEmpty())
+        writer.setText(QStringLiteral("Title"), title); // for viewers and scripts too
     if (!writer.write(image)) {
-        file.cancelWriting();
-        return tr("Cannot write %1: %2").arg(path, writer.errorString());
-    }
-    // Qt 6.4's QSaveFile renames a cut file into place when the flush inside commit() fails
-    // (a full disk): flush here, where a failure still cancels.
-    if (!file.flush()) {
-        const QString why = file.errorString();
-        file.cancelWriting();
-        return tr("Cannot write %1: %2").arg(path, why);
+        file.fail(writer.errorString());
     }
     if (!file.commit()) {
         return tr("Cannot write %1: %2").arg(path, file.errorString());

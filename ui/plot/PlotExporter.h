@@ -6,6 +6,7 @@
 #include <record/TelemetryCsv.h>
 
 #include <QtCore/QCoreApplication>
+#include <QtCore/QDateTime>
 #include <QtCore/QString>
 
 #include <optional>
@@ -27,8 +28,16 @@ public:
     /// empty on success.
     static QString exportCsv(const TelemetryStore &store, const QVector<PlotTrace> &traces,
                              TimeSpan span, const QString &path, lk::record::CsvLayout layout);
-    /// The widget as it looks now, as PNG. Returns an error text, empty on success.
+    /// The widget as it looks now, as PNG, under a title line (what, which drives, when): the
+    /// title of the PlotPanel the widget is in (pngTitle() of its plotted traces, now), or
+    /// none outside a plot panel. The title is also the PNG's "Title" text. Returns an error
+    /// text, empty on success.
     static QString exportPng(QWidget *widget, const QString &path);
+    /// The same with `title` given (empty: no title line).
+    static QString exportPng(QWidget *widget, const QString &path, const QString &title);
+    /// "Speed, iq — drives 1, 3 — 2026-11-27 14:05:09": the plotted signals in plot order,
+    /// the drives ascending, and `when` (local time).
+    static QString pngTitle(const QVector<PlotTrace> &traces, const QDateTime &when);
     /// Header name of a trace's column in the wide layout ("id3_speed_dps").
     static QString columnName(const PlotTrace &trace);
     /// The TelemetryColumns index a trace is written as.

@@ -67,6 +67,7 @@ private slots:
     void refusedWriteIsShown();
     void v23DriveHasNoLimits();
     void tuningViewHasLimitsTab();
+    void zeroIsAValueAndFirstReadIsShown();
 };
 
 void tst_DriveLimitsView::readsEveryLimitAsPair()
@@ -236,6 +237,41 @@ void tst_DriveLimitsView::tuningViewHasLimitsTab()
     QVERIFY(tabs);
     QCOMPARE(tabs->widget(1), static_cast<QWidget *>(view.limits()));
     QCOMPARE(view.limits()->driveId(), 1);
+}
+
+void tst_DriveLimitsView::zeroIsAValueAndFirstReadIsShown()
+{
+    // A simulated V2.35 drive's current ramp is 0: a value the drive holds, shown as 0 in the
+    // edit field (not as "unknown"), and the first complete read fills "First read".
+    SimRig rig(QStringLiteral("2:MF@2.35"));
+    QVERIFY(rig.open());
+    QCOMPARE(ramParams(rig, 2).currentRamp, qint16(0));
+    auto view = openView(rig, 2);
+    QVERIFY(view && view->readComplete());
+    QDoubleSpinBox *ramp = view->table()->editor(Limit::CurrentRamp);
+    QCOMPARE(ramp->value(), 0.0);
+    QCOMPARE(ramp->text(), QStringLiteral("0"));
+    const auto first = [&](int row) {
+        return view->table()
+            ->findChild<QLabel *>(QStringLiteral("first_") + view->table()->field(row).key)
+            ->text();
+    };
+    QCOMPARE(first(Limit::CurrentRamp), QStringLiteral("0"));
+    QVERIFY2(first(Limit::MaxSpeed).contains(QStringLiteral("dps")),
+             qPrintable(first(Limit::MaxSpeed)));
+    // The first read stays the first: a later read does not replace it.
+    const QString speed = first(Limit::MaxSpeed);
+    rig.withDrive(2, [](lk::sim::SimDrive &d) {
+        d.handle(*lk::protocol::build::writeParam(2, lk::protocol::ParamId::MaxSpeed, 720, false)
+                      .request);
+    });
+    view->readFromDrive();
+    QVERIFY(waitIdle(*view));
+    QCOMPARE(heldText(*view->table(), Limit::MaxSpeed), QStringLiteral("720.00 dps"));
+    QCOMPARE(first(Limit::MaxSpeed), speed);
+    // Unknown again (another drive's values are not this one's): the special text is back.
+    view->clearDrive();
+    QCOMPARE(view->table()->editor(Limit::CurrentRamp)->text(), QStringLiteral("unknown"));
 }
 
 QTEST_MAIN(tst_DriveLimitsView)

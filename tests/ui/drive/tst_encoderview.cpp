@@ -75,7 +75,7 @@ private slots:
     void angleCheckOutcomes();
     void zeroToRomAppliesAfterRestart();
     void declinedZeroSendsNothing();
-    void resolutionRaisedFromData();
+    void v235Ms4015StartsAt16Bits();
     void userResolutionWinsOverData();
     void clearTurnCount();
     void declinedClearTurnCountSendsNothing();
@@ -392,22 +392,26 @@ void tst_EncoderView::declinedZeroSendsNothing()
     QCOMPARE(rig.count(1, Command::WriteEncoderOffset), 0);
 }
 
-void tst_EncoderView::resolutionRaisedFromData()
+void tst_EncoderView::v235Ms4015StartsAt16Bits()
 {
+    // docs/V2.35.md section 12: an MS4015 on firmware 2.35 reports 16 bits. The view starts
+    // there, not at the MS series' 12 bits raised to 14 by the first value (which showed
+    // "6437 of 16384 (14-bit, from data) (141.44 deg)" beside "single-turn 35.36 deg").
     SimRig rig(kV235Bus);
     QVERIFY(rig.open());
     auto view = openView(rig, 3);
-    // The MS series default is 12 bits; the drive's first encoder value (about 9557) is beyond.
-    QTRY_VERIFY_WITH_TIMEOUT(view->lastEncoder().has_value(), kWaitMs);
-    QTRY_VERIFY_WITH_TIMEOUT(view->encoderBits() >= 14, kWaitMs);
-    QVERIFY2(labelText(*view, "encoderValue").contains("-bit, from data"),
-             qPrintable(labelText(*view, "encoderValue")));
-    // A turn shows the whole 16-bit range.
-    QVERIFY(turnPast(rig, 3, 720, 400));
-    QTRY_COMPARE_WITH_TIMEOUT(view->encoderBits(), 16, kWaitMs);
+    QCOMPARE(view->encoderBits(), 16);
     QCOMPARE(view->countsPerTurn(), 65536);
-    QTRY_VERIFY_WITH_TIMEOUT(
-        labelText(*view, "encoderValue").contains(" of 65536 (16-bit, from data)"), kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(view->lastEncoder().has_value(), kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(labelText(*view, "singleTurn") != QStringLiteral("\u2013"), kWaitMs);
+    const QString encoder = labelText(*view, "encoderValue");
+    QVERIFY2(encoder.contains(" of 65536 (16-bit, protocol V2.35)"), qPrintable(encoder));
+    // The encoder's angle is the single-turn angle (both start at the encoder zero).
+    const double single = labelText(*view, "singleTurn").chopped(1).toDouble();
+    const double fromEncoder = 360.0 * view->lastEncoder()->encoder / 65536.0;
+    QVERIFY2(std::fabs(single - fromEncoder) < 1.0,
+             qPrintable(QStringLiteral("%1 vs %2").arg(encoder, labelText(*view, "singleTurn"))));
+    QVERIFY(encoder.contains(QStringLiteral("(%1\u00b0)").arg(fromEncoder, 0, 'f', 2)));
     const auto *combo = view->findChild<QComboBox *>(QStringLiteral("encoderBits"));
     QCOMPARE(combo->currentData().toInt(), 16);
 }
@@ -508,7 +512,7 @@ void tst_EncoderView::v235DriveHasNoEncoderOffset()
     });
     view->writeOffset(100);
     QVERIFY(asked.isEmpty());
-    QVERIFY2(view->statusText().contains(QStringLiteral("encoder offset")),
+    QVERIFY2(view->statusText().contains(QStringLiteral("has no encoder offset command")),
              qPrintable(view->statusText()));
     QVERIFY(rig.barrier(3));
     QCOMPARE(rig.count(3, Command::WriteEncoderOffset), 0);

@@ -267,7 +267,7 @@ void tst_ParameterSet::busReportJsonAndHtml()
 
     const QString html = r.toHtml();
     QVERIFY(html.contains(QStringLiteral("MS5005")));
-    QVERIFY(html.contains(QStringLiteral("LOW VOLTAGE")));
+    QVERIFY(html.contains(QStringLiteral("low voltage, over-temperature"))); // V2.3 names
     QVERIFY(html.contains(QStringLiteral("read_pid: timeout")));
     QVERIFY(html.contains(QStringLiteral("&lt;bus&gt; &amp; co"))); // escaped
     QVERIFY(!html.contains(QStringLiteral("<bus>")));

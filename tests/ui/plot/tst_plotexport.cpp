@@ -4,6 +4,7 @@
 #include "../../support/FileSizeLimit.h"
 #include "PlotPanelTestUtil.h"
 
+#include <plot/PlotExporter.h>
 #include <plot/PlotPanel.h>
 #include <plot/SeriesColors.h>
 #include <plot/StripChart.h>
@@ -12,6 +13,7 @@
 #include <QtCore/QDir>
 #include <QtCore/QFile>
 #include <QtCore/QFileInfo>
+#include <QtCore/QSet>
 #include <QtCore/QTemporaryDir>
 #include <QtGui/QImage>
 #include <QtTest/QTest>
@@ -24,6 +26,8 @@ using lk::plottest::showPanel;
 using lk::ui::PlotPanel;
 using lk::ui::TelemetryChannel;
 using lk::ui::TelemetryStore;
+
+using lk::ui::PlotExporter;
 
 namespace {
 
@@ -103,6 +107,7 @@ private slots:
     void exportCsvRowPerPollRound();
     void exportCsvLongLayoutFromTheMenu();
     void exportPngWritesImage();
+    void pngTitleNamesSignalsDrivesAndTime();
     void diskFullKeepsTheEarlierPng();
     void exportReportsErrors();
 };
@@ -212,10 +217,31 @@ void tst_PlotExport::exportPngWritesImage()
         return;
     QTemporaryDir dir;
     const QString path = dir.filePath("plot.png");
+    const QDateTime before = QDateTime::currentDateTime();
     QCOMPARE(panel.exportPng(path), QString());
     const QImage image(path);
     QVERIFY(!image.isNull());
-    QCOMPARE(image.size(), panel.charts().first()->parentWidget()->size());
+    // The plot under a title line: what, which drive, when.
+    const QSize chartArea = panel.charts().first()->parentWidget()->size();
+    QCOMPARE(image.width(), chartArea.width());
+    QVERIFY(image.height() > chartArea.height());
+    const QString title = image.text(QStringLiteral("Title"));
+    QCOMPARE(title,
+             PlotExporter::pngTitle(panel.plottedTraces(),
+                                    QDateTime::fromString(title.right(19), "yyyy-MM-dd HH:mm:ss")));
+    QVERIFY2(title.contains(QStringLiteral(" \u2014 drive 1 \u2014 ")), qPrintable(title));
+    const QDateTime stamped = QDateTime::fromString(title.right(19), "yyyy-MM-dd HH:mm:ss");
+    QVERIFY2(stamped.isValid() && stamped.secsTo(before) <= 1 &&
+                 stamped.secsTo(QDateTime::currentDateTime()) >= 0,
+             qPrintable(title));
+    // The band above the plot holds the title's text: more than the background's colour.
+    const int band = image.height() - chartArea.height();
+    QSet<QRgb> bandColours;
+    for (int y = 0; y < band; ++y) {
+        for (int x = 0; x < image.width() / 2; ++x)
+            bandColours.insert(image.pixel(x, y));
+    }
+    QVERIFY2(bandColours.size() > 1, "an empty title band");
     // Not a blank picture: the plotted lines and axes use more than one colour.
     const QRgb first = image.pixel(0, 0);
     bool varied = false;
@@ -234,6 +260,23 @@ void tst_PlotExport::exportPngWritesImage()
             tracePixels += (image.pixel(x, y) & 0xffffff) == (trace & 0xffffff) ? 1 : 0;
     }
     QVERIFY2(tracePixels > 100, qPrintable(QString::number(tracePixels)));
+}
+
+void tst_PlotExport::pngTitleNamesSignalsDrivesAndTime()
+{
+    using lk::ui::PlotTrace;
+    using lk::ui::TelemetryChannel;
+    const QDateTime when(QDate(2026, 11, 27), QTime(14, 5, 9));
+    const QVector<PlotTrace> traces{{3, TelemetryChannel::Speed, false},
+                                    {1, TelemetryChannel::Torque, false},
+                                    {1, TelemetryChannel::Speed, false},
+                                    {17, TelemetryChannel::Torque, true}};
+    QCOMPARE(PlotExporter::pngTitle(traces, when),
+             QStringLiteral("Speed, iq, Power \u2014 drives 1, 3, 17 \u2014 2026-11-27 14:05:09"));
+    QCOMPARE(PlotExporter::pngTitle({traces.first()}, when),
+             QStringLiteral("Speed \u2014 drive 3 \u2014 2026-11-27 14:05:09"));
+    QCOMPARE(PlotExporter::pngTitle({}, when),
+             QStringLiteral("nothing plotted \u2014 2026-11-27 14:05:09"));
 }
 
 void tst_PlotExport::diskFullKeepsTheEarlierPng()
