@@ -128,11 +128,12 @@ QString ControlCommand::usage() const
                "\n"
                "%3")
         .arg(BusOptions::helpText(), MotionLimitOptions::helpText(),
-             exitStatusText(QStringLiteral(
-                 "  4  refused for safety: the series or one of your limits does not allow it\n"
-                 "     (the message names the limit and both values), or a V2.35 drive is\n"
-                 "     off; nothing was sent\n") +
-                            ControlWatch::exitStatusLine()),
+             exitStatusText(
+                 QStringLiteral(
+                     "  4  refused for safety: the series or one of your limits does not allow it\n"
+                     "     (the message names the limit and both values), or a V2.35 drive is\n"
+                     "     off; nothing was sent\n") +
+                 ControlWatch::exitStatusLine()),
              ControlWatch::helpText());
 }
 
@@ -405,8 +406,7 @@ int ControlCommand::runFor(LiveBus &bus, Plan plan, const LiveBus::Identity &who
     if (v235 && !checkDriveState(bus, plan.request.id, &status))
         return status;
     watch.arm(bus, plan.request.id, *limits);
-    return watch.follow(bus, *motion.request, plan.json,
-                        send(bus, plan, motion, position, drive));
+    return watch.follow(bus, *motion.request, plan.json, send(bus, plan, motion, position, drive));
 }
 
 } // namespace lk::lkctl

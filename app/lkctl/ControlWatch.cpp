@@ -66,16 +66,23 @@ void ControlWatch::declare(ArgParser &parser)
 QString ControlWatch::helpText()
 {
     return QStringLiteral(
-        "  --watch SECONDS        torque and open-loop only: stay for SECONDS (0.1..86400) and\n"
-        "                         stop the drive (motor_stop) as soon as it turns faster than\n"
-        "                         the speed limit + 5 % (at least +30 dps), and at the end,\n"
-        "                         on Ctrl+C or SIGTERM. Without it the drive stays under the\n"
-        "                         command, unwatched, once lkctl exits (the output says so)\n");
+        "  --watch SECONDS        torque and open-loop only (no drive bounds their speed):\n"
+        "                         stay for SECONDS (0.1..86400), reading the drive's speed\n"
+        "                         back to back (every 2-3 ms at 115200 baud), and send it\n"
+        "                         Motor Stop (motor_stop, 0x81) as soon as it turns faster\n"
+        "                         than the speed limit + 5 % (at least +30 dps; exit 6), at\n"
+        "                         the end of SECONDS and on Ctrl+C or SIGTERM. With --json a\n"
+        "                         second line: {\"watch\":{\"id\":3,\"watched_s\":2.5,\n"
+        "                         \"ended\":\"signal\",\"limit_dps\":720,...}}. Without it\n"
+        "                         the drive keeps the command, unwatched, once lkctl exits\n"
+        "                         (the output says so)\n");
 }
 
 QString ControlWatch::exitStatusLine()
 {
-    return QStringLiteral("  6  --watch: the drive turned faster than the speed limit and was stopped\n");
+    return QStringLiteral(
+        "  6  --watch: the drive turned faster than the speed limit and was stopped\n"
+        "     (Motor Stop acknowledged; exit 1 when it was not)\n");
 }
 
 std::optional<ControlWatch> ControlWatch::read(const ArgParser &parser, QString *error)
@@ -89,8 +96,7 @@ std::optional<ControlWatch> ControlWatch::read(const ArgParser &parser, QString 
                                 "the speed of the other modes itself)");
         return std::nullopt;
     }
-    const std::optional<double> seconds =
-        parser.numberValue(QStringLiteral("watch"), 0.1, error);
+    const std::optional<double> seconds = parser.numberValue(QStringLiteral("watch"), 0.1, error);
     if (!seconds)
         return std::nullopt;
     if (*seconds > kMaxSeconds) {
@@ -129,12 +135,16 @@ int ControlWatch::follow(LiveBus &bus, const protocol::Request &request, bool js
     return status;
 }
 
-int ControlWatch::watch(LiveBus &bus, const protocol::Request &request, bool json,
-                        int status) const
+int ControlWatch::watch(LiveBus &bus, const protocol::Request &request, bool json, int status) const
 {
     const int id = request.id;
     const double limit = m_limits.maxSpeedDps;
     const double threshold = bus::SpeedWatch::thresholdDps(limit);
+    // Before the first line: whoever reads "Watching" may press Ctrl+C at once.
+    int signalled = 0;
+    system::SignalWatcher terminations;
+    const auto c4 = QObject::connect(&terminations, &system::SignalWatcher::signalled,
+                                     [&signalled](int n) { signalled = n; });
     if (!json)
         bus.console().outLine(
             QStringLiteral("Watching drive %1 for %2 s: Motor Stop above %3 dps (speed limit %4 "
@@ -142,10 +152,10 @@ int ControlWatch::watch(LiveBus &bus, const protocol::Request &request, bool jso
                 .arg(id)
                 .arg(m_seconds)
                 .arg(dps(threshold), dps(limit)));
+    bus.console().flush(); // a script or a person reads it while the drive turns
     std::optional<bus::SpeedWatchTrip> trip;
     double peak = 0;
     bool open = true;
-    int signalled = 0;
     bus::BusSession &session = bus.session();
     const auto c1 = QObject::connect(&session, &bus::BusSession::speedWatchTripped,
                                      [&trip, id](const bus::SpeedWatchTrip &t) {
@@ -159,23 +169,19 @@ int ControlWatch::watch(LiveBus &bus, const protocol::Request &request, bool jso
                                                  peak = std::max(peak, std::abs(s.speedDps));
                                          }
                                      });
-    const auto c3 = QObject::connect(&session, &bus::BusSession::connectionChanged,
-                                     [&open](const bus::ConnectionStatus &s) { open = s.isOpen(); });
-    system::SignalWatcher terminations;
-    const auto c4 = QObject::connect(&terminations, &system::SignalWatcher::signalled,
-                                     [&signalled](int n) { signalled = n; });
+    const auto c3 =
+        QObject::connect(&session, &bus::BusSession::connectionChanged,
+                         [&open](const bus::ConnectionStatus &s) { open = s.isOpen(); });
     QElapsedTimer clock;
     clock.start();
     const qint64 totalMs = qint64(std::llround(m_seconds * 1e3));
-    const auto over = [&] {
-        return trip || signalled || !open || clock.elapsed() >= totalMs;
-    };
+    const auto over = [&] { return trip || signalled || !open || clock.elapsed() >= totalMs; };
     while (!over())
         bus.waitUntil(over, int(std::min<qint64>(LiveBus::kMaxWaitMs, totalMs)));
     for (const auto &c : {c1, c2, c3, c4})
         QObject::disconnect(c);
-    const End end = trip ? End::SpeedLimit
-                         : (!open ? End::LinkLost : (signalled ? End::Signal : End::Time));
+    const End end =
+        trip ? End::SpeedLimit : (!open ? End::LinkLost : (signalled ? End::Signal : End::Time));
     // The watch's own stop has ended already; every other end stops the drive now.
     const bool stopped = trip ? trip->stopAcknowledged() : (open && stop(bus, id));
     const double seconds = clock.elapsed() / 1e3;
@@ -186,7 +192,8 @@ int ControlWatch::watch(LiveBus &bus, const protocol::Request &request, bool jso
             .text(QStringLiteral("ended"), endName(end))
             .real(QStringLiteral("limit_dps"), limit)
             .real(QStringLiteral("threshold_dps"), threshold)
-            .real(QStringLiteral("peak_dps"), trip ? std::max(peak, std::abs(trip->speedDps)) : peak)
+            .real(QStringLiteral("peak_dps"),
+                  trip ? std::max(peak, std::abs(trip->speedDps)) : peak)
             .boolean(QStringLiteral("stop_acknowledged"), stopped);
         OrderedJson line;
         line.raw(QStringLiteral("watch"), o.toJson());
@@ -201,7 +208,7 @@ int ControlWatch::watch(LiveBus &bus, const protocol::Request &request, bool jso
                 .arg(stopped ? QStringLiteral("acknowledged")
                              : QStringLiteral("NOT acknowledged: it may still be turning")));
     } else {
-        const QString why = end == End::Signal   ? QStringLiteral("Interrupted")
+        const QString why = end == End::Signal     ? QStringLiteral("Interrupted")
                             : end == End::LinkLost ? QStringLiteral("The link went away")
                                                    : QStringLiteral("Watch over");
         bus.console().outLine(
@@ -211,11 +218,10 @@ int ControlWatch::watch(LiveBus &bus, const protocol::Request &request, bool jso
                 .arg(dps(peak))
                 .arg(!open ? QStringLiteral("nothing could be sent; drive %1 may still be turning")
                                  .arg(id)
-                           : stopped ? QStringLiteral("drive %1 acknowledged Motor Stop (0x81).")
-                                           .arg(id)
-                                     : QStringLiteral("drive %1 did NOT acknowledge Motor Stop "
-                                                      "(0x81): it may still be turning.")
-                                           .arg(id)));
+                     : stopped ? QStringLiteral("drive %1 acknowledged Motor Stop (0x81).").arg(id)
+                               : QStringLiteral("drive %1 did NOT acknowledge Motor Stop "
+                                                "(0x81): it may still be turning.")
+                                     .arg(id)));
     }
     if (!stopped)
         return kExitFailure;

@@ -123,12 +123,13 @@ void tst_LkctlWatch::watchEndsWithAStop()
 
 void tst_LkctlWatch::watchJsonLine()
 {
-    const Result r = lkctl(
-        words("control 3 torque 0.3 --max-speed-dps 720 --watch 20 --sim 3:MF --json"));
+    const Result r =
+        lkctl(words("control 3 torque 0.3 --max-speed-dps 720 --watch 20 --sim 3:MF --json"));
     QVERIFY2(r.exitCode == 6, qPrintable(describe(r)));
     const QList<QByteArray> lines = r.out.trimmed().split('\n');
     QCOMPARE(lines.size(), 2);
-    const QJsonObject watch = QJsonDocument::fromJson(lines.at(1)).object().value("watch").toObject();
+    const QJsonObject watch =
+        QJsonDocument::fromJson(lines.at(1)).object().value("watch").toObject();
     QCOMPARE(watch.value("id").toInt(), 3);
     QCOMPARE(watch.value("ended").toString(), QStringLiteral("speed_limit"));
     QCOMPARE(watch.value("limit_dps").toDouble(), 720.0);
