@@ -32,7 +32,7 @@ public:
     /// Replace the plan; non-read commands and IDs outside 1..32 are dropped, and so are the
     /// extra commands of an ID that its `commands` poll already.
     void setPlan(const PollPlan &plan, double now);
-    void clear(); ///< forgets the plan; the watched drives stay
+    void clear();          ///< forgets the plan; the watched drives stay
     bool isActive() const; ///< a plan with something to poll
     const PollPlan &plan() const { return m_plan; }
     /// The drives whose speed the speed watch reads as often as the bus allows (SpeedWatch):
@@ -107,8 +107,8 @@ private:
     Ring m_others;
     Ring m_watch;                ///< read_state2 of each watched drive; no rounds, no rate
     bool m_lastWasWatch = false; ///< watch and plan polls alternate
-    int m_sinceOthers = 0; ///< focus polls handed out since the last poll of another drive
-    quint64 m_rounds = 0;  ///< round numbers given out so far
+    int m_sinceOthers = 0;       ///< focus polls handed out since the last poll of another drive
+    quint64 m_rounds = 0;        ///< round numbers given out so far
     Round m_current;
 };
 

@@ -49,8 +49,8 @@ double SpeedWatch::limitDps(int id, SpeedWatchSource *source) const
 {
     const auto it = m_limits.constFind(id);
     if (source)
-        *source = it != m_limits.cend() ? SpeedWatchSource::SoftLimit
-                                        : SpeedWatchSource::SeriesDefault;
+        *source =
+            it != m_limits.cend() ? SpeedWatchSource::SoftLimit : SpeedWatchSource::SeriesDefault;
     if (it != m_limits.cend())
         return *it;
     return safety::SoftLimits::defaults(m_series ? m_series(id) : std::nullopt).maxSpeedDps;
@@ -103,10 +103,11 @@ void SpeedWatch::arm(int id, Command mode)
     if (after != before) {
         SpeedWatchSource source;
         const double limit = limitDps(id, &source);
-        qCInfo(lcBus).noquote() << "speed watch: drive" << id << "under" << protocol::CommandTable::name(mode)
-                      << "is stopped above" << thresholdDps(limit) << "dps (limit" << limit
-                      << (source == SpeedWatchSource::SoftLimit ? "dps, soft limit)"
-                                                                : "dps, series default)");
+        qCInfo(lcBus).noquote() << "speed watch: drive" << id << "under"
+                                << protocol::CommandTable::name(mode) << "is stopped above"
+                                << thresholdDps(limit) << "dps (limit" << limit
+                                << (source == SpeedWatchSource::SoftLimit ? "dps, soft limit)"
+                                                                          : "dps, series default)");
         emit watchedChanged(after);
     }
 }
@@ -161,8 +162,8 @@ void SpeedWatch::trip(int id, const TelemetrySample &sample)
     t.speedDps = sample.speedDps;
     t.seenS = sample.time;
     qCWarning(lcBus).noquote() << "speed watch: drive" << id << "at" << t.speedDps << "dps under"
-                     << protocol::CommandTable::name(t.mode) << "is over" << t.thresholdDps
-                     << "dps: Motor Stop";
+                               << protocol::CommandTable::name(t.mode) << "is over"
+                               << t.thresholdDps << "dps: Motor Stop";
     m_drives[id].state = State::Stopping; // still polled until the stop has ended
     m_stop(id, [this, t](const RequestResult &r) { onStopEnded(t, r); });
 }

@@ -21,11 +21,11 @@ enum class SpeedWatchSource {
 struct SpeedWatchTrip {
     int id = 0;
     protocol::Command mode = protocol::Command::Torque; ///< Torque or OpenLoop
-    double limitDps = 0;     ///< the speed limit (rotor dps)
+    double limitDps = 0;                                ///< the speed limit (rotor dps)
     double thresholdDps = 0; ///< limit + margin (SpeedWatch::thresholdDps): what was passed
     SpeedWatchSource source = SpeedWatchSource::SoftLimit;
-    double speedDps = 0; ///< the speed the drive reported, rotor dps, signed
-    double seenS = 0;    ///< session clock (s) when that reply arrived
+    double speedDps = 0;   ///< the speed the drive reported, rotor dps, signed
+    double seenS = 0;      ///< session clock (s) when that reply arrived
     double stopEndedS = 0; ///< session clock (s) when the Motor Stop ended
     RequestStatus stopStatus = RequestStatus::Ok; ///< Ok: the drive acknowledged the stop
     QString stopReason; ///< English detail when it did not (RequestResult::reason)

@@ -112,8 +112,8 @@ struct AcceleratingDrive {
         protocol::Reply r;
         r.command = command;
         r.id = req.id;
-        r.payload = protocol::State2{30, 0, false, qint16(std::lround(speedDps())), 0,
-                                     protocol::kIqReplyAmpsPerLsb};
+        r.payload = protocol::State2{
+            30, 0, false, qint16(std::lround(speedDps())), 0, protocol::kIqReplyAmpsPerLsb};
         return r.encode();
     }
 };
@@ -167,20 +167,18 @@ void tst_SpeedWatch::commandsArmAndEnd_data()
     const auto ok = int(S::Ok);
     const auto timeout = int(S::Timeout);
     const protocol::Request off = plainRequest(Command::MotorOff, 1);
-    QTest::newRow("torque acknowledged") << Requests{torque(1, 300)} << Ints{ok} << Ints{1}
-                                         << true;
+    QTest::newRow("torque acknowledged") << Requests{torque(1, 300)} << Ints{ok} << Ints{1} << true;
     QTest::newRow("torque unanswered: may have acted")
         << Requests{torque(1, 300)} << Ints{timeout} << Ints{2} << true;
-    QTest::newRow("torque never sent") << Requests{torque(1, 300)} << Ints{int(S::Cancelled)}
-                                       << Ints{0} << false;
+    QTest::newRow("torque never sent")
+        << Requests{torque(1, 300)} << Ints{int(S::Cancelled)} << Ints{0} << false;
     QTest::newRow("open loop") << Requests{openLoop(1, 150)} << Ints{ok} << Ints{1} << true;
     QTest::newRow("torque 0 ends it")
         << Requests{torque(1, 300), torque(1, 0)} << Ints{ok, ok} << Ints{1, 1} << false;
     QTest::newRow("power 0 ends it")
         << Requests{openLoop(1, 150), openLoop(1, 0)} << Ints{ok, ok} << Ints{1, 1} << false;
-    QTest::newRow("torque 0 unanswered: still watched") << Requests{torque(1, 300), torque(1, 0)}
-                                                        << Ints{ok, timeout} << Ints{1, 1}
-                                                        << true;
+    QTest::newRow("torque 0 unanswered: still watched")
+        << Requests{torque(1, 300), torque(1, 0)} << Ints{ok, timeout} << Ints{1, 1} << true;
     QTest::newRow("speed command: a closed loop")
         << Requests{torque(1, 300), speed(1, 90)} << Ints{ok, ok} << Ints{1, 1} << false;
     QTest::newRow("speed command unanswered: still watched")
@@ -192,8 +190,9 @@ void tst_SpeedWatch::commandsArmAndEnd_data()
     QTest::newRow("motor stop holds")
         << Requests{torque(1, 300), plainRequest(Command::MotorStop, 1)} << Ints{ok, ok}
         << Ints{1, 1} << false;
-    QTest::newRow("another drive's off") << Requests{torque(1, 300), plainRequest(Command::MotorOff, 2)}
-                                         << Ints{ok, ok} << Ints{1, 1} << true;
+    QTest::newRow("another drive's off")
+        << Requests{torque(1, 300), plainRequest(Command::MotorOff, 2)} << Ints{ok, ok}
+        << Ints{1, 1} << true;
     QTest::newRow("a read changes nothing")
         << Requests{torque(1, 300), plainRequest(Command::ReadState2, 1)} << Ints{ok, ok}
         << Ints{1, 1} << true;
@@ -249,7 +248,7 @@ void tst_SpeedWatch::stopsOncePerTrip()
     QCOMPARE(t.speedDps, -757.5);
     QVERIFY(t.stopAcknowledged());
     QCOMPARE(qRound(t.reactionMs()), 12);
-    QVERIFY(!rig.watch.isWatched(1)); // held: nothing turns it
+    QVERIFY(!rig.watch.isWatched(1));               // held: nothing turns it
     rig.watch.noteSample(speedSample(1, 900, 1.3)); // coasting down: no second stop
     QCOMPARE(rig.stops.size(), 1);
 }
@@ -322,7 +321,8 @@ void tst_SpeedWatch::workerPollsAndStopsWithoutPlan()
     const auto t = tripped.at(0).at(0).value<SpeedWatchTrip>();
     QCOMPARE(t.id, 1);
     QCOMPARE(t.limitDps, 720.0);
-    QVERIFY2(t.speedDps > 756 && t.speedDps < 756 + 20000 * 0.0041, qPrintable(QString::number(t.speedDps)));
+    QVERIFY2(t.speedDps > 756 && t.speedDps < 756 + 20000 * 0.0041,
+             qPrintable(QString::number(t.speedDps)));
     QVERIFY(t.stopAcknowledged());
     // Nothing but the watch's reads of drive 1 between the torque and the stop, and the stop
     // right after the reply that showed the speed.

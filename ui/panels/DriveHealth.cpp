@@ -28,7 +28,8 @@ std::optional<QString> DriveHealth::supplyRangeText(const DriveRecord &d)
         return std::nullopt;
     const motor::SeriesLimits &l = motor::seriesLimits(*d.series);
     return tr("%1: %2-%3 V")
-        .arg(d.seriesText(), Format::number(l.minSupplyV, l.minSupplyV == int(l.minSupplyV) ? 0 : 1),
+        .arg(d.seriesText(),
+             Format::number(l.minSupplyV, l.minSupplyV == int(l.minSupplyV) ? 0 : 1),
              Format::number(l.maxSupplyV, 0));
 }
 

@@ -22,8 +22,8 @@ public:
     /// there is time to act; drives under load run at 40-60 °C.
     static constexpr int kHotTemperatureC = 70;
 
-    bool faults = false;  ///< error flags set
-    bool hot = false;     ///< temperature >= kHotTemperatureC
+    bool faults = false;      ///< error flags set
+    bool hot = false;         ///< temperature >= kHotTemperatureC
     bool lowVoltage = false;  ///< below the series' minimum supply
     bool highVoltage = false; ///< above the series' maximum supply
 

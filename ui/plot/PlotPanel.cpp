@@ -144,9 +144,8 @@ QWidget *PlotPanel::buildSignalRow()
 
 QVector<TelemetryChannel> PlotPanel::pickableChannels()
 {
-    return {TelemetryChannel::Torque,      TelemetryChannel::Speed,
-            TelemetryChannel::Encoder,     TelemetryChannel::MultiTurn,
-            TelemetryChannel::Temperature, TelemetryChannel::Voltage};
+    return {TelemetryChannel::Torque,    TelemetryChannel::Speed,       TelemetryChannel::Encoder,
+            TelemetryChannel::MultiTurn, TelemetryChannel::Temperature, TelemetryChannel::Voltage};
 }
 
 void PlotPanel::setDrives(const QVector<int> &ids)
