@@ -20,8 +20,8 @@ namespace lk::ui {
 
 using protocol::Command;
 
-SpeedWatchReport::SpeedWatchReport(bus::BusSession *session, BusModel *model,
-                                   MessageBanner *banner, QObject *parent)
+SpeedWatchReport::SpeedWatchReport(bus::BusSession *session, BusModel *model, MessageBanner *banner,
+                                   QObject *parent)
     : QObject(parent), m_session(session), m_model(model), m_banner(banner)
 {
     connect(session, &bus::BusSession::speedWatchTripped, this, &SpeedWatchReport::onTripped);
@@ -64,20 +64,25 @@ void SpeedWatchReport::onTripped(const bus::SpeedWatchTrip &trip)
         << QDateTime::currentDateTime().toString(Qt::ISODateWithMs) << "speed watch:" << text;
     const DriveRecord *d = m_model->drive(trip.id);
     const bool v235 = d && d->generation() == protocol::Generation::V2_35;
-    showEntry(trip.id, text.toHtmlEscaped(), v235 && trip.stopAcknowledged());
-    emit driveStopped(trip.id, tr("Stopped by the speed watch at %1: %2")
-                                   .arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")),
-                                        text));
+    showEntry(trip.id, text, QString(), v235 && trip.stopAcknowledged());
+    emit driveStopped(trip.id,
+                      tr("Stopped by the speed watch at %1: %2")
+                          .arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), text));
 }
 
-void SpeedWatchReport::showEntry(int id, const QString &html, bool offerMaxSpeed)
+void SpeedWatchReport::showEntry(int id, const QString &trip, const QString &detail,
+                                 bool offerMaxSpeed)
 {
-    QString text = QStringLiteral("<b>%1</b> %2").arg(tr("Speed watch:"), html);
+    QString text = QStringLiteral("<b>%1</b> %2")
+                       .arg(tr("Speed watch:").toHtmlEscaped(), trip.toHtmlEscaped());
+    if (!detail.isEmpty())
+        text += QLatin1Char(' ') + detail.toHtmlEscaped();
     if (offerMaxSpeed) {
         const double limit = m_trips.value(id).limitDps;
         text += QStringLiteral(" <a href=\"%1\">%2</a>")
                     .arg(maxSpeedLink(),
-                         tr("Set the drive's own Max Speed (0x9A) to %1 dps (RAM)")
+                         tr("Read the drive's own Max Speed (ParamID 0x9A) and set it to %1 "
+                            "dps (RAM)")
                              .arg(Format::number(limit, 0))
                              .toHtmlEscaped());
     }
@@ -86,54 +91,89 @@ void SpeedWatchReport::showEntry(int id, const QString &html, bool offerMaxSpeed
 
 void SpeedWatchReport::setDriveMaxSpeed(int id, double dps)
 {
-    const auto built = protocol::build::writeParam(id, protocol::ParamId::MaxSpeed, dps, false);
-    if (!m_session || !built.ok())
+    // Never write what was not read: the drive's own Max Speed is read first, and only a
+    // value above the soft limit is replaced.
+    if (!m_session || !m_trips.contains(id))
         return;
-    const QString before = describe(m_trips.value(id)).toHtmlEscaped();
-    showEntry(id, before + QLatin1Char(' ') + tr("Writing Max Speed\u2026").toHtmlEscaped(), false);
-    m_session->send(*built.request, this, [this, id, dps, before](const bus::RequestResult &r) {
-        const auto *ack = r.ok() ? std::get_if<protocol::ParamWriteResult>(&r.reply->payload)
-                                 : nullptr;
-        if (!ack || !ack->succeeded()) {
-            const QString why = ack ? tr("the drive refused the write")
-                                    : tr("no confirmation (%1)").arg(r.reason);
-            showEntry(id,
-                      before + QLatin1Char(' ') +
-                          tr("Max Speed not set: %1; nothing was verified.").arg(why).toHtmlEscaped(),
-                      true);
+    showEntry(id, describe(m_trips.value(id)), tr("Reading the drive's Max Speed\u2026"), false);
+    const auto read = protocol::build::readParam(id, protocol::ParamId::MaxSpeed);
+    m_session->send(*read.request, this, [this, id, dps](const bus::RequestResult &r) {
+        const std::optional<double> held = maxSpeedOf(r);
+        if (!held) {
+            finish(id,
+                   tr("The drive's Max Speed could not be read (%1): nothing was written.")
+                       .arg(r.ok() ? tr("unexpected reply") : r.reason),
+                   true);
             return;
         }
-        const auto read = protocol::build::readParam(id, protocol::ParamId::MaxSpeed);
-        m_session->send(*read.request, this,
-                        [this, id, dps](const bus::RequestResult &back) {
-                            const auto *v =
-                                back.ok() ? std::get_if<protocol::ParameterValue>(
-                                                &back.reply->payload)
-                                          : nullptr;
-                            onMaxSpeedRead(id, dps,
-                                           v ? Format::number(v->asInt32() / 100.0, 2)
-                                             : QString());
-                        });
+        if (*held <= dps) {
+            finish(id,
+                   tr("The drive's own Max Speed is %1 dps, not above your limit: nothing was "
+                      "written.")
+                       .arg(Format::number(*held, 2)),
+                   false);
+            return;
+        }
+        writeMaxSpeed(id, *held, dps);
     });
 }
 
-void SpeedWatchReport::onMaxSpeedRead(int id, double dps, const QString &readBack)
+std::optional<double> SpeedWatchReport::maxSpeedOf(const bus::RequestResult &r)
 {
-    const QString before = describe(m_trips.value(id));
-    QString result;
-    if (readBack.isEmpty())
-        result = tr("Max Speed written (the drive confirmed the RAM write), but the read-back "
-                    "got no answer: not verified.");
-    else if (std::abs(readBack.toDouble() - dps) < 0.005)
-        result = tr("Max Speed set: the drive reads back %1 dps (RAM: until it is powered off). "
-                    "It bounds the drive's speed and position commands; whether it also bounds "
-                    "torque and open loop is not documented, so the speed watch stays on.")
-                     .arg(readBack);
-    else
-        result = tr("Max Speed written, but the drive reads back %1 dps instead of %2 dps.")
-                     .arg(readBack, Format::number(dps, 2));
+    const auto *v =
+        r.ok() && r.reply ? std::get_if<protocol::ParameterValue>(&r.reply->payload) : nullptr;
+    if (!v || v->id() != protocol::ParamId::MaxSpeed)
+        return std::nullopt;
+    return v->asInt32() / 100.0; // 0.01 dps (docs/V2.35.md section 6)
+}
+
+void SpeedWatchReport::writeMaxSpeed(int id, double was, double dps)
+{
+    const auto built = protocol::build::writeParam(id, protocol::ParamId::MaxSpeed, dps, false);
+    if (!built.ok())
+        return;
+    const QString read = tr("The drive's Max Speed read %1 dps.").arg(Format::number(was, 2));
+    showEntry(id, describe(m_trips.value(id)), read + QLatin1Char(' ') + tr("Writing\u2026"),
+              false);
+    m_session->send(*built.request, this, [this, id, dps, read](const bus::RequestResult &r) {
+        const auto *ack = r.ok() && r.reply
+                              ? std::get_if<protocol::ParamWriteResult>(&r.reply->payload)
+                              : nullptr;
+        if (!ack || !ack->succeeded()) {
+            // A RAM write is not repeated on its own: the user may click again.
+            const QString why =
+                ack ? tr("the drive refused the write") : tr("no confirmation (%1)").arg(r.reason);
+            finish(id,
+                   read + QLatin1Char(' ') +
+                       tr("Max Speed not confirmed: %1; nothing was verified.").arg(why),
+                   true);
+            return;
+        }
+        const auto back = protocol::build::readParam(id, protocol::ParamId::MaxSpeed);
+        m_session->send(*back.request, this, [this, id, dps, read](const bus::RequestResult &b) {
+            finish(id, read + QLatin1Char(' ') + readBackText(maxSpeedOf(b), dps), !maxSpeedOf(b));
+        });
+    });
+}
+
+QString SpeedWatchReport::readBackText(std::optional<double> readBack, double dps)
+{
+    if (!readBack)
+        return tr("Max Speed written (the drive confirmed the RAM write), but the read-back "
+                  "got no answer: not verified.");
+    if (std::abs(*readBack - dps) < 0.005)
+        return tr("Max Speed set: the drive reads back %1 dps (RAM: until it is powered off). "
+                  "It bounds the drive's speed and position commands; whether it also bounds "
+                  "torque and open loop is not documented, so the speed watch stays on.")
+            .arg(Format::number(*readBack, 2));
+    return tr("Max Speed written, but the drive reads back %1 dps instead of %2 dps.")
+        .arg(Format::number(*readBack, 2), Format::number(dps, 2));
+}
+
+void SpeedWatchReport::finish(int id, const QString &result, bool offerAgain)
+{
     qCInfo(lcSpeedWatch).noquote() << "drive" << id << result;
-    showEntry(id, (before + QLatin1Char(' ') + result).toHtmlEscaped(), readBack.isEmpty());
+    showEntry(id, describe(m_trips.value(id)), result, offerAgain);
 }
 
 } // namespace lk::ui

@@ -1,10 +1,13 @@
 #pragma once
 
+#include <bus/RequestResult.h>
 #include <bus/SpeedWatchTrip.h>
 
 #include <QtCore/QMap>
 #include <QtCore/QObject>
 #include <QtCore/QPointer>
+
+#include <optional>
 
 namespace lk::bus {
 class BusSession;
@@ -19,8 +22,9 @@ class MessageBanner;
 /// torque or open loop past its speed limit becomes a banner entry for that drive (which
 /// limit, the speed seen, whether the drive acknowledged the Motor Stop) and a log line, and
 /// driveStopped() tells the Control view. On a V2.35 drive the entry offers to set the
-/// drive's own Max Speed (ParamID 0x9A) to the soft limit: a RAM write (0x42), read back
-/// (0x40), and the entry says what the read-back showed.
+/// drive's own Max Speed (ParamID 0x9A) to the soft limit: it is read first (0x40; a value
+/// that could not be read is never replaced, nor one already at or below the limit), then
+/// RAM-written (0x42, once) and read back (0x40), and the entry says what the read-back showed.
 class SpeedWatchReport : public QObject {
     Q_OBJECT
 public:
@@ -37,7 +41,8 @@ public:
 
 public slots:
     void onTripped(const lk::bus::SpeedWatchTrip &trip);
-    /// RAM-write the Max Speed of drive `id` to `dps` and read it back (V2.35 only).
+    /// Read the Max Speed of drive `id`; above `dps`, RAM-write `dps` and read it back
+    /// (V2.35 only; drive `id` must have tripped).
     void setDriveMaxSpeed(int id, double dps);
 
 signals:
@@ -45,8 +50,12 @@ signals:
     void driveStopped(int id, const QString &why);
 
 private:
-    void showEntry(int id, const QString &text, bool offerMaxSpeed);
-    void onMaxSpeedRead(int id, double dps, const QString &readBack);
+    /// The entry of drive `id`: `trip` (describe()), then `detail`, both plain text.
+    void showEntry(int id, const QString &trip, const QString &detail, bool offerMaxSpeed);
+    void writeMaxSpeed(int id, double was, double dps);
+    void finish(int id, const QString &result, bool offerAgain);
+    static std::optional<double> maxSpeedOf(const bus::RequestResult &r);
+    static QString readBackText(std::optional<double> readBack, double dps);
 
     QPointer<bus::BusSession> m_session;
     BusModel *m_model;
