@@ -75,22 +75,32 @@ bool trial(BusSession &session, const Case &c, Figures &f)
                                        last = std::abs(s.speedDps);
                                    }
                                });
-    const auto built =
-        protocol::build::torque(kId, c.amps, protocol::DecodeContext{c.series});
+    const auto built = protocol::build::torque(kId, c.amps, protocol::DecodeContext{c.series});
     session.send(*built.request);
     const bool tripped = bench::waitUntil([&] { return trip.has_value(); }, 20000);
     // Coasting: the peak is behind once the drive reads well below the limit.
     const bool slow = tripped && bench::waitUntil([&] { return last < kLimitDps / 2; }, 20000);
-    QObject::disconnect(c1);
-    QObject::disconnect(c2);
-    if (!tripped || !slow || !trip->stopAcknowledged())
-        return false;
+    const auto done = [&](bool ok) {
+        QObject::disconnect(c1);
+        QObject::disconnect(c2); // after the last wait: it follows `last`
+        return ok;
+    };
+    if (!tripped || !slow || !trip->stopAcknowledged()) {
+        std::fprintf(stderr, "bench_torque_watch: tripped %d, slow %d (last %.0f dps), stop %s\n",
+                     int(tripped), int(slow), last,
+                     tripped && trip->stopAcknowledged() ? "acknowledged" : "not acknowledged");
+        return done(false);
+    }
     f.peak.push_back(std::max(peak, std::abs(trip->speedDps)));
     f.seen.push_back(std::abs(trip->speedDps));
     f.reactionMs.push_back(trip->reactionMs());
     // Off before the next trial (the stop kept the torque command for Motor Run).
     session.send(*protocol::build::plain(protocol::Command::MotorOff, kId).request);
-    return bench::waitUntil([&] { return last == 0; }, 20000);
+    if (!bench::waitUntil([&] { return last == 0; }, 20000)) {
+        std::fprintf(stderr, "bench_torque_watch: still %.0f dps after Motor Off\n", last);
+        return done(false);
+    }
+    return done(true);
 }
 
 Figures run(const Case &c, int baud)
