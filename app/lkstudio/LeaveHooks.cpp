@@ -18,16 +18,17 @@ void LeaveHooks::closeOnTermination(lk::ui::MainWindow &window, lk::system::Sign
 
 void LeaveHooks::askBeforeLogout(lk::ui::MainWindow &window)
 {
-    QObject::connect(qGuiApp, &QGuiApplication::commitDataRequest, &window,
-                     [&window](QSessionManager &manager) {
-                         const bool mayAsk = manager.allowsInteraction();
-                         const bool leave = window.prepareLogout(mayAsk);
-                         if (mayAsk)
-                             manager.release();
-                         if (!leave)
-                             manager.cancel();
-                     },
-                     Qt::DirectConnection); // the manager is valid only during the call
+    QObject::connect(
+        qGuiApp, &QGuiApplication::commitDataRequest, &window,
+        [&window](QSessionManager &manager) {
+            const bool mayAsk = manager.allowsInteraction();
+            const bool leave = window.prepareLogout(mayAsk);
+            if (mayAsk)
+                manager.release();
+            if (!leave)
+                manager.cancel();
+        },
+        Qt::DirectConnection); // the manager is valid only during the call
 }
 
 void LeaveHooks::followDemo(lk::ui::MainWindow &window, DemoMotion &demo)

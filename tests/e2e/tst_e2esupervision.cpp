@@ -4,6 +4,8 @@
 // and a termination signal stop a turning drive (through the question's default, or without
 // asking) or leave it turning at the user's explicit choice. Each drive's speed afterwards is
 // read on the bus by a session of the test's own, after the window has let go of the port.
+// Faults raised by lksim (--fault) are told per drive (banner entry, log line with the time
+// and the flags), their values shown red, and the Control view states the trip.
 
 #include "E2eUtil.h"
 
@@ -12,13 +14,19 @@
 #include <main/AppSettings.h>
 #include <main/BusController.h>
 #include <main/CommandedMotion.h>
+#include <main/DriveFaultWatch.h>
 #include <main/DriveViews.h>
 #include <main/LeaveGuard.h>
 #include <main/MainWindow.h>
 #include <main/SpeedWatchReport.h>
 #include <panels/BusModel.h>
 #include <panels/ConnectionChoice.h>
+#include <panels/DriveHealth.h>
 #include <panels/MessageBanner.h>
+#include <panels/OverviewModel.h>
+#include <panels/OverviewPanel.h>
+#include <panels/StatusColors.h>
+#include <plot/PlotPanel.h>
 
 #include <bus/BusSession.h>
 #include <bus/SpeedWatch.h>
@@ -26,6 +34,7 @@
 #include <system/SignalWatcher.h>
 #include <transport/SerialTransport.h>
 
+#include <QtCore/QRegularExpression>
 #include <QtCore/QTemporaryDir>
 #include <QtCore/QTimer>
 #include <QtTest/QSignalSpy>
@@ -43,6 +52,11 @@ using protocol::Series;
 
 namespace {
 constexpr int kWaitMs = 30000; // generous: the machine may be loaded
+// The fault test's low voltage and over-temperature start this long after lksim: connecting
+// takes well under a second here, so the test is listening and the torque command goes out
+// first.
+constexpr int kLowVoltageAtS = 4;
+constexpr int kFaultAtS = 8;
 const QVector<int> kDrives{1, 4};
 
 QByteArray framePrefix(quint8 command, int id)
@@ -88,6 +102,7 @@ private slots:
     void cancelStays();
     void disconnectThroughTheDefaultStopsTheDrive();
     void terminationSignalStopsWithoutAsking();
+    void faultsAreToldShownAndStopTheControlView();
 
 private:
     /// The drive's speed read by a session of the test's own (the window has let go).
@@ -107,6 +122,7 @@ private:
     }
 
     QTemporaryDir m_dir;
+    QElapsedTimer m_clock; ///< since lksim was started (its faults' clock)
     std::unique_ptr<e2e::LksimProcess> m_sim;
     std::unique_ptr<ui::AppSettings> m_settings;
     std::unique_ptr<ui::MainWindow> m_window;
@@ -116,9 +132,14 @@ void tst_E2eSupervision::init()
 {
     QVERIFY(m_dir.isValid());
     m_sim = std::make_unique<e2e::LksimProcess>(QStringLiteral(LKSIM_PATH));
-    QVERIFY2(m_sim->start({"--motors", "1:MF,4:MH", "--wire-time", "--baud", "115200",
-                           "--verbose"}),
-             qPrintable(m_sim->errorString()));
+    QStringList args{"--motors", "1:MF,4:MH", "--wire-time", "--baud", "115200", "--verbose"};
+    if (QTest::currentTestFunction() == QLatin1String("faultsAreToldShownAndStopTheControlView"))
+        args << "--fault"
+             << QStringLiteral("1:over_temperature@%1,4:low_voltage@%2")
+                    .arg(kFaultAtS)
+                    .arg(kLowVoltageAtS);
+    m_clock.start();
+    QVERIFY2(m_sim->start(args), qPrintable(m_sim->errorString()));
     m_settings = std::make_unique<ui::AppSettings>(m_dir.filePath("lkstudio.ini"));
     m_window = std::make_unique<ui::MainWindow>(m_settings.get());
     m_window->resize(1400, 900);
@@ -198,8 +219,8 @@ void tst_E2eSupervision::speedWatchStopsTorquePastTheLimit()
     limits.maxTorqueA = 4;
     control()->setSoftLimits(limits);
     QSignalSpy tripped(m_window->controller()->session(), &bus::BusSession::speedWatchTripped);
-    const auto built =
-        protocol::build::torque(id, amps, protocol::DecodeContext{*m_window->busModel()->drive(id)->series});
+    const auto built = protocol::build::torque(
+        id, amps, protocol::DecodeContext{*m_window->busModel()->drive(id)->series});
     QVERIFY(control()->sendMotion(built).sent);
 
     QTRY_COMPARE_WITH_TIMEOUT(tripped.size(), 1, kWaitMs);
@@ -237,7 +258,8 @@ void tst_E2eSupervision::quitThroughTheDefaultStopsTheDrives()
     QVERIFY(m_window->close()); // the question, the stop and its wait run inside close()
     QVERIFY(!m_window->isVisible());
     QCOMPARE(question, QStringLiteral("Stop drives 1, 4 before quitting?"));
-    QVERIFY2(m_window->leaveGuard()->lastReport().contains(QStringLiteral("acknowledged by drives 1, 4")),
+    QVERIFY2(m_window->leaveGuard()->lastReport().contains(
+                 QStringLiteral("acknowledged by drives 1, 4")),
              qPrintable(m_window->leaveGuard()->lastReport()));
     for (int id : kDrives) {
         QVERIFY(received(0x80, id));
@@ -302,10 +324,72 @@ void tst_E2eSupervision::terminationSignalStopsWithoutAsking()
     ::raise(SIGTERM);
     QTRY_VERIFY_WITH_TIMEOUT(!m_window->isVisible(), kWaitMs);
     QVERIFY(QApplication::activeModalWidget() == nullptr); // nothing was asked
-    QVERIFY2(m_window->leaveGuard()->lastReport().contains(QStringLiteral("acknowledged by drive 1")),
-             qPrintable(m_window->leaveGuard()->lastReport()));
+    QVERIFY2(
+        m_window->leaveGuard()->lastReport().contains(QStringLiteral("acknowledged by drive 1")),
+        qPrintable(m_window->leaveGuard()->lastReport()));
     QVERIFY(comesToRest(1));
     e2e::verifyNoCollisions(*m_sim);
+}
+
+void tst_E2eSupervision::faultsAreToldShownAndStopTheControlView()
+{
+    // Drive 4 (MH) reads low voltage kLowVoltageAtS after lksim started; drive 1 (MF) under a
+    // small torque (held still by friction) overheats kFaultAtS after it and switches itself
+    // off.
+    QVERIFY2(m_clock.elapsed() < (kLowVoltageAtS - 1) * 1000, "connecting took too long");
+    QVERIFY(!m_window->banner()->hasEntry(ui::DriveFaultWatch::entryKey(4)));
+    const ui::DriveFaultWatch *watch = m_window->faultWatch();
+    const QRegularExpression logLine(
+        QStringLiteral("^\\d{4}-\\d\\d-\\d\\dT\\d\\d:\\d\\d:\\d\\d\\.\\d{3} drive 4: fault flags "
+                       ".*\\(0x01\\)$"));
+    QTest::ignoreMessage(QtWarningMsg, logLine); // the test fails unless it is logged
+    const QString key4 = ui::DriveFaultWatch::entryKey(4);
+    QTRY_VERIFY_WITH_TIMEOUT(m_window->banner()->hasEntry(key4), kWaitMs);
+    QVERIFY2(m_window->banner()->entryText(key4).contains(QStringLiteral("Drive 4")),
+             qPrintable(m_window->banner()->entryText(key4)));
+    const ui::DriveRecord *d4 = m_window->busModel()->drive(4);
+    QTRY_VERIFY_WITH_TIMEOUT(ui::DriveHealth::of(*d4).voltageOut(), kWaitMs);
+    auto *overview = m_window->overview()->findChild<ui::OverviewModel *>();
+    QVERIFY(overview);
+    overview->refresh();
+    const int row4 = int(m_window->busModel()->ids().indexOf(4));
+    const QBrush red(ui::StatusColors::text(ui::StatusColors::Role::Error));
+    QCOMPARE(
+        overview->index(row4, ui::OverviewModel::Voltage).data(Qt::ForegroundRole).value<QBrush>(),
+        red);
+    QVERIFY(!m_window->banner()->hasEntry(ui::DriveFaultWatch::entryKey(1)));
+
+    m_window->busModel()->setCurrentId(1);
+    QTRY_COMPARE_WITH_TIMEOUT(control()->driveId(), 1, kWaitMs);
+    QVERIFY2(m_clock.elapsed() < (kFaultAtS - 2) * 1000, "connecting took too long for the test");
+    QVERIFY(control()->sendMotion(protocol::build::torque(1, 0.05, {Series::MF})).sent);
+    QTRY_VERIFY_WITH_TIMEOUT(control()->statusText().contains(QStringLiteral("Sent torque")),
+                             kWaitMs);
+    const QString key1 = ui::DriveFaultWatch::entryKey(1);
+    QTRY_VERIFY_WITH_TIMEOUT(m_window->banner()->hasEntry(key1), kWaitMs);
+    QVERIFY2(m_window->banner()->entryText(key1).contains(QStringLiteral("temperature"),
+                                                          Qt::CaseInsensitive),
+             qPrintable(m_window->banner()->entryText(key1)));
+    QVERIFY2(m_clock.elapsed() >= kFaultAtS * 1000, "the fault was told before lksim raised it");
+    // The Control view states the trip instead of the command last sent.
+    QTRY_VERIFY_WITH_TIMEOUT(control()->statusText().contains(QStringLiteral("stopped by itself")),
+                             kWaitMs);
+    QVERIFY2(!control()->statusText().contains(QStringLiteral("Sent torque")),
+             qPrintable(control()->statusText()));
+    QVERIFY(watch->events(1).join(' ').contains(QStringLiteral("stopped by itself")));
+    // Its temperature climbs past the warning threshold: shown red too.
+    const ui::DriveRecord *d1 = m_window->busModel()->drive(1);
+    QTRY_VERIFY_WITH_TIMEOUT(ui::DriveHealth::of(*d1).hot, kWaitMs);
+    overview->refresh();
+    const int row1 = int(m_window->busModel()->ids().indexOf(1));
+    QCOMPARE(overview->index(row1, ui::OverviewModel::Temperature)
+                 .data(Qt::ForegroundRole)
+                 .value<QBrush>(),
+             red);
+    // Temperature and voltage can be plotted.
+    const QVector<ui::TelemetryChannel> pickable = ui::PlotPanel::pickableChannels();
+    QVERIFY(pickable.contains(ui::TelemetryChannel::Temperature));
+    QVERIFY(pickable.contains(ui::TelemetryChannel::Voltage));
 }
 
 QTEST_MAIN(tst_E2eSupervision)

@@ -93,11 +93,11 @@ void DriveFaultWatch::judgeHealth(int id, Drive &d)
         d.stopReported = true;
         const QString why = tr("fault flags %1").arg(flagsText(flags, r.generation()));
         note(id, d, tr("stopped by itself: %1").arg(why), true);
-        emit driveStopped(id, tr("Drive %1 stopped by itself at %2: %3. It no longer follows %4.")
-                                  .arg(id)
-                                  .arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")),
-                                       why,
-                                       CommandedMotion::describe(m_motion->last(id)->request)));
+        emit driveStopped(id,
+                          tr("Drive %1 stopped by itself at %2: %3. It no longer follows %4.")
+                              .arg(id)
+                              .arg(QTime::currentTime().toString(QStringLiteral("HH:mm:ss")), why,
+                                   CommandedMotion::describe(m_motion->last(id)->request)));
     }
     if (changed)
         show(id, d);
@@ -165,10 +165,8 @@ void DriveFaultWatch::note(int id, Drive &d, const QString &event, bool warning)
     d.events.append(QStringLiteral("%1 %2").arg(now.toString(QStringLiteral("HH:mm:ss")), event));
     while (d.events.size() > kEventsKept)
         d.events.removeFirst();
-    const QString line = QStringLiteral("%1 drive %2: %3")
-                             .arg(now.toString(Qt::ISODateWithMs))
-                             .arg(id)
-                             .arg(event);
+    const QString line =
+        QStringLiteral("%1 drive %2: %3").arg(now.toString(Qt::ISODateWithMs)).arg(id).arg(event);
     if (warning)
         qCWarning(lcHealth).noquote() << line;
     else
@@ -186,7 +184,8 @@ void DriveFaultWatch::show(int id, const Drive &d)
         level = MessageBanner::Level::Error;
     else if (!problems.isEmpty())
         level = MessageBanner::Level::Warning;
-    const QString now = problems.isEmpty() ? tr("values in range") : problems.join(QStringLiteral("; "));
+    const QString now =
+        problems.isEmpty() ? tr("values in range") : problems.join(QStringLiteral("; "));
     m_banner->setEntry(entryKey(id), level,
                        QStringLiteral("<b>%1</b> %2 <i>%3</i>")
                            .arg(tr("Drive %1: %2.").arg(id).arg(now).toHtmlEscaped(),

@@ -47,7 +47,7 @@ bool LeaveGuard::prepare(Leaving why)
         choice = Choice::LeaveRunning; // nothing can be sent: say so, do not wait
     switch (choice) {
     case Choice::Stay:
-        qCInfo(lcLeave).noquote() << "stayed: drives" << idList(ids) << "keep moving";
+        qCInfo(lcLeave).noquote() << "stayed: drive(s)" << idList(ids) << "keep moving";
         return false;
     case Choice::LeaveRunning: {
         QStringList what;
@@ -94,10 +94,10 @@ LeaveGuard::Choice LeaveGuard::ask(Leaving why, const QVector<int> &ids) const
         box.exec();
         return box.clickedButton() == leave ? Choice::LeaveRunning : Choice::Stay;
     }
-    const QString question =
-        quit ? (n == 1 ? tr("Stop drive %1 before quitting?") : tr("Stop drives %1 before quitting?"))
-             : (n == 1 ? tr("Stop drive %1 before disconnecting?")
-                       : tr("Stop drives %1 before disconnecting?"));
+    const QString question = quit ? (n == 1 ? tr("Stop drive %1 before quitting?")
+                                            : tr("Stop drives %1 before quitting?"))
+                                  : (n == 1 ? tr("Stop drive %1 before disconnecting?")
+                                            : tr("Stop drives %1 before disconnecting?"));
     box.setText(question.arg(idList(ids)));
     box.setInformativeText(tr("Commanded to move on this connection: %1. Left running, they keep "
                               "their last command after lkstudio has let go of the bus; they stop "

@@ -4,8 +4,8 @@
 
 namespace lk::ui {
 
-SoftLimitsFeed::SoftLimitsFeed(std::unique_ptr<DriveSettingsStore> store,
-                               bus::BusSession *session, QObject *parent)
+SoftLimitsFeed::SoftLimitsFeed(std::unique_ptr<DriveSettingsStore> store, bus::BusSession *session,
+                               QObject *parent)
     : QObject(parent), m_store(std::move(store)), m_session(session)
 {
     connect(session, &bus::BusSession::knownMotorsChanged, this, &SoftLimitsFeed::feedAll);
