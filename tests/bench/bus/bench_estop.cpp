@@ -140,10 +140,12 @@ bool timeOneStop(BusSession &session, StopFigures &f, double delayMs)
 
 QStringList lksimArgs(int baud, Scenario scenario)
 {
-    QStringList args{"--motors",         "1:MF,9:MG,20:MF,31:MG", "--wire-time", "--baud",
-                     QString::number(baud), "--reply-delay-us",     "500"};
+    QStringList args{"--motors", "1:MF,9:MG,20:MF,31:MG", "--wire-time",
+                     "--baud",   QString::number(baud),   "--reply-delay-us",
+                     "500"};
     if (scenario == Scenario::Drops)
-        args << "--faults" << "drop=0.1,delay=0.01,delay_ms=20,seed=7";
+        args << "--faults"
+             << "drop=0.1,delay=0.01,delay_ms=20,seed=7";
     return args;
 }
 
@@ -190,7 +192,7 @@ StopFigures stops(int baud, Scenario scenario)
         }
         if (f.ok && scenario == Scenario::ScanRace)
             f.ok = scanOnce(session); // the stop cancelled it: learn the drives again
-        bench::spin(200); // polling again, late replies included
+        bench::spin(200);             // polling again, late replies included
     }
     session.close();
     return f;

@@ -28,7 +28,7 @@ void tst_CommandedMotion::describesWithUnits_data()
     QTest::newRow("power 0") << *build::openLoop(1, 0).request << "open-loop power 0 rel.";
     QTest::newRow("power -300") << *build::openLoop(1, -300).request << "open-loop power -300 rel.";
     QTest::newRow("speed") << *build::speed(1, 360).request << "speed 360 dps";
-    QTest::newRow("torque") << *build::torque(1, 0.5).request << "torque 0.5 A";
+    QTest::newRow("torque") << *build::torque(1, 0.5, {}).request << "torque 0.5 A";
     QTest::newRow("position") << *build::multiPosition(1, 90).request << "position 90\u00b0";
 }
 
