@@ -574,14 +574,6 @@ void ControlView::haltLocalMotion(const QString &reason)
     m_keys->jogEnded();
 }
 
-void ControlView::showDriveStopped(int id, const QString &why)
-{
-    if (id != driveId())
-        return;
-    haltLocalMotion(why);
-    setStatus(why, true);
-}
-
 void ControlView::onTelemetry(const bus::TelemetryBatch &batch)
 {
     m_driveState->noteTelemetry(batch);
