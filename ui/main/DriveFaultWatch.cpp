@@ -7,7 +7,6 @@
 #include <panels/MessageBanner.h>
 
 #include <QtCore/QLoggingCategory>
-#include <QtCore/QSet>
 
 #include <cmath>
 #include <optional>
@@ -41,22 +40,32 @@ DriveFaultWatch::DriveFaultWatch(BusModel *model, CommandedMotion *motion, Messa
 
 void DriveFaultWatch::onTelemetry(const bus::TelemetryBatch &batch)
 {
-    QSet<int> ids;
+    // The fields each drive had been read with before this batch: a field is judged from its
+    // second reading on. The first 0x9A of a drive is the scan's probe, decoded before its
+    // model (and so its generation) was read: a V2.35 drive's shows 0.9 V and wrong flags.
+    QMap<int, bus::TelemetryFields> before;
     for (const bus::TelemetrySample &s : batch) {
         if (!m_model->drive(s.id))
             continue; // not a drive of this bus (a late reply after a rescan)
-        judgeStopped(s, m_drives[s.id]);
-        ids.insert(s.id);
+        Drive &d = m_drives[s.id];
+        judgeStopped(s, d);
+        if (!before.contains(s.id))
+            before.insert(s.id, d.polled);
+        d.polled |= s.fields;
     }
-    for (int id : std::as_const(ids))
-        judgeHealth(id, m_drives[id]);
+    for (auto it = before.cbegin(); it != before.cend(); ++it)
+        judgeHealth(it.key(), m_drives[it.key()], *it);
 }
 
-void DriveFaultWatch::judgeHealth(int id, Drive &d)
+void DriveFaultWatch::judgeHealth(int id, Drive &d, bus::TelemetryFields judged)
 {
     const DriveRecord &r = *m_model->drive(id);
-    const DriveHealth h = DriveHealth::of(r);
-    const int flags = r.has(F::ErrorState) ? r.latest.errorState : 0;
+    DriveHealth h = DriveHealth::of(r);
+    if (!judged.testFlag(F::Voltage))
+        h.lowVoltage = h.highVoltage = false;
+    if (!judged.testFlag(F::ErrorState))
+        h.faults = false;
+    const int flags = h.faults ? r.latest.errorState : 0; // judged as DriveHealth does
     const int appeared = flags & ~d.errorState;
     bool changed = false;
     if (appeared) {
@@ -69,10 +78,10 @@ void DriveFaultWatch::judgeHealth(int id, Drive &d)
     d.errorState = flags;
     if (h.hot != d.health.hot) {
         note(id, d,
-             h.hot ? tr("temperature %1 \u00b0C (hot from %2 \u00b0C)")
+             h.hot ? tr("temperature %1 °C (hot from %2 °C)")
                          .arg(r.latest.temperatureC)
                          .arg(DriveHealth::kHotTemperatureC)
-                   : tr("temperature back below %1 \u00b0C (%2 \u00b0C)")
+                   : tr("temperature back below %1 °C (%2 °C)")
                          .arg(DriveHealth::kHotTemperatureC)
                          .arg(r.latest.temperatureC),
              h.hot);

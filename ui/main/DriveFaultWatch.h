@@ -55,6 +55,7 @@ signals:
 private:
     struct Drive {
         DriveHealth health;
+        bus::TelemetryFields polled; ///< the fields read so far
         int errorState = 0;
         QDateTime commandAt;       ///< the CommandedMotion entry it follows (its sentAt)
         double firstReadingS = -1; ///< session time of the first reading after that command
@@ -62,7 +63,8 @@ private:
         bool stopReported = false;
         QStringList events; ///< "12:03:04 over-temperature (0x08)", newest last
     };
-    void judgeHealth(int id, Drive &d);
+    /// `judged`: the fields read in an earlier batch (the others are not judged yet).
+    void judgeHealth(int id, Drive &d, bus::TelemetryFields judged);
     void judgeStopped(const bus::TelemetrySample &s, Drive &d);
     /// Why reading `s` says the drive is not following `command`; empty: it is following it;
     /// nullopt: the reading says nothing about it (another command's fields).

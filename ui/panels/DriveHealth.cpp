@@ -12,9 +12,11 @@ DriveHealth DriveHealth::of(const DriveRecord &d)
 {
     DriveHealth h;
     const auto &v = d.latest;
-    h.faults = d.has(F::ErrorState) && v.errorState != 0;
+    // The flags' meaning and the voltage's scale follow the generation (read_model).
+    const bool known = d.generation().has_value();
+    h.faults = known && d.has(F::ErrorState) && v.errorState != 0;
     h.hot = d.has(F::Temperature) && v.temperatureC >= kHotTemperatureC;
-    if (d.has(F::Voltage) && d.series) {
+    if (known && d.has(F::Voltage) && d.series) {
         const motor::SeriesLimits &l = motor::seriesLimits(*d.series);
         h.lowVoltage = v.voltageV < l.minSupplyV;
         h.highVoltage = v.voltageV > l.maxSupplyV;
@@ -42,7 +44,7 @@ QStringList DriveHealth::problems(const DriveRecord &d) const
                    .arg(Format::errorFlagsText(v.errorState, d.generation()))
                    .arg(v.errorState, 2, 16, QLatin1Char('0'));
     if (hot)
-        out << tr("temperature %1 (hot from %2 \u00b0C)")
+        out << tr("temperature %1 (hot from %2 °C)")
                    .arg(Format::withUnit(v.temperatureC, 0, QStringLiteral("\u00b0C")))
                    .arg(kHotTemperatureC);
     if (voltageOut()) {

@@ -13,7 +13,8 @@ namespace lk::ui {
 /// What is wrong with a drive's latest values: fault flags set, the temperature at or above
 /// the warning threshold, the supply outside its series' range (motor::SeriesLimits). The
 /// dashboard and the overview colour these values red; DriveFaultWatch raises a banner entry
-/// and a log line when one appears (docs/SUPERVISION.md).
+/// and a log line when one appears (docs/SUPERVISION.md). Flags and supply are judged once the
+/// drive's generation is known (its model read), as their decoding depends on it.
 struct DriveHealth {
     Q_DECLARE_TR_FUNCTIONS(lk::ui::DriveHealth)
 public:
