@@ -11,6 +11,7 @@
 
 #include <LeaveHooks.h>
 #include <drive/ControlView.h>
+#include <drive/DriveStateCheck.h>
 #include <main/AppSettings.h>
 #include <main/BusController.h>
 #include <main/CommandedMotion.h>
@@ -103,6 +104,7 @@ private slots:
     void disconnectThroughTheDefaultStopsTheDrive();
     void terminationSignalStopsWithoutAsking();
     void faultsAreToldShownAndStopTheControlView();
+    void v235MaxSpeedIsReadBeforeItIsSet();
 
 private:
     /// The drive's speed read by a session of the test's own (the window has let go).
@@ -133,6 +135,8 @@ void tst_E2eSupervision::init()
     QVERIFY(m_dir.isValid());
     m_sim = std::make_unique<e2e::LksimProcess>(QStringLiteral(LKSIM_PATH));
     QStringList args{"--motors", "1:MF,4:MH", "--wire-time", "--baud", "115200", "--verbose"};
+    if (QTest::currentTestFunction() == QLatin1String("v235MaxSpeedIsReadBeforeItIsSet"))
+        args[1] = QStringLiteral("1:MF4015@2.35,4:MH");
     if (QTest::currentTestFunction() == QLatin1String("faultsAreToldShownAndStopTheControlView"))
         args << "--fault"
              << QStringLiteral("1:over_temperature@%1,4:low_voltage@%2")
@@ -390,6 +394,61 @@ void tst_E2eSupervision::faultsAreToldShownAndStopTheControlView()
     const QVector<ui::TelemetryChannel> pickable = ui::PlotPanel::pickableChannels();
     QVERIFY(pickable.contains(ui::TelemetryChannel::Temperature));
     QVERIFY(pickable.contains(ui::TelemetryChannel::Voltage));
+}
+
+void tst_E2eSupervision::v235MaxSpeedIsReadBeforeItIsSet()
+{
+    // A V2.35 drive tripped by the watch: its entry offers to set the drive's own Max Speed
+    // (ParamID 0x9A) from the soft limit. It is read (0x40) before it is written (0x42), read
+    // back, and not written again once it is at the limit.
+    m_window->busModel()->setCurrentId(1);
+    QTRY_COMPARE_WITH_TIMEOUT(control()->driveId(), 1, kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        m_window->busModel()->drive(1)->generation() == protocol::Generation::V2_35, kWaitMs);
+    // A V2.35 drive's motor state is read before motion (it powers up on).
+    QTRY_VERIFY_WITH_TIMEOUT(control()->driveState()->motorOn() == std::optional<bool>(true),
+                             kWaitMs);
+    safety::SoftLimits limits = control()->softLimits();
+    limits.maxSpeedDps = 720;
+    control()->setSoftLimits(limits);
+    QSignalSpy tripped(m_window->controller()->session(), &bus::BusSession::speedWatchTripped);
+    const protocol::DecodeContext v235{Series::MF, protocol::Generation::V2_35};
+    // Sent once the motor state has been read again (pending until then).
+    const ui::MotionOutcome sent = control()->sendMotion(protocol::build::torque(1, 0.3, v235));
+    QVERIFY2(sent.sent || sent.pending, qPrintable(control()->statusText()));
+    QTRY_COMPARE_WITH_TIMEOUT(tripped.size(), 1, kWaitMs);
+    const QString key = ui::SpeedWatchReport::entryKey(1);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        m_window->banner()->entryText(key).contains(ui::SpeedWatchReport::maxSpeedLink()), kWaitMs);
+    // lksim's log is read once it falls quiet: nothing polls from here on. The Max Speed
+    // frames (0x40/0x42 of ParamID 0x9A) after the torque, as "40" or "42" in order.
+    m_window->controller()->session()->stopPolling();
+    const auto maxSpeedFrames = [this] {
+        QTest::qWait(300); // the last replies pass
+        QStringList out;
+        bool afterTorque = false;
+        for (const QByteArray &f : m_sim->receivedFrames()) {
+            const QList<QByteArray> b = f.split(' ');
+            afterTorque = afterTorque || (b.value(1) == "A1" && b.value(2) == "01");
+            if (afterTorque && (b.value(1) == "40" || b.value(1) == "42") && b.value(5) == "9A")
+                out << QString::fromLatin1(b.value(1));
+        }
+        return out;
+    };
+    QCOMPARE(maxSpeedFrames(), QStringList{});
+    emit m_window->banner()->entryLinkActivated(key, ui::SpeedWatchReport::maxSpeedLink());
+    QTRY_VERIFY_WITH_TIMEOUT(
+        m_window->banner()->entryText(key).contains(QStringLiteral("reads back 720.00 dps")),
+        kWaitMs);
+    // Read, written once, read back: in that order on the wire.
+    QCOMPARE(maxSpeedFrames(), (QStringList{"40", "42", "40"}));
+    // At the limit now: read again, nothing written.
+    emit m_window->banner()->entryLinkActivated(key, ui::SpeedWatchReport::maxSpeedLink());
+    QTRY_VERIFY_WITH_TIMEOUT(m_window->banner()->entryText(key).contains(
+                                 QStringLiteral("not above your limit: nothing was written")),
+                             kWaitMs);
+    QCOMPARE(maxSpeedFrames(), (QStringList{"40", "42", "40", "40"}));
+    e2e::verifyNoCollisions(*m_sim);
 }
 
 QTEST_MAIN(tst_E2eSupervision)
