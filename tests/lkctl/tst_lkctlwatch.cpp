@@ -3,6 +3,8 @@
 // with it, the bus thread's speed watch stops a drive past the speed limit (exit 6), and the
 // end of the watch, Ctrl+C and SIGTERM stop it too (Motor Stop, acknowledged).
 
+#include "E2eUtil.h"
+
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
 #include <QtCore/QProcess>
@@ -13,27 +15,8 @@
 
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Result lkctl(const QStringList &args)
-{
-    QProcess p;
-    p.start(QStringLiteral(LKCTL_PATH), args);
-    if (!p.waitForStarted(60000))
-        qFatal("cannot start %s", LKCTL_PATH);
-    p.closeWriteChannel();
-    if (!p.waitForFinished(120000)) // generous: the machine is shared and may be loaded
-        qFatal("lkctl %s did not finish", qPrintable(args.join(' ')));
-    Result r;
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
-}
+using lk::e2e::lkctl;
+using Result = lk::e2e::CtlResult;
 
 QStringList words(const char *text)
 {
@@ -42,9 +25,7 @@ QStringList words(const char *text)
 
 QString describe(const Result &r)
 {
-    return QStringLiteral("exit %1\nstdout: %2\nstderr: %3")
-        .arg(r.exitCode)
-        .arg(QString::fromUtf8(r.out), QString::fromUtf8(r.err));
+    return lk::e2e::describeRun(r);
 }
 
 } // namespace
