@@ -2,6 +2,7 @@
 
 #include "Console.h"
 
+#include <bus/MotorRegistry.h>
 #include <bus/Scanner.h>
 #include <protocol/Command.h>
 #include <system/FileHolders.h>
@@ -156,7 +157,7 @@ std::optional<LiveBus::Identity> LiveBus::identify(int id)
     Identity i;
     i.model = std::get<protocol::ModelInfo>(r.reply->payload);
     i.reply = *r.reply;
-    i.series = bus::Scanner::inferSeries(i.model);
+    i.series = bus::MotorRegistry::seriesOf(i.model);
     if (i.series)
         m_session.setSeries(id, *i.series);
     return i;

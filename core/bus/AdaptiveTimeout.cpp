@@ -22,27 +22,44 @@ AdaptiveTimeout::CommandClass AdaptiveTimeout::classOf(Command command)
     return read ? CommandClass::Read : CommandClass::Write;
 }
 
-double AdaptiveTimeout::extraLatencyS(Command command, int baud, double latencyS)
+double AdaptiveTimeout::wireS(Command command, int baud, int replyFrameBytes)
 {
-    // The actual reply may be the shorter layout; measure against the usual one so that a
-    // long 0x12 reply shows up as extra latency rather than as a negative figure.
-    return std::max(0.0, latencyS - BusTiming::transactionTimeS(command, baud));
+    // The reply as it came: a V2.35 drive's 58-byte model reply takes 17 ms more at 9600 baud
+    // than the usual 42 bytes, which is wire time, not latency.
+    const int replyBytes = replyFrameBytes > 0 ? replyFrameBytes : BusTiming::replyBytes(command);
+    return BusTiming::wireTimeS(BusTiming::requestBytes(command), replyBytes, baud);
 }
 
-void AdaptiveTimeout::addReply(Command command, int baud, double latencyS)
+double AdaptiveTimeout::extraLatencyS(Command command, int baud, double latencyS,
+                                      int replyFrameBytes)
 {
-    const double extra = extraLatencyS(command, baud, latencyS);
+    return std::max(0.0,
+                    latencyS - wireS(command, baud, replyFrameBytes) - BusTiming::kTurnaroundS);
+}
+
+void AdaptiveTimeout::addReply(Command command, int baud, double latencyS, int id,
+                               int replyFrameBytes)
+{
+    const double extra = extraLatencyS(command, baud, latencyS, replyFrameBytes);
+    decayLate(id, extra);
     const CommandClass c = classOf(command);
     // Writing flash takes the drive itself longer: that teaches its own class only, while
     // the link's latency (adapter, host) shows in every other reply.
     if (c != CommandClass::Flash) {
         m_link.add(extra);
-        const double wire = BusTiming::transactionTimeS(command, baud, 0);
-        m_turnaround.add(std::max(0.0, latencyS - wire));
+        m_turnaround.add(std::max(0.0, latencyS - wireS(command, baud, replyFrameBytes)));
     }
     m_classes[static_cast<size_t>(c)].add(extra);
-    if (m_sinceLate < kWindow)
-        ++m_sinceLate;
+}
+
+void AdaptiveTimeout::decayLate(int id, double extraS)
+{
+    const auto it = m_lateExtraS.find(id);
+    if (it == m_lateExtraS.end())
+        return;
+    *it = std::max(extraS, *it * kLateDecay);
+    if (kLateFactor * *it < m_config.minMarginMs * 1e-3)
+        m_lateExtraS.erase(it);
 }
 
 std::optional<double> AdaptiveTimeout::measuredTurnaroundS() const
@@ -52,12 +69,14 @@ std::optional<double> AdaptiveTimeout::measuredTurnaroundS() const
     return m_turnaround.min();
 }
 
-void AdaptiveTimeout::addLateReply(Command command, int baud, double latencyS)
+void AdaptiveTimeout::addLateReply(Command command, int baud, double latencyS, int id,
+                                   int replyFrameBytes)
 {
-    addReply(command, baud, latencyS);
-    const double extra = extraLatencyS(command, baud, latencyS);
-    m_lateExtraS = m_sinceLate < kWindow ? std::max(m_lateExtraS, extra) : extra;
-    m_sinceLate = 0;
+    // Not into the link's windows: one drive's late answer is that drive's, and a p99 of a
+    // few replies would otherwise lift every drive's timeout (and each silent ID's wait).
+    const double extra = extraLatencyS(command, baud, latencyS, replyFrameBytes);
+    double &lift = m_lateExtraS[id];
+    lift = std::max(lift, extra);
 }
 
 void AdaptiveTimeout::reset()
@@ -66,8 +85,7 @@ void AdaptiveTimeout::reset()
     m_turnaround.clear();
     for (LatencyWindow &w : m_classes)
         w.clear();
-    m_lateExtraS = 0;
-    m_sinceLate = kWindow;
+    m_lateExtraS.clear();
 }
 
 double AdaptiveTimeout::boundedS(double marginS) const
@@ -77,41 +95,41 @@ double AdaptiveTimeout::boundedS(double marginS) const
     return std::clamp(marginS, minS, maxS);
 }
 
-double AdaptiveTimeout::marginS(CommandClass commandClass) const
+double AdaptiveTimeout::marginS(CommandClass commandClass, int id) const
 {
     const LatencyWindow &own = m_classes[static_cast<size_t>(commandClass)];
     double margin =
         kPercentileFactor * std::max(m_link.quantile(kPercentile), own.quantile(kPercentile));
-    margin = std::max(margin, kLateFactor * recentLateS());
+    margin = std::max(margin, kLateFactor * lateExtraS(id));
     if (own.size() < kWarmupSamples)
         margin = std::max(margin, m_config.initialMarginMs * 1e-3);
     return boundedS(margin);
 }
 
-double AdaptiveTimeout::timeoutS(Command command, int baud) const
+double AdaptiveTimeout::timeoutS(Command command, int baud, int id) const
 {
-    return BusTiming::replyTimeoutS(command, baud, marginS(classOf(command)));
+    return BusTiming::replyTimeoutS(command, baud, marginS(classOf(command), id));
 }
 
-double AdaptiveTimeout::linkLatencyS() const
+double AdaptiveTimeout::linkLatencyS(int id) const
 {
-    return boundedS(std::max(m_link.quantile(kPercentile), recentLateS()));
+    return boundedS(std::max(m_link.quantile(kPercentile), lateExtraS(id)));
 }
 
-double AdaptiveTimeout::quietS(Command command, int baud) const
+double AdaptiveTimeout::quietS(Command command, int baud, int id) const
 {
     // A 99th percentile of fewer than a hundred replies says little: until then the link is
     // not trusted to be faster than BusConfig::initialMarginMs.
-    double latency = linkLatencyS();
+    double latency = linkLatencyS(id);
     if (m_link.size() < kPercentileSamples)
         latency = std::max(latency, boundedS(m_config.initialMarginMs * 1e-3));
     return BusTiming::kTurnaroundS +
            BusTiming::wireTimeS(0, BusTiming::maxReplyBytes(command), baud) + latency;
 }
 
-double AdaptiveTimeout::replyDeadlineS(Command command, int baud) const
+double AdaptiveTimeout::replyDeadlineS(Command command, int baud, int id) const
 {
-    return BusTiming::replyTimeoutS(command, baud, linkLatencyS());
+    return BusTiming::replyTimeoutS(command, baud, linkLatencyS(id));
 }
 
 } // namespace lk::bus

@@ -60,6 +60,7 @@ void BusSession::connectWorker()
     relay(&BusWorker::errorOccurred, &BusSession::errorOccurred);
     relay(&BusWorker::requestCompleted, &BusSession::finishRequest);
     relay(&BusWorker::emergencyStopFinished, &BusSession::finishStop);
+    relay(&BusWorker::emergencyStopProgress, &BusSession::emergencyStopProgress);
     relay(&BusWorker::scanProgress, &BusSession::scanProgress);
     relay(&BusWorker::motorFound, &BusSession::motorFound);
     relay(&BusWorker::scanFinished, &BusSession::scanFinished);

@@ -153,6 +153,10 @@ signals:
     /// The end of a send() or of one emergency motor_off. Polls and scan probes do not
     /// report here: their replies arrive as telemetry and scan signals.
     void requestCompleted(const lk::bus::RequestResult &result);
+    /// One more ID of an emergency stop answered or stayed silent (in the order the results
+    /// came); `remaining` halts are still to come. emergencyStopFinished follows the last.
+    void emergencyStopProgress(quint64 ticket, const QVector<int> &acknowledged,
+                               const QVector<int> &silent, int remaining);
     /// Every ID has answered or stayed silent. `unsent`: the silent IDs whose motor_off never
     /// reached the wire (the link dropped, or the session was closed: then all of them).
     void emergencyStopFinished(quint64 ticket, const QVector<int> &acknowledged,

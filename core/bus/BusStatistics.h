@@ -16,9 +16,12 @@ struct LatencySummary {
 
 /// Counters for one drive or for the whole bus. Counters only grow during a session.
 struct LinkStatistics {
-    quint64 requests = 0;         ///< attempts put on the wire (retries count again)
-    quint64 replies = 0;          ///< matching replies that decoded
-    quint64 timeouts = 0;         ///< attempts that got no reply in time
+    quint64 requests = 0; ///< attempts put on the wire (retries count again)
+    quint64 replies = 0;  ///< matching replies that decoded
+    quint64 timeouts = 0; ///< attempts that got no reply in time
+    /// Scan and emergency-stop probes of IDs that never answered on this connection: the
+    /// silence expected from an ID with no drive, not counted as timeouts (bus level only).
+    quint64 silentProbes = 0;
     quint64 retries = 0;          ///< attempts beyond the first
     quint64 checksumErrors = 0;   ///< bad header or data checksum
     quint64 garbageBytes = 0;     ///< bytes skipped while resynchronising (bus level only)

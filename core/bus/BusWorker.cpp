@@ -333,7 +333,13 @@ void BusWorker::noteReply(const protocol::Reply &reply, double time, const Pendi
         changed = m_motors.learnModel(reply.id, *model, std::nullopt) || changed;
     if (changed)
         emit knownMotorsChanged(m_motors.all());
+    const Command sent = request.req.request.command;
+    const bool halt = sent == Command::MotorOff || sent == Command::MotorStop;
+    if (movesMotor(sent) || halt)
+        m_motors.noteMotion(reply.id, !halt); // the emergency stop reaches it first
     if (std::optional<TelemetrySample> s = TelemetrySample::fromReply(reply, time)) {
+        if (!movesMotor(sent) && s->has(TelemetryField::Speed))
+            m_motors.noteMotion(reply.id, s->speedDps != 0);
         s->cycle = request.pollCycle; // which poll round it answers: rows are built per round
         s->cycleTime = request.pollCycleStart;
         m_telemetry.add(*s);
@@ -393,6 +399,9 @@ void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command h
             if (stop->record(res))
                 emit emergencyStopFinished(stop->ticket(), stop->acknowledged(), stop->silent(),
                                            stop->unsent());
+            else
+                emit emergencyStopProgress(stop->ticket(), stop->acknowledged(), stop->silent(),
+                                           stop->remaining());
         });
     }
 }

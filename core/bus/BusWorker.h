@@ -54,12 +54,16 @@ class Scanner;
 ///
 /// Quiet period: after a timeout nothing is transmitted until a late reply to the request
 /// could no longer be on its way (AdaptiveTimeout::quietS: the drive's longest turnaround,
-/// the longest reply's wire time and the link's latency). After a probe's short timeout
-/// (scan, emergency stop), where silence is the usual answer, it lasts only until a reply
-/// could have come from a drive that keeps its turnaround (AdaptiveTimeout::replyDeadlineS,
-/// from the send), so that silent IDs stay cheap. Bytes arriving meanwhile are a reply in
-/// progress and restart it (full length); a complete late reply to that request ends it.
-/// Late replies are counted (BusStatistics) and never taken for a later request's answer.
+/// the longest reply's wire time and the link's latency). After a scan probe's short
+/// timeout, where silence is the usual answer, it lasts only until a reply could have come
+/// from a drive that keeps its turnaround (AdaptiveTimeout::replyDeadlineS, from the send),
+/// so that silent IDs stay cheap. After an emergency stop's Motor Off it lasts only as long as
+/// the wire itself needs (request, turnaround, longest reply): the link's latency delays only
+/// our reading of a reply, and one drive's late reply lifts only that drive's timeout. Bytes
+/// arriving meanwhile are a reply in progress and restart it (full length); a complete late
+/// reply to that request ends it. Late replies are counted (BusStatistics) and never taken
+/// for a later request's answer. Probes of IDs that never answered on this connection that
+/// stay silent are counted apart from timeouts (BusStatistics silentProbes).
 ///
 /// Retries (BusConfig::retries, BusRequest::retries) never apply to incremental moves or ROM
 /// writes: a drive that acted but whose reply was lost would move twice or write flash twice.
@@ -136,6 +140,12 @@ public:
     /// Whether transmissions are held back now: the quiet period after a timeout.
     bool isQuiet() const { return m_wire.isQuiet(); }
     double currentMarginMs() const { return m_wire.timeouts().marginS() * 1e3; }
+    /// The reply timeout a request of `command` to drive `id` gets now (a late reply of that
+    /// drive lifts it for a while; AdaptiveTimeout).
+    double replyTimeoutS(protocol::Command command, int id) const
+    {
+        return m_wire.timeouts().timeoutS(command, baud(), id);
+    }
     /// The shortest sensible reply timeout: wire time + turnaround + BusConfig::minMarginMs,
     /// for probes where silence is the common answer (scan pass 1, emergency stop).
     double probeTimeoutS(protocol::Command command) const;
@@ -152,6 +162,9 @@ signals:
     void connectionChanged(const lk::bus::ConnectionStatus &status);
     void errorOccurred(const lk::transport::TransportError &error);
     void requestCompleted(const lk::bus::RequestResult &result);
+    /// One more halt of a stop has its result; `remaining` are still to come.
+    void emergencyStopProgress(quint64 ticket, const QVector<int> &acknowledged,
+                               const QVector<int> &silent, int remaining);
     /// `unsent`: the silent IDs whose halt never reached the wire.
     void emergencyStopFinished(quint64 ticket, const QVector<int> &acknowledged,
                                const QVector<int> &silent, const QVector<int> &unsent);

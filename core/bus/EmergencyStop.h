@@ -21,11 +21,13 @@ public:
                   protocol::Command halt = protocol::Command::MotorOff);
 
     QVector<BusRequest> requests() const;
-    /// Count one motor_off result; true when it was the last one (then both lists are in
-    /// ascending ID order).
+    /// Count one motor_off result; true when it was the last one (then the lists are in
+    /// ascending ID order; before, in the order the results came).
     bool record(const RequestResult &result);
 
     quint64 ticket() const { return m_ticket; }
+    /// Halts whose result is still to come.
+    int remaining() const { return m_remaining; }
     const QVector<int> &acknowledged() const { return m_acknowledged; }
     const QVector<int> &silent() const { return m_silent; }
     /// The silent IDs whose halt never reached the wire (the link dropped first).

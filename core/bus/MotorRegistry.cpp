@@ -36,7 +36,13 @@ protocol::DecodeContext MotorRegistry::decodeContext(int id) const
 
 StopTargets MotorRegistry::emergencyTargets(const QVector<int> &ids) const
 {
-    return StopTargets::of(ids, m_motors.keys());
+    QVector<int> urgent = ids;
+    for (int id : m_moving)
+        urgent.append(id);
+    QList<int> known = m_motors.keys();
+    for (int id : m_answered)
+        known.append(id);
+    return StopTargets::of(urgent, known);
 }
 
 std::optional<QString> MotorRegistry::unavailableReason(const protocol::Request &request) const
@@ -62,12 +68,25 @@ std::optional<QString> MotorRegistry::unavailableReason(const protocol::Request 
 
 bool MotorRegistry::noteSeen(int id)
 {
-    if (!validId(id) || m_motors.contains(id))
+    if (!validId(id))
+        return false;
+    m_answered.insert(id);
+    if (m_motors.contains(id))
         return false;
     KnownMotor m;
     m.id = id;
     m_motors.insert(id, m);
     return true;
+}
+
+void MotorRegistry::noteMotion(int id, bool moving)
+{
+    if (!validId(id))
+        return;
+    if (moving)
+        m_moving.insert(id);
+    else
+        m_moving.remove(id);
 }
 
 bool MotorRegistry::setSeries(int id, protocol::Series series)

@@ -6,6 +6,7 @@
 #include <protocol/Request.h>
 #include <protocol/Series.h>
 
+#include <QtCore/QSet>
 #include <QtCore/QString>
 #include <QtCore/QVector>
 
@@ -15,6 +16,10 @@ namespace lk::bus {
 
 /// The IDs a bus knows (scan, setSeries, any reply) and how to decode each one's replies.
 /// Mutators return whether anything changed, so the owner signals only real changes.
+///
+/// Apart from what it knows, it remembers which IDs answered on this connection and which
+/// were last seen moving: a scan forgets the first (forget()), never the others, so that an
+/// emergency stop during a re-scan reaches the drives it just saw turning first.
 class MotorRegistry {
 public:
     const KnownMotors &all() const { return m_motors; }
@@ -23,13 +28,20 @@ public:
     protocol::DecodeContext decodeContext(int id) const;
 
     /// Who an emergency stop must reach: `ids` (the caller's known and recently commanded
-    /// drives) and every known ID first, then every other ID of 1..32: always all 32.
+    /// drives) and the drives seen moving, then every known ID and every ID that answered on
+    /// this connection, then every other ID of 1..32: always all 32.
     StopTargets emergencyTargets(const QVector<int> &ids) const;
     /// Why `request` must not be sent: its drive's generation lacks the command (known once
     /// the drive's model was read). nullopt: it may go.
     std::optional<QString> unavailableReason(const protocol::Request &request) const;
 
+    /// `id` answered: it is known (true when it was not) and remembered as answering.
     bool noteSeen(int id);
+    /// Whether `id` is moving as far as the bus saw: a motion command it acknowledged or a
+    /// speed it reported.
+    void noteMotion(int id, bool moving);
+    /// IDs that answered on this connection, whatever a scan has forgotten since.
+    const QSet<int> &answered() const { return m_answered; }
     bool setSeries(int id, protocol::Series series);
     /// The drive's model and generation; its series is `series`, or else what the model's
     /// names tell (seriesOf()), wherever the model was read (a scan, lkctl info, a view).
@@ -43,6 +55,8 @@ public:
 
 private:
     KnownMotors m_motors;
+    QSet<int> m_answered;
+    QSet<int> m_moving;
 };
 
 } // namespace lk::bus

@@ -3,8 +3,8 @@
 #include "BusLog.h"
 #include "BusTiming.h"
 #include "BusWorker.h"
+#include "MotorRegistry.h"
 
-#include <motor/ModelNameInfo.h>
 #include <protocol/Checksum.h>
 
 #include <QtCore/QMap>
@@ -85,13 +85,6 @@ int Scanner::driveCount(const QVector<FoundMotor> &motors)
         count += seen ? 0 : 1;
     }
     return count;
-}
-
-std::optional<protocol::Series> Scanner::inferSeries(const protocol::ModelInfo &model)
-{
-    if (auto s = motor::ModelNameInfo::parse(model.motorName).series)
-        return s;
-    return motor::ModelNameInfo::parse(model.driverName).series;
 }
 
 void Scanner::start(const ScanOptions &options)
@@ -258,7 +251,7 @@ void Scanner::onModel(const RequestResult &r, FoundMotor motor)
     if (r.ok() && r.reply && std::holds_alternative<protocol::ModelInfo>(r.reply->payload)) {
         motor.model = std::get<protocol::ModelInfo>(r.reply->payload);
         motor.modelKnown = true;
-        motor.series = inferSeries(motor.model);
+        motor.series = MotorRegistry::seriesOf(motor.model);
         // The probe was read before the generation was known: read it again with the right
         // layout (a V2.35 drive's 24 V would otherwise show as 308 V).
         if (motor.state1)

@@ -72,9 +72,6 @@ public:
     /// read their model and the models differ.
     static int driveCount(const QVector<FoundMotor> &motors);
 
-    /// Series from the motor name, else from the driver name; nullopt when neither tells.
-    static std::optional<protocol::Series> inferSeries(const protocol::ModelInfo &model);
-
 signals:
     void progress(const lk::bus::ScanProgress &progress);
     void found(const lk::bus::FoundMotor &motor);

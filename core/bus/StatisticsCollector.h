@@ -18,6 +18,8 @@ public:
     void requestSent(int id, bool retry);
     void replyReceived(int id, double latencyS);
     void timedOut(int id);
+    /// A scan or stop probe of `id`, which never answered, stayed silent (see silentProbes).
+    void silentProbe() { ++m_bus.stats.silentProbes; }
     void lateReply(int id);
     void unexpectedFrame(int id);
     void undecodable(int id); ///< a matching frame that did not decode

@@ -3,22 +3,34 @@
 #include <protocol/Checksum.h>
 
 #include <algorithm>
+#include <array>
 
 namespace lk::bus {
 
-StopTargets StopTargets::of(const QVector<int> &priority, const QList<int> &known)
+namespace {
+/// The valid IDs of `ids` not in `taken`, ascending, each once; they join `taken`.
+QVector<int> tier(const QList<int> &ids, std::array<bool, protocol::kMaxId + 1> &taken)
 {
-    StopTargets t;
-    for (const QList<int> &ids : {priority, known}) {
-        for (int id : ids) {
-            if (id >= protocol::kMinId && id <= protocol::kMaxId)
-                t.first.append(id);
+    QVector<int> out;
+    for (int id : ids) {
+        if (id >= protocol::kMinId && id <= protocol::kMaxId && !taken[id]) {
+            taken[id] = true;
+            out.append(id);
         }
     }
-    std::sort(t.first.begin(), t.first.end());
-    t.first.erase(std::unique(t.first.begin(), t.first.end()), t.first.end());
+    std::sort(out.begin(), out.end());
+    return out;
+}
+} // namespace
+
+StopTargets StopTargets::of(const QVector<int> &urgent, const QList<int> &known)
+{
+    std::array<bool, protocol::kMaxId + 1> taken{};
+    StopTargets t;
+    t.first = tier(urgent, taken); // before `known`'s tier: it takes the urgent ones first
+    t.first += tier(known, taken);
     for (int id = protocol::kMinId; id <= protocol::kMaxId; ++id) {
-        if (!std::binary_search(t.first.cbegin(), t.first.cend(), id))
+        if (!taken[id])
             t.others.append(id);
     }
     return t;

@@ -17,6 +17,13 @@ QString commandText(const protocol::Request &r)
 {
     return QStringLiteral("%1 (ID %2)").arg(protocol::CommandTable::name(r.command)).arg(r.id);
 }
+
+/// A frame's length on the wire: header, data and, with data, its checksum.
+int wireBytes(const protocol::Frame &f)
+{
+    const int data = static_cast<int>(f.data.size());
+    return protocol::kHeaderSize + data + (data > 0 ? 1 : 0);
+}
 } // namespace
 
 WireExchange::WireExchange(TransportLink &link, const MotorRegistry &motors,
@@ -66,7 +73,7 @@ void WireExchange::send(Pending p)
     m_diagnostics.recordSent(p.bytes, r.id);
     const double timeoutS = p.attempts == 1 && p.req.firstTimeoutS > 0
                                 ? p.req.firstTimeoutS
-                                : m_timeout.timeoutS(r.command, baud());
+                                : m_timeout.timeoutS(r.command, baud(), r.id);
     const protocol::Request request = r;
     const QByteArray bytes = p.bytes;
     m_inflight = std::move(p);
@@ -113,25 +120,43 @@ void WireExchange::onTimeout()
     if (!m_inflight)
         return;
     const protocol::Request &r = m_inflight->req.request;
-    m_diagnostics.counters().timedOut(r.id);
+    // An ID with no drive answers no probe: a scan or a stop would otherwise add some 28
+    // "timeouts" each, hiding the ones that mean something.
+    const RequestOrigin origin = m_inflight->req.origin;
+    if ((origin == RequestOrigin::Scan || origin == RequestOrigin::Emergency) &&
+        !m_motors.answered().contains(r.id))
+        m_diagnostics.counters().silentProbe();
+    else
+        m_diagnostics.counters().timedOut(r.id);
     m_matcher.timedOut();
-    beginQuiet(r, m_inflight->attempts == 1 && m_inflight->req.firstTimeoutS > 0);
+    beginQuiet(r, m_inflight->attempts == 1 && m_inflight->req.firstTimeoutS > 0,
+               m_inflight->req.priority == Priority::Emergency);
     m_diagnostics.recordTimeout(r.id, static_cast<quint8>(r.command));
     fail(RequestStatus::Timeout,
          tr("no reply to %1 after %n attempt(s)", nullptr, m_inflight->attempts)
              .arg(commandText(r)));
 }
 
-void WireExchange::beginQuiet(const protocol::Request &request, bool probe)
+void WireExchange::beginQuiet(const protocol::Request &request, bool probe, bool emergency)
 {
-    const qint64 lengthNs = static_cast<qint64>(m_timeout.quietS(request.command, baud()) * 1e9);
-    // Silence is the common answer to a probe (scan, emergency stop), so it is not made to
-    // wait twice: only until a reply from a drive that keeps its turnaround could have come
-    // through this link, counted from the send. Often that is over already.
-    const qint64 untilNs =
-        probe ? m_sentNs +
-                    static_cast<qint64>(m_timeout.replyDeadlineS(request.command, baud()) * 1e9)
-              : m_clock->nowNs() + lengthNs;
+    const qint64 lengthNs =
+        static_cast<qint64>(m_timeout.quietS(request.command, baud(), request.id) * 1e9);
+    qint64 untilNs = m_clock->nowNs() + lengthNs;
+    if (emergency) {
+        // The stop's next Motor Off waits only for what the wire itself needs: a drive that
+        // heard this one answers within its turnaround, and its reply's last byte has left by
+        // then. An adapter's or host's latency delays only our reading of it, and a drive's
+        // late reply earlier on lifts only that drive's timeout: neither holds the stop.
+        untilNs = m_sentNs +
+                  static_cast<qint64>(BusTiming::replyTimeoutS(request.command, baud(), 0) * 1e9);
+    } else if (probe) {
+        // Silence is the common answer to a probe (scan), so it is not made to wait twice:
+        // only until a reply from a drive that keeps its turnaround could have come through
+        // this link, counted from the send. Often that is over already.
+        untilNs =
+            m_sentNs + static_cast<qint64>(
+                           m_timeout.replyDeadlineS(request.command, baud(), request.id) * 1e9);
+    }
     m_quiet.begin(untilNs, lengthNs, request.id, static_cast<quint8>(request.command));
 }
 
@@ -196,7 +221,8 @@ void WireExchange::onParseEvent(const protocol::ParseEvent &ev)
     case V::LateReply:
         // The link is slower than the margin assumed: let the margin learn from it.
         stats.lateReply(f.id);
-        m_timeout.addLateReply(static_cast<Command>(f.command), baud(), out.lateLatencyS);
+        m_timeout.addLateReply(static_cast<Command>(f.command), baud(), out.lateLatencyS, f.id,
+                               wireBytes(f));
         m_lateRequestSentS = std::max(m_lateRequestSentS, now() - out.lateLatencyS);
         m_quiet.lateFrameParsed(f.id, f.command);
         return;
@@ -204,17 +230,17 @@ void WireExchange::onParseEvent(const protocol::ParseEvent &ev)
         stats.unexpectedFrame(f.id);
         return;
     case V::Reply:
-        takeReply(std::move(*out.reply));
+        takeReply(std::move(*out.reply), wireBytes(f));
         return;
     }
 }
 
-void WireExchange::takeReply(protocol::Reply reply)
+void WireExchange::takeReply(protocol::Reply reply, int frameBytes)
 {
     const double latency = static_cast<double>(m_clock->nowNs() - m_sentNs) * 1e-9;
     m_recentLatency.add(latency);
     m_diagnostics.counters().replyReceived(reply.id, latency);
-    m_timeout.addReply(reply.command, baud(), latency);
+    m_timeout.addReply(reply.command, baud(), latency, reply.id, frameBytes);
     std::optional<Pending> p = abort();
     if (p && m_outcomes.replied)
         m_outcomes.replied(std::move(*p), std::move(reply), latency);

@@ -9,6 +9,7 @@
 #include "ReplyMatcher.h"
 #include "SingleShotTimer.h"
 
+#include <protocol/Checksum.h>
 #include <protocol/StreamParser.h>
 
 #include <QtCore/QObject>
@@ -52,7 +53,11 @@ public:
     /// A new byte stream (the link opened): no partial frame, nothing old expected.
     void restartStream();
     /// Another baud: the latencies seen at the old one say nothing.
-    void forgetLatencies() { m_recentLatency.clear(); }
+    void forgetLatencies()
+    {
+        m_recentLatency.clear();
+        m_timeout.reset();
+    }
 
     /// Puts `p` on the wire (the caller checked isBusy() and holdForQuiet()).
     void send(Pending p);
@@ -82,10 +87,12 @@ private:
     qint64 earliestReplyNs(protocol::Command command) const;
     void onTimeout();
     void onParseEvent(const protocol::ParseEvent &ev);
-    void takeReply(protocol::Reply reply);
+    /// `frameBytes`: the reply's length on the wire.
+    void takeReply(protocol::Reply reply, int frameBytes);
     /// The request on the wire timed out: hold transmissions until its reply cannot come.
-    /// `probe`: it had the short first timeout of a probe (BusRequest::firstTimeoutS).
-    void beginQuiet(const protocol::Request &request, bool probe);
+    /// `probe`: it had the short first timeout of a probe (BusRequest::firstTimeoutS);
+    /// `emergency`: it was an emergency stop's (only the wire's own time is waited for).
+    void beginQuiet(const protocol::Request &request, bool probe, bool emergency);
     void fail(RequestStatus status, const QString &reason);
 
     TransportLink &m_link;

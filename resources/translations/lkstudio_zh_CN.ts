@@ -2464,6 +2464,30 @@
         <source>NO answer from drive(s) %1: check them and cut their power if needed.</source>
         <translation>驱动 %1 无应答：请检查这些驱动，必要时切断其电源。</translation>
     </message>
+    <message>
+        <source>Pressed at %1 while the bus was not connected; sent as soon as it was back.</source>
+        <translation>于 %1 在总线未连接时按下；总线恢复后已立即发送。</translation>
+    </message>
+    <message>
+        <source>Emergency stop: Motor Off going out to every ID 1-32 (%1 of %2 done).</source>
+        <translation>急停：正在向 ID 1-32 逐一发送电机关闭（已完成 %1/%2）。</translation>
+    </message>
+    <message>
+        <source>Acknowledged so far by drive(s) %1.</source>
+        <translation>目前已确认的驱动器：%1。</translation>
+    </message>
+    <message>
+        <source>Waiting for drive(s) %1.</source>
+        <translation>正在等待驱动器 %1。</translation>
+    </message>
+    <message>
+        <source>Motor Off goes out to every drive as soon as this port is connected again (dismiss this message to cancel that).</source>
+        <translation>此端口重新连接后将立即向所有驱动器发送电机关闭（关闭此消息即可取消）。</translation>
+    </message>
+    <message>
+        <source>Drive(s) %1 did not answer but have since read stopped.</source>
+        <translation>驱动器 %1 未应答，但此后读取显示已停止。</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::EncoderLiveBox</name>
@@ -4259,6 +4283,10 @@
     <message>
         <source>Polling: %1 transactions/s achieved (%2); bus limit %3/s at %4 baud (%5).</source>
         <translation>轮询：实际 %1 次事务/秒（%2）；总线上限 %3 次/秒，波特率 %4（%5）。</translation>
+    </message>
+    <message>
+        <source>Silent IDs probed (scan, stop)</source>
+        <translation>探测无应答的 ID（扫描、急停）</translation>
     </message>
 </context>
 <context>

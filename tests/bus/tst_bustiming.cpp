@@ -30,6 +30,8 @@ private slots:
     void adaptiveMargin();
     void marginCoversTheSlowestPercent();
     void lateReplyLiftsMarginAtOnce();
+    void slowDriveStaysWaitedFor();
+    void longReplyIsWireTimeNotLatency();
     void marginWarmsUpPerCommandClass();
     void quietPeriodCoversTheLongestReply();
     void turnaroundIsMeasured();
@@ -216,18 +218,51 @@ void tst_BusTiming::lateReplyLiftsMarginAtOnce()
     AdaptiveTimeout t;
     const double wire = BusTiming::transactionTimeS(Command::ReadState1, 115200);
     for (int i = 0; i < 100; ++i)
-        t.addReply(Command::ReadState1, 115200, wire + 0.1e-3);
+        t.addReply(Command::ReadState1, 115200, wire + 0.1e-3, 3);
     QCOMPARE(t.marginS(), 2e-3);
-    // One reply came 30 ms after its request had timed out: the very next attempts, of any
-    // class, wait longer than that.
-    t.addLateReply(Command::ReadState1, 115200, wire + 30e-3);
+    // Drive 3 answered 30 ms after its request had timed out: the very next attempts to it,
+    // of any class, wait longer than that. Drive 4 and the link do not wait for drive 3.
+    t.addLateReply(Command::ReadState1, 115200, wire + 30e-3, 3);
     for (AdaptiveTimeout::CommandClass c :
          {AdaptiveTimeout::CommandClass::Read, AdaptiveTimeout::CommandClass::Write})
-        QVERIFY2(t.marginS(c) >= 1.5 * 30e-3 - 1e-9, qPrintable(QString::number(t.marginS(c))));
-    QVERIFY(t.quietS(Command::ReadState1, 115200) > 30e-3);
-    // It holds while a window of replies comes in, then the link's own figures rule again.
-    for (int i = 0; i < AdaptiveTimeout::kWindow; ++i)
-        t.addReply(Command::ReadState1, 115200, wire + 0.1e-3);
+        QVERIFY2(t.marginS(c, 3) >= 1.5 * 30e-3 - 1e-9,
+                 qPrintable(QString::number(t.marginS(c, 3))));
+    QVERIFY(t.quietS(Command::ReadState1, 115200, 3) > 30e-3);
+    QCOMPARE(t.marginS(AdaptiveTimeout::CommandClass::Read, 4), 2e-3);
+    QCOMPARE(t.marginS(), 2e-3);
+    QVERIFY(t.quietS(Command::ReadState1, 115200, 4) < 10e-3);
+    // Replies of drive 3 in time halve the lift each; it is gone within a few.
+    int replies = 0;
+    while (t.lateExtraS(3) > 0 && replies < 10) {
+        t.addReply(Command::ReadState1, 115200, wire + 0.1e-3, 3);
+        ++replies;
+    }
+    QVERIFY2(replies >= 3 && replies <= 6, qPrintable(QString::number(replies)));
+    QCOMPARE(t.marginS(AdaptiveTimeout::CommandClass::Read, 3), 2e-3);
+}
+
+void tst_BusTiming::slowDriveStaysWaitedFor()
+{
+    // A drive that answers 30 ms late every time keeps its lift: each reply in time decays it
+    // no further than that reply's own extra latency.
+    AdaptiveTimeout t;
+    const double wire = BusTiming::transactionTimeS(Command::ReadState1, 115200);
+    t.addLateReply(Command::ReadState1, 115200, wire + 30e-3, 5);
+    for (int i = 0; i < 50; ++i)
+        t.addReply(Command::ReadState1, 115200, wire + 30e-3, 5);
+    QVERIFY(t.timeoutS(Command::ReadState1, 115200, 5) > wire + 30e-3);
+}
+
+void tst_BusTiming::longReplyIsWireTimeNotLatency()
+{
+    // A V2.35 drive's model reply is 64 bytes on the wire, not the usual 48: at 9600 baud that
+    // is 16.7 ms of wire time, which must not teach the link a 17 ms latency.
+    AdaptiveTimeout t;
+    const double wire58 =
+        BusTiming::wireTimeS(BusTiming::requestBytes(Command::ReadModel), 64, 9600) +
+        BusTiming::kTurnaroundS;
+    for (int i = 0; i < 100; ++i)
+        t.addReply(Command::ReadModel, 9600, wire58 + 0.1e-3, 1, 64);
     QCOMPARE(t.marginS(), 2e-3);
 }
 

@@ -43,6 +43,7 @@ private slots:
     void localEchoIsSkipped_data();
     void localEchoIsSkipped();
     void lateReplyWidensMargin();
+    void lateLiftDecays();
     void quietPeriodHoldsTheRetry();
     void lateReplyInQuietPeriodIsCountedNotMatched();
     void sendWhileClosedCompletesDisconnected();
@@ -400,12 +401,17 @@ void tst_BusWorker::localEchoIsSkipped()
 
 void tst_BusWorker::lateReplyWidensMargin()
 {
+    // Drive 1 and drive 2 both answer after 150 ms, far beyond the 5 ms margin. Drive 1's
+    // late reply lifts drive 1's timeout, so that it is waited for next time; drive 2's
+    // timeout, and the link's margin, stay where they were: one late drive does not stall
+    // the others (drive 2's request times out as soon as before).
     BusConfig c = relaxedConfig();
     c.minMarginMs = c.initialMarginMs = 5;
     c.maxMarginMs = 400;
     WorkerRig rig(
         [](FakeTransport &t) {
             t.drives().add(1, Series::MF);
+            t.drives().add(2, Series::MF);
             t.setReplyDelayMs(150);
         },
         c, 115200, RigTime::Manual);
@@ -415,9 +421,48 @@ void tst_BusWorker::lateReplyWidensMargin()
     QCOMPARE(rig.result(ticket)->status, RequestStatus::Timeout);
     rig.runUntil([&] { return rig.worker->statisticsSnapshot().bus.lateReplies == 1; }, 5000);
     QCOMPARE(rig.worker->statisticsSnapshot().bus.lateReplies, quint64(1));
-    QVERIFY2(rig.worker->currentMarginMs() > 3 * before,
-             qPrintable(QString::number(rig.worker->currentMarginMs())));
-    QVERIFY(rig.worker->currentMarginMs() <= c.maxMarginMs);
+    QCOMPARE(rig.worker->currentMarginMs(), before);
+    QVERIFY2(rig.worker->replyTimeoutS(Command::ReadState1, 1) > 0.2,
+             qPrintable(QString::number(rig.worker->replyTimeoutS(Command::ReadState1, 1))));
+    QVERIFY(rig.worker->replyTimeoutS(Command::ReadState1, 2) < 0.02);
+    const double sent = rig.nowMs();
+    const quint64 other = rig.send(plainRequest(Command::ReadState1, 2), Priority::Operator, 0);
+    QVERIFY(rig.runUntil([&] { return rig.result(other); }, 5000));
+    QCOMPARE(rig.result(other)->status, RequestStatus::Timeout);
+    QVERIFY2(rig.nowMs() - sent < 20, qPrintable(QString::number(rig.nowMs() - sent)));
+}
+
+void tst_BusWorker::lateLiftDecays()
+{
+    // After its late reply, drive 1 answers quickly again: each reply in time halves the
+    // lift, and it is gone once it is smaller than the least margin.
+    BusConfig c = relaxedConfig();
+    c.minMarginMs = c.initialMarginMs = 5;
+    c.maxMarginMs = 400;
+    FakeTransport *transport = nullptr;
+    WorkerRig rig(
+        [&transport](FakeTransport &t) {
+            t.drives().add(1, Series::MF);
+            t.setReplyDelayMs(150);
+            transport = &t;
+        },
+        c, 115200, RigTime::Manual);
+    const quint64 ticket = rig.send(plainRequest(Command::ReadState1, 1), Priority::Operator, 0);
+    QVERIFY(rig.runUntil([&] { return rig.result(ticket); }, 5000));
+    rig.runUntil([&] { return rig.worker->statisticsSnapshot().bus.lateReplies == 1; }, 5000);
+    transport->setReplyDelayMs(1);
+    int replies = 0;
+    double lastTimeoutMs = 0;
+    for (; replies < 20; ++replies) {
+        const quint64 t = rig.send(plainRequest(Command::ReadState1, 1), Priority::Operator, 0);
+        QVERIFY(rig.runUntil([&] { return rig.result(t); }, 5000));
+        QCOMPARE(rig.result(t)->status, RequestStatus::Ok);
+        lastTimeoutMs = rig.worker->replyTimeoutS(Command::ReadState1, 1) * 1e3;
+        if (lastTimeoutMs < 20)
+            break;
+    }
+    QVERIFY2(replies <= 8, qPrintable(QString::number(replies)));
+    QVERIFY2(lastTimeoutMs < 20, qPrintable(QString::number(lastTimeoutMs)));
 }
 
 namespace {

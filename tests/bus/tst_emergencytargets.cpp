@@ -1,5 +1,7 @@
-// Who an emergency stop reaches: always every ID 1..32, the known and commanded ones first,
-// whatever a scan has done to the registry; a scan in progress ends inside the stop's call.
+// Who an emergency stop reaches: always every ID 1..32, the known, commanded, moving and
+// answering ones first, whatever a scan has done to the registry; a scan in progress ends
+// inside the stop's call. How long it takes: a silent ID costs only what the wire needs, a late
+// reply of one drive does not slow it, and its silences are not counted as timeouts.
 
 #include "BusTestUtil.h"
 
@@ -9,6 +11,7 @@
 #include <bus/EmergencyStop.h>
 #include <bus/MotorRegistry.h>
 #include <bus/StopTargets.h>
+#include <protocol/RequestBuilder.h>
 
 #include <QtTest/QSignalSpy>
 #include <QtTest/QTest>
@@ -44,7 +47,32 @@ private slots:
     void closedSessionReportsEveryIdSilent();
     void tallyNamesTheUnsent();
     void stopOnAClosedLinkReportsEveryIdUnsent();
+    void stopDuringRescanReachesTheDrivesItSawFirst();
+    void lateReplyDoesNotSlowTheStop();
+    void stopSilencesAreCountedApart();
 };
+
+namespace {
+const QVector<int> kDrives{1, 9, 20, 31};
+
+/// Drives at 1, 9, 20 and 31 answering after `delayMs`, on a clock the test advances.
+std::unique_ptr<WorkerRig> fourDrives(int delayMs = 1)
+{
+    BusConfig c = relaxedConfig();
+    c.minMarginMs = 2;
+    c.initialMarginMs = 15;
+    c.maxMarginMs = 400;
+    auto rig = std::make_unique<WorkerRig>(
+        [delayMs](FakeTransport &t) {
+            for (int id : kDrives)
+                t.drives().add(id, Series::MF);
+            t.setReplyDelayMs(delayMs);
+        },
+        c, 115200, RigTime::Manual);
+    rig->runUntil([&] { return rig->worker->isOpen(); });
+    return rig;
+}
+} // namespace
 
 void tst_EmergencyTargets::targetsAlwaysCoverEveryId_data()
 {
@@ -54,8 +82,8 @@ void tst_EmergencyTargets::targetsAlwaysCoverEveryId_data()
 
     QTest::newRow("nothing known") << QVector<int>{} << QList<int>{} << QVector<int>{};
     QTest::newRow("known only") << QVector<int>{} << QList<int>{17, 3} << QVector<int>{3, 17};
-    QTest::newRow("commanded, not known (scan cleared the registry)")
-        << QVector<int>{4, 2, 3} << QList<int>{1} << QVector<int>{1, 2, 3, 4};
+    QTest::newRow("commanded, not known (scan cleared the registry): commanded first")
+        << QVector<int>{4, 2, 3} << QList<int>{1} << QVector<int>{2, 3, 4, 1};
     QTest::newRow("duplicates and invalid IDs")
         << QVector<int>{0, 5, 33, 5, -1} << QList<int>{5, 32} << QVector<int>{5, 32};
 }
@@ -81,7 +109,16 @@ void tst_EmergencyTargets::registryPutsKnownFirst()
     QCOMPARE(t.first, (QVector<int>{2, 9, 30}));
     QCOMPARE(t.all().size(), 32);
     r.forget(1, 32); // what a scan does before it finds anything
-    QCOMPARE(r.emergencyTargets({}).all(), range(1, 32));
+    // Drive 9 answered on this connection: the scan forgot it, the stop does not.
+    QCOMPARE(r.emergencyTargets({}).first, QVector<int>{9});
+    QCOMPARE(r.emergencyTargets({}).all().size(), 32);
+    // A drive seen moving goes before one that only answered.
+    r.noteSeen(31);
+    r.noteMotion(31, true);
+    QCOMPARE(r.emergencyTargets({}).first, (QVector<int>{31, 9}));
+    r.noteMotion(31, false);
+    QCOMPARE(r.emergencyTargets({}).first, (QVector<int>{9, 31}));
+    QCOMPARE(MotorRegistry().emergencyTargets({}).all(), range(1, 32));
 }
 
 void tst_EmergencyTargets::onlyKnownAndCommandedAreRetried()
@@ -198,6 +235,80 @@ void tst_EmergencyTargets::stopOnAClosedLinkReportsEveryIdUnsent()
     QCOMPARE(stopped.at(0).at(2).value<QVector<int>>(), range(1, 32));
     QCOMPARE(stopped.at(0).at(3).value<QVector<int>>(), range(1, 32));
     QVERIFY(rig.log->writtenCopy().isEmpty());
+}
+
+void tst_EmergencyTargets::stopDuringRescanReachesTheDrivesItSawFirst()
+{
+    // The four drives were told to turn and answered; a re-scan then emptied the registry.
+    // Motor Off reaches them before any ID that never answered, not in ID order behind them.
+    auto rig = fourDrives();
+    for (int id : kDrives) {
+        const quint64 t = rig->send(*protocol::build::speed(id, 360).request);
+        QVERIFY(rig->runUntil([&] { return rig->result(t); }));
+        QVERIFY(rig->result(t)->ok());
+    }
+    QSignalSpy stopped(rig->worker.get(), &BusWorker::emergencyStopFinished);
+    rig->worker->forgetMotors();
+    rig->worker->scan({});
+    QVERIFY(rig->runUntil([&] { return rig->log->writtenCopy().size() >= 6; }));
+    const int before = rig->log->writtenCopy().size();
+    rig->worker->emergencyStop(7, {});
+    QVERIFY(rig->runUntil([&] { return stopped.size() == 1; }));
+    QVector<int> firstOffs;
+    const auto written = rig->writtenRequests();
+    for (int i = before; i < written.size() && firstOffs.size() < kDrives.size(); ++i) {
+        if (written.at(i).first == Command::MotorOff)
+            firstOffs.append(written.at(i).second);
+    }
+    QCOMPARE(firstOffs, kDrives);
+    QCOMPARE(stopped.at(0).at(1).value<QVector<int>>(), kDrives);
+}
+
+void tst_EmergencyTargets::lateReplyDoesNotSlowTheStop()
+{
+    // The four drives answered; then drive 1 answered one poll 150 ms late, just before the
+    // stop. Its lift is its own: the stop's 28 silent IDs each wait only for the wire
+    // (request, turnaround, reply), and the whole stop is over in well under the 28 x 150 ms
+    // a link-wide lift would cost.
+    auto rig = fourDrives();
+    for (int id : kDrives) {
+        const quint64 t = rig->send(plainRequest(Command::ReadState1, id));
+        QVERIFY(rig->runUntil([&] { return rig->result(t); }));
+    }
+    rig->transport->setReplyDelayMs(150);
+    const quint64 slow = rig->send(plainRequest(Command::ReadState1, 1), Priority::Operator, 0);
+    QVERIFY(rig->runUntil([&] { return rig->result(slow); }));
+    QCOMPARE(rig->result(slow)->status, RequestStatus::Timeout);
+    QVERIFY(rig->runUntil([&] { return rig->worker->statisticsSnapshot().bus.lateReplies == 1; },
+                          5000));
+    rig->transport->setReplyDelayMs(1);
+    QSignalSpy stopped(rig->worker.get(), &BusWorker::emergencyStopFinished);
+    QSignalSpy progress(rig->worker.get(), &BusWorker::emergencyStopProgress);
+    const double start = rig->nowMs();
+    rig->worker->emergencyStop(8, {});
+    QVERIFY(rig->runUntil([&] { return stopped.size() == 1; }));
+    const double tookMs = rig->nowMs() - start;
+    QCOMPARE(stopped.at(0).at(1).value<QVector<int>>(), kDrives);
+    // 32 IDs, each at most a probe timeout (3.4 ms at 115200) on a whole-millisecond timer.
+    QVERIFY2(tookMs < 32 * 5.0, qPrintable(QStringLiteral("%1 ms").arg(tookMs)));
+    // Each result but the last came as progress, the acknowledgements among them.
+    QCOMPARE(progress.size(), 31);
+    QCOMPARE(progress.last().at(3).toInt(), 1);
+}
+
+void tst_EmergencyTargets::stopSilencesAreCountedApart()
+{
+    auto rig = fourDrives();
+    for (int id : kDrives) { // every drive has answered on this connection
+        const quint64 t = rig->send(plainRequest(Command::ReadState1, id));
+        QVERIFY(rig->runUntil([&] { return rig->result(t); }));
+    }
+    QSignalSpy stopped(rig->worker.get(), &BusWorker::emergencyStopFinished);
+    rig->worker->emergencyStop(9, {});
+    QVERIFY(rig->runUntil([&] { return stopped.size() == 1; }));
+    const BusStatistics st = rig->worker->statisticsSnapshot();
+    QCOMPARE(st.bus.timeouts, quint64(0)); // the 28 IDs with no drive are not timeouts
+    QCOMPARE(st.bus.silentProbes, quint64(28));
 }
 
 QTEST_GUILESS_MAIN(tst_EmergencyTargets)

@@ -2,6 +2,7 @@
 
 #include <bus/BusMetaTypes.h>
 #include <bus/BusWorker.h>
+#include <bus/MotorRegistry.h>
 #include <bus/Scanner.h>
 
 #include <QtCore/QSet>
@@ -98,7 +99,7 @@ void tst_ScanPoll::seriesInference()
     protocol::ModelInfo m;
     m.driverName = driver;
     m.motorName = motor;
-    const auto s = Scanner::inferSeries(m);
+    const auto s = MotorRegistry::seriesOf(m); // what the scan records for a found drive
     QCOMPARE(s ? protocol::seriesName(*s) : QString(), series);
 }
 

@@ -10,11 +10,19 @@
 
 #include <bus/BusSession.h>
 
+#include <protocol/Checksum.h>
+
+#include <QtCore/QLoggingCategory>
+#include <QtCore/QTime>
 #include <QtWidgets/QApplication>
 
 #include <algorithm>
 
 namespace lk::ui {
+
+namespace {
+Q_LOGGING_CATEGORY(lcStop, "lk.studio.stop")
+} // namespace
 
 EmergencyStopControl::EmergencyStopControl(BusController *controller, CommandedMotion *motion,
                                            MessageBanner *banner, QObject *parent)
@@ -24,8 +32,19 @@ EmergencyStopControl::EmergencyStopControl(BusController *controller, CommandedM
     qApp->installEventFilter(m_keys);
     connect(m_keys, &EmergencyKeyFilter::escapePressed, this, &EmergencyStopControl::stop);
     bus::BusSession *session = m_controller->session();
+    connect(session, &bus::BusSession::emergencyStopProgress, this,
+            &EmergencyStopControl::onProgress);
     connect(session, &bus::BusSession::emergencyStopFinished, this,
             &EmergencyStopControl::onFinished);
+    connect(session, &bus::BusSession::connectionChanged, this,
+            &EmergencyStopControl::onConnectionChanged);
+    connect(session, &bus::BusSession::telemetryReceived, this, &EmergencyStopControl::onTelemetry);
+    connect(m_banner, &MessageBanner::entryDismissed, this, [this](const QString &key) {
+        if (key != entryKey())
+            return;
+        m_shown.reset();
+        m_resend.reset(); // the operator has dealt with it: nothing goes out later
+    });
 }
 
 EmergencyStopControl::~EmergencyStopControl()
@@ -38,7 +57,8 @@ void EmergencyStopControl::stop()
     emit halting(tr("Emergency stop."));
     Pending p;
     // Whom to reach first: the drives on screen, those the bus knows, and those lkstudio told
-    // to move (a scan may have just emptied the first two). The bus adds every other ID.
+    // to move (a scan may have just emptied the first two). The bus adds the drives it saw
+    // answer or move, then every other ID.
     p.watched = m_controller->model()->ids() + m_motion->movingIds();
     for (int id : m_controller->session()->knownMotors().keys())
         p.watched.append(id);
@@ -46,7 +66,34 @@ void EmergencyStopControl::stop()
     p.watched.erase(std::unique(p.watched.begin(), p.watched.end()), p.watched.end());
     for (int id : m_motion->movingIds())
         p.commanded << m_motion->driveText(id);
-    m_pending.insert(m_controller->emergencyStop(p.watched), p);
+    m_resend.reset(); // this stop replaces one still waiting for the link
+    send(p);
+}
+
+void EmergencyStopControl::send(const Pending &p)
+{
+    m_shown.reset();
+    const bool open = m_controller->session()->connection().isOpen();
+    const quint64 ticket = m_controller->emergencyStop(p.watched);
+    m_pending.insert(ticket, p);
+    if (open) {
+        Outcome underWay;
+        underWay.remaining = protocol::kMaxId - protocol::kMinId + 1;
+        report(p, underWay);
+    }
+}
+
+void EmergencyStopControl::onProgress(quint64 ticket, const QVector<int> &acknowledged,
+                                      const QVector<int> &silent, int remaining)
+{
+    const auto it = m_pending.constFind(ticket);
+    if (it == m_pending.cend())
+        return;
+    Outcome outcome;
+    outcome.acknowledged = acknowledged;
+    outcome.silent = silent;
+    outcome.remaining = remaining;
+    report(*it, outcome);
 }
 
 void EmergencyStopControl::onFinished(quint64 ticket, const QVector<int> &acknowledged,
@@ -55,10 +102,62 @@ void EmergencyStopControl::onFinished(quint64 ticket, const QVector<int> &acknow
     const auto it = m_pending.find(ticket);
     if (it == m_pending.end())
         return;
-    const Pending p = *it;
+    Pending p = *it;
     m_pending.erase(it);
-    report(p, {acknowledged, silent, unsent});
+    Outcome outcome;
+    outcome.acknowledged = acknowledged;
+    outcome.silent = silent;
+    outcome.unsent = unsent;
+    if (!silent.isEmpty() && unsent.size() == silent.size() && acknowledged.isEmpty()) {
+        // Nothing went out: it goes out once this port is back (a stop pressed for one
+        // machine is not sent to another).
+        p.pressedWhileDisconnectedAt = QTime::currentTime().toString(QStringLiteral("HH:mm:ss"));
+        m_resend = p;
+        m_resendPort = m_lastPort;
+    }
+    m_shown.emplace(p, outcome);
+    report(p, outcome);
     emit reported();
+}
+
+void EmergencyStopControl::onConnectionChanged(const bus::ConnectionStatus &status)
+{
+    if (!status.isOpen())
+        return;
+    const QString port = portOf(status.description);
+    const bool samePort = m_resendPort.isEmpty() || port == m_resendPort;
+    m_lastPort = port;
+    if (!m_resend || !samePort)
+        return;
+    const Pending p = *m_resend;
+    m_resend.reset();
+    qCWarning(lcStop).noquote() << "emergency stop pressed at" << p.pressedWhileDisconnectedAt
+                                << "while disconnected: sent now that" << port << "is open";
+    emit halting(tr("Emergency stop."));
+    send(p);
+}
+
+QString EmergencyStopControl::portOf(const QString &description)
+{
+    return description.section(QStringLiteral(" @ "), 0, 0);
+}
+
+void EmergencyStopControl::onTelemetry(const bus::TelemetryBatch &batch)
+{
+    if (!m_shown || !m_controller->session()->connection().isOpen())
+        return;
+    auto &[p, outcome] = *m_shown;
+    const QVector<int> moving = EmergencyStopReport::mayBeMoving(p, outcome);
+    bool changed = false;
+    for (const bus::TelemetrySample &s : batch) {
+        if (moving.contains(s.id) && !outcome.sinceStopped.contains(s.id) &&
+            s.has(bus::TelemetryField::Speed) && s.speedDps == 0) {
+            outcome.sinceStopped.append(s.id);
+            changed = true;
+        }
+    }
+    if (changed)
+        report(p, outcome);
 }
 
 void EmergencyStopControl::report(const Pending &p, const Outcome &outcome)

@@ -35,6 +35,7 @@ StatisticsView::StatisticsView(BusModel *model, QWidget *parent)
     addRow(QStringLiteral("latency"), tr("Latency min / median / max"));
     addRow(QStringLiteral("replies"), tr("Requests / replies"));
     addRow(QStringLiteral("timeouts"), tr("Timeouts"));
+    addRow(QStringLiteral("silent"), tr("Silent IDs probed (scan, stop)"));
     addRow(QStringLiteral("retries"), tr("Retries"));
     addRow(QStringLiteral("checksum"), tr("Checksum errors"));
     addRow(QStringLiteral("parse"), tr("Other frame errors"));
@@ -108,6 +109,7 @@ void StatisticsView::refresh()
     set(QStringLiteral("replies"), QStringLiteral("%1 / %2").arg(b.requests).arg(b.replies),
         QStringLiteral("%1 / %2").arg(d.requests).arg(d.replies));
     set(QStringLiteral("timeouts"), QString::number(b.timeouts), QString::number(d.timeouts));
+    set(QStringLiteral("silent"), QString::number(b.silentProbes), QString());
     set(QStringLiteral("retries"), QString::number(b.retries), QString::number(d.retries));
     set(QStringLiteral("checksum"), QString::number(b.checksumErrors),
         QString::number(d.checksumErrors));

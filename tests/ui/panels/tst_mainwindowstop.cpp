@@ -1,6 +1,8 @@
 // The whole window's emergency stop against the in-process simulated bus: Esc from anywhere
 // (a child widget, a modal dialog, during a scan, with the setpoint generator running) sends
-// motor off to every drive, checked on the simulator's side.
+// motor off to every drive, checked on the simulator's side. Its report shows at once and
+// fills in; a drive said in red to be possibly moving leaves the red once it reads stopped; a
+// stop pressed while disconnected goes out when the link is back.
 
 #include "MainWindowFixture.h"
 
@@ -13,6 +15,7 @@
 
 #include <bus/SetpointWaveform.h>
 
+#include <QtWidgets/QCheckBox>
 #include <QtWidgets/QDialog>
 #include <QtWidgets/QLineEdit>
 #include <QtWidgets/QPushButton>
@@ -34,6 +37,9 @@ private slots:
     void escapeDuringAScanStopsEveryDrive_data();
     void escapeDuringAScanStopsEveryDrive();
     void escapeHaltsTheGeneratorFirst();
+    void reportShowsAtOnceAndFillsIn();
+    void silentDriveLeavesTheRedOnceItReadsStopped();
+    void stopWhileDisconnectedGoesOutOnReconnect();
 };
 
 void tst_MainWindowStop::escapeSendsMotorOffToAllDrives()
@@ -140,6 +146,83 @@ void tst_MainWindowStop::escapeHaltsTheGeneratorFirst()
     QTest::qWait(300); // six intervals at the default 20 Hz
     QCOMPARE(sim()->requestCount(1, Command::Speed), setpoints);
     QVERIFY2(allOff(), "a setpoint after the emergency stop turned a drive back on");
+}
+
+void tst_MainWindowStop::reportShowsAtOnceAndFillsIn()
+{
+    QVERIFY(findAllDrives());
+    spinAll();
+    QSignalSpy reports(m_window->emergencyStopControl(), &lk::ui::EmergencyStopControl::reported);
+    QTest::keyClick(m_window->views(), Qt::Key_Escape);
+    // Before the bus has answered anything: the operator sees the stop going out.
+    QVERIFY2(stopReport().contains(QStringLiteral("going out to every ID 1-32")),
+             qPrintable(stopReport()));
+    QVERIFY2(stopReport().contains(QStringLiteral("Waiting for drive(s) 1, 2, 3, 4.")),
+             qPrintable(stopReport()));
+    QTRY_COMPARE_WITH_TIMEOUT(reports.count(), 1, kWaitMs);
+    QVERIFY2(stopReport().contains(QStringLiteral("acknowledged by drive(s) 1, 2, 3, 4.")),
+             qPrintable(stopReport()));
+}
+
+void tst_MainWindowStop::silentDriveLeavesTheRedOnceItReadsStopped()
+{
+    QVERIFY(findAllDrives());
+    spinAll();
+    // Drive 3 hears nothing and answers nothing (a broken wire to it, say).
+    QVERIFY(sim()->withBus([](lk::sim::SimBus &bus) { bus.faults().setSilenced(3, true); }));
+    QSignalSpy reports(m_window->emergencyStopControl(), &lk::ui::EmergencyStopControl::reported);
+    QTest::keyClick(m_window->views(), Qt::Key_Escape);
+    QTRY_COMPARE_WITH_TIMEOUT(reports.count(), 1, kWaitMs);
+    const QString key = lk::ui::EmergencyStopControl::entryKey();
+    QVERIFY2(stopReport().contains(QStringLiteral("NO answer from drive(s) 3")),
+             qPrintable(stopReport()));
+    QCOMPARE(m_window->banner()->entryLevel(key), lk::ui::MessageBanner::Level::Error);
+    // Its wire is mended: it still turns, and reads say so: the red stays.
+    QVERIFY(sim()->withBus([](lk::sim::SimBus &bus) { bus.faults().setSilenced(3, false); }));
+    QTest::qWait(500);
+    QVERIFY2(stopReport().contains(QStringLiteral("NO answer from drive(s) 3")),
+             qPrintable(stopReport()));
+    // Someone stops it (its own panel, a cut power): once a read shows it stopped, the red
+    // goes and the report says so.
+    QVERIFY(sim()->withBus([](lk::sim::SimBus &bus) {
+        lk::protocol::Request off;
+        off.command = Command::MotorOff;
+        off.id = 3;
+        bus.drive(3)->handle(off);
+    }));
+    QTRY_VERIFY2_WITH_TIMEOUT(stopReport().contains(QStringLiteral("have since read stopped")),
+                              qPrintable(stopReport()), kWaitMs);
+    QVERIFY(!stopReport().contains(QStringLiteral("NO answer")));
+    QCOMPARE(m_window->banner()->entryLevel(key), lk::ui::MessageBanner::Level::Info);
+}
+
+void tst_MainWindowStop::stopWhileDisconnectedGoesOutOnReconnect()
+{
+    QVERIFY(selectDrive2());
+    turnDrive2AndUnplug();
+    if (QTest::currentTestFailed())
+        return;
+    const int offsBefore = sim()->requestCount(2, Command::MotorOff);
+    QSignalSpy reports(m_window->emergencyStopControl(), &lk::ui::EmergencyStopControl::reported);
+    QTest::keyClick(m_window->views(), Qt::Key_Escape);
+    QTRY_COMPARE_WITH_TIMEOUT(reports.count(), 1, kWaitMs);
+    QVERIFY2(stopReport().contains(QStringLiteral("NOTHING could be sent")) &&
+                 stopReport().contains(QStringLiteral("as soon as this port is connected again")),
+             qPrintable(stopReport()));
+    // Drive 2 still turns (a V2.35 drive of the default bus reads Running at rest: count speed).
+    double speed2 = 0;
+    QVERIFY(sim()->withBus([&speed2](lk::sim::SimBus &bus) { speed2 = bus.drive(2)->speedDps(); }));
+    QVERIFY2(speed2 > 100, qPrintable(QString::number(speed2)));
+    // The link comes back: the stop goes out by itself and the report says when it was pressed.
+    auto *box = m_window->findChild<QCheckBox *>(QStringLiteral("autoReconnect"));
+    QTest::mouseClick(box, Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(sim()->requestCount(2, Command::MotorOff) > offsBefore, kWaitMs);
+    QTRY_COMPARE_WITH_TIMEOUT(reports.count(), 2, kWaitMs);
+    QVERIFY2(stopReport().contains(QStringLiteral("while the bus was not connected; sent as "
+                                                  "soon as it was back")) &&
+                 stopReport().contains(QStringLiteral("acknowledged by drive(s) 1, 2, 3, 4.")),
+             qPrintable(stopReport()));
+    QTRY_VERIFY_WITH_TIMEOUT(allOff(), kWaitMs);
 }
 
 QTEST_MAIN(tst_MainWindowStop)
