@@ -24,16 +24,6 @@ QString dps(double v)
     return QString::number(v, 'f', 0);
 }
 
-/// A torque or power of zero adds no energy: nothing to watch.
-bool drives(const protocol::Request &r)
-{
-    if (const auto *t = std::get_if<protocol::TorqueCommand>(&r.payload))
-        return t->iqRaw != 0;
-    if (const auto *p = std::get_if<protocol::OpenLoopCommand>(&r.payload))
-        return p->power != 0;
-    return false;
-}
-
 QString modeName(const protocol::Request &r)
 {
     return r.command == Command::OpenLoop ? QStringLiteral("open loop") : QStringLiteral("torque");
@@ -116,7 +106,7 @@ void ControlWatch::arm(LiveBus &bus, int id, const safety::SoftLimits &limits)
 int ControlWatch::follow(LiveBus &bus, const protocol::Request &request, bool json,
                          int status) const
 {
-    if (!bus::SpeedWatch::isWatchedMode(request.command) || !drives(request))
+    if (!bus::SpeedWatch::drives(request))
         return status;
     if (m_seconds > 0 && (status == kExitOk || status == kExitFailure)) // it may have acted
         return watch(bus, request, json, status);

@@ -12,18 +12,6 @@ namespace lk::bus {
 
 using protocol::Command;
 
-namespace {
-/// A torque or power of zero: the command adds no energy, nothing to watch.
-bool isZero(const protocol::Request &r)
-{
-    if (const auto *t = std::get_if<protocol::TorqueCommand>(&r.payload))
-        return t->iqRaw == 0;
-    if (const auto *p = std::get_if<protocol::OpenLoopCommand>(&r.payload))
-        return p->power == 0;
-    return false;
-}
-} // namespace
-
 double SpeedWatch::thresholdDps(double limitDps)
 {
     return limitDps + std::max(limitDps * kMarginFraction, kMarginMinDps);
@@ -32,6 +20,15 @@ double SpeedWatch::thresholdDps(double limitDps)
 bool SpeedWatch::isWatchedMode(Command command)
 {
     return command == Command::Torque || command == Command::OpenLoop;
+}
+
+bool SpeedWatch::drives(const protocol::Request &r)
+{
+    if (const auto *t = std::get_if<protocol::TorqueCommand>(&r.payload))
+        return t->iqRaw != 0;
+    if (const auto *p = std::get_if<protocol::OpenLoopCommand>(&r.payload))
+        return p->power != 0;
+    return false;
 }
 
 SpeedWatch::SpeedWatch(StopSender stop, SeriesLookup series, std::function<double()> now,
@@ -121,7 +118,7 @@ void SpeedWatch::noteRequestEnded(const protocol::Request &request, RequestStatu
     const Command c = request.command;
     const bool ok = status == RequestStatus::Ok;
     if (isWatchedMode(c)) {
-        if (!isZero(request))
+        if (drives(request))
             arm(id, c); // even unanswered: the drive may have acted on it
         else if (ok)
             setState(id, std::nullopt);

@@ -48,6 +48,9 @@ public:
     static constexpr double kMarginMinDps = 30;
     static double thresholdDps(double limitDps);
     static bool isWatchedMode(protocol::Command command);
+    /// A torque or open-loop command with a non-zero value: one the watch follows (zero adds
+    /// no energy).
+    static bool drives(const protocol::Request &request);
 
     /// Sends Motor Stop to `id` from the emergency lane; `done` runs once with its end.
     using StopSender = std::function<void(int id, std::function<void(const RequestResult &)> done)>;
