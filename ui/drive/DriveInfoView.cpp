@@ -235,11 +235,6 @@ void DriveInfoView::copyToClipboard()
     setStatus(tr("Copied to the clipboard."));
 }
 
-bool DriveInfoView::isGathering() const
-{
-    return m_gatherer->isRunning();
-}
-
 void DriveInfoView::gatherBusReport()
 {
     if (!session() || !isConnected()) {

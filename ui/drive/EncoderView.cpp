@@ -376,14 +376,6 @@ void EncoderView::onTelemetry(const bus::TelemetryBatch &batch)
         refreshEnabled(); // "Use current raw" needs a reading
 }
 
-void EncoderView::refreshNow()
-{
-    if (!canSend())
-        return;
-    readEncoder(bus::Priority::Operator);
-    readMultiTurn(bus::Priority::Operator);
-}
-
 quint64 EncoderView::readEncoder(bus::Priority priority)
 {
     return tracker()->send(
