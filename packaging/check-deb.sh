@@ -26,7 +26,7 @@ need usr/lib/udev/rules.d/60-lkstudio-rs485.rules
 for page in lkctl lksim lkstudio; do need usr/share/man/man1/$page.1.gz; done
 need usr/share/doc/lkstudio/copyright
 need usr/share/doc/lkstudio/changelog.gz
-need usr/share/doc/lkstudio/CLI.md
+for doc in ARCHITECTURE CLI CSV ERRATA PROTOCOL TESTING V2.35; do need usr/share/doc/lkstudio/$doc.md; done
 need usr/share/bash-completion/completions/lkctl
 need usr/share/bash-completion/completions/lksim
 

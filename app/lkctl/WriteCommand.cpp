@@ -176,7 +176,7 @@ int WriteCommand::readBack(LiveBus &bus, const Plan &plan, bool acknowledged)
         return kExitOk;
     const QString hint = plan.readBack == Command::ReadAccel
                              ? QStringLiteral(" Some firmware acknowledges write_accel_ram and "
-                                              "ignores it (ERRATA).")
+                                              "ignores it (see docs/ERRATA.md).")
                              : QString();
     bus.error(QStringLiteral("read-back mismatch on drive %1: wrote %2 (%3) but the drive holds "
                              "%4.%5")

@@ -14,6 +14,8 @@
 #include "WriteCommand.h"
 #include "ZeroCommand.h"
 
+#include <text/VerdictText.h>
+
 #include <QtCore/QCoreApplication>
 #include <QtCore/QLoggingCategory>
 
@@ -28,6 +30,8 @@ int main(int argc, char *argv[])
     // lkctl prints its own messages (with the fix where there is one): the engine's logging
     // would repeat them. QT_LOGGING_RULES still turns it back on for a diagnosis.
     QLoggingCategory::setFilterRules(QStringLiteral("lk.*.info=false\nlk.*.warning=false"));
+    // A refusal names the command as the command line does ("open_loop"), not by the GUI's title.
+    lk::text::VerdictText::setCommandNames(lk::text::VerdictText::CommandNames::Cli);
 
     lk::lkctl::Console console;
     lk::lkctl::Dispatcher dispatcher(QStringLiteral("lkctl"), QStringLiteral(LK_VERSION));

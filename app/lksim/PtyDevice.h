@@ -22,9 +22,6 @@ public:
     void close();
 
     int masterFd() const { return m_master; }
-    /// lksim's own handle on the slave: what is written to it reads back from the master,
-    /// as a client's bytes do (PtyLagProbe times that path).
-    int slaveFd() const { return m_slaveKeepAlive; }
     QString slavePath() const { return m_slavePath; }
     QString errorString() const { return m_error; }
 
@@ -32,7 +29,8 @@ public:
     QByteArray readAvailable();
     /// Write all bytes (blocking until the kernel took them); false on error.
     bool writeAll(const QByteArray &bytes);
-    /// Write bytes as a client would, to the slave; false on error.
+    /// Write bytes as a client would, to the slave (they read back from the master, the path
+    /// PtyLagProbe times); false on error.
     bool writeToSlave(const QByteArray &bytes);
 
 private:

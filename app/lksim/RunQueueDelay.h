@@ -14,7 +14,6 @@ public:
 
     /// The thread's total wait so far, in seconds; 0 where the kernel does not keep it.
     double seconds() const;
-    bool isAvailable() const { return m_fd >= 0; }
 
 private:
     int m_fd = -1;

@@ -247,10 +247,14 @@ void BusWorker::onAttemptFailed(Pending p, RequestStatus status, const QString &
 {
     if (!p.noRetry && p.attempts <= retriesFor(p.req)) {
         // Back to the head of its own lane: an emergency stop still overtakes a retry. An
-        // emergency motor_off retries at the back instead, so that every drive hears its
-        // first "off" before any silent one is asked again.
+        // emergency motor_off retries behind the other drives' first "off" instead, but ahead
+        // of the one-attempt probes of IDs nobody has seen: a known drive whose "off" or reply
+        // was lost is asked again within milliseconds, not after 28 silent IDs.
         if (p.req.priority == Priority::Emergency)
-            m_queue.push(std::move(p));
+            m_queue.pushBefore(std::move(p), [](const Pending &q) {
+                return q.req.origin == RequestOrigin::Emergency && q.req.retries == 0 &&
+                       q.attempts == 0;
+            });
         else
             m_queue.pushFront(std::move(p));
     } else {
@@ -385,7 +389,8 @@ void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command h
                                                 m_config.emergencyRetries, halt);
     QVector<BusRequest> offs = stop->requests();
     // The first "off" to each ID waits only as long as a drive on a fast link needs: every
-    // drive hears it quickly, and silent IDs are asked again at the back of the lane.
+    // drive hears it quickly; known drives that stay silent are asked again before the IDs
+    // nobody has seen (onAttemptFailed).
     for (BusRequest &r : offs)
         r.firstTimeoutS = probeTimeoutS(halt);
     qCInfo(lcBus) << "emergency" << CommandTable::name(halt) << "to" << offs.size() << "ID(s)";
@@ -393,6 +398,7 @@ void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command h
                  RequestStatus::Cancelled, tr("cancelled by emergency stop"));
     if (Pending *p = m_wire.inflight(); p && movesMotor(p->req.request.command))
         p->noRetry = true; // it may finish, but it is not sent again
+    m_wire.hurry();        // a poll on the wire is waited for only as long as the wire needs
     for (const BusRequest &r : offs) {
         submit(r, [this, stop](const RequestResult &res) {
             emit requestCompleted(res);

@@ -26,6 +26,9 @@ public:
     bool endIfAnswered(bool parserIdle, qint64 nowNs);
 
     bool isQuiet(qint64 nowNs) const { return m_untilNs > nowNs; }
+    /// Hold no later than `untilNs` (bytes arriving from now on still extend it).
+    void shortenTo(qint64 untilNs) { m_untilNs = qMin(m_untilNs, untilNs); }
+    quint8 command() const { return m_command; } ///< of the request that got no reply
     /// Nanoseconds left (<= 0: transmit).
     qint64 leftNs(qint64 nowNs) const { return m_untilNs - nowNs; }
 

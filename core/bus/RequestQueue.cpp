@@ -1,5 +1,7 @@
 #include "RequestQueue.h"
 
+#include <algorithm>
+
 namespace lk::bus {
 
 std::deque<PendingRequest> &RequestQueue::lane(const PendingRequest &p)
@@ -15,6 +17,13 @@ void RequestQueue::push(PendingRequest p)
 void RequestQueue::pushFront(PendingRequest p)
 {
     lane(p).push_front(std::move(p));
+}
+
+void RequestQueue::pushBefore(PendingRequest p,
+                              const std::function<bool(const PendingRequest &)> &ahead)
+{
+    std::deque<PendingRequest> &q = lane(p);
+    q.insert(std::find_if(q.begin(), q.end(), ahead), std::move(p));
 }
 
 std::optional<PendingRequest> RequestQueue::takeNext()

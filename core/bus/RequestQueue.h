@@ -16,6 +16,8 @@ class RequestQueue {
 public:
     void push(PendingRequest p);
     void pushFront(PendingRequest p);
+    /// Into its lane ahead of the first request `ahead` selects; at the back when none does.
+    void pushBefore(PendingRequest p, const std::function<bool(const PendingRequest &)> &ahead);
     /// The first request of the highest non-empty lane.
     std::optional<PendingRequest> takeNext();
     /// Remove and return every request `which` selects, in lane order.

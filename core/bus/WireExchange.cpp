@@ -87,7 +87,34 @@ void WireExchange::send(Pending p)
     // early enough.
     m_sentNs = m_clock->nowNs();
     m_matcher.expect(request, bytes, m_sentNs, m_sentNs + earliestReplyNs(request.command));
-    m_replyTimer->start(std::max(1, static_cast<int>(std::ceil(timeoutS * 1e3))));
+    const int timeoutMs = std::max(1, static_cast<int>(std::ceil(timeoutS * 1e3)));
+    m_deadlineNs = m_sentNs + qint64(timeoutMs) * 1'000'000;
+    m_hurried = false;
+    m_replyTimer->start(timeoutMs);
+}
+
+qint64 WireExchange::wireFreeNs(Command command) const
+{
+    return m_sentNs + static_cast<qint64>(BusTiming::replyTimeoutS(command, baud(), 0) * 1e9);
+}
+
+void WireExchange::hurry()
+{
+    const qint64 nowNs = m_clock->nowNs();
+    if (!m_inflight) {
+        if (m_quiet.isQuiet(nowNs))
+            m_quiet.shortenTo(wireFreeNs(static_cast<Command>(m_quiet.command())));
+        return;
+    }
+    if (m_inflight->req.priority == Priority::Emergency)
+        return; // the stop's own requests wait the physical limit already
+    const qint64 freeNs = wireFreeNs(m_inflight->req.request.command);
+    if (freeNs >= m_deadlineNs)
+        return;
+    m_hurried = true;
+    m_deadlineNs = freeNs;
+    m_replyTimer->start(
+        static_cast<int>(std::max<qint64>(0, freeNs - nowNs + 999'999) / 1'000'000));
 }
 
 qint64 WireExchange::earliestReplyNs(Command command) const
@@ -130,7 +157,7 @@ void WireExchange::onTimeout()
         m_diagnostics.counters().timedOut(r.id);
     m_matcher.timedOut();
     beginQuiet(r, m_inflight->attempts == 1 && m_inflight->req.firstTimeoutS > 0,
-               m_inflight->req.priority == Priority::Emergency);
+               m_inflight->req.priority == Priority::Emergency || m_hurried);
     m_diagnostics.recordTimeout(r.id, static_cast<quint8>(r.command));
     fail(RequestStatus::Timeout,
          tr("no reply to %1 after %n attempt(s)", nullptr, m_inflight->attempts)
@@ -147,8 +174,7 @@ void WireExchange::beginQuiet(const protocol::Request &request, bool probe, bool
         // heard this one answers within its turnaround, and its reply's last byte has left by
         // then. An adapter's or host's latency delays only our reading of it, and a drive's
         // late reply earlier on lifts only that drive's timeout: neither holds the stop.
-        untilNs = m_sentNs +
-                  static_cast<qint64>(BusTiming::replyTimeoutS(request.command, baud(), 0) * 1e9);
+        untilNs = wireFreeNs(request.command);
     } else if (probe) {
         // Silence is the common answer to a probe (scan), so it is not made to wait twice:
         // only until a reply from a drive that keeps its turnaround could have come through

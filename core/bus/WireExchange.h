@@ -68,6 +68,11 @@ public:
     bool feed(const QByteArray &bytes);
     /// Whether transmissions must wait now (the quiet period); arms its timer if so.
     bool holdForQuiet();
+    /// An emergency stop waits: the request on the wire, or the quiet period after one that
+    /// got no reply, holds the wire only until that reply could no longer be on it (wire time
+    /// and turnaround from its send), not for the margin a slow link or a late reply earned.
+    /// Bytes that do arrive still hold it (QuietPeriod). The caller pumps afterwards.
+    void hurry();
     /// Stops both timers (the bus is shut down).
     void stop();
 
@@ -93,6 +98,9 @@ private:
     /// `probe`: it had the short first timeout of a probe (BusRequest::firstTimeoutS);
     /// `emergency`: it was an emergency stop's (only the wire's own time is waited for).
     void beginQuiet(const protocol::Request &request, bool probe, bool emergency);
+    /// When the reply to `command` sent at m_sentNs has left the wire at the latest, for a
+    /// drive that keeps its turnaround (worker clock).
+    qint64 wireFreeNs(protocol::Command command) const;
     void fail(RequestStatus status, const QString &reason);
 
     TransportLink &m_link;
@@ -103,6 +111,8 @@ private:
     protocol::StreamParser m_parser;
     std::optional<Pending> m_inflight;
     qint64 m_sentNs = 0;
+    qint64 m_deadlineNs = 0; ///< when the reply timer fires for the request on the wire
+    bool m_hurried = false;  ///< hurry() cut the request on the wire short
     ReplyMatcher m_matcher;
     AdaptiveTimeout m_timeout;
     RecentLatency m_recentLatency;

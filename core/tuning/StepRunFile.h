@@ -97,11 +97,13 @@ public:
 
     /// The JSON document of `runs`, naming `traceNames[i]` as run i's trace.
     static QJsonObject toJson(const QVector<StepRun> &runs, const QStringList &traceNames);
-    /// The CSV text of a run's trace (header included).
-    static QByteArray traceCsv(const StepRun &run);
     /// The time every time of a run's files counts from: its first edge, else its first
     /// sample, else 0.
     static double timeOrigin(const StepTrace &trace);
+
+private:
+    /// The CSV text of a run's trace (header included).
+    static QByteArray traceCsv(const StepRun &run);
 };
 
 } // namespace lk::tuning

@@ -599,6 +599,141 @@
     </message>
 </context>
 <context>
+    <name>lk::text::CommandTitle</name>
+    <message>
+        <source>Read model</source>
+        <translation>读取型号</translation>
+    </message>
+    <message>
+        <source>Write the position as zero to ROM</source>
+        <translation>将当前位置作为零点写入 ROM</translation>
+    </message>
+    <message>
+        <source>Read PID gains</source>
+        <translation>读取 PID 参数</translation>
+    </message>
+    <message>
+        <source>Write PID gains to RAM</source>
+        <translation>写入 PID 参数到 RAM</translation>
+    </message>
+    <message>
+        <source>Write PID gains to ROM</source>
+        <translation>写入 PID 参数到 ROM</translation>
+    </message>
+    <message>
+        <source>Read acceleration</source>
+        <translation>读取加速度</translation>
+    </message>
+    <message>
+        <source>Write acceleration to RAM</source>
+        <translation>写入加速度到 RAM</translation>
+    </message>
+    <message>
+        <source>Read parameter</source>
+        <translation>读取参数</translation>
+    </message>
+    <message>
+        <source>Write parameter to RAM</source>
+        <translation>写入参数到 RAM</translation>
+    </message>
+    <message>
+        <source>Write parameter to ROM</source>
+        <translation>写入参数到 ROM</translation>
+    </message>
+    <message>
+        <source>Motor Off</source>
+        <translation>电机关闭</translation>
+    </message>
+    <message>
+        <source>Motor Stop</source>
+        <translation>电机停止</translation>
+    </message>
+    <message>
+        <source>Motor Run</source>
+        <translation>电机运行</translation>
+    </message>
+    <message>
+        <source>Brake control</source>
+        <translation>抱闸控制</translation>
+    </message>
+    <message>
+        <source>Read encoder</source>
+        <translation>读取编码器</translation>
+    </message>
+    <message>
+        <source>Write encoder offset to ROM</source>
+        <translation>写入编码器零偏到 ROM</translation>
+    </message>
+    <message>
+        <source>Read multi-turn angle</source>
+        <translation>读取多圈角度</translation>
+    </message>
+    <message>
+        <source>Clear turn count</source>
+        <translation>清除圈数</translation>
+    </message>
+    <message>
+        <source>Read single-turn angle</source>
+        <translation>读取单圈角度</translation>
+    </message>
+    <message>
+        <source>Clear angle</source>
+        <translation>清除角度</translation>
+    </message>
+    <message>
+        <source>Read state 1 (temperature, voltage, errors)</source>
+        <translation>读取状态 1（温度、电压、错误）</translation>
+    </message>
+    <message>
+        <source>Clear errors</source>
+        <translation>清除错误</translation>
+    </message>
+    <message>
+        <source>Read state 2 (current, speed, encoder)</source>
+        <translation>读取状态 2（电流、速度、编码器）</translation>
+    </message>
+    <message>
+        <source>Read state 3 (phase currents)</source>
+        <translation>读取状态 3（相电流）</translation>
+    </message>
+    <message>
+        <source>Open loop power</source>
+        <translation>开环功率控制</translation>
+    </message>
+    <message>
+        <source>Torque current</source>
+        <translation>转矩电流控制</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度控制</translation>
+    </message>
+    <message>
+        <source>Multi-turn position</source>
+        <translation>多圈位置控制</translation>
+    </message>
+    <message>
+        <source>Multi-turn position with speed limit</source>
+        <translation>限速多圈位置控制</translation>
+    </message>
+    <message>
+        <source>Single-turn position</source>
+        <translation>单圈位置控制</translation>
+    </message>
+    <message>
+        <source>Single-turn position with speed limit</source>
+        <translation>限速单圈位置控制</translation>
+    </message>
+    <message>
+        <source>Incremental position</source>
+        <translation>增量位置控制</translation>
+    </message>
+    <message>
+        <source>Incremental position with speed limit</source>
+        <translation>限速增量位置控制</translation>
+    </message>
+</context>
+<context>
     <name>lk::text::VerdictText</name>
     <message>
         <source>this command</source>
@@ -1070,141 +1205,6 @@
     <message>
         <source>Drive %1: errors cleared.</source>
         <translation>驱动 %1：错误标志已清除。</translation>
-    </message>
-</context>
-<context>
-    <name>lk::ui::CommandTitle</name>
-    <message>
-        <source>Read model</source>
-        <translation>读取型号</translation>
-    </message>
-    <message>
-        <source>Write the position as zero to ROM</source>
-        <translation>将当前位置作为零点写入 ROM</translation>
-    </message>
-    <message>
-        <source>Read PID gains</source>
-        <translation>读取 PID 参数</translation>
-    </message>
-    <message>
-        <source>Write PID gains to RAM</source>
-        <translation>写入 PID 参数到 RAM</translation>
-    </message>
-    <message>
-        <source>Write PID gains to ROM</source>
-        <translation>写入 PID 参数到 ROM</translation>
-    </message>
-    <message>
-        <source>Read acceleration</source>
-        <translation>读取加速度</translation>
-    </message>
-    <message>
-        <source>Write acceleration to RAM</source>
-        <translation>写入加速度到 RAM</translation>
-    </message>
-    <message>
-        <source>Read parameter</source>
-        <translation>读取参数</translation>
-    </message>
-    <message>
-        <source>Write parameter to RAM</source>
-        <translation>写入参数到 RAM</translation>
-    </message>
-    <message>
-        <source>Write parameter to ROM</source>
-        <translation>写入参数到 ROM</translation>
-    </message>
-    <message>
-        <source>Motor Off</source>
-        <translation>电机关闭</translation>
-    </message>
-    <message>
-        <source>Motor Stop</source>
-        <translation>电机停止</translation>
-    </message>
-    <message>
-        <source>Motor Run</source>
-        <translation>电机运行</translation>
-    </message>
-    <message>
-        <source>Brake control</source>
-        <translation>抱闸控制</translation>
-    </message>
-    <message>
-        <source>Read encoder</source>
-        <translation>读取编码器</translation>
-    </message>
-    <message>
-        <source>Write encoder offset to ROM</source>
-        <translation>写入编码器零偏到 ROM</translation>
-    </message>
-    <message>
-        <source>Read multi-turn angle</source>
-        <translation>读取多圈角度</translation>
-    </message>
-    <message>
-        <source>Clear turn count</source>
-        <translation>清除圈数</translation>
-    </message>
-    <message>
-        <source>Read single-turn angle</source>
-        <translation>读取单圈角度</translation>
-    </message>
-    <message>
-        <source>Clear angle</source>
-        <translation>清除角度</translation>
-    </message>
-    <message>
-        <source>Read state 1 (temperature, voltage, errors)</source>
-        <translation>读取状态 1（温度、电压、错误）</translation>
-    </message>
-    <message>
-        <source>Clear errors</source>
-        <translation>清除错误</translation>
-    </message>
-    <message>
-        <source>Read state 2 (current, speed, encoder)</source>
-        <translation>读取状态 2（电流、速度、编码器）</translation>
-    </message>
-    <message>
-        <source>Read state 3 (phase currents)</source>
-        <translation>读取状态 3（相电流）</translation>
-    </message>
-    <message>
-        <source>Open loop power</source>
-        <translation>开环功率控制</translation>
-    </message>
-    <message>
-        <source>Torque current</source>
-        <translation>转矩电流控制</translation>
-    </message>
-    <message>
-        <source>Speed</source>
-        <translation>速度控制</translation>
-    </message>
-    <message>
-        <source>Multi-turn position</source>
-        <translation>多圈位置控制</translation>
-    </message>
-    <message>
-        <source>Multi-turn position with speed limit</source>
-        <translation>限速多圈位置控制</translation>
-    </message>
-    <message>
-        <source>Single-turn position</source>
-        <translation>单圈位置控制</translation>
-    </message>
-    <message>
-        <source>Single-turn position with speed limit</source>
-        <translation>限速单圈位置控制</translation>
-    </message>
-    <message>
-        <source>Incremental position</source>
-        <translation>增量位置控制</translation>
-    </message>
-    <message>
-        <source>Incremental position with speed limit</source>
-        <translation>限速增量位置控制</translation>
     </message>
 </context>
 <context>
@@ -5174,10 +5174,6 @@
         <translation>写入 %2 后，驱动保存的参数为 %1。</translation>
     </message>
     <message>
-        <source>The drive reports acceleration %1 dps/s after %2 dps/s was written: some firmware ignores 0x34 or reads 0 with 0x33 (see ERRATA), so the acceleration in effect is not known.</source>
-        <translation>写入 %2 dps/s 后，驱动报告的加速度为 %1 dps/s：部分固件忽略 0x34 或用 0x33 读出 0（见 ERRATA），因此实际生效的加速度未知。</translation>
-    </message>
-    <message>
         <source>The read-back did not complete: what the drive holds is not known. Editing and writing stay off until Read from drive succeeds.</source>
         <translation>回读未完成：驱动实际保存的值未知。在“从驱动读取”成功之前，编辑和写入保持禁用。</translation>
     </message>
@@ -5202,6 +5198,10 @@
     <message>
         <source>This writes to the drive: the values in its RAM are replaced at once, and so is your pending edit. ROM is not touched; RAM is lost at power-off.</source>
         <translation>这会写入驱动：其 RAM 中的值会立即被替换，你的待写入修改也会被替换。ROM 不受影响；RAM 断电丢失。</translation>
+    </message>
+    <message>
+        <source>The drive reports acceleration %1 dps/s after %2 dps/s was written: some firmware ignores 0x34 or reads 0 with 0x33 (see docs/ERRATA.md), so the acceleration in effect is not known.</source>
+        <translation>写入 %2 dps/s 后，驱动报告的加速度为 %1 dps/s：部分固件忽略 0x34 或用 0x33 读出 0（见 docs/ERRATA.md），因此实际生效的加速度未知。</translation>
     </message>
 </context>
 <context>

@@ -231,14 +231,17 @@ void tst_BusWorker::emergencyStopOvertakesEverything()
     QCOMPARE(rig.resultCount(99), 32);
     QVERIFY(rig.runUntil([&] { return rig.result(bg) && rig.result(op); }, 5000));
     const auto order = rig.writtenRequests();
-    // In flight first, then motor_off to both known IDs, then to every other ID (once each:
-    // they are not known), then the operator read, then polls.
+    // In flight first (waited for only until its reply could have left the wire: its reply,
+    // 20 ms late, comes during the stop), then motor_off to both known IDs, then to every
+    // other ID (once each: they are not known), then the read in flight again, the operator
+    // read, then polls.
     QCOMPARE(order.at(1), qMakePair(Command::MotorOff, 3));
     QCOMPARE(order.at(2), qMakePair(Command::MotorOff, 17));
     for (int i = 3; i < 33; ++i)
         QCOMPARE(order.at(i).first, Command::MotorOff);
-    QCOMPARE(order.at(33), qMakePair(Command::ReadState1, 17));
-    QCOMPARE(order.at(34), qMakePair(Command::ReadState2, 17));
+    QCOMPARE(order.at(33), qMakePair(Command::ReadState1, 3));
+    QCOMPARE(order.at(34), qMakePair(Command::ReadState1, 17));
+    QCOMPARE(order.at(35), qMakePair(Command::ReadState2, 17));
     for (const auto &w : order)
         QVERIFY(w.first != Command::Speed);
 }

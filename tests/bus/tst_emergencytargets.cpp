@@ -13,6 +13,8 @@
 #include <bus/StopTargets.h>
 #include <protocol/RequestBuilder.h>
 
+#include <atomic>
+
 #include <QtTest/QSignalSpy>
 #include <QtTest/QTest>
 
@@ -50,6 +52,8 @@ private slots:
     void stopDuringRescanReachesTheDrivesItSawFirst();
     void lateReplyDoesNotSlowTheStop();
     void stopSilencesAreCountedApart();
+    void lostAcknowledgementIsAskedAgainBeforeTheSilentIds();
+    void stopDoesNotWaitOutAPollsMargin();
 };
 
 namespace {
@@ -309,6 +313,66 @@ void tst_EmergencyTargets::stopSilencesAreCountedApart()
     const BusStatistics st = rig->worker->statisticsSnapshot();
     QCOMPARE(st.bus.timeouts, quint64(0)); // the 28 IDs with no drive are not timeouts
     QCOMPARE(st.bus.silentProbes, quint64(28));
+}
+
+void tst_EmergencyTargets::lostAcknowledgementIsAskedAgainBeforeTheSilentIds()
+{
+    // Drive 9's first acknowledgement is lost (or its "off" was: the host cannot tell). It is
+    // asked again right after the other known drives' first "off", not after the 28 IDs where
+    // no drive ever answered (some 100 ms at 115200).
+    auto rig = fourDrives();
+    for (int id : kDrives) {
+        const quint64 t = rig->send(plainRequest(Command::ReadState1, id));
+        QVERIFY(rig->runUntil([&] { return rig->result(t); }));
+    }
+    auto dropped = std::make_shared<std::atomic<bool>>(false);
+    FakeTransport *tp = rig->transport;
+    tp->setResponder([tp, dropped](const protocol::Frame &req, int) {
+        if (req.id == 9 && req.command == quint8(Command::MotorOff) && !dropped->exchange(true))
+            return QByteArray();
+        return tp->defaultReply(req);
+    });
+    const int before = rig->log->writtenCopy().size();
+    QSignalSpy stopped(rig->worker.get(), &BusWorker::emergencyStopFinished);
+    rig->worker->emergencyStop(11, {});
+    QVERIFY(rig->runUntil([&] { return stopped.size() == 1; }));
+    QCOMPARE(stopped.at(0).at(1).value<QVector<int>>(), kDrives); // 9 acknowledged the retry
+    QVector<int> order;
+    for (const QByteArray &frame : rig->log->writtenCopy().mid(before))
+        order.append(quint8(frame.at(2)));
+    QCOMPARE(order.mid(0, 5), (QVector<int>{1, 9, 20, 31, 9}));
+    QCOMPARE(order.size(), 33);
+}
+
+void tst_EmergencyTargets::stopDoesNotWaitOutAPollsMargin()
+{
+    // Drive 1 answered a read 150 ms late, which lifts its own timeout to some 225 ms. Then a
+    // read to it is on the wire when the stop comes, and its reply is lost. The stop waits
+    // only until that reply could no longer be on the wire (request and reply wire time plus
+    // turnaround, some 2.5 ms at 115200), not for the lifted timeout and a quiet period after.
+    auto rig = fourDrives();
+    rig->transport->setReplyDelayMs(150);
+    const quint64 slow = rig->send(plainRequest(Command::ReadState1, 1), Priority::Operator, 0);
+    QVERIFY(rig->runUntil([&] { return rig->result(slow); }));
+    QVERIFY(rig->runUntil([&] { return rig->worker->statisticsSnapshot().bus.lateReplies == 1; },
+                          5000));
+    rig->transport->setReplyDelayMs(1);
+    FakeTransport *tp = rig->transport;
+    tp->setResponder([tp](const protocol::Frame &req, int) {
+        const bool lost = req.id == 1 && req.command == quint8(Command::ReadState1);
+        return lost ? QByteArray() : tp->defaultReply(req);
+    });
+    const int before = rig->log->writtenCopy().size();
+    const quint64 read = rig->send(plainRequest(Command::ReadState1, 1), Priority::Operator, 0);
+    QVERIFY(rig->runUntil([&] { return rig->log->writtenCopy().size() > before; }));
+    const double start = rig->nowMs();
+    rig->worker->emergencyStop(12, {});
+    QVERIFY(rig->runUntil([&] { return rig->log->writtenCopy().size() > before + 1; }));
+    const double waitedMs = rig->nowMs() - start;
+    QVERIFY2(waitedMs < 5, qPrintable(QStringLiteral("first motor_off after %1 ms").arg(waitedMs)));
+    QCOMPARE(quint8(rig->log->writtenCopy().at(before + 1).at(1)), quint8(Command::MotorOff));
+    QVERIFY(rig->runUntil([&] { return rig->result(read); }));
+    QCOMPARE(rig->result(read)->status, RequestStatus::Timeout);
 }
 
 QTEST_GUILESS_MAIN(tst_EmergencyTargets)

@@ -162,9 +162,9 @@ void tst_V235Codec::state1V235()
 
 void tst_V235Codec::state1CrossDecodesWrongly()
 {
-    // 24.00 V, 1.50 A, on (docs/V2.35.md section 5). Read as V2.3, D2-D3 = 09 96 is 3840.9 V
-    // (docs/V2.35.md says 384.0 V: its own arithmetic slips; the bytes say 0x9609 x 0.1 V). The
-    // generation must come from the drive, never from a default.
+    // 24.00 V, 1.50 A, on (docs/V2.35.md section 5). Read as V2.3, D2-D3 = 09 96 is 0x9609 =
+    // 38409 x 0.1 V = 3840.9 V, as docs/V2.35.md works it out. The generation must come from
+    // the drive, never from a default.
     const char *frame = "3E 9A 01 07 E0 1E 60 09 96 00 00 00 1D";
     QCOMPARE(std::get<State1>(replyOf(frame, kV235Mf).payload).voltageV(), 24.0);
     QCOMPARE(*std::get<State1>(replyOf(frame, kV235Mf).payload).motorOn(), true);

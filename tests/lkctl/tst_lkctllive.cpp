@@ -455,8 +455,8 @@ void tst_LkctlLive::romPersistsInSimRomDirRamDoesNot()
 
 void tst_LkctlLive::readBackMismatchExits5()
 {
-    // Firmware that acknowledges 0x34 and ignores it (ERRATA): the echo looks fine, only the
-    // read-back shows the truth, and a script must see it in the exit status.
+    // Firmware that acknowledges 0x34 and ignores it (docs/ERRATA.md): the echo looks fine, only
+    // the read-back shows the truth, and a script must see it in the exit status.
     const QStringList quirky = words("--sim 3:MF+accel-ignored");
     Result r = lkctl(words("write 3 accel 1000 --ram") + quirky);
     QCOMPARE(r.exitCode, 5);
@@ -464,7 +464,8 @@ void tst_LkctlLive::readBackMismatchExits5()
     QVERIFY2(r.err.contains("read-back mismatch on drive 3: wrote acceleration "
                             "(acceleration 1000 dps/s) but the drive holds acceleration "
                             "0 dps/s.") &&
-                 r.err.contains("ERRATA"),
+                 r.err.contains("Some firmware acknowledges write_accel_ram and ignores it "
+                                "(see docs/ERRATA.md)."),
              r.err.constData());
     r = lkctl(words("write 3 accel 1000 --ram --json") + quirky);
     QCOMPARE(r.exitCode, 5);

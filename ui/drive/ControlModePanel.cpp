@@ -273,11 +273,6 @@ void ControlModePanel::showPage(ControlMode mode)
     m_pages->updateGeometry();
 }
 
-QVector<ControlMode> ControlModePanel::offeredModes() const
-{
-    return m_offered;
-}
-
 bool ControlModePanel::isOffered(ControlMode mode) const
 {
     return m_offered.contains(mode);

@@ -43,7 +43,6 @@ public:
     /// The drive's protocol generation: a torque is built at its scale (V2.35 MF and MG differ
     /// from V2.3).
     void setGeneration(protocol::Generation generation) { m_generation = generation; }
-    QVector<ControlMode> offeredModes() const;
     bool isOffered(ControlMode mode) const;
     /// Shows the page of `mode`; false (nothing changes) when it is not offered.
     bool setMode(ControlMode mode);

@@ -135,17 +135,17 @@ void DriveInfoView::contextChanged(Changes changes)
         m_gatherer->cancel();
         m_progress->setVisible(false);
     }
-    if (canSend() && !m_model && (changes & (Change::Drive | Change::Connection)))
+    if (canSendToDrive() && !m_model && (changes & (Change::Drive | Change::Connection)))
         readModel();
     m_title->setText(driveTitle());
-    m_read->setEnabled(canSend());
+    m_read->setEnabled(canSendToDrive());
     m_copy->setEnabled(hasDrive());
     m_reportButton->setEnabled(session() && isConnected() && !m_gatherer->isRunning());
 }
 
 void DriveInfoView::readModel()
 {
-    if (!canSend())
+    if (!canSendToDrive())
         return;
     const int id = driveId();
     tracker()->send(*protocol::build::plain(protocol::Command::ReadModel, id).request,
@@ -233,11 +233,6 @@ void DriveInfoView::copyToClipboard()
         return;
     QApplication::clipboard()->setText(text);
     setStatus(tr("Copied to the clipboard."));
-}
-
-bool DriveInfoView::isGathering() const
-{
-    return m_gatherer->isRunning();
 }
 
 void DriveInfoView::gatherBusReport()

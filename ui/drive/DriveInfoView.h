@@ -34,7 +34,6 @@ public:
 
     /// Gathers a report of every drive the session knows; busReportReady follows.
     void gatherBusReport();
-    bool isGathering() const;
     std::optional<record::BusReport> lastReport() const { return m_report; }
     /// Writes the last report to `jsonPath` and beside it as HTML (same name, .html).
     /// Returns an error text, empty on success.

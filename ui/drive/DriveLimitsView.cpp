@@ -132,14 +132,14 @@ void DriveLimitsView::contextChanged(Changes changes)
     }
     m_unsupported->setVisible(hasDrive() && !isSupported());
     m_editor->setVisible(!hasDrive() || isSupported());
-    if (reset && isSupported() && canSend())
+    if (reset && isSupported() && canSendToDrive())
         readFromDrive();
     refreshEnabled();
 }
 
 void DriveLimitsView::readFromDrive()
 {
-    if (!isSupported() || !canSend() || isBusy())
+    if (!isSupported() || !canSendToDrive() || isBusy())
         return;
     m_takePending = !m_table->pending() || !m_table->anyChanged();
     setStatus(QString());
@@ -200,7 +200,7 @@ void DriveLimitsView::writeToRom()
 
 void DriveLimitsView::write(bool rom)
 {
-    if (!isSupported() || !canSend() || isBusy())
+    if (!isSupported() || !canSendToDrive() || isBusy())
         return;
     const std::optional<ParamValues> values = m_table->pending();
     if (!m_readComplete || !values) {
@@ -215,7 +215,7 @@ void DriveLimitsView::write(bool rom)
         return;
     }
     // The dialog ran an event loop: the drive, the link or the read may have changed meanwhile.
-    if (!canSend() || driveId() != id || isBusy() || !m_readComplete) {
+    if (!canSendToDrive() || driveId() != id || isBusy() || !m_readComplete) {
         setStatus(tr("The drive or the connection changed: nothing was sent."), true);
         return;
     }
@@ -234,9 +234,9 @@ void DriveLimitsView::write(bool rom)
 void DriveLimitsView::refreshEnabled()
 {
     const bool idle = !isBusy();
-    const bool read = isSupported() && canSend() && m_readComplete;
+    const bool read = isSupported() && canSendToDrive() && m_readComplete;
     const bool pending = m_table->pending().has_value();
-    m_read->setEnabled(isSupported() && canSend() && idle);
+    m_read->setEnabled(isSupported() && canSendToDrive() && idle);
     m_writeRam->setEnabled(read && idle && pending);
     m_writeRom->setEnabled(read && idle && pending);
     m_table->setEditable(read);

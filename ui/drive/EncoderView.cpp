@@ -339,7 +339,7 @@ void EncoderView::hideEvent(QHideEvent *event)
 
 void EncoderView::syncPollExtras()
 {
-    if (m_shown && canSend())
+    if (m_shown && canSendToDrive())
         m_extras.hold(session(), driveId(), liveCommands());
     else
         m_extras.release();
@@ -374,14 +374,6 @@ void EncoderView::onTelemetry(const bus::TelemetryBatch &batch)
     refreshReadouts();
     if (!m_useRaw->isEnabled() && m_encoder)
         refreshEnabled(); // "Use current raw" needs a reading
-}
-
-void EncoderView::refreshNow()
-{
-    if (!canSend())
-        return;
-    readEncoder(bus::Priority::Operator);
-    readMultiTurn(bus::Priority::Operator);
 }
 
 quint64 EncoderView::readEncoder(bus::Priority priority)
@@ -426,7 +418,7 @@ void EncoderView::refreshReadouts()
 
 void EncoderView::refreshEnabled()
 {
-    const bool can = canSend() && !m_busy && !m_zero->isBusy();
+    const bool can = canSendToDrive() && !m_busy && !m_zero->isBusy();
     // V2.35 has no 0x91 (docs/V2.35.md): its drives would not answer, so it is not offered.
     const QString noOffset = absenceOf(Command::WriteEncoderOffset);
     m_writeOffset->setEnabled(can && noOffset.isEmpty());
@@ -435,7 +427,7 @@ void EncoderView::refreshEnabled()
                                    "spec's command table calls 0x91 a ROM write: it may write the "
                                    "drive's flash.")
                               : noOffset);
-    m_zero->setDrive(driveId(), motor(), canSend());
+    m_zero->setDrive(driveId(), motor(), canSendToDrive());
     m_zero->setGearRatio(m_ratio);
     m_zero->setBlocked(m_busy);
     m_useRaw->setEnabled(hasDrive() && m_encoder.has_value());
@@ -452,7 +444,9 @@ bool EncoderView::confirm(const ConfirmRequest &request)
     // The dialog ran an event loop: the drive or the link may have changed meanwhile.
     if (ConfirmDialog::askUnchanged(
             this, request,
-            [this, id] { return canSend() && driveId() == id && !m_busy && !m_zero->isBusy(); },
+            [this, id] {
+                return canSendToDrive() && driveId() == id && !m_busy && !m_zero->isBusy();
+            },
             &why, &changed))
         return true;
     setStatus(why, changed);
@@ -461,7 +455,7 @@ bool EncoderView::confirm(const ConfirmRequest &request)
 
 void EncoderView::writeOffset(int offset)
 {
-    if (!canSend() || m_busy || m_zero->isBusy())
+    if (!canSendToDrive() || m_busy || m_zero->isBusy())
         return;
     if (const QString absent = absenceOf(Command::WriteEncoderOffset); !absent.isEmpty()) {
         setStatus(absent, true);

@@ -56,8 +56,6 @@ public:
     /// The handle of those reads in the session (0: none added now).
     quint64 pollExtrasHandle() const { return m_extras.handle(); }
 
-    /// One read of encoder and angles now (the live poll does the same while visible).
-    void refreshNow();
     /// Asks, then writes `offset` (0..countsPerTurn()-1) with 0x91 and reads it back.
     void writeOffset(int offset);
     /// Asks, then clears the angle (0x95) and checks it with read_multi_turn before/after.

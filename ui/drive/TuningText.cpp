@@ -67,11 +67,12 @@ QStringList TuningText::readBackProblems(const TuningWrite &sent,
                             .arg(gains(*pid), gains(*sent.pid));
     }
     if (sent.accelDps2 && accelDps2 && *accelDps2 != *sent.accelDps2)
-        problems << tr("The drive reports acceleration %1 dps/s after %2 dps/s was written: "
-                       "some firmware ignores 0x34 or reads 0 with 0x33 (see ERRATA), so the "
-                       "acceleration in effect is not known.")
-                        .arg(*accelDps2)
-                        .arg(*sent.accelDps2);
+        problems
+            << tr("The drive reports acceleration %1 dps/s after %2 dps/s was written: "
+                  "some firmware ignores 0x34 or reads 0 with 0x33 (see docs/ERRATA.md), so the "
+                  "acceleration in effect is not known.")
+                   .arg(*accelDps2)
+                   .arg(*sent.accelDps2);
     if (!complete)
         problems << tr("The read-back did not complete: what the drive holds is not known. "
                        "Editing and writing stay off until Read from drive succeeds.");

@@ -1,9 +1,9 @@
 #include "CommandedMotion.h"
 
 #include <bus/BusSession.h>
-#include <panels/CommandTitle.h>
 #include <panels/Format.h>
 #include <protocol/Command.h>
+#include <text/CommandTitle.h>
 
 #include <QtCore/QRegularExpression>
 
@@ -85,7 +85,7 @@ QString CommandedMotion::describe(const protocol::Request &r)
         return tr("single-turn position %1\u00b0").arg(number(a->angleRaw * 0.01));
     if (const auto *i = std::get_if<IncrementPositionCommand>(&r.payload))
         return tr("move by %1\u00b0").arg(number(i->angleRaw * 0.01));
-    return CommandTitle::name(r.command); // Motor Run, or a command without a value
+    return text::CommandTitle::name(r.command); // Motor Run, or a command without a value
 }
 
 QString CommandedMotion::driveText(int id) const

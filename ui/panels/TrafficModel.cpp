@@ -1,11 +1,11 @@
 #include "TrafficModel.h"
 
-#include "CommandTitle.h"
 #include "StatusColors.h"
 
 #include <protocol/Command.h>
 #include <protocol/FieldJson.h>
 #include <protocol/FieldText.h>
+#include <text/CommandTitle.h>
 
 #include <QtGui/QBrush>
 #include <QtGui/QColor>
@@ -245,7 +245,7 @@ QVariant TrafficModel::data(const QModelIndex &index, int role) const
         // one hover away.
         if (index.column() == Command &&
             (e.kind == Kind::Sent || e.kind == Kind::Frame || e.kind == Kind::Timeout))
-            return CommandTitle::withCode(protocol::Command(e.command));
+            return text::CommandTitle::withCode(protocol::Command(e.command));
         return {};
     default:
         return {};

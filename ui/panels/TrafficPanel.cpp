@@ -1,7 +1,6 @@
 #include "TrafficPanel.h"
 
 #include "BusModel.h"
-#include "CommandTitle.h"
 #include "FileDialogs.h"
 #include "Format.h"
 #include "ThemedIcon.h"
@@ -10,6 +9,7 @@
 
 #include <protocol/Command.h>
 #include <record/ParameterSet.h>
+#include <text/CommandTitle.h>
 
 #include <QtCore/QDateTime>
 #include <QtCore/QFileInfo>
@@ -152,8 +152,8 @@ void TrafficPanel::fillCommandFilter()
             QStringLiteral("%1 (%2)").arg(QLatin1String(info.name),
                                           protocol::CommandTable::codeText(quint8(info.command))),
             int(info.command));
-        m_commandFilter->setItemData(m_commandFilter->count() - 1, CommandTitle::name(info.command),
-                                     Qt::ToolTipRole);
+        m_commandFilter->setItemData(m_commandFilter->count() - 1,
+                                     text::CommandTitle::name(info.command), Qt::ToolTipRole);
     }
 }
 

@@ -105,11 +105,6 @@ int PlotExporter::columnOf(const PlotTrace &trace)
     return channelColumn(trace.channel, trace.power);
 }
 
-QString PlotExporter::columnName(const PlotTrace &trace)
-{
-    return TelemetryCsv::wideName(trace.driveId, columnOf(trace));
-}
-
 QString PlotExporter::exportCsv(const TelemetryStore &store, const QVector<PlotTrace> &traces,
                                 TimeSpan span, const QString &path, lk::record::CsvLayout layout)
 {

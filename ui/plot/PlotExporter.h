@@ -38,8 +38,6 @@ public:
     /// "Speed, iq — drives 1, 3 — 2026-11-27 14:05:09": the plotted signals in plot order,
     /// the drives ascending, and `when` (local time).
     static QString pngTitle(const QVector<PlotTrace> &traces, const QDateTime &when);
-    /// Header name of a trace's column in the wide layout ("id3_speed_dps").
-    static QString columnName(const PlotTrace &trace);
     /// The TelemetryColumns index a trace is written as.
     static int columnOf(const PlotTrace &trace);
 };

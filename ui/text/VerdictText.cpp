@@ -1,6 +1,10 @@
 #include "VerdictText.h"
 
+#include "CommandTitle.h"
+
 #include <protocol/Command.h>
+
+#include <atomic>
 
 namespace lk::text {
 
@@ -8,6 +12,8 @@ using protocol::Command;
 using safety::LimitKind;
 
 namespace {
+std::atomic<VerdictText::CommandNames> g_commandNames{VerdictText::CommandNames::Titles};
+
 QString num(double v)
 {
     return QString::number(v, 'g', 8);
@@ -33,7 +39,11 @@ bool isIncrement(const safety::Verdict &v)
 
 QString commandName(const safety::Verdict &v)
 {
-    return v.command ? protocol::CommandTable::name(*v.command) : VerdictText::tr("this command");
+    if (!v.command)
+        return VerdictText::tr("this command");
+    return VerdictText::commandNames() == VerdictText::CommandNames::Cli
+               ? protocol::CommandTable::name(*v.command)
+               : CommandTitle::withCode(*v.command);
 }
 
 // Whole sentences for each case: a translation cannot be glued together from "the" + "max"
@@ -95,6 +105,16 @@ const char *roleName(tuning::StepSetpoint::Role role)
     return "";
 }
 } // namespace
+
+void VerdictText::setCommandNames(CommandNames names)
+{
+    g_commandNames = names;
+}
+
+VerdictText::CommandNames VerdictText::commandNames()
+{
+    return g_commandNames;
+}
 
 QString VerdictText::series(std::optional<protocol::Series> s)
 {

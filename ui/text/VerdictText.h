@@ -19,6 +19,13 @@ namespace lk::text {
 class VerdictText {
     Q_DECLARE_TR_FUNCTIONS(lk::text::VerdictText)
 public:
+    /// How a verdict names a command: by its title ("Open loop power (0xA0)", translated) in
+    /// lkstudio, by its CLI.md name ("open_loop") in lkctl, whose output docs/CLI.md pins.
+    enum class CommandNames { Titles, Cli };
+    /// Titles unless changed: lkctl's main() chooses Cli once, before any thread starts.
+    static void setCommandNames(CommandNames names);
+    static CommandNames commandNames();
+
     /// Which limit stopped a command, with both numbers, e.g. "the speed 800 dps is over your
     /// speed limit of 720 dps"; empty when it was allowed.
     static QString verdict(const safety::Verdict &verdict, std::optional<protocol::Series> series);

@@ -20,6 +20,15 @@
 //   estop_S_ids_sent_B                                  IDs that got a motor_off per stop (min)
 //   estop_S_drives_missed_B                             drives never acknowledged, all trials
 //   estop_S_last_ratio_B                                last-drive median over the clean one's
+//   estop_S_sent_last_ms_median_B, _max_B               stop() to the last of the four drives'
+//                                                       first motor_off on the wire (the traffic
+//                                                       capture's send time; what the drive hears
+//                                                       even when its acknowledgement is lost)
+//   estop_S_sent_last_ratio_B                           that median over the clean one's
+//
+// The send times are on the bus thread's clock; they are placed on the bench's clock by the
+// first acknowledgement (its reply's capture time against its arrival here), which puts them
+// late by one hand-over between threads: the figures are, if anything, pessimistic.
 //
 // Run: build/tests/bench/bus/bench_estop
 
@@ -28,14 +37,17 @@
 
 #include <bus/BusSession.h>
 #include <bus/PollPlan.h>
+#include <bus/TrafficEvent.h>
 #include <protocol/RequestBuilder.h>
 #include <transport/SerialTransport.h>
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QElapsedTimer>
+#include <QtCore/QMap>
 #include <QtCore/QSet>
 
 #include <cstdio>
+#include <optional>
 
 using namespace lk;
 using namespace lk::bus;
@@ -48,7 +60,7 @@ const QVector<int> kDrives{1, 9, 20, 31};
 enum class Scenario { Clean, ScanRace, Drops };
 
 struct StopFigures {
-    std::vector<double> firstMs, lastMs, doneMs;
+    std::vector<double> firstMs, lastMs, doneMs, sentLastMs;
     int idsSent = 32;
     int missed = 0;
     bool ok = true;
@@ -87,6 +99,35 @@ bool scanOnce(BusSession &session)
     return ok;
 }
 
+/// The last of the four drives' first motor_off on the wire, in ms after stop() (see the
+/// header for the clock); nullopt when a drive's send or every reply is missing from `traffic`.
+std::optional<double> lastSentMs(const TrafficBatch &traffic, const QMap<int, double> &ackMs)
+{
+    const quint8 off = quint8(protocol::Command::MotorOff);
+    QMap<int, double> sentS, replyS;
+    for (const TrafficEvent &e : traffic) {
+        if (e.command != off || !kDrives.contains(e.id))
+            continue;
+        if (e.kind == TrafficEvent::Kind::Sent && !sentS.contains(e.id))
+            sentS.insert(e.id, e.time);
+        else if (e.kind == TrafficEvent::Kind::Frame && !replyS.contains(e.id))
+            replyS.insert(e.id, e.time);
+    }
+    if (sentS.size() != kDrives.size() || ackMs.isEmpty())
+        return std::nullopt;
+    int anchor = 0;
+    for (auto it = ackMs.cbegin(); it != ackMs.cend(); ++it)
+        if (replyS.contains(it.key()) && (anchor == 0 || it.value() < ackMs.value(anchor)))
+            anchor = it.key();
+    if (anchor == 0)
+        return std::nullopt;
+    const double offsetMs = ackMs.value(anchor) - replyS.value(anchor) * 1e3;
+    double last = 0;
+    for (double t : sentS)
+        last = std::max(last, t * 1e3 + offsetMs);
+    return last;
+}
+
 /// One stop: fills first/last/done times; false when it did not finish. `delayMs` >= 0
 /// starts a re-scan that long before the stop.
 bool timeOneStop(BusSession &session, StopFigures &f, double delayMs)
@@ -104,6 +145,9 @@ bool timeOneStop(BusSession &session, StopFigures &f, double delayMs)
     QSet<int> sent;
     bool done = false;
     double doneMs = 0;
+    TrafficBatch traffic;
+    auto c0 = QObject::connect(&session, &BusSession::trafficCaptured,
+                               [&traffic](const TrafficBatch &b) { traffic += b; });
     auto c1 =
         QObject::connect(&session, &BusSession::requestCompleted, [&](const RequestResult &r) {
             if (r.ticket != ticket)
@@ -123,10 +167,14 @@ bool timeOneStop(BusSession &session, StopFigures &f, double delayMs)
     clock.start();
     ticket = session.emergencyStop();
     const bool finished = bench::waitUntil([&] { return done; }, 30000);
+    bench::spin(50); // the capture's last batch
+    QObject::disconnect(c0);
     QObject::disconnect(c1);
     QObject::disconnect(c2);
     if (!finished)
         return false;
+    if (const std::optional<double> ms = lastSentMs(traffic, ackMs))
+        f.sentLastMs.push_back(*ms);
     f.missed += int(kDrives.size() - ackMs.size());
     if (!ackMs.isEmpty()) {
         const QList<double> times = ackMs.values();
@@ -179,6 +227,7 @@ StopFigures stops(int baud, Scenario scenario)
     // lkstudio scans first: the drives are known, and the dashboard polls them.
     const double scanDuration = scanMs(session);
     session.startPolling(PollPlan::standard(kDrives));
+    session.setTrafficCapture(true);
     for (int i = 0; i < kTrials && f.ok; ++i) {
         // The stop lands at a point moving through the first 90 % of the re-scan.
         const double delay =
@@ -214,7 +263,7 @@ int main(int argc, char *argv[])
         {Scenario::Clean, "clean"}, {Scenario::ScanRace, "scan"}, {Scenario::Drops, "drops"}};
     for (int baud : {115200, 1000000}) {
         const QString b = QString::number(baud);
-        double cleanLast = 0;
+        double cleanLast = 0, cleanSentLast = 0;
         for (const auto &[scenario, name] : scenarios) {
             const StopFigures f = stops(baud, scenario);
             if (!f.ok) {
@@ -234,6 +283,13 @@ int main(int argc, char *argv[])
             json.addInt(k + "ids_sent_" + b, f.idsSent);
             json.addInt(k + "drives_missed_" + b, f.missed);
             json.add(k + "last_ratio_" + b, cleanLast > 0 ? last / cleanLast : 0, 2);
+            const double sentLast = bench::median(f.sentLastMs);
+            if (scenario == Scenario::Clean)
+                cleanSentLast = sentLast;
+            json.add(k + "sent_last_ms_median_" + b, sentLast, 2);
+            json.add(k + "sent_last_ms_max_" + b, maxOf(f.sentLastMs), 2);
+            json.add(k + "sent_last_ratio_" + b, cleanSentLast > 0 ? sentLast / cleanSentLast : 0,
+                     2);
         }
     }
     json.print();

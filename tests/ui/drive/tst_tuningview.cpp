@@ -305,7 +305,7 @@ void tst_TuningView::ramWriteIsLostOnRestart()
 
 void tst_TuningView::ignoredAccelerationIsShownAsMismatch()
 {
-    // Firmware that acknowledges 0x34 and reads 0 with 0x33 (ERRATA): the acknowledgement
+    // Firmware that acknowledges 0x34 and reads 0 with 0x33 (docs/ERRATA.md): the acknowledgement
     // looks fine, only the read-back tells, and the technician must see it.
     SimRig rig(QStringLiteral("1:MF+accel-ignored"));
     QVERIFY(rig.open());
@@ -319,6 +319,8 @@ void tst_TuningView::ignoredAccelerationIsShownAsMismatch()
     QVERIFY2(
         view->mismatchText().contains(QStringLiteral("acceleration 0 dps/s after 15000 dps/s")),
         qPrintable(view->mismatchText()));
+    QVERIFY2(view->mismatchText().contains(QStringLiteral("(see docs/ERRATA.md)")),
+             qPrintable(view->mismatchText()));
     QVERIFY(!view->mismatchText().contains(QStringLiteral("gains"))); // the gains did land
     QCOMPARE(drivePid(*view)->speedKp, 66);
     QCOMPARE(rig.count(1, Command::WriteAccelRam), 1);

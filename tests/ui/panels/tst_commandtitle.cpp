@@ -5,9 +5,10 @@
 #include <drive/DriveText.h>
 #include <main/CommandedMotion.h>
 #include <panels/BusModel.h>
-#include <panels/CommandTitle.h>
 #include <panels/TrafficModel.h>
 #include <panels/TrafficPanel.h>
+#include <text/CommandTitle.h>
+#include <text/VerdictText.h>
 
 #include <bus/TrafficEvent.h>
 #include <protocol/RequestBuilder.h>
@@ -18,7 +19,9 @@
 
 using lk::protocol::Command;
 using lk::protocol::CommandTable;
-using lk::ui::CommandTitle;
+using lk::protocol::Series;
+using lk::text::CommandTitle;
+using lk::text::VerdictText;
 
 class tst_CommandTitle : public QObject {
     Q_OBJECT
@@ -28,6 +31,7 @@ private slots:
     void motionIsDescribedByName();
     void trafficColumnKeepsCliNamesAndHoversTheTitle();
     void driveViewsNameCommandsByTitle();
+    void lkctlVerdictsKeepCliNames();
 };
 
 void tst_CommandTitle::everyCommandHasAHumanName_data()
@@ -83,8 +87,8 @@ void tst_CommandTitle::trafficColumnKeepsCliNamesAndHoversTheTitle()
              QStringLiteral("Multi-turn position with speed limit"));
 }
 
-// What the drive views say after sending ("Sent ... to drive 1.") and when the gate refuses:
-// still the snake_case names, worded in ui/drive and ui/text, which this branch does not own.
+// What the drive views say after sending ("Sent ... to drive 1.") and when the gate refuses.
+// The first is still worded by snake_case name in ui/drive, which this branch does not own.
 void tst_CommandTitle::driveViewsNameCommandsByTitle()
 {
     QEXPECT_FAIL("", "needs ui/drive/DriveText::command to word CommandTitle::withCode", Continue);
@@ -94,9 +98,26 @@ void tst_CommandTitle::driveViewsNameCommandsByTitle()
     unknown.kind = lk::safety::LimitKind::UnknownSeries;
     unknown.command = Command::MultiPositionLimited;
     const QString refusal = lk::ui::DriveText::refusal(unknown, std::nullopt);
-    QEXPECT_FAIL("", "needs ui/text/VerdictText to name the command by its title in the GUI",
-                 Continue);
     QVERIFY2(!refusal.contains(QStringLiteral("multi_position_limited")), qPrintable(refusal));
+    QVERIFY2(refusal.contains(CommandTitle::withCode(Command::MultiPositionLimited)),
+             qPrintable(refusal));
+    lk::safety::Verdict unsupported;
+    unsupported.kind = lk::safety::LimitKind::Unsupported;
+    unsupported.command = Command::OpenLoop;
+    QCOMPARE(VerdictText::verdict(unsupported, Series::MF),
+             QStringLiteral("MF drives do not implement Open loop power (0xA0)"));
+}
+
+// lkctl keeps the names of the command line (docs/CLI.md): its main() asks for them.
+void tst_CommandTitle::lkctlVerdictsKeepCliNames()
+{
+    lk::safety::Verdict unsupported;
+    unsupported.kind = lk::safety::LimitKind::Unsupported;
+    unsupported.command = Command::OpenLoop;
+    VerdictText::setCommandNames(VerdictText::CommandNames::Cli);
+    const QString cli = VerdictText::verdict(unsupported, Series::MF);
+    VerdictText::setCommandNames(VerdictText::CommandNames::Titles);
+    QCOMPARE(cli, QStringLiteral("MF drives do not implement open_loop"));
 }
 
 QTEST_MAIN(tst_CommandTitle)

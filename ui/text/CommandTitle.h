@@ -5,14 +5,14 @@
 #include <QtCore/QCoreApplication>
 #include <QtCore/QString>
 
-namespace lk::ui {
+namespace lk::text {
 
 /// The name a user reads for a protocol command: "Multi-turn position with speed limit",
 /// translated. The snake_case names (CommandTable::name, CLI.md) are for lkctl, JSON and the
 /// traffic view's command column; everywhere else in the GUI a command goes by this one.
-/// QtCore only, so that the wording of verdicts (ui/text) can use it as well.
+/// QtCore only, in lktext: VerdictText names a refused command by it in the GUI.
 class CommandTitle {
-    Q_DECLARE_TR_FUNCTIONS(lk::ui::CommandTitle)
+    Q_DECLARE_TR_FUNCTIONS(lk::text::CommandTitle)
 public:
     /// "Multi-turn position with speed limit"; the code ("0xA4") for a value outside the
     /// command table.
@@ -21,4 +21,4 @@ public:
     static QString withCode(protocol::Command command);
 };
 
-} // namespace lk::ui
+} // namespace lk::text
