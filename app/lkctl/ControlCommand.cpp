@@ -1,6 +1,7 @@
 #include "ControlCommand.h"
 
 #include "Console.h"
+#include "ControlWatch.h"
 #include "LiveBus.h"
 #include "MotionLimitOptions.h"
 #include "OrderedJson.h"
@@ -106,6 +107,7 @@ QString ControlCommand::usage() const
                "  --max-speed DPS        position modes: a lower max speed for this move (above\n"
                "                         your speed limit is refused)\n"
                "%2"
+               "%4"
                "  --json                 one line: {\"command\":\"speed\",\"id\":3,\"sent\":{...},"
                "\n"
                "                         \"speed_bound\":{\"source\":\"soft_limit\",\"dps\":720},"
@@ -126,10 +128,13 @@ QString ControlCommand::usage() const
                "\n"
                "%3")
         .arg(BusOptions::helpText(), MotionLimitOptions::helpText(),
-             exitStatusText(QStringLiteral(
-                 "  4  refused for safety: the series or one of your limits does not allow it\n"
-                 "     (the message names the limit and both values), or a V2.35 drive is\n"
-                 "     off; nothing was sent\n")));
+             exitStatusText(
+                 QStringLiteral(
+                     "  4  refused for safety: the series or one of your limits does not allow it\n"
+                     "     (the message names the limit and both values), or a V2.35 drive is\n"
+                     "     off; nothing was sent\n") +
+                 ControlWatch::exitStatusLine()),
+             ControlWatch::helpText());
 }
 
 std::optional<FieldBuildResult> ControlCommand::build(const QStringList &pos,
@@ -345,6 +350,7 @@ int ControlCommand::run(const QStringList &args, Console &console)
     for (const char *o : {"direction", "max-speed"})
         parser.addOption(QLatin1String(o), true);
     MotionLimitOptions::declare(parser);
+    ControlWatch::declare(parser);
     int status = kExitOk;
     const std::optional<BusOptions> busOptions = parseBus(parser, args, console, &status);
     if (!busOptions)
@@ -352,6 +358,10 @@ int ControlCommand::run(const QStringList &args, Console &console)
     const std::optional<Plan> plan = parse(parser, console, &status);
     if (!plan)
         return status;
+    QString watchError; // --watch: the speed watch after torque and open loop (ControlWatch)
+    std::optional<ControlWatch> watch = ControlWatch::read(parser, &watchError);
+    if (!watch)
+        return usageError(console, watchError);
 
     LiveBus bus(console, name());
     if (!bus.open(*busOptions))
@@ -359,10 +369,11 @@ int ControlCommand::run(const QStringList &args, Console &console)
     const std::optional<LiveBus::Identity> who = bus.identify(plan->request.id);
     if (!who)
         return kExitFailure;
-    return runFor(bus, *plan, *who);
+    return runFor(bus, *plan, *who, *watch);
 }
 
-int ControlCommand::runFor(LiveBus &bus, Plan plan, const LiveBus::Identity &who) const
+int ControlCommand::runFor(LiveBus &bus, Plan plan, const LiveBus::Identity &who,
+                           ControlWatch &watch) const
 {
     // A torque is in the drive's own units (V2.35 MF and MG differ from V2.3): built again
     // now that the drive is known.
@@ -394,7 +405,8 @@ int ControlCommand::runFor(LiveBus &bus, Plan plan, const LiveBus::Identity &who
     int status = kExitOk;
     if (v235 && !checkDriveState(bus, plan.request.id, &status))
         return status;
-    return send(bus, plan, motion, position, drive);
+    watch.arm(bus, plan.request.id, *limits);
+    return watch.follow(bus, *motion.request, plan.json, send(bus, plan, motion, position, drive));
 }
 
 } // namespace lk::lkctl

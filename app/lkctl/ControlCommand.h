@@ -17,6 +17,8 @@
 
 namespace lk::lkctl {
 
+class ControlWatch;
+
 /// `lkctl control ID MODE VALUE`: one motion command, made safe by safety::MotionPlanner
 /// (speed bound on every move, targets from the drive's read angle) and checked by the series
 /// limits and the user's soft limits before anything is sent.
@@ -52,7 +54,8 @@ private:
     bool readPosition(LiveBus &bus, const Plan &plan, const LiveBus::Identity &who,
                       const safety::SoftLimits &limits, safety::DrivePosition &position) const;
     /// Builds, plans, checks and sends the command for the drive identified.
-    int runFor(LiveBus &bus, Plan plan, const LiveBus::Identity &who) const;
+    /// `watch`: what happens after a torque or open-loop command (ControlWatch).
+    int runFor(LiveBus &bus, Plan plan, const LiveBus::Identity &who, ControlWatch &watch) const;
     int send(LiveBus &bus, const Plan &plan, const safety::MotionPlan &motion,
              const safety::DrivePosition &position, const protocol::DecodeContext &drive) const;
 };

@@ -59,6 +59,7 @@ void DemoMotion::start()
     if (m_stopped || m_running)
         return;
     m_running = true;
+    emit started();
     m_timer->start();
     qCInfo(lcDemo) << "demo motion on the simulated bus: the drives move until a command takes "
                       "over";
@@ -106,6 +107,14 @@ void DemoMotion::observe(const lk::bus::RequestResult &result)
 {
     if (m_tickets.remove(result.ticket) || !m_running || !takesOver(result.request.command))
         return;
+    if (result.priority == lk::bus::Priority::Emergency) {
+        // A stop from the emergency lane (leaving lkstudio, the speed watch): the others are
+        // being stopped too; a speed 0 now would turn them on again behind their stop.
+        qCInfo(lcDemo) << "demo motion ends: drive" << result.request.id << "was stopped";
+        m_moved.clear();
+        stopForGood();
+        return;
+    }
     qCInfo(lcDemo) << "demo motion ends: a command to drive" << result.request.id << "took over";
     standStill(result.request.id);
     stopForGood();

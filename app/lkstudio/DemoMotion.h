@@ -19,7 +19,9 @@ struct StartupOptions;
 /// go out as soon as the scan has found the drives. It sends only on the simulator, through
 /// the normal bus path, and stops for good when the user takes over: at the first command
 /// that moves, switches or stops a drive and is not its own (it then sets the other drives it
-/// moved back to 0 dps), at the first emergency stop, or when the link leaves the simulator.
+/// moved back to 0 dps), at the first emergency stop or stop from the emergency lane (quitting,
+/// the speed watch: every drive is being stopped, none is set to 0 dps), or when the link
+/// leaves the simulator.
 class DemoMotion : public QObject {
     Q_OBJECT
 public:
@@ -36,6 +38,7 @@ public:
                                const lk::ui::ConnectionChoice &choice);
 
 signals:
+    void started();
     /// The demo stopped for good (the user took over, an emergency stop, another link).
     void stopped();
 

@@ -2,6 +2,7 @@
 // documentation) optionally save a screenshot and quit.
 
 #include "DemoMotion.h"
+#include "LeaveHooks.h"
 
 #include <main/AppSettings.h>
 #include <main/BusController.h>
@@ -226,10 +227,11 @@ int runStudio(const lk::ui::StartupOptions &options)
     lk::ui::MainWindow window(&settings);
     logMessages(window.controller());
     // SIGTERM (logout, systemd, kill) and Ctrl-C close the window as its close button does,
-    // so that the geometry and settings are saved and the bus thread ends cleanly.
+    // so that the geometry and settings are saved and the bus thread ends cleanly; drives
+    // commanded to move are stopped first, without asking. A logout asks when it may.
     lk::system::SignalWatcher terminationSignals;
-    QObject::connect(&terminationSignals, &lk::system::SignalWatcher::signalled, &window,
-                     &QWidget::close);
+    LeaveHooks::closeOnTermination(window, terminationSignals);
+    LeaveHooks::askBeforeLogout(window);
     if (options.sim)
         window.controller()->setSimulatorSpec(*options.sim);
     window.controller()->setSimulatorFaults(options.simFaults);
@@ -274,6 +276,7 @@ int runStudio(const lk::ui::StartupOptions &options)
                 .arg(rememberedPort));
     }
     DemoMotion demo(window.controller());
+    LeaveHooks::followDemo(window, demo);
     if (options.simMotion && !choice.isSimulator()) {
         std::fprintf(stderr, "lkstudio: --sim-motion works only on the simulated bus\n");
         return 2;

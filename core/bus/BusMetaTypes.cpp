@@ -9,6 +9,7 @@
 #include "ScanTypes.h"
 #include "SetpointStop.h"
 #include "SetpointStreamPlan.h"
+#include "SpeedWatchTrip.h"
 #include "TelemetrySample.h"
 #include "TrafficEvent.h"
 
@@ -37,6 +38,7 @@ void registerBusMetaTypes()
         qRegisterMetaType<SetpointStreamPlan>("lk::bus::SetpointStreamPlan");
         qRegisterMetaType<SetpointStop>("lk::bus::SetpointStop");
         qRegisterMetaType<BusConfig>("lk::bus::BusConfig");
+        qRegisterMetaType<SpeedWatchTrip>("lk::bus::SpeedWatchTrip");
         qRegisterMetaType<transport::TransportError>("lk::transport::TransportError");
         qRegisterMetaType<QVector<int>>("QVector<int>");
     });

@@ -71,6 +71,7 @@ void BusSession::connectWorker()
     relay(&BusWorker::telemetryReceived, &BusSession::telemetryReceived);
     relay(&BusWorker::statisticsUpdated, &BusSession::statisticsUpdated);
     relay(&BusWorker::trafficCaptured, &BusSession::trafficCaptured);
+    relay(&BusWorker::speedWatchTripped, &BusSession::speedWatchTripped);
 }
 
 void BusSession::finishRequest(const RequestResult &result)
@@ -103,6 +104,8 @@ void BusSession::open(TransportFactory factory, int baud, const BusConfig &confi
     connectWorker();
     m_thread->start();
     post([w = m_worker] { w->start(); });
+    for (auto it = m_softLimits.cbegin(); it != m_softLimits.cend(); ++it)
+        post([w = m_worker, id = it.key(), limits = it.value()] { w->setSoftLimits(id, limits); });
 }
 
 void BusSession::join()
@@ -309,6 +312,12 @@ quint64 BusSession::startSetpointStream(SetpointStreamPlan plan)
 void BusSession::stopSetpointStream()
 {
     post([w = m_worker] { w->stopSetpointStream(); });
+}
+
+void BusSession::setSoftLimits(int id, const safety::SoftLimits &limits)
+{
+    m_softLimits.insert(id, limits);
+    post([w = m_worker, id, limits] { w->setSoftLimits(id, limits); });
 }
 
 void BusSession::setSeries(int id, protocol::Series series)

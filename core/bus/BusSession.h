@@ -11,6 +11,7 @@
 #include "ScanTypes.h"
 #include "SetpointStop.h"
 #include "SetpointStreamPlan.h"
+#include "SpeedWatchTrip.h"
 #include "TelemetrySample.h"
 #include "TicketCallbacks.h"
 #include "TrafficEvent.h"
@@ -43,6 +44,8 @@ class BusWorker;
 /// position, open loop, motor_run) must pass lk::safety::MotionGuard::check() (with
 /// series(id) and the user's soft limits) before send(); knownMotors()/series() say what
 /// each ID supports. emergencyStop() is the one motion-related call that needs no check.
+/// The one bound the bus thread keeps itself is the speed of a drive under a torque or
+/// open-loop command (setSoftLimits, speedWatchTripped): the drives do not bound it.
 class BusSession : public QObject {
     Q_OBJECT
 public:
@@ -125,6 +128,12 @@ public:
     /// stopped too.
     void stopSetpointStream();
 
+    /// The user's soft limits of drive `id`, for the bus thread's speed watch (SpeedWatch):
+    /// a drive under a torque or open-loop command is stopped (Motor Stop) once its speed
+    /// passes SpeedWatch::thresholdDps(limits.maxSpeedDps); without them, the series'
+    /// default. Kept over close() and open(); speedWatchTripped() reports each stop.
+    void setSoftLimits(int id, const safety::SoftLimits &limits);
+
     /// Tell the bus how to decode replies from `id` (iq vs power); also makes `id` known.
     void setSeries(int id, protocol::Series series);
     /// Forget every known ID (e.g. before telling the bus a new set by hand).
@@ -166,6 +175,9 @@ signals:
     void telemetryReceived(const lk::bus::TelemetryBatch &batch);
     void statisticsUpdated(const lk::bus::BusStatistics &statistics);
     void trafficCaptured(const lk::bus::TrafficBatch &batch);
+    /// The speed watch stopped a drive under torque or open loop past its speed limit; sent
+    /// once the Motor Stop has ended (which also comes as requestCompleted, ticket 0).
+    void speedWatchTripped(const lk::bus::SpeedWatchTrip &trip);
 
 private:
     void connectWorker();
@@ -193,6 +205,7 @@ private:
     QMap<quint64, PollExtras> m_pollExtras; ///< by handle
     quint64 m_nextExtrasHandle = 1;
     quint64 m_nextStream = 1;
+    QMap<int, safety::SoftLimits> m_softLimits; ///< by drive, given again to each new worker
     TicketCallbacks<RequestResult> m_requestCallbacks;
     TicketCallbacks<QVector<int>, QVector<int>, QVector<int>> m_stopCallbacks;
 };

@@ -51,6 +51,11 @@ BusWorker::BusWorker(TransportFactory factory, int baud, const BusConfig &config
     connect(&m_setpoints, &SetpointStream::setpointFailed, this, &BusWorker::setpointFailed);
     m_polls.scheduler().setSeriesLookup([this](int id) { return seriesOf(id); });
     connect(&m_polls, &PollRunner::pollingChanged, this, &BusWorker::pollingChanged);
+    connect(&m_speedWatch, &SpeedWatch::watchedChanged, this, [this](const QVector<int> &ids) {
+        m_polls.setWatched(ids);
+        schedulePump();
+    });
+    connect(&m_speedWatch, &SpeedWatch::tripped, this, &BusWorker::speedWatchTripped);
     wireLink();
 }
 
@@ -261,6 +266,7 @@ void BusWorker::onAttemptFailed(Pending p, RequestStatus status, const QString &
 void BusWorker::complete(Pending p, RequestStatus status, std::optional<protocol::Reply> reply,
                          const QString &reason, double latencyS)
 {
+    m_speedWatch.noteRequestEnded(p.req.request, status, p.attempts);
     RequestResult r;
     r.ticket = p.req.ticket;
     r.request = p.req.request;
@@ -341,7 +347,32 @@ void BusWorker::noteReply(const protocol::Reply &reply, double time, const Pendi
         s->cycle = request.pollCycle; // which poll round it answers: rows are built per round
         s->cycleTime = request.pollCycleStart;
         m_telemetry.add(*s);
+        m_speedWatch.noteSample(*s);
     }
+}
+
+void BusWorker::stopForSpeedWatch(int id, Completion done)
+{
+    if (m_setpointDrive == id)
+        haltSetpoints(SetpointStopReason::SpeedLimit);
+    const auto motionTo = [id](const Pending &p) {
+        return p.req.request.id == id && movesMotor(p.req.request.command);
+    };
+    cancelQueued(motionTo, RequestStatus::Cancelled,
+                 tr("cancelled: drive %1 went past its speed limit").arg(id));
+    if (Pending *p = m_wire.inflight(); p && motionTo(*p))
+        p->noRetry = true;
+    BusRequest stop;
+    stop.request.command = Command::MotorStop;
+    stop.request.id = static_cast<quint8>(id);
+    stop.priority = Priority::Emergency;
+    stop.origin = RequestOrigin::Emergency;
+    // Its end reaches requestCompleted (ticket 0) as well: whoever follows a drive's motion
+    // hears that it was stopped.
+    submit(stop, [this, done = std::move(done)](const RequestResult &r) {
+        emit requestCompleted(r);
+        done(r);
+    });
 }
 
 void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command halt)
@@ -421,7 +452,13 @@ void BusWorker::stopPolling()
 
 void BusWorker::startSetpointStream(const SetpointStreamPlan &plan)
 {
+    m_setpointDrive = plan.id;
     m_setpoints.start(plan);
+}
+
+void BusWorker::setSoftLimits(int id, const safety::SoftLimits &limits)
+{
+    m_speedWatch.setSoftLimits(id, limits);
 }
 
 void BusWorker::stopSetpointStream()

@@ -19,6 +19,7 @@
 #include "SetpointStream.h"
 #include "SetpointStreamPlan.h"
 #include "SingleShotTimer.h"
+#include "SpeedWatch.h"
 #include "TelemetryBatcher.h"
 #include "TelemetrySample.h"
 #include "TrafficEvent.h"
@@ -76,6 +77,10 @@ class Scanner;
 /// scheduler that queues at Operator priority. emergencyStop() stops it before its first
 /// motor_off is queued; a disconnect, shutdown and a reopen stop it too.
 ///
+/// A SpeedWatch bounds the speed of drives under torque or open-loop commands: it sees every
+/// request's end and every reply's telemetry, has the watched drives polled often, and stops
+/// one past its limit (stopForSpeedWatch) before anything else queued for it goes out.
+///
 /// All public functions must be called on the worker's thread (BusSession posts them).
 class BusWorker : public QObject {
     Q_OBJECT
@@ -112,6 +117,9 @@ public:
     /// Stops the stream and drops its setpoint still queued (one on the wire may finish).
     void stopSetpointStream();
     SetpointStream &setpointStream() { return m_setpoints; }
+    /// The soft limits of drive `id`: the speed watch bounds torque and open loop by them.
+    void setSoftLimits(int id, const safety::SoftLimits &limits);
+    const SpeedWatch &speedWatch() const { return m_speedWatch; }
     void setSeries(int id, protocol::Series series);
     void learnModel(int id, const protocol::ModelInfo &model,
                     std::optional<protocol::Series> series);
@@ -171,6 +179,8 @@ signals:
     void telemetryReceived(const lk::bus::TelemetryBatch &batch);
     void statisticsUpdated(const lk::bus::BusStatistics &statistics);
     void trafficCaptured(const lk::bus::TrafficBatch &batch);
+    /// The speed watch stopped a drive past its limit (after the stop's end).
+    void speedWatchTripped(const lk::bus::SpeedWatchTrip &trip);
 
 private:
     using Pending = PendingRequest;
@@ -196,6 +206,9 @@ private:
     /// keeps the one on the wire from being sent again.
     void haltSetpoints(SetpointStopReason reason);
     void noteReply(const protocol::Reply &reply, double time, const Pending &request);
+    /// Motor Stop to `id` from the emergency lane, for the speed watch: its setpoint stream
+    /// and queued motion commands go first, so that nothing restarts it behind the stop.
+    void stopForSpeedWatch(int id, Completion done);
     int retriesFor(const BusRequest &r) const;
     /// Whether sending `command` again after a timeout or a corrupt reply is harmless.
     static bool isRetrySafe(protocol::Command command);
@@ -220,6 +233,10 @@ private:
     Scanner *m_scanner = nullptr;
     TelemetryBatcher m_telemetry;
     SetpointStream m_setpoints{*this, m_timers};
+    int m_setpointDrive = 0; ///< the drive of the setpoint stream last started
+    SpeedWatch m_speedWatch{
+        [this](int id, Completion done) { stopForSpeedWatch(id, std::move(done)); },
+        [this](int id) { return seriesOf(id); }, [this] { return now(); }, this};
 };
 
 } // namespace lk::bus

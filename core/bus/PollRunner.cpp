@@ -50,9 +50,11 @@ void PollRunner::setSuspended(bool suspended)
 
 std::optional<PendingRequest> PollRunner::next(double now)
 {
-    if (!m_poller.isActive() || m_suspended)
+    if (!m_poller.hasWork())
         return std::nullopt;
-    if (std::optional<protocol::Request> r = m_poller.next(now)) {
+    const std::optional<protocol::Request> r =
+        m_suspended || !m_poller.isActive() ? m_poller.nextWatch() : m_poller.next(now);
+    if (r) {
         PendingRequest p;
         p.req.request = *r;
         p.req.priority = Priority::Background;
@@ -63,10 +65,14 @@ std::optional<PendingRequest> PollRunner::next(double now)
             m_poller.completed(res.request.id, res.request.command);
             m_ended();
         };
-        p.pollCycle = m_poller.cycle();
-        p.pollCycleStart = m_poller.cycleStart();
+        if (!m_poller.lastWasWatch()) { // a watch poll answers no round of the plan
+            p.pollCycle = m_poller.cycle();
+            p.pollCycleStart = m_poller.cycleStart();
+        }
         return p;
     }
+    if (m_suspended || !m_poller.isActive())
+        return std::nullopt; // a watch poll's end pumps again
     const double due = m_poller.nextDueTime(now);
     if (std::isfinite(due))
         m_timer->start(std::max(0, static_cast<int>(std::ceil((due - now) * 1e3))));

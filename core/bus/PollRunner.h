@@ -17,7 +17,8 @@ namespace lk::bus {
 /// due read as a Background request (never retried: a missed sample is read again the next
 /// round), and when none is due arms a timer for the next one. It holds while suspended (the
 /// link is down); its owner resumes it. The owner sends then: `due` runs when the timer fires,
-/// `ended` when a poll has ended.
+/// `ended` when a poll has ended. The speed watch's reads (setWatched) go out with or without
+/// a plan and are never held: whether anything is sent is the link's to decide.
 class PollRunner : public QObject {
     Q_OBJECT
 public:
@@ -36,6 +37,8 @@ public:
     void clear();
     /// Holds or resumes a running plan (a plan that is not running is left alone).
     void setSuspended(bool suspended);
+    /// The drives the speed watch reads often (PollScheduler::setWatched).
+    void setWatched(const QVector<int> &ids) { m_poller.setWatched(ids); }
     /// The poll due at `now`, or nullopt (none due: the timer is armed for the next one).
     std::optional<PendingRequest> next(double now);
 

@@ -114,6 +114,46 @@ QVector<Command> PollScheduler::commandsOf(int id) const
     return commands + m_plan.extraCommands.value(id);
 }
 
+void PollScheduler::setWatched(const QVector<int> &ids)
+{
+    Ring watch;
+    for (int id : ids) {
+        if (id < protocol::kMinId || id > protocol::kMaxId)
+            continue;
+        bool outstanding = false; // a read on the wire is not handed out twice
+        for (const Slot &s : std::as_const(m_watch.entries))
+            outstanding = outstanding || (s.id == id && s.outstanding);
+        watch.entries.append(Slot{id, Command::ReadState2, outstanding});
+    }
+    watch.cursor = watch.entries.isEmpty() ? 0 : m_watch.cursor % int(watch.entries.size());
+    m_watch = watch;
+}
+
+QVector<int> PollScheduler::watched() const
+{
+    QVector<int> ids;
+    for (const Slot &s : m_watch.entries)
+        ids.append(s.id);
+    return ids;
+}
+
+std::optional<protocol::Request> PollScheduler::nextWatch()
+{
+    for (int tried = 0; tried < m_watch.entries.size(); ++tried) {
+        Slot &slot = m_watch.entries[m_watch.cursor];
+        m_watch.cursor = (m_watch.cursor + 1) % int(m_watch.entries.size());
+        if (slot.outstanding)
+            continue;
+        slot.outstanding = true;
+        m_lastWasWatch = true;
+        protocol::Request r;
+        r.command = slot.command;
+        r.id = static_cast<quint8>(slot.id);
+        return r;
+    }
+    return std::nullopt;
+}
+
 void PollScheduler::clear()
 {
     m_plan = PollPlan{};
@@ -181,6 +221,21 @@ std::optional<protocol::Request> PollScheduler::take(Ring &ring, double now)
 
 std::optional<protocol::Request> PollScheduler::next(double now)
 {
+    // A watched drive's speed is read every other poll at least: the watch's reaction time
+    // does not depend on the plan's size or rate.
+    if (!m_lastWasWatch) {
+        if (std::optional<protocol::Request> r = nextWatch())
+            return r;
+    }
+    if (std::optional<protocol::Request> r = nextOfPlan(now)) {
+        m_lastWasWatch = false;
+        return r;
+    }
+    return nextWatch();
+}
+
+std::optional<protocol::Request> PollScheduler::nextOfPlan(double now)
+{
     if (othersTurn()) {
         if (std::optional<protocol::Request> r = take(m_others, now)) {
             m_sinceOthers = 0;
@@ -210,13 +265,17 @@ double PollScheduler::dueTime(const Ring &ring, double now) const
 
 double PollScheduler::nextDueTime(double now) const
 {
+    for (const Slot &s : m_watch.entries) {
+        if (!s.outstanding)
+            return now;
+    }
     const double main = dueTime(m_main, now);
     return othersTurn() ? std::min(main, dueTime(m_others, now)) : main;
 }
 
 void PollScheduler::completed(int id, Command command)
 {
-    for (Ring *ring : {&m_main, &m_others}) {
+    for (Ring *ring : {&m_main, &m_others, &m_watch}) {
         for (Slot &s : ring->entries) {
             if (s.id == id && s.command == command)
                 s.outstanding = false;
@@ -227,7 +286,7 @@ void PollScheduler::completed(int id, Command command)
 int PollScheduler::outstanding() const
 {
     int n = 0;
-    for (const Ring *ring : {&m_main, &m_others}) {
+    for (const Ring *ring : {&m_main, &m_others, &m_watch}) {
         for (const Slot &s : ring->entries)
             n += s.outstanding ? 1 : 0;
     }

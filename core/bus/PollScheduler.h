@@ -20,6 +20,9 @@ namespace lk::bus {
 /// A plan with a focus runs two round robins: the focus drive's, back to back, and the other
 /// drives' (rate-limited as before), one of whose polls follows every focusOthersEvery focus
 /// polls. A drive's extra commands follow its `commands` in its round.
+/// Besides the plan, the drives the speed watch names (setWatched) have their read_state2 due
+/// at all times: one watch poll, then one of the plan's when one is due, and watch polls back
+/// to back while none is, whatever the plan's rate (docs/SUPERVISION.md).
 class PollScheduler {
 public:
     /// Series of an ID, to skip commands the series does not answer (0x9D on MS).
@@ -29,9 +32,18 @@ public:
     /// Replace the plan; non-read commands and IDs outside 1..32 are dropped, and so are the
     /// extra commands of an ID that its `commands` poll already.
     void setPlan(const PollPlan &plan, double now);
-    void clear();
-    bool isActive() const;
+    void clear();          ///< forgets the plan; the watched drives stay
+    bool isActive() const; ///< a plan with something to poll
     const PollPlan &plan() const { return m_plan; }
+    /// The drives whose speed the speed watch reads as often as the bus allows (SpeedWatch):
+    /// read_state2 of each, in turn, independent of the plan (set, cleared or rate-limited).
+    void setWatched(const QVector<int> &ids);
+    QVector<int> watched() const;
+    bool hasWork() const { return isActive() || !m_watch.entries.isEmpty(); }
+    /// The next watch poll only (the plan is held, e.g. while its link is suspended).
+    std::optional<protocol::Request> nextWatch();
+    /// The poll last handed out was a watch poll (it belongs to no round of the plan).
+    bool lastWasWatch() const { return m_lastWasWatch; }
 
     /// The poll to send now, or nullopt (nothing due, or everything outstanding).
     std::optional<protocol::Request> next(double now);
@@ -84,6 +96,7 @@ private:
     bool othersTurn() const;
     double dueTime(const Ring &ring, double now) const;
     std::optional<protocol::Request> take(Ring &ring, double now);
+    std::optional<protocol::Request> nextOfPlan(double now);
     /// The commands of one repeating stretch of polls and how many focus (or plain) rounds
     /// it holds: what the bus limit is computed from.
     QVector<protocol::Command> pollMix(int *rounds) const;
@@ -92,8 +105,10 @@ private:
     SeriesLookup m_series;
     Ring m_main;
     Ring m_others;
-    int m_sinceOthers = 0; ///< focus polls handed out since the last poll of another drive
-    quint64 m_rounds = 0;  ///< round numbers given out so far
+    Ring m_watch;                ///< read_state2 of each watched drive; no rounds, no rate
+    bool m_lastWasWatch = false; ///< watch and plan polls alternate
+    int m_sinceOthers = 0;       ///< focus polls handed out since the last poll of another drive
+    quint64 m_rounds = 0;        ///< round numbers given out so far
     Round m_current;
 };
 

@@ -19,6 +19,7 @@ enum class SetpointStopReason {
     Disconnected,  ///< the link went away (or was not open at the start)
     Closed,        ///< the session closed
     BusChanged,    ///< the port was reopened at another baud
+    SpeedLimit,    ///< the speed watch stopped its drive past the soft speed limit (SpeedWatch)
 };
 
 /// How a setpoint stream ended: the reason, what it sent, and for a refusal the typed

@@ -53,6 +53,10 @@
         <source>setpoint stream stopped</source>
         <translation>设定值流已停止</translation>
     </message>
+    <message>
+        <source>cancelled: drive %1 went past its speed limit</source>
+        <translation>已取消：驱动器 %1 超过了速度限制</translation>
+    </message>
 </context>
 <context>
     <name>lk::bus::MotorRegistry</name>
@@ -1759,6 +1763,104 @@
         <source>off</source>
         <translation>关</translation>
     </message>
+    <message>
+        <source>Shown red from %1 °C</source>
+        <translation>自 %1 °C 起显示为红色</translation>
+    </message>
+    <message>
+        <source>Shown red outside %1</source>
+        <translation>超出 %1 时显示为红色</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::DriveFaultWatch</name>
+    <message>
+        <source>fault flags %1</source>
+        <translation>故障标志 %1</translation>
+    </message>
+    <message>
+        <source>fault flags clear</source>
+        <translation>故障标志已清除</translation>
+    </message>
+    <message>
+        <source>supply %1 outside the series&apos; range (%2)</source>
+        <translation>供电 %1 超出该系列的范围（%2）</translation>
+    </message>
+    <message>
+        <source>supply back in range (%1)</source>
+        <translation>供电已回到范围内（%1）</translation>
+    </message>
+    <message>
+        <source>stopped by itself: %1</source>
+        <translation>自行停止：%1</translation>
+    </message>
+    <message>
+        <source>Drive %1 stopped by itself at %2: %3. It no longer follows %4.</source>
+        <translation>驱动器 %1 于 %2 自行停止：%3。它不再执行 %4。</translation>
+    </message>
+    <message>
+        <source>it reads motor off</source>
+        <translation>读数显示电机已关闭</translation>
+    </message>
+    <message>
+        <source>it reads 0 dps under a speed command</source>
+        <translation>在速度指令下读数为 0 dps</translation>
+    </message>
+    <message>
+        <source>it reads no current under a torque command</source>
+        <translation>在转矩指令下读数无电流</translation>
+    </message>
+    <message>
+        <source>it reads no power under an open-loop command</source>
+        <translation>在开环指令下读数无功率</translation>
+    </message>
+    <message>
+        <source>stopped by itself: %1 (last command %2)</source>
+        <translation>自行停止：%1（最后指令 %2）</translation>
+    </message>
+    <message>
+        <source>values in range</source>
+        <translation>数值在范围内</translation>
+    </message>
+    <message>
+        <source>Drive %1: %2.</source>
+        <translation>驱动器 %1：%2。</translation>
+    </message>
+    <message>
+        <source>Seen:</source>
+        <translation>记录：</translation>
+    </message>
+    <message>
+        <source>temperature %1 °C (hot from %2 °C)</source>
+        <translation>温度 %1 °C（%2 °C 起为过热）</translation>
+    </message>
+    <message>
+        <source>temperature back below %1 °C (%2 °C)</source>
+        <translation>温度已回落到 %1 °C 以下（%2 °C）</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::DriveHealth</name>
+    <message>
+        <source>%1: %2-%3 V</source>
+        <translation>%1：%2-%3 V</translation>
+    </message>
+    <message>
+        <source>fault flags %1 (0x%2)</source>
+        <translation>故障标志 %1（0x%2）</translation>
+    </message>
+    <message>
+        <source>supply %1, below the series&apos; range (%2)</source>
+        <translation>供电 %1，低于该系列的范围（%2）</translation>
+    </message>
+    <message>
+        <source>supply %1, above the series&apos; range (%2)</source>
+        <translation>供电 %1，高于该系列的范围（%2）</translation>
+    </message>
+    <message>
+        <source>temperature %1 (hot from %2 °C)</source>
+        <translation>温度 %1（%2 °C 起为过热）</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::DriveInfoView</name>
@@ -2237,6 +2339,10 @@
     <message>
         <source>It was sent, so drive %1 may have acted on it and may be moving: check it, or stop it.</source>
         <translation>该命令已发送，驱动器 %1 可能已执行并可能正在运动：请检查或停止它。</translation>
+    </message>
+    <message>
+        <source>Stopped: the drive went past its speed limit; the speed watch sent Motor Stop.</source>
+        <translation>已停止：驱动器超过了速度限制；速度监视已发送电机停止。</translation>
     </message>
 </context>
 <context>
@@ -2853,6 +2959,101 @@
     <message>
         <source>The new language takes effect after a restart of LK Servo Studio.</source>
         <translation>新的语言将在重新启动 LK Servo Studio 后生效。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::LeaveGuard</name>
+    <message>
+        <source>Left running at the user&apos;s choice: %1.</source>
+        <translation>按用户选择保持运行：%1。</translation>
+    </message>
+    <message>
+        <source>Not stopped, the bus is not connected: %1 may still be moving.</source>
+        <translation>未停止，总线未连接：%1 可能仍在运动。</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>退出</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>断开</translation>
+    </message>
+    <message>
+        <source>Drive %1 may still be moving</source>
+        <translation>驱动器 %1 可能仍在运动</translation>
+    </message>
+    <message>
+        <source>Drives %1 may still be moving</source>
+        <translation>驱动器 %1 可能仍在运动</translation>
+    </message>
+    <message>
+        <source>%1 and the bus is not connected: quit anyway?</source>
+        <translation>%1，且总线未连接：仍要退出吗？</translation>
+    </message>
+    <message>
+        <source>%1 and the bus is not connected: disconnect anyway?</source>
+        <translation>%1，且总线未连接：仍要断开吗？</translation>
+    </message>
+    <message>
+        <source>Commanded to move: %1. Nothing can be sent to stop them now; they keep their last command until their input-timeout protection (if set) stops them.</source>
+        <translation>已下达运动指令：%1。现在无法发送任何指令使其停止；它们会保持最后的指令，直到其输入超时保护（如已设置）使其停止。</translation>
+    </message>
+    <message>
+        <source>Quit anyway</source>
+        <translation>仍然退出</translation>
+    </message>
+    <message>
+        <source>Disconnect anyway</source>
+        <translation>仍然断开</translation>
+    </message>
+    <message>
+        <source>Stop drive %1 before quitting?</source>
+        <translation>退出前停止驱动器 %1 吗？</translation>
+    </message>
+    <message>
+        <source>Stop drives %1 before quitting?</source>
+        <translation>退出前停止驱动器 %1 吗？</translation>
+    </message>
+    <message>
+        <source>Stop drive %1 before disconnecting?</source>
+        <translation>断开前停止驱动器 %1 吗？</translation>
+    </message>
+    <message>
+        <source>Stop drives %1 before disconnecting?</source>
+        <translation>断开前停止驱动器 %1 吗？</translation>
+    </message>
+    <message>
+        <source>Commanded to move on this connection: %1. Left running, they keep their last command after lkstudio has let go of the bus; they stop by themselves only if their input-timeout protection is set.</source>
+        <translation>本次连接中已下达运动指令：%1。若保持运行，lkstudio 释放总线后它们会保持最后的指令；只有设置了输入超时保护，它们才会自行停止。</translation>
+    </message>
+    <message>
+        <source>Stop and quit</source>
+        <translation>停止并退出</translation>
+    </message>
+    <message>
+        <source>Stop and disconnect</source>
+        <translation>停止并断开</translation>
+    </message>
+    <message>
+        <source>Leave running</source>
+        <translation>保持运行</translation>
+    </message>
+    <message>
+        <source>The demo&apos;s simulated drives were stopped.</source>
+        <translation>演示中的模拟驱动器已停止。</translation>
+    </message>
+    <message>
+        <source>Motor Off (0x80) acknowledged by drive %1.</source>
+        <translation>驱动器 %1 已确认电机关闭（0x80）。</translation>
+    </message>
+    <message>
+        <source>Motor Off (0x80) acknowledged by drives %1.</source>
+        <translation>驱动器 %1 已确认电机关闭（0x80）。</translation>
+    </message>
+    <message>
+        <source>%1 did not acknowledge Motor Off: it may still be moving.</source>
+        <translation>%1 未确认电机关闭：它可能仍在运动。</translation>
     </message>
 </context>
 <context>
@@ -3817,6 +4018,97 @@
     <message>
         <source>The series is unknown: torque and open loop stay refused until a scan; the default speed limit is %1 dps, the slowest series&apos; top speed.</source>
         <translation>系列未知：扫描前转矩和开环控制保持拒绝；默认速度限值为 %1 dps，即最慢系列的最高速度。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::SpeedWatchReport</name>
+    <message>
+        <source>open loop (0xA0)</source>
+        <translation>开环（0xA0）</translation>
+    </message>
+    <message>
+        <source>torque (0xA1)</source>
+        <translation>转矩（0xA1）</translation>
+    </message>
+    <message>
+        <source>your speed limit %1 dps</source>
+        <translation>您的速度限制 %1 dps</translation>
+    </message>
+    <message>
+        <source>the series&apos; top speed %1 dps (no soft limit given)</source>
+        <translation>该系列的最高速度 %1 dps（未设置软限制）</translation>
+    </message>
+    <message>
+        <source>Drive %1 reached %2 dps under %3, past %4 (stopped above %5 dps).</source>
+        <translation>驱动器 %1 在%3下达到 %2 dps，超过了%4（高于 %5 dps 即停止）。</translation>
+    </message>
+    <message>
+        <source>Motor Stop (0x81) sent and acknowledged %1 ms after that reading; the drive coasts to a stop.</source>
+        <translation>该读数后 %1 ms 已发送并确认电机停止（0x81）；驱动器将惯性滑行至停止。</translation>
+    </message>
+    <message>
+        <source>Motor Stop (0x81) sent but not acknowledged (%1): the drive may still be turning; the watch stops it again while it reads too fast. Press Esc to stop every drive.</source>
+        <translation>已发送电机停止（0x81）但未确认（%1）：驱动器可能仍在转动；只要读数过快，监视会再次停止它。按 Esc 停止所有驱动器。</translation>
+    </message>
+    <message>
+        <source>Stopped by the speed watch at %1: %2</source>
+        <translation>已于 %1 被速度监视停止：%2</translation>
+    </message>
+    <message>
+        <source>Speed watch:</source>
+        <translation>速度监视：</translation>
+    </message>
+    <message>
+        <source>Read the drive&apos;s own Max Speed (ParamID 0x9A) and set it to %1 dps (RAM)</source>
+        <translation>读取驱动器自身的最大速度（ParamID 0x9A）并设为 %1 dps（RAM）</translation>
+    </message>
+    <message>
+        <source>Reading the drive&apos;s Max Speed…</source>
+        <translation>正在读取驱动器的最大速度…</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s Max Speed could not be read (%1): nothing was written.</source>
+        <translation>无法读取驱动器的最大速度（%1）：未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>unexpected reply</source>
+        <translation>意外的应答</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s own Max Speed is %1 dps, not above your limit: nothing was written.</source>
+        <translation>驱动器自身的最大速度为 %1 dps，不高于您的限制：未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>The drive&apos;s Max Speed read %1 dps.</source>
+        <translation>驱动器的最大速度读数为 %1 dps。</translation>
+    </message>
+    <message>
+        <source>Writing…</source>
+        <translation>正在写入…</translation>
+    </message>
+    <message>
+        <source>the drive refused the write</source>
+        <translation>驱动器拒绝了写入</translation>
+    </message>
+    <message>
+        <source>no confirmation (%1)</source>
+        <translation>无确认（%1）</translation>
+    </message>
+    <message>
+        <source>Max Speed not confirmed: %1; nothing was verified.</source>
+        <translation>最大速度未确认：%1；未验证任何内容。</translation>
+    </message>
+    <message>
+        <source>Max Speed written (the drive confirmed the RAM write), but the read-back got no answer: not verified.</source>
+        <translation>最大速度已写入（驱动器确认了 RAM 写入），但回读无应答：未验证。</translation>
+    </message>
+    <message>
+        <source>Max Speed set: the drive reads back %1 dps (RAM: until it is powered off). It bounds the drive&apos;s speed and position commands; whether it also bounds torque and open loop is not documented, so the speed watch stays on.</source>
+        <translation>最大速度已设置：驱动器回读为 %1 dps（RAM：断电前有效）。它限制驱动器的速度和位置指令；文档未说明它是否也限制转矩和开环，因此速度监视保持开启。</translation>
+    </message>
+    <message>
+        <source>Max Speed written, but the drive reads back %1 dps instead of %2 dps.</source>
+        <translation>最大速度已写入，但驱动器回读为 %1 dps，而非 %2 dps。</translation>
     </message>
 </context>
 <context>

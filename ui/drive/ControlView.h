@@ -84,6 +84,15 @@ public:
     /// lkstudio's emergency stop (button or Esc) should call it before stopping the bus, so
     /// that no setpoint can follow the emergency motor_off.
     void haltLocalMotion(const QString &reason);
+    /// Drive `id` stopped without this view stopping it (a fault trip, the speed watch): the
+    /// status says `why` instead of the command last sent; its generator and jog halt.
+    void showDriveStopped(int id, const QString &why)
+    {
+        if (id == driveId()) { // (here: ControlView.cpp is at its 600 lines)
+            haltLocalMotion(why);
+            setStatus(why, true);
+        }
+    }
 
     ControlModePanel *modePanel() const { return m_modes; }
     JogPanel *jogPanel() const { return m_jog; }

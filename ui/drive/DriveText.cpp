@@ -66,6 +66,8 @@ QString DriveText::stopReason(bus::SetpointStopReason reason)
         return tr("Stopped: the bus was closed.");
     case Reason::BusChanged:
         return tr("Stopped: the port was reopened at another baud.");
+    case Reason::SpeedLimit:
+        return tr("Stopped: the drive went past its speed limit; the speed watch sent Motor Stop.");
     }
     return QString();
 }

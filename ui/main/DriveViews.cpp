@@ -2,6 +2,7 @@
 
 #include "BusController.h"
 #include "SettingsFile.h"
+#include "SoftLimitsFeed.h"
 
 #include <bus/BusSession.h>
 #include <drive/ControlView.h>
@@ -19,7 +20,9 @@ namespace lk::ui {
 DriveViews::DriveViews(BusModel *model, BusController *controller, TelemetryStore *store,
                        SettingsFile &settingsFile, QWidget *parentWidget)
     : QObject(parentWidget), m_model(model), m_controller(controller),
-      m_settings(std::make_unique<IniDriveStore>(settingsFile.settings())),
+      // The soft limits the views apply also bound the bus thread's speed watch.
+      m_settings(std::make_unique<SoftLimitsFeed>(
+          std::make_unique<IniDriveStore>(settingsFile.settings()), controller->session())),
       m_resolutions(new EncoderResolutions(this)), m_tuning(new TuningView(parentWidget)),
       m_control(new ControlView(parentWidget)), m_encoder(new EncoderView(parentWidget)),
       m_info(new DriveInfoView(parentWidget))

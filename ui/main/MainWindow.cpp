@@ -3,11 +3,14 @@
 #include "AppSettings.h"
 #include "BusController.h"
 #include "CommandedMotion.h"
+#include "DriveFaultWatch.h"
 #include "DriveViews.h"
 #include "EmergencyStopControl.h"
 #include "HelpMenu.h"
 #include "LanguageMenu.h"
+#include "LeaveGuard.h"
 #include "LinkLossWatch.h"
+#include "SpeedWatchReport.h"
 
 #include <drive/ControlView.h>
 #include <drive/DriveInfoView.h>
@@ -136,6 +139,22 @@ void MainWindow::buildSafety()
     m_linkLoss = new LinkLossWatch(m_model, m_motion, m_banner, this);
     connect(m_controller->session(), &bus::BusSession::telemetryReceived, m_linkLoss,
             &LinkLossWatch::onTelemetry);
+    m_leaveGuard = new LeaveGuard(m_controller, m_motion, this, this);
+    connect(m_leaveGuard, &LeaveGuard::stopReported, this, [this](const QString &text, bool all) {
+        m_banner->showMessage(all ? MessageBanner::Level::Info : MessageBanner::Level::Warning,
+                              text);
+    });
+    // A new command after a logout was decided (and then cancelled) asks again at the end.
+    connect(m_motion, &CommandedMotion::changed, this, [this] { m_askBeforeClose = true; });
+    m_speedWatch = new SpeedWatchReport(m_controller->session(), m_model, m_banner, this);
+    connect(m_speedWatch, &SpeedWatchReport::driveStopped, m_driveViews->control(),
+            &ControlView::showDriveStopped);
+    // After BusModel has merged the batch (BusController connected it first).
+    m_faultWatch = new DriveFaultWatch(m_model, m_motion, m_banner, this);
+    connect(m_controller->session(), &bus::BusSession::telemetryReceived, m_faultWatch,
+            &DriveFaultWatch::onTelemetry);
+    connect(m_faultWatch, &DriveFaultWatch::driveStopped, m_driveViews->control(),
+            &ControlView::showDriveStopped);
     connect(m_model, &BusModel::connectionChanged, this, [this] {
         if (!m_model->connection().isOpen())
             m_store->breakLines(); // the plots never draw a line across the outage
@@ -172,7 +191,7 @@ void MainWindow::buildMenus()
     busMenu->addAction(ThemedIcon::get(QStringLiteral(":/icons/scan.svg")), tr("&Scan"),
                        QKeySequence(Qt::Key_F5), m_busPanel->scanControls(),
                        &ScanControls::startScan);
-    busMenu->addAction(tr("&Disconnect"), m_controller, &BusController::disconnectBus);
+    busMenu->addAction(tr("&Disconnect"), this, &MainWindow::disconnectBus);
     busMenu->addSeparator();
     busMenu->addAction(ThemedIcon::get(QStringLiteral(":/icons/stop.svg")),
                        tr("&Emergency stop (Esc)"), m_estop, &EmergencyStopControl::stop);
@@ -197,7 +216,7 @@ void MainWindow::wirePanels()
     auto *scan = m_busPanel->scanControls();
     connect(bar, &ConnectionBar::connectRequested, this,
             [this](const ConnectionChoice &c) { connectTo(c); });
-    connect(bar, &ConnectionBar::disconnectRequested, m_controller, &BusController::disconnectBus);
+    connect(bar, &ConnectionBar::disconnectRequested, this, &MainWindow::disconnectBus);
     connect(bar, &ConnectionBar::portsChanged, m_controller, &BusController::onPortsChanged);
     connect(m_controller->session(), &bus::BusSession::errorOccurred, bar,
             &ConnectionBar::showPortError);
@@ -299,6 +318,10 @@ QStringList MainWindow::viewNames() const
 
 void MainWindow::connectTo(const ConnectionChoice &choice, bool remember)
 {
+    // Another bus replaces this one: what was set moving here is stopped first.
+    if (m_controller->session()->isRunning() &&
+        !m_leaveGuard->prepare(LeaveGuard::Leaving::Disconnect))
+        return;
     m_banner->clearMessage();
     {
         // Showing the choice must not store it (setChoice toggles widgets that report).
@@ -314,6 +337,28 @@ void MainWindow::connectTo(const ConnectionChoice &choice, bool remember)
 void MainWindow::emergencyStop()
 {
     m_estop->stop();
+}
+
+void MainWindow::disconnectBus()
+{
+    if (m_leaveGuard->prepare(LeaveGuard::Leaving::Disconnect))
+        m_controller->disconnectBus();
+}
+
+void MainWindow::closeWithoutAsking()
+{
+    if (m_askBeforeClose && !m_leaveGuard->prepare(LeaveGuard::Leaving::Signal))
+        return; // never: a signal does not ask
+    m_askBeforeClose = false;
+    close();
+}
+
+bool MainWindow::prepareLogout(bool mayAsk)
+{
+    if (!m_leaveGuard->prepare(mayAsk ? LeaveGuard::Leaving::Quit : LeaveGuard::Leaving::Signal))
+        return false;
+    m_askBeforeClose = false; // the window closes next: decided already
+    return true;
 }
 
 void MainWindow::restoreSettings()
@@ -358,6 +403,10 @@ void MainWindow::showEvent(QShowEvent *event)
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
+    if (m_askBeforeClose && !m_leaveGuard->prepare(LeaveGuard::Leaving::Quit)) {
+        event->ignore();
+        return;
+    }
     saveSettings();
     m_controller->disconnectBus();
     event->accept();

@@ -14,12 +14,15 @@ class BusPanel;
 class CommandedMotion;
 class ConnectionBar;
 class DashboardPanel;
+class DriveFaultWatch;
 class EmergencyStopButton;
 class EmergencyStopControl;
+class LeaveGuard;
 class LinkLossWatch;
 class MessageBanner;
 class OverviewPanel;
 class PlotPanel;
+class SpeedWatchReport;
 class StatusSummary;
 class TelemetryStore;
 class TrafficPanel;
@@ -65,11 +68,23 @@ public:
     EmergencyStopControl *emergencyStopControl() const { return m_estop; }
     CommandedMotion *commandedMotion() const { return m_motion; }
     LinkLossWatch *linkLossWatch() const { return m_linkLoss; }
+    SpeedWatchReport *speedWatchReport() const { return m_speedWatch; }
+    LeaveGuard *leaveGuard() const { return m_leaveGuard; }
+    DriveFaultWatch *faultWatch() const { return m_faultWatch; }
     QTabWidget *views() const { return m_views; }
 
 public slots:
     /// The application's one emergency stop (EmergencyStopControl::stop): Esc, button, menu.
     void emergencyStop();
+    /// Disconnect the bus (the connection bar, the Bus menu); drives commanded to move are
+    /// stopped first, or left running at the user's choice (LeaveGuard).
+    void disconnectBus();
+    /// Close for a termination signal (SIGTERM, SIGINT): drives commanded to move are stopped
+    /// without asking.
+    void closeWithoutAsking();
+    /// A logout is coming (QGuiApplication::commitDataRequest): asks as a quit does when
+    /// `mayAsk`, else stops without asking. False: the user wants to stay (cancel it).
+    bool prepareLogout(bool mayAsk);
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -104,6 +119,10 @@ private:
     CommandedMotion *m_motion = nullptr;
     EmergencyStopControl *m_estop = nullptr;
     LinkLossWatch *m_linkLoss = nullptr;
+    SpeedWatchReport *m_speedWatch = nullptr;
+    LeaveGuard *m_leaveGuard = nullptr;
+    DriveFaultWatch *m_faultWatch = nullptr;
+    bool m_askBeforeClose = true; ///< false: a signal or a logout already decided
     bool m_stateRestored = false; ///< a saved layout was applied (else size the dock once)
     bool m_firstShow = true;
 };

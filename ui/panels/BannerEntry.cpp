@@ -25,7 +25,10 @@ BannerEntry::BannerEntry(QWidget *parent) : QFrame(parent)
     m_label = new QLabel(this);
     m_label->setObjectName(QStringLiteral("messageText"));
     m_label->setWordWrap(true);
-    m_label->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // Entries may offer an action as a link (the speed watch's "set the drive's Max Speed").
+    m_label->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::LinksAccessibleByMouse |
+                                     Qt::LinksAccessibleByKeyboard);
+    connect(m_label, &QLabel::linkActivated, this, &BannerEntry::linkActivated);
     m_close = new QToolButton(this);
     m_close->setObjectName(QStringLiteral("messageClose"));
     m_close->setAutoRaise(true);

@@ -29,6 +29,8 @@ public:
 
 signals:
     void closeClicked();
+    /// A link in the text was clicked (its href): the entry's owner acts on it.
+    void linkActivated(const QString &link);
 
 private:
     QLabel *m_icon = nullptr;

@@ -1,6 +1,7 @@
 #include "DashboardPanel.h"
 
 #include "BusModel.h"
+#include "DriveHealth.h"
 #include "Format.h"
 #include "Readout.h"
 #include "StatisticsView.h"
@@ -26,7 +27,6 @@ namespace lk::ui {
 
 namespace {
 constexpr int kRefreshMs = 50;           // 20 Hz: smooth for numbers, cheap for the GUI
-constexpr int kHotTemperatureC = 80;     // shown red from here; drives protect themselves later
 constexpr double kRpmPerDps = 1.0 / 6.0; // 1 rpm = 6 deg/s
 const char kDegree[] = "\u00b0";
 using F = bus::TelemetryField;
@@ -222,13 +222,18 @@ void DashboardPanel::updateElectrical(const DriveRecord &d, qint64 now)
                        ? Format::withUnit(v.temperatureC, 0, QStringLiteral("\u00b0C"))
                        : QString(),
                    d.isStale(F::Temperature, now));
-    temp->setAlarm(v.temperatureC >= kHotTemperatureC);
+    const DriveHealth health = DriveHealth::of(d);
+    temp->setAlarm(health.hot);
+    temp->setToolTip(tr("Shown red from %1 °C").arg(DriveHealth::kHotTemperatureC));
     const bool v235 = d.generation() == protocol::Generation::V2_35;
-    readout(QStringLiteral("voltage"))
-        ->setValue(d.has(F::Voltage)
-                       ? Format::withUnit(v.voltageV, v235 ? 2 : 1, QStringLiteral("V"))
-                       : QString(),
-                   d.isStale(F::Voltage, now));
+    auto *voltage = readout(QStringLiteral("voltage"));
+    voltage->setValue(d.has(F::Voltage)
+                          ? Format::withUnit(v.voltageV, v235 ? 2 : 1, QStringLiteral("V"))
+                          : QString(),
+                      d.isStale(F::Voltage, now));
+    voltage->setAlarm(health.voltageOut());
+    const std::optional<QString> range = DriveHealth::supplyRangeText(d);
+    voltage->setToolTip(range ? tr("Shown red outside %1").arg(*range) : QString());
     updateV235State(d, now);
     auto *torque = readout(QStringLiteral("torque"));
     if (d.reportsPower())

@@ -95,6 +95,8 @@ void MessageBanner::setEntry(const QString &key, Level level, const QString &htm
             clearEntry(key);
             emit entryDismissed(key);
         });
+        connect(entry, &BannerEntry::linkActivated, this,
+                [this, key](const QString &link) { emit entryLinkActivated(key, link); });
     }
     entry->setLevel(entryLevelOf(level));
     entry->setText(html, Qt::RichText);

@@ -47,6 +47,8 @@ public:
 signals:
     /// The user closed the entry `key` (acknowledged it).
     void entryDismissed(const QString &key);
+    /// The user clicked a link (`<a href="link">`) in the entry `key`: its owner acts.
+    void entryLinkActivated(const QString &key, const QString &link);
 
 protected:
     void changeEvent(QEvent *event) override;

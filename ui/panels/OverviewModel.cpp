@@ -1,6 +1,7 @@
 #include "OverviewModel.h"
 
 #include "BusModel.h"
+#include "DriveHealth.h"
 #include "Format.h"
 #include "StatusColors.h"
 
@@ -108,6 +109,12 @@ QVariant OverviewModel::headerData(int section, Qt::Orientation orientation, int
     }
 }
 
+bool OverviewModel::outOfRange(const DriveRecord &d, int column)
+{
+    const DriveHealth h = DriveHealth::of(d);
+    return (column == Temperature && h.hot) || (column == Voltage && h.voltageOut());
+}
+
 bool OverviewModel::isStale(int id, int column) const
 {
     const DriveRecord *d = m_model->drive(id);
@@ -136,7 +143,7 @@ QVariant OverviewModel::data(const QModelIndex &index, int role) const
         return bad ? QVariant(QBrush(StatusColors::background(StatusColors::Role::Error)))
                    : QVariant();
     case Qt::ForegroundRole:
-        if (bad)
+        if (bad || outOfRange(*d, index.column()))
             return QBrush(StatusColors::text(StatusColors::Role::Error));
         return isStale(id, index.column())
                    ? QVariant(QBrush(StatusColors::text(StatusColors::Role::Muted)))
@@ -146,7 +153,11 @@ QVariant OverviewModel::data(const QModelIndex &index, int role) const
             return QIcon(QStringLiteral(":/icons/error.svg"));
         return {};
     case Qt::ToolTipRole:
-        return index.column() == Model ? QVariant(d->modelText()) : QVariant();
+        if (index.column() == Model)
+            return d->modelText();
+        if (outOfRange(*d, index.column()))
+            return DriveHealth::of(*d).problems(*d).join(QStringLiteral("; "));
+        return {};
     case Qt::UserRole:
         return id;
     default:
@@ -176,8 +187,12 @@ QVariant OverviewModel::display(int id, int column) const
         if (stats.requests > 0 && stats.replies == 0)
             return tr("silent");
         return isStale(id, Temperature) ? tr("stale") : tr("live");
-    case Voltage:
-        return d.has(F::Voltage) ? Format::withUnit(v.voltageV, 1, QStringLiteral("V")) : QString();
+    case Voltage: // V2.35 reports 0.01 V: shown as the dashboard does
+        return d.has(F::Voltage)
+                   ? Format::withUnit(v.voltageV,
+                                      d.generation() == protocol::Generation::V2_35 ? 2 : 1,
+                                      QStringLiteral("V"))
+                   : QString();
     case Temperature:
         return d.has(F::Temperature)
                    ? Format::withUnit(v.temperatureC, 0, QStringLiteral("\u00b0C"))

@@ -6,6 +6,7 @@
 namespace lk::ui {
 
 class BusModel;
+struct DriveRecord;
 
 /// One row per drive on the bus with its key values, flags and link figures (the overview
 /// a field engineer reads at a glance). Reads BusModel; refresh() repaints the values.
@@ -48,6 +49,8 @@ public slots:
 
 private:
     QVariant display(int id, int column) const;
+    /// The cell shows a temperature or voltage outside its range (DriveHealth).
+    static bool outOfRange(const DriveRecord &d, int column);
     bool isStale(int id, int column) const;
 
     BusModel *m_model;

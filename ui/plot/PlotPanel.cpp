@@ -13,6 +13,7 @@
 #include <QtGui/QActionGroup>
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
+#include <QtWidgets/QGridLayout>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QMenu>
 #include <QtWidgets/QMessageBox>
@@ -127,14 +128,20 @@ QWidget *PlotPanel::buildSignalRow()
     auto *layout = new QHBoxLayout(row);
     layout->setContentsMargins(4, 0, 4, 0);
     layout->addWidget(new QLabel(tr("Signals:"), row));
-    for (const TelemetryChannel channel : pickableChannels()) {
+    // Two rows of three: with temperature and voltage the signals fit a 1366-pixel screen.
+    auto *boxes = new QGridLayout;
+    boxes->setVerticalSpacing(0);
+    const QVector<TelemetryChannel> channels = pickableChannels();
+    for (int i = 0; i < channels.size(); ++i) {
+        const TelemetryChannel channel = channels.at(i);
         auto *box = new QCheckBox(channelPickerLabel(channel), row);
         box->setChecked(m_channels.contains(channel));
         connect(box, &QCheckBox::toggled, this,
                 [this, channel](bool on) { setChannelVisible(channel, on); });
         m_channelBoxes[channel] = box;
-        layout->addWidget(box);
+        boxes->addWidget(box, i / 3, i % 3);
     }
+    layout->addLayout(boxes);
     layout->addStretch(1);
     m_pollRate = new PollRateControl(row);
     connect(m_pollRate, &PollRateControl::pollRateRequested, this, &PlotPanel::pollRateRequested);
@@ -144,8 +151,8 @@ QWidget *PlotPanel::buildSignalRow()
 
 QVector<TelemetryChannel> PlotPanel::pickableChannels()
 {
-    return {TelemetryChannel::Torque, TelemetryChannel::Speed, TelemetryChannel::Encoder,
-            TelemetryChannel::MultiTurn};
+    return {TelemetryChannel::Torque,    TelemetryChannel::Speed,       TelemetryChannel::Encoder,
+            TelemetryChannel::MultiTurn, TelemetryChannel::Temperature, TelemetryChannel::Voltage};
 }
 
 void PlotPanel::setDrives(const QVector<int> &ids)

@@ -1,10 +1,16 @@
 // lkstudio's demo motion on the built-in bus: a first run shows moving drives as soon as the
 // scan has found them, and the demo gives the drives back as soon as the user commands one.
+// Quitting or disconnecting while it runs stops its drives without asking (LeaveHooks).
 
 #include "MainWindowFixture.h"
 
 #include <DemoMotion.h>
+#include <LeaveHooks.h>
+#include <main/LeaveGuard.h>
 #include <main/StartupOptions.h>
+
+#include <QtWidgets/QAbstractButton>
+#include <QtWidgets/QMessageBox>
 
 using namespace lk::uitest;
 
@@ -29,6 +35,8 @@ private slots:
     void drivesMoveAsSoonAsTheyAreFound();
     void aCommandTakesOver();
     void emergencyStopEndsIt();
+    void leavingStopsTheDemoWithoutAsking_data();
+    void leavingStopsTheDemoWithoutAsking();
 };
 
 void tst_DemoMotion::startsOnItsOwnOnlyOnTheDefaultBus_data()
@@ -104,6 +112,49 @@ void tst_DemoMotion::emergencyStopEndsIt()
     QTest::keyClick(m_window->views(), Qt::Key_Escape);
     QTRY_COMPARE_WITH_TIMEOUT(stopped.count(), 1, kWaitMs);
     QTRY_VERIFY_WITH_TIMEOUT(allOff(), kWaitMs);
+}
+
+void tst_DemoMotion::leavingStopsTheDemoWithoutAsking_data()
+{
+    QTest::addColumn<bool>("quit"); // else disconnect
+    QTest::newRow("quit") << true;
+    QTest::newRow("disconnect") << false;
+}
+
+void tst_DemoMotion::leavingStopsTheDemoWithoutAsking()
+{
+    QFETCH(bool, quit);
+    DemoMotion demo(m_window->controller(), kNever);
+    LeaveHooks::followDemo(*m_window, demo);
+    demo.start();
+    QVERIFY(findAllDrives());
+    QTRY_VERIFY_WITH_TIMEOUT(inState(lk::sim::SimDrive::RunState::Running) == kSimIds.size(),
+                             kWaitMs);
+    QTRY_COMPARE_WITH_TIMEOUT(m_window->commandedMotion()->movingIds(), kSimIds, kWaitMs);
+    // A question would block in its own event loop: answer "Cancel" and remember it was asked.
+    bool asked = false;
+    QTimer answer;
+    connect(&answer, &QTimer::timeout, this, [&asked] {
+        if (auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget())) {
+            asked = true;
+            box->button(QMessageBox::Cancel)->click();
+        }
+    });
+    answer.start(20);
+    // The drives' states when the stop has been acknowledged, before the bus is let go of.
+    int offWhenReported = -1;
+    connect(m_window->leaveGuard(), &lk::ui::LeaveGuard::stopReported, this,
+            [&] { offWhenReported = inState(lk::sim::SimDrive::RunState::Off); });
+    if (quit)
+        QVERIFY(m_window->close());
+    else
+        m_window->disconnectBus();
+    QVERIFY(!asked);
+    QCOMPARE(offWhenReported, int(kSimIds.size())); // before close() or disconnectBus() returned
+    QVERIFY2(m_window->leaveGuard()->lastReport().contains(
+                 QStringLiteral("The demo's simulated drives were stopped.")),
+             qPrintable(m_window->leaveGuard()->lastReport()));
+    QVERIFY(!demo.isRunning());
 }
 
 QTEST_MAIN(tst_DemoMotion)

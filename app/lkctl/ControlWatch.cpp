@@ -1,0 +1,226 @@
+#include "ControlWatch.h"
+
+#include "ArgParser.h"
+#include "Console.h"
+#include "LiveBus.h"
+#include "OrderedJson.h"
+#include "Subcommand.h"
+
+#include <bus/SpeedWatch.h>
+#include <protocol/Command.h>
+#include <system/SignalWatcher.h>
+
+#include <QtCore/QElapsedTimer>
+
+#include <cmath>
+
+namespace lk::lkctl {
+
+using protocol::Command;
+
+namespace {
+QString dps(double v)
+{
+    return QString::number(v, 'f', 0);
+}
+
+QString modeName(const protocol::Request &r)
+{
+    return r.command == Command::OpenLoop ? QStringLiteral("open loop") : QStringLiteral("torque");
+}
+
+/// Why a watch ended.
+enum class End { Time, Signal, SpeedLimit, LinkLost };
+
+QString endName(End e)
+{
+    switch (e) {
+    case End::Time:
+        return QStringLiteral("time");
+    case End::Signal:
+        return QStringLiteral("signal");
+    case End::SpeedLimit:
+        return QStringLiteral("speed_limit");
+    case End::LinkLost:
+        return QStringLiteral("link_lost");
+    }
+    return {};
+}
+} // namespace
+
+void ControlWatch::declare(ArgParser &parser)
+{
+    parser.addOption(QStringLiteral("watch"), true);
+}
+
+QString ControlWatch::helpText()
+{
+    return QStringLiteral(
+        "  --watch SECONDS        torque and open-loop only (no drive bounds their speed):\n"
+        "                         stay for SECONDS (0.1..86400), reading the drive's speed\n"
+        "                         back to back (every 2-3 ms at 115200 baud), and send it\n"
+        "                         Motor Stop (motor_stop, 0x81) as soon as it turns faster\n"
+        "                         than the speed limit + 5 % (at least +30 dps; exit 6), at\n"
+        "                         the end of SECONDS and on Ctrl+C or SIGTERM. With --json a\n"
+        "                         second line: {\"watch\":{\"id\":3,\"watched_s\":2.5,\n"
+        "                         \"ended\":\"signal\",\"limit_dps\":720,...}}. Without it\n"
+        "                         the drive keeps the command, unwatched, once lkctl exits\n"
+        "                         (the output says so)\n");
+}
+
+QString ControlWatch::exitStatusLine()
+{
+    return QStringLiteral(
+        "  6  --watch: the drive turned faster than the speed limit and was stopped\n"
+        "     (Motor Stop acknowledged; exit 1 when it was not)\n");
+}
+
+std::optional<ControlWatch> ControlWatch::read(const ArgParser &parser, QString *error)
+{
+    ControlWatch w;
+    if (!parser.isSet(QStringLiteral("watch")))
+        return w;
+    const QString mode = parser.positionals().value(1);
+    if (mode != QStringLiteral("torque") && mode != QStringLiteral("open-loop")) {
+        *error = QStringLiteral("--watch goes with torque and open-loop only (the drive bounds "
+                                "the speed of the other modes itself)");
+        return std::nullopt;
+    }
+    const std::optional<double> seconds = parser.numberValue(QStringLiteral("watch"), 0.1, error);
+    if (!seconds)
+        return std::nullopt;
+    if (*seconds > kMaxSeconds) {
+        *error = QStringLiteral("--watch takes 0.1..%1 seconds").arg(kMaxSeconds);
+        return std::nullopt;
+    }
+    w.m_seconds = *seconds;
+    return w;
+}
+
+void ControlWatch::arm(LiveBus &bus, int id, const safety::SoftLimits &limits)
+{
+    m_limits = limits;
+    bus.session().setSoftLimits(id, limits);
+}
+
+int ControlWatch::follow(LiveBus &bus, const protocol::Request &request, bool json,
+                         int status) const
+{
+    if (!bus::SpeedWatch::drives(request))
+        return status;
+    if (m_seconds > 0 && (status == kExitOk || status == kExitFailure)) // it may have acted
+        return watch(bus, request, json, status);
+    if (status != kExitOk)
+        return status;
+    const QString note =
+        QStringLiteral("drive %1 stays under %2 after lkctl exits, and nothing watches its speed "
+                       "(a drive does not bound torque or open loop): stop it with 'lkctl stop "
+                       "%1', or give --watch SECONDS")
+            .arg(request.id)
+            .arg(modeName(request));
+    if (json)
+        bus.error(QStringLiteral("note: ") + note); // stdout stays one JSON line
+    else
+        bus.console().outLine(QStringLiteral("Note: ") + note + QLatin1Char('.'));
+    return status;
+}
+
+int ControlWatch::watch(LiveBus &bus, const protocol::Request &request, bool json, int status) const
+{
+    const int id = request.id;
+    const double limit = m_limits.maxSpeedDps;
+    const double threshold = bus::SpeedWatch::thresholdDps(limit);
+    // Before the first line: whoever reads "Watching" may press Ctrl+C at once.
+    int signalled = 0;
+    system::SignalWatcher terminations;
+    const auto c4 = QObject::connect(&terminations, &system::SignalWatcher::signalled,
+                                     [&signalled](int n) { signalled = n; });
+    if (!json)
+        bus.console().outLine(
+            QStringLiteral("Watching drive %1 for %2 s: Motor Stop above %3 dps (speed limit %4 "
+                           "dps + margin); Ctrl+C stops it now.")
+                .arg(id)
+                .arg(m_seconds)
+                .arg(dps(threshold), dps(limit)));
+    bus.console().flush(); // a script or a person reads it while the drive turns
+    std::optional<bus::SpeedWatchTrip> trip;
+    double peak = 0;
+    bool open = true;
+    bus::BusSession &session = bus.session();
+    const auto c1 = QObject::connect(&session, &bus::BusSession::speedWatchTripped,
+                                     [&trip, id](const bus::SpeedWatchTrip &t) {
+                                         if (t.id == id)
+                                             trip = t;
+                                     });
+    const auto c2 = QObject::connect(&session, &bus::BusSession::telemetryReceived,
+                                     [&peak, id](const bus::TelemetryBatch &batch) {
+                                         for (const bus::TelemetrySample &s : batch) {
+                                             if (s.id == id && s.has(bus::TelemetryField::Speed))
+                                                 peak = std::max(peak, std::abs(s.speedDps));
+                                         }
+                                     });
+    const auto c3 =
+        QObject::connect(&session, &bus::BusSession::connectionChanged,
+                         [&open](const bus::ConnectionStatus &s) { open = s.isOpen(); });
+    QElapsedTimer clock;
+    clock.start();
+    const qint64 totalMs = qint64(std::llround(m_seconds * 1e3));
+    const auto over = [&] { return trip || signalled || !open || clock.elapsed() >= totalMs; };
+    while (!over())
+        bus.waitUntil(over, int(std::min<qint64>(LiveBus::kMaxWaitMs, totalMs)));
+    for (const auto &c : {c1, c2, c3, c4})
+        QObject::disconnect(c);
+    const End end =
+        trip ? End::SpeedLimit : (!open ? End::LinkLost : (signalled ? End::Signal : End::Time));
+    // The watch's own stop has ended already; every other end stops the drive now.
+    const bool stopped = trip ? trip->stopAcknowledged() : (open && stop(bus, id));
+    const double seconds = clock.elapsed() / 1e3;
+    if (json) {
+        OrderedJson o;
+        o.integer(QStringLiteral("id"), id)
+            .real(QStringLiteral("watched_s"), std::round(seconds * 10) / 10)
+            .text(QStringLiteral("ended"), endName(end))
+            .real(QStringLiteral("limit_dps"), limit)
+            .real(QStringLiteral("threshold_dps"), threshold)
+            .real(QStringLiteral("peak_dps"),
+                  trip ? std::max(peak, std::abs(trip->speedDps)) : peak)
+            .boolean(QStringLiteral("stop_acknowledged"), stopped);
+        OrderedJson line;
+        line.raw(QStringLiteral("watch"), o.toJson());
+        bus.console().out(line.toJson() + '\n');
+    } else if (trip) {
+        bus.console().outLine(
+            QStringLiteral("Drive %1 reached %2 dps, past %3 dps (speed limit %4 dps): the speed "
+                           "watch sent Motor Stop (0x81) after %5 s, %6.")
+                .arg(id)
+                .arg(dps(trip->speedDps), dps(threshold), dps(limit))
+                .arg(seconds, 0, 'f', 1)
+                .arg(stopped ? QStringLiteral("acknowledged")
+                             : QStringLiteral("NOT acknowledged: it may still be turning")));
+    } else {
+        const QString why = end == End::Signal     ? QStringLiteral("Interrupted")
+                            : end == End::LinkLost ? QStringLiteral("The link went away")
+                                                   : QStringLiteral("Watch over");
+        bus.console().outLine(
+            QStringLiteral("%1 after %2 s (peak %3 dps): %4")
+                .arg(why)
+                .arg(seconds, 0, 'f', 1)
+                .arg(dps(peak))
+                .arg(!open ? QStringLiteral("nothing could be sent; drive %1 may still be turning")
+                                 .arg(id)
+                     : stopped ? QStringLiteral("drive %1 acknowledged Motor Stop (0x81).").arg(id)
+                               : QStringLiteral("drive %1 did NOT acknowledge Motor Stop "
+                                                "(0x81): it may still be turning.")
+                                     .arg(id)));
+    }
+    if (!stopped)
+        return kExitFailure;
+    return trip ? kExitWatchStopped : status;
+}
+
+bool ControlWatch::stop(LiveBus &bus, int id)
+{
+    return bus.request(Command::MotorStop, id, bus::Priority::Emergency).ok();
+}
+
+} // namespace lk::lkctl
