@@ -367,8 +367,8 @@ void tst_E2eSupervision::faultsAreToldShownAndStopTheControlView()
     QTRY_COMPARE_WITH_TIMEOUT(control()->driveId(), 1, kWaitMs);
     QVERIFY2(m_clock.elapsed() < (kFaultAtS - 2) * 1000, "connecting took too long for the test");
     QVERIFY(control()->sendMotion(protocol::build::torque(1, 0.05, {Series::MF})).sent);
-    QTRY_VERIFY_WITH_TIMEOUT(control()->statusText().contains(QStringLiteral("Sent torque")),
-                             kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        control()->statusText().contains(QStringLiteral("Sent Torque current")), kWaitMs);
     const QString key1 = ui::DriveFaultWatch::entryKey(1);
     QTRY_VERIFY_WITH_TIMEOUT(m_window->banner()->hasEntry(key1), kWaitMs);
     QVERIFY2(m_window->banner()->entryText(key1).contains(QStringLiteral("temperature"),
@@ -378,7 +378,7 @@ void tst_E2eSupervision::faultsAreToldShownAndStopTheControlView()
     // The Control view states the trip instead of the command last sent.
     QTRY_VERIFY_WITH_TIMEOUT(control()->statusText().contains(QStringLiteral("stopped by itself")),
                              kWaitMs);
-    QVERIFY2(!control()->statusText().contains(QStringLiteral("Sent torque")),
+    QVERIFY2(!control()->statusText().contains(QStringLiteral("Sent Torque current")),
              qPrintable(control()->statusText()));
     QVERIFY(watch->events(1).join(' ').contains(QStringLiteral("stopped by itself")));
     // Its temperature climbs past the warning threshold: shown red too.

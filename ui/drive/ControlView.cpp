@@ -82,7 +82,7 @@ ControlView::ControlView(QWidget *parent)
     layout->addWidget(rightWidget);
 
     wire();
-    m_keys = new JogKeys(this, {[this] { return m_jog->keyboardJog() && canSend(); },
+    m_keys = new JogKeys(this, {[this] { return m_jog->keyboardJog() && canSendToDrive(); },
                                 [this](int direction) {
                                     startJog(direction);
                                     return m_jogging;
@@ -205,7 +205,7 @@ safety::DrivePosition ControlView::drivePosition() const
 
 void ControlView::readAngle(std::function<void()> then)
 {
-    if (!canSend())
+    if (!canSendToDrive())
         return;
     const int id = driveId();
     const auto done = [this, id, then](const bus::RequestResult &r) {
@@ -300,7 +300,7 @@ void ControlView::readDriveState()
     // A V2.35 drive tells whether it is on, its brake and its own limits: read them now.
     m_driveState->setDrive(driveId(), motor());
     m_commandBox->setGeneration(motor().generation);
-    if (!canSend())
+    if (!canSendToDrive())
         return;
     m_driveState->refresh();
     m_limitSet->readDriveLimits(driveId(), motor(), series());
@@ -313,7 +313,7 @@ void ControlView::showDriveState()
 
 void ControlView::refreshEnabled()
 {
-    const bool can = canSend();
+    const bool can = canSendToDrive();
     m_commandBox->setSendEnabled(can);
     m_jog->setEnabled(can);
     m_setpointPanel->setStartEnabled(can);
@@ -365,7 +365,7 @@ MotionOutcome ControlView::pendingOn(const QString &status)
 
 MotionOutcome ControlView::sendMotion(const protocol::BuildResult &built)
 {
-    if (!canSend())
+    if (!canSendToDrive())
         return refuse(tr("Not connected or no drive selected: nothing sent."));
     // V2.35: a drive that is off does not act on a control command (docs/V2.35.md s. 11), and
     // it may have been switched off (or tripped) since it was last read: read it now.
@@ -443,7 +443,7 @@ MotionOutcome ControlView::sendCommand()
 
 void ControlView::sendRunState(Command command)
 {
-    if (!canSend())
+    if (!canSendToDrive())
         return;
     // Off and stop jump ahead of queued work; run resumes motion, so it passes the gate.
     if (command == Command::MotorRun) {
@@ -497,7 +497,7 @@ void ControlView::endJog()
         return;
     m_jogging = false;
     m_keys->jogEnded();
-    if (m_motionId == driveId() && canSend()) {
+    if (m_motionId == driveId() && canSendToDrive()) {
         sendMotion(build::speed(driveId(), 0));
         setStatus(tr("Jog released: speed 0 sent."));
     }
@@ -516,7 +516,7 @@ void ControlView::step(int direction)
 
 void ControlView::startGenerator(const bus::SetpointWaveform::Settings &settings)
 {
-    if (!canSend())
+    if (!canSendToDrive())
         return;
     if (settings.target == bus::SetpointWaveform::Target::Position) {
         // Position setpoints are checked from where the drive is: read it first. A halt while
@@ -533,7 +533,7 @@ void ControlView::startGenerator(const bus::SetpointWaveform::Settings &settings
 
 void ControlView::startGeneratorNow(const bus::SetpointWaveform::Settings &settings)
 {
-    if (!canSend())
+    if (!canSendToDrive())
         return;
     endJog();
     // Damaged limits, or a V2.35 drive that reads off (it would not act on a setpoint).

@@ -2,6 +2,7 @@
 
 #include <protocol/Command.h>
 #include <safety/DriveLimits.h>
+#include <text/CommandTitle.h>
 #include <text/VerdictText.h>
 
 namespace lk::ui {
@@ -74,8 +75,7 @@ QString DriveText::stopReason(bus::SetpointStopReason reason)
 
 QString DriveText::command(protocol::Command c)
 {
-    return QStringLiteral("%1 (%2)").arg(protocol::CommandTable::name(c),
-                                         protocol::CommandTable::codeText(quint8(c)));
+    return text::CommandTitle::withCode(c); // the GUI names commands as people do
 }
 
 QString DriveText::failure(const bus::RequestResult &r)

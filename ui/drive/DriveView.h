@@ -52,9 +52,6 @@ public:
     /// A session, a connected link and a selected drive: this view can send to its drive.
     /// More than the link being open (BusModel::connection().isOpen()).
     bool canSendToDrive() const;
-    /// The former name of canSendToDrive(), kept only while ControlView still calls it
-    /// (issue #21): use canSendToDrive().
-    bool canSend() const { return canSendToDrive(); }
     /// "Drive 3 (MF4015)" or "no drive selected".
     QString driveTitle() const;
 

@@ -87,11 +87,10 @@ void tst_CommandTitle::trafficColumnKeepsCliNamesAndHoversTheTitle()
              QStringLiteral("Multi-turn position with speed limit"));
 }
 
-// What the drive views say after sending ("Sent ... to drive 1.") and when the gate refuses.
-// The first is still worded by snake_case name in ui/drive, which this branch does not own.
+// What the drive views say after sending ("Sent ... to drive 1.") and when the gate refuses:
+// the command's title, never its snake_case name.
 void tst_CommandTitle::driveViewsNameCommandsByTitle()
 {
-    QEXPECT_FAIL("", "needs ui/drive/DriveText::command to word CommandTitle::withCode", Continue);
     QCOMPARE(lk::ui::DriveText::command(Command::MultiPositionLimited),
              CommandTitle::withCode(Command::MultiPositionLimited));
     lk::safety::Verdict unknown;
