@@ -341,7 +341,12 @@ void BusWorker::noteReply(const protocol::Reply &reply, double time, const Pendi
     const bool halt = sent == Command::MotorOff || sent == Command::MotorStop;
     if (movesMotor(sent) || halt)
         m_motors.noteMotion(reply.id, !halt); // the emergency stop reaches it first
-    if (std::optional<TelemetrySample> s = TelemetrySample::fromReply(reply, time)) {
+    // A scan's probe comes before read_model has told the drive's layouts (a V2.35 drive's
+    // 24 V read as 0.90 V with V2.3's): the scan re-reads it for its result, telemetry skips it.
+    const bool layoutUnknown = request.req.origin == RequestOrigin::Scan &&
+                               !m_motors.all().value(reply.id).model.has_value();
+    if (std::optional<TelemetrySample> s =
+            layoutUnknown ? std::nullopt : TelemetrySample::fromReply(reply, time)) {
         if (!movesMotor(sent) && s->has(TelemetryField::Speed))
             m_motors.noteMotion(reply.id, s->speedDps != 0);
         s->cycle = request.pollCycle; // which poll round it answers: rows are built per round

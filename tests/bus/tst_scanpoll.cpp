@@ -53,6 +53,7 @@ private slots:
     void seriesInference_data();
     void seriesInference();
     void scanFindsExactlyTheAnsweringIds();
+    void scanProbeFeedsNoTelemetryBeforeTheModel();
     void scanHonoursCancel();
     void scanBaudSweepStaysWhereDrivesAnswer();
     void scanRejectsBadRange();
@@ -101,6 +102,24 @@ void tst_ScanPoll::seriesInference()
     m.motorName = motor;
     const auto s = MotorRegistry::seriesOf(m); // what the scan records for a found drive
     QCOMPARE(s ? protocol::seriesName(*s) : QString(), series);
+}
+
+void tst_ScanPoll::scanProbeFeedsNoTelemetryBeforeTheModel()
+{
+    // A scan probes with read_state1 before read_model has told the drive's generation: a
+    // V2.35 drive's 24 V decoded with the V2.3 layout read 0.90 V on the dashboard until the
+    // first poll. The scan's own result re-reads the probe once the model is known
+    // (FoundMotor::state1); the probe feeds no telemetry.
+    WorkerRig rig(addDrives, scanConfig(), 115200, RigTime::Manual);
+    QSignalSpy batches(rig.worker.get(), &BusWorker::telemetryReceived);
+    QSignalSpy finished(rig.worker.get(), &BusWorker::scanFinished);
+    rig.worker->scan(ScanOptions{});
+    QVERIFY(rig.runUntil([&] { return finished.size() == 1; }, 60000));
+    const double endMs = rig.nowMs();
+    rig.runUntil([&] { return rig.nowMs() > endMs + 100; }, 200); // any batch still held
+    QCOMPARE(finished.at(0).at(0).value<ScanSummary>().motors.size(), 3);
+    for (int id : {3, 17, 32})
+        QCOMPARE(samplesIn(batches, id, TelemetryField::Voltage), 0);
 }
 
 void tst_ScanPoll::scanFindsExactlyTheAnsweringIds()
