@@ -34,8 +34,6 @@ private slots:
     void throughParser();
     void roundTrip_data();
     void roundTrip();
-    void seriesNames_data();
-    void seriesNames();
 };
 
 namespace {
@@ -584,40 +582,6 @@ void tst_Reply::roundTrip()
     const QString diff = mismatch(fields(*r.reply), fields(reply), true);
     QVERIFY2(diff.isEmpty(), qPrintable(diff));
     QCOMPARE(spaced(r.reply->encode()), spaced(wire));
-}
-
-void tst_Reply::seriesNames_data()
-{
-    QTest::addColumn<QString>("text");
-    QTest::addColumn<int>("series"); ///< -1: refused
-    QTest::addColumn<bool>("power");
-    QTest::newRow("MS") << QStringLiteral("MS") << int(Series::MS) << true;
-    QTest::newRow("MF") << QStringLiteral("MF") << int(Series::MF) << false;
-    QTest::newRow("MG") << QStringLiteral("MG") << int(Series::MG) << false;
-    QTest::newRow("MH") << QStringLiteral("MH") << int(Series::MH) << false;
-    QTest::newRow("lower case") << QStringLiteral("ms") << int(Series::MS) << true;
-    QTest::newRow("spaces") << QStringLiteral(" mg ") << int(Series::MG) << false;
-    QTest::newRow("unknown") << QStringLiteral("MX") << -1 << false;
-    QTest::newRow("empty") << QString() << -1 << false;
-    QTest::newRow("model, not series") << QStringLiteral("MF4015") << -1 << false;
-}
-
-void tst_Reply::seriesNames()
-{
-    QFETCH(QString, text);
-    QFETCH(int, series);
-    QFETCH(bool, power);
-    const std::optional<Series> s = proto::seriesFromName(text);
-    if (series < 0) {
-        QVERIFY(!s.has_value());
-        return;
-    }
-    QVERIFY(s.has_value());
-    QCOMPARE(int(*s), series);
-    QCOMPARE(proto::seriesName(*s), text.trimmed().toUpper());
-    DecodeContext ctx;
-    ctx.series = *s;
-    QCOMPARE(ctx.reportsPower(), power);
 }
 
 QTEST_APPLESS_MAIN(tst_Reply)
