@@ -32,6 +32,7 @@
 //
 // Run: build/tests/bench/bus/bench_estop
 
+#include "BenchSession.h"
 #include "BenchUtil.h"
 #include "LksimProcess.h"
 
@@ -39,7 +40,6 @@
 #include <bus/PollPlan.h>
 #include <bus/TrafficEvent.h>
 #include <protocol/RequestBuilder.h>
-#include <transport/SerialTransport.h>
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QElapsedTimer>
@@ -216,11 +216,7 @@ StopFigures stops(int baud, Scenario scenario)
         return f;
     }
     BusSession session;
-    transport::SerialSettings s;
-    s.portName = sim.devicePath();
-    s.baud = baud;
-    session.open(transport::SerialTransport::factory(s), baud);
-    if (!bench::waitUntil([&] { return session.connection().isOpen(); }, 10000)) {
+    if (!bench::openSerial(session, sim.devicePath(), baud)) {
         f.ok = false;
         return f;
     }

@@ -14,6 +14,7 @@
 //
 // Run: build/tests/bench/bus/bench_torque_watch
 
+#include "BenchSession.h"
 #include "BenchUtil.h"
 #include "LksimProcess.h"
 
@@ -21,7 +22,6 @@
 #include <bus/PollPlan.h>
 #include <bus/SpeedWatch.h>
 #include <protocol/RequestBuilder.h>
-#include <transport/SerialTransport.h>
 
 #include <QtCore/QCoreApplication>
 
@@ -114,11 +114,7 @@ Figures run(const Case &c, int baud)
         return f;
     }
     BusSession session;
-    transport::SerialSettings s;
-    s.portName = sim.devicePath();
-    s.baud = baud;
-    session.open(transport::SerialTransport::factory(s), baud);
-    if (!bench::waitUntil([&] { return session.connection().isOpen(); }, 10000)) {
+    if (!bench::openSerial(session, sim.devicePath(), baud)) {
         f.ok = false;
         return f;
     }
