@@ -5,16 +5,13 @@
 #include <drive/ParameterTable.h>
 #include <drive/TuningSetV23.h>
 #include <drive/TuningView.h>
-#include <plot/TelemetryStore.h>
 #include <record/ParameterSet.h>
-#include <sim/FaultInjector.h>
 #include <sim/SimBus.h>
 
 #include <QtCore/QFile>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
 #include <QtWidgets/QDoubleSpinBox>
-#include <QtWidgets/QLabel>
 #include <QtWidgets/QPushButton>
 
 using lk::drivetest::heldText;
