@@ -25,9 +25,11 @@ struct CtlResult {
     QByteArray err;
 };
 
-/// Run a program of the project in `env`; generous timeout, the machine may be loaded.
+/// Run a program of the project in `env`, `input` on its standard input; generous timeout,
+/// the machine may be loaded.
 inline CtlResult runProgram(const QString &program, const QStringList &args,
-                            const QProcessEnvironment &env, int timeoutMs = 120000)
+                            const QProcessEnvironment &env, int timeoutMs = 120000,
+                            const QByteArray &input = {})
 {
     QProcess p;
     p.setProcessEnvironment(env);
@@ -35,6 +37,8 @@ inline CtlResult runProgram(const QString &program, const QStringList &args,
     CtlResult r;
     if (!p.waitForStarted(60000))
         return r;
+    if (!input.isEmpty())
+        p.write(input);
     p.closeWriteChannel();
     if (!p.waitForFinished(timeoutMs)) {
         p.kill();

@@ -1,3 +1,4 @@
+#include "E2eUtil.h"
 #include "protocol/Command.h"
 
 #include <QtCore/QJsonDocument>
@@ -11,29 +12,12 @@
 
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
+using Result = lk::e2e::CtlResult;
 
 Result lkctl(const QStringList &args, const QByteArray &input = {})
 {
-    QProcess p;
-    p.start(QStringLiteral(LKCTL_PATH), args);
-    if (!p.waitForStarted(60000))
-        qFatal("cannot start %s", LKCTL_PATH);
-    if (!input.isEmpty())
-        p.write(input);
-    p.closeWriteChannel();
-    // Generous: the machine is shared and may be loaded; lkctl itself needs milliseconds.
-    if (!p.waitForFinished(120000))
-        qFatal("lkctl %s did not finish", qPrintable(args.join(' ')));
-    Result r;
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
+    return lk::e2e::runProgram(QStringLiteral(LKCTL_PATH), args,
+                               QProcessEnvironment::systemEnvironment(), 120000, input);
 }
 
 QStringList words(const char *text)
