@@ -4,6 +4,7 @@
 // checked on lksim's own record of the frames it received.
 
 #include "E2eUtil.h"
+#include "E2eWindow.h"
 
 #include <main/AppSettings.h>
 #include <main/BusController.h>
@@ -77,19 +78,8 @@ void tst_E2eEstop::initTestCase()
                            "--verbose"}),
              qPrintable(m_sim->errorString()));
     m_settings = std::make_unique<ui::AppSettings>(m_dir.filePath("lkstudio.ini"));
-    m_window = std::make_unique<ui::MainWindow>(m_settings.get());
-    m_window->resize(1400, 900);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    ui::ConnectionChoice c;
-    c.kind = ui::ConnectionChoice::Kind::Serial;
-    c.port = m_sim->devicePath();
-    c.baud = 115200;
-    c.autoReconnect = false;
-    m_window->connectTo(c, false);
-    // Scanning on connect finds the four drives, then they are polled.
-    QTRY_COMPARE_WITH_TIMEOUT(m_window->busModel()->ids(), kDrives, kWaitMs);
-    QTRY_VERIFY_WITH_TIMEOUT(m_window->busModel()->isPolling(), kWaitMs);
+    // Scanning on connect finds the drives, then they are polled.
+    e2e::openWindowOnLksim(m_window, m_settings.get(), m_sim->devicePath(), kDrives, kWaitMs);
 }
 
 void tst_E2eEstop::cleanupTestCase()

@@ -8,6 +8,7 @@
 // and the flags), their values shown red, and the Control view states the trip.
 
 #include "E2eUtil.h"
+#include "E2eWindow.h"
 
 #include <LeaveHooks.h>
 #include <drive/ControlView.h>
@@ -145,18 +146,8 @@ void tst_E2eSupervision::init()
     m_clock.start();
     QVERIFY2(m_sim->start(args), qPrintable(m_sim->errorString()));
     m_settings = std::make_unique<ui::AppSettings>(m_dir.filePath("lkstudio.ini"));
-    m_window = std::make_unique<ui::MainWindow>(m_settings.get());
-    m_window->resize(1400, 900);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    ui::ConnectionChoice c;
-    c.kind = ui::ConnectionChoice::Kind::Serial;
-    c.port = m_sim->devicePath();
-    c.baud = 115200;
-    c.autoReconnect = false;
-    m_window->connectTo(c, false);
-    QTRY_COMPARE_WITH_TIMEOUT(m_window->busModel()->ids(), kDrives, kWaitMs);
-    QTRY_VERIFY_WITH_TIMEOUT(m_window->busModel()->isPolling(), kWaitMs);
+    // Scanning on connect finds the drives, then they are polled.
+    e2e::openWindowOnLksim(m_window, m_settings.get(), m_sim->devicePath(), kDrives, kWaitMs);
 }
 
 void tst_E2eSupervision::cleanup()
