@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#include <sys/ioctl.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -114,6 +115,34 @@ QByteArray PtyDevice::readAvailable()
 bool PtyDevice::writeAll(const QByteArray &bytes)
 {
     return writeAllTo(m_master, bytes);
+}
+
+qsizetype PtyDevice::writeDiscardingUnread(const QByteArray &bytes)
+{
+    qsizetype discarded = 0;
+    qsizetype done = 0;
+    int full = 0;
+    while (done < bytes.size()) {
+        const ssize_t n = ::write(m_master, bytes.constData() + done, bytes.size() - done);
+        if (n > 0) {
+            done += n;
+        } else if (n < 0 && errno == EINTR) {
+            continue;
+        } else if (n < 0 && errno == EAGAIN) {
+            if (++full > 100) { // the queue stays full even when emptied: give these bytes up
+                discarded += bytes.size() - done;
+                break;
+            }
+            int queued = 0;
+            if (ioctl(m_slaveKeepAlive, FIONREAD, &queued) == 0)
+                discarded += queued;
+            tcflush(m_slaveKeepAlive, TCIFLUSH);
+        } else {
+            m_error = sysError("write");
+            return -1;
+        }
+    }
+    return discarded;
 }
 
 bool PtyDevice::writeToSlave(const QByteArray &bytes)

@@ -29,6 +29,10 @@ public:
     QByteArray readAvailable();
     /// Write all bytes (blocking until the kernel took them); false on error.
     bool writeAll(const QByteArray &bytes);
+    /// Write without waiting for a reader, as a tap does: when the client's input queue is full
+    /// (nobody reads), its unread bytes are discarded and the write goes on. Returns how many
+    /// bytes were discarded, or -1 on error.
+    qsizetype writeDiscardingUnread(const QByteArray &bytes);
     /// Write bytes as a client would, to the slave (they read back from the master, the path
     /// PtyLagProbe times); false on error.
     bool writeToSlave(const QByteArray &bytes);

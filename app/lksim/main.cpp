@@ -2,8 +2,10 @@
 
 #include "PtyBusServer.h"
 #include "PtyDevice.h"
+#include "TapBusServer.h"
 
 #include <bus/BusTiming.h>
+#include <sim/ControllerSpec.h>
 #include <sim/SimBus.h>
 #include <sim/SimBusSpec.h>
 
@@ -185,6 +187,32 @@ int main(int argc, char *argv[])
         QStringLiteral("path"));
     parser.addOptions({motors, fault, link, baud, wireTime, replyDelay, adapterLatency, romDir,
                        faults, badChecksumPct, busyPoll, measurePtyLag, statsFile, verbose});
+    // --controller: a simulated foreign master drives the bus; the pty is a tap (TapBusServer).
+    const QCommandLineOption controller(
+        QStringLiteral("controller"),
+        QStringLiteral("A simulated foreign master drives the bus, and the device carries what "
+                       "an RS485 tap sees: its requests and the drives' replies in bus order, "
+                       "timed at --baud (wire time implied). SPEC: comma-separated rate=HZ|max "
+                       "(requests per second, default 100), ids=LIST (1-4:17; default every "
+                       "drive), poll=LIST|none (reads by code or name, 9c:9a:92; default 9c), "
+                       "speed=sine:AMPdps:FREQHz (a speed setpoint per drive and round), "
+                       "move=every:PERIODs[:STEPdeg][:MAXdps] (an incremental move of +STEP, "
+                       "then -STEP; default 90deg, 360dps), timeout=Nms (default 5ms). The "
+                       "tool on the device should only listen: bytes it writes are a second "
+                       "master (a collision over the controller's frames, logged). --faults "
+                       "and --fault apply. Example: rate=200,ids=1-4,poll=9c:9a:92,"
+                       "speed=sine:300dps:0.5Hz,move=every:5s"),
+        QStringLiteral("spec"));
+    const QCommandLineOption controllerLog(
+        QStringLiteral("controller-log"),
+        QStringLiteral("With --controller: write each of its requests, when it is done, as one "
+                       "JSON line to PATH: {\"time_s\",\"id\",\"command\",\"code\","
+                       "\"request\":{fields},\"outcome\":answered|unanswered|dropped|garbled|"
+                       "collided[,\"reply_s\"][,\"noise_bytes\"][,\"reply\":{fields}]}, "
+                       "fields as lkctl decode writes them."),
+        QStringLiteral("path"));
+    parser.addOption(controller);
+    parser.addOption(controllerLog);
     parser.process(app);
 
     if (!parser.isSet(motors))
@@ -210,6 +238,18 @@ int main(int argc, char *argv[])
     if (!ok || latencyUs < 0 || latencyUs > 1000000)
         return fail(QStringLiteral("--adapter-latency-us must be 0..1000000"));
 
+    std::optional<lk::sim::ControllerSpec> controllerSpec;
+    if (parser.isSet(controller)) {
+        controllerSpec = lk::sim::ControllerSpec::parse(parser.value(controller), &error);
+        if (!controllerSpec)
+            return fail(error);
+        if (parser.isSet(busyPoll) || parser.isSet(measurePtyLag))
+            return fail(QStringLiteral("--busy-poll and --measure-pty-lag time a host's "
+                                       "requests; with --controller nobody asks on the pty"));
+    } else if (parser.isSet(controllerLog)) {
+        return fail(QStringLiteral("--controller-log needs --controller"));
+    }
+
     std::unique_ptr<lk::sim::SimBus> bus = lk::sim::SimBus::fromSpec(*spec, parser.value(romDir));
     bus->setReplyDelay(delayUs * 1e-6);
     for (const QString &e : bus->romStore().errors())
@@ -230,6 +270,27 @@ int main(int argc, char *argv[])
 
     installSignalHandlers();
     prctl(PR_SET_TIMERSLACK, 1UL); // sub-millisecond reply timing needs a tight timer slack
+
+    if (controllerSpec) {
+        lk::app::TapBusServer::Options tapOptions;
+        tapOptions.baud = baudValue;
+        tapOptions.adapterLatencyS = latencyUs * 1e-6;
+        tapOptions.verbose = parser.isSet(verbose);
+        tapOptions.statsFile = parser.value(statsFile);
+        tapOptions.logFile = parser.value(controllerLog);
+        lk::app::TapBusServer tap(pty, *bus, *controllerSpec, tapOptions);
+        if (!tap.open())
+            return 2;
+        std::printf("%s\n", qPrintable(pty.slavePath()));
+        std::fflush(stdout);
+        std::fprintf(stderr, "lksim: %s on %s, controller %s at %d baud\n",
+                     qPrintable(spec->toString()), qPrintable(pty.slavePath()),
+                     qPrintable(controllerSpec->toString()), baudValue);
+        const int rc = tap.run(g_stop, g_dumpStats);
+        pty.close();
+        std::fprintf(stderr, "%s\n", qPrintable(tap.summary()));
+        return rc;
+    }
 
     lk::app::PtyBusServer::Options options;
     options.baud = baudValue;

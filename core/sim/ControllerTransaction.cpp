@@ -12,7 +12,7 @@ namespace {
 /// Microseconds are what a tap can tell apart; more digits would only be noise in the log.
 double toMicroseconds(double seconds)
 {
-    return std::round(seconds * 1e6) * 1e-6;
+    return std::round(seconds * 1e6) / 1e6;
 }
 } // namespace
 
