@@ -276,9 +276,9 @@ ForeignController::SecondMaster ForeignController::secondMaster(const QByteArray
         out.duringReply = true;
         out.what = QStringLiteral("a reply to its own earlier request");
     }
+    m_foreignWindows.push_back(Window{startS, nowS}); // on the wire, whole or spoilt
     if (out.collided)
         return out;
-    m_foreignWindows.push_back(Window{startS, nowS});
     double wireFreeS = nowS;
     for (const SimReply &r : m_bus.receive(bytes, nowS)) {
         const double replyStartS = std::max(nowS + r.delaySeconds, wireFreeS);
