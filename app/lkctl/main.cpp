@@ -6,6 +6,7 @@
 #include "Dispatcher.h"
 #include "EncodeCommand.h"
 #include "InfoCommand.h"
+#include "ListenCommand.h"
 #include "MonitorCommand.h"
 #include "MotorStateCommand.h"
 #include "ReadCommand.h"
@@ -51,6 +52,7 @@ int main(int argc, char *argv[])
     dispatcher.add(std::make_unique<ZeroCommand>(ZeroCommand::Kind::ClearTurns));
     dispatcher.add(std::make_unique<StepCommand>());
     dispatcher.add(std::make_unique<MonitorCommand>());
+    dispatcher.add(std::make_unique<ListenCommand>());
     dispatcher.add(std::make_unique<EncodeCommand>());
     dispatcher.add(std::make_unique<DecodeCommand>());
     return dispatcher.run(QCoreApplication::arguments().mid(1), console);
