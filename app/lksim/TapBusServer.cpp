@@ -56,15 +56,20 @@ void TapBusServer::record(const QList<sim::ControllerTransaction> &done)
     if (done.isEmpty())
         return;
     QByteArray lines;
+    const qint64 collisionsSoFar = m_wire.collisions();
     for (const sim::ControllerTransaction &t : done) {
         ++m_outcomes[static_cast<size_t>(t.outcome)];
         ++m_wire.requests;
+        if (t.outcome == Outcome::Collided) // lost to the second master: one collision each
+            ++(t.replyBytes.isEmpty() ? m_wire.collisionsBefore : m_wire.collisionsDuring);
         if (!t.replyBytes.isEmpty())
             ++m_wire.replies;
         if (m_log.isOpen())
             lines += t.toJsonLine() + '\n';
     }
     // Flushed per batch: a test reads the log while lksim runs.
+    if (m_wire.collisions() != collisionsSoFar)
+        writeStats(true); // the collision count is always current
     if (m_log.isOpen() && (m_log.write(lines) != lines.size() || !m_log.flush())) {
         std::fprintf(stderr, "lksim: --controller-log %s: %s; the log stops here\n",
                      qPrintable(m_options.logFile), qPrintable(m_log.errorString()));
@@ -86,12 +91,10 @@ void TapBusServer::onSecondMaster(const QByteArray &bytes, double now)
     ++m_secondMasterWrites;
     const sim::ForeignController::SecondMaster m = m_controller->secondMaster(bytes, now);
     if (m.collided)
-        ++(m.duringReply ? m_wire.collisionsDuring : m_wire.collisionsBefore);
+        ++m_secondMasterCollisions;
     std::fprintf(stderr, "lksim: second master: %lld bytes (%s) written to the pty %s %s\n",
                  static_cast<long long>(bytes.size()), bytes.toHex(' ').toUpper().constData(),
                  m.collided ? "collided with" : "came on", qPrintable(m.what));
-    if (m.collided)
-        writeStats(true);
 }
 
 bool TapBusServer::flushDue(double now)
@@ -148,7 +151,8 @@ QString TapBusServer::summary() const
 {
     return QStringLiteral("lksim: controller: %1 requests (%2 answered, %3 unanswered, %4 "
                           "dropped, %5 garbled, %6 collided); second master: %7 writes, %8 "
-                          "collisions; %9 bytes of the tap discarded unread")
+                          "of them over the controller's frames; %9 bytes of the tap discarded "
+                          "unread")
         .arg(m_wire.requests)
         .arg(m_outcomes[size_t(Outcome::Answered)])
         .arg(m_outcomes[size_t(Outcome::Unanswered)])
@@ -156,7 +160,7 @@ QString TapBusServer::summary() const
         .arg(m_outcomes[size_t(Outcome::Garbled)])
         .arg(m_outcomes[size_t(Outcome::Collided)])
         .arg(m_secondMasterWrites)
-        .arg(m_wire.collisions())
+        .arg(m_secondMasterCollisions)
         .arg(m_tapBytesDiscarded);
 }
 

@@ -77,9 +77,12 @@ private:
     StatsFile m_stats;
     QFile m_log;
     std::deque<Pending> m_pending;
-    WireCounters m_wire; ///< requests and replies on the wire, the second master's collisions
+    /// The controller's requests and replies; collisions: its requests lost to the second
+    /// master (before: the request was hit; during: its reply was)
+    WireCounters m_wire;
     std::array<qint64, 5> m_outcomes{}; ///< by ControllerTransaction::Outcome
     qint64 m_secondMasterWrites = 0;
+    qint64 m_secondMasterCollisions = 0; ///< writes that met the controller's frames
     qint64 m_tapBytesDiscarded = 0;
 };
 

@@ -252,17 +252,20 @@ ForeignController::SecondMaster ForeignController::secondMaster(const QByteArray
                                                                 double nowS)
 {
     SecondMaster out;
-    const double startS = nowS - wire(bytes.size());
+    // The bytes go on the wire as lksim reads them: what they meet is on the wire now (the
+    // transaction in flight) or starts before they end (the controller's next request, which
+    // startRequest() finds lost). Transactions already logged are never changed.
+    const double endS = nowS + wire(bytes.size());
     if (m_inFlight && !m_inFlight->lost && m_inFlight->t.outcome != Outcome::Collided) {
         InFlight &f = *m_inFlight;
         const QString frame = QStringLiteral("ID %1's %2 %3 of the controller")
                                   .arg(f.t.request.id)
                                   .arg(protocol::CommandTable::name(f.t.request.command));
-        if (!f.delivered && startS < f.t.requestEndS && nowS > f.t.requestS) {
+        if (!f.delivered) { // its request is on the wire until requestEndS
             out.collided = true;
             f.lost = true;
             out.what = frame.arg(QStringLiteral("request"));
-        } else if (f.delivered && f.t.replyEndS >= 0 && startS < f.t.replyEndS) {
+        } else if (f.t.replyEndS > nowS) {
             out.collided = true;
             out.duringReply = nowS >= f.replyStartS;
             f.t.outcome = Outcome::Collided;
@@ -271,17 +274,17 @@ ForeignController::SecondMaster ForeignController::secondMaster(const QByteArray
                                                  : QStringLiteral("reply (about to begin)"));
         }
     }
-    if (!out.collided && foreignBusy(startS, nowS)) {
+    if (!out.collided && foreignBusy(nowS, endS)) {
         out.collided = true;
         out.duringReply = true;
         out.what = QStringLiteral("a reply to its own earlier request");
     }
-    m_foreignWindows.push_back(Window{startS, nowS}); // on the wire, whole or spoilt
+    m_foreignWindows.push_back(Window{nowS, endS}); // on the wire, whole or spoilt
     if (out.collided)
         return out;
-    double wireFreeS = nowS;
-    for (const SimReply &r : m_bus.receive(bytes, nowS)) {
-        const double replyStartS = std::max(nowS + r.delaySeconds, wireFreeS);
+    double wireFreeS = endS;
+    for (const SimReply &r : m_bus.receive(bytes, endS)) {
+        const double replyStartS = std::max(endS + r.delaySeconds, wireFreeS);
         wireFreeS = replyStartS + wire(r.bytes.size());
         m_foreignWindows.push_back(Window{replyStartS, wireFreeS});
         emitChunk(wireFreeS, r.bytes);

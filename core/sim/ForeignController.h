@@ -61,10 +61,13 @@ public:
                                   ///< drive about to answer)
         QString what;             ///< for the log: what it collided with, or "idle wire"
     };
-    /// Bytes another master put on the wire, their last byte at `nowS` (call advanceTo(nowS)
-    /// first). Over the controller's request or reply both are lost (the transaction ends
-    /// Collided; the drives do not act on either request). On an idle wire the drives get
-    /// them, and their replies appear in advanceTo's output.
+    /// Bytes another master puts on the wire from `nowS` (call advanceTo(nowS) first). Over
+    /// the controller's request or reply both are lost (the transaction ends Collided; the
+    /// drives act on neither request); a request of the controller that begins while they or
+    /// their replies are on the wire is lost too (Collided, the drive never gets it). On an
+    /// idle wire the drives get them at their last byte, and their replies appear in
+    /// advanceTo's output. Known simplification: a frame that began on an idle wire reaches
+    /// the drives even when the controller's next request then overlaps it.
     SecondMaster secondMaster(const QByteArray &bytes, double nowS);
 
     const QList<int> &ids() const { return m_ids; }

@@ -8,6 +8,8 @@
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QFile>
+#include <QtCore/QFileInfo>
+#include <QtCore/QRegularExpression>
 #include <QtCore/QTemporaryDir>
 #include <QtSerialPort/QSerialPort>
 #include <QtTest/QTest>
@@ -137,6 +139,7 @@ class tst_E2eController : public QObject {
 private slots:
     void tapMatchesLog();
     void secondMasterCollides();
+    void nobodyReadingDoesNotStallTheBus();
 };
 
 void tst_E2eController::tapMatchesLog()
@@ -226,13 +229,43 @@ void tst_E2eController::secondMasterCollides()
     sim.stop();
     const std::optional<LksimCounters> c = sim.counters();
     QVERIFY(c);
-    QVERIFY(c->collisions >= 1); // one, or more if the pty split the bytes
+    QVERIFY2(c->collisions >= 1, sim.log().constData()); // more if the pty split the bytes
 
     QVERIFY2(sim.log().contains("lksim: second master: 60 bytes"), sim.log().constData());
     int collided = 0;
     for (const QJsonObject &o : readLog(logPath))
         collided += o.value(QStringLiteral("outcome")).toString() == QLatin1String("collided");
     QVERIFY(collided >= 1);
+}
+
+void tst_E2eController::nobodyReadingDoesNotStallTheBus()
+{
+    QTemporaryDir dir;
+    const QString logPath = dir.filePath(QStringLiteral("truth.jsonl"));
+    LksimProcess sim(QStringLiteral(LKSIM_PATH));
+    QVERIFY2(
+        sim.start({QStringLiteral("--motors"), QStringLiteral("1:MF"), QStringLiteral("--baud"),
+                   QStringLiteral("4000000"), QStringLiteral("--controller"),
+                   QStringLiteral("rate=max"), QStringLiteral("--controller-log"), logPath}),
+        qPrintable(sim.errorString()));
+    // About 3000 transactions a second of 18 bytes on the wire (log lines of some 190 bytes):
+    // the pty's buffer (tens of KiB) is full long before 1.5 MB of log. lksim must go on,
+    // discarding what nobody read, not block.
+    const auto logSize = [&logPath] { return QFileInfo(logPath).size(); };
+    QVERIFY(QTest::qWaitFor([&] { return logSize() > 1500000; }, 60000));
+    const qint64 before = logSize();
+    QTest::qWait(500);
+    QVERIFY2(logSize() > before, "lksim stopped serving while nobody read the pty");
+    // A reader that comes now gets current traffic.
+    QSerialPort port(sim.devicePath());
+    QVERIFY2(port.open(QIODevice::ReadOnly), qPrintable(port.errorString()));
+    QVERIFY(port.waitForReadyRead(5000));
+    port.close();
+    sim.stop();
+    const QRegularExpressionMatch m =
+        QRegularExpression(QStringLiteral("; (\\d+) bytes of the tap discarded unread"))
+            .match(QString::fromUtf8(sim.log()));
+    QVERIFY2(m.hasMatch() && m.captured(1).toLongLong() > 0, sim.log().constData());
 }
 
 QTEST_GUILESS_MAIN(tst_E2eController)

@@ -103,6 +103,7 @@ private slots:
     void secondMasterOverRequest();
     void secondMasterOverReply();
     void secondMasterOnIdleWire();
+    void secondMasterInTheGapSpoilsTheNextRequest();
 };
 
 void tst_ForeignController::roundOrderAndRate()
@@ -375,6 +376,26 @@ void tst_ForeignController::secondMasterOnIdleWire()
     QCOMPARE(r.chunks.last().bytes.at(1), char(0x9A));
     QCOMPARE(r.chunks.last().bytes.at(2), char(2));
     QCOMPARE(r.bus->requestCount(2, Command::ReadState1), 1);
+}
+
+void tst_ForeignController::secondMasterInTheGapSpoilsTheNextRequest()
+{
+    Rig r("1:MF", "rate=max");
+    const double replyEnd = kStartS + wire(5) + r.bus->replyDelay() + wire(13);
+    const double inGap = replyEnd + ForeignController::kTurnaroundS / 2;
+    r.step(inGap); // the first transaction is done, the next request not yet sent
+    QCOMPARE(r.done.size(), 1);
+    const QByteArray tool = protocol::build::plain(Command::ReadState1, 2).request->encode();
+    QVERIFY(!r.controller.secondMaster(tool, inGap).collided);
+    for (double t = inGap; r.done.size() < 2 && t < kStartS + 1; t += 1e-4)
+        r.step(t);
+    // The controller's next request began while the tool's frame was on the wire: lost, the
+    // drive never got it; the tool's request reached drive 2.
+    QCOMPARE(r.done[1].outcome, Outcome::Collided);
+    QCOMPARE(r.bus->requestCount(1, Command::ReadState2), 1);
+    QCOMPARE(r.bus->requestCount(2, Command::ReadState1), 1);
+    r.runTo(0.02);
+    QCOMPARE(r.done[2].outcome, Outcome::Answered);
 }
 
 QTEST_GUILESS_MAIN(tst_ForeignController)
