@@ -109,21 +109,20 @@ struct RequestEncoder {
     }
     CanEncodeResult operator()(const OpenLoopCommand &c) const
     {
-        const qint16 max = isV236(context) ? 850 : 1000;
-        if (c.power < -max || c.power > max)
-            return refused(
-                QStringLiteral("power"), QStringLiteral("-%1..%1").arg(max),
-                QCoreApplication::translate("lk::protocol::can::CanLayout", "got %1").arg(c.power));
-        return encoded(canId, head().at(4, c.power));
+        return int16InB4("power", c.power, isV236(context) ? 850 : 1000);
     }
     CanEncodeResult operator()(const TorqueCommand &c) const
     {
-        const qint16 max = isV236(context) ? 2048 : 2000;
-        if (c.iqRaw < -max || c.iqRaw > max)
+        return int16InB4("iq_raw", c.iqRaw, isV236(context) ? 2048 : 2000);
+    }
+    /// Power and iq: int16 in B4-B5, within the generation's +-max.
+    CanEncodeResult int16InB4(const char *field, qint16 value, qint16 max) const
+    {
+        if (value < -max || value > max)
             return refused(
-                QStringLiteral("iq_raw"), QStringLiteral("-%1..%1").arg(max),
-                QCoreApplication::translate("lk::protocol::can::CanLayout", "got %1").arg(c.iqRaw));
-        return encoded(canId, head().at(4, c.iqRaw));
+                QLatin1String(field), QStringLiteral("-%1..%1").arg(max),
+                QCoreApplication::translate("lk::protocol::can::CanLayout", "got %1").arg(value));
+        return encoded(canId, head().at(4, value));
     }
     CanEncodeResult operator()(const SpeedCommand &c) const
     {
@@ -451,6 +450,11 @@ RequestDecodeResult decodeRequest(const Frame &frame, const DecodeContext &conte
     if (!knownOn(frame, context, &result.error))
         return result;
     const Command cmd = CommandTable::find(frame.command)->command;
+    if (cmd == Command::ClearAngle && Bytes7(frame.data).at<qint32>(4) != 0) {
+        // A V2.36 "set position" other than 0 is no clear_angle: decodeSetPosition reads it.
+        result.error = DecodeError::BadLength;
+        return result;
+    }
     result.request = Request{cmd, frame.id, requestPayload(cmd, Bytes7(frame.data), context)};
     return result;
 }
@@ -470,6 +474,28 @@ ReplyDecodeResult decodeReply(const Frame &frame, const DecodeContext &context)
     DecodeContext rs485 = context;
     rs485.link = Link::Rs485;
     return protocol::decodeReply(frame, rs485);
+}
+
+std::optional<Generation> generationHint(const CanData &reply)
+{
+    const std::optional<DriveAddress> address = driveAddressOf(reply.canId);
+    if (!address || reply.bytes.size() != kDataSize)
+        return std::nullopt;
+    if (address->base == IdBase::Base180)
+        return Generation::V2_35;
+    const auto cmd = static_cast<quint8>(reply.bytes[0]);
+    if (cmd != quint8(Command::ReadState1) && cmd != quint8(Command::ClearErrors))
+        return std::nullopt;
+    const char *b = reply.bytes.constData();
+    const auto plausible = [](double volts) { return volts >= 6.0 && volts <= 60.0; };
+    const bool old =
+        b[2] == 0 && b[5] == 0 && b[6] == 0 && plausible(qFromLittleEndian<quint16>(b + 3) * 0.1);
+    const auto state = static_cast<quint8>(b[6]);
+    const bool v236 =
+        plausible(qFromLittleEndian<qint16>(b + 2) * 0.01) && (state == 0x00 || state == 0x10);
+    if (old == v236)
+        return std::nullopt;
+    return old ? Generation::V2_3 : Generation::V2_35;
 }
 
 CanEncodeResult encodeMultiMotorTorque(const std::array<qint16, kMultiMotorDrives> &iqRaw)
@@ -498,6 +524,20 @@ std::optional<std::array<qint16, kMultiMotorDrives>> decodeMultiMotorTorque(cons
     for (int i = 0; i < kMultiMotorDrives; ++i)
         iq[static_cast<size_t>(i)] = qFromLittleEndian<qint16>(data.bytes.constData() + 2 * i);
     return iq;
+}
+
+CanData encodeSetPosition(quint8 driveId, qint32 angleRaw)
+{
+    return CanData{requestCanId(driveId),
+                   Bytes8(static_cast<quint8>(Command::ClearAngle)).at(4, angleRaw).bytes()};
+}
+
+std::optional<qint32> decodeSetPosition(const CanData &data)
+{
+    if (data.bytes.size() != kDataSize || !driveAddressOf(data.canId) ||
+        static_cast<quint8>(data.bytes[0]) != static_cast<quint8>(Command::ClearAngle))
+        return std::nullopt;
+    return qFromLittleEndian<qint32>(data.bytes.constData() + 4);
 }
 
 std::array<quint16, 3> ControlParameter::pid() const

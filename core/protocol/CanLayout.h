@@ -79,10 +79,23 @@ RequestDecodeResult decodeRequest(const Frame &frame, const DecodeContext &conte
 /// 0x92 angle is sign-extended from bit 55 of its seven bytes.
 ReplyDecodeResult decodeReply(const Frame &frame, const DecodeContext &context);
 
+/// What one reply says about the CAN generation of its drive, where it says anything
+/// (docs/CAN.md section 9): a reply on 0x180+ID is V2.36; a 0x9A/0x9B reply is read both ways
+/// and names a generation when only one reading is plausible (old: B2, B5 and B6 zero and
+/// B3-B4 a supply of 6..60 V in 0.1 V; V2.36: B2-B3 a supply of 6..60 V in 0.01 V and B6 0x00
+/// or 0x10). nullopt when the reply cannot tell.
+std::optional<Generation> generationHint(const CanData &reply);
+
 /// The old generation's multi-motor torque frame (0x280): iq for drives 1..4, each
 /// -2000..2000. Refused with the drive named when a value is out of range.
 CanEncodeResult encodeMultiMotorTorque(const std::array<qint16, kMultiMotorDrives> &iqRaw);
 std::optional<std::array<qint16, kMultiMotorDrives>> decodeMultiMotorTorque(const CanData &data);
+
+/// CAN V2.36 0x95: the current position becomes `angleRaw` (0.01 deg, RAM). clear_angle is
+/// the same frame with 0.
+CanData encodeSetPosition(quint8 driveId, qint32 angleRaw);
+/// The position a V2.36 0x95 frame sets; nullopt for any other frame.
+std::optional<qint32> decodeSetPosition(const CanData &data);
 
 /// The CAN V2.36 control parameters of 0xC0 (read) and 0xC1 (write, RAM only), docs/CAN.md.
 enum class ControlParamId : quint8 {

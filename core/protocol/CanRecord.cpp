@@ -1,5 +1,6 @@
 #include "CanRecord.h"
 
+#include <QtCore/QRegularExpression>
 #include <QtCore/QtEndian>
 
 #include <algorithm>
@@ -12,6 +13,7 @@ constexpr int kFlagsAt = 5;
 constexpr int kDlcAt = 6;
 constexpr int kDataAt = 7;
 constexpr int kTimeAt = kDataAt + CanRecord::kMaxData;
+constexpr quint32 kCandumpErrorFlag = 0x20000000; ///< CAN_ERR_FLAG of linux/can.h
 } // namespace
 
 QByteArray CanRecord::encode() const
@@ -66,6 +68,54 @@ QString CanRecord::candumpText() const
         .arg(canId, digits, 16, QLatin1Char('0'))
         .arg(QString::fromLatin1(data.toHex()))
         .toUpper();
+}
+
+QString CanRecord::candumpLogLine(const QString &interfaceName) const
+{
+    const qint64 seconds = timestampUs / 1000000;
+    const qint64 micros = timestampUs % 1000000;
+    QString frame = candumpText();
+    if (isError())
+        frame = QStringLiteral("%1#%2")
+                    .arg(canId | kCandumpErrorFlag, 8, 16, QLatin1Char('0'))
+                    .arg(QString::fromLatin1(data.toHex()))
+                    .toUpper();
+    return QStringLiteral("(%1.%2) %3 %4")
+        .arg(seconds)
+        .arg(micros, 6, 10, QLatin1Char('0'))
+        .arg(interfaceName, frame);
+}
+
+std::optional<CanRecord> CanRecord::fromCandump(const QString &text)
+{
+    // "(seconds.micros) iface ID#DATA" or "ID#DATA"; the ID has 3 digits (11 bits) or 8.
+    static const QRegularExpression re(QStringLiteral(
+        R"(^\s*(?:\((\d+)\.(\d{1,9})\)\s+\S+\s+)?([0-9A-Fa-f]{3}|[0-9A-Fa-f]{8})#((?:[0-9A-Fa-f]{2}){0,8})\s*$)"));
+    const QRegularExpressionMatch m = re.match(text);
+    if (!m.hasMatch())
+        return std::nullopt;
+    CanRecord r;
+    const QString id = m.captured(3);
+    r.canId = id.toUInt(nullptr, 16);
+    if (id.size() == 3 && r.canId > 0x7FF)
+        return std::nullopt;
+    if (id.size() == 8) {
+        if (r.canId & kCandumpErrorFlag) {
+            r.flags |= Error;
+            r.canId &= ~kCandumpErrorFlag;
+        } else {
+            r.flags |= Extended;
+        }
+        if (r.canId > 0x1FFFFFFF)
+            return std::nullopt; // RTR or other flags: no LK frame
+    }
+    r.data = QByteArray::fromHex(m.captured(4).toLatin1());
+    if (!m.captured(1).isEmpty()) {
+        // The fraction as written (candump writes six digits), scaled to microseconds.
+        const QString fraction = m.captured(2).leftJustified(6, QLatin1Char('0')).left(6);
+        r.timestampUs = m.captured(1).toLongLong() * 1000000 + fraction.toLongLong();
+    }
+    return r;
 }
 
 } // namespace lk::protocol

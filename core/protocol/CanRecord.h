@@ -44,6 +44,13 @@ struct CanRecord {
     can::CanData canData() const { return can::CanData{canId, data}; }
     /// The frame in candump notation: "141#9C00000000000000" (a 29-bit ID has 8 digits).
     QString candumpText() const;
+    /// One line of a `candump -L` log, which can-utils, python-can and SavvyCAN read:
+    /// "(1700000000.123456) can0 141#9C00000000000000". Error frames carry the CAN_ERR_FLAG
+    /// (0x20000000) in their 8-digit ID, as candump writes them.
+    QString candumpLogLine(const QString &interfaceName) const;
+    /// A frame in candump notation, bare ("141#9C00") or as a `candump -L` line; nullopt for
+    /// anything else (remote and CAN FD frames included). The interface name is not kept.
+    static std::optional<CanRecord> fromCandump(const QString &text);
 
     bool operator==(const CanRecord &o) const
     {

@@ -256,7 +256,10 @@ private slots:
     void speedTorqueLimitFromSoftLimits();
     void multiMotorTorque();
     void controlParameters();
+    void setPosition();
     void addresses();
+    void generationHints_data();
+    void generationHints();
     void replyDecodeFaults();
     void linkCodecKeepsRs485();
 };
@@ -517,6 +520,22 @@ void tst_CanLayout::controlParameters()
     QVERIFY(!can::decodeControlParam(canFrame("141#9C00000000000000")));
 }
 
+void tst_CanLayout::setPosition()
+{
+    // Held vector: V2.36 0x95, current position := 360.00 deg.
+    QCOMPARE(candump(can::encodeSetPosition(1, 36000)), candump(canFrame("141#95000000A08C0000")));
+    QCOMPARE(can::decodeSetPosition(canFrame("141#95000000A08C0000")),
+             std::optional<qint32>(36000));
+    QCOMPARE(can::decodeSetPosition(canFrame("141#950000006073FFFF")),
+             std::optional<qint32>(-36000));
+    QVERIFY(!can::decodeSetPosition(canFrame("141#9400000000000000")));
+    // clear_angle is the same frame with 0; another position is not read as a clear.
+    const DecodeContext v236 = canCtx(Generation::V2_35);
+    QCOMPARE(candump(*can::encodeRequest(req(Command::ClearAngle), v236).data),
+             candump(can::encodeSetPosition(1, 0)));
+    QVERIFY(!proto::decodeRequest(*can::frameOf(canFrame("141#95000000A08C0000")), v236).request);
+}
+
 void tst_CanLayout::addresses()
 {
     QCOMPARE(can::requestCanId(1), quint32(0x141));
@@ -532,6 +551,33 @@ void tst_CanLayout::addresses()
     QCOMPARE(int(can::driveAddressOf(0x181)->base), int(can::IdBase::Base180));
     QCOMPARE(can::driveAddressOf(0x181)->driveId, quint8(1));
     QVERIFY(!can::frameOf(can::CanData{0x141, hex("9C00")})); // DLC 2
+}
+
+void tst_CanLayout::generationHints_data()
+{
+    QTest::addColumn<QString>("frame");
+    QTest::addColumn<int>("generation"); ///< -1: cannot tell
+    QTest::newRow("any reply on 0x181") << "181#9C326400F4010020" << int(Generation::V2_35);
+    QTest::newRow("old 0x9A, 24.0 V") << "141#9A1E00F000000008" << int(Generation::V2_3);
+    QTest::newRow("V2.36 0x9A, 24.00 V, off") << "141#9A1E600996001002" << int(Generation::V2_35);
+    QTest::newRow("V2.36 0x9A, 25.60 V, on, 0 A")
+        << "141#9A1E000A00000000" << int(Generation::V2_35);
+    QTest::newRow("old 0x9B, 48.0 V") << "141#9B2800E001000000" << int(Generation::V2_3);
+    QTest::newRow("0x9C on 0x141 cannot tell") << "141#9C326400F4010020" << -1;
+    QTest::newRow("0x9A, no plausible voltage") << "141#9A1E000000000000" << -1;
+    QTest::newRow("not a drive's ID") << "280#9A1E00F000000008" << -1;
+}
+
+void tst_CanLayout::generationHints()
+{
+    QFETCH(QString, frame);
+    QFETCH(int, generation);
+    frame.remove(QLatin1Char(' '));
+    const std::optional<Generation> g = can::generationHint(canFrame(qPrintable(frame)));
+    if (generation < 0)
+        QVERIFY(!g);
+    else
+        QCOMPARE(g, std::optional<Generation>(Generation(generation)));
 }
 
 void tst_CanLayout::replyDecodeFaults()

@@ -39,6 +39,10 @@ private slots:
     void recordRefusesOtherVersionsAndDlc_data();
     void recordRefusesOtherVersionsAndDlc();
     void candumpText();
+    void candumpLog_data();
+    void candumpLog();
+    void candumpRefused_data();
+    void candumpRefused();
     void direction_data();
     void direction();
     void everySplitPoint();
@@ -87,6 +91,70 @@ void tst_CanRecordParser::candumpText()
     QCOMPARE(record(0x1ABCDEF0, "01", CanRecord::Extended).candumpText(),
              QStringLiteral("1ABCDEF0#01"));
     QCOMPARE(record(0x7, "").candumpText(), QStringLiteral("007#"));
+}
+
+void tst_CanRecordParser::candumpLog_data()
+{
+    QTest::addColumn<QString>("line");
+    QTest::addColumn<quint32>("id");
+    QTest::addColumn<QByteArray>("data");
+    QTest::addColumn<int>("flags");
+    QTest::addColumn<qint64>("us");
+    QTest::addColumn<QString>("written"); ///< candumpLogLine("can0") of the record
+    QTest::newRow("candump -L") << "(1700000000.123456) can0 141#9C00000000000000" << 0x141u
+                                << hex("9C00000000000000") << 0 << qint64(1700000000123456)
+                                << "(1700000000.123456) can0 141#9C00000000000000";
+    QTest::newRow("bare, lower case") << "181#9c326400f4010020" << 0x181u << hex("9C326400F4010020")
+                                      << 0 << qint64(0) << "(0.000000) can0 181#9C326400F4010020";
+    QTest::newRow("short fraction")
+        << "(12.5) vcan0 280#64009CFF00000000" << 0x280u << hex("64009CFF00000000") << 0
+        << qint64(12500000) << "(12.500000) can0 280#64009CFF00000000";
+    QTest::newRow("29-bit ID") << "(1.000001) can0 1ABCDEF0#01" << 0x1ABCDEF0u << hex("01")
+                               << int(CanRecord::Extended) << qint64(1000001)
+                               << "(1.000001) can0 1ABCDEF0#01";
+    QTest::newRow("error frame") << "(2.000000) can0 20000040#0000000000000000" << 0x40u
+                                 << hex("0000000000000000") << int(CanRecord::Error)
+                                 << qint64(2000000) << "(2.000000) can0 20000040#0000000000000000";
+    QTest::newRow("no data") << "7FF#" << 0x7FFu << QByteArray() << 0 << qint64(0)
+                             << "(0.000000) can0 7FF#";
+}
+
+void tst_CanRecordParser::candumpLog()
+{
+    QFETCH(QString, line);
+    QFETCH(quint32, id);
+    QFETCH(QByteArray, data);
+    QFETCH(int, flags);
+    QFETCH(qint64, us);
+    QFETCH(QString, written);
+    const std::optional<CanRecord> r = CanRecord::fromCandump(line);
+    QVERIFY(r);
+    QCOMPARE(r->canId, id);
+    QCOMPARE(r->data, data);
+    QCOMPARE(int(r->flags), flags);
+    QCOMPARE(r->timestampUs, us);
+    QCOMPARE(r->candumpLogLine(QStringLiteral("can0")), written);
+    QCOMPARE(CanRecord::fromCandump(written), r); // what we write, we read back
+}
+
+void tst_CanRecordParser::candumpRefused_data()
+{
+    QTest::addColumn<QString>("line");
+    QTest::newRow("empty") << QString();
+    QTest::newRow("odd hex digits") << "141#9C0";
+    QTest::newRow("nine bytes") << "141#9C000000000000000A";
+    QTest::newRow("remote frame") << "141#R";
+    QTest::newRow("CAN FD") << "141##0112233";
+    QTest::newRow("11-bit ID beyond 0x7FF") << "800#00";
+    QTest::newRow("4-digit ID") << "0141#00";
+    QTest::newRow("no interface after the time") << "(1.0) 141#00";
+    QTest::newRow("RS485 hex") << "3E 9C 01 00 DB";
+}
+
+void tst_CanRecordParser::candumpRefused()
+{
+    QFETCH(QString, line);
+    QVERIFY(!CanRecord::fromCandump(line));
 }
 
 void tst_CanRecordParser::direction_data()
