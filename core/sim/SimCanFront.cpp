@@ -64,30 +64,29 @@ void SimCanFront::onEvent(const protocol::ParseEvent &event, QList<SimReply> &ou
 void SimCanFront::answer(SimDrive &drive, const protocol::Request &request, QList<SimReply> &out)
 {
     const protocol::DecodeContext ctx = contextOf(drive);
-    std::optional<protocol::Reply> reply;
+    std::optional<protocol::can::CanData> data;
     if (request.command == protocol::Command::ClearAngle &&
         ctx.generation == protocol::Generation::V2_3) {
         // "Not implemented" on the old generation: the echo comes, the angle stays.
-        reply = protocol::Reply{request.command, request.id, protocol::Acknowledged{}};
+        data = protocol::can::CanData{protocol::can::replyCanId(request.id, ctx.generation),
+                                      protocol::can::encodeSetPosition(request.id, 0).bytes};
     } else if (protocol::CommandTable::availableOn(request.command, ctx)) {
-        reply = drive.handle(request);
+        if (const std::optional<protocol::Reply> reply = drive.handle(request)) {
+            const protocol::can::CanEncodeResult encoded = protocol::can::encodeReply(*reply, ctx);
+            data = encoded.data;
+        }
     }
-    if (!reply) {
-        ++m_counters.unanswered;
-        return;
-    }
-    protocol::can::CanEncodeResult encoded = protocol::can::encodeReply(*reply, ctx);
-    if (!encoded.ok()) {
+    if (!data) {
         ++m_counters.unanswered;
         return;
     }
     if (m_replyBase)
-        encoded.data->canId =
+        data->canId =
             (*m_replyBase == protocol::can::IdBase::Base180 ? protocol::can::kReplyBaseV236
                                                             : protocol::can::kRequestBase) +
             request.id;
     SimReply r;
-    r.bytes = protocol::CanRecord::of(*encoded.data).encode();
+    r.bytes = protocol::CanRecord::of(*data).encode();
     r.delaySeconds = m_bus.replyDelay();
     r.id = request.id;
     r.command = request.command;
