@@ -50,7 +50,7 @@ if find "$root" -name 'libQt6*' | grep -q .; then
 fi
 depends=$(dpkg-deb -f "$deb" Depends)
 echo "Depends: $depends"
-for lib in libqt6core6 libqt6serialport6 libqt6widgets6 libqt6charts6 libqt6svg6 qt6-qpa-plugins; do
+for lib in libqt6core6 libqt6serialport6 libqt6serialbus6 libqt6widgets6 libqt6charts6 libqt6svg6 qt6-qpa-plugins; do
     case "$depends" in *"$lib"*) ;; *) echo "Depends lacks $lib"; fail=1 ;; esac
 done
 "$root/usr/bin/lkctl" --version

@@ -6,6 +6,8 @@ set -euo pipefail
 packages=(
     build-essential cmake
     qt6-base-dev qt6-serialport-dev qt6-charts-dev libqt6opengl6-dev qt6-svg-dev
+    # CAN through Qt SerialBus; libqt6serialbus6 carries the socketcan and virtualcan plugins
+    qt6-serialbus-dev libqt6serialbus6
     qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-translations-l10n
     qt6-qpa-plugins libgl-dev
     clang-format xvfb xauth appstream desktop-file-utils dpkg-dev file go-md2man

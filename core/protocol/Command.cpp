@@ -114,4 +114,26 @@ bool CommandTable::availableOn(Command command, Generation generation)
     return i->generations & (generation == Generation::V2_3 ? kOnV23 : kOnV235);
 }
 
+bool CommandTable::availableOn(Command command, const DecodeContext &context)
+{
+    if (!availableOn(command, context.generation))
+        return false;
+    if (context.link == Link::Rs485)
+        return true;
+    switch (command) {
+    case Command::ReadModel:      // CAN has no model read in either generation
+    case Command::ClearTurnCount: // CAN V2.36 clears the turn count with 0x80 instead
+    case Command::ReadParam:      // CAN V2.36 has 0xC0/0xC1 in their place
+    case Command::WriteParamRam:
+    case Command::WriteParamRom:
+        return false;
+    case Command::ClearAngle:
+        // The old CAN document marks 0x95 "not implemented": the drive echoes it and the
+        // angle stays. On V2.36 it sets the position (to 0 for clear_angle).
+        return context.generation == Generation::V2_35;
+    default:
+        return true;
+    }
+}
+
 } // namespace lk::protocol

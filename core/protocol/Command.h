@@ -82,8 +82,12 @@ public:
     static std::optional<Command> fromName(const QString &name);
     static QString name(Command command);
     static QString codeText(quint8 code); ///< "0xA2"
-    /// Whether a drive of `generation` has `command` (nothing it lacks is ever sent to it).
+    /// Whether an RS485 drive of `generation` has `command` (nothing it lacks is ever sent to
+    /// it).
     static bool availableOn(Command command, Generation generation);
+    /// Whether a drive of `context`'s link and generation has `command`: on CAN there is no
+    /// 0x12, 0x93 or 0x40..0x44; the old CAN generation has no working 0x95 (docs/CAN.md).
+    static bool availableOn(Command command, const DecodeContext &context);
 };
 
 } // namespace lk::protocol

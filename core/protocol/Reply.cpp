@@ -1,5 +1,6 @@
 #include "Reply.h"
 
+#include "CanLayout.h"
 #include "WireBytes.h"
 
 namespace lk::protocol {
@@ -228,6 +229,8 @@ Frame Reply::toFrame() const
 
 ReplyDecodeResult decodeReply(const Frame &frame, const DecodeContext &context)
 {
+    if (context.link == Link::Can)
+        return can::decodeReply(frame, context);
     ReplyDecodeResult result;
     const CommandInfo *info = CommandTable::find(frame.command);
     if (!info) {

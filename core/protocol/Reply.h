@@ -45,7 +45,8 @@ struct ReplyDecodeResult {
 };
 
 /// Decode a reply (or echo) frame. The context says whether torque fields are iq or power,
-/// and the generation picks the 0x9A/0x9B layout and the current scales.
+/// the generation picks the 0x9A/0x9B layout and the current scales, and the link the layout
+/// (on CAN, `frame.data` is B1..B7: can::decodeReply).
 /// A frame whose LEN is a request's (not a reply's) gives WrongDirection; short frames are
 /// never decoded as zeros.
 ReplyDecodeResult decodeReply(const Frame &frame, const DecodeContext &context = {});

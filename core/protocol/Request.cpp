@@ -1,5 +1,6 @@
 #include "Request.h"
 
+#include "CanLayout.h"
 #include "WireBytes.h"
 
 namespace lk::protocol {
@@ -178,6 +179,13 @@ RequestDecodeResult decodeRequest(const Frame &frame)
     }
     result.request = Request{info->command, frame.id, decodePayload(info->command, frame.data)};
     return result;
+}
+
+RequestDecodeResult decodeRequest(const Frame &frame, const DecodeContext &context)
+{
+    if (context.link == Link::Can)
+        return can::decodeRequest(frame, context);
+    return decodeRequest(frame);
 }
 
 } // namespace lk::protocol

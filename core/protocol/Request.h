@@ -49,6 +49,8 @@ struct RequestDecodeResult {
     DecodeError error = DecodeError::None;
 };
 RequestDecodeResult decodeRequest(const Frame &frame);
+/// The same on `context.link`: on CAN, `frame.data` is B1..B7 (can::decodeRequest).
+RequestDecodeResult decodeRequest(const Frame &frame, const DecodeContext &context);
 
 /// `[ParamID, six value bytes]` (0x40 reply, 0x42/0x44 request) as a ParameterValue; `d`
 /// holds at least 7 bytes.

@@ -5,6 +5,7 @@
 
 #include <QtCore/QCoreApplication>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lk::protocol::build {
@@ -177,6 +178,22 @@ BuildResult speed(int id, double speedDps)
     if (!raw)
         return refuse(FieldId::SpeedDps, speedDps);
     return done(Command::Speed, id, SpeedCommand{static_cast<qint32>(*raw)});
+}
+
+BuildResult speed(int id, double speedDps, const DecodeContext &context, double torqueLimitA)
+{
+    BuildResult r = speed(id, speedDps);
+    if (!r.ok() || context.link != Link::Can || context.generation != Generation::V2_35)
+        return r;
+    const double lsb = iqCommandAmpsPerLsb(context);
+    const double raw = std::isfinite(torqueLimitA) ? std::floor(torqueLimitA / lsb) : 0;
+    if (raw < 1)
+        return fail(QStringLiteral("torque_limit_a"),
+                    QStringLiteral("%1..%2 A").arg(lsb, 0, 'g', 6).arg(2048 * lsb, 0, 'g', 6),
+                    got(torqueLimitA));
+    auto &c = std::get<SpeedCommand>(r.request->payload);
+    c.iqLimitRaw = static_cast<qint16>(std::min(raw, 2048.0));
+    return r;
 }
 
 namespace {

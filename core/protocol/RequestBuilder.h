@@ -24,7 +24,12 @@ BuildResult openLoop(int id, qint64 power);
 /// 33/4096 A, MG 66/4096 A per LSB. The raw value stays within +-2000, the stricter of both
 /// generations. The only torque builder: a torque is never built without knowing the drive.
 BuildResult torque(int id, double iqA, const DecodeContext &context);
-BuildResult speed(int id, double speedDps);         ///< int32 of 0.01 dps
+BuildResult speed(int id, double speedDps); ///< int32 of 0.01 dps
+/// A speed command for the drive of `context`. On CAN V2.36 the frame carries a torque limit
+/// (docs/CAN.md): `torqueLimitA`, the soft limits' max torque, in iq units rounded down
+/// (never above what the user allowed), at most 2048; a limit under one iq unit is refused,
+/// as 0 is never sent. Other dialects have no such field and ignore it.
+BuildResult speed(int id, double speedDps, const DecodeContext &context, double torqueLimitA);
 BuildResult multiPosition(int id, double angleDeg); ///< int64 of 0.01 deg
 BuildResult multiPosition(int id, double angleDeg, double maxSpeedDps);
 BuildResult singlePosition(int id, SpinDirection dir, double angleDeg); ///< 0..359.99 deg

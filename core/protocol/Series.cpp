@@ -44,4 +44,27 @@ std::optional<Generation> generationFromName(const QString &name)
     return std::nullopt;
 }
 
+QString linkName(Link l)
+{
+    return l == Link::Can ? QStringLiteral("can") : QStringLiteral("rs485");
+}
+
+std::optional<Link> linkFromName(const QString &name)
+{
+    const QString n = name.trimmed().toLower();
+    for (Link l : {Link::Rs485, Link::Can}) {
+        if (n == linkName(l))
+            return l;
+    }
+    return std::nullopt;
+}
+
+QString dialectName(const DecodeContext &context)
+{
+    if (context.link == Link::Can)
+        return context.generation == Generation::V2_3 ? QStringLiteral("CAN (old)")
+                                                      : QStringLiteral("CAN V2.36");
+    return QStringLiteral("RS485 ") + generationName(context.generation);
+}
+
 } // namespace lk::protocol

@@ -1,34 +1,12 @@
 #pragma once
 
-#include "Frame.h"
+#include "FrameParser.h"
 
 #include <QtCore/QByteArray>
 
-#include <functional>
-
 namespace lk::protocol {
 
-/// What went wrong with some bytes of a stream (names as in CLI.md).
-enum class ParseError {
-    BadHeaderChecksum,
-    BadDataChecksum,
-    BadLength,      ///< LEN over 60, or a LEN the command never carries (checksums were fine)
-    UnknownCommand, ///< checksums fine, command code not in the table
-    Garbage,        ///< bytes skipped while looking for the next 0x3E
-    Truncated,      ///< the stream ended inside a frame
-};
-const char *parseErrorName(ParseError e); ///< "bad_header_checksum", ...
-
-/// One result of parsing: a valid frame, or a fault with the bytes it covers.
-struct ParseEvent {
-    bool isFrame = false;
-    Frame frame; ///< set for frames, and for UnknownCommand/BadLength (checksums were valid)
-    FrameDirection direction = FrameDirection::Request; ///< meaningful when isFrame
-    ParseError error = ParseError::Garbage;             ///< meaningful when !isFrame
-    QByteArray bytes;                                   ///< the raw bytes this event consumed
-};
-
-/// Incremental parser for a byte stream of LK frames.
+/// Incremental parser for a byte stream of LK RS485 frames (the RS485 FrameParser).
 ///
 /// Feed it chunks of any size; it calls the sink for every frame or fault, in stream order,
 /// and resynchronises on the next 0x3E after any fault. Every input byte is reported exactly
@@ -39,24 +17,19 @@ struct ParseEvent {
 /// A run of garbage is reported when the next 0x3E ends it (or at 4 KiB, or at finish()), so
 /// the events do not depend on how the input was chunked. Events for BadLength,
 /// UnknownCommand and BadDataChecksum carry the frame's command and ID.
-class StreamParser {
+class StreamParser : public FrameParser {
 public:
-    using Sink = std::function<void(const ParseEvent &)>;
-
-    void feed(const char *data, qsizetype size, const Sink &sink);
-    void feed(const QByteArray &bytes, const Sink &sink)
-    {
-        feed(bytes.constData(), bytes.size(), sink);
-    }
+    using FrameParser::feed;
+    void feed(const char *data, qsizetype size, const Sink &sink) override;
     /// End of stream: a pending partial frame is reported as Truncated.
-    void finish(const Sink &sink);
+    void finish(const Sink &sink) override;
     /// Drop pending bytes without reporting them (e.g. after reopening a port).
-    void reset()
+    void reset() override
     {
         m_buf.clear();
         m_garbage.clear();
     }
-    qsizetype pendingBytes() const { return m_buf.size() + m_garbage.size(); }
+    qsizetype pendingBytes() const override { return m_buf.size() + m_garbage.size(); }
 
 private:
     void process(const Sink &sink);
@@ -68,5 +41,8 @@ private:
     QByteArray m_buf;     ///< unconsumed bytes: at most one partial frame plus one input slice
     QByteArray m_garbage; ///< the current run of garbage, reported when it ends (or per 4 KiB)
 };
+
+/// The seam's name for it: the parser of the RS485 link.
+using Rs485StreamParser = StreamParser;
 
 } // namespace lk::protocol

@@ -179,7 +179,16 @@ struct TorqueCommand {
     double iqA() const { return iqRaw * ampsPerLsb; }
 };
 struct SpeedCommand {
+    SpeedCommand() = default;
+    explicit SpeedCommand(qint32 speed, std::optional<qint16> iqLimit = std::nullopt)
+        : speedRaw(speed), iqLimitRaw(iqLimit)
+    {
+    }
     qint32 speedRaw = 0; ///< 0.01 dps
+    /// The torque limit CAN V2.36 carries in 0xA2 (iq units, 1..2048), taken from the soft
+    /// limits; no other dialect has the field. A CAN V2.36 0xA2 is never sent without one:
+    /// whether a limit of 0 means "unlimited" or "no torque" is unknown (docs/CAN.md).
+    std::optional<qint16> iqLimitRaw;
     double speedDps() const { return speedRaw * kCentiUnits; }
 };
 struct MultiPositionCommand {

@@ -54,6 +54,11 @@ QString baseText(TransportError::Kind kind, const QString &port, int baud)
                    "lk::transport::PortErrorText",
                    "Serial port %1 failed (input/output error). Check the cable and the adapter.")
             .arg(port);
+    case Kind::CanPluginMissing:
+    case Kind::CanBusOff:
+    case Kind::CanErrorPassive:
+    case Kind::CanNoAcknowledge:
+        return {}; // a CAN link's words are CanTransport's: no serial port has these
     }
     return {};
 }

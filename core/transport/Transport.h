@@ -17,6 +17,10 @@ struct TransportError {
         BadSettings,      ///< baud or framing refused by the driver
         NotSerialDevice,  ///< the path is a file, a directory or a device that is no tty
         IoError,          ///< any other read/write failure
+        CanPluginMissing, ///< Qt has no CAN plugin of that name (CanTransport)
+        CanBusOff,        ///< the CAN controller stopped sending after too many errors
+        CanErrorPassive,  ///< many frames fail on the CAN bus; the link is still open
+        CanNoAcknowledge, ///< nobody acknowledged a CAN frame: no drive, or another bit rate
     };
     Kind kind = Kind::None;
     /// A complete sentence with the fix where there is one, translated where it is made:

@@ -381,6 +381,37 @@
     </message>
 </context>
 <context>
+    <name>lk::protocol::can::CanLayout</name>
+    <message>
+        <source>got %1 dps: CAN carries whole dps</source>
+        <translation>实际为 %1 dps：CAN 只能传送整数 dps</translation>
+    </message>
+    <message>
+        <source>got %1</source>
+        <translation>实际为 %1</translation>
+    </message>
+    <message>
+        <source>none given: CAN V2.36 speed commands carry the torque limit of the soft limits</source>
+        <translation>未给出：CAN V2.36 的速度命令必须带有软限位中的转矩限制</translation>
+    </message>
+    <message>
+        <source>got %1 deg: CAN carries an int32 angle</source>
+        <translation>实际为 %1 deg：CAN 的角度为 int32</translation>
+    </message>
+    <message>
+        <source>got %1 deg</source>
+        <translation>实际为 %1 deg</translation>
+    </message>
+    <message>
+        <source>%1 is not on this link</source>
+        <translation>%1 在此链路上不可用</translation>
+    </message>
+    <message>
+        <source>got %1 for ID %2</source>
+        <translation>ID %2 实际为 %1</translation>
+    </message>
+</context>
+<context>
     <name>lk::record::BusReport</name>
     <message>
         <source>ID</source>
@@ -889,6 +920,41 @@
     <message>
         <source>setpoint %1 of %2 (%3, %4 at %5 s): %6</source>
         <translation>第 %1 个设定点（共 %2 个；%3，%4，于 %5 s）：%6</translation>
+    </message>
+</context>
+<context>
+    <name>lk::transport::CanTransport</name>
+    <message>
+        <source>There is no CAN plugin &quot;%1&quot;. Qt finds: %2. On Debian the plugins come with libqt6serialbus6; peakcan also needs PEAK&apos;s PCAN-Basic library.</source>
+        <translation>没有名为“%1”的 CAN 插件。Qt 找到的插件：%2。在 Debian 上这些插件随 libqt6serialbus6 一起安装；peakcan 还需要 PEAK 的 PCAN-Basic 库。</translation>
+    </message>
+    <message>
+        <source>%1 cannot be opened (%2). `ip link show` lists the CAN interfaces; bring one up with: %3</source>
+        <translation>无法打开 %1（%2）。`ip link show` 可列出 CAN 接口；用以下命令启用接口：%3</translation>
+    </message>
+    <message>
+        <source>%1 did not take a frame (%2). The link stays open; if this repeats, check that the interface is up: %3</source>
+        <translation>%1 未能接收一帧（%2）。链路保持打开；如果反复出现，请检查接口是否已启用：%3</translation>
+    </message>
+    <message>
+        <source>%1 is bus-off: the CAN controller stopped sending after too many errors. Usual causes: a bit rate other than the drives&apos; (%2 bit/s here; LK drives default to 1000000), a missing 120 ohm terminator at an end of the bus, or CAN-H and CAN-L swapped. Fix the cause, then restart the interface: ip link set %3 down &amp;&amp; ip link set %3 type can bitrate %2 restart-ms 100 &amp;&amp; ip link set %3 up</source>
+        <translation>%1 处于总线关闭（bus-off）状态：CAN 控制器因错误过多而停止发送。常见原因：比特率与驱动器不一致（此处为 %2 bit/s；LK 驱动器默认 1000000）、总线一端缺少 120 欧终端电阻，或 CAN-H 与 CAN-L 接反。排除原因后重启接口：ip link set %3 down &amp;&amp; ip link set %3 type can bitrate %2 restart-ms 100 &amp;&amp; ip link set %3 up</translation>
+    </message>
+    <message>
+        <source>%1 is error-passive: many frames fail on the CAN bus. Check that the drives use %2 bit/s, that both ends of the bus have a 120 ohm terminator, and the wiring of CAN-H, CAN-L and ground.</source>
+        <translation>%1 处于错误被动（error-passive）状态：CAN 总线上有大量帧失败。请检查驱动器是否使用 %2 bit/s、总线两端是否各有一个 120 欧终端电阻，以及 CAN-H、CAN-L 和地线的接线。</translation>
+    </message>
+    <message>
+        <source>Nobody acknowledged a frame on %1: no drive is powered on the bus, the drives use another bit rate than %2 bit/s, or CAN-H/CAN-L are not connected. Check the drives&apos; power, the wiring and the bit rate.</source>
+        <translation>%1 上的帧没有任何节点应答（ACK）：总线上没有通电的驱动器、驱动器的比特率不是 %2 bit/s，或 CAN-H/CAN-L 未接好。请检查驱动器电源、接线和比特率。</translation>
+    </message>
+    <message>
+        <source>The bit rate of %1 could not be set through Qt (%2). If the interface already runs at %3 bit/s nothing needs doing; otherwise set it as root: %4</source>
+        <translation>无法通过 Qt 设置 %1 的比特率（%2）。如果接口已在 %3 bit/s 下运行则无需处理；否则请以 root 身份设置：%4</translation>
+    </message>
+    <message>
+        <source>The CAN interface %1 went away (%2).</source>
+        <translation>CAN 接口 %1 已消失（%2）。</translation>
     </message>
 </context>
 <context>

@@ -22,6 +22,8 @@ private slots:
     void unknownNames();
     void codeText_data();
     void codeText();
+    void availabilityByLink_data();
+    void availabilityByLink();
 };
 
 namespace {
@@ -215,6 +217,51 @@ void tst_CommandTable::codeText()
     QFETCH(int, code);
     QFETCH(QString, text);
     QCOMPARE(CommandTable::codeText(static_cast<quint8>(code)), text);
+}
+
+void tst_CommandTable::availabilityByLink_data()
+{
+    // docs/CAN.md section 3, written out by hand: on RS485 V2.3, RS485 V2.35, CAN old, CAN V2.36.
+    QTest::addColumn<int>("code");
+    QTest::addColumn<QString>("on"); ///< four flags: "1" = available
+    QTest::newRow("0x12 read_model") << 0x12 << "1100";
+    QTest::newRow("0x30 read_pid") << 0x30 << "1010";
+    QTest::newRow("0x32 write_pid_rom") << 0x32 << "1010";
+    QTest::newRow("0x34 write_accel_ram") << 0x34 << "1010";
+    QTest::newRow("0x40 read_param") << 0x40 << "0100";
+    QTest::newRow("0x44 write_param_rom") << 0x44 << "0100";
+    QTest::newRow("0x91 write_encoder_offset") << 0x91 << "1010";
+    QTest::newRow("0x93 clear_turn_count") << 0x93 << "0100";
+    QTest::newRow("0x95 clear_angle") << 0x95 << "1101";
+    QTest::newRow("0x8C brake") << 0x8C << "0101";
+    QTest::newRow("0x19 write_zero_rom") << 0x19 << "1111";
+    QTest::newRow("0x80 motor_off") << 0x80 << "1111";
+    QTest::newRow("0x92 read_multi_turn") << 0x92 << "1111";
+    QTest::newRow("0x9A read_state1") << 0x9A << "1111";
+    QTest::newRow("0xA2 speed") << 0xA2 << "1111";
+    QTest::newRow("0xA8 increment_position_limited") << 0xA8 << "1111";
+}
+
+void tst_CommandTable::availabilityByLink()
+{
+    using lk::protocol::DecodeContext;
+    using lk::protocol::Generation;
+    using lk::protocol::Link;
+    using lk::protocol::Series;
+    QFETCH(int, code);
+    QFETCH(QString, on);
+    const Command c = CommandTable::find(quint8(code))->command;
+    const DecodeContext contexts[] = {{Series::MF, Generation::V2_3, Link::Rs485},
+                                      {Series::MF, Generation::V2_35, Link::Rs485},
+                                      {Series::MF, Generation::V2_3, Link::Can},
+                                      {Series::MF, Generation::V2_35, Link::Can}};
+    for (int i = 0; i < 4; ++i)
+        QCOMPARE(CommandTable::availableOn(c, contexts[i]), on[i] == QLatin1Char('1'));
+    // On RS485 the context answers as the generation alone.
+    QCOMPARE(CommandTable::availableOn(c, contexts[0]),
+             CommandTable::availableOn(c, Generation::V2_3));
+    QCOMPARE(CommandTable::availableOn(c, contexts[1]),
+             CommandTable::availableOn(c, Generation::V2_35));
 }
 
 QTEST_APPLESS_MAIN(tst_CommandTable)

@@ -16,6 +16,7 @@ class tst_Series : public QObject {
 private slots:
     void seriesNames_data();
     void seriesNames();
+    void linksAndDialects();
 };
 
 void tst_Series::seriesNames_data()
@@ -50,6 +51,28 @@ void tst_Series::seriesNames()
     DecodeContext ctx;
     ctx.series = *s;
     QCOMPARE(ctx.reportsPower(), power);
+}
+
+void tst_Series::linksAndDialects()
+{
+    using proto::Generation;
+    using proto::Link;
+    QCOMPARE(proto::linkName(Link::Rs485), QStringLiteral("rs485"));
+    QCOMPARE(proto::linkName(Link::Can), QStringLiteral("can"));
+    QCOMPARE(proto::linkFromName(QStringLiteral(" CAN ")), std::optional<Link>(Link::Can));
+    QCOMPARE(proto::linkFromName(QStringLiteral("rs485")), std::optional<Link>(Link::Rs485));
+    QVERIFY(!proto::linkFromName(QStringLiteral("canfd")));
+    DecodeContext ctx; // RS485 unless told otherwise: every existing caller keeps its meaning
+    QCOMPARE(int(ctx.link), int(Link::Rs485));
+    QVERIFY(!ctx.onCan());
+    QCOMPARE(proto::dialectName(ctx), QStringLiteral("RS485 v2.3"));
+    ctx.generation = Generation::V2_35;
+    QCOMPARE(proto::dialectName(ctx), QStringLiteral("RS485 v2.35"));
+    ctx.link = Link::Can;
+    QVERIFY(ctx.onCan());
+    QCOMPARE(proto::dialectName(ctx), QStringLiteral("CAN V2.36"));
+    ctx.generation = Generation::V2_3;
+    QCOMPARE(proto::dialectName(ctx), QStringLiteral("CAN (old)"));
 }
 
 QTEST_APPLESS_MAIN(tst_Series)

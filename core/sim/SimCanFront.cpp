@@ -1,0 +1,97 @@
+#include "SimCanFront.h"
+
+#include "protocol/CanRecord.h"
+
+namespace lk::sim {
+
+SimCanFront::SimCanFront(SimBus &bus) : m_bus(bus)
+{
+    const auto other = [this](const protocol::CanRecord &) { ++m_counters.otherFrames; };
+    m_parser.setErrorFrameSink(other);
+    m_parser.setOtherFrameSink(other);
+}
+
+protocol::DecodeContext SimCanFront::contextOf(const SimDrive &drive)
+{
+    return protocol::DecodeContext{drive.series(), drive.generation(), protocol::Link::Can};
+}
+
+QList<SimReply> SimCanFront::receive(const QByteArray &records, double nowSeconds)
+{
+    m_bus.advanceTo(nowSeconds);
+    QList<SimReply> out;
+    m_parser.feed(records, [&](const protocol::ParseEvent &e) { onEvent(e, out); });
+    return out;
+}
+
+void SimCanFront::onEvent(const protocol::ParseEvent &event, QList<SimReply> &out)
+{
+    if (!event.isFrame) {
+        ++m_counters.faults;
+        return;
+    }
+    if (event.direction != protocol::FrameDirection::Request)
+        return; // another drive's reply on 0x180+ID: not for us
+    SimDrive *drive = m_bus.drive(event.frame.id);
+    if (!drive) {
+        ++m_counters.unanswered;
+        return;
+    }
+    if (m_bus.faults().isSilenced(drive->id())) {
+        m_bus.faults().countSilenced();
+        return;
+    }
+    const protocol::DecodeContext ctx = contextOf(*drive);
+    // The old generation lacks a working 0x95 but still echoes it: answer() does so.
+    const bool oldClearAngle = event.frame.command == quint8(protocol::Command::ClearAngle) &&
+                               ctx.generation == protocol::Generation::V2_3;
+    const protocol::RequestDecodeResult decoded =
+        oldClearAngle ? protocol::RequestDecodeResult{protocol::Request{
+                            protocol::Command::ClearAngle, event.frame.id, protocol::NoPayload{}}}
+                      : protocol::decodeRequest(event.frame, ctx);
+    if (!decoded.request) {
+        // Commands the drive's CAN generation lacks decode as unknown: the drive is silent.
+        if (decoded.error == protocol::DecodeError::UnknownCommand)
+            ++m_counters.unanswered;
+        else
+            ++m_counters.notRequests;
+        return;
+    }
+    ++m_counters.requests;
+    answer(*drive, *decoded.request, out);
+}
+
+void SimCanFront::answer(SimDrive &drive, const protocol::Request &request, QList<SimReply> &out)
+{
+    const protocol::DecodeContext ctx = contextOf(drive);
+    std::optional<protocol::can::CanData> data;
+    if (request.command == protocol::Command::ClearAngle &&
+        ctx.generation == protocol::Generation::V2_3) {
+        // "Not implemented" on the old generation: the echo comes, the angle stays.
+        data = protocol::can::CanData{protocol::can::replyCanId(request.id, ctx.generation),
+                                      protocol::can::encodeSetPosition(request.id, 0).bytes};
+    } else if (protocol::CommandTable::availableOn(request.command, ctx)) {
+        if (const std::optional<protocol::Reply> reply = drive.handle(request)) {
+            const protocol::can::CanEncodeResult encoded = protocol::can::encodeReply(*reply, ctx);
+            data = encoded.data;
+        }
+    }
+    if (!data) {
+        ++m_counters.unanswered;
+        return;
+    }
+    if (m_replyBase)
+        data->canId =
+            (*m_replyBase == protocol::can::IdBase::Base180 ? protocol::can::kReplyBaseV236
+                                                            : protocol::can::kRequestBase) +
+            request.id;
+    SimReply r;
+    r.bytes = protocol::CanRecord::of(*data).encode();
+    r.delaySeconds = m_bus.replyDelay();
+    r.id = request.id;
+    r.command = request.command;
+    ++m_counters.replies;
+    out.append(r);
+}
+
+} // namespace lk::sim

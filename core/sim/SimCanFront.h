@@ -1,0 +1,55 @@
+#pragma once
+
+#include "SimBus.h"
+
+#include "protocol/CanLayout.h"
+#include "protocol/CanRecordParser.h"
+
+#include <QtCore/QByteArray>
+#include <QtCore/QHash>
+#include <QtCore/QList>
+
+#include <optional>
+
+namespace lk::sim {
+
+/// Counters of a SimCanFront.
+struct SimCanCounters {
+    qint64 requests = 0;    ///< drive frames read as requests
+    qint64 replies = 0;     ///< records sent back
+    qint64 faults = 0;      ///< records that were not frames (garbage, bad DLC, unknown B0)
+    qint64 notRequests = 0; ///< frames that do not decode as a request of the drive's dialect
+    qint64 unanswered = 0;  ///< absent IDs, commands the drive lacks on CAN
+    qint64 otherFrames = 0; ///< frames of no drive (0x280 included) and error frames
+};
+
+/// The CAN face of a SimBus: CAN records (protocol/CanRecord.h) in, the addressed drive's own
+/// typed handling (SimDrive::handle), CAN records out. A drive of generation V2_3 is an old
+/// CAN drive, V2_35 a V2.36 one; both keep their physics and faults. A CAN drive never
+/// answers what its generation lacks on CAN (0x12, 0x93, 0x40..0x44), and an old drive echoes
+/// 0x95 without changing its angle (docs/CAN.md section 9). Replies go out on the documented
+/// ID of the drive's generation unless setReplyBase() says otherwise. Not thread-safe; time is
+/// the caller's, as for SimBus.
+class SimCanFront {
+public:
+    explicit SimCanFront(SimBus &bus);
+
+    /// Host records in; reply records out, in order. Advances the bus to nowSeconds first.
+    QList<SimReply> receive(const QByteArray &records, double nowSeconds);
+    /// Answer on 0x140+ID or 0x180+ID whatever the generation (nullopt: as documented).
+    void setReplyBase(std::optional<protocol::can::IdBase> base) { m_replyBase = base; }
+    const SimCanCounters &counters() const { return m_counters; }
+    /// The context a drive of the bus is read with on CAN.
+    static protocol::DecodeContext contextOf(const SimDrive &drive);
+
+private:
+    void onEvent(const protocol::ParseEvent &event, QList<SimReply> &out);
+    void answer(SimDrive &drive, const protocol::Request &request, QList<SimReply> &out);
+
+    SimBus &m_bus;
+    protocol::CanRecordParser m_parser{protocol::LinkEnd::Drive};
+    std::optional<protocol::can::IdBase> m_replyBase;
+    SimCanCounters m_counters;
+};
+
+} // namespace lk::sim
