@@ -1,39 +1,15 @@
 #include "SessionRecorder.h"
 
 #include <QtCore/QCoreApplication>
-#include <QtCore/QFile>
-
-#include <cerrno>
-#include <cstring>
-
-#include <fcntl.h>
-#include <unistd.h>
 
 namespace lk::recording {
 
 namespace {
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("lk::recording::SessionRecorder", text);
-}
-
 /// What a queued record costs in memory, roughly: its bytes and the record itself.
 qsizetype queuedSize(const RecordEvent &e)
 {
     return e.bytes.size() + qsizetype(sizeof(RecordEvent));
-}
-
-RecordingError writeError(int error, const QString &path)
-{
-    const bool full = error == ENOSPC || error == EDQUOT || error == EFBIG;
-    return RecordingError{full ? RecordingError::Kind::DiskFull : RecordingError::Kind::WriteFailed,
-                          -1,
-                          (full ? tr("Recording stopped: the disk holding %1 is full (%2). The "
-                                     "session goes on without recording.")
-                                : tr("Recording stopped: cannot write %1 (%2). The session goes "
-                                     "on without recording."))
-                              .arg(path, QString::fromLocal8Bit(std::strerror(error)))};
 }
 
 } // namespace
@@ -54,19 +30,11 @@ std::optional<RecordingError> SessionRecorder::start(const QString &path,
     stop();
     m_path = path;
     m_failure.reset();
-    m_fd =
-        ::open(QFile::encodeName(path).constData(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (m_fd < 0) {
-        const int error = errno;
-        return RecordingError{RecordingError::Kind::OpenFailed, -1,
-                              tr("Cannot create the recording %1: %2.")
-                                  .arg(path, QString::fromLocal8Bit(std::strerror(error)))};
-    }
+    if (auto error = m_file.create(path))
+        return error;
     m_encoder = RecordEncoder{};
-    if (!writeBytes(RecordEncoder::encodeHeader(header))) {
-        const RecordingError error = *m_failure;
-        ::close(m_fd);
-        m_fd = -1;
+    if (auto error = m_file.write(RecordEncoder::encodeHeader(header))) {
+        m_file.close();
         return error;
     }
     m_stopRequested = false;
@@ -86,9 +54,7 @@ void SessionRecorder::stop()
     m_wake.notify_all();
     m_thread.join();
     m_running = false;
-    if (m_fd >= 0)
-        ::close(m_fd);
-    m_fd = -1;
+    m_file.close();
 }
 
 std::optional<RecordingError> SessionRecorder::failure() const
@@ -132,20 +98,15 @@ void SessionRecorder::append(RecordEvent event)
 
 bool SessionRecorder::writeBytes(const QByteArray &bytes)
 {
-    qsizetype done = 0;
-    while (done < bytes.size()) {
-        const ssize_t n = ::write(m_fd, bytes.constData() + done, size_t(bytes.size() - done));
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0) {
-            const int error = n < 0 ? errno : ENOSPC;
-            std::lock_guard<std::mutex> lock(m_mutex);
-            m_failure = writeError(error, m_path);
-            return false;
-        }
-        done += n;
-    }
-    return true;
+    auto error = m_file.write(bytes);
+    if (!error)
+        return true;
+    error->message +=
+        QLatin1Char(' ') + QCoreApplication::translate("lk::recording::SessionRecorder",
+                                                       "The session goes on without recording.");
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_failure = std::move(error);
+    return false;
 }
 
 void SessionRecorder::encodeBatch(std::deque<RecordEvent> &batch, quint64 droppedBytes,

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "RecordEncoder.h"
+#include "RecordFile.h"
 #include "RecordSink.h"
 
 #include <QtCore/QObject>
@@ -61,7 +62,7 @@ private:
 
     Limits m_limits;
     QString m_path;
-    int m_fd = -1;
+    RecordFile m_file;
     RecordEncoder m_encoder;
     std::thread m_thread;
     mutable std::mutex m_mutex;
