@@ -6,13 +6,10 @@
 
 namespace lk::recording {
 
-/// The decode context of `id` in a snapshot (unknown series decodes as MF).
-protocol::DecodeContext decodeContextOf(const ContextSnapshot &snapshot, int id);
-
 /// Records as the Traffic view shows them: tx chunks parsed into Sent events, rx chunks into
-/// Frame and Fault events (each direction its own stream), link events and drops as Notes;
-/// every frame carries the decode context its ID had at that moment. `context`: the one in
-/// force before the first record.
+/// Frame and Fault events (RecordedFrameParser), link events and drops as Notes; every frame
+/// carries the decode context its ID had at that moment. `context`: the one in force before
+/// the first record.
 bus::TrafficBatch trafficEventsOf(const QVector<RecordEvent> &records, ContextSnapshot context);
 
 } // namespace lk::recording
