@@ -5,6 +5,7 @@
 #include "DecodeCommand.h"
 #include "Dispatcher.h"
 #include "EncodeCommand.h"
+#include "ExportCommand.h"
 #include "InfoCommand.h"
 #include "MonitorCommand.h"
 #include "MotorStateCommand.h"
@@ -53,5 +54,6 @@ int main(int argc, char *argv[])
     dispatcher.add(std::make_unique<MonitorCommand>());
     dispatcher.add(std::make_unique<EncodeCommand>());
     dispatcher.add(std::make_unique<DecodeCommand>());
+    dispatcher.add(std::make_unique<ExportCommand>());
     return dispatcher.run(QCoreApplication::arguments().mid(1), console);
 }
