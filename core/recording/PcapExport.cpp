@@ -1,5 +1,6 @@
 #include "PcapExport.h"
 
+#include "RecordEncoder.h"
 #include "RecordedFrameParser.h"
 #include "Varint.h"
 
@@ -49,9 +50,20 @@ qint64 PcapExport::write(RecordingReader &reader, QIODevice &out)
         out.write(packet(startNs + f.timeNs, f.transmitted, kind, f.event.bytes));
         ++packets;
     };
+    const auto context = [&](qint64 timeNs, const ContextSnapshot &snapshot) {
+        QByteArray triples;
+        RecordEncoder::putContext(triples, snapshot);
+        // The encoder's count prefix is one varint byte for up to 127 drives: drop it.
+        out.write(packet(startNs + timeNs, false, FrameKind::Context, triples.mid(1)));
+        ++packets;
+    };
+    context(0, reader.header().context);
     RecordEvent e;
-    while (reader.next(&e))
+    while (reader.next(&e)) {
         parser.feed(e, sink);
+        if (e.kind == RecordEvent::Kind::Context)
+            context(e.timeNs, e.context);
+    }
     parser.finish(sink);
     return packets;
 }

@@ -139,7 +139,7 @@ private slots:
         QVERIFY(f.open(QIODevice::ReadOnly));
         const QByteArray bytes = f.readAll();
         QVERIFY(bytes.startsWith(PcapExport::fileHeader()));
-        // Five packets: request, reply, request, reply, garbage.
+        // The context, then five packets: request, reply, request, reply, garbage.
         qsizetype pos = 24;
         QVector<QByteArray> packets;
         while (pos + 16 <= bytes.size()) {
@@ -148,11 +148,12 @@ private slots:
             pos += 16 + len;
         }
         QCOMPARE(pos, bytes.size());
-        QCOMPARE(packets.size(), 5);
-        QCOMPARE(packets[0], QByteArray("\x01\x00", 2) + request(1));
-        QCOMPARE(packets[1], QByteArray("\x00\x01", 2) + state2Reply(1, 500));
-        QCOMPARE(packets[4], QByteArray("\x00\x03\x01\x02", 4));
-        // The first packet's time: the wall-clock start plus 1 ms.
+        QCOMPARE(packets.size(), 6);
+        QCOMPARE(packets[0], QByteArray("\x00\x04\x01\x01\x00\x02\x02\x00", 8));
+        QCOMPARE(packets[1], QByteArray("\x01\x00", 2) + request(1));
+        QCOMPARE(packets[2], QByteArray("\x00\x01", 2) + state2Reply(1, 500));
+        QCOMPARE(packets[5], QByteArray("\x00\x03\x01\x02", 4));
+        // The first packet's time: the wall-clock start.
         const quint32 sec = quint32(quint8(bytes[24])) | quint32(quint8(bytes[25])) << 8 |
                             quint32(quint8(bytes[26])) << 16 | quint32(quint8(bytes[27])) << 24;
         QCOMPARE(qint64(sec), lk::testsupport::testHeader().wallClockStartMs / 1000);
