@@ -77,10 +77,11 @@ QByteArray everyCommand(QVector<Expected> *expected)
         else if (code == 0x8C)
             reply = protocol::encodeFrame(code, quint8(id), QByteArray(1, '\x01'));
         else
-            reply = echo ? request : protocol::encodeFrame(code, quint8(id), pattern(c.replyLength));
+            reply =
+                echo ? request : protocol::encodeFrame(code, quint8(id), pattern(c.replyLength));
         add(RecordEvent::Kind::Rx, reply);
-        expected->append({name, echo || code == 0x8C ? QStringLiteral("echo")
-                                                     : QStringLiteral("reply")});
+        expected->append(
+            {name, echo || code == 0x8C ? QStringLiteral("echo") : QStringLiteral("reply")});
     }
     // The V2.35 model reply (58 bytes), from drive 2.
     add(RecordEvent::Kind::Tx, protocol::encodeFrame(0x12, 2, {}));
@@ -127,16 +128,16 @@ private slots:
         const QString rec = m_dir.filePath(QStringLiteral("all.lkrec"));
         m_pcap = m_dir.filePath(QStringLiteral("all.pcap"));
         QVERIFY(lk::testsupport::writeFile(rec, everyCommand(&m_expected)));
-        const auto r = lk::e2e::lkctl({QStringLiteral("export"), rec, QStringLiteral("--pcap"),
-                                       m_pcap});
+        const auto r =
+            lk::e2e::lkctl({QStringLiteral("export"), rec, QStringLiteral("--pcap"), m_pcap});
         QVERIFY2(r.exitCode == 0, describeRun(r).toUtf8());
     }
 
     void everyCommandIsNamedInBothDirections()
     {
-        const auto r = tshark({QStringLiteral("-T"), QStringLiteral("fields"),
-                               QStringLiteral("-e"), QStringLiteral("lkservo.command"),
-                               QStringLiteral("-e"), QStringLiteral("lkservo.kind")});
+        const auto r = tshark({QStringLiteral("-T"), QStringLiteral("fields"), QStringLiteral("-e"),
+                               QStringLiteral("lkservo.command"), QStringLiteral("-e"),
+                               QStringLiteral("lkservo.kind")});
         QVERIFY2(r.exitCode == 0, describeRun(r).toUtf8());
         const auto l = lines(r.out);
         QCOMPARE(l.size(), m_expected.size());
@@ -172,29 +173,39 @@ private slots:
         QTest::addColumn<QString>("value");
         // Drive 1 is an MS: its 0x9C reply carries power (bytes 02 03 = 0x0302 = 770).
         QTest::newRow("MS power") << "lkservo.code == 0x9c && lkservo.id == 1 && lkservo.kind == 1"
-                                  << "lkservo.power" << "770";
+                                  << "lkservo.power"
+                                  << "770";
         QTest::newRow("MS has no iq")
-            << "lkservo.code == 0x9c && lkservo.id == 1 && lkservo.kind == 1" << "lkservo.iq_raw"
+            << "lkservo.code == 0x9c && lkservo.id == 1 && lkservo.kind == 1"
+            << "lkservo.iq_raw"
             << "";
         // Speed request: 01 02 03 04 = 0x04030201 centi-dps.
         QTest::newRow("speed command") << "lkservo.code == 0xa2 && lkservo.kind == 0"
-                                       << "lkservo.speed_command_raw" << "67305985";
+                                       << "lkservo.speed_command_raw"
+                                       << "67305985";
         QTest::newRow("V2.3 model firmware")
             << "lkservo.code == 0x12 && lkservo.id == 1 && lkservo.kind == 1"
-            << "lkservo.firmware_version" << "2.2";
+            << "lkservo.firmware_version"
+            << "2.2";
         QTest::newRow("V2.35 model firmware")
             << "lkservo.code == 0x12 && lkservo.id == 2 && lkservo.kind == 1"
-            << "lkservo.firmware_version" << "2.35";
-        QTest::newRow("motor name") << "lkservo.code == 0x12 && lkservo.id == 2 && lkservo.kind == 1"
-                                    << "lkservo.motor_name" << "MF4015";
+            << "lkservo.firmware_version"
+            << "2.35";
+        QTest::newRow("motor name")
+            << "lkservo.code == 0x12 && lkservo.id == 2 && lkservo.kind == 1"
+            << "lkservo.motor_name"
+            << "MF4015";
         // The V2.35 read_param reply of drive 2: parameter 0x01 is none the table names, but the
         // ID is decoded.
         QTest::newRow("param id") << "lkservo.code == 0x40 && lkservo.kind == 1"
-                                  << "lkservo.param_id" << "0x01";
+                                  << "lkservo.param_id"
+                                  << "0x01";
         QTest::newRow("brake read") << "lkservo.code == 0x8c && lkservo.wire == 1"
-                                    << "lkservo.brake" << "0x10";
+                                    << "lkservo.brake"
+                                    << "0x10";
         QTest::newRow("error bits") << "lkservo.code == 0x9a && lkservo.kind == 1"
-                                    << "lkservo.error_state" << "0x07";
+                                    << "lkservo.error_state"
+                                    << "0x07";
     }
     void fieldsAndValuesFollowTheRecordedContext()
     {
