@@ -66,7 +66,8 @@ MainWindow::MainWindow(AppSettings *settings, QWidget *parent)
     m_motion->setSession(m_controller->session());
     buildPanels();
     buildSafety();
-    m_recording = new RecordingController(m_controller, m_traffic, m_banner, this);
+    m_recording = new RecordingController(
+        {m_controller, m_leaveGuard, m_store, m_traffic, m_banner, this}, this);
     buildToolbar();
     buildMenus();
     wirePanels();

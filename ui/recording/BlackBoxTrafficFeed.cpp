@@ -20,17 +20,24 @@ BlackBoxTrafficFeed::BlackBoxTrafficFeed(BlackBoxRecorder *recorder, TrafficPane
     connect(m_timer, &QTimer::timeout, this, &BlackBoxTrafficFeed::follow);
     connect(panel, &TrafficPanel::captureWanted, this, &BlackBoxTrafficFeed::setLooking);
     connect(recorder, &BlackBoxRecorder::ringStarted, this, [this] {
-        if (m_looking)
+        if (m_looking && !m_suspended)
             reload();
     });
     setLooking(panel->wantsCapture());
 }
 
+void BlackBoxTrafficFeed::setSuspended(bool on)
+{
+    m_suspended = on;
+    setLooking(m_looking);
+}
+
 void BlackBoxTrafficFeed::setLooking(bool on)
 {
     m_looking = on;
-    m_recorder->tap()->setEnabled(on);
-    if (on) {
+    const bool feed = on && !m_suspended;
+    m_recorder->tap()->setEnabled(feed);
+    if (feed) {
         reload();
         m_timer->start();
     } else {

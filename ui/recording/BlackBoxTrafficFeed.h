@@ -23,6 +23,9 @@ public:
     void reload();
     /// Move what the ring received since the last call into the view (the timer does it).
     void follow();
+    /// While suspended (a recording plays in the view) the ring is not shown; resuming
+    /// shows it again if the view is open.
+    void setSuspended(bool on);
 
 private:
     void setLooking(bool on);
@@ -32,7 +35,8 @@ private:
     QTimer *m_timer;
     RecordTrafficConverter m_converter;
     qint64 m_shownUntilNs = -1; ///< records up to this time came with the ring's snapshot
-    bool m_looking = false;
+    bool m_looking = false;     ///< the view wants traffic
+    bool m_suspended = false;
 };
 
 } // namespace lk::ui
