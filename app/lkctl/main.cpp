@@ -7,6 +7,7 @@
 #include "EncodeCommand.h"
 #include "ExportCommand.h"
 #include "InfoCommand.h"
+#include "ListenCommand.h"
 #include "MonitorCommand.h"
 #include "MotorStateCommand.h"
 #include "ReadCommand.h"
@@ -52,6 +53,7 @@ int main(int argc, char *argv[])
     dispatcher.add(std::make_unique<ZeroCommand>(ZeroCommand::Kind::ClearTurns));
     dispatcher.add(std::make_unique<StepCommand>());
     dispatcher.add(std::make_unique<MonitorCommand>());
+    dispatcher.add(std::make_unique<ListenCommand>());
     dispatcher.add(std::make_unique<EncodeCommand>());
     dispatcher.add(std::make_unique<DecodeCommand>());
     dispatcher.add(std::make_unique<ExportCommand>());
