@@ -11,6 +11,7 @@
 #include "MonitorCommand.h"
 #include "MotorStateCommand.h"
 #include "ReadCommand.h"
+#include "ReplayCommand.h"
 #include "ScanCommand.h"
 #include "StepCommand.h"
 #include "WriteCommand.h"
@@ -57,5 +58,6 @@ int main(int argc, char *argv[])
     dispatcher.add(std::make_unique<EncodeCommand>());
     dispatcher.add(std::make_unique<DecodeCommand>());
     dispatcher.add(std::make_unique<ExportCommand>());
+    dispatcher.add(std::make_unique<ReplayCommand>());
     return dispatcher.run(QCoreApplication::arguments().mid(1), console);
 }

@@ -188,6 +188,44 @@ private slots:
         QVERIFY(!row2.value(iq).isEmpty());
     }
 
+    void replayDecodesThroughThePassivePath()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("s.lkrec"));
+        QVERIFY(writeFile(path, sampleRecording()));
+        const auto r = lkctl({QStringLiteral("replay"), path, QStringLiteral("--json")});
+        QVERIFY2(r.exitCode == 0, describeRun(r).toUtf8());
+        const auto l = lines(r.out);
+        QCOMPARE(l.size(), 2);
+        const QJsonObject ms = jsonOf(l[0]);
+        QCOMPARE(ms.value("id").toInt(), 1);
+        QCOMPARE(ms.value("time_s").toDouble(), 0.0012); // the recording's clock
+        QCOMPARE(ms.value("power").toInt(), 500);        // the recorded context: MS
+        QVERIFY(!ms.contains("iq_a"));
+        const QJsonObject mf = jsonOf(l[1]);
+        QCOMPARE(mf.value("id").toInt(), 2);
+        QVERIFY(mf.contains("iq_a"));
+        QVERIFY2(r.err.contains("paired 2"), r.err.constData());
+        // CSV: the long layout's header, then the same rows.
+        const auto csv = lkctl({QStringLiteral("replay"), path});
+        QCOMPARE(lines(csv.out).size(), 3);
+        QVERIFY(csv.out.startsWith("time_s,id,"));
+    }
+
+    void replayStopsAtDamageNamingTheOffset()
+    {
+        qsizetype second = 0;
+        QByteArray file = sampleRecording(&second);
+        file.truncate(second + 10);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("cut.lkrec"));
+        QVERIFY(writeFile(path, file));
+        const auto r = lkctl({QStringLiteral("replay"), path, QStringLiteral("--json")});
+        QCOMPARE(r.exitCode, 3);
+        QCOMPARE(lines(r.out).size(), 1);
+        QVERIFY2(r.err.contains(QByteArray::number(second)), describeRun(r).toUtf8());
+    }
+
     void exportRefusesWhatIsNoRecording()
     {
         QTemporaryDir dir;
