@@ -1,5 +1,6 @@
 #pragma once
 
+#include <bus/LinkMode.h>
 #include <bus/TransportFactory.h>
 
 #include <QtCore/QString>
@@ -21,6 +22,8 @@ struct BusOptions {
     int baud = 115200;
     QString simSpec;   ///< non-empty: the in-process simulated bus
     QString simRomDir; ///< where the simulated drives keep their ROM (empty: memory only)
+    /// ListenOnly (`lkctl listen`): the port opens read-only and the session sends nothing.
+    bus::LinkMode mode = bus::LinkMode::Active;
 
     /// Declare --port, --baud, --sim and --sim-rom-dir on a parser.
     static void declare(ArgParser &parser);

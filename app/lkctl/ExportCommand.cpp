@@ -79,36 +79,13 @@ int finishExport(QSaveFile &out, const RecordingReader &reader, const QString &w
 
 } // namespace
 
-int ExportCommand::exportPcap(const QString &in, const QString &out, Console &console)
+QString ExportCommand::writePcap(RecordingReader &reader, QIODevice &out)
 {
-    RecordingReader reader;
-    if (!reader.open(in)) {
-        console.errLine(QStringLiteral("lkctl export: %1").arg(reader.error().message));
-        return kExitUsage;
-    }
-    QSaveFile file(out);
-    if (!file.open(QIODevice::WriteOnly)) {
-        console.errLine(
-            QStringLiteral("lkctl export: cannot write %1: %2").arg(out, file.errorString()));
-        return kExitFailure;
-    }
-    const qint64 packets = recording::PcapExport::write(reader, file);
-    return finishExport(file, reader, QStringLiteral("%1 packets").arg(packets), console);
+    return QStringLiteral("%1 packets").arg(recording::PcapExport::write(reader, out));
 }
 
-int ExportCommand::exportCsv(const QString &in, const QString &out, Console &console)
+QString ExportCommand::writeCsv(RecordingReader &reader, QIODevice &file)
 {
-    RecordingReader reader;
-    if (!reader.open(in)) {
-        console.errLine(QStringLiteral("lkctl export: %1").arg(reader.error().message));
-        return kExitUsage;
-    }
-    QSaveFile file(out);
-    if (!file.open(QIODevice::WriteOnly)) {
-        console.errLine(
-            QStringLiteral("lkctl export: cannot write %1: %2").arg(out, file.errorString()));
-        return kExitFailure;
-    }
     QVector<int> columns(record::TelemetryColumns::all().size());
     std::iota(columns.begin(), columns.end(), 0);
     const record::TelemetryCsv csv = record::TelemetryCsv::longLayout(columns);
@@ -137,7 +114,7 @@ int ExportCommand::exportCsv(const QString &in, const QString &out, Console &con
     while (reader.next(&e))
         parser.feed(e, sink);
     parser.finish(sink);
-    return finishExport(file, reader, QStringLiteral("%1 rows").arg(rows), console);
+    return QStringLiteral("%1 rows").arg(rows);
 }
 
 int ExportCommand::run(const QStringList &args, Console &console)
@@ -167,7 +144,19 @@ int ExportCommand::run(const QStringList &args, Console &console)
                                        "--csv OUT (see lkctl export --help)"));
         return kExitUsage;
     }
-    return pcap.isEmpty() ? exportCsv(input, csv, console) : exportPcap(input, pcap, console);
+    RecordingReader reader;
+    if (!reader.open(input)) {
+        console.errLine(QStringLiteral("lkctl export: %1").arg(reader.error().message));
+        return kExitUsage;
+    }
+    QSaveFile file(pcap.isEmpty() ? csv : pcap);
+    if (!file.open(QIODevice::WriteOnly)) {
+        console.errLine(QStringLiteral("lkctl export: cannot write %1: %2")
+                            .arg(file.fileName(), file.errorString()));
+        return kExitFailure;
+    }
+    const QString what = pcap.isEmpty() ? writeCsv(reader, file) : writePcap(reader, file);
+    return finishExport(file, reader, what, console);
 }
 
 } // namespace lk::lkctl

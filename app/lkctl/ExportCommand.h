@@ -2,6 +2,12 @@
 
 #include "Subcommand.h"
 
+class QIODevice;
+
+namespace lk::recording {
+class RecordingReader;
+}
+
 namespace lk::lkctl {
 
 /// `lkctl export FILE --pcap OUT | --csv OUT`: a recording as a pcap file for Wireshark (with
@@ -15,8 +21,9 @@ public:
     int run(const QStringList &args, Console &console) override;
 
 private:
-    int exportPcap(const QString &in, const QString &out, Console &console);
-    int exportCsv(const QString &in, const QString &out, Console &console);
+    /// Write the reader's recording to `out`; what was written ("12 packets").
+    static QString writePcap(recording::RecordingReader &reader, QIODevice &out);
+    static QString writeCsv(recording::RecordingReader &reader, QIODevice &out);
 };
 
 } // namespace lk::lkctl

@@ -67,7 +67,7 @@ bool LiveBus::open(const BusOptions &options)
                                      });
     const auto c2 = QObject::connect(&m_session, &BusSession::connectionChanged,
                                      [&state](const bus::ConnectionStatus &s) { state = s; });
-    m_session.open(options.factory(), options.baud);
+    m_session.open(options.factory(), options.baud, {}, options.mode);
     waitUntil([&state] { return state.has_value(); }, 30000);
     QObject::disconnect(c1);
     QObject::disconnect(c2);

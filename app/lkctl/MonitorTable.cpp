@@ -104,8 +104,11 @@ QList<QByteArray> MonitorTable::take()
 
 QList<QByteArray> MonitorTable::format(const record::CycleValues &round) const
 {
-    if (m_format != MonitorFormat::Json)
-        return m_csv.rows(round);
+    return m_format == MonitorFormat::Json ? jsonRows(round) : m_csv.rows(round);
+}
+
+QList<QByteArray> MonitorTable::jsonRows(const record::CycleValues &round)
+{
     // JSON lines: the long layout's rows as objects, keys only for values the round has.
     QList<QByteArray> out;
     const QVector<record::TelemetryColumn> &columns = TelemetryColumns::all();

@@ -40,6 +40,9 @@ public:
     QList<QByteArray> add(const bus::TelemetrySample &sample);
     /// The rows of the round still open (partial), at the end of monitoring.
     QList<QByteArray> flush();
+    /// JSON lines of `round`: the long layout's rows as objects, one per drive, with keys
+    /// only for the values it has (`lkctl listen` writes the same).
+    static QList<QByteArray> jsonRows(const record::CycleValues &round);
     /// Poll rounds per second (each drive is polled once a round).
     double cyclesPerSecond() const;
     /// From the first round written to the last, seconds.

@@ -7,9 +7,11 @@
 #include "EncodeCommand.h"
 #include "ExportCommand.h"
 #include "InfoCommand.h"
+#include "ListenCommand.h"
 #include "MonitorCommand.h"
 #include "MotorStateCommand.h"
 #include "ReadCommand.h"
+#include "ReplayCommand.h"
 #include "ScanCommand.h"
 #include "StepCommand.h"
 #include "WriteCommand.h"
@@ -52,8 +54,10 @@ int main(int argc, char *argv[])
     dispatcher.add(std::make_unique<ZeroCommand>(ZeroCommand::Kind::ClearTurns));
     dispatcher.add(std::make_unique<StepCommand>());
     dispatcher.add(std::make_unique<MonitorCommand>());
+    dispatcher.add(std::make_unique<ListenCommand>());
     dispatcher.add(std::make_unique<EncodeCommand>());
     dispatcher.add(std::make_unique<DecodeCommand>());
     dispatcher.add(std::make_unique<ExportCommand>());
+    dispatcher.add(std::make_unique<ReplayCommand>());
     return dispatcher.run(QCoreApplication::arguments().mid(1), console);
 }

@@ -4,6 +4,8 @@
 #include "BusStatistics.h"
 #include "ConnectionStatus.h"
 #include "KnownMotor.h"
+#include "LinkMode.h"
+#include "ListenStatistics.h"
 #include "PollPlan.h"
 #include "RequestResult.h"
 #include "ScanTypes.h"
@@ -32,6 +34,9 @@ void registerBusMetaTypes()
         qRegisterMetaType<ScanSummary>("lk::bus::ScanSummary");
         qRegisterMetaType<KnownMotors>("lk::bus::KnownMotors");
         qRegisterMetaType<ConnectionStatus>("lk::bus::ConnectionStatus");
+        qRegisterMetaType<LinkMode>("lk::bus::LinkMode");
+        qRegisterMetaType<ListenStatistics>("lk::bus::ListenStatistics");
+        qRegisterMetaType<SendRefusal>("lk::bus::SendRefusal");
         qRegisterMetaType<TrafficEvent>("lk::bus::TrafficEvent");
         qRegisterMetaType<TrafficBatch>("lk::bus::TrafficBatch");
         qRegisterMetaType<PollPlan>("lk::bus::PollPlan");

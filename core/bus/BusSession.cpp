@@ -61,6 +61,7 @@ void BusSession::connectWorker()
     relay(&BusWorker::requestCompleted, &BusSession::finishRequest);
     relay(&BusWorker::emergencyStopFinished, &BusSession::finishStop);
     relay(&BusWorker::emergencyStopProgress, &BusSession::emergencyStopProgress);
+    relay(&BusWorker::emergencyStopRefused, &BusSession::emergencyStopRefused);
     relay(&BusWorker::scanProgress, &BusSession::scanProgress);
     relay(&BusWorker::motorFound, &BusSession::motorFound);
     relay(&BusWorker::scanFinished, &BusSession::scanFinished);
@@ -70,6 +71,7 @@ void BusSession::connectWorker()
     relay(&BusWorker::setpointFailed, &BusSession::setpointFailed);
     relay(&BusWorker::telemetryReceived, &BusSession::telemetryReceived);
     relay(&BusWorker::statisticsUpdated, &BusSession::statisticsUpdated);
+    relay(&BusWorker::listenStatisticsUpdated, &BusSession::listenStatisticsUpdated);
     relay(&BusWorker::trafficCaptured, &BusSession::trafficCaptured);
     relay(&BusWorker::speedWatchTripped, &BusSession::speedWatchTripped);
 }
@@ -91,10 +93,11 @@ void BusSession::finishStop(quint64 ticket, const QVector<int> &acknowledged,
         done(acknowledged, silent, unsent);
 }
 
-void BusSession::open(TransportFactory factory, int baud, const BusConfig &config)
+void BusSession::open(TransportFactory factory, int baud, const BusConfig &config, LinkMode mode)
 {
     close();
     m_config = config;
+    m_mode = mode;
     m_thread = new QThread; // no parent: a thread that will not stop must not be deleted
     m_thread->setObjectName(QStringLiteral("lk-bus"));
     m_worker = new BusWorker(std::move(factory), baud, config);
@@ -103,7 +106,7 @@ void BusSession::open(TransportFactory factory, int baud, const BusConfig &confi
     connect(m_thread, &QThread::finished, m_worker, &QObject::deleteLater);
     connectWorker();
     m_thread->start();
-    post([w = m_worker] { w->start(); });
+    post([w = m_worker, mode] { w->start(mode); });
     for (auto it = m_softLimits.cbegin(); it != m_softLimits.cend(); ++it)
         post([w = m_worker, id = it.key(), limits = it.value()] { w->setSoftLimits(id, limits); });
 }
@@ -156,6 +159,17 @@ void BusSession::close()
 bool BusSession::isRunning() const
 {
     return m_thread != nullptr;
+}
+
+void BusSession::takeOver()
+{
+    if (!m_worker || m_mode == LinkMode::Active)
+        return;
+    m_mode = LinkMode::Active;
+    post([w = m_worker] { w->takeOver(); });
+    // The worker refused every plan while it listened: the one in force now starts.
+    if (effectivePollPlan())
+        postPollPlan();
 }
 
 void BusSession::reconnect()

@@ -5,6 +5,8 @@
 #include "BusStatistics.h"
 #include "ConnectionStatus.h"
 #include "KnownMotor.h"
+#include "LinkMode.h"
+#include "ListenStatistics.h"
 #include "PollPlan.h"
 #include "Priority.h"
 #include "RequestResult.h"
@@ -54,7 +56,18 @@ public:
 
     /// Start the bus thread, create the transport there with `factory(baud)` and open it.
     /// An open session is closed first. Progress arrives as connectionChanged/errorOccurred.
-    void open(TransportFactory factory, int baud = 115200, const BusConfig &config = {});
+    /// `mode` ListenOnly: the transport opens read-only and nothing is ever sent; every call
+    /// below that would transmit completes refused (SendRefusal::ListenOnly, 0 bytes written)
+    /// and connection().canTransmit stays false, until takeOver().
+    void open(TransportFactory factory, int baud = 115200, const BusConfig &config = {},
+              LinkMode mode = LinkMode::Active);
+    /// "Take over the bus": a listen-only session reopens its port read-write and becomes
+    /// Active; the poll plan given meanwhile (startPolling, poll extras) starts then. Only on
+    /// the user's explicit, confirmed request (another master may still be driving the bus):
+    /// nothing calls it on its own. connectionChanged reports the new mode and canTransmit.
+    void takeOver();
+    /// The mode asked for at open() or by takeOver() (connection().mode: as reported).
+    LinkMode linkMode() const { return m_mode; }
     /// Reopen the existing transport after a disconnect (or a failed open).
     void reconnect();
     /// Close the transport, end pending requests as Cancelled, join the thread (bounded).
@@ -161,6 +174,10 @@ signals:
     /// reached the wire (the link dropped, or the session was closed: then all of them).
     void emergencyStopFinished(quint64 ticket, const QVector<int> &acknowledged,
                                const QVector<int> &silent, const QVector<int> &unsent);
+    /// The stop `ticket` sent nothing: the session listens only (`refusal`). Comes right
+    /// before its emergencyStopFinished (every target silent and unsent). The words for the
+    /// user: "Listen-only: NOTHING was sent. Stop the machine with its own emergency stop."
+    void emergencyStopRefused(quint64 ticket, lk::bus::SendRefusal refusal);
     void scanProgress(const lk::bus::ScanProgress &progress);
     void motorFound(const lk::bus::FoundMotor &motor);
     void scanFinished(const lk::bus::ScanSummary &summary);
@@ -174,6 +191,11 @@ signals:
     /// Samples from every reply that carries telemetry (polls and operator commands alike).
     void telemetryReceived(const lk::bus::TelemetryBatch &batch);
     void statisticsUpdated(const lk::bus::BusStatistics &statistics);
+    /// Listen-only sessions: what the other master did (requests/s per drive and command,
+    /// unanswered requests, reply latency, checksum errors, bus load), at statisticsHz.
+    /// Samples from its drives' replies arrive as telemetryReceived, as polled ones do; its
+    /// commanded values too (TelemetryField::CommandedSpeed, ...).
+    void listenStatisticsUpdated(const lk::bus::ListenStatistics &statistics);
     void trafficCaptured(const lk::bus::TrafficBatch &batch);
     /// The speed watch stopped a drive under torque or open loop past its speed limit; sent
     /// once the Motor Stop has ended (which also comes as requestCompleted, ticket 0).
@@ -195,6 +217,7 @@ private:
     quint64 m_nextTicket = 1;
     quint64 m_generation = 0; ///< signals of a worker from an earlier open() are ignored
     ConnectionStatus m_connection;
+    LinkMode m_mode = LinkMode::Active;
     KnownMotors m_motors;
     BusConfig m_config;
     std::optional<PollPlan> m_pollPlan;

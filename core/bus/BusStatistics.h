@@ -1,5 +1,7 @@
 #pragma once
 
+#include "LinkMode.h"
+
 #include <QtCore/QMap>
 #include <QtCore/QMetaType>
 
@@ -36,6 +38,8 @@ struct LinkStatistics {
 struct BusStatistics {
     double time = 0; ///< seconds since the session started
     int baud = 0;
+    LinkMode mode = LinkMode::Active;
+    quint64 listenOnlyRefusals = 0; ///< calls that would have transmitted, refused (ListenOnly)
     LinkStatistics bus;
     QMap<int, LinkStatistics> perId;
     quint64 localEchoes = 0;    ///< our own request read back (adapter echo), skipped

@@ -40,8 +40,13 @@ BusWorker::BusWorker(TransportFactory factory, int baud, const BusConfig &config
                             onAttemptFailed(std::move(p), status, reason);
                         },
                         [this] { pumpNow(); }});
-    connect(&m_diagnostics, &BusDiagnostics::statisticsDue, this,
-            [this] { emit statisticsUpdated(statisticsSnapshot()); });
+    connect(&m_diagnostics, &BusDiagnostics::statisticsDue, this, [this] {
+        emit statisticsUpdated(statisticsSnapshot());
+        if (linkMode() == LinkMode::ListenOnly)
+            emit listenStatisticsUpdated(m_listen.snapshot(this->baud()));
+    });
+    connect(&m_listen, &ListenMonitor::motorsChanged, this,
+            [this] { emit knownMotorsChanged(m_motors.all()); });
     connect(&m_diagnostics, &BusDiagnostics::trafficCaptured, this, &BusWorker::trafficCaptured);
     m_telemetry.setRateHz(config.telemetryHz);
     connect(&m_telemetry, &TelemetryBatcher::batchReady, this, &BusWorker::telemetryReceived);
@@ -81,10 +86,29 @@ void BusWorker::wireLink()
     });
 }
 
-void BusWorker::start()
+void BusWorker::start(LinkMode mode)
 {
+    m_link.setMode(mode);
     m_diagnostics.startStatistics(m_config.statisticsHz);
     m_link.start();
+}
+
+bool BusWorker::takeOver()
+{
+    if (m_shutDown || linkMode() == LinkMode::Active)
+        return isOpen();
+    qCInfo(lcBus) << "taking over the bus: the port reopens read-write";
+    m_link.setMode(LinkMode::Active);
+    m_wire.restartStream();
+    return m_link.reopenAt(baud()); // a new transport, read-write; its open reports the mode
+}
+
+bool BusWorker::refuseListenOnly()
+{
+    if (linkMode() != LinkMode::ListenOnly)
+        return false;
+    ++m_refusedCalls;
+    return true;
 }
 
 void BusWorker::reconnect()
@@ -141,6 +165,7 @@ void BusWorker::onLinkState(Transport::State state, const QString &reason)
         return;
     if (state == Transport::State::Open) {
         m_wire.restartStream();
+        m_listen.restart();
         m_link.report();
         if (m_polls.isSuspended() && (m_config.resumePollingOnReconnect || !m_polls.isActive()))
             m_polls.setSuspended(false);
@@ -187,6 +212,11 @@ void BusWorker::submit(BusRequest request, Completion done)
     Pending p;
     p.req = request;
     p.done = std::move(done);
+    if (refuseListenOnly()) {
+        complete(std::move(p), RequestStatus::Error, std::nullopt, listenOnlyReason(), 0,
+                 SendRefusal::ListenOnly);
+        return;
+    }
     if (m_shutDown || !isOpen()) {
         const QString why =
             m_link.lastError().isEmpty() ? tr("the bus is not open") : m_link.lastError();
@@ -237,7 +267,8 @@ std::optional<BusWorker::Pending> BusWorker::takeNext()
 
 void BusWorker::pumpNow()
 {
-    if (m_wire.isBusy() || m_shutDown || !isOpen() || m_wire.holdForQuiet())
+    if (m_wire.isBusy() || m_shutDown || !isOpen() || linkMode() == LinkMode::ListenOnly ||
+        m_wire.holdForQuiet())
         return;
     if (std::optional<Pending> p = takeNext())
         m_wire.send(std::move(*p));
@@ -264,7 +295,7 @@ void BusWorker::onAttemptFailed(Pending p, RequestStatus status, const QString &
 }
 
 void BusWorker::complete(Pending p, RequestStatus status, std::optional<protocol::Reply> reply,
-                         const QString &reason, double latencyS)
+                         const QString &reason, double latencyS, SendRefusal refusal)
 {
     m_speedWatch.noteRequestEnded(p.req.request, status, p.attempts);
     RequestResult r;
@@ -276,6 +307,7 @@ void BusWorker::complete(Pending p, RequestStatus status, std::optional<protocol
     r.reason = reason;
     r.latencyMs = latencyS * 1e3;
     r.attempts = p.attempts;
+    r.refusal = refusal;
     if (p.done)
         p.done(r);
     else
@@ -307,6 +339,10 @@ void BusWorker::failAll(RequestStatus status, const QString &reason)
 
 void BusWorker::onBytes(const QByteArray &bytes)
 {
+    if (linkMode() == LinkMode::ListenOnly) {
+        m_listen.feed(bytes, baud()); // another master's traffic: nothing of ours is on the wire
+        return;
+    }
     // Completions inside the parser's callback only ask for the next send (schedulePump).
     m_inBytes = true;
     if (m_wire.feed(bytes))
@@ -330,30 +366,15 @@ void BusWorker::onReplied(Pending p, protocol::Reply reply, double latencyS)
 
 void BusWorker::noteReply(const protocol::Reply &reply, double time, const Pending &request)
 {
-    bool changed = m_motors.noteSeen(reply.id);
-    // A model reply tells the drive's generation, whoever asked for it (a scan, lkctl info,
-    // the drive-info view): later replies from it are decoded with its layouts.
-    if (const auto *model = std::get_if<protocol::ModelInfo>(&reply.payload))
-        changed = m_motors.learnModel(reply.id, *model, std::nullopt) || changed;
-    if (changed)
+    bool motorsChanged = false;
+    const ReplyIntake::Asked asked{request.req.request.command,
+                                   request.req.origin == RequestOrigin::Scan, request.pollCycle,
+                                   request.pollCycleStart};
+    const std::optional<TelemetrySample> s = m_intake.take(reply, time, asked, motorsChanged);
+    if (motorsChanged)
         emit knownMotorsChanged(m_motors.all());
-    const Command sent = request.req.request.command;
-    const bool halt = sent == Command::MotorOff || sent == Command::MotorStop;
-    if (movesMotor(sent) || halt)
-        m_motors.noteMotion(reply.id, !halt); // the emergency stop reaches it first
-    // A scan's probe comes before read_model has told the drive's layouts (a V2.35 drive's
-    // 24 V read as 0.90 V with V2.3's): the scan re-reads it for its result, telemetry skips it.
-    const bool layoutUnknown = request.req.origin == RequestOrigin::Scan &&
-                               !m_motors.all().value(reply.id).model.has_value();
-    if (std::optional<TelemetrySample> s =
-            layoutUnknown ? std::nullopt : TelemetrySample::fromReply(reply, time)) {
-        if (!movesMotor(sent) && s->has(TelemetryField::Speed))
-            m_motors.noteMotion(reply.id, s->speedDps != 0);
-        s->cycle = request.pollCycle; // which poll round it answers: rows are built per round
-        s->cycleTime = request.pollCycleStart;
-        m_telemetry.add(*s);
+    if (s)
         m_speedWatch.noteSample(*s);
-    }
 }
 
 void BusWorker::stopForSpeedWatch(int id, Completion done)
@@ -384,6 +405,14 @@ void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command h
 {
     // The setpoint stream first: no setpoint may follow the stop, whatever the GUI does.
     haltSetpoints(SetpointStopReason::EmergencyStop);
+    if (refuseListenOnly()) {
+        // Nothing may go on a bus another master owns: the stop says so rather than claim one.
+        const QVector<int> targets = m_motors.emergencyTargets(ids).all();
+        qCWarning(lcBus) << "emergency stop in listen-only mode: nothing was sent";
+        emit emergencyStopRefused(ticket, SendRefusal::ListenOnly);
+        emit emergencyStopFinished(ticket, {}, targets, targets);
+        return;
+    }
     if (halt != Command::MotorStop)
         halt = Command::MotorOff; // nothing else may ride in this lane
     // A running scan would go on probing (and a baud sweep reopening the port) behind the
@@ -419,6 +448,10 @@ void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command h
 
 void BusWorker::scan(const ScanOptions &options)
 {
+    if (refuseListenOnly()) {
+        emit scanFinished(ScanSummary::refusedListenOnly(baud()));
+        return;
+    }
     if (!m_scanner) {
         m_scanner = new Scanner(*this, m_timers, this);
         connect(m_scanner, &Scanner::progress, this, &BusWorker::scanProgress);
@@ -446,6 +479,8 @@ bool BusWorker::isScanning() const
 
 void BusWorker::startPolling(const PollPlan &plan)
 {
+    if (refuseListenOnly())
+        return; // BusSession posts its plan again after takeOver()
     m_polls.start(plan, now(), isOpen());
     schedulePump();
 }
@@ -457,6 +492,10 @@ void BusWorker::stopPolling()
 
 void BusWorker::startSetpointStream(const SetpointStreamPlan &plan)
 {
+    if (refuseListenOnly()) {
+        emit setpointStreamStopped(SetpointStop::refusedListenOnly(plan.stream));
+        return;
+    }
     m_setpointDrive = plan.id;
     m_setpoints.start(plan);
 }
@@ -537,6 +576,8 @@ BusStatistics BusWorker::statisticsSnapshot()
 {
     BusStatistics s = m_diagnostics.counters().snapshot(now());
     s.baud = baud();
+    s.mode = linkMode();
+    s.listenOnlyRefusals = m_refusedCalls;
     s.timeoutMarginMs = currentMarginMs();
     const std::optional<double> turnaround = m_wire.timeouts().measuredTurnaroundS();
     const double turnaroundS = turnaround.value_or(BusTiming::kTurnaroundS);

@@ -7,11 +7,15 @@
 #include "BusTimeSource.h"
 #include "ConnectionStatus.h"
 #include "KnownMotor.h"
+#include "LinkMode.h"
+#include "ListenMonitor.h"
+#include "ListenStatistics.h"
 #include "MotorRegistry.h"
 #include "PollPlan.h"
 #include "PollRunner.h"
 #include "PollScheduler.h"
 #include "Priority.h"
+#include "ReplyIntake.h"
 #include "RequestQueue.h"
 #include "RequestResult.h"
 #include "ScanTypes.h"
@@ -49,7 +53,13 @@ class Scanner;
 /// - WireExchange: the request on the wire: sent, its reply matched by command and ID, timed
 ///   out (BusTiming plus an adaptive margin), the quiet period after a timeout;
 /// - BusDiagnostics: the statistics and the traffic capture;
-/// - MotorRegistry: the drives known, how their replies decode, what their generation lacks.
+/// - MotorRegistry: the drives known, how their replies decode, what their generation lacks;
+/// - ListenMonitor: in a listen-only session, what another master and its drives say.
+///
+/// Listen-only (LinkMode::ListenOnly, start()): the transport is read-only and nothing is sent.
+/// submit, emergencyStop, scan, startPolling and startSetpointStream complete refused
+/// (SendRefusal::ListenOnly) and are counted (refusedCalls()); pumpNow never sends, and the
+/// link drops what still reaches it. Bytes go to the ListenMonitor instead of the exchange.
 /// The worker decides what is sent next, retries, completes, and reacts to the link.
 ///
 /// Quiet period: after a timeout nothing is transmitted until a late reply to the request
@@ -93,8 +103,18 @@ public:
               QObject *parent = nullptr);
     ~BusWorker() override;
 
-    /// Create the transport at the initial baud and open it.
-    void start();
+    /// Create the transport at the initial baud and open it, read-only in ListenOnly.
+    void start(LinkMode mode = LinkMode::Active);
+    /// Listen-only to Active: the read-only transport is replaced by a read-write one at the
+    /// same baud, and from then on everything transmits as in a session opened Active. Only on
+    /// the user's explicit, confirmed request; never automatic. True when the link is open.
+    bool takeOver();
+    LinkMode linkMode() const { return m_link.mode(); }
+    /// Calls refused because the session listens only (sends, stops, scans, polls, streams).
+    quint64 refusedCalls() const { return m_refusedCalls; }
+    /// Bytes that reached the link's write in ListenOnly and were dropped there (0 unless a
+    /// sender bypassed the refusals above).
+    quint64 refusedBytes() const { return m_link.refusedBytes(); }
     /// Reopen the current transport (after a disconnect or a failed open).
     void reconnect();
     /// Replace the transport by a new one from the factory at `baud` and open it.
@@ -168,6 +188,10 @@ signals:
     /// `unsent`: the silent IDs whose halt never reached the wire.
     void emergencyStopFinished(quint64 ticket, const QVector<int> &acknowledged,
                                const QVector<int> &silent, const QVector<int> &unsent);
+    /// An emergency stop sent nothing because the session listens only; emergencyStopFinished
+    /// follows with every target silent and unsent. The machine must be stopped by its own
+    /// emergency stop.
+    void emergencyStopRefused(quint64 ticket, lk::bus::SendRefusal refusal);
     void scanProgress(const lk::bus::ScanProgress &progress);
     void motorFound(const lk::bus::FoundMotor &motor);
     void scanFinished(const lk::bus::ScanSummary &summary);
@@ -178,6 +202,8 @@ signals:
     void setpointFailed(quint64 stream, const lk::bus::RequestResult &result);
     void telemetryReceived(const lk::bus::TelemetryBatch &batch);
     void statisticsUpdated(const lk::bus::BusStatistics &statistics);
+    /// What another master did (listen-only sessions only), beside statisticsUpdated.
+    void listenStatisticsUpdated(const lk::bus::ListenStatistics &statistics);
     void trafficCaptured(const lk::bus::TrafficBatch &batch);
     /// The speed watch stopped a drive past its limit (after the stop's end).
     void speedWatchTripped(const lk::bus::SpeedWatchTrip &trip);
@@ -197,7 +223,9 @@ private:
     void pumpNow();
     std::optional<Pending> takeNext();
     void complete(Pending p, RequestStatus status, std::optional<protocol::Reply> reply,
-                  const QString &reason, double latencyS);
+                  const QString &reason, double latencyS, SendRefusal refusal = SendRefusal::None);
+    /// True (and counted) when the session listens only: the caller then sends nothing.
+    bool refuseListenOnly();
     void cancelQueued(const std::function<bool(const Pending &)> &which, RequestStatus status,
                       const QString &reason);
     void abortInflight(RequestStatus status, const QString &reason);
@@ -237,6 +265,9 @@ private:
     SpeedWatch m_speedWatch{
         [this](int id, Completion done) { stopForSpeedWatch(id, std::move(done)); },
         [this](int id) { return seriesOf(id); }, [this] { return now(); }, this};
+    ReplyIntake m_intake{m_motors, m_telemetry};
+    ListenMonitor m_listen{m_motors, m_telemetry, m_diagnostics, m_clock, this};
+    quint64 m_refusedCalls = 0;
 };
 
 } // namespace lk::bus

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "LinkMode.h"
+
 #include <transport/Transport.h>
 
 #include <QtCore/QMetaType>
@@ -13,6 +15,10 @@ struct ConnectionStatus {
     QString description; ///< the transport's description, e.g. "/dev/ttyUSB0 @ 115200"
     int baud = 0;
     QString reason; ///< why it closed or disconnected, when it did
+    LinkMode mode = LinkMode::Active;
+    /// The link is open and Active: the one capability every view that would transmit (a
+    /// read on selection, a button, a poll) derives from. False while listening only.
+    bool canTransmit = false;
     bool isOpen() const { return state == transport::Transport::State::Open; }
 };
 

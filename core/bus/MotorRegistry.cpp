@@ -116,6 +116,18 @@ bool MotorRegistry::learnModel(int id, const protocol::ModelInfo &model,
     return true;
 }
 
+bool MotorRegistry::learnGeneration(int id, protocol::Generation generation)
+{
+    if (!validId(id))
+        return false;
+    KnownMotor &m = m_motors[id];
+    const bool changed = m.id != id || (!m.model && m.generation != generation);
+    m.id = id;
+    if (!m.model)
+        m.generation = generation;
+    return changed;
+}
+
 std::optional<protocol::Series> MotorRegistry::seriesOf(const protocol::ModelInfo &model)
 {
     if (const auto s = motor::ModelNameInfo::parse(model.motorName).series)

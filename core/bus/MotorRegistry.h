@@ -47,6 +47,9 @@ public:
     /// names tell (seriesOf()), wherever the model was read (a scan, lkctl info, a view).
     bool learnModel(int id, const protocol::ModelInfo &model,
                     std::optional<protocol::Series> series);
+    /// `id` answered a command only `generation` has: its generation, unless its model (the
+    /// surer word) was read. Makes `id` known.
+    bool learnGeneration(int id, protocol::Generation generation);
     bool forget(int firstId, int lastId);
 
     /// The series a model's names tell: the motor's ("MS5005"), else the driver's; nullopt

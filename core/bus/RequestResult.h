@@ -1,5 +1,6 @@
 #pragma once
 
+#include "LinkMode.h"
 #include "Priority.h"
 
 #include <protocol/Reply.h>
@@ -32,7 +33,10 @@ struct RequestResult {
     QString reason;                       ///< English detail for anything but Ok ("unplugged", ...)
     double latencyMs = 0;                 ///< write of the last attempt to its reply (Ok only)
     int attempts = 0;                     ///< times the request went on the wire
+    /// Set when the bus refused to send it (status Error, attempts 0, nothing written).
+    SendRefusal refusal = SendRefusal::None;
     bool ok() const { return status == RequestStatus::Ok; }
+    bool refused() const { return refusal != SendRefusal::None; }
 };
 
 } // namespace lk::bus

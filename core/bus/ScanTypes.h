@@ -1,5 +1,7 @@
 #pragma once
 
+#include "LinkMode.h"
+
 #include <protocol/Series.h>
 #include <protocol/Values.h>
 
@@ -50,7 +52,18 @@ struct FoundMotor {
 struct ScanSummary {
     QVector<FoundMotor> motors; ///< ascending baud then ID
     bool cancelled = false;
-    QString error;     ///< why the scan could not run or stopped (empty when it ran)
+    QString error; ///< why the scan could not run or stopped (empty when it ran)
+    SendRefusal refusal = SendRefusal::None; ///< ListenOnly: not run, nothing sent
+
+    /// The scan a listen-only session refused: it did not run and sent nothing.
+    static ScanSummary refusedListenOnly(int baud)
+    {
+        ScanSummary s;
+        s.error = listenOnlyReason();
+        s.refusal = SendRefusal::ListenOnly;
+        s.finalBaud = baud;
+        return s;
+    }
     int finalBaud = 0; ///< the transport's baud after the scan
     double elapsedS = 0;
 };

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "LinkMode.h"
+
 #include <protocol/FieldError.h>
 #include <safety/MotionGuard.h>
 
@@ -31,6 +33,18 @@ struct SetpointStop {
     qint64 skipped = 0;      ///< ticks skipped while the previous setpoint was queued or in flight
     safety::Verdict verdict; ///< Refused by a limit: which one
     std::optional<protocol::FieldError> fieldError; ///< Refused by the builder: which field
+    /// Refused because the session listens only (reason Refused, nothing sent, no verdict).
+    SendRefusal refusal = SendRefusal::None;
+
+    /// The stream `stream` a listen-only session refused: it never started, sent nothing.
+    static SetpointStop refusedListenOnly(quint64 stream)
+    {
+        SetpointStop s;
+        s.stream = stream;
+        s.reason = SetpointStopReason::Refused;
+        s.refusal = SendRefusal::ListenOnly;
+        return s;
+    }
 };
 
 } // namespace lk::bus

@@ -45,6 +45,17 @@ const QVector<TelemetryFieldInfo> &TelemetryFieldInfo::all()
          QT_TRANSLATE_NOOP("lk::bus::TelemetryFieldInfo", "Bus current"), &S::busCurrentA},
         {F::MotorOn, "motor_on", "1 on, 0 off", Q::State, 0, 0, true,
          QT_TRANSLATE_NOOP("lk::bus::TelemetryFieldInfo", "Motor"), &S::motorOn},
+        // Another master's commands (listen-only), at the resolution of their requests.
+        {F::CommandedIq, "commanded_iq_a", "A", Q::Current, 4, 4, false,
+         QT_TRANSLATE_NOOP("lk::bus::TelemetryFieldInfo", "Commanded iq"), &S::commandedIqA},
+        {F::CommandedPower, "commanded_power", "relative, -1000..1000", Q::Power, 0, 0, false,
+         QT_TRANSLATE_NOOP("lk::bus::TelemetryFieldInfo", "Commanded power"), &S::commandedPower},
+        {F::CommandedSpeed, "commanded_speed_dps", "°/s", Q::Speed, 2, 2, false,
+         QT_TRANSLATE_NOOP("lk::bus::TelemetryFieldInfo", "Commanded speed"),
+         &S::commandedSpeedDps},
+        {F::CommandedAngle, "commanded_angle_deg", "°", Q::Angle, 2, 2, false,
+         QT_TRANSLATE_NOOP("lk::bus::TelemetryFieldInfo", "Commanded angle"),
+         &S::commandedAngleDeg},
     };
     return kRows;
 }

@@ -80,6 +80,44 @@ std::optional<TelemetrySample> TelemetrySample::fromReply(const protocol::Reply 
     return s;
 }
 
+std::optional<TelemetrySample> TelemetrySample::fromRequest(const protocol::Request &request,
+                                                            std::optional<protocol::Series> series,
+                                                            protocol::Generation generation,
+                                                            double time)
+{
+    using protocol::Command;
+    TelemetrySample s;
+    s.id = request.id;
+    s.time = time;
+    s.source = request.command;
+    if (const auto *v = std::get_if<protocol::SpeedCommand>(&request.payload)) {
+        s.commandedSpeedDps = v->speedDps();
+        s.fields = TelemetryField::CommandedSpeed;
+    } else if (const auto *v = std::get_if<protocol::MultiPositionCommand>(&request.payload)) {
+        s.commandedAngleDeg = static_cast<double>(v->angleRaw) * protocol::kCentiUnits;
+        s.fields = TelemetryField::CommandedAngle;
+    } else if (const auto *v = std::get_if<protocol::OpenLoopCommand>(&request.payload)) {
+        s.commandedPower = v->power;
+        s.fields = TelemetryField::CommandedPower;
+    } else if (const auto *v = std::get_if<protocol::TorqueCommand>(&request.payload)) {
+        // V2.35 scales iq by series (MF 33/4096, MG/MH 66/4096): unknown series, no value.
+        if (generation == protocol::Generation::V2_35 && !series)
+            return std::nullopt;
+        const protocol::DecodeContext ctx{series.value_or(protocol::Series::MF), generation};
+        s.commandedIqA = v->iqRaw * protocol::iqCommandAmpsPerLsb(ctx);
+        s.fields = TelemetryField::CommandedIq;
+    }
+    if (!s.fields)
+        return std::nullopt;
+    return s;
+}
+
+TelemetryFields TelemetrySample::commandedFields()
+{
+    return TelemetryField::CommandedIq | TelemetryField::CommandedPower |
+           TelemetryField::CommandedSpeed | TelemetryField::CommandedAngle;
+}
+
 TelemetrySample TelemetrySample::fromState1(int id, const protocol::State1 &state, double time)
 {
     TelemetrySample s;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <protocol/Reply.h>
+#include <protocol/Request.h>
 
 #include <QtCore/QFlags>
 #include <QtCore/QMetaType>
@@ -28,10 +29,16 @@ enum class TelemetryField : quint16 {
     SingleTurn = 0x0200,
     BusCurrent = 0x0400, ///< V2.35 0x9A/0x9B only
     MotorOn = 0x0800,    ///< V2.35 0x9A/0x9B only: the motor state byte (on/off)
+    // What another master commanded, from its requests (a listen-only session): beside the
+    // drive's replies, commanded against actual.
+    CommandedIq = 0x1000,    ///< 0xA1's iq, at the drive's scale (only when that is known)
+    CommandedPower = 0x2000, ///< 0xA0's open-loop power (MS)
+    CommandedSpeed = 0x4000, ///< 0xA2's speed
+    CommandedAngle = 0x8000, ///< 0xA3/0xA4's multi-turn target
 };
 Q_ENUM_NS(TelemetryField)
 /// The bits TelemetryField uses: 1 << 0 .. 1 << (kTelemetryFieldCount - 1).
-inline constexpr int kTelemetryFieldCount = 12;
+inline constexpr int kTelemetryFieldCount = 16;
 Q_DECLARE_FLAGS(TelemetryFields, TelemetryField)
 Q_DECLARE_OPERATORS_FOR_FLAGS(TelemetryFields)
 
@@ -58,6 +65,10 @@ struct TelemetrySample {
     double iaA = 0, ibA = 0, icA = 0;
     double busCurrentA = 0;
     bool motorOn = false;
+    double commandedIqA = 0;
+    int commandedPower = 0;
+    double commandedSpeedDps = 0;
+    double commandedAngleDeg = 0; ///< rotor degrees, as multiTurnDeg
     /// A 0x90 reply in full: its raw position and offset are no telemetry columns (only
     /// `encoder` is), but the Encoder view shows them from the polls it adds.
     std::optional<protocol::EncoderReading> encoderReading;
@@ -68,6 +79,14 @@ struct TelemetrySample {
 
     /// The sample a reply carries, or nullopt for replies without telemetry (model, PID, ack).
     static std::optional<TelemetrySample> fromReply(const protocol::Reply &reply, double time);
+    /// The values another master's request commands (0xA0..0xA4), as a sample of its drive
+    /// at `time`; nullopt for a request that commands none of them. A torque is given only
+    /// when its scale is known: V2.3, or V2.35 with the drive's series known.
+    static std::optional<TelemetrySample> fromRequest(const protocol::Request &request,
+                                                      std::optional<protocol::Series> series,
+                                                      protocol::Generation generation, double time);
+    /// The fields only requests carry (fromRequest), never a drive's reply.
+    static TelemetryFields commandedFields();
     /// The sample of a 0x9A/0x9B state read outside a reply (a scan's probe).
     static TelemetrySample fromState1(int id, const protocol::State1 &state, double time);
     /// The fields a command's reply carries for a series (nullopt: unknown, read as MF) and

@@ -40,6 +40,7 @@ void TransportLink::close(const QString &reason)
     drop();
     m_reported.state = Transport::State::Closed;
     m_reported.reason = reason;
+    m_reported.canTransmit = false;
     emit connectionChanged(m_reported);
 }
 
@@ -49,6 +50,7 @@ void TransportLink::attach(std::unique_ptr<Transport> t)
     m_transport = std::move(t);
     if (!m_transport)
         return;
+    m_transport->setReadOnly(m_mode == LinkMode::ListenOnly);
     connect(m_transport.get(), &Transport::bytesReceived, this, &TransportLink::bytesReceived);
     connect(m_transport.get(), &Transport::stateChanged, this, &TransportLink::onTransportState);
     connect(m_transport.get(), &Transport::errorOccurred, this, &TransportLink::onTransportError);
@@ -82,6 +84,10 @@ bool TransportLink::open()
 
 void TransportLink::write(const QByteArray &bytes)
 {
+    if (m_mode == LinkMode::ListenOnly) {
+        m_refusedBytes += static_cast<quint64>(bytes.size());
+        return;
+    }
     if (m_transport)
         m_transport->write(bytes);
 }
@@ -126,8 +132,10 @@ void TransportLink::report(const QString &reason)
     s.description = m_transport ? m_transport->description() : QString();
     s.baud = baud();
     s.reason = s.state == Transport::State::Open ? QString() : reason;
+    s.mode = m_mode;
+    s.canTransmit = s.isOpen() && m_mode == LinkMode::Active;
     if (s.state == m_reported.state && s.description == m_reported.description &&
-        s.baud == m_reported.baud && s.reason == m_reported.reason)
+        s.baud == m_reported.baud && s.reason == m_reported.reason && s.mode == m_reported.mode)
         return;
     m_reported = s;
     emit connectionChanged(s);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ConnectionStatus.h"
+#include "LinkMode.h"
 #include "TransportFactory.h"
 
 #include <transport/Transport.h>
@@ -36,8 +37,15 @@ public:
     /// Closed for `reason` (always, even when it was already).
     void close(const QString &reason);
 
-    /// Hands bytes to the transport (none, closed or disconnected: dropped).
+    /// Listen-only or active. Each transport made from here on is read-only in ListenOnly
+    /// (Transport::setReadOnly); the one there is keeps how it was opened until replaced.
+    void setMode(LinkMode mode) { m_mode = mode; }
+    LinkMode mode() const { return m_mode; }
+    /// Hands bytes to the transport (none, closed or disconnected: dropped). In ListenOnly it
+    /// drops them and counts them in refusedBytes(): the bus's last guard, never reached
+    /// when every sender asks BusWorker first.
     void write(const QByteArray &bytes);
+    quint64 refusedBytes() const { return m_refusedBytes; }
     transport::Transport::State state() const;
     /// The transport's baud, or the baud the next one is made at.
     int baud() const;
@@ -67,6 +75,8 @@ private:
     TransportFactory m_factory;
     int m_baud;
     std::unique_ptr<transport::Transport> m_transport;
+    LinkMode m_mode = LinkMode::Active;
+    quint64 m_refusedBytes = 0;
     ConnectionStatus m_reported;
     QString m_lastError;
 };

@@ -187,7 +187,7 @@ bool RecordingReader::readBlock()
     return true;
 }
 
-bool RecordingReader::decodeRecord(RecordEvent *event)
+RecordingReader::Decoded RecordingReader::decodeRecord(RecordEvent *event)
 {
     const char *d = m_block.constData();
     const qsizetype end = m_block.size();
@@ -235,32 +235,45 @@ bool RecordingReader::decodeRecord(RecordEvent *event)
             break;
         default:
             // A meta record of a later minor revision: its length lets us step over it.
+            if (!ok)
+                break;
             m_pos = payloadEnd;
             m_timeNs += qint64(delta);
-            return ok && m_pos < end ? decodeRecord(event) : ok;
+            return Decoded::Skipped;
         }
         m_pos = payloadEnd;
     }
-    if (!ok)
-        return fail(RecordingError::Kind::Damaged, m_blockOffset + kBlockHeaderSize + start,
-                    tr("The recording %1 is damaged at byte offset %2 (a record's layout is "
-                       "wrong); it was read up to that point.")
-                        .arg(m_name)
-                        .arg(m_blockOffset + kBlockHeaderSize + start));
+    if (!ok) {
+        fail(RecordingError::Kind::Damaged, m_blockOffset + kBlockHeaderSize + start,
+             tr("The recording %1 is damaged at byte offset %2 (a record's layout is wrong); it "
+                "was read up to that point.")
+                 .arg(m_name)
+                 .arg(m_blockOffset + kBlockHeaderSize + start));
+        return Decoded::Failed;
+    }
     m_timeNs += qint64(delta);
     event->timeNs = m_timeNs;
-    return true;
+    return Decoded::Record;
 }
 
 bool RecordingReader::next(RecordEvent *event)
 {
     if (!m_device || m_error.isError())
         return false;
-    while (m_pos >= m_block.size()) {
-        if (!readBlock())
+    for (;;) {
+        while (m_pos >= m_block.size()) {
+            if (!readBlock())
+                return false;
+        }
+        switch (decodeRecord(event)) {
+        case Decoded::Record:
+            return true;
+        case Decoded::Failed:
             return false;
+        case Decoded::Skipped:
+            break;
+        }
     }
-    return decodeRecord(event);
 }
 
 QVector<RecordingReader::Block> RecordingReader::index()
@@ -273,16 +286,11 @@ QVector<RecordingReader::Block> RecordingReader::index()
         m_lastTimeNs = m_timeNs;
     }
     m_indexDamage = m_error;
-    if (!blocks.isEmpty() && seek(blocks.last())) {
+    if (!blocks.isEmpty() && seek(blocks.last()) && readBlock()) {
         // The last record's time: decode the last good block once.
         RecordEvent e;
-        while (m_pos < m_block.size() || readBlock()) {
-            if (!decodeRecord(&e))
-                break;
-            m_lastTimeNs = e.timeNs;
-            if (m_pos >= m_block.size())
-                break;
-        }
+        while (m_pos < m_block.size() && decodeRecord(&e) != Decoded::Failed)
+            m_lastTimeNs = m_timeNs;
     }
     // Reading starts again at the first block; next() meets the damage where it is.
     seek(Block{m_firstBlockOffset, 0});

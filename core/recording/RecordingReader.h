@@ -51,7 +51,8 @@ private:
     bool openDevice(std::unique_ptr<QIODevice> device, const QString &name);
     bool readHeader();
     bool readBlock();
-    bool decodeRecord(RecordEvent *event);
+    enum class Decoded { Record, Skipped, Failed };
+    Decoded decodeRecord(RecordEvent *event);
     bool fail(RecordingError::Kind kind, qint64 offset, const QString &message);
 
     std::unique_ptr<QIODevice> m_device;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace lk::recording {
 
@@ -163,26 +164,12 @@ void ReplayTransport::tick()
 {
     if (m_state != State::Open || m_paused)
         return;
-    if (m_options.fastForward) {
-        fastForwardTick();
-        return;
-    }
-    const qint64 target = targetNs();
-    while (m_next && m_next->timeNs <= target && m_state == State::Open) {
-        const RecordEvent record = std::move(*m_next);
-        advance();
-        emitRecord(record);
-    }
-    if (!m_next && m_state == State::Open) {
-        emit finished();
-        return;
-    }
-    schedule();
-}
-
-void ReplayTransport::fastForwardTick()
-{
-    for (int i = 0; i < kFastForwardBatch && m_next && m_state == State::Open; ++i) {
+    // Load all: a batch per turn of the event loop; else what is due by now.
+    const bool fast = m_options.fastForward;
+    const qint64 target = fast ? std::numeric_limits<qint64>::max() : targetNs();
+    for (int i = 0; (!fast || i < kFastForwardBatch) && m_next && m_next->timeNs <= target &&
+                    m_state == State::Open;
+         ++i) {
         const RecordEvent record = std::move(*m_next);
         advance();
         emitRecord(record);

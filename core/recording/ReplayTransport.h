@@ -79,7 +79,6 @@ private:
     void advance();
     void emitRecord(const RecordEvent &record);
     void tick();
-    void fastForwardTick();
     void schedule();
 
     QString m_path;

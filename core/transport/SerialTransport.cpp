@@ -4,6 +4,7 @@
 
 #include "PortErrorText.h"
 
+#include <QtCore/QDebug>
 #include <QtCore/QFile>
 #include <QtCore/QFileInfo>
 #include <QtCore/QLoggingCategory>
@@ -128,7 +129,9 @@ bool SerialTransport::openPort()
     m_port->setStopBits(QSerialPort::OneStop);
     m_port->setFlowControl(QSerialPort::NoFlowControl);
     m_opening = true;
-    const bool ok = m_port->open(QIODevice::ReadWrite);
+    const bool ok = m_port->open(isReadOnly() ? QIODevice::ReadOnly : QIODevice::ReadWrite);
+    if (ok && isReadOnly())
+        holdControlLinesInactive(); // inside m_opening: a refusal is no port error
     m_opening = false;
     if (!ok) {
         const TransportError e = openFailure(m_port->error(), m_port->errorString());
@@ -197,17 +200,38 @@ void SerialTransport::enableLowLatency()
 #endif
 }
 
+void SerialTransport::holdControlLinesInactive()
+{
+    // Opening a tty raises DTR and RTS; an adapter that switches its RS485 driver on RTS would
+    // then talk over the other master. Clear both where the driver lets us; a pty or a driver
+    // without modem lines refuses, which is noted but no reason to fail a port that never
+    // writes anyway.
+    const bool rts = m_port->setRequestToSend(false);
+    const bool dtr = m_port->setDataTerminalReady(false);
+    m_controlLinesInactive = rts && dtr;
+    if (!m_controlLinesInactive) {
+        qCWarning(lcSerial).noquote()
+            << QStringLiteral("%1: listen-only, the driver did not clear %2 (%3)")
+                   .arg(m_path,
+                        rts ? QStringLiteral("DTR")
+                            : (dtr ? QStringLiteral("RTS") : QStringLiteral("RTS and DTR")),
+                        m_port->errorString());
+        m_port->clearError();
+    }
+}
+
 void SerialTransport::close()
 {
     if (m_port->isOpen())
         m_port->close();
     m_lowLatency = false;
+    m_controlLinesInactive = false;
     setState(State::Closed);
 }
 
 void SerialTransport::write(const QByteArray &bytes)
 {
-    if (m_state != State::Open)
+    if (m_state != State::Open || refuseWriteIfReadOnly(bytes))
         return;
 #ifdef Q_OS_UNIX
     // A request is a few bytes and the port is idle between transactions, so the kernel takes

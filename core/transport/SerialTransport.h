@@ -37,6 +37,10 @@ public:
     const SerialSettings &settings() const { return m_settings; }
     /// The low_latency flag is set on the open port (false on ptys and non-Linux systems).
     bool lowLatencyActive() const { return m_lowLatency; }
+    /// Read-only: RTS and DTR were cleared after the open (an RTS-switched RS485 adapter then
+    /// never drives the bus). False where the driver refused (ptys, some adapters): the open
+    /// still succeeds, a warning says so, and the port still never writes.
+    bool controlLinesInactive() const { return m_controlLinesInactive; }
 
     /// "ttyUSB0" -> "/dev/ttyUSB0"; absolute paths unchanged.
     static QString systemPath(const QString &portName);
@@ -56,6 +60,7 @@ private:
     void report(const TransportError &error);
     TransportError openFailure(QSerialPort::SerialPortError error, const QString &detail) const;
     void enableLowLatency();
+    void holdControlLinesInactive();
 
     SerialSettings m_settings;
     QString m_path;
@@ -64,6 +69,7 @@ private:
     bool m_opening = false;
     bool m_errorReported = false; ///< one error per connect cycle
     bool m_lowLatency = false;
+    bool m_controlLinesInactive = false;
 };
 
 } // namespace lk::transport

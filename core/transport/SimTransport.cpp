@@ -110,7 +110,7 @@ qint64 SimTransport::wireNs(qsizetype bytes) const
 
 void SimTransport::write(const QByteArray &bytes)
 {
-    if (m_state != State::Open || bytes.isEmpty())
+    if (m_state != State::Open || bytes.isEmpty() || refuseWriteIfReadOnly(bytes))
         return;
     if (m_bus->faults().takeDisconnect()) {
         goDisconnected();

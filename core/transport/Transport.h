@@ -38,6 +38,14 @@ public:
 
     /// Open the link. On failure returns false, stays Closed and emits errorOccurred.
     virtual bool open() = 0;
+    /// Listen only: open() opens for reading alone where the medium allows it, and write()
+    /// drops every byte and counts it (refusedWrites()). Set before open(); the owner
+    /// (TransportLink) sets it on each transport the factory makes.
+    void setReadOnly(bool readOnly) { m_readOnly = readOnly; }
+    bool isReadOnly() const { return m_readOnly; }
+    /// Bytes write() dropped because the transport is read-only (0 in a listen-only session
+    /// that works as it should: the bus refuses before anything reaches a transport).
+    quint64 refusedWrites() const { return m_refusedWrites; }
     virtual void close() = 0;
     /// Queue bytes for sending; a closed or disconnected transport drops them.
     virtual void write(const QByteArray &bytes) = 0;
@@ -47,12 +55,21 @@ public:
     /// "/dev/ttyUSB0 @ 115200", "Simulated bus (3 drives)".
     virtual QString description() const = 0;
 
+protected:
+    /// For write(): true when the transport is read-only, after counting and logging the
+    /// bytes it then drops.
+    bool refuseWriteIfReadOnly(const QByteArray &bytes);
+
 signals:
     void bytesReceived(const QByteArray &bytes);
     void stateChanged(lk::transport::Transport::State state);
     /// A link lost while open says why first (Unplugged, IoError), then goes Disconnected:
     /// the state's reason can name the cause.
     void errorOccurred(const lk::transport::TransportError &error);
+
+private:
+    bool m_readOnly = false;
+    quint64 m_refusedWrites = 0;
 };
 
 } // namespace lk::transport

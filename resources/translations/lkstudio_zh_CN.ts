@@ -59,6 +59,13 @@
     </message>
 </context>
 <context>
+    <name>lk::bus::LinkMode</name>
+    <message>
+        <source>listen-only: nothing was sent</source>
+        <translation>仅监听：未发送任何数据</translation>
+    </message>
+</context>
+<context>
     <name>lk::bus::MotorRegistry</name>
     <message>
         <source>drive %1 runs firmware 2.35 or later (protocol V2.35), which has no %2; nothing was sent</source>
@@ -137,6 +144,22 @@
     <message>
         <source>Motor</source>
         <translation>电机</translation>
+    </message>
+    <message>
+        <source>Commanded iq</source>
+        <translation>指令 iq</translation>
+    </message>
+    <message>
+        <source>Commanded power</source>
+        <translation>指令功率</translation>
+    </message>
+    <message>
+        <source>Commanded speed</source>
+        <translation>指令速度</translation>
+    </message>
+    <message>
+        <source>Commanded angle</source>
+        <translation>指令角度</translation>
     </message>
 </context>
 <context>

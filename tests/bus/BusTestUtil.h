@@ -45,7 +45,7 @@ public:
     using Setup = std::function<void(FakeTransport &)>;
 
     explicit WorkerRig(Setup setup = {}, bus::BusConfig config = relaxedConfig(), int baud = 115200,
-                       RigTime time = RigTime::Wall)
+                       RigTime time = RigTime::Wall, bus::LinkMode mode = bus::LinkMode::Active)
         : m_setup(std::move(setup))
     {
         if (time == RigTime::Manual)
@@ -71,7 +71,7 @@ public:
             baud, config, timers ? timers->timeSource() : bus::BusTimeSource{});
         QObject::connect(worker.get(), &bus::BusWorker::requestCompleted, worker.get(),
                          [this](const bus::RequestResult &r) { results.append(r); });
-        worker->start();
+        worker->start(mode);
     }
     ~WorkerRig() { worker.reset(); } // its last completions still land in `results`
 

@@ -25,6 +25,7 @@ bool FakeTransport::open()
     {
         QMutexLocker lock(&m_log->mutex);
         ++m_log->opens;
+        m_log->readOnly.append(isReadOnly());
     }
     setState(State::Open);
     return true;
@@ -47,6 +48,8 @@ QByteArray FakeTransport::defaultReply(const protocol::Frame &request) const
 
 void FakeTransport::write(const QByteArray &bytes)
 {
+    // Every byte that reaches a transport is logged, read-only or not: a listen-only test
+    // counts here what would have gone on the wire.
     if (m_state != State::Open)
         return;
     {

@@ -19,7 +19,8 @@ struct FakeLog {
     mutable QMutex mutex;
     QVector<QByteArray> written;
     int opens = 0;
-    QVector<int> bauds; ///< baud of each transport the factory made
+    QVector<bool> readOnly; ///< Transport::isReadOnly() at each open
+    QVector<int> bauds;     ///< baud of each transport the factory made
     QVector<QByteArray> writtenCopy() const
     {
         QMutexLocker lock(&mutex);

@@ -1,7 +1,9 @@
 #include <transport/PortErrorText.h>
 #include <transport/SerialTransport.h>
 
+#include <QtCore/QDir>
 #include <QtCore/QFile>
+#include <QtCore/QFileInfo>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QSignalSpy>
 #include <QtTest/QTest>
@@ -74,6 +76,7 @@ private slots:
     void notASerialDevice_data();
     void notASerialDevice();
     void roundTripOverPty();
+    void readOnlyOverPty();
     void busyPort();
     void permissionDenied();
     void unplugIsDisconnectedOnce();
@@ -207,6 +210,55 @@ void tst_SerialTransport::roundTripOverPty()
     QCOMPARE(received, in);
     t.close();
     QCOMPARE(t.state(), Transport::State::Closed);
+}
+
+/// The access mode of this process's descriptor open on `path` (O_RDONLY, O_RDWR), or -1.
+static int accessModeOf(const QString &path)
+{
+    const QDir fds(QStringLiteral("/proc/self/fd"));
+    for (const QString &fd : fds.entryList(QDir::NoDotAndDotDot | QDir::System | QDir::Files)) {
+        if (QFileInfo(fds.filePath(fd)).symLinkTarget() != path)
+            continue;
+        QFile info(QStringLiteral("/proc/self/fdinfo/") + fd);
+        if (!info.open(QIODevice::ReadOnly))
+            continue;
+        for (const QByteArray &line : info.readAll().split('\n')) {
+            if (line.startsWith("flags:"))
+                return int(line.mid(6).trimmed().toInt(nullptr, 8)) & O_ACCMODE;
+        }
+    }
+    return -1;
+}
+
+void tst_SerialTransport::readOnlyOverPty()
+{
+    // Listen-only: the port is opened for reading alone, RTS/DTR are cleared where the driver
+    // allows (a pty does not: the open still succeeds), and write() drops and counts.
+    Pty pty;
+    QVERIFY(pty.ok());
+    SerialTransport t(settingsFor(pty.slave));
+    t.setReadOnly(true);
+    QSignalSpy rx(&t, &Transport::bytesReceived);
+    QSignalSpy errors(&t, &Transport::errorOccurred);
+    QVERIFY(t.open());
+    QCOMPARE(t.state(), Transport::State::Open);
+    QCOMPARE(accessModeOf(pty.slave), O_RDONLY);
+    QVERIFY(errors.isEmpty()); // a refused RTS/DTR is a warning, not a port error
+
+    const QByteArray out("\x3E\x9C\x01\x00\xDB", 5);
+    t.write(out);
+    QCOMPARE(t.refusedWrites(), quint64(out.size()));
+
+    const QByteArray in("\x3E\x9C\x01\x00\xDB", 5);
+    QCOMPARE(::write(pty.master, in.constData(), size_t(in.size())), ssize_t(in.size()));
+    QTRY_VERIFY(!rx.isEmpty());
+    QCOMPARE(rx.at(0).at(0).toByteArray(), in);
+    QCOMPARE(pty.readMaster(), QByteArray()); // the refused bytes never reached the line
+    t.close();
+
+    SerialTransport rw(settingsFor(pty.slave)); // the default stays read-write
+    QVERIFY(rw.open());
+    QCOMPARE(accessModeOf(pty.slave), O_RDWR);
 }
 
 void tst_SerialTransport::busyPort()

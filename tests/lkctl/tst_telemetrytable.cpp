@@ -61,6 +61,10 @@ TelemetrySample everything(int base)
     s.icA = base + 12.5;
     s.busCurrentA = base + 13.5;
     s.motorOn = base % 2 != 0;
+    s.commandedIqA = base + 14.5;
+    s.commandedPower = base + 15;
+    s.commandedSpeedDps = base + 16.5;
+    s.commandedAngleDeg = base + 17.5;
     return s;
 }
 
@@ -150,9 +154,18 @@ void tst_TelemetryTable::monitorHeaderNamesEveryKey()
             keys.insert(format == MonitorFormat::CsvWide ? cell.section(QLatin1Char('_'), 1)
                                                          : cell);
     }
-    for (const TelemetryFieldInfo &row : TelemetryFieldInfo::all())
+    // What another master commands (lkctl listen) is no poll's: those columns are not here.
+    int commanded = 0;
+    for (const TelemetryFieldInfo &row : TelemetryFieldInfo::all()) {
+        if (TelemetrySample::commandedFields().testFlag(row.field)) {
+            QVERIFY2(!keys.contains(QLatin1String(row.key)), row.key);
+            ++commanded;
+            continue;
+        }
         QVERIFY2(keys.contains(QLatin1String(row.key)), row.key);
-    QCOMPARE(keys.size(), TelemetryFieldInfo::all().size());
+    }
+    QCOMPARE(commanded, 4);
+    QCOMPARE(keys.size(), TelemetryFieldInfo::all().size() - commanded);
 }
 
 void tst_TelemetryTable::v235OnlyRowsAreTheV235Replies()
@@ -166,6 +179,10 @@ void tst_TelemetryTable::v235OnlyRowsAreTheV235Replies()
         }
     }
     for (const TelemetryFieldInfo &row : TelemetryFieldInfo::all()) {
+        if (TelemetrySample::commandedFields().testFlag(row.field)) {
+            QVERIFY2(!v23.testFlag(row.field) && !v235.testFlag(row.field), row.key);
+            continue; // no reply carries a commanded value: requests do (fromRequest)
+        }
         QVERIFY2(v235.testFlag(row.field), row.key); // a polled reply carries every row
         QVERIFY2(row.v235Only == !v23.testFlag(row.field), row.key);
     }

@@ -40,6 +40,14 @@ inline QVector<recording::RecordEvent> readAll(const QString &path,
     return out;
 }
 
+/// The lines of a program's output, without empty ones.
+inline QList<QByteArray> lines(const QByteArray &out)
+{
+    QList<QByteArray> l = out.split('\n');
+    l.removeAll(QByteArray());
+    return l;
+}
+
 inline bool writeFile(const QString &path, const QByteArray &bytes)
 {
     QFile f(path);

@@ -15,6 +15,7 @@ namespace protocol = lk::protocol;
 using lk::e2e::describeRun;
 using lk::e2e::jsonOf;
 using lk::e2e::lkctl;
+using lk::testsupport::lines;
 using lk::testsupport::writeFile;
 
 namespace {
@@ -62,11 +63,19 @@ QByteArray sampleRecording(qsizetype *secondBlock = nullptr)
     return file;
 }
 
-QList<QByteArray> lines(const QByteArray &out)
+/// What `lkctl export` writes for the sample recording with `option` (--pcap, --csv).
+QByteArray exported(const QString &option)
 {
-    QList<QByteArray> l = out.split('\n');
-    l.removeAll(QByteArray());
-    return l;
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("s.lkrec"));
+    const QString out = dir.filePath(QStringLiteral("s.out"));
+    if (!writeFile(path, sampleRecording()))
+        return {};
+    const auto r = lkctl({QStringLiteral("export"), path, option, out});
+    if (r.exitCode != 0)
+        qWarning("%s", qPrintable(describeRun(r)));
+    QFile f(out);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
 } // namespace
@@ -129,15 +138,7 @@ private slots:
 
     void exportWritesPcap()
     {
-        QTemporaryDir dir;
-        const QString path = dir.filePath(QStringLiteral("s.lkrec"));
-        const QString pcap = dir.filePath(QStringLiteral("s.pcap"));
-        QVERIFY(writeFile(path, sampleRecording()));
-        const auto r = lkctl({QStringLiteral("export"), path, QStringLiteral("--pcap"), pcap});
-        QVERIFY2(r.exitCode == 0, describeRun(r).toUtf8());
-        QFile f(pcap);
-        QVERIFY(f.open(QIODevice::ReadOnly));
-        const QByteArray bytes = f.readAll();
+        const QByteArray bytes = exported(QStringLiteral("--pcap"));
         QVERIFY(bytes.startsWith(PcapExport::fileHeader()));
         // The context, then five packets: request, reply, request, reply, garbage.
         qsizetype pos = 24;
@@ -161,15 +162,7 @@ private slots:
 
     void exportWritesTelemetryCsv()
     {
-        QTemporaryDir dir;
-        const QString path = dir.filePath(QStringLiteral("s.lkrec"));
-        const QString csv = dir.filePath(QStringLiteral("s.csv"));
-        QVERIFY(writeFile(path, sampleRecording()));
-        const auto r = lkctl({QStringLiteral("export"), path, QStringLiteral("--csv"), csv});
-        QVERIFY2(r.exitCode == 0, describeRun(r).toUtf8());
-        QFile f(csv);
-        QVERIFY(f.open(QIODevice::ReadOnly));
-        const auto l = lines(f.readAll());
+        const auto l = lines(exported(QStringLiteral("--csv")));
         QCOMPARE(l.size(), 3);
         const QList<QByteArray> header = l[0].split(',');
         QCOMPARE(header.value(0), QByteArray("time_s"));
@@ -186,6 +179,44 @@ private slots:
         QCOMPARE(row2.value(1), QByteArray("2"));
         QCOMPARE(row2.value(power), QByteArray());
         QVERIFY(!row2.value(iq).isEmpty());
+    }
+
+    void replayDecodesThroughThePassivePath()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("s.lkrec"));
+        QVERIFY(writeFile(path, sampleRecording()));
+        const auto r = lkctl({QStringLiteral("replay"), path, QStringLiteral("--json")});
+        QVERIFY2(r.exitCode == 0, describeRun(r).toUtf8());
+        const auto l = lines(r.out);
+        QCOMPARE(l.size(), 2);
+        const QJsonObject ms = jsonOf(l[0]);
+        QCOMPARE(ms.value("id").toInt(), 1);
+        QCOMPARE(ms.value("time_s").toDouble(), 0.0012); // the recording's clock
+        QCOMPARE(ms.value("power").toInt(), 500);        // the recorded context: MS
+        QVERIFY(!ms.contains("iq_a"));
+        const QJsonObject mf = jsonOf(l[1]);
+        QCOMPARE(mf.value("id").toInt(), 2);
+        QVERIFY(mf.contains("iq_a"));
+        QVERIFY2(r.err.contains("paired 2"), r.err.constData());
+        // CSV: the long layout's header, then the same rows.
+        const auto csv = lkctl({QStringLiteral("replay"), path});
+        QCOMPARE(lines(csv.out).size(), 3);
+        QVERIFY(csv.out.startsWith("time_s,id,"));
+    }
+
+    void replayStopsAtDamageNamingTheOffset()
+    {
+        qsizetype second = 0;
+        QByteArray file = sampleRecording(&second);
+        file.truncate(second + 10);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("cut.lkrec"));
+        QVERIFY(writeFile(path, file));
+        const auto r = lkctl({QStringLiteral("replay"), path, QStringLiteral("--json")});
+        QCOMPARE(r.exitCode, 3);
+        QCOMPARE(lines(r.out).size(), 1);
+        QVERIFY2(r.err.contains(QByteArray::number(second)), describeRun(r).toUtf8());
     }
 
     void exportRefusesWhatIsNoRecording()

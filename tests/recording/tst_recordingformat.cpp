@@ -214,6 +214,38 @@ private slots:
         QVERIFY2(reader.error().message.contains(named), qPrintable(reader.error().message));
     }
 
+    void metaRecordsOfALaterRevisionAreSkipped()
+    {
+        // Payload: an unknown meta record (type 0x7F, 3 bytes), a 2-byte rx chunk 5 ns later,
+        // another unknown one as the block's last record.
+        const QByteArray payload = QByteArray::fromHex("ff0003aabbcc") +
+                                   QByteArray::fromHex("0205") + "hi" +
+                                   QByteArray::fromHex("ff0701ee");
+        QByteArray block(kBlockSync, 4);
+        const auto put32 = [&block](quint32 v) {
+            for (int i = 0; i < 4; ++i)
+                block.append(char(v >> (8 * i)));
+        };
+        put32(quint32(payload.size()));
+        block.append(QByteArray(8, '\0')); // base time 0
+        quint32 crc = crc32(block.constData() + 4, 12);
+        crc = crc32(payload.constData(), payload.size(), crc);
+        put32(crc);
+        block += payload;
+        RecordingReader reader;
+        QVERIFY(reader.openBytes(RecordEncoder::encodeHeader(testHeader()) + block));
+        RecordEvent e;
+        QVERIFY(reader.next(&e));
+        QCOMPARE(int(e.kind), int(RecordEvent::Kind::Rx));
+        QCOMPARE(e.bytes, QByteArray("hi"));
+        QCOMPARE(e.timeNs, qint64(5));
+        QVERIFY(!reader.next(&e));
+        QCOMPARE(int(reader.error().kind), int(RecordingError::Kind::None));
+        QVERIFY(reader.openBytes(RecordEncoder::encodeHeader(testHeader()) + block));
+        reader.index();
+        QCOMPARE(reader.lastTimeNs(), qint64(12));
+    }
+
     void indexSeeksToEveryBlock()
     {
         QVector<qsizetype> ends;

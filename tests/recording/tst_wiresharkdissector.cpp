@@ -92,13 +92,6 @@ QByteArray everyCommand(QVector<Expected> *expected)
     return file;
 }
 
-QList<QByteArray> lines(const QByteArray &out)
-{
-    QList<QByteArray> l = out.split('\n');
-    l.removeAll(QByteArray());
-    return l;
-}
-
 } // namespace
 
 class tst_WiresharkDissector : public QObject {

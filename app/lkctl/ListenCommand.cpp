@@ -1,0 +1,207 @@
+#include "ListenCommand.h"
+
+#include "Console.h"
+#include "ListenTable.h"
+#include "LiveBus.h"
+
+#include <protocol/Command.h>
+#include <system/SignalWatcher.h>
+
+#include <QtCore/QTimer>
+
+#include <algorithm>
+#include <climits>
+#include <csignal>
+#include <limits>
+
+namespace lk::lkctl {
+
+QString ListenCommand::summary() const
+{
+    return QStringLiteral("decode a bus another master drives, sending nothing");
+}
+
+QString ListenCommand::example() const
+{
+    return QStringLiteral("lkctl listen --port /dev/ttyUSB0 --baud 1000000 --json --duration 60");
+}
+
+QString ListenCommand::usage() const
+{
+    return QStringLiteral(
+               "Usage: lkctl listen --port DEV [--baud N] [--csv | --json] [--duration S]\n"
+               "\n"
+               "Watch a running machine's bus without taking part: another controller is the\n"
+               "master, lkctl only listens. NOTHING is ever sent: the port is opened read-only,\n"
+               "RTS and DTR are cleared where the driver allows (an adapter that switches its\n"
+               "RS485 driver on RTS then never drives the bus), and the session refuses every\n"
+               "transmission. Requests and replies arrive on one stream; each request is paired\n"
+               "with its reply by order. Until Ctrl-C (SIGINT), SIGTERM or --duration, every\n"
+               "reply that carries telemetry and every value the master commands (0xA0..0xA4)\n"
+               "is printed as one row, in the long layout of `lkctl monitor`: time_s (when the\n"
+               "frame arrived, seconds since the port opened), id, then every column; the\n"
+               "commanded ones are commanded_iq_a, commanded_power, commanded_speed_dps and\n"
+               "commanded_angle_deg. Cells a frame does not carry are empty (JSON: no key).\n"
+               "Then what the master did goes to standard error: requests and requests/s per\n"
+               "drive and command, replies paired, requests left unanswered (its timeouts),\n"
+               "echo frames that could be either way (counted, never guessed), checksum errors,\n"
+               "bus load and reply latency per drive (approximate: frames are stamped when the\n"
+               "adapter hands them over).\n"
+               "\n"
+               "Drives appear as they answer; their generation is learnt from a read_model\n"
+               "reply or a command only one generation has, their series from a read_model\n"
+               "reply. Until one passes, an MS drive's power reads as iq (iq_a).\n"
+               "\n"
+               "Options:\n"
+               "  --csv               CSV, long layout (the default)\n"
+               "  --json              JSON lines, the CSV's names as keys\n"
+               "  --duration S        stop after S seconds\n"
+               "\n"
+               "%1"
+               "\n"
+               "Examples:\n"
+               "  lkctl listen --port /dev/ttyUSB0 --baud 1000000 > machine.csv   (Ctrl-C to "
+               "stop)\n"
+               "  lkctl listen --port ttyUSB0 --json --duration 60 | jq .speed_dps\n"
+               "\n"
+               "%2")
+        .arg(BusOptions::helpText(),
+             exitStatusText(QStringLiteral("  A silent bus is no error: listen waits. --sim is "
+                                           "refused (no other master there).\n")));
+}
+
+std::optional<ListenCommand::Plan> ListenCommand::parse(const ArgParser &parser, Console &console,
+                                                        int *status) const
+{
+    const auto fail = [&](const QString &message) {
+        *status = usageError(console, message);
+        return std::nullopt;
+    };
+    Plan plan;
+    QString error;
+    if (!parser.positionals().isEmpty())
+        return fail(QStringLiteral("listen takes no drive IDs: every drive that answers shows"));
+    if (parser.isSet(QStringLiteral("duration"))) {
+        plan.durationS = parser.numberValue(QStringLiteral("duration"), 0, &error);
+        if (!plan.durationS)
+            return fail(error);
+    }
+    const bool json = parser.isSet(QStringLiteral("json"));
+    if (json && parser.isSet(QStringLiteral("csv")))
+        return fail(QStringLiteral("--csv and --json exclude each other"));
+    plan.format = json ? MonitorFormat::Json : MonitorFormat::CsvLong;
+    return plan;
+}
+
+int ListenCommand::stream(LiveBus &bus, const Plan &plan, ListenTable &table)
+{
+    Console &console = bus.console();
+    bus::BusSession &session = bus.session();
+    bool stop = false;
+    bool lost = false;
+    qint64 rows = 0;
+    bus::ListenStatistics stats;
+    QObject context; // every connection below ends with it
+    system::SignalWatcher watcher;
+    QObject::connect(&watcher, &system::SignalWatcher::signalled, &context,
+                     [&stop] { stop = true; });
+    QTimer duration;
+    duration.setSingleShot(true);
+    QObject::connect(&duration, &QTimer::timeout, &context, [&stop] { stop = true; });
+    QObject::connect(&session, &bus::BusSession::listenStatisticsUpdated, &context,
+                     [&stats](const bus::ListenStatistics &s) { stats = s; });
+    QObject::connect(&session, &bus::BusSession::connectionChanged, &context,
+                     [&](const bus::ConnectionStatus &s) {
+                         if (!s.isOpen() && !stop) {
+                             lost = stop = true;
+                             bus.error(QStringLiteral("the bus went away: %1").arg(s.reason));
+                         }
+                     });
+    QObject::connect(&session, &bus::BusSession::telemetryReceived, &context,
+                     [&](const bus::TelemetryBatch &batch) {
+                         for (const bus::TelemetrySample &s : batch) {
+                             for (const QByteArray &row : table.add(s)) {
+                                 console.out(row);
+                                 ++rows;
+                             }
+                         }
+                         console.flush();
+                         stop = stop || console.outputFailed(); // e.g. `| head` closed the pipe
+                     });
+    console.out(table.header());
+    console.flush();
+    if (plan.durationS)
+        duration.start(int(std::min(*plan.durationS * 1000, double(INT_MAX))));
+    bus.waitUntil([&stop] { return stop; }, std::numeric_limits<int>::max());
+    // One more statistics snapshot, so that the figures cover the whole run.
+    const int before = int(stats.time * 1000);
+    bus.waitUntil([&] { return lost || int(stats.time * 1000) != before; }, 2000);
+    report(bus, rows, stats);
+    return lost ? kExitFailure : kExitOk;
+}
+
+void ListenCommand::report(LiveBus &bus, qint64 rows, const bus::ListenStatistics &s)
+{
+    bus.error(QStringLiteral("%1 rows in %2 s; nothing was sent").arg(rows).arg(s.time, 0, 'f', 2));
+    bus.error(QStringLiteral("the other master: requests %1 (%2/s), replies %3, paired %4, "
+                             "unanswered %5, replies without their request %6, ambiguous echo "
+                             "frames %7, corrupt replies %8, pairs broken by lost bytes %9")
+                  .arg(s.requests)
+                  .arg(s.requestsPerSecond, 0, 'f', 1)
+                  .arg(s.replies)
+                  .arg(s.paired)
+                  .arg(s.unanswered)
+                  .arg(s.orphanReplies)
+                  .arg(s.ambiguous)
+                  .arg(s.corruptReplies)
+                  .arg(s.brokenPairs));
+    bus.error(QStringLiteral("bus: %1 bytes, load %2%, checksum errors %3, garbage bytes %4")
+                  .arg(s.bytes)
+                  .arg(100 * s.busLoad, 0, 'f', 1)
+                  .arg(s.checksumErrors)
+                  .arg(s.garbageBytes));
+    for (auto it = s.perDrive.cbegin(); it != s.perDrive.cend(); ++it) {
+        const bus::ListenDriveStatistics &d = it.value();
+        bus.error(QStringLiteral("drive %1: requests %2 (%3/s), replies %4, unanswered %5, "
+                                 "latency median/max %6/%7 ms")
+                      .arg(it.key())
+                      .arg(d.requests)
+                      .arg(d.requestsPerSecond, 0, 'f', 1)
+                      .arg(d.replies)
+                      .arg(d.unanswered)
+                      .arg(d.latency.medianMs, 0, 'f', 2)
+                      .arg(d.latency.maxMs, 0, 'f', 2));
+    }
+    for (auto it = s.perCommand.cbegin(); it != s.perCommand.cend(); ++it)
+        bus.error(QStringLiteral("command %1: requests %2 (%3/s)")
+                      .arg(protocol::CommandTable::name(static_cast<protocol::Command>(it.key())))
+                      .arg(it->requests)
+                      .arg(it->requestsPerSecond, 0, 'f', 1));
+}
+
+int ListenCommand::run(const QStringList &args, Console &console)
+{
+    ArgParser parser = makeParser();
+    parser.addOption(QStringLiteral("duration"), true);
+    parser.addOption(QStringLiteral("csv"), false);
+    int status = kExitOk;
+    std::optional<BusOptions> busOptions = parseBus(parser, args, console, &status);
+    if (!busOptions)
+        return status;
+    if (busOptions->isSimulated())
+        return usageError(console, QStringLiteral("--sim has no other master to listen to; "
+                                                  "give --port (lksim --controller serves one)"));
+    const std::optional<Plan> plan = parse(parser, console, &status);
+    if (!plan)
+        return status;
+    busOptions->mode = bus::LinkMode::ListenOnly;
+    LiveBus bus(console, name());
+    if (!bus.open(*busOptions))
+        return kExitFailure;
+    // A reader that goes away (`| head`) must end the loop, not kill the process silently.
+    std::signal(SIGPIPE, SIG_IGN);
+    ListenTable table(plan->format);
+    return stream(bus, *plan, table);
+}
+
+} // namespace lk::lkctl

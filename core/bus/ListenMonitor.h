@@ -1,0 +1,66 @@
+#pragma once
+
+#include "BusClock.h"
+#include "ListenStatistics.h"
+#include "ListenStatisticsCollector.h"
+#include "PassivePairing.h"
+#include "ReplyIntake.h"
+
+#include <protocol/StreamParser.h>
+
+#include <QtCore/QByteArray>
+#include <QtCore/QObject>
+
+#include <memory>
+
+namespace lk::bus {
+
+class BusDiagnostics;
+
+/// The passive side of a listen-only session, on the bus thread: takes the bytes another
+/// master and its drives put on the bus (both directions on one stream), pairs requests with
+/// replies (PassivePairing), and makes of them what an active session makes of its own:
+/// observed replies go through the same ReplyIntake (drives appear, generation and series are
+/// learnt, telemetry samples into the same batcher), the other master's commands become
+/// commanded-value samples (TelemetrySample::fromRequest), frames reach the traffic capture,
+/// and ListenStatistics counts what that master does.
+class ListenMonitor : public QObject {
+    Q_OBJECT
+public:
+    ListenMonitor(MotorRegistry &motors, TelemetryBatcher &telemetry, BusDiagnostics &diagnostics,
+                  std::shared_ptr<BusClock> clock, QObject *parent = nullptr);
+
+    /// A new byte stream (the link opened): no partial frame, no open request.
+    void restart();
+    /// Bytes from the link, at the link's `baud` (it sets the silence that ends a pairing).
+    void feed(const QByteArray &bytes, int baud);
+    /// The statistics now (rates since the last call); also ends a request whose reply can no
+    /// longer come (silence).
+    ListenStatistics snapshot(int baud);
+    /// Slack on the reply window for the adapter's latency (PassivePairing::setSlackS).
+    void setSlackS(double slackS) { m_pairing.setSlackS(slackS); }
+    const PassivePairing::Counts &counts() const { return m_pairing.counts(); }
+
+signals:
+    /// The drives known changed (a drive seen for the first time, its model or generation).
+    void motorsChanged();
+
+private:
+    double now() const { return static_cast<double>(m_clock->nowNs()) * 1e-9; }
+    void onEvent(const protocol::ParseEvent &event, qint64 nowNs);
+    void takeRequest(const protocol::Frame &frame, double time);
+    void takeReply(const protocol::Frame &frame, const std::optional<protocol::Frame> &request,
+                   double time);
+    void noteUnanswered(const std::optional<protocol::Frame> &request);
+
+    MotorRegistry &m_motors;
+    TelemetryBatcher &m_telemetry;
+    BusDiagnostics &m_diagnostics;
+    std::shared_ptr<BusClock> m_clock;
+    ReplyIntake m_intake;
+    protocol::StreamParser m_parser;
+    PassivePairing m_pairing;
+    ListenStatisticsCollector m_stats;
+};
+
+} // namespace lk::bus

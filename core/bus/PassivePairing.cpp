@@ -1,0 +1,124 @@
+#include "PassivePairing.h"
+
+#include "BusTiming.h"
+
+#include <protocol/Command.h>
+
+namespace lk::bus {
+
+using protocol::FrameDirection;
+
+qint64 PassivePairing::windowNs(quint8 command) const
+{
+    const auto c = static_cast<protocol::Command>(command);
+    return static_cast<qint64>(BusTiming::replyTimeoutS(c, m_baud, m_slackS) * 1e9);
+}
+
+std::optional<protocol::Frame> PassivePairing::closeUnanswered()
+{
+    if (!m_open)
+        return std::nullopt;
+    const Open open = std::move(*m_open);
+    m_open.reset();
+    // Bytes lost meanwhile may have been its reply; an echo frame nobody answered was a
+    // request that timed out or the reply to a request that was lost: neither is told.
+    if (open.faultSince) {
+        ++m_counts.brokenPairs;
+        return std::nullopt;
+    }
+    if (open.direction == FrameDirection::Echo) {
+        ++m_counts.ambiguous;
+        return std::nullopt;
+    }
+    ++m_counts.unanswered;
+    return open.frame;
+}
+
+std::optional<protocol::Frame> PassivePairing::expire(qint64 nowNs)
+{
+    if (!m_open || nowNs - m_open->timeNs <= windowNs(m_open->frame.command))
+        return std::nullopt;
+    return closeUnanswered();
+}
+
+bool PassivePairing::answersOpen(const protocol::Frame &frame, FrameDirection direction) const
+{
+    if (!m_open || m_open->frame.id != frame.id || m_open->frame.command != frame.command)
+        return false;
+    switch (direction) {
+    case FrameDirection::Reply:
+        return true;
+    case FrameDirection::Echo:
+        // An echo answers a request-only layout (0x8C's read), or repeats an echo request.
+        return m_open->direction == FrameDirection::Request || m_open->frame == frame;
+    case FrameDirection::Request:
+        return false;
+    }
+    return false;
+}
+
+PassivePairing::Outcome PassivePairing::take(const protocol::ParseEvent &event, qint64 nowNs)
+{
+    if (!event.isFrame) {
+        takeFault(event);
+        return {};
+    }
+    return takeFrame(event, nowNs);
+}
+
+void PassivePairing::takeFault(const protocol::ParseEvent &event)
+{
+    if (!m_open)
+        return;
+    // A bad data checksum keeps a trusted header: when it names the open request and its
+    // length is a reply's, the reply came, spoilt. Other faults are noise or a frame nobody
+    // can name: a reply that still follows matches by command and ID as ever, but if none
+    // does, the lost bytes may have been it, and the request is not counted unanswered.
+    const bool spoiltReply = event.error == protocol::ParseError::BadDataChecksum &&
+                             event.frame.id == m_open->frame.id &&
+                             event.frame.command == m_open->frame.command &&
+                             event.frame.direction() != FrameDirection::Request;
+    if (spoiltReply) {
+        ++m_counts.corruptReplies;
+        m_open.reset();
+        return;
+    }
+    m_open->faultSince = true;
+}
+
+PassivePairing::Outcome PassivePairing::takeFrame(const protocol::ParseEvent &event, qint64 nowNs)
+{
+    Outcome out;
+    out.unanswered = expire(nowNs); // silence since the open request: its window is over
+    const protocol::Frame &f = event.frame;
+    const FrameDirection direction = event.direction;
+    if (answersOpen(f, direction)) {
+        out.role = Outcome::Role::Reply;
+        out.request = std::move(m_open->frame);
+        out.latencyNs = nowNs - m_open->timeNs;
+        m_open.reset();
+        ++m_counts.replies;
+        ++m_counts.paired;
+        return out;
+    }
+    if (direction == FrameDirection::Reply) {
+        // Its request was lost (or never on this bus): the open one, if any, is no longer
+        // sure to be unanswered - its reply may be what was lost.
+        if (m_open) {
+            ++m_counts.brokenPairs;
+            m_open.reset();
+        }
+        out.role = Outcome::Role::Reply;
+        ++m_counts.replies;
+        ++m_counts.orphanReplies;
+        return out;
+    }
+    if (m_open)
+        out.unanswered = closeUnanswered();
+    m_open = Open{f, direction, nowNs};
+    out.role = Outcome::Role::Request;
+    ++m_counts.requests;
+    return out;
+}
+
+} // namespace lk::bus

@@ -1,0 +1,89 @@
+#pragma once
+
+#include <protocol/Frame.h>
+#include <protocol/StreamParser.h>
+
+#include <QtCore/QtGlobal>
+
+#include <optional>
+
+namespace lk::bus {
+
+/// Pairs the requests another master sends with its drives' replies, from the one byte stream
+/// a listener on the bus sees both directions on. Pure logic, no I/O; times are nanoseconds
+/// of the session clock (when the chunk holding the frame arrived).
+///
+/// Half duplex: a reply follows its request before the next request. So pairing is by order:
+/// a frame whose layout is a request's starts a transaction (the one still open got no
+/// answer: the other master's timeout); a reply's layout with the open request's command and
+/// ID ends it. Echo commands (motor_off, write_pid_ram, ...) and 0x8C look the same both ways:
+/// such a frame is the reply when it repeats the open request byte for byte (or answers a
+/// request-only layout, 0x8C's read), else a new request. An echo frame taken as a request that
+/// then gets no answer may as well have been a reply whose request was lost: it is counted
+/// ambiguous, never guessed to be either.
+///
+/// The pairing starts afresh on silence (nothing for longer than the open request's reply
+/// could take at the baud, plus `slackS` for the adapter's latency: the open request was
+/// unanswered). After a fault (garbage, a bad checksum) a reply that matches the open request
+/// still pairs; if none comes, the request is counted a broken pair, not a timeout, since the
+/// lost bytes may have been its reply. A reply whose request was not seen is still the drive's
+/// word about itself (its header names drive and command): it is reported, unpaired.
+class PassivePairing {
+public:
+    /// What one frame was, as far as the pairing tells.
+    struct Outcome {
+        enum class Role { None, Request, Reply };
+        Role role = Role::None;
+        /// Reply: the request it answers (nullopt: its request was not seen).
+        std::optional<protocol::Frame> request;
+        qint64 latencyNs = 0; ///< Reply with a request: from the request's arrival
+        /// The request that was open before this frame and is now known to be unanswered
+        /// (not for an ambiguous echo frame nor after a fault: those are only counted).
+        std::optional<protocol::Frame> unanswered;
+    };
+    struct Counts {
+        quint64 requests = 0;
+        quint64 replies = 0;        ///< reply frames, paired or not
+        quint64 paired = 0;         ///< replies matched with their request
+        quint64 unanswered = 0;     ///< requests the next request or silence showed unanswered
+        quint64 orphanReplies = 0;  ///< replies whose request was not seen
+        quint64 ambiguous = 0;      ///< echo frames that were a request or a reply, unknowable
+        quint64 corruptReplies = 0; ///< the open request's reply, with a bad data checksum
+        quint64 brokenPairs = 0;    ///< open requests left unpaired after a fault or an orphan
+    };
+    static constexpr double kDefaultSlackS = 0.020; ///< an FTDI latency timer is 16 ms
+
+    void setBaud(int baud) { m_baud = baud; }
+    void setSlackS(double slackS) { m_slackS = slackS; }
+    /// Takes the next parse event, which arrived at `nowNs`.
+    Outcome take(const protocol::ParseEvent &event, qint64 nowNs);
+    /// Time passed without a frame: an open request whose reply can no longer come is
+    /// unanswered (returned).
+    std::optional<protocol::Frame> expire(qint64 nowNs);
+    /// A new stream (the port reopened): nothing is open.
+    void reset() { m_open.reset(); }
+    const Counts &counts() const { return m_counts; }
+    bool hasOpenRequest() const { return m_open.has_value(); }
+
+private:
+    struct Open {
+        protocol::Frame frame;
+        protocol::FrameDirection direction = protocol::FrameDirection::Request;
+        qint64 timeNs = 0;
+        bool faultSince = false; ///< a fault came after it: its reply may have been lost
+    };
+    /// Whether `frame` (layout `direction`) is the reply to the open request.
+    bool answersOpen(const protocol::Frame &frame, protocol::FrameDirection direction) const;
+    /// The open request got no answer: counted (ambiguous for an echo frame), returned.
+    std::optional<protocol::Frame> closeUnanswered();
+    Outcome takeFrame(const protocol::ParseEvent &event, qint64 nowNs);
+    void takeFault(const protocol::ParseEvent &event);
+    qint64 windowNs(quint8 command) const;
+
+    std::optional<Open> m_open;
+    Counts m_counts;
+    int m_baud = 115200;
+    double m_slackS = kDefaultSlackS;
+};
+
+} // namespace lk::bus
