@@ -26,9 +26,10 @@ need usr/lib/udev/rules.d/60-lkstudio-rs485.rules
 for page in lkctl lksim lkstudio; do need usr/share/man/man1/$page.1.gz; done
 need usr/share/doc/lkstudio/copyright
 need usr/share/doc/lkstudio/changelog.gz
-for doc in ARCHITECTURE CLI CSV ERRATA PROTOCOL TESTING V2.35; do need usr/share/doc/lkstudio/$doc.md; done
+for doc in ARCHITECTURE CLI CSV ERRATA PROTOCOL RECORDING TESTING V2.35; do need usr/share/doc/lkstudio/$doc.md; done
 need usr/share/bash-completion/completions/lkctl
 need usr/share/bash-completion/completions/lksim
+need "usr/lib/$(dpkg-architecture -qDEB_HOST_MULTIARCH)/wireshark/plugins/lkservo.lua"
 
 for bin in lkstudio lkctl lksim; do
     if file "$root/usr/bin/$bin" | grep -q 'not stripped'; then echo "usr/bin/$bin is not stripped"; fail=1; fi

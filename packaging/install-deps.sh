@@ -12,6 +12,8 @@ packages=(
     qt6-qpa-plugins libgl-dev
     clang-format xvfb xauth appstream desktop-file-utils dpkg-dev file go-md2man
     lintian reuse bash-completion
+    # tst_wiresharkdissector runs the shipped Lua dissector in tshark
+    tshark
     fonts-noto-cjk
     # lkstudio on Wayland (tst_lkstudioprocess starts it under a headless weston)
     qt6-wayland weston

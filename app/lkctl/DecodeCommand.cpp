@@ -2,8 +2,12 @@
 
 #include "Console.h"
 #include "HexText.h"
+#include "RecordingDecode.h"
 
 #include "protocol/FieldJson.h"
+#include "recording/RecordingReader.h"
+
+#include <QtCore/QFileInfo>
 
 namespace lk::lkctl {
 
@@ -31,6 +35,7 @@ QString DecodeCommand::usage() const
         "Usage: lkctl decode [--series MS|MF|MG|MH] [--generation v2.3|v2.35] HEX...\n"
         "       lkctl decode [--series S] [--generation G] -            hex text on stdin\n"
         "       lkctl decode [--series S] [--generation G] --binary -   raw bytes on stdin\n"
+        "       lkctl decode FILE.lkrec                                  a recording\n"
         "\n"
         "Decode LK RS485 bytes as captured on a bus: many frames, both directions, garbage\n"
         "between them. Prints one compact JSON object per line, in stream order:\n"
@@ -55,6 +60,13 @@ QString DecodeCommand::usage() const
         "               bytes: v2.3, 58: v2.35), which then applies to that ID's later frames\n"
         "               whatever --generation says: it is what the drive itself reports.\n"
         "  --binary     standard input holds raw bytes, not hex text (implies -)\n"
+        "  FILE         a recording (docs/RECORDING.md), told by its magic, as a file or on\n"
+        "               standard input: every frame and fault as above with \"time_s\"\n"
+        "               (session seconds) and \"wire\" (tx: sent by the recording tool, rx:\n"
+        "               received), decoded with the series and generation recorded for its\n"
+        "               moment; link events and drops as {\"note\":...}. A truncated or\n"
+        "               damaged recording is decoded up to the damage, whose byte offset is\n"
+        "               named on standard error (exit status 3).\n"
         "  -            read standard input; frames are printed as they arrive, so a live\n"
         "               pipe is decoded live\n"
         "  -h, --help   show this help\n"
@@ -74,6 +86,7 @@ QString DecodeCommand::usage() const
         "  lkctl decode --series MS 3E9C01 00DB 3E9C0107E2 1F F4 01 68 01 00 30 AD\n"
         "  lkctl decode --generation v2.35 3E 9A 01 07 E0 1E 60 09 EC FF 10 01 83\n"
         "  lkctl decode - < capture.txt\n"
+        "  lkctl decode blackbox.lkrec\n"
         "  cat /dev/ttyUSB0 | lkctl decode --binary -\n"
         "\n"
         "Exit status:\n"
@@ -206,7 +219,7 @@ int DecodeCommand::decodeStdinText(Console &console)
 {
     // Line by line as input arrives: positions are exact, output is live, and the lines before
     // a bad one are decoded and printed before the refusal.
-    QByteArray pending;
+    QByteArray pending = m_firstInput;
     int line = 1;
     for (;;) {
         const QByteArray chunk = console.readSome();
@@ -244,6 +257,8 @@ int DecodeCommand::decodeStdinText(Console &console)
 
 int DecodeCommand::decodeStdinBinary(Console &console)
 {
+    if (!m_firstInput.isEmpty())
+        feed(m_firstInput, console);
     for (QByteArray chunk = console.readSome(); !chunk.isEmpty(); chunk = console.readSome()) {
         feed(chunk, console);
         console.flush();
@@ -251,6 +266,14 @@ int DecodeCommand::decodeStdinBinary(Console &console)
     if (console.inputFailed())
         return usageError(QStringLiteral("cannot read standard input"), console);
     return finish(console);
+}
+
+int DecodeCommand::decodeRecordingFile(const QString &path, Console &console)
+{
+    recording::RecordingReader reader;
+    if (!reader.open(path))
+        return usageError(reader.error().message, console);
+    return decodeRecording(reader, console);
 }
 
 int DecodeCommand::run(const QStringList &args, Console &console)
@@ -263,8 +286,26 @@ int DecodeCommand::run(const QStringList &args, Console &console)
     m_context = options->context;
     m_generationById.clear();
     m_sawFault = false;
+    if (!options->fromStdin && options->hex.size() == 1 && QFileInfo(options->hex.first()).isFile())
+        return decodeRecordingFile(options->hex.first(), console);
     if (!options->fromStdin)
         return decodeArguments(*options, console);
+    // A recording on standard input is told by its magic in the first bytes.
+    m_firstInput.clear();
+    for (QByteArray chunk = console.readSome(); !chunk.isEmpty(); chunk = console.readSome()) {
+        m_firstInput += chunk;
+        const QByteArray magic(recording::kMagic, sizeof recording::kMagic);
+        if (m_firstInput.size() >= magic.size() || !magic.startsWith(m_firstInput))
+            break; // enough to tell: live input is not held back
+    }
+    if (recording::RecordingReader::hasMagic(m_firstInput)) {
+        for (QByteArray chunk = console.readSome(); !chunk.isEmpty(); chunk = console.readSome())
+            m_firstInput += chunk;
+        recording::RecordingReader reader;
+        if (!reader.openBytes(m_firstInput))
+            return usageError(reader.error().message, console);
+        return decodeRecording(reader, console);
+    }
     return options->binary ? decodeStdinBinary(console) : decodeStdinText(console);
 }
 

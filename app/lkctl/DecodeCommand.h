@@ -32,6 +32,7 @@ private:
     int decodeArguments(const Options &options, Console &console);
     int decodeStdinText(Console &console);
     int decodeStdinBinary(Console &console);
+    int decodeRecordingFile(const QString &path, Console &console);
     void feed(const QByteArray &bytes, Console &console);
     int finish(Console &console);
     int usageError(const QString &problem, Console &console) const;
@@ -43,6 +44,7 @@ private:
     /// Generations told by 0x12 replies in the stream: they win over --generation.
     QHash<int, protocol::Generation> m_generationById;
     bool m_sawFault = false;
+    QByteArray m_firstInput; ///< standard input read to tell a recording by its magic
 };
 
 } // namespace lk::lkctl

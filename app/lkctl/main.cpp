@@ -5,11 +5,13 @@
 #include "DecodeCommand.h"
 #include "Dispatcher.h"
 #include "EncodeCommand.h"
+#include "ExportCommand.h"
 #include "InfoCommand.h"
 #include "ListenCommand.h"
 #include "MonitorCommand.h"
 #include "MotorStateCommand.h"
 #include "ReadCommand.h"
+#include "ReplayCommand.h"
 #include "ScanCommand.h"
 #include "StepCommand.h"
 #include "WriteCommand.h"
@@ -55,5 +57,7 @@ int main(int argc, char *argv[])
     dispatcher.add(std::make_unique<ListenCommand>());
     dispatcher.add(std::make_unique<EncodeCommand>());
     dispatcher.add(std::make_unique<DecodeCommand>());
+    dispatcher.add(std::make_unique<ExportCommand>());
+    dispatcher.add(std::make_unique<ReplayCommand>());
     return dispatcher.run(QCoreApplication::arguments().mid(1), console);
 }

@@ -15,6 +15,7 @@
 #include <panels/FileDialogs.h>
 #include <panels/MessageBanner.h>
 #include <plot/PlotPanel.h>
+#include <recording/RecordingController.h>
 
 #include <motor/SeriesLimits.h>
 #include <sim/SimBus.h>
@@ -256,6 +257,13 @@ int runStudio(const lk::ui::StartupOptions &options)
     else
         window.show();
 
+    if (!options.recording.isEmpty()) {
+        // `lkstudio FILE`: replay, no bus (the banner says why a file cannot be read).
+        window.recording()->openRecording(options.recording);
+        if (!options.screenshotFile.isEmpty())
+            screenshotLater(window, options.screenshotFile, options.screenshotDelayMs);
+        return QApplication::exec();
+    }
     const auto present = [](const QString &port) {
         return QFile::exists(lk::transport::SerialTransport::systemPath(port));
     };

@@ -76,6 +76,23 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::RecordingController</name>
+    <message numerus="yes">
+        <source>Save the last %n minute(s)</source>
+        <translation>
+            <numerusform>Save the last %n minute</numerusform>
+            <numerusform>Save the last %n minutes</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Black box saved after %1: the last %n minute(s) of the link are in %2</source>
+        <translation>
+            <numerusform>Black box saved after %1: the last %n minute of the link is in %2</numerusform>
+            <numerusform>Black box saved after %1: the last %n minutes of the link are in %2</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::ScanControls</name>
     <message numerus="yes">
         <source>ID %1 at %2 baud · %n drive(s) found · about %3 left</source>

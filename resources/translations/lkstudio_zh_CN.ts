@@ -537,6 +537,113 @@
     </message>
 </context>
 <context>
+    <name>lk::recording</name>
+    <message>
+        <source>Recorder dropped %1 bytes in %2 chunks (the disk could not keep up)</source>
+        <translation>记录器丢弃了 %1 字节，共 %2 块（磁盘写入跟不上）</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>已打开 %1</translation>
+    </message>
+    <message>
+        <source>Closed %1</source>
+        <translation>已关闭 %1</translation>
+    </message>
+    <message>
+        <source>Baud changed to %1</source>
+        <translation>波特率改为 %1</translation>
+    </message>
+    <message>
+        <source>Link error: %1</source>
+        <translation>链路错误：%1</translation>
+    </message>
+    <message>
+        <source>Link lost: %1</source>
+        <translation>链路丢失：%1</translation>
+    </message>
+</context>
+<context>
+    <name>lk::recording::RecordFile</name>
+    <message>
+        <source>Cannot create the recording %1: %2.</source>
+        <translation>无法创建记录文件 %1：%2。</translation>
+    </message>
+    <message>
+        <source>Recording stopped: the disk holding %1 is full (%2).</source>
+        <translation>记录已停止：%1 所在的磁盘已满（%2）。</translation>
+    </message>
+    <message>
+        <source>Recording stopped: cannot write %1 (%2).</source>
+        <translation>记录已停止：无法写入 %1（%2）。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::recording::RecordingReader</name>
+    <message>
+        <source>Cannot open the recording %1: %2.</source>
+        <translation>无法打开记录文件 %1：%2。</translation>
+    </message>
+    <message>
+        <source>standard input</source>
+        <translation>标准输入</translation>
+    </message>
+    <message>
+        <source>%1 is not an LK Servo Studio recording (no recording magic).</source>
+        <translation>%1 不是 LK Servo Studio 记录文件（没有记录文件标识）。</translation>
+    </message>
+    <message>
+        <source>The recording %1 ends inside its header, at byte offset %2.</source>
+        <translation>记录文件 %1 在文件头内结束，位于字节偏移 %2。</translation>
+    </message>
+    <message>
+        <source>The recording %1 has format version %2; this build reads version %3.</source>
+        <translation>记录文件 %1 的格式版本为 %2；本版本只能读取版本 %3。</translation>
+    </message>
+    <message>
+        <source>The header of the recording %1 is damaged (checksum or layout).</source>
+        <translation>记录文件 %1 的文件头已损坏（校验和或布局错误）。</translation>
+    </message>
+    <message>
+        <source>The recording %1 ends inside a block at byte offset %2 (the writer stopped there); it was read up to that point.</source>
+        <translation>记录文件 %1 在字节偏移 %2 处的数据块内结束（写入在此中断）；已读取到该位置。</translation>
+    </message>
+    <message>
+        <source>The recording %1 is damaged at byte offset %2 (%3); it was read up to that point.</source>
+        <translation>记录文件 %1 在字节偏移 %2 处损坏（%3）；已读取到该位置。</translation>
+    </message>
+    <message>
+        <source>no block starts there</source>
+        <translation>该处不是数据块的开头</translation>
+    </message>
+    <message>
+        <source>impossible block length</source>
+        <translation>数据块长度不可能</translation>
+    </message>
+    <message>
+        <source>block checksum mismatch</source>
+        <translation>数据块校验和不符</translation>
+    </message>
+    <message>
+        <source>The recording %1 is damaged at byte offset %2 (a record&apos;s layout is wrong); it was read up to that point.</source>
+        <translation>记录文件 %1 在字节偏移 %2 处损坏（某条记录的布局错误）；已读取到该位置。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::recording::ReplayTransport</name>
+    <message>
+        <source>Recording %1 (replay)</source>
+        <translation>记录文件 %1（回放）</translation>
+    </message>
+</context>
+<context>
+    <name>lk::recording::SessionRecorder</name>
+    <message>
+        <source>The session goes on without recording.</source>
+        <translation>会话继续进行，但不再记录。</translation>
+    </message>
+</context>
+<context>
     <name>lk::safety::DriveLimits</name>
     <message>
         <source>the max speed %1 dps is over the drive&apos;s own Max Speed of %2 dps (read from it), which is lower than your speed limit</source>
@@ -1096,6 +1203,17 @@
     <message>
         <source>Hide this message</source>
         <translation>隐藏此消息</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::BlackBoxRecorder</name>
+    <message>
+        <source>Nothing to save: no connection has been opened yet.</source>
+        <translation>没有可保存的内容：尚未打开任何连接。</translation>
+    </message>
+    <message>
+        <source>Cannot create the folder %1.</source>
+        <translation>无法创建文件夹 %1。</translation>
     </message>
 </context>
 <context>
@@ -3865,6 +3983,108 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::RecordingController</name>
+    <message numerus="yes">
+        <source>Save the last %n minute(s)</source>
+        <translation>
+            <numerusform>保存最近 %n 分钟</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Write what the black box holds to %1</source>
+        <translation>将黑匣子中的内容写入 %1</translation>
+    </message>
+    <message>
+        <source>&amp;Open recording…</source>
+        <translation>打开记录文件(&amp;O)…</translation>
+    </message>
+    <message>
+        <source>Open recording</source>
+        <translation>打开记录文件</translation>
+    </message>
+    <message>
+        <source>LK Servo Studio recordings (*.lkrec);;All files (*)</source>
+        <translation>LK Servo Studio 记录文件 (*.lkrec);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Cannot open the recording %1: %2</source>
+        <translation>无法打开记录文件 %1：%2</translation>
+    </message>
+    <message>
+        <source>Replaying %1: %2, recorded %3. Nothing is sent while a recording plays.</source>
+        <translation>正在回放 %1：%2，记录于 %3。回放期间不会发送任何数据。</translation>
+    </message>
+    <message>
+        <source>It plays up to the damage: %1</source>
+        <translation>只能回放到损坏处：%1</translation>
+    </message>
+    <message>
+        <source>the emergency stop</source>
+        <translation>急停</translation>
+    </message>
+    <message>
+        <source>a new drive fault flag</source>
+        <translation>新的驱动器故障标志</translation>
+    </message>
+    <message>
+        <source>the link loss</source>
+        <translation>链路丢失</translation>
+    </message>
+    <message>
+        <source>a burst of timeouts</source>
+        <translation>连续超时</translation>
+    </message>
+    <message>
+        <source>your request</source>
+        <translation>您的请求</translation>
+    </message>
+    <message numerus="yes">
+        <source>Black box saved after %1: the last %n minute(s) of the link are in %2</source>
+        <translation>
+            <numerusform>因%1已保存黑匣子：链路最近 %n 分钟的数据位于 %2</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The black box could not be saved after %1: %2</source>
+        <translation>因%1保存黑匣子失败：%2</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::ReplayBar</name>
+    <message>
+        <source>Replay</source>
+        <translation>回放</translation>
+    </message>
+    <message>
+        <source>Replay speed; idle gaps longer than a second are shortened</source>
+        <translation>回放速度；超过一秒的空闲间隔会被缩短</translation>
+    </message>
+    <message>
+        <source>Load all</source>
+        <translation>全部载入</translation>
+    </message>
+    <message>
+        <source>Read the rest of the recording at once: the plots show all of it</source>
+        <translation>一次读取记录的其余部分：曲线图显示全部内容</translation>
+    </message>
+    <message>
+        <source>Close recording</source>
+        <translation>关闭记录文件</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>播放</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>暂停</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::ScanControls</name>
     <message>
         <source>Try every baud</source>
@@ -4293,6 +4513,10 @@
     <message>
         <source>--settings %1: %2</source>
         <translation>--settings %1：%2</translation>
+    </message>
+    <message>
+        <source>A recording (.lkrec) to replay instead of connecting.</source>
+        <translation>要回放的记录文件（.lkrec），代替连接总线。</translation>
     </message>
 </context>
 <context>
@@ -5049,6 +5273,14 @@
     <message>
         <source>Bus: %1. This log: %2.</source>
         <translation>总线：%1。本日志：%2。</translation>
+    </message>
+    <message>
+        <source>Hide polling</source>
+        <translation>隐藏轮询</translation>
+    </message>
+    <message>
+        <source>Hide the state and angle reads of the poll rounds, so that commands (PID writes, stops, setpoints) stand out</source>
+        <translation>隐藏轮询中的状态和角度读取，使命令（PID 写入、停止、设定值）更加醒目</translation>
     </message>
 </context>
 <context>

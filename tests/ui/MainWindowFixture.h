@@ -11,6 +11,8 @@
 #include <main/MainWindow.h>
 #include <panels/BusModel.h>
 #include <panels/MessageBanner.h>
+#include <recording/BlackBoxRecorder.h>
+#include <recording/RecordingController.h>
 
 #include <protocol/RequestBuilder.h>
 #include <sim/SimBus.h>
@@ -47,6 +49,8 @@ protected:
             return false;
         m_settings = std::make_unique<ui::AppSettings>(m_dir->filePath("lkstudio.ini"));
         m_window = std::make_unique<ui::MainWindow>(m_settings.get());
+        // Black-box saves (an e-stop, a link loss) go to the test's folder, not the user's.
+        m_window->recording()->blackBox()->setFolder(m_dir->filePath("recordings"));
         m_window->resize(1400, 900);
         m_window->show();
         return QTest::qWaitForWindowExposed(m_window.get());

@@ -9,6 +9,7 @@
 
 #include <QtCore/QObject>
 
+#include <functional>
 #include <memory>
 #include <utility>
 
@@ -43,6 +44,10 @@ public:
     void setSimulatorFaults(const QString &spec) { m_simFaults = spec; }
     /// The simulated bus of the current connection; null when on a serial port.
     std::shared_ptr<transport::SimBusHandle> simulator() const { return m_sim; }
+    /// Wraps each connection's transport factory (the black box records through it).
+    using FactoryWrapper =
+        std::function<bus::TransportFactory(bus::TransportFactory, const ConnectionChoice &)>;
+    void setFactoryWrapper(FactoryWrapper wrapper) { m_wrapFactory = std::move(wrapper); }
     /// Scan by itself once each new connection is open (default on).
     void setScanOnConnect(bool on) { m_scanOnConnect = on; }
     double pollRateHz() const { return m_pollRateHz; }
@@ -96,6 +101,7 @@ private:
     bool m_wasOpen = false;
     bool m_reconnecting = false;
     bool m_traffic = false;
+    FactoryWrapper m_wrapFactory;
     std::pair<double, double> m_busLimit{-1, -1}; ///< last busLimitChanged (tx/s, rounds/s)
 };
 

@@ -29,6 +29,7 @@
 #include <panels/TrafficPanel.h>
 #include <plot/PlotPanel.h>
 #include <plot/TelemetryStore.h>
+#include <recording/RecordingController.h>
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QTimer>
@@ -48,7 +49,8 @@ namespace lk::ui {
 
 namespace {
 const QSize kDefaultSize(1400, 900);
-constexpr int kDockShare = 33; // the bus dock takes at most this share of the width at first
+constexpr int kDockShare = 33;       // the bus dock takes at most this share of the width at first
+constexpr int kTrafficRows = 300000; // the black box's ring at a busy 115200-baud poll: ~4 min
 } // namespace
 
 MainWindow::MainWindow(AppSettings *settings, QWidget *parent)
@@ -64,6 +66,8 @@ MainWindow::MainWindow(AppSettings *settings, QWidget *parent)
     m_motion->setSession(m_controller->session());
     buildPanels();
     buildSafety();
+    m_recording = new RecordingController(
+        {m_controller, m_leaveGuard, m_store, m_traffic, m_banner, this}, this);
     buildToolbar();
     buildMenus();
     wirePanels();
@@ -98,7 +102,7 @@ void MainWindow::buildPanels()
     m_dashboard = new DashboardPanel(m_model, m_views);
     m_overview = new OverviewPanel(m_model, m_views);
     m_plots = new PlotPanel(m_store, m_views);
-    m_traffic = new TrafficPanel(m_model, m_views);
+    m_traffic = new TrafficPanel(m_model, m_views, kTrafficRows);
     addView(m_dashboard, QStringLiteral("dashboard"), tr("Dashboard"),
             ThemedIcon::get(QStringLiteral(":/icons/dashboard.svg")));
     addView(m_overview, QStringLiteral("overview"), tr("Overview"),
@@ -184,6 +188,7 @@ void MainWindow::buildMenus()
     QMenu *file = menuBar()->addMenu(tr("&File"));
     file->addAction(ThemedIcon::get(QStringLiteral(":/icons/export.svg")),
                     tr("Export &traffic log\u2026"), m_traffic, &TrafficPanel::exportWithDialog);
+    m_recording->addFileActions(file);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -241,10 +246,8 @@ void MainWindow::wirePanels()
 
     connect(m_dashboard, &DashboardPanel::clearErrorsRequested, m_controller,
             &BusController::clearErrors);
-    connect(m_traffic, &TrafficPanel::captureWanted, m_controller,
-            &BusController::setTrafficCapture);
-    connect(m_controller->session(), &bus::BusSession::trafficCaptured, m_traffic,
-            &TrafficPanel::appendTraffic);
+    // The Traffic view shows the black box's ring (RecordingController), not the session's
+    // own capture: traffic is kept while the view is closed.
     connect(m_controller, &BusController::message, m_banner, &MessageBanner::showMessage);
     connect(m_views, &QTabWidget::currentChanged, this, [this] {
         if (QWidget *w = viewAt(m_views->currentIndex()))

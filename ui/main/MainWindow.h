@@ -22,6 +22,7 @@ class LinkLossWatch;
 class MessageBanner;
 class OverviewPanel;
 class PlotPanel;
+class RecordingController;
 class SpeedWatchReport;
 class StatusSummary;
 class TelemetryStore;
@@ -72,6 +73,7 @@ public:
     LeaveGuard *leaveGuard() const { return m_leaveGuard; }
     DriveFaultWatch *faultWatch() const { return m_faultWatch; }
     QTabWidget *views() const { return m_views; }
+    RecordingController *recording() const { return m_recording; }
 
 public slots:
     /// The application's one emergency stop (EmergencyStopControl::stop): Esc, button, menu.
@@ -122,6 +124,7 @@ private:
     SpeedWatchReport *m_speedWatch = nullptr;
     LeaveGuard *m_leaveGuard = nullptr;
     DriveFaultWatch *m_faultWatch = nullptr;
+    RecordingController *m_recording = nullptr;
     bool m_askBeforeClose = true; ///< false: a signal or a logout already decided
     bool m_stateRestored = false; ///< a saved layout was applied (else size the dock once)
     bool m_firstShow = true;

@@ -7,6 +7,7 @@
 #include <sim/FaultInjector.h>
 
 #include <QtCore/QCommandLineParser>
+#include <QtCore/QFileInfo>
 
 #include <cstdio>
 
@@ -113,6 +114,9 @@ std::optional<StartupOptions> StartupOptions::parse(const QStringList &arguments
         tr("LK Servo Studio: connect, scan, watch, plot and diagnose LK-TECH servo drives on an "
            "RS485 bus. With no options it opens the last port used if it is plugged in, else "
            "the built-in simulated bus."));
+    p.addPositionalArgument(QStringLiteral("file"),
+                            tr("A recording (.lkrec) to replay instead of connecting."),
+                            QStringLiteral("[FILE]"));
     const auto help = p.addHelpOption();
     const auto version = p.addVersionOption();
     const Definitions d;
@@ -129,9 +133,12 @@ std::optional<StartupOptions> StartupOptions::parse(const QStringList &arguments
         std::fputs(qPrintable(text), stdout);
         o.helpShown = true;
         return o;
-    } else if (!p.positionalArguments().isEmpty()) {
-        why = tr("Unexpected argument: %1").arg(p.positionalArguments().first());
+    } else if (p.positionalArguments().size() > 1 ||
+               (p.positionalArguments().size() == 1 &&
+                !QFileInfo(p.positionalArguments().constFirst()).isFile())) {
+        why = tr("Unexpected argument: %1").arg(p.positionalArguments().constLast());
     } else {
+        o.recording = p.positionalArguments().value(0);
         why = o.readBus(p, d);
         if (why.isEmpty())
             why = o.readDisplay(p, d);

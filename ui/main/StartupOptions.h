@@ -44,6 +44,7 @@ public:
     QString language;             ///< --language NAME (hidden): e.g. zh_CN, en; empty: setting
     QString palette;              ///< --palette dark|light (hidden): a Fusion palette
     bool helpShown = false;       ///< --help or --version printed; exit 0
+    QString recording; ///< FILE (the one positional argument): replay it instead of connecting
 
     /// Parse `arguments` (argv, program name first). nullopt with a message on bad input.
     static std::optional<StartupOptions> parse(const QStringList &arguments, QString *error);

@@ -100,6 +100,10 @@ QWidget *TrafficPanel::buildToolbar()
     fillCommandFilter();
     m_faultsOnly = new QCheckBox(tr("Faults only"), bar);
     m_faultsOnly->setObjectName(QStringLiteral("trafficFaultsOnly"));
+    m_hidePolling = new QCheckBox(tr("Hide polling"), bar);
+    m_hidePolling->setObjectName(QStringLiteral("trafficHidePolling"));
+    m_hidePolling->setToolTip(tr("Hide the state and angle reads of the poll rounds, so that "
+                                 "commands (PID writes, stops, setpoints) stand out"));
     m_pause = makeButton(bar, QStringLiteral("trafficPause"), tr("Pause"),
                          QStringLiteral(":/icons/pause.svg"),
                          tr("Freeze the log to read it; faults are still counted"));
@@ -122,6 +126,7 @@ QWidget *TrafficPanel::buildToolbar()
     row->addWidget(m_idFilter);
     row->addWidget(m_commandFilter);
     row->addWidget(m_faultsOnly);
+    row->addWidget(m_hidePolling);
     row->addWidget(m_pause);
     row->addWidget(m_record);
     row->addWidget(clear);
@@ -134,6 +139,7 @@ QWidget *TrafficPanel::buildToolbar()
     connect(m_commandFilter, qOverload<int>(&QComboBox::currentIndexChanged), this,
             [this] { m_filter->setCommandFilter(m_commandFilter->currentData().toInt()); });
     connect(m_faultsOnly, &QCheckBox::toggled, m_filter, &TrafficFilter::setFaultsOnly);
+    connect(m_hidePolling, &QCheckBox::toggled, m_filter, &TrafficFilter::setHidePolling);
     connect(m_record, &QToolButton::toggled, this, &TrafficPanel::updateCapture);
     connect(clear, &QToolButton::clicked, this, [this] {
         m_pending.clear();
@@ -171,6 +177,15 @@ void TrafficPanel::appendTraffic(const bus::TrafficBatch &batch)
         m_model->countOnly(m_pending.mid(0, excess));
         m_pending.remove(0, excess);
     }
+}
+
+void TrafficPanel::showTraffic(const bus::TrafficBatch &batch)
+{
+    m_pending.clear();
+    m_model->clear();
+    appendTraffic(batch);
+    flush();
+    m_view->scrollToBottom();
 }
 
 void TrafficPanel::flush()

@@ -39,6 +39,8 @@ public:
 
 public slots:
     void appendTraffic(const lk::bus::TrafficBatch &batch);
+    /// Replace the log with `batch` (the black box's ring, read again when the view opens).
+    void showTraffic(const lk::bus::TrafficBatch &batch);
     void flush(); ///< move buffered events into the table now (the timer does it at 10 Hz)
     void exportWithDialog();
 
@@ -62,6 +64,7 @@ private:
     QComboBox *m_idFilter = nullptr;
     QComboBox *m_commandFilter = nullptr;
     QCheckBox *m_faultsOnly = nullptr;
+    QCheckBox *m_hidePolling = nullptr;
     QToolButton *m_pause = nullptr;
     QToolButton *m_record = nullptr;
     QLabel *m_counts = nullptr;

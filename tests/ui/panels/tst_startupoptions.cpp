@@ -43,6 +43,12 @@ void tst_StartupOptions::parse_data()
     QTest::newRow("port and sim") << QStringList{"--port", "COM3", "--sim", "1:MF"} << false
                                   << QString() << 0 << 0;
     QTest::newRow("stray argument") << QStringList{"ttyUSB0"} << false << QString() << 0 << 0;
+    // A file is a recording to replay (here any file that exists: this test's binary).
+    QTest::newRow("recording") << QStringList{QCoreApplication::applicationFilePath()} << true
+                               << QString() << 115200 << 0;
+    QTest::newRow("two recordings") << QStringList{QCoreApplication::applicationFilePath(),
+                                                   QCoreApplication::applicationFilePath()}
+                                    << false << QString() << 0 << 0;
     QTest::newRow("unknown option") << QStringList{"--frobnicate"} << false << QString() << 0 << 0;
     QTest::newRow("select 33") << QStringList{"--select", "33"} << false << QString() << 0 << 0;
     QTest::newRow("sim faults") << QStringList{"--sim-faults", "corrupt=0.01,garbage=0.02"} << true

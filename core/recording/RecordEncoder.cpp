@@ -1,0 +1,121 @@
+#include "RecordEncoder.h"
+
+#include "Crc32.h"
+#include "RecordTags.h"
+#include "Varint.h"
+
+namespace lk::recording {
+
+namespace {
+
+void putString(QByteArray &out, const QString &s)
+{
+    const QByteArray utf8 = s.toUtf8();
+    varint::put(out, quint64(utf8.size()));
+    out.append(utf8);
+}
+
+} // namespace
+
+void RecordEncoder::putContext(QByteArray &out, const ContextSnapshot &context)
+{
+    varint::put(out, quint64(context.size()));
+    for (const DriveContext &d : context) {
+        out.append(char(quint8(d.id)));
+        out.append(char(d.series ? quint8(int(*d.series) + 1) : quint8(0)));
+        out.append(char(quint8(d.generation == protocol::Generation::V2_35 ? 1 : 0)));
+    }
+}
+
+QByteArray RecordEncoder::encodeHeader(const RecordingHeader &header)
+{
+    QByteArray body;
+    putString(body, header.toolVersion);
+    body.append(char(quint8(header.linkKind)));
+    putString(body, header.linkDescription);
+    varint::putFixed<quint32>(body, quint32(header.baud));
+    varint::putFixed<qint64>(body, header.wallClockStartMs);
+    putContext(body, header.context);
+
+    QByteArray out(kMagic, sizeof kMagic);
+    varint::putFixed<quint16>(out, header.version);
+    varint::putFixed<quint32>(out, quint32(body.size()));
+    out.append(body);
+    varint::putFixed<quint32>(out, crc32(out.constData(), out.size()));
+    return out;
+}
+
+qint64 RecordEncoder::deltaFor(qint64 timeNs)
+{
+    if (m_payload.isEmpty())
+        m_baseNs = m_lastNs = timeNs;
+    // The session clock never goes back; a record made out of order is stamped with its
+    // predecessor's time rather than given a negative delta.
+    const qint64 delta = qMax<qint64>(0, timeNs - m_lastNs);
+    m_lastNs += delta;
+    return delta;
+}
+
+void RecordEncoder::appendMeta(quint8 type, qint64 delta, const QByteArray &payload)
+{
+    m_payload.append(char(tags::kMeta | type));
+    varint::put(m_payload, quint64(delta));
+    varint::put(m_payload, quint64(payload.size()));
+    m_payload.append(payload);
+}
+
+void RecordEncoder::append(const RecordEvent &event)
+{
+    const qint64 delta = deltaFor(event.timeNs);
+    QByteArray payload;
+    switch (event.kind) {
+    case RecordEvent::Kind::Rx:
+    case RecordEvent::Kind::Tx: {
+        const quint8 dir = event.kind == RecordEvent::Kind::Tx ? tags::kTxBit : 0;
+        const qsizetype n = event.bytes.size();
+        if (n >= 1 && n <= tags::kMaxInlineLength) {
+            m_payload.append(char(dir | quint8(n)));
+        } else {
+            m_payload.append(char(dir));
+            varint::put(m_payload, quint64(n));
+        }
+        varint::put(m_payload, quint64(delta));
+        m_payload.append(event.bytes);
+        return;
+    }
+    case RecordEvent::Kind::Link:
+        payload.append(char(quint8(event.link)));
+        varint::putFixed<quint32>(payload, quint32(event.baud));
+        putString(payload, event.text);
+        appendMeta(tags::kLink, delta, payload);
+        return;
+    case RecordEvent::Kind::Context:
+        putContext(payload, event.context);
+        appendMeta(tags::kContext, delta, payload);
+        return;
+    case RecordEvent::Kind::Dropped:
+        varint::put(payload, event.droppedBytes);
+        varint::put(payload, event.droppedChunks);
+        appendMeta(tags::kDropped, delta, payload);
+        return;
+    }
+}
+
+QByteArray RecordEncoder::takeBlock()
+{
+    if (m_payload.isEmpty())
+        return {};
+    QByteArray block(kBlockSync, sizeof kBlockSync);
+    block.reserve(kBlockHeaderSize + m_payload.size());
+    varint::putFixed<quint32>(block, quint32(m_payload.size()));
+    varint::putFixed<qint64>(block, m_baseNs);
+    // The CRC covers length, base time and payload: a flipped length is found too.
+    quint32 crc = crc32(block.constData() + 4, 12);
+    crc = crc32(m_payload.constData(), m_payload.size(), crc);
+    varint::putFixed<quint32>(block, crc);
+    block.append(m_payload);
+    m_payload.clear();
+    return block;
+}
+
+} // namespace lk::recording

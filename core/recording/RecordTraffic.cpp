@@ -1,0 +1,73 @@
+#include "RecordTraffic.h"
+
+#include "RecordedFrameParser.h"
+
+#include <QtCore/QCoreApplication>
+
+namespace lk::recording {
+
+namespace {
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("lk::recording::RecordTraffic", text);
+}
+
+QString noteOf(const RecordEvent &r)
+{
+    if (r.kind == RecordEvent::Kind::Dropped)
+        return tr("Recorder dropped %1 bytes in %2 chunks (the disk could not keep up)")
+            .arg(r.droppedBytes)
+            .arg(r.droppedChunks);
+    switch (r.link) {
+    case LinkEventKind::Opened:
+        return tr("Opened %1").arg(r.text);
+    case LinkEventKind::Closed:
+        return tr("Closed %1").arg(r.text);
+    case LinkEventKind::BaudChanged:
+        return tr("Baud changed to %1").arg(r.baud);
+    case LinkEventKind::Error:
+        return tr("Link error: %1").arg(r.text);
+    case LinkEventKind::Disconnected:
+        return tr("Link lost: %1").arg(r.text);
+    }
+    return r.text;
+}
+
+} // namespace
+
+bus::TrafficBatch trafficEventsOf(const QVector<RecordEvent> &records, ContextSnapshot context)
+{
+    bus::TrafficBatch out;
+    RecordedFrameParser parser(std::move(context));
+    const auto sink = [&out](const RecordedFrame &f) {
+        bus::TrafficEvent e;
+        e.time = double(f.timeNs) * 1e-9;
+        e.bytes = f.event.bytes;
+        e.id = f.event.frame.id;
+        e.command = f.event.frame.command;
+        if (f.event.isFrame) {
+            e.kind = f.transmitted ? bus::TrafficEvent::Kind::Sent : bus::TrafficEvent::Kind::Frame;
+            e.frame = f.event.frame;
+            e.context = f.context;
+        } else {
+            e.kind = bus::TrafficEvent::Kind::Fault;
+            e.error = f.event.error;
+        }
+        out.append(std::move(e));
+    };
+    for (const RecordEvent &r : records) {
+        parser.feed(r, sink);
+        if (r.kind == RecordEvent::Kind::Link || r.kind == RecordEvent::Kind::Dropped) {
+            bus::TrafficEvent e;
+            e.kind = bus::TrafficEvent::Kind::Note;
+            e.time = double(r.timeNs) * 1e-9;
+            e.text = noteOf(r);
+            out.append(std::move(e));
+        }
+    }
+    parser.finish(sink);
+    return out;
+}
+
+} // namespace lk::recording

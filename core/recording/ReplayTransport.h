@@ -1,0 +1,101 @@
+#pragma once
+
+#include "RecordingReader.h"
+
+#include <bus/BusClock.h>
+#include <bus/SingleShotTimer.h>
+#include <transport/Transport.h>
+
+#include <memory>
+#include <optional>
+
+namespace lk::recording {
+
+/// A Transport that plays a recording back: tx and rx chunks alike arrive as received bytes,
+/// as a tap on the bus saw them, at their recorded times scaled by a speed (0.25x..20x), with
+/// idle gaps longer than `skipIdleNs` shortened to that; seekable; or everything as fast as
+/// the event loop takes it ("load all"). write() sends nothing: it reports a refusal.
+/// Reading is block by block, so an hour-long recording plays in bounded memory.
+class ReplayTransport : public transport::Transport {
+    Q_OBJECT
+public:
+    static constexpr double kMinSpeed = 0.25;
+    static constexpr double kMaxSpeed = 20.0;
+
+    struct Options {
+        double speed = 1.0;
+        qint64 skipIdleNs = 1'000'000'000; ///< 0: play idle gaps at their length
+        bool fastForward = false;
+        /// The clock playback is paced by (tests hand a manual one) and its timers.
+        std::shared_ptr<bus::BusClock> wallClock = bus::makeSteadyBusClock();
+        bus::SingleShotTimerFactory timers = bus::makeQtSingleShotTimer;
+    };
+
+    ReplayTransport(const QString &path, Options options, QObject *parent = nullptr);
+    ~ReplayTransport() override;
+
+    /// Open the file, read its index and start playing from the first record. A file that
+    /// cannot be read emits errorOccurred with the reader's message and stays Closed.
+    bool open() override;
+    void close() override;
+    /// Sends nothing: a replay never transmits. Emits writeRefused.
+    void write(const QByteArray &bytes) override;
+    State state() const override { return m_state; }
+    int baud() const override { return m_reader.header().baud; }
+    QString description() const override;
+
+    const RecordingHeader &header() const { return m_reader.header(); }
+    /// Where reading the file stopped early (Kind::None for a whole file).
+    const RecordingError &damage() const { return m_reader.indexDamage(); }
+    qint64 durationNs() const { return m_reader.lastTimeNs(); }
+    /// The recording time of the last record played.
+    qint64 positionNs() const { return m_positionNs; }
+    /// The recording's clock: what a session replaying it should stamp samples with.
+    std::shared_ptr<bus::BusClock> recordingClock() const { return m_recordingClock; }
+    qint64 refusedWriteBytes() const { return m_refusedBytes; }
+
+    void setSpeed(double speed); ///< clamped to kMinSpeed..kMaxSpeed
+    double speed() const { return m_options.speed; }
+    void setSkipIdleNs(qint64 ns) { m_options.skipIdleNs = qMax<qint64>(0, ns); }
+    void setFastForward(bool on);
+    void play();
+    void pause();
+    bool isPaused() const { return m_paused; }
+    bool isFinished() const { return !m_next; }
+    /// Continue from recording time `ns`: nothing before it is emitted, except the decode
+    /// context in force there (recordPlayed with the last Context record before it).
+    bool seek(qint64 ns);
+
+signals:
+    /// A link, context or dropped record was reached (a context sets the decode context).
+    void recordPlayed(const lk::recording::RecordEvent &record);
+    void writeRefused(int bytes);
+    /// The last record was played (or the damage that ends the file was reached).
+    void finished();
+
+private:
+    qint64 targetNs() const;
+    void anchor(qint64 recordingNs);
+    void advance();
+    void emitRecord(const RecordEvent &record);
+    void tick();
+    void schedule();
+
+    QString m_path;
+    Options m_options;
+    RecordingReader m_reader;
+    QVector<RecordingReader::Block> m_blocks;
+    std::optional<RecordEvent> m_next;
+    std::unique_ptr<bus::SingleShotTimer> m_timer;
+    std::shared_ptr<bus::BusClock> m_recordingClock;
+    State m_state = State::Closed;
+    bool m_paused = false;
+    qint64 m_anchorWallNs = 0;
+    qint64 m_anchorRecordingNs = 0;
+    qint64 m_positionNs = 0;
+    qint64 m_refusedBytes = 0;
+};
+
+} // namespace lk::recording
+
+Q_DECLARE_METATYPE(lk::recording::RecordEvent)

@@ -1,0 +1,236 @@
+// lkctl on recordings: `decode` reads one (file or standard input, told by its magic) with the
+// recorded decode context, and stops at damage naming the offset; `export` writes pcap and
+// telemetry CSV.
+#include "E2eUtil.h"
+#include "RecordingTestUtil.h"
+
+#include <protocol/Reply.h>
+#include <recording/PcapExport.h>
+
+#include <QtCore/QTemporaryDir>
+#include <QtTest/QtTest>
+
+using namespace lk::recording;
+namespace protocol = lk::protocol;
+using lk::e2e::describeRun;
+using lk::e2e::jsonOf;
+using lk::e2e::lkctl;
+using lk::testsupport::lines;
+using lk::testsupport::writeFile;
+
+namespace {
+
+QByteArray state2Reply(int id, qint16 torqueRaw)
+{
+    protocol::State2 s;
+    s.temperatureC = 31;
+    s.torqueRaw = torqueRaw;
+    s.speedDps = 120;
+    s.encoder = 1000;
+    return protocol::Reply{protocol::Command::ReadState2, quint8(id), s}.encode();
+}
+
+QByteArray request(int id)
+{
+    return protocol::encodeFrame(0x9C, quint8(id), {});
+}
+
+/// Drive 1 is an MS (power), drive 2 an MF; the reply of drive 2 comes in two chunks; then
+/// two bytes of garbage and the link is lost.
+QByteArray sampleRecording(qsizetype *secondBlock = nullptr)
+{
+    RecordingHeader h = lk::testsupport::testHeader();
+    h.context = {{1, protocol::Series::MS, protocol::Generation::V2_3},
+                 {2, protocol::Series::MF, protocol::Generation::V2_3}};
+    QByteArray file = RecordEncoder::encodeHeader(h);
+    RecordEncoder enc;
+    enc.append(RecordEvent::data(RecordEvent::Kind::Tx, 1'000'000, request(1)));
+    enc.append(RecordEvent::data(RecordEvent::Kind::Rx, 1'200'000, state2Reply(1, 500)));
+    file += enc.takeBlock();
+    if (secondBlock)
+        *secondBlock = file.size();
+    const QByteArray reply2 = state2Reply(2, 100);
+    enc.append(RecordEvent::data(RecordEvent::Kind::Tx, 2'000'000, request(2)));
+    enc.append(RecordEvent::data(RecordEvent::Kind::Rx, 2'100'000, reply2.left(4)));
+    enc.append(RecordEvent::data(RecordEvent::Kind::Rx, 2'200'000, reply2.mid(4) + "\x01\x02"));
+    RecordEvent lost;
+    lost.kind = RecordEvent::Kind::Link;
+    lost.timeNs = 3'000'000;
+    lost.link = LinkEventKind::Disconnected;
+    lost.text = QStringLiteral("/dev/ttyTEST");
+    enc.append(lost);
+    file += enc.takeBlock();
+    return file;
+}
+
+/// What `lkctl export` writes for the sample recording with `option` (--pcap, --csv).
+QByteArray exported(const QString &option)
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("s.lkrec"));
+    const QString out = dir.filePath(QStringLiteral("s.out"));
+    if (!writeFile(path, sampleRecording()))
+        return {};
+    const auto r = lkctl({QStringLiteral("export"), path, option, out});
+    if (r.exitCode != 0)
+        qWarning("%s", qPrintable(describeRun(r)));
+    QFile f(out);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+} // namespace
+
+class tst_LkctlRecording : public QObject {
+    Q_OBJECT
+private slots:
+    void decodeReadsARecordingWithItsContext()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("s.lkrec"));
+        QVERIFY(writeFile(path, sampleRecording()));
+        const auto r = lkctl({QStringLiteral("decode"), path});
+        QCOMPARE(r.exitCode, 3); // the garbage
+        const auto l = lines(r.out);
+        QCOMPARE(l.size(), 6);
+        const QJsonObject req = jsonOf(l[0]);
+        QCOMPARE(req.value("direction").toString(), QStringLiteral("request"));
+        QCOMPARE(req.value("wire").toString(), QStringLiteral("tx"));
+        QCOMPARE(req.value("time_s").toDouble(), 0.001);
+        const QJsonObject ms = jsonOf(l[1]);
+        QCOMPARE(ms.value("wire").toString(), QStringLiteral("rx"));
+        QCOMPARE(ms.value("fields").toObject().value("power").toInt(), 500); // MS: power
+        const QJsonObject mf = jsonOf(l[3]);
+        QCOMPARE(mf.value("id").toInt(), 2);
+        QVERIFY2(mf.value("fields").toObject().contains("iq_a"), l[3].constData());
+        QCOMPARE(jsonOf(l[4]).value("error").toString(), QStringLiteral("garbage"));
+        QVERIFY(jsonOf(l[5]).value("note").toString().contains(QStringLiteral("/dev/ttyTEST")));
+    }
+
+    void decodeReadsARecordingOnStandardInput()
+    {
+        const auto r = lk::e2e::runProgram(
+            QStringLiteral(LKCTL_PATH), {QStringLiteral("decode"), QStringLiteral("-")},
+            QProcessEnvironment::systemEnvironment(), 60000, sampleRecording());
+        QCOMPARE(lines(r.out).size(), 6);
+        QCOMPARE(jsonOf(lines(r.out)[1]).value("fields").toObject().value("power").toInt(), 500);
+        // Hex text still decodes as before.
+        const auto hex = lk::e2e::runProgram(
+            QStringLiteral(LKCTL_PATH), {QStringLiteral("decode"), QStringLiteral("-")},
+            QProcessEnvironment::systemEnvironment(), 60000, "3E 80 01 00 BF\n");
+        QCOMPARE(hex.exitCode, 0);
+        QCOMPARE(jsonOf(lines(hex.out).value(0)).value("command").toString(),
+                 QStringLiteral("motor_off"));
+    }
+
+    void decodeStopsAtDamageNamingTheOffset()
+    {
+        qsizetype second = 0;
+        QByteArray file = sampleRecording(&second);
+        file[second + 30] = char(file[second + 30] ^ 0x40);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("bad.lkrec"));
+        QVERIFY(writeFile(path, file));
+        const auto r = lkctl({QStringLiteral("decode"), path});
+        QCOMPARE(r.exitCode, 3);
+        QCOMPARE(lines(r.out).size(), 2); // the first block
+        QVERIFY2(r.err.contains(QByteArray::number(second)), describeRun(r).toUtf8());
+    }
+
+    void exportWritesPcap()
+    {
+        const QByteArray bytes = exported(QStringLiteral("--pcap"));
+        QVERIFY(bytes.startsWith(PcapExport::fileHeader()));
+        // The context, then five packets: request, reply, request, reply, garbage.
+        qsizetype pos = 24;
+        QVector<QByteArray> packets;
+        while (pos + 16 <= bytes.size()) {
+            const quint32 len = quint8(bytes[pos + 8]) | quint8(bytes[pos + 9]) << 8;
+            packets.append(bytes.mid(pos + 16, len));
+            pos += 16 + len;
+        }
+        QCOMPARE(pos, bytes.size());
+        QCOMPARE(packets.size(), 6);
+        QCOMPARE(packets[0], QByteArray("\x00\x04\x01\x01\x00\x02\x02\x00", 8));
+        QCOMPARE(packets[1], QByteArray("\x01\x00", 2) + request(1));
+        QCOMPARE(packets[2], QByteArray("\x00\x01", 2) + state2Reply(1, 500));
+        QCOMPARE(packets[5], QByteArray("\x00\x03\x01\x02", 4));
+        // The first packet's time: the wall-clock start.
+        const quint32 sec = quint32(quint8(bytes[24])) | quint32(quint8(bytes[25])) << 8 |
+                            quint32(quint8(bytes[26])) << 16 | quint32(quint8(bytes[27])) << 24;
+        QCOMPARE(qint64(sec), lk::testsupport::testHeader().wallClockStartMs / 1000);
+    }
+
+    void exportWritesTelemetryCsv()
+    {
+        const auto l = lines(exported(QStringLiteral("--csv")));
+        QCOMPARE(l.size(), 3);
+        const QList<QByteArray> header = l[0].split(',');
+        QCOMPARE(header.value(0), QByteArray("time_s"));
+        QCOMPARE(header.value(1), QByteArray("id"));
+        const QList<QByteArray> row1 = l[1].split(',');
+        const QList<QByteArray> row2 = l[2].split(',');
+        QCOMPARE(row1.value(0), QByteArray("0.001200"));
+        QCOMPARE(row1.value(1), QByteArray("1"));
+        const int power = int(header.indexOf("power"));
+        const int iq = int(header.indexOf("iq_a"));
+        QVERIFY(power > 0 && iq > 0);
+        QCOMPARE(row1.value(power), QByteArray("500"));
+        QCOMPARE(row1.value(iq), QByteArray()); // MS: no iq, never 0
+        QCOMPARE(row2.value(1), QByteArray("2"));
+        QCOMPARE(row2.value(power), QByteArray());
+        QVERIFY(!row2.value(iq).isEmpty());
+    }
+
+    void replayDecodesThroughThePassivePath()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("s.lkrec"));
+        QVERIFY(writeFile(path, sampleRecording()));
+        const auto r = lkctl({QStringLiteral("replay"), path, QStringLiteral("--json")});
+        QVERIFY2(r.exitCode == 0, describeRun(r).toUtf8());
+        const auto l = lines(r.out);
+        QCOMPARE(l.size(), 2);
+        const QJsonObject ms = jsonOf(l[0]);
+        QCOMPARE(ms.value("id").toInt(), 1);
+        QCOMPARE(ms.value("time_s").toDouble(), 0.0012); // the recording's clock
+        QCOMPARE(ms.value("power").toInt(), 500);        // the recorded context: MS
+        QVERIFY(!ms.contains("iq_a"));
+        const QJsonObject mf = jsonOf(l[1]);
+        QCOMPARE(mf.value("id").toInt(), 2);
+        QVERIFY(mf.contains("iq_a"));
+        QVERIFY2(r.err.contains("paired 2"), r.err.constData());
+        // CSV: the long layout's header, then the same rows.
+        const auto csv = lkctl({QStringLiteral("replay"), path});
+        QCOMPARE(lines(csv.out).size(), 3);
+        QVERIFY(csv.out.startsWith("time_s,id,"));
+    }
+
+    void replayStopsAtDamageNamingTheOffset()
+    {
+        qsizetype second = 0;
+        QByteArray file = sampleRecording(&second);
+        file.truncate(second + 10);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("cut.lkrec"));
+        QVERIFY(writeFile(path, file));
+        const auto r = lkctl({QStringLiteral("replay"), path, QStringLiteral("--json")});
+        QCOMPARE(r.exitCode, 3);
+        QCOMPARE(lines(r.out).size(), 1);
+        QVERIFY2(r.err.contains(QByteArray::number(second)), describeRun(r).toUtf8());
+    }
+
+    void exportRefusesWhatIsNoRecording()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("x.txt"));
+        QVERIFY(writeFile(path, "3E 80 01 00 BF\n"));
+        const auto r = lkctl({QStringLiteral("export"), path, QStringLiteral("--pcap"),
+                              dir.filePath(QStringLiteral("x.pcap"))});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.err.contains("not an LK Servo Studio recording"));
+        QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("x.pcap"))));
+    }
+};
+
+QTEST_GUILESS_MAIN(tst_LkctlRecording)
+#include "tst_lkctlrecording.moc"

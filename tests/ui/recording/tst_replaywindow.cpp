@@ -1,0 +1,182 @@
+// Replay in the window: File -> Open recording plays a saved black box into the views; the
+// samples are the ones the live session had, decoded with the recorded context (the MS
+// drive's power too); a damaged file opens up to the damage and the banner names the offset;
+// a file that is no recording is refused with the reader's message; nothing is sent.
+#include "../MainWindowFixture.h"
+
+#include <panels/TrafficModel.h>
+#include <panels/TrafficPanel.h>
+#include <plot/TelemetryStore.h>
+#include <record/TelemetryColumns.h>
+#include <recording/RecordingReader.h>
+#include <recording/RecordingReplay.h>
+
+#include <cmath>
+
+using namespace lk;
+
+namespace {
+
+/// What a sample says: its drive, source and every column (NaN where it has none).
+struct Values {
+    int id = 0;
+    int source = 0;
+    QVector<double> columns;
+    bool operator==(const Values &o) const
+    {
+        if (id != o.id || source != o.source || columns.size() != o.columns.size())
+            return false;
+        for (int i = 0; i < columns.size(); ++i)
+            if (!(columns[i] == o.columns[i] ||
+                  (std::isnan(columns[i]) && std::isnan(o.columns[i]))))
+                return false;
+        return true;
+    }
+};
+
+QVector<Values> valuesOf(const bus::TelemetryBatch &batch)
+{
+    QVector<Values> out;
+    for (const bus::TelemetrySample &s : batch)
+        out.append(Values{s.id, int(s.source), record::TelemetryColumns::values(s)});
+    return out;
+}
+
+QByteArray readAll(const QString &path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+bool writeAll(const QString &path, const QByteArray &bytes)
+{
+    QFile f(path);
+    return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
+}
+
+} // namespace
+
+class tst_ReplayWindow : public uitest::MainWindowFixture {
+    Q_OBJECT
+private slots:
+    void init() { QVERIFY(openWindow()); }
+    void cleanup() { closeWindow(); }
+
+    void replayGivesTheSamplesTheLiveSessionHad();
+    void damagedRecordingOpensToTheDamageWithItsOffset();
+    void notARecordingIsRefusedWithTheReason();
+
+private:
+    ui::RecordingController *recording() const { return m_window->recording(); }
+    QString replayEntry() const
+    {
+        return m_window->banner()->entryText(ui::RecordingController::replayKey());
+    }
+    /// A black box of the simulated bus with at least `samples` samples polled; the live
+    /// samples it holds go to `live`.
+    QString recordLive(int samples, QVector<Values> *live)
+    {
+        // From the connection on: the ring has the scan's replies too.
+        const auto c = QObject::connect(
+            m_window->controller()->session(), &bus::BusSession::telemetryReceived, m_window.get(),
+            [live](const bus::TelemetryBatch &b) { *live += valuesOf(b); });
+        const bool polled =
+            findAllDrives() &&
+            QTest::qWaitFor([&] { return live->size() >= samples; }, uitest::kWaitMs);
+        // Every sample delivered so far was decoded from bytes the ring already holds.
+        QObject::disconnect(c);
+        return polled ? recording()->blackBox()->save(QStringLiteral("test")) : QString();
+    }
+    /// Open `path` and play it whole ("Load all"); the samples it gave.
+    QVector<Values> replayWhole(const QString &path)
+    {
+        QVector<Values> out;
+        auto *replay = recording()->replay();
+        const auto c =
+            QObject::connect(replay, &ui::RecordingReplay::telemetryReceived,
+                             [&out](const bus::TelemetryBatch &b) { out += valuesOf(b); });
+        bool done = false;
+        const auto f =
+            QObject::connect(replay, &ui::RecordingReplay::finished, [&done] { done = true; });
+        if (recording()->openRecording(path)) {
+            replay->loadAll();
+            if (!QTest::qWaitFor([&] { return done; }, uitest::kWaitMs))
+                out.clear(); // a replay that never ends gives nothing to compare
+        }
+        QObject::disconnect(c);
+        QObject::disconnect(f);
+        return out;
+    }
+};
+
+void tst_ReplayWindow::replayGivesTheSamplesTheLiveSessionHad()
+{
+    QVector<Values> live;
+    const QString path = recordLive(400, &live);
+    QVERIFY(!path.isEmpty());
+    const QVector<Values> replayed = replayWhole(path);
+    qInfo("live %d samples, replayed %d", int(live.size()), int(replayed.size()));
+    QVERIFY(live.size() >= 400);
+    // Every live sample is in the replay, in order (a reply the session took as late is on
+    // the wire, so in the replay, but was no sample).
+    int j = 0;
+    for (int i = 0; i < live.size(); ++i) {
+        while (j < replayed.size() && !(replayed[j] == live[i]))
+            ++j;
+        QVERIFY2(j < replayed.size(),
+                 qPrintable(QStringLiteral("live sample %1 of drive %2 is not in the replay")
+                                .arg(i)
+                                .arg(live[i].id)));
+        ++j;
+    }
+    QVERIFY(replayed.size() - live.size() <= live.size() / 20);
+    // The views show it: the drives, the plots (drive 3 is an MS: power), the traffic.
+    QCOMPARE(model()->ids(), uitest::kSimIds);
+    QVERIFY(m_window->telemetryStore()->count(2, ui::TelemetryChannel::Speed) > 10);
+    QCOMPARE(m_window->telemetryStore()->torqueIsPower(3), std::optional(true));
+    m_window->traffic()->flush();
+    QVERIFY(m_window->traffic()->trafficModel()->rowCount() > 400);
+    // And nothing can transmit: no bus is open, no view may send.
+    QVERIFY(!m_window->controller()->session()->isRunning());
+    QVERIFY(!model()->canSend());
+    QVERIFY2(replayEntry().contains(QStringLiteral("Nothing is sent")), qPrintable(replayEntry()));
+}
+
+void tst_ReplayWindow::damagedRecordingOpensToTheDamageWithItsOffset()
+{
+    QVector<Values> live;
+    const QString path = recordLive(400, &live);
+    QVERIFY(!path.isEmpty());
+    QByteArray bytes = readAll(path);
+    QVERIFY(bytes.size() > 2000);
+    const qsizetype at = bytes.size() * 3 / 4;
+    bytes[at] = char(bytes.at(at) ^ 0x5A);
+    const QString damaged = m_dir->filePath(QStringLiteral("damaged.lkrec"));
+    QVERIFY(writeAll(damaged, bytes));
+    recording::RecordingReader reader;
+    QVERIFY(reader.open(damaged));
+    reader.index();
+    const qint64 offset = reader.indexDamage().offset;
+    QVERIFY(offset > 0 && offset <= at);
+
+    const QVector<Values> replayed = replayWhole(damaged);
+    QVERIFY(!replayed.isEmpty()); // what comes before the damage plays
+    QCOMPARE(m_window->banner()->entryLevel(ui::RecordingController::replayKey()),
+             ui::MessageBanner::Level::Warning);
+    QVERIFY2(replayEntry().contains(QString::number(offset)), qPrintable(replayEntry()));
+}
+
+void tst_ReplayWindow::notARecordingIsRefusedWithTheReason()
+{
+    const QString path = m_dir->filePath(QStringLiteral("notes.lkrec"));
+    QVERIFY(writeAll(path, QByteArrayLiteral("3e 9c 01 00 db\n")));
+    QVERIFY(!recording()->openRecording(path));
+    QCOMPARE(m_window->banner()->entryLevel(ui::RecordingController::replayKey()),
+             ui::MessageBanner::Level::Error);
+    QVERIFY2(replayEntry().contains(QStringLiteral("not an LK Servo Studio recording")),
+             qPrintable(replayEntry()));
+    QVERIFY(!recording()->replay()->isOpen());
+}
+
+QTEST_MAIN(tst_ReplayWindow)
+#include "tst_replaywindow.moc"

@@ -1,0 +1,191 @@
+#include "RecordingController.h"
+
+#include "BlackBoxRecorder.h"
+#include "BlackBoxTrafficFeed.h"
+
+#include "RecordingReplay.h"
+#include "ReplayBar.h"
+
+#include <main/BusController.h>
+#include <main/LeaveGuard.h>
+#include <panels/BusModel.h>
+#include <panels/MessageBanner.h>
+#include <panels/TrafficPanel.h>
+#include <plot/TelemetryStore.h>
+
+#include <QtCore/QDateTime>
+#include <QtCore/QFileInfo>
+#include <QtWidgets/QFileDialog>
+#include <QtWidgets/QMainWindow>
+#include <QtWidgets/QMenu>
+
+namespace lk::ui {
+
+namespace {
+const QString kOnRequest = QStringLiteral("on request");
+
+recording::RecordingHeader headerFor(const ConnectionChoice &choice)
+{
+    recording::RecordingHeader h;
+    h.linkKind =
+        choice.isSimulator() ? recording::LinkKind::Simulated : recording::LinkKind::Serial;
+    h.linkDescription = QStringLiteral("%1 @ %2")
+                            .arg(choice.isSimulator() ? QStringLiteral("simulator") : choice.port)
+                            .arg(choice.baud);
+    h.baud = choice.baud;
+    return h;
+}
+} // namespace
+
+RecordingController::RecordingController(const Parts &parts, QObject *parent)
+    : QObject(parent), m_parts(parts), m_recorder(new BlackBoxRecorder(this)),
+      m_feed(new BlackBoxTrafficFeed(m_recorder, parts.traffic, this)),
+      m_replay(new RecordingReplay(this)), m_bar(new ReplayBar(m_replay, parts.window))
+{
+    parts.controller->setFactoryWrapper(
+        [this](bus::TransportFactory inner, const ConnectionChoice &choice) {
+            closeRecording(); // a live bus replaces the replay
+            return m_recorder->wrap(std::move(inner), headerFor(choice));
+        });
+    m_recorder->attach(parts.controller->session());
+    connect(m_recorder, &BlackBoxRecorder::saved, this, &RecordingController::showSaved);
+    connect(m_recorder, &BlackBoxRecorder::saveFailed, this, &RecordingController::showSaveFailed);
+    parts.window->addToolBar(Qt::BottomToolBarArea, m_bar);
+    m_bar->hide();
+    wireReplay();
+}
+
+void RecordingController::wireReplay()
+{
+    BusModel *model = m_parts.controller->model();
+    const auto addDrive = [this, model](int id, std::optional<protocol::Series> series) {
+        if (model->drive(id))
+            return;
+        bus::FoundMotor found;
+        found.id = id;
+        found.baud = m_replay->header().baud;
+        found.series = series;
+        model->addFound(found);
+    };
+    connect(m_replay, &RecordingReplay::drivesChanged, this,
+            [addDrive](const recording::ContextSnapshot &drives) {
+                for (const recording::DriveContext &d : drives)
+                    addDrive(d.id, d.series);
+            });
+    connect(m_replay, &RecordingReplay::driveSeen, this,
+            [addDrive](int id) { addDrive(id, std::nullopt); });
+    connect(m_replay, &RecordingReplay::telemetryReceived, model, &BusModel::applyTelemetry);
+    connect(m_replay, &RecordingReplay::telemetryReceived, m_parts.store, &TelemetryStore::append);
+    connect(m_replay, &RecordingReplay::trafficCaptured, m_parts.traffic,
+            &TrafficPanel::appendTraffic);
+    connect(m_bar, &ReplayBar::closeRequested, this, &RecordingController::closeRecording);
+}
+
+void RecordingController::addFileActions(QMenu *file)
+{
+    m_save = file->addAction(tr("Save the last %n minute(s)", nullptr, m_recorder->windowMinutes()),
+                             this, &RecordingController::saveNow);
+    m_save->setObjectName(QStringLiteral("saveBlackBox"));
+    m_save->setToolTip(tr("Write what the black box holds to %1").arg(m_recorder->folder()));
+    QAction *open = file->addAction(tr("&Open recording\u2026"), this,
+                                    &RecordingController::openRecordingWithDialog);
+    open->setObjectName(QStringLiteral("openRecording"));
+}
+
+void RecordingController::openRecordingWithDialog()
+{
+    const QString path =
+        QFileDialog::getOpenFileName(m_parts.window, tr("Open recording"), m_recorder->folder(),
+                                     tr("LK Servo Studio recordings (*.lkrec);;All files (*)"));
+    if (!path.isEmpty())
+        openRecording(path);
+}
+
+bool RecordingController::openRecording(const QString &path)
+{
+    if (m_parts.controller->session()->isRunning()) {
+        if (!m_parts.leaveGuard->prepare(LeaveGuard::Leaving::Disconnect))
+            return false;
+        m_parts.controller->disconnectBus();
+    }
+    closeRecording();
+    m_feed->setSuspended(true); // the views show the recording, not the last bus's ring
+    m_parts.store->clear();
+    m_parts.controller->model()->clearDrives();
+    m_parts.traffic->showTraffic({});
+    QString error;
+    if (!m_replay->open(path, recording::ReplayTransport::Options{}, &error)) {
+        m_feed->setSuspended(false);
+        m_parts.banner->setEntry(replayKey(), MessageBanner::Level::Error,
+                                 tr("Cannot open the recording %1: %2")
+                                     .arg(path.toHtmlEscaped(), error.toHtmlEscaped()));
+        return false;
+    }
+    m_bar->refresh();
+    showReplaying();
+    return true;
+}
+
+void RecordingController::showReplaying()
+{
+    const recording::RecordingHeader &h = m_replay->header();
+    QString text = tr("Replaying %1: %2, recorded %3. Nothing is sent while a recording plays.")
+                       .arg(QFileInfo(m_replay->path()).fileName().toHtmlEscaped(),
+                            h.linkDescription.toHtmlEscaped(),
+                            QDateTime::fromMSecsSinceEpoch(h.wallClockStartMs)
+                                .toString(QStringLiteral("yyyy-MM-dd HH:mm:ss")));
+    const recording::RecordingError damage = m_replay->damage();
+    if (damage.isError())
+        text += QLatin1Char(' ') +
+                tr("It plays up to the damage: %1").arg(damage.message.toHtmlEscaped());
+    m_parts.banner->setEntry(
+        replayKey(), damage.isError() ? MessageBanner::Level::Warning : MessageBanner::Level::Info,
+        text);
+}
+
+void RecordingController::closeRecording()
+{
+    if (!m_replay->isOpen())
+        return;
+    m_replay->close();
+    m_bar->refresh();
+    m_parts.banner->clearEntry(replayKey());
+    m_feed->setSuspended(false);
+}
+
+void RecordingController::saveNow()
+{
+    m_recorder->save(kOnRequest);
+}
+
+QString RecordingController::causeText(const QString &why)
+{
+    if (why == QLatin1String("emergency stop"))
+        return tr("the emergency stop");
+    if (why == QLatin1String("fault flag"))
+        return tr("a new drive fault flag");
+    if (why == QLatin1String("link lost"))
+        return tr("the link loss");
+    if (why == QLatin1String("timeout burst"))
+        return tr("a burst of timeouts");
+    return tr("your request");
+}
+
+void RecordingController::showSaved(const QString &why, const QString &path)
+{
+    m_parts.banner->setEntry(
+        entryKey(), MessageBanner::Level::Info,
+        tr("Black box saved after %1: the last %n minute(s) of the link are in "
+           "%2",
+           nullptr, m_recorder->windowMinutes())
+            .arg(causeText(why).toHtmlEscaped(), path.toHtmlEscaped()));
+}
+
+void RecordingController::showSaveFailed(const QString &why, const QString &error)
+{
+    m_parts.banner->setEntry(entryKey(), MessageBanner::Level::Warning,
+                             tr("The black box could not be saved after %1: %2")
+                                 .arg(causeText(why).toHtmlEscaped(), error.toHtmlEscaped()));
+}
+
+} // namespace lk::ui

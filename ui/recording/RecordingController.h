@@ -1,0 +1,78 @@
+#pragma once
+
+#include <QtCore/QObject>
+
+class QAction;
+class QMainWindow;
+class QMenu;
+
+namespace lk::ui {
+
+class BlackBoxRecorder;
+class BlackBoxTrafficFeed;
+class BusController;
+class LeaveGuard;
+class MessageBanner;
+class RecordingReplay;
+class ReplayBar;
+class TelemetryStore;
+class TrafficPanel;
+
+/// lkstudio's recording features, wired to the window's pieces: the black box on every
+/// connection (BlackBoxRecorder), the Traffic view fed from its ring, the banner entry that
+/// says where a saved recording is, File -> "Save the last 10 minutes", and the replay of a
+/// recording (File -> Open recording, `lkstudio FILE`) into the same views as live.
+class RecordingController : public QObject {
+    Q_OBJECT
+public:
+    /// The window's pieces it works with; none is owned, all outlive the controller's use.
+    struct Parts {
+        BusController *controller = nullptr;
+        LeaveGuard *leaveGuard = nullptr;
+        TelemetryStore *store = nullptr;
+        TrafficPanel *traffic = nullptr;
+        MessageBanner *banner = nullptr;
+        QMainWindow *window = nullptr; ///< gets the replay toolbar
+    };
+    /// The banner entry of a saved (or failed) black-box recording.
+    static QString entryKey() { return QStringLiteral("blackBox"); }
+    /// The banner entry of the recording being replayed (or that could not be opened).
+    static QString replayKey() { return QStringLiteral("replay"); }
+
+    RecordingController(const Parts &parts, QObject *parent = nullptr);
+
+    BlackBoxRecorder *blackBox() const { return m_recorder; }
+    BlackBoxTrafficFeed *trafficFeed() const { return m_feed; }
+    RecordingReplay *replay() const { return m_replay; }
+    ReplayBar *replayBar() const { return m_bar; }
+    /// Add the recording actions to the File menu.
+    void addFileActions(QMenu *file);
+    QAction *saveAction() const { return m_save; }
+
+public slots:
+    /// File -> Save the last 10 minutes.
+    void saveNow();
+    /// Close the bus (what was set moving is stopped first, or the user keeps it: then
+    /// nothing happens) and play `path` into the views. False when it was not opened; the
+    /// banner says why (the reader's message names the offset of damage).
+    bool openRecording(const QString &path);
+    void openRecordingWithDialog();
+    void closeRecording();
+
+private:
+    /// The cause a save names (BlackBoxTriggers' reason names, or kOnRequest), worded.
+    static QString causeText(const QString &why);
+    void showSaved(const QString &why, const QString &path);
+    void showSaveFailed(const QString &why, const QString &error);
+    void wireReplay();
+    void showReplaying();
+
+    Parts m_parts;
+    BlackBoxRecorder *m_recorder;
+    BlackBoxTrafficFeed *m_feed;
+    RecordingReplay *m_replay;
+    ReplayBar *m_bar;
+    QAction *m_save = nullptr;
+};
+
+} // namespace lk::ui

@@ -1,0 +1,75 @@
+#pragma once
+
+#include <recording/ReplayTransport.h>
+
+#include <bus/TelemetrySample.h>
+#include <bus/TrafficEvent.h>
+#include <protocol/StreamParser.h>
+
+#include <QtCore/QObject>
+
+#include <memory>
+
+namespace lk::ui {
+
+/// Plays a recording into what the live views read: its frames as traffic rows and its
+/// replies as telemetry samples on the recording's clock (seconds since it started), decoded
+/// with the decode context the recording carries at each moment. Built on ReplayTransport,
+/// which never transmits; no bus session is involved, so nothing can be sent while it plays.
+class RecordingReplay : public QObject {
+    Q_OBJECT
+public:
+    explicit RecordingReplay(QObject *parent = nullptr);
+    ~RecordingReplay() override;
+
+    /// Open `path` and start playing at `options.speed` (paused when `options` says so).
+    /// False with the reader's message (naming the offset of damage) when it cannot be read;
+    /// a file damaged later opens up to the damage and damage() says where.
+    bool open(const QString &path, recording::ReplayTransport::Options options, QString *error);
+    void close();
+    bool isOpen() const { return m_transport != nullptr; }
+    QString path() const { return m_path; }
+
+    const recording::RecordingHeader &header() const { return m_transport->header(); }
+    /// Where the file stops being readable; Kind::None for a whole file.
+    recording::RecordingError damage() const;
+    double durationSeconds() const;
+    double positionSeconds() const;
+    bool isPaused() const;
+    bool isFinished() const;
+    double speed() const;
+
+    void play();
+    void pause();
+    void setSpeed(double speed);
+    /// Continue from `seconds` into the recording (what was shown stays; later rows follow).
+    void seek(double seconds);
+    /// Everything left at once, as fast as the event loop takes it ("Load all").
+    void loadAll();
+
+signals:
+    void telemetryReceived(const lk::bus::TelemetryBatch &batch);
+    void trafficCaptured(const lk::bus::TrafficBatch &batch);
+    /// The decode context changed: these drives are on the recorded bus.
+    void drivesChanged(const lk::recording::ContextSnapshot &drives);
+    /// A drive not in the context replied (its series is unknown: decoded as MF).
+    void driveSeen(int id);
+    void positionChanged(double seconds);
+    void finished();
+
+private:
+    void onBytes(const QByteArray &bytes);
+    void onRecord(const recording::RecordEvent &record);
+    void onFrame(const protocol::ParseEvent &event, double time, bus::TrafficBatch *traffic,
+                 bus::TelemetryBatch *telemetry);
+    protocol::DecodeContext contextOf(int id) const;
+    void setContext(const recording::ContextSnapshot &context);
+
+    std::unique_ptr<recording::ReplayTransport> m_transport;
+    QString m_path;
+    protocol::StreamParser m_parser;
+    recording::ContextSnapshot m_context;
+    QVector<int> m_seen; ///< every drive reported (context or reply)
+};
+
+} // namespace lk::ui
