@@ -506,6 +506,113 @@
     </message>
 </context>
 <context>
+    <name>lk::recording</name>
+    <message>
+        <source>Recorder dropped %1 bytes in %2 chunks (the disk could not keep up)</source>
+        <translation>记录器丢弃了 %1 字节，共 %2 块（磁盘写入跟不上）</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>已打开 %1</translation>
+    </message>
+    <message>
+        <source>Closed %1</source>
+        <translation>已关闭 %1</translation>
+    </message>
+    <message>
+        <source>Baud changed to %1</source>
+        <translation>波特率已改为 %1</translation>
+    </message>
+    <message>
+        <source>Link error: %1</source>
+        <translation>链路错误：%1</translation>
+    </message>
+    <message>
+        <source>Link lost: %1</source>
+        <translation>链路丢失：%1</translation>
+    </message>
+</context>
+<context>
+    <name>lk::recording::RecordFile</name>
+    <message>
+        <source>Cannot create the recording %1: %2.</source>
+        <translation>无法创建记录文件 %1：%2。</translation>
+    </message>
+    <message>
+        <source>Recording stopped: the disk holding %1 is full (%2).</source>
+        <translation>记录已停止：%1 所在的磁盘已满（%2）。</translation>
+    </message>
+    <message>
+        <source>Recording stopped: cannot write %1 (%2).</source>
+        <translation>记录已停止：无法写入 %1（%2）。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::recording::RecordingReader</name>
+    <message>
+        <source>Cannot open the recording %1: %2.</source>
+        <translation>无法打开记录文件 %1：%2。</translation>
+    </message>
+    <message>
+        <source>standard input</source>
+        <translation>标准输入</translation>
+    </message>
+    <message>
+        <source>%1 is not an LK Servo Studio recording (no recording magic).</source>
+        <translation>%1 不是 LK Servo Studio 记录文件（没有记录文件标识）。</translation>
+    </message>
+    <message>
+        <source>The recording %1 ends inside its header, at byte offset %2.</source>
+        <translation>记录文件 %1 在文件头内结束，位于字节偏移 %2。</translation>
+    </message>
+    <message>
+        <source>The recording %1 has format version %2; this build reads version %3.</source>
+        <translation>记录文件 %1 的格式版本为 %2；此版本程序只能读取版本 %3。</translation>
+    </message>
+    <message>
+        <source>The header of the recording %1 is damaged (checksum or layout).</source>
+        <translation>记录文件 %1 的文件头已损坏（校验和或布局错误）。</translation>
+    </message>
+    <message>
+        <source>The recording %1 ends inside a block at byte offset %2 (the writer stopped there); it was read up to that point.</source>
+        <translation>记录文件 %1 在字节偏移 %2 处的数据块内结束（写入在此中断）；已读取到该位置为止。</translation>
+    </message>
+    <message>
+        <source>The recording %1 is damaged at byte offset %2 (%3); it was read up to that point.</source>
+        <translation>记录文件 %1 在字节偏移 %2 处损坏（%3）；已读取到该位置为止。</translation>
+    </message>
+    <message>
+        <source>no block starts there</source>
+        <translation>该处没有数据块开头</translation>
+    </message>
+    <message>
+        <source>impossible block length</source>
+        <translation>数据块长度不可能</translation>
+    </message>
+    <message>
+        <source>block checksum mismatch</source>
+        <translation>数据块校验和不符</translation>
+    </message>
+    <message>
+        <source>The recording %1 is damaged at byte offset %2 (a record&apos;s layout is wrong); it was read up to that point.</source>
+        <translation>记录文件 %1 在字节偏移 %2 处损坏（记录布局错误）；已读取到该位置为止。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::recording::ReplayTransport</name>
+    <message>
+        <source>Recording %1 (replay)</source>
+        <translation>记录 %1（回放）</translation>
+    </message>
+</context>
+<context>
+    <name>lk::recording::SessionRecorder</name>
+    <message>
+        <source>The session goes on without recording.</source>
+        <translation>会话继续进行，但不再记录。</translation>
+    </message>
+</context>
+<context>
     <name>lk::safety::DriveLimits</name>
     <message>
         <source>the max speed %1 dps is over the drive&apos;s own Max Speed of %2 dps (read from it), which is lower than your speed limit</source>
