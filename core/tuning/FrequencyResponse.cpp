@@ -1,5 +1,6 @@
 #include "FrequencyResponse.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace lk::tuning {
@@ -7,6 +8,39 @@ namespace lk::tuning {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kBandwidthDropDb = 3;
+
+// Samples filled in, linearly, across gaps longer than twice the median interval. In a gap the
+// drive held a stale setpoint: the input's component counts it, and an output fitted on its
+// samples alone would not see the response to it (the ratio would lead). Across a gap the
+// input is constant, so the output relaxes smoothly and a straight line is close to it.
+void fillGaps(QVector<double> &t, QVector<double> &y, double from, double to)
+{
+    QVector<double> intervals;
+    for (int i = 1; i < t.size(); ++i)
+        if (t[i] >= from && t[i - 1] <= to)
+            intervals.append(t[i] - t[i - 1]);
+    if (intervals.size() < 2)
+        return;
+    std::nth_element(intervals.begin(), intervals.begin() + intervals.size() / 2, intervals.end());
+    const double median = intervals[intervals.size() / 2];
+    if (!(median > 0))
+        return;
+    QVector<double> ft, fy;
+    for (int i = 0; i < t.size(); ++i) {
+        if (i > 0 && t[i] - t[i - 1] > 2 * median && t[i] >= from && t[i - 1] <= to) {
+            const int n = int(std::round((t[i] - t[i - 1]) / median));
+            for (int k = 1; k < n; ++k) {
+                const double u = double(k) / n;
+                ft.append(t[i - 1] + u * (t[i] - t[i - 1]));
+                fy.append(y[i - 1] + u * (y[i] - y[i - 1]));
+            }
+        }
+        ft.append(t[i]);
+        fy.append(y[i]);
+    }
+    t = ft;
+    y = fy;
+}
 
 // Linear interpolation in log frequency between two points at `level` of `value`.
 double crossing(double f0, double v0, double f1, double v1, double level)
@@ -30,7 +64,10 @@ std::optional<FrequencyPoint> FrequencyResponse::measure(const QVector<double> &
             *why = DroppedReason::NoInput;
         return std::nullopt;
     }
-    const SineComponent y = SineFit::fitSampled(outputT, outputY, hz, from, to);
+    QVector<double> yt = outputT;
+    QVector<double> yv = outputY;
+    fillGaps(yt, yv, from, to);
+    SineComponent y = SineFit::fitSampled(yt, yv, hz, from, to);
     if (!y.ok) {
         if (why)
             *why = DroppedReason::TooFewSamples;
@@ -45,7 +82,8 @@ std::optional<FrequencyPoint> FrequencyResponse::measure(const QVector<double> &
     phase = std::remainder(phase, 360.0); // -180..180
     p.phaseDeg = phase;
     p.quality = y.quality;
-    p.samples = y.samples;
+    p.samples = int(std::count_if(outputT.begin(), outputT.end(),
+                                  [&](double t) { return t >= from && t <= to; }));
     return p;
 }
 
