@@ -5,6 +5,7 @@
 #include "DecodeCommand.h"
 #include "Dispatcher.h"
 #include "EncodeCommand.h"
+#include "FreqCommand.h"
 #include "InfoCommand.h"
 #include "MonitorCommand.h"
 #include "MotorStateCommand.h"
@@ -50,6 +51,7 @@ int main(int argc, char *argv[])
     dispatcher.add(std::make_unique<ZeroCommand>(ZeroCommand::Kind::Zero));
     dispatcher.add(std::make_unique<ZeroCommand>(ZeroCommand::Kind::ClearTurns));
     dispatcher.add(std::make_unique<StepCommand>());
+    dispatcher.add(std::make_unique<FreqCommand>());
     dispatcher.add(std::make_unique<MonitorCommand>());
     dispatcher.add(std::make_unique<EncodeCommand>());
     dispatcher.add(std::make_unique<DecodeCommand>());
