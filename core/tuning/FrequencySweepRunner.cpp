@@ -1,11 +1,12 @@
 #include "FrequencySweepRunner.h"
 
+#include "TuningEnd.h"
+
 #include <bus/BusSession.h>
 #include <bus/ConnectionStatus.h>
 #include <bus/SetpointStream.h>
 #include <protocol/Command.h>
 #include <protocol/RequestBuilder.h>
-#include <safety/MotionPlanner.h>
 
 #include <algorithm>
 #include <cmath>
@@ -281,45 +282,25 @@ void FrequencySweepRunner::sweepDone()
 void FrequencySweepRunner::returnToStart()
 {
     // Back to the speed the drive had before the sweep, through the same gate.
-    const double back = m_result.startSpeed.value_or(0);
-    const protocol::BuildResult built = protocol::build::speed(m_spec.id, back);
-    const safety::MotionPlan motion =
-        built.ok()
-            ? safety::MotionPlanner::plan(*built.request, m_session.series(m_spec.id), m_limits, {})
-            : safety::MotionPlan{};
-    if (!motion.allowed()) {
-        haltAndRestore(StepTestFailure::None,
-                       QStringLiteral("the speed read before the sweep (%1 dps) is beyond the "
-                                      "limits")
-                           .arg(back));
-        return;
-    }
-    m_session.send(*motion.request, this, [this, run = m_run, back](const bus::RequestResult &r) {
-        if (run != m_run || m_phase != Phase::Returning)
-            return;
-        if (!r.ok()) {
-            haltAndRestore(StepTestFailure::Silent,
-                           QStringLiteral("drive %1 did not answer the speed back to %2 dps")
-                               .arg(m_spec.id)
-                               .arg(back));
-            return;
-        }
-        // The last replies' samples arrive in the next telemetry batch.
-        QTimer::singleShot(StepTestRunner::kSampleGraceMs, this, [this, run, back] {
+    TuningEnd::returnToSpeed(
+        m_session, m_spec.id, m_result.startSpeed.value_or(0), m_limits, this,
+        [this, run = m_run](bool ok, const QString &words) {
             if (run != m_run || m_phase != Phase::Returning)
                 return;
-            restorePolling();
-            end(StepTestFailure::None,
-                back == 0 ? QStringLiteral("the gains and acceleration read are back in RAM; "
-                                           "drive %1 holds 0 dps (the motor stays on)")
-                                .arg(m_spec.id)
-                          : QStringLiteral("the gains and acceleration read are back in RAM; "
-                                           "drive %1 is back at %2 dps, the speed read before "
-                                           "the sweep; stop it with motor stop or off")
-                                .arg(m_spec.id)
-                                .arg(back));
+            if (!ok) {
+                haltAndRestore(StepTestFailure::Silent, words);
+                return;
+            }
+            // The last replies' samples arrive in the next telemetry batch.
+            QTimer::singleShot(StepTestRunner::kSampleGraceMs, this, [this, run, words] {
+                if (run != m_run || m_phase != Phase::Returning)
+                    return;
+                restorePolling();
+                end(StepTestFailure::None,
+                    QStringLiteral("the gains and acceleration read are back in RAM; %1")
+                        .arg(words));
+            });
         });
-    });
 }
 
 void FrequencySweepRunner::analyse()
@@ -363,32 +344,13 @@ void FrequencySweepRunner::haltAndRestore(StepTestFailure failure, const QString
 {
     m_phase = Phase::Aborting;
     m_endTimer.stop();
-    m_session.stopSetpointStream();
-    const int id = m_spec.id;
-    m_session.emergencyStop(
-        {id}, Command::MotorOff, this,
-        [this, failure, message, id, run = m_run](const QVector<int> &acknowledged,
-                                                  const QVector<int> &, const QVector<int> &) {
-            if (run != m_run)
-                return;
-            const QString off = acknowledged.contains(id)
-                                    ? QStringLiteral("drive %1 is off").arg(id)
-                                    : QStringLiteral("drive %1 did not acknowledge motor off: "
-                                                     "it may still be moving")
-                                          .arg(id);
-            m_keeper.restore([this, failure, message, off, run](bool ok, const QString &why) {
-                if (run != m_run)
-                    return;
-                restorePolling();
-                end(failure, QStringLiteral("%1: %2; %3")
-                                 .arg(message, off,
-                                      ok ? QStringLiteral("the gains and acceleration read "
-                                                          "before are back in RAM")
-                                         : QStringLiteral("the gains and acceleration read "
-                                                          "before could not be written back (%1)")
-                                               .arg(why)));
-            });
-        });
+    TuningEnd::haltAndRestore(m_session, m_keeper, m_spec.id, this,
+                              [this, failure, message, run = m_run](const QString &outcome) {
+                                  if (run != m_run)
+                                      return;
+                                  restorePolling();
+                                  end(failure, QStringLiteral("%1: %2").arg(message, outcome));
+                              });
 }
 
 void FrequencySweepRunner::restorePolling()
