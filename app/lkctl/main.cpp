@@ -12,6 +12,7 @@
 #include "ReadCommand.h"
 #include "ScanCommand.h"
 #include "StepCommand.h"
+#include "TuneCommand.h"
 #include "WriteCommand.h"
 #include "ZeroCommand.h"
 
@@ -52,6 +53,7 @@ int main(int argc, char *argv[])
     dispatcher.add(std::make_unique<ZeroCommand>(ZeroCommand::Kind::ClearTurns));
     dispatcher.add(std::make_unique<StepCommand>());
     dispatcher.add(std::make_unique<FreqCommand>());
+    dispatcher.add(std::make_unique<TuneCommand>());
     dispatcher.add(std::make_unique<MonitorCommand>());
     dispatcher.add(std::make_unique<EncodeCommand>());
     dispatcher.add(std::make_unique<DecodeCommand>());

@@ -193,9 +193,7 @@ void GainSearchRunner::returnToStart()
                 return;
             }
             end(StepTestFailure::None,
-                QStringLiteral("the gains and acceleration read are back in RAM (nothing "
-                               "suggested was written); %1")
-                    .arg(words));
+                QStringLiteral("the gains and acceleration read are back in RAM; %1").arg(words));
         });
 }
 
