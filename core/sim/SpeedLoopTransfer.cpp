@@ -58,6 +58,17 @@ SpeedLoopTransfer SpeedLoopTransfer::of(const DrivePhysics &physics)
     return SpeedLoopTransfer(physics.params(), physics.physicalGains());
 }
 
+SpeedLoopTransfer SpeedLoopTransfer::forSeries(protocol::Series series,
+                                               const protocol::PidGains &gains,
+                                               const DerivativeGains &kd)
+{
+    // The limits do not enter the linear loop.
+    DrivePhysics physics(RotorParams::forSeries(series), 1, 1);
+    physics.setGains(gains);
+    physics.setDerivativeGains(kd);
+    return of(physics);
+}
+
 SpeedLoopTransfer::State SpeedLoopTransfer::step(const State &x, double r) const
 {
     // DrivePhysics::step in Speed mode, term for term, without its limits and friction sign.

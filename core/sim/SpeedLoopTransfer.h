@@ -22,6 +22,10 @@ public:
     SpeedLoopTransfer(const RotorParams &rotor, const PhysicalGains &gains);
     /// The transfer function of `physics` as its gains stand now.
     static SpeedLoopTransfer of(const DrivePhysics &physics);
+    /// The transfer function of a simulated drive of `series` (RotorParams::forSeries) with
+    /// these gains, as lksim's drives of that series run them.
+    static SpeedLoopTransfer forSeries(protocol::Series series, const protocol::PidGains &gains,
+                                       const DerivativeGains &kd = {});
 
     /// H(e^{jwT}): reference samples to speed samples, T = DrivePhysics::kStepSeconds.
     std::complex<double> discrete(double hz) const;

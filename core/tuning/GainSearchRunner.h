@@ -22,9 +22,9 @@ struct GainSearchSpec {
     double to = 300;
     double maxOvershootPct = 5;
     double stepS = 0.25;    ///< how long each step is held
-    int periods = 2;        ///< a square of this many periods: 2N steps per candidate
+    int periods = 3;        ///< a square of this many periods: 2N steps per candidate
     double preRollS = 0.15; ///< FROM held before it
-    int maxCandidates = 20;
+    int maxCandidates = 24;
 };
 
 /// What a gain search tried and found. Nothing of it stays in the drive: the gains read are

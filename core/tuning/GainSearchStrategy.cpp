@@ -201,8 +201,10 @@ void GainSearchStrategy::record(const CandidateScore &score)
     const bool anyAccepted = m_bestBeforeRow < 1e9 || rowBest < 1e9;
     m_bestBeforeRow = std::min(m_bestBeforeRow, rowBest);
     m_rowScores.clear();
-    // Kp climbs while rows get better (or none was accepted yet) and the range allows.
-    if ((anyAccepted && !improved) || score.gains.speed.kp >= max) {
+    // Kp climbs while rows get better (or none was accepted yet) and the range allows; one row
+    // that is no better may be the noise of a few samples: two in a row end the climb.
+    m_rowsWithoutGain = anyAccepted && !improved ? m_rowsWithoutGain + 1 : 0;
+    if (m_rowsWithoutGain >= kPatienceRows || score.gains.speed.kp >= max) {
         m_stage = Stage::Done;
         return;
     }

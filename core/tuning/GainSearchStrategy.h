@@ -40,16 +40,17 @@ struct CandidateScore {
 /// Which speed-loop gains to try next, from the gains read and the scores so far, in rows:
 /// row k has Kp = the read Kp x kKpFactor^k, and tries Ki as read, then Ki / kKiFactor, ... (at
 /// most kKiSteps) until one is accepted (a lower Ki overshoots less and settles slower). The
-/// first candidate is the gains read (the baseline). Kp climbs to the next row while each
-/// row's best accepted error area is at least kMinGain smaller than all before (or none was
-/// accepted yet). Only the speed loop's Kp and Ki change; every other value stays as read (never
-/// beyond the generation's range). Stops at the first unstable candidate or after
-/// `maxCandidates`. Pure.
+/// first candidate is the gains read (the baseline). Kp climbs to the next row until
+/// kPatienceRows rows in a row brought no accepted error area kMinGain smaller than all before
+/// (rows before anything was accepted always climb). Only the speed loop's Kp and Ki change; every
+/// other value stays as read (never beyond the generation's range). Stops at the first unstable
+/// candidate or after `maxCandidates`. Pure.
 class GainSearchStrategy {
 public:
     static constexpr double kKpFactor = 1.3;
     static constexpr double kKiFactor = 1.5;
     static constexpr int kKiSteps = 4;
+    static constexpr int kPatienceRows = 2;      ///< rows no better in a row that end the climb
     static constexpr double kMinGain = 0.03;     ///< 3 % less error area, or Kp stops climbing
     static constexpr int kMaxSwings = 2;         ///< oscillations allowed in a step
     static constexpr double kMaxSteadyPct = 2.0; ///< of the step
@@ -91,6 +92,7 @@ private:
     Stage m_stage = Stage::Searching;
     int m_kpStep = 0;
     int m_kiStep = 0;
+    int m_rowsWithoutGain = 0;
     double m_bestBeforeRow = 1e9; ///< the least accepted error area of the rows before
     QVector<CandidateScore> m_rowScores;
     QVector<CandidateScore> m_scores;

@@ -120,16 +120,15 @@ FrequencySweepSpec quickSpec(int id)
     return s;
 }
 
-/// The simulated drive's own speed loop for the gains read from it.
+/// The simulated drive's own speed loop for the gains read from it (lksim saturates its gains
+/// at 255, as SimParams does).
 sim::SpeedLoopTransfer transferFor(Series series, const LoopGains &g)
 {
-    sim::DrivePhysics p(sim::RotorParams::forSeries(series), 10, 10000);
-    p.setGains({quint8(std::min<int>(g.angle.kp, 255)), quint8(std::min<int>(g.angle.ki, 255)),
-                quint8(std::min<int>(g.speed.kp, 255)), quint8(std::min<int>(g.speed.ki, 255)),
-                quint8(std::min<int>(g.current.kp, 255)),
-                quint8(std::min<int>(g.current.ki, 255))});
-    p.setDerivativeGains({g.angle.kd, g.speed.kd, g.current.kd});
-    return sim::SpeedLoopTransfer::of(p);
+    const auto u8 = [](quint16 v) { return quint8(std::min<int>(v, 255)); };
+    return sim::SpeedLoopTransfer::forSeries(series,
+                                             {u8(g.angle.kp), u8(g.angle.ki), u8(g.speed.kp),
+                                              u8(g.speed.ki), u8(g.current.kp), u8(g.current.ki)},
+                                             {g.angle.kd, g.speed.kd, g.current.kd});
 }
 
 } // namespace

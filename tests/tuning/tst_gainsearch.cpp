@@ -179,8 +179,8 @@ void tst_GainSearch::judge()
 
 void tst_GainSearch::candidateOrder()
 {
-    // Rows of Kp (x1.3 each), Ki down by 1.5 in a row until one is accepted; Kp climbs while
-    // a row's best is 3 % better than all before.
+    // Rows of Kp (x1.3 each), Ki down by 1.5 in a row until one is accepted; Kp climbs until
+    // two rows in a row are not 3 % better than all before.
     GainSearchStrategy s(readGains(), 5, 20);
     const auto at = [&](int kp, int ki) {
         return s.next() && s.next()->speed.kp == kp && s.next()->speed.ki == ki;
@@ -195,8 +195,10 @@ void tst_GainSearch::candidateOrder()
     s.record(scored(*s.next(), 0.015, 4, CandidateVerdict::Accepted));
     QVERIFY(at(85, 40));
     s.record(scored(*s.next(), 0.0149, 3, CandidateVerdict::Accepted)); // not 3 % better
+    QVERIFY(at(111, 40));                                               // one such row may be noise
+    s.record(scored(*s.next(), 0.0148, 3, CandidateVerdict::Accepted)); // nor this one
     QVERIFY(!s.next());
-    QCOMPARE(*s.best(), 4);
+    QCOMPARE(*s.best(), 5); // the least error area accepted
     // Everything else stays as read.
     for (const CandidateScore &c : s.scores()) {
         QCOMPARE(c.gains.angle, readGains().angle);
