@@ -186,16 +186,11 @@ int FreqCommand::run(const QStringList &args, Console &console)
     if (!plan)
         return status;
     LiveBus bus(console, name());
-    if (!bus.open(*busOptions))
-        return kExitFailure;
     const int id = plan->spec.id;
-    const std::optional<LiveBus::Identity> who = bus.identify(id);
-    if (!who)
-        return kExitFailure;
-    QString error;
-    const std::optional<safety::SoftLimits> limits = plan->limits.limitsFor(who->series, &error);
+    const std::optional<safety::SoftLimits> limits =
+        openDrive(bus, *busOptions, id, plan->limits, console, &status);
     if (!limits)
-        return usageError(console, error);
+        return status;
     const FrequencySweepResult result = runSweep(bus, *plan, *limits);
     switch (result.failure) {
     case StepTestFailure::None:
@@ -203,7 +198,7 @@ int FreqCommand::run(const QStringList &args, Console &console)
     case StepTestFailure::Refused:
         bus.refused(QStringLiteral("the sweep's %1 dps: %2")
                         .arg(result.refusedDps)
-                        .arg(text::VerdictText::verdict(result.refusal, who->series)),
+                        .arg(text::VerdictText::verdict(result.refusal, bus.session().series(id))),
                     id);
         return kExitRefused;
     case StepTestFailure::BadSpec:

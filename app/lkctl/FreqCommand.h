@@ -1,8 +1,8 @@
 #pragma once
 
 #include "LiveBus.h"
-#include "LiveCommand.h"
 #include "MotionLimitOptions.h"
+#include "TuningCommand.h"
 
 #include <tuning/FrequencySweepRunner.h>
 
@@ -14,7 +14,7 @@ namespace lk::lkctl {
 /// a stepped sine of the speed setpoint around an operating point, fitted per frequency on the
 /// replies' real times, with the -3 dB bandwidth, the peak and the phase at the bandwidth.
 /// Writes nothing lasting: the acceleration limit lifted for the sweep goes back to RAM.
-class FreqCommand : public LiveCommand {
+class FreqCommand : public TuningCommand {
 public:
     QString name() const override { return QStringLiteral("freq"); }
     QString summary() const override;

@@ -238,16 +238,11 @@ int TuneCommand::run(const QStringList &args, Console &console)
     if (!plan)
         return status;
     LiveBus bus(console, name());
-    if (!bus.open(*busOptions))
-        return kExitFailure;
     const int id = plan->spec.id;
-    const std::optional<LiveBus::Identity> who = bus.identify(id);
-    if (!who)
-        return kExitFailure;
-    QString error;
-    const std::optional<safety::SoftLimits> limits = plan->limits.limitsFor(who->series, &error);
+    const std::optional<safety::SoftLimits> limits =
+        openDrive(bus, *busOptions, id, plan->limits, console, &status);
     if (!limits)
-        return usageError(console, error);
+        return status;
     const GainSearchResult result = runSearch(bus, *plan, *limits);
     switch (result.failure) {
     case StepTestFailure::None:

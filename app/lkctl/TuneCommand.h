@@ -1,8 +1,8 @@
 #pragma once
 
 #include "LiveBus.h"
-#include "LiveCommand.h"
 #include "MotionLimitOptions.h"
+#include "TuningCommand.h"
 
 #include <tuning/GainSearchRunner.h>
 
@@ -13,7 +13,7 @@ namespace lk::lkctl {
 /// `lkctl tune ID speed`: suggested speed-loop gains (tuning::GainSearchRunner): candidates
 /// scored by short speed steps within the limits, the best beside the gains read. Nothing is
 /// written unless `--write ram` asks for the best in RAM; ROM is never written here.
-class TuneCommand : public LiveCommand {
+class TuneCommand : public TuningCommand {
 public:
     QString name() const override { return QStringLiteral("tune"); }
     QString summary() const override;
