@@ -6,6 +6,7 @@
 #include "Dispatcher.h"
 #include "EncodeCommand.h"
 #include "ExportCommand.h"
+#include "FreqCommand.h"
 #include "InfoCommand.h"
 #include "ListenCommand.h"
 #include "MonitorCommand.h"
@@ -14,6 +15,7 @@
 #include "ReplayCommand.h"
 #include "ScanCommand.h"
 #include "StepCommand.h"
+#include "TuneCommand.h"
 #include "WriteCommand.h"
 #include "ZeroCommand.h"
 
@@ -53,6 +55,8 @@ int main(int argc, char *argv[])
     dispatcher.add(std::make_unique<ZeroCommand>(ZeroCommand::Kind::Zero));
     dispatcher.add(std::make_unique<ZeroCommand>(ZeroCommand::Kind::ClearTurns));
     dispatcher.add(std::make_unique<StepCommand>());
+    dispatcher.add(std::make_unique<FreqCommand>());
+    dispatcher.add(std::make_unique<TuneCommand>());
     dispatcher.add(std::make_unique<MonitorCommand>());
     dispatcher.add(std::make_unique<ListenCommand>());
     dispatcher.add(std::make_unique<EncodeCommand>());

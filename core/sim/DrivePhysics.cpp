@@ -26,9 +26,6 @@ constexpr double kMaxDerivativeUnits = 255.0;
 constexpr double kSpeedKdPerUnit = 0.002; // of J/Kt (A per rad/s^2)
 constexpr double kPosKdPerUnit = 0.004;   // dimensionless speed feedback
 constexpr double kIqKdPerUnit = 0.002;    // of the winding inductance
-// The drive estimates speed from encoder differences through a low-pass filter; its lag,
-// with the current loop's, is what makes a too stiff speed loop ring.
-constexpr double kSpeedFilterSeconds = 0.0008;
 
 // Longest interval simulated in one call: a caller that forgets the simulator for hours must
 // not stall its thread for seconds catching up.
@@ -59,6 +56,11 @@ void DrivePhysics::setGains(const protocol::PidGains &g)
     m_kiSpeed = g.speedKi * kSpeedKiPerUnit * inertiaPerKt;
     m_kpPos = g.angleKp * kPosKpPerUnit;
     m_kiPos = g.angleKi * kPosKiPerUnit;
+}
+
+PhysicalGains DrivePhysics::physicalGains() const
+{
+    return {m_kpPos, m_kiPos, m_kdPos, m_kpSpeed, m_kiSpeed, m_kdSpeed, m_kpIq, m_kiIq, m_kdIq};
 }
 
 void DrivePhysics::setDerivativeGains(const DerivativeGains &kd)

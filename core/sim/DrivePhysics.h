@@ -29,6 +29,14 @@ struct DerivativeGains {
     quint16 angleKd = 0, speedKd = 0, iqKd = 0;
 };
 
+/// The loops' gains in physical units, as DrivePhysics derives them from the drive's gains
+/// (SpeedLoopTransfer builds the speed loop's transfer function from them).
+struct PhysicalGains {
+    double kpPos = 0, kiPos = 0, kdPos = 0;       ///< 1/s, 1/s^2, dimensionless
+    double kpSpeed = 0, kiSpeed = 0, kdSpeed = 0; ///< A per rad/s, per rad, per rad/s^2
+    double kpIq = 0, kiIq = 0, kdIq = 0;          ///< V/A, V/(A s), H
+};
+
 /// Rotor, winding and cascaded PID loops of one drive, as the firmware runs them.
 ///
 /// Everything is integrated in fixed 0.2 ms substeps (the drives' loop rate), SI units on the
@@ -100,6 +108,10 @@ public:
     double temperatureC() const { return m_temperature; }
     double electricalAngleRad() const;
     const RotorParams &params() const { return m_params; }
+    PhysicalGains physicalGains() const;
+    /// Time constant of the drive's speed estimate (a first-order low-pass from encoder
+    /// differences): its lag, with the current loop's, is what makes a too stiff loop ring.
+    static constexpr double kSpeedFilterSeconds = 0.0008;
 
 private:
     void step(double dt);

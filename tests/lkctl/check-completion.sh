@@ -49,6 +49,10 @@ expect "MF MG MH MS" decode --series ""
 expect "all" off a
 expect "position" step 3 p
 expect "--duration" step 3 speed 0 100 --du
+expect "speed" freq 3 s
+expect "speed" tune 3 ""
+expect "ram" tune 3 speed --write ""
+expect "--max-overshoot" tune 3 speed --max-o
 expect "ccw cw" control 3 single-position 90 --direction ""
 expect "params pid" read 1 p
 expect "param pid" write 1 p

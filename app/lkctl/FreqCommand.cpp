@@ -1,0 +1,278 @@
+#include "FreqCommand.h"
+
+#include "Console.h"
+#include "OrderedJson.h"
+#include "TuningJson.h"
+
+#include <system/SignalWatcher.h>
+#include <text/VerdictText.h>
+
+#include <cmath>
+
+namespace lk::lkctl {
+
+using tuning::FrequencySweepResult;
+using tuning::StepTestFailure;
+
+namespace {
+void optionalReal(OrderedJson &o, const QString &key, std::optional<double> v, double unit)
+{
+    if (v)
+        o.real(key, std::round(*v / unit) * unit);
+    else
+        o.null(key);
+}
+
+QString figure(std::optional<double> v, const char *unit, int decimals)
+{
+    return v ? QStringLiteral("%1 %2").arg(*v, 0, 'f', decimals).arg(QLatin1String(unit))
+             : QStringLiteral("none");
+}
+} // namespace
+
+QString FreqCommand::summary() const
+{
+    return QStringLiteral("measure the speed loop's frequency response (Bode) with a stepped sine");
+}
+
+QString FreqCommand::example() const
+{
+    return QStringLiteral(
+        "lkctl freq 3 speed --from 1 --to 200 --amplitude 60 --port /dev/ttyUSB0");
+}
+
+QString FreqCommand::usage() const
+{
+    return QStringLiteral(
+               "Usage: lkctl freq ID speed [--from HZ] [--to HZ] [--points N] [--amplitude DPS]\n"
+               "                  [--operating-point DPS] [--per-point S] [LIMITS]\n"
+               "                  (--port DEV [--baud N] | --sim SPEC) [--json]\n"
+               "\n"
+               "The speed loop's frequency response on drive ID. THE AXIS MUST BE FREE TO\n"
+               "TURN: it runs at the operating point +- the amplitude for the whole sweep.\n"
+               "Reads the drive's gains and acceleration limit (nothing runs without them)\n"
+               "and its speed, checks the sine's extremes against the series and your limits\n"
+               "(a refusal names the limit and sends NOTHING, exit 4), lifts the acceleration\n"
+               "limit in RAM, then sends a stepped sine of the speed setpoint (speed, 0xA2) as\n"
+               "fast as the bus answers: each frequency a whole number of cycles, the first one\n"
+               "left to settle. Each reply is a sample; each frequency is fitted on the\n"
+               "samples' real times. Frequencies above a quarter of the sample rate reached\n"
+               "are dropped (reason above_resolution). At the end the gains and acceleration\n"
+               "read go back to RAM and the drive returns to the speed it had. Ctrl-C stops at\n"
+               "once: motor off, the settings read back in RAM (exit 1). Nothing is written\n"
+               "to ROM.\n"
+               "\n"
+               "Sweep options:\n"
+               "  --from HZ              the lowest frequency, 0.1..500, default 1\n"
+               "  --to HZ                the highest, --from..500, default 100\n"
+               "  --points N             log-spaced frequencies, 1..60, default 12\n"
+               "  --amplitude DPS        the sine's peak, default 50\n"
+               "  --operating-point DPS  the speed the sine is centred on, default twice the\n"
+               "                         amplitude (the rotor never stops: friction would bend\n"
+               "                         the response)\n"
+               "  --per-point S          each frequency lasts at least this long, default 0.3\n"
+               "%1"
+               "  --json                 one line: command, id, loop, from_hz, to_hz, amplitude,\n"
+               "                         operating_point, sample_rate_hz, resolved_hz, points\n"
+               "                         (each hz, magnitude_db, phase_deg, quality 0..1,\n"
+               "                         samples), dropped (each hz, reason), bandwidth_hz,\n"
+               "                         phase_at_bandwidth_deg, peak_db, peak_hz (null when\n"
+               "                         none), gains, sent, after\n"
+               "\n"
+               "%2"
+               "\n"
+               "Examples:\n"
+               "  lkctl freq 3 speed --port /dev/ttyUSB0 --baud 1000000\n"
+               "  lkctl freq 3 speed --from 2 --to 150 --amplitude 60 --sim 3:MF --json\n"
+               "\n"
+               "%3")
+        .arg(MotionLimitOptions::helpText(), BusOptions::helpText(),
+             exitStatusText(QStringLiteral(
+                 "  4  refused for safety: the sine's centre or an extreme breaks the series\n"
+                 "     or one of your limits; nothing was sent\n")));
+}
+
+std::optional<FreqCommand::Plan> FreqCommand::parse(const ArgParser &parser, Console &console,
+                                                    int *status) const
+{
+    const auto fail = [&](const QString &message) {
+        *status = usageError(console, message);
+        return std::nullopt;
+    };
+    const QStringList &pos = parser.positionals();
+    if (pos.size() != 2)
+        return fail(QStringLiteral("expected ID speed"));
+    Plan plan;
+    QString error;
+    const std::optional<int> id = parseId(pos.at(0), &error);
+    if (!id)
+        return fail(error);
+    plan.spec.id = *id;
+    if (pos.at(1) != QLatin1String("speed"))
+        return fail(QStringLiteral("unknown loop '%1'; the response is measured on the speed "
+                                   "loop: speed")
+                        .arg(pos.at(1)));
+    tuning::FrequencySweepSpec &s = plan.spec;
+    const std::pair<const char *, double *> numbers[] = {{"from", &s.fromHz},
+                                                         {"to", &s.toHz},
+                                                         {"amplitude", &s.amplitude},
+                                                         {"per-point", &s.minPointS}};
+    for (const auto &[option, into] : numbers) {
+        if (!parser.isSet(QLatin1String(option)))
+            continue;
+        const std::optional<double> v = parser.numberValue(QLatin1String(option), 0, &error);
+        if (!v)
+            return fail(error);
+        *into = *v;
+    }
+    if (parser.isSet(QStringLiteral("operating-point"))) {
+        s.operatingPoint = parser.numberValue(QStringLiteral("operating-point"), -1e9, &error);
+        if (!s.operatingPoint)
+            return fail(error);
+    }
+    if (parser.isSet(QStringLiteral("points"))) {
+        const auto n = parser.intValue(QStringLiteral("points"), 1,
+                                       tuning::FrequencySweepSpec::kMaxPoints, &error);
+        if (!n)
+            return fail(error);
+        s.points = int(*n);
+    }
+    const QString bad = tuning::FrequencySweepPlan::checkSpec(s);
+    if (!bad.isEmpty())
+        return fail(bad);
+    const std::optional<MotionLimitOptions> limits = MotionLimitOptions::read(parser, &error);
+    if (!limits)
+        return fail(error);
+    plan.limits = *limits;
+    plan.json = parser.isSet(QStringLiteral("json"));
+    return plan;
+}
+
+FrequencySweepResult FreqCommand::runSweep(LiveBus &bus, const Plan &plan,
+                                           const safety::SoftLimits &limits) const
+{
+    tuning::FrequencySweepRunner runner(bus.session());
+    std::optional<FrequencySweepResult> result;
+    QObject::connect(&runner, &tuning::FrequencySweepRunner::finished,
+                     [&](const FrequencySweepResult &r) { result = r; });
+    QObject::connect(&runner, &tuning::FrequencySweepRunner::failed,
+                     [&](const FrequencySweepResult &r) { result = r; });
+    // Ctrl-C: the stream halts, the motor goes off, the settings read go back to RAM.
+    system::SignalWatcher watcher;
+    QObject::connect(&watcher, &system::SignalWatcher::signalled, &runner,
+                     &tuning::FrequencySweepRunner::abort);
+    runner.start(plan.spec, limits);
+    const tuning::FrequencySweepPlan expected =
+        tuning::FrequencySweepPlan::make(plan.spec, std::nullopt, safety::SoftLimits{});
+    const int sweepMs = int(expected.endS() * 1000);
+    if (!bus.waitUntil([&] { return result.has_value(); }, sweepMs + LiveBus::kMaxWaitMs)) {
+        runner.abort(); // the safety net: never returns without a result
+        (void)bus.waitUntil([&] { return result.has_value(); });
+    }
+    return result.value_or(FrequencySweepResult{});
+}
+
+int FreqCommand::run(const QStringList &args, Console &console)
+{
+    ArgParser parser = makeParser();
+    for (const char *o : {"from", "to", "points", "amplitude", "operating-point", "per-point"})
+        parser.addOption(QLatin1String(o), true);
+    MotionLimitOptions::declare(parser);
+    int status = kExitOk;
+    const std::optional<BusOptions> busOptions = parseBus(parser, args, console, &status);
+    if (!busOptions)
+        return status;
+    const std::optional<Plan> plan = parse(parser, console, &status);
+    if (!plan)
+        return status;
+    LiveBus bus(console, name());
+    const int id = plan->spec.id;
+    const std::optional<safety::SoftLimits> limits =
+        openDrive(bus, *busOptions, id, plan->limits, console, &status);
+    if (!limits)
+        return status;
+    const FrequencySweepResult result = runSweep(bus, *plan, *limits);
+    switch (result.failure) {
+    case StepTestFailure::None:
+        break;
+    case StepTestFailure::Refused:
+        bus.refused(QStringLiteral("the sweep's %1 dps: %2")
+                        .arg(result.refusedDps)
+                        .arg(text::VerdictText::verdict(result.refusal, bus.session().series(id))),
+                    id);
+        return kExitRefused;
+    case StepTestFailure::BadSpec:
+        return usageError(console, result.message);
+    default:
+        bus.error(result.message);
+        return kExitFailure;
+    }
+    if (plan->json)
+        printJson(console, *plan, result);
+    else
+        printText(console, *plan, result);
+    return kExitOk;
+}
+
+void FreqCommand::printJson(Console &console, const Plan &plan, const FrequencySweepResult &r) const
+{
+    const tuning::BodeFigures f = r.response.figures();
+    OrderedJson o;
+    o.text(QStringLiteral("command"), QStringLiteral("freq"))
+        .integer(QStringLiteral("id"), plan.spec.id)
+        .text(QStringLiteral("loop"), QStringLiteral("speed"))
+        .real(QStringLiteral("from_hz"), plan.spec.fromHz)
+        .real(QStringLiteral("to_hz"), plan.spec.toHz)
+        .real(QStringLiteral("amplitude"), plan.spec.amplitude)
+        .real(QStringLiteral("operating_point"), plan.spec.centre())
+        .real(QStringLiteral("sample_rate_hz"), std::round(r.response.sampleRateHz * 10) / 10)
+        .real(QStringLiteral("resolved_hz"),
+              std::round(tuning::FrequencyResponse::resolvedHz(r.response.sampleRateHz) * 10) / 10)
+        .raw(QStringLiteral("points"), TuningJson::points(r.response))
+        .raw(QStringLiteral("dropped"), TuningJson::dropped(r.response));
+    optionalReal(o, QStringLiteral("bandwidth_hz"), f.bandwidthHz, 0.01);
+    optionalReal(o, QStringLiteral("phase_at_bandwidth_deg"), f.phaseAtBandwidth, 0.1);
+    optionalReal(o, QStringLiteral("peak_db"), f.peakDb, 0.01);
+    optionalReal(o, QStringLiteral("peak_hz"), f.peakHz, 0.001);
+    if (r.gains)
+        o.raw(QStringLiteral("gains"), TuningJson::gains(*r.gains));
+    o.integer(QStringLiteral("sent"), r.sent).text(QStringLiteral("after"), r.message);
+    console.out(o.toJson() + '\n');
+}
+
+void FreqCommand::printText(Console &console, const Plan &plan, const FrequencySweepResult &r) const
+{
+    console.outLine(QStringLiteral("Frequency response of drive %1's speed loop: %2 +- %3 dps, "
+                                   "%4..%5 Hz.")
+                        .arg(plan.spec.id)
+                        .arg(plan.spec.centre())
+                        .arg(plan.spec.amplitude)
+                        .arg(plan.spec.fromHz)
+                        .arg(plan.spec.toHz));
+    if (r.gains)
+        console.outLine(QStringLiteral("Gains: %1.").arg(TuningJson::speedGainsText(*r.gains)));
+    console.outLine(
+        QStringLiteral("Sent %1 setpoints; %2 samples/s, so up to %3 Hz is resolved.")
+            .arg(r.sent)
+            .arg(r.response.sampleRateHz, 0, 'f', 1)
+            .arg(tuning::FrequencyResponse::resolvedHz(r.response.sampleRateHz), 0, 'f', 1));
+    console.outLine(QStringLiteral("      Hz       dB      deg  quality"));
+    for (const tuning::FrequencyPoint &p : r.response.points)
+        console.outLine(QStringLiteral("%1 %2 %3 %4")
+                            .arg(p.hz, 8, 'f', 2)
+                            .arg(p.magnitudeDb, 8, 'f', 2)
+                            .arg(p.phaseDeg, 8, 'f', 1)
+                            .arg(p.quality, 8, 'f', 3));
+    for (const tuning::DroppedFrequency &d : r.response.dropped)
+        console.outLine(QStringLiteral("%1  not shown: %2")
+                            .arg(d.hz, 8, 'f', 2)
+                            .arg(QString::fromLatin1(TuningJson::droppedWord(d.reason))
+                                     .replace(QLatin1Char('_'), QLatin1Char(' '))));
+    const tuning::BodeFigures f = r.response.figures();
+    console.outLine(QStringLiteral("Bandwidth (-3 dB): %1; phase there: %2; peak: %3 at %4.")
+                        .arg(figure(f.bandwidthHz, "Hz", 2), figure(f.phaseAtBandwidth, "deg", 1),
+                             figure(f.peakDb, "dB", 2), figure(f.peakHz, "Hz", 2)));
+    console.outLine(QStringLiteral("After the sweep: %1.").arg(r.message));
+}
+
+} // namespace lk::lkctl

@@ -1,0 +1,339 @@
+#include "TuneCommand.h"
+
+#include "Console.h"
+#include "OrderedJson.h"
+#include "TuningJson.h"
+
+#include <system/SignalWatcher.h>
+#include <text/VerdictText.h>
+
+#include <cmath>
+
+namespace lk::lkctl {
+
+using tuning::CandidateScore;
+using tuning::CandidateVerdict;
+using tuning::GainSearchResult;
+using tuning::StepTestFailure;
+
+namespace {
+const char *verdictWord(CandidateVerdict v)
+{
+    switch (v) {
+    case CandidateVerdict::Accepted:
+        return "accepted";
+    case CandidateVerdict::Overshoot:
+        return "overshoot";
+    case CandidateVerdict::Oscillates:
+        return "oscillates";
+    case CandidateVerdict::NotSettled:
+        return "not_settled";
+    case CandidateVerdict::Saturated:
+        return "saturated";
+    case CandidateVerdict::Growing:
+        return "growing";
+    }
+    return "";
+}
+
+void metric(OrderedJson &o, const QString &key, const tuning::Metric &m, double unit)
+{
+    if (m.known())
+        o.real(key, std::round(*m.value / unit) * unit);
+    else
+        o.null(key);
+}
+
+QByteArray candidateJson(const CandidateScore &c)
+{
+    OrderedJson o;
+    o.integer(QStringLiteral("speed_kp"), c.gains.speed.kp)
+        .integer(QStringLiteral("speed_ki"), c.gains.speed.ki);
+    if (c.gains.generation == protocol::Generation::V2_35)
+        o.integer(QStringLiteral("speed_kd"), c.gains.speed.kd);
+    metric(o, QStringLiteral("rise_time_s"), c.metrics.riseTimeS, 0.0001);
+    metric(o, QStringLiteral("overshoot_pct"), c.metrics.overshootPct, 0.01);
+    metric(o, QStringLiteral("settling_time_s"), c.metrics.settling2S, 0.0001);
+    metric(o, QStringLiteral("oscillations"), c.metrics.oscillations, 1);
+    metric(o, QStringLiteral("saturated_s"), c.metrics.saturatedS, 0.0001);
+    o.real(QStringLiteral("error_area_s"), std::round(c.errorAreaS * 1e5) / 1e5)
+        .text(QStringLiteral("verdict"), QLatin1String(verdictWord(c.verdict)));
+    return o.toJson();
+}
+
+QString candidateText(const CandidateScore &c)
+{
+    const auto v = [](const tuning::Metric &m, double scale, int decimals) {
+        return m.known() ? QString::number(*m.value * scale, 'f', decimals) : QStringLiteral("?");
+    };
+    return QStringLiteral("%1 %2 %3 %4 %5  %6")
+        .arg(c.gains.speed.kp, 5)
+        .arg(c.gains.speed.ki, 5)
+        .arg(v(c.metrics.riseTimeS, 1e3, 1), 9)
+        .arg(v(c.metrics.overshootPct, 1, 1), 9)
+        .arg(c.errorAreaS * 1e3, 9, 'f', 2)
+        .arg(QString::fromLatin1(verdictWord(c.verdict)).replace(QLatin1Char('_'), ' '));
+}
+} // namespace
+
+QString TuneCommand::summary() const
+{
+    return QStringLiteral("suggest speed-loop gains from short step tests (writes only with "
+                          "--write ram)");
+}
+
+QString TuneCommand::example() const
+{
+    return QStringLiteral("lkctl tune 3 speed --max-overshoot 5 --port /dev/ttyUSB0");
+}
+
+QString TuneCommand::usage() const
+{
+    return QStringLiteral(
+               "Usage: lkctl tune ID speed [--max-overshoot PCT] [--from DPS] [--to DPS]\n"
+               "                  [--write ram] [LIMITS] (--port DEV [--baud N] | --sim SPEC)\n"
+               "                  [--json]\n"
+               "\n"
+               "Suggested speed-loop gains for drive ID. THE AXIS MUST BE FREE TO TURN: it\n"
+               "steps between FROM and TO (and may overshoot them) for up to a minute. Reads\n"
+               "the gains and acceleration limit (nothing runs without them), lifts the limit\n"
+               "in RAM, then for each candidate writes its speed Kp and Ki to RAM and runs a\n"
+               "square of short speed steps FROM -> TO -> FROM (every setpoint checked against\n"
+               "the series and your limits: a refusal sends nothing, exit 4). Candidates: the\n"
+               "gains read first, then rows of Kp (x1.3 per row), Ki lowered by 1.5 within a\n"
+               "row until one is accepted: overshoot at most PCT, at most two swings, settled\n"
+               "within 2 %, the current never at its limit. Kp climbs until two rows in a row\n"
+               "are not 3 % better on the error area (the integral of the error per step: a\n"
+               "rise measure that timestamp jitter does not move). The current at its limit\n"
+               "or swings that grow end the search at once. At the end the gains read go back\n"
+               "to RAM and the drive returns to the speed it had; the best is suggested\n"
+               "beside them. Ctrl-C stops at once: motor off, the gains read back in RAM\n"
+               "(exit 1).\n"
+               "\n"
+               "Tune options:\n"
+               "  --max-overshoot PCT    the overshoot bound, 0..100 %, default 5\n"
+               "  --from DPS, --to DPS   the steps' speeds, default 100 and 300 (away from 0,\n"
+               "                         where friction would bend them)\n"
+               "  --write ram            write the best candidate's gains to RAM at the end\n"
+               "                         (never ROM: that is lkctl write pid, after checking)\n"
+               "%1"
+               "  --json                 one line: command, id, loop, max_overshoot_pct,\n"
+               "                         from, to, gains_read, candidates (each speed_kp,\n"
+               "                         speed_ki, speed_kd on V2.35, rise_time_s,\n"
+               "                         overshoot_pct, settling_time_s, oscillations,\n"
+               "                         saturated_s, error_area_s, verdict), best (index or\n"
+               "                         null), before, after (the read gains' and the best's\n"
+               "                         candidate), suggested (gains or null), written (\"ram\"\n"
+               "                         or null), stopped_by_instability, seconds, after_text\n"
+               "\n"
+               "%2"
+               "\n"
+               "Examples:\n"
+               "  lkctl tune 3 speed --port /dev/ttyUSB0 --baud 1000000\n"
+               "  lkctl tune 3 speed --max-overshoot 2 --write ram --sim 3:MF --json\n"
+               "\n"
+               "%3")
+        .arg(MotionLimitOptions::helpText(), BusOptions::helpText(),
+             exitStatusText(QStringLiteral(
+                 "  4  refused for safety: a step breaks the series or one of your limits;\n"
+                 "     no step was sent and the gains read are back in RAM\n")));
+}
+
+std::optional<TuneCommand::Plan> TuneCommand::parse(const ArgParser &parser, Console &console,
+                                                    int *status) const
+{
+    const auto fail = [&](const QString &message) {
+        *status = usageError(console, message);
+        return std::nullopt;
+    };
+    const QStringList &pos = parser.positionals();
+    if (pos.size() != 2)
+        return fail(QStringLiteral("expected ID speed"));
+    Plan plan;
+    QString error;
+    const std::optional<int> id = parseId(pos.at(0), &error);
+    if (!id)
+        return fail(error);
+    plan.spec.id = *id;
+    if (pos.at(1) != QLatin1String("speed"))
+        return fail(QStringLiteral("unknown loop '%1'; the search tunes the speed loop: speed")
+                        .arg(pos.at(1)));
+    const std::pair<const char *, double *> numbers[] = {
+        {"max-overshoot", &plan.spec.maxOvershootPct},
+        {"from", &plan.spec.from},
+        {"to", &plan.spec.to}};
+    for (const auto &[option, into] : numbers) {
+        if (!parser.isSet(QLatin1String(option)))
+            continue;
+        const std::optional<double> v = parser.numberValue(QLatin1String(option), -1e9, &error);
+        if (!v)
+            return fail(error);
+        *into = *v;
+    }
+    if (!(plan.spec.maxOvershootPct >= 0 && plan.spec.maxOvershootPct <= 100))
+        return fail(QStringLiteral("--max-overshoot must be 0..100, got %1")
+                        .arg(plan.spec.maxOvershootPct));
+    if (parser.isSet(QStringLiteral("write"))) {
+        if (parser.value(QStringLiteral("write")) != QLatin1String("ram"))
+            return fail(QStringLiteral("--write takes ram (ROM is a separate, confirmed step: "
+                                       "lkctl write pid ... --rom)"));
+        plan.writeRam = true;
+    }
+    const std::optional<MotionLimitOptions> limits = MotionLimitOptions::read(parser, &error);
+    if (!limits)
+        return fail(error);
+    plan.limits = *limits;
+    plan.json = parser.isSet(QStringLiteral("json"));
+    return plan;
+}
+
+GainSearchResult TuneCommand::runSearch(LiveBus &bus, const Plan &plan,
+                                        const safety::SoftLimits &limits) const
+{
+    tuning::GainSearchRunner runner(bus.session());
+    std::optional<GainSearchResult> result;
+    QObject::connect(&runner, &tuning::GainSearchRunner::finished,
+                     [&](const GainSearchResult &r) { result = r; });
+    QObject::connect(&runner, &tuning::GainSearchRunner::failed,
+                     [&](const GainSearchResult &r) { result = r; });
+    system::SignalWatcher watcher;
+    QObject::connect(&watcher, &system::SignalWatcher::signalled, &runner,
+                     &tuning::GainSearchRunner::abort);
+    runner.start(plan.spec, limits);
+    if (!bus.waitUntil([&] { return result.has_value(); }, 2 * LiveBus::kMaxWaitMs)) {
+        runner.abort(); // the safety net: never returns without a result
+        (void)bus.waitUntil([&] { return result.has_value(); });
+    }
+    return result.value_or(GainSearchResult{});
+}
+
+bool TuneCommand::writeBest(LiveBus &bus, const GainSearchResult &r) const
+{
+    const tuning::LoopGains &best = r.candidates[*r.best].gains;
+    // Absolute values: the session's retries are the only repeats.
+    for (const protocol::Request &request : best.ramWrites(r.spec.id)) {
+        const bus::RequestResult result = bus.request(request);
+        if (!result.ok()) {
+            bus.reportFailure(result);
+            bus.error(QStringLiteral("the suggested gains were not all written: read them back "
+                                     "with 'lkctl read %1 pid'")
+                          .arg(r.spec.id));
+            return false;
+        }
+    }
+    return true;
+}
+
+int TuneCommand::run(const QStringList &args, Console &console)
+{
+    ArgParser parser = makeParser();
+    for (const char *o : {"max-overshoot", "from", "to", "write"})
+        parser.addOption(QLatin1String(o), true);
+    MotionLimitOptions::declare(parser);
+    int status = kExitOk;
+    const std::optional<BusOptions> busOptions = parseBus(parser, args, console, &status);
+    if (!busOptions)
+        return status;
+    const std::optional<Plan> plan = parse(parser, console, &status);
+    if (!plan)
+        return status;
+    LiveBus bus(console, name());
+    const int id = plan->spec.id;
+    const std::optional<safety::SoftLimits> limits =
+        openDrive(bus, *busOptions, id, plan->limits, console, &status);
+    if (!limits)
+        return status;
+    const GainSearchResult result = runSearch(bus, *plan, *limits);
+    switch (result.failure) {
+    case StepTestFailure::None:
+        break;
+    case StepTestFailure::Refused:
+        bus.refused(text::VerdictText::stepRefusal(result.refusal), id);
+        return kExitRefused;
+    case StepTestFailure::BadSpec:
+        return usageError(console, result.message);
+    default:
+        bus.error(result.message);
+        return kExitFailure;
+    }
+    const bool write = plan->writeRam && result.best && result.read &&
+                       result.candidates[*result.best].gains != *result.read;
+    if (write && !writeBest(bus, result))
+        return kExitFailure;
+    if (plan->json)
+        printJson(console, result, write);
+    else
+        printText(console, result, write);
+    return kExitOk;
+}
+
+void TuneCommand::printJson(Console &console, const GainSearchResult &r, bool written) const
+{
+    OrderedJson o;
+    o.text(QStringLiteral("command"), QStringLiteral("tune"))
+        .integer(QStringLiteral("id"), r.spec.id)
+        .text(QStringLiteral("loop"), QStringLiteral("speed"))
+        .real(QStringLiteral("max_overshoot_pct"), r.spec.maxOvershootPct)
+        .real(QStringLiteral("from"), r.spec.from)
+        .real(QStringLiteral("to"), r.spec.to);
+    if (r.read)
+        o.raw(QStringLiteral("gains_read"), TuningJson::gains(*r.read));
+    QByteArray list = "[";
+    for (const CandidateScore &c : r.candidates)
+        list += (list.size() > 1 ? "," : "") + candidateJson(c);
+    o.raw(QStringLiteral("candidates"), list + ']');
+    if (r.best)
+        o.integer(QStringLiteral("best"), *r.best);
+    else
+        o.null(QStringLiteral("best"));
+    if (r.baseline)
+        o.raw(QStringLiteral("before"), candidateJson(r.candidates[*r.baseline]));
+    else
+        o.null(QStringLiteral("before"));
+    if (r.best) {
+        o.raw(QStringLiteral("after"), candidateJson(r.candidates[*r.best]));
+        o.raw(QStringLiteral("suggested"), TuningJson::gains(r.candidates[*r.best].gains));
+    } else {
+        o.null(QStringLiteral("after")).null(QStringLiteral("suggested"));
+    }
+    if (written)
+        o.text(QStringLiteral("written"), QStringLiteral("ram"));
+    else
+        o.null(QStringLiteral("written"));
+    o.boolean(QStringLiteral("stopped_by_instability"), r.stoppedByInstability)
+        .real(QStringLiteral("seconds"), std::round(r.seconds * 10) / 10)
+        .text(QStringLiteral("after_text"), r.message);
+    console.out(o.toJson() + '\n');
+}
+
+void TuneCommand::printText(Console &console, const GainSearchResult &r, bool written) const
+{
+    console.outLine(QStringLiteral("Gain search on drive %1's speed loop: steps %2 <-> %3 dps, "
+                                   "overshoot at most %4 %, %5 candidates in %6 s.")
+                        .arg(r.spec.id)
+                        .arg(r.spec.from)
+                        .arg(r.spec.to)
+                        .arg(r.spec.maxOvershootPct)
+                        .arg(r.candidates.size())
+                        .arg(r.seconds, 0, 'f', 1));
+    console.outLine(QStringLiteral("   Kp    Ki   rise ms  overshoot  area ms  verdict"));
+    for (const CandidateScore &c : r.candidates)
+        console.outLine(candidateText(c));
+    if (r.stoppedByInstability)
+        console.outLine(QStringLiteral("The last candidate showed instability: the search "
+                                       "stopped there."));
+    if (!r.best) {
+        console.outLine(QStringLiteral("No candidate met the bounds: nothing is suggested."));
+    } else {
+        console.outLine(QStringLiteral("Before: %1").arg(candidateText(r.candidates[0])));
+        console.outLine(QStringLiteral("Best:   %1").arg(candidateText(r.candidates[*r.best])));
+        console.outLine(QStringLiteral("Suggested: %1 (the rest as read)%2.")
+                            .arg(TuningJson::speedGainsText(r.candidates[*r.best].gains),
+                                 written
+                                     ? QStringLiteral(", written to RAM")
+                                     : QStringLiteral("; not written (--write ram writes it)")));
+    }
+    console.outLine(QStringLiteral("After the search: %1.").arg(r.message));
+}
+
+} // namespace lk::lkctl

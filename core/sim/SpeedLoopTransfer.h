@@ -1,0 +1,50 @@
+#pragma once
+
+#include "DrivePhysics.h"
+
+#include <array>
+#include <complex>
+
+namespace lk::sim {
+
+/// The simulator's speed loop as a known transfer function: DrivePhysics's substep update
+/// (speed PID on the filtered speed estimate, the current PI with its backward-Euler
+/// winding, the rotor, the estimate's low-pass) written as a linear discrete-time system
+/// x[k+1] = A x[k] + B r[k], from the speed reference to the rotor's speed, and evaluated on
+/// the unit circle. Exact for DrivePhysics in its linear range: no acceleration limit, the
+/// current and voltage below their limits, the speed away from zero (Coulomb friction is then
+/// a constant torque, which shifts the operating point and not the response). A measurement
+/// against it checks the whole chain: setpoint stream, wire, sampling and the sine fits.
+class SpeedLoopTransfer {
+public:
+    static constexpr int kStates = 6; ///< current, its integral, speed, estimate, accel., integral
+
+    SpeedLoopTransfer(const RotorParams &rotor, const PhysicalGains &gains);
+    /// The transfer function of `physics` as its gains stand now.
+    static SpeedLoopTransfer of(const DrivePhysics &physics);
+    /// The transfer function of a simulated drive of `series` (RotorParams::forSeries) with
+    /// these gains, as lksim's drives of that series run them.
+    static SpeedLoopTransfer forSeries(protocol::Series series, const protocol::PidGains &gains,
+                                       const DerivativeGains &kd = {});
+
+    /// H(e^{jwT}): reference samples to speed samples, T = DrivePhysics::kStepSeconds.
+    std::complex<double> discrete(double hz) const;
+    /// What a stepped sine measures with SineFit: the speed's sine over the sine component
+    /// of the held reference, i.e. discrete() over the substep hold (sinc and half-substep
+    /// lag), the reference being held between substeps.
+    std::complex<double> response(double hz) const;
+    double magnitudeDb(double hz) const;
+    double phaseDeg(double hz) const; ///< -180..180
+
+private:
+    using State = std::array<double, kStates>;
+    /// One substep of the linear loop from state `x` with reference `r`.
+    State step(const State &x, double r) const;
+
+    RotorParams m_rotor;
+    PhysicalGains m_gains;
+    std::array<State, kStates> m_a{}; ///< columns of A
+    State m_b{};
+};
+
+} // namespace lk::sim

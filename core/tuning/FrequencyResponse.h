@@ -1,0 +1,72 @@
+#pragma once
+
+#include "SineFit.h"
+
+#include <QtCore/QMetaType>
+#include <QtCore/QVector>
+
+#include <optional>
+
+namespace lk::tuning {
+
+/// One frequency of a measured response: the output's sine over the input's.
+struct FrequencyPoint {
+    double hz = 0;
+    double magnitudeDb = 0; ///< 20 log10(|Y| / |U|)
+    double phaseDeg = 0;    ///< arg(Y / U), unwrapped along the response (continuous)
+    double quality = 0;     ///< the output fit's quality (SineComponent::quality), 0..1
+    int samples = 0;        ///< output samples in the fit window
+    double inputAmplitude = 0;
+    double outputAmplitude = 0;
+};
+
+/// Why a planned frequency has no point.
+enum class DroppedReason {
+    AboveResolution, ///< fewer than kSamplesPerPeriod samples per period at the achieved rate
+    TooFewSamples,   ///< the window held fewer than SineFit::kMinSamples samples
+    NoInput,         ///< the setpoints did not cover the window (a stop, lost replies)
+};
+
+struct DroppedFrequency {
+    double hz = 0;
+    DroppedReason reason = DroppedReason::AboveResolution;
+};
+
+/// Figures of a Bode magnitude: what a technician reads off the plot. Empty when the response
+/// has too few points; bandwidth empty when the magnitude never fell 3 dB below its
+/// low-frequency level.
+struct BodeFigures {
+    std::optional<double> bandwidthHz;      ///< first -3 dB crossing (interpolated in log f)
+    std::optional<double> phaseAtBandwidth; ///< degrees, interpolated likewise
+    std::optional<double> peakDb;           ///< largest magnitude, dB
+    std::optional<double> peakHz;
+    double referenceDb = 0; ///< the lowest frequency's magnitude: the -3 dB is against it
+};
+
+/// A measured frequency response: points, the frequencies dropped and why, the sample rate
+/// the bus achieved.
+struct FrequencyResponse {
+    QVector<FrequencyPoint> points;
+    QVector<DroppedFrequency> dropped;
+    double sampleRateHz = 0;
+
+    /// A stepped sine needs this many samples per period at least: frequencies above
+    /// sampleRateHz / kSamplesPerPeriod are not resolved and not shown.
+    static constexpr double kSamplesPerPeriod = 4;
+    /// The highest frequency the rate resolves.
+    static double resolvedHz(double sampleRateHz) { return sampleRateHz / kSamplesPerPeriod; }
+
+    /// One point: the held input's component (SineFit::ofHeld) and the sampled output's
+    /// (SineFit::fitSampled) over [from, to]; nullopt (and `why`) when either has none.
+    static std::optional<FrequencyPoint>
+    measure(const QVector<double> &inputT, const QVector<double> &inputV,
+            const QVector<double> &outputT, const QVector<double> &outputY, double hz, double from,
+            double to, DroppedReason *why = nullptr);
+    /// Makes the phases continuous from the lowest frequency on (points in ascending order).
+    void unwrapPhases();
+    BodeFigures figures() const;
+};
+
+} // namespace lk::tuning
+
+Q_DECLARE_METATYPE(lk::tuning::FrequencyResponse)

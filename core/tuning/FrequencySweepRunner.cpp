@@ -1,0 +1,378 @@
+#include "FrequencySweepRunner.h"
+
+#include "TuningEnd.h"
+
+#include <bus/BusSession.h>
+#include <bus/ConnectionStatus.h>
+#include <bus/SetpointStream.h>
+#include <protocol/Command.h>
+#include <protocol/RequestBuilder.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lk::tuning {
+
+using bus::RequestStatus;
+using protocol::Command;
+
+namespace {
+QString stopReasonText(bus::SetpointStopReason reason)
+{
+    using R = bus::SetpointStopReason;
+    switch (reason) {
+    case R::Refused:
+        return QStringLiteral("a setpoint was refused by a limit");
+    case R::EmergencyStop:
+        return QStringLiteral("an emergency stop");
+    case R::Cancelled:
+        return QStringLiteral("the bus cancelled a setpoint");
+    case R::Disconnected:
+        return QStringLiteral("the link went away");
+    case R::Closed:
+        return QStringLiteral("the session closed");
+    case R::BusChanged:
+        return QStringLiteral("the port was reopened");
+    case R::SpeedLimit:
+        return QStringLiteral("the speed watch stopped the drive");
+    case R::Requested:
+    case R::Replaced:
+        break;
+    }
+    return QStringLiteral("another stream replaced it");
+}
+} // namespace
+
+FrequencySweepRunner::FrequencySweepRunner(bus::BusSession &session, QObject *parent)
+    : QObject(parent), m_session(session), m_keeper(session)
+{
+    m_endTimer.setSingleShot(true);
+    connect(&m_endTimer, &QTimer::timeout, this, &FrequencySweepRunner::sweepDone);
+    connect(&m_session, &bus::BusSession::requestCompleted, this,
+            &FrequencySweepRunner::onCompleted);
+    connect(&m_session, &bus::BusSession::telemetryReceived, this,
+            &FrequencySweepRunner::onTelemetry);
+    connect(&m_session, &bus::BusSession::setpointStreamStopped, this,
+            &FrequencySweepRunner::onStreamStopped);
+    connect(&m_session, &bus::BusSession::connectionChanged, this,
+            &FrequencySweepRunner::onConnection);
+}
+
+FrequencySweepRunner::~FrequencySweepRunner()
+{
+    if (m_phase == Phase::Sweeping || m_phase == Phase::Returning || m_phase == Phase::Aborting) {
+        // Nobody is left to hear the outcome: stop everything that moves, and put the gains
+        // read back (the writes go out; their ends are not waited for).
+        m_session.stopSetpointStream();
+        m_session.emergencyStop({m_spec.id});
+        m_keeper.restore([](bool, const QString &) {});
+    }
+    restorePolling();
+}
+
+bool FrequencySweepRunner::start(const FrequencySweepSpec &spec, const safety::SoftLimits &limits)
+{
+    if (isRunning())
+        return false;
+    m_spec = spec;
+    m_limits = limits;
+    m_plan = FrequencySweepPlan{};
+    m_result = FrequencySweepResult{};
+    m_result.spec = spec;
+    ++m_run;
+    m_stream = 0;
+    m_sentValues.clear();
+    m_latencies.clear();
+    m_replyTimes.clear();
+    m_replySpeeds.clear();
+    m_previousPlan.reset();
+    m_pollingPaused = false;
+    m_phase = Phase::ReadingGains;
+    const QString bad = FrequencySweepPlan::checkSpec(spec);
+    if (!bad.isEmpty()) {
+        QTimer::singleShot(0, this, [this, bad] {
+            end(StepTestFailure::BadSpec, bad + QStringLiteral("; nothing was sent"));
+        });
+        return true;
+    }
+    // Nothing runs on a drive whose gains were not read on this connection: they are what an
+    // abort puts back.
+    m_keeper.read(spec.id, [this, run = m_run](bool ok, const QString &why) {
+        if (run == m_run && m_phase == Phase::ReadingGains)
+            onGainsRead(ok, why);
+    });
+    return true;
+}
+
+void FrequencySweepRunner::abort()
+{
+    switch (m_phase) {
+    case Phase::Idle:
+    case Phase::Aborting:
+        return;
+    case Phase::ReadingGains:
+    case Phase::ReadingSpeed:
+        end(StepTestFailure::Aborted, QStringLiteral("aborted before anything moved; nothing "
+                                                     "was sent"));
+        return;
+    case Phase::Sweeping:
+    case Phase::Returning:
+        haltAndRestore(StepTestFailure::Aborted, QStringLiteral("aborted"));
+        return;
+    }
+}
+
+void FrequencySweepRunner::onGainsRead(bool ok, const QString &why)
+{
+    if (!ok) {
+        end(StepTestFailure::Silent,
+            QStringLiteral("the gains could not be read (%1); nothing was sent").arg(why));
+        return;
+    }
+    m_result.gains = m_keeper.gains();
+    m_phase = Phase::ReadingSpeed;
+    // The acceleration limit ramps each setpoint change and would bend the sine: lifted in
+    // RAM for the sweep, put back with the gains.
+    LoopGains unramped = *m_keeper.gains();
+    unramped.accelerationDps2 = 0;
+    if (unramped == *m_keeper.gains()) {
+        readSpeed();
+        return;
+    }
+    m_keeper.write(unramped, [this, run = m_run](bool written, const QString &failure) {
+        if (run != m_run || m_phase != Phase::ReadingSpeed)
+            return;
+        if (written) {
+            readSpeed();
+            return;
+        }
+        m_keeper.restore([this, run, failure](bool restored, const QString &) {
+            if (run != m_run || m_phase != Phase::ReadingSpeed)
+                return;
+            end(StepTestFailure::Silent,
+                QStringLiteral("the acceleration limit could not be lifted (%1); nothing moved; "
+                               "%2")
+                    .arg(failure, restored
+                                      ? QStringLiteral("the settings read are back in RAM")
+                                      : QStringLiteral("the settings read could not be written "
+                                                       "back")));
+        });
+    });
+}
+
+void FrequencySweepRunner::readSpeed()
+{
+    const protocol::BuildResult read = protocol::build::plain(Command::ReadState2, m_spec.id);
+    m_session.send(*read.request, this, [this, run = m_run](const bus::RequestResult &r) {
+        if (run == m_run && m_phase == Phase::ReadingSpeed)
+            onSpeedRead(r);
+    });
+}
+
+void FrequencySweepRunner::onSpeedRead(const bus::RequestResult &result)
+{
+    const auto *state = result.ok() && result.reply
+                            ? std::get_if<protocol::State2>(&result.reply->payload)
+                            : nullptr;
+    if (!state) {
+        end(result.status == RequestStatus::Disconnected ? StepTestFailure::Disconnected
+                                                         : StepTestFailure::Silent,
+            QStringLiteral("drive %1 did not answer read_state2 (%2); nothing was sent")
+                .arg(m_spec.id)
+                .arg(QLatin1String(bus::requestStatusName(result.status))));
+        return;
+    }
+    m_result.startSpeed = double(state->speedDps);
+    m_plan = FrequencySweepPlan::make(m_spec, m_session.series(m_spec.id), m_limits);
+    if (!m_plan.allowed()) {
+        m_result.refusal = m_plan.verdict();
+        m_result.refusedDps = m_plan.refusedDps();
+        if (m_plan.verdict().allowed())
+            end(StepTestFailure::BadSpec,
+                m_plan.specError() + QStringLiteral("; nothing was sent"));
+        else
+            end(StepTestFailure::Refused, QStringLiteral("refused for safety, nothing was sent"));
+        return;
+    }
+    // Each setpoint's reply carries the speed: polling would only take bus time from them.
+    m_previousPlan = m_session.pollPlan();
+    if (m_previousPlan) {
+        m_session.stopPolling();
+        m_pollingPaused = true;
+    }
+    bus::SetpointStreamPlan stream;
+    stream.id = m_spec.id;
+    stream.settings = m_plan.settings();
+    stream.series = m_session.series(m_spec.id);
+    stream.limits = m_limits;
+    m_phase = Phase::Sweeping;
+    m_stream = m_session.startSetpointStream(stream);
+    emit started(m_plan);
+    m_endTimer.start(int(std::ceil(m_plan.endS() * 1000)) + kTailMs);
+}
+
+void FrequencySweepRunner::onCompleted(const bus::RequestResult &result)
+{
+    if ((m_phase != Phase::Sweeping && m_phase != Phase::Returning) ||
+        !bus::SetpointStream::isSetpointTicket(result.ticket) || result.request.id != m_spec.id)
+        return;
+    ++m_result.sent;
+    const auto *speed = std::get_if<protocol::SpeedCommand>(&result.request.payload);
+    if (result.ok() && speed) {
+        m_sentValues.append(speed->speedDps());
+        m_latencies.append(result.latencyMs * 1e-3);
+    }
+}
+
+void FrequencySweepRunner::onTelemetry(const bus::TelemetryBatch &batch)
+{
+    if (m_phase != Phase::Sweeping && m_phase != Phase::Returning)
+        return;
+    for (const bus::TelemetrySample &s : batch) {
+        if (s.id != m_spec.id || s.source != Command::Speed || !s.has(bus::TelemetryField::Speed))
+            continue;
+        m_replyTimes.append(s.time);
+        m_replySpeeds.append(s.speedDps);
+    }
+}
+
+void FrequencySweepRunner::onStreamStopped(const bus::SetpointStop &stop)
+{
+    if (stop.stream != m_stream || m_phase != Phase::Sweeping)
+        return;
+    if (stop.reason == bus::SetpointStopReason::Requested)
+        return;
+    if (stop.reason == bus::SetpointStopReason::Refused) {
+        m_result.refusal = stop.verdict;
+        haltAndRestore(StepTestFailure::Refused,
+                       QStringLiteral("a setpoint was refused by a limit mid-sweep"));
+        return;
+    }
+    haltAndRestore(stop.reason == bus::SetpointStopReason::Disconnected
+                       ? StepTestFailure::Disconnected
+                       : StepTestFailure::Aborted,
+                   QStringLiteral("the sweep stopped: %1").arg(stopReasonText(stop.reason)));
+}
+
+void FrequencySweepRunner::onConnection(const bus::ConnectionStatus &status)
+{
+    if (status.isOpen() || (m_phase != Phase::Sweeping && m_phase != Phase::Returning))
+        return;
+    haltAndRestore(StepTestFailure::Disconnected, QStringLiteral("the bus went away"));
+}
+
+void FrequencySweepRunner::sweepDone()
+{
+    if (m_phase != Phase::Sweeping)
+        return;
+    m_phase = Phase::Returning;
+    m_session.stopSetpointStream();
+    m_keeper.restore([this, run = m_run](bool ok, const QString &why) {
+        if (run != m_run || m_phase != Phase::Returning)
+            return;
+        if (ok)
+            returnToStart();
+        else
+            haltAndRestore(
+                StepTestFailure::Silent,
+                QStringLiteral("the gains read could not be written back (%1)").arg(why));
+    });
+}
+
+void FrequencySweepRunner::returnToStart()
+{
+    // Back to the speed the drive had before the sweep, through the same gate.
+    TuningEnd::returnToSpeed(
+        m_session, m_spec.id, m_result.startSpeed.value_or(0), m_limits, this,
+        [this, run = m_run](bool ok, const QString &words) {
+            if (run != m_run || m_phase != Phase::Returning)
+                return;
+            if (!ok) {
+                haltAndRestore(StepTestFailure::Silent, words);
+                return;
+            }
+            // The last replies' samples arrive in the next telemetry batch.
+            QTimer::singleShot(StepTestRunner::kSampleGraceMs, this, [this, run, words] {
+                if (run != m_run || m_phase != Phase::Returning)
+                    return;
+                restorePolling();
+                end(StepTestFailure::None,
+                    QStringLiteral("the gains and acceleration read are back in RAM; %1")
+                        .arg(words));
+            });
+        });
+}
+
+void FrequencySweepRunner::analyse()
+{
+    // The k-th acknowledged setpoint's reply is the k-th reply sample: the drive got the
+    // value and reported its speed at that moment. Both are placed at the request's write
+    // (the reply's time less its latency): the reply's way back and the host's handling of it
+    // jitter by milliseconds on a loaded machine, the write does not wait on them.
+    const int n = int(std::min(m_sentValues.size(), m_replyTimes.size()));
+    m_result.time.clear();
+    for (int k = 0; k < n; ++k)
+        m_result.time.append(m_replyTimes[k] - m_latencies[k]);
+    m_result.setpoint = m_sentValues.mid(0, n);
+    m_result.speed = m_replySpeeds.mid(0, n);
+    FrequencyResponse &r = m_result.response;
+    r = FrequencyResponse{};
+    if (n < 2)
+        return;
+    const double span = m_result.time.last() - m_result.time.first();
+    r.sampleRateHz = span > 0 ? (n - 1) / span : 0;
+    // The stream's time 0 is its first setpoint, which the first reply answers.
+    const double origin = m_result.time.first();
+    for (const SweepSegment &s : m_plan.segments()) {
+        if (s.hz > FrequencyResponse::resolvedHz(r.sampleRateHz)) {
+            r.dropped.append({s.hz, DroppedReason::AboveResolution});
+            continue;
+        }
+        DroppedReason why = DroppedReason::TooFewSamples;
+        const std::optional<FrequencyPoint> p = FrequencyResponse::measure(
+            m_result.time, m_result.setpoint, m_result.time, m_result.speed, s.hz,
+            origin + s.fitFromS, origin + s.fitToS, &why);
+        if (p)
+            r.points.append(*p);
+        else
+            r.dropped.append({s.hz, why});
+    }
+    r.unwrapPhases();
+}
+
+void FrequencySweepRunner::haltAndRestore(StepTestFailure failure, const QString &message)
+{
+    m_phase = Phase::Aborting;
+    m_endTimer.stop();
+    TuningEnd::haltAndRestore(m_session, m_keeper, m_spec.id, this,
+                              [this, failure, message, run = m_run](const QString &outcome) {
+                                  if (run != m_run)
+                                      return;
+                                  restorePolling();
+                                  end(failure, QStringLiteral("%1: %2").arg(message, outcome));
+                              });
+}
+
+void FrequencySweepRunner::restorePolling()
+{
+    if (!m_pollingPaused)
+        return;
+    m_pollingPaused = false;
+    if (m_previousPlan)
+        m_session.startPolling(*m_previousPlan);
+}
+
+void FrequencySweepRunner::end(StepTestFailure failure, const QString &message)
+{
+    m_endTimer.stop();
+    analyse();
+    m_phase = Phase::Idle;
+    m_result.failure = failure;
+    m_result.message = message;
+    if (failure == StepTestFailure::None)
+        emit finished(m_result);
+    else
+        emit failed(m_result);
+}
+
+} // namespace lk::tuning

@@ -1,0 +1,230 @@
+#include "GainSearchRunner.h"
+
+#include "StepRun.h"
+#include "TuningEnd.h"
+
+#include <bus/BusSession.h>
+
+#include <QtCore/QTimer>
+
+namespace lk::tuning {
+
+GainSearchRunner::GainSearchRunner(bus::BusSession &session, QObject *parent)
+    : QObject(parent), m_session(session), m_keeper(session), m_step(session)
+{
+    connect(&m_step, &StepTestRunner::finished, this, &GainSearchRunner::onStepFinished);
+    connect(&m_step, &StepTestRunner::failed, this, &GainSearchRunner::onStepFailed);
+}
+
+GainSearchRunner::~GainSearchRunner()
+{
+    if (m_phase == Phase::Searching || m_phase == Phase::Restoring || m_phase == Phase::Aborting) {
+        // Nobody is left to hear the outcome: motor off, and the gains read go back (the
+        // writes go out; their ends are not waited for).
+        m_step.abort();
+        m_session.emergencyStop({m_spec.id});
+        m_keeper.restore([](bool, const QString &) {});
+    }
+}
+
+bool GainSearchRunner::start(const GainSearchSpec &spec, const safety::SoftLimits &limits)
+{
+    if (isRunning())
+        return false;
+    m_spec = spec;
+    m_limits = limits;
+    m_result = GainSearchResult{};
+    m_result.spec = spec;
+    m_strategy.reset();
+    m_startSpeed.reset();
+    ++m_run;
+    m_clock.start();
+    m_phase = Phase::Reading;
+    QString bad;
+    if (!(spec.maxOvershootPct >= 0 && spec.maxOvershootPct <= 100))
+        bad = QStringLiteral("the overshoot bound must be 0..100 %, got %1")
+                  .arg(spec.maxOvershootPct);
+    else if (spec.maxCandidates < 1 || spec.maxCandidates > 50)
+        bad = QStringLiteral("the candidates must be 1..50, got %1").arg(spec.maxCandidates);
+    else
+        bad = StepTestPlan::checkSpec(StepTestSpec{spec.id,
+                                                   StepLoop::Speed,
+                                                   spec.from,
+                                                   spec.to,
+                                                   spec.stepS,
+                                                   spec.periods,
+                                                   spec.preRollS,
+                                                   {}});
+    if (!bad.isEmpty()) {
+        QTimer::singleShot(0, this, [this, bad] {
+            end(StepTestFailure::BadSpec, bad + QStringLiteral("; nothing was sent"));
+        });
+        return true;
+    }
+    m_keeper.read(spec.id, [this, run = m_run](bool ok, const QString &why) {
+        if (run == m_run && m_phase == Phase::Reading)
+            onRead(ok, why);
+    });
+    return true;
+}
+
+void GainSearchRunner::abort()
+{
+    switch (m_phase) {
+    case Phase::Idle:
+    case Phase::Aborting:
+        return;
+    case Phase::Reading:
+        end(StepTestFailure::Aborted,
+            QStringLiteral("aborted before anything moved; nothing was sent"));
+        return;
+    case Phase::Searching:
+    case Phase::Restoring:
+        haltAndRestore(StepTestFailure::Aborted, QStringLiteral("aborted"));
+        return;
+    }
+}
+
+void GainSearchRunner::onRead(bool ok, const QString &why)
+{
+    if (!ok) {
+        end(StepTestFailure::Silent,
+            QStringLiteral("the gains could not be read (%1); nothing was sent").arg(why));
+        return;
+    }
+    m_result.read = m_keeper.gains();
+    m_strategy.emplace(*m_keeper.gains(), m_spec.maxOvershootPct, m_spec.maxCandidates);
+    m_phase = Phase::Searching;
+    tryNext();
+}
+
+void GainSearchRunner::tryNext()
+{
+    const std::optional<LoopGains> candidate = m_strategy->next();
+    if (!candidate) {
+        finishSearch();
+        return;
+    }
+    // Steps are measured without the acceleration limit: it would ramp every one of them
+    // whatever the gains. It goes back with the gains read.
+    LoopGains unramped = *candidate;
+    unramped.accelerationDps2 = 0;
+    m_keeper.write(unramped, [this, run = m_run](bool ok, const QString &why) {
+        if (run != m_run || m_phase != Phase::Searching)
+            return;
+        if (!ok) {
+            haltAndRestore(
+                StepTestFailure::Silent,
+                QStringLiteral("a candidate's gains could not be written (%1)").arg(why));
+            return;
+        }
+        StepTestSpec step{m_spec.id,    StepLoop::Speed, m_spec.from,     m_spec.to,
+                          m_spec.stepS, m_spec.periods,  m_spec.preRollS, {}};
+        m_step.start(step, m_limits);
+    });
+}
+
+void GainSearchRunner::onStepFinished(const StepTestResult &result)
+{
+    if (m_phase != Phase::Searching)
+        return;
+    if (!m_startSpeed)
+        m_startSpeed = result.startValue;
+    StepMetricOptions options;
+    options.effortLimit = seriesEffortLimit(m_session.series(m_spec.id));
+    CandidateScore score;
+    score.gains = *m_strategy->next();
+    score.metrics = GainSearchStrategy::combine(StepMetrics::forAllEdges(result.trace, options));
+    score.errorAreaS = GainSearchStrategy::errorArea(result.trace);
+    score.verdict = GainSearchStrategy::judge(score.metrics, result.trace, m_spec.maxOvershootPct);
+    m_strategy->record(score);
+    emit candidateScored(score, int(m_strategy->scores().size()) - 1);
+    tryNext();
+}
+
+void GainSearchRunner::onStepFailed(const StepTestResult &result)
+{
+    if (m_phase != Phase::Searching)
+        return;
+    if (result.failure == StepTestFailure::Refused && !result.anythingSent()) {
+        // Nothing moved: only the settings written so far go back.
+        m_result.refusal = result.refusal;
+        m_phase = Phase::Restoring;
+        m_keeper.restore([this, run = m_run](bool ok, const QString &) {
+            if (run == m_run)
+                end(StepTestFailure::Refused,
+                    ok ? QStringLiteral("refused for safety, no step was sent; the gains read "
+                                        "are back in RAM")
+                       : QStringLiteral("refused for safety, no step was sent; the gains read "
+                                        "could not be written back"));
+        });
+        return;
+    }
+    haltAndRestore(result.failure == StepTestFailure::Disconnected ? StepTestFailure::Disconnected
+                                                                   : StepTestFailure::Silent,
+                   QStringLiteral("a step failed: %1").arg(result.message));
+}
+
+void GainSearchRunner::finishSearch()
+{
+    m_phase = Phase::Restoring;
+    m_keeper.restore([this, run = m_run](bool ok, const QString &why) {
+        if (run != m_run || m_phase != Phase::Restoring)
+            return;
+        if (!ok) {
+            haltAndRestore(
+                StepTestFailure::Silent,
+                QStringLiteral("the gains read could not be written back (%1)").arg(why));
+            return;
+        }
+        returnToStart();
+    });
+}
+
+void GainSearchRunner::returnToStart()
+{
+    TuningEnd::returnToSpeed(
+        m_session, m_spec.id, m_startSpeed.value_or(0), m_limits, this,
+        [this, run = m_run](bool ok, const QString &words) {
+            if (run != m_run || m_phase != Phase::Restoring)
+                return;
+            if (!ok) {
+                haltAndRestore(StepTestFailure::Silent, words);
+                return;
+            }
+            end(StepTestFailure::None,
+                QStringLiteral("the gains and acceleration read are back in RAM; %1").arg(words));
+        });
+}
+
+void GainSearchRunner::haltAndRestore(StepTestFailure failure, const QString &message)
+{
+    m_phase = Phase::Aborting;
+    m_step.abort();
+    TuningEnd::haltAndRestore(m_session, m_keeper, m_spec.id, this,
+                              [this, failure, message, run = m_run](const QString &outcome) {
+                                  if (run == m_run)
+                                      end(failure, QStringLiteral("%1: %2").arg(message, outcome));
+                              });
+}
+
+void GainSearchRunner::end(StepTestFailure failure, const QString &message)
+{
+    m_phase = Phase::Idle;
+    if (m_strategy) {
+        m_result.candidates = m_strategy->scores();
+        m_result.best = m_strategy->best();
+        m_result.stoppedByInstability = m_strategy->stoppedByInstability();
+        if (!m_result.candidates.isEmpty())
+            m_result.baseline = 0;
+    }
+    m_result.seconds = m_clock.nsecsElapsed() * 1e-9;
+    m_result.failure = failure;
+    m_result.message = message;
+    if (failure == StepTestFailure::None)
+        emit finished(m_result);
+    else
+        emit failed(m_result);
+}
+
+} // namespace lk::tuning

@@ -1,0 +1,99 @@
+#pragma once
+
+#include "GainKeeper.h"
+#include "GainSearchStrategy.h"
+#include "StepTestRunner.h"
+
+#include <QtCore/QObject>
+
+#include <optional>
+
+namespace lk::bus {
+class BusSession;
+}
+
+namespace lk::tuning {
+
+/// A gain search as the user asks for it: the speed loop's Kp and Ki, scored by short speed
+/// steps FROM -> TO.
+struct GainSearchSpec {
+    int id = 1;
+    double from = 100; ///< dps: away from 0, where friction would bend the steps
+    double to = 300;
+    double maxOvershootPct = 5;
+    double stepS = 0.25;    ///< how long each step is held
+    int periods = 3;        ///< a square of this many periods: 2N steps per candidate
+    double preRollS = 0.15; ///< FROM held before it
+    int maxCandidates = 24;
+};
+
+/// What a gain search tried and found. Nothing of it stays in the drive: the gains read are
+/// back in RAM at the end (the caller writes `best` only when the user asks).
+struct GainSearchResult {
+    GainSearchSpec spec;
+    std::optional<LoopGains> read; ///< the gains read before anything moved
+    QVector<CandidateScore> candidates;
+    std::optional<int> baseline; ///< the read gains' score (the first candidate), if measured
+    std::optional<int> best;     ///< the fastest accepted candidate
+    bool stoppedByInstability = false;
+    double seconds = 0; ///< the search's wall time
+    StepTestFailure failure = StepTestFailure::None;
+    StepRefusal refusal; ///< a Refused step: which setpoint and limit
+    QString message;     ///< English: how it ended and what the drive was left doing
+    bool ok() const { return failure == StepTestFailure::None; }
+};
+
+/// Runs a gain search on a BusSession: reads the gains and acceleration limit (nothing runs
+/// without them), lifts the acceleration limit, and for each candidate of GainSearchStrategy
+/// writes its gains to RAM and runs a step test (StepTestRunner: every setpoint checked
+/// against the limits, a refusal sends nothing more), until the strategy is done or a
+/// candidate shows instability (current at its limit, swings growing). Then it writes the
+/// gains read back to RAM and returns the drive to the speed it had.
+///
+/// abort() (Esc, Ctrl-C) stops the step at once, sends motor off (an emergency stop) and
+/// writes the gains read back to RAM; failed(Aborted) follows once both ended.
+class GainSearchRunner : public QObject {
+    Q_OBJECT
+public:
+    explicit GainSearchRunner(bus::BusSession &session, QObject *parent = nullptr);
+    ~GainSearchRunner() override; ///< running: motor off, the read gains written back
+
+    bool start(const GainSearchSpec &spec, const safety::SoftLimits &limits);
+    void abort();
+    bool isRunning() const { return m_phase != Phase::Idle; }
+
+signals:
+    /// A candidate's step was scored (index into the result's candidates).
+    void candidateScored(const lk::tuning::CandidateScore &score, int index);
+    void finished(const lk::tuning::GainSearchResult &result);
+    void failed(const lk::tuning::GainSearchResult &result);
+
+private:
+    enum class Phase { Idle, Reading, Searching, Restoring, Aborting };
+
+    void onRead(bool ok, const QString &why);
+    void tryNext();
+    void onStepFinished(const StepTestResult &result);
+    void onStepFailed(const StepTestResult &result);
+    void finishSearch();
+    void returnToStart();
+    void haltAndRestore(StepTestFailure failure, const QString &message);
+    void end(StepTestFailure failure, const QString &message);
+
+    bus::BusSession &m_session;
+    GainKeeper m_keeper;
+    StepTestRunner m_step;
+    Phase m_phase = Phase::Idle;
+    GainSearchSpec m_spec;
+    safety::SoftLimits m_limits;
+    std::optional<GainSearchStrategy> m_strategy;
+    GainSearchResult m_result;
+    std::optional<double> m_startSpeed;
+    quint64 m_run = 0;
+    QElapsedTimer m_clock;
+};
+
+} // namespace lk::tuning
+
+Q_DECLARE_METATYPE(lk::tuning::GainSearchResult)
+Q_DECLARE_METATYPE(lk::tuning::CandidateScore)

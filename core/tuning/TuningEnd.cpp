@@ -1,0 +1,68 @@
+#include "TuningEnd.h"
+
+#include "GainKeeper.h"
+
+#include <bus/BusSession.h>
+#include <protocol/RequestBuilder.h>
+#include <safety/MotionPlanner.h>
+
+#include <QtCore/QTimer>
+
+namespace lk::tuning {
+
+void TuningEnd::haltAndRestore(bus::BusSession &session, GainKeeper &keeper, int id,
+                               QObject *context, std::function<void(const QString &)> done)
+{
+    session.stopSetpointStream();
+    session.emergencyStop(
+        {id}, protocol::Command::MotorOff, context,
+        [&keeper, id, done](const QVector<int> &acknowledged, const QVector<int> &,
+                            const QVector<int> &) {
+            const QString off = acknowledged.contains(id)
+                                    ? QStringLiteral("drive %1 is off").arg(id)
+                                    : QStringLiteral("drive %1 did not acknowledge motor off: "
+                                                     "it may still be moving")
+                                          .arg(id);
+            keeper.restore([off, done](bool ok, const QString &why) {
+                done(QStringLiteral("%1; %2").arg(
+                    off, ok ? QStringLiteral("the gains and acceleration read before are back "
+                                             "in RAM")
+                            : QStringLiteral("the gains and acceleration read before could not "
+                                             "be written back (%1)")
+                                  .arg(why)));
+            });
+        });
+}
+
+void TuningEnd::returnToSpeed(bus::BusSession &session, int id, double dps,
+                              const safety::SoftLimits &limits, QObject *context,
+                              std::function<void(bool, const QString &)> done)
+{
+    const protocol::BuildResult built = protocol::build::speed(id, dps);
+    const safety::MotionPlan motion =
+        built.ok() ? safety::MotionPlanner::plan(*built.request, session.series(id), limits, {})
+                   : safety::MotionPlan{};
+    if (!motion.allowed()) {
+        QTimer::singleShot(0, context, [done, dps] {
+            done(false, QStringLiteral("the speed read at the start (%1 dps) is beyond the "
+                                       "limits")
+                            .arg(dps));
+        });
+        return;
+    }
+    session.send(*motion.request, context, [id, dps, done](const bus::RequestResult &r) {
+        if (!r.ok()) {
+            done(false, QStringLiteral("drive %1 did not answer the speed back to %2 dps")
+                            .arg(id)
+                            .arg(dps));
+            return;
+        }
+        done(true, dps == 0 ? QStringLiteral("drive %1 holds 0 dps (the motor stays on)").arg(id)
+                            : QStringLiteral("drive %1 is back at %2 dps, the speed read at the "
+                                             "start; stop it with motor stop or off")
+                                  .arg(id)
+                                  .arg(dps));
+    });
+}
+
+} // namespace lk::tuning

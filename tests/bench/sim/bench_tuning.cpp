@@ -1,0 +1,187 @@
+// Frequency response and gain search figures (issue #25), on lksim over its pseudo-terminal
+// at 1 Mbaud with wire-time emulation, one drive of each series on each generation:
+//   freq_*: the measured Bode of the speed loop against the simulator's own transfer function
+//           (SpeedLoopTransfer): the largest dB and degree errors up to a quarter of the
+//           sample rate reached, that rate, and the points compared;
+//   tune_*: a full speed-loop gain search: its time, and the gains read (the defaults) beside
+//           the suggested ones with their rise time, overshoot and error area.
+// A side-by-side table goes to standard error.
+#include "../bus/BenchSession.h"
+#include "../bus/BenchUtil.h"
+
+#include <E2eUtil.h>
+#include <LksimProcess.h>
+#include <protocol/RequestBuilder.h>
+#include <sim/SpeedLoopTransfer.h>
+#include <tuning/FrequencySweepRunner.h>
+#include <tuning/GainSearchRunner.h>
+
+#include <QtCore/QCoreApplication>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace lk;
+using namespace lk::tuning;
+using protocol::Series;
+
+namespace {
+
+constexpr int kBaud = 1000000;
+
+struct Drive {
+    int id;
+    Series series;
+    bool v235;
+};
+const Drive kDrives[] = {{1, Series::MS, false}, {2, Series::MF, false}, {3, Series::MG, false},
+                         {4, Series::MH, false}, {5, Series::MS, true},  {6, Series::MF, true},
+                         {7, Series::MG, true},  {8, Series::MH, true}};
+
+QString key(const Drive &d)
+{
+    return protocol::seriesName(d.series) +
+           (d.v235 ? QStringLiteral("_v235") : QStringLiteral("_v23"));
+}
+
+template <typename Runner, typename Result, typename Spec>
+std::optional<Result> run(bus::BusSession &session, const Spec &spec, int id)
+{
+    Runner runner(session);
+    std::optional<Result> result;
+    QObject::connect(&runner, &Runner::finished, [&](const Result &r) { result = r; });
+    QObject::connect(&runner, &Runner::failed, [&](const Result &r) { result = r; });
+    runner.start(spec, safety::SoftLimits::defaults(session.series(id)));
+    if (!bench::waitUntil([&] { return result.has_value(); }, 300000))
+        runner.abort();
+    bench::waitUntil([&] { return result.has_value(); }, 30000);
+    return result;
+}
+
+sim::SpeedLoopTransfer transferFor(Series series, const LoopGains &g)
+{
+    const auto u8 = [](quint16 v) { return quint8(std::min<int>(v, 255)); };
+    return sim::SpeedLoopTransfer::forSeries(series,
+                                             {u8(g.angle.kp), u8(g.angle.ki), u8(g.speed.kp),
+                                              u8(g.speed.ki), u8(g.current.kp), u8(g.current.ki)},
+                                             {g.angle.kd, g.speed.kd, g.current.kd});
+}
+
+bool bode(bus::BusSession &session, const Drive &d, bench::JsonLine &json)
+{
+    FrequencySweepSpec spec;
+    spec.id = d.id;
+    spec.fromHz = 2;
+    spec.toHz = 400;
+    spec.points = 14;
+    spec.amplitude = 60;
+    spec.operatingPoint = 300;
+    const auto r = run<FrequencySweepRunner, FrequencySweepResult>(session, spec, d.id);
+    if (!r || !r->ok() || !r->gains) {
+        std::fprintf(stderr, "bench_tuning: the sweep of drive %d failed: %s\n", d.id,
+                     r ? qPrintable(r->message) : "no result");
+        return false;
+    }
+    const sim::SpeedLoopTransfer h = transferFor(d.series, *r->gains);
+    double maxDb = 0, maxDeg = 0;
+    std::fprintf(stderr, "Bode of drive %d (%s), %.0f samples/s:\n", d.id, qPrintable(key(d)),
+                 r->response.sampleRateHz);
+    for (const FrequencyPoint &p : r->response.points) {
+        const double db = p.magnitudeDb - h.magnitudeDb(p.hz);
+        const double deg = std::remainder(p.phaseDeg - h.phaseDeg(p.hz), 360.0);
+        maxDb = std::max(maxDb, std::abs(db));
+        maxDeg = std::max(maxDeg, std::abs(deg));
+        std::fprintf(stderr, "  %7.2f Hz  %7.2f dB %7.1f deg  sim %7.2f dB %7.1f deg  q %.3f\n",
+                     p.hz, p.magnitudeDb, p.phaseDeg, h.magnitudeDb(p.hz), h.phaseDeg(p.hz),
+                     p.quality);
+    }
+    const QString k = QStringLiteral("freq_") + key(d) + QLatin1Char('_');
+    json.add(k + "sample_rate_hz", r->response.sampleRateHz, 1);
+    json.add(k + "resolved_hz", FrequencyResponse::resolvedHz(r->response.sampleRateHz), 1);
+    json.addInt(k + "points", r->response.points.size());
+    json.add(k + "max_db_error", maxDb, 2);
+    json.add(k + "max_deg_error", maxDeg, 1);
+    if (const auto bw = r->response.figures().bandwidthHz)
+        json.add(k + "bandwidth_hz", *bw, 1);
+    return true;
+}
+
+bool tune(bus::BusSession &session, const Drive &d, bench::JsonLine &json)
+{
+    GainSearchSpec spec;
+    spec.id = d.id;
+    const auto r = run<GainSearchRunner, GainSearchResult>(session, spec, d.id);
+    if (!r || !r->ok()) {
+        std::fprintf(stderr, "bench_tuning: the search on drive %d failed: %s\n", d.id,
+                     r ? qPrintable(r->message) : "no result");
+        return false;
+    }
+    const QString k = QStringLiteral("tune_") + key(d) + QLatin1Char('_');
+    json.add(k + "seconds", r->seconds, 1);
+    json.addInt(k + "candidates", r->candidates.size());
+    const auto put = [&](const QString &which, const CandidateScore &c) {
+        json.addInt(k + which + "_kp", c.gains.speed.kp);
+        json.addInt(k + which + "_ki", c.gains.speed.ki);
+        json.add(k + which + "_rise_ms", c.metrics.riseTimeS.value.value_or(-0.001) * 1e3, 2);
+        json.add(k + which + "_overshoot_pct", c.metrics.overshootPct.value.value_or(-1), 1);
+        json.add(k + which + "_error_area_ms", c.errorAreaS * 1e3, 2);
+    };
+    if (r->baseline)
+        put(QStringLiteral("default"), r->candidates[*r->baseline]);
+    if (r->best)
+        put(QStringLiteral("suggested"), r->candidates[*r->best]);
+    const auto line = [](const char *what, const CandidateScore &c) {
+        std::fprintf(stderr,
+                     "    %-9s Kp %3d Ki %3d  rise %6.2f ms  overshoot %5.1f %%  area %6.2f ms\n",
+                     what, c.gains.speed.kp, c.gains.speed.ki,
+                     c.metrics.riseTimeS.value.value_or(-0.001) * 1e3,
+                     c.metrics.overshootPct.value.value_or(-1), c.errorAreaS * 1e3);
+    };
+    std::fprintf(stderr, "Tune of drive %d (%s): %.1f s, %d candidates\n", d.id, qPrintable(key(d)),
+                 r->seconds, int(r->candidates.size()));
+    if (r->baseline)
+        line("default", r->candidates[*r->baseline]);
+    if (r->best)
+        line("suggested", r->candidates[*r->best]);
+    else
+        std::fprintf(stderr, "    no candidate met the bounds\n");
+    return true;
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    qputenv("QT_LOGGING_RULES", "lk.*.info=false");
+    QCoreApplication app(argc, argv);
+    QStringList motors;
+    for (const Drive &d : kDrives)
+        motors << QStringLiteral("%1:%2%3")
+                      .arg(d.id)
+                      .arg(protocol::seriesName(d.series))
+                      .arg(d.v235 ? QStringLiteral("@2.35") : QString());
+    e2e::LksimProcess sim(QStringLiteral(LKSIM_PATH));
+    if (!sim.start({"--motors", motors.join(QLatin1Char(',')), "--wire-time", "--baud",
+                    QString::number(kBaud)})) {
+        std::fprintf(stderr, "bench_tuning: %s\n", qPrintable(sim.errorString()));
+        return 1;
+    }
+    bus::BusSession session;
+    if (!bench::openSerial(session, sim.devicePath(), kBaud))
+        return 1;
+    for (const Drive &d : kDrives) {
+        session.send(*protocol::build::plain(protocol::Command::ReadModel, d.id).request);
+    }
+    bench::waitUntil([&] { return session.knownMotors().size() >= int(std::size(kDrives)); },
+                     10000);
+    bench::JsonLine json;
+    bool ok = true;
+    for (const Drive &d : kDrives) {
+        if (d.series == Series::MF || d.series == Series::MG)
+            ok = bode(session, d, json) && ok;
+    }
+    for (const Drive &d : kDrives)
+        ok = tune(session, d, json) && ok;
+    json.print();
+    return ok ? 0 : 1;
+}

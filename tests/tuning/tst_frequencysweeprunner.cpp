@@ -1,0 +1,238 @@
+// FrequencySweepRunner against the built-in simulator at 1 Mbaud (issue #25): the measured
+// response against the simulator's own transfer function, refusals and silent drives that
+// send nothing, and the abort path (stream halted, motor off, the read gains in RAM).
+#include <bus/BusSession.h>
+#include <bus/SetpointStream.h>
+#include <protocol/RequestBuilder.h>
+#include <sim/DrivePhysics.h>
+#include <sim/SimBus.h>
+#include <sim/SimBusSpec.h>
+#include <sim/SpeedLoopTransfer.h>
+#include <transport/SimTransport.h>
+#include <tuning/FrequencySweepRunner.h>
+
+#include <QtTest/QSignalSpy>
+#include <QtTest/QTest>
+
+#include <cmath>
+
+using namespace lk;
+using namespace lk::bus;
+using namespace lk::tuning;
+using protocol::Command;
+using protocol::Series;
+
+namespace {
+
+constexpr int kWaitMs = 60000; // a loaded 2-core machine; never a timing assertion
+constexpr int kBaud = 1000000;
+
+TransportFactory simFactory(const QString &spec)
+{
+    return [spec](int baud) -> std::unique_ptr<transport::Transport> {
+        auto bus = sim::SimBus::fromSpec(*sim::SimBusSpec::parse(spec));
+        auto t = std::make_unique<transport::SimTransport>(std::move(bus));
+        t->setBaud(baud);
+        return t;
+    };
+}
+
+bool isMotion(Command c)
+{
+    return c == Command::Speed || c == Command::Torque ||
+           (c >= Command::MultiPosition && c <= Command::IncrementPositionLimited);
+}
+
+/// A session on the simulated bus (drive 3 MF V2.3, drive 5 MG on fw 2.35).
+struct Rig {
+    BusSession session;
+    QSignalSpy completed{&session, &BusSession::requestCompleted};
+    FrequencySweepRunner runner{session};
+    QSignalSpy finished{&runner, &FrequencySweepRunner::finished};
+    QSignalSpy failed{&runner, &FrequencySweepRunner::failed};
+    Rig()
+    {
+        session.open(simFactory(QStringLiteral("3:MF,5:MG@2.35")), kBaud);
+        (void)QTest::qWaitFor([this] { return session.connection().isOpen(); }, kWaitMs);
+        identify(3);
+        identify(5);
+    }
+    /// read_model, as lkstudio and lkctl do first: the session learns series and generation.
+    void identify(int id) { request(*protocol::build::plain(Command::ReadModel, id).request); }
+    RequestResult request(const protocol::Request &r)
+    {
+        const quint64 t = session.send(r);
+        std::optional<RequestResult> out;
+        (void)QTest::qWaitFor(
+            [&] {
+                for (const auto &args : completed) {
+                    const auto res = args.at(0).value<RequestResult>();
+                    if (res.ticket == t)
+                        out = res;
+                }
+                return out.has_value();
+            },
+            kWaitMs);
+        return out.value_or(RequestResult{});
+    }
+    FrequencySweepResult waitForEnd()
+    {
+        if (!QTest::qWaitFor([this] { return finished.size() + failed.size() > 0; }, kWaitMs))
+            return {};
+        return (finished.isEmpty() ? failed : finished).at(0).at(0).value<FrequencySweepResult>();
+    }
+    int motionCount() const
+    {
+        int n = 0;
+        for (const auto &args : completed)
+            n += isMotion(args.at(0).value<RequestResult>().request.command) ? 1 : 0;
+        return n;
+    }
+    std::optional<LoopGains> gains(int id)
+    {
+        const protocol::Generation g = session.knownMotors().value(id).generation;
+        QVector<protocol::Reply> replies;
+        for (const protocol::Request &r : LoopGains::reads(id, g)) {
+            const RequestResult res = request(r);
+            if (res.reply)
+                replies.append(*res.reply);
+        }
+        return LoopGains::decode(g, replies);
+    }
+    protocol::State2 state(int id)
+    {
+        const RequestResult r = request(*protocol::build::plain(Command::ReadState2, id).request);
+        return r.reply ? std::get<protocol::State2>(r.reply->payload) : protocol::State2{};
+    }
+};
+
+FrequencySweepSpec quickSpec(int id)
+{
+    FrequencySweepSpec s;
+    s.id = id;
+    s.fromHz = 3;
+    s.toHz = 300;
+    s.points = 7;
+    s.amplitude = 60;
+    s.operatingPoint = 300;
+    s.leadInS = 0.3;
+    s.minPointS = 0.4;
+    return s;
+}
+
+/// The simulated drive's own speed loop for the gains read from it (lksim saturates its gains
+/// at 255, as SimParams does).
+sim::SpeedLoopTransfer transferFor(Series series, const LoopGains &g)
+{
+    const auto u8 = [](quint16 v) { return quint8(std::min<int>(v, 255)); };
+    return sim::SpeedLoopTransfer::forSeries(series,
+                                             {u8(g.angle.kp), u8(g.angle.ki), u8(g.speed.kp),
+                                              u8(g.speed.ki), u8(g.current.kp), u8(g.current.ki)},
+                                             {g.angle.kd, g.speed.kd, g.current.kd});
+}
+
+} // namespace
+
+class tst_FrequencySweepRunner : public QObject {
+    Q_OBJECT
+private slots:
+    void measuresTheSimulatorsTransfer_data();
+    void measuresTheSimulatorsTransfer();
+    void refusedSweepSendsNothing();
+    void silentDriveSendsNothing();
+    void abortHaltsRestoresAndTurnsOff();
+};
+
+void tst_FrequencySweepRunner::measuresTheSimulatorsTransfer_data()
+{
+    QTest::addColumn<int>("id");
+    QTest::addColumn<Series>("series");
+    QTest::newRow("MF V2.3") << 3 << Series::MF;
+    QTest::newRow("MG V2.35") << 5 << Series::MG;
+}
+
+void tst_FrequencySweepRunner::measuresTheSimulatorsTransfer()
+{
+    QFETCH(int, id);
+    QFETCH(Series, series);
+    Rig rig;
+    QVERIFY(rig.runner.start(quickSpec(id), safety::SoftLimits::defaults(series)));
+    const FrequencySweepResult r = rig.waitForEnd();
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QVERIFY(r.gains);
+    QVERIFY(r.response.sampleRateHz > 100);
+    const sim::SpeedLoopTransfer h = transferFor(series, *r.gains);
+    const double resolved = FrequencyResponse::resolvedHz(r.response.sampleRateHz);
+    QVERIFY(!r.response.points.isEmpty());
+    for (const FrequencyPoint &p : r.response.points) {
+        const double db = h.magnitudeDb(p.hz);
+        const double deg = h.phaseDeg(p.hz);
+        qInfo("%6.1f Hz: %6.2f dB %7.1f deg (q %.3f, %d samples) | sim %6.2f dB %7.1f deg", p.hz,
+              p.magnitudeDb, p.phaseDeg, p.quality, p.samples, db, deg);
+        QVERIFY(p.hz <= resolved);
+        // The issue's figure (1 dB, 5 degrees up to a quarter of the rate) is bench_freq's,
+        // on lksim; here, on a host loaded by a parallel build, the last octave below the
+        // resolution gets twice that (the setpoints' timing jitters by milliseconds).
+        const double scale = p.hz <= resolved / 2 ? 1 : 2;
+        QVERIFY2(std::abs(p.magnitudeDb - db) < 1.0 * scale, qPrintable(QString::number(p.hz)));
+        QVERIFY2(std::abs(std::remainder(p.phaseDeg - deg, 360.0)) < 5.0 * scale,
+                 qPrintable(QString::number(p.hz)));
+        QVERIFY(p.quality > 0.2 || scale > 1); // host jitter lowers it, not the ratio
+    }
+    // What the rate does not resolve is dropped, with that reason.
+    for (const DroppedFrequency &d : r.response.dropped)
+        QVERIFY(d.reason != DroppedReason::AboveResolution || d.hz > resolved);
+    QCOMPARE(r.response.points.size() + r.response.dropped.size(), 7);
+    QVERIFY(r.response.figures().peakDb);
+    // Back at the speed read before (0 dps) and nothing moving.
+    QVERIFY2(r.message.contains(QLatin1String("holds 0 dps")), qPrintable(r.message));
+}
+
+void tst_FrequencySweepRunner::refusedSweepSendsNothing()
+{
+    Rig rig;
+    safety::SoftLimits limits = safety::SoftLimits::defaults(Series::MF);
+    limits.maxSpeedDps = 200; // the sine's peak (300 + 60) is beyond it
+    QVERIFY(rig.runner.start(quickSpec(3), limits));
+    const FrequencySweepResult r = rig.waitForEnd();
+    QCOMPARE(r.failure, StepTestFailure::Refused);
+    QVERIFY(!r.refusal.allowed());
+    QCOMPARE(r.refusedDps, 300.0); // the centre, the first extreme checked
+    QCOMPARE(rig.motionCount(), 0);
+}
+
+void tst_FrequencySweepRunner::silentDriveSendsNothing()
+{
+    Rig rig;
+    QVERIFY(rig.runner.start(quickSpec(9), safety::SoftLimits::defaults(Series::MF)));
+    const FrequencySweepResult r = rig.waitForEnd();
+    QCOMPARE(r.failure, StepTestFailure::Silent);
+    QVERIFY2(r.message.contains(QLatin1String("gains could not be read")), qPrintable(r.message));
+    QCOMPARE(rig.motionCount(), 0);
+}
+
+void tst_FrequencySweepRunner::abortHaltsRestoresAndTurnsOff()
+{
+    Rig rig;
+    const std::optional<LoopGains> before = rig.gains(3);
+    QVERIFY(before);
+    FrequencySweepSpec spec = quickSpec(3);
+    spec.minPointS = 3; // long enough to abort in the middle
+    QVERIFY(rig.runner.start(spec, safety::SoftLimits::defaults(Series::MF)));
+    // Mid-sweep: setpoints are flowing.
+    QVERIFY(QTest::qWaitFor([&] { return rig.motionCount() > 200; }, kWaitMs));
+    rig.runner.abort();
+    const FrequencySweepResult r = rig.waitForEnd();
+    QCOMPARE(r.failure, StepTestFailure::Aborted);
+    QVERIFY2(r.message.contains(QLatin1String("drive 3 is off")), qPrintable(r.message));
+    QVERIFY2(r.message.contains(QLatin1String("are back in RAM")), qPrintable(r.message));
+    const int motions = rig.motionCount();
+    QTest::qWait(200);
+    QCOMPARE(rig.motionCount(), motions); // no setpoint after the abort
+    QCOMPARE(rig.gains(3), before);
+    // Motor off: no current, and the rotor coasts down.
+    QCOMPARE(rig.state(3).iqA(), 0.0);
+}
+
+QTEST_GUILESS_MAIN(tst_FrequencySweepRunner)
+#include "tst_frequencysweeprunner.moc"

@@ -1,0 +1,291 @@
+// The gain search (issue #25): verdicts of synthetic steps, the order candidates are tried in,
+// instability ending the search, and the runner on the built-in simulator at 1 Mbaud: a
+// faster rise than the gains read within the overshoot bound, nothing left written, and the
+// abort path (motor off, the gains read back in RAM).
+#include <bus/BusSession.h>
+#include <protocol/RequestBuilder.h>
+#include <sim/SimBus.h>
+#include <sim/SimBusSpec.h>
+#include <transport/SimTransport.h>
+#include <tuning/GainSearchRunner.h>
+
+#include <QtTest/QSignalSpy>
+#include <QtTest/QTest>
+
+#include <cmath>
+
+using namespace lk;
+using namespace lk::bus;
+using namespace lk::tuning;
+using protocol::Command;
+using protocol::Series;
+
+Q_DECLARE_METATYPE(lk::tuning::CandidateVerdict)
+
+namespace {
+
+constexpr int kWaitMs = 120000; // a loaded 2-core machine; never a timing assertion
+
+/// A step 0 -> 100 sampled every ms: a first-order rise of `tau`, plus a decaying or growing
+/// swing of `swing` (fraction of the step) at 20 Hz with `growth` per second.
+StepTrace syntheticStep(double tau, double swing, double growth, double seconds = 0.5)
+{
+    StepTrace t;
+    t.edges.append(StepEdge{0, 0, 100});
+    for (int i = 0; i <= seconds * 1000; ++i) {
+        const double s = i * 1e-3;
+        const double v = 100 * (1 - std::exp(-s / tau)) +
+                         100 * swing * std::exp(growth * s) * std::sin(2 * M_PI * 20 * s);
+        t.append(s, v, 0.5);
+    }
+    return t;
+}
+
+LoopGains readGains()
+{
+    LoopGains g;
+    g.angle = {100, 100, 0};
+    g.speed = {50, 40, 0};
+    g.current = {50, 50, 0};
+    g.accelerationDps2 = 20000;
+    return g;
+}
+
+CandidateScore scored(const LoopGains &g, double area, double overshoot, CandidateVerdict v)
+{
+    CandidateScore s;
+    s.gains = g;
+    s.errorAreaS = area;
+    s.metrics.riseTimeS = Metric::of(area);
+    s.metrics.overshootPct = Metric::of(overshoot);
+    s.verdict = v;
+    return s;
+}
+
+TransportFactory simFactory()
+{
+    return [](int baud) -> std::unique_ptr<transport::Transport> {
+        auto bus = sim::SimBus::fromSpec(*sim::SimBusSpec::parse(QStringLiteral("3:MF,5:MG@2.35")));
+        auto t = std::make_unique<transport::SimTransport>(std::move(bus));
+        t->setBaud(baud);
+        return t;
+    };
+}
+
+struct Rig {
+    BusSession session;
+    QSignalSpy completed{&session, &BusSession::requestCompleted};
+    GainSearchRunner runner{session};
+    QSignalSpy finished{&runner, &GainSearchRunner::finished};
+    QSignalSpy failed{&runner, &GainSearchRunner::failed};
+    QSignalSpy scored{&runner, &GainSearchRunner::candidateScored};
+    Rig()
+    {
+        session.open(simFactory(), 1000000);
+        (void)QTest::qWaitFor([this] { return session.connection().isOpen(); }, kWaitMs);
+        request(*protocol::build::plain(Command::ReadModel, 3).request);
+        request(*protocol::build::plain(Command::ReadModel, 5).request);
+    }
+    RequestResult request(const protocol::Request &r)
+    {
+        const quint64 t = session.send(r);
+        std::optional<RequestResult> out;
+        (void)QTest::qWaitFor(
+            [&] {
+                for (const auto &args : completed)
+                    if (args.at(0).value<RequestResult>().ticket == t)
+                        out = args.at(0).value<RequestResult>();
+                return out.has_value();
+            },
+            kWaitMs);
+        return out.value_or(RequestResult{});
+    }
+    std::optional<LoopGains> gains(int id)
+    {
+        const protocol::Generation g = session.knownMotors().value(id).generation;
+        QVector<protocol::Reply> replies;
+        for (const protocol::Request &r : LoopGains::reads(id, g))
+            if (const RequestResult res = request(r); res.reply)
+                replies.append(*res.reply);
+        return LoopGains::decode(g, replies);
+    }
+    GainSearchResult waitForEnd()
+    {
+        if (!QTest::qWaitFor([this] { return finished.size() + failed.size() > 0; }, kWaitMs))
+            return {};
+        return (finished.isEmpty() ? failed : finished).at(0).at(0).value<GainSearchResult>();
+    }
+};
+
+GainSearchSpec spec(int id)
+{
+    GainSearchSpec s;
+    s.id = id;
+    return s;
+}
+
+} // namespace
+
+class tst_GainSearch : public QObject {
+    Q_OBJECT
+private slots:
+    void judge_data();
+    void judge();
+    void errorAreaOfAFirstOrderStep();
+    void candidateOrder();
+    void climbsUntilSomethingIsAccepted();
+    void instabilityEndsTheSearch();
+    void searchBeatsTheGainsRead_data();
+    void searchBeatsTheGainsRead();
+    void abortRestoresAndTurnsOff();
+};
+
+void tst_GainSearch::judge_data()
+{
+    QTest::addColumn<double>("tau");
+    QTest::addColumn<double>("swing");
+    QTest::addColumn<double>("growth");
+    QTest::addColumn<bool>("saturated");
+    QTest::addColumn<CandidateVerdict>("verdict");
+    QTest::newRow("clean") << 0.01 << 0.0 << 0.0 << false << CandidateVerdict::Accepted;
+    QTest::newRow("overshoot") << 0.01 << 0.2 << -8.0 << false << CandidateVerdict::Overshoot;
+    QTest::newRow("growing") << 0.01 << 0.02 << 8.0 << false << CandidateVerdict::Growing;
+    QTest::newRow("saturated") << 0.01 << 0.0 << 0.0 << true << CandidateVerdict::Saturated;
+    QTest::newRow("too slow") << 1.0 << 0.0 << 0.0 << false << CandidateVerdict::NotSettled;
+    QTest::newRow("rings within the bound")
+        << 0.005 << 0.04 << -1.0 << false << CandidateVerdict::Oscillates;
+}
+
+void tst_GainSearch::errorAreaOfAFirstOrderStep()
+{
+    // 0 -> 100 with time constant tau: the error's area is tau.
+    const StepTrace trace = syntheticStep(0.02, 0, 0, 0.5);
+    QVERIFY(std::abs(GainSearchStrategy::errorArea(trace) - 0.02) < 0.0005);
+}
+
+void tst_GainSearch::judge()
+{
+    QFETCH(double, tau);
+    QFETCH(double, swing);
+    QFETCH(double, growth);
+    QFETCH(bool, saturated);
+    QFETCH(CandidateVerdict, verdict);
+    StepTrace trace = syntheticStep(tau, swing, growth);
+    StepMetricOptions options;
+    options.effortLimit = saturated ? 0.5 : 10.0;
+    const EdgeMetrics m = StepMetrics::forEdge(trace, 0, options);
+    QCOMPARE(GainSearchStrategy::judge(m, trace, 5), verdict);
+}
+
+void tst_GainSearch::candidateOrder()
+{
+    // Rows of Kp (x1.3 each), Ki down by 1.5 in a row until one is accepted; Kp climbs until
+    // two rows in a row are not 3 % better than all before.
+    GainSearchStrategy s(readGains(), 5, 20);
+    const auto at = [&](int kp, int ki) {
+        return s.next() && s.next()->speed.kp == kp && s.next()->speed.ki == ki;
+    };
+    QVERIFY(at(50, 40));
+    s.record(scored(*s.next(), 0.020, 9, CandidateVerdict::Overshoot));
+    QVERIFY(at(50, 27));
+    s.record(scored(*s.next(), 0.018, 4, CandidateVerdict::Accepted));
+    QVERIFY(at(65, 40));
+    s.record(scored(*s.next(), 0.016, 8, CandidateVerdict::Overshoot));
+    QVERIFY(at(65, 27));
+    s.record(scored(*s.next(), 0.015, 4, CandidateVerdict::Accepted));
+    QVERIFY(at(85, 40));
+    s.record(scored(*s.next(), 0.0149, 3, CandidateVerdict::Accepted)); // not 3 % better
+    QVERIFY(at(111, 40));                                               // one such row may be noise
+    s.record(scored(*s.next(), 0.0148, 3, CandidateVerdict::Accepted)); // nor this one
+    QVERIFY(!s.next());
+    QCOMPARE(*s.best(), 5); // the least error area accepted
+    // Everything else stays as read.
+    for (const CandidateScore &c : s.scores()) {
+        QCOMPARE(c.gains.angle, readGains().angle);
+        QCOMPARE(c.gains.current, readGains().current);
+        QCOMPARE(c.gains.accelerationDps2, readGains().accelerationDps2);
+    }
+}
+
+void tst_GainSearch::climbsUntilSomethingIsAccepted()
+{
+    // A row with nothing accepted (Ki down four times) climbs on.
+    GainSearchStrategy s(readGains(), 5, 20);
+    for (int ki : {40, 27, 18, 12}) {
+        QCOMPARE(int(s.next()->speed.ki), ki);
+        s.record(scored(*s.next(), 0.02, 9, CandidateVerdict::Overshoot));
+    }
+    QCOMPARE(int(s.next()->speed.kp), 65);
+    QCOMPARE(int(s.next()->speed.ki), 40);
+    QVERIFY(!s.best());
+}
+
+void tst_GainSearch::instabilityEndsTheSearch()
+{
+    GainSearchStrategy s(readGains(), 5, 20);
+    s.record(scored(*s.next(), 0.020, 4, CandidateVerdict::Accepted));
+    s.record(scored(*s.next(), 0.010, 30, CandidateVerdict::Growing));
+    QVERIFY(!s.next());
+    QVERIFY(s.stoppedByInstability());
+    QCOMPARE(*s.best(), 0);
+}
+
+void tst_GainSearch::searchBeatsTheGainsRead_data()
+{
+    QTest::addColumn<int>("id");
+    QTest::newRow("MF V2.3") << 3;
+    QTest::newRow("MG V2.35") << 5;
+}
+
+void tst_GainSearch::searchBeatsTheGainsRead()
+{
+    QFETCH(int, id);
+    Rig rig;
+    const std::optional<LoopGains> before = rig.gains(id);
+    QVERIFY(before);
+    QVERIFY(rig.runner.start(spec(id), safety::SoftLimits::defaults(rig.session.series(id))));
+    const GainSearchResult r = rig.waitForEnd();
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QCOMPARE(rig.scored.size(), r.candidates.size());
+    for (const CandidateScore &c : r.candidates)
+        qInfo("Kp %3d Ki %3d (%.0f Hz): area %.2f ms, rise %s ms, overshoot %s %%, verdict %d",
+              c.gains.speed.kp, c.gains.speed.ki, c.metrics.sampleRateHz, c.errorAreaS * 1e3,
+              qPrintable(QString::number(c.metrics.riseTimeS.value.value_or(-1) * 1e3)),
+              qPrintable(QString::number(c.metrics.overshootPct.value.value_or(-1))),
+              int(c.verdict));
+    qInfo("%.1f s for %d candidates", r.seconds, int(r.candidates.size()));
+    QVERIFY(r.baseline && r.best);
+    const CandidateScore &base = r.candidates[*r.baseline];
+    const CandidateScore &best = r.candidates[*r.best];
+    // The best meets the bounds; against the gains read it can only be compared when those
+    // met them too (the factory gains overshoot these steps by about 11 %). Rise time against
+    // the defaults is bench_tuning's figure: here the host's load makes it noise.
+    QVERIFY(best.accepted());
+    if (base.accepted())
+        QVERIFY2(best.errorAreaS <= base.errorAreaS, qPrintable(r.message));
+    QVERIFY(*best.metrics.overshootPct.value <= 5);
+    // Nothing written until asked: the drive holds the gains it had.
+    QCOMPARE(rig.gains(id), before);
+}
+
+void tst_GainSearch::abortRestoresAndTurnsOff()
+{
+    Rig rig;
+    const std::optional<LoopGains> before = rig.gains(3);
+    QVERIFY(rig.runner.start(spec(3), safety::SoftLimits::defaults(Series::MF)));
+    // Mid-search: the second candidate's gains are in RAM.
+    QVERIFY(QTest::qWaitFor([&] { return rig.scored.size() >= 1; }, kWaitMs));
+    QTest::qWait(100);
+    rig.runner.abort();
+    const GainSearchResult r = rig.waitForEnd();
+    QCOMPARE(r.failure, StepTestFailure::Aborted);
+    QVERIFY2(r.message.contains(QLatin1String("drive 3 is off")), qPrintable(r.message));
+    QCOMPARE(rig.gains(3), before);
+    const RequestResult state =
+        rig.request(*protocol::build::plain(Command::ReadState2, 3).request);
+    QVERIFY(state.reply);
+    QCOMPARE(std::get<protocol::State2>(state.reply->payload).iqA(), 0.0);
+}
+
+QTEST_GUILESS_MAIN(tst_GainSearch)
+#include "tst_gainsearch.moc"
