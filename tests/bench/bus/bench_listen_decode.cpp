@@ -62,12 +62,13 @@ QByteArray replyTo(Command command, int id, protocol::Series series, int round)
         r.payload = protocol::MultiTurnAngle{qint64(round) * 36};
         break;
     default:
-        r.payload = protocol::State2{32,
-                                     qint16(series == protocol::Series::MS ? 500 : 100 + round % 50),
-                                     series == protocol::Series::MS,
-                                     qint16(round % 360),
-                                     quint16(round & 0x3FFF),
-                                     protocol::kIqReplyAmpsPerLsb};
+        r.payload =
+            protocol::State2{32,
+                             qint16(series == protocol::Series::MS ? 500 : 100 + round % 50),
+                             series == protocol::Series::MS,
+                             qint16(round % 360),
+                             quint16(round & 0x3FFF),
+                             protocol::kIqReplyAmpsPerLsb};
         break;
     }
     return r.encode();
