@@ -3,16 +3,11 @@
 #include "Console.h"
 #include "ListenTable.h"
 #include "LiveBus.h"
+#include "StreamEnd.h"
 
 #include <protocol/Command.h>
-#include <system/SignalWatcher.h>
 
-#include <QtCore/QTimer>
-
-#include <algorithm>
-#include <climits>
 #include <csignal>
-#include <limits>
 
 namespace lk::lkctl {
 
@@ -29,7 +24,8 @@ QString ListenCommand::example() const
 QString ListenCommand::usage() const
 {
     return QStringLiteral(
-               "Usage: lkctl listen --port DEV [--baud N] [--csv | --json] [--duration S]\n"
+               "Usage: lkctl listen --port DEV [--baud N] [--drives LIST] [--csv | --json]\n"
+               "                    [--duration S]\n"
                "\n"
                "Watch a running machine's bus without taking part: another controller is the\n"
                "master, lkctl only listens. NOTHING is ever sent: the port is opened read-only,\n"
@@ -50,11 +46,15 @@ QString ListenCommand::usage() const
                "\n"
                "Drives appear as they answer; their generation is learnt from a read_model\n"
                "reply or a command only one generation has, their series from a read_model\n"
-               "reply. Until one passes, an MS drive's power reads as iq (iq_a).\n"
+               "reply. Until one passes, an MS drive's power reads as iq (iq_a): name its series\n"
+               "with --drives. A V2.35 drive's read_state1 is read with V2.3's layout until a\n"
+               "read_model reply or a V2.35-only command passes.\n"
                "\n"
                "Options:\n"
                "  --csv               CSV, long layout (the default)\n"
                "  --json              JSON lines, the CSV's names as keys\n"
+               "  --drives LIST       the series of drives until a read_model reply tells:\n"
+               "                      ID:SERIES, comma-separated, e.g. 3:MG,17:MS\n"
                "  --duration S        stop after S seconds\n"
                "\n"
                "%1"
@@ -90,33 +90,46 @@ std::optional<ListenCommand::Plan> ListenCommand::parse(const ArgParser &parser,
     if (json && parser.isSet(QStringLiteral("csv")))
         return fail(QStringLiteral("--csv and --json exclude each other"));
     plan.format = json ? MonitorFormat::Json : MonitorFormat::CsvLong;
+    if (parser.isSet(QStringLiteral("drives"))) {
+        const std::optional<QVector<Drive>> drives =
+            parseDrives(parser.value(QStringLiteral("drives")), &error);
+        if (!drives)
+            return fail(error);
+        plan.drives = *drives;
+    }
     return plan;
+}
+
+std::optional<QVector<ListenCommand::Drive>> ListenCommand::parseDrives(const QString &text,
+                                                                        QString *error)
+{
+    QVector<Drive> drives;
+    for (const QString &item : text.split(QLatin1Char(','), Qt::SkipEmptyParts)) {
+        const QStringList parts = item.split(QLatin1Char(':'));
+        QString idError;
+        const std::optional<int> id = parseId(parts.value(0), &idError);
+        const std::optional<protocol::Series> series = protocol::seriesFromName(parts.value(1));
+        if (parts.size() != 2 || !id || !series) {
+            *error = QStringLiteral("--drives takes ID:SERIES, comma-separated (e.g. 3:MG,17:MS), "
+                                    "not '%1'")
+                         .arg(item);
+            return std::nullopt;
+        }
+        drives.append(Drive{*id, *series});
+    }
+    return drives;
 }
 
 int ListenCommand::stream(LiveBus &bus, const Plan &plan, ListenTable &table)
 {
     Console &console = bus.console();
     bus::BusSession &session = bus.session();
-    bool stop = false;
-    bool lost = false;
+    StreamEnd end(bus, plan.durationS);
     qint64 rows = 0;
     bus::ListenStatistics stats;
     QObject context; // every connection below ends with it
-    system::SignalWatcher watcher;
-    QObject::connect(&watcher, &system::SignalWatcher::signalled, &context,
-                     [&stop] { stop = true; });
-    QTimer duration;
-    duration.setSingleShot(true);
-    QObject::connect(&duration, &QTimer::timeout, &context, [&stop] { stop = true; });
     QObject::connect(&session, &bus::BusSession::listenStatisticsUpdated, &context,
                      [&stats](const bus::ListenStatistics &s) { stats = s; });
-    QObject::connect(&session, &bus::BusSession::connectionChanged, &context,
-                     [&](const bus::ConnectionStatus &s) {
-                         if (!s.isOpen() && !stop) {
-                             lost = stop = true;
-                             bus.error(QStringLiteral("the bus went away: %1").arg(s.reason));
-                         }
-                     });
     QObject::connect(&session, &bus::BusSession::telemetryReceived, &context,
                      [&](const bus::TelemetryBatch &batch) {
                          for (const bus::TelemetrySample &s : batch) {
@@ -126,18 +139,18 @@ int ListenCommand::stream(LiveBus &bus, const Plan &plan, ListenTable &table)
                              }
                          }
                          console.flush();
-                         stop = stop || console.outputFailed(); // e.g. `| head` closed the pipe
+                         if (console.outputFailed()) // e.g. `| head` closed the pipe
+                             end.stop();
                      });
     console.out(table.header());
     console.flush();
-    if (plan.durationS)
-        duration.start(int(std::min(*plan.durationS * 1000, double(INT_MAX))));
-    bus.waitUntil([&stop] { return stop; }, std::numeric_limits<int>::max());
+    end.startClock();
+    end.wait();
     // One more statistics snapshot, so that the figures cover the whole run.
     const int before = int(stats.time * 1000);
-    bus.waitUntil([&] { return lost || int(stats.time * 1000) != before; }, 2000);
+    bus.waitUntil([&] { return end.lost() || int(stats.time * 1000) != before; }, 2000);
     report(bus, rows, stats);
-    return lost ? kExitFailure : kExitOk;
+    return end.lost() ? kExitFailure : kExitOk;
 }
 
 void ListenCommand::report(LiveBus &bus, qint64 rows, const bus::ListenStatistics &s)
@@ -183,6 +196,7 @@ int ListenCommand::run(const QStringList &args, Console &console)
 {
     ArgParser parser = makeParser();
     parser.addOption(QStringLiteral("duration"), true);
+    parser.addOption(QStringLiteral("drives"), true);
     parser.addOption(QStringLiteral("csv"), false);
     int status = kExitOk;
     std::optional<BusOptions> busOptions = parseBus(parser, args, console, &status);
@@ -198,6 +212,8 @@ int ListenCommand::run(const QStringList &args, Console &console)
     LiveBus bus(console, name());
     if (!bus.open(*busOptions))
         return kExitFailure;
+    for (const Drive &d : plan->drives)
+        bus.session().setSeries(d.id, d.series);
     // A reader that goes away (`| head`) must end the loop, not kill the process silently.
     std::signal(SIGPIPE, SIG_IGN);
     ListenTable table(plan->format);

@@ -4,6 +4,9 @@
 #include "MonitorTable.h"
 
 #include <bus/ListenStatistics.h>
+#include <protocol/Series.h>
+
+#include <QtCore/QVector>
 
 #include <optional>
 
@@ -28,10 +31,18 @@ public:
     int run(const QStringList &args, Console &console) override;
 
 private:
+    /// A drive the user names (--drives): its series, until a model reply tells.
+    struct Drive {
+        int id = 0;
+        protocol::Series series = protocol::Series::MF;
+    };
     struct Plan {
         std::optional<double> durationS;
         MonitorFormat format = MonitorFormat::CsvLong;
+        QVector<Drive> drives;
     };
+    /// "3:MG,17:MS" -> drives; nullopt with `error` naming the item.
+    static std::optional<QVector<Drive>> parseDrives(const QString &text, QString *error);
     std::optional<Plan> parse(const ArgParser &parser, Console &console, int *status) const;
     /// Print rows until a stop condition; returns the exit status.
     int stream(LiveBus &bus, const Plan &plan, ListenTable &table);

@@ -4,18 +4,16 @@
 #include "LiveBus.h"
 #include "MonitorTable.h"
 #include "ReadCommand.h"
+#include "StreamEnd.h"
 
 #include <bus/BusTiming.h>
 #include <motor/SeriesLimits.h>
 #include <record/TelemetryColumns.h>
-#include <system/SignalWatcher.h>
 
 #include <QtCore/QTimer>
 
 #include <algorithm>
-#include <climits>
 #include <csignal>
-#include <limits>
 
 namespace lk::lkctl {
 
@@ -241,28 +239,21 @@ int MonitorCommand::stream(LiveBus &bus, const Plan &plan, MonitorTable &table)
 {
     Console &console = bus.console();
     bus::BusSession &session = bus.session();
-    bool stop = false;
-    bool lost = false;
+    StreamEnd end(bus, plan.durationS);
     qint64 samples = 0;
     qint64 rows = 0; // printed
     double firstSample = -1, lastSample = -1;
     bus::BusStatistics stats;
     QObject context; // every connection below ends with it
-    system::SignalWatcher watcher;
-    QObject::connect(&watcher, &system::SignalWatcher::signalled, &context,
-                     [&stop] { stop = true; });
-    QTimer duration;
-    duration.setSingleShot(true);
-    QObject::connect(&duration, &QTimer::timeout, &context, [&stop] { stop = true; });
     // No reply from any drive for silenceLimitS(): the drives went quiet (unplugged, powered
     // off); say so and end, rather than wait for rows that cannot come.
     QTimer silence;
     silence.setSingleShot(true);
     silence.setInterval(int(silenceLimitS(plan) * 1000));
     QObject::connect(&silence, &QTimer::timeout, &context, [&] {
-        if (stop)
+        if (end.stopped())
             return;
-        lost = stop = true;
+        end.lose();
         QStringList ids;
         for (int id : plan.ids)
             ids << QString::number(id);
@@ -273,17 +264,10 @@ int MonitorCommand::stream(LiveBus &bus, const Plan &plan, MonitorTable &table)
     });
     QObject::connect(&session, &bus::BusSession::statisticsUpdated, &context,
                      [&stats](const bus::BusStatistics &s) { stats = s; });
-    QObject::connect(&session, &bus::BusSession::connectionChanged, &context,
-                     [&](const bus::ConnectionStatus &s) {
-                         if (!s.isOpen() && !stop) {
-                             lost = stop = true;
-                             bus.error(QStringLiteral("the bus went away: %1").arg(s.reason));
-                         }
-                     });
     QObject::connect(&session, &bus::BusSession::telemetryReceived, &context,
                      [&](const bus::TelemetryBatch &batch) {
                          for (const bus::TelemetrySample &s : batch) {
-                             if (stop || !plan.ids.contains(s.id))
+                             if (end.stopped() || !plan.ids.contains(s.id))
                                  continue;
                              ++samples;
                              silence.start();
@@ -293,13 +277,14 @@ int MonitorCommand::stream(LiveBus &bus, const Plan &plan, MonitorTable &table)
                                  console.out(row);
                                  ++rows;
                                  if (plan.count && rows >= *plan.count) {
-                                     stop = true;
+                                     end.stop();
                                      break;
                                  }
                              }
                          }
                          console.flush();
-                         stop = stop || console.outputFailed(); // e.g. `| head` closed the pipe
+                         if (console.outputFailed()) // e.g. `| head` closed the pipe
+                             end.stop();
                      });
     console.out(table.header());
     console.flush();
@@ -310,9 +295,8 @@ int MonitorCommand::stream(LiveBus &bus, const Plan &plan, MonitorTable &table)
     session.resetStatistics();
     session.startPolling(poll);
     silence.start();
-    if (plan.durationS)
-        duration.start(int(std::min(*plan.durationS * 1000, double(INT_MAX))));
-    bus.waitUntil([&stop] { return stop; }, std::numeric_limits<int>::max());
+    end.startClock();
+    end.wait();
     session.stopPolling();
     // Rows still being merged when a signal, the duration or a lost bus ended the run carry
     // real values: print them (with --count the count is the contract, so not then).
@@ -325,9 +309,9 @@ int MonitorCommand::stream(LiveBus &bus, const Plan &plan, MonitorTable &table)
     }
     // One more statistics snapshot, so that the figures cover the whole run.
     const int before = int(stats.time * 1000);
-    bus.waitUntil([&] { return lost || int(stats.time * 1000) != before; }, 2000);
+    bus.waitUntil([&] { return end.lost() || int(stats.time * 1000) != before; }, 2000);
     report(bus, plan, table, rows, samples, lastSample - firstSample, stats);
-    return lost ? kExitFailure : kExitOk;
+    return end.lost() ? kExitFailure : kExitOk;
 }
 
 void MonitorCommand::report(LiveBus &bus, const Plan &plan, const MonitorTable &table, qint64 rows,

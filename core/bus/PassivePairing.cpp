@@ -4,6 +4,8 @@
 
 #include <protocol/Command.h>
 
+#include <algorithm>
+
 namespace lk::bus {
 
 using protocol::FrameDirection;
@@ -34,9 +36,14 @@ std::optional<protocol::Frame> PassivePairing::closeUnanswered()
     return open.frame;
 }
 
+bool PassivePairing::pastWindow(qint64 nowNs) const
+{
+    return m_open && nowNs - m_open->timeNs > windowNs(m_open->frame.command);
+}
+
 std::optional<protocol::Frame> PassivePairing::expire(qint64 nowNs)
 {
-    if (!m_open || nowNs - m_open->timeNs <= windowNs(m_open->frame.command))
+    if (!m_open || nowNs - m_open->timeNs <= std::max(windowNs(m_open->frame.command), kSilenceNs))
         return std::nullopt;
     return closeUnanswered();
 }
@@ -89,9 +96,14 @@ void PassivePairing::takeFault(const protocol::ParseEvent &event)
 PassivePairing::Outcome PassivePairing::takeFrame(const protocol::ParseEvent &event, qint64 nowNs)
 {
     Outcome out;
-    out.unanswered = expire(nowNs); // silence since the open request: its window is over
     const protocol::Frame &f = event.frame;
     const FrameDirection direction = event.direction;
+    // A long silence closed the open request. Short of that, a reply with its command and ID
+    // answers it however late it was read (no other request came between); but an echo frame
+    // after the open echo request's reply window is its retry, not its reply.
+    out.unanswered = expire(nowNs);
+    if (direction == FrameDirection::Echo && pastWindow(nowNs))
+        out.unanswered = closeUnanswered();
     if (answersOpen(f, direction)) {
         out.role = Outcome::Role::Reply;
         out.request = std::move(m_open->frame);

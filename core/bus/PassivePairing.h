@@ -22,12 +22,16 @@ namespace lk::bus {
 /// then gets no answer may as well have been a reply whose request was lost: it is counted
 /// ambiguous, never guessed to be either.
 ///
-/// The pairing starts afresh on silence (nothing for longer than the open request's reply
-/// could take at the baud, plus `slackS` for the adapter's latency: the open request was
-/// unanswered). After a fault (garbage, a bad checksum) a reply that matches the open request
-/// still pairs; if none comes, the request is counted a broken pair, not a timeout, since the
-/// lost bytes may have been its reply. A reply whose request was not seen is still the drive's
-/// word about itself (its header names drive and command): it is reported, unpaired.
+/// Frames are stamped when the host reads their chunk, and a host that was not scheduled for a
+/// while reads a reply late: so a reply with the open request's command and ID answers it
+/// however late (no other request came between), and only the next request, or kSilenceNs
+/// without any frame (expire()), shows a request unanswered. The clock matters for echo
+/// frames alone: one that comes after the open echo request's reply window (what a reply
+/// takes at the baud plus `slackS` for the adapter's latency timer) is a retry, not the reply.
+/// After a fault (garbage, a bad checksum) a reply that matches the open request still pairs;
+/// if none comes, the request is counted a broken pair, not a timeout, since the lost bytes may
+/// have been its reply. A reply whose request was not seen is still the drive's word about
+/// itself (its header names drive and command): it is reported, unpaired.
 class PassivePairing {
 public:
     /// What one frame was, as far as the pairing tells.
@@ -52,13 +56,15 @@ public:
         quint64 brokenPairs = 0;    ///< open requests left unpaired after a fault or an orphan
     };
     static constexpr double kDefaultSlackS = 0.020; ///< an FTDI latency timer is 16 ms
+    /// No frame for this long (or the reply window, if longer): the open request is unanswered.
+    static constexpr qint64 kSilenceNs = 250'000'000;
 
     void setBaud(int baud) { m_baud = baud; }
     void setSlackS(double slackS) { m_slackS = slackS; }
     /// Takes the next parse event, which arrived at `nowNs`.
     Outcome take(const protocol::ParseEvent &event, qint64 nowNs);
-    /// Time passed without a frame: an open request whose reply can no longer come is
-    /// unanswered (returned).
+    /// Time passed without a frame: an open request silent for kSilenceNs (or its reply
+    /// window, if longer) is unanswered (returned).
     std::optional<protocol::Frame> expire(qint64 nowNs);
     /// A new stream (the port reopened): nothing is open.
     void reset() { m_open.reset(); }
@@ -79,6 +85,7 @@ private:
     Outcome takeFrame(const protocol::ParseEvent &event, qint64 nowNs);
     void takeFault(const protocol::ParseEvent &event);
     qint64 windowNs(quint8 command) const;
+    bool pastWindow(qint64 nowNs) const;
 
     std::optional<Open> m_open;
     Counts m_counts;

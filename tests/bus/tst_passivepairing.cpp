@@ -75,8 +75,10 @@ void tst_PassivePairing::script_data()
     QTest::newRow("reply whose request was lost") << "A9C.1" << Expected{0, 1, 0, 0, 1, 0, 0, 0};
     QTest::newRow("another drive's reply while a request is open")
         << "R9C.1 A9C.2" << Expected{1, 1, 0, 0, 1, 0, 0, 1};
-    QTest::newRow("silence past the reply window ends the pairing")
-        << "R9C.1 W100 A9C.1" << Expected{1, 1, 0, 1, 1, 0, 0, 0};
+    QTest::newRow("a reply read late still answers: no request came between")
+        << "R9C.1 W100 A9C.1" << Expected{1, 1, 1, 0, 0, 0, 0, 0};
+    QTest::newRow("a long silence: unanswered, the late reply unpaired")
+        << "R9C.1 W300 A9C.1" << Expected{1, 1, 0, 1, 1, 0, 0, 0};
     QTest::newRow("a slow reply within the window still pairs")
         << "R9C.1 W5 A9C.1" << Expected{1, 1, 1, 0, 0, 0, 0, 0};
     QTest::newRow("echo retried after silence, then answered")

@@ -1,9 +1,9 @@
+#include "../support/FdAccessMode.h"
+
 #include <transport/PortErrorText.h>
 #include <transport/SerialTransport.h>
 
-#include <QtCore/QDir>
 #include <QtCore/QFile>
-#include <QtCore/QFileInfo>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QSignalSpy>
 #include <QtTest/QTest>
@@ -212,24 +212,6 @@ void tst_SerialTransport::roundTripOverPty()
     QCOMPARE(t.state(), Transport::State::Closed);
 }
 
-/// The access mode of this process's descriptor open on `path` (O_RDONLY, O_RDWR), or -1.
-static int accessModeOf(const QString &path)
-{
-    const QDir fds(QStringLiteral("/proc/self/fd"));
-    for (const QString &fd : fds.entryList(QDir::NoDotAndDotDot | QDir::System | QDir::Files)) {
-        if (QFileInfo(fds.filePath(fd)).symLinkTarget() != path)
-            continue;
-        QFile info(QStringLiteral("/proc/self/fdinfo/") + fd);
-        if (!info.open(QIODevice::ReadOnly))
-            continue;
-        for (const QByteArray &line : info.readAll().split('\n')) {
-            if (line.startsWith("flags:"))
-                return int(line.mid(6).trimmed().toInt(nullptr, 8)) & O_ACCMODE;
-        }
-    }
-    return -1;
-}
-
 void tst_SerialTransport::readOnlyOverPty()
 {
     // Listen-only: the port is opened for reading alone, RTS/DTR are cleared where the driver
@@ -242,7 +224,8 @@ void tst_SerialTransport::readOnlyOverPty()
     QSignalSpy errors(&t, &Transport::errorOccurred);
     QVERIFY(t.open());
     QCOMPARE(t.state(), Transport::State::Open);
-    QCOMPARE(accessModeOf(pty.slave), O_RDONLY);
+    QCOMPARE(lk::testsupport::accessModeOf(QCoreApplication::applicationPid(), pty.slave),
+             O_RDONLY);
     QVERIFY(errors.isEmpty()); // a refused RTS/DTR is a warning, not a port error
 
     const QByteArray out("\x3E\x9C\x01\x00\xDB", 5);
@@ -258,7 +241,7 @@ void tst_SerialTransport::readOnlyOverPty()
 
     SerialTransport rw(settingsFor(pty.slave)); // the default stays read-write
     QVERIFY(rw.open());
-    QCOMPARE(accessModeOf(pty.slave), O_RDWR);
+    QCOMPARE(lk::testsupport::accessModeOf(QCoreApplication::applicationPid(), pty.slave), O_RDWR);
 }
 
 void tst_SerialTransport::busyPort()

@@ -1,12 +1,10 @@
+#include "../support/FdAccessMode.h"
 #include "E2eUtil.h"
 
 #include <protocol/Frame.h>
 #include <protocol/Reply.h>
 #include <protocol/Request.h>
 
-#include <QtCore/QDir>
-#include <QtCore/QFile>
-#include <QtCore/QFileInfo>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
 #include <QtCore/QProcess>
@@ -66,24 +64,6 @@ struct Bus {
     }
 };
 
-/// The access mode (O_RDONLY, O_RDWR) of process `pid`'s descriptor on `path`, or -1.
-int accessModeOf(qint64 pid, const QString &path)
-{
-    const QDir fds(QStringLiteral("/proc/%1/fd").arg(pid));
-    for (const QString &fd : fds.entryList(QDir::NoDotAndDotDot | QDir::System | QDir::Files)) {
-        if (QFileInfo(fds.filePath(fd)).symLinkTarget() != path)
-            continue;
-        QFile info(QStringLiteral("/proc/%1/fdinfo/%2").arg(pid).arg(fd));
-        if (!info.open(QIODevice::ReadOnly))
-            continue;
-        for (const QByteArray &line : info.readAll().split('\n')) {
-            if (line.startsWith("flags:"))
-                return int(line.mid(6).trimmed().toInt(nullptr, 8)) & O_ACCMODE;
-        }
-    }
-    return -1;
-}
-
 QByteArray state2Reply(protocol::Command command, int id, qint16 speedDps, quint16 encoder)
 {
     protocol::Reply r;
@@ -122,7 +102,8 @@ CtlResult listen(Bus &bus, const QStringList &extra, const QByteArray &traffic, 
         return r;
     QElapsedTimer clock;
     clock.start();
-    while ((*accessMode = accessModeOf(p.processId(), bus.port)) < 0 && clock.elapsed() < 10000)
+    while ((*accessMode = testsupport::accessModeOf(p.processId(), bus.port)) < 0 &&
+           clock.elapsed() < 10000)
         QTest::qWait(20);
     QTest::qWait(300); // the port is set up and its input flushed right after the open
     bus.say(traffic);
@@ -140,6 +121,7 @@ class tst_LkctlListen : public QObject {
 private slots:
     void decodesAnotherMasterAndSendsNothing();
     void csvIsMonitorsLongLayout();
+    void drivesTellTheLayouts();
     void argumentErrors_data();
     void argumentErrors();
 };
@@ -194,6 +176,28 @@ void tst_LkctlListen::csvIsMonitorsLongLayout()
     QCOMPARE(bus.heard(), QByteArray());
 }
 
+void tst_LkctlListen::drivesTellTheLayouts()
+{
+    // An MS drive reports power where the others report iq: without a read_model reply on
+    // the bus it reads as iq, with --drives as power.
+    const QByteArray traffic = protocol::encodeFrame(0x9C, 17, {}) +
+                               state2Reply(protocol::Command::ReadState2, 17, 10, 100);
+    for (const bool named : {false, true}) {
+        Bus bus;
+        QVERIFY(!bus.port.isEmpty());
+        int mode = -1;
+        QStringList args{QStringLiteral("--json")};
+        if (named)
+            args << QStringLiteral("--drives") << QStringLiteral("3:MG,17:MS");
+        const CtlResult r = listen(bus, args, traffic, &mode);
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject row = QJsonDocument::fromJson(r.out.trimmed()).object();
+        QCOMPARE(row.contains(QStringLiteral("power")), named);
+        QCOMPARE(row.contains(QStringLiteral("iq_a")), !named);
+        QCOMPARE(bus.heard(), QByteArray());
+    }
+}
+
 void tst_LkctlListen::argumentErrors_data()
 {
     QTest::addColumn<QString>("args");
@@ -204,6 +208,8 @@ void tst_LkctlListen::argumentErrors_data()
                                    << "--sim has no other master";
     QTest::newRow("csv and json") << "listen --port /dev/null --csv --json"
                                   << "--csv and --json exclude each other";
+    QTest::newRow("drives") << "listen --port /dev/null --drives 3:XY"
+                            << "--drives takes ID:SERIES";
 }
 
 void tst_LkctlListen::argumentErrors()
