@@ -287,11 +287,12 @@ void ControlView::contextChanged(Changes changes)
         readDriveState();
     m_title->setText(driveTitle());
     refreshSelectionNote();
-    const QString offline = tr("Disconnected: nothing can be sent.");
+    const QString offline = cannotSendText(tr("Disconnected: nothing can be sent."));
     if (!isConnected() && hasDrive())
         setStatus(offline);
-    else if ((changes & Change::Drive) || statusText() == offline)
+    else if ((changes & Change::Drive) || statusText() == m_offlineShown)
         setStatus(QString()); // connected again (an automatic reconnect too): no longer true
+    m_offlineShown = offline;
     refreshEnabled();
 }
 

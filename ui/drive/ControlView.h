@@ -155,6 +155,7 @@ private:
     QLabel *m_title = nullptr;
     QLabel *m_readout = nullptr;
     QLabel *m_status = nullptr;
+    QString m_offlineShown; ///< the "cannot send" status last shown, cleared when it ends
     QMetaObject::Connection m_telemetryConnection;
     QMetaObject::Connection m_stopConnection;
     MotionOutcome m_last;

@@ -3,6 +3,7 @@
 #include "RequestTracker.h"
 
 #include <bus/BusSession.h>
+#include <panels/SendBlockedTips.h>
 
 namespace lk::ui {
 
@@ -47,11 +48,13 @@ void DriveView::clearDrive()
     notify(Change::Drive);
 }
 
-void DriveView::setConnected(bool connected)
+void DriveView::setConnected(bool connected, const QString &whyNot)
 {
-    if (m_connected == connected)
+    const QString why = connected ? QString() : whyNot;
+    if (m_connected == connected && m_whyNot == why)
         return;
     m_connected = connected;
+    m_whyNot = why;
     if (!connected)
         m_tracker->forgetAll(); // they end Disconnected or Cancelled anyway
     notify(Change::Connection);
@@ -64,6 +67,11 @@ std::optional<protocol::Series> DriveView::series() const
     if (m_session && m_id > 0)
         return m_session->series(m_id);
     return std::nullopt;
+}
+
+QString DriveView::cannotSendText(const QString &disconnected) const
+{
+    return m_whyNot.isEmpty() ? disconnected : m_whyNot;
 }
 
 bool DriveView::canSendToDrive() const
@@ -83,6 +91,7 @@ QString DriveView::driveTitle() const
 void DriveView::notify(Changes changes)
 {
     contextChanged(changes);
+    SendBlockedTips::apply(this, m_whyNot);
 }
 
 } // namespace lk::ui

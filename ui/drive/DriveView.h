@@ -18,8 +18,9 @@ namespace lk::ui {
 class RequestTracker;
 
 /// Common face of the drive views (tuning, control, encoder, info) towards the main window:
-/// a session, the selected drive (or none) and whether the link is up. Everything that sends
-/// is disabled unless all three are there (canSendToDrive()).
+/// a session, the selected drive (or none) and whether the link may transmit. Everything that
+/// sends is disabled unless all three are there (canSendToDrive()); while the link is open
+/// but may not transmit (listen-only), every disabled button says why in its tooltip.
 class DriveView : public QWidget {
     Q_OBJECT
 public:
@@ -40,13 +41,19 @@ public:
     void setDrive(int id, const lk::bus::KnownMotor &motor);
     /// No drive selected: the view shows nothing to act on.
     void clearDrive();
-    /// Whether the bus is connected; sending controls are disabled while it is not.
-    void setConnected(bool connected);
+    /// Whether the link may transmit (BusModel::canSend: open, and not listen-only); sending
+    /// controls are disabled while it may not. `whyNot`: what the disabled buttons' tooltips
+    /// and the views' status say (empty: the plain "disconnected" wording).
+    void setConnected(bool connected, const QString &whyNot = {});
 
     int driveId() const { return m_id; } ///< 0 when no drive is selected
     bool hasDrive() const { return m_id > 0; }
     const lk::bus::KnownMotor &motor() const { return m_motor; }
+    /// The link may transmit (open and not listen-only).
     bool isConnected() const { return m_connected; }
+    /// What a view says instead of `disconnected` while it cannot send: the reason given to
+    /// setConnected (listen-only), else `disconnected` itself.
+    QString cannotSendText(const QString &disconnected) const;
     /// The drive's series: from the KnownMotor given, else what the session knows.
     std::optional<protocol::Series> series() const;
     /// A session, a connected link and a selected drive: this view can send to its drive.
@@ -68,6 +75,7 @@ private:
     int m_id = 0;
     lk::bus::KnownMotor m_motor;
     bool m_connected = false;
+    QString m_whyNot;
 };
 
 } // namespace lk::ui

@@ -318,7 +318,7 @@ void EncoderView::contextChanged(Changes changes)
         loadDriveSettings();
     m_title->setText(driveTitle());
     if (!isConnected() && hasDrive())
-        setStatus(tr("Disconnected: the values shown are the last ones read."));
+        setStatus(cannotSendText(tr("Disconnected: the values shown are the last ones read.")));
     refreshReadouts();
     refreshEnabled();
 }

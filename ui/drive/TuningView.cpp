@@ -388,8 +388,9 @@ void TuningView::contextChanged(Changes changes)
     if (canSendToDrive() && (changes & (Change::Session | Change::Drive | Change::Connection)))
         m_cycle->read(true);
     if (linkDown && hasDrive())
-        setStatus(tr("Disconnected: the values shown are the last ones read. Tuning resumes "
-                     "after the drive has been read again on the next connection."));
+        setStatus(cannotSendText(tr("Disconnected: the values shown are the last ones read. Tuning "
+                                    "resumes after the drive has been read again on the next "
+                                    "connection.")));
     forwardContext(changes); // after the gains' read: those go on the bus first
     updateStepDrive();
     refreshWarnings();
@@ -401,7 +402,7 @@ void TuningView::forwardContext(Changes changes)
     if (changes & Change::Session)
         m_limits->setSession(session());
     if (changes & Change::Connection)
-        m_limits->setConnected(isConnected());
+        m_limits->setConnected(isConnected(), cannotSendText(QString()));
     if (changes & (Change::Session | Change::Drive | Change::MotorInfo)) {
         if (hasDrive())
             m_limits->setDrive(driveId(), motor());

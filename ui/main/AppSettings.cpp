@@ -8,6 +8,7 @@
 #include <QtCore/QRegularExpression>
 #include <QtCore/QSettings>
 #include <QtCore/QStringList>
+#include <QtCore/QUrl>
 
 namespace lk::ui {
 
@@ -20,6 +21,8 @@ const char kConnectionKind[] = "connection/kind";
 const char kConnectionPort[] = "connection/port";
 const char kConnectionBaud[] = "connection/baud";
 const char kAutoReconnect[] = "connection/autoReconnect";
+const char kListenOnly[] = "connection/listenOnly";
+const char kChosenSeriesGroup[] = "chosenSeries"; // /<port, percent-encoded>/<id>
 const char kScanFirstId[] = "scan/firstId";
 const char kScanLastId[] = "scan/lastId";
 const char kScanSweepBauds[] = "scan/sweepBauds";
@@ -83,6 +86,20 @@ bool validLanguageValue(const QVariant &v)
     return validLanguage(v.toString());
 }
 
+bool validSeries(const QVariant &v)
+{
+    return protocol::seriesFromName(v.toString()).has_value();
+}
+
+// "chosenSeries/%2Fdev%2FttyUSB0/3": the port's slashes must not open settings groups.
+QString chosenSeriesKey(const QString &port, int id)
+{
+    return QStringLiteral("%1/%2/%3")
+        .arg(QLatin1String(key::kChosenSeriesGroup),
+             QString::fromLatin1(QUrl::toPercentEncoding(port)))
+        .arg(id);
+}
+
 bool validVersion(const QVariant &v)
 {
     bool ok = false;
@@ -100,6 +117,7 @@ const CheckedKey kCheckedKeys[] = {
     {key::kConnectionKind, validKind, "serial or simulator"},
     {key::kConnectionBaud, validBaud, "one of the nine LK bauds"},
     {key::kAutoReconnect, validBool, "true or false"},
+    {key::kListenOnly, validBool, "true or false"},
     {key::kScanFirstId, validId, "1..32"},
     {key::kScanLastId, validId, "1..32"},
     {key::kScanSweepBauds, validBool, "true or false"},
@@ -164,6 +182,12 @@ QStringList AppSettings::findDamage(QSettings &settings)
                           .arg(QLatin1String(k.key), QLatin1String(k.allowed),
                                settings.value(QLatin1String(k.key)).toString());
     }
+    for (const QString &k : settings.allKeys()) {
+        if (k.startsWith(QLatin1String(key::kChosenSeriesGroup) + QLatin1Char('/')) &&
+            !validSeries(settings.value(k)))
+            damage << QStringLiteral("%1: must be MS, MF, MG or MH (found \"%2\")")
+                          .arg(k, settings.value(k).toString());
+    }
     return damage + IniDriveStore::damagedEntries(settings);
 }
 
@@ -220,6 +244,8 @@ ConnectionChoice AppSettings::connection() const
     const QVariant baud = s.value(QLatin1String(key::kConnectionBaud));
     c.baud = validBaud(baud) ? baud.toInt() : bus::BusTiming::kDefaultBaud;
     c.autoReconnect = s.value(QLatin1String(key::kAutoReconnect), true).toBool();
+    const QVariant listen = s.value(QLatin1String(key::kListenOnly), false);
+    c.listenOnly = validBool(listen) && listen.toBool();
     return c;
 }
 
@@ -231,6 +257,17 @@ void AppSettings::setConnection(const ConnectionChoice &choice)
     s.setValue(QLatin1String(key::kConnectionPort), choice.port);
     s.setValue(QLatin1String(key::kConnectionBaud), choice.baud);
     s.setValue(QLatin1String(key::kAutoReconnect), choice.autoReconnect);
+    s.setValue(QLatin1String(key::kListenOnly), choice.listenOnly);
+}
+
+std::optional<protocol::Series> AppSettings::chosenSeries(const QString &port, int id) const
+{
+    return protocol::seriesFromName(m_settings.value(chosenSeriesKey(port, id)).toString());
+}
+
+void AppSettings::setChosenSeries(const QString &port, int id, protocol::Series series)
+{
+    m_settings.setValue(chosenSeriesKey(port, id), protocol::seriesName(series));
 }
 
 int AppSettings::scanFirstId() const

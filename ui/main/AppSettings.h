@@ -2,12 +2,15 @@
 
 #include <panels/ConnectionChoice.h>
 
+#include <protocol/Series.h>
+
 #include <QtCore/QByteArray>
 #include <QtCore/QCoreApplication>
 #include <QtCore/QString>
 #include <QtCore/QStringList>
 
 #include <memory>
+#include <optional>
 
 class QSettings;
 
@@ -54,6 +57,11 @@ public:
 
     ConnectionChoice connection() const;
     void setConnection(const ConnectionChoice &choice);
+
+    /// The series the user chose for drive `id` on `port` (a drive seen only by listening,
+    /// whose 0x12 reply never passed); nullopt: none chosen, or the value is damaged.
+    std::optional<protocol::Series> chosenSeries(const QString &port, int id) const;
+    void setChosenSeries(const QString &port, int id, protocol::Series series);
 
     int scanFirstId() const;
     int scanLastId() const;

@@ -42,9 +42,11 @@ void BusController::wireSession()
     connect(m_session, &S::connectionChanged, this, &BusController::onConnectionChanged);
     connect(m_session, &S::errorOccurred, this, &BusController::onError);
     connect(m_session, &S::motorFound, m_model, &BusModel::addFound);
+    connect(m_session, &S::knownMotorsChanged, m_model, &BusModel::applyKnownMotors);
     connect(m_session, &S::scanFinished, this, &BusController::onScanFinished);
     connect(m_session, &S::telemetryReceived, m_model, &BusModel::applyTelemetry);
     connect(m_session, &S::statisticsUpdated, m_model, &BusModel::setStatistics);
+    connect(m_session, &S::listenStatisticsUpdated, m_model, &BusModel::setListenStatistics);
     // The bus thread's own figure, with the turnaround it measured: one formula, one place.
     connect(m_session, &S::statisticsUpdated, this, [this](const bus::BusStatistics &s) {
         const std::pair<double, double> limit{s.pollLimitPerSecond, s.pollCycleLimitHz};
@@ -87,11 +89,15 @@ void BusController::connectTo(const ConnectionChoice &choice)
     }
     if (m_wrapFactory)
         factory = m_wrapFactory(std::move(factory), choice);
+    if (m_decorator)
+        factory = m_decorator(std::move(factory));
     m_model->clearDrives();
     m_model->setPolling(bus::PollPlan{}, false);
     m_awaitingFirstOpen = true;
     m_wasOpen = false;
-    m_session->open(std::move(factory), choice.baud);
+    m_wasListening = false;
+    m_session->open(std::move(factory), choice.baud, {},
+                    choice.listenOnly ? bus::LinkMode::ListenOnly : bus::LinkMode::Active);
     m_session->setTrafficCapture(m_traffic);
 }
 
@@ -122,6 +128,12 @@ void BusController::onPortsChanged(const QList<PortEntry> &)
         tryReconnect();
 }
 
+QString BusController::portKey() const
+{
+    return m_choice.isSimulator() ? QStringLiteral("simulator")
+                                  : transport::SerialTransport::systemPath(m_choice.port);
+}
+
 bool BusController::portPresent() const
 {
     if (m_choice.isSimulator())
@@ -149,8 +161,12 @@ void BusController::onConnectionChanged(const bus::ConnectionStatus &status)
         m_reconnecting = false;
         m_reconnectTimer->stop();
         m_wasOpen = true;
-        if (first && m_scanOnConnect)
-            emit readyToScan();
+        const bool tookOver = m_wasListening && status.canTransmit;
+        m_wasListening = !status.canTransmit;
+        if (tookOver)
+            onTookOver();
+        else if (first && m_scanOnConnect && status.canTransmit)
+            emit readyToScan(); // a listening link never scans: that would transmit
         return;
     }
     if (status.state == St::Disconnected && m_wasOpen && !m_reconnecting) {
@@ -182,7 +198,7 @@ void BusController::onError(const transport::TransportError &error)
 
 void BusController::scan(const bus::ScanOptions &options)
 {
-    if (!m_model->connection().isOpen())
+    if (!m_model->canSend())
         return;
     m_session->stopPolling();
     m_session->forgetMotors();
@@ -239,7 +255,7 @@ void BusController::keepDrivesAt(const bus::ScanSummary &summary)
 void BusController::startPolling()
 {
     const QVector<int> ids = m_model->ids();
-    if (ids.isEmpty()) {
+    if (ids.isEmpty() || !m_model->canSend()) {
         m_session->stopPolling();
         m_model->setPolling(bus::PollPlan{}, false);
         return;
@@ -267,10 +283,35 @@ quint64 BusController::emergencyStop(const QVector<int> &first)
     return m_session->emergencyStop(first);
 }
 
+void BusController::takeOver()
+{
+    if (!m_model->isListening())
+        return;
+    m_session->takeOver();
+}
+
+void BusController::onTookOver()
+{
+    emit message(MessageBanner::Level::Warning,
+                 tr("This tool is now the bus master: it transmits, polls the drives it saw "
+                    "and its emergency stop sends Motor Off."));
+    // The drives seen while listening are polled at once; with none seen, a scan finds them.
+    m_session->resetStatistics();
+    if (!m_model->ids().isEmpty())
+        startPolling();
+    else if (m_scanOnConnect)
+        emit readyToScan();
+}
+
+void BusController::setSeries(int id, protocol::Series series)
+{
+    m_session->setSeries(id, series);
+}
+
 void BusController::clearErrors(int id)
 {
     const auto built = protocol::build::plain(protocol::Command::ClearErrors, id);
-    if (!built.ok() || !m_model->connection().isOpen())
+    if (!built.ok() || !m_model->canSend())
         return;
     m_session->send(*built.request, this, [this](const bus::RequestResult &r) { onCleared(r); });
 }

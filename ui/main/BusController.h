@@ -23,12 +23,12 @@ namespace lk::ui {
 
 class BusModel;
 
-/// Runs one bus for the GUI: opens the chosen link (serial port or the built-in simulator),
-/// scans and polls what it found, reconnects after an
-/// unplug when allowed, and sends the operator's one-off commands (clear errors, emergency
-/// stop). It writes BusModel, which the panels read; it never draws anything. The session's
-/// own signals (telemetry, traffic, emergencyStopFinished, ...) are not repeated here:
-/// listeners connect to session().
+/// Runs one bus for the GUI: opens the chosen link (serial port or the built-in simulator)
+/// as its master or listen-only, scans and polls what it found, reconnects after an
+/// unplug when allowed, takes a listened bus over when the user confirmed it, and sends the
+/// operator's one-off commands (clear errors, emergency stop). It writes BusModel, which the panels
+/// read; it never draws anything. The session's own signals (telemetry, traffic,
+/// emergencyStopFinished, ...) are not repeated here: listeners connect to session().
 class BusController : public QObject {
     Q_OBJECT
 public:
@@ -48,8 +48,13 @@ public:
     using FactoryWrapper =
         std::function<bus::TransportFactory(bus::TransportFactory, const ConnectionChoice &)>;
     void setFactoryWrapper(FactoryWrapper wrapper) { m_wrapFactory = std::move(wrapper); }
-    /// Scan by itself once each new connection is open (default on).
+    /// Scan by itself once each new connection is open (default on; never while listening).
     void setScanOnConnect(bool on) { m_scanOnConnect = on; }
+    /// Wraps every transport factory before the session uses it (tests count bytes there).
+    using FactoryDecorator = std::function<bus::TransportFactory(bus::TransportFactory)>;
+    void setFactoryDecorator(FactoryDecorator decorator) { m_decorator = std::move(decorator); }
+    /// The port the connection is for, as settings key it: "/dev/ttyUSB0", or "simulator".
+    QString portKey() const;
     double pollRateHz() const { return m_pollRateHz; }
     /// Commands of the poll plan the dashboard needs (standard mix plus single-turn angle).
     static bus::PollPlan pollPlanFor(const QVector<int> &ids, double rateHz);
@@ -66,6 +71,11 @@ public slots:
     void scan(const lk::bus::ScanOptions &options);
     void cancelScan();
     void clearErrors(int id);
+    /// Reopen a listen-only link read-write as the bus master, then poll the drives seen.
+    /// Only on the user's confirmed request (MainWindow asks): never on its own.
+    void takeOver();
+    /// The user says which series drive `id` is (no 0x12 reply told): decode by it.
+    void setSeries(int id, protocol::Series series);
     void setPollRate(double hz);
     void setTrafficCapture(bool on);
 
@@ -83,6 +93,7 @@ private:
     void onError(const transport::TransportError &error);
     void onScanFinished(const bus::ScanSummary &summary);
     void onCleared(const bus::RequestResult &result); ///< the end of a clearErrors()
+    void onTookOver(); ///< the link that listened is the bus master now
     void keepDrivesAt(const bus::ScanSummary &summary);
     void startPolling();
     void tryReconnect();
@@ -102,6 +113,8 @@ private:
     bool m_reconnecting = false;
     bool m_traffic = false;
     FactoryWrapper m_wrapFactory;
+    bool m_wasListening = false; ///< the last open status listened only
+    FactoryDecorator m_decorator;
     std::pair<double, double> m_busLimit{-1, -1}; ///< last busLimitChanged (tx/s, rounds/s)
 };
 

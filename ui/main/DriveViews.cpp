@@ -93,13 +93,16 @@ void DriveViews::syncDrive()
 
 void DriveViews::syncConnection()
 {
-    const bool open = m_model->connection().isOpen();
-    m_tuning->setConnected(open);
-    m_control->setConnected(open);
-    m_encoder->setConnected(open);
-    m_info->setConnected(open);
-    if (!open)
-        m_control->haltLocalMotion(tr("The bus is not connected."));
+    // The one capability: a listen-only link is open but sends nothing, so every view's
+    // reads on selection, buttons and generators go quiet here, not refused one by one.
+    const bool canSend = m_model->canSend();
+    const QString why = m_model->isListening() ? m_model->sendBlockedReason() : QString();
+    m_tuning->setConnected(canSend, why);
+    m_control->setConnected(canSend, why);
+    m_encoder->setConnected(canSend, why);
+    m_info->setConnected(canSend, why);
+    if (!canSend)
+        m_control->haltLocalMotion(m_model->isListening() ? why : tr("The bus is not connected."));
 }
 
 } // namespace lk::ui

@@ -11,6 +11,7 @@
 #include <bus/BusSession.h>
 
 #include <protocol/Checksum.h>
+#include <text/VerdictText.h>
 
 #include <QtCore/QLoggingCategory>
 #include <QtCore/QTime>
@@ -55,6 +56,11 @@ EmergencyStopControl::~EmergencyStopControl()
 void EmergencyStopControl::stop()
 {
     emit halting(tr("Emergency stop."));
+    // Listening (also while its link is down): the bus would refuse the stop; nothing is asked.
+    if (m_controller->session()->linkMode() == bus::LinkMode::ListenOnly) {
+        showListenOnly(); // nothing reaches the bus: say so, and who must stop the machine
+        return;
+    }
     Pending p;
     // Whom to reach first: the drives on screen, those the bus knows, and those lkstudio told
     // to move (a scan may have just emptied the first two). The bus adds the drives it saw
@@ -129,6 +135,11 @@ void EmergencyStopControl::onConnectionChanged(const bus::ConnectionStatus &stat
     m_lastPort = port;
     if (!m_resend || !samePort)
         return;
+    if (!status.canTransmit) {
+        // Reconnected listen-only: the stop pressed while disconnected cannot go out either.
+        showListenOnly();
+        return;
+    }
     const Pending p = *m_resend;
     m_resend.reset();
     qCWarning(lcStop).noquote() << "emergency stop pressed at" << p.pressedWhileDisconnectedAt
@@ -158,6 +169,17 @@ void EmergencyStopControl::onTelemetry(const bus::TelemetryBatch &batch)
     }
     if (changed)
         report(p, outcome);
+}
+
+void EmergencyStopControl::showListenOnly()
+{
+    // Not resent later either: taking the bus over is the user's own, separate decision.
+    m_resend.reset();
+    m_shown.reset();
+    m_banner->setEntry(entryKey(), MessageBanner::Level::Error,
+                       text::VerdictText::listenOnlyStop().toHtmlEscaped());
+    qCWarning(lcStop) << "emergency stop while listening only: nothing was sent";
+    emit reported();
 }
 
 void EmergencyStopControl::report(const Pending &p, const Outcome &outcome)

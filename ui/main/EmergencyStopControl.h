@@ -30,7 +30,8 @@ class MessageBanner;
 /// and, in red, the known or commanded IDs that did not, until a state read shows them
 /// stopped. A stop pressed while disconnected says that nothing could be sent and which
 /// drives were last commanded, and goes out when the same port is connected again (unless
-/// the report was dismissed first).
+/// the report was dismissed first). While the link listens only, a stop sends nothing and the
+/// red entry says exactly that, and that the machine's own emergency stop must stop it.
 class EmergencyStopControl : public QObject {
     Q_OBJECT
 public:
@@ -64,6 +65,8 @@ private:
                     const QVector<int> &unsent);
     void onConnectionChanged(const lk::bus::ConnectionStatus &status);
     void report(const Pending &p, const Outcome &outcome);
+    /// The stop sent nothing because the link listens only (the red entry says so).
+    void showListenOnly();
     /// The port of a connection description ("/dev/ttyUSB0 @ 115200" -> "/dev/ttyUSB0").
     static QString portOf(const QString &description);
 

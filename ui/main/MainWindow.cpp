@@ -10,6 +10,7 @@
 #include "LanguageMenu.h"
 #include "LeaveGuard.h"
 #include "LinkLossWatch.h"
+#include "ListenOnlyControl.h"
 #include "SpeedWatchReport.h"
 
 #include <drive/ControlView.h>
@@ -181,6 +182,10 @@ void MainWindow::buildToolbar()
     // Esc anywhere (dialogs and pop-ups included) is the stop control's own application
     // filter; the button and the menu call the same stop.
     connect(m_stop, &QPushButton::clicked, m_estop, &EmergencyStopControl::stop);
+    m_listen =
+        new ListenOnlyControl(m_controller, m_settings, m_busPanel->seriesChooser(), m_stop, this);
+    connect(m_connectionBar, &ConnectionBar::takeOverRequested, m_listen,
+            &ListenOnlyControl::requestTakeOver);
 }
 
 void MainWindow::buildMenus()
@@ -197,6 +202,11 @@ void MainWindow::buildMenus()
                        QKeySequence(Qt::Key_F5), m_busPanel->scanControls(),
                        &ScanControls::startScan);
     busMenu->addAction(tr("&Disconnect"), this, &MainWindow::disconnectBus);
+    QAction *takeOver = busMenu->addAction(tr("&Take over the bus\u2026"), m_listen,
+                                           &ListenOnlyControl::requestTakeOver);
+    takeOver->setEnabled(false);
+    connect(m_model, &BusModel::connectionChanged, takeOver,
+            [this, takeOver] { takeOver->setEnabled(m_model->isListening()); });
     busMenu->addSeparator();
     busMenu->addAction(ThemedIcon::get(QStringLiteral(":/icons/stop.svg")),
                        tr("&Emergency stop (Esc)"), m_estop, &EmergencyStopControl::stop);

@@ -19,6 +19,7 @@ class EmergencyStopButton;
 class EmergencyStopControl;
 class LeaveGuard;
 class LinkLossWatch;
+class ListenOnlyControl;
 class MessageBanner;
 class OverviewPanel;
 class PlotPanel;
@@ -72,6 +73,7 @@ public:
     SpeedWatchReport *speedWatchReport() const { return m_speedWatch; }
     LeaveGuard *leaveGuard() const { return m_leaveGuard; }
     DriveFaultWatch *faultWatch() const { return m_faultWatch; }
+    ListenOnlyControl *listenOnlyControl() const { return m_listen; }
     QTabWidget *views() const { return m_views; }
     RecordingController *recording() const { return m_recording; }
 
@@ -125,6 +127,7 @@ private:
     LeaveGuard *m_leaveGuard = nullptr;
     DriveFaultWatch *m_faultWatch = nullptr;
     RecordingController *m_recording = nullptr;
+    ListenOnlyControl *m_listen = nullptr;
     bool m_askBeforeClose = true; ///< false: a signal or a logout already decided
     bool m_stateRestored = false; ///< a saved layout was applied (else size the dock once)
     bool m_firstShow = true;

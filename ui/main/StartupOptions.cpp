@@ -43,6 +43,12 @@ struct StartupOptions::Definitions {
     QCommandLineOption baud{QStringLiteral("baud"),
                             tr("Baud rate: 9600 ... 4000000 (default 115200)."),
                             QStringLiteral("N")};
+    QCommandLineOption listen{QStringLiteral("listen"),
+                              tr("Listen only: watch a bus another controller runs and transmit "
+                                 "nothing, not even an emergency stop.")};
+    QCommandLineOption noListen{QStringLiteral("no-listen"),
+                                tr("Open the bus as its master (the default unless the last "
+                                   "connection listened).")};
     QCommandLineOption sim{QStringLiteral("sim"),
                            tr("Open the built-in simulated bus with these drives, e.g. "
                               "1:MF,2:MG,3:MS,4:MH or 5:MG5010E-i36."),
@@ -101,9 +107,9 @@ struct StartupOptions::Definitions {
 
     QList<QCommandLineOption> all() const
     {
-        return {port, baud,    sim,       simFaults,  settings, noScan,
-                view, select,  shot,      delay,      motion,   lowVoltage,
-                size, plotAll, minimized, cycleViews, language, palette};
+        return {port,   baud,    listen,    noListen,   sim,      simFaults, settings,
+                noScan, view,    select,    shot,       delay,    motion,    lowVoltage,
+                size,   plotAll, minimized, cycleViews, language, palette};
     }
 };
 
@@ -165,6 +171,10 @@ QString StartupOptions::readBus(const QCommandLineParser &p, const Definitions &
                 .arg(p.value(d.baud));
         baudGiven = true;
     }
+    if (p.isSet(d.listen) && p.isSet(d.noListen))
+        return tr("--listen and --no-listen exclude each other.");
+    if (p.isSet(d.listen) || p.isSet(d.noListen))
+        listenOnly = p.isSet(d.listen);
     if (p.isSet(d.sim)) {
         QString why;
         sim = sim::SimBusSpec::parse(p.value(d.sim), &why);
@@ -248,9 +258,12 @@ StartupOptions::initialChoice(const AppSettings &settings,
         c.kind = ConnectionChoice::Kind::Simulator;
     } else if (!c.isSimulator() && (c.port.isEmpty() || !portExists(c.port))) {
         c.kind = ConnectionChoice::Kind::Simulator;
+        c.listenOnly = false; // the built-in bus has no other master to listen to
     }
     if (baudGiven)
         c.baud = baud;
+    if (listenOnly)
+        c.listenOnly = *listenOnly;
     return c;
 }
 

@@ -25,6 +25,9 @@ public:
     std::optional<QString> port; ///< --port DEV: a real serial port
     int baud = 115200;           ///< --baud N (one of the nine LK bauds)
     bool baudGiven = false;
+    /// --listen: the bus opens listen-only (transmits nothing); --no-listen: as bus master.
+    /// nullopt: as last time.
+    std::optional<bool> listenOnly;
     std::optional<sim::SimBusSpec> sim; ///< --sim ID:SERIES,...
     QString simFaults;                  ///< --sim-faults SPEC: faults the simulated bus injects
     QString settingsFile;               ///< --settings FILE (tests); empty: the user's file

@@ -1,5 +1,7 @@
 #include "BusModel.h"
 
+#include <text/VerdictText.h>
+
 namespace lk::ui {
 
 BusModel::BusModel(QObject *parent) : QObject(parent)
@@ -17,6 +19,19 @@ void BusModel::setConnection(const bus::ConnectionStatus &status, bool simulated
         m_statistics = {};
         emit statisticsChanged();
     }
+    if (status.state == transport::Transport::State::Closed && m_listenStatistics.bytes > 0) {
+        m_listenStatistics = {};
+        emit listenStatisticsChanged();
+    }
+}
+
+QString BusModel::sendBlockedReason() const
+{
+    if (canSend())
+        return {};
+    if (isListening())
+        return text::VerdictText::listenOnlyNoSend();
+    return tr("Not connected: nothing can be sent.");
 }
 
 const DriveRecord *BusModel::drive(int id) const
@@ -39,6 +54,14 @@ void BusModel::clearDrives()
     setSelectedIds({});
 }
 
+DriveRecord &BusModel::addObserved(int id)
+{
+    DriveRecord &d = m_drives[id];
+    d.id = id;
+    d.baud = m_connection.baud;
+    return d;
+}
+
 void BusModel::addFound(const bus::FoundMotor &found)
 {
     DriveRecord &d = m_drives[found.id];
@@ -50,30 +73,81 @@ void BusModel::addFound(const bus::FoundMotor &found)
     if (found.state1)
         d.apply(bus::TelemetrySample::fromState1(found.id, *found.state1, 0), nowMs());
     emit drivesChanged();
-    if (found.id == m_wantedCurrent && (m_currentId == 0 || m_currentIsStandIn)) {
-        setCurrent(found.id);
+    selectArrived(found.id);
+}
+
+void BusModel::selectArrived(int id)
+{
+    if (id == m_wantedCurrent && (m_currentId == 0 || m_currentIsStandIn)) {
+        setCurrent(id);
         if (!m_wantedSelection.isEmpty())
             setSelectedIds(m_wantedSelection); // those found so far; more come back below
     } else if (m_currentId == 0) {
-        setCurrent(found.id);
+        setCurrent(id);
         m_currentIsStandIn = m_wantedCurrent != 0; // until the wanted drive answers
-    } else if (m_currentId == m_wantedCurrent && m_wantedSelection.contains(found.id) &&
-               !m_selected.contains(found.id)) {
-        setSelectedIds(m_selected + QVector<int>{found.id});
+    } else if (m_currentId == m_wantedCurrent && m_wantedSelection.contains(id) &&
+               !m_selected.contains(id)) {
+        setSelectedIds(m_selected + QVector<int>{id});
     }
+}
+
+void BusModel::applyKnownMotors(const bus::KnownMotors &motors)
+{
+    QVector<int> arrived;
+    bool changed = false;
+    for (const bus::KnownMotor &m : motors) {
+        auto it = m_drives.find(m.id);
+        if (it == m_drives.end()) {
+            // A scan reports its drives itself (addFound); the bus's knowledge adds drives
+            // only while listening, where no scan runs.
+            if (!isListening())
+                continue;
+            addObserved(m.id);
+            it = m_drives.find(m.id);
+            arrived << m.id;
+        }
+        if (m.model && (!it->model || it->model->motorName != m.model->motorName ||
+                        it->model->driverName != m.model->driverName)) {
+            it->model = m.model;
+            it->nameInfo = motor::ModelNameInfo::parse(m.model->motorName);
+            changed = true;
+        }
+        // A series learnt (a 0x12 reply passed, or the user chose one) beats a name's guess.
+        if (m.series && it->series != m.series) {
+            it->series = m.series;
+            changed = true;
+        }
+    }
+    if (!changed && arrived.isEmpty())
+        return;
+    emit drivesChanged();
+    for (int id : arrived)
+        selectArrived(id);
 }
 
 void BusModel::applyTelemetry(const bus::TelemetryBatch &batch)
 {
     const qint64 now = nowMs();
     bool any = false;
+    QVector<int> arrived;
     for (const auto &s : batch) {
         auto it = m_drives.find(s.id);
-        if (it == m_drives.end())
-            continue; // a reply from an ID the scan did not report: not shown until scanned
+        if (it == m_drives.end()) {
+            // Bus master: a reply from an ID the scan did not report is not shown until
+            // scanned. Listening: no scan runs, and a drive that answers is on the bus.
+            if (!isListening())
+                continue;
+            addObserved(s.id);
+            it = m_drives.find(s.id);
+            arrived << s.id;
+        }
         it->apply(s, now);
         any = true;
     }
+    if (!arrived.isEmpty())
+        emit drivesChanged();
+    for (int id : arrived)
+        selectArrived(id);
     if (any)
         emit telemetryChanged();
 }
@@ -82,6 +156,12 @@ void BusModel::setStatistics(const bus::BusStatistics &statistics)
 {
     m_statistics = statistics;
     emit statisticsChanged();
+}
+
+void BusModel::setListenStatistics(const bus::ListenStatistics &statistics)
+{
+    m_listenStatistics = statistics;
+    emit listenStatisticsChanged();
 }
 
 void BusModel::setPolling(const bus::PollPlan &plan, bool active)

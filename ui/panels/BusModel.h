@@ -4,6 +4,8 @@
 
 #include <bus/BusStatistics.h>
 #include <bus/ConnectionStatus.h>
+#include <bus/KnownMotor.h>
+#include <bus/ListenStatistics.h>
 #include <bus/PollPlan.h>
 #include <bus/ScanTypes.h>
 #include <bus/TelemetrySample.h>
@@ -25,8 +27,13 @@ public:
     // Connection.
     const bus::ConnectionStatus &connection() const { return m_connection; }
     bool isSimulated() const { return m_simulated; }
-    /// The link is open: actions that send may be enabled.
-    bool canSend() const { return m_connection.isOpen(); }
+    /// The link is open and may transmit (ConnectionStatus::canTransmit): actions that send
+    /// may be enabled. Every view derives its sending from this one capability.
+    bool canSend() const { return m_connection.isOpen() && m_connection.canTransmit; }
+    /// The link is open listen-only: drives come from what another master makes them say.
+    bool isListening() const { return m_connection.isOpen() && !m_connection.canTransmit; }
+    /// Why actions that send are disabled, a sentence for their tooltips; empty: they are not.
+    QString sendBlockedReason() const;
     void setConnection(const bus::ConnectionStatus &status, bool simulated);
 
     // Drives.
@@ -35,6 +42,10 @@ public:
     bool isEmpty() const { return m_drives.isEmpty(); }
     void clearDrives();
     void addFound(const bus::FoundMotor &found);
+    /// What the bus learnt about its drives (BusSession::knownMotorsChanged): series and
+    /// models update the drives shown; while listening, drives seen answering are added.
+    void applyKnownMotors(const bus::KnownMotors &motors);
+    /// Values for the drives shown; while listening, an ID seen answering becomes a drive.
     void applyTelemetry(const bus::TelemetryBatch &batch);
     /// Host clock the field timestamps use (ms since the model was made).
     qint64 nowMs() const { return m_clock.elapsed(); }
@@ -42,6 +53,9 @@ public:
     // Polling and statistics.
     const bus::BusStatistics &statistics() const { return m_statistics; }
     void setStatistics(const bus::BusStatistics &statistics);
+    /// What the other master did, while listening (BusSession::listenStatisticsUpdated).
+    const bus::ListenStatistics &listenStatistics() const { return m_listenStatistics; }
+    void setListenStatistics(const bus::ListenStatistics &statistics);
     const bus::PollPlan &pollPlan() const { return m_pollPlan; }
     bool isPolling() const { return m_polling; }
     void setPolling(const bus::PollPlan &plan, bool active);
@@ -63,17 +77,23 @@ signals:
     void drivesChanged(); ///< the set of drives or their identities changed
     void telemetryChanged();
     void statisticsChanged();
+    void listenStatisticsChanged();
     void pollingChanged();
     void currentDriveChanged(int id);
     void selectionChanged();
 
 private:
     void setCurrent(int id);
+    /// A drive seen answering while listening, added at the link's baud; no signal.
+    DriveRecord &addObserved(int id);
+    /// Drive `id` was just added: current or selected again if the user had chosen it.
+    void selectArrived(int id);
 
     bus::ConnectionStatus m_connection;
     bool m_simulated = false;
     QMap<int, DriveRecord> m_drives;
     bus::BusStatistics m_statistics;
+    bus::ListenStatistics m_listenStatistics;
     bus::PollPlan m_pollPlan;
     bool m_polling = false;
     int m_currentId = 0;

@@ -3,6 +3,8 @@
 #include "BusModel.h"
 #include "DriveTree.h"
 #include "ScanControls.h"
+#include "SendBlockedTips.h"
+#include "SeriesChooser.h"
 
 #include <QtWidgets/QVBoxLayout>
 
@@ -13,18 +15,22 @@ constexpr int kPreferredWidthChars = 88; // ID, model, series, versions, V, temp
 } // namespace
 
 BusPanel::BusPanel(BusModel *model, QWidget *parent)
-    : QWidget(parent), m_scan(new ScanControls(this)), m_tree(new DriveTree(model, this))
+    : QWidget(parent), m_scan(new ScanControls(this)), m_tree(new DriveTree(model, this)),
+      m_series(new SeriesChooser(model, this))
 {
     setObjectName(QStringLiteral("busPanel"));
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(m_scan);
     layout->addWidget(m_tree, 1);
-    connect(model, &BusModel::connectionChanged, this, [this, model] {
+    layout->addWidget(m_series);
+    auto sync = [this, model] {
         m_scan->setCanSend(model->canSend());
         m_scan->setBaud(model->connection().baud);
-    });
-    m_scan->setCanSend(model->canSend());
+        SendBlockedTips::apply(this, model->isListening() ? model->sendBlockedReason() : QString());
+    };
+    connect(model, &BusModel::connectionChanged, this, sync);
+    sync();
 }
 
 QSize BusPanel::sizeHint() const

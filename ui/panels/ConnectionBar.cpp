@@ -60,6 +60,13 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent), m_lister(&syste
     m_baud->setCurrentIndex(m_baud->findData(bus::BusTiming::kDefaultBaud));
     m_baud->setToolTip(tr("Baud rate set on the drives (DIP switches or the vendor's tool)"));
 
+    m_listenOnly = new QCheckBox(tr("Listen only"), this);
+    m_listenOnly->setObjectName(QStringLiteral("listenOnly"));
+    m_listenOnly->setToolTip(
+        tr("Watch a bus that another controller runs: the port opens read-only and this tool "
+           "transmits nothing, not even an emergency stop. Use an adapter with automatic "
+           "direction control (see README, \"Diagnosing a running machine\")."));
+
     m_connect = new QPushButton(this);
     m_connect->setObjectName(QStringLiteral("connectButton"));
     m_autoReconnect = new QCheckBox(tr("Auto-reconnect"), this);
@@ -74,14 +81,21 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent), m_lister(&syste
     m_accessHelp->setToolTip(tr("The port was refused: show the command that gives you access"));
     m_accessHelp->setVisible(false);
     connect(m_accessHelp, &QToolButton::clicked, this, &ConnectionBar::showAccessHelp);
+    m_takeOver = new QPushButton(tr("Take over the bus\u2026"), this);
+    m_takeOver->setObjectName(QStringLiteral("takeOver"));
+    m_takeOver->setToolTip(tr("Reopen the port read-write and become the bus master (asks first)"));
+    m_takeOver->setVisible(false);
+    connect(m_takeOver, &QPushButton::clicked, this, &ConnectionBar::takeOverRequested);
 
     layout->addWidget(new QLabel(tr("Port:"), this));
     layout->addWidget(m_port, 1);
     layout->addWidget(new QLabel(tr("Baud:"), this));
     layout->addWidget(m_baud);
+    layout->addWidget(m_listenOnly);
     layout->addWidget(m_connect);
     layout->addWidget(m_autoReconnect);
     layout->addWidget(m_accessHelp);
+    layout->addWidget(m_takeOver);
     layout->addWidget(m_state, 1);
 
     m_refresh = new QTimer(this);
@@ -90,6 +104,7 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent), m_lister(&syste
     m_refresh->start();
     connect(m_connect, &QPushButton::clicked, this, &ConnectionBar::onConnectClicked);
     connect(m_autoReconnect, &QCheckBox::toggled, this, [this] { emit choiceChanged(choice()); });
+    connect(m_listenOnly, &QCheckBox::toggled, this, [this] { emit choiceChanged(choice()); });
 
     m_ports = m_lister();
     rebuildPortItems();
@@ -154,6 +169,7 @@ ConnectionChoice ConnectionBar::choice() const
     ConnectionChoice c;
     c.baud = m_baud->currentData().toInt();
     c.autoReconnect = m_autoReconnect->isChecked();
+    c.listenOnly = m_listenOnly->isChecked();
     const int i = m_port->currentIndex();
     const QString text = m_port->currentText().trimmed();
     if (i >= 0 && text == m_port->itemText(i)) {
@@ -173,6 +189,7 @@ void ConnectionBar::setChoice(const ConnectionChoice &c)
     if (baud >= 0)
         m_baud->setCurrentIndex(baud);
     m_autoReconnect->setChecked(c.autoReconnect);
+    m_listenOnly->setChecked(c.listenOnly);
     if (c.isSimulator()) {
         m_port->setCurrentIndex(0);
         return;
@@ -235,6 +252,9 @@ void ConnectionBar::updateState()
     const bool closed = m_status.state == S::Closed;
     m_port->setEnabled(closed);
     m_baud->setEnabled(closed);
+    m_listenOnly->setEnabled(closed);
+    // Taking over is for a link that is up and listening; a closed one simply reconnects.
+    m_takeOver->setVisible(m_status.state == S::Open && !m_status.canTransmit);
     // Listing ports asks udev and costs milliseconds each time; while the link is open the
     // list cannot be used (the combo is disabled), so it rests until the link is not open.
     if (m_status.state == S::Open) {
@@ -248,13 +268,21 @@ void ConnectionBar::updateState()
                                               : QStringLiteral(":/icons/disconnect.svg")));
     StatusColors::Role role = StatusColors::Role::Muted;
     if (m_status.state == S::Open)
-        role = StatusColors::Role::Ok;
+        role = m_status.canTransmit ? StatusColors::Role::Ok : StatusColors::Role::Info;
     else if (m_status.state == S::Disconnected)
         role = StatusColors::Role::Error;
     const QString color = StatusColors::text(role, StatusColors::current()).name();
     m_state->setText(QStringLiteral("<span style=\"color:%1\">\u25cf</span> %2")
-                         .arg(color, Format::connectionState(m_status).toHtmlEscaped()));
+                         .arg(color, stateText().toHtmlEscaped()));
     m_state->setToolTip(Format::connectionDetail(m_status));
+}
+
+QString ConnectionBar::stateText() const
+{
+    // Listening is said first and plainly: nothing this tool does reaches the bus.
+    if (m_status.isOpen() && !m_status.canTransmit)
+        return tr("Listen-only: this tool transmits nothing (%1)").arg(m_status.description);
+    return Format::connectionState(m_status);
 }
 
 void ConnectionBar::changeEvent(QEvent *event)

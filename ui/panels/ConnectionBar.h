@@ -37,7 +37,8 @@ struct PortEntry {
 };
 
 /// Top bar: port (serial ports with USB description and VID:PID, or the built-in simulator),
-/// baud, connect/disconnect, auto-reconnect, and the link state. The port list refreshes
+/// baud, listen only, connect/disconnect, auto-reconnect, and the link state; while a link
+/// listens, "Take over the bus".  The port list refreshes
 /// itself about once a second so that adapters coming and going show up without a click.
 class ConnectionBar : public QWidget {
     Q_OBJECT
@@ -58,6 +59,10 @@ public:
     void setConnectionStatus(const bus::ConnectionStatus &status);
     /// The button that explains how to get permission for the port (shown after a refusal).
     QToolButton *accessHelpButton() const { return m_accessHelp; }
+    /// "Take over the bus", shown while the open link listens only.
+    QPushButton *takeOverButton() const { return m_takeOver; }
+    /// The link state as the bar shows it (tests).
+    QString stateText() const;
 
 public slots:
     void refreshPorts();
@@ -69,6 +74,8 @@ public slots:
 signals:
     void connectRequested(const lk::ui::ConnectionChoice &choice);
     void disconnectRequested();
+    /// The user asked to take over a bus the link listens to (not yet confirmed).
+    void takeOverRequested();
     void choiceChanged(const lk::ui::ConnectionChoice &choice);
     /// The set of serial ports changed (an adapter came or went).
     void portsChanged(const QList<lk::ui::PortEntry> &ports);
@@ -85,6 +92,8 @@ private:
     QComboBox *m_baud = nullptr;
     QPushButton *m_connect = nullptr;
     QCheckBox *m_autoReconnect = nullptr;
+    QCheckBox *m_listenOnly = nullptr;
+    QPushButton *m_takeOver = nullptr;
     QLabel *m_state = nullptr;
     QToolButton *m_accessHelp = nullptr;
     QString m_deniedPort; ///< the port refused for lack of permission; empty: none

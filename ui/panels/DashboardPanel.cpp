@@ -4,6 +4,7 @@
 #include "DriveHealth.h"
 #include "Format.h"
 #include "Readout.h"
+#include "SendBlockedTips.h"
 #include "StatisticsView.h"
 #include "StatusColors.h"
 #include "ThemedIcon.h"
@@ -184,6 +185,8 @@ void DashboardPanel::refresh()
     updateMotion(*d, now);
     updateErrors(*d, now);
     m_clearErrors->setEnabled(m_model->canSend());
+    SendBlockedTips::applyTo(m_clearErrors,
+                             m_model->isListening() ? m_model->sendBlockedReason() : QString());
 }
 
 void DashboardPanel::updateIdentity(const DriveRecord &d)
@@ -200,8 +203,15 @@ void DashboardPanel::updateIdentity(const DriveRecord &d)
     m_identity->setText(parts.join(QStringLiteral(" \u00b7 ")));
 
     const auto ratio = d.gearRatio();
-    readout(QStringLiteral("torque"))
-        ->setCaption(d.reportsPower() ? tr("Power (relative, MS)") : tr("Torque current iq"));
+    auto *torque = readout(QStringLiteral("torque"));
+    torque->setCaption(!d.series          ? tr("Torque current or power (series unknown)")
+                       : d.reportsPower() ? tr("Power (relative, MS)")
+                                          : tr("Torque current iq"));
+    // An MS drive reports power where the others report iq: unknown, it is neither shown.
+    torque->setToolTip(d.series ? QString()
+                                : tr("No model reply told this drive's series: an MS drive "
+                                     "reports power here, the others current. Choose the "
+                                     "series in the Bus panel."));
     const QString shaft = ratio ? tr("output shaft") : tr("rotor");
     readout(QStringLiteral("multiTurn"))->setCaption(tr("Multi-turn angle (%1)").arg(shaft));
     readout(QStringLiteral("singleTurn"))->setCaption(tr("Single-turn angle (%1)").arg(shaft));
@@ -236,7 +246,9 @@ void DashboardPanel::updateElectrical(const DriveRecord &d, qint64 now)
     voltage->setToolTip(range ? tr("Shown red outside %1").arg(*range) : QString());
     updateV235State(d, now);
     auto *torque = readout(QStringLiteral("torque"));
-    if (d.reportsPower())
+    if (!d.series)
+        torque->setValue(QString(), false);
+    else if (d.reportsPower())
         torque->setValue(d.has(F::Power) ? Format::power(v.power) : QString(),
                          d.isStale(F::Power, now));
     else

@@ -182,8 +182,8 @@ QVariant OverviewModel::display(int id, int column) const
         return d.model ? QStringLiteral("%1 / %2").arg(d.firmwareText(), d.hardwareText())
                        : QString();
     case Link:
-        if (!m_model->canSend())
-            return tr("offline");
+        if (!m_model->connection().isOpen())
+            return tr("offline"); // listening is not offline: the values are live
         if (stats.requests > 0 && stats.replies == 0)
             return tr("silent");
         return isStale(id, Temperature) ? tr("stale") : tr("live");
@@ -198,6 +198,8 @@ QVariant OverviewModel::display(int id, int column) const
                    ? Format::withUnit(v.temperatureC, 0, QStringLiteral("\u00b0C"))
                    : QString();
     case Torque:
+        if (!d.series)
+            return QString(); // power or current: the series decides, and it is unknown
         if (d.reportsPower())
             return d.has(F::Power) ? Format::power(v.power) : QString();
         return d.has(F::IqA) ? Format::withUnit(v.iqA, 2, QStringLiteral("A")) : QString();

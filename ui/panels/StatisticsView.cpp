@@ -2,9 +2,11 @@
 
 #include "BusModel.h"
 #include "Format.h"
+#include "ListenStatisticsPane.h"
 
 #include <QtWidgets/QGridLayout>
 #include <QtWidgets/QLabel>
+#include <QtWidgets/QVBoxLayout>
 
 namespace lk::ui {
 
@@ -21,15 +23,20 @@ QString latencyText(const bus::LatencySummary &l)
 } // namespace
 
 StatisticsView::StatisticsView(BusModel *model, QWidget *parent)
-    : QGroupBox(tr("Bus statistics"), parent), m_model(model), m_grid(new QGridLayout(this))
+    : QGroupBox(tr("Bus statistics"), parent), m_model(model), m_own(new QWidget(this)),
+      m_grid(new QGridLayout(m_own)), m_listen(new ListenStatisticsPane(model, this))
 {
     setObjectName(QStringLiteral("statisticsView"));
-    m_rate = new QLabel(this);
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_own);
+    layout->addWidget(m_listen);
+    m_grid->setContentsMargins(0, 0, 0, 0);
+    m_rate = new QLabel(m_own);
     m_rate->setObjectName(QStringLiteral("pollRate"));
     m_rate->setWordWrap(true);
     m_grid->addWidget(m_rate, 0, 0, 1, 3);
     m_grid->addWidget(new QLabel(QStringLiteral("<b>%1</b>").arg(tr("Bus")), this), 1, 1);
-    m_driveHeader = new QLabel(this);
+    m_driveHeader = new QLabel(m_own);
     m_grid->addWidget(m_driveHeader, 1, 2);
     addRow(QStringLiteral("rate"), tr("Transactions/s"));
     addRow(QStringLiteral("latency"), tr("Latency min / median / max"));
@@ -47,15 +54,27 @@ StatisticsView::StatisticsView(BusModel *model, QWidget *parent)
     connect(m_model, &BusModel::statisticsChanged, this, &StatisticsView::refresh);
     connect(m_model, &BusModel::currentDriveChanged, this, &StatisticsView::refresh);
     connect(m_model, &BusModel::pollingChanged, this, &StatisticsView::refresh);
+    connect(m_model, &BusModel::connectionChanged, this, &StatisticsView::showMode);
+    showMode();
     refresh();
+}
+
+void StatisticsView::showMode()
+{
+    // Listening, this tool sends nothing: its own figures would all be 0.
+    const bool listening = m_model->isListening();
+    m_own->setVisible(!listening);
+    m_listen->setVisible(listening);
+    setTitle(listening ? tr("Bus statistics: the other master (listen-only)")
+                       : tr("Bus statistics"));
 }
 
 QLabel *StatisticsView::addRow(const QString &key, const QString &caption)
 {
     const int row = m_grid->rowCount();
-    m_grid->addWidget(new QLabel(caption, this), row, 0);
-    auto *bus = new QLabel(this);
-    auto *drive = new QLabel(this);
+    m_grid->addWidget(new QLabel(caption, m_own), row, 0);
+    auto *bus = new QLabel(m_own);
+    auto *drive = new QLabel(m_own);
     bus->setTextInteractionFlags(Qt::TextSelectableByMouse);
     drive->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_grid->addWidget(bus, row, 1);

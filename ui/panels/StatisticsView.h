@@ -8,9 +8,11 @@ class QGridLayout;
 namespace lk::ui {
 
 class BusModel;
+class ListenStatisticsPane;
 
 /// Bus statistics for the whole bus and the selected drive: poll rate achieved against the
-/// rate asked for and the bus limit, latency, timeouts, retries and frame faults.
+/// rate asked for and the bus limit, latency, timeouts, retries and frame faults. While the
+/// link listens only, what the other master does instead (ListenStatisticsPane).
 class StatisticsView : public QGroupBox {
     Q_OBJECT
 public:
@@ -18,6 +20,7 @@ public:
 
     /// The text of one figure (tests): row key such as "timeouts", column 0 bus, 1 drive.
     QString figure(const QString &row, int column) const;
+    ListenStatisticsPane *listenPane() const { return m_listen; }
 
 public slots:
     void refresh();
@@ -25,8 +28,12 @@ public slots:
 private:
     QLabel *addRow(const QString &key, const QString &caption);
 
+    void showMode();
+
     BusModel *m_model;
+    QWidget *m_own;
     QGridLayout *m_grid;
+    ListenStatisticsPane *m_listen;
     QLabel *m_driveHeader = nullptr;
     QLabel *m_rate = nullptr;
     QHash<QString, QPair<QLabel *, QLabel *>> m_rows;

@@ -151,8 +151,11 @@ QWidget *PlotPanel::buildSignalRow()
 
 QVector<TelemetryChannel> PlotPanel::pickableChannels()
 {
-    return {TelemetryChannel::Torque,    TelemetryChannel::Speed,       TelemetryChannel::Encoder,
-            TelemetryChannel::MultiTurn, TelemetryChannel::Temperature, TelemetryChannel::Voltage};
+    return {TelemetryChannel::Torque,          TelemetryChannel::Speed,
+            TelemetryChannel::Encoder,         TelemetryChannel::MultiTurn,
+            TelemetryChannel::Temperature,     TelemetryChannel::Voltage,
+            TelemetryChannel::CommandedTorque, TelemetryChannel::CommandedSpeed,
+            TelemetryChannel::CommandedAngle};
 }
 
 void PlotPanel::setDrives(const QVector<int> &ids)
@@ -286,7 +289,7 @@ QVector<PlotTrace> PlotPanel::tracesFor(TelemetryChannel channel) const
 {
     QVector<PlotTrace> traces;
     for (int id : m_drives) {
-        traces.append({id, channel, channel == TelemetryChannel::Torque && isPower(id)});
+        traces.append({id, channel, hasPowerColumn(channel) && isPower(id)});
     }
     return traces;
 }
@@ -296,7 +299,7 @@ QVector<PlotTrace> PlotPanel::plottedTraces() const
     QVector<PlotTrace> traces;
     for (int id : m_drives) {
         for (TelemetryChannel channel : m_channels) {
-            traces.append({id, channel, channel == TelemetryChannel::Torque && isPower(id)});
+            traces.append({id, channel, hasPowerColumn(channel) && isPower(id)});
         }
     }
     return traces;

@@ -26,6 +26,9 @@ constexpr ChannelKeys kChannelKeys[kTelemetryChannelCount] = {
     {"ia_a", nullptr},
     {"ib_a", nullptr},
     {"ic_a", nullptr},
+    {"commanded_iq_a", "commanded_power"},
+    {"commanded_speed_dps", nullptr},
+    {"commanded_angle_deg", nullptr},
 };
 
 struct ChannelColumns {
@@ -89,6 +92,8 @@ QString channelLabel(TelemetryChannel channel, bool power)
 // Free functions have no tr(): plain translate() calls with literal text, which lupdate reads.
 QString channelPickerLabel(TelemetryChannel channel)
 {
+    if (channel == TelemetryChannel::CommandedTorque)
+        return QCoreApplication::translate("lk::ui::TelemetryChannel", "Commanded iq / power");
     return channel == TelemetryChannel::Torque
                ? QCoreApplication::translate("lk::ui::TelemetryChannel", "iq / power")
                : channelLabel(channel, false);

@@ -21,8 +21,12 @@ enum class TelemetryChannel {
     PhaseA,
     PhaseB,
     PhaseC,
+    // What another master commanded (a listen-only link), beside what the drive replied.
+    CommandedTorque, ///< commanded iq, or open-loop power on MS (as Torque)
+    CommandedSpeed,
+    CommandedAngle,
 };
-inline constexpr int kTelemetryChannelCount = 10;
+inline constexpr int kTelemetryChannelCount = 13;
 
 /// What a channel measures, which decides its unit and which Y axis it shares.
 using Quantity = lk::bus::Quantity;
@@ -30,6 +34,11 @@ using Quantity = lk::bus::Quantity;
 /// The row of bus::TelemetryFieldInfo::all() a channel records; `power` says the drive
 /// reports power instead of iq (MS), which only the Torque channel distinguishes.
 int channelColumn(TelemetryChannel channel, bool power);
+/// Torque and CommandedTorque hold power on a drive that reports power (MS), iq otherwise.
+inline bool hasPowerColumn(TelemetryChannel channel)
+{
+    return channel == TelemetryChannel::Torque || channel == TelemetryChannel::CommandedTorque;
+}
 /// The channel that records a row of the table; nullopt for values not plotted (error flags,
 /// the V2.35 bus current and motor state).
 std::optional<TelemetryChannel> channelOfColumn(int column);

@@ -121,6 +121,17 @@ QString VerdictText::series(std::optional<protocol::Series> s)
     return s ? protocol::seriesName(*s) : tr("unknown series");
 }
 
+QString VerdictText::listenOnlyNoSend()
+{
+    return tr("Listen-only: this tool transmits nothing. Take over the bus to send.");
+}
+
+QString VerdictText::listenOnlyStop()
+{
+    // Worded so that nobody reads it as a stop: the machine is still under its own controller.
+    return tr("Listen-only: NOTHING was sent. Stop the machine with its own emergency stop.");
+}
+
 QString VerdictText::verdict(const safety::Verdict &v, std::optional<protocol::Series> s)
 {
     switch (v.kind) {

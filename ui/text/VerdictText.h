@@ -38,6 +38,13 @@ public:
     static QString stepRefusal(const tuning::StepRefusal &refusal);
     /// "MF" or "unknown series".
     static QString series(std::optional<protocol::Series> series);
+
+    // A listen-only link (bus::LinkMode::ListenOnly): complete sentences, shown as they are.
+    /// Why an action that would transmit is disabled: "Listen-only: this tool transmits
+    /// nothing. ..."
+    static QString listenOnlyNoSend();
+    /// An emergency stop asked for while listening: nothing went out, and who must stop.
+    static QString listenOnlyStop();
 };
 
 } // namespace lk::text

@@ -28,6 +28,7 @@ private slots:
     void damagedFileIsNamed_data();
     void damagedFileIsNamed();
     void cleanFileReportsNothing();
+    void chosenSeriesPerPortAndId();
     void windowReportsDamageOnceAtStart();
     void sharesTheFileWithTheDriveStore();
 
@@ -60,9 +61,11 @@ void tst_AppSettings::roundTrip_data()
     QTest::addColumn<QString>("port");
     QTest::addColumn<int>("baud");
     QTest::addColumn<bool>("autoReconnect");
-    QTest::newRow("serial") << false << QStringLiteral("/dev/ttyUSB0") << 1000000 << false;
-    QTest::newRow("simulator") << true << QString() << 9600 << true;
-    QTest::newRow("pty") << false << QStringLiteral("/dev/pts/7") << 2000000 << true;
+    QTest::addColumn<bool>("listenOnly");
+    QTest::newRow("serial") << false << QStringLiteral("/dev/ttyUSB0") << 1000000 << false << false;
+    QTest::newRow("simulator") << true << QString() << 9600 << true << false;
+    QTest::newRow("pty") << false << QStringLiteral("/dev/pts/7") << 2000000 << true << false;
+    QTest::newRow("listening") << false << QStringLiteral("/dev/ttyUSB0") << 115200 << true << true;
 }
 
 void tst_AppSettings::roundTrip()
@@ -71,11 +74,13 @@ void tst_AppSettings::roundTrip()
     QFETCH(QString, port);
     QFETCH(int, baud);
     QFETCH(bool, autoReconnect);
+    QFETCH(bool, listenOnly);
     ConnectionChoice c;
     c.kind = simulator ? ConnectionChoice::Kind::Simulator : ConnectionChoice::Kind::Serial;
     c.port = port;
     c.baud = baud;
     c.autoReconnect = autoReconnect;
+    c.listenOnly = listenOnly;
     {
         AppSettings s(file());
         s.setConnection(c);
@@ -225,6 +230,12 @@ void tst_AppSettings::damagedFileIsNamed_data()
     QTest::newRow("drive limits duplicate") << 1 << "drives/id1-MF4015/softLimits"
                                             << R"({"max_speed_dps": 1, "max_speed_dps": 2})"
                                             << "\"max_speed_dps\" is given twice";
+    QTest::newRow("listen only") << 1 << "connection/listenOnly"
+                                 << "maybe"
+                                 << "connection/listenOnly: must be true or false";
+    QTest::newRow("chosen series") << 1 << "chosenSeries/%2Fdev%2FttyUSB0/5"
+                                   << "MX"
+                                   << "chosenSeries/%2Fdev%2FttyUSB0/5: must be MS, MF, MG or MH";
     QTest::newRow("gear ratio") << 1 << "drives/id2-MG5010E-i10/gearRatio"
                                 << "0.5"
                                 << "drives/id2-MG5010E-i10/gearRatio: must be";
@@ -247,6 +258,24 @@ void tst_AppSettings::damagedFileIsNamed()
     QVERIFY2(s.damage().first().contains(named), qPrintable(s.damage().first()));
     QVERIFY(s.damageReport().contains(file()));
     QVERIFY(s.damageReport().contains(key));
+}
+
+void tst_AppSettings::chosenSeriesPerPortAndId()
+{
+    using lk::protocol::Series;
+    {
+        AppSettings s(file());
+        s.setChosenSeries(QStringLiteral("/dev/ttyUSB0"), 5, Series::MS);
+        s.setChosenSeries(QStringLiteral("/dev/ttyUSB1"), 5, Series::MG);
+        s.setChosenSeries(QStringLiteral("simulator"), 7, Series::MH);
+    }
+    AppSettings s(file());
+    QVERIFY(s.damage().isEmpty());
+    QCOMPARE(s.chosenSeries(QStringLiteral("/dev/ttyUSB0"), 5), std::optional(Series::MS));
+    QCOMPARE(s.chosenSeries(QStringLiteral("/dev/ttyUSB1"), 5), std::optional(Series::MG));
+    QCOMPARE(s.chosenSeries(QStringLiteral("simulator"), 7), std::optional(Series::MH));
+    QVERIFY(!s.chosenSeries(QStringLiteral("/dev/ttyUSB0"), 6)); // never chosen: unknown
+    QVERIFY(!s.chosenSeries(QStringLiteral("/dev/ttyUSB2"), 5));
 }
 
 void tst_AppSettings::cleanFileReportsNothing()

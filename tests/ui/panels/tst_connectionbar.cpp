@@ -47,6 +47,9 @@ private slots:
     void connectEmitsChoice();
     void typedPathIsSerial();
     void lockedWhileOpen();
+    void listenOnlyIsPartOfTheChoice();
+    void listeningSaysSoAndOffersTakeOver_data();
+    void listeningSaysSoAndOffersTakeOver();
 };
 
 void tst_ConnectionBar::label_data()
@@ -176,6 +179,68 @@ void tst_ConnectionBar::lockedWhileOpen()
     bar.setConnectionStatus(s);
     QVERIFY(port->isEnabled());
     QCOMPARE(button->text(), QStringLiteral("Connect"));
+}
+
+void tst_ConnectionBar::listenOnlyIsPartOfTheChoice()
+{
+    ConnectionBar bar;
+    bar.setPortLister([] { return QList<PortEntry>{ftdi()}; });
+    QSignalSpy connectSpy(&bar, &ConnectionBar::connectRequested);
+    auto *listen = bar.findChild<QCheckBox *>(QStringLiteral("listenOnly"));
+    QVERIFY(listen);
+    QVERIFY(!bar.choice().listenOnly);
+    listen->setChecked(true);
+    QVERIFY(bar.choice().listenOnly);
+    QTest::mouseClick(bar.findChild<QPushButton *>(QStringLiteral("connectButton")),
+                      Qt::LeftButton);
+    QVERIFY(connectSpy.at(0).at(0).value<ConnectionChoice>().listenOnly);
+    ConnectionChoice c = bar.choice();
+    c.listenOnly = false;
+    bar.setChoice(c);
+    QVERIFY(!listen->isChecked());
+    lk::bus::ConnectionStatus s;
+    s.state = lk::transport::Transport::State::Open;
+    bar.setConnectionStatus(s);
+    QVERIFY(!listen->isEnabled()); // the mode of an open link changes only by taking over
+}
+
+void tst_ConnectionBar::listeningSaysSoAndOffersTakeOver_data()
+{
+    QTest::addColumn<int>("state");
+    QTest::addColumn<bool>("canTransmit");
+    QTest::addColumn<bool>("takeOver");
+    QTest::addColumn<QString>("text");
+    using S = lk::transport::Transport::State;
+    QTest::newRow("listening") << int(S::Open) << false << true
+                               << "Listen-only: this tool transmits nothing (/dev/ttyUSB0 @ "
+                                  "115200)";
+    QTest::newRow("master") << int(S::Open) << true << false << "Connected: /dev/ttyUSB0 @ 115200";
+    QTest::newRow("closed") << int(S::Closed) << false << false << "Not connected";
+    QTest::newRow("lost") << int(S::Disconnected) << false << false << "Disconnected";
+}
+
+void tst_ConnectionBar::listeningSaysSoAndOffersTakeOver()
+{
+    QFETCH(int, state);
+    QFETCH(bool, canTransmit);
+    QFETCH(bool, takeOver);
+    QFETCH(QString, text);
+    ConnectionBar bar;
+    bar.setPortLister([] { return QList<PortEntry>{}; });
+    bar.show();
+    lk::bus::ConnectionStatus s;
+    s.state = lk::transport::Transport::State(state);
+    s.description = QStringLiteral("/dev/ttyUSB0 @ 115200");
+    s.canTransmit = canTransmit;
+    s.mode = canTransmit ? lk::bus::LinkMode::Active : lk::bus::LinkMode::ListenOnly;
+    bar.setConnectionStatus(s);
+    QCOMPARE(bar.stateText(), text);
+    QCOMPARE(bar.takeOverButton()->isVisible(), takeOver);
+    QSignalSpy asked(&bar, &ConnectionBar::takeOverRequested);
+    if (takeOver) {
+        QTest::mouseClick(bar.takeOverButton(), Qt::LeftButton);
+        QCOMPARE(asked.count(), 1); // a request only: MainWindow asks before anything happens
+    }
 }
 
 QTEST_MAIN(tst_ConnectionBar)

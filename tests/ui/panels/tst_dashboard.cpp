@@ -3,12 +3,16 @@
 #include <panels/DashboardPanel.h>
 #include <panels/DriveTree.h>
 #include <panels/Format.h>
+#include <panels/ListenStatisticsPane.h>
 #include <panels/OverviewModel.h>
 #include <panels/Readout.h>
+#include <panels/StatisticsView.h>
+#include <text/CommandTitle.h>
 
 #include <QtTest/QtTest>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QPushButton>
+#include <QtWidgets/QTableWidget>
 
 using lk::bus::TelemetryField;
 using lk::bus::TelemetrySample;
@@ -73,6 +77,10 @@ private slots:
     void encoderResolutionFromData();
     void powerAlwaysHasItsUnit_data();
     void powerAlwaysHasItsUnit();
+    void drivesAppearOnlyWhileListening_data();
+    void drivesAppearOnlyWhileListening();
+    void unknownSeriesShowsNoTorque();
+    void statisticsOfTheOtherMaster();
 };
 
 void tst_Dashboard::showsValues_data()
@@ -161,6 +169,7 @@ void tst_Dashboard::errorFlagsAndClearButton()
     model.addFound(found(3, protocol::Series::MF, QStringLiteral("MF4015"), 0x09));
     lk::bus::ConnectionStatus open;
     open.state = lk::transport::Transport::State::Open;
+    open.canTransmit = true;
     model.setConnection(open, true);
     dash.refresh();
     auto *flags = dash.findChild<QLabel *>(QStringLiteral("errorFlags"));
@@ -356,6 +365,117 @@ void tst_Dashboard::powerAlwaysHasItsUnit()
     overview.refresh();
     QCOMPARE(overview.data(overview.index(0, lk::ui::OverviewModel::Torque)).toString(), shown);
     QCOMPARE(lk::ui::Format::power(power), shown);
+}
+
+void tst_Dashboard::drivesAppearOnlyWhileListening_data()
+{
+    QTest::addColumn<bool>("canTransmit");
+    QTest::addColumn<bool>("appears");
+    QTest::newRow("bus master: the scan says which drives") << true << false;
+    QTest::newRow("listening: a drive that answers is there") << false << true;
+}
+
+void tst_Dashboard::drivesAppearOnlyWhileListening()
+{
+    QFETCH(bool, canTransmit);
+    QFETCH(bool, appears);
+    BusModel model;
+    lk::bus::ConnectionStatus open;
+    open.state = lk::transport::Transport::State::Open;
+    open.baud = 1000000;
+    open.canTransmit = canTransmit;
+    open.mode = canTransmit ? lk::bus::LinkMode::Active : lk::bus::LinkMode::ListenOnly;
+    model.setConnection(open, false);
+    QCOMPARE(model.canSend(), canTransmit);
+    QCOMPARE(model.isListening(), !canTransmit);
+    model.applyTelemetry({motion(5, false)});
+    lk::bus::KnownMotors known;
+    known[9].id = 9;
+    known[9].series = protocol::Series::MG;
+    model.applyKnownMotors(known);
+    QCOMPARE(model.ids(), appears ? (QVector<int>{5, 9}) : QVector<int>{});
+    if (!appears)
+        return;
+    QCOMPARE(model.currentId(), 5);
+    QCOMPARE(model.drive(5)->baud, 1000000);
+    QVERIFY(model.drive(5)->has(TelemetryField::Temperature));
+    QCOMPARE(model.drive(9)->series, std::optional(protocol::Series::MG));
+}
+
+void tst_Dashboard::unknownSeriesShowsNoTorque()
+{
+    BusModel model;
+    DashboardPanel dash(&model);
+    dash.show();
+    lk::bus::ConnectionStatus open;
+    open.state = lk::transport::Transport::State::Open;
+    open.mode = lk::bus::LinkMode::ListenOnly;
+    model.setConnection(open, false);
+    // Decoded as MF by a bus that does not know the series: an MS drive's power as "iq".
+    model.applyTelemetry({motion(5, false)});
+    dash.refresh();
+    auto *torque = dash.readout(QStringLiteral("torque"));
+    QCOMPARE(torque->value(), QStringLiteral("\u2013"));
+    QVERIFY(torque->toolTip().contains(QStringLiteral("Bus panel")));
+    auto *button = dash.findChild<QPushButton *>(QStringLiteral("clearErrorsButton"));
+    QVERIFY(!button->isEnabled());
+    QVERIFY(button->toolTip().startsWith(QStringLiteral("Listen-only: this tool transmits")));
+    lk::bus::KnownMotors known;
+    known[5].id = 5;
+    known[5].series = protocol::Series::MF; // the user chose it
+    model.applyKnownMotors(known);
+    dash.refresh();
+    QCOMPARE(torque->value(), QStringLiteral("1.25 A"));
+}
+
+void tst_Dashboard::statisticsOfTheOtherMaster()
+{
+    BusModel model;
+    lk::ui::StatisticsView view(&model);
+    view.show();
+    auto *pane = view.listenPane();
+    QVERIFY(!pane->isVisible()); // bus master: its own figures
+    lk::bus::ConnectionStatus open;
+    open.state = lk::transport::Transport::State::Open;
+    open.mode = lk::bus::LinkMode::ListenOnly;
+    model.setConnection(open, false);
+    QVERIFY(pane->isVisible());
+    QVERIFY(view.title().contains(QStringLiteral("other master")));
+    lk::bus::ListenStatistics st;
+    st.requests = 1200;
+    st.unanswered = 7;
+    st.checksumErrors = 3;
+    st.requestsPerSecond = 400;
+    st.busLoad = 0.375;
+    st.bytes = 20000;
+    st.perDrive[5].requests = 600;
+    st.perDrive[5].replies = 593;
+    st.perDrive[5].unanswered = 7;
+    st.perDrive[5].requestsPerSecond = 200;
+    st.perDrive[5].latency = {593, 0.2, 0.4, 0.9, 1.5};
+    st.perCommand[0x9C].requests = 1200;
+    st.perCommand[0x9C].requestsPerSecond = 400;
+    model.setListenStatistics(st);
+    const QString summary = pane->summary();
+    QVERIFY2(summary.contains(QStringLiteral("400 requests/s")), qPrintable(summary));
+    QVERIFY2(summary.contains(QStringLiteral("bus load 37.5 %")), qPrintable(summary));
+    QVERIFY2(summary.contains(QStringLiteral("7 unanswered")), qPrintable(summary));
+    QVERIFY2(summary.contains(QStringLiteral("3 checksum errors")), qPrintable(summary));
+    QTableWidget *drives = pane->drivesTable();
+    QCOMPARE(drives->rowCount(), 1);
+    QCOMPARE(drives->item(0, 0)->text(), QStringLiteral("5"));
+    QCOMPARE(drives->item(0, 1)->text(), QStringLiteral("200.0"));
+    QCOMPARE(drives->item(0, 3)->text(), QStringLiteral("7"));
+    QCOMPARE(drives->item(0, 4)->text(), QStringLiteral("0.2 / 0.4 / 1.5 ms"));
+    QTableWidget *commands = pane->commandsTable();
+    QCOMPARE(commands->rowCount(), 1);
+    QCOMPARE(commands->item(0, 0)->text(),
+             lk::text::CommandTitle::withCode(protocol::Command::ReadState2));
+    QCOMPARE(commands->item(0, 1)->text(), QStringLiteral("400.0"));
+    lk::bus::ConnectionStatus closed;
+    model.setConnection(closed, false);
+    QVERIFY(!pane->isVisible());
+    QCOMPARE(model.listenStatistics().requests, quint64(0)); // the next link starts afresh
 }
 
 QTEST_MAIN(tst_Dashboard)

@@ -17,6 +17,8 @@ private slots:
     void display();
     void initialChoice_data();
     void initialChoice();
+    void listenOnly_data();
+    void listenOnly();
 
 private:
     QTemporaryDir m_dir;
@@ -166,6 +168,50 @@ void tst_StartupOptions::initialChoice()
     QCOMPARE(c.isSimulator(), expectSimulator);
     QCOMPARE(c.port, expectPort);
     QCOMPARE(o->fellBackToSimulator(settings, exists), fellBack);
+}
+
+void tst_StartupOptions::listenOnly_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<bool>("rememberedListening"); // on /dev/ttyUSB3
+    QTest::addColumn<bool>("portPlugged");
+    QTest::addColumn<bool>("ok");
+    QTest::addColumn<bool>("expectListen");
+    QTest::newRow("as last time") << QStringList{} << true << true << true << true;
+    QTest::newRow("--listen") << QStringList{"--listen"} << false << true << true << true;
+    QTest::newRow("--no-listen") << QStringList{"--no-listen"} << true << true << true << false;
+    QTest::newRow("both") << QStringList{"--listen", "--no-listen"} << false << true << false
+                          << false;
+    // The built-in bus has no other master: a fallback to it is its master.
+    QTest::newRow("port away") << QStringList{} << true << false << true << false;
+    QTest::newRow("--listen --sim")
+        << QStringList{"--listen", "--sim", "1:MF"} << false << false << true << true;
+}
+
+void tst_StartupOptions::listenOnly()
+{
+    QFETCH(QStringList, args);
+    QFETCH(bool, rememberedListening);
+    QFETCH(bool, portPlugged);
+    QFETCH(bool, ok);
+    QFETCH(bool, expectListen);
+    const QString file =
+        m_dir.filePath(QStringLiteral("listen-%1.ini").arg(QTest::currentDataTag()));
+    AppSettings settings(file);
+    ConnectionChoice remembered;
+    remembered.kind = ConnectionChoice::Kind::Serial;
+    remembered.port = QStringLiteral("/dev/ttyUSB3");
+    remembered.listenOnly = rememberedListening;
+    settings.setConnection(remembered);
+    QString error;
+    const auto o = StartupOptions::parse(QStringList{"lkstudio"} + args, &error);
+    QCOMPARE(o.has_value(), ok);
+    if (!o) {
+        QVERIFY(error.contains(QStringLiteral("--listen")));
+        return;
+    }
+    const auto exists = [portPlugged](const QString &) { return portPlugged; };
+    QCOMPARE(o->initialChoice(settings, exists).listenOnly, expectListen);
 }
 
 QTEST_GUILESS_MAIN(tst_StartupOptions)

@@ -1,0 +1,85 @@
+#include "ListenOnlyControl.h"
+
+#include "AppSettings.h"
+#include "BusController.h"
+
+#include <drive/ConfirmDialog.h>
+#include <panels/BusModel.h>
+#include <panels/SeriesChooser.h>
+#include <text/VerdictText.h>
+
+#include <bus/BusSession.h>
+
+#include <QtWidgets/QPushButton>
+
+namespace lk::ui {
+
+ListenOnlyControl::ListenOnlyControl(BusController *controller, AppSettings *settings,
+                                     SeriesChooser *chooser, QPushButton *stopButton,
+                                     QWidget *dialogParent)
+    : QObject(dialogParent), m_controller(controller), m_settings(settings), m_chooser(chooser),
+      m_stop(stopButton), m_dialogParent(dialogParent), m_stopTip(stopButton->toolTip())
+{
+    BusModel *model = m_controller->model();
+    connect(model, &BusModel::connectionChanged, this, &ListenOnlyControl::syncStopButton);
+    connect(model, &BusModel::drivesChanged, this, &ListenOnlyControl::applyRemembered);
+    connect(m_chooser, &SeriesChooser::seriesChosen, this, &ListenOnlyControl::chooseSeries);
+    syncStopButton();
+}
+
+void ListenOnlyControl::requestTakeOver()
+{
+    BusModel *model = m_controller->model();
+    if (!model->isListening())
+        return;
+    ConfirmRequest q;
+    q.key = takeOverKey();
+    q.title = tr("Take over the bus");
+    q.question = tr("Take over %1 and become its bus master?").arg(model->connection().description);
+    q.reason = tr("This tool will transmit: it reopens the port read-write, polls the drives, "
+                  "and its commands and emergency stop go out. If the machine's own controller "
+                  "is still running, both transmit on the same wires: frames collide and neither "
+                  "controls the drives reliably. Stop the machine's controller (or disconnect it "
+                  "from the bus) first.");
+    q.acceptText = tr("Take over");
+    const QString port = model->connection().description;
+    QString why;
+    bool changed = false;
+    // The link may drop or be closed while the question is open: then nothing happens.
+    const bool go = ConfirmDialog::askUnchanged(
+        m_dialogParent, q,
+        [model, port] { return model->isListening() && model->connection().description == port; },
+        &why, &changed);
+    if (go)
+        m_controller->takeOver();
+}
+
+void ListenOnlyControl::chooseSeries(int id, protocol::Series series)
+{
+    m_settings->setChosenSeries(m_controller->portKey(), id, series);
+    m_controller->setSeries(id, series);
+}
+
+void ListenOnlyControl::applyRemembered()
+{
+    BusModel *model = m_controller->model();
+    for (int id : model->ids()) {
+        const DriveRecord *d = model->drive(id);
+        if (!d || d->series)
+            continue; // the bus knows it (a 0x12 reply passed, or the choice is applied)
+        if (const auto series = m_settings->chosenSeries(m_controller->portKey(), id)) {
+            m_chooser->markChosen(id);
+            m_controller->setSeries(id, *series);
+        }
+    }
+}
+
+void ListenOnlyControl::syncStopButton()
+{
+    const bool listening = m_controller->model()->isListening();
+    m_stop->setToolTip(
+        listening ? QStringLiteral("%1\n\n%2").arg(text::VerdictText::listenOnlyNoSend(), m_stopTip)
+                  : m_stopTip);
+}
+
+} // namespace lk::ui

@@ -1,0 +1,50 @@
+#pragma once
+
+#include <protocol/Series.h>
+
+#include <QtCore/QObject>
+#include <QtCore/QString>
+
+class QPushButton;
+class QWidget;
+
+namespace lk::ui {
+
+class AppSettings;
+class BusController;
+class SeriesChooser;
+
+/// What lkstudio does around a listen-only link, beside the views' own gating (BusModel::
+/// canSend): "Take over the bus" only after the user confirmed what it means; the emergency
+/// stop button says that it sends nothing while listening; and a drive's series the user chose
+/// (SeriesChooser) is remembered per port and ID and applied to the bus, again whenever that
+/// drive is seen on that port.
+class ListenOnlyControl : public QObject {
+    Q_OBJECT
+public:
+    /// None of the arguments is owned; `dialogParent` parents the confirmation.
+    ListenOnlyControl(BusController *controller, AppSettings *settings, SeriesChooser *chooser,
+                      QPushButton *stopButton, QWidget *dialogParent);
+
+    /// The confirmation's key (ConfirmDialog policies in tests).
+    static QString takeOverKey() { return QStringLiteral("take_over_bus"); }
+
+public slots:
+    /// Ask, then take the bus over (BusController::takeOver) if the user agreed and the link
+    /// still listens; nothing happens otherwise.
+    void requestTakeOver();
+
+private:
+    void chooseSeries(int id, protocol::Series series);
+    void applyRemembered();
+    void syncStopButton();
+
+    BusController *m_controller;
+    AppSettings *m_settings;
+    SeriesChooser *m_chooser;
+    QPushButton *m_stop;
+    QWidget *m_dialogParent;
+    QString m_stopTip; ///< the stop button's own tooltip
+};
+
+} // namespace lk::ui

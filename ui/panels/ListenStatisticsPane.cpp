@@ -1,0 +1,132 @@
+#include "ListenStatisticsPane.h"
+
+#include "BusModel.h"
+#include "Format.h"
+
+#include <protocol/Command.h>
+#include <text/CommandTitle.h>
+
+#include <QtWidgets/QHeaderView>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QTableWidget>
+#include <QtWidgets/QVBoxLayout>
+
+namespace lk::ui {
+
+namespace {
+
+QString latencyText(const bus::LatencySummary &l)
+{
+    if (l.samples == 0)
+        return QStringLiteral("\u2013");
+    return QStringLiteral("%1 / %2 / %3 ms")
+        .arg(Format::number(l.minMs, 1), Format::number(l.medianMs, 1), Format::number(l.maxMs, 1));
+}
+
+QTableWidget *makeTable(const QStringList &headers, const QString &name, QWidget *parent)
+{
+    auto *t = new QTableWidget(0, int(headers.size()), parent);
+    t->setObjectName(name);
+    t->setHorizontalHeaderLabels(headers);
+    t->verticalHeader()->setVisible(false);
+    t->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    t->setSelectionMode(QAbstractItemView::NoSelection);
+    t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    t->horizontalHeader()->setStretchLastSection(true);
+    return t;
+}
+
+void setRow(QTableWidget *t, int row, const QStringList &cells)
+{
+    for (int c = 0; c < cells.size(); ++c) {
+        QTableWidgetItem *item = t->item(row, c);
+        if (!item) {
+            item = new QTableWidgetItem;
+            item->setTextAlignment(Qt::AlignVCenter | (c == 0 ? Qt::AlignLeft : Qt::AlignRight));
+            t->setItem(row, c, item);
+        }
+        item->setText(cells[c]);
+    }
+}
+
+} // namespace
+
+ListenStatisticsPane::ListenStatisticsPane(BusModel *model, QWidget *parent)
+    : QWidget(parent), m_model(model), m_summary(new QLabel(this))
+{
+    setObjectName(QStringLiteral("listenStatistics"));
+    m_summary->setObjectName(QStringLiteral("listenSummary"));
+    m_summary->setWordWrap(true);
+    m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_drives = makeTable({tr("Drive"), tr("Requests/s"), tr("Requests / replies"), tr("Unanswered"),
+                          tr("Latency min / median / max")},
+                         QStringLiteral("listenDrives"), this);
+    m_commands = makeTable({tr("Command"), tr("Requests/s"), tr("Requests")},
+                           QStringLiteral("listenCommands"), this);
+    auto *note = new QLabel(tr("Latencies are approximate: requests and replies are timed when "
+                               "the adapter hands them over (up to 16 ms late on an FTDI "
+                               "adapter without the low-latency setting)."),
+                            this);
+    note->setWordWrap(true);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_summary);
+    layout->addWidget(new QLabel(QStringLiteral("<b>%1</b>").arg(tr("Per drive")), this));
+    layout->addWidget(m_drives, 1);
+    layout->addWidget(new QLabel(QStringLiteral("<b>%1</b>").arg(tr("Per command")), this));
+    layout->addWidget(m_commands, 1);
+    layout->addWidget(note);
+    connect(m_model, &BusModel::listenStatisticsChanged, this, &ListenStatisticsPane::refresh);
+    refresh();
+}
+
+QString ListenStatisticsPane::summary() const
+{
+    return m_summary->text();
+}
+
+void ListenStatisticsPane::refresh()
+{
+    const bus::ListenStatistics &st = m_model->listenStatistics();
+    m_summary->setText(
+        tr("The other master: %1 requests/s, bus load %2 %; %3 requests, %4 unanswered (its "
+           "timeouts); %5 checksum errors, %6 garbage bytes; %7 replies without their request, "
+           "%8 echo frames not paired (ambiguous).")
+            .arg(Format::number(st.requestsPerSecond, 0), Format::number(st.busLoad * 100, 1))
+            .arg(st.requests)
+            .arg(st.unanswered)
+            .arg(st.checksumErrors)
+            .arg(st.garbageBytes)
+            .arg(st.orphanReplies)
+            .arg(st.ambiguous));
+    fillDrives();
+    fillCommands();
+}
+
+void ListenStatisticsPane::fillDrives()
+{
+    const auto &perDrive = m_model->listenStatistics().perDrive;
+    m_drives->setRowCount(int(perDrive.size()));
+    int row = 0;
+    for (auto it = perDrive.cbegin(); it != perDrive.cend(); ++it, ++row) {
+        const bus::ListenDriveStatistics &d = it.value();
+        setRow(m_drives, row,
+               {QString::number(it.key()), Format::number(d.requestsPerSecond, 1),
+                QStringLiteral("%1 / %2").arg(d.requests).arg(d.replies),
+                QString::number(d.unanswered), latencyText(d.latency)});
+    }
+}
+
+void ListenStatisticsPane::fillCommands()
+{
+    const auto &perCommand = m_model->listenStatistics().perCommand;
+    m_commands->setRowCount(int(perCommand.size()));
+    int row = 0;
+    for (auto it = perCommand.cbegin(); it != perCommand.cend(); ++it, ++row) {
+        setRow(m_commands, row,
+               {text::CommandTitle::withCode(protocol::Command(it.key())),
+                Format::number(it->requestsPerSecond, 1), QString::number(it->requests)});
+    }
+}
+
+} // namespace lk::ui

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <QtWidgets/QWidget>
+
+class QLabel;
+class QTableWidget;
+
+namespace lk::ui {
+
+class BusModel;
+
+/// What another master does on a bus the link only listens to (bus::ListenStatistics): its
+/// request rate, bus load, unanswered requests (its timeouts), checksum errors; per drive its
+/// requests/s, unanswered requests and reply latency; per command its requests/s.
+class ListenStatisticsPane : public QWidget {
+    Q_OBJECT
+public:
+    explicit ListenStatisticsPane(BusModel *model, QWidget *parent = nullptr);
+
+    /// The summary line and the two tables (tests).
+    QString summary() const;
+    QTableWidget *drivesTable() const { return m_drives; }
+    QTableWidget *commandsTable() const { return m_commands; }
+
+public slots:
+    void refresh();
+
+private:
+    void fillDrives();
+    void fillCommands();
+
+    BusModel *m_model;
+    QLabel *m_summary;
+    QTableWidget *m_drives;
+    QTableWidget *m_commands;
+};
+
+} // namespace lk::ui
