@@ -1028,6 +1028,14 @@
         <source>setpoint %1 of %2 (%3, %4 at %5 s): %6</source>
         <translation>第 %1 个设定点（共 %2 个；%3，%4，于 %5 s）：%6</translation>
     </message>
+    <message>
+        <source>Listen-only: this tool transmits nothing. Take over the bus to send.</source>
+        <translation>仅监听：本工具不发送任何内容。要发送请先接管总线。</translation>
+    </message>
+    <message>
+        <source>Listen-only: NOTHING was sent. Stop the machine with its own emergency stop.</source>
+        <translation>仅监听：什么都没有发送。请用机器自己的急停按钮停止机器。</translation>
+    </message>
 </context>
 <context>
     <name>lk::transport::CanTransport</name>
@@ -1413,6 +1421,17 @@
         <source>Drive %1: errors cleared.</source>
         <translation>驱动 %1：错误标志已清除。</translation>
     </message>
+    <message>
+        <source>This tool is now the bus master: it transmits, polls the drives it saw and its emergency stop sends Motor Off.</source>
+        <translation>本工具现在是总线主站：它会发送数据、轮询已看到的驱动器，急停会发送电机关闭。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::BusModel</name>
+    <message>
+        <source>Not connected: nothing can be sent.</source>
+        <translation>未连接：无法发送任何内容。</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::CommandedMotion</name>
@@ -1505,6 +1524,26 @@
     <message>
         <source>The port was refused: show the command that gives you access</source>
         <translation>端口被拒绝访问：显示获取访问权限的命令</translation>
+    </message>
+    <message>
+        <source>Listen only</source>
+        <translation>仅监听</translation>
+    </message>
+    <message>
+        <source>Watch a bus that another controller runs: the port opens read-only and this tool transmits nothing, not even an emergency stop. Use an adapter with automatic direction control (see README, &quot;Diagnosing a running machine&quot;).</source>
+        <translation>旁听由另一个控制器运行的总线：端口以只读方式打开，本工具不发送任何内容，连急停也不发送。请使用带自动方向控制的转换器（见 README“诊断正在运行的机器”）。</translation>
+    </message>
+    <message>
+        <source>Take over the bus…</source>
+        <translation>接管总线…</translation>
+    </message>
+    <message>
+        <source>Reopen the port read-write and become the bus master (asks first)</source>
+        <translation>以读写方式重新打开端口并成为总线主站（会先询问）</translation>
+    </message>
+    <message>
+        <source>Listen-only: this tool transmits nothing (%1)</source>
+        <translation>仅监听：本工具不发送任何内容（%1）</translation>
     </message>
 </context>
 <context>
@@ -1977,6 +2016,14 @@
     <message>
         <source>Shown red outside %1</source>
         <translation>超出 %1 时显示为红色</translation>
+    </message>
+    <message>
+        <source>Torque current or power (series unknown)</source>
+        <translation>转矩电流或功率（系列未知）</translation>
+    </message>
+    <message>
+        <source>No model reply told this drive&apos;s series: an MS drive reports power here, the others current. Choose the series in the Bus panel.</source>
+        <translation>没有型号应答告知此驱动器的系列：MS 驱动器在此报告功率，其他系列报告电流。请在总线面板中选择系列。</translation>
     </message>
 </context>
 <context>
@@ -3271,6 +3318,72 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::ListenOnlyControl</name>
+    <message>
+        <source>Take over the bus</source>
+        <translation>接管总线</translation>
+    </message>
+    <message>
+        <source>Take over %1 and become its bus master?</source>
+        <translation>接管 %1 并成为其总线主站？</translation>
+    </message>
+    <message>
+        <source>This tool will transmit: it reopens the port read-write, polls the drives, and its commands and emergency stop go out. If the machine&apos;s own controller is still running, both transmit on the same wires: frames collide and neither controls the drives reliably. Stop the machine&apos;s controller (or disconnect it from the bus) first.</source>
+        <translation>本工具将会发送：它以读写方式重新打开端口、轮询驱动器，其命令和急停都会发出。如果机器自己的控制器仍在运行，两者会在同一对线上发送：帧会冲突，谁都无法可靠地控制驱动器。请先停止机器的控制器（或把它从总线上断开）。</translation>
+    </message>
+    <message>
+        <source>Take over</source>
+        <translation>接管</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::ListenStatisticsPane</name>
+    <message>
+        <source>Drive</source>
+        <translation>驱动器</translation>
+    </message>
+    <message>
+        <source>Requests/s</source>
+        <translation>请求/秒</translation>
+    </message>
+    <message>
+        <source>Requests / replies</source>
+        <translation>请求 / 应答</translation>
+    </message>
+    <message>
+        <source>Unanswered</source>
+        <translation>未应答</translation>
+    </message>
+    <message>
+        <source>Latency min / median / max</source>
+        <translation>延迟 最小 / 中位 / 最大</translation>
+    </message>
+    <message>
+        <source>Command</source>
+        <translation>命令</translation>
+    </message>
+    <message>
+        <source>Requests</source>
+        <translation>请求</translation>
+    </message>
+    <message>
+        <source>Latencies are approximate: requests and replies are timed when the adapter hands them over (up to 16 ms late on an FTDI adapter without the low-latency setting).</source>
+        <translation>延迟为近似值：请求和应答的时间是在转换器交出数据时记录的（未设置低延迟的 FTDI 转换器最多晚 16 ms）。</translation>
+    </message>
+    <message>
+        <source>Per drive</source>
+        <translation>按驱动器</translation>
+    </message>
+    <message>
+        <source>Per command</source>
+        <translation>按命令</translation>
+    </message>
+    <message>
+        <source>The other master: %1 requests/s, bus load %2 %; %3 requests, %4 unanswered (its timeouts); %5 checksum errors, %6 garbage bytes; %7 replies without their request, %8 echo frames not paired (ambiguous).</source>
+        <translation>另一个主站：%1 请求/秒，总线负载 %2 %；%3 个请求，%4 个未应答（其超时）；%5 个校验错误，%6 个垃圾字节；%7 个应答没有对应的请求，%8 个回显帧未配对（有歧义）。</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::LoopPlot</name>
     <message>
         <source>Angle loop: multi-turn angle</source>
@@ -3382,6 +3495,10 @@
     <message>
         <source>&amp;View</source>
         <translation>视图(&amp;V)</translation>
+    </message>
+    <message>
+        <source>&amp;Take over the bus…</source>
+        <translation>接管总线(&amp;T)…</translation>
     </message>
 </context>
 <context>
@@ -4145,6 +4262,21 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::SeriesChooser</name>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>No model reply (0x12) told this drive&apos;s series. MS drives report power where MF, MG and MH report torque current: choose it so that the values are decoded right. Remembered for this port and ID.</source>
+        <translation>没有型号应答（0x12）告知此驱动器的系列。MS 驱动器报告功率，而 MF、MG 和 MH 报告转矩电流：请选择系列，以便正确解码数值。按此端口和 ID 记住。</translation>
+    </message>
+    <message>
+        <source>Series of drive %1:</source>
+        <translation>驱动器 %1 的系列：</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::SetpointPanel</name>
     <message>
         <source>Setpoint generator</source>
@@ -4600,6 +4732,10 @@
     <message>
         <source>Silent IDs probed (scan, stop)</source>
         <translation>探测无应答的 ID（扫描、急停）</translation>
+    </message>
+    <message>
+        <source>Bus statistics: the other master (listen-only)</source>
+        <translation>总线统计：另一个主站（仅监听）</translation>
     </message>
 </context>
 <context>
@@ -5123,6 +5259,10 @@
     <message>
         <source>iq / power</source>
         <translation>iq / 功率</translation>
+    </message>
+    <message>
+        <source>Commanded iq / power</source>
+        <translation>指令 iq / 功率</translation>
     </message>
 </context>
 <context>
