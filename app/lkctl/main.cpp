@@ -1,14 +1,17 @@
+#include "BackupCommand.h"
 #include "BrakeCommand.h"
 #include "ClearErrorsCommand.h"
 #include "Console.h"
 #include "ControlCommand.h"
 #include "DecodeCommand.h"
+#include "DiffCommand.h"
 #include "Dispatcher.h"
 #include "EncodeCommand.h"
 #include "InfoCommand.h"
 #include "MonitorCommand.h"
 #include "MotorStateCommand.h"
 #include "ReadCommand.h"
+#include "RestoreCommand.h"
 #include "ScanCommand.h"
 #include "StepCommand.h"
 #include "WriteCommand.h"
@@ -51,6 +54,10 @@ int main(int argc, char *argv[])
     dispatcher.add(std::make_unique<ZeroCommand>(ZeroCommand::Kind::ClearTurns));
     dispatcher.add(std::make_unique<StepCommand>());
     dispatcher.add(std::make_unique<MonitorCommand>());
+    dispatcher.add(std::make_unique<BackupCommand>());
+    dispatcher.add(std::make_unique<DiffCommand>());
+    dispatcher.add(std::make_unique<RestoreCommand>(RestoreCommand::Kind::Restore));
+    dispatcher.add(std::make_unique<RestoreCommand>(RestoreCommand::Kind::Clone));
     dispatcher.add(std::make_unique<EncodeCommand>());
     dispatcher.add(std::make_unique<DecodeCommand>());
     return dispatcher.run(QCoreApplication::arguments().mid(1), console);
