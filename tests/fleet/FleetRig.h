@@ -3,6 +3,7 @@
 #include <bus/BusSession.h>
 #include <fleet/FleetReader.h>
 #include <fleet/FleetRestore.h>
+#include <protocol/RequestBuilder.h>
 #include <sim/SimBus.h>
 #include <sim/SimBusSpec.h>
 #include <sim/SimDrive.h>
@@ -47,6 +48,14 @@ public:
         });
     }
     int count(int id, protocol::Command command) { return sim->requestCount(id, command); }
+    /// A read whose completion means every request queued before it has been through the bus.
+    bool barrier(int id = 1)
+    {
+        bool done = false;
+        session.send(*protocol::build::plain(protocol::Command::ReadState1, id).request, &session,
+                     [&done](const bus::RequestResult &) { done = true; });
+        return QTest::qWaitFor([&done] { return done; }, kWaitMs);
+    }
 
     /// Reads `ids` with a FleetReader and returns the snapshots.
     QVector<fleet::DriveSnapshot> read(const QVector<int> &ids)
