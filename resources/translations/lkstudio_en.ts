@@ -59,6 +59,16 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::FleetWriteDialog</name>
+    <message numerus="yes">
+        <source>%n value(s) change</source>
+        <translation>
+            <numerusform>%n value changes</numerusform>
+            <numerusform>%n values change</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::OverviewPanel</name>
     <message numerus="yes">
         <source>%n drive(s) on the bus</source>
@@ -72,6 +82,37 @@
         <translation>
             <numerusform>%n drive with error flags</numerusform>
             <numerusform>%n drives with error flags</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::ParametersView</name>
+    <message numerus="yes">
+        <source>Reading %n drive(s) ...</source>
+        <translation>
+            <numerusform>Reading %n drive ...</numerusform>
+            <numerusform>Reading %n drives ...</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Cancelled after %n drive(s).</source>
+        <translation>
+            <numerusform>Cancelled after %n drive.</numerusform>
+            <numerusform>Cancelled after %n drives.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drive(s) read.</source>
+        <translation>
+            <numerusform>%n drive read.</numerusform>
+            <numerusform>%n drives read.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n could not be read completely: their missing values show as unknown.</source>
+        <translation>
+            <numerusform>%n could not be read completely: its missing values show as unknown.</numerusform>
+            <numerusform>%n could not be read completely: their missing values show as unknown.</numerusform>
         </translation>
     </message>
 </context>
