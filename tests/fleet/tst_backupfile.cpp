@@ -2,6 +2,7 @@
 
 #include <fleet/BackupFile.h>
 
+#include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QTemporaryDir>
@@ -60,6 +61,7 @@ private slots:
     void refusedNamingTheKey_data();
     void refusedNamingTheKey();
     void directoryIsRefusedUnopened();
+    void documentedExampleIsAccepted();
 };
 
 void tst_BackupFile::roundTripKeepsEveryDriveAndValue()
@@ -193,6 +195,22 @@ void tst_BackupFile::directoryIsRefusedUnopened()
     QVERIFY(!BackupFile::load(dir.path(), &error));
     QCOMPARE(error.kind, Kind::CannotRead);
     QVERIFY(BackupFile::errorText(error).contains(dir.path()));
+}
+
+void tst_BackupFile::documentedExampleIsAccepted()
+{
+    QFile doc(QStringLiteral(LK_SOURCE_DIR "/docs/BACKUP.md"));
+    QVERIFY(doc.open(QIODevice::ReadOnly));
+    const QByteArray text = doc.readAll();
+    const qsizetype from = text.indexOf("```json\n");
+    QVERIFY(from >= 0);
+    const qsizetype to = text.indexOf("```", from + 8);
+    record::ParameterFileError error;
+    const std::optional<BackupFile> file =
+        BackupFile::fromJson(text.mid(from + 8, to - from - 8), &error);
+    QVERIFY2(file, qPrintable(BackupFile::errorText(error)));
+    QVERIFY(file->drive(3)->complete());
+    QVERIFY(!file->drive(5)->complete());
 }
 
 QTEST_GUILESS_MAIN(tst_BackupFile)

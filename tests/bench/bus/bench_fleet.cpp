@@ -101,6 +101,55 @@ int complete(const QVector<fleet::DriveSnapshot> &drives)
                              [](const fleet::DriveSnapshot &d) { return d.complete(); }));
 }
 
+/// Reads all 32 drives of `run` and adds the time and its limit to `line` as `name`_ms and
+/// `name`_limit_ms.
+QVector<fleet::DriveSnapshot> measureRead(Run &run, Generation g, int baud, const QString &name,
+                                          bench::JsonLine &line)
+{
+    QVector<fleet::DriveSnapshot> drives;
+    line.add(name + QStringLiteral("_ms"), readAll(run.session, &drives), 1);
+    line.add(name + QStringLiteral("_limit_ms"), 32 * readLimitS(g, baud) * 1000, 1);
+    return drives;
+}
+
+/// Every drive gets its neighbour's values (all of them change): prepare (the targets read),
+/// RAM write and read-back, timed together and without the prepare.
+void measureRestore(Run &run, const QVector<fleet::DriveSnapshot> &drives, bench::JsonLine &line)
+{
+    QVector<fleet::FleetRestore::Job> jobs;
+    for (int i = 0; i < drives.size(); ++i)
+        jobs << fleet::FleetRestore::Job{drives.at((i + 1) % drives.size()), drives.at(i).id()};
+    fleet::FleetRestore restore(&run.session);
+    bool prepared = false;
+    bool finished = false;
+    QObject::connect(&restore, &fleet::FleetRestore::prepared, [&] { prepared = true; });
+    QObject::connect(&restore, &fleet::FleetRestore::finished, [&] { finished = true; });
+    QElapsedTimer t;
+    t.start();
+    restore.prepare(jobs);
+    bench::waitUntil([&] { return prepared; }, 120000);
+    const qint64 prepareNs = t.nsecsElapsed();
+    restore.execute(false);
+    bench::waitUntil([&] { return finished; }, 120000);
+    const double totalMs = t.nsecsElapsed() / 1e6;
+    double writeLimitS = 0;
+    for (const fleet::RestorePlan &p : restore.plans()) {
+        const auto frames = fleet::FleetCatalog::writes(
+            p.targetId(), Generation::V2_35, p.source.valueMap(), p.changedKeys(), false);
+        for (const fleet::ParamFrame &f : frames)
+            writeLimitS += bus::BusTiming::transactionTimeS(f.request.command, 1000000);
+    }
+    const double limitMs = (2 * 32 * readLimitS(Generation::V2_35, 1000000) + writeLimitS) * 1000;
+    line.add(QStringLiteral("restore_v235_1M_ms"), totalMs, 1);
+    line.add(QStringLiteral("restore_v235_1M_limit_ms"), limitMs, 1);
+    line.add(QStringLiteral("restore_write_ms"), totalMs - prepareNs / 1e6, 1);
+    line.addInt(QStringLiteral("drives_verified"),
+                std::count_if(restore.reports().begin(), restore.reports().end(),
+                              [](const fleet::DriveReport &r) {
+                                  return r.outcome == fleet::DriveReport::Outcome::Verified;
+                              }));
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -109,62 +158,22 @@ int main(int argc, char **argv)
     bench::JsonLine line;
     qint64 collisions = 0;
     int readOk = 0;
-
     {
         Run run;
         if (!run.open(QStringLiteral("MF"), 115200))
             return 1;
-        QVector<fleet::DriveSnapshot> drives;
-        line.add(QStringLiteral("read_v23_115200_ms"), readAll(run.session, &drives), 1);
-        line.add(QStringLiteral("read_v23_115200_limit_ms"),
-                 32 * readLimitS(Generation::V2_3, 115200) * 1000, 1);
-        readOk += complete(drives);
+        readOk += complete(
+            measureRead(run, Generation::V2_3, 115200, QStringLiteral("read_v23_115200"), line));
         collisions += run.collisions();
     }
     {
         Run run;
         if (!run.open(QStringLiteral("MS4015@2.35"), 1000000))
             return 1;
-        QVector<fleet::DriveSnapshot> drives;
-        line.add(QStringLiteral("read_v235_1M_ms"), readAll(run.session, &drives), 1);
-        line.add(QStringLiteral("read_v235_1M_limit_ms"),
-                 32 * readLimitS(Generation::V2_35, 1000000) * 1000, 1);
+        const QVector<fleet::DriveSnapshot> drives =
+            measureRead(run, Generation::V2_35, 1000000, QStringLiteral("read_v235_1M"), line);
         readOk += complete(drives);
-
-        // Every drive gets its neighbour's values: all of them change.
-        QVector<fleet::FleetRestore::Job> jobs;
-        for (int i = 0; i < drives.size(); ++i)
-            jobs << fleet::FleetRestore::Job{drives.at((i + 1) % drives.size()), drives.at(i).id()};
-        fleet::FleetRestore restore(&run.session);
-        bool prepared = false;
-        bool finished = false;
-        QObject::connect(&restore, &fleet::FleetRestore::prepared, [&] { prepared = true; });
-        QObject::connect(&restore, &fleet::FleetRestore::finished, [&] { finished = true; });
-        QElapsedTimer t;
-        t.start();
-        restore.prepare(jobs);
-        bench::waitUntil([&] { return prepared; }, 120000);
-        const qint64 prepareNs = t.nsecsElapsed();
-        restore.execute(false);
-        bench::waitUntil([&] { return finished; }, 120000);
-        const double totalMs = t.nsecsElapsed() / 1e6;
-        double writeLimitS = 0;
-        for (const fleet::RestorePlan &p : restore.plans()) {
-            const auto frames = fleet::FleetCatalog::writes(
-                p.targetId(), Generation::V2_35, p.source.valueMap(), p.changedKeys(), false);
-            for (const fleet::ParamFrame &f : frames)
-                writeLimitS += bus::BusTiming::transactionTimeS(f.request.command, 1000000);
-        }
-        const double limitMs =
-            (2 * 32 * readLimitS(Generation::V2_35, 1000000) + writeLimitS) * 1000;
-        line.add(QStringLiteral("restore_v235_1M_ms"), totalMs, 1);
-        line.add(QStringLiteral("restore_v235_1M_limit_ms"), limitMs, 1);
-        line.add(QStringLiteral("restore_write_ms"), totalMs - prepareNs / 1e6, 1);
-        line.addInt(QStringLiteral("drives_verified"),
-                    std::count_if(restore.reports().begin(), restore.reports().end(),
-                                  [](const fleet::DriveReport &r) {
-                                      return r.outcome == fleet::DriveReport::Outcome::Verified;
-                                  }));
+        measureRestore(run, drives, line);
         collisions += run.collisions();
     }
     line.addInt(QStringLiteral("drives_read_ok"), readOk);
