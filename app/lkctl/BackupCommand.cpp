@@ -4,6 +4,8 @@
 #include "FleetBus.h"
 #include "LiveBus.h"
 
+#include <fleet/IdMap.h>
+
 #include <QtCore/QJsonDocument>
 
 namespace lk::lkctl {
@@ -61,7 +63,7 @@ int BackupCommand::run(const QStringList &args, Console &console)
         return usageError(console, QStringLiteral("unexpected argument '%1'").arg(pos.at(1)));
     QString error;
     const std::optional<QVector<int>> asked =
-        FleetBus::parseIds(pos.value(0, QStringLiteral("all")), &error);
+        fleet::IdMap::parseIds(pos.value(0, QStringLiteral("all")), &error);
     if (!asked)
         return usageError(console, error);
     const QString out = parser.value(QStringLiteral("out"));

@@ -4,6 +4,8 @@
 #include "FleetBus.h"
 #include "LiveBus.h"
 
+#include <fleet/IdMap.h>
+
 #include <fleet/ParamDiff.h>
 
 #include <QtCore/QJsonDocument>
@@ -80,9 +82,9 @@ int DiffCommand::run(const QStringList &args, Console &console)
         if (pos.size() > 1)
             return usageError(console, QStringLiteral("unexpected argument '%1'").arg(pos.at(1)));
         if (parser.isSet(QStringLiteral("map"))) {
-            const auto m = FleetBus::parseMap(parser.value(QStringLiteral("map")), &error);
+            const auto m = fleet::IdMap::parseMap(parser.value(QStringLiteral("map")), &error);
             if (!m)
-                return usageError(console, error);
+                return usageError(console, QStringLiteral("--map: ") + error);
             map = *m;
         }
         file = FleetBus::loadBackup(console, name(), pos.first());

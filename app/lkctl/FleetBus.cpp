@@ -9,64 +9,6 @@
 
 namespace lk::lkctl {
 
-namespace {
-std::optional<int> idOf(const QString &text)
-{
-    bool ok = false;
-    const int id = text.trimmed().toInt(&ok);
-    if (!ok || id < protocol::kMinId || id > protocol::kMaxId)
-        return std::nullopt;
-    return id;
-}
-} // namespace
-
-std::optional<QVector<int>> FleetBus::parseIds(const QString &text, QString *error)
-{
-    QVector<int> ids;
-    if (text == QLatin1String("all"))
-        return ids;
-    for (const QString &part : text.split(QLatin1Char(','))) {
-        const QStringList range = part.split(QLatin1Char('-'));
-        const std::optional<int> from = idOf(range.first());
-        const std::optional<int> to = range.size() == 2 ? idOf(range.last()) : from;
-        if (range.size() > 2 || !from || !to || *to < *from) {
-            *error = QStringLiteral("'%1' is not a drive ID 1..32 or a range such as 1-4 (IDS is "
-                                    "all, 3, 1,2,5 or 1-4)")
-                         .arg(part);
-            return std::nullopt;
-        }
-        for (int id = *from; id <= *to; ++id) {
-            if (!ids.contains(id))
-                ids << id;
-        }
-    }
-    return ids;
-}
-
-std::optional<QMap<int, int>> FleetBus::parseMap(const QString &text, QString *error)
-{
-    QMap<int, int> map;
-    QList<int> targets;
-    for (const QString &part : text.split(QLatin1Char(','))) {
-        const QStringList ab = part.split(QLatin1Char(':'));
-        const std::optional<int> a = ab.size() == 2 ? idOf(ab.first()) : std::nullopt;
-        const std::optional<int> b = ab.size() == 2 ? idOf(ab.last()) : std::nullopt;
-        if (!a || !b) {
-            *error = QStringLiteral("--map entry '%1' is not OLD:NEW with two drive IDs 1..32 "
-                                    "(e.g. --map 3:5,4:6)")
-                         .arg(part);
-            return std::nullopt;
-        }
-        if (map.contains(*a) || targets.contains(*b)) {
-            *error = QStringLiteral("--map entry '%1' maps a drive already mapped").arg(part);
-            return std::nullopt;
-        }
-        map.insert(*a, *b);
-        targets << *b;
-    }
-    return map;
-}
-
 QVector<int> FleetBus::scanIds(LiveBus &bus)
 {
     bus::ScanOptions options;

@@ -20,12 +20,6 @@ class LiveBus;
 /// and their JSON.
 class FleetBus {
 public:
-    /// "all" -> empty (every drive that answers a scan), "3", "1,2,5", "1-4"; nullopt with
-    /// `error` otherwise.
-    static std::optional<QVector<int>> parseIds(const QString &text, QString *error);
-    /// "3:5,4:6" (old drive 3 -> new drive 5); nullopt with `error` naming the entry.
-    static std::optional<QMap<int, int>> parseMap(const QString &text, QString *error);
-
     /// The IDs of the drives that answer a scan of 1..32 (for "all").
     static QVector<int> scanIds(LiveBus &bus);
     /// Reads every parameter of `ids`, one drive after another.

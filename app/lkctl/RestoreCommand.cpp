@@ -4,6 +4,8 @@
 #include "FleetBus.h"
 #include "LiveBus.h"
 
+#include <fleet/IdMap.h>
+
 #include <QtCore/QJsonDocument>
 
 namespace lk::lkctl {
@@ -161,7 +163,8 @@ std::optional<QVector<FleetRestore::Job>> RestoreCommand::restoreJobs(const ArgP
     const QStringList &pos = parser.positionals();
     QString error;
     std::optional<QVector<int>> only = QVector<int>();
-    if (pos.size() > 2 || (pos.size() == 2 && !(only = FleetBus::parseIds(pos.at(1), &error)))) {
+    if (pos.size() > 2 ||
+        (pos.size() == 2 && !(only = fleet::IdMap::parseIds(pos.at(1), &error)))) {
         usageError(console, error.isEmpty()
                                 ? QStringLiteral("unexpected argument '%1'").arg(pos.at(2))
                                 : error);
@@ -169,9 +172,9 @@ std::optional<QVector<FleetRestore::Job>> RestoreCommand::restoreJobs(const ArgP
     }
     QMap<int, int> map;
     if (parser.isSet(QStringLiteral("map"))) {
-        const auto m = FleetBus::parseMap(parser.value(QStringLiteral("map")), &error);
+        const auto m = fleet::IdMap::parseMap(parser.value(QStringLiteral("map")), &error);
         if (!m) {
-            usageError(console, error);
+            usageError(console, QStringLiteral("--map: ") + error);
             return std::nullopt;
         }
         map = *m;
@@ -234,7 +237,7 @@ int RestoreCommand::run(const QStringList &args, Console &console)
     } else {
         from = parseId(pos.first(), &error, QStringLiteral("FROM"));
         for (const QString &p : pos.mid(1)) {
-            const auto ids = FleetBus::parseIds(p, &error);
+            const auto ids = fleet::IdMap::parseIds(p, &error);
             if (!from || !ids || ids->isEmpty() || ids->contains(*from))
                 return usageError(console, error.isEmpty()
                                                ? QStringLiteral("TO must be drives other than "

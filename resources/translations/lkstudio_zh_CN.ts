@@ -254,6 +254,21 @@
     </message>
 </context>
 <context>
+    <name>lk::fleet::IdMap</name>
+    <message>
+        <source>&apos;%1&apos; is not a drive ID 1..32 or a range such as 1-4 (all, 3, 1,2,5 or 1-4)</source>
+        <translation>“%1”不是 1..32 之间的驱动 ID，也不是 1-4 这样的范围（all、3、1,2,5 或 1-4）</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not OLD:NEW with two drive IDs 1..32 (e.g. 3:5,4:6)</source>
+        <translation>“%1”不是由两个 1..32 之间的驱动 ID 组成的 旧:新 格式（例如 3:5,4:6）</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; maps a drive that is already mapped</source>
+        <translation>“%1”映射了一个已经映射过的驱动</translation>
+    </message>
+</context>
+<context>
     <name>lk::protocol::ErrorFlags</name>
     <message>
         <source>low voltage</source>
@@ -3898,6 +3913,22 @@ not read</source>
     <message>
         <source>Clone drive %1</source>
         <translation>复制驱动 %1</translation>
+    </message>
+    <message>
+        <source>ID map, e.g. 3:5</source>
+        <translation>ID 映射，例如 3:5</translation>
+    </message>
+    <message>
+        <source>Restore the backup&apos;s drive 3 onto drive 5 (a replaced drive). With a map, only the mapped drives are restored.</source>
+        <translation>把备份中的 3 号驱动恢复到 5 号驱动（更换后的驱动）。填写映射后，只恢复映射中的驱动。</translation>
+    </message>
+    <message>
+        <source>The ID map is refused, nothing was sent: %1</source>
+        <translation>ID 映射被拒绝，未发送任何内容：%1</translation>
+    </message>
+    <message>
+        <source>%1 holds none of the drives of the ID map: nothing was sent.</source>
+        <translation>%1 中没有 ID 映射里的任何驱动：未发送任何内容。</translation>
     </message>
 </context>
 <context>

@@ -12,6 +12,7 @@
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QLabel>
+#include <QtWidgets/QLineEdit>
 #include <QtWidgets/QPlainTextEdit>
 #include <QtWidgets/QProgressBar>
 #include <QtWidgets/QPushButton>
@@ -90,6 +91,7 @@ private slots:
     void cloneShowsTheDiffBeforeWriting();
     void romAsksFirstAndSendsNothingWhenDeclined();
     void restoreRefusesADamagedFile();
+    void restoreFollowsTheIdMap();
 };
 
 void tst_ParametersView::readAllShowsDrivesAndUnknown()
@@ -210,6 +212,32 @@ void tst_ParametersView::restoreRefusesADamagedFile()
     QVERIFY(
         v.view.findChild<QLabel *>(QStringLiteral("status"))->text().contains("not valid JSON"));
     QCOMPARE(v.rig.count(1, Command::WritePidRam) + v.rig.count(2, Command::WritePidRam), 0);
+}
+
+void tst_ParametersView::restoreFollowsTheIdMap()
+{
+    ViewRig v;
+    QVERIFY(v.open({1, 2}));
+    QVERIFY(v.readAll());
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("bus.json"));
+    QCOMPARE(v.view.backupTo(path), QString());
+    auto *map = v.view.findChild<QLineEdit *>(QStringLiteral("idMap"));
+    map->setText(QStringLiteral("1:x"));
+    QVERIFY(!v.view.restoreFrom(path)); // refused, naming the entry
+    QVERIFY(v.view.findChild<QLabel *>(QStringLiteral("status"))->text().contains("1:x"));
+    map->setText(QStringLiteral("1:2")); // drive 1 replaced by drive 2
+    ui::FleetWriteDialog *d = v.view.restoreFrom(path);
+    QVERIFY(waitPrepared(d));
+    QVERIFY2(d->text().contains(QStringLiteral("Drive 2 from drive 1")), qPrintable(d->text()));
+    QCOMPARE(d->restore().plans().size(), 1);
+    d->findChild<QPushButton *>(QStringLiteral("writeRam"))->click();
+    QVERIFY(QTest::qWaitFor([d] { return d->finished(); }, kWaitMs));
+    QCOMPARE(v.rig.count(1, Command::WritePidRam), 0);
+    protocol::PidGains one, two;
+    v.rig.withDrive(1, [&](sim::SimDrive &s) { one = s.ramPid(); });
+    v.rig.withDrive(2, [&](sim::SimDrive &s) { two = s.ramPid(); });
+    QVERIFY(one == two);
 }
 
 QTEST_MAIN(tst_ParametersView)

@@ -1,6 +1,7 @@
 #include "FleetData.h"
 
 #include <fleet/FleetCatalog.h>
+#include <fleet/IdMap.h>
 #include <fleet/ParamDiff.h>
 #include <fleet/RestorePlan.h>
 
@@ -23,6 +24,8 @@ private slots:
     void writesCarryOnlyWhatChanges_data();
     void writesCarryOnlyWhatChanges();
     void diffMarksUnknownNeverEqual();
+    void idListsAndMaps_data();
+    void idListsAndMaps();
 };
 
 using Edit = std::function<void(fleet::DriveSnapshot &source, fleet::DriveSnapshot &target)>;
@@ -145,6 +148,38 @@ void tst_RestorePlan::diffMarksUnknownNeverEqual()
     QVERIFY(kd != mixed.end());
     QVERIFY(!kd->a);
     QCOMPARE(kd->state(), fleet::DiffRow::State::Unknown);
+}
+
+void tst_RestorePlan::idListsAndMaps_data()
+{
+    QTest::addColumn<QString>("ids");
+    QTest::addColumn<QString>("map");
+    QTest::addColumn<bool>("ok");
+    QTest::newRow("all") << "all"
+                         << "3:5" << true;
+    QTest::newRow("list and range") << "1,3-5"
+                                    << "3:5,4:6" << true;
+    QTest::newRow("id 0") << "0"
+                          << "0:5" << false;
+    QTest::newRow("id 33") << "1-33"
+                           << "3:33" << false;
+    QTest::newRow("backwards range") << "5-3"
+                                     << "3" << false;
+    QTest::newRow("two onto one") << "x"
+                                  << "3:5,4:5" << false;
+    QTest::newRow("one onto two") << "1--2"
+                                  << "3:5,3:6" << false;
+}
+
+void tst_RestorePlan::idListsAndMaps()
+{
+    QFETCH(QString, ids);
+    QFETCH(QString, map);
+    QFETCH(bool, ok);
+    QString error;
+    QCOMPARE(fleet::IdMap::parseIds(ids, &error).has_value(), ok);
+    QCOMPARE(fleet::IdMap::parseMap(map, &error).has_value(), ok);
+    QVERIFY(ok || error.contains(map.section(',', -1)) || error.contains(map));
 }
 
 QTEST_GUILESS_MAIN(tst_RestorePlan)

@@ -5,6 +5,7 @@
 
 #include <bus/BusSession.h>
 #include <fleet/BackupFile.h>
+#include <fleet/IdMap.h>
 
 #include <QtCore/QDir>
 #include <QtCore/QStandardPaths>
@@ -13,6 +14,7 @@
 #include <QtWidgets/QFileDialog>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
+#include <QtWidgets/QLineEdit>
 #include <QtWidgets/QProgressBar>
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QTableWidget>
@@ -53,6 +55,11 @@ ParametersView::ParametersView(QWidget *parent) : QWidget(parent)
     m_restore->setObjectName(QStringLiteral("restore"));
     m_restore->setToolTip(tr("Writes a backup's values onto the drives of the same IDs: the "
                              "targets are read and the changes shown first"));
+    m_idMap = new QLineEdit(this);
+    m_idMap->setObjectName(QStringLiteral("idMap"));
+    m_idMap->setPlaceholderText(tr("ID map, e.g. 3:5"));
+    m_idMap->setToolTip(tr("Restore the backup's drive 3 onto drive 5 (a replaced drive). With "
+                           "a map, only the mapped drives are restored."));
     m_clone = new QPushButton(tr("Clone reference..."), this);
     m_clone->setObjectName(QStringLiteral("cloneReference"));
     m_clone->setToolTip(tr("Writes the reference drive's values onto the other drives read: "
@@ -62,6 +69,7 @@ ParametersView::ParametersView(QWidget *parent) : QWidget(parent)
     m_status->setWordWrap(true);
     bottom->addWidget(m_backup);
     bottom->addWidget(m_restore);
+    bottom->addWidget(m_idMap);
     bottom->addWidget(m_clone);
     bottom->addWidget(m_status, 1);
     layout->addLayout(top);
@@ -219,9 +227,24 @@ FleetWriteDialog *ParametersView::restoreFrom(const QString &path)
                               .arg(path, fleet::BackupFile::errorText(error)));
         return nullptr;
     }
+    QString why;
+    const QString mapText = m_idMap->text().trimmed();
+    const std::optional<QMap<int, int>> map =
+        mapText.isEmpty() ? QMap<int, int>() : fleet::IdMap::parseMap(mapText, &why);
+    if (!map) {
+        m_status->setText(tr("The ID map is refused, nothing was sent: %1").arg(why));
+        return nullptr;
+    }
     QVector<fleet::FleetRestore::Job> jobs;
-    for (const fleet::DriveSnapshot &d : file->drives)
-        jobs << fleet::FleetRestore::Job{d, d.id()};
+    for (const fleet::DriveSnapshot &d : file->drives) {
+        if (map->isEmpty() || map->contains(d.id()))
+            jobs << fleet::FleetRestore::Job{d, map->value(d.id(), d.id())};
+    }
+    if (jobs.isEmpty()) {
+        m_status->setText(
+            tr("%1 holds none of the drives of the ID map: nothing was sent.").arg(path));
+        return nullptr;
+    }
     return openWriteDialog(jobs, tr("Restore %1").arg(QDir::toNativeSeparators(path)));
 }
 

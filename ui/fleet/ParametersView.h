@@ -10,6 +10,7 @@
 class QCheckBox;
 class QComboBox;
 class QLabel;
+class QLineEdit;
 class QProgressBar;
 class QPushButton;
 class QTableWidget;
@@ -41,8 +42,9 @@ public:
     void cancelRead();
     /// Saves the last read (every drive of it) to `path`; an error text, empty on success.
     QString backupTo(const QString &path) const;
-    /// Opens the restore dialog for the backup at `path` (each entry onto the same ID);
-    /// nullptr, with the reason in the status line, when the file is refused.
+    /// Opens the restore dialog for the backup at `path`: each entry onto the same ID, or,
+    /// when the ID map ("3:5,4:6") is filled in, only the mapped entries onto their new IDs.
+    /// nullptr, with the reason in the status line, when the file or the map is refused.
     FleetWriteDialog *restoreFrom(const QString &path);
     /// Opens the clone dialog: the reference drive's values onto every other drive read.
     FleetWriteDialog *cloneReference();
@@ -72,6 +74,7 @@ private:
     QTableWidget *m_table;
     QPushButton *m_backup;
     QPushButton *m_restore;
+    QLineEdit *m_idMap;
     QPushButton *m_clone;
     QLabel *m_status;
 };
