@@ -61,9 +61,10 @@ QString Dispatcher::usage() const
         "  3  decode: the input held bytes that were not valid frames\n"
         "  4  refused for safety, nothing was sent: a control command over a series or soft\n"
         "     limit, a ROM write without --yes, a brake release without --yes (or with\n"
-        "     the motor off, without --motor-off-ok), or a zero or turn-count clear\n"
-        "     without --yes\n"
-        "  5  write: the value read back differs from the value written; brake: the drive\n"
+        "     the motor off, without --motor-off-ok), a zero or turn-count clear\n"
+        "     without --yes, or a restore or clone with a refused target\n"
+        "  5  write, restore, clone: the value read back differs from the value written;\n"
+        "     diff: some value differs; brake: the drive\n"
         "     reports another brake state than the one asked for; clear-errors, zero,\n"
         "     clear-turns: the drive read back does not show the change\n");
     return text;

@@ -1,8 +1,10 @@
+#include "BackupCommand.h"
 #include "BrakeCommand.h"
 #include "ClearErrorsCommand.h"
 #include "Console.h"
 #include "ControlCommand.h"
 #include "DecodeCommand.h"
+#include "DiffCommand.h"
 #include "Dispatcher.h"
 #include "EncodeCommand.h"
 #include "ExportCommand.h"
@@ -13,6 +15,7 @@
 #include "MotorStateCommand.h"
 #include "ReadCommand.h"
 #include "ReplayCommand.h"
+#include "RestoreCommand.h"
 #include "ScanCommand.h"
 #include "StepCommand.h"
 #include "TuneCommand.h"
@@ -59,6 +62,10 @@ int main(int argc, char *argv[])
     dispatcher.add(std::make_unique<TuneCommand>());
     dispatcher.add(std::make_unique<MonitorCommand>());
     dispatcher.add(std::make_unique<ListenCommand>());
+    dispatcher.add(std::make_unique<BackupCommand>());
+    dispatcher.add(std::make_unique<DiffCommand>());
+    dispatcher.add(std::make_unique<RestoreCommand>(RestoreCommand::Kind::Restore));
+    dispatcher.add(std::make_unique<RestoreCommand>(RestoreCommand::Kind::Clone));
     dispatcher.add(std::make_unique<EncodeCommand>());
     dispatcher.add(std::make_unique<DecodeCommand>());
     dispatcher.add(std::make_unique<ExportCommand>());

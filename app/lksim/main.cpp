@@ -8,6 +8,7 @@
 #include <sim/ControllerSpec.h>
 #include <sim/SimBus.h>
 #include <sim/SimBusSpec.h>
+#include <sim/SimParamsSeed.h>
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QCoreApplication>
@@ -122,6 +123,15 @@ int main(int argc, char *argv[])
         QStringLiteral("Persist each drive's ROM (PID, zero) in DIR, so ROM writes survive a "
                        "restart of lksim. Without it ROM lives in memory only."),
         QStringLiteral("dir"));
+    // Distinct parameters per drive, so that a bus has something to compare and restore.
+    const QCommandLineOption paramSeed(
+        QStringLiteral("param-seed"),
+        QStringLiteral("Give each drive distinct PID gains, acceleration, encoder zero and "
+                       "(V2.35) limits, derived from N and its ID (the same N gives the same "
+                       "values). A drive whose ROM is stored in --rom-dir keeps it; the seeded "
+                       "values are stored there, so they persist."),
+        QStringLiteral("n"));
+    parser.addOption(paramSeed);
     const QCommandLineOption faults(
         QStringLiteral("faults"),
         QStringLiteral("Inject faults: comma-separated drop=P, corrupt=P, length=P, garbage=P, "
@@ -254,6 +264,12 @@ int main(int argc, char *argv[])
     bus->setReplyDelay(delayUs * 1e-6);
     for (const QString &e : bus->romStore().errors())
         std::fprintf(stderr, "lksim: %s\n", qPrintable(e));
+    if (parser.isSet(paramSeed)) {
+        const uint seed = parser.value(paramSeed).toUInt(&ok);
+        if (!ok)
+            return fail(QStringLiteral("--param-seed must be a number 0..4294967295"));
+        lk::sim::SimParamsSeed::apply(*bus, seed);
+    }
     if (parser.isSet(faults) && !bus->faults().configure(parser.value(faults), &error))
         return fail(QStringLiteral("--faults: %1").arg(error));
     const double badChecksum = parser.value(badChecksumPct).toDouble(&ok);

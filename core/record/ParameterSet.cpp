@@ -1,7 +1,8 @@
 #include "ParameterSet.h"
 
+#include "ParameterFileCheck.h"
+
 #include <system/AtomicFile.h>
-#include <system/BoundedFile.h>
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QJsonArray>
@@ -40,14 +41,8 @@ const GainField kGains[] = {
     {"iq_kp", &protocol::PidGains::iqKp},       {"iq_ki", &protocol::PidGains::iqKi},
 };
 
-/// One key of the format: what it holds, its range, whether a file must have it.
-struct Field {
-    const char *key;
-    ValueType type;
-    double min = 0;
-    double max = 0;
-    bool required = true;
-};
+using Field = FileField;
+using Check = ParameterFileCheck;
 
 const std::vector<Field> &rootFields()
 {
@@ -93,191 +88,9 @@ const std::vector<Field> &pidFields(protocol::Generation generation)
     return generation == protocol::Generation::V2_3 ? v23 : v235;
 }
 
-bool refuse(ParameterFileError *error, ParameterFileError e)
-{
-    if (error)
-        *error = std::move(e);
-    return false;
-}
-
-QString jsonText(const QJsonValue &v)
-{
-    const QByteArray array = QJsonDocument(QJsonArray{v}).toJson(QJsonDocument::Compact);
-    return QString::fromUtf8(array.mid(1, array.size() - 2)); // without the brackets
-}
-
-ParameterFileError keyError(Kind kind, const QString &key, const Field &field,
-                            const QJsonValue &found)
-{
-    ParameterFileError e;
-    e.kind = kind;
-    e.key = key;
-    e.expected = field.type;
-    e.min = field.min;
-    e.max = field.max;
-    if (!found.isUndefined())
-        e.found = jsonText(found);
-    return e;
-}
-
-// A text key whose text means nothing here (an unknown series, a date that is not one).
-ParameterFileError textError(Kind kind, const QString &key, const QJsonValue &found)
-{
-    ParameterFileError e;
-    e.kind = kind;
-    e.key = key;
-    e.expected = ValueType::Text;
-    e.found = jsonText(found);
-    return e;
-}
-
-bool checkValue(const QJsonValue &v, const Field &f, const QString &key, ParameterFileError *error)
-{
-    bool typeOk = false;
-    switch (f.type) {
-    case ValueType::Object:
-        typeOk = v.isObject();
-        break;
-    case ValueType::Text:
-        typeOk = v.isString();
-        break;
-    case ValueType::Integer:
-    case ValueType::Number: {
-        const double d = v.toDouble(std::numeric_limits<double>::quiet_NaN());
-        typeOk =
-            v.isDouble() && std::isfinite(d) && (f.type == ValueType::Number || d == std::floor(d));
-        if (typeOk && (d < f.min || d > f.max))
-            return refuse(error, keyError(Kind::OutOfRange, key, f, v));
-        break;
-    }
-    }
-    return typeOk || refuse(error, keyError(Kind::WrongType, key, f, v));
-}
-
-// Every key known, every required key there, every value of its type and in its range.
-bool checkObject(const QJsonObject &o, const QString &prefix, const std::vector<Field> &fields,
-                 ParameterFileError *error)
-{
-    for (auto it = o.begin(); it != o.end(); ++it) {
-        const bool known = std::any_of(fields.begin(), fields.end(), [&](const Field &f) {
-            return it.key() == QLatin1String(f.key);
-        });
-        if (!known) {
-            ParameterFileError e;
-            e.kind = Kind::UnknownKey;
-            e.key = prefix + it.key();
-            return refuse(error, e);
-        }
-    }
-    for (const Field &f : fields) {
-        const QString key = prefix + QLatin1String(f.key);
-        const QJsonValue v = o.value(QLatin1String(f.key));
-        if (v.isUndefined() || (v.isNull() && !f.required)) {
-            if (f.required)
-                return refuse(error, keyError(Kind::MissingKey, key, f, QJsonValue::Undefined));
-            continue;
-        }
-        if (!checkValue(v, f, key, error))
-            return false;
-    }
-    return true;
-}
-
-// Where the string token starting with the quote at `from` ends (its closing quote).
-qsizetype stringEnd(const QByteArray &json, qsizetype from)
-{
-    qsizetype i = from + 1;
-    while (i < json.size() && json.at(i) != '"')
-        i += json.at(i) == '\\' ? 2 : 1;
-    return i;
-}
-
-QString decodeKey(const QByteArray &token)
-{
-    if (!token.contains('\\'))
-        return QString::fromUtf8(token.mid(1, token.size() - 2));
-    const QByteArray wrapped = '[' + token + ']';
-    return QJsonDocument::fromJson(wrapped).array().at(0).toString();
-}
-
-// QJsonDocument keeps one of two equal keys without a word; a hand-edited file that gives
-// "iq_kp" twice must be refused instead. Runs on text QJsonDocument has accepted, so the
-// syntax is valid and only strings, objects and arrays need following. Returns the dotted
-// path of the first key given twice.
-std::optional<QString> findDuplicateKey(const QByteArray &json)
-{
-    struct Level {
-        bool object = false;
-        bool expectKey = false;
-        QString path;
-        QSet<QString> keys;
-    };
-    std::vector<Level> stack;
-    QString lastPath; // the path of the last key read: a '{' or '[' after it is its value
-    for (qsizetype i = 0; i < json.size(); ++i) {
-        const char c = json.at(i);
-        if (c == '{' || c == '[') {
-            const bool inObject = !stack.empty() && stack.back().object;
-            const QString path = inObject        ? lastPath
-                                 : stack.empty() ? QString()
-                                                 : stack.back().path;
-            stack.push_back({c == '{', c == '{', path, {}});
-        } else if ((c == '}' || c == ']') && !stack.empty()) {
-            stack.pop_back();
-        } else if (c == ',' && !stack.empty()) {
-            stack.back().expectKey = stack.back().object;
-        } else if (c == '"') {
-            const qsizetype end = stringEnd(json, i);
-            if (!stack.empty() && stack.back().expectKey) {
-                Level &level = stack.back();
-                const QString key = decodeKey(json.mid(i, end - i + 1));
-                lastPath = level.path.isEmpty() ? key : level.path + QLatin1Char('.') + key;
-                if (level.keys.contains(key))
-                    return lastPath;
-                level.keys.insert(key);
-                level.expectKey = false;
-            }
-            i = end;
-        }
-    }
-    return std::nullopt;
-}
-
-bool readHeader(const QJsonObject &root, ParameterFileError *error)
-{
-    const QJsonValue format = root.value(QStringLiteral("format"));
-    if (format.toString() != QLatin1String(kFormat)) {
-        ParameterFileError e;
-        e.kind = Kind::WrongFormat;
-        e.key = QStringLiteral("format");
-        if (!format.isUndefined())
-            e.found = jsonText(format);
-        return refuse(error, e);
-    }
-    // Checked before the other keys: a newer format may have keys this one does not know.
-    const Field &versionField =
-        *std::find_if(rootFields().begin(), rootFields().end(),
-                      [](const Field &f) { return qstrcmp(f.key, "version") == 0; });
-    const QJsonValue version = root.value(QLatin1String(versionField.key));
-    if (version.isUndefined())
-        return refuse(error, keyError(Kind::MissingKey, QLatin1String(versionField.key),
-                                      versionField, version));
-    if (!checkValue(version, versionField, QLatin1String(versionField.key), error))
-        return false;
-    if (version.toInteger() > ParameterSet::kFormatVersion) {
-        ParameterFileError e;
-        e.kind = Kind::NewerVersion;
-        e.key = QLatin1String(versionField.key);
-        e.found = jsonText(version);
-        e.max = ParameterSet::kFormatVersion;
-        return refuse(error, e);
-    }
-    return true;
-}
-
 bool readDrive(const QJsonObject &d, ParameterSet &set, ParameterFileError *error)
 {
-    if (!checkObject(d, QStringLiteral("drive."), driveFields(), error))
+    if (!Check::checkObject(d, QStringLiteral("drive."), driveFields(), error))
         return false;
     set.driveId = d.value(QStringLiteral("id")).toInt();
     set.driverName = d.value(QStringLiteral("driver_name")).toString();
@@ -286,8 +99,8 @@ bool readDrive(const QJsonObject &d, ParameterSet &set, ParameterFileError *erro
     if (series.isString()) {
         set.series = protocol::seriesFromName(series.toString());
         if (!set.series)
-            return refuse(error,
-                          textError(Kind::UnknownSeries, QStringLiteral("drive.series"), series));
+            return Check::refuse(error, Check::textError(Kind::UnknownSeries,
+                                                         QStringLiteral("drive.series"), series));
     }
     set.hardwareVersion = d.value(QStringLiteral("hardware_version")).toDouble();
     set.firmwareVersion = d.value(QStringLiteral("firmware_version")).toDouble();
@@ -296,7 +109,8 @@ bool readDrive(const QJsonObject &d, ParameterSet &set, ParameterFileError *erro
 
 bool readBody(const QJsonObject &root, ParameterSet &set, ParameterFileError *error)
 {
-    if (!readHeader(root, error) || !checkObject(root, QString(), rootFields(), error))
+    if (!Check::checkHeader(root, kFormat, ParameterSet::kFormatVersion, error) ||
+        !Check::checkObject(root, QString(), rootFields(), error))
         return false;
     if (!readDrive(root.value(QStringLiteral("drive")).toObject(), set, error))
         return false;
@@ -304,24 +118,25 @@ bool readBody(const QJsonObject &root, ParameterSet &set, ParameterFileError *er
     if (savedAt.isString()) {
         set.savedAt = QDateTime::fromString(savedAt.toString(), Qt::ISODateWithMs);
         if (!set.savedAt.isValid())
-            return refuse(error,
-                          textError(Kind::BadTimestamp, QStringLiteral("saved_at"), savedAt));
+            return Check::refuse(
+                error, Check::textError(Kind::BadTimestamp, QStringLiteral("saved_at"), savedAt));
     }
     const QJsonValue generation = root.value(QStringLiteral("generation"));
     if (generation.isString()) {
         const auto g = protocol::generationFromName(generation.toString());
         if (!g)
-            return refuse(error, textError(Kind::UnknownGeneration, QStringLiteral("generation"),
-                                           generation));
+            return Check::refuse(error, Check::textError(Kind::UnknownGeneration,
+                                                         QStringLiteral("generation"), generation));
         set.generation = *g;
     }
     const QJsonObject pid = root.value(QStringLiteral("pid")).toObject();
-    if (!checkObject(pid, QStringLiteral("pid."), pidFields(set.generation), error))
+    if (!Check::checkObject(pid, QStringLiteral("pid."), pidFields(set.generation), error))
         return false;
     const QJsonValue accel = root.value(QStringLiteral("accel_dps2"));
     if (set.generation == protocol::Generation::V2_35) {
         if (!accel.isUndefined()) // V2.35 has no 0x33/0x34: its ramps are drive limits
-            return refuse(error, textError(Kind::UnknownKey, QStringLiteral("accel_dps2"), accel));
+            return Check::refuse(
+                error, Check::textError(Kind::UnknownKey, QStringLiteral("accel_dps2"), accel));
         for (std::size_t i = 0; i < set.pidV235.size(); ++i)
             set.pidV235[i] = static_cast<quint16>(pid.value(QLatin1String(kGainsV235[i])).toInt());
         return true;
@@ -375,31 +190,11 @@ QByteArray ParameterSet::toJsonBytes() const
 std::optional<ParameterSet> ParameterSet::fromJson(const QByteArray &bytes,
                                                    ParameterFileError *error)
 {
-    QJsonParseError parseError;
-    const QJsonDocument doc = QJsonDocument::fromJson(bytes, &parseError);
-    if (parseError.error != QJsonParseError::NoError) {
-        ParameterFileError e;
-        e.kind = Kind::NotJson;
-        e.detail = parseError.errorString();
-        e.offset = parseError.offset;
-        refuse(error, e);
+    QJsonObject root;
+    if (!Check::parseObject(bytes, root, error))
         return std::nullopt;
-    }
-    if (!doc.isObject()) {
-        ParameterFileError e;
-        e.kind = Kind::NotObject;
-        refuse(error, e);
-        return std::nullopt;
-    }
-    if (const std::optional<QString> twice = findDuplicateKey(bytes)) {
-        ParameterFileError e;
-        e.kind = Kind::DuplicateKey;
-        e.key = *twice;
-        refuse(error, e);
-        return std::nullopt;
-    }
     ParameterSet set;
-    if (!readBody(doc.object(), set, error))
+    if (!readBody(root, set, error))
         return std::nullopt;
     return set;
 }
@@ -412,19 +207,9 @@ QString ParameterSet::save(const QString &path) const
 std::optional<ParameterSet> ParameterSet::load(const QString &path, ParameterFileError *error)
 {
     ParameterFileError e;
-    const system::BoundedRead file = system::BoundedFile::read(path, kMaxFileBytes);
     std::optional<ParameterSet> set;
-    if (file.ok()) {
-        set = fromJson(file.bytes, &e);
-    } else if (file.error->kind == system::FileReadError::Kind::TooLarge) {
-        e.kind = Kind::TooLarge;
-        e.max = double(kMaxFileBytes);
-        e.found = QString::number(file.error->size);
-        e.detail = file.error->reason();
-    } else {
-        e.kind = Kind::CannotRead; // a directory, a FIFO, a device: refused unopened
-        e.detail = file.error->reason();
-    }
+    if (const std::optional<QByteArray> bytes = Check::readFile(path, kMaxFileBytes, &e))
+        set = fromJson(*bytes, &e);
     e.path = path;
     if (!set && error)
         *error = e;

@@ -59,6 +59,16 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::FleetWriteDialog</name>
+    <message numerus="yes">
+        <source>%n value(s) change</source>
+        <translation>
+            <numerusform>%n value changes</numerusform>
+            <numerusform>%n values change</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::OverviewPanel</name>
     <message numerus="yes">
         <source>%n drive(s) on the bus</source>

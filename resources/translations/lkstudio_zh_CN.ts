@@ -202,6 +202,96 @@
     </message>
 </context>
 <context>
+    <name>lk::fleet::BackupFile</name>
+    <message>
+        <source>a number in %1..%2</source>
+        <translation>%1..%2 之间的数值</translation>
+    </message>
+    <message>
+        <source>text in quotes</source>
+        <translation>带引号的文本</translation>
+    </message>
+    <message>
+        <source>an object ({ ... })</source>
+        <translation>对象（{ ... }）</translation>
+    </message>
+    <message>
+        <source>cannot read %1: %2</source>
+        <translation>无法读取 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is too large to be a backup (more than %2 bytes)</source>
+        <translation>%1 太大，不可能是备份文件（超过 %2 字节）</translation>
+    </message>
+    <message>
+        <source>damaged or truncated: not valid JSON (%1 at byte %2)</source>
+        <translation>文件已损坏或被截断：不是有效的 JSON（第 %2 字节处：%1）</translation>
+    </message>
+    <message>
+        <source>not a JSON object</source>
+        <translation>不是 JSON 对象</translation>
+    </message>
+    <message>
+        <source>format is %1, not &quot;%2&quot;: not a bus backup</source>
+        <translation>format 为 %1，而不是 &quot;%2&quot;：不是总线备份文件</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>缺失</translation>
+    </message>
+    <message>
+        <source>version is %1: written by a newer release (this one reads up to %2)</source>
+        <translation>version 为 %1：由更新的版本写入（本版本最高读取 %2）</translation>
+    </message>
+    <message>
+        <source>%1 is missing: it must be %2</source>
+        <translation>缺少 %1：它必须是%2</translation>
+    </message>
+    <message>
+        <source>%1 is not a key of a bus backup here</source>
+        <translation>%1 不是总线备份在此处的键</translation>
+    </message>
+    <message>
+        <source>%1 is given twice: which one is meant is not known</source>
+        <translation>%1 出现了两次：无法确定以哪一个为准</translation>
+    </message>
+    <message>
+        <source>%1 is %2: it must be %3</source>
+        <translation>%1 为 %2：它必须是%3</translation>
+    </message>
+    <message>
+        <source>%1 is %2, out of range: it must be %3</source>
+        <translation>%1 为 %2，超出范围：它必须是%3</translation>
+    </message>
+    <message>
+        <source>%1 is %2: it must be MS, MF, MG or MH</source>
+        <translation>%1 为 %2：它必须是 MS、MF、MG 或 MH</translation>
+    </message>
+    <message>
+        <source>%1 is %2: it must be &quot;v2.3&quot; or &quot;v2.35&quot;</source>
+        <translation>%1 为 %2：必须是 &quot;v2.3&quot; 或 &quot;v2.35&quot;</translation>
+    </message>
+    <message>
+        <source>%1 is %2: it must be a date and time such as &quot;2026-05-04T03:02:01.000Z&quot;</source>
+        <translation>%1 为 %2：它必须是日期时间，例如“2026-05-04T03:02:01.000Z”</translation>
+    </message>
+</context>
+<context>
+    <name>lk::fleet::IdMap</name>
+    <message>
+        <source>&apos;%1&apos; is not a drive ID 1..32 or a range such as 1-4 (all, 3, 1,2,5 or 1-4)</source>
+        <translation>“%1”不是 1..32 之间的驱动 ID，也不是 1-4 这样的范围（all、3、1,2,5 或 1-4）</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not OLD:NEW with two drive IDs 1..32 (e.g. 3:5,4:6)</source>
+        <translation>“%1”不是由两个 1..32 之间的驱动 ID 组成的 旧:新 格式（例如 3:5,4:6）</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; maps a drive that is already mapped</source>
+        <translation>“%1”映射了一个已经映射过的驱动</translation>
+    </message>
+</context>
+<context>
     <name>lk::protocol::ErrorFlags</name>
     <message>
         <source>low voltage</source>
@@ -3072,6 +3162,144 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::FleetGrid</name>
+    <message>
+        <source>ID %1
+not read</source>
+        <translation>ID %1
+未读取</translation>
+    </message>
+    <message>
+        <source>ID %1
+%2
+%3</source>
+        <translation>ID %1
+%2
+%3</translation>
+    </message>
+    <message>
+        <source>Read on this connection at %1 (UTC)</source>
+        <translation>在本次连接中于 %1（UTC）读取</translation>
+    </message>
+    <message>
+        <source>Not every value was read: %1</source>
+        <translation>并非所有值都已读取：%1</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>Differs from drive %1 (%2)</source>
+        <translation>与驱动 %1 不同（%2）</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::FleetWriteDialog</name>
+    <message>
+        <source>Reading the target drives before anything is written...</source>
+        <translation>在写入任何内容之前先读取目标驱动……</translation>
+    </message>
+    <message>
+        <source>Write to RAM</source>
+        <translation>写入 RAM</translation>
+    </message>
+    <message>
+        <source>Writes the values that change, then reads every target back. Lost at power-off.</source>
+        <translation>写入会改变的值，然后回读每个目标驱动。断电后丢失。</translation>
+    </message>
+    <message>
+        <source>Write to ROM...</source>
+        <translation>写入 ROM…</translation>
+    </message>
+    <message>
+        <source>RAM first and read back; then, for each drive that matched, the ROM frames once each (asks first).</source>
+        <translation>先写 RAM 并回读；然后对回读一致的每个驱动，每个 ROM 帧各发送一次（会先确认）。</translation>
+    </message>
+    <message>
+        <source>Drive %1 of %2 ...</source>
+        <translation>第 %1 个驱动，共 %2 个……</translation>
+    </message>
+    <message>
+        <source>Drive %1 from drive %2: </source>
+        <translation>驱动 %1（来自驱动 %2）：</translation>
+    </message>
+    <message>
+        <source>refused, nothing will be sent to it (%1): %2</source>
+        <translation>被拒绝，不会向它发送任何内容（%1）：%2</translation>
+    </message>
+    <message>
+        <source>already holds every value</source>
+        <translation>已持有全部值</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n value(s) change</source>
+        <translation>
+            <numerusform>%n 个值将改变</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The targets&apos; values could not be saved (%1): nothing will be written.</source>
+        <translation>无法保存目标驱动的当前值（%1）：不会写入任何内容。</translation>
+    </message>
+    <message>
+        <source>Targets read; their values are saved in %1 (a backup: restoring it undoes this). Nothing has been written yet.</source>
+        <translation>已读取目标驱动；其当前值保存在 %1（这是一个备份：恢复它即可撤销本次操作）。尚未写入任何内容。</translation>
+    </message>
+    <message>
+        <source>Write to ROM</source>
+        <translation>写入 ROM</translation>
+    </message>
+    <message>
+        <source>Write these values to the ROM of every drive that is not refused?</source>
+        <translation>将这些值写入每个未被拒绝的驱动的 ROM？</translation>
+    </message>
+    <message>
+        <source>ROM is the drives&apos; flash: each write wears it, and the values stay after power-off. RAM is written and read back first; ROM only where it matched, each frame once, never repeated. V2.3 drives cannot read ROM back: the report says what was not verified.</source>
+        <translation>ROM 是驱动的闪存：每次写入都会磨损它，写入的值断电后仍然保留。先写 RAM 并回读；只有回读一致的驱动才写 ROM，每帧只发送一次，绝不重发。V2.3 驱动无法回读 ROM：报告会说明哪些未经核对。</translation>
+    </message>
+    <message>
+        <source>Cancelled: nothing was sent.</source>
+        <translation>已取消：未发送任何命令。</translation>
+    </message>
+    <message>
+        <source>Writing ...</source>
+        <translation>正在写入……</translation>
+    </message>
+    <message>
+        <source>verified: written and read back equal</source>
+        <translation>已核对：写入后回读一致</translation>
+    </message>
+    <message>
+        <source>written, not all of it verifiable</source>
+        <translation>已写入，但不能全部核对</translation>
+    </message>
+    <message>
+        <source>unchanged: it already held every value, nothing was sent</source>
+        <translation>未改变：它已持有全部值，未发送任何内容</translation>
+    </message>
+    <message>
+        <source>differs: the read-back is not what was written</source>
+        <translation>不一致：回读值与写入值不同</translation>
+    </message>
+    <message>
+        <source>refused: nothing was sent</source>
+        <translation>被拒绝：未发送任何内容</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>失败</translation>
+    </message>
+    <message>
+        <source>Drive %1: %2</source>
+        <translation>驱动 %1：%2</translation>
+    </message>
+    <message>
+        <source>Done. The values before are in %1.</source>
+        <translation>完成。写入前的值保存在 %1。</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::Format</name>
     <message>
         <source>Error bit %1</source>
@@ -3898,6 +4126,129 @@
     <message>
         <source>unknown</source>
         <translation>未知</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::ParametersView</name>
+    <message>
+        <source>Read all</source>
+        <translation>全部读取</translation>
+    </message>
+    <message>
+        <source>Reads every parameter of every drive found, one drive after another. Nothing is written.</source>
+        <translation>逐个读取已发现的每个驱动的全部参数。不写入任何内容。</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Cells that differ from this drive are marked</source>
+        <translation>与该驱动不同的单元格会被标记</translation>
+    </message>
+    <message>
+        <source>Only rows that differ</source>
+        <translation>只显示有差异的行</translation>
+    </message>
+    <message>
+        <source>Reference:</source>
+        <translation>参考驱动：</translation>
+    </message>
+    <message>
+        <source>Back up...</source>
+        <translation>备份…</translation>
+    </message>
+    <message>
+        <source>Saves the values read into one bus backup file</source>
+        <translation>把读取的值保存到一个总线备份文件</translation>
+    </message>
+    <message>
+        <source>Restore...</source>
+        <translation>恢复…</translation>
+    </message>
+    <message>
+        <source>Writes a backup&apos;s values onto the drives of the same IDs: the targets are read and the changes shown first</source>
+        <translation>把备份中的值写入相同 ID 的驱动：会先读取目标驱动并显示将要改变的值</translation>
+    </message>
+    <message>
+        <source>Clone reference...</source>
+        <translation>复制参考驱动…</translation>
+    </message>
+    <message>
+        <source>Writes the reference drive&apos;s values onto the other drives read: the targets are read and the changes shown first</source>
+        <translation>把参考驱动的值写入已读取的其他驱动：会先读取目标驱动并显示将要改变的值</translation>
+    </message>
+    <message>
+        <source>Back up the bus</source>
+        <translation>备份总线</translation>
+    </message>
+    <message>
+        <source>Bus backup (*.json)</source>
+        <translation>总线备份 (*.json)</translation>
+    </message>
+    <message>
+        <source>Backed up into %1.</source>
+        <translation>已备份到 %1。</translation>
+    </message>
+    <message>
+        <source>Restore a bus backup</source>
+        <translation>恢复总线备份</translation>
+    </message>
+    <message numerus="yes">
+        <source>Reading %n drive(s) ...</source>
+        <translation>
+            <numerusform>正在读取 %n 个驱动……</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Cancelled after %n drive(s).</source>
+        <translation>
+            <numerusform>已在读取 %n 个驱动后取消。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drive(s) read.</source>
+        <translation>
+            <numerusform>已读取 %n 个驱动。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n could not be read completely: their missing values show as unknown.</source>
+        <translation>
+            <numerusform>%n 个驱动未能完整读取：缺失的值显示为未知。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Drive %1</source>
+        <translation>驱动 %1</translation>
+    </message>
+    <message>
+        <source>%1 is refused, nothing was sent: %2</source>
+        <translation>%1 被拒绝，未发送任何内容：%2</translation>
+    </message>
+    <message>
+        <source>Restore %1</source>
+        <translation>恢复 %1</translation>
+    </message>
+    <message>
+        <source>Clone drive %1</source>
+        <translation>复制驱动 %1</translation>
+    </message>
+    <message>
+        <source>ID map, e.g. 3:5</source>
+        <translation>ID 映射，例如 3:5</translation>
+    </message>
+    <message>
+        <source>Restore the backup&apos;s drive 3 onto drive 5 (a replaced drive). With a map, only the mapped drives are restored.</source>
+        <translation>把备份中的 3 号驱动恢复到 5 号驱动（更换后的驱动）。填写映射后，只恢复映射中的驱动。</translation>
+    </message>
+    <message>
+        <source>The ID map is refused, nothing was sent: %1</source>
+        <translation>ID 映射被拒绝，未发送任何内容：%1</translation>
+    </message>
+    <message>
+        <source>%1 holds none of the drives of the ID map: nothing was sent.</source>
+        <translation>%1 中没有 ID 映射里的任何驱动：未发送任何内容。</translation>
     </message>
 </context>
 <context>

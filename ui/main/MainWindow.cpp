@@ -17,6 +17,7 @@
 #include <drive/DriveInfoView.h>
 #include <drive/EncoderView.h>
 #include <drive/TuningView.h>
+#include <fleet/ParametersView.h>
 #include <panels/BusModel.h>
 #include <panels/BusPanel.h>
 #include <panels/ConnectionBar.h>
@@ -122,6 +123,15 @@ void MainWindow::buildPanels()
             ThemedIcon::get(QStringLiteral(":/icons/port.svg")));
     addView(m_driveViews->info(), QStringLiteral("info"), tr("Drive info"),
             ThemedIcon::get(QStringLiteral(":/icons/info.svg")));
+    // Every drive's parameters side by side; backup, restore and clone (ui/fleet).
+    auto *parameters = new ParametersView(m_views);
+    parameters->setSession(m_controller->session());
+    addView(parameters, QStringLiteral("parameters"), tr("Parameters"),
+            ThemedIcon::get(QStringLiteral(":/icons/export.svg")));
+    connect(m_model, &BusModel::connectionChanged, parameters,
+            [this, parameters] { parameters->setConnected(m_model->canSend()); });
+    connect(m_model, &BusModel::drivesChanged, parameters,
+            [this, parameters] { parameters->setDrives(m_model->ids()); });
 
     m_busPanel = new BusPanel(m_model, this);
     m_busDock = new QDockWidget(tr("Bus"), this);

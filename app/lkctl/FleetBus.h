@@ -1,0 +1,43 @@
+#pragma once
+
+#include <fleet/BackupFile.h>
+#include <fleet/FleetRestore.h>
+
+#include <QtCore/QJsonArray>
+#include <QtCore/QJsonObject>
+#include <QtCore/QMap>
+#include <QtCore/QString>
+#include <QtCore/QVector>
+
+#include <optional>
+
+namespace lk::lkctl {
+
+class Console;
+class LiveBus;
+
+/// What backup, diff, restore and clone share: reading drives on a LiveBus, ID lists and maps,
+/// and their JSON.
+class FleetBus {
+public:
+    /// The IDs of the drives that answer a scan of 1..32 (for "all").
+    static QVector<int> scanIds(LiveBus &bus);
+    /// Reads every parameter of `ids`, one drive after another.
+    static QVector<fleet::DriveSnapshot> read(LiveBus &bus, const QVector<int> &ids);
+
+    /// The drive summary of backup's output: id, status, generation, series, failure.
+    static QJsonObject driveJson(const fleet::DriveSnapshot &d);
+    /// False for a key a restore never writes (the encoder offset: each motor's own zero).
+    static bool isRestorable(const fleet::DriveSnapshot &drive, const QString &key);
+    /// The rows of `against` compared with `reference`; `differing` counts the restorable
+    /// keys that differ or are unknown.
+    static QJsonArray diffJson(const fleet::DriveSnapshot &reference,
+                               const fleet::DriveSnapshot &against, int *differing);
+    /// A value as text: the number, or "unknown".
+    static QString valueText(const std::optional<qint64> &v);
+    /// The backup file `path`, or nullopt after printing why (naming the key).
+    static std::optional<fleet::BackupFile> loadBackup(Console &console, const QString &command,
+                                                       const QString &path);
+};
+
+} // namespace lk::lkctl
