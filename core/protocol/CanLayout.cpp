@@ -540,43 +540,6 @@ std::optional<qint32> decodeSetPosition(const CanData &data)
     return qFromLittleEndian<qint32>(data.bytes.constData() + 4);
 }
 
-std::array<quint16, 3> ControlParameter::pid() const
-{
-    std::array<quint16, 3> k{};
-    for (size_t i = 0; i < 3; ++i)
-        k[i] = static_cast<quint16>(bytes[2 * i] | (bytes[2 * i + 1] << 8));
-    return k;
-}
-
-qint32 ControlParameter::value() const
-{
-    // Value bytes 3-4 (int16) for the torque limit, 3-6 (int32) for the rest.
-    if (paramId == quint8(ControlParamId::InputTorqueLimit))
-        return qFromLittleEndian<qint16>(bytes.data() + 2);
-    return qFromLittleEndian<qint32>(bytes.data() + 2);
-}
-
-ControlParameter ControlParameter::ofPid(ControlParamId id, quint16 kp, quint16 ki, quint16 kd)
-{
-    ControlParameter p;
-    p.paramId = static_cast<quint8>(id);
-    qToLittleEndian(kp, p.bytes.data());
-    qToLittleEndian(ki, p.bytes.data() + 2);
-    qToLittleEndian(kd, p.bytes.data() + 4);
-    return p;
-}
-
-ControlParameter ControlParameter::ofValue(ControlParamId id, qint32 value)
-{
-    ControlParameter p;
-    p.paramId = static_cast<quint8>(id);
-    if (id == ControlParamId::InputTorqueLimit)
-        qToLittleEndian(static_cast<qint16>(value), p.bytes.data() + 2);
-    else
-        qToLittleEndian(value, p.bytes.data() + 2);
-    return p;
-}
-
 CanData encodeControlParamRead(quint8 driveId, ControlParamId param)
 {
     Bytes8 b(kReadControlParam);
@@ -591,20 +554,6 @@ CanData encodeControlParamWrite(quint8 driveId, const ControlParameter &value)
     for (int i = 0; i < 6; ++i)
         b.at(2 + i, value.bytes[static_cast<size_t>(i)]);
     return CanData{requestCanId(driveId), b.bytes()};
-}
-
-std::optional<ControlParameter> decodeControlParam(const CanData &data)
-{
-    if (data.bytes.size() != kDataSize || !driveAddressOf(data.canId))
-        return std::nullopt;
-    const auto cmd = static_cast<quint8>(data.bytes[0]);
-    if (cmd != kReadControlParam && cmd != kWriteControlParam)
-        return std::nullopt;
-    ControlParameter p;
-    p.paramId = static_cast<quint8>(data.bytes[1]);
-    for (int i = 0; i < 6; ++i)
-        p.bytes[static_cast<size_t>(i)] = static_cast<quint8>(data.bytes[2 + i]);
-    return p;
 }
 
 } // namespace lk::protocol::can

@@ -2,6 +2,7 @@
 // spec's section 9, written by hand from the vendor tables, never produced by the code under
 // test), both ways: typed value -> frame, and frame -> typed value -> the same frame.
 
+#include "CanTestUtil.h"
 #include "ProtocolTestUtil.h"
 
 #include <protocol/CanLayout.h>
@@ -15,36 +16,10 @@
 #include <functional>
 #include <vector>
 
-namespace proto = lk::protocol;
-namespace can = lk::protocol::can;
+using namespace lk::test::cantest;
 using lk::test::hex;
-using proto::Command;
-using proto::DecodeContext;
-using proto::Generation;
-using proto::Link;
-using proto::Series;
 
 namespace {
-
-DecodeContext canCtx(Generation g, Series s = Series::MG)
-{
-    return DecodeContext{s, g, Link::Can};
-}
-
-/// "141#9C00000000000000" -> {0x141, bytes}.
-can::CanData canFrame(const char *candump)
-{
-    const QList<QByteArray> parts = QByteArray(candump).split('#');
-    return can::CanData{parts[0].toUInt(nullptr, 16), QByteArray::fromHex(parts[1])};
-}
-
-QString candump(const can::CanData &d)
-{
-    return QStringLiteral("%1#%2")
-        .arg(d.canId, 3, 16)
-        .arg(QString::fromLatin1(d.bytes.toHex()))
-        .toUpper();
-}
 
 struct RequestVector {
     const char *name;
@@ -52,11 +27,6 @@ struct RequestVector {
     std::function<proto::Request()> request;
     const char *frame;
 };
-
-proto::Request req(Command c, proto::RequestPayload p = proto::NoPayload{})
-{
-    return proto::Request{c, 1, std::move(p)};
-}
 
 const std::vector<RequestVector> &requestVectors()
 {
@@ -254,9 +224,6 @@ private slots:
     void maxSpeedRoundsDown();
     void speedTorqueLimitFromSoftLimits_data();
     void speedTorqueLimitFromSoftLimits();
-    void multiMotorTorque();
-    void controlParameters();
-    void setPosition();
     void addresses();
     void generationHints_data();
     void generationHints();
@@ -476,64 +443,6 @@ void tst_CanLayout::speedTorqueLimitFromSoftLimits()
         QVERIFY(o.ok());
         QVERIFY(!std::get<proto::SpeedCommand>(o.request->payload).iqLimitRaw);
     }
-}
-
-void tst_CanLayout::multiMotorTorque()
-{
-    const can::CanEncodeResult r = can::encodeMultiMotorTorque({100, -100, 0, 0});
-    QVERIFY(r.ok());
-    QCOMPARE(candump(*r.data), candump(canFrame("280#64009CFF00000000")));
-    const auto iq = can::decodeMultiMotorTorque(canFrame("280#64009CFF00000000"));
-    QVERIFY(iq);
-    QCOMPARE((*iq)[0], qint16(100));
-    QCOMPARE((*iq)[1], qint16(-100));
-    QCOMPARE((*iq)[2], qint16(0));
-    QVERIFY(!can::encodeMultiMotorTorque({0, 0, 2001, 0}).ok());
-    QCOMPARE(can::encodeMultiMotorTorque({0, 0, 0, -2001}).error.field, QStringLiteral("iq_raw"));
-    QVERIFY(!can::decodeMultiMotorTorque(canFrame("141#64009CFF00000000")));
-}
-
-void tst_CanLayout::controlParameters()
-{
-    using can::ControlParamId;
-    // Held vectors: 0xC1 torque limit 2000, 0xC0 read angle PID.
-    const can::ControlParameter limit =
-        can::ControlParameter::ofValue(ControlParamId::InputTorqueLimit, 2000);
-    QCOMPARE(candump(can::encodeControlParamWrite(1, limit)),
-             candump(canFrame("141#C11E0000D0070000")));
-    QCOMPARE(candump(can::encodeControlParamRead(1, ControlParamId::AnglePid)),
-             candump(canFrame("141#C00A000000000000")));
-    const auto back = can::decodeControlParam(canFrame("141#C11E0000D0070000"));
-    QVERIFY(back);
-    QCOMPARE(*back, limit);
-    QCOMPARE(back->value(), 2000);
-    // PID: three uint16 in value bytes 1-2, 3-4, 5-6 (B2..B7).
-    const auto pid = can::decodeControlParam(canFrame("181#C00B0A0014001E00"));
-    QVERIFY(pid);
-    QCOMPARE(pid->paramId, quint8(0x0B));
-    QCOMPARE(pid->pid(), (std::array<quint16, 3>{10, 20, 30}));
-    QCOMPARE(can::ControlParameter::ofPid(ControlParamId::SpeedPid, 10, 20, 30), *pid);
-    // int32 parameters: value bytes 3-6 (B4..B7).
-    const auto speed = can::ControlParameter::ofValue(ControlParamId::InputSpeedLimit, -36000);
-    QCOMPARE(candump(can::encodeControlParamWrite(2, speed)),
-             candump(canFrame("142#C12000006073FFFF")));
-    QVERIFY(!can::decodeControlParam(canFrame("141#9C00000000000000")));
-}
-
-void tst_CanLayout::setPosition()
-{
-    // Held vector: V2.36 0x95, current position := 360.00 deg.
-    QCOMPARE(candump(can::encodeSetPosition(1, 36000)), candump(canFrame("141#95000000A08C0000")));
-    QCOMPARE(can::decodeSetPosition(canFrame("141#95000000A08C0000")),
-             std::optional<qint32>(36000));
-    QCOMPARE(can::decodeSetPosition(canFrame("141#950000006073FFFF")),
-             std::optional<qint32>(-36000));
-    QVERIFY(!can::decodeSetPosition(canFrame("141#9400000000000000")));
-    // clear_angle is the same frame with 0; another position is not read as a clear.
-    const DecodeContext v236 = canCtx(Generation::V2_35);
-    QCOMPARE(candump(*can::encodeRequest(req(Command::ClearAngle), v236).data),
-             candump(can::encodeSetPosition(1, 0)));
-    QVERIFY(!proto::decodeRequest(*can::frameOf(canFrame("141#95000000A08C0000")), v236).request);
 }
 
 void tst_CanLayout::addresses()
