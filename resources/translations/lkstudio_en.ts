@@ -86,6 +86,37 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::ParametersView</name>
+    <message numerus="yes">
+        <source>Reading %n drive(s) ...</source>
+        <translation>
+            <numerusform>Reading %n drive ...</numerusform>
+            <numerusform>Reading %n drives ...</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Cancelled after %n drive(s).</source>
+        <translation>
+            <numerusform>Cancelled after %n drive.</numerusform>
+            <numerusform>Cancelled after %n drives.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n drive(s) read.</source>
+        <translation>
+            <numerusform>%n drive read.</numerusform>
+            <numerusform>%n drives read.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n could not be read completely: their missing values show as unknown.</source>
+        <translation>
+            <numerusform>%n could not be read completely: its missing values show as unknown.</numerusform>
+            <numerusform>%n could not be read completely: their missing values show as unknown.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::RecordingController</name>
     <message numerus="yes">
         <source>Save the last %n minute(s)</source>

@@ -3728,6 +3728,10 @@ not read</source>
         <source>&amp;Take over the bus…</source>
         <translation>接管总线(&amp;T)…</translation>
     </message>
+    <message>
+        <source>Parameters</source>
+        <translation>参数</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::MessageBanner</name>
@@ -5000,6 +5004,18 @@ not read</source>
     <message>
         <source>A recording (.lkrec) to replay instead of connecting.</source>
         <translation>要回放的记录文件（.lkrec），代替连接总线。</translation>
+    </message>
+    <message>
+        <source>Listen only: watch a bus another controller runs and transmit nothing, not even an emergency stop.</source>
+        <translation>仅监听：观察由其他控制器运行的总线，不发送任何数据，连急停也不发送。</translation>
+    </message>
+    <message>
+        <source>Open the bus as its master (the default unless the last connection listened).</source>
+        <translation>作为主站打开总线（默认如此，除非上次连接为仅监听）。</translation>
+    </message>
+    <message>
+        <source>--listen and --no-listen exclude each other.</source>
+        <translation>--listen 与 --no-listen 不能同时使用。</translation>
     </message>
 </context>
 <context>

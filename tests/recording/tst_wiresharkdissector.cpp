@@ -15,6 +15,7 @@ using namespace lk::recording;
 namespace protocol = lk::protocol;
 using lk::e2e::describeRun;
 using lk::e2e::runProgram;
+using lk::testsupport::lines;
 
 namespace {
 
