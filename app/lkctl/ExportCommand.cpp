@@ -55,8 +55,11 @@ QString ExportCommand::usage() const
         "OUT is written whole or not at all. A truncated or damaged recording is exported up\n"
         "to the damage, whose byte offset is named on standard error (exit status 3).\n"
         "\n"
-        "Exit status: 0 done, 1 OUT cannot be written, 2 bad arguments or no recording,\n"
-        "3 the recording is damaged (what came before the damage was exported).\n");
+        "Exit status:\n"
+        "  0  done\n"
+        "  1  OUT cannot be written\n"
+        "  2  unusable arguments, or FILE is no recording\n"
+        "  3  the recording is damaged (what came before the damage was exported)\n");
 }
 
 namespace {

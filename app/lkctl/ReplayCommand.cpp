@@ -70,8 +70,11 @@ QString ReplayCommand::usage() const
         "  --json              JSON lines, the CSV's names as keys\n"
         "  -h, --help          show this help\n"
         "\n"
-        "Exit status: 0 done, 2 bad arguments or no recording, 3 the recording is damaged\n"
-        "(what came before the damage was replayed; the byte offset is on standard error).\n");
+        "Exit status:\n"
+        "  0  done\n"
+        "  2  unusable arguments, or FILE is no recording\n"
+        "  3  the recording is damaged (what came before the damage was replayed; the byte\n"
+        "     offset is on standard error)\n");
 }
 
 int ReplayCommand::run(const QStringList &args, Console &console)

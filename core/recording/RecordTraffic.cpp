@@ -10,7 +10,7 @@ namespace {
 
 QString tr(const char *text)
 {
-    return QCoreApplication::translate("lk::recording::RecordTraffic", text);
+    return QCoreApplication::translate("lk::recording", text);
 }
 
 QString noteOf(const RecordEvent &r)

@@ -125,8 +125,13 @@ QWidget *TrafficPanel::buildToolbar()
 
     row->addWidget(m_idFilter);
     row->addWidget(m_commandFilter);
-    row->addWidget(m_faultsOnly);
-    row->addWidget(m_hidePolling);
+    // The two filter boxes stacked: one row of the toolbar must fit a 1366-pixel screen.
+    auto *checks = new QVBoxLayout;
+    checks->setContentsMargins(0, 0, 0, 0);
+    checks->setSpacing(0);
+    checks->addWidget(m_faultsOnly);
+    checks->addWidget(m_hidePolling);
+    row->addLayout(checks);
     row->addWidget(m_pause);
     row->addWidget(m_record);
     row->addWidget(clear);

@@ -36,8 +36,9 @@ const char *const kAllowed[] = {
     "USER",    "dialout", "uucp", "Debian", "Ubuntu", "Arch", "fuser", "ModemManager", "ERRATA",
     "FOC",     "dev",     "tty",  "pts",    "ttyUSB", "ttyS", "COM",   "decode",       "DRV",
     "English", "txt",     "json", "csv",    "png",    "min",  "max",   "Alt",          "Shift",
+    "FTDI",    "RTS",     "DTR",  "README",
 };
-const QRegularExpression kWord(QStringLiteral("(?<![A-Za-z0-9_.])[A-Za-z]{2,}(?![A-Za-z0-9_])"));
+const QRegularExpression kWord(QStringLiteral("(?<![A-Za-z0-9_./])[A-Za-z]{2,}(?![A-Za-z0-9_/])"));
 } // namespace
 
 EnglishTextFinder::EnglishTextFinder()
