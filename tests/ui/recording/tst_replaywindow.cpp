@@ -13,32 +13,19 @@
 
 #include <cmath>
 
+#include "../../support/SampleValues.h"
+
 using namespace lk;
 
 namespace {
 
-/// What a sample says: its drive, source and every column (NaN where it has none).
-struct Values {
-    int id = 0;
-    int source = 0;
-    QVector<double> columns;
-    bool operator==(const Values &o) const
-    {
-        if (id != o.id || source != o.source || columns.size() != o.columns.size())
-            return false;
-        for (int i = 0; i < columns.size(); ++i)
-            if (!(columns[i] == o.columns[i] ||
-                  (std::isnan(columns[i]) && std::isnan(o.columns[i]))))
-                return false;
-        return true;
-    }
-};
+using Values = lk::testsupport::SampleValues;
 
 QVector<Values> valuesOf(const bus::TelemetryBatch &batch)
 {
     QVector<Values> out;
     for (const bus::TelemetrySample &s : batch)
-        out.append(Values{s.id, int(s.source), record::TelemetryColumns::values(s)});
+        out.append(lk::testsupport::sampleValuesOf(s));
     return out;
 }
 
