@@ -30,15 +30,20 @@ for doc in ARCHITECTURE CLI CSV ERRATA PROTOCOL RECORDING TESTING V2.35; do need
 need usr/share/bash-completion/completions/lkctl
 need usr/share/bash-completion/completions/lksim
 need "usr/lib/$(dpkg-architecture -qDEB_HOST_MULTIARCH)/wireshark/plugins/lkservo.lua"
+# The private shared libraries the programs share (RUNPATH $ORIGIN/../lib/<triplet>/lkstudio).
+private_libs=(liblkcore.so liblkui.so)
+for lib in "${private_libs[@]}"; do need "usr/lib/$(dpkg-architecture -qDEB_HOST_MULTIARCH)/lkstudio/$lib"; done
 
-for bin in lkstudio lkctl lksim; do
-    if file "$root/usr/bin/$bin" | grep -q 'not stripped'; then echo "usr/bin/$bin is not stripped"; fail=1; fi
+private_dir=usr/lib/$(dpkg-architecture -qDEB_HOST_MULTIARCH)/lkstudio
+for bin in usr/bin/lkstudio usr/bin/lkctl usr/bin/lksim "${private_libs[@]/#/$private_dir/}"; do
+    if file "$root/$bin" | grep -q 'not stripped'; then echo "$bin is not stripped"; fail=1; fi
 done
 dbgsym=$(dirname "$deb")/$(basename "$deb" .deb | sed 's/^lkstudio_/lkstudio-dbgsym_/').ddeb
 if [ -f "$dbgsym" ]; then
     debug_files=$(dpkg-deb -c "$dbgsym" | grep -c '\.debug$' || true)
     echo "ok      $(basename "$dbgsym"): $debug_files debug files"
-    [ "$debug_files" -eq 3 ] || { echo "expected 3 debug files in $dbgsym"; fail=1; }
+    expected=$((3 + ${#private_libs[@]}))
+    [ "$debug_files" -eq $expected ] || { echo "expected $expected debug files in $dbgsym"; fail=1; }
 else
     echo "MISSING $dbgsym (the debug symbols)"; fail=1
 fi
