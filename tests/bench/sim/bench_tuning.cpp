@@ -4,8 +4,8 @@
 //           (SpeedLoopTransfer): the largest dB and degree errors up to a quarter of the
 //           sample rate reached, that rate, and the points compared;
 //   tune_*: a full speed-loop gain search: its time, and the gains read (the defaults) beside
-//           the suggested ones with their rise time, overshoot and error area.
-// A side-by-side table goes to standard error.
+//           the suggested ones with their rise time, overshoot and settling time.
+// Every candidate and a side-by-side table of default vs suggested gains go to standard error.
 #include "../bus/BenchSession.h"
 #include "../bus/BenchUtil.h"
 
@@ -106,7 +106,20 @@ bool bode(bus::BusSession &session, const Drive &d, bench::JsonLine &json)
     return true;
 }
 
-bool tune(bus::BusSession &session, const Drive &d, bench::JsonLine &json)
+/// One drive's search, for the side-by-side table.
+struct TuneRow {
+    Drive drive;
+    double seconds = 0;
+    int candidates = 0;
+    std::optional<CandidateScore> defaults, suggested;
+};
+
+double ms(const Metric &m)
+{
+    return m.value.value_or(std::nan("")) * 1e3;
+}
+
+bool tune(bus::BusSession &session, const Drive &d, bench::JsonLine &json, QVector<TuneRow> &rows)
 {
     GainSearchSpec spec;
     spec.id = d.id;
@@ -122,30 +135,48 @@ bool tune(bus::BusSession &session, const Drive &d, bench::JsonLine &json)
     const auto put = [&](const QString &which, const CandidateScore &c) {
         json.addInt(k + which + "_kp", c.gains.speed.kp);
         json.addInt(k + which + "_ki", c.gains.speed.ki);
-        json.add(k + which + "_rise_ms", c.metrics.riseTimeS.value.value_or(-0.001) * 1e3, 2);
+        json.add(k + which + "_rise_ms", ms(c.metrics.riseTimeS), 2);
         json.add(k + which + "_overshoot_pct", c.metrics.overshootPct.value.value_or(-1), 1);
-        json.add(k + which + "_error_area_ms", c.errorAreaS * 1e3, 2);
+        json.add(k + which + "_settling_ms", ms(c.metrics.settling5S), 1);
     };
-    if (r->baseline)
-        put(QStringLiteral("default"), r->candidates[*r->baseline]);
-    if (r->best)
-        put(QStringLiteral("suggested"), r->candidates[*r->best]);
-    const auto line = [](const char *what, const CandidateScore &c) {
-        std::fprintf(stderr,
-                     "    %-9s Kp %3d Ki %3d  rise %6.2f ms  overshoot %5.1f %%  area %6.2f ms\n",
-                     what, c.gains.speed.kp, c.gains.speed.ki,
-                     c.metrics.riseTimeS.value.value_or(-0.001) * 1e3,
-                     c.metrics.overshootPct.value.value_or(-1), c.errorAreaS * 1e3);
-    };
-    std::fprintf(stderr, "Tune of drive %d (%s): %.1f s, %d candidates\n", d.id, qPrintable(key(d)),
-                 r->seconds, int(r->candidates.size()));
-    if (r->baseline)
-        line("default", r->candidates[*r->baseline]);
-    if (r->best)
-        line("suggested", r->candidates[*r->best]);
-    else
-        std::fprintf(stderr, "    no candidate met the bounds\n");
+    TuneRow row{d, r->seconds, int(r->candidates.size()), {}, {}};
+    if (r->baseline) {
+        row.defaults = r->candidates[*r->baseline];
+        put(QStringLiteral("default"), *row.defaults);
+    }
+    if (r->best) {
+        row.suggested = r->candidates[*r->best];
+        put(QStringLiteral("suggested"), *row.suggested);
+    }
+    for (const CandidateScore &c : r->candidates)
+        std::fprintf(stderr, "  drive %d  Kp %3d Ki %3d  rise %6.2f ms  overshoot %5.1f %%  %s\n",
+                     d.id, c.gains.speed.kp, c.gains.speed.ki, ms(c.metrics.riseTimeS),
+                     c.metrics.overshootPct.value.value_or(-1), c.accepted() ? "accepted" : "-");
+    rows.append(row);
     return true;
+}
+
+/// Default vs suggested speed gains per drive: Kp/Ki, rise (10-90 %), overshoot, settling (5 %).
+void printTable(const QVector<TuneRow> &rows)
+{
+    std::fprintf(stderr, "\n%-9s %6s %5s | %-8s %8s %7s %8s | %-8s %8s %7s %8s | %s\n", "drive",
+                 "tune s", "cands", "default", "rise ms", "over %", "settl ms", "suggest",
+                 "rise ms", "over %", "settl ms", "faster");
+    const auto cell = [](const std::optional<CandidateScore> &c) {
+        if (!c)
+            return QStringLiteral("%1 %2 %3 %4").arg("-", -8).arg("-", 8).arg("-", 7).arg("-", 8);
+        return QStringLiteral("%1 %2 %3 %4")
+            .arg(QStringLiteral("%1/%2").arg(c->gains.speed.kp).arg(c->gains.speed.ki), -8)
+            .arg(ms(c->metrics.riseTimeS), 8, 'f', 2)
+            .arg(c->metrics.overshootPct.value.value_or(std::nan("")), 7, 'f', 1)
+            .arg(ms(c->metrics.settling5S), 8, 'f', 1);
+    };
+    for (const TuneRow &r : rows) {
+        const bool faster = r.defaults && r.suggested && r.suggested->riseS() < r.defaults->riseS();
+        std::fprintf(stderr, "%-9s %6.1f %5d | %s | %s | %s\n", qPrintable(key(r.drive)), r.seconds,
+                     r.candidates, qPrintable(cell(r.defaults)), qPrintable(cell(r.suggested)),
+                     faster ? "yes" : "NO");
+    }
 }
 
 } // namespace
@@ -180,8 +211,10 @@ int main(int argc, char *argv[])
         if (d.series == Series::MF || d.series == Series::MG)
             ok = bode(session, d, json) && ok;
     }
+    QVector<TuneRow> rows;
     for (const Drive &d : kDrives)
-        ok = tune(session, d, json) && ok;
+        ok = tune(session, d, json, rows) && ok;
+    printTable(rows);
     json.print();
     return ok ? 0 : 1;
 }
