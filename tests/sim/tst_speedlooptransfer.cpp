@@ -29,6 +29,11 @@ private slots:
     void physicsMatchesTransfer_data();
     void physicsMatchesTransfer();
     void shapeFollowsTheGains();
+    void unevenSamplesMatchTransfer_data();
+    void unevenSamplesMatchTransfer();
+    void resonanceShowsInTheTransfer();
+    void plantOptionsParse_data();
+    void plantOptionsParse();
 };
 
 void tst_SpeedLoopTransfer::physicsMatchesTransfer_data()
@@ -115,6 +120,125 @@ void tst_SpeedLoopTransfer::shapeFollowsTheGains()
     const sim::SpeedLoopTransfer fast = sim::SpeedLoopTransfer::of(p);
     QVERIFY(fast.magnitudeDb(60) > normal.magnitudeDb(60));
     QVERIFY(normal.phaseDeg(100) < normal.phaseDeg(20));
+}
+
+void tst_SpeedLoopTransfer::unevenSamplesMatchTransfer_data()
+{
+    // The plant with and without a resonance and encoder counts, sampled at uneven times about
+    // 2 kHz apart as the bus does at 1 Mbaud, up to a quarter of that rate.
+    QTest::addColumn<Series>("series");
+    QTest::addColumn<QString>("plant");
+    QTest::addColumn<double>("hz");
+    for (Series s : {Series::MS, Series::MF, Series::MG, Series::MH}) {
+        const QByteArray name = protocol::seriesName(s).toLatin1();
+        for (const char *plant :
+             {"", "resonance=120/0.08", "resonance=300/0.05/2+counts=16384+speed-res=1"}) {
+            for (double hz : {5.0, 40.0, 110.0, 150.0, 300.0, 400.0})
+                QTest::newRow(name + " " + plant + " " + QByteArray::number(hz) + " Hz")
+                    << s << QString::fromLatin1(plant) << hz;
+        }
+    }
+}
+
+void tst_SpeedLoopTransfer::unevenSamplesMatchTransfer()
+{
+    QFETCH(Series, series);
+    QFETCH(QString, plant);
+    QFETCH(double, hz);
+    const motor::SeriesLimits &l = motor::seriesLimits(series);
+    DrivePhysics p(sim::RotorParams::forSeries(series), l.maxCurrentA, l.maxSpeedDps());
+    p.setSupplyVoltage(l.nominalSupplyV);
+    p.setGains(kDefaults);
+    const auto options = sim::PlantOptions::parse(plant);
+    QVERIFY(options);
+    p.setPlantOptions(*options);
+    const double offset = 300, amplitude = 60;
+    sim::LoopTarget target;
+    target.mode = sim::LoopMode::Speed;
+    target.maxSpeedDps = l.maxSpeedDps();
+    target.speedDps = offset;
+    p.setTarget(target);
+    p.advance(0.5);
+    const double T = DrivePhysics::kStepSeconds;
+    const double settle = std::max(0.3, 2 / hz);
+    const double window = std::ceil(std::max(0.5, 5 / hz) * hz) / hz;
+    QVector<double> ut, uv, yt, yv;
+    quint32 lcg = 7;
+    double nextSample = 0;
+    for (double t = 0; t < settle + window + T; t += T) {
+        target.speedDps = offset + amplitude * std::sin(2 * kPi * hz * t);
+        ut.append(t);
+        uv.append(target.speedDps);
+        if (t >= nextSample) {
+            // 0.4 to 0.6 ms apart: the substep grid with an uneven stride.
+            yt.append(t);
+            yv.append(p.speedDps());
+            lcg = lcg * 1664525u + 1013904223u;
+            nextSample = t + 0.0004 + 0.0002 * double(lcg >> 8) / double(1u << 24);
+        }
+        p.setTarget(target);
+        p.advance(T);
+    }
+    const double rate = (yt.size() - 1) / (yt.last() - yt.first());
+    QVERIFY(hz <= rate / 4);
+    const auto point =
+        tuning::FrequencyResponse::measure(ut, uv, yt, yv, hz, settle, settle + window);
+    QVERIFY(point);
+    const sim::SpeedLoopTransfer h = sim::SpeedLoopTransfer::of(p);
+    const double db = h.magnitudeDb(hz);
+    const double deg = h.phaseDeg(hz);
+    qInfo("%5.0f Hz (%.0f samples/s): measured %6.2f dB %7.1f deg, transfer %6.2f dB %7.1f deg", hz,
+          rate, point->magnitudeDb, point->phaseDeg, db, deg);
+    QVERIFY2(std::abs(point->magnitudeDb - db) < 1, qPrintable(QString::number(db)));
+    QVERIFY2(std::abs(std::remainder(point->phaseDeg - deg, 360.0)) < 5,
+             qPrintable(QString::number(deg)));
+}
+
+void tst_SpeedLoopTransfer::resonanceShowsInTheTransfer()
+{
+    // A lightly damped resonance at 150 Hz: the loop's response rises towards it and its phase
+    // turns fast there; far below it nothing changes.
+    const sim::RotorParams rotor = sim::RotorParams::forSeries(Series::MF);
+    DrivePhysics p(rotor, 10, 3000);
+    p.setGains(kDefaults);
+    const sim::SpeedLoopTransfer rigid = sim::SpeedLoopTransfer::of(p);
+    p.setPlantOptions(*sim::PlantOptions::parse(QStringLiteral("resonance=150/0.02")));
+    const sim::SpeedLoopTransfer resonant = sim::SpeedLoopTransfer::of(p);
+    QVERIFY(std::abs(resonant.magnitudeDb(2) - rigid.magnitudeDb(2)) < 0.1);
+    QVERIFY(resonant.magnitudeDb(150) > rigid.magnitudeDb(150) + 6);
+    QVERIFY(std::abs(std::remainder(resonant.phaseDeg(170) - resonant.phaseDeg(130), 360.0)) >
+            std::abs(std::remainder(rigid.phaseDeg(170) - rigid.phaseDeg(130), 360.0)) + 30);
+}
+
+void tst_SpeedLoopTransfer::plantOptionsParse_data()
+{
+    QTest::addColumn<QString>("text");
+    QTest::addColumn<bool>("ok");
+    QTest::addColumn<QString>("back");
+    QTest::newRow("empty") << "" << true << "";
+    QTest::newRow("resonance") << "resonance=120" << true << "resonance=120/0.05/1";
+    QTest::newRow("all") << "resonance=80/0.1/2+counts=16384+speed-res=0.5" << true
+                         << "resonance=80/0.1/2+counts=16384+speed-res=0.5";
+    QTest::newRow("too low") << "resonance=1" << false << "";
+    QTest::newRow("no damping") << "resonance=100/0" << false << "";
+    QTest::newRow("bad ratio") << "resonance=100/0.1/100" << false << "";
+    QTest::newRow("few counts") << "counts=3" << false << "";
+    QTest::newRow("bad speed") << "speed-res=x" << false << "";
+    QTest::newRow("unknown") << "stiction=3" << false << "";
+}
+
+void tst_SpeedLoopTransfer::plantOptionsParse()
+{
+    QFETCH(QString, text);
+    QFETCH(bool, ok);
+    QFETCH(QString, back);
+    QString error;
+    const auto parsed = sim::PlantOptions::parse(text, &error);
+    QCOMPARE(parsed.has_value(), ok);
+    if (ok)
+        QCOMPARE(parsed->toString(), back);
+    else
+        QVERIFY(error.contains(text.section(QLatin1Char('+'), 0, 0)));
 }
 
 QTEST_APPLESS_MAIN(tst_SpeedLoopTransfer)
