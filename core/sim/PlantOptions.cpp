@@ -33,6 +33,14 @@ std::optional<PlantOptions> PlantOptions::parse(const QString &text, QString *er
     return out;
 }
 
+bool PlantOptions::isItem(const QString &item)
+{
+    const QString key = item.section(QLatin1Char('='), 0, 0).trimmed().toLower();
+    return item.contains(QLatin1Char('=')) &&
+           (key == QLatin1String("resonance") || key == QLatin1String("counts") ||
+            key == QLatin1String("speed-res"));
+}
+
 bool PlantOptions::parseItem(const QString &item, QString *error)
 {
     const qsizetype eq = item.indexOf(QLatin1Char('='));

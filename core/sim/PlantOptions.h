@@ -44,6 +44,8 @@ struct PlantOptions {
 
     /// Parse a '+'-joined list; nullopt with one sentence naming the item in `error`.
     static std::optional<PlantOptions> parse(const QString &text, QString *error = nullptr);
+    /// Whether `item` is one of ours ("resonance=...", "counts=...", "speed-res=...").
+    static bool isItem(const QString &item);
     /// Take one "key=value" item; false (and `error`) for an unknown key or a bad value.
     bool parseItem(const QString &item, QString *error = nullptr);
     /// Back to text; empty when nothing is set.

@@ -2,6 +2,9 @@
 // driven by a sine reference held over each substep, its speed fitted at each frequency,
 // compared with SpeedLoopTransfer; per series, at the factory gains and at stiffer ones.
 #include "sim/DrivePhysics.h"
+#include "sim/SimBus.h"
+#include "sim/SimBusSpec.h"
+#include "sim/SimDrive.h"
 #include "sim/SpeedLoopTransfer.h"
 
 #include "motor/SeriesLimits.h"
@@ -10,6 +13,8 @@
 #include <QtTest/QTest>
 
 #include <cmath>
+#include <functional>
+#include <optional>
 
 using namespace lk;
 using protocol::PidGains;
@@ -21,6 +26,58 @@ Q_DECLARE_METATYPE(Series)
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr PidGains kDefaults{100, 100, 50, 40, 50, 50};
+
+/// A drive of `series` with the factory gains, as lksim makes it.
+DrivePhysics physicsOf(Series series)
+{
+    const motor::SeriesLimits &l = motor::seriesLimits(series);
+    DrivePhysics p(sim::RotorParams::forSeries(series), l.maxCurrentA, l.maxSpeedDps());
+    p.setSupplyVoltage(l.nominalSupplyV);
+    p.setGains(kDefaults);
+    return p;
+}
+
+/// What a sine of the speed reference at `hz` around 300 dps +- 60 (the rotor never stops, so
+/// friction is a constant torque), held over each substep, gave: the reference at every
+/// substep and the speed at each substep `nextSample` picks (from the time of the one before).
+struct SineRun {
+    QVector<double> ut, uv, yt, yv;
+    double settle = 0, window = 0;
+    double sampleRateHz() const { return (yt.size() - 1) / (yt.last() - yt.first()); }
+    std::optional<tuning::FrequencyPoint> measure(double hz) const
+    {
+        return tuning::FrequencyResponse::measure(ut, uv, yt, yv, hz, settle, settle + window);
+    }
+};
+
+SineRun runSine(DrivePhysics &p, double hz, const std::function<double(double)> &nextSample)
+{
+    const double offset = 300, amplitude = 60;
+    sim::LoopTarget target;
+    target.mode = sim::LoopMode::Speed;
+    target.maxSpeedDps = 1e9;
+    target.speedDps = offset;
+    p.setTarget(target);
+    p.advance(0.5);
+    const double T = DrivePhysics::kStepSeconds;
+    SineRun run;
+    run.settle = std::max(0.3, 2 / hz);
+    run.window = std::ceil(std::max(0.5, 5 / hz) * hz) / hz;
+    double sampleAt = 0;
+    for (double t = 0; t < run.settle + run.window + T; t += T) {
+        target.speedDps = offset + amplitude * std::sin(2 * kPi * hz * t);
+        run.ut.append(t);
+        run.uv.append(target.speedDps);
+        if (t >= sampleAt) {
+            run.yt.append(t); // the speed at the substep's start
+            run.yv.append(p.speedDps());
+            sampleAt = nextSample(t);
+        }
+        p.setTarget(target);
+        p.advance(T);
+    }
+    return run;
+}
 } // namespace
 
 class tst_SpeedLoopTransfer : public QObject {
@@ -34,6 +91,7 @@ private slots:
     void resonanceShowsInTheTransfer();
     void plantOptionsParse_data();
     void plantOptionsParse();
+    void busSpecCarriesThePlant();
 };
 
 void tst_SpeedLoopTransfer::physicsMatchesTransfer_data()
@@ -59,39 +117,15 @@ void tst_SpeedLoopTransfer::physicsMatchesTransfer()
     QFETCH(int, speedKp);
     QFETCH(int, speedKd);
     QFETCH(double, hz);
-    const motor::SeriesLimits &l = motor::seriesLimits(series);
-    DrivePhysics p(sim::RotorParams::forSeries(series), l.maxCurrentA, l.maxSpeedDps());
-    p.setSupplyVoltage(l.nominalSupplyV);
+    DrivePhysics p = physicsOf(series);
     PidGains g = kDefaults;
     g.speedKp = quint8(speedKp);
     p.setGains(g);
     sim::DerivativeGains kd;
     kd.speedKd = quint16(speedKd);
     p.setDerivativeGains(kd);
-    // Around 300 dps +- 60: the rotor never stops, so friction is a constant torque.
-    const double offset = 300, amplitude = 60;
-    sim::LoopTarget target;
-    target.mode = sim::LoopMode::Speed;
-    target.maxSpeedDps = l.maxSpeedDps();
-    target.speedDps = offset;
-    p.setTarget(target);
-    p.advance(0.5);
-    const double T = DrivePhysics::kStepSeconds;
-    const double settle = std::max(0.3, 2 / hz);
-    const double window = std::ceil(std::max(0.5, 5 / hz) * hz) / hz;
-    QVector<double> ut, uv, yt, yv;
-    for (double t = 0; t < settle + window + T; t += T) {
-        // The reference held over this substep; the speed sampled at its start.
-        target.speedDps = offset + amplitude * std::sin(2 * kPi * hz * t);
-        yt.append(t);
-        yv.append(p.speedDps());
-        ut.append(t);
-        uv.append(target.speedDps);
-        p.setTarget(target);
-        p.advance(T);
-    }
-    const auto point =
-        tuning::FrequencyResponse::measure(ut, uv, yt, yv, hz, settle, settle + window);
+    const SineRun run = runSine(p, hz, [](double t) { return t; }); // every substep
+    const auto point = run.measure(hz);
     QVERIFY(point);
     const sim::SpeedLoopTransfer h = sim::SpeedLoopTransfer::of(p);
     const double db = h.magnitudeDb(hz);
@@ -145,44 +179,19 @@ void tst_SpeedLoopTransfer::unevenSamplesMatchTransfer()
     QFETCH(Series, series);
     QFETCH(QString, plant);
     QFETCH(double, hz);
-    const motor::SeriesLimits &l = motor::seriesLimits(series);
-    DrivePhysics p(sim::RotorParams::forSeries(series), l.maxCurrentA, l.maxSpeedDps());
-    p.setSupplyVoltage(l.nominalSupplyV);
-    p.setGains(kDefaults);
+    DrivePhysics p = physicsOf(series);
     const auto options = sim::PlantOptions::parse(plant);
     QVERIFY(options);
     p.setPlantOptions(*options);
-    const double offset = 300, amplitude = 60;
-    sim::LoopTarget target;
-    target.mode = sim::LoopMode::Speed;
-    target.maxSpeedDps = l.maxSpeedDps();
-    target.speedDps = offset;
-    p.setTarget(target);
-    p.advance(0.5);
-    const double T = DrivePhysics::kStepSeconds;
-    const double settle = std::max(0.3, 2 / hz);
-    const double window = std::ceil(std::max(0.5, 5 / hz) * hz) / hz;
-    QVector<double> ut, uv, yt, yv;
+    // 0.4 to 0.6 ms apart: the substep grid with an uneven stride (a fixed sequence).
     quint32 lcg = 7;
-    double nextSample = 0;
-    for (double t = 0; t < settle + window + T; t += T) {
-        target.speedDps = offset + amplitude * std::sin(2 * kPi * hz * t);
-        ut.append(t);
-        uv.append(target.speedDps);
-        if (t >= nextSample) {
-            // 0.4 to 0.6 ms apart: the substep grid with an uneven stride.
-            yt.append(t);
-            yv.append(p.speedDps());
-            lcg = lcg * 1664525u + 1013904223u;
-            nextSample = t + 0.0004 + 0.0002 * double(lcg >> 8) / double(1u << 24);
-        }
-        p.setTarget(target);
-        p.advance(T);
-    }
-    const double rate = (yt.size() - 1) / (yt.last() - yt.first());
+    const SineRun run = runSine(p, hz, [&](double t) {
+        lcg = lcg * 1664525u + 1013904223u;
+        return t + 0.0004 + 0.0002 * double(lcg >> 8) / double(1u << 24);
+    });
+    const double rate = run.sampleRateHz();
     QVERIFY(hz <= rate / 4);
-    const auto point =
-        tuning::FrequencyResponse::measure(ut, uv, yt, yv, hz, settle, settle + window);
+    const auto point = run.measure(hz);
     QVERIFY(point);
     const sim::SpeedLoopTransfer h = sim::SpeedLoopTransfer::of(p);
     const double db = h.magnitudeDb(hz);
@@ -239,6 +248,22 @@ void tst_SpeedLoopTransfer::plantOptionsParse()
         QCOMPARE(parsed->toString(), back);
     else
         QVERIFY(error.contains(text.section(QLatin1Char('+'), 0, 0)));
+}
+
+void tst_SpeedLoopTransfer::busSpecCarriesThePlant()
+{
+    // lksim --motors, lkctl/lkstudio --sim: "+resonance=...", "+counts=..." per drive.
+    const QString text = QStringLiteral("3:MF+resonance=120/0.05/1+counts=16384,4:MG");
+    const auto spec = sim::SimBusSpec::parse(text);
+    QVERIFY(spec);
+    QCOMPARE(spec->toString(), text);
+    const auto bus = sim::SimBus::fromSpec(*spec);
+    QCOMPARE(bus->drive(3)->physics().plantOptions(),
+             *sim::PlantOptions::parse(QStringLiteral("resonance=120/0.05+counts=16384")));
+    QCOMPARE(bus->drive(4)->physics().plantOptions(), sim::PlantOptions{});
+    QString error;
+    QVERIFY(!sim::SimBusSpec::parse(QStringLiteral("3:MF+resonance=1"), &error));
+    QVERIFY2(error.contains(QLatin1String("resonance must be")), qPrintable(error));
 }
 
 QTEST_APPLESS_MAIN(tst_SpeedLoopTransfer)
