@@ -4,7 +4,6 @@
 #include "OrderedJson.h"
 #include "TuningJson.h"
 
-#include <system/SignalWatcher.h>
 #include <text/VerdictText.h>
 
 #include <cmath>
@@ -191,20 +190,9 @@ GainSearchResult TuneCommand::runSearch(LiveBus &bus, const Plan &plan,
                                         const safety::SoftLimits &limits) const
 {
     tuning::GainSearchRunner runner(bus.session());
-    std::optional<GainSearchResult> result;
-    QObject::connect(&runner, &tuning::GainSearchRunner::finished,
-                     [&](const GainSearchResult &r) { result = r; });
-    QObject::connect(&runner, &tuning::GainSearchRunner::failed,
-                     [&](const GainSearchResult &r) { result = r; });
-    system::SignalWatcher watcher;
-    QObject::connect(&watcher, &system::SignalWatcher::signalled, &runner,
-                     &tuning::GainSearchRunner::abort);
-    runner.start(plan.spec, limits);
-    if (!bus.waitUntil([&] { return result.has_value(); }, 2 * LiveBus::kMaxWaitMs)) {
-        runner.abort(); // the safety net: never returns without a result
-        (void)bus.waitUntil([&] { return result.has_value(); });
-    }
-    return result.value_or(GainSearchResult{});
+    // Ctrl-C: the step halts, the motor goes off, the gains read go back to RAM.
+    return runToEnd<tuning::GainSearchRunner, GainSearchResult>(
+        bus, runner, [&] { runner.start(plan.spec, limits); }, 2 * LiveBus::kMaxWaitMs);
 }
 
 bool TuneCommand::writeBest(LiveBus &bus, const GainSearchResult &r) const
@@ -244,18 +232,9 @@ int TuneCommand::run(const QStringList &args, Console &console)
     if (!limits)
         return status;
     const GainSearchResult result = runSearch(bus, *plan, *limits);
-    switch (result.failure) {
-    case StepTestFailure::None:
-        break;
-    case StepTestFailure::Refused:
-        bus.refused(text::VerdictText::stepRefusal(result.refusal), id);
-        return kExitRefused;
-    case StepTestFailure::BadSpec:
-        return usageError(console, result.message);
-    default:
-        bus.error(result.message);
-        return kExitFailure;
-    }
+    const auto refusal = [&] { bus.refused(text::VerdictText::stepRefusal(result.refusal), id); };
+    if (const auto failed = failureStatus(bus, console, result.failure, result.message, refusal))
+        return *failed;
     const bool write = plan->writeRam && result.best && result.read &&
                        result.candidates[*result.best].gains != *result.read;
     if (write && !writeBest(bus, result))
