@@ -48,16 +48,15 @@ bool GainSearchRunner::start(const GainSearchSpec &spec, const safety::SoftLimit
         bad = QStringLiteral("the candidates must be 1..50, got %1").arg(spec.maxCandidates);
     else
         bad = StepTestPlan::checkSpec(spec.step());
-    if (!bad.isEmpty()) {
-        QTimer::singleShot(0, this, [this, bad] {
-            end(StepTestFailure::BadSpec, bad + QStringLiteral("; nothing was sent"));
-        });
-        return true;
-    }
-    m_keeper.read(spec.id, [this, run = m_run](bool ok, const QString &why) {
-        if (run == m_run && m_phase == Phase::Reading)
-            onRead(ok, why);
-    });
+    TuningEnd::readFirst(m_keeper, spec.id, bad, this,
+                         [this, run = m_run](StepTestFailure failure, const QString &why) {
+                             if (run != m_run || m_phase != Phase::Reading)
+                                 return;
+                             if (failure == StepTestFailure::None)
+                                 onRead();
+                             else
+                                 end(failure, why);
+                         });
     return true;
 }
 
@@ -78,13 +77,8 @@ void GainSearchRunner::abort()
     }
 }
 
-void GainSearchRunner::onRead(bool ok, const QString &why)
+void GainSearchRunner::onRead()
 {
-    if (!ok) {
-        end(StepTestFailure::Silent,
-            QStringLiteral("the gains could not be read (%1); nothing was sent").arg(why));
-        return;
-    }
     m_result.read = m_keeper.gains();
     m_strategy.emplace(*m_keeper.gains(), m_spec.maxOvershootPct, m_spec.maxCandidates);
     m_phase = Phase::Searching;

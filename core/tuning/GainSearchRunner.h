@@ -77,7 +77,7 @@ signals:
 private:
     enum class Phase { Idle, Reading, Searching, Restoring, Aborting };
 
-    void onRead(bool ok, const QString &why);
+    void onRead();
     void tryNext();
     void onStepFinished(const StepTestResult &result);
     void onStepFailed(const StepTestResult &result);
