@@ -26,7 +26,6 @@ namespace {
 
 constexpr int kWaitMs = 60000; // a loaded 2-core machine; never a timing assertion
 constexpr int kBaud = 1000000;
-const QLatin1String kPlant("resonance=80/0.1+counts=16384");
 
 TransportFactory simFactory(const QString &spec)
 {
@@ -44,8 +43,7 @@ bool isMotion(Command c)
            (c >= Command::MultiPosition && c <= Command::IncrementPositionLimited);
 }
 
-/// A session on the simulated bus (drive 3 MF V2.3, drive 5 MG on fw 2.35, drive 7 an MF with
-/// a resonance at 80 Hz and a 14-bit encoder behind its speed estimate).
+/// A session on the simulated bus (drive 3 MF V2.3, drive 5 MG on fw 2.35).
 struct Rig {
     BusSession session;
     QSignalSpy completed{&session, &BusSession::requestCompleted};
@@ -54,11 +52,10 @@ struct Rig {
     QSignalSpy failed{&runner, &FrequencySweepRunner::failed};
     Rig()
     {
-        session.open(simFactory(QStringLiteral("3:MF,5:MG@2.35,7:MF+%1").arg(kPlant)), kBaud);
+        session.open(simFactory(QStringLiteral("3:MF,5:MG@2.35")), kBaud);
         (void)QTest::qWaitFor([this] { return session.connection().isOpen(); }, kWaitMs);
         identify(3);
         identify(5);
-        identify(7);
     }
     /// read_model, as lkstudio and lkctl do first: the session learns series and generation.
     void identify(int id) { request(*protocol::build::plain(Command::ReadModel, id).request); }
@@ -125,14 +122,13 @@ FrequencySweepSpec quickSpec(int id)
 
 /// The simulated drive's own speed loop for the gains read from it (lksim saturates its gains
 /// at 255, as SimParams does).
-sim::SpeedLoopTransfer transferFor(Series series, const LoopGains &g, const QString &plant)
+sim::SpeedLoopTransfer transferFor(Series series, const LoopGains &g)
 {
     const auto u8 = [](quint16 v) { return quint8(std::min<int>(v, 255)); };
     return sim::SpeedLoopTransfer::forSeries(series,
                                              {u8(g.angle.kp), u8(g.angle.ki), u8(g.speed.kp),
                                               u8(g.speed.ki), u8(g.current.kp), u8(g.current.ki)},
-                                             {g.angle.kd, g.speed.kd, g.current.kd},
-                                             sim::PlantOptions::parse(plant)->resonance);
+                                             {g.angle.kd, g.speed.kd, g.current.kd});
 }
 
 } // namespace
@@ -151,24 +147,21 @@ void tst_FrequencySweepRunner::measuresTheSimulatorsTransfer_data()
 {
     QTest::addColumn<int>("id");
     QTest::addColumn<Series>("series");
-    QTest::addColumn<QString>("plant");
-    QTest::newRow("MF V2.3") << 3 << Series::MF << QString();
-    QTest::newRow("MG V2.35") << 5 << Series::MG << QString();
-    QTest::newRow("MF V2.3, resonance and encoder counts") << 7 << Series::MF << QString(kPlant);
+    QTest::newRow("MF V2.3") << 3 << Series::MF;
+    QTest::newRow("MG V2.35") << 5 << Series::MG;
 }
 
 void tst_FrequencySweepRunner::measuresTheSimulatorsTransfer()
 {
     QFETCH(int, id);
     QFETCH(Series, series);
-    QFETCH(QString, plant);
     Rig rig;
     QVERIFY(rig.runner.start(quickSpec(id), safety::SoftLimits::defaults(series)));
     const FrequencySweepResult r = rig.waitForEnd();
     QVERIFY2(r.ok(), qPrintable(r.message));
     QVERIFY(r.gains);
     QVERIFY(r.response.sampleRateHz > 100);
-    const sim::SpeedLoopTransfer h = transferFor(series, *r.gains, plant);
+    const sim::SpeedLoopTransfer h = transferFor(series, *r.gains);
     const double resolved = FrequencyResponse::resolvedHz(r.response.sampleRateHz);
     QVERIFY(!r.response.points.isEmpty());
     for (const FrequencyPoint &p : r.response.points) {

@@ -1,8 +1,9 @@
 // Frequency response and gain search figures (issue #25), on lksim over its pseudo-terminal
 // at 1 Mbaud with wire-time emulation, one drive of each series on each generation:
 //   freq_*: the measured Bode of the speed loop against the simulator's own transfer function
-//           (SpeedLoopTransfer): the largest dB and degree errors up to a quarter of the
-//           sample rate reached, that rate, and the points compared;
+//           (SpeedLoopTransfer), on an MF and an MG of each generation and an MF with a
+//           resonance and encoder counts: the largest dB and degree errors up to a quarter of
+//           the sample rate reached, that rate, and the points compared;
 //   tune_*: a full speed-loop gain search: its time, and the gains read (the defaults) beside
 //           the suggested ones with their rise time, overshoot and settling time.
 // Every candidate and a side-by-side table of default vs suggested gains go to standard error.
@@ -33,15 +34,25 @@ struct Drive {
     int id;
     Series series;
     bool v235;
+    const char *plant = ""; ///< PlantOptions in the bus spec
 };
-const Drive kDrives[] = {{1, Series::MS, false}, {2, Series::MF, false}, {3, Series::MG, false},
-                         {4, Series::MH, false}, {5, Series::MS, true},  {6, Series::MF, true},
-                         {7, Series::MG, true},  {8, Series::MH, true}};
+/// One drive of each series on each generation, and an MF with a resonance at 80 Hz and a
+/// 14-bit encoder behind its speed estimate.
+const Drive kDrives[] = {{1, Series::MS, false},
+                         {2, Series::MF, false},
+                         {3, Series::MG, false},
+                         {4, Series::MH, false},
+                         {5, Series::MS, true},
+                         {6, Series::MF, true},
+                         {7, Series::MG, true},
+                         {8, Series::MH, true},
+                         {9, Series::MF, false, "resonance=80/0.1+counts=16384"}};
 
 QString key(const Drive &d)
 {
     return protocol::seriesName(d.series) +
-           (d.v235 ? QStringLiteral("_v235") : QStringLiteral("_v23"));
+           (d.v235 ? QStringLiteral("_v235") : QStringLiteral("_v23")) +
+           (*d.plant ? QStringLiteral("_resonant") : QString());
 }
 
 template <typename Runner, typename Result, typename Spec>
@@ -58,13 +69,14 @@ std::optional<Result> run(bus::BusSession &session, const Spec &spec, int id)
     return result;
 }
 
-sim::SpeedLoopTransfer transferFor(Series series, const LoopGains &g)
+sim::SpeedLoopTransfer transferFor(const Drive &d, const LoopGains &g)
 {
     const auto u8 = [](quint16 v) { return quint8(std::min<int>(v, 255)); };
-    return sim::SpeedLoopTransfer::forSeries(series,
+    return sim::SpeedLoopTransfer::forSeries(d.series,
                                              {u8(g.angle.kp), u8(g.angle.ki), u8(g.speed.kp),
                                               u8(g.speed.ki), u8(g.current.kp), u8(g.current.ki)},
-                                             {g.angle.kd, g.speed.kd, g.current.kd});
+                                             {g.angle.kd, g.speed.kd, g.current.kd},
+                                             sim::PlantOptions::parse(d.plant)->resonance);
 }
 
 bool bode(bus::BusSession &session, const Drive &d, bench::JsonLine &json)
@@ -82,7 +94,7 @@ bool bode(bus::BusSession &session, const Drive &d, bench::JsonLine &json)
                      r ? qPrintable(r->message) : "no result");
         return false;
     }
-    const sim::SpeedLoopTransfer h = transferFor(d.series, *r->gains);
+    const sim::SpeedLoopTransfer h = transferFor(d, *r->gains);
     double maxDb = 0, maxDeg = 0;
     std::fprintf(stderr, "Bode of drive %d (%s), %.0f samples/s:\n", d.id, qPrintable(key(d)),
                  r->response.sampleRateHz);
@@ -187,10 +199,11 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     QStringList motors;
     for (const Drive &d : kDrives)
-        motors << QStringLiteral("%1:%2%3")
+        motors << QStringLiteral("%1:%2%3%4")
                       .arg(d.id)
                       .arg(protocol::seriesName(d.series))
-                      .arg(d.v235 ? QStringLiteral("@2.35") : QString());
+                      .arg(d.v235 ? QStringLiteral("@2.35") : QString())
+                      .arg(*d.plant ? QStringLiteral("+") + QLatin1String(d.plant) : QString());
     e2e::LksimProcess sim(QStringLiteral(LKSIM_PATH));
     if (!sim.start({"--motors", motors.join(QLatin1Char(',')), "--wire-time", "--baud",
                     QString::number(kBaud)})) {
@@ -208,7 +221,7 @@ int main(int argc, char *argv[])
     bench::JsonLine json;
     bool ok = true;
     for (const Drive &d : kDrives) {
-        if (d.series == Series::MF || d.series == Series::MG)
+        if (d.series == Series::MF || d.series == Series::MG) // the resonant MF too
             ok = bode(session, d, json) && ok;
     }
     QVector<TuneRow> rows;
