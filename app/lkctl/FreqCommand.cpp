@@ -4,7 +4,6 @@
 #include "OrderedJson.h"
 #include "TuningJson.h"
 
-#include <system/SignalWatcher.h>
 #include <text/VerdictText.h>
 
 #include <cmath>
@@ -152,24 +151,12 @@ FrequencySweepResult FreqCommand::runSweep(LiveBus &bus, const Plan &plan,
                                            const safety::SoftLimits &limits) const
 {
     tuning::FrequencySweepRunner runner(bus.session());
-    std::optional<FrequencySweepResult> result;
-    QObject::connect(&runner, &tuning::FrequencySweepRunner::finished,
-                     [&](const FrequencySweepResult &r) { result = r; });
-    QObject::connect(&runner, &tuning::FrequencySweepRunner::failed,
-                     [&](const FrequencySweepResult &r) { result = r; });
     // Ctrl-C: the stream halts, the motor goes off, the settings read go back to RAM.
-    system::SignalWatcher watcher;
-    QObject::connect(&watcher, &system::SignalWatcher::signalled, &runner,
-                     &tuning::FrequencySweepRunner::abort);
-    runner.start(plan.spec, limits);
     const tuning::FrequencySweepPlan expected =
         tuning::FrequencySweepPlan::make(plan.spec, std::nullopt, safety::SoftLimits{});
-    const int sweepMs = int(expected.endS() * 1000);
-    if (!bus.waitUntil([&] { return result.has_value(); }, sweepMs + LiveBus::kMaxWaitMs)) {
-        runner.abort(); // the safety net: never returns without a result
-        (void)bus.waitUntil([&] { return result.has_value(); });
-    }
-    return result.value_or(FrequencySweepResult{});
+    return runToEnd<tuning::FrequencySweepRunner, FrequencySweepResult>(
+        bus, runner, [&] { runner.start(plan.spec, limits); },
+        int(expected.endS() * 1000) + LiveBus::kMaxWaitMs);
 }
 
 int FreqCommand::run(const QStringList &args, Console &console)
@@ -192,21 +179,14 @@ int FreqCommand::run(const QStringList &args, Console &console)
     if (!limits)
         return status;
     const FrequencySweepResult result = runSweep(bus, *plan, *limits);
-    switch (result.failure) {
-    case StepTestFailure::None:
-        break;
-    case StepTestFailure::Refused:
+    const auto refusal = [&] {
         bus.refused(QStringLiteral("the sweep's %1 dps: %2")
                         .arg(result.refusedDps)
                         .arg(text::VerdictText::verdict(result.refusal, bus.session().series(id))),
                     id);
-        return kExitRefused;
-    case StepTestFailure::BadSpec:
-        return usageError(console, result.message);
-    default:
-        bus.error(result.message);
-        return kExitFailure;
-    }
+    };
+    if (const auto failed = failureStatus(bus, console, result.failure, result.message, refusal))
+        return *failed;
     if (plan->json)
         printJson(console, *plan, result);
     else

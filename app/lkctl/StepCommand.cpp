@@ -7,7 +7,6 @@
 
 #include <motor/ModelNameInfo.h>
 #include <protocol/FieldJson.h>
-#include <system/SignalWatcher.h>
 #include <text/VerdictText.h>
 #include <tuning/StepMetrics.h>
 #include <tuning/StepRunJson.h>
@@ -311,11 +310,6 @@ StepTestResult StepCommand::runTest(LiveBus &bus, const Plan &plan,
                                     const safety::SoftLimits &limits, double gearRatio)
 {
     tuning::StepTestRunner runner(bus.session());
-    std::optional<StepTestResult> result;
-    QObject::connect(&runner, &tuning::StepTestRunner::finished,
-                     [&](const StepTestResult &r) { result = r; });
-    QObject::connect(&runner, &tuning::StepTestRunner::failed,
-                     [&](const StepTestResult &r) { result = r; });
     // The last request of this drive that failed: the runner says "did not answer" for any
     // failure, and a corrupt reply is an answer (the drive heard, and may have acted).
     QObject::connect(&bus.session(), &bus::BusSession::requestCompleted, &runner,
@@ -324,17 +318,11 @@ StepTestResult StepCommand::runTest(LiveBus &bus, const Plan &plan,
                              m_lastFailure = r;
                      });
     // Ctrl-C ends the test at once: no further setpoint; the output says what still moves.
-    system::SignalWatcher watcher;
-    QObject::connect(&watcher, &system::SignalWatcher::signalled, &runner,
-                     &tuning::StepTestRunner::abort);
-    runner.start(plan.spec, limits, gearRatio);
     const int edges = plan.spec.periods == 1 ? 1 : 2 * plan.spec.periods;
     const double testS = plan.spec.preRollS + edges * plan.spec.durationS;
-    if (!bus.waitUntil([&] { return result.has_value(); },
-                       int(testS * 1000) + LiveBus::kMaxWaitMs)) {
-        runner.abort(); // the safety net: never returns without a result
-    }
-    return result.value_or(StepTestResult{});
+    return runToEnd<tuning::StepTestRunner, StepTestResult>(
+        bus, runner, [&] { runner.start(plan.spec, limits, gearRatio); },
+        int(testS * 1000) + LiveBus::kMaxWaitMs);
 }
 
 QString StepCommand::failureText(const StepTestResult &result) const
@@ -395,36 +383,24 @@ int StepCommand::run(const QStringList &args, Console &console)
         return status;
 
     LiveBus bus(console, name());
-    if (!bus.open(*busOptions))
-        return kExitFailure;
     const int id = plan->spec.id;
-    const std::optional<LiveBus::Identity> who = bus.identify(id);
-    if (!who)
-        return kExitFailure;
-    QString error;
-    const std::optional<safety::SoftLimits> limits = plan->limits.limitsFor(who->series, &error);
+    LiveBus::Identity who;
+    const std::optional<safety::SoftLimits> limits =
+        openDrive(bus, *busOptions, id, plan->limits, console, &status, &who);
     if (!limits)
-        return usageError(console, error);
-    const std::optional<QJsonObject> gains = readGains(bus, id, *who);
+        return status;
+    const std::optional<QJsonObject> gains = readGains(bus, id, who);
     if (!gains) {
         bus.error(QStringLiteral("the gains could not be read; nothing was sent"));
         return kExitFailure;
     }
     const StepTestResult result =
-        runTest(bus, *plan, *limits, motor::ModelNameInfo::parse(who->model.motorName).gearRatio);
-    switch (result.failure) {
-    case StepTestFailure::None:
-        break;
-    case StepTestFailure::Refused:
-        bus.refused(text::VerdictText::stepRefusal(result.refusal));
-        return kExitRefused;
-    case StepTestFailure::BadSpec:
-        return usageError(console, result.message);
-    default:
-        bus.error(failureText(result));
-        return kExitFailure;
-    }
-    const tuning::StepRun run = keptRun(*plan, *who, *gains, result);
+        runTest(bus, *plan, *limits, motor::ModelNameInfo::parse(who.model.motorName).gearRatio);
+    const auto refusal = [&] { bus.refused(text::VerdictText::stepRefusal(result.refusal)); };
+    if (const auto failed =
+            failureStatus(bus, console, result.failure, failureText(result), refusal))
+        return *failed;
+    const tuning::StepRun run = keptRun(*plan, who, *gains, result);
     if (plan->json)
         printJson(console, *plan, run, result);
     else

@@ -1,8 +1,6 @@
 #pragma once
 
-#include "LiveBus.h"
-#include "LiveCommand.h"
-#include "MotionLimitOptions.h"
+#include "TuningCommand.h"
 
 #include <tuning/StepRun.h>
 #include <tuning/StepTestRunner.h>
@@ -16,7 +14,7 @@ namespace lk::lkctl {
 /// `lkctl step ID speed|position FROM TO`: one step test (tuning::StepTestRunner) with the
 /// drive's gains read first and the step-response metrics (tuning::StepMetrics) printed.
 /// Every setpoint is checked against the series and the soft limits before anything moves.
-class StepCommand : public LiveCommand {
+class StepCommand : public TuningCommand {
 public:
     QString name() const override { return QStringLiteral("step"); }
     QString summary() const override;

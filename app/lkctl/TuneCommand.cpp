@@ -4,7 +4,6 @@
 #include "OrderedJson.h"
 #include "TuningJson.h"
 
-#include <system/SignalWatcher.h>
 #include <text/VerdictText.h>
 
 #include <cmath>
@@ -101,14 +100,14 @@ QString TuneCommand::usage() const
                "square of short speed steps FROM -> TO -> FROM (every setpoint checked against\n"
                "the series and your limits: a refusal sends nothing, exit 4). Candidates: the\n"
                "gains read first, then rows of Kp (x1.3 per row), Ki lowered by 1.5 within a\n"
-               "row until one is accepted: overshoot at most PCT, at most two swings, settled\n"
-               "within 2 %, the current never at its limit. Kp climbs until two rows in a row\n"
-               "are not 3 % better on the error area (the integral of the error per step: a\n"
-               "rise measure that timestamp jitter does not move). The current at its limit\n"
-               "or swings that grow end the search at once. At the end the gains read go back\n"
-               "to RAM and the drive returns to the speed it had; the best is suggested\n"
-               "beside them. Ctrl-C stops at once: motor off, the gains read back in RAM\n"
-               "(exit 1).\n"
+               "row (while that lowers the overshoot) until one is accepted: overshoot at most\n"
+               "PCT, at most two swings, settled within 2 %, the current never at its limit.\n"
+               "Once a row finds none, three candidates narrow Kp down between it and the last\n"
+               "accepted row. The best is the fastest rise time (10-90 %) accepted. The current\n"
+               "at its limit or swings that grow end the search at once. At the end the gains\n"
+               "read go back to RAM and the drive returns to the speed it had; the best is\n"
+               "suggested beside them. Ctrl-C stops at once: motor off, the gains read back\n"
+               "in RAM (exit 1).\n"
                "\n"
                "Tune options:\n"
                "  --max-overshoot PCT    the overshoot bound, 0..100 %, default 5\n"
@@ -191,20 +190,9 @@ GainSearchResult TuneCommand::runSearch(LiveBus &bus, const Plan &plan,
                                         const safety::SoftLimits &limits) const
 {
     tuning::GainSearchRunner runner(bus.session());
-    std::optional<GainSearchResult> result;
-    QObject::connect(&runner, &tuning::GainSearchRunner::finished,
-                     [&](const GainSearchResult &r) { result = r; });
-    QObject::connect(&runner, &tuning::GainSearchRunner::failed,
-                     [&](const GainSearchResult &r) { result = r; });
-    system::SignalWatcher watcher;
-    QObject::connect(&watcher, &system::SignalWatcher::signalled, &runner,
-                     &tuning::GainSearchRunner::abort);
-    runner.start(plan.spec, limits);
-    if (!bus.waitUntil([&] { return result.has_value(); }, 2 * LiveBus::kMaxWaitMs)) {
-        runner.abort(); // the safety net: never returns without a result
-        (void)bus.waitUntil([&] { return result.has_value(); });
-    }
-    return result.value_or(GainSearchResult{});
+    // Ctrl-C: the step halts, the motor goes off, the gains read go back to RAM.
+    return runToEnd<tuning::GainSearchRunner, GainSearchResult>(
+        bus, runner, [&] { runner.start(plan.spec, limits); }, 2 * LiveBus::kMaxWaitMs);
 }
 
 bool TuneCommand::writeBest(LiveBus &bus, const GainSearchResult &r) const
@@ -244,18 +232,9 @@ int TuneCommand::run(const QStringList &args, Console &console)
     if (!limits)
         return status;
     const GainSearchResult result = runSearch(bus, *plan, *limits);
-    switch (result.failure) {
-    case StepTestFailure::None:
-        break;
-    case StepTestFailure::Refused:
-        bus.refused(text::VerdictText::stepRefusal(result.refusal), id);
-        return kExitRefused;
-    case StepTestFailure::BadSpec:
-        return usageError(console, result.message);
-    default:
-        bus.error(result.message);
-        return kExitFailure;
-    }
+    const auto refusal = [&] { bus.refused(text::VerdictText::stepRefusal(result.refusal), id); };
+    if (const auto failed = failureStatus(bus, console, result.failure, result.message, refusal))
+        return *failed;
     const bool write = plan->writeRam && result.best && result.read &&
                        result.candidates[*result.best].gains != *result.read;
     if (write && !writeBest(bus, result))

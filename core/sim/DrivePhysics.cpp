@@ -41,10 +41,32 @@ double clampAbs(double v, double limit)
 } // namespace
 
 DrivePhysics::DrivePhysics(const RotorParams &params, double currentLimitA, double speedLimitDps)
-    : m_params(params), m_invInertia(1.0 / params.inertia), m_currentLimit(currentLimitA),
-      m_speedLimit(speedLimitDps * kRadPerDeg)
+    : m_params(params), m_mechanics(params.inertia, params.viscousFriction, {}),
+      m_currentLimit(currentLimitA), m_speedLimit(speedLimitDps * kRadPerDeg)
 {
     setGains({});
+}
+
+void DrivePhysics::setPlantOptions(const PlantOptions &options)
+{
+    m_plant = options;
+    m_mechanics = TwoMassMechanics(m_params.inertia, m_params.viscousFriction, options.resonance);
+    if (!options.resonance.enabled()) {
+        m_omegaLoad = 0;
+        m_twist = 0;
+    } else if (m_twist == 0) {
+        m_omegaLoad = m_omega; // the load was turning with the rigid rotor
+    }
+    m_countedTheta = countedAngle(m_theta);
+}
+
+double DrivePhysics::countedAngle(double theta) const
+{
+    const int counts = m_plant.sensor.countsPerTurn;
+    if (counts <= 0)
+        return theta;
+    const double count = 2.0 * kPi / counts;
+    return std::floor(theta / count) * count;
 }
 
 void DrivePhysics::setGains(const protocol::PidGains &g)
@@ -88,6 +110,7 @@ void DrivePhysics::setTarget(const LoopTarget &target)
 void DrivePhysics::setPositionDeg(double deg)
 {
     m_theta = deg * kRadPerDeg;
+    m_countedTheta = countedAngle(m_theta);
 }
 
 double DrivePhysics::positionDeg() const
@@ -97,7 +120,14 @@ double DrivePhysics::positionDeg() const
 
 double DrivePhysics::speedDps() const
 {
-    return m_omega / kRadPerDeg;
+    const double dps = m_omega / kRadPerDeg;
+    const double step = m_plant.sensor.speedResolutionDps;
+    return step > 0 ? std::round(dps / step) * step : dps;
+}
+
+double DrivePhysics::loadSpeedDps() const
+{
+    return (m_mechanics.j2 > 0 ? m_omegaLoad : m_omega) / kRadPerDeg;
 }
 
 double DrivePhysics::electricalAngleRad() const
@@ -116,6 +146,7 @@ void DrivePhysics::resetIntegrators()
 bool DrivePhysics::atRest() const
 {
     return m_target.mode == LoopMode::Off && m_omega == 0.0 && m_current == 0.0 &&
+           m_omegaLoad == 0.0 && m_twist == 0.0 &&
            (m_locked || std::abs(m_loadTorque) <= m_params.coulombFriction);
 }
 
@@ -246,13 +277,16 @@ void DrivePhysics::mechanics(double dt)
 {
     if (m_locked) {
         m_omega = 0;
+        m_omegaLoad = 0;
+        m_twist = 0;
         return;
     }
     const double torque = m_params.torqueConstant * m_current - m_loadTorque;
-    double w = (m_omega + dt * torque * m_invInertia) /
-               (1.0 + dt * m_params.viscousFriction * m_invInertia);
+    const TwoMassMechanics::State before{m_omega, m_omegaLoad, m_twist};
+    TwoMassMechanics::State x = m_mechanics.step(before, torque, dt);
     // Coulomb friction never reverses the motion within a step: that is what makes it stick.
-    const double dw = m_params.coulombFriction * dt * m_invInertia;
+    double w = x.motor;
+    const double dw = m_params.coulombFriction * dt / m_mechanics.j1;
     if (w > dw)
         w -= dw;
     else if (w < -dw)
@@ -262,14 +296,30 @@ void DrivePhysics::mechanics(double dt)
     w = clampAbs(w, m_speedLimit);
     m_theta += w * dt;
     m_omega = w;
+    if (m_mechanics.j2 > 0) {
+        m_twist = before.twist + dt * (w - x.load);
+        m_omegaLoad = x.load;
+        // A load swinging down to nothing on a stuck rotor: at rest, not a denormal forever.
+        if (w == 0 && std::abs(m_omegaLoad) < 1e-9 && std::abs(m_twist) < 1e-12) {
+            m_omegaLoad = 0;
+            m_twist = 0;
+        }
+    }
 }
 
 void DrivePhysics::measureSpeed()
 {
-    // Once per substep: the filter's constants fold at compile time.
+    // Once per substep: the filter's constants fold at compile time. With encoder counts the
+    // raw speed is the counted angle's difference over the substep.
     constexpr double gain = kStepSeconds / (kSpeedFilterSeconds + kStepSeconds);
+    double raw = m_omega;
+    if (m_plant.sensor.countsPerTurn > 0) {
+        const double counted = countedAngle(m_theta);
+        raw = (counted - m_countedTheta) * (1.0 / kStepSeconds);
+        m_countedTheta = counted;
+    }
     const double before = m_omegaMeasured;
-    m_omegaMeasured += (m_omega - m_omegaMeasured) * gain;
+    m_omegaMeasured += (raw - m_omegaMeasured) * gain;
     m_accelMeasured = (m_omegaMeasured - before) * (1.0 / kStepSeconds);
 }
 

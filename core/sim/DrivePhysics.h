@@ -1,5 +1,6 @@
 #pragma once
 
+#include "PlantOptions.h"
 #include "RotorParams.h"
 #include "protocol/Values.h"
 
@@ -69,6 +70,12 @@ struct PhysicalGains {
 ///   rotor inertia), angle Kd x 0.004 (speed feedback, 255 halves the angle loop's
 ///   bandwidth), current Kd x 0.002 x L (255 = 50 % more inductance).
 ///
+/// Optional plant parts (setPlantOptions(), PlantOptions): a mechanical resonance (the inertia
+/// split into motor and load coupled by a damped spring, TwoMassMechanics), encoder counts
+/// behind the speed estimate (count differences per substep, whose linear part is the speed
+/// itself: they add noise, not a change of the loop's transfer function) and the reported
+/// speed's resolution. None is set by default.
+///
 /// Why it answers like a real drive: the speed filter, the current loop and the substep add
 /// lag, so the speed loop's phase margin shrinks as speedKp grows. At the factory gains a
 /// speed step overshoots about 5 %; from about speedKp 100 overshoot grows; at 255 it rings
@@ -98,11 +105,17 @@ public:
     void setRotorLocked(bool locked) { m_locked = locked; }
     void setTemperatureC(double c) { m_temperature = c; }
     void setPositionDeg(double deg);
+    /// Resonance and sensor quantisation; the rotor's motion goes on from where it is.
+    void setPlantOptions(const PlantOptions &options);
+    const PlantOptions &plantOptions() const { return m_plant; }
+    /// The mechanics' coefficients (SpeedLoopTransfer's).
+    const TwoMassMechanics &mechanicsModel() const { return m_mechanics; }
 
     void advance(double seconds);
 
     double positionDeg() const;
-    double speedDps() const;
+    double speedDps() const;     ///< the motor's, at the reported resolution if one is set
+    double loadSpeedDps() const; ///< the load's beyond the resonance; the motor's without one
     double currentA() const { return m_current; }
     double voltage() const { return m_voltage; }
     double temperatureC() const { return m_temperature; }
@@ -122,12 +135,14 @@ private:
     void openWinding(double volts, double dt);
     void mechanics(double dt);
     void measureSpeed();
+    double countedAngle(double theta) const; ///< rad, down to the encoder's count
     void thermal(double dt);
     bool atRest() const;
     void resetIntegrators();
 
     RotorParams m_params;
-    double m_invInertia; ///< 1/J, so that a substep multiplies instead of dividing
+    PlantOptions m_plant;
+    TwoMassMechanics m_mechanics;
     double m_currentLimit;
     double m_speedLimit; ///< rad/s, hard cap of the rotor
     double m_supplyV = 24;
@@ -140,6 +155,9 @@ private:
 
     double m_theta = 0;         ///< rad, continuous
     double m_omega = 0;         ///< rad/s
+    double m_omegaLoad = 0;     ///< rad/s, the load beyond the resonance
+    double m_twist = 0;         ///< rad, the coupling's
+    double m_countedTheta = 0;  ///< rad, the angle as the encoder counted it last substep
     double m_omegaMeasured = 0; ///< rad/s, the drive's filtered speed estimate
     double m_accelMeasured = 0; ///< rad/s^2, its change per substep
     double m_current = 0;       ///< A (q axis)

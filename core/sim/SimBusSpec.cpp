@@ -115,6 +115,12 @@ std::optional<SimBusSpec> SimBusSpec::parse(const QString &text, QString *error)
                 model->faults.append(*fault);
                 continue;
             }
+            if (PlantOptions::isItem(quirk)) {
+                QString why;
+                if (!model->plant.parseItem(quirk, &why))
+                    return fail(QStringLiteral("'%1': %2").arg(item, why));
+                continue;
+            }
             if (!model->quirks.enable(quirk))
                 return fail(
                     QStringLiteral("'%1': unknown firmware quirk '%2' (known: %3)")
@@ -139,6 +145,8 @@ QString SimBusSpec::toString() const
         model << e.model.quirks.names();
         for (const SimFault &f : e.model.faults)
             model << kFaultPrefix + f.toString(e.model.generation);
+        if (const QString plant = e.model.plant.toString(); !plant.isEmpty())
+            model << plant;
         parts << QStringLiteral("%1:%2").arg(e.id).arg(model.join(QLatin1Char('+')));
     }
     return parts.join(QLatin1Char(','));

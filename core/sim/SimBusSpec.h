@@ -17,6 +17,8 @@ namespace lk::sim {
 /// "@2.35" after the model makes a firmware-2.35 drive speaking V2.35 ("1:MS4015@2.35");
 /// "@2.3" (the default) a V2.3 one. "+fault=NAME[@START[-END]]" (repeatable) makes the drive
 /// raise a protection fault by itself (SimFault: "1:MF+fault=over_temperature@5s").
+/// "+resonance=HZ[/DAMPING[/RATIO]]", "+counts=N", "+speed-res=DPS" shape its plant
+/// (PlantOptions: "3:MF+resonance=120/0.05+counts=16384").
 struct SimBusSpec {
     struct Entry {
         int id = 1;

@@ -38,6 +38,7 @@ SimDrive::SimDrive(int id, const SimDriveModel &model, const std::optional<SimRo
     // Spread the drives' initial shaft angles (golden angle) so that a bus does not look
     // cloned; deterministic for tests.
     m_physics.setPositionDeg(positiveMod(id * 137.508, 360.0));
+    m_physics.setPlantOptions(model.plant);
     if (m_rom.params.maxSpeedRaw <= 0) // factory setting: the series maximum
         m_rom.params.maxSpeedRaw = static_cast<qint32>(m_limits.maxSpeedDps() * 100.0);
     if (generation() == protocol::Generation::V2_35)

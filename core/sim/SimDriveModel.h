@@ -1,6 +1,7 @@
 #pragma once
 
 #include "FirmwareQuirks.h"
+#include "PlantOptions.h"
 #include "SimFault.h"
 #include "motor/ModelNameInfo.h"
 #include "protocol/Series.h"
@@ -32,6 +33,7 @@ struct SimDriveModel {
     SimRom factoryRom(int id) const;
     FirmwareQuirks quirks;  ///< firmware oddities this drive copies (none by default)
     QList<SimFault> faults; ///< protection faults it raises by itself (none by default)
+    PlantOptions plant;     ///< resonance and sensor quantisation ("+resonance=..."; none)
 
     /// Gear ratio and encoder resolution implied by the motor name (series default otherwise).
     motor::ModelNameInfo nameInfo() const;

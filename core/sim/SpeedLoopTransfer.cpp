@@ -8,7 +8,16 @@ namespace lk::sim {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kT = DrivePhysics::kStepSeconds;
-enum Index { Current, CurrentIntegral, Speed, Estimate, EstimateAccel, SpeedIntegral };
+enum Index {
+    Current,
+    CurrentIntegral,
+    Speed,
+    Estimate,
+    EstimateAccel,
+    SpeedIntegral,
+    LoadSpeed,
+    Twist
+};
 
 using Complex = std::complex<double>;
 
@@ -41,8 +50,9 @@ std::array<Complex, N> solve(std::array<std::array<Complex, N>, N> m, std::array
 }
 } // namespace
 
-SpeedLoopTransfer::SpeedLoopTransfer(const RotorParams &rotor, const PhysicalGains &gains)
-    : m_rotor(rotor), m_gains(gains)
+SpeedLoopTransfer::SpeedLoopTransfer(const RotorParams &rotor, const PhysicalGains &gains,
+                                     const MechanicalResonance &resonance)
+    : m_rotor(rotor), m_gains(gains), m_mechanics(rotor.inertia, rotor.viscousFriction, resonance)
 {
     // The update is linear: its matrix is its image of the unit states, B its image of r = 1.
     for (int j = 0; j < kStates; ++j) {
@@ -55,17 +65,20 @@ SpeedLoopTransfer::SpeedLoopTransfer(const RotorParams &rotor, const PhysicalGai
 
 SpeedLoopTransfer SpeedLoopTransfer::of(const DrivePhysics &physics)
 {
-    return SpeedLoopTransfer(physics.params(), physics.physicalGains());
+    return SpeedLoopTransfer(physics.params(), physics.physicalGains(),
+                             physics.plantOptions().resonance);
 }
 
 SpeedLoopTransfer SpeedLoopTransfer::forSeries(protocol::Series series,
                                                const protocol::PidGains &gains,
-                                               const DerivativeGains &kd)
+                                               const DerivativeGains &kd,
+                                               const MechanicalResonance &resonance)
 {
     // The limits do not enter the linear loop.
     DrivePhysics physics(RotorParams::forSeries(series), 1, 1);
     physics.setGains(gains);
     physics.setDerivativeGains(kd);
+    physics.setPlantOptions(PlantOptions{resonance, {}});
     return of(physics);
 }
 
@@ -84,9 +97,11 @@ SpeedLoopTransfer::State SpeedLoopTransfer::step(const State &x, double r) const
         (a * x[Current] + g.kpIq * iRef + g.kiIq * (x[CurrentIntegral] + kT * iRef)) / denom;
     n[Current] = i;
     n[CurrentIntegral] = x[CurrentIntegral] + kT * (iRef - i);
-    const double invJ = 1.0 / m_rotor.inertia;
-    n[Speed] = (x[Speed] + kT * m_rotor.torqueConstant * i * invJ) /
-               (1.0 + kT * m_rotor.viscousFriction * invJ);
+    const TwoMassMechanics::State m =
+        m_mechanics.step({x[Speed], x[LoadSpeed], x[Twist]}, m_rotor.torqueConstant * i, kT);
+    n[Speed] = m.motor;
+    n[LoadSpeed] = m.load;
+    n[Twist] = m.twist;
     const double gain = kT / (DrivePhysics::kSpeedFilterSeconds + kT);
     n[Estimate] = x[Estimate] + (n[Speed] - x[Estimate]) * gain;
     n[EstimateAccel] = (n[Estimate] - x[Estimate]) / kT;

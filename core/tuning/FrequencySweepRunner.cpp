@@ -88,19 +88,15 @@ bool FrequencySweepRunner::start(const FrequencySweepSpec &spec, const safety::S
     m_previousPlan.reset();
     m_pollingPaused = false;
     m_phase = Phase::ReadingGains;
-    const QString bad = FrequencySweepPlan::checkSpec(spec);
-    if (!bad.isEmpty()) {
-        QTimer::singleShot(0, this, [this, bad] {
-            end(StepTestFailure::BadSpec, bad + QStringLiteral("; nothing was sent"));
-        });
-        return true;
-    }
-    // Nothing runs on a drive whose gains were not read on this connection: they are what an
-    // abort puts back.
-    m_keeper.read(spec.id, [this, run = m_run](bool ok, const QString &why) {
-        if (run == m_run && m_phase == Phase::ReadingGains)
-            onGainsRead(ok, why);
-    });
+    TuningEnd::readFirst(m_keeper, spec.id, FrequencySweepPlan::checkSpec(spec), this,
+                         [this, run = m_run](StepTestFailure failure, const QString &why) {
+                             if (run != m_run || m_phase != Phase::ReadingGains)
+                                 return;
+                             if (failure == StepTestFailure::None)
+                                 onGainsRead();
+                             else
+                                 end(failure, why);
+                         });
     return true;
 }
 
@@ -122,13 +118,8 @@ void FrequencySweepRunner::abort()
     }
 }
 
-void FrequencySweepRunner::onGainsRead(bool ok, const QString &why)
+void FrequencySweepRunner::onGainsRead()
 {
-    if (!ok) {
-        end(StepTestFailure::Silent,
-            QStringLiteral("the gains could not be read (%1); nothing was sent").arg(why));
-        return;
-    }
     m_result.gains = m_keeper.gains();
     m_phase = Phase::ReadingSpeed;
     // The acceleration limit ramps each setpoint change and would bend the sine: lifted in

@@ -73,7 +73,7 @@ signals:
 private:
     enum class Phase { Idle, ReadingGains, ReadingSpeed, Sweeping, Returning, Aborting };
 
-    void onGainsRead(bool ok, const QString &why);
+    void onGainsRead();
     void readSpeed();
     void onSpeedRead(const bus::RequestResult &result);
     void onCompleted(const bus::RequestResult &result);

@@ -47,24 +47,16 @@ bool GainSearchRunner::start(const GainSearchSpec &spec, const safety::SoftLimit
     else if (spec.maxCandidates < 1 || spec.maxCandidates > 50)
         bad = QStringLiteral("the candidates must be 1..50, got %1").arg(spec.maxCandidates);
     else
-        bad = StepTestPlan::checkSpec(StepTestSpec{spec.id,
-                                                   StepLoop::Speed,
-                                                   spec.from,
-                                                   spec.to,
-                                                   spec.stepS,
-                                                   spec.periods,
-                                                   spec.preRollS,
-                                                   {}});
-    if (!bad.isEmpty()) {
-        QTimer::singleShot(0, this, [this, bad] {
-            end(StepTestFailure::BadSpec, bad + QStringLiteral("; nothing was sent"));
-        });
-        return true;
-    }
-    m_keeper.read(spec.id, [this, run = m_run](bool ok, const QString &why) {
-        if (run == m_run && m_phase == Phase::Reading)
-            onRead(ok, why);
-    });
+        bad = StepTestPlan::checkSpec(spec.step());
+    TuningEnd::readFirst(m_keeper, spec.id, bad, this,
+                         [this, run = m_run](StepTestFailure failure, const QString &why) {
+                             if (run != m_run || m_phase != Phase::Reading)
+                                 return;
+                             if (failure == StepTestFailure::None)
+                                 onRead();
+                             else
+                                 end(failure, why);
+                         });
     return true;
 }
 
@@ -85,13 +77,8 @@ void GainSearchRunner::abort()
     }
 }
 
-void GainSearchRunner::onRead(bool ok, const QString &why)
+void GainSearchRunner::onRead()
 {
-    if (!ok) {
-        end(StepTestFailure::Silent,
-            QStringLiteral("the gains could not be read (%1); nothing was sent").arg(why));
-        return;
-    }
     m_result.read = m_keeper.gains();
     m_strategy.emplace(*m_keeper.gains(), m_spec.maxOvershootPct, m_spec.maxCandidates);
     m_phase = Phase::Searching;
@@ -118,9 +105,7 @@ void GainSearchRunner::tryNext()
                 QStringLiteral("a candidate's gains could not be written (%1)").arg(why));
             return;
         }
-        StepTestSpec step{m_spec.id,    StepLoop::Speed, m_spec.from,     m_spec.to,
-                          m_spec.stepS, m_spec.periods,  m_spec.preRollS, {}};
-        m_step.start(step, m_limits);
+        m_step.start(m_spec.step(), m_limits);
     });
 }
 
@@ -130,13 +115,9 @@ void GainSearchRunner::onStepFinished(const StepTestResult &result)
         return;
     if (!m_startSpeed)
         m_startSpeed = result.startValue;
-    StepMetricOptions options;
-    options.effortLimit = seriesEffortLimit(m_session.series(m_spec.id));
-    CandidateScore score;
-    score.gains = *m_strategy->next();
-    score.metrics = GainSearchStrategy::combine(StepMetrics::forAllEdges(result.trace, options));
-    score.errorAreaS = GainSearchStrategy::errorArea(result.trace);
-    score.verdict = GainSearchStrategy::judge(score.metrics, result.trace, m_spec.maxOvershootPct);
+    const CandidateScore score = GainSearchStrategy::score(
+        *m_strategy->next(), result.trace, seriesEffortLimit(m_session.series(m_spec.id)),
+        m_spec.maxOvershootPct);
     m_strategy->record(score);
     emit candidateScored(score, int(m_strategy->scores().size()) - 1);
     tryNext();

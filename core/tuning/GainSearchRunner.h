@@ -25,6 +25,12 @@ struct GainSearchSpec {
     int periods = 3;        ///< a square of this many periods: 2N steps per candidate
     double preRollS = 0.15; ///< FROM held before it
     int maxCandidates = 24;
+
+    /// The step test each candidate is scored by.
+    StepTestSpec step() const
+    {
+        return StepTestSpec{id, StepLoop::Speed, from, to, stepS, periods, preRollS, {}};
+    }
 };
 
 /// What a gain search tried and found. Nothing of it stays in the drive: the gains read are
@@ -71,7 +77,7 @@ signals:
 private:
     enum class Phase { Idle, Reading, Searching, Restoring, Aborting };
 
-    void onRead(bool ok, const QString &why);
+    void onRead();
     void tryNext();
     void onStepFinished(const StepTestResult &result);
     void onStepFailed(const StepTestResult &result);

@@ -15,15 +15,18 @@ quint16 scaled(quint16 gain, double factor, quint16 max)
     return quint16(std::clamp(moved, 1.0, double(max)));
 }
 
-double riseOf(const CandidateScore &s)
-{
-    return s.errorAreaS > 0 ? s.errorAreaS : 1e9;
-}
 } // namespace
+
+double CandidateScore::riseS() const
+{
+    return metrics.riseTimeS.known() ? *metrics.riseTimeS.value
+                                     : std::numeric_limits<double>::infinity();
+}
 
 GainSearchStrategy::GainSearchStrategy(const LoopGains &read, double maxOvershootPct,
                                        int maxCandidates)
-    : m_read(read), m_maxOvershootPct(maxOvershootPct), m_maxCandidates(maxCandidates), m_next(read)
+    : m_read(read), m_maxOvershootPct(maxOvershootPct), m_maxCandidates(maxCandidates),
+      m_rowKp(read.speed.kp), m_rowKi(read.speed.ki), m_next(read)
 {
 }
 
@@ -159,6 +162,19 @@ double GainSearchStrategy::errorArea(const StepTrace &trace)
     return edges > 0 ? total / edges : 0;
 }
 
+CandidateScore GainSearchStrategy::score(const LoopGains &gains, const StepTrace &trace,
+                                         std::optional<double> effortLimit, double maxOvershootPct)
+{
+    StepMetricOptions options;
+    options.effortLimit = effortLimit;
+    CandidateScore s;
+    s.gains = gains;
+    s.metrics = combine(StepMetrics::forAllEdges(trace, options));
+    s.errorAreaS = errorArea(trace);
+    s.verdict = judge(s.metrics, trace, maxOvershootPct);
+    return s;
+}
+
 std::optional<int> GainSearchStrategy::best() const
 {
     std::optional<int> best;
@@ -166,7 +182,13 @@ std::optional<int> GainSearchStrategy::best() const
         const CandidateScore &s = m_scores[i];
         if (!s.accepted())
             continue;
-        if (!best || riseOf(s) < riseOf(m_scores[*best]))
+        if (!best) {
+            best = i;
+            continue;
+        }
+        const CandidateScore &b = m_scores[*best];
+        const bool tie = std::abs(s.riseS() - b.riseS()) <= kRiseTieS;
+        if (tie ? s.errorAreaS < b.errorAreaS : s.riseS() < b.riseS())
             best = i;
     }
     return best;
@@ -185,42 +207,92 @@ void GainSearchStrategy::record(const CandidateScore &score)
         m_stage = Stage::Done; // the first sign of instability ends the search
         return;
     }
-    const quint16 max = m_read.maxGain();
-    // Down the row (Ki lower: less overshoot) until a candidate is accepted or the row ends.
-    if (!score.accepted() && m_kiStep + 1 < kKiSteps) {
-        ++m_kiStep;
-        m_next = rowCandidate(max);
+    if (m_stage == Stage::Refining) {
+        ++m_refinements;
+        if (score.accepted())
+            m_accepted = score.gains.speed;
+        else
+            m_rejectedKp = score.gains.speed.kp;
+        nextRefinement();
         return;
     }
-    // The row is over: its best against the rows before.
-    double rowBest = 1e9;
+    // Down the row (Ki lower: less overshoot) until a candidate is accepted, the row ends or
+    // a lower Ki stops helping.
+    if (!score.accepted() && m_kiStep + 1 < kKiSteps && score.gains.speed.ki > 1 &&
+        lowerKiHelps(score)) {
+        ++m_kiStep;
+        m_next = candidate(m_rowKp, scaled(score.gains.speed.ki, 1 / kKiFactor, m_read.maxGain()));
+        return;
+    }
+    endRow(score);
+}
+
+bool GainSearchStrategy::lowerKiHelps(const CandidateScore &score) const
+{
+    if (score.verdict != CandidateVerdict::Overshoot &&
+        score.verdict != CandidateVerdict::Oscillates)
+        return false; // a lower Ki settles slower still
+    if (m_rowScores.size() < 2)
+        return true;
+    const EdgeMetrics &before = m_rowScores[m_rowScores.size() - 2].metrics;
+    const EdgeMetrics &now = score.metrics;
+    const auto value = [](const Metric &m) { return m.value.value_or(0); };
+    return value(before.overshootPct) - value(now.overshootPct) >= kKiHelpPct ||
+           value(now.oscillations) < value(before.oscillations);
+}
+
+void GainSearchStrategy::endRow(const CandidateScore &last)
+{
+    // The row is over: its fastest accepted rise against the rows before. A row stops at its
+    // first accepted candidate, so the last one says whether it found any.
+    double rowBest = std::numeric_limits<double>::infinity();
     for (const CandidateScore &c : m_rowScores)
         if (c.accepted())
-            rowBest = std::min(rowBest, riseOf(c));
-    const bool improved = rowBest < m_bestBeforeRow * (1 - kMinGain);
-    const bool anyAccepted = m_bestBeforeRow < 1e9 || rowBest < 1e9;
-    m_bestBeforeRow = std::min(m_bestBeforeRow, rowBest);
+            rowBest = std::min(rowBest, c.riseS());
     m_rowScores.clear();
-    // Kp climbs while rows get better (or none was accepted yet) and the range allows; one row
-    // that is no better may be the noise of a few samples: two in a row end the climb.
-    m_rowsWithoutGain = anyAccepted && !improved ? m_rowsWithoutGain + 1 : 0;
-    if (m_rowsWithoutGain >= kPatienceRows || score.gains.speed.kp >= max) {
+    const bool rowAccepted = last.accepted();
+    const bool acceptedBefore = m_accepted.has_value();
+    if (!rowAccepted && acceptedBefore) {
+        // The climb met the bounds: the fastest Kp within them is below this row's.
+        m_stage = Stage::Refining;
+        m_rejectedKp = m_rowKp;
+        nextRefinement();
+        return;
+    }
+    const bool improved = rowBest < m_bestBeforeRow * (1 - kMinGain);
+    m_bestBeforeRow = std::min(m_bestBeforeRow, rowBest);
+    if (rowAccepted) {
+        m_accepted = last.gains.speed;
+        m_rowKi = last.gains.speed.ki;
+    }
+    // One row that is no faster may be the noise of a few samples: two in a row end the climb.
+    m_rowsWithoutGain = rowAccepted && !improved ? m_rowsWithoutGain + 1 : 0;
+    const quint16 max = m_read.maxGain();
+    if (m_rowsWithoutGain >= kPatienceRows || m_rowKp >= max) {
         m_stage = Stage::Done;
         return;
     }
-    ++m_kpStep;
+    m_rowKp = scaled(m_rowKp, kKpFactor, max);
     m_kiStep = 0;
-    m_next = rowCandidate(max);
+    m_next = candidate(m_rowKp, m_rowKi);
 }
 
-LoopGains GainSearchStrategy::rowCandidate(quint16 max) const
+void GainSearchStrategy::nextRefinement()
+{
+    const quint16 low = m_accepted->kp;
+    const auto middle = quint16(std::lround(std::sqrt(double(low) * m_rejectedKp)));
+    if (m_refinements >= kRefinements || middle <= low || middle >= m_rejectedKp) {
+        m_stage = Stage::Done;
+        return;
+    }
+    m_next = candidate(middle, m_accepted->ki);
+}
+
+LoopGains GainSearchStrategy::candidate(quint16 kp, quint16 ki) const
 {
     LoopGains g = m_read;
-    g.speed.kp = m_read.speed.kp;
-    for (int i = 0; i < m_kpStep; ++i)
-        g.speed.kp = scaled(g.speed.kp, kKpFactor, max);
-    for (int i = 0; i < m_kiStep; ++i)
-        g.speed.ki = scaled(g.speed.ki, 1 / kKiFactor, max);
+    g.speed.kp = kp;
+    g.speed.ki = ki;
     return g;
 }
 

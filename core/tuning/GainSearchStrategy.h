@@ -23,11 +23,12 @@ enum class CandidateVerdict {
 /// One candidate tried: its gains and the metrics of its step.
 struct CandidateScore {
     LoopGains gains;
+    /// combine()d over the step's edges: the median rise time (what accepted candidates are
+    /// ranked by), the worst overshoot, oscillations and saturation.
     EdgeMetrics metrics;
     /// The error's area per step, seconds: the mean over the edges of the integral of
-    /// |to - value| / |to - from| from each edge to the next. What candidates are ranked by: it
-    /// falls as the rise gets faster and rises with overshoot and ringing, and unlike a
-    /// crossing time it is not moved by the jitter of a few samples' timestamps.
+    /// |to - value| / |to - from| from each edge to the next. It falls as the rise gets faster
+    /// and rises with overshoot and ringing; it breaks ties between equally fast candidates.
     double errorAreaS = 0;
     CandidateVerdict verdict = CandidateVerdict::NotSettled;
     bool accepted() const { return verdict == CandidateVerdict::Accepted; }
@@ -35,23 +36,39 @@ struct CandidateScore {
     {
         return verdict == CandidateVerdict::Saturated || verdict == CandidateVerdict::Growing;
     }
+    /// The median rise time, seconds; infinity when there is none.
+    double riseS() const;
 };
 
-/// Which speed-loop gains to try next, from the gains read and the scores so far, in rows:
-/// row k has Kp = the read Kp x kKpFactor^k, and tries Ki as read, then Ki / kKiFactor, ... (at
-/// most kKiSteps) until one is accepted (a lower Ki overshoots less and settles slower). The
-/// first candidate is the gains read (the baseline). Kp climbs to the next row until
-/// kPatienceRows rows in a row brought no accepted error area kMinGain smaller than all before
-/// (rows before anything was accepted always climb). Only the speed loop's Kp and Ki change; every
-/// other value stays as read (never beyond the generation's range). Stops at the first unstable
-/// candidate or after `maxCandidates`. Pure.
+/// Which speed-loop gains to try next, from the gains read and the scores so far.
+///
+/// Climbing, in rows: row k has Kp = the read Kp x kKpFactor^k and starts at the Ki the row
+/// before accepted (the read Ki until something is accepted); while a candidate overshoots or
+/// rings, Ki goes down by kKiFactor (at most kKiSteps in a row), but only as long as that
+/// helps: when a lower Ki left the overshoot as it was, the overshoot is the loop's lag, not
+/// the PI zero, and the row ends. The first candidate is the gains read (the baseline). Kp
+/// climbs while rows are accepted and faster; kPatienceRows rows in a row no kMinGain faster
+/// end it (rows before anything was accepted always climb).
+///
+/// Refining: once a row finds nothing within the bounds after a row that did, the fastest
+/// acceptable Kp lies between the two: up to kRefinements candidates halve that interval
+/// (geometric middle, with the accepted Ki), each accepted one its new lower end.
+///
+/// The best is the accepted candidate with the fastest (median) rise, the least error area
+/// among rises within kRiseTieS of it. Only the speed loop's Kp and Ki change; every other
+/// value stays as read (never beyond the generation's range). The first unstable candidate
+/// (current at its limit, swings growing) or `maxCandidates` end the search. Pure.
 class GainSearchStrategy {
 public:
     static constexpr double kKpFactor = 1.3;
     static constexpr double kKiFactor = 1.5;
     static constexpr int kKiSteps = 4;
-    static constexpr int kPatienceRows = 2;      ///< rows no better in a row that end the climb
-    static constexpr double kMinGain = 0.03;     ///< 3 % less error area, or Kp stops climbing
+    static constexpr int kPatienceRows = 2; ///< rows no better in a row that end the climb
+    static constexpr int kRefinements = 3;  ///< halvings between accepted and rejected Kp
+    /// A lower Ki "helped" when the overshoot fell by this many points, or the swings fewer.
+    static constexpr double kKiHelpPct = 0.5;
+    static constexpr double kMinGain = 0.03;     ///< 3 % faster rise, or Kp stops climbing
+    static constexpr double kRiseTieS = 0.0002;  ///< rises this close are equally fast
     static constexpr int kMaxSwings = 2;         ///< oscillations allowed in a step
     static constexpr double kMaxSteadyPct = 2.0; ///< of the step
 
@@ -75,25 +92,36 @@ public:
     static EdgeMetrics combine(const QVector<EdgeMetrics> &edges);
     /// CandidateScore::errorAreaS of a trace (trapezoids on the samples' times).
     static double errorArea(const StepTrace &trace);
+    /// The score of a candidate whose step test gave `trace`: its combined metrics, error area
+    /// and verdict. `effortLimit`: the drive's current (power) limit, for saturation.
+    static CandidateScore score(const LoopGains &gains, const StepTrace &trace,
+                                std::optional<double> effortLimit, double maxOvershootPct);
 
     const QVector<CandidateScore> &scores() const { return m_scores; }
-    /// The accepted candidate with the least error area (index into scores()); nullopt: none
-    /// was accepted.
+    /// The accepted candidate with the fastest rise (index into scores()); nullopt: none was
+    /// accepted.
     std::optional<int> best() const;
     bool stoppedByInstability() const;
 
 private:
-    enum class Stage { Searching, Done };
-    LoopGains rowCandidate(quint16 max) const;
+    enum class Stage { Climbing, Refining, Done };
+    void endRow(const CandidateScore &last);
+    void nextRefinement();
+    bool lowerKiHelps(const CandidateScore &score) const;
+    LoopGains candidate(quint16 kp, quint16 ki) const;
 
     LoopGains m_read;
     double m_maxOvershootPct;
     int m_maxCandidates;
-    Stage m_stage = Stage::Searching;
-    int m_kpStep = 0;
+    Stage m_stage = Stage::Climbing;
+    quint16 m_rowKp = 0; ///< the row's Kp
+    quint16 m_rowKi = 0; ///< the Ki the row starts at
     int m_kiStep = 0;
     int m_rowsWithoutGain = 0;
-    double m_bestBeforeRow = 1e9; ///< the least accepted error area of the rows before
+    double m_bestBeforeRow = 1e9;        ///< the fastest accepted rise of the rows before, seconds
+    std::optional<PidTriple> m_accepted; ///< the last accepted row's (or refinement's) gains
+    quint16 m_rejectedKp = 0;            ///< Refining: the lowest Kp found outside the bounds
+    int m_refinements = 0;
     QVector<CandidateScore> m_rowScores;
     QVector<CandidateScore> m_scores;
     std::optional<LoopGains> m_next;

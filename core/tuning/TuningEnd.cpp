@@ -10,6 +10,24 @@
 
 namespace lk::tuning {
 
+void TuningEnd::readFirst(GainKeeper &keeper, int id, const QString &specError, QObject *context,
+                          std::function<void(StepTestFailure, const QString &)> done)
+{
+    if (!specError.isEmpty()) {
+        QTimer::singleShot(0, context, [done, specError] {
+            done(StepTestFailure::BadSpec, specError + QStringLiteral("; nothing was sent"));
+        });
+        return;
+    }
+    keeper.read(id, [done](bool ok, const QString &why) {
+        if (ok)
+            done(StepTestFailure::None, QString());
+        else
+            done(StepTestFailure::Silent,
+                 QStringLiteral("the gains could not be read (%1); nothing was sent").arg(why));
+    });
+}
+
 void TuningEnd::haltAndRestore(bus::BusSession &session, GainKeeper &keeper, int id,
                                QObject *context, std::function<void(const QString &)> done)
 {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "StepTestRunner.h"
+
 #include <safety/SoftLimits.h>
 
 #include <QtCore/QString>
@@ -16,10 +18,17 @@ namespace lk::tuning {
 
 class GainKeeper;
 
-/// The two ways a frequency sweep or a gain search ends on the drive, shared so that both
-/// end alike: the safe stop (abort, failure) and the return to the speed read at the start.
+/// How a frequency sweep or a gain search begins and the two ways it ends on the drive,
+/// shared so that both run alike: the gains read first, the safe stop (abort, failure) and the
+/// return to the speed read at the start.
 class TuningEnd {
 public:
+    /// The first step of a run: a `specError` ends it (BadSpec, "...; nothing was sent", from
+    /// the event loop: never inside start()); otherwise `keeper` reads drive `id`'s gains and
+    /// acceleration, without which nothing runs (they are what an abort puts back). `done`
+    /// gets None once they were read, Silent with the words when they were not.
+    static void readFirst(GainKeeper &keeper, int id, const QString &specError, QObject *context,
+                          std::function<void(StepTestFailure, const QString &)> done);
     /// Stops the setpoint stream, sends motor off (an emergency stop: `id` first, then every
     /// ID), then writes the settings `keeper` read back to RAM; `done` gets the outcome in
     /// words ("drive 3 is off; the gains and acceleration read before are back in RAM").

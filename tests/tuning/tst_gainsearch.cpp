@@ -65,7 +65,8 @@ CandidateScore scored(const LoopGains &g, double area, double overshoot, Candida
 TransportFactory simFactory()
 {
     return [](int baud) -> std::unique_ptr<transport::Transport> {
-        auto bus = sim::SimBus::fromSpec(*sim::SimBusSpec::parse(QStringLiteral("3:MF,5:MG@2.35")));
+        auto bus =
+            sim::SimBus::fromSpec(*sim::SimBusSpec::parse(QStringLiteral("3:MF,5:MG@2.35,7:MH")));
         auto t = std::make_unique<transport::SimTransport>(std::move(bus));
         t->setBaud(baud);
         return t;
@@ -85,6 +86,7 @@ struct Rig {
         (void)QTest::qWaitFor([this] { return session.connection().isOpen(); }, kWaitMs);
         request(*protocol::build::plain(Command::ReadModel, 3).request);
         request(*protocol::build::plain(Command::ReadModel, 5).request);
+        request(*protocol::build::plain(Command::ReadModel, 7).request);
     }
     RequestResult request(const protocol::Request &r)
     {
@@ -134,10 +136,12 @@ private slots:
     void errorAreaOfAFirstOrderStep();
     void candidateOrder();
     void climbsUntilSomethingIsAccepted();
+    void climbEndsWhenNoFaster();
     void instabilityEndsTheSearch();
     void searchBeatsTheGainsRead_data();
     void searchBeatsTheGainsRead();
     void abortRestoresAndTurnsOff();
+    void saturationStopsAndRestores();
 };
 
 void tst_GainSearch::judge_data()
@@ -179,8 +183,9 @@ void tst_GainSearch::judge()
 
 void tst_GainSearch::candidateOrder()
 {
-    // Rows of Kp (x1.3 each), Ki down by 1.5 in a row until one is accepted; Kp climbs until
-    // two rows in a row are not 3 % better than all before.
+    // Rows of Kp (x1.3 each) from the Ki the row before accepted, Ki down by 1.5 in a row while
+    // that lowers the overshoot; once a row finds nothing, Kp is narrowed down between it and
+    // the last accepted one.
     GainSearchStrategy s(readGains(), 5, 20);
     const auto at = [&](int kp, int ki) {
         return s.next() && s.next()->speed.kp == kp && s.next()->speed.ki == ki;
@@ -189,16 +194,18 @@ void tst_GainSearch::candidateOrder()
     s.record(scored(*s.next(), 0.020, 9, CandidateVerdict::Overshoot));
     QVERIFY(at(50, 27));
     s.record(scored(*s.next(), 0.018, 4, CandidateVerdict::Accepted));
-    QVERIFY(at(65, 40));
-    s.record(scored(*s.next(), 0.016, 8, CandidateVerdict::Overshoot));
-    QVERIFY(at(65, 27));
-    s.record(scored(*s.next(), 0.015, 4, CandidateVerdict::Accepted));
-    QVERIFY(at(85, 40));
-    s.record(scored(*s.next(), 0.0149, 3, CandidateVerdict::Accepted)); // not 3 % better
-    QVERIFY(at(111, 40));                                               // one such row may be noise
-    s.record(scored(*s.next(), 0.0148, 3, CandidateVerdict::Accepted)); // nor this one
-    QVERIFY(!s.next());
-    QCOMPARE(*s.best(), 5); // the least error area accepted
+    QVERIFY(at(65, 27)); // the next row starts at the Ki accepted
+    s.record(scored(*s.next(), 0.015, 8, CandidateVerdict::Overshoot));
+    QVERIFY(at(65, 18));
+    s.record(scored(*s.next(), 0.015, 7.8, CandidateVerdict::Overshoot)); // Ki did not help
+    QVERIFY(at(57, 27)); // between 50 and 65, geometrically
+    s.record(scored(*s.next(), 0.016, 4, CandidateVerdict::Accepted));
+    QVERIFY(at(61, 27));
+    s.record(scored(*s.next(), 0.0155, 6, CandidateVerdict::Overshoot));
+    QVERIFY(at(59, 27));
+    s.record(scored(*s.next(), 0.0157, 5, CandidateVerdict::Accepted));
+    QVERIFY(!s.next());     // three refinements
+    QCOMPARE(*s.best(), 6); // the fastest rise accepted
     // Everything else stays as read.
     for (const CandidateScore &c : s.scores()) {
         QCOMPARE(c.gains.angle, readGains().angle);
@@ -209,15 +216,30 @@ void tst_GainSearch::candidateOrder()
 
 void tst_GainSearch::climbsUntilSomethingIsAccepted()
 {
-    // A row with nothing accepted (Ki down four times) climbs on.
+    // A row with nothing accepted climbs on, from the Ki read; a lower Ki that leaves the
+    // overshoot as it was ends its row.
     GainSearchStrategy s(readGains(), 5, 20);
-    for (int ki : {40, 27, 18, 12}) {
-        QCOMPARE(int(s.next()->speed.ki), ki);
-        s.record(scored(*s.next(), 0.02, 9, CandidateVerdict::Overshoot));
-    }
+    QCOMPARE(int(s.next()->speed.ki), 40);
+    s.record(scored(*s.next(), 0.02, 9, CandidateVerdict::Overshoot));
+    QCOMPARE(int(s.next()->speed.ki), 27);
+    s.record(scored(*s.next(), 0.02, 8.8, CandidateVerdict::Overshoot));
     QCOMPARE(int(s.next()->speed.kp), 65);
     QCOMPARE(int(s.next()->speed.ki), 40);
     QVERIFY(!s.best());
+}
+
+void tst_GainSearch::climbEndsWhenNoFaster()
+{
+    // Accepted rows that are not 3 % faster than all before: two in a row end the climb. Rises
+    // within 0.2 ms are equally fast; the least error area is the best of them.
+    GainSearchStrategy s(readGains(), 5, 20);
+    s.record(scored(*s.next(), 0.0100, 3, CandidateVerdict::Accepted));
+    QCOMPARE(int(s.next()->speed.kp), 65);
+    s.record(scored(*s.next(), 0.0099, 3, CandidateVerdict::Accepted));
+    QCOMPARE(int(s.next()->speed.kp), 85);
+    s.record(scored(*s.next(), 0.0098, 3, CandidateVerdict::Accepted));
+    QVERIFY(!s.next());
+    QCOMPARE(*s.best(), 2);
 }
 
 void tst_GainSearch::instabilityEndsTheSearch()
@@ -257,12 +279,11 @@ void tst_GainSearch::searchBeatsTheGainsRead()
     QVERIFY(r.baseline && r.best);
     const CandidateScore &base = r.candidates[*r.baseline];
     const CandidateScore &best = r.candidates[*r.best];
-    // The best meets the bounds; against the gains read it can only be compared when those
-    // met them too (the factory gains overshoot these steps by about 11 %). Rise time against
-    // the defaults is bench_tuning's figure: here the host's load makes it noise.
+    // The best meets the bounds and rises faster than the gains read (the factory gains
+    // overshoot these steps by about 11 %; the best rises about a quarter faster, more than
+    // the host's load moves a rise time).
     QVERIFY(best.accepted());
-    if (base.accepted())
-        QVERIFY2(best.errorAreaS <= base.errorAreaS, qPrintable(r.message));
+    QVERIFY2(best.riseS() < base.riseS(), qPrintable(r.message));
     QVERIFY(*best.metrics.overshootPct.value <= 5);
     // Nothing written until asked: the drive holds the gains it had.
     QCOMPARE(rig.gains(id), before);
@@ -285,6 +306,28 @@ void tst_GainSearch::abortRestoresAndTurnsOff()
         rig.request(*protocol::build::plain(Command::ReadState2, 3).request);
     QVERIFY(state.reply);
     QCOMPARE(std::get<protocol::State2>(state.reply->payload).iqA(), 0.0);
+}
+
+void tst_GainSearch::saturationStopsAndRestores()
+{
+    // Steps of 11900 dps hold the MH drive's current at its limit for about 50 ms: the first
+    // candidate is the last, the gains read stay in RAM and the drive is back at its speed.
+    Rig rig;
+    const std::optional<LoopGains> before = rig.gains(7);
+    GainSearchSpec s = spec(7);
+    s.to = 12000;
+    QVERIFY(rig.runner.start(s, safety::SoftLimits::defaults(Series::MH)));
+    const GainSearchResult r = rig.waitForEnd();
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QCOMPARE(r.candidates.size(), 1);
+    QCOMPARE(r.candidates.first().verdict, CandidateVerdict::Saturated);
+    QVERIFY(r.stoppedByInstability);
+    QVERIFY(!r.best);
+    QCOMPARE(rig.gains(7), before);
+    const RequestResult state =
+        rig.request(*protocol::build::plain(Command::ReadState2, 7).request);
+    QVERIFY(state.reply);
+    QVERIFY(std::abs(std::get<protocol::State2>(state.reply->payload).speedDps) < 20);
 }
 
 QTEST_GUILESS_MAIN(tst_GainSearch)

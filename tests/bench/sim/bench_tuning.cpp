@@ -1,11 +1,12 @@
 // Frequency response and gain search figures (issue #25), on lksim over its pseudo-terminal
 // at 1 Mbaud with wire-time emulation, one drive of each series on each generation:
 //   freq_*: the measured Bode of the speed loop against the simulator's own transfer function
-//           (SpeedLoopTransfer): the largest dB and degree errors up to a quarter of the
-//           sample rate reached, that rate, and the points compared;
+//           (SpeedLoopTransfer), on an MF and an MG of each generation and an MF with a
+//           resonance and encoder counts: the largest dB and degree errors up to a quarter of
+//           the sample rate reached, that rate, and the points compared;
 //   tune_*: a full speed-loop gain search: its time, and the gains read (the defaults) beside
-//           the suggested ones with their rise time, overshoot and error area.
-// A side-by-side table goes to standard error.
+//           the suggested ones with their rise time, overshoot and settling time.
+// Every candidate and a side-by-side table of default vs suggested gains go to standard error.
 #include "../bus/BenchSession.h"
 #include "../bus/BenchUtil.h"
 
@@ -33,15 +34,25 @@ struct Drive {
     int id;
     Series series;
     bool v235;
+    const char *plant = ""; ///< PlantOptions in the bus spec
 };
-const Drive kDrives[] = {{1, Series::MS, false}, {2, Series::MF, false}, {3, Series::MG, false},
-                         {4, Series::MH, false}, {5, Series::MS, true},  {6, Series::MF, true},
-                         {7, Series::MG, true},  {8, Series::MH, true}};
+/// One drive of each series on each generation, and an MF with a resonance at 80 Hz and a
+/// 14-bit encoder behind its speed estimate.
+const Drive kDrives[] = {{1, Series::MS, false},
+                         {2, Series::MF, false},
+                         {3, Series::MG, false},
+                         {4, Series::MH, false},
+                         {5, Series::MS, true},
+                         {6, Series::MF, true},
+                         {7, Series::MG, true},
+                         {8, Series::MH, true},
+                         {9, Series::MF, false, "resonance=80/0.1+counts=16384"}};
 
 QString key(const Drive &d)
 {
     return protocol::seriesName(d.series) +
-           (d.v235 ? QStringLiteral("_v235") : QStringLiteral("_v23"));
+           (d.v235 ? QStringLiteral("_v235") : QStringLiteral("_v23")) +
+           (*d.plant ? QStringLiteral("_resonant") : QString());
 }
 
 template <typename Runner, typename Result, typename Spec>
@@ -58,13 +69,14 @@ std::optional<Result> run(bus::BusSession &session, const Spec &spec, int id)
     return result;
 }
 
-sim::SpeedLoopTransfer transferFor(Series series, const LoopGains &g)
+sim::SpeedLoopTransfer transferFor(const Drive &d, const LoopGains &g)
 {
     const auto u8 = [](quint16 v) { return quint8(std::min<int>(v, 255)); };
-    return sim::SpeedLoopTransfer::forSeries(series,
+    return sim::SpeedLoopTransfer::forSeries(d.series,
                                              {u8(g.angle.kp), u8(g.angle.ki), u8(g.speed.kp),
                                               u8(g.speed.ki), u8(g.current.kp), u8(g.current.ki)},
-                                             {g.angle.kd, g.speed.kd, g.current.kd});
+                                             {g.angle.kd, g.speed.kd, g.current.kd},
+                                             sim::PlantOptions::parse(d.plant)->resonance);
 }
 
 bool bode(bus::BusSession &session, const Drive &d, bench::JsonLine &json)
@@ -82,7 +94,7 @@ bool bode(bus::BusSession &session, const Drive &d, bench::JsonLine &json)
                      r ? qPrintable(r->message) : "no result");
         return false;
     }
-    const sim::SpeedLoopTransfer h = transferFor(d.series, *r->gains);
+    const sim::SpeedLoopTransfer h = transferFor(d, *r->gains);
     double maxDb = 0, maxDeg = 0;
     std::fprintf(stderr, "Bode of drive %d (%s), %.0f samples/s:\n", d.id, qPrintable(key(d)),
                  r->response.sampleRateHz);
@@ -106,7 +118,20 @@ bool bode(bus::BusSession &session, const Drive &d, bench::JsonLine &json)
     return true;
 }
 
-bool tune(bus::BusSession &session, const Drive &d, bench::JsonLine &json)
+/// One drive's search, for the side-by-side table.
+struct TuneRow {
+    Drive drive;
+    double seconds = 0;
+    int candidates = 0;
+    std::optional<CandidateScore> defaults, suggested;
+};
+
+double ms(const Metric &m)
+{
+    return m.value.value_or(std::nan("")) * 1e3;
+}
+
+bool tune(bus::BusSession &session, const Drive &d, bench::JsonLine &json, QVector<TuneRow> &rows)
 {
     GainSearchSpec spec;
     spec.id = d.id;
@@ -122,30 +147,48 @@ bool tune(bus::BusSession &session, const Drive &d, bench::JsonLine &json)
     const auto put = [&](const QString &which, const CandidateScore &c) {
         json.addInt(k + which + "_kp", c.gains.speed.kp);
         json.addInt(k + which + "_ki", c.gains.speed.ki);
-        json.add(k + which + "_rise_ms", c.metrics.riseTimeS.value.value_or(-0.001) * 1e3, 2);
+        json.add(k + which + "_rise_ms", ms(c.metrics.riseTimeS), 2);
         json.add(k + which + "_overshoot_pct", c.metrics.overshootPct.value.value_or(-1), 1);
-        json.add(k + which + "_error_area_ms", c.errorAreaS * 1e3, 2);
+        json.add(k + which + "_settling_ms", ms(c.metrics.settling5S), 1);
     };
-    if (r->baseline)
-        put(QStringLiteral("default"), r->candidates[*r->baseline]);
-    if (r->best)
-        put(QStringLiteral("suggested"), r->candidates[*r->best]);
-    const auto line = [](const char *what, const CandidateScore &c) {
-        std::fprintf(stderr,
-                     "    %-9s Kp %3d Ki %3d  rise %6.2f ms  overshoot %5.1f %%  area %6.2f ms\n",
-                     what, c.gains.speed.kp, c.gains.speed.ki,
-                     c.metrics.riseTimeS.value.value_or(-0.001) * 1e3,
-                     c.metrics.overshootPct.value.value_or(-1), c.errorAreaS * 1e3);
-    };
-    std::fprintf(stderr, "Tune of drive %d (%s): %.1f s, %d candidates\n", d.id, qPrintable(key(d)),
-                 r->seconds, int(r->candidates.size()));
-    if (r->baseline)
-        line("default", r->candidates[*r->baseline]);
-    if (r->best)
-        line("suggested", r->candidates[*r->best]);
-    else
-        std::fprintf(stderr, "    no candidate met the bounds\n");
+    TuneRow row{d, r->seconds, int(r->candidates.size()), {}, {}};
+    if (r->baseline) {
+        row.defaults = r->candidates[*r->baseline];
+        put(QStringLiteral("default"), *row.defaults);
+    }
+    if (r->best) {
+        row.suggested = r->candidates[*r->best];
+        put(QStringLiteral("suggested"), *row.suggested);
+    }
+    for (const CandidateScore &c : r->candidates)
+        std::fprintf(stderr, "  drive %d  Kp %3d Ki %3d  rise %6.2f ms  overshoot %5.1f %%  %s\n",
+                     d.id, c.gains.speed.kp, c.gains.speed.ki, ms(c.metrics.riseTimeS),
+                     c.metrics.overshootPct.value.value_or(-1), c.accepted() ? "accepted" : "-");
+    rows.append(row);
     return true;
+}
+
+/// Default vs suggested speed gains per drive: Kp/Ki, rise (10-90 %), overshoot, settling (5 %).
+void printTable(const QVector<TuneRow> &rows)
+{
+    std::fprintf(stderr, "\n%-9s %6s %5s | %-8s %8s %7s %8s | %-8s %8s %7s %8s | %s\n", "drive",
+                 "tune s", "cands", "default", "rise ms", "over %", "settl ms", "suggest",
+                 "rise ms", "over %", "settl ms", "faster");
+    const auto cell = [](const std::optional<CandidateScore> &c) {
+        if (!c)
+            return QStringLiteral("%1 %2 %3 %4").arg("-", -8).arg("-", 8).arg("-", 7).arg("-", 8);
+        return QStringLiteral("%1 %2 %3 %4")
+            .arg(QStringLiteral("%1/%2").arg(c->gains.speed.kp).arg(c->gains.speed.ki), -8)
+            .arg(ms(c->metrics.riseTimeS), 8, 'f', 2)
+            .arg(c->metrics.overshootPct.value.value_or(std::nan("")), 7, 'f', 1)
+            .arg(ms(c->metrics.settling5S), 8, 'f', 1);
+    };
+    for (const TuneRow &r : rows) {
+        const bool faster = r.defaults && r.suggested && r.suggested->riseS() < r.defaults->riseS();
+        std::fprintf(stderr, "%-9s %6.1f %5d | %s | %s | %s\n", qPrintable(key(r.drive)), r.seconds,
+                     r.candidates, qPrintable(cell(r.defaults)), qPrintable(cell(r.suggested)),
+                     faster ? "yes" : "NO");
+    }
 }
 
 } // namespace
@@ -156,10 +199,11 @@ int main(int argc, char *argv[])
     QCoreApplication app(argc, argv);
     QStringList motors;
     for (const Drive &d : kDrives)
-        motors << QStringLiteral("%1:%2%3")
+        motors << QStringLiteral("%1:%2%3%4")
                       .arg(d.id)
                       .arg(protocol::seriesName(d.series))
-                      .arg(d.v235 ? QStringLiteral("@2.35") : QString());
+                      .arg(d.v235 ? QStringLiteral("@2.35") : QString())
+                      .arg(*d.plant ? QStringLiteral("+") + QLatin1String(d.plant) : QString());
     e2e::LksimProcess sim(QStringLiteral(LKSIM_PATH));
     if (!sim.start({"--motors", motors.join(QLatin1Char(',')), "--wire-time", "--baud",
                     QString::number(kBaud)})) {
@@ -177,11 +221,13 @@ int main(int argc, char *argv[])
     bench::JsonLine json;
     bool ok = true;
     for (const Drive &d : kDrives) {
-        if (d.series == Series::MF || d.series == Series::MG)
+        if (d.series == Series::MF || d.series == Series::MG) // the resonant MF too
             ok = bode(session, d, json) && ok;
     }
+    QVector<TuneRow> rows;
     for (const Drive &d : kDrives)
-        ok = tune(session, d, json) && ok;
+        ok = tune(session, d, json, rows) && ok;
+    printTable(rows);
     json.print();
     return ok ? 0 : 1;
 }
