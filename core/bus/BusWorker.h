@@ -141,6 +141,9 @@ public:
     void setSoftLimits(int id, const safety::SoftLimits &limits);
     const SpeedWatch &speedWatch() const { return m_speedWatch; }
     void setSeries(int id, protocol::Series series);
+    /// The user's word on a drive no model read can tell (BusSession::setDriveIdentity).
+    void setDriveIdentity(int id, protocol::Series series, protocol::Generation generation,
+                          std::optional<double> gearRatio);
     void learnModel(int id, const protocol::ModelInfo &model,
                     std::optional<protocol::Series> series);
     /// Make `id` known without a model (a drive answered but its model could not be read).
@@ -155,6 +158,9 @@ public:
     transport::Transport::State state() const;
     bool isOpen() const { return state() == transport::Transport::State::Open; }
     int baud() const;
+    /// What the link carries (RS485 or CAN) and its timing at its bit rate.
+    protocol::Link link() const { return m_link.link(); }
+    LinkTiming timing() const { return m_link.timing(); }
     double now() const; ///< seconds since the worker was made (the session clock)
     bool isBusy() const { return m_wire.isBusy(); }
     /// Whether transmissions are held back now: the quiet period after a timeout.
@@ -164,7 +170,7 @@ public:
     /// drive lifts it for a while; AdaptiveTimeout).
     double replyTimeoutS(protocol::Command command, int id) const
     {
-        return m_wire.timeouts().timeoutS(command, baud(), id);
+        return m_wire.timeouts().timeoutS(command, timing(), id);
     }
     /// The shortest sensible reply timeout: wire time + turnaround + BusConfig::minMarginMs,
     /// for probes where silence is the common answer (scan pass 1, emergency stop).
@@ -222,6 +228,9 @@ private:
     void schedulePump();
     void pumpNow();
     std::optional<Pending> takeNext();
+    /// The bytes of `p` for its drive's context now; false (and `p` completed with the
+    /// codec's reason) when the link and generation cannot carry its values.
+    bool encode(Pending &p);
     void complete(Pending p, RequestStatus status, std::optional<protocol::Reply> reply,
                   const QString &reason, double latencyS, SendRefusal refusal = SendRefusal::None);
     /// True (and counted) when the session listens only: the caller then sends nothing.
