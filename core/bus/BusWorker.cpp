@@ -6,6 +6,7 @@
 
 #include <protocol/Checksum.h>
 #include <protocol/LinkCodec.h>
+#include <protocol/RequestBuilder.h>
 
 #include <QtCore/QMetaObject>
 
@@ -283,10 +284,30 @@ void BusWorker::pumpNow()
     }
 }
 
+void BusWorker::addSpeedTorqueLimit(protocol::Request &r, const protocol::DecodeContext &ctx) const
+{
+    // CAN V2.36 reads B2-B3 of a speed command as its torque limit, and whether 0 means
+    // "none" or "no torque" is unknown (docs/CAN.md section 9): the limit is the user's soft
+    // limit for the drive, whoever built the speed. Without soft limits it stays unset and
+    // the codec refuses the request.
+    auto *c = std::get_if<protocol::SpeedCommand>(&r.payload);
+    const auto limits = m_softLimits.constFind(r.id);
+    if (!c || c->iqLimitRaw || limits == m_softLimits.cend() || !ctx.onCan() ||
+        ctx.generation != protocol::Generation::V2_35)
+        return;
+    const protocol::BuildResult b =
+        protocol::build::speed(r.id, c->speedDps(), ctx, limits->maxTorqueA);
+    if (b.ok())
+        r = *b.request;
+}
+
 bool BusWorker::encode(Pending &p)
 {
+    const protocol::DecodeContext ctx = m_motors.decodeContext(p.req.request.id);
+    if (p.req.request.command == Command::Speed)
+        addSpeedTorqueLimit(p.req.request, ctx);
     const protocol::Request &r = p.req.request;
-    const protocol::WireEncodeResult e = protocol::encodeRequest(r, m_motors.decodeContext(r.id));
+    const protocol::WireEncodeResult e = protocol::encodeRequest(r, ctx);
     if (e.ok()) {
         p.bytes = e.bytes;
         return true;
@@ -529,6 +550,7 @@ void BusWorker::startSetpointStream(const SetpointStreamPlan &plan)
 
 void BusWorker::setSoftLimits(int id, const safety::SoftLimits &limits)
 {
+    m_softLimits.insert(id, limits);
     m_speedWatch.setSoftLimits(id, limits);
 }
 

@@ -231,6 +231,8 @@ private:
     /// The bytes of `p` for its drive's context now; false (and `p` completed with the
     /// codec's reason) when the link and generation cannot carry its values.
     bool encode(Pending &p);
+    /// A speed for a CAN V2.36 drive carries the drive's soft-limit torque (never 0).
+    void addSpeedTorqueLimit(protocol::Request &r, const protocol::DecodeContext &ctx) const;
     void complete(Pending p, RequestStatus status, std::optional<protocol::Reply> reply,
                   const QString &reason, double latencyS, SendRefusal refusal = SendRefusal::None);
     /// True (and counted) when the session listens only: the caller then sends nothing.
@@ -277,6 +279,7 @@ private:
     ReplyIntake m_intake{m_motors, m_telemetry};
     ListenMonitor m_listen{m_motors, m_telemetry, m_diagnostics, m_clock, this};
     quint64 m_refusedCalls = 0;
+    QMap<int, safety::SoftLimits> m_softLimits; ///< by drive: the V2.36 speed's torque limit
 };
 
 } // namespace lk::bus

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "DriveIdentity.h"
+
 #include <protocol/Series.h>
 #include <protocol/Values.h>
 
@@ -30,17 +32,7 @@ struct KnownMotor {
 
 using KnownMotors = QMap<int, KnownMotor>;
 
-/// What the user says a drive is, where no model read tells it (CAN, listen-only RS485):
-/// BusSession::setDriveIdentity. On CAN, Generation::V2_3 is the old CAN generation and
-/// V2_35 CAN V2.36 (docs/CAN.md section 3).
-struct DriveIdentity {
-    int id = 0;
-    protocol::Series series = protocol::Series::MF;
-    protocol::Generation generation = protocol::Generation::V2_3;
-    std::optional<double> gearRatio;
-};
 
 } // namespace lk::bus
 
 Q_DECLARE_METATYPE(lk::bus::KnownMotors)
-Q_DECLARE_METATYPE(lk::bus::DriveIdentity)

@@ -5,6 +5,7 @@
 #include <protocol/CanLayout.h>
 #include <protocol/CanRecord.h>
 #include <protocol/RequestBuilder.h>
+#include <safety/SoftLimits.h>
 #include <sim/SimBus.h>
 #include <sim/SimCanFront.h>
 #include <transport/SimTransport.h>
@@ -192,27 +193,34 @@ void tst_BusCan::v236SpeedNeedsItsTorqueLimit()
     const RequestResult refused = done.at(0).at(0).value<RequestResult>();
     QCOMPARE(refused.status, RequestStatus::Error);
     QVERIFY2(refused.reason.contains(QStringLiteral("not sent")), qPrintable(refused.reason));
-    // With the soft limits' torque it goes, and carries the limit in B2-B3.
-    const protocol::DecodeContext ctx{Series::MF, Generation::V2_35, protocol::Link::Can};
-    const protocol::BuildResult limited = protocol::build::speed(2, 90, ctx, 2.0);
-    QVERIFY(limited.ok());
-    session.send(*limited.request);
+    // Once the drive has soft limits, the engine gives any speed their torque: 2 A at MF's
+    // 33/4096 A per LSB, rounded down (never more than allowed), in B2-B3.
+    safety::SoftLimits limits;
+    limits.maxTorqueA = 2.0;
+    session.setSoftLimits(2, limits);
+    session.send(*bare.request);
     QTRY_COMPARE_WITH_TIMEOUT(done.size(), 2, 10000);
     QCOMPARE(done.at(1).at(0).value<RequestResult>().status, RequestStatus::Ok);
+    // A speed built with the limit keeps its own.
+    const protocol::DecodeContext ctx{Series::MF, Generation::V2_35, protocol::Link::Can};
+    const protocol::BuildResult limited = protocol::build::speed(2, 90, ctx, 1.0);
+    QVERIFY(limited.ok());
+    session.send(*limited.request);
+    QTRY_COMPARE_WITH_TIMEOUT(done.size(), 3, 10000);
+    QCOMPARE(done.at(2).at(0).value<RequestResult>().status, RequestStatus::Ok);
     QTest::qWait(100);
-    int sentSpeeds = 0;
+    QVector<int> sentLimits;
     for (const auto &args : traffic) {
         for (const TrafficEvent &e : args.at(0).value<TrafficBatch>()) {
             if (e.kind != TrafficEvent::Kind::Sent || e.command != quint8(Command::Speed))
                 continue;
-            ++sentSpeeds;
             const auto record = protocol::CanRecord::decode(e.bytes);
             QVERIFY(record);
-            const qint16 limit = qint16(quint8(record->data[2]) | (quint8(record->data[3]) << 8));
-            QVERIFY(limit > 0);
+            sentLimits << qint16(quint8(record->data[2]) | (quint8(record->data[3]) << 8));
         }
     }
-    QCOMPARE(sentSpeeds, 1); // the refused one never reached the wire
+    // The refused one never reached the wire.
+    QCOMPARE(sentLimits, (QVector<int>{248, 124}));
     session.emergencyStop({2});
 }
 
