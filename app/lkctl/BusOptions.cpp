@@ -3,8 +3,8 @@
 #include "ArgParser.h"
 
 #include <bus/BusTiming.h>
-#include <sim/SimBusSpec.h>
 #include <bus/LinkTiming.h>
+#include <sim/SimBusSpec.h>
 #include <transport/CanTransport.h>
 #include <transport/SerialTransport.h>
 #include <transport/SimTransport.h>
@@ -81,8 +81,8 @@ std::optional<BusOptions> BusOptions::from(const ArgParser &parser, QString *err
 {
     BusOptions o;
     if (parser.isSet(QStringLiteral("drives"))) {
-        const auto drives = bus::DriveIdentity::parseList(parser.value(QStringLiteral("drives")),
-                                                          error);
+        const auto drives =
+            bus::DriveIdentity::parseList(parser.value(QStringLiteral("drives")), error);
         if (!drives) {
             *error = QStringLiteral("--drives: %1").arg(*error);
             return std::nullopt;

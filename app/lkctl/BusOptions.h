@@ -25,10 +25,10 @@ struct BusOptions {
 
     QString port;
     int baud = 115200;
-    QString simSpec;   ///< non-empty: the in-process simulated bus
-    QString simRomDir; ///< where the simulated drives keep their ROM (empty: memory only)
-    QString canPlugin;    ///< non-empty: a CAN link, "socketcan", "virtualcan", "peakcan"...
-    QString canInterface; ///< "can0", or for virtualcan "tcp://127.0.0.1:PORT/can0"
+    QString simSpec;       ///< non-empty: the in-process simulated bus
+    QString simRomDir;     ///< where the simulated drives keep their ROM (empty: memory only)
+    QString canPlugin;     ///< non-empty: a CAN link, "socketcan", "virtualcan", "peakcan"...
+    QString canInterface;  ///< "can0", or for virtualcan "tcp://127.0.0.1:PORT/can0"
     int bitRate = 1000000; ///< the CAN bit rate (--bitrate)
     QVector<bus::DriveIdentity> drives; ///< --drives: the user's word on each drive
     /// ListenOnly (`lkctl listen`): the port opens read-only and the session sends nothing.

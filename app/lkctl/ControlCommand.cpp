@@ -393,8 +393,8 @@ int ControlCommand::runFor(LiveBus &bus, Plan plan, const LiveBus::Identity &who
         return kExitFailure;
     // Each bound is the lower of the soft limit and the drive's own, where it holds one.
     // RS485 V2.35 holds its own limits in parameters (0x40); CAN V2.36 has only 0xC0/0xC1.
-    const bool v235 = who.model.generation == protocol::Generation::V2_35 &&
-                      bus.link() == protocol::Link::Rs485;
+    const bool v235 =
+        who.model.generation == protocol::Generation::V2_35 && bus.link() == protocol::Link::Rs485;
     const safety::DriveLimits own =
         v235 ? readDriveLimits(bus, plan.request.id, drive) : safety::DriveLimits{};
     const safety::MotionPlan motion =

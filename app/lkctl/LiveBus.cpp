@@ -110,17 +110,17 @@ void LiveBus::watchCanCondition()
 {
     // Bus-off, error-passive and no-ACK are states of the open link, said once each with
     // their fix (the transport words them), never a "link lost".
-    QObject::connect(&m_session, &BusSession::connectionChanged, &m_session,
-                     [this](const bus::ConnectionStatus &s) {
-                         if (s.canCondition == m_canCondition)
-                             return;
-                         m_canCondition = s.canCondition;
-                         if (!s.conditionText.isEmpty())
-                             error(QStringLiteral("CAN bus %1: %2")
-                                       .arg(QLatin1String(
-                                                transport::canBusConditionName(s.canCondition)),
-                                            s.conditionText));
-                     });
+    QObject::connect(
+        &m_session, &BusSession::connectionChanged, &m_session,
+        [this](const bus::ConnectionStatus &s) {
+            if (s.canCondition == m_canCondition)
+                return;
+            m_canCondition = s.canCondition;
+            if (!s.conditionText.isEmpty())
+                error(QStringLiteral("CAN bus %1: %2")
+                          .arg(QLatin1String(transport::canBusConditionName(s.canCondition)),
+                               s.conditionText));
+        });
 }
 
 QString LiveBus::holdersText(const QString &device)

@@ -52,7 +52,7 @@ public:
     struct Identity {
         protocol::ModelInfo model;
         std::optional<protocol::Series> series; ///< nullopt: the model names no series
-        protocol::Reply reply; ///< the read_model reply itself (`read model` prints it)
+        protocol::Reply reply;           ///< the read_model reply itself (`read model` prints it)
         std::optional<double> gearRatio; ///< CAN: the user's (--drives ID:SERIES@GEN/GEAR)
     };
     std::optional<Identity> identify(int id);

@@ -1,6 +1,5 @@
 #include "AdaptiveTimeout.h"
 
-
 #include <algorithm>
 
 namespace lk::bus {
@@ -33,8 +32,7 @@ double AdaptiveTimeout::wireS(Command command, const LinkTiming &timing, int rep
 double AdaptiveTimeout::extraLatencyS(Command command, const LinkTiming &timing, double latencyS,
                                       int replyFrameBytes)
 {
-    return std::max(0.0,
-                    latencyS - wireS(command, timing, replyFrameBytes) - timing.turnaroundS());
+    return std::max(0.0, latencyS - wireS(command, timing, replyFrameBytes) - timing.turnaroundS());
 }
 
 void AdaptiveTimeout::addReply(Command command, const LinkTiming &timing, double latencyS, int id,
@@ -69,9 +67,8 @@ std::optional<double> AdaptiveTimeout::measuredTurnaroundS() const
     return m_turnaround.min();
 }
 
-void AdaptiveTimeout::addLateReply(Command command, const LinkTiming &timing,
-                                   double latencyS, int id,
-                                   int replyFrameBytes)
+void AdaptiveTimeout::addLateReply(Command command, const LinkTiming &timing, double latencyS,
+                                   int id, int replyFrameBytes)
 {
     // Not into the link's windows: one drive's late answer is that drive's, and a p99 of a
     // few replies would otherwise lift every drive's timeout (and each silent ID's wait).

@@ -55,8 +55,8 @@ public:
                   int replyFrameBytes = 0);
     /// A reply to `command` from drive `id` arrived `latencyS` after a request that had
     /// already timed out: that drive's margins are lifted (see the class comment).
-    void addLateReply(protocol::Command command, const LinkTiming &timing, double latencyS, int id = 0,
-                      int replyFrameBytes = 0);
+    void addLateReply(protocol::Command command, const LinkTiming &timing, double latencyS,
+                      int id = 0, int replyFrameBytes = 0);
     void reset();
     /// The margin of reads (what polling and scans mostly send), over the link.
     double marginS() const { return marginS(CommandClass::Read); }
@@ -84,8 +84,8 @@ public:
 private:
     /// Request and reply on the wire (see addReply for `replyFrameBytes`).
     static double wireS(protocol::Command command, const LinkTiming &timing, int replyFrameBytes);
-    static double extraLatencyS(protocol::Command command, const LinkTiming &timing, double latencyS,
-                                int replyFrameBytes);
+    static double extraLatencyS(protocol::Command command, const LinkTiming &timing,
+                                double latencyS, int replyFrameBytes);
     /// A reply of `id` came in time with `extraS` of extra latency: its late lift decays.
     void decayLate(int id, double extraS);
     double boundedS(double marginS) const;

@@ -39,7 +39,7 @@ struct LinkStatistics {
 /// A snapshot of the bus statistics (BusSession::statisticsUpdated, ~2 Hz).
 struct BusStatistics {
     double time = 0; ///< seconds since the session started
-    int baud = 0; ///< the bit rate on CAN
+    int baud = 0;    ///< the bit rate on CAN
     protocol::Link link = protocol::Link::Rs485;
     LinkMode mode = LinkMode::Active;
     quint64 listenOnlyRefusals = 0; ///< calls that would have transmitted, refused (ListenOnly)

@@ -15,18 +15,6 @@ QString tr(const char *text)
 }
 } // namespace
 
-std::optional<protocol::Generation> DriveIdentity::generationFromWord(const QString &word)
-{
-    const QString w = word.trimmed().toLower();
-    if (w == QLatin1String("can") || w == QLatin1String("can-old") ||
-        w == QLatin1String("canold"))
-        return protocol::Generation::V2_3;
-    if (w == QLatin1String("can236") || w == QLatin1String("can2.36") ||
-        w == QLatin1String("2.36") || w == QLatin1String("v2.36"))
-        return protocol::Generation::V2_35;
-    return protocol::generationFromName(w);
-}
-
 std::optional<DriveIdentity> DriveIdentity::parse(const QString &text, QString *error)
 {
     const QString t = text.trimmed();
@@ -61,7 +49,7 @@ std::optional<DriveIdentity> DriveIdentity::parse(const QString &text, QString *
         d.gearRatio = gear;
         rest = rest.left(slash);
     }
-    const std::optional<protocol::Generation> g = generationFromWord(rest);
+    const std::optional<protocol::Generation> g = protocol::generationFromWord(rest);
     if (!g) {
         *error = tr("\"%1\": the generation must be 2.3 or 2.35 (RS485), can (old CAN) or "
                     "can236 (CAN V2.36)")
@@ -72,8 +60,7 @@ std::optional<DriveIdentity> DriveIdentity::parse(const QString &text, QString *
     return d;
 }
 
-std::optional<QVector<DriveIdentity>> DriveIdentity::parseList(const QString &text,
-                                                               QString *error)
+std::optional<QVector<DriveIdentity>> DriveIdentity::parseList(const QString &text, QString *error)
 {
     QVector<DriveIdentity> out;
     QSet<int> seen;

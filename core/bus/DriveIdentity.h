@@ -26,8 +26,6 @@ struct DriveIdentity {
     static std::optional<DriveIdentity> parse(const QString &text, QString *error);
     /// A comma-separated list of parse()'s form; each ID once.
     static std::optional<QVector<DriveIdentity>> parseList(const QString &text, QString *error);
-    /// The generation words of parse(): "2.35" -> V2_35, "can" -> V2_3, ...
-    static std::optional<protocol::Generation> generationFromWord(const QString &word);
 };
 
 } // namespace lk::bus

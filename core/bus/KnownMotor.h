@@ -32,7 +32,6 @@ struct KnownMotor {
 
 using KnownMotors = QMap<int, KnownMotor>;
 
-
 } // namespace lk::bus
 
 Q_DECLARE_METATYPE(lk::bus::KnownMotors)

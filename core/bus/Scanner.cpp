@@ -2,8 +2,8 @@
 
 #include "BusLog.h"
 #include "BusTiming.h"
-#include "LinkTiming.h"
 #include "BusWorker.h"
+#include "LinkTiming.h"
 #include "MotorRegistry.h"
 
 #include <protocol/Checksum.h>

@@ -23,7 +23,7 @@ struct TrafficEvent {
         Note,    ///< connection changes, dropped events
     };
     Kind kind = Kind::Note;
-    double time = 0;  ///< seconds since the session started
+    double time = 0; ///< seconds since the session started
     /// The wire bytes (hex column, export). On CAN (context.link) one CanRecord per frame:
     /// CanRecord::decode(bytes)->candumpText() gives "141#9C00000000000000".
     QByteArray bytes;

@@ -12,8 +12,8 @@
 
 #include <protocol/Checksum.h>
 #include <protocol/FrameParser.h>
-#include <protocol/StreamParser.h>
 #include <protocol/Series.h>
+#include <protocol/StreamParser.h>
 
 #include <QtCore/QObject>
 

@@ -30,9 +30,9 @@ struct TransportError {
     QString message;
 };
 
-/// Moves bytes to and from one bus (RS485, or CAN as records) and reports its connection state; nothing more.
-/// Framing, matching and timing live above it (BusWorker). An implementation lives on the
-/// bus thread and is used only from there.
+/// Moves bytes to and from one bus (RS485, or CAN as records) and reports its connection state;
+/// nothing more. Framing, matching and timing live above it (BusWorker). An implementation lives on
+/// the bus thread and is used only from there.
 class Transport : public QObject {
     Q_OBJECT
 public:

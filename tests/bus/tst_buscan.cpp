@@ -58,7 +58,7 @@ ScanSummary scanOnce(BusSession &session, QSignalSpy &finished)
     const qsizetype before = finished.size();
     ScanOptions o;
     o.lastId = 8;
-    o.retries = 1; // exact whatever the machine's load
+    o.retries = 1;       // exact whatever the machine's load
     o.sweepBauds = true; // asked for, but CAN never sweeps
     session.scan(o);
     if (!QTest::qWaitFor([&] { return finished.size() > before; }, 60000))
@@ -250,9 +250,9 @@ void tst_BusCan::statisticsUseCanTiming()
     PollPlan p = PollPlan::standard({1});
     p.commands = {Command::ReadState2};
     session.startPolling(p);
-    QTRY_VERIFY_WITH_TIMEOUT(
-        !stats.isEmpty() && stats.last().at(0).value<BusStatistics>().pollLimitPerSecond > 0,
-        10000);
+    QTRY_VERIFY_WITH_TIMEOUT(!stats.isEmpty() &&
+                                 stats.last().at(0).value<BusStatistics>().pollLimitPerSecond > 0,
+                             10000);
     const BusStatistics s = stats.last().at(0).value<BusStatistics>();
     QCOMPARE(s.link, protocol::Link::Can);
     QCOMPARE(s.baud, 500000);

@@ -1,7 +1,7 @@
 #include <bus/AdaptiveTimeout.h>
 #include <bus/BusTiming.h>
-#include <bus/LinkTiming.h>
 #include <bus/LatencyWindow.h>
+#include <bus/LinkTiming.h>
 #include <bus/TelemetrySample.h>
 
 #include <QtTest/QTest>
@@ -181,7 +181,8 @@ void tst_BusTiming::adaptiveMargin()
     for (int i = 0; i < replies; ++i)
         t.addReply(Command::ReadState2, LinkTiming::rs485(115200), wire + extraMs * 1e-3);
     QVERIFY2(qAbs(t.marginS() * 1e3 - marginMs) < 1e-6, qPrintable(QString::number(t.marginS())));
-    QVERIFY(qAbs(t.timeoutS(Command::ReadState2, LinkTiming::rs485(115200)) - (wire + t.marginS())) < 1e-12);
+    QVERIFY(qAbs(t.timeoutS(Command::ReadState2, LinkTiming::rs485(115200)) -
+                 (wire + t.marginS())) < 1e-12);
 }
 
 void tst_BusTiming::marginCoversTheSlowestPercent()
@@ -191,7 +192,8 @@ void tst_BusTiming::marginCoversTheSlowestPercent()
     AdaptiveTimeout t; // defaults: min 2, initial 20, max 200 ms
     const double wire = BusTiming::transactionTimeS(Command::ReadState2, 115200);
     for (int i = 0; i < AdaptiveTimeout::kWindow; ++i)
-        t.addReply(Command::ReadState2, LinkTiming::rs485(115200), wire + (i % 50 == 25 ? 10e-3 : 0.1e-3));
+        t.addReply(Command::ReadState2, LinkTiming::rs485(115200),
+                   wire + (i % 50 == 25 ? 10e-3 : 0.1e-3));
     QVERIFY2(t.marginS() >= 2 * 10e-3 - 1e-12, qPrintable(QString::number(t.marginS())));
     QVERIFY(t.timeoutS(Command::ReadState2, LinkTiming::rs485(115200)) > wire + 10e-3);
 }
@@ -205,8 +207,10 @@ void tst_BusTiming::turnaroundIsMeasured()
     const double wire0 = BusTiming::transactionTimeS(Command::ReadState2, 115200, 0);
     QVERIFY(!t.measuredTurnaroundS());
     for (int i = 0; i < 20; ++i)
-        t.addReply(Command::ReadState2, LinkTiming::rs485(115200), wire0 + (i == 7 ? 5e-3 : 0.2e-3));
-    t.addReply(Command::WritePidRom, LinkTiming::rs485(115200), 1e-4); // no flash write teaches the link
+        t.addReply(Command::ReadState2, LinkTiming::rs485(115200),
+                   wire0 + (i == 7 ? 5e-3 : 0.2e-3));
+    t.addReply(Command::WritePidRom, LinkTiming::rs485(115200),
+               1e-4); // no flash write teaches the link
     QVERIFY(t.measuredTurnaroundS());
     QVERIFY2(qAbs(*t.measuredTurnaroundS() - 0.2e-3) < 1e-9,
              qPrintable(QString::number(*t.measuredTurnaroundS())));
@@ -314,7 +318,8 @@ void tst_BusTiming::quietPeriodCoversTheLongestReply()
     for (int i = 0; i < 100; ++i)
         t.addReply(Command::ReadState2, LinkTiming::rs485(115200), wire + (i % 10) * 16e-3 / 9);
     QVERIFY(t.quietS(Command::ReadState2, LinkTiming::rs485(115200)) >= 16e-3);
-    QVERIFY(t.quietS(Command::ReadState2, LinkTiming::rs485(1000000)) < t.quietS(Command::ReadState2, LinkTiming::rs485(115200)));
+    QVERIFY(t.quietS(Command::ReadState2, LinkTiming::rs485(1000000)) <
+            t.quietS(Command::ReadState2, LinkTiming::rs485(115200)));
     // A probe's quiet period ends when a reply could have come through this link, counted
     // from the send: the formula with the longest reply plus the same latency.
     const double linkS =

@@ -43,8 +43,7 @@ TransportFactory canFactory()
         s.spec = *sim::SimBusSpec::parse(QString::fromLatin1(kSpec));
         s.link = protocol::Link::Can;
         auto t = transport::SimTransport::factory(s)(bitRate);
-        static_cast<transport::SimTransport *>(t.get())
-            ->setReplyDelay(LinkTiming::kCanReplyTimeS);
+        static_cast<transport::SimTransport *>(t.get())->setReplyDelay(LinkTiming::kCanReplyTimeS);
         return t;
     };
 }
