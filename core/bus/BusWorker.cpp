@@ -3,10 +3,9 @@
 #include "BusLog.h"
 #include "EmergencyStop.h"
 #include "Scanner.h"
+#include "WireEncoding.h"
 
 #include <protocol/Checksum.h>
-#include <protocol/LinkCodec.h>
-#include <protocol/RequestBuilder.h>
 
 #include <QtCore/QMetaObject>
 
@@ -169,7 +168,7 @@ void BusWorker::onLinkState(Transport::State state, const QString &reason)
     if (m_shutDown)
         return;
     if (state == Transport::State::Open) {
-        m_motors.setLink(m_link.link()); // how every drive's frames are laid out from now on
+        m_motors.setLink(m_link.link());
         m_wire.restartStream();
         m_listen.restart();
         m_link.report();
@@ -284,36 +283,17 @@ void BusWorker::pumpNow()
     }
 }
 
-void BusWorker::addSpeedTorqueLimit(protocol::Request &r, const protocol::DecodeContext &ctx) const
-{
-    // CAN V2.36 reads B2-B3 of a speed command as its torque limit, and whether 0 means
-    // "none" or "no torque" is unknown (docs/CAN.md section 9): the limit is the user's soft
-    // limit for the drive, whoever built the speed. Without soft limits it stays unset and
-    // the codec refuses the request.
-    auto *c = std::get_if<protocol::SpeedCommand>(&r.payload);
-    const auto limits = m_softLimits.constFind(r.id);
-    if (!c || c->iqLimitRaw || limits == m_softLimits.cend() || !ctx.onCan() ||
-        ctx.generation != protocol::Generation::V2_35)
-        return;
-    const protocol::BuildResult b =
-        protocol::build::speed(r.id, c->speedDps(), ctx, limits->maxTorqueA);
-    if (b.ok())
-        r = *b.request;
-}
-
 bool BusWorker::encode(Pending &p)
 {
-    const protocol::DecodeContext ctx = m_motors.decodeContext(p.req.request.id);
-    if (p.req.request.command == Command::Speed)
-        addSpeedTorqueLimit(p.req.request, ctx);
     const protocol::Request &r = p.req.request;
-    const protocol::WireEncodeResult e = protocol::encodeRequest(r, ctx);
-    if (e.ok()) {
-        p.bytes = e.bytes;
+    const auto limits = m_softLimits.constFind(r.id);
+    const protocol::WireEncodeResult e =
+        encodeForWire(p.req.request, m_motors.decodeContext(r.id),
+                      limits == m_softLimits.cend() ? nullptr : &*limits);
+    p.bytes = e.bytes;
+    if (e.ok())
         return true;
-    }
-    // A value this link and generation cannot carry (a V2.36 speed without its torque
-    // limit, an angle beyond CAN's int32...): nothing is sent, the caller hears why.
+    // A value this link and generation cannot carry: nothing is sent, the caller hears why.
     const QString why = tr("%1 to drive %2 was not sent: %3")
                             .arg(CommandTable::name(r.command))
                             .arg(r.id)
@@ -576,40 +556,11 @@ std::optional<protocol::Series> BusWorker::seriesOf(int id) const
     return m_motors.series(id);
 }
 
-void BusWorker::setSeries(int id, protocol::Series series)
-{
-    if (m_motors.setSeries(id, series))
-        emit knownMotorsChanged(m_motors.all());
-}
-
 void BusWorker::learnModel(int id, const protocol::ModelInfo &model,
                            std::optional<protocol::Series> series)
 {
     if (m_motors.learnModel(id, model, series))
         emit knownMotorsChanged(m_motors.all());
-}
-
-void BusWorker::setDriveIdentity(int id, protocol::Series series, protocol::Generation generation,
-                                 std::optional<double> gearRatio)
-{
-    if (m_motors.setIdentity(id, series, generation, gearRatio))
-        emit knownMotorsChanged(m_motors.all());
-}
-
-void BusWorker::noteMotor(int id)
-{
-    if (m_motors.noteSeen(id))
-        emit knownMotorsChanged(m_motors.all());
-}
-
-double BusWorker::probeTimeoutS(Command command) const
-{
-    return timing().replyTimeoutS(command, m_config.minMarginMs * 1e-3);
-}
-
-quint64 BusWorker::lateReplyCount() const
-{
-    return m_diagnostics.counters().busCounters().lateReplies;
 }
 
 void BusWorker::forgetMotors()
@@ -621,11 +572,6 @@ void BusWorker::forgetMotors(int firstId, int lastId)
 {
     if (m_motors.forget(firstId, lastId))
         emit knownMotorsChanged(m_motors.all());
-}
-
-void BusWorker::resetStatistics()
-{
-    m_diagnostics.counters().reset();
 }
 
 BusStatistics BusWorker::statisticsSnapshot()
@@ -645,11 +591,6 @@ BusStatistics BusWorker::statisticsSnapshot()
     s.pollLimitPerSecond = polls.isActive() ? polls.busLimitPerSecond(t, turnaroundS) : 0;
     s.pollCycleLimitHz = polls.isActive() ? polls.cycleLimitHz(t, turnaroundS) : 0;
     return s;
-}
-
-void BusWorker::setTrafficCapture(bool enabled)
-{
-    m_diagnostics.setTrafficCapture(enabled);
 }
 
 } // namespace lk::bus

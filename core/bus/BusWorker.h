@@ -140,18 +140,30 @@ public:
     /// The soft limits of drive `id`: the speed watch bounds torque and open loop by them.
     void setSoftLimits(int id, const safety::SoftLimits &limits);
     const SpeedWatch &speedWatch() const { return m_speedWatch; }
-    void setSeries(int id, protocol::Series series);
+    void setSeries(int id, protocol::Series series)
+    {
+        if (m_motors.setSeries(id, series))
+            emit knownMotorsChanged(m_motors.all());
+    }
     /// The user's word on a drive no model read can tell (BusSession::setDriveIdentity).
     void setDriveIdentity(int id, protocol::Series series, protocol::Generation generation,
-                          std::optional<double> gearRatio);
+                          std::optional<double> gearRatio)
+    {
+        if (m_motors.setIdentity(id, series, generation, gearRatio))
+            emit knownMotorsChanged(m_motors.all());
+    }
     void learnModel(int id, const protocol::ModelInfo &model,
                     std::optional<protocol::Series> series);
     /// Make `id` known without a model (a drive answered but its model could not be read).
-    void noteMotor(int id);
+    void noteMotor(int id)
+    {
+        if (m_motors.noteSeen(id))
+            emit knownMotorsChanged(m_motors.all());
+    }
     void forgetMotors();
     void forgetMotors(int firstId, int lastId);
-    void setTrafficCapture(bool enabled);
-    void resetStatistics();
+    void setTrafficCapture(bool enabled) { m_diagnostics.setTrafficCapture(enabled); }
+    void resetStatistics() { m_diagnostics.counters().reset(); }
 
     const KnownMotors &knownMotors() const { return m_motors.all(); }
     std::optional<protocol::Series> seriesOf(int id) const;
@@ -174,9 +186,12 @@ public:
     }
     /// The shortest sensible reply timeout: wire time + turnaround + BusConfig::minMarginMs,
     /// for probes where silence is the common answer (scan pass 1, emergency stop).
-    double probeTimeoutS(protocol::Command command) const;
+    double probeTimeoutS(protocol::Command command) const
+    {
+        return timing().replyTimeoutS(command, m_config.minMarginMs * 1e-3);
+    }
     /// Replies that came after their request had timed out, since the last reset.
-    quint64 lateReplyCount() const;
+    quint64 lateReplyCount() const { return m_diagnostics.counters().busCounters().lateReplies; }
     /// When the latest-sent request that got a late reply went out (session clock, seconds;
     /// -1: none yet). A scan pass asks whether one of its own probes was answered late.
     double lateRequestSentTime() const { return m_wire.lateRequestSentTime(); }
@@ -231,8 +246,6 @@ private:
     /// The bytes of `p` for its drive's context now; false (and `p` completed with the
     /// codec's reason) when the link and generation cannot carry its values.
     bool encode(Pending &p);
-    /// A speed for a CAN V2.36 drive carries the drive's soft-limit torque (never 0).
-    void addSpeedTorqueLimit(protocol::Request &r, const protocol::DecodeContext &ctx) const;
     void complete(Pending p, RequestStatus status, std::optional<protocol::Reply> reply,
                   const QString &reason, double latencyS, SendRefusal refusal = SendRefusal::None);
     /// True (and counted) when the session listens only: the caller then sends nothing.
