@@ -1,5 +1,6 @@
 #pragma once
 
+#include <bus/DriveIdentity.h>
 #include <bus/LinkMode.h>
 #include <bus/TransportFactory.h>
 
@@ -11,17 +12,25 @@ namespace lk::lkctl {
 
 class ArgParser;
 
-/// Which bus a live subcommand talks to: a serial port (`--port DEV --baud N`) or the
-/// in-process simulator (`--sim ID:SERIES,...`, optionally `--sim-rom-dir DIR`).
+/// Which bus a live subcommand talks to: a serial port (`--port DEV --baud N`), a CAN
+/// interface through Qt SerialBus (`--can PLUGIN:INTERFACE --bitrate N`) or the in-process
+/// simulator (`--sim ID:SERIES,...`, optionally `--sim-rom-dir DIR`). `--drives` tells the
+/// drives' identity where no model read can (every CAN drive).
 struct BusOptions {
-    /// Environment variables for the defaults of --port and --baud (the command line wins).
+    /// Environment variables for the defaults of --port, --baud and --can (the command line
+    /// wins).
     static constexpr const char *kPortVariable = "LKCTL_PORT";
     static constexpr const char *kBaudVariable = "LKCTL_BAUD";
+    static constexpr const char *kCanVariable = "LKCTL_CAN";
 
     QString port;
     int baud = 115200;
-    QString simSpec;   ///< non-empty: the in-process simulated bus
-    QString simRomDir; ///< where the simulated drives keep their ROM (empty: memory only)
+    QString simSpec;       ///< non-empty: the in-process simulated bus
+    QString simRomDir;     ///< where the simulated drives keep their ROM (empty: memory only)
+    QString canPlugin;     ///< non-empty: a CAN link, "socketcan", "virtualcan", "peakcan"...
+    QString canInterface;  ///< "can0", or for virtualcan "tcp://127.0.0.1:PORT/can0"
+    int bitRate = 1000000; ///< the CAN bit rate (--bitrate)
+    QVector<bus::DriveIdentity> drives; ///< --drives: the user's word on each drive
     /// ListenOnly (`lkctl listen`): the port opens read-only and the session sends nothing.
     bus::LinkMode mode = bus::LinkMode::Active;
 
@@ -33,6 +42,9 @@ struct BusOptions {
     static std::optional<BusOptions> from(const ArgParser &parser, QString *error);
 
     bool isSimulated() const { return !simSpec.isEmpty(); }
+    bool isCan() const { return !canPlugin.isEmpty(); }
+    /// The rate the session opens at: the CAN bit rate, else the baud.
+    int rate() const { return isCan() ? bitRate : baud; }
     /// The port as a device path: a bare name stays (the transport looks in /dev), a name
     /// with a slash is a path, made absolute against the working directory ("./bus").
     static QString portPath(const QString &port);

@@ -211,7 +211,8 @@ bool ControlCommand::readPosition(LiveBus &bus, const Plan &plan, const LiveBus:
                                   const safety::SoftLimits &limits,
                                   safety::DrivePosition &position) const
 {
-    position.gearRatio = motor::ModelNameInfo::parse(who.model.motorName).gearRatio;
+    position.gearRatio =
+        who.gearRatio.value_or(motor::ModelNameInfo::parse(who.model.motorName).gearRatio);
     if (!safety::MotionPlanner::needsAngle(plan.request, limits))
         return true;
     // Targets start where the drive is: never judge a move from an assumed 0.
@@ -378,7 +379,7 @@ int ControlCommand::runFor(LiveBus &bus, Plan plan, const LiveBus::Identity &who
     // A torque is in the drive's own units (V2.35 MF and MG differ from V2.3): built again
     // now that the drive is known.
     const protocol::DecodeContext drive{who.series.value_or(protocol::Series::MF),
-                                        who.model.generation};
+                                        who.model.generation, bus.link()};
     const FieldBuildResult rebuilt = RequestText::build(plan.command, plan.values, drive);
     if (!rebuilt.ok())
         return usageError(bus.console(), rebuilt.message);
@@ -391,7 +392,9 @@ int ControlCommand::runFor(LiveBus &bus, Plan plan, const LiveBus::Identity &who
     if (!readPosition(bus, plan, who, *limits, position))
         return kExitFailure;
     // Each bound is the lower of the soft limit and the drive's own, where it holds one.
-    const bool v235 = who.model.generation == protocol::Generation::V2_35;
+    // RS485 V2.35 holds its own limits in parameters (0x40); CAN V2.36 has only 0xC0/0xC1.
+    const bool v235 =
+        who.model.generation == protocol::Generation::V2_35 && bus.link() == protocol::Link::Rs485;
     const safety::DriveLimits own =
         v235 ? readDriveLimits(bus, plan.request.id, drive) : safety::DriveLimits{};
     const safety::MotionPlan motion =

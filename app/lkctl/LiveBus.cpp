@@ -67,7 +67,12 @@ bool LiveBus::open(const BusOptions &options)
                                      });
     const auto c2 = QObject::connect(&m_session, &BusSession::connectionChanged,
                                      [&state](const bus::ConnectionStatus &s) { state = s; });
-    m_session.open(options.factory(), options.baud, {}, options.mode);
+    // The user's word on each drive first: the first reply already decodes by it.
+    for (const bus::DriveIdentity &d : options.drives)
+        m_session.setDriveIdentity(d);
+    watchCanCondition();
+    m_link = options.isCan() ? protocol::Link::Can : protocol::Link::Rs485;
+    m_session.open(options.factory(), options.rate(), canConfig(options), options.mode);
     waitUntil([&state] { return state.has_value(); }, 30000);
     QObject::disconnect(c1);
     QObject::disconnect(c2);
@@ -87,6 +92,35 @@ bool LiveBus::open(const BusOptions &options)
                   .arg(m_command == QLatin1String("off") ? QStringLiteral("motor_off")
                                                          : QStringLiteral("motor_stop")));
     return false;
+}
+
+bus::BusConfig LiveBus::canConfig(const BusOptions &options)
+{
+    bus::BusConfig c;
+    if (options.isCan()) {
+        // A CAN adapter hands frames over without a USB-serial chip's latency timer (FTDI:
+        // 16 ms): a fresh link need not wait for one before it has measured the real latency.
+        c.initialMarginMs = 5;
+        c.minMarginMs = 1;
+    }
+    return c;
+}
+
+void LiveBus::watchCanCondition()
+{
+    // Bus-off, error-passive and no-ACK are states of the open link, said once each with
+    // their fix (the transport words them), never a "link lost".
+    QObject::connect(
+        &m_session, &BusSession::connectionChanged, &m_session,
+        [this](const bus::ConnectionStatus &s) {
+            if (s.canCondition == m_canCondition)
+                return;
+            m_canCondition = s.canCondition;
+            if (!s.conditionText.isEmpty())
+                error(QStringLiteral("CAN bus %1: %2")
+                          .arg(QLatin1String(transport::canBusConditionName(s.canCondition)),
+                               s.conditionText));
+        });
 }
 
 QString LiveBus::holdersText(const QString &device)
@@ -147,8 +181,36 @@ void LiveBus::reportFailure(const RequestResult &result)
     error(text);
 }
 
+std::optional<LiveBus::Identity> LiveBus::identifyOnCan(int id)
+{
+    // CAN has no model read (0x12): the drive shows it is there with read_state1, its reply
+    // may tell the generation (its ID, the 0x9A layout), and the user tells the rest.
+    const RequestResult r = request(protocol::Command::ReadState1, id);
+    if (!r.ok()) {
+        reportFailure(r);
+        return std::nullopt;
+    }
+    waitUntil([this, id] { return m_session.knownMotors().contains(id); }, 1000);
+    const bus::KnownMotor known = m_session.knownMotors().value(id);
+    if (!known.identityChosen && !known.generationSeen) {
+        error(QStringLiteral("drive %1 on CAN: its generation cannot be read (CAN has no model "
+                             "read and its reply does not tell); give it with --drives, e.g. "
+                             "--drives %1:MG@can (old CAN) or %1:MG@can236 (CAN V2.36)")
+                  .arg(id));
+        return std::nullopt;
+    }
+    Identity i;
+    i.model.generation = known.generation;
+    i.series = known.identityChosen ? known.series : std::nullopt;
+    i.gearRatio = known.gearRatio;
+    i.reply = *r.reply;
+    return i;
+}
+
 std::optional<LiveBus::Identity> LiveBus::identify(int id)
 {
+    if (m_link == protocol::Link::Can)
+        return identifyOnCan(id);
     const RequestResult r = request(protocol::Command::ReadModel, id);
     if (!r.ok() || !r.reply || !std::holds_alternative<protocol::ModelInfo>(r.reply->payload)) {
         reportFailure(r);

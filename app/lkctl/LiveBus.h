@@ -32,6 +32,9 @@ public:
     bool open(const BusOptions &options);
     /// "/dev/ttyUSB0 is held open by process 4242 (lkstudio)", or that none is visible.
     static QString holdersText(const QString &device);
+    /// The bus tunables for `options`: on CAN a fresh link's margin without a USB-serial
+    /// chip's latency timer.
+    static bus::BusConfig canConfig(const BusOptions &options);
 
     /// Send one request (already checked by MotionGuard if it moves a motor) and wait.
     /// `retries` as BusSession::send (0: sent exactly once, whatever it is).
@@ -42,13 +45,19 @@ public:
                                bus::Priority priority = bus::Priority::Operator, int retries = -1);
 
     /// read_model from `id`; on success the session decodes its replies by the series the
-    /// model names. nullopt after printing why (no reply, ...).
+    /// model names. nullopt after printing why (no reply, ...). On CAN, which has no model
+    /// read: read_state1 shows the drive is there, and the generation and series are the
+    /// user's (--drives) or, for the generation, what the reply told; `model` is empty but
+    /// for its generation.
     struct Identity {
         protocol::ModelInfo model;
         std::optional<protocol::Series> series; ///< nullopt: the model names no series
-        protocol::Reply reply; ///< the read_model reply itself (`read model` prints it)
+        protocol::Reply reply;           ///< the read_model reply itself (`read model` prints it)
+        std::optional<double> gearRatio; ///< CAN: the user's (--drives ID:SERIES@GEN/GEAR)
     };
     std::optional<Identity> identify(int id);
+    /// The link the bus opened on (RS485 until open()).
+    protocol::Link link() const { return m_link; }
 
     bus::ScanSummary scan(const bus::ScanOptions &options);
     /// Motor off (or `halt` MotorStop) to `ids` plus every known ID (all of 1..32 when none),
@@ -76,9 +85,15 @@ public:
     static constexpr int kTickMs = 100; ///< how late waitUntil may notice its deadline
 
 private:
+    std::optional<Identity> identifyOnCan(int id);
+    /// Prints each new bad CAN bus condition (bus-off, error-passive, no-ACK) with its fix.
+    void watchCanCondition();
+
     Console &m_console;
     QString m_command;
     bus::BusSession m_session;
+    transport::CanBusCondition m_canCondition = transport::CanBusCondition::Good;
+    protocol::Link m_link = protocol::Link::Rs485;
 };
 
 } // namespace lk::lkctl

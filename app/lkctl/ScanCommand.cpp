@@ -71,10 +71,19 @@ QByteArray jsonArray(const QVector<bus::FoundMotor> &motors, bool withBaud)
             o.text(QStringLiteral("series"), protocol::seriesName(*m.series));
         else
             o.null(QStringLiteral("series"));
-        if (m.modelKnown)
-            o.text(QStringLiteral("generation"), protocol::generationName(m.model.generation));
+        // On CAN no model is read: the generation is what the reply told or the user said
+        // (v2.3: the old CAN generation, v2.35: CAN V2.36; "dialect" names it).
+        const std::optional<protocol::Generation> generation =
+            m.modelKnown ? std::optional<protocol::Generation>(m.model.generation) : m.generation;
+        if (generation)
+            o.text(QStringLiteral("generation"), protocol::generationName(*generation));
         else
             o.null(QStringLiteral("generation"));
+        if (m.link == protocol::Link::Can)
+            o.text(QStringLiteral("dialect"),
+                   generation ? protocol::dialectName({m.series.value_or(protocol::Series::MF),
+                                                       *generation, protocol::Link::Can})
+                              : QStringLiteral("CAN"));
         addState(o, m);
         if (withBaud)
             o.integer(QStringLiteral("baud"), m.baud);

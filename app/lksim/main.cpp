@@ -1,10 +1,13 @@
 // lksim: a simulated bus of LK drives served on a new pseudo-terminal (CLI.md "lksim").
 
+#include "CanBusServer.h"
 #include "PtyBusServer.h"
 #include "PtyDevice.h"
 #include "TapBusServer.h"
 
 #include <bus/BusTiming.h>
+#include <bus/LinkTiming.h>
+#include <protocol/CanLayout.h>
 #include <sim/ControllerSpec.h>
 #include <sim/SimBus.h>
 #include <sim/SimBusSpec.h>
@@ -50,6 +53,42 @@ int fail(const QString &message)
 {
     std::fprintf(stderr, "lksim: %s\n", qPrintable(message));
     return 2;
+}
+
+/// lksim --can: the drives on a CAN interface until SIGINT/SIGTERM (CanBusServer).
+int serveCan(lk::sim::SimBus &bus, const lk::sim::SimBusSpec &spec, const QString &where,
+             const QString &rateText, const QString &baseText, bool wireTime, bool verbose)
+{
+    const qsizetype colon = where.indexOf(QLatin1Char(':'));
+    if (colon <= 0)
+        return fail(QStringLiteral("--can takes PLUGIN:INTERFACE, e.g. virtualcan:can0"));
+    bool ok = false;
+    const int rate = rateText.toInt(&ok);
+    if (!ok || !lk::bus::LinkTiming::isCanBitRate(rate))
+        return fail(QStringLiteral("--bitrate must be 1000000, 500000, 250000, 125000 or 100000"));
+    lk::app::CanBusServer::Options o;
+    o.can.plugin = where.left(colon);
+    o.can.interfaceName = where.mid(colon + 1);
+    o.can.bitRate = rate;
+    o.emulateWireTime = wireTime;
+    o.verbose = verbose;
+    lk::app::CanBusServer server(bus, o);
+    if (baseText == QLatin1String("140"))
+        server.front().setReplyBase(lk::protocol::can::IdBase::Base140);
+    else if (baseText == QLatin1String("180"))
+        server.front().setReplyBase(lk::protocol::can::IdBase::Base180);
+    else if (!baseText.isEmpty())
+        return fail(QStringLiteral("--can-reply-base is 140 or 180"));
+    if (!server.open())
+        return 2;
+    installSignalHandlers();
+    std::printf("%s\n", qPrintable(where));
+    std::fflush(stdout);
+    std::fprintf(stderr, "lksim: %s on CAN %s at %d bit/s\n", qPrintable(spec.toString()),
+                 qPrintable(where), rate);
+    const int rc = server.run(g_stop);
+    std::fprintf(stderr, "%s\n", qPrintable(server.summary()));
+    return rc;
 }
 
 bool isLkBaud(int baud)
@@ -223,6 +262,23 @@ int main(int argc, char *argv[])
         QStringLiteral("path"));
     parser.addOption(controller);
     parser.addOption(controllerLog);
+    // --can: the drives on a CAN interface instead of a pty (CanBusServer).
+    const QCommandLineOption can(
+        QStringLiteral("can"),
+        QStringLiteral("Serve the drives on CAN through Qt SerialBus instead of a pty: "
+                       "virtualcan:tcp://127.0.0.1:PORT/can0 (a port of one's own), "
+                       "socketcan:vcan0. In --motors, @can makes an old CAN drive, @can236 a "
+                       "V2.36 one (replies on 0x180+ID)."),
+        QStringLiteral("PLUGIN:INTERFACE"));
+    const QCommandLineOption bitRate(QStringLiteral("bitrate"),
+                                     QStringLiteral("CAN bit rate (default 1000000)."),
+                                     QStringLiteral("N"), QStringLiteral("1000000"));
+    const QCommandLineOption replyBase(
+        QStringLiteral("can-reply-base"),
+        QStringLiteral("Answer on 0x140+ID or 0x180+ID whatever the generation (140 or 180); "
+                       "default: as each generation's document says."),
+        QStringLiteral("BASE"));
+    parser.addOptions({can, bitRate, replyBase});
     parser.process(app);
 
     if (!parser.isSet(motors))
@@ -277,6 +333,10 @@ int main(int argc, char *argv[])
         return fail(QStringLiteral("--bad-checksum-pct must be a percentage 0..100, got '%1'")
                         .arg(parser.value(badChecksumPct)));
     bus->faults().setProbability(lk::sim::Fault::FirmwareChecksum, badChecksum / 100.0);
+
+    if (parser.isSet(can))
+        return serveCan(*bus, *spec, parser.value(can), parser.value(bitRate),
+                        parser.value(replyBase), parser.isSet(wireTime), parser.isSet(verbose));
 
     lk::app::PtyDevice pty;
     if (!pty.open())

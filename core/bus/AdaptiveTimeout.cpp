@@ -1,7 +1,5 @@
 #include "AdaptiveTimeout.h"
 
-#include "BusTiming.h"
-
 #include <algorithm>
 
 namespace lk::bus {
@@ -22,32 +20,32 @@ AdaptiveTimeout::CommandClass AdaptiveTimeout::classOf(Command command)
     return read ? CommandClass::Read : CommandClass::Write;
 }
 
-double AdaptiveTimeout::wireS(Command command, int baud, int replyFrameBytes)
+double AdaptiveTimeout::wireS(Command command, const LinkTiming &timing, int replyFrameBytes)
 {
     // The reply as it came: a V2.35 drive's 58-byte model reply takes 17 ms more at 9600 baud
     // than the usual 42 bytes, which is wire time, not latency.
-    const int replyBytes = replyFrameBytes > 0 ? replyFrameBytes : BusTiming::replyBytes(command);
-    return BusTiming::wireTimeS(BusTiming::requestBytes(command), replyBytes, baud);
+    const double replyS =
+        replyFrameBytes > 0 ? timing.frameWireS(replyFrameBytes) : timing.replyWireS(command);
+    return timing.requestWireS(command) + replyS;
 }
 
-double AdaptiveTimeout::extraLatencyS(Command command, int baud, double latencyS,
+double AdaptiveTimeout::extraLatencyS(Command command, const LinkTiming &timing, double latencyS,
                                       int replyFrameBytes)
 {
-    return std::max(0.0,
-                    latencyS - wireS(command, baud, replyFrameBytes) - BusTiming::kTurnaroundS);
+    return std::max(0.0, latencyS - wireS(command, timing, replyFrameBytes) - timing.turnaroundS());
 }
 
-void AdaptiveTimeout::addReply(Command command, int baud, double latencyS, int id,
+void AdaptiveTimeout::addReply(Command command, const LinkTiming &timing, double latencyS, int id,
                                int replyFrameBytes)
 {
-    const double extra = extraLatencyS(command, baud, latencyS, replyFrameBytes);
+    const double extra = extraLatencyS(command, timing, latencyS, replyFrameBytes);
     decayLate(id, extra);
     const CommandClass c = classOf(command);
     // Writing flash takes the drive itself longer: that teaches its own class only, while
     // the link's latency (adapter, host) shows in every other reply.
     if (c != CommandClass::Flash) {
         m_link.add(extra);
-        m_turnaround.add(std::max(0.0, latencyS - wireS(command, baud, replyFrameBytes)));
+        m_turnaround.add(std::max(0.0, latencyS - wireS(command, timing, replyFrameBytes)));
     }
     m_classes[static_cast<size_t>(c)].add(extra);
 }
@@ -69,12 +67,12 @@ std::optional<double> AdaptiveTimeout::measuredTurnaroundS() const
     return m_turnaround.min();
 }
 
-void AdaptiveTimeout::addLateReply(Command command, int baud, double latencyS, int id,
-                                   int replyFrameBytes)
+void AdaptiveTimeout::addLateReply(Command command, const LinkTiming &timing, double latencyS,
+                                   int id, int replyFrameBytes)
 {
     // Not into the link's windows: one drive's late answer is that drive's, and a p99 of a
     // few replies would otherwise lift every drive's timeout (and each silent ID's wait).
-    const double extra = extraLatencyS(command, baud, latencyS, replyFrameBytes);
+    const double extra = extraLatencyS(command, timing, latencyS, replyFrameBytes);
     double &lift = m_lateExtraS[id];
     lift = std::max(lift, extra);
 }
@@ -106,9 +104,9 @@ double AdaptiveTimeout::marginS(CommandClass commandClass, int id) const
     return boundedS(margin);
 }
 
-double AdaptiveTimeout::timeoutS(Command command, int baud, int id) const
+double AdaptiveTimeout::timeoutS(Command command, const LinkTiming &timing, int id) const
 {
-    return BusTiming::replyTimeoutS(command, baud, marginS(classOf(command), id));
+    return timing.replyTimeoutS(command, marginS(classOf(command), id));
 }
 
 double AdaptiveTimeout::linkLatencyS(int id) const
@@ -116,20 +114,19 @@ double AdaptiveTimeout::linkLatencyS(int id) const
     return boundedS(std::max(m_link.quantile(kPercentile), lateExtraS(id)));
 }
 
-double AdaptiveTimeout::quietS(Command command, int baud, int id) const
+double AdaptiveTimeout::quietS(Command command, const LinkTiming &timing, int id) const
 {
     // A 99th percentile of fewer than a hundred replies says little: until then the link is
     // not trusted to be faster than BusConfig::initialMarginMs.
     double latency = linkLatencyS(id);
     if (m_link.size() < kPercentileSamples)
         latency = std::max(latency, boundedS(m_config.initialMarginMs * 1e-3));
-    return BusTiming::kTurnaroundS +
-           BusTiming::wireTimeS(0, BusTiming::maxReplyBytes(command), baud) + latency;
+    return timing.turnaroundS() + timing.maxReplyWireS(command) + latency;
 }
 
-double AdaptiveTimeout::replyDeadlineS(Command command, int baud, int id) const
+double AdaptiveTimeout::replyDeadlineS(Command command, const LinkTiming &timing, int id) const
 {
-    return BusTiming::replyTimeoutS(command, baud, linkLatencyS(id));
+    return timing.replyTimeoutS(command, linkLatencyS(id));
 }
 
 } // namespace lk::bus

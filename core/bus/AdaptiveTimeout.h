@@ -2,6 +2,7 @@
 
 #include "BusConfig.h"
 #include "LatencyWindow.h"
+#include "LinkTiming.h"
 
 #include <protocol/Command.h>
 
@@ -12,7 +13,8 @@
 
 namespace lk::bus {
 
-/// Reply timeouts, and the quiet time after one, from the bus formula plus what the link has
+/// Reply timeouts, and the quiet time after one, from the link's timing (LinkTiming: RS485's
+/// bus formula, or CAN's frames and reply time) plus what the link has
 /// shown: the extra latency of each reply beyond wire time + turnaround (USB adapters add
 /// 1-16 ms, a loaded host more), over the link and per command class.
 ///
@@ -49,28 +51,28 @@ public:
     /// A reply to `command` from drive `id` arrived `latencyS` after the request was written.
     /// `replyFrameBytes` > 0: the reply's length on the wire (a V2.35 model reply is longer
     /// than the usual one); else the usual length of the command's reply.
-    void addReply(protocol::Command command, int baud, double latencyS, int id = 0,
+    void addReply(protocol::Command command, const LinkTiming &timing, double latencyS, int id = 0,
                   int replyFrameBytes = 0);
     /// A reply to `command` from drive `id` arrived `latencyS` after a request that had
     /// already timed out: that drive's margins are lifted (see the class comment).
-    void addLateReply(protocol::Command command, int baud, double latencyS, int id = 0,
-                      int replyFrameBytes = 0);
+    void addLateReply(protocol::Command command, const LinkTiming &timing, double latencyS,
+                      int id = 0, int replyFrameBytes = 0);
     void reset();
     /// The margin of reads (what polling and scans mostly send), over the link.
     double marginS() const { return marginS(CommandClass::Read); }
     /// The margin of a class for drive `id` (0: the link's, without any drive's late lift).
     double marginS(CommandClass commandClass, int id = 0) const;
-    double timeoutS(protocol::Command command, int baud, int id = 0) const;
+    double timeoutS(protocol::Command command, const LinkTiming &timing, int id = 0) const;
     /// How long after a timeout a reply to `command` from drive `id` may still arrive: the
     /// drive's longest turnaround, the wire time of its longest reply, and the link's latency
     /// (p99 of the extra latency, or that drive's recent late reply's; at least
     /// BusConfig::minMarginMs, and at least BusConfig::initialMarginMs until
     /// kPercentileSamples replies were measured).
-    double quietS(protocol::Command command, int baud, int id = 0) const;
+    double quietS(protocol::Command command, const LinkTiming &timing, int id = 0) const;
     /// How long after its send a reply to `command` can arrive from drive `id` when it keeps
     /// its turnaround: the formula with the longest reply plus that same latency. A probe's
     /// short timeout may end before it; then the quiet period lasts until it.
-    double replyDeadlineS(protocol::Command command, int baud, int id = 0) const;
+    double replyDeadlineS(protocol::Command command, const LinkTiming &timing, int id = 0) const;
     /// The lift a late reply of drive `id` still gives its margins' base (0: none).
     double lateExtraS(int id) const { return m_lateExtraS.value(id, 0.0); }
     int samples() const { return m_link.size(); }
@@ -81,9 +83,9 @@ public:
 
 private:
     /// Request and reply on the wire (see addReply for `replyFrameBytes`).
-    static double wireS(protocol::Command command, int baud, int replyFrameBytes);
-    static double extraLatencyS(protocol::Command command, int baud, double latencyS,
-                                int replyFrameBytes);
+    static double wireS(protocol::Command command, const LinkTiming &timing, int replyFrameBytes);
+    static double extraLatencyS(protocol::Command command, const LinkTiming &timing,
+                                double latencyS, int replyFrameBytes);
     /// A reply of `id` came in time with `extraS` of extra latency: its late lift decays.
     void decayLate(int id, double extraS);
     double boundedS(double marginS) const;

@@ -4,6 +4,8 @@
 #include "BusWorker.h"
 #include "StopTargets.h"
 
+#include <protocol/Checksum.h>
+
 #include <QtCore/QCoreApplication>
 #include <QtCore/QMetaObject>
 #include <QtCore/QThread>
@@ -109,6 +111,8 @@ void BusSession::open(TransportFactory factory, int baud, const BusConfig &confi
     post([w = m_worker, mode] { w->start(mode); });
     for (auto it = m_softLimits.cbegin(); it != m_softLimits.cend(); ++it)
         post([w = m_worker, id = it.key(), limits = it.value()] { w->setSoftLimits(id, limits); });
+    for (const DriveIdentity &d : std::as_const(m_identities))
+        postIdentity(d);
 }
 
 void BusSession::join()
@@ -341,6 +345,31 @@ void BusSession::setSeries(int id, protocol::Series series)
     m.id = id;
     m.series = series;
     post([w = m_worker, id, series] { w->setSeries(id, series); });
+}
+
+void BusSession::setDriveIdentity(const DriveIdentity &identity)
+{
+    if (identity.id < protocol::kMinId || identity.id > protocol::kMaxId)
+        return;
+    m_identities.insert(identity.id, identity);
+    KnownMotor &m = m_motors[identity.id];
+    m.id = identity.id;
+    m.series = identity.series;
+    m.generation = identity.generation;
+    m.gearRatio = identity.gearRatio;
+    m.identityChosen = true;
+    postIdentity(identity);
+}
+
+void BusSession::postIdentity(const DriveIdentity &d)
+{
+    post([w = m_worker, d] { w->setDriveIdentity(d.id, d.series, d.generation, d.gearRatio); });
+}
+
+std::optional<DriveIdentity> BusSession::driveIdentity(int id) const
+{
+    const auto it = m_identities.constFind(id);
+    return it == m_identities.cend() ? std::nullopt : std::optional<DriveIdentity>(*it);
 }
 
 void BusSession::forgetMotors()

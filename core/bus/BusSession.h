@@ -34,7 +34,9 @@ namespace lk::bus {
 
 class BusWorker;
 
-/// The thread-safe face of one RS485 bus for the GUI and the CLI.
+/// The thread-safe face of one bus (RS485, or CAN through CanTransport) for the GUI and the
+/// CLI. The link is the transport's (Transport::link()); ConnectionStatus says which, and on
+/// CAN the bus condition (bus-off, error-passive, no-ACK) with its fix.
 ///
 /// Lives in the caller's thread; owns a QThread on which a BusWorker and its transport run.
 /// Every call returns at once and is forwarded as a queued invocation; every result comes
@@ -149,6 +151,15 @@ public:
 
     /// Tell the bus how to decode replies from `id` (iq vs power); also makes `id` known.
     void setSeries(int id, protocol::Series series);
+    /// The user's word on drive `identity.id`: its series, generation and gear ratio. A drive
+    /// whose model cannot be read (every drive on CAN, and listen-only RS485) decodes by it,
+    /// and torque, power and open loop follow its series (unknown until then: refused, as for
+    /// any drive of unknown series). Remembered over close() and open() and given to each new
+    /// link; no reply overrides it. On CAN, Generation::V2_3 is the old CAN generation,
+    /// V2_35 CAN V2.36.
+    void setDriveIdentity(const DriveIdentity &identity);
+    /// What setDriveIdentity() said of `id`; nullopt when nothing.
+    std::optional<DriveIdentity> driveIdentity(int id) const;
     /// Forget every known ID (e.g. before telling the bus a new set by hand).
     void forgetMotors();
     KnownMotors knownMotors() const { return m_motors; } ///< last reported by the worker
@@ -206,6 +217,7 @@ private:
     void join();
     void finishRequest(const RequestResult &result);
     void postPollPlan(); ///< the worker polls effectivePollPlan()
+    void postIdentity(const DriveIdentity &identity);
     void finishStop(quint64 ticket, const QVector<int> &acknowledged, const QVector<int> &silent,
                     const QVector<int> &unsent);
     template <typename F> void post(F &&f);
@@ -229,6 +241,7 @@ private:
     quint64 m_nextExtrasHandle = 1;
     quint64 m_nextStream = 1;
     QMap<int, safety::SoftLimits> m_softLimits; ///< by drive, given again to each new worker
+    QMap<int, DriveIdentity> m_identities;      ///< by drive, given again to each new worker
     TicketCallbacks<RequestResult> m_requestCallbacks;
     TicketCallbacks<QVector<int>, QVector<int>, QVector<int>> m_stopCallbacks;
 };

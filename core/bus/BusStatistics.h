@@ -2,6 +2,8 @@
 
 #include "LinkMode.h"
 
+#include <protocol/Series.h>
+
 #include <QtCore/QMap>
 #include <QtCore/QMetaType>
 
@@ -37,12 +39,15 @@ struct LinkStatistics {
 /// A snapshot of the bus statistics (BusSession::statisticsUpdated, ~2 Hz).
 struct BusStatistics {
     double time = 0; ///< seconds since the session started
-    int baud = 0;
+    int baud = 0;    ///< the bit rate on CAN
+    protocol::Link link = protocol::Link::Rs485;
     LinkMode mode = LinkMode::Active;
     quint64 listenOnlyRefusals = 0; ///< calls that would have transmitted, refused (ListenOnly)
     LinkStatistics bus;
     QMap<int, LinkStatistics> perId;
     quint64 localEchoes = 0;    ///< our own request read back (adapter echo), skipped
+    quint64 canErrorFrames = 0; ///< CAN: error frames the controller reported
+    quint64 otherFrames = 0;    ///< CAN: frames of no drive (other devices, the 0x280 frame)
     double timeoutMarginMs = 0; ///< the adaptive margin added to the wire time just now
     /// Bus limit in transactions/s for the active poll mix (0: no polling), with the
     /// turnaround below: what the drives and the link were measured to need, not a guess.

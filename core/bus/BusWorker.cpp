@@ -1,9 +1,9 @@
 #include "BusWorker.h"
 
 #include "BusLog.h"
-#include "BusTiming.h"
 #include "EmergencyStop.h"
 #include "Scanner.h"
+#include "WireEncoding.h"
 
 #include <protocol/Checksum.h>
 
@@ -39,7 +39,11 @@ BusWorker::BusWorker(TransportFactory factory, int baud, const BusConfig &config
                         [this](Pending p, RequestStatus status, const QString &reason) {
                             onAttemptFailed(std::move(p), status, reason);
                         },
-                        [this] { pumpNow(); }});
+                        [this] { pumpNow(); },
+                        [this](int id, protocol::Generation generation) {
+                            if (m_motors.learnCanGeneration(id, generation))
+                                emit knownMotorsChanged(m_motors.all());
+                        }});
     connect(&m_diagnostics, &BusDiagnostics::statisticsDue, this, [this] {
         emit statisticsUpdated(statisticsSnapshot());
         if (linkMode() == LinkMode::ListenOnly)
@@ -164,6 +168,7 @@ void BusWorker::onLinkState(Transport::State state, const QString &reason)
     if (m_shutDown)
         return;
     if (state == Transport::State::Open) {
+        m_motors.setLink(m_link.link());
         m_wire.restartStream();
         m_listen.restart();
         m_link.report();
@@ -227,8 +232,8 @@ void BusWorker::submit(BusRequest request, Completion done)
         complete(std::move(p), RequestStatus::Error, std::nullopt, *why, 0);
         return;
     }
-    p.bytes = request.request.encode();
-    m_queue.push(std::move(p));
+    m_queue.push(std::move(p)); // encoded when it goes out, with the drive's context then
+
     schedulePump();
 }
 
@@ -270,8 +275,31 @@ void BusWorker::pumpNow()
     if (m_wire.isBusy() || m_shutDown || !isOpen() || linkMode() == LinkMode::ListenOnly ||
         m_wire.holdForQuiet())
         return;
-    if (std::optional<Pending> p = takeNext())
+    while (std::optional<Pending> p = takeNext()) {
+        if (p->bytes.isEmpty() && !encode(*p))
+            continue; // refused and completed: the next one may go
         m_wire.send(std::move(*p));
+        return;
+    }
+}
+
+bool BusWorker::encode(Pending &p)
+{
+    const protocol::Request &r = p.req.request;
+    const auto limits = m_softLimits.constFind(r.id);
+    const protocol::WireEncodeResult e =
+        encodeForWire(p.req.request, m_motors.decodeContext(r.id),
+                      limits == m_softLimits.cend() ? nullptr : &*limits);
+    p.bytes = e.bytes;
+    if (e.ok())
+        return true;
+    // A value this link and generation cannot carry: nothing is sent, the caller hears why.
+    const QString why = tr("%1 to drive %2 was not sent: %3")
+                            .arg(CommandTable::name(r.command))
+                            .arg(r.id)
+                            .arg(e.error.message());
+    complete(std::move(p), RequestStatus::Error, std::nullopt, why, 0);
+    return false;
 }
 
 void BusWorker::onAttemptFailed(Pending p, RequestStatus status, const QString &reason)
@@ -502,6 +530,7 @@ void BusWorker::startSetpointStream(const SetpointStreamPlan &plan)
 
 void BusWorker::setSoftLimits(int id, const safety::SoftLimits &limits)
 {
+    m_softLimits.insert(id, limits);
     m_speedWatch.setSoftLimits(id, limits);
 }
 
@@ -527,33 +556,11 @@ std::optional<protocol::Series> BusWorker::seriesOf(int id) const
     return m_motors.series(id);
 }
 
-void BusWorker::setSeries(int id, protocol::Series series)
-{
-    if (m_motors.setSeries(id, series))
-        emit knownMotorsChanged(m_motors.all());
-}
-
 void BusWorker::learnModel(int id, const protocol::ModelInfo &model,
                            std::optional<protocol::Series> series)
 {
     if (m_motors.learnModel(id, model, series))
         emit knownMotorsChanged(m_motors.all());
-}
-
-void BusWorker::noteMotor(int id)
-{
-    if (m_motors.noteSeen(id))
-        emit knownMotorsChanged(m_motors.all());
-}
-
-double BusWorker::probeTimeoutS(Command command) const
-{
-    return BusTiming::replyTimeoutS(command, baud(), m_config.minMarginMs * 1e-3);
-}
-
-quint64 BusWorker::lateReplyCount() const
-{
-    return m_diagnostics.counters().busCounters().lateReplies;
 }
 
 void BusWorker::forgetMotors()
@@ -567,31 +574,23 @@ void BusWorker::forgetMotors(int firstId, int lastId)
         emit knownMotorsChanged(m_motors.all());
 }
 
-void BusWorker::resetStatistics()
-{
-    m_diagnostics.counters().reset();
-}
-
 BusStatistics BusWorker::statisticsSnapshot()
 {
     BusStatistics s = m_diagnostics.counters().snapshot(now());
     s.baud = baud();
+    s.link = link();
     s.mode = linkMode();
     s.listenOnlyRefusals = m_refusedCalls;
     s.timeoutMarginMs = currentMarginMs();
     const std::optional<double> turnaround = m_wire.timeouts().measuredTurnaroundS();
-    const double turnaroundS = turnaround.value_or(BusTiming::kTurnaroundS);
+    const LinkTiming t = timing();
+    const double turnaroundS = turnaround.value_or(t.turnaroundS());
     s.turnaroundMs = turnaroundS * 1e3;
     s.turnaroundMeasured = turnaround.has_value();
     const PollScheduler &polls = m_polls.scheduler();
-    s.pollLimitPerSecond = polls.isActive() ? polls.busLimitPerSecond(baud(), turnaroundS) : 0;
-    s.pollCycleLimitHz = polls.isActive() ? polls.cycleLimitHz(baud(), turnaroundS) : 0;
+    s.pollLimitPerSecond = polls.isActive() ? polls.busLimitPerSecond(t, turnaroundS) : 0;
+    s.pollCycleLimitHz = polls.isActive() ? polls.cycleLimitHz(t, turnaroundS) : 0;
     return s;
-}
-
-void BusWorker::setTrafficCapture(bool enabled)
-{
-    m_diagnostics.setTrafficCapture(enabled);
 }
 
 } // namespace lk::bus

@@ -140,21 +140,39 @@ public:
     /// The soft limits of drive `id`: the speed watch bounds torque and open loop by them.
     void setSoftLimits(int id, const safety::SoftLimits &limits);
     const SpeedWatch &speedWatch() const { return m_speedWatch; }
-    void setSeries(int id, protocol::Series series);
+    void setSeries(int id, protocol::Series series)
+    {
+        if (m_motors.setSeries(id, series))
+            emit knownMotorsChanged(m_motors.all());
+    }
+    /// The user's word on a drive no model read can tell (BusSession::setDriveIdentity).
+    void setDriveIdentity(int id, protocol::Series series, protocol::Generation generation,
+                          std::optional<double> gearRatio)
+    {
+        if (m_motors.setIdentity(id, series, generation, gearRatio))
+            emit knownMotorsChanged(m_motors.all());
+    }
     void learnModel(int id, const protocol::ModelInfo &model,
                     std::optional<protocol::Series> series);
     /// Make `id` known without a model (a drive answered but its model could not be read).
-    void noteMotor(int id);
+    void noteMotor(int id)
+    {
+        if (m_motors.noteSeen(id))
+            emit knownMotorsChanged(m_motors.all());
+    }
     void forgetMotors();
     void forgetMotors(int firstId, int lastId);
-    void setTrafficCapture(bool enabled);
-    void resetStatistics();
+    void setTrafficCapture(bool enabled) { m_diagnostics.setTrafficCapture(enabled); }
+    void resetStatistics() { m_diagnostics.counters().reset(); }
 
     const KnownMotors &knownMotors() const { return m_motors.all(); }
     std::optional<protocol::Series> seriesOf(int id) const;
     transport::Transport::State state() const;
     bool isOpen() const { return state() == transport::Transport::State::Open; }
     int baud() const;
+    /// What the link carries (RS485 or CAN) and its timing at its bit rate.
+    protocol::Link link() const { return m_link.link(); }
+    LinkTiming timing() const { return m_link.timing(); }
     double now() const; ///< seconds since the worker was made (the session clock)
     bool isBusy() const { return m_wire.isBusy(); }
     /// Whether transmissions are held back now: the quiet period after a timeout.
@@ -164,13 +182,16 @@ public:
     /// drive lifts it for a while; AdaptiveTimeout).
     double replyTimeoutS(protocol::Command command, int id) const
     {
-        return m_wire.timeouts().timeoutS(command, baud(), id);
+        return m_wire.timeouts().timeoutS(command, timing(), id);
     }
     /// The shortest sensible reply timeout: wire time + turnaround + BusConfig::minMarginMs,
     /// for probes where silence is the common answer (scan pass 1, emergency stop).
-    double probeTimeoutS(protocol::Command command) const;
+    double probeTimeoutS(protocol::Command command) const
+    {
+        return timing().replyTimeoutS(command, m_config.minMarginMs * 1e-3);
+    }
     /// Replies that came after their request had timed out, since the last reset.
-    quint64 lateReplyCount() const;
+    quint64 lateReplyCount() const { return m_diagnostics.counters().busCounters().lateReplies; }
     /// When the latest-sent request that got a late reply went out (session clock, seconds;
     /// -1: none yet). A scan pass asks whether one of its own probes was answered late.
     double lateRequestSentTime() const { return m_wire.lateRequestSentTime(); }
@@ -222,6 +243,9 @@ private:
     void schedulePump();
     void pumpNow();
     std::optional<Pending> takeNext();
+    /// The bytes of `p` for its drive's context now; false (and `p` completed with the
+    /// codec's reason) when the link and generation cannot carry its values.
+    bool encode(Pending &p);
     void complete(Pending p, RequestStatus status, std::optional<protocol::Reply> reply,
                   const QString &reason, double latencyS, SendRefusal refusal = SendRefusal::None);
     /// True (and counted) when the session listens only: the caller then sends nothing.
@@ -268,6 +292,7 @@ private:
     ReplyIntake m_intake{m_motors, m_telemetry};
     ListenMonitor m_listen{m_motors, m_telemetry, m_diagnostics, m_clock, this};
     quint64 m_refusedCalls = 0;
+    QMap<int, safety::SoftLimits> m_softLimits; ///< by drive: the V2.36 speed's torque limit
 };
 
 } // namespace lk::bus

@@ -2,6 +2,7 @@
 
 #include "LinkMode.h"
 
+#include <transport/CanBusCondition.h>
 #include <transport/Transport.h>
 
 #include <QtCore/QMetaType>
@@ -19,6 +20,11 @@ struct ConnectionStatus {
     /// The link is open and Active: the one capability every view that would transmit (a
     /// read on selection, a button, a poll) derives from. False while listening only.
     bool canTransmit = false;
+    protocol::Link link = protocol::Link::Rs485; ///< what the transport carries
+    /// CAN only: the bus as the controller sees it. Bus-off, error-passive and no-ACK are
+    /// states of an open link (never "link lost"), worded with their fix in `conditionText`.
+    transport::CanBusCondition canCondition = transport::CanBusCondition::Good;
+    QString conditionText; ///< the sentence and fix of a bad canCondition; empty when good
     bool isOpen() const { return state == transport::Transport::State::Open; }
 };
 

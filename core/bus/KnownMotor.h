@@ -1,5 +1,7 @@
 #pragma once
 
+#include "DriveIdentity.h"
+
 #include <protocol/Series.h>
 #include <protocol/Values.h>
 
@@ -18,6 +20,14 @@ struct KnownMotor {
     std::optional<protocol::Series> series; ///< nullopt: unknown, decoded as MF (iq)
     protocol::Generation generation = protocol::Generation::V2_3;
     std::optional<protocol::ModelInfo> model; ///< from read_model, when it answered
+    /// The user chose series and generation (BusSession::setDriveIdentity): a drive without a
+    /// model read (CAN, listen-only) decodes by it, and no reply overrides it.
+    bool identityChosen = false;
+    /// The generation was told by a reply (CAN: the reply ID or the 0x9A layout).
+    bool generationSeen = false;
+    std::optional<double> gearRatio; ///< the user's, when given (CAN cannot read it)
+    /// Whether the generation is known: read from the model, chosen, or seen in a reply.
+    bool generationKnown() const { return model.has_value() || identityChosen || generationSeen; }
 };
 
 using KnownMotors = QMap<int, KnownMotor>;

@@ -8,14 +8,6 @@
 
 namespace lk::bus {
 
-namespace {
-// A base-format data frame: SOF 1, identifier 11, RTR 1, IDE 1, r0 1, DLC 4, data 8n,
-// CRC 15, CRC delimiter 1, ACK 2, EOF 7, interframe space 3.
-constexpr int kCanFixedBits = 47;
-// Stuffing covers SOF..CRC: 34 + 8n bits, at most one stuff bit per four after the first.
-constexpr int kCanStuffedRegionFixedBits = 34;
-} // namespace
-
 const std::array<int, 5> &LinkTiming::canBitRates()
 {
     static const std::array<int, 5> kRates{1000000, 500000, 250000, 125000, 100000};
@@ -30,13 +22,12 @@ bool LinkTiming::isCanBitRate(int bitRate)
 
 int LinkTiming::canFrameBits(int dataBytes)
 {
-    return kCanFixedBits + 8 * dataBytes;
+    return protocol::can::frameBits(dataBytes);
 }
 
 int LinkTiming::canFrameBitsStuffed(int dataBytes)
 {
-    const int stuffed = kCanStuffedRegionFixedBits + 8 * dataBytes;
-    return canFrameBits(dataBytes) + (stuffed - 1) / 4;
+    return protocol::can::frameBitsStuffed(dataBytes);
 }
 
 LinkTiming LinkTiming::rs485(int baud)
@@ -47,6 +38,11 @@ LinkTiming LinkTiming::rs485(int baud)
 LinkTiming LinkTiming::can(int bitRate)
 {
     return LinkTiming(protocol::Link::Can, bitRate);
+}
+
+LinkTiming LinkTiming::of(protocol::Link link, int bitRate)
+{
+    return LinkTiming(link, bitRate);
 }
 
 double LinkTiming::turnaroundS() const
@@ -60,8 +56,13 @@ double LinkTiming::frameS(int rs485Bytes) const
         return 0;
     // Every LK frame on CAN has 8 data bytes, whatever the command.
     if (m_link == protocol::Link::Can)
-        return static_cast<double>(canFrameBitsStuffed(protocol::can::kDataSize)) / m_bitRate;
+        return protocol::can::frameSeconds(m_bitRate);
     return BusTiming::wireTimeS(rs485Bytes, 0, m_bitRate);
+}
+
+double LinkTiming::frameWireS(int rs485Bytes) const
+{
+    return frameS(rs485Bytes);
 }
 
 double LinkTiming::requestWireS(protocol::Command command) const

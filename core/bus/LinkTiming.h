@@ -30,12 +30,17 @@ public:
 
     static LinkTiming rs485(int baud);
     static LinkTiming can(int bitRate);
+    /// The timing of `link` at `bitRate` (baud on RS485).
+    static LinkTiming of(protocol::Link link, int bitRate);
 
     protocol::Link link() const { return m_link; }
     int bitRate() const { return m_bitRate; } ///< baud on RS485
     /// The time a drive takes to start its reply: 0.5 ms on RS485, 0.25 ms on CAN.
     double turnaroundS() const;
 
+    /// One frame on the wire: `rs485Bytes` at 8N1 on RS485; on CAN every frame has 8 data
+    /// bytes, whatever `rs485Bytes` says.
+    double frameWireS(int rs485Bytes) const;
     double requestWireS(protocol::Command command) const;
     double replyWireS(protocol::Command command) const;    ///< the usual reply
     double maxReplyWireS(protocol::Command command) const; ///< the longest accepted reply

@@ -26,6 +26,7 @@ std::optional<protocol::Series> MotorRegistry::series(int id) const
 protocol::DecodeContext MotorRegistry::decodeContext(int id) const
 {
     protocol::DecodeContext c;
+    c.link = m_link;
     const auto it = m_motors.constFind(id);
     if (it != m_motors.cend()) {
         c.series = it->series.value_or(protocol::Series::MF);
@@ -50,6 +51,18 @@ std::optional<QString> MotorRegistry::unavailableReason(const protocol::Request 
     // Nothing a drive's generation lacks is sent to it (docs/V2.35.md section 3): it would stay
     // silent and the timeout would blame the wiring.
     const auto it = m_motors.constFind(request.id);
+    if (m_link == protocol::Link::Can) {
+        // On CAN the link decides as much as the generation (docs/CAN.md section 3); a drive
+        // of unknown generation is left to the codec, which refuses what the old one lacks.
+        if (it == m_motors.cend() || !it->generationKnown() ||
+            protocol::CommandTable::availableOn(request.command, decodeContext(request.id)))
+            return std::nullopt;
+        return QCoreApplication::translate("lk::bus::MotorRegistry",
+                                           "drive %1 speaks %2, which has no %3; nothing was sent")
+            .arg(request.id)
+            .arg(protocol::dialectName(decodeContext(request.id)))
+            .arg(protocol::CommandTable::name(request.command));
+    }
     if (it == m_motors.cend() || !it->model ||
         protocol::CommandTable::availableOn(request.command, it->generation))
         return std::nullopt;
@@ -126,6 +139,34 @@ bool MotorRegistry::learnGeneration(int id, protocol::Generation generation)
     if (!m.model)
         m.generation = generation;
     return changed;
+}
+
+bool MotorRegistry::setIdentity(int id, protocol::Series series, protocol::Generation generation,
+                                std::optional<double> gearRatio)
+{
+    if (!validId(id))
+        return false;
+    KnownMotor &m = m_motors[id];
+    m.id = id;
+    m.series = series;
+    m.generation = generation;
+    m.gearRatio = gearRatio;
+    m.identityChosen = true;
+    return true;
+}
+
+bool MotorRegistry::learnCanGeneration(int id, protocol::Generation generation)
+{
+    if (!validId(id))
+        return false;
+    KnownMotor &m = m_motors[id];
+    const bool isNew = m.id != id;
+    m.id = id;
+    if (m.model || m.identityChosen || (m.generationSeen && m.generation == generation))
+        return isNew;
+    m.generation = generation;
+    m.generationSeen = true;
+    return true;
 }
 
 std::optional<protocol::Series> MotorRegistry::seriesOf(const protocol::ModelInfo &model)

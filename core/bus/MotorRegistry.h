@@ -24,8 +24,11 @@ class MotorRegistry {
 public:
     const KnownMotors &all() const { return m_motors; }
     std::optional<protocol::Series> series(int id) const;
-    /// Series and generation for the decoder; unknown IDs decode as MF (iq), V2.3.
+    /// Series, generation and link for the decoder; unknown IDs decode as MF (iq), V2.3.
     protocol::DecodeContext decodeContext(int id) const;
+    /// The link the drives are reached over (BusWorker sets it when a transport opens).
+    void setLink(protocol::Link link) { m_link = link; }
+    protocol::Link link() const { return m_link; }
 
     /// Who an emergency stop must reach: `ids` (the caller's known and recently commanded
     /// drives) and the drives seen moving, then every known ID and every ID that answered on
@@ -51,6 +54,13 @@ public:
     /// surer word) was read. Makes `id` known.
     bool learnGeneration(int id, protocol::Generation generation);
     bool forget(int firstId, int lastId);
+    /// The user's word on drive `id` (CAN and listen-only have no model read): series,
+    /// generation and, when given, gear ratio. Makes `id` known; no reply overrides it.
+    bool setIdentity(int id, protocol::Series series, protocol::Generation generation,
+                     std::optional<double> gearRatio);
+    /// A CAN reply told `id`'s generation (docs/CAN.md section 9): taken unless the user
+    /// chose one or the model was read. Makes `id` known.
+    bool learnCanGeneration(int id, protocol::Generation generation);
 
     /// The series a model's names tell: the motor's ("MS5005"), else the driver's; nullopt
     /// when neither does.
@@ -60,6 +70,7 @@ private:
     KnownMotors m_motors;
     QSet<int> m_answered;
     QSet<int> m_moving;
+    protocol::Link m_link = protocol::Link::Rs485;
 };
 
 } // namespace lk::bus

@@ -60,7 +60,6 @@ std::optional<PendingRequest> PollRunner::next(double now)
         p.req.priority = Priority::Background;
         p.req.retries = 0; // a missed sample is read again next cycle
         p.req.origin = RequestOrigin::Poll;
-        p.bytes = r->encode();
         p.done = [this](const RequestResult &res) {
             m_poller.completed(res.request.id, res.request.command);
             m_ended();

@@ -324,16 +324,26 @@ QVector<Command> PollScheduler::pollMix(int *rounds) const
 
 double PollScheduler::busLimitPerSecond(int baud, double turnaroundS) const
 {
-    int rounds = 0;
-    return BusTiming::transactionsPerSecond(pollMix(&rounds), baud, turnaroundS);
+    return busLimitPerSecond(LinkTiming::rs485(baud), turnaroundS);
 }
 
 double PollScheduler::cycleLimitHz(int baud, double turnaroundS) const
 {
+    return cycleLimitHz(LinkTiming::rs485(baud), turnaroundS);
+}
+
+double PollScheduler::busLimitPerSecond(const LinkTiming &timing, double turnaroundS) const
+{
+    int rounds = 0;
+    return timing.transactionsPerSecond(pollMix(&rounds), turnaroundS);
+}
+
+double PollScheduler::cycleLimitHz(const LinkTiming &timing, double turnaroundS) const
+{
     int rounds = 0;
     double stretchS = 0;
     for (Command c : pollMix(&rounds))
-        stretchS += BusTiming::transactionTimeS(c, baud, turnaroundS);
+        stretchS += timing.transactionTimeS(c, turnaroundS);
     return stretchS > 0 ? rounds / stretchS : 0;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "BusTiming.h"
+#include "LinkTiming.h"
 
 #include "PollPlan.h"
 
@@ -64,6 +65,9 @@ public:
     double busLimitPerSecond(int baud, double turnaroundS = BusTiming::kTurnaroundS) const;
     /// Full rounds per second at that limit (every polled command of every ID once).
     double cycleLimitHz(int baud, double turnaroundS = BusTiming::kTurnaroundS) const;
+    /// The same on any link (CAN: its frames; `turnaroundS` the drives' reply time).
+    double busLimitPerSecond(const LinkTiming &timing, double turnaroundS) const;
+    double cycleLimitHz(const LinkTiming &timing, double turnaroundS) const;
 
     static bool isPollable(protocol::Command command);
 

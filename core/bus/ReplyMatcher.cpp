@@ -54,6 +54,10 @@ std::optional<ReplyMatcher::Expected> ReplyMatcher::takeTimedOut(const protocol:
 
 bool ReplyMatcher::isLocalEcho(const protocol::ParseEvent &event)
 {
+    // CAN: the transport flags our own frame looped back; a drive's identical echo (the old
+    // generation answers on the request's own ID) carries no flag and is the reply.
+    if (event.canId)
+        return event.echoed;
     if (event.bytes != m_expected->bytes)
         return false;
     if (event.direction == FrameDirection::Request)

@@ -19,7 +19,8 @@ namespace lk::bus {
 /// Local echo: a frame byte-identical to the request is skipped when its layout is a request's
 /// (it cannot be the reply). For commands whose reply is an echo (motor_off, write_pid_ram...)
 /// the first identical frame is the reply, unless localEcho is set (the adapter echoes), in
-/// which case the first is skipped and the second taken.
+/// which case the first is skipped and the second taken. On CAN the transport's echo flag
+/// (ParseEvent::echoed) alone says what is our own frame.
 class ReplyMatcher {
 public:
     enum class Verdict {

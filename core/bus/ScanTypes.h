@@ -46,6 +46,10 @@ struct FoundMotor {
     bool modelKnown = false;                ///< read_model answered; otherwise `model` is empty
     std::optional<protocol::Series> series; ///< inferred from the model names; nullopt: unknown
     std::optional<protocol::State1> state1; ///< from read_state1, when it answered
+    /// CAN: the generation the reply told (its ID or 0x9A layout) or the user chose; nullopt
+    /// when neither says (RS485: the model's, when read).
+    std::optional<protocol::Generation> generation;
+    protocol::Link link = protocol::Link::Rs485; ///< the link it was found on
 };
 
 /// The end of a scan (BusSession::scanFinished); always emitted once per scan().

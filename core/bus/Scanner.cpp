@@ -3,6 +3,7 @@
 #include "BusLog.h"
 #include "BusTiming.h"
 #include "BusWorker.h"
+#include "LinkTiming.h"
 #include "MotorRegistry.h"
 
 #include <protocol/Checksum.h>
@@ -25,16 +26,24 @@ Scanner::Scanner(BusWorker &worker, const SingleShotTimerFactory &timers, QObjec
 
 double Scanner::estimatedSeconds(int idCount, int baud, const BusConfig &config, int answering)
 {
+    return estimatedSeconds(idCount, LinkTiming::rs485(baud), config, answering);
+}
+
+double Scanner::estimatedSeconds(int idCount, const LinkTiming &timing, const BusConfig &config,
+                                 int answering)
+{
     answering = std::clamp(answering, 0, std::max(0, idCount));
     const int silent = std::max(0, idCount) - answering;
     // The reply timer runs in whole milliseconds (BusWorker::sendAttempt rounds up), and for
     // a probe the quiet period ends at the same deadline (BusWorker::beginQuiet): a silent ID
     // costs the rounded timeout and no more.
     const double timeoutMs =
-        1000 * BusTiming::replyTimeoutS(Command::ReadState1, baud, config.minMarginMs / 1000.0);
+        1000 * timing.replyTimeoutS(Command::ReadState1, config.minMarginMs / 1000.0);
     const double silentS = std::max(1.0, std::ceil(timeoutMs - 1e-9)) / 1000;
-    const double driveS = BusTiming::transactionTimeS(Command::ReadState1, baud) +
-                          BusTiming::transactionTimeS(Command::ReadModel, baud);
+    // CAN has no model read: a drive costs its probe alone.
+    const bool can = timing.link() == protocol::Link::Can;
+    const double driveS = timing.transactionTimeS(Command::ReadState1) +
+                          (can ? 0.0 : timing.transactionTimeS(Command::ReadModel));
     // After pass 1 the scan listens for late replies (endPass) as long as a fresh link's
     // margin, when an ID was silent.
     const double graceS =
@@ -111,7 +120,13 @@ void Scanner::start(const ScanOptions &options)
              tr("scan range %1..%2 is outside 1..32").arg(options.firstId).arg(options.lastId));
         return;
     }
-    m_bauds = baudsToScan(options, m_originalBaud);
+    if (m_worker.link() == protocol::Link::Can && m_options.sweepBauds) {
+        // The drives' CAN bit rate is a setting of theirs, and a bus runs at one rate: a sweep
+        // would reconfigure the adapter under every other node. Scan at the link's rate.
+        qCInfo(lcBus) << "scan: no bit-rate sweep on CAN; scanning at" << m_originalBaud;
+        m_options.sweepBauds = false;
+    }
+    m_bauds = baudsToScan(m_options, m_originalBaud);
     if (m_bauds.isEmpty()) {
         stop(false, tr("no valid baud to scan"));
         return;
@@ -241,6 +256,10 @@ void Scanner::onProbe(const RequestResult &r)
     m.baud = currentBaud();
     if (m_options.readState)
         m.state1 = std::get<protocol::State1>(r.reply->payload);
+    if (m_worker.link() == protocol::Link::Can) {
+        foundOnCan(m);
+        return;
+    }
     // A drive is there: its model is worth a retry and the adaptive timeout.
     submitScanRequest(Command::ReadModel, 1, 0,
                       [this, m](const RequestResult &res) { onModel(res, m); });
@@ -262,6 +281,23 @@ void Scanner::onModel(const RequestResult &r, FoundMotor motor)
         qCWarning(lcBus) << "scan: ID" << motor.id
                          << "answered but its model could not be read:" << r.reason;
         m_worker.noteMotor(motor.id);
+    }
+    addFound(motor);
+    next();
+}
+
+void Scanner::foundOnCan(FoundMotor motor)
+{
+    // CAN has no model read (0x12): the generation comes from the reply (its ID or the 0x9A
+    // layout, learnt as it was parsed), the series from the user (setDriveIdentity).
+    motor.link = protocol::Link::Can;
+    m_worker.noteMotor(motor.id);
+    const KnownMotors &known = m_worker.knownMotors();
+    const auto it = known.constFind(motor.id);
+    if (it != known.cend()) {
+        motor.series = it->series;
+        if (it->generationKnown())
+            motor.generation = it->generation;
     }
     addFound(motor);
     next();
@@ -413,7 +449,15 @@ void Scanner::finish()
     s.error = m_error;
     s.finalBaud = m_worker.baud();
     s.elapsedS = m_worker.now() - m_startS; // finish() runs only after start()
-    if (!s.cancelled && s.error.isEmpty()) {
+    if (!s.cancelled && s.error.isEmpty() && m_worker.link() == protocol::Link::Can) {
+        // The truth for its range, but what the user said of a drive that answered (its
+        // series, its generation) and what its replies told are kept.
+        for (int id = m_options.firstId; id <= m_options.lastId; ++id) {
+            if (std::none_of(m_found.cbegin(), m_found.cend(),
+                             [id](const FoundMotor &m) { return m.id == id; }))
+                m_worker.forgetMotors(id, id);
+        }
+    } else if (!s.cancelled && s.error.isEmpty()) {
         // A complete scan is the truth for its range: forget IDs that did not answer there.
         m_worker.forgetMotors(m_options.firstId, m_options.lastId);
         for (const FoundMotor &m : m_found) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "BusConfig.h"
+#include "LinkTiming.h"
 #include "RequestResult.h"
 #include "ScanTypes.h"
 #include "SingleShotTimer.h"
@@ -16,7 +17,9 @@ namespace lk::bus {
 
 class BusWorker;
 
-/// Finds drives on IDs of a range, optionally at each of the ten bauds. Runs on the bus
+/// Finds drives on IDs of a range, optionally at each of the ten bauds (RS485; on CAN at the
+/// link's bit rate only, without the model read CAN lacks: the generation comes from the
+/// reply ID or layout, the series from the user). Runs on the bus
 /// thread through the worker's queue (Operator priority; polling pauses meanwhile). After a
 /// complete scan the worker knows exactly the drives found in the range (series inferred
 /// from the model name). A baud sweep ends at the baud where most drives answered (the
@@ -60,6 +63,9 @@ public:
     /// link's second pass and the host's own delays are left out.
     static double estimatedSeconds(int idCount, int baud, const BusConfig &config,
                                    int answering = 0);
+    /// The same on any link (CAN: no model read, CAN frames and reply time).
+    static double estimatedSeconds(int idCount, const LinkTiming &timing, const BusConfig &config,
+                                   int answering = 0);
     /// estimatedSeconds() over every baud `options` scans (the link's `baud` unless it
     /// sweeps); `answeringAt` gives how many IDs of the range are expected to answer at a
     /// baud (none when absent).
@@ -85,6 +91,8 @@ private:
     void onProbe(const RequestResult &r);
     void onModel(const RequestResult &r, FoundMotor motor);
     void addFound(FoundMotor motor);
+    /// A drive answered the probe on CAN: found without a model read.
+    void foundOnCan(FoundMotor motor);
     void next();
     void endPass();
     void afterGrace();

@@ -7,6 +7,8 @@ void StatisticsCollector::reset()
     m_bus = Counters{};
     m_ids.clear();
     m_localEchoes = 0;
+    m_canErrorFrames = 0;
+    m_otherFrames = 0;
     m_lastSnapshot = -1;
 }
 
@@ -109,6 +111,8 @@ BusStatistics StatisticsCollector::snapshot(double now)
         s.perId.insert(it.key(), it.value().stats);
     }
     s.localEchoes = m_localEchoes;
+    s.canErrorFrames = m_canErrorFrames;
+    s.otherFrames = m_otherFrames;
     return s;
 }
 

@@ -24,6 +24,8 @@ public:
     void unexpectedFrame(int id);
     void undecodable(int id); ///< a matching frame that did not decode
     void localEcho() { ++m_localEchoes; }
+    void canErrorFrame() { ++m_canErrorFrames; } ///< CAN: an error frame on the bus
+    void otherFrame() { ++m_otherFrames; }       ///< CAN: a frame of no drive (0x280, others)
     /// A parser fault: checksum/length/unknown go to the ID when the header was readable.
     void parseFault(const protocol::ParseEvent &event);
 
@@ -45,6 +47,8 @@ private:
     Counters m_bus;
     QMap<int, Counters> m_ids;
     quint64 m_localEchoes = 0;
+    quint64 m_canErrorFrames = 0;
+    quint64 m_otherFrames = 0;
     double m_lastSnapshot = -1;
 };
 

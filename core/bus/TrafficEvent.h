@@ -23,8 +23,10 @@ struct TrafficEvent {
         Note,    ///< connection changes, dropped events
     };
     Kind kind = Kind::Note;
-    double time = 0;  ///< seconds since the session started
-    QByteArray bytes; ///< the wire bytes (hex column, export)
+    double time = 0; ///< seconds since the session started
+    /// The wire bytes (hex column, export). On CAN (context.link) one CanRecord per frame:
+    /// CanRecord::decode(bytes)->candumpText() gives "141#9C00000000000000".
+    QByteArray bytes;
     protocol::ParseError error = protocol::ParseError::Garbage; ///< Fault only
     int id = 0;            ///< Sent/Frame/Timeout; 0 when unknown
     quint8 command = 0;    ///< Sent/Frame/Timeout

@@ -1,5 +1,7 @@
 #include "TrafficRecorder.h"
 
+#include <protocol/CanRecord.h>
+
 #include <QtCore/QCoreApplication>
 
 #include <utility>
@@ -10,8 +12,16 @@ namespace {
 
 /// The frame in bytes the host encoded itself (3E CMD ID LEN HCS [DATA..., DCS]): a slice,
 /// since they are well formed by construction and a parser would cost more than the event.
-protocol::Frame frameOfOwnBytes(const QByteArray &bytes)
+/// On CAN the bytes are one CanRecord: its frame is {B0, drive ID, B1..B7}.
+protocol::Frame frameOfOwnBytes(const QByteArray &bytes, protocol::Link link)
 {
+    if (link == protocol::Link::Can) {
+        const std::optional<protocol::CanRecord> record = protocol::CanRecord::decode(bytes);
+        std::optional<protocol::Frame> f;
+        if (record)
+            f = protocol::can::frameOf(record->canData());
+        return f.value_or(protocol::Frame{});
+    }
     constexpr qsizetype kHeaderSize = 5;
     protocol::Frame f;
     if (bytes.size() < kHeaderSize)
@@ -77,7 +87,7 @@ void TrafficRecorder::recordSent(double time, const QByteArray &bytes,
     e.kind = TrafficEvent::Kind::Sent;
     e.time = time;
     e.bytes = bytes;
-    e.frame = frameOfOwnBytes(bytes);
+    e.frame = frameOfOwnBytes(bytes, context.link);
     e.id = e.frame.id;
     e.command = e.frame.command;
     e.context = context;

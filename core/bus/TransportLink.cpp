@@ -1,5 +1,7 @@
 #include "TransportLink.h"
 
+#include <transport/CanTransport.h>
+
 namespace lk::bus {
 
 using transport::Transport;
@@ -51,6 +53,19 @@ void TransportLink::attach(std::unique_ptr<Transport> t)
     if (!m_transport)
         return;
     m_transport->setReadOnly(m_mode == LinkMode::ListenOnly);
+    m_link = m_transport->link();
+    m_condition = transport::CanBusCondition::Good;
+    m_conditionText.clear();
+    if (auto *can = qobject_cast<transport::CanTransport *>(m_transport.get())) {
+        // Good and Warning come as a condition alone; the bad ones come with their sentence
+        // as an error first (onTransportError).
+        connect(can, &transport::CanTransport::conditionChanged, this,
+                [this](transport::CanBusCondition c) {
+                    if (c == transport::CanBusCondition::Good ||
+                        c == transport::CanBusCondition::Warning)
+                        onCanCondition(c, {});
+                });
+    }
     connect(m_transport.get(), &Transport::bytesReceived, this, &TransportLink::bytesReceived);
     connect(m_transport.get(), &Transport::stateChanged, this, &TransportLink::onTransportState);
     connect(m_transport.get(), &Transport::errorOccurred, this, &TransportLink::onTransportError);
@@ -102,8 +117,27 @@ int TransportLink::baud() const
     return m_transport ? m_transport->baud() : m_baud;
 }
 
+void TransportLink::onCanCondition(transport::CanBusCondition condition, const QString &text)
+{
+    m_condition = condition;
+    m_conditionText = text;
+    report();
+}
+
 void TransportLink::onTransportError(const transport::TransportError &error)
 {
+    using Kind = transport::TransportError::Kind;
+    // A bad CAN bus is a state of the open link with its fix, not a failure of the link.
+    if (error.kind == Kind::CanBusOff || error.kind == Kind::CanErrorPassive ||
+        error.kind == Kind::CanNoAcknowledge) {
+        onCanCondition(error.kind == Kind::CanBusOff ? transport::CanBusCondition::BusOff
+                       : error.kind == Kind::CanErrorPassive
+                           ? transport::CanBusCondition::ErrorPassive
+                           : transport::CanBusCondition::NoAcknowledge,
+                       error.message);
+        emit errorOccurred(error);
+        return;
+    }
     m_lastError = error.message;
     // An unplug is a state, not an error: its words are the reason of the Disconnected state
     // that follows, and that state is its one report (banner, log, traffic).
@@ -134,8 +168,12 @@ void TransportLink::report(const QString &reason)
     s.reason = s.state == Transport::State::Open ? QString() : reason;
     s.mode = m_mode;
     s.canTransmit = s.isOpen() && m_mode == LinkMode::Active;
+    s.link = link();
+    s.canCondition = m_condition;
+    s.conditionText = m_conditionText;
     if (s.state == m_reported.state && s.description == m_reported.description &&
-        s.baud == m_reported.baud && s.reason == m_reported.reason && s.mode == m_reported.mode)
+        s.baud == m_reported.baud && s.reason == m_reported.reason && s.mode == m_reported.mode &&
+        s.link == m_reported.link && s.canCondition == m_reported.canCondition)
         return;
     m_reported = s;
     emit connectionChanged(s);

@@ -2,6 +2,7 @@
 
 #include "ConnectionStatus.h"
 #include "LinkMode.h"
+#include "LinkTiming.h"
 #include "TransportFactory.h"
 
 #include <transport/Transport.h>
@@ -49,6 +50,11 @@ public:
     transport::Transport::State state() const;
     /// The transport's baud, or the baud the next one is made at.
     int baud() const;
+    /// What the transport carries (RS485 bytes or CAN records); the last transport's link
+    /// while there is none.
+    protocol::Link link() const { return m_transport ? m_transport->link() : m_link; }
+    /// The link's timing at its bit rate: what timeouts, quiet periods and limits count.
+    LinkTiming timing() const { return LinkTiming::of(link(), baud()); }
     /// The transport's last error since the last open attempt (empty: none).
     QString lastError() const { return m_lastError; }
 
@@ -71,12 +77,17 @@ private:
     void drop();
     void onTransportState(transport::Transport::State state);
     void onTransportError(const transport::TransportError &error);
+    /// A CAN transport's bus condition changed: a state of the open link, reported.
+    void onCanCondition(transport::CanBusCondition condition, const QString &text);
 
     TransportFactory m_factory;
     int m_baud;
     std::unique_ptr<transport::Transport> m_transport;
     LinkMode m_mode = LinkMode::Active;
     quint64 m_refusedBytes = 0;
+    protocol::Link m_link = protocol::Link::Rs485;
+    transport::CanBusCondition m_condition = transport::CanBusCondition::Good;
+    QString m_conditionText;
     ConnectionStatus m_reported;
     QString m_lastError;
 };

@@ -1,9 +1,11 @@
 #include "WireExchange.h"
 
 #include "BusDiagnostics.h"
-#include "BusTiming.h"
 #include "MotorRegistry.h"
 #include "TransportLink.h"
+
+#include <protocol/CanLayout.h>
+#include <protocol/CanRecordParser.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +20,8 @@ QString commandText(const protocol::Request &r)
     return QStringLiteral("%1 (ID %2)").arg(protocol::CommandTable::name(r.command)).arg(r.id);
 }
 
-/// A frame's length on the wire: header, data and, with data, its checksum.
+/// A frame's length on the wire: header, data and, with data, its checksum (on CAN the
+/// timing counts 8 data bytes, whatever this says).
 int wireBytes(const protocol::Frame &f)
 {
     const int data = static_cast<int>(f.data.size());
@@ -31,7 +34,8 @@ WireExchange::WireExchange(TransportLink &link, const MotorRegistry &motors,
                            const SingleShotTimerFactory &timers, const BusConfig &config,
                            QObject *parent)
     : QObject(parent), m_link(link), m_motors(motors), m_diagnostics(diagnostics),
-      m_clock(std::move(clock)), m_timeout(config)
+      m_clock(std::move(clock)), m_parser(protocol::makeFrameParser(protocol::Link::Rs485)),
+      m_timeout(config)
 {
     m_matcher.setLocalEcho(config.localEcho);
     // Both pace the wire: precise.
@@ -56,13 +60,26 @@ void WireExchange::setConfig(const BusConfig &config)
 
 void WireExchange::restartStream()
 {
-    m_parser.reset();
+    m_parser = protocol::makeFrameParser(m_link.link(), protocol::LinkEnd::Host);
+    if (auto *can = dynamic_cast<protocol::CanRecordParser *>(m_parser.get())) {
+        // Error frames and other devices' frames are no fault of the LK protocol: counted
+        // apart (the transport reads the bus condition from the error frames).
+        can->setErrorFrameSink(
+            [this](const protocol::CanRecord &) { m_diagnostics.counters().canErrorFrame(); });
+        can->setOtherFrameSink(
+            [this](const protocol::CanRecord &) { m_diagnostics.counters().otherFrame(); });
+    }
     m_matcher.reset();
 }
 
 int WireExchange::baud() const
 {
     return m_link.baud();
+}
+
+LinkTiming WireExchange::timing() const
+{
+    return m_link.timing();
 }
 
 void WireExchange::send(Pending p)
@@ -73,7 +90,7 @@ void WireExchange::send(Pending p)
     m_diagnostics.recordSent(p.bytes, r.id);
     const double timeoutS = p.attempts == 1 && p.req.firstTimeoutS > 0
                                 ? p.req.firstTimeoutS
-                                : m_timeout.timeoutS(r.command, baud(), r.id);
+                                : m_timeout.timeoutS(r.command, timing(), r.id);
     const protocol::Request request = r;
     const QByteArray bytes = p.bytes;
     m_inflight = std::move(p);
@@ -95,7 +112,7 @@ void WireExchange::send(Pending p)
 
 qint64 WireExchange::wireFreeNs(Command command) const
 {
-    return m_sentNs + static_cast<qint64>(BusTiming::replyTimeoutS(command, baud(), 0) * 1e9);
+    return m_sentNs + static_cast<qint64>(timing().replyTimeoutS(command, 0) * 1e9);
 }
 
 void WireExchange::hurry()
@@ -119,8 +136,7 @@ void WireExchange::hurry()
 
 qint64 WireExchange::earliestReplyNs(Command command) const
 {
-    const double wireS = BusTiming::wireTimeS(BusTiming::requestBytes(command),
-                                              BusTiming::replyBytes(command), baud());
+    const double wireS = timing().wireTimeS(command);
     return static_cast<qint64>(m_recentLatency.earliestReplyS(wireS) * 1e9);
 }
 
@@ -167,7 +183,7 @@ void WireExchange::onTimeout()
 void WireExchange::beginQuiet(const protocol::Request &request, bool probe, bool emergency)
 {
     const qint64 lengthNs =
-        static_cast<qint64>(m_timeout.quietS(request.command, baud(), request.id) * 1e9);
+        static_cast<qint64>(m_timeout.quietS(request.command, timing(), request.id) * 1e9);
     qint64 untilNs = m_clock->nowNs() + lengthNs;
     if (emergency) {
         // The stop's next Motor Off waits only for what the wire itself needs: a drive that
@@ -181,7 +197,7 @@ void WireExchange::beginQuiet(const protocol::Request &request, bool probe, bool
         // this link, counted from the send. Often that is over already.
         untilNs =
             m_sentNs + static_cast<qint64>(
-                           m_timeout.replyDeadlineS(request.command, baud(), request.id) * 1e9);
+                           m_timeout.replyDeadlineS(request.command, timing(), request.id) * 1e9);
     }
     m_quiet.begin(untilNs, lengthNs, request.id, static_cast<quint8>(request.command));
 }
@@ -211,15 +227,25 @@ bool WireExchange::feed(const QByteArray &bytes)
     if (!m_inflight) // with a request in flight these are its reply, not an old one's tail
         m_quiet.bytesArrived(m_clock->nowNs());
     m_quiet.chunkStarted();
-    m_parser.feed(bytes, [this](const protocol::ParseEvent &ev) { onParseEvent(ev); });
-    if (!m_quiet.endIfAnswered(m_parser.pendingBytes() == 0, m_clock->nowNs()))
+    m_parser->feed(bytes, [this](const protocol::ParseEvent &ev) { onParseEvent(ev); });
+    if (!m_quiet.endIfAnswered(m_parser->pendingBytes() == 0, m_clock->nowNs()))
         return false;
     m_quietTimer->stop();
     return true;
 }
 
+void WireExchange::noteCanGeneration(const protocol::ParseEvent &ev)
+{
+    if (!ev.canId || !ev.isFrame || ev.echoed || !m_outcomes.generationSeen)
+        return;
+    const protocol::can::CanData data{*ev.canId, protocol::can::bytesOf(ev.frame)};
+    if (const std::optional<protocol::Generation> g = protocol::can::generationHint(data))
+        m_outcomes.generationSeen(ev.frame.id, *g);
+}
+
 void WireExchange::onParseEvent(const protocol::ParseEvent &ev)
 {
+    noteCanGeneration(ev); // first: the frame is recorded and decoded with what it tells
     m_diagnostics.recordParseEvent(ev);
     StatisticsCollector &stats = m_diagnostics.counters();
     using V = ReplyMatcher::Verdict;
@@ -247,7 +273,7 @@ void WireExchange::onParseEvent(const protocol::ParseEvent &ev)
     case V::LateReply:
         // The link is slower than the margin assumed: let the margin learn from it.
         stats.lateReply(f.id);
-        m_timeout.addLateReply(static_cast<Command>(f.command), baud(), out.lateLatencyS, f.id,
+        m_timeout.addLateReply(static_cast<Command>(f.command), timing(), out.lateLatencyS, f.id,
                                wireBytes(f));
         m_lateRequestSentS = std::max(m_lateRequestSentS, now() - out.lateLatencyS);
         m_quiet.lateFrameParsed(f.id, f.command);
@@ -266,7 +292,7 @@ void WireExchange::takeReply(protocol::Reply reply, int frameBytes)
     const double latency = static_cast<double>(m_clock->nowNs() - m_sentNs) * 1e-9;
     m_recentLatency.add(latency);
     m_diagnostics.counters().replyReceived(reply.id, latency);
-    m_timeout.addReply(reply.command, baud(), latency, reply.id, frameBytes);
+    m_timeout.addReply(reply.command, timing(), latency, reply.id, frameBytes);
     std::optional<Pending> p = abort();
     if (p && m_outcomes.replied)
         m_outcomes.replied(std::move(*p), std::move(reply), latency);

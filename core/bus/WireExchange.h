@@ -4,12 +4,15 @@
 #include "BusClock.h"
 #include "BusConfig.h"
 #include "BusRequest.h"
+#include "LinkTiming.h"
 #include "QuietPeriod.h"
 #include "RecentLatency.h"
 #include "ReplyMatcher.h"
 #include "SingleShotTimer.h"
 
 #include <protocol/Checksum.h>
+#include <protocol/FrameParser.h>
+#include <protocol/Series.h>
 #include <protocol/StreamParser.h>
 
 #include <QtCore/QObject>
@@ -41,6 +44,9 @@ public:
         std::function<void(Pending p, RequestStatus status, const QString &reason)> failed;
         /// The quiet period's timer ran out: the wire may be free.
         std::function<void()> quietOver;
+        /// CAN: a drive's frame told its generation (reply ID or 0x9A layout), before the
+        /// frame is decoded, so that it decodes with it.
+        std::function<void(int id, protocol::Generation generation)> generationSeen;
     };
 
     WireExchange(TransportLink &link, const MotorRegistry &motors, BusDiagnostics &diagnostics,
@@ -50,7 +56,8 @@ public:
 
     void setOutcomes(Outcomes outcomes) { m_outcomes = std::move(outcomes); }
     void setConfig(const BusConfig &config);
-    /// A new byte stream (the link opened): no partial frame, nothing old expected.
+    /// A new byte stream (the link opened): no partial frame, nothing old expected, and the
+    /// frame parser of the link's kind (RS485 bytes or CAN records).
     void restartStream();
     /// Another baud: the latencies seen at the old one say nothing.
     void forgetLatencies()
@@ -87,11 +94,14 @@ public:
 
 private:
     int baud() const;
+    LinkTiming timing() const;
     double now() const { return static_cast<double>(m_clock->nowNs()) * 1e-9; }
     /// How soon after a send a reply can physically arrive (for the matcher), nanoseconds.
     qint64 earliestReplyNs(protocol::Command command) const;
     void onTimeout();
     void onParseEvent(const protocol::ParseEvent &ev);
+    /// CAN: what a drive's frame says about its generation, passed on (Outcomes).
+    void noteCanGeneration(const protocol::ParseEvent &ev);
     /// `frameBytes`: the reply's length on the wire.
     void takeReply(protocol::Reply reply, int frameBytes);
     /// The request on the wire timed out: hold transmissions until its reply cannot come.
@@ -108,7 +118,7 @@ private:
     BusDiagnostics &m_diagnostics;
     std::shared_ptr<BusClock> m_clock;
     Outcomes m_outcomes;
-    protocol::StreamParser m_parser;
+    std::unique_ptr<protocol::FrameParser> m_parser;
     std::optional<Pending> m_inflight;
     qint64 m_sentNs = 0;
     qint64 m_deadlineNs = 0; ///< when the reply timer fires for the request on the wire

@@ -52,6 +52,8 @@ void CanRecordParser::handle(const CanRecord &record, const QByteArray &bytes, c
     }
     ParseEvent ev;
     ev.bytes = bytes;
+    ev.canId = record.canId;
+    ev.echoed = record.isEcho();
     ev.frame.id = address->driveId;
     if (!record.data.isEmpty())
         ev.frame.command = static_cast<quint8>(record.data[0]);

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 
 namespace lk::protocol {
 
@@ -28,6 +29,12 @@ struct ParseEvent {
     FrameDirection direction = FrameDirection::Request; ///< meaningful when isFrame
     ParseError error = ParseError::Garbage;             ///< meaningful when !isFrame
     QByteArray bytes;                                   ///< the raw bytes this event consumed
+    /// CAN parser only: the arbitration ID the frame came on (0x140+ID or 0x180+ID), which
+    /// tells the drive's generation apart (docs/CAN.md section 9). Unset on RS485.
+    std::optional<quint32> canId;
+    /// CAN parser only: the transport flagged the record as our own frame looped back. The
+    /// reply matcher takes this flag, not a byte comparison, for the local echo.
+    bool echoed = false;
 };
 
 /// Turns what a transport delivers into frames and faults, one implementation per link: the

@@ -67,4 +67,15 @@ QString dialectName(const DecodeContext &context)
     return QStringLiteral("RS485 ") + generationName(context.generation);
 }
 
+std::optional<Generation> generationFromWord(const QString &word)
+{
+    const QString w = word.trimmed().toLower();
+    if (w == QLatin1String("can") || w == QLatin1String("can-old") || w == QLatin1String("canold"))
+        return Generation::V2_3;
+    if (w == QLatin1String("can236") || w == QLatin1String("can2.36") ||
+        w == QLatin1String("2.36") || w == QLatin1String("v2.36"))
+        return Generation::V2_35;
+    return generationFromName(w);
+}
+
 } // namespace lk::protocol

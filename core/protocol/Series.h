@@ -31,6 +31,9 @@ std::optional<Series> seriesFromName(const QString &name); ///< case-insensitive
 QString generationName(Generation g);                      ///< "v2.3", "v2.35"
 /// "v2.3"/"v2.35" (also "2.3", "V2.35"); case-insensitive.
 std::optional<Generation> generationFromName(const QString &name);
+/// generationFromName(), and the CAN words: "can" / "can-old" (the old CAN generation,
+/// V2_3) and "can236" / "2.36" (CAN V2.36, V2_35), as lkctl --drives and lksim --motors take.
+std::optional<Generation> generationFromWord(const QString &word);
 QString linkName(Link l);                              ///< "rs485", "can"
 std::optional<Link> linkFromName(const QString &name); ///< case-insensitive
 /// The protocol a drive speaks, as its documents name it: "RS485 v2.3", "RS485 v2.35",

@@ -97,9 +97,11 @@ std::optional<SimBusSpec> SimBusSpec::parse(const QString &text, QString *error)
                                        "or a motor name such as MG5010E-i10)")
                             .arg(item, seriesText));
         if (!firmware.isEmpty()) {
-            const auto generation = protocol::generationFromName(firmware);
+            // On CAN (lksim --can) "can" is the old generation, "can236" V2.36.
+            const auto generation = protocol::generationFromWord(firmware);
             if (!generation)
-                return fail(QStringLiteral("'%1': unknown firmware '%2' (2.3 or 2.35)")
+                return fail(QStringLiteral("'%1': unknown firmware '%2' (2.3 or 2.35; on CAN "
+                                           "can or can236)")
                                 .arg(item, firmware));
             if (*generation == protocol::Generation::V2_35)
                 model->useFirmware235();

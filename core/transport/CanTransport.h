@@ -1,5 +1,6 @@
 #pragma once
 
+#include "CanBusCondition.h"
 #include "Transport.h"
 
 #include <QtCore/QByteArray>
@@ -25,17 +26,6 @@ struct CanSettings {
     bool setBitRate = true;
 };
 
-/// The state of the CAN bus as the controller sees it (ISO 11898 fault confinement, plus
-/// the frame nobody acknowledged). None of them closes the link: they are states of an open
-/// link with a sentence and a fix, not a "link lost".
-enum class CanBusCondition {
-    Good,
-    Warning,       ///< error counters past 96: frames still get through
-    ErrorPassive,  ///< error counters past 127
-    BusOff,        ///< the controller stopped sending
-    NoAcknowledge, ///< a frame went unacknowledged: no drive, or another bit rate
-};
-
 /// A Transport over a QCanBusDevice: moves CanRecords (protocol/CanRecord.h) both ways, so
 /// that the engine keeps moving bytes and the codec decides what they mean. Construct it on
 /// the thread that uses it. Error frames arrive as records with the Error flag and change
@@ -59,6 +49,7 @@ public:
     State state() const override { return m_state; }
     int baud() const override { return m_settings.bitRate; } ///< the bit rate
     QString description() const override;
+    protocol::Link link() const override { return protocol::Link::Can; }
 
     const CanSettings &settings() const { return m_settings; }
     CanBusCondition condition() const { return m_condition; }
@@ -103,5 +94,3 @@ private:
 };
 
 } // namespace lk::transport
-
-Q_DECLARE_METATYPE(lk::transport::CanBusCondition)

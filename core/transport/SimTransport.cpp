@@ -3,6 +3,10 @@
 #include <QtCore/QCoreApplication>
 
 #include "sim/SimBus.h"
+#include "sim/SimCanFront.h"
+
+#include <protocol/CanLayout.h>
+#include <protocol/CanRecord.h>
 
 #include <QtCore/QMetaObject>
 #include <QtCore/QTimer>
@@ -40,6 +44,7 @@ std::function<std::unique_ptr<Transport>(int)> SimTransport::factory(SimSettings
         if (!settings.faultSpec.isEmpty())
             bus->faults().configure(settings.faultSpec);
         auto t = std::make_unique<SimTransport>(std::move(bus));
+        t->setLink(settings.link);
         t->setBaud(baud);
         t->setWireTimeEmulation(true);
         return t;
@@ -49,6 +54,14 @@ std::function<std::unique_ptr<Transport>(int)> SimTransport::factory(SimSettings
 QString SimTransport::description() const
 {
     const int n = static_cast<int>(m_bus->ids().size());
+    if (m_link == protocol::Link::Can)
+        return n == 1 ? QCoreApplication::translate("lk::transport::SimTransport",
+                                                    "Simulated CAN bus (1 drive) @ %1 bit/s")
+                            .arg(m_baud)
+                      : QCoreApplication::translate("lk::transport::SimTransport",
+                                                    "Simulated CAN bus (%1 drives) @ %2 bit/s")
+                            .arg(n)
+                            .arg(m_baud);
     return n == 1 ? QCoreApplication::translate("lk::transport::SimTransport",
                                                 "Simulated bus (1 drive)")
                   : QCoreApplication::translate("lk::transport::SimTransport",
@@ -60,6 +73,20 @@ void SimTransport::setBaud(int baud)
 {
     if (baud > 0)
         m_baud = baud;
+}
+
+void SimTransport::setLink(protocol::Link link)
+{
+    m_link = link;
+    if (link == protocol::Link::Can && !m_canFront)
+        m_canFront = std::make_unique<sim::SimCanFront>(*m_bus);
+    else if (link != protocol::Link::Can)
+        m_canFront.reset();
+}
+
+QList<sim::SimReply> SimTransport::receive(const QByteArray &bytes, double nowSeconds)
+{
+    return m_canFront ? m_canFront->receive(bytes, nowSeconds) : m_bus->receive(bytes, nowSeconds);
 }
 
 void SimTransport::setReplyDelay(double seconds)
@@ -105,6 +132,9 @@ qint64 SimTransport::wireNs(qsizetype bytes) const
 {
     if (!m_wireTime)
         return 0;
+    if (m_link == protocol::Link::Can) // one CAN frame per record, 8 data bytes each
+        return std::llround(static_cast<double>(bytes / protocol::CanRecord::kSize) *
+                            protocol::can::frameSeconds(m_baud) * kNsPerSecond);
     return std::llround(sim::SimBus::wireSeconds(bytes, m_baud) * kNsPerSecond);
 }
 
@@ -117,7 +147,7 @@ void SimTransport::write(const QByteArray &bytes)
         return;
     }
     const qint64 now = m_clock.nsecsElapsed();
-    const QList<sim::SimReply> replies = m_bus->receive(bytes, now / kNsPerSecond);
+    const QList<sim::SimReply> replies = receive(bytes, now / kNsPerSecond);
     // Half duplex: the request waits for the wire, each reply follows its turnaround and
     // never overlaps the one before it.
     const qint64 requestEnd = std::max(now, m_wireFreeNs) + wireNs(bytes.size());

@@ -7,6 +7,8 @@
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QString>
 
+#include <QtCore/QList>
+
 #include <deque>
 #include <functional>
 #include <memory>
@@ -15,7 +17,9 @@ class QTimer;
 
 namespace lk::sim {
 class SimBus;
-}
+class SimCanFront;
+struct SimReply;
+} // namespace lk::sim
 
 namespace lk::transport {
 
@@ -25,6 +29,9 @@ struct SimSettings {
     QString romDirectory; ///< where the drives keep their ROM between links (empty: memory only)
     QString faultSpec;    ///< faults in every reply (FaultInjector::configure syntax), checked
                           ///< by the caller; empty: none
+    /// Can: the drives sit on CAN (sim::SimCanFront) and the link carries CanRecords; a drive
+    /// of generation V2_3 is an old CAN drive, V2_35 a V2.36 one.
+    protocol::Link link = protocol::Link::Rs485;
 };
 
 /// A Transport over an in-process simulated bus (sim::SimBus), for the embedded default
@@ -54,6 +61,13 @@ public:
     State state() const override { return m_state; }
     int baud() const override { return m_baud; }
     QString description() const override;
+    protocol::Link link() const override { return m_link; }
+
+    /// Put the drives on CAN (before open()): records in and out through sim::SimCanFront,
+    /// and the wire time of CAN frames at baud() (the bit rate) when emulated.
+    void setLink(protocol::Link link);
+    /// The CAN front end (null on RS485), e.g. to choose the reply ID base.
+    sim::SimCanFront *canFront() { return m_canFront.get(); }
 
     /// The baud that baud() reports and wire-time emulation uses.
     void setBaud(int baud);
@@ -73,6 +87,7 @@ private:
         qint64 dueNs = 0;
     };
     qint64 wireNs(qsizetype bytes) const;
+    QList<sim::SimReply> receive(const QByteArray &bytes, double nowSeconds);
     void schedule();
     void postCheck();
     void deliverDue();
@@ -81,6 +96,8 @@ private:
     void setState(State state);
 
     std::unique_ptr<sim::SimBus> m_bus;
+    std::unique_ptr<sim::SimCanFront> m_canFront;
+    protocol::Link m_link = protocol::Link::Rs485;
     QElapsedTimer m_clock;
     QTimer *m_timer = nullptr;        ///< precise single-shot for waits of 1 ms or more
     QTimer *m_housekeeping = nullptr; ///< disconnect flag and idle physics, 10 Hz while open

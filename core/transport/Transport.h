@@ -1,5 +1,7 @@
 #pragma once
 
+#include <protocol/Series.h>
+
 #include <QtCore/QByteArray>
 #include <QtCore/QObject>
 #include <QtCore/QString>
@@ -28,9 +30,9 @@ struct TransportError {
     QString message;
 };
 
-/// Moves bytes to and from one RS485 bus and reports its connection state; nothing more.
-/// Framing, matching and timing live above it (BusWorker). An implementation lives on the
-/// bus thread and is used only from there.
+/// Moves bytes to and from one bus (RS485, or CAN as records) and reports its connection state;
+/// nothing more. Framing, matching and timing live above it (BusWorker). An implementation lives on
+/// the bus thread and is used only from there.
 class Transport : public QObject {
     Q_OBJECT
 public:
@@ -58,6 +60,9 @@ public:
     virtual int baud() const = 0;
     /// "/dev/ttyUSB0 @ 115200", "Simulated bus (3 drives)".
     virtual QString description() const = 0;
+    /// What the bytes are: an RS485 byte stream, or CanRecords (protocol/CanRecord.h). The
+    /// engine picks its frame parser, codec layouts and timing from it.
+    virtual protocol::Link link() const { return protocol::Link::Rs485; }
 
 protected:
     /// For write(): true when the transport is read-only, after counting and logging the

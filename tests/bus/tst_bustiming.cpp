@@ -1,6 +1,7 @@
 #include <bus/AdaptiveTimeout.h>
 #include <bus/BusTiming.h>
 #include <bus/LatencyWindow.h>
+#include <bus/LinkTiming.h>
 #include <bus/TelemetrySample.h>
 
 #include <QtTest/QTest>
@@ -178,9 +179,10 @@ void tst_BusTiming::adaptiveMargin()
     AdaptiveTimeout t; // defaults: min 2, initial 20, max 200 ms
     const double wire = BusTiming::transactionTimeS(Command::ReadState2, 115200);
     for (int i = 0; i < replies; ++i)
-        t.addReply(Command::ReadState2, 115200, wire + extraMs * 1e-3);
+        t.addReply(Command::ReadState2, LinkTiming::rs485(115200), wire + extraMs * 1e-3);
     QVERIFY2(qAbs(t.marginS() * 1e3 - marginMs) < 1e-6, qPrintable(QString::number(t.marginS())));
-    QVERIFY(qAbs(t.timeoutS(Command::ReadState2, 115200) - (wire + t.marginS())) < 1e-12);
+    QVERIFY(qAbs(t.timeoutS(Command::ReadState2, LinkTiming::rs485(115200)) -
+                 (wire + t.marginS())) < 1e-12);
 }
 
 void tst_BusTiming::marginCoversTheSlowestPercent()
@@ -190,9 +192,10 @@ void tst_BusTiming::marginCoversTheSlowestPercent()
     AdaptiveTimeout t; // defaults: min 2, initial 20, max 200 ms
     const double wire = BusTiming::transactionTimeS(Command::ReadState2, 115200);
     for (int i = 0; i < AdaptiveTimeout::kWindow; ++i)
-        t.addReply(Command::ReadState2, 115200, wire + (i % 50 == 25 ? 10e-3 : 0.1e-3));
+        t.addReply(Command::ReadState2, LinkTiming::rs485(115200),
+                   wire + (i % 50 == 25 ? 10e-3 : 0.1e-3));
     QVERIFY2(t.marginS() >= 2 * 10e-3 - 1e-12, qPrintable(QString::number(t.marginS())));
-    QVERIFY(t.timeoutS(Command::ReadState2, 115200) > wire + 10e-3);
+    QVERIFY(t.timeoutS(Command::ReadState2, LinkTiming::rs485(115200)) > wire + 10e-3);
 }
 
 // The bus limit's turnaround is what the replies show: the least latency minus wire time
@@ -204,8 +207,10 @@ void tst_BusTiming::turnaroundIsMeasured()
     const double wire0 = BusTiming::transactionTimeS(Command::ReadState2, 115200, 0);
     QVERIFY(!t.measuredTurnaroundS());
     for (int i = 0; i < 20; ++i)
-        t.addReply(Command::ReadState2, 115200, wire0 + (i == 7 ? 5e-3 : 0.2e-3));
-    t.addReply(Command::WritePidRom, 115200, 1e-4); // no flash write teaches the link
+        t.addReply(Command::ReadState2, LinkTiming::rs485(115200),
+                   wire0 + (i == 7 ? 5e-3 : 0.2e-3));
+    t.addReply(Command::WritePidRom, LinkTiming::rs485(115200),
+               1e-4); // no flash write teaches the link
     QVERIFY(t.measuredTurnaroundS());
     QVERIFY2(qAbs(*t.measuredTurnaroundS() - 0.2e-3) < 1e-9,
              qPrintable(QString::number(*t.measuredTurnaroundS())));
@@ -218,23 +223,23 @@ void tst_BusTiming::lateReplyLiftsMarginAtOnce()
     AdaptiveTimeout t;
     const double wire = BusTiming::transactionTimeS(Command::ReadState1, 115200);
     for (int i = 0; i < 100; ++i)
-        t.addReply(Command::ReadState1, 115200, wire + 0.1e-3, 3);
+        t.addReply(Command::ReadState1, LinkTiming::rs485(115200), wire + 0.1e-3, 3);
     QCOMPARE(t.marginS(), 2e-3);
     // Drive 3 answered 30 ms after its request had timed out: the very next attempts to it,
     // of any class, wait longer than that. Drive 4 and the link do not wait for drive 3.
-    t.addLateReply(Command::ReadState1, 115200, wire + 30e-3, 3);
+    t.addLateReply(Command::ReadState1, LinkTiming::rs485(115200), wire + 30e-3, 3);
     for (AdaptiveTimeout::CommandClass c :
          {AdaptiveTimeout::CommandClass::Read, AdaptiveTimeout::CommandClass::Write})
         QVERIFY2(t.marginS(c, 3) >= 1.5 * 30e-3 - 1e-9,
                  qPrintable(QString::number(t.marginS(c, 3))));
-    QVERIFY(t.quietS(Command::ReadState1, 115200, 3) > 30e-3);
+    QVERIFY(t.quietS(Command::ReadState1, LinkTiming::rs485(115200), 3) > 30e-3);
     QCOMPARE(t.marginS(AdaptiveTimeout::CommandClass::Read, 4), 2e-3);
     QCOMPARE(t.marginS(), 2e-3);
-    QVERIFY(t.quietS(Command::ReadState1, 115200, 4) < 10e-3);
+    QVERIFY(t.quietS(Command::ReadState1, LinkTiming::rs485(115200), 4) < 10e-3);
     // Replies of drive 3 in time halve the lift each; it is gone within a few.
     int replies = 0;
     while (t.lateExtraS(3) > 0 && replies < 10) {
-        t.addReply(Command::ReadState1, 115200, wire + 0.1e-3, 3);
+        t.addReply(Command::ReadState1, LinkTiming::rs485(115200), wire + 0.1e-3, 3);
         ++replies;
     }
     QVERIFY2(replies >= 3 && replies <= 6, qPrintable(QString::number(replies)));
@@ -247,10 +252,10 @@ void tst_BusTiming::slowDriveStaysWaitedFor()
     // no further than that reply's own extra latency.
     AdaptiveTimeout t;
     const double wire = BusTiming::transactionTimeS(Command::ReadState1, 115200);
-    t.addLateReply(Command::ReadState1, 115200, wire + 30e-3, 5);
+    t.addLateReply(Command::ReadState1, LinkTiming::rs485(115200), wire + 30e-3, 5);
     for (int i = 0; i < 50; ++i)
-        t.addReply(Command::ReadState1, 115200, wire + 30e-3, 5);
-    QVERIFY(t.timeoutS(Command::ReadState1, 115200, 5) > wire + 30e-3);
+        t.addReply(Command::ReadState1, LinkTiming::rs485(115200), wire + 30e-3, 5);
+    QVERIFY(t.timeoutS(Command::ReadState1, LinkTiming::rs485(115200), 5) > wire + 30e-3);
 }
 
 void tst_BusTiming::longReplyIsWireTimeNotLatency()
@@ -262,7 +267,7 @@ void tst_BusTiming::longReplyIsWireTimeNotLatency()
         BusTiming::wireTimeS(BusTiming::requestBytes(Command::ReadModel), 64, 9600) +
         BusTiming::kTurnaroundS;
     for (int i = 0; i < 100; ++i)
-        t.addReply(Command::ReadModel, 9600, wire58 + 0.1e-3, 1, 64);
+        t.addReply(Command::ReadModel, LinkTiming::rs485(9600), wire58 + 0.1e-3, 1, 64);
     QCOMPARE(t.marginS(), 2e-3);
 }
 
@@ -271,7 +276,7 @@ void tst_BusTiming::marginWarmsUpPerCommandClass()
     AdaptiveTimeout t;
     const double wire = BusTiming::transactionTimeS(Command::ReadState2, 115200);
     for (int i = 0; i < 100; ++i)
-        t.addReply(Command::ReadState2, 115200, wire + 0.1e-3);
+        t.addReply(Command::ReadState2, LinkTiming::rs485(115200), wire + 0.1e-3);
     QCOMPARE(AdaptiveTimeout::classOf(Command::ReadState2), AdaptiveTimeout::CommandClass::Read);
     QCOMPARE(AdaptiveTimeout::classOf(Command::Speed), AdaptiveTimeout::CommandClass::Write);
     QCOMPARE(AdaptiveTimeout::classOf(Command::MotorOff), AdaptiveTimeout::CommandClass::Write);
@@ -279,11 +284,11 @@ void tst_BusTiming::marginWarmsUpPerCommandClass()
     QCOMPARE(t.marginS(AdaptiveTimeout::CommandClass::Read), 2e-3);
     // Commands that act have not been timed yet: the initial margin until they have.
     QCOMPARE(t.marginS(AdaptiveTimeout::CommandClass::Write), 20e-3);
-    QCOMPARE(t.timeoutS(Command::Speed, 115200),
+    QCOMPARE(t.timeoutS(Command::Speed, LinkTiming::rs485(115200)),
              BusTiming::replyTimeoutS(Command::Speed, 115200, 20e-3));
     // A drive that takes 8 ms to write its flash: ROM writes get their own, longer margin.
     for (int i = 0; i < AdaptiveTimeout::kWarmupSamples; ++i)
-        t.addReply(Command::WritePidRom, 115200,
+        t.addReply(Command::WritePidRom, LinkTiming::rs485(115200),
                    BusTiming::transactionTimeS(Command::WritePidRom, 115200) + 8e-3);
     QVERIFY(t.marginS(AdaptiveTimeout::CommandClass::Flash) >= 16e-3 - 1e-12);
     QCOMPARE(t.marginS(AdaptiveTimeout::CommandClass::Read), 2e-3); // not the link's latency
@@ -298,28 +303,29 @@ void tst_BusTiming::quietPeriodCoversTheLongestReply()
         BusTiming::wireTimeS(0, BusTiming::maxReplyBytes(Command::ReadModel), 115200);
     QCOMPARE(BusTiming::maxReplyBytes(Command::ReadModel), 64);
     // Nothing measured yet: the link's latency is taken as the initial margin.
-    QVERIFY(qAbs(t.quietS(Command::ReadModel, 115200) -
+    QVERIFY(qAbs(t.quietS(Command::ReadModel, LinkTiming::rs485(115200)) -
                  (BusTiming::kTurnaroundS + longest + 20e-3)) < 1e-12);
     const double fast = BusTiming::transactionTimeS(Command::ReadModel, 115200) + 0.1e-3;
     for (int i = 0; i < AdaptiveTimeout::kPercentileSamples; ++i)
-        t.addReply(Command::ReadModel, 115200, fast);
+        t.addReply(Command::ReadModel, LinkTiming::rs485(115200), fast);
     // A fast link, measured: the least allowance (the minimum margin).
-    QVERIFY(qAbs(t.quietS(Command::ReadModel, 115200) -
+    QVERIFY(qAbs(t.quietS(Command::ReadModel, LinkTiming::rs485(115200)) -
                  (BusTiming::kTurnaroundS + longest + 2e-3)) < 1e-12);
     t.reset();
     // A link whose replies come up to 16 ms late (FTDI's latency timer): the quiet period
     // waits for that too.
     const double wire = BusTiming::transactionTimeS(Command::ReadState2, 115200);
     for (int i = 0; i < 100; ++i)
-        t.addReply(Command::ReadState2, 115200, wire + (i % 10) * 16e-3 / 9);
-    QVERIFY(t.quietS(Command::ReadState2, 115200) >= 16e-3);
-    QVERIFY(t.quietS(Command::ReadState2, 1000000) < t.quietS(Command::ReadState2, 115200));
+        t.addReply(Command::ReadState2, LinkTiming::rs485(115200), wire + (i % 10) * 16e-3 / 9);
+    QVERIFY(t.quietS(Command::ReadState2, LinkTiming::rs485(115200)) >= 16e-3);
+    QVERIFY(t.quietS(Command::ReadState2, LinkTiming::rs485(1000000)) <
+            t.quietS(Command::ReadState2, LinkTiming::rs485(115200)));
     // A probe's quiet period ends when a reply could have come through this link, counted
     // from the send: the formula with the longest reply plus the same latency.
     const double linkS =
-        t.quietS(Command::ReadState2, 115200) - BusTiming::kTurnaroundS -
+        t.quietS(Command::ReadState2, LinkTiming::rs485(115200)) - BusTiming::kTurnaroundS -
         BusTiming::wireTimeS(0, BusTiming::maxReplyBytes(Command::ReadState2), 115200);
-    QVERIFY(qAbs(t.replyDeadlineS(Command::ReadState2, 115200) -
+    QVERIFY(qAbs(t.replyDeadlineS(Command::ReadState2, LinkTiming::rs485(115200)) -
                  BusTiming::replyTimeoutS(Command::ReadState2, 115200, linkS)) < 1e-12);
 }
 

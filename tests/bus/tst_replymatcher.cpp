@@ -1,4 +1,7 @@
 #include <bus/ReplyMatcher.h>
+#include <protocol/CanRecord.h>
+#include <protocol/CanRecordParser.h>
+#include <protocol/LinkCodec.h>
 #include <protocol/Reply.h>
 
 #include <QtTest/QTest>
@@ -50,6 +53,8 @@ private slots:
     void lateReplyToAnOlderProbe();
     void tooSoonIsTheEarlierRequestsReply_data();
     void tooSoonIsTheEarlierRequestsReply();
+    void canEchoIsTheTransportsFlag_data();
+    void canEchoIsTheTransportsFlag();
 };
 
 void tst_ReplyMatcher::classify_data()
@@ -174,6 +179,41 @@ void tst_ReplyMatcher::tooSoonIsTheEarlierRequestsReply()
     }
     m.expect(s2, s2.encode(), 10'000'000, 11'500'000);
     QCOMPARE(m.classify(parse(state2Reply(3)).at(0), {}, arrivalNs).verdict, verdict);
+}
+
+void tst_ReplyMatcher::canEchoIsTheTransportsFlag_data()
+{
+    QTest::addColumn<bool>("echoFlag");
+    QTest::addColumn<bool>("localEchoConfig");
+    QTest::addColumn<V>("verdict");
+    // The old CAN generation answers motor_off on the request's own ID with the same 8 bytes:
+    // only the adapter's echo flag tells our frame from the drive's, whatever the config says.
+    QTest::newRow("flagged: our own frame") << true << false << V::LocalEcho;
+    QTest::newRow("unflagged: the drive's echo") << false << false << V::Reply;
+    QTest::newRow("unflagged, localEcho set: still the drive's") << false << true << V::Reply;
+}
+
+void tst_ReplyMatcher::canEchoIsTheTransportsFlag()
+{
+    QFETCH(bool, echoFlag);
+    QFETCH(bool, localEchoConfig);
+    QFETCH(V, verdict);
+    const protocol::DecodeContext ctx{protocol::Series::MG, protocol::Generation::V2_3,
+                                      protocol::Link::Can};
+    const auto off = request(Command::MotorOff, 1);
+    const QByteArray sent = protocol::encodeRequest(off, ctx).bytes;
+    QVERIFY(!sent.isEmpty());
+    protocol::CanRecord received = *protocol::CanRecord::decode(sent);
+    if (echoFlag)
+        received.flags |= protocol::CanRecord::Echo;
+    QVector<protocol::ParseEvent> events;
+    protocol::CanRecordParser parser;
+    parser.feed(received.encode(), [&events](const protocol::ParseEvent &e) { events.append(e); });
+    QCOMPARE(events.size(), 1);
+    ReplyMatcher m;
+    m.setLocalEcho(localEchoConfig);
+    m.expect(off, sent, 0);
+    QCOMPARE(m.classify(events.at(0), ctx, 1'000'000).verdict, verdict);
 }
 
 QTEST_APPLESS_MAIN(tst_ReplyMatcher)

@@ -1,0 +1,119 @@
+#include "CanBusServer.h"
+
+#include <protocol/CanLayout.h>
+#include <protocol/CanRecord.h>
+
+#include <QtCore/QCoreApplication>
+#include <QtCore/QTimer>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace lk::app {
+
+namespace {
+constexpr int kStopPollMs = 50;
+/// CAN_ERR_PROT | CAN_ERR_CRC-style bus error: what a receiver reports for a frame whose CRC
+/// failed (linux/can/error.h: CAN_ERR_PROT 0x08; data[3] location, CRC sequence 0x08).
+constexpr quint32 kErrorClassProtocol = 0x00000008;
+} // namespace
+
+CanBusServer::CanBusServer(sim::SimBus &bus, const Options &options, QObject *parent)
+    : QObject(parent), m_bus(bus), m_options(options), m_front(bus)
+{
+    m_clock.start();
+}
+
+CanBusServer::~CanBusServer() = default;
+
+bool CanBusServer::open()
+{
+    transport::CanSettings s = m_options.can;
+    s.setBitRate = m_options.can.plugin != QLatin1String("virtualcan");
+    m_transport = std::make_unique<transport::CanTransport>(s);
+    connect(m_transport.get(), &transport::Transport::bytesReceived, this,
+            &CanBusServer::onRecords);
+    connect(m_transport.get(), &transport::Transport::errorOccurred, this,
+            [](const transport::TransportError &e) {
+                std::fprintf(stderr, "lksim: %s\n", qPrintable(e.message));
+            });
+    return m_transport->open();
+}
+
+int CanBusServer::run(const std::atomic<bool> &stop)
+{
+    QTimer poll;
+    QObject::connect(&poll, &QTimer::timeout, [&stop] {
+        if (stop.load())
+            QCoreApplication::quit();
+    });
+    poll.start(kStopPollMs);
+    QCoreApplication::exec();
+    if (m_transport)
+        m_transport->close();
+    return 0;
+}
+
+void CanBusServer::onRecords(const QByteArray &records)
+{
+    const qint64 now = m_clock.nsecsElapsed();
+    const double frameS =
+        m_options.emulateWireTime ? protocol::can::frameSeconds(m_options.can.bitRate) : 0.0;
+    const qint64 frameNs = std::llround(frameS * 1e9);
+    const QList<sim::SimReply> replies = m_front.receive(records, static_cast<double>(now) * 1e-9);
+    // The request was on the wire already (it reached us); each reply follows its drive's
+    // turnaround and never overlaps the one before it.
+    m_wireFreeNs = std::max(m_wireFreeNs, now);
+    for (const sim::SimReply &r : replies) {
+        QByteArray bytes = r.bytes;
+        double extra = 0;
+        if (!m_bus.faults().apply(bytes, extra))
+            continue; // dropped: the drive acted, its reply was lost
+        if (bytes != r.bytes) {
+            // Corrupted on the wire: the CRC fails, every controller sends an error frame,
+            // and the frame never reaches anyone's software.
+            protocol::CanRecord err;
+            err.canId = kErrorClassProtocol;
+            err.flags = protocol::CanRecord::Error;
+            err.data = QByteArray(8, '\0');
+            ++m_errorFrames;
+            sendLater(err.encode(), 0);
+            continue;
+        }
+        const qint64 start =
+            std::max(now + std::llround((r.delaySeconds + extra) * 1e9), m_wireFreeNs);
+        m_wireFreeNs = start + frameNs;
+        sendLater(bytes, static_cast<double>(m_wireFreeNs - now) * 1e-9);
+        if (m_options.verbose)
+            std::fprintf(stderr, "lksim: reply %s\n",
+                         qPrintable(protocol::CanRecord::decode(bytes)->candumpText()));
+    }
+}
+
+void CanBusServer::sendLater(const QByteArray &record, double delayS)
+{
+    const int ms = static_cast<int>(std::floor(delayS * 1e3));
+    if (ms <= 0) {
+        m_transport->write(record);
+        return;
+    }
+    QTimer::singleShot(ms, Qt::PreciseTimer, this, [this, record] {
+        if (m_transport)
+            m_transport->write(record);
+    });
+}
+
+QString CanBusServer::summary() const
+{
+    const sim::SimCanCounters &c = m_front.counters();
+    return QStringLiteral("lksim: %1 CAN requests, %2 replies, %3 unanswered, %4 faults, %5 "
+                          "error frames sent")
+        .arg(c.requests)
+        .arg(c.replies)
+        .arg(c.unanswered)
+        .arg(c.faults)
+        .arg(m_errorFrames);
+}
+
+} // namespace lk::app
