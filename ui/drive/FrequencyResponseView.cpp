@@ -203,7 +203,6 @@ bool FrequencyResponseView::runSweep()
     ensureRunner(drive->session);
     if (!m_runner || !m_runner->start(s, drive->limits))
         return false;
-    m_runningId = drive->id;
     m_runningModel = drive->model;
     setStatus(tr("Reading the gains and speed of drive %1\u2026").arg(drive->id));
     refresh();
@@ -256,14 +255,11 @@ void FrequencyResponseView::onFinished(const FrequencySweepResult &result)
     run.response = result.response;
     const int key = m_runs->add(run);
     const QString title = m_runs->title(m_runs->indexOf(key));
-    const double start = result.startSpeed.value_or(0);
-    setStatus(tr("%1 points at %2 samples/s. %3 Drive %4 is back at %5 dps, the speed it had; "
-                 "the gains read are back in RAM.")
+    setStatus(tr("%1 points at %2 samples/s. %3 %4")
                   .arg(result.response.points.size())
                   .arg(Format::number(result.response.sampleRateHz, 0),
-                       BodeChart::figuresLine(title, result.response))
-                  .arg(result.spec.id)
-                  .arg(Format::number(start, 0)));
+                       BodeChart::figuresLine(title, result.response),
+                       TuningRunGate::endedText(result.spec.id, result.message)));
     refresh();
     emit runningChanged(false);
 }

@@ -69,7 +69,6 @@ private:
     BodeChart *m_chart = nullptr;
     std::unique_ptr<tuning::FrequencySweepRunner> m_runner;
     QPointer<bus::BusSession> m_runnerSession;
-    int m_runningId = 0;
     QString m_runningModel;
     QDoubleSpinBox *m_centre = nullptr;
     QDoubleSpinBox *m_amplitude = nullptr;

@@ -342,15 +342,14 @@ void GainSearchView::onEnded(const GainSearchResult &result)
             text = tr("Refused: %1.").arg(text::VerdictText::stepRefusal(result.refusal)) +
                    QLatin1Char(' ') + text;
     } else {
-        text = result.best ? tr("%n candidate(s) tried in %1 s; the best is in bold. Nothing "
-                                "was kept: the gains read are back in RAM. Write to RAM to try "
-                                "the suggestion.",
-                                nullptr, int(result.candidates.size()))
-                                 .arg(Format::number(result.seconds, 0))
-                           : tr("%n candidate(s) tried in %1 s; none stayed within the bounds. "
-                                "The gains read are back in RAM.",
-                                nullptr, int(result.candidates.size()))
-                                 .arg(Format::number(result.seconds, 0));
+        text = (result.best ? tr("%n candidate(s) tried in %1 s; the best is in bold, Write to "
+                                 "RAM tries it. Nothing else was kept.",
+                                 nullptr, int(result.candidates.size()))
+                                  .arg(Format::number(result.seconds, 0))
+                            : tr("%n candidate(s) tried in %1 s; none stayed within the bounds.",
+                                 nullptr, int(result.candidates.size()))
+                                  .arg(Format::number(result.seconds, 0))) +
+               QLatin1Char(' ') + TuningRunGate::endedText(result.spec.id, result.message);
         if (result.stoppedByInstability)
             text += QLatin1Char(' ') + tr("The search stopped at the first unstable candidate.");
     }

@@ -105,11 +105,12 @@ QString TuningRunGate::failureText(tuning::StepTestFailure failure, int id, cons
         break;
     }
     // The runners' account is English for logs; the two facts the user needs are read from it.
-    if (message.contains(QLatin1String("nothing was sent")) ||
-        message.contains(QLatin1String("no step was sent")))
+    if (message.contains(QLatin1String("nothing was sent")))
         return how + QLatin1Char(' ') + tr("Nothing was sent.");
+    // A search refused at its first step has written a candidate's gains, nothing that moves.
     const QString off =
-        message.contains(QLatin1String("did not acknowledge motor off"))
+        message.contains(QLatin1String("no step was sent")) ? tr("No step was sent.")
+        : message.contains(QLatin1String("did not acknowledge motor off"))
             ? tr("Drive %1 did not acknowledge Motor Off: it may still be moving.").arg(id)
         : message.contains(QLatin1String("is off"))
             ? tr("Motor Off went to drive %1 and it acknowledged.").arg(id)
@@ -121,6 +122,19 @@ QString TuningRunGate::failureText(tuning::StepTestFailure failure, int id, cons
                               ? tr("The gains read before are back in RAM.")
                               : QString();
     return QStringList{how, off, gains}.join(QLatin1Char(' ')).simplified();
+}
+
+QString TuningRunGate::endedText(int id, const QString &message)
+{
+    // TuningEnd::returnToSpeed's words: 0 dps holds with the motor on; any other speed turns on.
+    if (message.contains(QLatin1String("holds 0 dps")))
+        return tr("The gains read are back in RAM; drive %1 holds 0 dps, its motor stays on.")
+            .arg(id);
+    if (message.contains(QLatin1String("is back at")))
+        return tr("The gains read are back in RAM; drive %1 is back at the speed it had and keeps "
+                  "turning until stopped.")
+            .arg(id);
+    return tr("The gains read are back in RAM.");
 }
 
 } // namespace lk::ui

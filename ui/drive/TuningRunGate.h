@@ -49,6 +49,9 @@ public:
     /// How a sweep or search that did not finish ended, and what the drive was left doing:
     /// `message` is the runner's account (English), read for the two facts that matter.
     static QString failureText(tuning::StepTestFailure failure, int id, const QString &message);
+    /// What the drive does after a sweep or search that finished: back at the speed read
+    /// before it (`message`, the runner's English account, says which).
+    static QString endedText(int id, const QString &message);
 };
 
 } // namespace lk::ui

@@ -104,10 +104,8 @@ class tst_FrequencyTuningView : public QObject {
     Q_OBJECT
 private slots:
     void sweepIsKeptAndDrawn();
-    void nothingRunsBeforeTheGainsAreRead();
-    void decliningTheQuestionSendsNothing();
-    void refusalNamesTheLimitAndSendsNothing();
-    void angleRangeRefusesTheSweep();
+    void refusalsSendNothing_data();
+    void refusalsSendNothing();
     void escMidSweepRestoresGainsAndTurnsOff();
     void escMidSearchRestoresGainsAndTurnsOff();
     void suggestionIsWrittenOnlyWhenClicked();
@@ -136,79 +134,67 @@ void tst_FrequencyTuningView::sweepIsKeptAndDrawn()
     QCOMPARE(o.sweep->chart()->phasePoints(0)->count(), r.points.size());
     QVERIFY(o.sweep->chart()->figuresText().startsWith(QStringLiteral("Run 1: ")));
     QVERIFY(o.sweep->chart()->pointText(0, 0).contains(QStringLiteral("Fit quality")));
-    QVERIFY2(o.sweep->statusText().contains(QStringLiteral("back in RAM")),
+    QVERIFY2(o.sweep->statusText().contains(
+                 QStringLiteral("back in RAM; drive 1 holds 0 dps, its motor stays on")),
              qPrintable(o.sweep->statusText()));
     QVERIFY(samePid(rig.ramPid(1), before));
 }
 
-void tst_FrequencyTuningView::nothingRunsBeforeTheGainsAreRead()
+void tst_FrequencyTuningView::refusalsSendNothing_data()
 {
-    SimRig rig;
-    QVERIFY(rig.open());
-    Answers yes(true);
-    Opened o = openView(rig, 1, limitsOf(rig, 1), false);
-    QVERIFY(!o.view->readComplete()); // its read is on the bus, not answered yet
-    QVERIFY(!o.sweep->runSweep());
-    QVERIFY2(o.sweep->statusText().contains(QStringLiteral("have not been read")),
-             qPrintable(o.sweep->statusText()));
-    QVERIFY(!o.search->runSearch());
-    QVERIFY(o.search->statusText().contains(QStringLiteral("have not been read")));
-    QVERIFY(yes.asked.isEmpty());
-    QVERIFY(rig.barrier());
-    QCOMPARE(motionTo(rig, 1), 0);
+    QTest::addColumn<bool>("readFirst");
+    QTest::addColumn<bool>("answer");
+    QTest::addColumn<double>("maxSpeedDps"); // 0: the series' default
+    QTest::addColumn<bool>("angleRange");
+    QTest::addColumn<bool>("trySearch"); // the search checks the limits in its runner
+    QTest::addColumn<QString>("status");
+    QTest::addColumn<int>("questions");
+    // Its read is on the bus, not answered yet: nothing runs on gains not read.
+    QTest::newRow("gains not read")
+        << false << true << 0.0 << false << true << "have not been read on this connection" << 0;
+    QTest::newRow("question declined")
+        << true << false << 0.0 << false << true << "Cancelled: nothing was sent." << 2;
+    // The operating point (200 dps) is beyond the limit: refused before the question.
+    QTest::newRow("speed limit") << true << true << 150.0 << false << false << "Refused at 200 dps"
+                                 << 0;
+    QTest::newRow("angle range") << true << true << 0.0 << true << true << "angle range" << 0;
 }
 
-void tst_FrequencyTuningView::decliningTheQuestionSendsNothing()
+void tst_FrequencyTuningView::refusalsSendNothing()
 {
-    SimRig rig;
-    QVERIFY(rig.open());
-    Opened o = openView(rig, 1, limitsOf(rig, 1));
-    QVERIFY(o.view);
-    Answers no(false);
-    o.sweep->setSpec(shortSweep(0.3));
-    QVERIFY(!o.sweep->runSweep());
-    QVERIFY(!o.search->runSearch());
-    QCOMPARE(no.asked.size(), 2);
-    QVERIFY(no.asked.at(1).reason.contains(QStringLiteral("turns")));
-    QVERIFY(o.sweep->statusText().contains(QStringLiteral("nothing was sent")));
-    QVERIFY(rig.barrier());
-    QCOMPARE(motionTo(rig, 1), 0);
-}
-
-void tst_FrequencyTuningView::refusalNamesTheLimitAndSendsNothing()
-{
+    QFETCH(bool, readFirst);
+    QFETCH(bool, answer);
+    QFETCH(double, maxSpeedDps);
+    QFETCH(bool, angleRange);
+    QFETCH(bool, trySearch);
+    QFETCH(QString, status);
+    QFETCH(int, questions);
     SimRig rig;
     QVERIFY(rig.open());
     lk::safety::SoftLimits limits = limitsOf(rig, 1);
-    limits.maxSpeedDps = 150; // the operating point (200 dps) is beyond it
-    Opened o = openView(rig, 1, limits);
+    if (maxSpeedDps > 0)
+        limits.maxSpeedDps = maxSpeedDps;
+    if (angleRange) {
+        limits.minAngleDeg = -3600;
+        limits.maxAngleDeg = 3600;
+    }
+    Opened o = openView(rig, 1, limits, readFirst);
     QVERIFY(o.view);
-    Answers yes(true);
+    QCOMPARE(o.view->readComplete(), readFirst);
+    Answers answers(answer);
     o.sweep->setSpec(shortSweep(0.3));
     QVERIFY(!o.sweep->runSweep());
-    const QString status = o.sweep->statusText();
-    QVERIFY2(status.startsWith(QStringLiteral("Refused at 200 dps")), qPrintable(status));
-    QVERIFY2(status.contains(QStringLiteral("150")), qPrintable(status));
-    QVERIFY(yes.asked.isEmpty()); // refused before the question
-    QVERIFY(rig.barrier());
-    QCOMPARE(motionTo(rig, 1), 0);
-}
-
-void tst_FrequencyTuningView::angleRangeRefusesTheSweep()
-{
-    SimRig rig;
-    QVERIFY(rig.open());
-    lk::safety::SoftLimits limits = limitsOf(rig, 1);
-    limits.minAngleDeg = -3600;
-    limits.maxAngleDeg = 3600;
-    Opened o = openView(rig, 1, limits);
-    QVERIFY(o.view);
-    Answers yes(true);
-    QVERIFY(!o.sweep->runSweep());
-    QVERIFY2(o.sweep->statusText().contains(QStringLiteral("angle range")),
-             qPrintable(o.sweep->statusText()));
-    QVERIFY(!o.search->runSearch());
-    QVERIFY(yes.asked.isEmpty());
+    QVERIFY2(o.sweep->statusText().contains(status), qPrintable(o.sweep->statusText()));
+    if (maxSpeedDps > 0)
+        QVERIFY2(o.sweep->statusText().contains(QString::number(maxSpeedDps)),
+                 qPrintable(o.sweep->statusText()));
+    if (trySearch) {
+        QVERIFY(!o.search->runSearch());
+        QVERIFY2(o.search->statusText().contains(status), qPrintable(o.search->statusText()));
+    }
+    QCOMPARE(answers.asked.size(), questions);
+    if (questions > 0)
+        QVERIFY(answers.asked.last().reason.contains(QStringLiteral("turns")));
     QVERIFY(rig.barrier());
     QCOMPARE(motionTo(rig, 1), 0);
 }
