@@ -2,6 +2,7 @@
 
 #include "DriveLimitsView.h"
 #include "DriveText.h"
+#include "FrequencyTuningView.h"
 #include "LoopPlot.h"
 #include "ParameterTable.h"
 #include "RequestTracker.h"
@@ -143,6 +144,7 @@ void TuningView::buildUi()
     m_side->setObjectName(QStringLiteral("tuningSide"));
     m_side->addTab(m_plot, tr("Live plot"));
     m_side->addTab(buildStepTab(), tr("Step response"));
+    m_side->addTab(new FrequencyTuningView(this), tr("Frequency response"));
     auto *layout = new QHBoxLayout(this);
     layout->addWidget(leftWidget);
     layout->addWidget(m_side, 1);
@@ -191,6 +193,7 @@ void TuningView::showStepResponse(bool show)
 void TuningView::haltLocalMotion(const QString &reason)
 {
     m_stepTest->halt(reason);
+    findChild<FrequencyTuningView *>()->halt();
 }
 
 QJsonObject TuningView::heldObject(bool ramps) const

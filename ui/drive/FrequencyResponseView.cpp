@@ -1,0 +1,322 @@
+#include "FrequencyResponseView.h"
+
+#include "TuningRunGate.h"
+#include "TuningView.h"
+
+#include <bus/BusSession.h>
+#include <panels/Format.h>
+#include <panels/StatusColors.h>
+#include <text/VerdictText.h>
+#include <tuning/BodeChart.h>
+#include <tuning/FrequencyRunList.h>
+#include <tuning/StepRunsModel.h>
+
+#include <QtWidgets/QDoubleSpinBox>
+#include <QtWidgets/QFormLayout>
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QPushButton>
+#include <QtWidgets/QSpinBox>
+#include <QtWidgets/QVBoxLayout>
+
+namespace lk::ui {
+
+using tuning::FrequencySweepPlan;
+using tuning::FrequencySweepResult;
+using tuning::FrequencySweepSpec;
+
+FrequencyResponseView::FrequencyResponseView(TuningView *host, QWidget *parent)
+    : QWidget(parent), m_host(host), m_runs(new FrequencyRunList(this))
+{
+    setObjectName(QStringLiteral("frequencyResponse"));
+    m_chart = new BodeChart(this);
+    m_travel = new QLabel(this);
+    m_travel->setObjectName(QStringLiteral("sweepTravel"));
+    m_travel->setWordWrap(true);
+    m_status = new QLabel(this);
+    m_status->setObjectName(QStringLiteral("sweepStatus"));
+    m_status->setWordWrap(true);
+    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_run = new QPushButton(tr("Measure"), this);
+    m_run->setObjectName(QStringLiteral("runSweep"));
+    m_clear = new QPushButton(tr("Clear runs"), this);
+    m_clear->setObjectName(QStringLiteral("clearSweeps"));
+    auto *buttons = new QHBoxLayout;
+    buttons->addWidget(m_run);
+    buttons->addWidget(m_clear);
+    buttons->addStretch(1);
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(buildFields());
+    layout->addWidget(m_travel);
+    layout->addLayout(buttons);
+    layout->addWidget(m_status);
+    layout->addWidget(m_chart, 1);
+    connect(m_run, &QPushButton::clicked, this, [this] {
+        if (isRunning())
+            halt();
+        else
+            runSweep();
+    });
+    connect(m_clear, &QPushButton::clicked, m_runs, &FrequencyRunList::clear);
+    connect(m_runs, &FrequencyRunList::changed, this, &FrequencyResponseView::refreshChart);
+    // The host's read is what lets a sweep run: refresh when one ends.
+    connect(m_host, &TuningView::parametersRead, this, &FrequencyResponseView::refresh);
+    setStatus(tr("Measures the speed loop's frequency response: a sine of the speed setpoint "
+                 "around the operating point, one frequency after the other. Its extremes are "
+                 "checked against the soft limits (Control view) before anything moves; Esc "
+                 "stops the motor and puts the gains read back."));
+    refreshChart();
+    // Not refresh(): the host builds its widgets before its read cycle; showEvent() asks it.
+    m_run->setEnabled(false);
+}
+
+FrequencyResponseView::~FrequencyResponseView() = default;
+
+void FrequencyResponseView::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    refresh();
+}
+
+QWidget *FrequencyResponseView::buildFields()
+{
+    auto *w = new QWidget(this);
+    auto *form = new QFormLayout(w);
+    form->setContentsMargins(0, 0, 0, 0);
+    auto spin = [w](const QString &name, double min, double max, int decimals, double value,
+                    const QString &suffix) {
+        auto *s = new QDoubleSpinBox(w);
+        s->setObjectName(name);
+        s->setRange(min, max);
+        s->setDecimals(decimals);
+        s->setValue(value);
+        s->setSuffix(suffix);
+        s->setKeyboardTracking(false);
+        s->setMinimumWidth(70);
+        return s;
+    };
+    const FrequencySweepSpec d;
+    // The soft limits bound the speeds, not the boxes.
+    m_centre = spin(QStringLiteral("sweepCentre"), -1e5, 1e5, 0, 2 * d.amplitude, tr(" dps"));
+    m_centre->setToolTip(tr("The speed the sine is centred on. Away from 0, so that the rotor "
+                            "never stops: friction would bend the response."));
+    m_amplitude = spin(QStringLiteral("sweepAmplitude"), 1, 1e5, 0, d.amplitude, tr(" dps"));
+    m_amplitude->setToolTip(tr("The sine's peak around the operating point."));
+    m_from = spin(QStringLiteral("sweepFrom"), FrequencySweepSpec::kMinHz,
+                  FrequencySweepSpec::kMaxHz, 1, d.fromHz, tr(" Hz"));
+    m_to = spin(QStringLiteral("sweepTo"), FrequencySweepSpec::kMinHz, FrequencySweepSpec::kMaxHz,
+                1, d.toHz, tr(" Hz"));
+    m_points = new QSpinBox(w);
+    m_points->setObjectName(QStringLiteral("sweepPoints"));
+    m_points->setRange(1, FrequencySweepSpec::kMaxPoints);
+    m_points->setValue(d.points);
+    m_perPoint = spin(QStringLiteral("sweepPerPoint"), 0.1, 60, 1, d.minPointS, tr(" s"));
+    m_perPoint->setToolTip(tr("Each frequency lasts at least this long (and 5 cycles)."));
+    auto row = [w](QWidget *a, const QString &between, QWidget *b) {
+        auto *h = new QHBoxLayout;
+        h->addWidget(a, 1);
+        h->addWidget(new QLabel(between, w));
+        h->addWidget(b, 1);
+        return h;
+    };
+    form->addRow(tr("Operating point \u00b1 amplitude"),
+                 row(m_centre, QStringLiteral("\u00b1"), m_amplitude));
+    form->addRow(tr("From \u2192 to"), row(m_from, QStringLiteral("\u2192"), m_to));
+    form->addRow(tr("Frequencies, each at least"), row(m_points, QString(), m_perPoint));
+    for (QDoubleSpinBox *s : {m_centre, m_amplitude, m_from, m_to, m_perPoint})
+        connect(s, &QDoubleSpinBox::valueChanged, this, &FrequencyResponseView::refresh);
+    connect(m_points, &QSpinBox::valueChanged, this, &FrequencyResponseView::refresh);
+    return w;
+}
+
+FrequencySweepSpec FrequencyResponseView::spec() const
+{
+    FrequencySweepSpec s;
+    s.id = m_host->driveId();
+    s.operatingPoint = m_centre->value();
+    s.amplitude = m_amplitude->value();
+    s.fromHz = m_from->value();
+    s.toHz = m_to->value();
+    s.points = m_points->value();
+    s.minPointS = m_perPoint->value();
+    return s;
+}
+
+void FrequencyResponseView::setSpec(const FrequencySweepSpec &s)
+{
+    m_centre->setValue(s.centre());
+    m_amplitude->setValue(s.amplitude);
+    m_from->setValue(s.fromHz);
+    m_to->setValue(s.toHz);
+    m_points->setValue(s.points);
+    m_perPoint->setValue(s.minPointS);
+}
+
+QString FrequencyResponseView::travelText() const
+{
+    const std::optional<TuningRunDrive> drive = TuningRunGate::check(*m_host, nullptr);
+    if (!drive)
+        return {};
+    const FrequencySweepSpec s = spec();
+    const FrequencySweepPlan plan = FrequencySweepPlan::make(s, drive->series, drive->limits);
+    if (!plan.allowed())
+        return {};
+    return TuningRunGate::travelText(*drive, s.centre() - s.amplitude, s.centre() + s.amplitude,
+                                     plan.endS());
+}
+
+bool FrequencyResponseView::runSweep()
+{
+    if (isRunning())
+        return false;
+    QString why;
+    const std::optional<TuningRunDrive> drive = TuningRunGate::check(*m_host, &why);
+    if (!drive) {
+        setStatus(why, true);
+        return false;
+    }
+    const FrequencySweepSpec s = spec();
+    // The same plan the runner makes: a refusal names the limit before the question.
+    const FrequencySweepPlan plan = FrequencySweepPlan::make(s, drive->series, drive->limits);
+    if (!plan.allowed()) {
+        setStatus(
+            plan.verdict().allowed()
+                ? tr("The sweep cannot run as set (%1). Nothing was sent.").arg(plan.specError())
+                : tr("Refused at %1 dps: %2. Nothing was sent.")
+                      .arg(Format::number(plan.refusedDps(), 0),
+                           text::VerdictText::verdict(plan.verdict(), drive->series)),
+            true);
+        return false;
+    }
+    const QString travel = TuningRunGate::travelText(*drive, s.centre() - s.amplitude,
+                                                     s.centre() + s.amplitude, plan.endS());
+    if (!TuningRunGate::askFreeToTurn(this, *drive, QStringLiteral("frequency_sweep"),
+                                      tr("Frequency response"), travel)) {
+        setStatus(tr("Cancelled: nothing was sent."));
+        return false;
+    }
+    // The question ran an event loop: the drive or the link may have changed meanwhile.
+    if (!TuningRunGate::check(*m_host, &why) || m_host->driveId() != drive->id) {
+        setStatus(tr("The drive or the connection changed: nothing was sent."), true);
+        return false;
+    }
+    ensureRunner(drive->session);
+    if (!m_runner || !m_runner->start(s, drive->limits))
+        return false;
+    m_runningModel = drive->model;
+    setStatus(tr("Reading the gains and speed of drive %1\u2026").arg(drive->id));
+    refresh();
+    emit runningChanged(true);
+    return true;
+}
+
+void FrequencyResponseView::ensureRunner(bus::BusSession *session)
+{
+    if (m_runner && m_runnerSession == session)
+        return;
+    m_runner.reset();
+    m_runnerSession = session;
+    if (!session)
+        return;
+    m_runner = std::make_unique<tuning::FrequencySweepRunner>(*session);
+    connect(m_runner.get(), &tuning::FrequencySweepRunner::finished, this,
+            &FrequencyResponseView::onFinished);
+    connect(m_runner.get(), &tuning::FrequencySweepRunner::failed, this,
+            &FrequencyResponseView::onFailed);
+    connect(m_runner.get(), &tuning::FrequencySweepRunner::started, this,
+            [this](const FrequencySweepPlan &plan) {
+                setStatus(tr("Sweeping drive %1: %2 frequencies over %3 s. Esc stops it.")
+                              .arg(plan.spec().id)
+                              .arg(plan.segments().size())
+                              .arg(Format::number(plan.endS(), 1)));
+            });
+}
+
+void FrequencyResponseView::halt()
+{
+    if (isRunning())
+        m_runner->abort(); // ends with failed(Aborted): the status says what the drive does
+}
+
+bool FrequencyResponseView::isRunning() const
+{
+    return m_runner && m_runner->isRunning();
+}
+
+void FrequencyResponseView::onFinished(const FrequencySweepResult &result)
+{
+    FrequencyRun run;
+    run.ranAt = QDateTime::currentDateTimeUtc();
+    run.driveId = result.spec.id;
+    run.series = m_host->series() ? protocol::seriesName(*m_host->series()) : QString();
+    run.model = m_runningModel;
+    run.spec = result.spec;
+    run.gains = result.gains;
+    run.response = result.response;
+    const int key = m_runs->add(run);
+    const QString title = m_runs->title(m_runs->indexOf(key));
+    setStatus(tr("%1 points at %2 samples/s. %3 %4")
+                  .arg(result.response.points.size())
+                  .arg(Format::number(result.response.sampleRateHz, 0),
+                       BodeChart::figuresLine(title, result.response),
+                       TuningRunGate::endedText(result.spec.id, result.message)));
+    refresh();
+    emit runningChanged(false);
+}
+
+void FrequencyResponseView::onFailed(const FrequencySweepResult &result)
+{
+    QString text = TuningRunGate::failureText(result.failure, result.spec.id, result.message);
+    if (result.failure == tuning::StepTestFailure::Refused && !result.refusal.allowed())
+        text = tr("Refused at %1 dps: %2.")
+                   .arg(Format::number(result.refusedDps, 0),
+                        text::VerdictText::verdict(result.refusal, m_host->series())) +
+               QLatin1Char(' ') + text;
+    setStatus(text, true);
+    refresh();
+    emit runningChanged(false);
+}
+
+void FrequencyResponseView::refreshChart()
+{
+    QVector<BodeRun> shown;
+    const QVector<FrequencyRun> runs = m_runs->shownRuns();
+    const QVector<int> keys = m_runs->shownKeys();
+    for (int i = 0; i < runs.size(); ++i)
+        shown.append({m_runs->title(m_runs->indexOf(keys.at(i))),
+                      StepRunsModel::runColor(keys.at(i)), runs.at(i).response});
+    m_chart->setRuns(shown);
+    m_clear->setEnabled(!m_runs->runs().isEmpty() && !isRunning());
+}
+
+void FrequencyResponseView::refresh()
+{
+    const bool running = isRunning();
+    m_run->setText(running ? tr("Stop (Esc)") : tr("Measure"));
+    m_run->setToolTip(running ? tr("Stop at once: Motor Off, and the gains read back to RAM.")
+                              : tr("Measure the frequency response set above on the selected "
+                                   "drive (asks first)."));
+    m_run->setEnabled(running || (m_host->canSendToDrive() && m_host->readComplete()));
+    for (QWidget *w : {static_cast<QWidget *>(m_centre), static_cast<QWidget *>(m_amplitude),
+                       static_cast<QWidget *>(m_from), static_cast<QWidget *>(m_to),
+                       static_cast<QWidget *>(m_points), static_cast<QWidget *>(m_perPoint)})
+        w->setEnabled(!running);
+    m_clear->setEnabled(!m_runs->runs().isEmpty() && !running);
+    if (!running)
+        m_travel->setText(travelText());
+}
+
+void FrequencyResponseView::setStatus(const QString &text, bool error)
+{
+    m_status->setText(text);
+    m_status->setStyleSheet(
+        error ? StatusColors::textStyle(StatusColors::Role::Error, StatusColors::current())
+              : QString());
+}
+
+QString FrequencyResponseView::statusText() const
+{
+    return m_status->text();
+}
+
+} // namespace lk::ui

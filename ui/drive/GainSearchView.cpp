@@ -1,0 +1,501 @@
+#include "GainSearchView.h"
+
+#include "ParameterTable.h"
+#include "TuningRunGate.h"
+#include "TuningView.h"
+
+#include <bus/BusSession.h>
+#include <panels/Format.h>
+#include <panels/StatusColors.h>
+#include <text/VerdictText.h>
+#include <tuning/CandidateTraceRecorder.h>
+#include <tuning/MetricText.h>
+#include <tuning/StepOverlayChart.h>
+#include <tuning/StepRunsModel.h>
+
+#include <QtWidgets/QDoubleSpinBox>
+#include <QtWidgets/QFormLayout>
+#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QHeaderView>
+#include <QtWidgets/QLabel>
+#include <QtWidgets/QPushButton>
+#include <QtWidgets/QSpinBox>
+#include <QtWidgets/QTableWidget>
+#include <QtWidgets/QVBoxLayout>
+
+namespace lk::ui {
+
+using tuning::CandidateScore;
+using tuning::CandidateVerdict;
+using tuning::GainSearchResult;
+using tuning::GainSearchSpec;
+
+namespace {
+
+enum Column { Number, Kp, Ki, Rise, Overshoot, ErrorArea, Verdict, kColumns };
+
+QString verdictText(CandidateVerdict v)
+{
+    switch (v) {
+    case CandidateVerdict::Accepted:
+        return GainSearchView::tr("within the bounds");
+    case CandidateVerdict::Overshoot:
+        return GainSearchView::tr("overshoots");
+    case CandidateVerdict::Oscillates:
+        return GainSearchView::tr("oscillates");
+    case CandidateVerdict::NotSettled:
+        return GainSearchView::tr("did not settle");
+    case CandidateVerdict::Saturated:
+        return GainSearchView::tr("current at its limit: unstable, search stopped");
+    case CandidateVerdict::Growing:
+        return GainSearchView::tr("swings growing: unstable, search stopped");
+    }
+    return {};
+}
+
+QString riseText(const CandidateScore &s)
+{
+    return MetricText::value(s.metrics, StepMetricKind::RiseTime, tuning::StepLoop::Speed, false);
+}
+
+QString overshootText(const CandidateScore &s)
+{
+    return MetricText::value(s.metrics, StepMetricKind::Overshoot, tuning::StepLoop::Speed, false);
+}
+
+/// How far a search may turn the axis: every candidate's pre-roll and square, at most.
+QString searchTravel(const TuningRunDrive &drive, const GainSearchSpec &s)
+{
+    const double seconds = s.maxCandidates * (s.preRollS + 2 * s.periods * s.stepS);
+    return TuningRunGate::travelText(drive, std::min(s.from, s.to), std::max(s.from, s.to),
+                                     seconds);
+}
+
+int fieldIndex(const ParamSetSpec &spec, const QString &key)
+{
+    const QVector<ParamField> fields = spec.fields();
+    for (int i = 0; i < fields.size(); ++i) {
+        if (fields.at(i).key == key)
+            return i;
+    }
+    return -1;
+}
+
+} // namespace
+
+GainSearchView::GainSearchView(TuningView *host, QWidget *parent)
+    : QWidget(parent), m_host(host), m_recorder(new CandidateTraceRecorder(this))
+{
+    setObjectName(QStringLiteral("gainSearch"));
+    m_travel = new QLabel(this);
+    m_travel->setObjectName(QStringLiteral("searchTravel"));
+    m_travel->setWordWrap(true);
+    m_status = new QLabel(this);
+    m_status->setObjectName(QStringLiteral("searchStatus"));
+    m_status->setWordWrap(true);
+    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_run = new QPushButton(tr("Search gains"), this);
+    m_run->setObjectName(QStringLiteral("runSearch"));
+    m_writeRam = new QPushButton(tr("Write to RAM"), this);
+    m_writeRam->setObjectName(QStringLiteral("writeSuggestedRam"));
+    m_writeRam->setToolTip(tr("Write the suggested speed Kp and Ki to the drive's RAM (lost at "
+                              "power-off), then read back. Nothing is written before this."));
+    m_writeRom = new QPushButton(tr("Write to ROM\u2026"), this);
+    m_writeRom->setObjectName(QStringLiteral("writeSuggestedRom"));
+    m_writeRom->setToolTip(tr("Keep the suggested gains written to RAM: asks first, then writes "
+                              "them to ROM."));
+    auto *buttons = new QHBoxLayout;
+    buttons->addWidget(m_run);
+    buttons->addStretch(1);
+    buttons->addWidget(m_writeRam);
+    buttons->addWidget(m_writeRom);
+
+    m_table = new QTableWidget(0, kColumns, this);
+    m_table->setObjectName(QStringLiteral("candidateTable"));
+    m_table->setHorizontalHeaderLabels({tr("#"), tr("Kp"), tr("Ki"), tr("Rise"), tr("Overshoot"),
+                                        tr("Error area"), tr("Verdict")});
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->verticalHeader()->hide();
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_table->horizontalHeader()->setStretchLastSection(true);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(buildFields());
+    layout->addWidget(m_travel);
+    layout->addLayout(buttons);
+    layout->addWidget(m_status);
+    layout->addWidget(m_table, 1);
+    layout->addWidget(buildComparison(), 2);
+    connect(m_run, &QPushButton::clicked, this, [this] {
+        if (isRunning())
+            halt();
+        else
+            runSearch();
+    });
+    connect(m_writeRam, &QPushButton::clicked, this, &GainSearchView::writeBestToRam);
+    connect(m_writeRom, &QPushButton::clicked, this, &GainSearchView::writeBestToRom);
+    connect(m_host, &TuningView::parametersRead, this, &GainSearchView::refresh);
+    setStatus(tr("Tries speed-loop gains with short speed steps within the soft limits and "
+                 "suggests the fastest whose overshoot stays under the bound. Nothing is kept "
+                 "in the drive: the gains read go back to RAM at the end."));
+    // Not refresh(): the host builds its widgets before its read cycle; showEvent() asks it.
+    m_run->setEnabled(false);
+    m_writeRam->setEnabled(false);
+    m_writeRom->setEnabled(false);
+}
+
+void GainSearchView::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    refresh();
+}
+
+GainSearchView::~GainSearchView() = default;
+
+QWidget *GainSearchView::buildFields()
+{
+    auto *w = new QWidget(this);
+    auto *form = new QFormLayout(w);
+    form->setContentsMargins(0, 0, 0, 0);
+    const GainSearchSpec d;
+    auto spin = [w](const QString &name, double min, double max, double value,
+                    const QString &suffix) {
+        auto *s = new QDoubleSpinBox(w);
+        s->setObjectName(name);
+        s->setRange(min, max);
+        s->setDecimals(0);
+        s->setValue(value);
+        s->setSuffix(suffix);
+        s->setKeyboardTracking(false);
+        s->setMinimumWidth(70);
+        return s;
+    };
+    m_overshoot = spin(QStringLiteral("maxOvershoot"), 0, 100, d.maxOvershootPct, tr(" %"));
+    m_overshoot->setToolTip(tr("A candidate whose step overshoots more than this is not "
+                               "suggested."));
+    m_from = spin(QStringLiteral("searchFrom"), -1e5, 1e5, d.from, tr(" dps"));
+    m_to = spin(QStringLiteral("searchTo"), -1e5, 1e5, d.to, tr(" dps"));
+    m_from->setToolTip(tr("Each candidate steps the speed between these two, away from 0 where "
+                          "friction would bend the steps."));
+    m_to->setToolTip(m_from->toolTip());
+    m_maxCandidates = new QSpinBox(w);
+    m_maxCandidates->setObjectName(QStringLiteral("maxCandidates"));
+    m_maxCandidates->setRange(1, 50);
+    m_maxCandidates->setValue(d.maxCandidates);
+    auto *steps = new QHBoxLayout;
+    steps->addWidget(m_from, 1);
+    steps->addWidget(new QLabel(QStringLiteral("\u2194"), w));
+    steps->addWidget(m_to, 1);
+    form->addRow(tr("Max overshoot"), m_overshoot);
+    form->addRow(tr("Steps between"), steps);
+    form->addRow(tr("Candidates at most"), m_maxCandidates);
+    for (QDoubleSpinBox *s : {m_overshoot, m_from, m_to})
+        connect(s, &QDoubleSpinBox::valueChanged, this, &GainSearchView::refresh);
+    connect(m_maxCandidates, &QSpinBox::valueChanged, this, &GainSearchView::refresh);
+    return w;
+}
+
+QWidget *GainSearchView::buildComparison()
+{
+    m_compare = new QTableWidget(0, 2, this);
+    m_compare->setObjectName(QStringLiteral("bestVsRead"));
+    m_compare->setHorizontalHeaderLabels({tr("Gains read"), tr("Suggested")});
+    m_compare->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_compare->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_compare->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_overlay = new StepOverlayChart(this);
+    m_overlay->setObjectName(QStringLiteral("bestStepOverlay"));
+    auto *w = new QWidget(this);
+    auto *h = new QHBoxLayout(w);
+    h->setContentsMargins(0, 0, 0, 0);
+    h->addWidget(m_compare, 1);
+    h->addWidget(m_overlay, 2);
+    return w;
+}
+
+GainSearchSpec GainSearchView::spec() const
+{
+    GainSearchSpec s;
+    s.id = m_host->driveId();
+    s.maxOvershootPct = m_overshoot->value();
+    s.from = m_from->value();
+    s.to = m_to->value();
+    s.maxCandidates = m_maxCandidates->value();
+    return s;
+}
+
+void GainSearchView::setSpec(const GainSearchSpec &s)
+{
+    m_overshoot->setValue(s.maxOvershootPct);
+    m_from->setValue(s.from);
+    m_to->setValue(s.to);
+    m_maxCandidates->setValue(s.maxCandidates);
+}
+
+bool GainSearchView::runSearch()
+{
+    if (isRunning())
+        return false;
+    QString why;
+    const std::optional<TuningRunDrive> drive = TuningRunGate::check(*m_host, &why);
+    if (!drive) {
+        setStatus(why, true);
+        return false;
+    }
+    const GainSearchSpec s = spec();
+    const QString travel = searchTravel(*drive, s);
+    if (!TuningRunGate::askFreeToTurn(this, *drive, QStringLiteral("gain_search"),
+                                      tr("Suggested gains"), travel)) {
+        setStatus(tr("Cancelled: nothing was sent."));
+        return false;
+    }
+    if (!TuningRunGate::check(*m_host, &why) || m_host->driveId() != drive->id) {
+        setStatus(tr("The drive or the connection changed: nothing was sent."), true);
+        return false;
+    }
+    ensureRunner(drive->session);
+    if (!m_runner || !m_runner->start(s, drive->limits))
+        return false;
+    m_result.reset();
+    m_ramWritten = false;
+    m_searchedId = drive->id;
+    m_recorder->start(drive->session, drive->id);
+    m_table->setRowCount(0);
+    showComparison();
+    setStatus(tr("Searching the speed-loop gains of drive %1\u2026 Esc stops it.").arg(drive->id));
+    refresh();
+    emit runningChanged(true);
+    return true;
+}
+
+void GainSearchView::ensureRunner(bus::BusSession *session)
+{
+    if (m_runner && m_runnerSession == session)
+        return;
+    m_runner.reset();
+    m_runnerSession = session;
+    if (!session)
+        return;
+    m_runner = std::make_unique<tuning::GainSearchRunner>(*session);
+    connect(m_runner.get(), &tuning::GainSearchRunner::candidateScored, this,
+            &GainSearchView::onScored);
+    connect(m_runner.get(), &tuning::GainSearchRunner::finished, this, &GainSearchView::onEnded);
+    connect(m_runner.get(), &tuning::GainSearchRunner::failed, this, &GainSearchView::onEnded);
+}
+
+void GainSearchView::halt()
+{
+    if (isRunning())
+        m_runner->abort(); // ends with failed(Aborted)
+}
+
+bool GainSearchView::isRunning() const
+{
+    return m_runner && m_runner->isRunning();
+}
+
+void GainSearchView::fillRow(int row, const CandidateScore &score)
+{
+    const QStringList cells{row == 0 ? tr("read") : QString::number(row),
+                            QString::number(score.gains.speed.kp),
+                            QString::number(score.gains.speed.ki),
+                            riseText(score),
+                            overshootText(score),
+                            tr("%1 s").arg(Format::number(score.errorAreaS, 4)),
+                            verdictText(score.verdict)};
+    for (int c = 0; c < kColumns; ++c)
+        m_table->setItem(row, c, new QTableWidgetItem(cells.at(c)));
+}
+
+void GainSearchView::onScored(const CandidateScore &score, int index)
+{
+    m_recorder->cut(); // this candidate's step ended with its score
+    if (m_table->rowCount() <= index)
+        m_table->setRowCount(index + 1);
+    fillRow(index, score);
+    m_table->scrollToItem(m_table->item(index, 0));
+    setStatus(tr("Candidate %1 of at most %2 tried on drive %3\u2026 Esc stops it.")
+                  .arg(index + 1)
+                  .arg(m_maxCandidates->value())
+                  .arg(m_searchedId));
+}
+
+void GainSearchView::onEnded(const GainSearchResult &result)
+{
+    m_recorder->stop();
+    m_result = result;
+    m_table->setRowCount(int(result.candidates.size()));
+    for (int i = 0; i < result.candidates.size(); ++i)
+        fillRow(i, result.candidates.at(i));
+    if (result.best) {
+        for (int c = 0; c < kColumns; ++c) {
+            QFont bold = m_table->item(*result.best, c)->font();
+            bold.setBold(true);
+            m_table->item(*result.best, c)->setFont(bold);
+        }
+    }
+    showComparison();
+    QString text;
+    if (!result.ok()) {
+        text = TuningRunGate::failureText(result.failure, result.spec.id, result.message);
+        if (result.failure == tuning::StepTestFailure::Refused)
+            text = tr("Refused: %1.").arg(text::VerdictText::stepRefusal(result.refusal)) +
+                   QLatin1Char(' ') + text;
+    } else {
+        text = (result.best ? tr("%n candidate(s) tried in %1 s; the best is in bold, Write to "
+                                 "RAM tries it. Nothing else was kept.",
+                                 nullptr, int(result.candidates.size()))
+                                  .arg(Format::number(result.seconds, 0))
+                            : tr("%n candidate(s) tried in %1 s; none stayed within the bounds.",
+                                 nullptr, int(result.candidates.size()))
+                                  .arg(Format::number(result.seconds, 0))) +
+               QLatin1Char(' ') + TuningRunGate::endedText(result.spec.id, result.message);
+        if (result.stoppedByInstability)
+            text += QLatin1Char(' ') + tr("The search stopped at the first unstable candidate.");
+    }
+    setStatus(text, !result.ok());
+    refresh();
+    emit runningChanged(false);
+}
+
+std::optional<tuning::LoopGains> GainSearchView::best() const
+{
+    if (!m_result || !m_result->best)
+        return std::nullopt;
+    return m_result->candidates.at(*m_result->best).gains;
+}
+
+void GainSearchView::showComparison()
+{
+    m_compare->setRowCount(0);
+    m_overlay->setRuns({});
+    if (!m_result || m_result->candidates.isEmpty())
+        return;
+    // The steps side by side: the gains read (the first candidate) and the best.
+    const QVector<tuning::StepTrace> &traces = m_recorder->traces();
+    QVector<OverlayRun> steps;
+    if (!traces.isEmpty())
+        steps.append({tr("Gains read"), StepRunsModel::runColor(1), traces.first()});
+    if (m_result->best && *m_result->best > 0 && *m_result->best < traces.size())
+        steps.append({tr("Suggested"), StepRunsModel::runColor(2), traces.at(*m_result->best)});
+    m_overlay->setRuns(steps);
+    const CandidateScore &read = m_result->candidates.first();
+    const std::optional<CandidateScore> best =
+        m_result->best ? std::optional(m_result->candidates.at(*m_result->best)) : std::nullopt;
+    const auto row = [this](const QString &name, const QString &a, const QString &b) {
+        const int r = m_compare->rowCount();
+        m_compare->insertRow(r);
+        m_compare->setVerticalHeaderItem(r, new QTableWidgetItem(name));
+        m_compare->setItem(r, 0, new QTableWidgetItem(a));
+        m_compare->setItem(r, 1, new QTableWidgetItem(b));
+    };
+    const QString none = tr("none within the bounds");
+    row(tr("Speed Kp"), QString::number(read.gains.speed.kp),
+        best ? QString::number(best->gains.speed.kp) : none);
+    row(tr("Speed Ki"), QString::number(read.gains.speed.ki),
+        best ? QString::number(best->gains.speed.ki) : none);
+    row(tr("Rise"), riseText(read), best ? riseText(*best) : QString());
+    row(tr("Overshoot"), overshootText(read), best ? overshootText(*best) : QString());
+    row(tr("Verdict"), verdictText(read.verdict), best ? verdictText(best->verdict) : QString());
+}
+
+std::optional<QVector<qint64>> GainSearchView::suggestedValues(QString *why) const
+{
+    const auto refuse = [why](const QString &text) {
+        *why = text;
+        return std::nullopt;
+    };
+    const std::optional<tuning::LoopGains> gains = best();
+    if (!gains || !m_result->read)
+        return refuse(tr("Nothing was written: there is no suggestion yet."));
+    if (!m_host->canSendToDrive() || m_host->driveId() != m_searchedId || !m_host->readComplete())
+        return refuse(tr("Nothing was written: the suggestion is for drive %1, which is not "
+                         "the drive selected and read on this connection.")
+                          .arg(m_searchedId));
+    const std::optional<ParamValues> held = ParamSetSpec::known(m_host->driveValues());
+    const int kp = fieldIndex(m_host->spec(), QStringLiteral("speed_kp"));
+    const int ki = fieldIndex(m_host->spec(), QStringLiteral("speed_ki"));
+    if (!held || kp < 0 || ki < 0)
+        return refuse(tr("Nothing was written: the drive's gains are not all known."));
+    // Only the speed Kp and Ki change, on the values the drive holds now.
+    ParamValues values = *held;
+    values[kp] = gains->speed.kp;
+    values[ki] = gains->speed.ki;
+    return values;
+}
+
+bool GainSearchView::writeBestToRam()
+{
+    QString why;
+    const std::optional<ParamValues> values = suggestedValues(&why);
+    if (!values || isRunning() || m_host->isBusy()) {
+        setStatus(values ? tr("Nothing was written: wait until the drive is idle.") : why, true);
+        return false;
+    }
+    m_host->table()->setPending(*values);
+    m_host->writeToRam(); // the Tuning view's write: sent once, read back and compared
+    m_ramWritten = true;
+    setStatus(tr("The suggested gains went to the RAM of drive %1 (PID gains shows the "
+                 "read-back). Try them with a step test or a sweep; Write to ROM keeps them.")
+                  .arg(m_searchedId));
+    refresh();
+    return true;
+}
+
+bool GainSearchView::writeBestToRom()
+{
+    QString why;
+    const std::optional<ParamValues> values = suggestedValues(&why);
+    if (!values || !m_ramWritten || isRunning() || m_host->isBusy()) {
+        setStatus(values ? tr("Nothing was written: write the suggestion to RAM first.") : why,
+                  true);
+        return false;
+    }
+    // What the drive holds must be the suggestion (read back after the RAM write).
+    if (ParamSetSpec::known(m_host->driveValues()) != values) {
+        setStatus(tr("Nothing was written: the drive does not hold the suggested gains in RAM "
+                     "(read back). Write to RAM again first."),
+                  true);
+        return false;
+    }
+    m_host->table()->setPending(*values);
+    m_host->writeToRom(); // asks first (the Tuning view's ROM confirmation); declining sends none
+    setStatus(m_host->statusText());
+    return true;
+}
+
+void GainSearchView::refresh()
+{
+    const bool running = isRunning();
+    m_run->setText(running ? tr("Stop (Esc)") : tr("Search gains"));
+    m_run->setToolTip(running ? tr("Stop at once: Motor Off, and the gains read back to RAM.")
+                              : tr("Search the speed-loop gains of the selected drive (asks "
+                                   "first)."));
+    m_run->setEnabled(running || (m_host->canSendToDrive() && m_host->readComplete()));
+    QString why;
+    const bool suggestion = !running && suggestedValues(&why).has_value();
+    m_writeRam->setEnabled(suggestion);
+    m_writeRom->setEnabled(suggestion && m_ramWritten);
+    for (QWidget *w : {static_cast<QWidget *>(m_overshoot), static_cast<QWidget *>(m_from),
+                       static_cast<QWidget *>(m_to), static_cast<QWidget *>(m_maxCandidates)})
+        w->setEnabled(!running);
+    if (running)
+        return;
+    const std::optional<TuningRunDrive> drive = TuningRunGate::check(*m_host, nullptr);
+    m_travel->setText(drive ? searchTravel(*drive, spec()) : QString());
+}
+
+void GainSearchView::setStatus(const QString &text, bool error)
+{
+    m_status->setText(text);
+    m_status->setStyleSheet(
+        error ? StatusColors::textStyle(StatusColors::Role::Error, StatusColors::current())
+              : QString());
+}
+
+QString GainSearchView::statusText() const
+{
+    return m_status->text();
+}
+
+} // namespace lk::ui

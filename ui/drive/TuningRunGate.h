@@ -1,0 +1,57 @@
+#pragma once
+
+#include <protocol/Series.h>
+#include <safety/SoftLimits.h>
+#include <tuning/StepTestRunner.h>
+
+#include <QtCore/QCoreApplication>
+#include <QtCore/QPointer>
+#include <QtCore/QString>
+
+#include <optional>
+
+class QWidget;
+
+namespace lk::bus {
+class BusSession;
+}
+
+namespace lk::ui {
+
+class TuningView;
+
+/// The drive a frequency sweep or a gain search may run on, as the Tuning view has it.
+struct TuningRunDrive {
+    QPointer<bus::BusSession> session;
+    int id = 0;
+    std::optional<protocol::Series> series;
+    QString model;
+    double gearRatio = 1;
+    safety::SoftLimits limits;
+};
+
+/// What a frequency sweep and a gain search check before they start, alike: a drive that can
+/// be sent to, its gains read completely on this connection (the Tuning view's read), the soft
+/// limits in force (the Control view's) without an angle window (both turn the axis for as long
+/// as they run), and the user's word that the axis is free to turn that far. Each refusal says
+/// why and that nothing was sent.
+class TuningRunGate {
+    Q_DECLARE_TR_FUNCTIONS(lk::ui::TuningRunGate)
+public:
+    /// The drive, or nullopt with `why` (a sentence that says nothing was sent).
+    static std::optional<TuningRunDrive> check(const TuningView &host, QString *why);
+    /// How far the axis turns: between `minDps` and `maxDps` for about `seconds`.
+    static QString travelText(const TuningRunDrive &drive, double minDps, double maxDps,
+                              double seconds);
+    /// Asks whether the axis is free to turn as travelText() says; `key` names the question.
+    static bool askFreeToTurn(QWidget *parent, const TuningRunDrive &drive, const QString &key,
+                              const QString &what, const QString &travel);
+    /// How a sweep or search that did not finish ended, and what the drive was left doing:
+    /// `message` is the runner's account (English), read for the two facts that matter.
+    static QString failureText(tuning::StepTestFailure failure, int id, const QString &message);
+    /// What the drive does after a sweep or search that finished: back at the speed read
+    /// before it (`message`, the runner's English account, says which).
+    static QString endedText(int id, const QString &message);
+};
+
+} // namespace lk::ui
