@@ -77,9 +77,10 @@ void RecordEncoder::appendData(const RecordEvent &event)
     protocol::StreamParser &frames = event.kind == RecordEvent::Kind::Tx ? m_txFrames : m_rxFrames;
     bool ended = false; // a frame or a fault ended inside this chunk
     frames.feed(event.bytes, [&ended](const protocol::ParseEvent &) { ended = true; });
-    // At most a frame's length: a run of bytes that never form a frame (no event until 4 KiB)
-    // stays in records of its own chunks, so a block and the black box's ring stay bounded.
+    // Only a frame's start and what continues it, at most a frame's length: bytes that form
+    // no frame (garbage, a stream joined mid-frame) stay in records of their own chunks.
     const bool continues = m_data && m_data->kind == event.kind && m_data->insideFrame &&
+                           m_data->bytes.startsWith(char(protocol::kFrameHead)) &&
                            event.timeNs >= m_data->timeNs &&
                            event.timeNs - m_data->timeNs <= kMergeGapNs &&
                            m_data->bytes.size() + event.bytes.size() <= protocol::kMaxFrameSize;

@@ -14,12 +14,12 @@ namespace lk::recording {
 /// block; takeBlock() closes it (sync, length, base time, CRC-32) for the file. Used by the
 /// writer thread and by the black box's save; it does no I/O itself.
 ///
-/// Chunks of one direction that come within kMergeGapNs of each other, all but the last
-/// ending inside a frame (a reply an adapter cut in two), no longer together than a frame can
-/// be, become one data record with the last chunk's time: when its frames were complete, which is
-/// the time a frame is stamped with live and on replay. So no frame's time changes, and the file
-/// stays version 1 (the layout is the same; a chunk boundary inside a frame is all that is not
-/// kept).
+/// Chunks of one direction that come within kMergeGapNs of each other, the first starting a
+/// frame and all but the last ending inside it (a reply an adapter cut in two), no longer
+/// together than a frame can be, become one data record with the last chunk's time: when its frames
+/// were complete, which is the time a frame is stamped with live and on replay. So no frame's time
+/// changes, and the file stays version 1 (the layout is the same; a chunk boundary inside a frame
+/// is all that is not kept).
 class RecordEncoder {
 public:
     /// The longest gap between two chunks of one frame that are merged: an FTDI adapter's
