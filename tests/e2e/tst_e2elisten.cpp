@@ -293,8 +293,8 @@ void tst_E2eListen::listenMatchesTheControllersLog()
     qInfo("%lld rows matched (log lines %d..%d: %lld answered, %lld not, %lld speed commands); "
           "lkctl listen: replies %lld, paired %lld, without their request %lld, unanswered or "
           "broken %lld, ambiguous %lld",
-          qint64(got.size()), first + 1, last + 1, answered, unanswered, commanded, replies,
-          paired, orphans, notAnswered, ambiguous);
+          qint64(got.size()), first + 1, last + 1, answered, unanswered, commanded, replies, paired,
+          orphans, notAnswered, ambiguous);
     QVERIFY2(replies >= answered && replies <= answered + 12, r.err.constData());
     QVERIFY2(orphans <= 1 && paired + orphans == replies, r.err.constData());
     QVERIFY2(notAnswered >= unanswered && notAnswered <= unanswered + 12, r.err.constData());
