@@ -295,9 +295,11 @@ void tst_E2eListen::listenMatchesTheControllersLog()
           "broken %lld, ambiguous %lld",
           qint64(got.size()), first + 1, last + 1, answered, unanswered, commanded, replies, paired,
           orphans, notAnswered, ambiguous);
-    QVERIFY2(replies >= answered && replies <= answered + 12, r.err.constData());
+    // Its counts also cover what passed after its last row was printed (the final statistics
+    // come after the rows stop), so they may be larger, never smaller.
+    QVERIFY2(replies >= answered, r.err.constData());
     QVERIFY2(orphans <= 1 && paired + orphans == replies, r.err.constData());
-    QVERIFY2(notAnswered >= unanswered && notAnswered <= unanswered + 12, r.err.constData());
+    QVERIFY2(notAnswered >= unanswered, r.err.constData());
     // The controller sends no echo command (reads, speed and incremental moves): an echo frame
     // counted ambiguous here would be a guess gone wrong the other way.
     QCOMPARE(ambiguous, qint64(0));
