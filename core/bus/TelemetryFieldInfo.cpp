@@ -56,6 +56,18 @@ const QVector<TelemetryFieldInfo> &TelemetryFieldInfo::all()
         {F::CommandedAngle, "commanded_angle_deg", "°", Q::Angle, 2, 2, false,
          QT_TRANSLATE_NOOP("lk::bus::TelemetryFieldInfo", "Commanded angle"),
          &S::commandedAngleDeg},
+        {F::CommandedSingleTurn, "commanded_single_turn_deg", "°", Q::Angle, 2, 2, false,
+         QT_TRANSLATE_NOOP("lk::bus::TelemetryFieldInfo", "Commanded single-turn angle"),
+         &S::commandedSingleTurnDeg},
+        {F::CommandedDirection, "commanded_direction", "0 clockwise, 1 counter-clockwise", Q::State,
+         0, 0, false, QT_TRANSLATE_NOOP("lk::bus::TelemetryFieldInfo", "Commanded direction"),
+         &S::commandedDirection},
+        {F::CommandedIncrement, "commanded_increment_deg", "°", Q::Angle, 2, 2, false,
+         QT_TRANSLATE_NOOP("lk::bus::TelemetryFieldInfo", "Commanded increment"),
+         &S::commandedIncrementDeg},
+        {F::CommandedMaxSpeed, "commanded_max_speed_dps", "°/s", Q::Speed, 2, 2, false,
+         QT_TRANSLATE_NOOP("lk::bus::TelemetryFieldInfo", "Commanded speed limit"),
+         &S::commandedMaxSpeedDps},
     };
     return kRows;
 }

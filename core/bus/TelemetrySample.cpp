@@ -66,6 +66,15 @@ void fill(TelemetrySample &s, const protocol::EncoderReading &v)
 }
 
 template <typename T> void fill(TelemetrySample &, const T &) {} // no telemetry in it
+
+/// The speed limit of a position command (0xA4, 0xA6, 0xA8), when it carries one.
+void setMaxSpeed(TelemetrySample &s, std::optional<quint32> maxSpeedRaw)
+{
+    if (!maxSpeedRaw)
+        return;
+    s.commandedMaxSpeedDps = static_cast<double>(*maxSpeedRaw) * protocol::kCentiUnits;
+    s.fields |= TelemetryField::CommandedMaxSpeed;
+}
 } // namespace
 
 std::optional<TelemetrySample> TelemetrySample::fromReply(const protocol::Reply &reply, double time)
@@ -96,6 +105,16 @@ std::optional<TelemetrySample> TelemetrySample::fromRequest(const protocol::Requ
     } else if (const auto *v = std::get_if<protocol::MultiPositionCommand>(&request.payload)) {
         s.commandedAngleDeg = static_cast<double>(v->angleRaw) * protocol::kCentiUnits;
         s.fields = TelemetryField::CommandedAngle;
+        setMaxSpeed(s, v->maxSpeedRaw);
+    } else if (const auto *v = std::get_if<protocol::SinglePositionCommand>(&request.payload)) {
+        s.commandedSingleTurnDeg = static_cast<double>(v->angleRaw) * protocol::kCentiUnits;
+        s.commandedDirection = static_cast<int>(v->direction);
+        s.fields = TelemetryField::CommandedSingleTurn | TelemetryField::CommandedDirection;
+        setMaxSpeed(s, v->maxSpeedRaw);
+    } else if (const auto *v = std::get_if<protocol::IncrementPositionCommand>(&request.payload)) {
+        s.commandedIncrementDeg = static_cast<double>(v->angleRaw) * protocol::kCentiUnits;
+        s.fields = TelemetryField::CommandedIncrement;
+        setMaxSpeed(s, v->maxSpeedRaw);
     } else if (const auto *v = std::get_if<protocol::OpenLoopCommand>(&request.payload)) {
         s.commandedPower = v->power;
         s.fields = TelemetryField::CommandedPower;
@@ -115,7 +134,9 @@ std::optional<TelemetrySample> TelemetrySample::fromRequest(const protocol::Requ
 TelemetryFields TelemetrySample::commandedFields()
 {
     return TelemetryField::CommandedIq | TelemetryField::CommandedPower |
-           TelemetryField::CommandedSpeed | TelemetryField::CommandedAngle;
+           TelemetryField::CommandedSpeed | TelemetryField::CommandedAngle |
+           TelemetryField::CommandedSingleTurn | TelemetryField::CommandedDirection |
+           TelemetryField::CommandedIncrement | TelemetryField::CommandedMaxSpeed;
 }
 
 TelemetrySample TelemetrySample::fromState1(int id, const protocol::State1 &state, double time)

@@ -16,7 +16,7 @@ Q_NAMESPACE
 /// Which fields of a TelemetrySample carry a value. Each field has its rows in
 /// TelemetryFieldInfo::all() (key, unit, label, ...): a new field takes the next bit, raises
 /// kTelemetryFieldCount and adds its row there, and its decoder fills it in TelemetrySample.cpp.
-enum class TelemetryField : quint16 {
+enum class TelemetryField : quint32 {
     Temperature = 0x0001,
     IqA = 0x0002,   ///< MF/MG/MH torque current
     Power = 0x0004, ///< MS: relative power -1000..1000 instead of iq
@@ -31,14 +31,19 @@ enum class TelemetryField : quint16 {
     MotorOn = 0x0800,    ///< V2.35 0x9A/0x9B only: the motor state byte (on/off)
     // What another master commanded, from its requests (a listen-only session): beside the
     // drive's replies, commanded against actual.
-    CommandedIq = 0x1000,    ///< 0xA1's iq, at the drive's scale (only when that is known)
-    CommandedPower = 0x2000, ///< 0xA0's open-loop power (MS)
-    CommandedSpeed = 0x4000, ///< 0xA2's speed
-    CommandedAngle = 0x8000, ///< 0xA3/0xA4's multi-turn target
+    CommandedIq = 0x1000,          ///< 0xA1's iq, at the drive's scale (only when that is known)
+    CommandedPower = 0x2000,       ///< 0xA0's open-loop power (MS)
+    CommandedSpeed = 0x4000,       ///< 0xA2's speed
+    CommandedAngle = 0x8000,       ///< 0xA3/0xA4's multi-turn target
+    CommandedSingleTurn = 0x10000, ///< 0xA5/0xA6's single-turn target
+    CommandedDirection = 0x20000,  ///< 0xA5/0xA6's way round: 0 clockwise, 1 counter-clockwise
+    CommandedIncrement = 0x40000,  ///< 0xA7/0xA8's increment (the target is relative to where
+                                   ///< the drive is, which the listener does not know exactly)
+    CommandedMaxSpeed = 0x80000,   ///< 0xA4/0xA6/0xA8's speed limit of the move
 };
 Q_ENUM_NS(TelemetryField)
 /// The bits TelemetryField uses: 1 << 0 .. 1 << (kTelemetryFieldCount - 1).
-inline constexpr int kTelemetryFieldCount = 16;
+inline constexpr int kTelemetryFieldCount = 20;
 Q_DECLARE_FLAGS(TelemetryFields, TelemetryField)
 Q_DECLARE_OPERATORS_FOR_FLAGS(TelemetryFields)
 
@@ -68,7 +73,11 @@ struct TelemetrySample {
     double commandedIqA = 0;
     int commandedPower = 0;
     double commandedSpeedDps = 0;
-    double commandedAngleDeg = 0; ///< rotor degrees, as multiTurnDeg
+    double commandedAngleDeg = 0;      ///< rotor degrees, as multiTurnDeg
+    double commandedSingleTurnDeg = 0; ///< as singleTurnDeg
+    int commandedDirection = 0;        ///< the wire's byte: 0 clockwise, 1 counter-clockwise
+    double commandedIncrementDeg = 0;  ///< rotor degrees, signed
+    double commandedMaxSpeedDps = 0;
     /// A 0x90 reply in full: its raw position and offset are no telemetry columns (only
     /// `encoder` is), but the Encoder view shows them from the polls it adds.
     std::optional<protocol::EncoderReading> encoderReading;
@@ -79,7 +88,7 @@ struct TelemetrySample {
 
     /// The sample a reply carries, or nullopt for replies without telemetry (model, PID, ack).
     static std::optional<TelemetrySample> fromReply(const protocol::Reply &reply, double time);
-    /// The values another master's request commands (0xA0..0xA4), as a sample of its drive
+    /// The values another master's request commands (0xA0..0xA8), as a sample of its drive
     /// at `time`; nullopt for a request that commands none of them. A torque is given only
     /// when its scale is known: V2.3, or V2.35 with the drive's series known.
     static std::optional<TelemetrySample> fromRequest(const protocol::Request &request,

@@ -94,6 +94,18 @@ QVector<RecordEvent> BlackBox::events(ContextSnapshot *contextBefore) const
     return out;
 }
 
+void BlackBox::setWindowNs(qint64 windowNs)
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_limits.windowNs = windowNs;
+}
+
+qint64 BlackBox::windowNs() const
+{
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_limits.windowNs;
+}
+
 qsizetype BlackBox::bytes() const
 {
     std::lock_guard<std::mutex> lock(m_mutex);

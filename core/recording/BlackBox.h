@@ -39,6 +39,9 @@ public:
     /// The ring as records, oldest first (for the Traffic view), and the decode context in
     /// force before the first of them.
     QVector<RecordEvent> events(ContextSnapshot *contextBefore = nullptr) const;
+    /// How much the ring keeps from now on (the oldest blocks go with the next record).
+    void setWindowNs(qint64 windowNs);
+    qint64 windowNs() const;
     /// Bytes the ring holds (encoded) and the time it spans.
     qsizetype bytes() const;
     qint64 spanNs() const;

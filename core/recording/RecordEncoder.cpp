@@ -4,6 +4,8 @@
 #include "RecordTags.h"
 #include "Varint.h"
 
+#include <protocol/Checksum.h>
+
 namespace lk::recording {
 
 namespace {
@@ -56,6 +58,12 @@ qint64 RecordEncoder::deltaFor(qint64 timeNs)
     return delta;
 }
 
+qsizetype RecordEncoder::pendingBytes() const
+{
+    // A pending chunk costs its bytes and a few of tag, length and delta.
+    return m_payload.size() + (m_data ? m_data->bytes.size() + 4 : 0);
+}
+
 void RecordEncoder::appendMeta(quint8 type, qint64 delta, const QByteArray &payload)
 {
     m_payload.append(char(tags::kMeta | type));
@@ -64,26 +72,67 @@ void RecordEncoder::appendMeta(quint8 type, qint64 delta, const QByteArray &payl
     m_payload.append(payload);
 }
 
+void RecordEncoder::appendData(const RecordEvent &event)
+{
+    protocol::StreamParser &frames = event.kind == RecordEvent::Kind::Tx ? m_txFrames : m_rxFrames;
+    bool ended = false; // a frame or a fault ended inside this chunk
+    frames.feed(event.bytes, [&ended](const protocol::ParseEvent &) { ended = true; });
+    // Only a frame's start and what continues it, at most a frame's length: bytes that form
+    // no frame (garbage, a stream joined mid-frame) stay in records of their own chunks.
+    const bool continues = m_data && m_data->kind == event.kind && m_data->insideFrame &&
+                           m_data->bytes.startsWith(char(protocol::kFrameHead)) &&
+                           event.timeNs >= m_data->timeNs &&
+                           event.timeNs - m_data->timeNs <= kMergeGapNs &&
+                           m_data->bytes.size() + event.bytes.size() <= protocol::kMaxFrameSize;
+    if (continues) {
+        m_data->bytes += event.bytes;
+        m_data->timeNs = event.timeNs;
+        m_data->insideFrame = !ended;
+        return;
+    }
+    writePendingData();
+    m_data = PendingData{event.kind, event.timeNs, event.bytes, !ended};
+}
+
+void RecordEncoder::writePendingData()
+{
+    if (!m_data)
+        return;
+    const PendingData data = std::move(*m_data);
+    m_data.reset();
+    const qint64 delta = deltaFor(data.timeNs);
+    const quint8 dir = data.kind == RecordEvent::Kind::Tx ? tags::kTxBit : 0;
+    const qsizetype n = data.bytes.size();
+    if (n >= 1 && n <= tags::kMaxInlineLength) {
+        m_payload.append(char(dir | quint8(n)));
+    } else {
+        m_payload.append(char(dir));
+        varint::put(m_payload, quint64(n));
+    }
+    varint::put(m_payload, quint64(delta));
+    m_payload.append(data.bytes);
+}
+
 void RecordEncoder::append(const RecordEvent &event)
 {
+    if (event.kind == RecordEvent::Kind::Rx || event.kind == RecordEvent::Kind::Tx) {
+        appendData(event);
+        return;
+    }
+    writePendingData();
     const qint64 delta = deltaFor(event.timeNs);
     QByteArray payload;
     switch (event.kind) {
     case RecordEvent::Kind::Rx:
-    case RecordEvent::Kind::Tx: {
-        const quint8 dir = event.kind == RecordEvent::Kind::Tx ? tags::kTxBit : 0;
-        const qsizetype n = event.bytes.size();
-        if (n >= 1 && n <= tags::kMaxInlineLength) {
-            m_payload.append(char(dir | quint8(n)));
-        } else {
-            m_payload.append(char(dir));
-            varint::put(m_payload, quint64(n));
-        }
-        varint::put(m_payload, quint64(delta));
-        m_payload.append(event.bytes);
-        return;
-    }
+    case RecordEvent::Kind::Tx:
+        return; // above
     case RecordEvent::Kind::Link:
+        // A link that opens, closes or changes baud starts new streams, for a reader too
+        // (RecordedFrameParser); an error leaves them.
+        if (event.link != LinkEventKind::Error) {
+            m_rxFrames.reset();
+            m_txFrames.reset();
+        }
         payload.append(char(quint8(event.link)));
         varint::putFixed<quint32>(payload, quint32(event.baud));
         putString(payload, event.text);
@@ -103,6 +152,7 @@ void RecordEncoder::append(const RecordEvent &event)
 
 QByteArray RecordEncoder::takeBlock()
 {
+    writePendingData();
     if (m_payload.isEmpty())
         return {};
     QByteArray block(kBlockSync, sizeof kBlockSync);

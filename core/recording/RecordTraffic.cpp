@@ -36,35 +36,44 @@ QString noteOf(const RecordEvent &r)
 
 } // namespace
 
+bus::TrafficEvent trafficEventOf(const RecordedFrame &f)
+{
+    bus::TrafficEvent e;
+    e.time = double(f.timeNs) * 1e-9;
+    e.bytes = f.event.bytes;
+    e.id = f.event.frame.id;
+    e.command = f.event.frame.command;
+    if (f.event.isFrame) {
+        e.kind = f.transmitted ? bus::TrafficEvent::Kind::Sent : bus::TrafficEvent::Kind::Frame;
+        e.frame = f.event.frame;
+        e.context = f.context;
+    } else {
+        e.kind = bus::TrafficEvent::Kind::Fault;
+        e.error = f.event.error;
+    }
+    return e;
+}
+
+std::optional<bus::TrafficEvent> noteEventOf(const RecordEvent &r)
+{
+    if (r.kind != RecordEvent::Kind::Link && r.kind != RecordEvent::Kind::Dropped)
+        return std::nullopt;
+    bus::TrafficEvent e;
+    e.kind = bus::TrafficEvent::Kind::Note;
+    e.time = double(r.timeNs) * 1e-9;
+    e.text = noteOf(r);
+    return e;
+}
+
 bus::TrafficBatch trafficEventsOf(const QVector<RecordEvent> &records, ContextSnapshot context)
 {
     bus::TrafficBatch out;
     RecordedFrameParser parser(std::move(context));
-    const auto sink = [&out](const RecordedFrame &f) {
-        bus::TrafficEvent e;
-        e.time = double(f.timeNs) * 1e-9;
-        e.bytes = f.event.bytes;
-        e.id = f.event.frame.id;
-        e.command = f.event.frame.command;
-        if (f.event.isFrame) {
-            e.kind = f.transmitted ? bus::TrafficEvent::Kind::Sent : bus::TrafficEvent::Kind::Frame;
-            e.frame = f.event.frame;
-            e.context = f.context;
-        } else {
-            e.kind = bus::TrafficEvent::Kind::Fault;
-            e.error = f.event.error;
-        }
-        out.append(std::move(e));
-    };
+    const auto sink = [&out](const RecordedFrame &f) { out.append(trafficEventOf(f)); };
     for (const RecordEvent &r : records) {
         parser.feed(r, sink);
-        if (r.kind == RecordEvent::Kind::Link || r.kind == RecordEvent::Kind::Dropped) {
-            bus::TrafficEvent e;
-            e.kind = bus::TrafficEvent::Kind::Note;
-            e.time = double(r.timeNs) * 1e-9;
-            e.text = noteOf(r);
-            out.append(std::move(e));
-        }
+        if (std::optional<bus::TrafficEvent> note = noteEventOf(r))
+            out.append(std::move(*note));
     }
     parser.finish(sink);
     return out;

@@ -81,6 +81,8 @@ private slots:
     void initTestCase() { registerBusMetaTypes(); }
     void observedRepliesAreTheSamplesAPollGives();
     void commandedValuesBesideTheReplies();
+    void positionCommands_data();
+    void positionCommands();
     void drivesAppearFromWhatTheyAnswer();
     void statisticsOfTheOtherMaster();
 };
@@ -137,6 +139,87 @@ void tst_ListenMonitor::commandedValuesBesideTheReplies()
     QCOMPARE(got.at(4).fields, TelemetryFields(TelemetryField::CommandedIq));
     QCOMPARE(got.at(4).commandedIqA, -500 * 32.0 / 2000.0);
     QVERIFY(!TelemetrySample::commandedFields().testFlag(TelemetryField::Speed));
+}
+
+namespace {
+/// The request of a position command row: the payload its command takes.
+protocol::Request positionRequest(Command command, int angleRaw, int direction, int maxSpeedRaw)
+{
+    protocol::Request r = plainRequest(command, 1);
+    const std::optional<quint32> limit =
+        maxSpeedRaw < 0 ? std::nullopt : std::optional<quint32>(quint32(maxSpeedRaw));
+    switch (command) {
+    case Command::MultiPosition:
+    case Command::MultiPositionLimited:
+        r.payload = protocol::MultiPositionCommand{angleRaw, limit};
+        break;
+    case Command::SinglePosition:
+    case Command::SinglePositionLimited:
+        r.payload = protocol::SinglePositionCommand{protocol::SpinDirection(direction),
+                                                    quint32(angleRaw), limit};
+        break;
+    default:
+        r.payload = protocol::IncrementPositionCommand{angleRaw, limit};
+        break;
+    }
+    return r;
+}
+} // namespace
+
+void tst_ListenMonitor::positionCommands_data()
+{
+    QTest::addColumn<int>("command");
+    QTest::addColumn<int>("angleRaw");    // 0.01 deg
+    QTest::addColumn<int>("direction");   // 0 clockwise, 1 counter-clockwise (0xA5/0xA6)
+    QTest::addColumn<int>("maxSpeedRaw"); // 0.01 dps; -1: the command has none
+    QTest::addColumn<int>("fields");      // TelemetryFields the sample carries
+    const auto bits = [](TelemetryFields f) { return int(f.toInt()); };
+    using F = TelemetryField;
+    QTest::newRow("0xA4 multi-turn, limited")
+        << 0xA4 << -36000 << 0 << 12345 << bits(F::CommandedAngle | F::CommandedMaxSpeed);
+    QTest::newRow("0xA5 single-turn, counter-clockwise")
+        << 0xA5 << 27050 << 1 << -1 << bits(F::CommandedSingleTurn | F::CommandedDirection);
+    QTest::newRow("0xA6 single-turn, clockwise, limited")
+        << 0xA6 << 35999 << 0 << 36000
+        << bits(F::CommandedSingleTurn | F::CommandedDirection | F::CommandedMaxSpeed);
+    QTest::newRow("0xA7 increment, negative")
+        << 0xA7 << -9050 << 0 << -1 << bits(F::CommandedIncrement);
+    QTest::newRow("0xA8 increment, limited")
+        << 0xA8 << 18000 << 0 << 50000 << bits(F::CommandedIncrement | F::CommandedMaxSpeed);
+}
+
+void tst_ListenMonitor::positionCommands()
+{
+    // What a position command asks is its own column: a single-turn target is no multi-turn
+    // angle, and an increment is no target at all (the listener does not know where the
+    // drive starts from).
+    QFETCH(int, command);
+    QFETCH(int, angleRaw);
+    QFETCH(int, direction);
+    QFETCH(int, maxSpeedRaw);
+    QFETCH(int, fields);
+    Tap tap;
+    tap.transaction(positionRequest(Command(command), angleRaw, direction, maxSpeedRaw));
+    tap.settle();
+    const QVector<TelemetrySample> got = tap.of(1);
+    QCOMPARE(got.size(), 2); // the command, then the drive's state2 reply
+    const TelemetrySample &c = got.at(0);
+    QCOMPARE(int(c.fields.toInt()), fields);
+    QCOMPARE(int(c.source), command);
+    QVERIFY(TelemetrySample::commandedFields().testFlags(c.fields));
+    const double angleDeg = angleRaw / 100.0;
+    if (c.has(TelemetryField::CommandedAngle))
+        QCOMPARE(c.commandedAngleDeg, angleDeg);
+    if (c.has(TelemetryField::CommandedSingleTurn))
+        QCOMPARE(c.commandedSingleTurnDeg, angleDeg);
+    if (c.has(TelemetryField::CommandedIncrement))
+        QCOMPARE(c.commandedIncrementDeg, angleDeg);
+    if (c.has(TelemetryField::CommandedDirection))
+        QCOMPARE(c.commandedDirection, direction);
+    if (c.has(TelemetryField::CommandedMaxSpeed))
+        QCOMPARE(c.commandedMaxSpeedDps, maxSpeedRaw / 100.0);
+    QVERIFY(got.at(1).has(TelemetryField::Speed));
+    QCOMPARE(tap.rig->log->writtenCopy().size(), 0);
 }
 
 void tst_ListenMonitor::drivesAppearFromWhatTheyAnswer()

@@ -136,6 +136,12 @@ void tst_E2eEstop::escapeRacingAScanStopsEveryDrive()
         QTest::qWait(delayMs);
     QTest::keyClick(m_window->views(), Qt::Key_Escape);
     QTRY_COMPARE_WITH_TIMEOUT(reports.count(), 1, kWaitMs);
+    // The stop saved the black box into the test's own folder, never the user's recordings.
+    const auto saved = [this] {
+        return m_window->banner()->entryText(ui::RecordingController::entryKey());
+    };
+    QTRY_VERIFY2_WITH_TIMEOUT(saved().contains(e2e::blackBoxFolder()), qPrintable(saved()),
+                              kWaitMs);
     QTRY_COMPARE_WITH_TIMEOUT(scans.count(), 1, kWaitMs);
     quietBus();
 

@@ -165,7 +165,9 @@ void tst_LkctlListen::csvIsMonitorsLongLayout()
     QCOMPARE(lines.size(), 4);
     QVERIFY2(lines.at(0).startsWith("time_s,id,temperature_c,"), lines.at(0).constData());
     QVERIFY2(lines.at(0).endsWith(
-                 ",commanded_iq_a,commanded_power,commanded_speed_dps,commanded_angle_deg"),
+                 ",commanded_iq_a,commanded_power,commanded_speed_dps,commanded_angle_deg,"
+                 "commanded_single_turn_deg,commanded_direction,commanded_increment_deg,"
+                 "commanded_max_speed_dps"),
              lines.at(0).constData());
     const QList<QByteArray> header = lines.at(0).split(',');
     const QList<QByteArray> first = lines.at(1).split(',');

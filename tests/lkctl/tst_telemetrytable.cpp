@@ -164,7 +164,7 @@ void tst_TelemetryTable::monitorHeaderNamesEveryKey()
         }
         QVERIFY2(keys.contains(QLatin1String(row.key)), row.key);
     }
-    QCOMPARE(commanded, 4);
+    QCOMPARE(commanded, 8);
     QCOMPARE(keys.size(), TelemetryFieldInfo::all().size() - commanded);
 }
 

@@ -155,6 +155,45 @@ private slots:
         QCOMPARE(int(traffic[4].kind), int(TrafficEvent::Kind::Note));
         QVERIFY(traffic[4].text.contains(QStringLiteral("/dev/ttyUSB0")));
     }
+
+    void oneRecordAtATimeGivesTheSameRows()
+    {
+        // The Traffic view converts the ring as records come (trafficEventOf, noteEventOf on
+        // a parser it keeps): the rows a whole recording gives at once (trafficEventsOf).
+        BlackBox box(testHeader());
+        box.append(RecordEvent::data(RecordEvent::Kind::Tx, 1000, kRequest));
+        box.append(RecordEvent::data(RecordEvent::Kind::Rx, 2000, "\x55" + kReply.left(6)));
+        box.append(RecordEvent::data(RecordEvent::Kind::Rx, 3000, kReply.mid(6)));
+        RecordEvent reopened;
+        reopened.kind = RecordEvent::Kind::Link;
+        reopened.timeNs = 4000;
+        reopened.link = LinkEventKind::BaudChanged;
+        reopened.baud = 1000000;
+        box.append(reopened);
+        box.append(RecordEvent::data(RecordEvent::Kind::Rx, 5000, kReply));
+        ContextSnapshot before;
+        const auto records = box.events(&before);
+        const auto whole = trafficEventsOf(records, before);
+        lk::bus::TrafficBatch byRecord;
+        RecordedFrameParser parser(before);
+        const auto sink = [&byRecord](const RecordedFrame &f) {
+            byRecord.append(trafficEventOf(f));
+        };
+        for (const RecordEvent &r : records) {
+            parser.feed(r, sink);
+            if (const auto note = noteEventOf(r))
+                byRecord.append(*note);
+        }
+        QVERIFY(!noteEventOf(records.first()));
+        QCOMPARE(byRecord.size(), whole.size());
+        QCOMPARE(whole.size(), 5); // sent, garbage, frame, note, frame
+        for (int i = 0; i < whole.size(); ++i) {
+            QCOMPARE(int(byRecord[i].kind), int(whole[i].kind));
+            QCOMPARE(byRecord[i].time, whole[i].time);
+            QCOMPARE(byRecord[i].bytes, whole[i].bytes);
+            QCOMPARE(byRecord[i].text, whole[i].text);
+        }
+    }
 };
 
 QTEST_APPLESS_MAIN(tst_BlackBox)

@@ -4,9 +4,15 @@
 #include "RecordingTestUtil.h"
 
 #include <recording/Crc32.h>
+#include <recording/RecordTags.h>
+#include <recording/RecordedFrameParser.h>
+#include <recording/ReplayTransport.h>
+#include <recording/Varint.h>
 
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
+
+#include <tuple>
 
 using namespace lk::recording;
 namespace protocol = lk::protocol;
@@ -80,6 +86,67 @@ QByteArray sampleFile(QVector<qsizetype> *blockEnds = nullptr)
         }
     }
     return file;
+}
+
+/// The records `events` read back as, through an encoder's block.
+QVector<RecordEvent> roundTrip(const QVector<RecordEvent> &events)
+{
+    RecordEncoder enc;
+    for (const RecordEvent &e : events)
+        enc.append(e);
+    RecordingReader reader;
+    QVector<RecordEvent> out;
+    if (!reader.openBytes(RecordEncoder::encodeHeader(testHeader()) + enc.takeBlock()))
+        return out;
+    RecordEvent e;
+    while (reader.next(&e))
+        out.append(e);
+    return out;
+}
+
+/// Every frame and fault of `events` with its time and direction, as a reader decodes them.
+QStringList framesOf(const QVector<RecordEvent> &events)
+{
+    RecordedFrameParser parser(testHeader().context);
+    QStringList out;
+    const auto sink = [&out](const RecordedFrame &f) {
+        out.append(QStringLiteral("%1 %2 %3 %4")
+                       .arg(f.timeNs)
+                       .arg(f.transmitted ? QLatin1String("tx") : QLatin1String("rx"))
+                       .arg(f.event.isFrame ? QLatin1String("frame") : QLatin1String("fault"))
+                       .arg(QString::fromLatin1(f.event.bytes.toHex())));
+    };
+    for (const RecordEvent &e : events)
+        parser.feed(e, sink);
+    parser.finish(sink);
+    return out;
+}
+
+const QByteArray kRequest = QByteArray::fromHex("3e9c0100db");
+const QByteArray kReply = QByteArray::fromHex("3e9c0107e21ff40168010030ad");
+
+RecordEvent rx(qint64 timeNs, const QByteArray &bytes)
+{
+    return RecordEvent::data(RecordEvent::Kind::Rx, timeNs, bytes);
+}
+
+/// A version 1 block written by hand, one data record per chunk as the encoder wrote them
+/// before it merged split frames: (tx?, delta, bytes) each.
+QByteArray handWrittenBlock(qint64 baseNs, const QVector<std::tuple<bool, qint64, QByteArray>> &rs)
+{
+    QByteArray payload;
+    for (const auto &[tx, delta, bytes] : rs) {
+        payload.append(char((tx ? tags::kTxBit : 0) | quint8(bytes.size())));
+        varint::put(payload, quint64(delta));
+        payload.append(bytes);
+    }
+    QByteArray block(kBlockSync, sizeof kBlockSync);
+    varint::putFixed<quint32>(block, quint32(payload.size()));
+    varint::putFixed<qint64>(block, baseNs);
+    const quint32 crc =
+        crc32(payload.constData(), payload.size(), crc32(block.constData() + 4, 12));
+    varint::putFixed<quint32>(block, crc);
+    return block + payload;
 }
 
 } // namespace
@@ -271,9 +338,113 @@ private slots:
         QCOMPARE(int(e.kind), int(RecordEvent::Kind::Link));
     }
 
+    void splitFramesAreMerged_data()
+    {
+        QTest::addColumn<QVector<RecordEvent>>("chunks");
+        QTest::addColumn<QList<QByteArray>>("records"); // the data records read back
+        QTest::addColumn<QList<qint64>>("times");
+        const QByteArray half = kReply.left(6);
+        const QByteArray rest = kReply.mid(6);
+        QTest::newRow("a reply in two chunks")
+            << QVector<RecordEvent>{rx(1000, half), rx(61'000, rest)} << QList<QByteArray>{kReply}
+            << QList<qint64>{61'000};
+        QTest::newRow("in three") << QVector<RecordEvent>{rx(1000, kReply.left(2)),
+                                                          rx(2000, kReply.mid(2, 3)),
+                                                          rx(9000, kReply.mid(5))}
+                                  << QList<QByteArray>{kReply} << QList<qint64>{9000};
+        QTest::newRow("a frame's end and the next one's start: its own time kept")
+            << QVector<RecordEvent>{rx(1000, kRequest + half), rx(2000, rest)}
+            << QList<QByteArray>{kRequest + half, rest} << QList<qint64>{1000, 2000};
+        QTest::newRow("a gap longer than an adapter's latency timer")
+            << QVector<RecordEvent>{rx(0, half), rx(RecordEncoder::kMergeGapNs + 1, rest)}
+            << QList<QByteArray>{half, rest} << QList<qint64>{0, RecordEncoder::kMergeGapNs + 1};
+        QTest::newRow("the other direction")
+            << QVector<RecordEvent>{RecordEvent::data(RecordEvent::Kind::Tx, 0, kRequest.left(2)),
+                                    rx(1000, kRequest.mid(2))}
+            << QList<QByteArray>{kRequest.left(2), kRequest.mid(2)} << QList<qint64>{0, 1000};
+        RecordEvent closed;
+        closed.kind = RecordEvent::Kind::Link;
+        closed.link = LinkEventKind::Closed;
+        closed.timeNs = 1500;
+        QTest::newRow("a link event between")
+            << QVector<RecordEvent>{rx(1000, half), closed, rx(2000, rest)}
+            << QList<QByteArray>{half, rest} << QList<qint64>{1000, 2000};
+    }
+
+    void splitFramesAreMerged()
+    {
+        QFETCH(QVector<RecordEvent>, chunks);
+        QFETCH(QList<QByteArray>, records);
+        QFETCH(QList<qint64>, times);
+        QList<QByteArray> gotRecords;
+        QList<qint64> gotTimes;
+        for (const RecordEvent &e : roundTrip(chunks)) {
+            if (e.kind == RecordEvent::Kind::Rx || e.kind == RecordEvent::Kind::Tx) {
+                gotRecords.append(e.bytes);
+                gotTimes.append(e.timeNs);
+            }
+        }
+        QCOMPARE(gotRecords, records);
+        QCOMPARE(gotTimes, times);
+        // Whatever was merged, a reader decodes the same frames at the same times.
+        QCOMPARE(framesOf(roundTrip(chunks)), framesOf(chunks));
+    }
+
+    void everyFrameKeepsItsTimeWhereverTheChunksAreCut()
+    {
+        // A poll stream with garbage, cut at every offset of the reply in turn.
+        QVector<RecordEvent> chunks;
+        qint64 t = 0;
+        for (int cut = 0; cut <= kReply.size(); ++cut) {
+            t += 1'000'000;
+            chunks.append(RecordEvent::data(RecordEvent::Kind::Tx, t, kRequest));
+            const QByteArray reply =
+                (cut % 4 == 1 ? QByteArray("\x55\xAA") : QByteArray()) + kReply;
+            t += 200'000;
+            chunks.append(rx(t, reply.left(cut)));
+            t += 30'000 * (cut % 3);
+            chunks.append(rx(t, reply.mid(cut)));
+        }
+        chunks.removeIf([](const RecordEvent &e) { return e.bytes.isEmpty(); });
+        const QVector<RecordEvent> read = roundTrip(chunks);
+        QVERIFY(read.size() < chunks.size()); // some were merged
+        QCOMPARE(framesOf(read), framesOf(chunks));
+    }
+
+    void chunkPerRecordFilesOfVersion1StillRead()
+    {
+        // Written before split frames were merged: a reply in two records, 60 us apart.
+        const QByteArray file = RecordEncoder::encodeHeader(testHeader()) +
+                                handWrittenBlock(5000, {{true, 0, kRequest},
+                                                        {false, 180'000, kReply.left(6)},
+                                                        {false, 60'000, kReply.mid(6)}});
+        RecordingReader reader;
+        QVERIFY(reader.openBytes(file));
+        QCOMPARE(reader.header().version, quint16(1));
+        QVector<RecordEvent> got;
+        RecordEvent e;
+        while (reader.next(&e))
+            got.append(e);
+        QCOMPARE(int(reader.error().kind), int(RecordingError::Kind::None));
+        QCOMPARE(got.size(), 3);
+        QCOMPARE(got.at(1).bytes, kReply.left(6));
+        QCOMPARE(got.at(1).timeNs, qint64(185'000));
+        QCOMPARE(got.at(2).bytes, kReply.mid(6));
+        QCOMPARE(got.at(2).timeNs, qint64(245'000));
+        QCOMPARE(framesOf(got).size(), 2);
+    }
+
+    void pollTrafficCostsAtMost1_6TimesItsWireBytes_data()
+    {
+        QTest::addColumn<bool>("split");
+        QTest::newRow("one chunk per frame") << false;
+        QTest::newRow("replies in two chunks (a USB adapter)") << true;
+    }
+
     void pollTrafficCostsAtMost1_6TimesItsWireBytes()
     {
         // A typical poll: 5-byte requests and 13-byte replies, ~0.2 ms apart, in 64 KiB blocks.
+        QFETCH(bool, split);
         RecordEncoder enc;
         qsizetype wire = 0;
         qsizetype file = 0;
@@ -284,7 +455,13 @@ private slots:
             t += 1'300'000;
             enc.append(RecordEvent::data(RecordEvent::Kind::Tx, t, request));
             t += 180'000 + (i % 7) * 1000;
-            enc.append(RecordEvent::data(RecordEvent::Kind::Rx, t, reply));
+            if (split) {
+                enc.append(RecordEvent::data(RecordEvent::Kind::Rx, t, reply.left(6)));
+                t += 60'000;
+                enc.append(RecordEvent::data(RecordEvent::Kind::Rx, t, reply.mid(6)));
+            } else {
+                enc.append(RecordEvent::data(RecordEvent::Kind::Rx, t, reply));
+            }
             wire += request.size() + reply.size();
             if (enc.pendingBytes() >= 64 * 1024)
                 file += enc.takeBlock().size();

@@ -48,7 +48,7 @@ public:
         connect(m_inner.get(), &T::errorOccurred, this, &T::errorOccurred);
     }
 
-    /// The factory decorator for BusController::setFactoryDecorator.
+    /// The factory wrapper for BusController::addFactoryWrapper.
     static bus::TransportFactory wrap(bus::TransportFactory inner, std::shared_ptr<TapLine> line)
     {
         return [inner = std::move(inner), line](int baud) -> std::unique_ptr<Transport> {

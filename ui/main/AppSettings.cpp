@@ -27,6 +27,7 @@ const char kScanFirstId[] = "scan/firstId";
 const char kScanLastId[] = "scan/lastId";
 const char kScanSweepBauds[] = "scan/sweepBauds";
 const char kPollRateHz[] = "poll/rateHz";
+const char kBlackBoxMinutes[] = "recording/blackBoxMinutes";
 const char kLanguage[] = "ui/language";
 const char kCurrentView[] = "window/currentView";
 const char kWindowGeometry[] = "window/geometry";
@@ -100,6 +101,14 @@ QString chosenSeriesKey(const QString &port, int id)
         .arg(id);
 }
 
+bool validBlackBoxMinutes(const QVariant &v)
+{
+    bool ok = false;
+    const int minutes = v.toInt(&ok);
+    return ok && minutes >= AppSettings::kMinBlackBoxMinutes &&
+           minutes <= AppSettings::kMaxBlackBoxMinutes;
+}
+
 bool validVersion(const QVariant &v)
 {
     bool ok = false;
@@ -122,6 +131,7 @@ const CheckedKey kCheckedKeys[] = {
     {key::kScanLastId, validId, "1..32"},
     {key::kScanSweepBauds, validBool, "true or false"},
     {key::kPollRateHz, validRate, "0..10000"},
+    {key::kBlackBoxMinutes, validBlackBoxMinutes, "1..60 (minutes)"},
     {key::kLanguage, validLanguageValue, "a language such as zh_CN"},
 };
 
@@ -304,6 +314,20 @@ double AppSettings::pollRateHz() const
 void AppSettings::setPollRateHz(double hz)
 {
     m_settings.setValue(QLatin1String(key::kPollRateHz), qBound(0.0, hz, kMaxPollRateHz));
+}
+
+int AppSettings::blackBoxMinutes() const
+{
+    const QVariant v = m_settings.value(QLatin1String(key::kBlackBoxMinutes));
+    return validBlackBoxMinutes(v) ? v.toInt() : kDefaultBlackBoxMinutes;
+}
+
+bool AppSettings::setBlackBoxMinutes(int minutes)
+{
+    if (!validBlackBoxMinutes(minutes))
+        return false;
+    m_settings.setValue(QLatin1String(key::kBlackBoxMinutes), minutes);
+    return true;
 }
 
 QString AppSettings::language() const

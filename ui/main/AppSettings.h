@@ -71,6 +71,15 @@ public:
     double pollRateHz() const; ///< 0 = as fast as the bus allows
     void setPollRateHz(double hz);
 
+    /// How much the black box keeps (recording/blackBoxMinutes): 1..60 minutes, 10 unless
+    /// set. A value outside is damage (named in damage()) and the default is used.
+    static constexpr int kMinBlackBoxMinutes = 1;
+    static constexpr int kMaxBlackBoxMinutes = 60;
+    static constexpr int kDefaultBlackBoxMinutes = 10;
+    int blackBoxMinutes() const;
+    /// False, and nothing stored, for a value outside 1..60.
+    bool setBlackBoxMinutes(int minutes);
+
     /// The language chosen in the menu ("en", "zh_CN"); empty: follow the system locale.
     QString language() const;
     void setLanguage(const QString &language);

@@ -87,10 +87,8 @@ void BusController::connectTo(const ConnectionChoice &choice)
         s.portName = choice.port; // the baud is the session's, given to open() below
         factory = transport::SerialTransport::factory(s);
     }
-    if (m_wrapFactory)
-        factory = m_wrapFactory(std::move(factory), choice);
-    if (m_decorator)
-        factory = m_decorator(std::move(factory));
+    for (const FactoryWrapper &wrap : m_wrappers)
+        factory = wrap(std::move(factory), choice);
     m_model->clearDrives();
     m_model->setPolling(bus::PollPlan{}, false);
     m_awaitingFirstOpen = true;

@@ -12,6 +12,7 @@
 #include <functional>
 #include <memory>
 #include <utility>
+#include <vector>
 
 class QTimer;
 
@@ -44,15 +45,14 @@ public:
     void setSimulatorFaults(const QString &spec) { m_simFaults = spec; }
     /// The simulated bus of the current connection; null when on a serial port.
     std::shared_ptr<transport::SimBusHandle> simulator() const { return m_sim; }
-    /// Wraps each connection's transport factory (the black box records through it).
+    /// Wraps each connection's transport factory: the black box records through one, tests
+    /// count bytes through another. Every wrapper added applies, in the order added, each
+    /// around the factory the ones before made (the last added is what the session uses).
     using FactoryWrapper =
         std::function<bus::TransportFactory(bus::TransportFactory, const ConnectionChoice &)>;
-    void setFactoryWrapper(FactoryWrapper wrapper) { m_wrapFactory = std::move(wrapper); }
+    void addFactoryWrapper(FactoryWrapper wrapper) { m_wrappers.push_back(std::move(wrapper)); }
     /// Scan by itself once each new connection is open (default on; never while listening).
     void setScanOnConnect(bool on) { m_scanOnConnect = on; }
-    /// Wraps every transport factory before the session uses it (tests count bytes there).
-    using FactoryDecorator = std::function<bus::TransportFactory(bus::TransportFactory)>;
-    void setFactoryDecorator(FactoryDecorator decorator) { m_decorator = std::move(decorator); }
     /// The port the connection is for, as settings key it: "/dev/ttyUSB0", or "simulator".
     QString portKey() const;
     double pollRateHz() const { return m_pollRateHz; }
@@ -112,9 +112,8 @@ private:
     bool m_wasOpen = false;
     bool m_reconnecting = false;
     bool m_traffic = false;
-    FactoryWrapper m_wrapFactory;
-    bool m_wasListening = false; ///< the last open status listened only
-    FactoryDecorator m_decorator;
+    std::vector<FactoryWrapper> m_wrappers;
+    bool m_wasListening = false;                  ///< the last open status listened only
     std::pair<double, double> m_busLimit{-1, -1}; ///< last busLimitChanged (tx/s, rounds/s)
 };
 

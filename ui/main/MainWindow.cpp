@@ -69,7 +69,7 @@ MainWindow::MainWindow(AppSettings *settings, QWidget *parent)
     buildPanels();
     buildSafety();
     m_recording = new RecordingController(
-        {m_controller, m_leaveGuard, m_store, m_traffic, m_banner, this}, this);
+        {m_controller, m_leaveGuard, m_store, m_traffic, m_banner, this, m_settings}, this);
     buildToolbar();
     buildMenus();
     wirePanels();

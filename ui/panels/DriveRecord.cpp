@@ -6,7 +6,7 @@ namespace lk::ui {
 
 int DriveRecord::fieldIndex(bus::TelemetryField f)
 {
-    const auto bits = static_cast<quint16>(f);
+    const auto bits = static_cast<quint32>(f);
     for (int i = 0; i < kFieldCount; ++i) {
         if (bits == (1u << i))
             return i;

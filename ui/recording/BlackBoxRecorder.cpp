@@ -34,6 +34,13 @@ QString BlackBoxRecorder::defaultFolder()
 void BlackBoxRecorder::setWindowMinutes(int minutes)
 {
     m_windowMinutes = qMax(1, minutes);
+    if (m_box)
+        m_box->setWindowNs(windowNs());
+}
+
+qint64 BlackBoxRecorder::windowNs() const
+{
+    return qint64(m_windowMinutes) * 60 * 1'000'000'000;
 }
 
 bus::TransportFactory BlackBoxRecorder::wrap(bus::TransportFactory inner,
@@ -44,7 +51,7 @@ bus::TransportFactory BlackBoxRecorder::wrap(bus::TransportFactory inner,
     if (header.toolVersion.isEmpty())
         header.toolVersion = QCoreApplication::applicationVersion();
     recording::BlackBox::Limits limits;
-    limits.windowNs = qint64(m_windowMinutes) * 60 * 1'000'000'000;
+    limits.windowNs = windowNs();
     m_box = std::make_shared<recording::BlackBox>(std::move(header), limits);
     m_triggers = BlackBoxTriggers{};
     m_timeouts = 0;

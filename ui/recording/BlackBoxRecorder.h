@@ -35,7 +35,8 @@ public:
     static QString defaultFolder();
     void setFolder(const QString &folder) { m_folder = folder; }
     QString folder() const { return m_folder; }
-    /// The ring's length for the next connection (default 10 minutes).
+    /// The ring's length (default 10 minutes, at least 1): the current ring's from now on,
+    /// and the next connection's.
     void setWindowMinutes(int minutes);
     int windowMinutes() const { return m_windowMinutes; }
 
@@ -68,6 +69,7 @@ private:
     void onTelemetry(const bus::TelemetryBatch &batch);
     void onStatistics(const bus::BusStatistics &statistics);
     QString newPath(const QString &why) const;
+    qint64 windowNs() const;
 
     QString m_folder;
     int m_windowMinutes = 10;

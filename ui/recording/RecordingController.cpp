@@ -6,6 +6,7 @@
 #include "RecordingReplay.h"
 #include "ReplayBar.h"
 
+#include <main/AppSettings.h>
 #include <main/BusController.h>
 #include <main/LeaveGuard.h>
 #include <panels/BusModel.h>
@@ -16,6 +17,7 @@
 #include <QtCore/QDateTime>
 #include <QtCore/QFileInfo>
 #include <QtWidgets/QFileDialog>
+#include <QtWidgets/QInputDialog>
 #include <QtWidgets/QMainWindow>
 #include <QtWidgets/QMenu>
 
@@ -42,11 +44,13 @@ RecordingController::RecordingController(const Parts &parts, QObject *parent)
       m_feed(new BlackBoxTrafficFeed(m_recorder, parts.traffic, this)),
       m_replay(new RecordingReplay(this)), m_bar(new ReplayBar(m_replay, parts.window))
 {
-    parts.controller->setFactoryWrapper(
+    parts.controller->addFactoryWrapper(
         [this](bus::TransportFactory inner, const ConnectionChoice &choice) {
             closeRecording(); // a live bus replaces the replay
             return m_recorder->wrap(std::move(inner), headerFor(choice));
         });
+    if (parts.settings)
+        m_recorder->setWindowMinutes(parts.settings->blackBoxMinutes());
     m_recorder->attach(parts.controller->session());
     connect(m_recorder, &BlackBoxRecorder::saved, this, &RecordingController::showSaved);
     connect(m_recorder, &BlackBoxRecorder::saveFailed, this, &RecordingController::showSaveFailed);
@@ -87,6 +91,9 @@ void RecordingController::addFileActions(QMenu *file)
                              this, &RecordingController::saveNow);
     m_save->setObjectName(QStringLiteral("saveBlackBox"));
     m_save->setToolTip(tr("Write what the black box holds to %1").arg(m_recorder->folder()));
+    m_length = file->addAction(tr("Black box &length\u2026"), this,
+                               &RecordingController::chooseBlackBoxMinutes);
+    m_length->setObjectName(QStringLiteral("blackBoxLength"));
     QAction *open = file->addAction(tr("&Open recording\u2026"), this,
                                     &RecordingController::openRecordingWithDialog);
     open->setObjectName(QStringLiteral("openRecording"));
@@ -156,6 +163,37 @@ void RecordingController::closeRecording()
 void RecordingController::saveNow()
 {
     m_recorder->save(kOnRequest);
+}
+
+void RecordingController::chooseBlackBoxMinutes()
+{
+    bool ok = false;
+    const int minutes = QInputDialog::getInt(
+        m_parts.window, tr("Black box length"),
+        tr("Minutes of the link the black box keeps (it also keeps at most 128 MB):"),
+        m_recorder->windowMinutes(), AppSettings::kMinBlackBoxMinutes,
+        AppSettings::kMaxBlackBoxMinutes, 1, &ok);
+    if (ok)
+        setBlackBoxMinutes(minutes);
+}
+
+bool RecordingController::setBlackBoxMinutes(int minutes)
+{
+    if (minutes < AppSettings::kMinBlackBoxMinutes || minutes > AppSettings::kMaxBlackBoxMinutes ||
+        (m_parts.settings && !m_parts.settings->setBlackBoxMinutes(minutes))) {
+        m_parts.banner->setEntry(entryKey(), MessageBanner::Level::Warning,
+                                 tr("The black box length (recording/blackBoxMinutes) must be "
+                                    "%1..%2 minutes, not %3: it stays %4.")
+                                     .arg(AppSettings::kMinBlackBoxMinutes)
+                                     .arg(AppSettings::kMaxBlackBoxMinutes)
+                                     .arg(minutes)
+                                     .arg(m_recorder->windowMinutes()));
+        return false;
+    }
+    m_recorder->setWindowMinutes(minutes);
+    if (m_save)
+        m_save->setText(tr("Save the last %n minute(s)", nullptr, minutes));
+    return true;
 }
 
 QString RecordingController::causeText(const QString &why)

@@ -8,6 +8,7 @@ class QMenu;
 
 namespace lk::ui {
 
+class AppSettings;
 class BlackBoxRecorder;
 class BlackBoxTrafficFeed;
 class BusController;
@@ -32,7 +33,8 @@ public:
         TelemetryStore *store = nullptr;
         TrafficPanel *traffic = nullptr;
         MessageBanner *banner = nullptr;
-        QMainWindow *window = nullptr; ///< gets the replay toolbar
+        QMainWindow *window = nullptr;   ///< gets the replay toolbar
+        AppSettings *settings = nullptr; ///< keeps the black box's length; none: not kept
     };
     /// The banner entry of a saved (or failed) black-box recording.
     static QString entryKey() { return QStringLiteral("blackBox"); }
@@ -48,10 +50,16 @@ public:
     /// Add the recording actions to the File menu.
     void addFileActions(QMenu *file);
     QAction *saveAction() const { return m_save; }
+    QAction *lengthAction() const { return m_length; }
 
 public slots:
     /// File -> Save the last 10 minutes.
     void saveNow();
+    /// The black box keeps `minutes` from now on, and the settings keep it. A value outside
+    /// AppSettings' 1..60 is refused: false, and the banner names the setting.
+    bool setBlackBoxMinutes(int minutes);
+    /// File -> Black box length: asks for the minutes.
+    void chooseBlackBoxMinutes();
     /// Close the bus (what was set moving is stopped first, or the user keeps it: then
     /// nothing happens) and play `path` into the views. False when it was not opened; the
     /// banner says why (the reader's message names the offset of damage).
@@ -73,6 +81,7 @@ private:
     RecordingReplay *m_replay;
     ReplayBar *m_bar;
     QAction *m_save = nullptr;
+    QAction *m_length = nullptr;
 };
 
 } // namespace lk::ui

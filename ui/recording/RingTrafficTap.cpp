@@ -6,30 +6,6 @@ namespace lk::ui {
 
 using recording::RecordEvent;
 
-namespace {
-
-// The same row RecordTraffic's trafficEventsOf makes of a frame; that one parses a whole
-// recording at once, this converter goes on from one take() to the next.
-bus::TrafficEvent trafficEventOf(const recording::RecordedFrame &f)
-{
-    bus::TrafficEvent e;
-    e.time = double(f.timeNs) * 1e-9;
-    e.bytes = f.event.bytes;
-    e.id = f.event.frame.id;
-    e.command = f.event.frame.command;
-    if (f.event.isFrame) {
-        e.kind = f.transmitted ? bus::TrafficEvent::Kind::Sent : bus::TrafficEvent::Kind::Frame;
-        e.frame = f.event.frame;
-        e.context = f.context;
-    } else {
-        e.kind = bus::TrafficEvent::Kind::Fault;
-        e.error = f.event.error;
-    }
-    return e;
-}
-
-} // namespace
-
 void RingTrafficTap::append(RecordEvent event)
 {
     std::lock_guard<std::mutex> lock(m_mutex);
@@ -68,11 +44,13 @@ QVector<RecordEvent> RingTrafficTap::take(bool *overflowed)
 bus::TrafficBatch RecordTrafficConverter::convert(const QVector<RecordEvent> &records)
 {
     bus::TrafficBatch out;
-    const auto sink = [&out](const recording::RecordedFrame &f) { out.append(trafficEventOf(f)); };
+    const auto sink = [&out](const recording::RecordedFrame &f) {
+        out.append(recording::trafficEventOf(f));
+    };
     for (const RecordEvent &r : records) {
         m_parser.feed(r, sink);
-        if (r.kind == RecordEvent::Kind::Link || r.kind == RecordEvent::Kind::Dropped)
-            out += recording::trafficEventsOf({r}, {}); // a link event or drop: one Note
+        if (std::optional<bus::TrafficEvent> note = recording::noteEventOf(r))
+            out.append(std::move(*note));
     }
     return out;
 }

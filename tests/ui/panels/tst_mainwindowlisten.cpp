@@ -72,9 +72,10 @@ void tst_MainWindowListen::init()
 {
     QVERIFY(openWindow());
     m_line = std::make_shared<TapLine>();
-    m_window->controller()->setFactoryDecorator([line = m_line](lk::bus::TransportFactory inner) {
-        return TapTransport::wrap(std::move(inner), line);
-    });
+    m_window->controller()->addFactoryWrapper(
+        [line = m_line](lk::bus::TransportFactory inner, const lk::ui::ConnectionChoice &) {
+            return TapTransport::wrap(std::move(inner), line);
+        });
     m_machine = lk::sim::SimBus::fromSpec(*lk::sim::SimBusSpec::parse(QStringLiteral("5:MS,6:MF")));
     m_t = 0;
 }

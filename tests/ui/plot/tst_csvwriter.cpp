@@ -102,7 +102,8 @@ void tst_CsvWriter::formatsNumbers()
 void tst_CsvWriter::columnNamesFollowTheCliContract()
 {
     // snake_case with the unit as suffix, except the unitless integers of CLI.md.
-    const QSet<QString> unitless{"error_state", "power", "encoder", "motor_on", "commanded_power"};
+    const QSet<QString> unitless{"error_state", "power",           "encoder",
+                                 "motor_on",    "commanded_power", "commanded_direction"};
     const QRegularExpression withUnit("^[a-z]+(_[a-z]+)*_(c|v|a|dps|deg)$");
     QSet<QString> seen;
     for (const auto &c : TelemetryColumns::all()) {

@@ -57,6 +57,7 @@ private slots:
     void emergencyStopSavesAndTheBannerNamesThePath();
     void linkLossSaves();
     void saveOnRequestFromTheFileMenu();
+    void anotherFactoryWrapperLeavesTheBlackBoxRecording();
 
 private:
     ui::BlackBoxRecorder *blackBox() const { return m_window->recording()->blackBox(); }
@@ -164,6 +165,22 @@ void tst_BlackBoxWindow::saveOnRequestFromTheFileMenu()
     QVERIFY(!savedPath().isEmpty());
     QVERIFY(QFileInfo::exists(savedPath()));
     QVERIFY(sentFrames(savedPath(), Command::ReadState2) > 0);
+}
+
+void tst_BlackBoxWindow::anotherFactoryWrapperLeavesTheBlackBoxRecording()
+{
+    // One mechanism for every wrapper of the connection's transports: one added after the
+    // black box's (as the tests' byte counters are) wraps it, and does not replace it.
+    QStringList made;
+    m_window->controller()->addFactoryWrapper(
+        [&made](bus::TransportFactory inner, const ui::ConnectionChoice &choice) {
+            made << (choice.isSimulator() ? QStringLiteral("simulator") : choice.port);
+            return inner;
+        });
+    QVERIFY(connectToSimulator());
+    QCOMPARE(made, QStringList{QStringLiteral("simulator")});
+    QVERIFY(blackBox()->box());
+    QTRY_VERIFY_WITH_TIMEOUT(blackBox()->box()->bytes() > 0, uitest::kWaitMs);
 }
 
 QTEST_MAIN(tst_BlackBoxWindow)
