@@ -12,6 +12,7 @@
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
 #include <QtWidgets/QDoubleSpinBox>
+#include <QtWidgets/QLabel>
 #include <QtWidgets/QPushButton>
 
 using lk::drivetest::heldText;
@@ -138,6 +139,7 @@ private slots:
     void badFileChangesNothing_data();
     void badFileChangesNothing();
     void disconnectedDisablesWrites();
+    void oldCanKeepsRamAndRom();
 };
 
 void tst_TuningView::readsDriveOnSelection()
@@ -597,4 +599,25 @@ void tst_TuningView::disconnectedDisablesWrites()
 }
 
 QTEST_MAIN(tst_TuningView)
+void tst_TuningView::oldCanKeepsRamAndRom()
+{
+    // The old CAN generation has V2.3's 0x30..0x34 with RAM and ROM: the link alone takes
+    // nothing away (only a V2.36 drive on CAN is RAM only).
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = std::make_unique<TuningView>();
+    view->resize(1200, 700);
+    view->setSession(&rig.session);
+    view->setLink(lk::protocol::Link::Can);
+    view->setConnected(true);
+    view->setDrive(1, rig.motor(1));
+    view->show();
+    QVERIFY(
+        QTest::qWaitFor([&] { return drivePid(*view).has_value() && !view->isBusy(); }, kWaitMs));
+    QVERIFY(!view->isRamOnly());
+    QVERIFY(rig.count(1, Command::ReadPid) > 0);
+    QVERIFY(lk::drivetest::button(*view, "writeRom")->isVisible());
+    QVERIFY(!view->findChild<QLabel *>(QStringLiteral("ramOnlyNote"))->isVisible());
+}
+
 #include "tst_tuningview.moc"
