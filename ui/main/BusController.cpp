@@ -284,8 +284,13 @@ void BusController::onScanFinished(const bus::ScanSummary &summary)
         emit message(MessageBanner::Level::Warning, tr("Scan stopped: %1").arg(summary.error));
     else if (summary.motors.isEmpty() && !summary.cancelled)
         emit message(MessageBanner::Level::Warning,
-                     tr("No drive answered. Check the baud (or tick \"Try every baud\"), the "
-                        "A/B wiring, the drives' supply and the 120-ohm termination."));
+                     m_choice.isCan()
+                         ? tr("No drive answered on %1. Check that the drives use %2, the "
+                              "CAN-H/CAN-L wiring, the drives' supply and a 120-ohm terminator "
+                              "at each end of the bus.")
+                               .arg(linkName(), Format::bitRate(m_choice.bitRate))
+                         : tr("No drive answered. Check the baud (or tick \"Try every baud\"), "
+                              "the A/B wiring, the drives' supply and the 120-ohm termination."));
     keepDrivesAt(summary);
     // The scan's silent IDs are timeouts by design: start the figures afresh for polling.
     // Each drive's series is the bus's already: learnt with its model (MotorRegistry).
