@@ -21,6 +21,7 @@
 #include <sim/SimBus.h>
 #include <system/LogFile.h>
 #include <system/SignalWatcher.h>
+#include <transport/CanTransport.h>
 #include <transport/SerialTransport.h>
 #include <transport/SimBusHandle.h>
 
@@ -168,6 +169,27 @@ void startLog(lk::system::LogFile &log)
     log.install();
 }
 
+/// A serial port, or "can:PLUGIN:INTERFACE" (StartupOptions::initialChoice), is there now.
+bool portPresent(const QString &port)
+{
+    if (port.startsWith(QLatin1String("can:"))) {
+        const QString plugin = port.section(QLatin1Char(':'), 1, 1);
+        // virtualcan's bus is a server lkstudio starts itself: nothing to look for.
+        return plugin == QLatin1String("virtualcan") ||
+               lk::transport::CanTransport::interfaces(plugin).contains(
+                   port.section(QLatin1Char(':'), 2));
+    }
+    return QFile::exists(lk::transport::SerialTransport::systemPath(port));
+}
+
+/// "/dev/ttyUSB0", "socketcan:can0" or "the simulated bus", for the log and the banner.
+QString linkText(const lk::ui::ConnectionChoice &choice)
+{
+    if (choice.isCan())
+        return QStringLiteral("%1:%2").arg(choice.canPlugin, choice.canInterface);
+    return choice.isSimulator() ? QStringLiteral("the simulated bus") : choice.port;
+}
+
 /// What the banner says goes to the log too, so that a bug report has the recent errors.
 void logMessages(lk::ui::BusController *controller)
 {
@@ -264,15 +286,10 @@ int runStudio(const lk::ui::StartupOptions &options)
             screenshotLater(window, options.screenshotFile, options.screenshotDelayMs);
         return QApplication::exec();
     }
-    const auto present = [](const QString &port) {
-        return QFile::exists(lk::transport::SerialTransport::systemPath(port));
-    };
-    const lk::ui::ConnectionChoice choice = options.initialChoice(settings, present);
-    const bool fellBack = options.fellBackToSimulator(settings, present);
-    const QString rememberedPort = settings.connection().port;
-    qCInfo(lcStudio).noquote() << "connecting to"
-                               << (choice.isSimulator() ? QStringLiteral("the simulated bus")
-                                                        : choice.port);
+    const lk::ui::ConnectionChoice choice = options.initialChoice(settings, &portPresent);
+    const bool fellBack = options.fellBackToSimulator(settings, &portPresent);
+    const QString rememberedPort = linkText(settings.connection());
+    qCInfo(lcStudio).noquote() << "connecting to" << linkText(choice);
     // A fallback to the simulator must not overwrite the port the user chose last time.
     window.connectTo(choice, !fellBack);
     if (fellBack) {

@@ -38,6 +38,10 @@ public:
                                         const std::optional<qint32> &accelDps2, bool complete);
     /// The status after a write whose read-back showed what was sent.
     static QString written(const TuningWrite &sent, int id);
+    /// Why a CAN V2.36 drive's view has no ROM button: its control parameters live in RAM.
+    static QString can236RamOnly();
+    /// What the view does with a CAN V2.36 drive's control parameters in this build.
+    static QString can236NotRead();
 };
 
 } // namespace lk::ui

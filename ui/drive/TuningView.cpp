@@ -103,9 +103,14 @@ void TuningView::buildUi()
     m_note = new QLabel(m_box);
     m_note->setObjectName(QStringLiteral("generationNote"));
     m_note->setWordWrap(true);
+    m_ramOnlyNote = new QLabel(TuningText::can236RamOnly(), m_box);
+    m_ramOnlyNote->setObjectName(QStringLiteral("ramOnlyNote"));
+    m_ramOnlyNote->setWordWrap(true);
+    m_ramOnlyNote->setVisible(false);
     auto *boxLayout = new QVBoxLayout(m_box);
     boxLayout->addWidget(m_table);
     boxLayout->addWidget(m_note);
+    boxLayout->addWidget(m_ramOnlyNote);
 
     m_romWarning = banner(QStringLiteral("romWarning"), QString(), this);
     m_mismatch =
@@ -306,17 +311,47 @@ bool TuningView::readComplete() const
 
 void TuningView::readFromDrive()
 {
+    if (m_ramOnly) { // V2.35's 0x40 does not exist on CAN: never send it there
+        setStatus(TuningText::can236NotRead(), true);
+        return;
+    }
     m_cycle->readFromDrive();
 }
 
 void TuningView::writeToRam()
 {
+    if (m_ramOnly) {
+        setStatus(TuningText::can236NotRead(), true);
+        return;
+    }
     m_cycle->write(TuningSetCycle::WriteKind::Ram);
 }
 
 void TuningView::writeToRom()
 {
+    if (m_ramOnly) { // no button, and no way around it: a V2.36 CAN drive has no ROM write
+        setStatus(TuningText::can236RamOnly(), true);
+        return;
+    }
     m_cycle->write(TuningSetCycle::WriteKind::Rom);
+}
+
+void TuningView::setLink(protocol::Link link)
+{
+    if (m_link == link)
+        return;
+    m_link = link;
+    contextChanged(Change::MotorInfo);
+}
+
+bool TuningView::updateRamOnly()
+{
+    const bool ramOnly = m_link == protocol::Link::Can && hasDrive() &&
+                         motor().generation == protocol::Generation::V2_35;
+    if (ramOnly == m_ramOnly)
+        return false;
+    m_ramOnly = ramOnly;
+    return true;
 }
 
 void TuningView::restoreFirstRead()
@@ -372,7 +407,8 @@ void TuningView::contextChanged(Changes changes)
     const bool linkUp = (changes & Change::Connection) && isConnected();
     const bool linkDown = (changes & Change::Connection) && !isConnected();
     // The generation learned late (MotorInfo) changes the set: values of the other set are void.
-    if (specFor(motor().generation) != m_spec)
+    const bool ramOnlyChanged = updateRamOnly(); // always: never skipped by the test before
+    if (specFor(motor().generation) != m_spec || ramOnlyChanged)
         changes |= Change::Drive;
     if (changes & Change::Session) {
         disconnect(m_telemetry);
@@ -388,8 +424,11 @@ void TuningView::contextChanged(Changes changes)
     m_cycle->showDrive();
     m_plot->setDrive(driveId(), series() == protocol::Series::MS);
     m_title->setText(driveTitle());
-    if (canSendToDrive() && (changes & (Change::Session | Change::Drive | Change::Connection)))
+    if (canSendToDrive() && !m_ramOnly &&
+        (changes & (Change::Session | Change::Drive | Change::Connection)))
         m_cycle->read(true);
+    if (m_ramOnly && (changes & (Change::Session | Change::Drive | Change::Connection)))
+        setStatus(TuningText::can236NotRead());
     if (linkDown && hasDrive())
         setStatus(cannotSendText(tr("Disconnected: the values shown are the last ones read. Tuning "
                                     "resumes after the drive has been read again on the next "
@@ -407,7 +446,8 @@ void TuningView::forwardContext(Changes changes)
     if (changes & Change::Connection)
         m_limits->setConnected(isConnected(), cannotSendText(QString()));
     if (changes & (Change::Session | Change::Drive | Change::MotorInfo)) {
-        if (hasDrive())
+        // A V2.36 CAN drive's limits are 0xC0 IDs, not V2.35's 0x40 ParamIDs: not read there.
+        if (hasDrive() && !m_ramOnly)
             m_limits->setDrive(driveId(), motor());
         else
             m_limits->clearDrive();
@@ -432,9 +472,12 @@ void TuningView::refreshEnabled()
     const bool idle = !isBusy() && !m_stepTest->isRunning();
     const bool read = canSendToDrive() && m_cycle->readComplete();
     const bool pending = m_table->pending().has_value();
-    m_read->setEnabled(canSendToDrive() && idle);
-    m_writeRam->setEnabled(read && idle && pending);
-    m_writeRom->setEnabled(read && idle && pending);
+    m_read->setEnabled(canSendToDrive() && idle && !m_ramOnly);
+    m_writeRam->setEnabled(read && idle && pending && !m_ramOnly);
+    m_writeRom->setEnabled(read && idle && pending && !m_ramOnly);
+    m_writeRom->setVisible(!m_ramOnly); // absent, not greyed: the drive has no ROM write
+    m_ramOnlyNote->setVisible(m_ramOnly);
+    m_tabs->setTabEnabled(m_tabs->indexOf(m_limits), !m_ramOnly);
     m_undo->setEnabled(read && idle && m_cycle->firstReadAt().has_value());
     record::ParameterSet probe;
     m_save->setEnabled(hasDrive() && m_spec->toFile(m_cycle->held(), probe));

@@ -92,6 +92,12 @@ public:
     void haltLocalMotion(const QString &reason);
     /// The set of the selected drive's generation.
     const ParamSetSpec &spec() const { return *m_spec; }
+    /// The link the drives are reached over. A V2.36 drive on CAN keeps its control
+    /// parameters in RAM only (0xC0/0xC1): no ROM write is offered, and a label says why; an
+    /// old CAN drive keeps V2.3's 0x30..0x34 with RAM and ROM.
+    void setLink(protocol::Link link);
+    /// The selected drive is a V2.36 drive on CAN: its parameters are RAM only.
+    bool isRamOnly() const { return m_ramOnly; }
     /// What the drive holds (last read), one per field of spec(); nullopt while unknown.
     HeldValues driveValues() const;
     /// Every value of the selected drive's set was read on this connection: edits and writes
@@ -130,6 +136,8 @@ private:
     void wireCycle();
     void refreshWarnings();
     void refreshEnabled();
+    /// A V2.36 drive on CAN: m_ramOnly follows; true when that changed.
+    bool updateRamOnly();
     void refreshRestoreButton();
     void setStatus(const QString &text, bool error = false);
 
@@ -142,6 +150,7 @@ private:
     QTabWidget *m_tabs = nullptr;
     DriveLimitsView *m_limits = nullptr;
     QLabel *m_note = nullptr;
+    QLabel *m_ramOnlyNote = nullptr; ///< why a CAN V2.36 drive has no ROM button
     LoopPlot *m_plot = nullptr;
     QTabWidget *m_side = nullptr; ///< live plot | step response
     StepRunList *m_runs = nullptr;
@@ -161,6 +170,8 @@ private:
     QMetaObject::Connection m_telemetry;
 
     bool m_romWarningActive = false;
+    protocol::Link m_link = protocol::Link::Rs485;
+    bool m_ramOnly = false; ///< the drive shown is a V2.36 drive on CAN
 };
 
 } // namespace lk::ui

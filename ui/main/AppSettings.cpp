@@ -22,6 +22,9 @@ const char kConnectionPort[] = "connection/port";
 const char kConnectionBaud[] = "connection/baud";
 const char kAutoReconnect[] = "connection/autoReconnect";
 const char kListenOnly[] = "connection/listenOnly";
+const char kCanPlugin[] = "connection/canPlugin";
+const char kCanInterface[] = "connection/canInterface";
+const char kCanBitRate[] = "connection/canBitRate";
 const char kChosenSeriesGroup[] = "chosenSeries"; // /<port, percent-encoded>/<id>
 const char kScanFirstId[] = "scan/firstId";
 const char kScanLastId[] = "scan/lastId";
@@ -37,6 +40,7 @@ const char kLastFolderGroup[] = "lastFolder/"; // + a FileDialogs purpose key
 
 const char kKindSerial[] = "serial";
 const char kKindSimulator[] = "simulator";
+const char kKindCan[] = "can";
 constexpr int kMinId = 1;
 constexpr int kMaxId = 32;
 constexpr double kMaxPollRateHz = 10000;
@@ -58,7 +62,30 @@ bool validBaud(const QVariant &v)
 bool validKind(const QVariant &v)
 {
     const QString s = v.toString();
-    return s == QLatin1String(kKindSerial) || s == QLatin1String(kKindSimulator);
+    return s == QLatin1String(kKindSerial) || s == QLatin1String(kKindSimulator) ||
+           s == QLatin1String(kKindCan);
+}
+
+bool validBitRate(const QVariant &v)
+{
+    bool ok = false;
+    const int rate = v.toInt(&ok);
+    return ok && ConnectionChoice::isCanBitRate(rate);
+}
+
+// A Qt SerialBus plugin key ("socketcan", "virtualcan"): lower-case letters and digits.
+bool validCanPlugin(const QVariant &v)
+{
+    static const QRegularExpression re(QStringLiteral("^[a-z][a-z0-9]{0,31}$"));
+    return re.match(v.toString()).hasMatch();
+}
+
+// An interface name: "can0", "slcan0", or virtualcan's "tcp://127.0.0.1:35468/can0"; no
+// spaces, not empty, not absurdly long.
+bool validCanInterface(const QVariant &v)
+{
+    static const QRegularExpression re(QStringLiteral("^[A-Za-z0-9_.:/@-]{1,128}$"));
+    return re.match(v.toString()).hasMatch();
 }
 
 bool validRate(const QVariant &v)
@@ -123,7 +150,10 @@ struct CheckedKey {
 };
 const CheckedKey kCheckedKeys[] = {
     {key::kVersion, validVersion, "a whole number"},
-    {key::kConnectionKind, validKind, "serial or simulator"},
+    {key::kConnectionKind, validKind, "serial, can or simulator"},
+    {key::kCanPlugin, validCanPlugin, "a Qt CAN plugin such as socketcan"},
+    {key::kCanInterface, validCanInterface, "an interface name such as can0"},
+    {key::kCanBitRate, validBitRate, "1000000, 500000, 250000, 125000 or 100000"},
     {key::kConnectionBaud, validBaud, "one of the nine LK bauds"},
     {key::kAutoReconnect, validBool, "true or false"},
     {key::kListenOnly, validBool, "true or false"},
@@ -249,10 +279,21 @@ ConnectionChoice AppSettings::connection() const
     ConnectionChoice c;
     const QString kind = s.value(QLatin1String(key::kConnectionKind)).toString();
     c.kind = kind == QLatin1String(kKindSerial) ? ConnectionChoice::Kind::Serial
+             : kind == QLatin1String(kKindCan)  ? ConnectionChoice::Kind::Can
                                                 : ConnectionChoice::Kind::Simulator;
     c.port = s.value(QLatin1String(key::kConnectionPort)).toString();
     const QVariant baud = s.value(QLatin1String(key::kConnectionBaud));
     c.baud = validBaud(baud) ? baud.toInt() : bus::BusTiming::kDefaultBaud;
+    // Damaged CAN values were named at start (damage()) and are not used: the defaults stand.
+    const QVariant plugin = s.value(QLatin1String(key::kCanPlugin));
+    if (validCanPlugin(plugin))
+        c.canPlugin = plugin.toString();
+    const QVariant iface = s.value(QLatin1String(key::kCanInterface));
+    if (validCanInterface(iface))
+        c.canInterface = iface.toString();
+    const QVariant rate = s.value(QLatin1String(key::kCanBitRate));
+    if (validBitRate(rate))
+        c.bitRate = rate.toInt();
     c.autoReconnect = s.value(QLatin1String(key::kAutoReconnect), true).toBool();
     const QVariant listen = s.value(QLatin1String(key::kListenOnly), false);
     c.listenOnly = validBool(listen) && listen.toBool();
@@ -263,9 +304,14 @@ void AppSettings::setConnection(const ConnectionChoice &choice)
 {
     QSettings &s = m_settings;
     s.setValue(QLatin1String(key::kConnectionKind),
-               QLatin1String(choice.isSimulator() ? kKindSimulator : kKindSerial));
+               QLatin1String(choice.isCan()         ? kKindCan
+                             : choice.isSimulator() ? kKindSimulator
+                                                    : kKindSerial));
     s.setValue(QLatin1String(key::kConnectionPort), choice.port);
     s.setValue(QLatin1String(key::kConnectionBaud), choice.baud);
+    s.setValue(QLatin1String(key::kCanPlugin), choice.canPlugin);
+    s.setValue(QLatin1String(key::kCanInterface), choice.canInterface);
+    s.setValue(QLatin1String(key::kCanBitRate), choice.bitRate);
     s.setValue(QLatin1String(key::kAutoReconnect), choice.autoReconnect);
     s.setValue(QLatin1String(key::kListenOnly), choice.listenOnly);
 }

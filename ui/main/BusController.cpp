@@ -5,6 +5,7 @@
 
 #include <bus/BusTiming.h>
 #include <protocol/RequestBuilder.h>
+#include <transport/CanTransport.h>
 #include <transport/SerialTransport.h>
 #include <transport/SimBusHandle.h>
 
@@ -77,10 +78,15 @@ void BusController::connectTo(const ConnectionChoice &choice)
     m_reconnecting = false;
     m_choice = choice;
     bus::TransportFactory factory;
+    int rate = choice.baud;
     if (choice.isSimulator()) {
         m_sim = std::make_shared<transport::SimBusHandle>(m_simSpec);
         m_sim->setFaultSpec(m_simFaults);
         factory = transport::SimBusHandle::factory(m_sim);
+    } else if (choice.isCan()) {
+        m_sim.reset();
+        factory = transport::CanTransport::factory(canSettings(choice));
+        rate = choice.bitRate; // the session's "baud" is the bit rate on CAN
     } else {
         m_sim.reset();
         transport::SerialSettings s;
@@ -91,12 +97,36 @@ void BusController::connectTo(const ConnectionChoice &choice)
         factory = wrap(std::move(factory), choice);
     m_model->clearDrives();
     m_model->setPolling(bus::PollPlan{}, false);
+    m_model->setLink(choice.isCan() ? protocol::Link::Can : protocol::Link::Rs485,
+                     choice.canInterface);
     m_awaitingFirstOpen = true;
     m_wasOpen = false;
     m_wasListening = false;
-    m_session->open(std::move(factory), choice.baud, {},
+    // The engine takes the link from the transport (CanTransport carries CAN records).
+    m_session->open(std::move(factory), rate, {},
                     choice.listenOnly ? bus::LinkMode::ListenOnly : bus::LinkMode::Active);
     m_session->setTrafficCapture(m_traffic);
+}
+
+transport::CanSettings BusController::canSettings(const ConnectionChoice &choice)
+{
+    transport::CanSettings s;
+    s.plugin = choice.canPlugin;
+    s.interfaceName = choice.canInterface;
+    s.bitRate = choice.bitRate;
+    // virtualcan has no bit rate; socketcan sets it where libsocketcan and the rights allow
+    // and otherwise the transport names the `ip link` command that does.
+    s.setBitRate = choice.canPlugin != QLatin1String("virtualcan");
+    return s;
+}
+
+QString BusController::linkName() const
+{
+    if (m_choice.isSimulator())
+        return tr("the simulator");
+    if (m_choice.isCan())
+        return QStringLiteral("%1:%2").arg(m_choice.canPlugin, m_choice.canInterface);
+    return m_choice.port;
 }
 
 void BusController::disconnectBus()
@@ -128,6 +158,8 @@ void BusController::onPortsChanged(const QList<PortEntry> &)
 
 QString BusController::portKey() const
 {
+    if (m_choice.isCan()) // "can:socketcan:can0": never a serial path, so never mixed up
+        return QStringLiteral("can:%1:%2").arg(m_choice.canPlugin, m_choice.canInterface);
     return m_choice.isSimulator() ? QStringLiteral("simulator")
                                   : transport::SerialTransport::systemPath(m_choice.port);
 }
@@ -136,6 +168,10 @@ bool BusController::portPresent() const
 {
     if (m_choice.isSimulator())
         return true;
+    if (m_choice.isCan()) // virtualcan's bus is a server: there is nothing to look for
+        return m_choice.canPlugin == QLatin1String("virtualcan") ||
+               transport::CanTransport::interfaces(m_choice.canPlugin)
+                   .contains(m_choice.canInterface);
     return QFile::exists(transport::SerialTransport::systemPath(m_choice.port));
 }
 
@@ -188,10 +224,39 @@ void BusController::onError(const transport::TransportError &error)
     // An unplug never comes here: it is a state (onConnectionChanged), with what happens next.
     if (m_reconnecting)
         return; // the banner already says we are waiting for the adapter: no flood per retry
-    emit message(MessageBanner::Level::Error,
-                 tr("Cannot use %1: %2")
-                     .arg(m_choice.isSimulator() ? tr("the simulator") : m_choice.port,
-                          error.message)); // worded (and translated) once, by the transport
+    if (m_choice.isCan() && onCanCondition(error))
+        return;
+    emit message(
+        MessageBanner::Level::Error,
+        tr("Cannot use %1: %2").arg(linkName(), error.message)); // worded once, by the transport
+}
+
+bool BusController::onCanCondition(const transport::TransportError &error)
+{
+    using K = transport::TransportError::Kind;
+    using C = transport::CanBusCondition;
+    // States of an open CAN link, each once with its fix: the link stays open, nothing here
+    // says "lost" (only the interface going away does, as a connection state).
+    switch (error.kind) {
+    case K::CanBusOff:
+        m_model->setCanCondition(C::BusOff, error.message);
+        break;
+    case K::CanErrorPassive:
+        m_model->setCanCondition(C::ErrorPassive, error.message);
+        break;
+    case K::CanNoAcknowledge:
+        m_model->setCanCondition(C::NoAcknowledge, error.message);
+        break;
+    case K::IoError:     // one frame the device refused: "the link stays open"
+    case K::BadSettings: // the bit rate could not be set through Qt: the command to run
+        if (!m_model->connection().isOpen() && error.kind == K::IoError)
+            return false;
+        break;
+    default:
+        return false;
+    }
+    emit message(MessageBanner::Level::Warning, error.message);
+    return true;
 }
 
 void BusController::scan(const bus::ScanOptions &options)
@@ -217,8 +282,13 @@ void BusController::onScanFinished(const bus::ScanSummary &summary)
         emit message(MessageBanner::Level::Warning, tr("Scan stopped: %1").arg(summary.error));
     else if (summary.motors.isEmpty() && !summary.cancelled)
         emit message(MessageBanner::Level::Warning,
-                     tr("No drive answered. Check the baud (or tick \"Try every baud\"), the "
-                        "A/B wiring, the drives' supply and the 120-ohm termination."));
+                     m_choice.isCan()
+                         ? tr("No drive answered on %1. Check that the drives use %2, the "
+                              "CAN-H/CAN-L wiring, the drives' supply and a 120-ohm terminator "
+                              "at each end of the bus.")
+                               .arg(linkName(), Format::bitRate(m_choice.bitRate))
+                         : tr("No drive answered. Check the baud (or tick \"Try every baud\"), "
+                              "the A/B wiring, the drives' supply and the 120-ohm termination."));
     keepDrivesAt(summary);
     // The scan's silent IDs are timeouts by design: start the figures afresh for polling.
     // Each drive's series is the bus's already: learnt with its model (MotorRegistry).

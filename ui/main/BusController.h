@@ -6,6 +6,7 @@
 
 #include <bus/BusSession.h>
 #include <sim/SimBusSpec.h>
+#include <transport/CanTransport.h>
 
 #include <QtCore/QObject>
 
@@ -53,11 +54,15 @@ public:
     void addFactoryWrapper(FactoryWrapper wrapper) { m_wrappers.push_back(std::move(wrapper)); }
     /// Scan by itself once each new connection is open (default on; never while listening).
     void setScanOnConnect(bool on) { m_scanOnConnect = on; }
-    /// The port the connection is for, as settings key it: "/dev/ttyUSB0", or "simulator".
+    /// The port the connection is for, as settings key it: "/dev/ttyUSB0", "simulator", or
+    /// "can:socketcan:can0" for a CAN interface.
     QString portKey() const;
     double pollRateHz() const { return m_pollRateHz; }
     /// Commands of the poll plan the dashboard needs (standard mix plus single-turn angle).
     static bus::PollPlan pollPlanFor(const QVector<int> &ids, double rateHz);
+    /// How a CAN choice opens: plugin, interface and bit rate (set through Qt except on
+    /// virtualcan, which has none).
+    static transport::CanSettings canSettings(const ConnectionChoice &choice);
     /// Motor Off to `first` and every drive the bus knows, then to every other ID 1..32
     /// (see BusSession::emergencyStop); returns the stop's ticket. lkstudio's stop is
     /// EmergencyStopControl, which reports the outcome.
@@ -91,6 +96,10 @@ private:
     void wireSession();
     void onConnectionChanged(const bus::ConnectionStatus &status);
     void onError(const transport::TransportError &error);
+    /// A CAN link's bus condition or refused frame: a state and a warning, not a failure.
+    /// False when `error` is none of those (an open failure).
+    bool onCanCondition(const transport::TransportError &error);
+    QString linkName() const; ///< "/dev/ttyUSB0", "socketcan:can0", "the simulator"
     void onScanFinished(const bus::ScanSummary &summary);
     void onCleared(const bus::RequestResult &result); ///< the end of a clearErrors()
     void onTookOver(); ///< the link that listened is the bus master now

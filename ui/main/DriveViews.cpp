@@ -97,6 +97,7 @@ void DriveViews::syncConnection()
     // reads on selection, buttons and generators go quiet here, not refused one by one.
     const bool canSend = m_model->canSend();
     const QString why = m_model->isListening() ? m_model->sendBlockedReason() : QString();
+    m_tuning->setLink(m_model->link()); // first: a V2.36 CAN drive is never read with 0x40
     m_tuning->setConnected(canSend, why);
     m_control->setConnected(canSend, why);
     m_encoder->setConnected(canSend, why);

@@ -34,6 +34,8 @@ public:
     ControlView *control() const { return m_control; }
     EncoderView *encoder() const { return m_encoder; }
     DriveInfoView *info() const { return m_info; }
+    /// Where per-drive soft limits, encoder resolutions and gear ratios are kept.
+    DriveSettingsStore *settingsStore() const { return m_settings.get(); }
     /// The encoder resolutions the Encoder view uses; the dashboard shares them.
     EncoderResolutions *encoderResolutions() const { return m_resolutions; }
 

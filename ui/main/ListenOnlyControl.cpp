@@ -4,6 +4,7 @@
 #include "BusController.h"
 
 #include <drive/ConfirmDialog.h>
+#include <drive/DriveSettingsStore.h>
 #include <panels/BusModel.h>
 #include <panels/SeriesChooser.h>
 #include <text/VerdictText.h>
@@ -24,7 +25,14 @@ ListenOnlyControl::ListenOnlyControl(BusController *controller, AppSettings *set
     connect(model, &BusModel::connectionChanged, this, &ListenOnlyControl::syncStopButton);
     connect(model, &BusModel::drivesChanged, this, &ListenOnlyControl::applyRemembered);
     connect(m_chooser, &SeriesChooser::seriesChosen, this, &ListenOnlyControl::chooseSeries);
+    connect(m_chooser, &SeriesChooser::gearRatioChosen, this, &ListenOnlyControl::chooseGearRatio);
     syncStopButton();
+}
+
+void ListenOnlyControl::setDriveStore(DriveSettingsStore *store)
+{
+    m_store = store;
+    applyRemembered();
 }
 
 void ListenOnlyControl::requestTakeOver()
@@ -60,11 +68,29 @@ void ListenOnlyControl::chooseSeries(int id, protocol::Series series)
     m_controller->setSeries(id, series);
 }
 
+void ListenOnlyControl::chooseGearRatio(int id, double ratio)
+{
+    const bus::KnownMotors known = m_controller->session()->knownMotors();
+    if (m_store)
+        m_store->setGearRatio(DriveSettingsStore::driveKey(id, known.value(id)), ratio);
+    m_controller->model()->setChosenGearRatio(id, ratio);
+}
+
 void ListenOnlyControl::applyRemembered()
 {
     BusModel *model = m_controller->model();
+    const bus::KnownMotors known = m_controller->session()->knownMotors();
     for (int id : model->ids()) {
         const DriveRecord *d = model->drive(id);
+        if (d && d->nameInfo.name.isEmpty() && !d->chosenGearRatio && m_store) {
+            const auto ratio =
+                m_store->gearRatio(DriveSettingsStore::driveKey(id, known.value(id)));
+            if (ratio) {
+                m_chooser->markChosen(id);
+                model->setChosenGearRatio(id, *ratio); // drivesChanged again: this one is set
+                d = model->drive(id);
+            }
+        }
         if (!d || d->series)
             continue; // the bus knows it (a 0x12 reply passed, or the choice is applied)
         if (const auto series = m_settings->chosenSeries(m_controller->portKey(), id)) {

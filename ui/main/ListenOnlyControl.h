@@ -12,13 +12,15 @@ namespace lk::ui {
 
 class AppSettings;
 class BusController;
+class DriveSettingsStore;
 class SeriesChooser;
 
 /// What lkstudio does around a listen-only link, beside the views' own gating (BusModel::
 /// canSend): "Take over the bus" only after the user confirmed what it means; the emergency
 /// stop button says that it sends nothing while listening; and a drive's series the user chose
 /// (SeriesChooser) is remembered per port and ID and applied to the bus, again whenever that
-/// drive is seen on that port.
+/// drive is seen on that port. The same holds on CAN, which has no model read: there the
+/// chooser also takes the gear ratio, kept in the drive views' store (the Encoder view's).
 class ListenOnlyControl : public QObject {
     Q_OBJECT
 public:
@@ -28,6 +30,9 @@ public:
 
     /// The confirmation's key (ConfirmDialog policies in tests).
     static QString takeOverKey() { return QStringLiteral("take_over_bus"); }
+    /// Where chosen gear ratios are kept (the drive views' store; not owned). Without one a
+    /// ratio applies to the drives shown until they go.
+    void setDriveStore(DriveSettingsStore *store);
 
 public slots:
     /// Ask, then take the bus over (BusController::takeOver) if the user agreed and the link
@@ -36,6 +41,7 @@ public slots:
 
 private:
     void chooseSeries(int id, protocol::Series series);
+    void chooseGearRatio(int id, double ratio);
     void applyRemembered();
     void syncStopButton();
 
@@ -43,6 +49,7 @@ private:
     AppSettings *m_settings;
     SeriesChooser *m_chooser;
     QPushButton *m_stop;
+    DriveSettingsStore *m_store = nullptr;
     QWidget *m_dialogParent;
     QString m_stopTip; ///< the stop button's own tooltip
 };

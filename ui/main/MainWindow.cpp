@@ -194,6 +194,7 @@ void MainWindow::buildToolbar()
     connect(m_stop, &QPushButton::clicked, m_estop, &EmergencyStopControl::stop);
     m_listen =
         new ListenOnlyControl(m_controller, m_settings, m_busPanel->seriesChooser(), m_stop, this);
+    m_listen->setDriveStore(m_driveViews->settingsStore()); // gear ratios: the Encoder view's
     connect(m_connectionBar, &ConnectionBar::takeOverRequested, m_listen,
             &ListenOnlyControl::requestTakeOver);
 }
@@ -251,6 +252,9 @@ void MainWindow::wirePanels()
     });
     connect(m_model, &BusModel::connectionChanged, this,
             [this] { m_connectionBar->setConnectionStatus(m_model->connection()); });
+    connect(m_model, &BusModel::canConditionChanged, this, [this] {
+        m_connectionBar->setCanCondition(m_model->canCondition(), m_model->canConditionMessage());
+    });
 
     connect(scan, &ScanControls::scanRequested, m_controller, &BusController::scan);
     connect(scan, &ScanControls::cancelRequested, m_controller, &BusController::cancelScan);

@@ -43,6 +43,14 @@ struct StartupOptions::Definitions {
     QCommandLineOption baud{QStringLiteral("baud"),
                             tr("Baud rate: 9600 ... 4000000 (default 115200)."),
                             QStringLiteral("N")};
+    QCommandLineOption can{QStringLiteral("can"),
+                           tr("Open a CAN interface through a Qt SerialBus plugin, e.g. "
+                              "socketcan:can0 (see the README, \"Drives on CAN\")."),
+                           QStringLiteral("PLUGIN:INTERFACE")};
+    QCommandLineOption bitRate{QStringLiteral("bitrate"),
+                               tr("CAN bit rate: 1000000, 500000, 250000, 125000 or 100000 "
+                                  "(default 1000000)."),
+                               QStringLiteral("N")};
     QCommandLineOption listen{QStringLiteral("listen"),
                               tr("Listen only: watch a bus another controller runs and transmit "
                                  "nothing, not even an emergency stop.")};
@@ -107,9 +115,9 @@ struct StartupOptions::Definitions {
 
     QList<QCommandLineOption> all() const
     {
-        return {port,   baud,    listen,    noListen,   sim,      simFaults, settings,
-                noScan, view,    select,    shot,       delay,    motion,    lowVoltage,
-                size,   plotAll, minimized, cycleViews, language, palette};
+        return {port,     baud,    can,       bitRate,    listen,   noListen, sim,    simFaults,
+                settings, noScan,  view,      select,     shot,     delay,    motion, lowVoltage,
+                size,     plotAll, minimized, cycleViews, language, palette};
     }
 };
 
@@ -118,8 +126,8 @@ std::optional<StartupOptions> StartupOptions::parse(const QStringList &arguments
     QCommandLineParser p;
     p.setApplicationDescription(
         tr("LK Servo Studio: connect, scan, watch, plot and diagnose LK-TECH servo drives on an "
-           "RS485 bus. With no options it opens the last port used if it is plugged in, else "
-           "the built-in simulated bus."));
+           "RS485 or CAN bus. With no options it opens the last port used if it is plugged in, "
+           "else the built-in simulated bus."));
     p.addPositionalArgument(QStringLiteral("file"),
                             tr("A recording (.lkrec) to replay instead of connecting."),
                             QStringLiteral("[FILE]"));
@@ -146,6 +154,8 @@ std::optional<StartupOptions> StartupOptions::parse(const QStringList &arguments
     } else {
         o.recording = p.positionalArguments().value(0);
         why = o.readBus(p, d);
+        if (why.isEmpty())
+            why = o.readCan(p, d);
         if (why.isEmpty())
             why = o.readDisplay(p, d);
     }
@@ -213,6 +223,34 @@ QString StartupOptions::readBus(const QCommandLineParser &p, const Definitions &
     return {};
 }
 
+QString StartupOptions::readCan(const QCommandLineParser &p, const Definitions &d)
+{
+    if (p.isSet(d.can)) {
+        if (p.isSet(d.port) || p.isSet(d.sim))
+            return tr("--can, --port and --sim exclude each other: pick one bus.");
+        // The first colon only: a virtualcan interface is a URL ("tcp://127.0.0.1:35468/can0").
+        const QString value = p.value(d.can);
+        canPlugin = value.section(QLatin1Char(':'), 0, 0).trimmed();
+        canInterface = value.section(QLatin1Char(':'), 1).trimmed();
+        if (canPlugin.isEmpty() || canInterface.isEmpty())
+            return tr("--can takes PLUGIN:INTERFACE, e.g. socketcan:can0 (found \"%1\").")
+                .arg(value);
+    }
+    if (p.isSet(d.bitRate)) {
+        if (p.isSet(d.port) || p.isSet(d.sim))
+            return tr("--bitrate is the bit rate of a CAN bus; it cannot go with --port or "
+                      "--sim (their rate is --baud).");
+        bool ok = false;
+        bitRate = p.value(d.bitRate).toInt(&ok);
+        if (!ok || !ConnectionChoice::isCanBitRate(bitRate))
+            return tr("--bitrate %1 is not a CAN bit rate of LK drives (1000000, 500000, "
+                      "250000, 125000, 100000).")
+                .arg(p.value(d.bitRate));
+        bitRateGiven = true;
+    }
+    return {};
+}
+
 QString StartupOptions::readDisplay(const QCommandLineParser &p, const Definitions &d)
 {
     view = p.value(d.view);
@@ -251,17 +289,25 @@ StartupOptions::initialChoice(const AppSettings &settings,
                               const std::function<bool(const QString &)> &portExists) const
 {
     ConnectionChoice c = settings.connection();
+    const QString canKey = QStringLiteral("can:%1:%2").arg(c.canPlugin, c.canInterface);
     if (port) {
         c.kind = ConnectionChoice::Kind::Serial;
         c.port = *port;
+    } else if (!canPlugin.isEmpty()) {
+        c.kind = ConnectionChoice::Kind::Can;
+        c.canPlugin = canPlugin;
+        c.canInterface = canInterface;
     } else if (sim) {
         c.kind = ConnectionChoice::Kind::Simulator;
-    } else if (!c.isSimulator() && (c.port.isEmpty() || !portExists(c.port))) {
+    } else if (c.isCan() ? !portExists(canKey)
+                         : !c.isSimulator() && (c.port.isEmpty() || !portExists(c.port))) {
         c.kind = ConnectionChoice::Kind::Simulator;
         c.listenOnly = false; // the built-in bus has no other master to listen to
     }
     if (baudGiven)
         c.baud = baud;
+    if (bitRateGiven)
+        c.bitRate = bitRate;
     if (listenOnly)
         c.listenOnly = *listenOnly;
     return c;
@@ -271,7 +317,7 @@ bool StartupOptions::fellBackToSimulator(
     const AppSettings &settings, const std::function<bool(const QString &)> &portExists) const
 {
     const ConnectionChoice remembered = settings.connection();
-    return !port && !sim && !remembered.isSimulator() &&
+    return !port && !sim && canPlugin.isEmpty() && !remembered.isSimulator() &&
            initialChoice(settings, portExists).isSimulator();
 }
 

@@ -25,6 +25,12 @@ public:
     std::optional<QString> port; ///< --port DEV: a real serial port
     int baud = 115200;           ///< --baud N (one of the nine LK bauds)
     bool baudGiven = false;
+    /// --can PLUGIN:INTERFACE: a CAN interface through a Qt SerialBus plugin ("socketcan",
+    /// "can0"); empty plugin: not given.
+    QString canPlugin;
+    QString canInterface;
+    int bitRate = ConnectionChoice::kDefaultBitRate; ///< --bitrate N (a CAN bit rate)
+    bool bitRateGiven = false;
     /// --listen: the bus opens listen-only (transmits nothing); --no-listen: as bus master.
     /// nullopt: as last time.
     std::optional<bool> listenOnly;
@@ -52,9 +58,10 @@ public:
     /// Parse `arguments` (argv, program name first). nullopt with a message on bad input.
     static std::optional<StartupOptions> parse(const QStringList &arguments, QString *error);
 
-    /// What to connect to at start: --port or --sim when given; else the last choice when it
-    /// is the simulator or a port that is plugged in now; else the built-in simulated bus
-    /// (so that a first run, and a run without the adapter, shows live motors).
+    /// What to connect to at start: --port, --can or --sim when given; else the last choice
+    /// when it is the simulator or a port that is plugged in now; else the built-in simulated
+    /// bus (so that a first run, and a run without the adapter, shows live motors). A CAN
+    /// interface is asked of `portExists` as "can:PLUGIN:INTERFACE" (BusController::portKey).
     ConnectionChoice initialChoice(const AppSettings &settings,
                                    const std::function<bool(const QString &)> &portExists) const;
     /// True when initialChoice fell back to the simulator although a port was remembered.
@@ -66,6 +73,7 @@ private:
     /// Read one group of options; an error message, or empty when fine.
     QString readBus(const QCommandLineParser &parser, const Definitions &definitions);
     QString readDisplay(const QCommandLineParser &parser, const Definitions &definitions);
+    QString readCan(const QCommandLineParser &parser, const Definitions &definitions);
 };
 
 } // namespace lk::ui

@@ -13,6 +13,8 @@ void BusModel::setConnection(const bus::ConnectionStatus &status, bool simulated
 {
     m_connection = status;
     m_simulated = simulated;
+    if (!status.isOpen())
+        setCanCondition(transport::CanBusCondition::Good); // the condition was the link's
     emit connectionChanged();
     // The figures belong to the link that was closed: the next one starts from nothing.
     if (status.state == transport::Transport::State::Closed && m_statistics.bus.requests > 0) {
@@ -23,6 +25,37 @@ void BusModel::setConnection(const bus::ConnectionStatus &status, bool simulated
         m_listenStatistics = {};
         emit listenStatisticsChanged();
     }
+}
+
+void BusModel::setChosenGearRatio(int id, double ratio)
+{
+    const auto it = m_drives.find(id);
+    if (it == m_drives.end() || it->chosenGearRatio == ratio)
+        return;
+    it->chosenGearRatio = ratio;
+    emit drivesChanged();
+}
+
+void BusModel::setLink(protocol::Link link, const QString &canInterface)
+{
+    // "tcp://127.0.0.1:35468/can0" (virtualcan) is channel can0 of its server.
+    const QString name =
+        link == protocol::Link::Can ? canInterface.section(QLatin1Char('/'), -1) : QString();
+    if (m_link == link && m_canInterface == name)
+        return;
+    m_link = link;
+    m_canInterface = name;
+    emit connectionChanged();
+}
+
+void BusModel::setCanCondition(transport::CanBusCondition condition, const QString &message)
+{
+    const QString text = condition == transport::CanBusCondition::Good ? QString() : message;
+    if (condition == m_canCondition && text == m_canMessage)
+        return;
+    m_canCondition = condition;
+    m_canMessage = text;
+    emit canConditionChanged();
 }
 
 QString BusModel::sendBlockedReason() const
@@ -148,6 +181,10 @@ void BusModel::applyTelemetry(const bus::TelemetryBatch &batch)
         emit drivesChanged();
     for (int id : arrived)
         selectArrived(id);
+    // A drive's reply crossed the bus: it is not bus-off, and a frame was acknowledged.
+    if (!batch.isEmpty() && (m_canCondition == transport::CanBusCondition::BusOff ||
+                             m_canCondition == transport::CanBusCondition::NoAcknowledge))
+        setCanCondition(transport::CanBusCondition::Good);
     if (any)
         emit telemetryChanged();
 }

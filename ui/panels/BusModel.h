@@ -9,6 +9,8 @@
 #include <bus/PollPlan.h>
 #include <bus/ScanTypes.h>
 #include <bus/TelemetrySample.h>
+#include <protocol/Series.h>
+#include <transport/CanTransport.h>
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QMap>
@@ -35,6 +37,18 @@ public:
     /// Why actions that send are disabled, a sentence for their tooltips; empty: they are not.
     QString sendBlockedReason() const;
     void setConnection(const bus::ConnectionStatus &status, bool simulated);
+    /// The link the connection is made over (chosen at connect; RS485 until then).
+    protocol::Link link() const { return m_link; }
+    /// The CAN interface's name as candump writes it ("can0"); empty on RS485.
+    QString canInterface() const { return m_canInterface; }
+    /// `canInterface`: the interface as chosen (a virtualcan URL keeps its last part).
+    void setLink(protocol::Link link, const QString &canInterface = {});
+    /// The CAN bus's condition on the open link (Good otherwise) and the transport's sentence
+    /// about it, with its fix. A frame from a drive ends bus-off and no acknowledgement (as
+    /// it does in CanTransport); a new connection starts Good.
+    transport::CanBusCondition canCondition() const { return m_canCondition; }
+    QString canConditionMessage() const { return m_canMessage; }
+    void setCanCondition(transport::CanBusCondition condition, const QString &message = {});
 
     // Drives.
     QVector<int> ids() const { return m_drives.keys().toVector(); }
@@ -45,6 +59,8 @@ public:
     /// What the bus learnt about its drives (BusSession::knownMotorsChanged): series and
     /// models update the drives shown; while listening, drives seen answering are added.
     void applyKnownMotors(const bus::KnownMotors &motors);
+    /// The gear ratio the user chose for drive `id` (no model name to read it from).
+    void setChosenGearRatio(int id, double ratio);
     /// Values for the drives shown; while listening, an ID seen answering becomes a drive.
     void applyTelemetry(const bus::TelemetryBatch &batch);
     /// Host clock the field timestamps use (ms since the model was made).
@@ -74,6 +90,7 @@ public:
 
 signals:
     void connectionChanged();
+    void canConditionChanged();
     void drivesChanged(); ///< the set of drives or their identities changed
     void telemetryChanged();
     void statisticsChanged();
@@ -91,6 +108,10 @@ private:
 
     bus::ConnectionStatus m_connection;
     bool m_simulated = false;
+    protocol::Link m_link = protocol::Link::Rs485;
+    QString m_canInterface;
+    transport::CanBusCondition m_canCondition = transport::CanBusCondition::Good;
+    QString m_canMessage;
     QMap<int, DriveRecord> m_drives;
     bus::BusStatistics m_statistics;
     bus::ListenStatistics m_listenStatistics;

@@ -26,6 +26,7 @@ BusPanel::BusPanel(BusModel *model, QWidget *parent)
     layout->addWidget(m_series);
     auto sync = [this, model] {
         m_scan->setCanSend(model->canSend());
+        m_scan->setLink(model->link());
         m_scan->setBaud(model->connection().baud);
         SendBlockedTips::apply(this, model->isListening() ? model->sendBlockedReason() : QString());
     };

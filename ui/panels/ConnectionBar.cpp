@@ -39,26 +39,22 @@ QString PortEntry::label() const
     return text;
 }
 
-ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent), m_lister(&systemPorts)
+ConnectionBar::ConnectionBar(QWidget *parent)
+    : QWidget(parent), m_canPlugins(&transport::CanTransport::plugins),
+      m_canInterfaces(&transport::CanTransport::interfaces), m_lister(&systemPorts)
 {
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(4, 2, 4, 2);
 
-    m_port = new QComboBox(this);
-    m_port->setObjectName(QStringLiteral("portCombo"));
-    m_port->setEditable(true); // a pseudo-terminal from lksim is typed in, it is never listed
-    m_port->setInsertPolicy(QComboBox::NoInsert);
-    m_port->setMinimumContentsLength(28);
-    m_port->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_port->setToolTip(tr("Serial port of the USB-RS485 adapter, or the built-in simulated bus. "
-                          "You can also type a device path, e.g. a pseudo-terminal from lksim."));
-
-    m_baud = new QComboBox(this);
-    m_baud->setObjectName(QStringLiteral("baudCombo"));
-    for (int baud : bus::BusTiming::standardBauds())
-        m_baud->addItem(QString::number(baud), baud);
-    m_baud->setCurrentIndex(m_baud->findData(bus::BusTiming::kDefaultBaud));
-    m_baud->setToolTip(tr("Baud rate set on the drives (DIP switches or the vendor's tool)"));
+    m_link = new QComboBox(this);
+    m_link->setObjectName(QStringLiteral("linkCombo"));
+    m_link->addItem(tr("RS485"), false);
+    m_link->addItem(tr("CAN"), true);
+    m_link->setToolTip(tr("How the drives are wired to this computer: a USB-RS485 adapter, or a "
+                          "CAN adapter (candleLight/gs_usb, PCAN-USB, CANable; see README, "
+                          "\"Drives on CAN\")"));
+    m_rs485Row = buildRs485Row();
+    m_canRow = buildCanRow();
 
     m_listenOnly = new QCheckBox(tr("Listen only"), this);
     m_listenOnly->setObjectName(QStringLiteral("listenOnly"));
@@ -87,10 +83,9 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent), m_lister(&syste
     m_takeOver->setVisible(false);
     connect(m_takeOver, &QPushButton::clicked, this, &ConnectionBar::takeOverRequested);
 
-    layout->addWidget(new QLabel(tr("Port:"), this));
-    layout->addWidget(m_port, 1);
-    layout->addWidget(new QLabel(tr("Baud:"), this));
-    layout->addWidget(m_baud);
+    layout->addWidget(m_link);
+    layout->addWidget(m_rs485Row, 1);
+    layout->addWidget(m_canRow, 1);
     layout->addWidget(m_listenOnly);
     layout->addWidget(m_connect);
     layout->addWidget(m_autoReconnect);
@@ -105,10 +100,116 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent), m_lister(&syste
     connect(m_connect, &QPushButton::clicked, this, &ConnectionBar::onConnectClicked);
     connect(m_autoReconnect, &QCheckBox::toggled, this, [this] { emit choiceChanged(choice()); });
     connect(m_listenOnly, &QCheckBox::toggled, this, [this] { emit choiceChanged(choice()); });
+    connect(m_link, qOverload<int>(&QComboBox::activated), this, [this] {
+        showLinkWidgets();
+        emit choiceChanged(choice());
+    });
 
     m_ports = m_lister();
     rebuildPortItems();
+    rebuildCanItems();
+    showLinkWidgets();
     updateState();
+}
+
+QWidget *ConnectionBar::buildRs485Row()
+{
+    auto *row = new QWidget(this);
+    auto *layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_port = new QComboBox(row);
+    m_port->setObjectName(QStringLiteral("portCombo"));
+    m_port->setEditable(true); // a pseudo-terminal from lksim is typed in, it is never listed
+    m_port->setInsertPolicy(QComboBox::NoInsert);
+    m_port->setMinimumContentsLength(28);
+    m_port->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_port->setToolTip(tr("Serial port of the USB-RS485 adapter, or the built-in simulated bus. "
+                          "You can also type a device path, e.g. a pseudo-terminal from lksim."));
+
+    m_baud = new QComboBox(row);
+    m_baud->setObjectName(QStringLiteral("baudCombo"));
+    for (int baud : bus::BusTiming::standardBauds())
+        m_baud->addItem(QString::number(baud), baud);
+    m_baud->setCurrentIndex(m_baud->findData(bus::BusTiming::kDefaultBaud));
+    m_baud->setToolTip(tr("Baud rate set on the drives (DIP switches or the vendor's tool)"));
+    layout->addWidget(new QLabel(tr("Port:"), row));
+    layout->addWidget(m_port, 1);
+    layout->addWidget(new QLabel(tr("Baud:"), row));
+    layout->addWidget(m_baud);
+    return row;
+}
+
+QWidget *ConnectionBar::buildCanRow()
+{
+    auto *row = new QWidget(this);
+    row->setObjectName(QStringLiteral("canRow"));
+    auto *layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_canPlugin = new QComboBox(row);
+    m_canPlugin->setObjectName(QStringLiteral("canPluginCombo"));
+    m_canPlugin->setToolTip(tr("The Qt SerialBus plugin: socketcan for every adapter the Linux "
+                               "kernel knows (candleLight/gs_usb, PCAN-USB, CANable through "
+                               "slcand, vcan), virtualcan for tests without hardware"));
+    m_canInterface = new QComboBox(row);
+    m_canInterface->setObjectName(QStringLiteral("canInterfaceCombo"));
+    m_canInterface->setEditable(true); // an interface not listed yet can be typed in
+    m_canInterface->setInsertPolicy(QComboBox::NoInsert);
+    m_canInterface->setMinimumContentsLength(10);
+    m_canInterface->setToolTip(tr("The CAN interface the plugin reports (can0, slcan0, vcan0); "
+                                  "`ip link show` lists them"));
+    m_bitRate = new QComboBox(row);
+    m_bitRate->setObjectName(QStringLiteral("bitRateCombo"));
+    for (int rate : ConnectionChoice::canBitRates())
+        m_bitRate->addItem(Format::bitRate(rate), rate);
+    m_bitRate->setCurrentIndex(m_bitRate->findData(ConnectionChoice::kDefaultBitRate));
+    m_bitRate->setToolTip(tr("The drives' CAN bit rate (1 Mbit/s unless changed with the vendor's "
+                             "tool over RS485). lkstudio sets it on the interface where the "
+                             "system allows; otherwise it shows the command to run as root."));
+    layout->addWidget(new QLabel(tr("Plugin:"), row));
+    layout->addWidget(m_canPlugin);
+    layout->addWidget(new QLabel(tr("Interface:"), row));
+    layout->addWidget(m_canInterface, 1);
+    layout->addWidget(new QLabel(tr("Bit rate:"), row));
+    layout->addWidget(m_bitRate);
+    connect(m_canPlugin, qOverload<int>(&QComboBox::activated), this, [this] {
+        rebuildCanItems();
+        emit choiceChanged(choice());
+    });
+    return row;
+}
+
+void ConnectionBar::setCanListers(CanPluginLister plugins, CanInterfaceLister interfaces)
+{
+    m_canPlugins = std::move(plugins);
+    m_canInterfaces = std::move(interfaces);
+    rebuildCanItems();
+}
+
+void ConnectionBar::rebuildCanItems()
+{
+    const ConnectionChoice keep = choice();
+    const QStringList plugins = m_canPlugins();
+    if (plugins != m_pluginList || m_canPlugin->count() == 0) {
+        m_pluginList = plugins;
+        const QSignalBlocker block(m_canPlugin);
+        m_canPlugin->clear();
+        m_canPlugin->addItems(plugins);
+    }
+    const QStringList interfaces = m_canInterfaces(keep.canPlugin);
+    if (interfaces != m_interfaceList) {
+        m_interfaceList = interfaces;
+        const QSignalBlocker block(m_canInterface);
+        m_canInterface->clear();
+        m_canInterface->addItems(interfaces);
+    }
+    setChoice(keep);
+}
+
+void ConnectionBar::showLinkWidgets()
+{
+    const bool can = m_link->currentData().toBool();
+    m_rs485Row->setVisible(!can);
+    m_canRow->setVisible(can);
 }
 
 void ConnectionBar::setPortLister(PortLister lister)
@@ -138,6 +239,10 @@ QList<PortEntry> ConnectionBar::systemPorts()
 
 void ConnectionBar::refreshPorts()
 {
+    if (m_link->currentData().toBool()) {
+        rebuildCanItems(); // on CAN the interfaces are what comes and goes
+        return;
+    }
     const QList<PortEntry> now = m_lister();
     if (now == m_ports)
         return;
@@ -170,6 +275,10 @@ ConnectionChoice ConnectionBar::choice() const
     c.baud = m_baud->currentData().toInt();
     c.autoReconnect = m_autoReconnect->isChecked();
     c.listenOnly = m_listenOnly->isChecked();
+    if (!m_canPlugin->currentText().isEmpty())
+        c.canPlugin = m_canPlugin->currentText();
+    c.canInterface = m_canInterface->currentText().trimmed();
+    c.bitRate = m_bitRate->currentData().toInt();
     const int i = m_port->currentIndex();
     const QString text = m_port->currentText().trimmed();
     if (i >= 0 && text == m_port->itemText(i)) {
@@ -180,6 +289,8 @@ ConnectionChoice ConnectionBar::choice() const
             text.isEmpty() ? ConnectionChoice::Kind::Simulator : ConnectionChoice::Kind::Serial;
         c.port = text;
     }
+    if (m_link->currentData().toBool())
+        c.kind = ConnectionChoice::Kind::Can; // the serial port stays chosen for RS485
     return c;
 }
 
@@ -190,7 +301,9 @@ void ConnectionBar::setChoice(const ConnectionChoice &c)
         m_baud->setCurrentIndex(baud);
     m_autoReconnect->setChecked(c.autoReconnect);
     m_listenOnly->setChecked(c.listenOnly);
-    if (c.isSimulator()) {
+    setCanChoice(c);
+    // On CAN the RS485 side keeps its port for a switch back: a port named is a serial port.
+    if (c.isSimulator() || (c.isCan() && c.port.isEmpty())) {
         m_port->setCurrentIndex(0);
         return;
     }
@@ -206,9 +319,40 @@ void ConnectionBar::setChoice(const ConnectionChoice &c)
     m_port->setEditText(c.port);
 }
 
+void ConnectionBar::setCanChoice(const ConnectionChoice &c)
+{
+    m_link->setCurrentIndex(c.isCan() ? 1 : 0);
+    showLinkWidgets();
+    int plugin = m_canPlugin->findText(c.canPlugin);
+    if (plugin < 0 && !c.canPlugin.isEmpty()) {
+        // Remembered but not found now (its library is gone): keep it, opening says why.
+        m_canPlugin->addItem(c.canPlugin);
+        plugin = m_canPlugin->count() - 1;
+    }
+    m_canPlugin->setCurrentIndex(plugin);
+    const int iface = m_canInterface->findText(c.canInterface);
+    m_canInterface->setCurrentIndex(iface);
+    if (iface < 0)
+        m_canInterface->setEditText(c.canInterface); // not up yet: keep the name as typed
+    const int rate = m_bitRate->findData(c.bitRate);
+    if (rate >= 0)
+        m_bitRate->setCurrentIndex(rate);
+}
+
+void ConnectionBar::setCanCondition(transport::CanBusCondition condition, const QString &message)
+{
+    m_canCondition = condition;
+    m_canMessage = condition == transport::CanBusCondition::Good ? QString() : message;
+    updateState();
+}
+
 void ConnectionBar::setConnectionStatus(const bus::ConnectionStatus &status)
 {
     m_status = status;
+    if (!status.isOpen()) { // a new link starts with a good bus until its controller says
+        m_canCondition = transport::CanBusCondition::Good;
+        m_canMessage.clear();
+    }
     if (status.isOpen()) {
         m_deniedPort.clear(); // the port opened after all: the advice is done
         m_accessHelp->setVisible(false);
@@ -250,8 +394,12 @@ void ConnectionBar::updateState()
 {
     using S = transport::Transport::State;
     const bool closed = m_status.state == S::Closed;
+    m_link->setEnabled(closed);
     m_port->setEnabled(closed);
     m_baud->setEnabled(closed);
+    m_canPlugin->setEnabled(closed);
+    m_canInterface->setEnabled(closed);
+    m_bitRate->setEnabled(closed);
     m_listenOnly->setEnabled(closed);
     // Taking over is for a link that is up and listening; a closed one simply reconnects.
     m_takeOver->setVisible(m_status.state == S::Open && !m_status.canTransmit);
@@ -271,18 +419,28 @@ void ConnectionBar::updateState()
         role = m_status.canTransmit ? StatusColors::Role::Ok : StatusColors::Role::Info;
     else if (m_status.state == S::Disconnected)
         role = StatusColors::Role::Error;
+    if (m_status.isOpen() && Format::canConditionIsFault(m_canCondition))
+        role = StatusColors::Role::Warning; // open, but the bus does not carry frames well
     const QString color = StatusColors::text(role, StatusColors::current()).name();
     m_state->setText(QStringLiteral("<span style=\"color:%1\">\u25cf</span> %2")
                          .arg(color, stateText().toHtmlEscaped()));
-    m_state->setToolTip(Format::connectionDetail(m_status));
+    m_state->setToolTip(
+        m_canMessage.isEmpty()
+            ? Format::connectionDetail(m_status)
+            : QStringLiteral("%1\n%2").arg(Format::connectionDetail(m_status), m_canMessage));
 }
 
 QString ConnectionBar::stateText() const
 {
     // Listening is said first and plainly: nothing this tool does reaches the bus.
-    if (m_status.isOpen() && !m_status.canTransmit)
-        return tr("Listen-only: this tool transmits nothing (%1)").arg(m_status.description);
-    return Format::connectionState(m_status);
+    QString text =
+        m_status.isOpen() && !m_status.canTransmit
+            ? tr("Listen-only: this tool transmits nothing (%1)").arg(m_status.description)
+            : Format::connectionState(m_status);
+    // The CAN bus's condition belongs to the open link: said beside it, never "link lost".
+    if (m_status.isOpen() && m_canCondition != transport::CanBusCondition::Good)
+        text += QStringLiteral(" \u2013 ") + Format::canCondition(m_canCondition);
+    return text;
 }
 
 void ConnectionBar::changeEvent(QEvent *event)

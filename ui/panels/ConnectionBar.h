@@ -3,6 +3,7 @@
 #include "ConnectionChoice.h"
 
 #include <bus/ConnectionStatus.h>
+#include <transport/CanTransport.h>
 #include <transport/Transport.h>
 
 #include <QtCore/QList>
@@ -36,14 +37,19 @@ struct PortEntry {
     QString label() const;
 };
 
-/// Top bar: port (serial ports with USB description and VID:PID, or the built-in simulator),
-/// baud, listen only, connect/disconnect, auto-reconnect, and the link state; while a link
-/// listens, "Take over the bus".  The port list refreshes
-/// itself about once a second so that adapters coming and going show up without a click.
+/// Top bar: the link (RS485 or CAN); for RS485 the port (serial ports with USB description and
+/// VID:PID, or the built-in simulator) and baud, for CAN the Qt SerialBus plugin, its
+/// interface and the bit rate; listen only, connect/disconnect, auto-reconnect, and the link
+/// state (on CAN with the bus condition: bus-off, error-passive, no acknowledgement); while a
+/// link listens, "Take over the bus". The port and interface lists refresh themselves about
+/// once a second so that adapters coming and going show up without a click.
 class ConnectionBar : public QWidget {
     Q_OBJECT
 public:
     using PortLister = std::function<QList<PortEntry>()>;
+    /// The CAN plugins Qt finds, and the interfaces of one of them (tests replace them).
+    using CanPluginLister = std::function<QStringList()>;
+    using CanInterfaceLister = std::function<QStringList(const QString &plugin)>;
 
     explicit ConnectionBar(QWidget *parent = nullptr);
 
@@ -51,12 +57,18 @@ public:
     void setPortLister(PortLister lister);
     static QList<PortEntry> systemPorts();
     QList<PortEntry> ports() const { return m_ports; }
+    /// Replace how CAN plugins and interfaces are listed; the default asks QCanBus
+    /// (transport::CanTransport::plugins() and interfaces()).
+    void setCanListers(CanPluginLister plugins, CanInterfaceLister interfaces);
 
     ConnectionChoice choice() const;
     void setChoice(const ConnectionChoice &choice);
 
     /// Show the link state; the port and baud cannot change while a link is open.
     void setConnectionStatus(const bus::ConnectionStatus &status);
+    /// The CAN bus condition of the open link and the transport's sentence about it (with its
+    /// fix), shown in the state; Good clears it.
+    void setCanCondition(transport::CanBusCondition condition, const QString &message);
     /// The button that explains how to get permission for the port (shown after a refusal).
     QToolButton *accessHelpButton() const { return m_accessHelp; }
     /// "Take over the bus", shown while the open link listens only.
@@ -85,9 +97,26 @@ protected:
 
 private:
     void rebuildPortItems();
+    void rebuildCanItems();
+    void showLinkWidgets();
+    void setCanChoice(const ConnectionChoice &choice);
+    QWidget *buildRs485Row();
+    QWidget *buildCanRow();
     void onConnectClicked();
     void updateState();
 
+    QComboBox *m_link = nullptr;
+    QWidget *m_rs485Row = nullptr;
+    QWidget *m_canRow = nullptr;
+    QComboBox *m_canPlugin = nullptr;
+    QComboBox *m_canInterface = nullptr;
+    QComboBox *m_bitRate = nullptr;
+    CanPluginLister m_canPlugins;
+    CanInterfaceLister m_canInterfaces;
+    QStringList m_pluginList;    ///< as last listed
+    QStringList m_interfaceList; ///< of the chosen plugin, as last listed
+    transport::CanBusCondition m_canCondition = transport::CanBusCondition::Good;
+    QString m_canMessage;
     QComboBox *m_port = nullptr;
     QComboBox *m_baud = nullptr;
     QPushButton *m_connect = nullptr;

@@ -39,7 +39,7 @@ void DriveRecord::apply(const bus::TelemetrySample &s, qint64 nowMs)
 std::optional<double> DriveRecord::gearRatio() const
 {
     if (!nameInfo.gearFromName)
-        return std::nullopt;
+        return chosenGearRatio;
     return nameInfo.gearRatio;
 }
 

@@ -21,7 +21,9 @@ struct DriveRecord {
     std::optional<protocol::ModelInfo> model; ///< from read_model, when the scan got it
     std::optional<protocol::Series> series;   ///< nullopt: unknown
     motor::ModelNameInfo nameInfo;            ///< gear ratio and encoder bits from the name
-    int baud = 0;                             ///< where the scan found it
+    /// The gear ratio the user chose for a drive without a model name (CAN, listening).
+    std::optional<double> chosenGearRatio;
+    int baud = 0;                ///< where the scan found it
     bus::TelemetrySample latest; ///< every field ever received, merged; `fields` says which
     std::array<qint64, kFieldCount> updatedMs{}; ///< host ms (BusModel clock) per field; 0 never
 
@@ -39,7 +41,8 @@ struct DriveRecord {
     }
     bool reportsPower() const { return series == protocol::Series::MS; }
     bool hasPhaseCurrents() const { return series != protocol::Series::MS; }
-    /// The ratio from the motor name ("-i10"); nullopt when the name does not say.
+    /// The ratio from the motor name ("-i10"), else the one the user chose; nullopt when
+    /// neither says.
     std::optional<double> gearRatio() const;
     QString seriesText() const; ///< "MF", or "?" when unknown
     QString modelText() const;  ///< "motor name (driver name)" or empty

@@ -97,6 +97,39 @@ QString Format::sentence(const QString &text)
     return s;
 }
 
+QString Format::bitRate(int bitsPerSecond)
+{
+    if (bitsPerSecond >= 1000000 && bitsPerSecond % 1000000 == 0)
+        return tr("%1 Mbit/s").arg(bitsPerSecond / 1000000);
+    if (bitsPerSecond >= 1000 && bitsPerSecond % 1000 == 0)
+        return tr("%1 kbit/s").arg(bitsPerSecond / 1000);
+    return tr("%1 bit/s").arg(bitsPerSecond);
+}
+
+QString Format::canCondition(transport::CanBusCondition condition)
+{
+    using C = transport::CanBusCondition;
+    switch (condition) {
+    case C::Good:
+        return {};
+    case C::Warning:
+        return tr("CAN errors (warning level), frames still get through");
+    case C::ErrorPassive:
+        return tr("CAN error-passive: many frames fail");
+    case C::BusOff:
+        return tr("CAN bus-off: the adapter stopped sending");
+    case C::NoAcknowledge:
+        return tr("no acknowledgement: no drive powered, or another bit rate");
+    }
+    return {};
+}
+
+bool Format::canConditionIsFault(transport::CanBusCondition condition)
+{
+    return condition != transport::CanBusCondition::Good &&
+           condition != transport::CanBusCondition::Warning;
+}
+
 QString Format::duration(double seconds)
 {
     if (seconds < 1.0)

@@ -2,6 +2,7 @@
 
 #include <bus/ConnectionStatus.h>
 #include <protocol/Series.h>
+#include <transport/CanTransport.h>
 #include <transport/Transport.h>
 
 #include <QtCore/QCoreApplication>
@@ -40,6 +41,14 @@ public:
     static QString connectionDetail(const bus::ConnectionStatus &status);
     /// `text` as a sentence: capital first letter, final full stop.
     static QString sentence(const QString &text);
+
+    /// "1 Mbit/s", "500 kbit/s", "125 kbit/s": a CAN bit rate.
+    static QString bitRate(int bitsPerSecond);
+    /// The CAN bus condition in a few words for the link state ("bus-off", "no
+    /// acknowledgement"); the transport's message gives the cause and the fix. Empty for Good.
+    static QString canCondition(transport::CanBusCondition condition);
+    /// Frames fail in this condition (everything but Good and Warning).
+    static bool canConditionIsFault(transport::CanBusCondition condition);
 
     /// "5.2 s" / "850 ms" for an estimated duration.
     static QString duration(double seconds);

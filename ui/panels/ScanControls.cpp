@@ -1,10 +1,11 @@
 #include "ScanControls.h"
 
-#include <bus/BusConfig.h>
-
+#include "ConnectionChoice.h"
 #include "Format.h"
 #include "ThemedIcon.h"
 
+#include <bus/BusConfig.h>
+#include <bus/BusTiming.h>
 #include <bus/Scanner.h>
 
 #include <QtGui/QIcon>
@@ -87,7 +88,7 @@ bus::ScanOptions ScanControls::options() const
     bus::ScanOptions o;
     o.firstId = m_first->value();
     o.lastId = qMax(m_first->value(), m_last->value());
-    o.sweepBauds = m_sweep->isChecked();
+    o.sweepBauds = m_sweep->isChecked() && m_link == protocol::Link::Rs485;
     return o;
 }
 
@@ -102,6 +103,19 @@ void ScanControls::setCanSend(bool canSend)
 {
     m_canSend = canSend;
     updateEnabled();
+}
+
+void ScanControls::setLink(protocol::Link link)
+{
+    m_link = link;
+    m_sweep->setVisible(link == protocol::Link::Rs485); // the choice is kept for RS485
+    // Until the link reports its own rate, the estimate is for the link's default.
+    if (link == protocol::Link::Can && !ConnectionChoice::isCanBitRate(m_baud))
+        m_baud = ConnectionChoice::kDefaultBitRate;
+    else if (link == protocol::Link::Rs485 && !bus::BusTiming::isStandardBaud(m_baud))
+        m_baud = bus::BusTiming::kDefaultBaud;
+    if (!m_scanning)
+        showEstimate();
 }
 
 void ScanControls::setBaud(int baud)
@@ -168,11 +182,17 @@ void ScanControls::onScanProgress(const bus::ScanProgress &p)
     } else {
         left = Format::duration(expectedSeconds(options()) * remaining / qMax(1, p.total));
     }
-    m_status->setText(
-        tr("ID %1 at %2 baud \u00b7 %n drive(s) found \u00b7 about %3 left", nullptr, p.found)
-            .arg(p.id)
-            .arg(p.baud)
-            .arg(left));
+    if (m_link == protocol::Link::Can)
+        m_status->setText(
+            tr("ID %1 at %2 \u00b7 %n drive(s) found \u00b7 about %3 left", nullptr, p.found)
+                .arg(p.id)
+                .arg(Format::bitRate(p.baud), left));
+    else
+        m_status->setText(
+            tr("ID %1 at %2 baud \u00b7 %n drive(s) found \u00b7 about %3 left", nullptr, p.found)
+                .arg(p.id)
+                .arg(p.baud)
+                .arg(left));
 }
 
 void ScanControls::onScanFinished(const bus::ScanSummary &s)
@@ -218,7 +238,12 @@ void ScanControls::updateEnabled()
 void ScanControls::showEstimate()
 {
     const double s = expectedSeconds(options());
-    m_status->setText(tr("Scan takes about %1 at %2 baud").arg(Format::duration(s)).arg(m_baud));
+    if (m_link == protocol::Link::Can)
+        m_status->setText(
+            tr("Scan takes about %1 at %2").arg(Format::duration(s), Format::bitRate(m_baud)));
+    else
+        m_status->setText(
+            tr("Scan takes about %1 at %2 baud").arg(Format::duration(s)).arg(m_baud));
 }
 
 } // namespace lk::ui

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <bus/ScanTypes.h>
+#include <protocol/Series.h>
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QHash>
@@ -30,6 +31,9 @@ public:
     void setCanSend(bool canSend);
     /// The baud of the link, which the estimate is for.
     void setBaud(int baud);
+    /// The link: a CAN bus has one bit rate, set on the interface, so there is no baud sweep
+    /// there (the option is hidden and never asked for) and the rate is said as a bit rate.
+    void setLink(protocol::Link link);
     /// Seconds for `options` as the scanner spends them on a sparse bus with the default
     /// margins (bus::Scanner::estimatedSeconds: per ID the first pass's probe timeout, per
     /// baud the listening for late replies). It does not follow the adaptive margin, which
@@ -67,6 +71,7 @@ private:
     bool m_scanning = false;
     bool m_canSend = false;
     int m_baud = 115200;
+    protocol::Link m_link = protocol::Link::Rs485;
     QHash<int, double> m_measuredPerId;     ///< seconds per ID of the last complete scan, by baud
     QVector<QPair<int, int>> m_lastAnswers; ///< (baud, ID) of each answer of the last scan
     QElapsedTimer m_elapsed;

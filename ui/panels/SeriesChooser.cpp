@@ -3,6 +3,7 @@
 #include "BusModel.h"
 
 #include <QtWidgets/QComboBox>
+#include <QtWidgets/QDoubleSpinBox>
 #include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QLabel>
 
@@ -14,7 +15,8 @@ const protocol::Series kSeries[] = {protocol::Series::MS, protocol::Series::MF,
 } // namespace
 
 SeriesChooser::SeriesChooser(BusModel *model, QWidget *parent)
-    : QWidget(parent), m_model(model), m_label(new QLabel(this)), m_combo(new QComboBox(this))
+    : QWidget(parent), m_model(model), m_label(new QLabel(this)), m_combo(new QComboBox(this)),
+      m_ratioLabel(new QLabel(tr("Gear ratio:"), this)), m_ratio(new QDoubleSpinBox(this))
 {
     setObjectName(QStringLiteral("seriesChooser"));
     m_combo->setObjectName(QStringLiteral("seriesCombo"));
@@ -24,12 +26,23 @@ SeriesChooser::SeriesChooser(BusModel *model, QWidget *parent)
     m_combo->setToolTip(tr("No model reply (0x12) told this drive's series. MS drives report "
                            "power where MF, MG and MH report torque current: choose it so that "
                            "the values are decoded right. Remembered for this port and ID."));
+    m_ratio->setObjectName(QStringLiteral("gearRatioSpin"));
+    m_ratio->setRange(1, kMaxGearRatio);
+    m_ratio->setDecimals(2);
+    m_ratio->setPrefix(QStringLiteral("1 : "));
+    m_ratio->setKeyboardTracking(false); // one choice when the user is done, not per digit
+    m_ratio->setToolTip(tr("No model name told this drive's gearbox (CAN drives have no model "
+                           "read): angles and speeds at the output shaft use this ratio. "
+                           "Remembered for this drive."));
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_label);
     layout->addWidget(m_combo);
+    layout->addWidget(m_ratioLabel);
+    layout->addWidget(m_ratio);
     layout->addStretch(1);
     connect(m_combo, qOverload<int>(&QComboBox::activated), this, &SeriesChooser::onActivated);
+    connect(m_ratio, &QDoubleSpinBox::editingFinished, this, &SeriesChooser::onRatioEdited);
     connect(m_model, &BusModel::drivesChanged, this, &SeriesChooser::refresh);
     connect(m_model, &BusModel::currentDriveChanged, this, &SeriesChooser::refresh);
     refresh();
@@ -54,6 +67,22 @@ void SeriesChooser::refresh()
     m_label->setText(tr("Series of drive %1:").arg(id));
     const QSignalBlocker block(m_combo);
     m_combo->setCurrentIndex(d->series ? m_combo->findData(static_cast<int>(*d->series)) : 0);
+    // A model name gives the ratio ("-i10"); without one the user does.
+    const bool ratioShown = d->nameInfo.name.isEmpty();
+    m_ratioLabel->setVisible(ratioShown);
+    m_ratio->setVisible(ratioShown);
+    const QSignalBlocker blockRatio(m_ratio);
+    m_ratio->setValue(d->chosenGearRatio.value_or(1.0));
+}
+
+void SeriesChooser::onRatioEdited()
+{
+    const int id = m_model->currentId();
+    const DriveRecord *d = m_model->drive(id);
+    if (!d || !d->nameInfo.name.isEmpty() || d->chosenGearRatio == m_ratio->value())
+        return;
+    m_chosen.insert(id);
+    emit gearRatioChosen(id, m_ratio->value());
 }
 
 void SeriesChooser::onActivated(int index)

@@ -6,6 +6,7 @@
 #include <QtWidgets/QWidget>
 
 class QComboBox;
+class QDoubleSpinBox;
 class QLabel;
 
 namespace lk::ui {
@@ -13,9 +14,11 @@ namespace lk::ui {
 class BusModel;
 
 /// The series of the current drive, chosen by the user where the bus could not learn it (no
-/// 0x12 model reply seen, typically a drive only listened to): MS, MF, MG or MH. Shown while
-/// the current drive's series is unknown or was chosen here; until then an MS drive's power
-/// is not shown as current anywhere.
+/// 0x12 model reply seen: a drive only listened to, or any drive on CAN, which has no model
+/// read): MS, MF, MG or MH, and beside it the gear ratio, which the model name would have
+/// given. Shown while the current drive's series is unknown or was chosen here; until then an
+/// MS drive's power is not shown as current anywhere, and torque, power and open loop stay
+/// refused (the motion checks' rule for an unknown series).
 class SeriesChooser : public QWidget {
     Q_OBJECT
 public:
@@ -23,17 +26,24 @@ public:
 
     /// Drive `id`'s series is the user's choice (made here, or remembered in the settings).
     void markChosen(int id);
+    /// The largest gear ratio offered (EncoderView's bound).
+    static constexpr double kMaxGearRatio = 1000;
 
 signals:
     void seriesChosen(int id, lk::protocol::Series series);
+    /// The user set the gear ratio of drive `id` (1 : ratio), for a drive without a model name.
+    void gearRatioChosen(int id, double ratio);
 
 private:
     void refresh();
     void onActivated(int index);
+    void onRatioEdited();
 
     BusModel *m_model;
     QLabel *m_label;
     QComboBox *m_combo;
+    QLabel *m_ratioLabel;
+    QDoubleSpinBox *m_ratio;
     QSet<int> m_chosen; ///< drives whose series the user chose (on this bus)
 };
 

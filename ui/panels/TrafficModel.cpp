@@ -2,6 +2,7 @@
 
 #include "StatusColors.h"
 
+#include <protocol/CanRecord.h>
 #include <protocol/Command.h>
 #include <protocol/FieldJson.h>
 #include <protocol/FieldText.h>
@@ -23,6 +24,21 @@ QString formatFields(const bus::TrafficEvent &e)
                          ? protocol::FrameDirection::Request
                          : e.frame.direction().value_or(protocol::FrameDirection::Reply);
     return protocol::FieldText::frame(e.frame, dir, e.context);
+}
+
+/// The CAN records `bytes` hold; nullopt when they are not whole, readable records.
+std::optional<QList<protocol::CanRecord>> canRecords(const QByteArray &bytes)
+{
+    if (bytes.isEmpty() || bytes.size() % protocol::CanRecord::kSize != 0)
+        return std::nullopt;
+    QList<protocol::CanRecord> out;
+    for (qsizetype at = 0; at < bytes.size(); at += protocol::CanRecord::kSize) {
+        const auto r = protocol::CanRecord::decode(bytes.constData() + at);
+        if (!r)
+            return std::nullopt;
+        out << *r;
+    }
+    return out;
 }
 
 } // namespace
@@ -161,6 +177,53 @@ QString TrafficModel::fieldsText(int row) const
     return r.fields;
 }
 
+bool TrafficModel::isCanEvent(const bus::TrafficEvent &e) const
+{
+    if (e.kind == Kind::Sent || e.kind == Kind::Frame)
+        return e.context.onCan(); // the link the bus thread parsed it with
+    return m_link == protocol::Link::Can;
+}
+
+QString TrafficModel::rawText(int row) const
+{
+    const auto &e = m_rows.at(row).event;
+    if (isCanEvent(e)) {
+        if (const auto records = canRecords(e.bytes)) {
+            QStringList frames;
+            for (const protocol::CanRecord &r : *records)
+                frames << r.candumpText();
+            return frames.join(QLatin1Char(' '));
+        }
+    }
+    return protocol::FieldJson::hexText(e.bytes); // RS485, or what is no whole CAN record
+}
+
+QStringList TrafficModel::candumpLogLines(int row, const QString &interfaceName) const
+{
+    const auto &e = m_rows.at(row).event;
+    if (!isCanEvent(e))
+        return {};
+    const auto records = canRecords(e.bytes);
+    if (!records)
+        return {};
+    QStringList lines;
+    for (protocol::CanRecord r : *records) {
+        // One clock for every line, the session's: sent records carry no time of their own.
+        r.timestampUs = qRound64(e.time * 1e6);
+        lines << r.candumpLogLine(interfaceName);
+    }
+    return lines;
+}
+
+void TrafficModel::setLink(protocol::Link link)
+{
+    if (m_link == link)
+        return;
+    m_link = link;
+    if (!m_rows.isEmpty())
+        emit dataChanged(index(0, Raw), index(int(m_rows.size()) - 1, Raw));
+}
+
 QString TrafficModel::exportLine(int row) const
 {
     const auto &e = m_rows.at(row).event;
@@ -177,7 +240,7 @@ QString TrafficModel::exportLine(int row) const
         details += QStringLiteral(": ") + fields;
     if (e.bytes.isEmpty())
         return QStringLiteral("# ") + details;
-    return protocol::FieldJson::hexText(e.bytes) + QStringLiteral("  # ") + details;
+    return rawText(row) + QStringLiteral("  # ") + details;
 }
 
 QVariant TrafficModel::headerData(int section, Qt::Orientation orientation, int role) const
@@ -223,7 +286,7 @@ QVariant TrafficModel::data(const QModelIndex &index, int role) const
         case Fields:
             return fieldsText(row);
         case Raw:
-            return protocol::FieldJson::hexText(e.bytes);
+            return rawText(row);
         default:
             return {};
         }

@@ -1,9 +1,11 @@
 #pragma once
 
 #include <bus/TrafficEvent.h>
+#include <protocol/Series.h>
 
 #include <QtCore/QAbstractTableModel>
 #include <QtCore/QList>
+#include <QtCore/QStringList>
 
 #include <array>
 
@@ -20,7 +22,8 @@ struct TrafficCounts {
 };
 
 /// The decoded bus log: a bounded ring of traffic events (oldest rows drop out past the
-/// capacity) with time, direction, ID, command, a fields summary and the raw hex. A row's
+/// capacity) with time, direction, ID, command, a fields summary and the raw bytes (hex on
+/// RS485, candump notation `141#9C00000000000000` on CAN). A row's
 /// fields summary is formatted from the frame and decode context its event carries (the bus
 /// thread parsed it once), the first time the row is shown, and kept: appending stays cheap,
 /// repainting formats nothing again, and no bytes are parsed here.
@@ -56,9 +59,18 @@ public:
     QString fieldsText(int row) const;
     QString directionText(int row) const;
     QString commandText(int row) const;
-    /// The row as one line `lkctl decode -` reads: hex bytes, then '#' and the details.
-    /// Rows without bytes (timeouts, notes) become comment lines.
+    /// The row as one line `lkctl decode -` reads: hex bytes (candump notation on CAN), then
+    /// '#' and the details. Rows without bytes (timeouts, notes) become comment lines.
     QString exportLine(int row) const;
+    /// The raw column: hex bytes, or on CAN each frame in candump notation.
+    QString rawText(int row) const;
+    /// The row's frames as `candump -L` lines on `interfaceName`, stamped with the row's
+    /// session time; empty for a row that holds no CAN frame (RS485, notes, timeouts).
+    QStringList candumpLogLines(int row, const QString &interfaceName) const;
+    /// The link of the connection the rows come from: it says how bytes of rows that carry
+    /// no decode context (faults) are shown. Sent and received frames carry their own.
+    void setLink(protocol::Link link);
+    protocol::Link link() const { return m_link; }
 
 private:
     /// An event and its fields summary, formatted on first use.
@@ -68,11 +80,13 @@ private:
         mutable bool fieldsFormatted = false;
     };
     void count(const bus::TrafficEvent &e);
+    bool isCanEvent(const bus::TrafficEvent &e) const;
 
     QList<Row> m_rows;
     int m_capacity;
     quint64 m_dropped = 0;
     TrafficCounts m_counts;
+    protocol::Link m_link = protocol::Link::Rs485;
 };
 
 } // namespace lk::ui

@@ -80,6 +80,8 @@ TrafficPanel::TrafficPanel(BusModel *model, QWidget *parent, int capacity)
     connect(m_flush, &QTimer::timeout, this, &TrafficPanel::flush);
     m_flush->start();
     connect(m_bus, &BusModel::statisticsChanged, this, &TrafficPanel::updateCounts);
+    connect(m_bus, &BusModel::connectionChanged, this, [this] { m_model->setLink(m_bus->link()); });
+    m_model->setLink(m_bus->link());
     updateCounts();
 }
 
@@ -266,18 +268,40 @@ bool TrafficPanel::exportTo(const QString &fileName, QString *error) const
     return problem.isEmpty();
 }
 
+bool TrafficPanel::exportCandumpTo(const QString &fileName, QString *error) const
+{
+    // `candump -L` lines only (no comments: can-utils, python-can and SavvyCAN read each line
+    // as a frame), timed from the session's start.
+    const QString iface =
+        m_bus->canInterface().isEmpty() ? QStringLiteral("can0") : m_bus->canInterface();
+    QString text;
+    for (int row = 0; row < m_filter->rowCount(); ++row) {
+        const int source = m_filter->mapToSource(m_filter->index(row, 0)).row();
+        for (const QString &line : m_model->candumpLogLines(source, iface))
+            text += line + QLatin1Char('\n');
+    }
+    const QString problem = record::writeFileAtomically(fileName, text.toUtf8());
+    if (error)
+        *error = problem;
+    return problem.isEmpty();
+}
+
 void TrafficPanel::exportWithDialog()
 {
     flush();
+    const bool can = m_bus->link() == protocol::Link::Can;
+    // On CAN the name decides: *.log is a candump log, anything else the decode text.
     const QString name = FileDialogs::saveFile(
         this, FileDialogs::Purpose::Traffic, tr("Export traffic"),
         FileDialogs::suggestedName(QStringLiteral("traffic"), {}, QDateTime::currentDateTime(),
-                                   QStringLiteral("txt")),
-        tr("Traffic log (*.txt);;All files (*)"));
+                                   can ? QStringLiteral("log") : QStringLiteral("txt")),
+        can ? QStringLiteral("%1;;%2").arg(tr("candump log (*.log)"), tr("Traffic log (*.txt)"))
+            : tr("Traffic log (*.txt);;All files (*)"));
     if (name.isEmpty())
         return;
     QString error;
-    if (!exportTo(name, &error))
+    const bool candump = can && name.endsWith(QLatin1String(".log"), Qt::CaseInsensitive);
+    if (!(candump ? exportCandumpTo(name, &error) : exportTo(name, &error)))
         QMessageBox::warning(this, tr("Export traffic"), Format::sentence(error));
 }
 

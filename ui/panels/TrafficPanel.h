@@ -19,7 +19,8 @@ class TrafficModel;
 
 /// The decoded bus log: every frame sent and received with its fields and raw bytes,
 /// filterable by ID and command, pausable, with fault counts by kind, bounded in memory and
-/// exportable to a text file that `lkctl decode -` reads back. Capture runs only while the
+/// exportable to a text file that `lkctl decode -` reads back; on CAN the frames show in
+/// candump notation and export also as a `candump -L` log. Capture runs only while the
 /// view is shown or "Keep recording" is on (captureWanted).
 class TrafficPanel : public QWidget {
     Q_OBJECT
@@ -33,6 +34,9 @@ public:
     bool wantsCapture() const { return m_wantCapture; }
     /// Write the rows shown (after filters) for `lkctl decode -`; false with a message.
     bool exportTo(const QString &fileName, QString *error = nullptr) const;
+    /// On a CAN link: write the frames of the rows shown as a `candump -L` log (can-utils,
+    /// python-can and SavvyCAN read it); false with a message.
+    bool exportCandumpTo(const QString &fileName, QString *error = nullptr) const;
     /// The bus's counters (the same as the Dashboard's and the status bar's, cleared with
     /// them when the link closes), then this log's frame faults by kind and dropped rows.
     QString countsText() const;

@@ -83,6 +83,7 @@ private slots:
     void refusedWriteNamesParameter();
     void restoreWritesFirstRead();
     void filesKeepTheirGeneration();
+    void canV236IsRamOnly();
 };
 
 void tst_TuningView235::readShowsKpKiKd()
@@ -292,4 +293,43 @@ void tst_TuningView235::filesKeepTheirGeneration()
 }
 
 QTEST_MAIN(tst_TuningView235)
+void tst_TuningView235::canV236IsRamOnly()
+{
+    // A V2.36 drive on CAN: control parameters (0xC0/0xC1) in RAM only. No ROM button (absent,
+    // not greyed), a label that says why, and nothing of RS485's 0x40..0x44 ever sent.
+    SimRig rig(QStringLiteral("1:MF@2.35"));
+    QVERIFY(rig.open());
+    auto view = std::make_unique<TuningView>();
+    view->resize(1200, 800);
+    view->setSession(&rig.session);
+    view->setLink(lk::protocol::Link::Can);
+    view->setConnected(true);
+    view->setDrive(1, rig.motor(1));
+    view->show();
+    QVERIFY(QTest::qWaitForWindowExposed(view.get()));
+    QVERIFY(view->isRamOnly());
+    QVERIFY(!button(*view, "writeRom")->isVisible());
+    const auto *note = view->findChild<QLabel *>(QStringLiteral("ramOnlyNote"));
+    QVERIFY(note && note->isVisible());
+    QVERIFY(note->text().contains(QStringLiteral("RAM only")));
+    QVERIFY(!button(*view, "read")->isEnabled());
+    view->readFromDrive();
+    view->writeToRom();
+    view->writeToRam();
+    QVERIFY(!view->isBusy());
+    QTest::qWait(50); // anything queued would have reached the simulated bus by now
+    for (Command c : {Command::ReadParam, Command::WriteParamRam, Command::WriteParamRom,
+                      Command::ReadPid, Command::WritePidRom})
+        QCOMPARE(rig.count(1, c), 0);
+    QVERIFY(view->statusText().contains(QStringLiteral("nothing is sent")));
+
+    // Back on RS485 the same drive reads and offers ROM again.
+    QSignalSpy read(view.get(), &TuningView::parametersRead);
+    view->setLink(lk::protocol::Link::Rs485);
+    QVERIFY(!view->isRamOnly());
+    QVERIFY(button(*view, "writeRom")->isVisible());
+    QVERIFY(read.wait(kWaitMs) || !read.isEmpty());
+    QVERIFY(rig.count(1, Command::ReadParam) > 0);
+}
+
 #include "tst_tuningview235.moc"

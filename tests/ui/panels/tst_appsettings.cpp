@@ -31,6 +31,8 @@ private slots:
     void chosenSeriesPerPortAndId();
     void windowReportsDamageOnceAtStart();
     void sharesTheFileWithTheDriveStore();
+    void canConnectionRoundTrip();
+    void damagedCanValuesAreNotUsed();
 
 private:
     QString file() const { return m_dir.filePath(QStringLiteral("lkstudio.ini")); }
@@ -239,6 +241,50 @@ void tst_AppSettings::damagedFileIsNamed_data()
     QTest::newRow("gear ratio") << 1 << "drives/id2-MG5010E-i10/gearRatio"
                                 << "0.5"
                                 << "drives/id2-MG5010E-i10/gearRatio: must be";
+    QTest::newRow("can bit rate") << 1 << "connection/canBitRate"
+                                  << "800000"
+                                  << "connection/canBitRate: must be 1000000, 500000, 250000";
+    QTest::newRow("can plugin") << 1 << "connection/canPlugin"
+                                << "socket can"
+                                << "connection/canPlugin: must be a Qt CAN plugin";
+    QTest::newRow("can interface") << 1 << "connection/canInterface"
+                                   << "can 0"
+                                   << "connection/canInterface: must be an interface name";
+}
+
+void tst_AppSettings::canConnectionRoundTrip()
+{
+    ConnectionChoice c;
+    c.kind = ConnectionChoice::Kind::Can;
+    c.port = QStringLiteral("/dev/ttyUSB0");
+    c.canPlugin = QStringLiteral("virtualcan");
+    c.canInterface = QStringLiteral("tcp://127.0.0.1:35468/can1");
+    c.bitRate = 125000;
+    c.listenOnly = true;
+    {
+        AppSettings s(file());
+        s.setConnection(c);
+    }
+    AppSettings s(file());
+    QVERIFY(s.damage().isEmpty());
+    QCOMPARE(s.connection(), c);
+}
+
+void tst_AppSettings::damagedCanValuesAreNotUsed()
+{
+    {
+        QSettings raw(file(), QSettings::IniFormat);
+        raw.setValue(QStringLiteral("settingsVersion"), 1);
+        raw.setValue(QStringLiteral("connection/kind"), QStringLiteral("can"));
+        raw.setValue(QStringLiteral("connection/canBitRate"), QStringLiteral("fast"));
+        raw.setValue(QStringLiteral("connection/canInterface"), QString());
+    }
+    AppSettings s(file());
+    QCOMPARE(s.damage().size(), 2); // both named (an empty interface is no interface)
+    const ConnectionChoice c = s.connection();
+    QVERIFY(c.isCan());
+    QCOMPARE(c.bitRate, 1000000); // the drives' default, never a guess from the damage
+    QCOMPARE(c.canInterface, QStringLiteral("can0"));
 }
 
 void tst_AppSettings::damagedFileIsNamed()

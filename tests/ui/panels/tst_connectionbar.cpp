@@ -3,6 +3,7 @@
 #include <QtTest/QtTest>
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
+#include <QtWidgets/QLabel>
 #include <QtWidgets/QLineEdit>
 #include <QtWidgets/QPushButton>
 
@@ -34,6 +35,30 @@ PortEntry ch340()
     return p;
 }
 
+/// A bar on fake serial ports and a fake Qt CAN list: socketcan with can0 and vcan0,
+/// virtualcan with can0 and can1.
+void fakeCan(ConnectionBar &bar, const QStringList *socketcan = nullptr)
+{
+    bar.setPortLister([] { return QList<PortEntry>{ftdi()}; });
+    bar.setCanListers(
+        [] {
+            return QStringList{QStringLiteral("socketcan"), QStringLiteral("virtualcan")};
+        },
+        [socketcan](const QString &plugin) {
+            if (plugin == QLatin1String("socketcan"))
+                return socketcan ? *socketcan
+                                 : QStringList{QStringLiteral("can0"), QStringLiteral("vcan0")};
+            if (plugin == QLatin1String("virtualcan"))
+                return QStringList{QStringLiteral("can0"), QStringLiteral("can1")};
+            return QStringList{};
+        });
+}
+
+QComboBox *combo(ConnectionBar &bar, const char *name)
+{
+    return bar.findChild<QComboBox *>(QLatin1String(name));
+}
+
 } // namespace
 
 class tst_ConnectionBar : public QObject {
@@ -50,6 +75,12 @@ private slots:
     void listenOnlyIsPartOfTheChoice();
     void listeningSaysSoAndOffersTakeOver_data();
     void listeningSaysSoAndOffersTakeOver();
+    void canListsPluginsInterfacesAndBitRates();
+    void canChoiceRoundTrip();
+    void canInterfacesComeAndGo();
+    void canWidgetsLockedWhileOpen();
+    void canConditionIsAStateNotALoss_data();
+    void canConditionIsAStateNotALoss();
 };
 
 void tst_ConnectionBar::label_data()
@@ -241,6 +272,149 @@ void tst_ConnectionBar::listeningSaysSoAndOffersTakeOver()
         QTest::mouseClick(bar.takeOverButton(), Qt::LeftButton);
         QCOMPARE(asked.count(), 1); // a request only: MainWindow asks before anything happens
     }
+}
+
+void tst_ConnectionBar::canListsPluginsInterfacesAndBitRates()
+{
+    ConnectionBar bar;
+    fakeCan(bar);
+    bar.show();
+    auto *link = combo(bar, "linkCombo");
+    QCOMPARE(link->count(), 2);
+    QVERIFY(combo(bar, "portCombo")->isVisible());
+    QVERIFY(!combo(bar, "canPluginCombo")->isVisible());
+    link->setCurrentIndex(1);
+    emit link->activated(1); // as a click does
+    QVERIFY(!combo(bar, "portCombo")->isVisible());
+    QVERIFY(combo(bar, "canPluginCombo")->isVisible());
+    auto *plugin = combo(bar, "canPluginCombo");
+    auto *iface = combo(bar, "canInterfaceCombo");
+    auto *rate = combo(bar, "bitRateCombo");
+    QCOMPARE(plugin->count(), 2);
+    QCOMPARE(iface->count(), 2);
+    QCOMPARE(iface->itemText(1), QStringLiteral("vcan0"));
+    QCOMPARE(rate->count(), 5);
+    QCOMPARE(rate->currentText(), QStringLiteral("1 Mbit/s")); // LK's factory rate
+    QCOMPARE(rate->itemText(1), QStringLiteral("500 kbit/s"));
+    QCOMPARE(rate->itemText(3), QStringLiteral("125 kbit/s"));
+
+    // Another plugin lists its own interfaces.
+    plugin->setCurrentIndex(1);
+    emit plugin->activated(1);
+    QCOMPARE(iface->itemText(1), QStringLiteral("can1"));
+
+    QSignalSpy connectSpy(&bar, &ConnectionBar::connectRequested);
+    iface->setCurrentIndex(1);
+    rate->setCurrentIndex(rate->findData(500000));
+    QTest::mouseClick(bar.findChild<QPushButton *>(QStringLiteral("connectButton")),
+                      Qt::LeftButton);
+    QCOMPARE(connectSpy.count(), 1);
+    const auto c = connectSpy.at(0).at(0).value<ConnectionChoice>();
+    QVERIFY(c.isCan());
+    QCOMPARE(c.canPlugin, QStringLiteral("virtualcan"));
+    QCOMPARE(c.canInterface, QStringLiteral("can1"));
+    QCOMPARE(c.bitRate, 500000);
+}
+
+void tst_ConnectionBar::canChoiceRoundTrip()
+{
+    ConnectionBar bar;
+    fakeCan(bar);
+    ConnectionChoice c;
+    c.kind = ConnectionChoice::Kind::Can;
+    c.port = QStringLiteral("/dev/ttyUSB0"); // the RS485 port stays for when RS485 comes back
+    c.canPlugin = QStringLiteral("socketcan");
+    c.canInterface = QStringLiteral("vcan0");
+    c.bitRate = 250000;
+    bar.setChoice(c);
+    QCOMPARE(bar.choice(), c);
+    // An interface that is not up yet (not listed) is kept as typed.
+    c.canInterface = QStringLiteral("slcan0");
+    bar.setChoice(c);
+    QCOMPARE(bar.choice(), c);
+    // Back to RS485: the serial port chosen before is still there.
+    c.kind = ConnectionChoice::Kind::Serial;
+    bar.setChoice(c);
+    QCOMPARE(bar.choice(), c);
+    QCOMPARE(combo(bar, "linkCombo")->currentIndex(), 0);
+}
+
+void tst_ConnectionBar::canInterfacesComeAndGo()
+{
+    ConnectionBar bar;
+    QStringList up{QStringLiteral("can0")};
+    fakeCan(bar, &up);
+    ConnectionChoice c;
+    c.kind = ConnectionChoice::Kind::Can;
+    c.canInterface = QStringLiteral("can0");
+    bar.setChoice(c);
+    auto *iface = combo(bar, "canInterfaceCombo");
+    QCOMPARE(iface->count(), 1);
+    up << QStringLiteral("can1"); // a second adapter comes up: listed within the refresh
+    QTRY_COMPARE_WITH_TIMEOUT(iface->count(), 2, 10000);
+    QCOMPARE(bar.choice().canInterface, QStringLiteral("can0"));
+    up = QStringList{QStringLiteral("can1")}; // ours goes away: its name stays chosen
+    QTRY_COMPARE_WITH_TIMEOUT(iface->count(), 1, 10000);
+    QCOMPARE(bar.choice().canInterface, QStringLiteral("can0"));
+}
+
+void tst_ConnectionBar::canWidgetsLockedWhileOpen()
+{
+    ConnectionBar bar;
+    fakeCan(bar);
+    lk::bus::ConnectionStatus s;
+    s.state = lk::transport::Transport::State::Open;
+    s.canTransmit = true;
+    bar.setConnectionStatus(s);
+    for (const char *name : {"linkCombo", "canPluginCombo", "canInterfaceCombo", "bitRateCombo"})
+        QVERIFY2(!combo(bar, name)->isEnabled(), name);
+    s.state = lk::transport::Transport::State::Closed;
+    bar.setConnectionStatus(s);
+    for (const char *name : {"linkCombo", "canPluginCombo", "canInterfaceCombo", "bitRateCombo"})
+        QVERIFY2(combo(bar, name)->isEnabled(), name);
+}
+
+void tst_ConnectionBar::canConditionIsAStateNotALoss_data()
+{
+    using C = lk::transport::CanBusCondition;
+    QTest::addColumn<int>("condition");
+    QTest::addColumn<QString>("said");
+    QTest::newRow("bus-off") << int(C::BusOff) << "CAN bus-off: the adapter stopped sending";
+    QTest::newRow("error-passive") << int(C::ErrorPassive) << "CAN error-passive: many frames fail";
+    QTest::newRow("no-ack") << int(C::NoAcknowledge)
+                            << "no acknowledgement: no drive powered, or another bit rate";
+}
+
+void tst_ConnectionBar::canConditionIsAStateNotALoss()
+{
+    QFETCH(int, condition);
+    QFETCH(QString, said);
+    ConnectionBar bar;
+    fakeCan(bar);
+    lk::bus::ConnectionStatus s;
+    s.state = lk::transport::Transport::State::Open;
+    s.canTransmit = true;
+    s.description = QStringLiteral("socketcan:can0 @ 1000000 bit/s");
+    bar.setConnectionStatus(s);
+    const QString fix = QStringLiteral("Check the drives' power, the wiring and the bit rate.");
+    bar.setCanCondition(lk::transport::CanBusCondition(condition), fix);
+    const QString text = bar.stateText();
+    QVERIFY2(text.startsWith(QStringLiteral("Connected: socketcan:can0")), qPrintable(text));
+    QVERIFY2(text.endsWith(said), qPrintable(text));
+    QVERIFY(!text.contains(QStringLiteral("lost"), Qt::CaseInsensitive));
+    auto *state = bar.findChild<QLabel *>(QStringLiteral("connectionState"));
+    QVERIFY(state->toolTip().contains(fix)); // the transport's sentence with its fix
+    QCOMPARE(bar.findChild<QPushButton *>(QStringLiteral("connectButton"))->text(),
+             QStringLiteral("Disconnect")); // still open
+    bar.setCanCondition(lk::transport::CanBusCondition::Good, {});
+    QCOMPARE(bar.stateText(), QStringLiteral("Connected: socketcan:can0 @ 1000000 bit/s"));
+    // A condition belongs to its link: a closed link forgets it.
+    bar.setCanCondition(lk::transport::CanBusCondition(condition), fix);
+    s.state = lk::transport::Transport::State::Closed;
+    bar.setConnectionStatus(s);
+    s.state = lk::transport::Transport::State::Open;
+    bar.setConnectionStatus(s);
+    QVERIFY(!bar.stateText().contains(said));
 }
 
 QTEST_MAIN(tst_ConnectionBar)

@@ -9,6 +9,7 @@
 #include <panels/ScanControls.h>
 
 #include <QtTest/QtTest>
+#include <QtWidgets/QCheckBox>
 #include <QtWidgets/QLabel>
 
 using lk::bus::BusTiming;
@@ -21,6 +22,7 @@ private slots:
     void estimateIsTheScannersPerBaud();
     void sweepCountsDrivesNotAnswers();
     void lastScanTimesTheBus();
+    void canHasNoBaudSweep();
 };
 
 void tst_ScanControls::estimateIsTheScannersPerBaud()
@@ -105,6 +107,25 @@ void tst_ScanControls::lastScanTimesTheBus()
     controls.setBaud(115200);
     lk::bus::ScanOptions at115200 = controls.options();
     QCOMPARE(controls.expectedSeconds(at115200), ScanControls::estimateSeconds(at115200, 115200));
+}
+
+void tst_ScanControls::canHasNoBaudSweep()
+{
+    // A CAN bus has one bit rate, set on the interface: a baud sweep would reopen it at RS485
+    // bauds. The option is hidden there and never asked for; RS485 keeps the user's choice.
+    ScanControls controls;
+    controls.show();
+    controls.setRange(1, 32, true);
+    controls.setLink(lk::protocol::Link::Can);
+    QVERIFY(!controls.options().sweepBauds);
+    QVERIFY(!controls.findChild<QCheckBox *>(QStringLiteral("scanSweepBauds"))->isVisible());
+    const auto *status = controls.findChild<QLabel *>(QStringLiteral("scanStatus"));
+    QVERIFY2(status->text().endsWith(QStringLiteral("at 1 Mbit/s")), qPrintable(status->text()));
+    controls.setBaud(500000);
+    QVERIFY2(status->text().endsWith(QStringLiteral("at 500 kbit/s")), qPrintable(status->text()));
+    controls.setLink(lk::protocol::Link::Rs485);
+    QVERIFY(controls.options().sweepBauds);
+    QVERIFY(controls.findChild<QCheckBox *>(QStringLiteral("scanSweepBauds"))->isVisible());
 }
 
 QTEST_MAIN(tst_ScanControls)

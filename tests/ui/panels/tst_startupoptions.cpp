@@ -19,6 +19,10 @@ private slots:
     void initialChoice();
     void listenOnly_data();
     void listenOnly();
+    void can_data();
+    void can();
+    void rememberedCan_data();
+    void rememberedCan();
 
 private:
     QTemporaryDir m_dir;
@@ -212,6 +216,90 @@ void tst_StartupOptions::listenOnly()
     }
     const auto exists = [portPlugged](const QString &) { return portPlugged; };
     QCOMPARE(o->initialChoice(settings, exists).listenOnly, expectListen);
+}
+
+void tst_StartupOptions::can_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("refusal"); ///< empty: accepted
+    QTest::addColumn<QString>("plugin");
+    QTest::addColumn<QString>("iface");
+    QTest::addColumn<int>("bitRate");
+    QTest::newRow("socketcan") << QStringList{"--can", "socketcan:can0"} << QString() << "socketcan"
+                               << "can0" << 1000000;
+    QTest::newRow("bit rate") << QStringList{"--can", "socketcan:slcan0", "--bitrate", "500000"}
+                              << QString() << "socketcan"
+                              << "slcan0" << 500000;
+    QTest::newRow("virtualcan url") << QStringList{"--can", "virtualcan:tcp://127.0.0.1:35468/can1"}
+                                    << QString() << "virtualcan"
+                                    << "tcp://127.0.0.1:35468/can1" << 1000000;
+    QTest::newRow("no interface") << QStringList{"--can", "socketcan"} << "--can takes PLUGIN"
+                                  << QString() << QString() << 0;
+    QTest::newRow("odd bit rate") << QStringList{"--can", "socketcan:can0", "--bitrate", "800000"}
+                                  << "--bitrate 800000 is not" << QString() << QString() << 0;
+    QTest::newRow("with port") << QStringList{"--can", "socketcan:can0", "--port", "/dev/ttyUSB0"}
+                               << "exclude each other" << QString() << QString() << 0;
+    QTest::newRow("bit rate on rs485")
+        << QStringList{"--port", "/dev/ttyUSB0", "--bitrate", "500000"} << "--bitrate is the bit"
+        << QString() << QString() << 0;
+}
+
+void tst_StartupOptions::can()
+{
+    QFETCH(QStringList, args);
+    QFETCH(QString, refusal);
+    QFETCH(QString, plugin);
+    QFETCH(QString, iface);
+    QFETCH(int, bitRate);
+    args.prepend(QStringLiteral("lkstudio"));
+    QString error;
+    const auto o = StartupOptions::parse(args, &error);
+    QCOMPARE(o.has_value(), refusal.isEmpty());
+    if (!o) {
+        QVERIFY2(error.contains(refusal), qPrintable(error));
+        return;
+    }
+    AppSettings settings(m_dir.filePath(QString::fromLatin1(QTest::currentDataTag()) + ".ini"));
+    const auto absent = [](const QString &) { return false; };
+    const ConnectionChoice c = o->initialChoice(settings, absent);
+    QVERIFY(c.isCan()); // asked for: opened even when not listed (it says why if it fails)
+    QCOMPARE(c.canPlugin, plugin);
+    QCOMPARE(c.canInterface, iface);
+    QCOMPARE(c.bitRate, bitRate);
+    QVERIFY(!o->fellBackToSimulator(settings, absent));
+}
+
+void tst_StartupOptions::rememberedCan_data()
+{
+    QTest::addColumn<bool>("present");
+    QTest::newRow("interface up") << true;
+    QTest::newRow("interface away") << false;
+}
+
+void tst_StartupOptions::rememberedCan()
+{
+    // The last connection was CAN: opened again when its interface is there, else the
+    // simulated bus (and the CAN choice stays remembered).
+    QFETCH(bool, present);
+    AppSettings settings(m_dir.filePath(QString::fromLatin1(QTest::currentDataTag()) + ".ini"));
+    ConnectionChoice remembered;
+    remembered.kind = ConnectionChoice::Kind::Can;
+    remembered.canInterface = QStringLiteral("can3");
+    remembered.bitRate = 250000;
+    settings.setConnection(remembered);
+    QStringList asked;
+    const auto exists = [&](const QString &port) {
+        asked << port;
+        return present;
+    };
+    const auto o = StartupOptions::parse({QStringLiteral("lkstudio")}, nullptr);
+    QVERIFY(o);
+    const ConnectionChoice c = o->initialChoice(settings, exists);
+    QCOMPARE(asked.value(0), QStringLiteral("can:socketcan:can3"));
+    QCOMPARE(c.isCan(), present);
+    QCOMPARE(o->fellBackToSimulator(settings, exists), !present);
+    if (present)
+        QCOMPARE(c, remembered);
 }
 
 QTEST_GUILESS_MAIN(tst_StartupOptions)

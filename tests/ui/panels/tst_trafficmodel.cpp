@@ -5,6 +5,9 @@
 #include <panels/TrafficModel.h>
 #include <panels/TrafficPanel.h>
 
+#include <protocol/CanRecord.h>
+#include <protocol/FieldJson.h>
+#include <protocol/LinkCodec.h>
 #include <protocol/Reply.h>
 #include <protocol/RequestBuilder.h>
 #include <protocol/StreamParser.h>
@@ -109,6 +112,32 @@ QByteArray hexOf(const QString &text)
     return out;
 }
 
+protocol::DecodeContext onCan()
+{
+    protocol::DecodeContext c;
+    c.link = protocol::Link::Can;
+    return c;
+}
+
+/// A request as the bus thread records it on CAN: one CanRecord, frame and context.
+TrafficEvent sentOnCan(double t, const protocol::Request &r)
+{
+    TrafficEvent e = sent(t, r, onCan());
+    e.bytes = protocol::encodeRequest(r, onCan()).bytes;
+    return e;
+}
+
+/// A reply as received on CAN, stamped by the adapter at `adapterUs`.
+TrafficEvent receivedOnCan(double t, const protocol::Reply &r, qint64 adapterUs)
+{
+    TrafficEvent e = received(t, r, onCan());
+    protocol::CanRecord record =
+        *protocol::CanRecord::decode(protocol::encodeReply(r, onCan()).bytes);
+    record.timestampUs = adapterUs;
+    e.bytes = record.encode();
+    return e;
+}
+
 } // namespace
 
 class tst_TrafficModel : public QObject {
@@ -127,6 +156,9 @@ private slots:
     void exportReadByLkctl();
     void rowKeepsTheContextOfItsMoment();
     void fieldsComeFromTheCarriedFrame();
+    void canRowsInCandumpNotation();
+    void canFaultFollowsTheLink();
+    void candumpLogExport();
 };
 
 void tst_TrafficModel::columns()
@@ -401,6 +433,65 @@ void tst_TrafficModel::fieldsComeFromTheCarriedFrame()
     QCOMPARE(m.data(m.index(0, TrafficModel::Raw)).toString(), QStringLiteral("01 02 03"));
     QCOMPARE(m.data(m.index(0, TrafficModel::Fields)).toString(), fields); // the cached text
     QCOMPARE(m.fieldsText(0), fields);
+}
+
+void tst_TrafficModel::canRowsInCandumpNotation()
+{
+    // CAN.md section 9: read state 2 of drive 1 is 141#9C00000000000000.
+    TrafficModel m;
+    m.append({sentOnCan(0.001, *protocol::build::plain(protocol::Command::ReadState2, 1).request),
+              receivedOnCan(0.002, state2Reply(1, 360), 1700000000123456),
+              sent(0.003, *protocol::build::plain(protocol::Command::ReadState2, 1).request)});
+    QCOMPARE(m.data(m.index(0, TrafficModel::Raw)).toString(),
+             QStringLiteral("141#9C00000000000000"));
+    const QString reply = m.data(m.index(1, TrafficModel::Raw)).toString();
+    QVERIFY2(reply.startsWith(QStringLiteral("141#9C1F6400")), qPrintable(reply));
+    QVERIFY(m.exportLine(0).startsWith(QStringLiteral("141#9C00000000000000  # ")));
+    // An RS485 row (its own context says so) keeps its hex bytes.
+    QCOMPARE(m.data(m.index(2, TrafficModel::Raw)).toString(),
+             protocol::FieldJson::hexText(
+                 protocol::build::plain(protocol::Command::ReadState2, 1).request->encode()));
+}
+
+void tst_TrafficModel::canFaultFollowsTheLink()
+{
+    // A fault carries no decode context: the connection's link says how its bytes read.
+    protocol::CanRecord r;
+    r.canId = 0x145;
+    r.data = QByteArray::fromHex("9C01");
+    TrafficModel m;
+    m.append({fault(0.1, protocol::ParseError::BadLength, r.encode())});
+    QVERIFY(m.data(m.index(0, TrafficModel::Raw)).toString().contains(QLatin1Char(' ')));
+    m.setLink(protocol::Link::Can);
+    QCOMPARE(m.data(m.index(0, TrafficModel::Raw)).toString(), QStringLiteral("145#9C01"));
+    // Bytes that are no whole record stay hex.
+    m.append({fault(0.2, protocol::ParseError::Truncated, QByteArray("\x01\x02", 2))});
+    QCOMPARE(m.data(m.index(1, TrafficModel::Raw)).toString(), QStringLiteral("01 02"));
+}
+
+void tst_TrafficModel::candumpLogExport()
+{
+    lk::ui::BusModel bus;
+    bus.setLink(protocol::Link::Can, QStringLiteral("tcp://127.0.0.1:35468/can1"));
+    lk::ui::TrafficPanel panel(&bus);
+    panel.appendTraffic(
+        {sentOnCan(1.5, *protocol::build::plain(protocol::Command::ReadState2, 1).request),
+         receivedOnCan(1.500625, state2Reply(1, 360), 1700000000123456),
+         timeout(2.0, 3, protocol::Command::ReadState1)});
+    panel.flush();
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("traffic.log"));
+    QVERIFY(panel.exportCandumpTo(file));
+    QFile f(file);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    const QStringList lines =
+        QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+    QCOMPARE(lines.size(), 2); // frames only: a timeout is no frame on the wire
+    // One clock, the session's, for sent and received alike.
+    QCOMPARE(lines[0], QStringLiteral("(1.500000) can1 141#9C00000000000000"));
+    QVERIFY2(lines[1].startsWith(QStringLiteral("(1.500625) can1 141#9C")), qPrintable(lines[1]));
+    for (const QString &line : lines) // what can-utils' candump -L writes, read back
+        QVERIFY2(protocol::CanRecord::fromCandump(line).has_value(), qPrintable(line));
 }
 
 QTEST_MAIN(tst_TrafficModel)
