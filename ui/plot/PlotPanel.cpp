@@ -151,11 +151,18 @@ QWidget *PlotPanel::buildSignalRow()
 
 QVector<TelemetryChannel> PlotPanel::pickableChannels()
 {
-    return {TelemetryChannel::Torque,          TelemetryChannel::Speed,
-            TelemetryChannel::Encoder,         TelemetryChannel::MultiTurn,
-            TelemetryChannel::Temperature,     TelemetryChannel::Voltage,
-            TelemetryChannel::CommandedTorque, TelemetryChannel::CommandedSpeed,
-            TelemetryChannel::CommandedAngle};
+    return {TelemetryChannel::Torque,
+            TelemetryChannel::Speed,
+            TelemetryChannel::Encoder,
+            TelemetryChannel::MultiTurn,
+            TelemetryChannel::Temperature,
+            TelemetryChannel::Voltage,
+            TelemetryChannel::CommandedTorque,
+            TelemetryChannel::CommandedSpeed,
+            TelemetryChannel::CommandedAngle,
+            TelemetryChannel::CommandedSingleTurn,
+            TelemetryChannel::CommandedIncrement,
+            TelemetryChannel::CommandedMaxSpeed};
 }
 
 void PlotPanel::setDrives(const QVector<int> &ids)

@@ -29,6 +29,9 @@ constexpr ChannelKeys kChannelKeys[kTelemetryChannelCount] = {
     {"commanded_iq_a", "commanded_power"},
     {"commanded_speed_dps", nullptr},
     {"commanded_angle_deg", nullptr},
+    {"commanded_single_turn_deg", nullptr},
+    {"commanded_increment_deg", nullptr},
+    {"commanded_max_speed_dps", nullptr},
 };
 
 struct ChannelColumns {

@@ -25,8 +25,11 @@ enum class TelemetryChannel {
     CommandedTorque, ///< commanded iq, or open-loop power on MS (as Torque)
     CommandedSpeed,
     CommandedAngle,
+    CommandedSingleTurn, ///< the target of 0xA5/0xA6
+    CommandedIncrement,  ///< the step of 0xA7/0xA8 (a listener does not know the start)
+    CommandedMaxSpeed,   ///< the speed cap of 0xA4/0xA6/0xA8
 };
-inline constexpr int kTelemetryChannelCount = 13;
+inline constexpr int kTelemetryChannelCount = 16;
 
 /// What a channel measures, which decides its unit and which Y axis it shares.
 using Quantity = lk::bus::Quantity;

@@ -43,6 +43,7 @@ class tst_TelemetryStore : public QObject {
     Q_OBJECT
 private slots:
     void routesFields();
+    void routesCommandedPositionFields();
     void powerVersusIq_data();
     void powerVersusIq();
     void torqueKindChangeDropsOldUnit();
@@ -81,6 +82,25 @@ void tst_TelemetryStore::routesFields()
     }
     QCOMPARE(store.count(4, TelemetryChannel::Speed), 0);
     QVERIFY(store.ring(3, TelemetryChannel::Torque) != nullptr);
+}
+
+// What another master commanded with 0xA5..0xA8 (listen-only) is plotted beside the replies.
+void tst_TelemetryStore::routesCommandedPositionFields()
+{
+    TelemetryStore store(100);
+    TelemetrySample s;
+    s.id = 2;
+    s.time = 1.0;
+    s.fields = TelemetryField::CommandedSingleTurn | TelemetryField::CommandedIncrement |
+               TelemetryField::CommandedMaxSpeed;
+    s.commandedSingleTurnDeg = 90.5;
+    s.commandedIncrementDeg = -30;
+    s.commandedMaxSpeedDps = 360;
+    store.append({s});
+    QCOMPARE(store.valueAt(2, TelemetryChannel::CommandedSingleTurn, 1.0), 90.5);
+    QCOMPARE(store.valueAt(2, TelemetryChannel::CommandedIncrement, 1.0), -30.0);
+    QCOMPARE(store.valueAt(2, TelemetryChannel::CommandedMaxSpeed, 1.0), 360.0);
+    QCOMPARE(store.count(2, TelemetryChannel::CommandedAngle), 0);
 }
 
 void tst_TelemetryStore::powerVersusIq_data()
