@@ -15,6 +15,10 @@ void BusModel::setConnection(const bus::ConnectionStatus &status, bool simulated
     m_simulated = simulated;
     if (!status.isOpen())
         setCanCondition(transport::CanBusCondition::Good); // the condition was the link's
+    else if (status.link == protocol::Link::Can)
+        // The engine reports each change of the CAN condition, its return to Good included
+        // (error-passive ends only that way: no reply says so).
+        setCanCondition(status.canCondition, status.conditionText);
     emit connectionChanged();
     // The figures belong to the link that was closed: the next one starts from nothing.
     if (status.state == transport::Transport::State::Closed && m_statistics.bus.requests > 0) {

@@ -41,6 +41,7 @@ private slots:
     void canConditionIsAStateNotAFailure_data();
     void canConditionIsAStateNotAFailure();
     void canOpenFailureNamesTheInterface();
+    void canConditionFollowsTheLinkStatus();
 
 private:
     /// Connect `controller` to this process's virtualcan bus and wait for the link.
@@ -178,4 +179,25 @@ void tst_BusController::canOpenFailureNamesTheInterface()
 }
 
 QTEST_MAIN(tst_BusController)
+// The engine's status carries the CAN condition and reports its end: error-passive, which no
+// reply clears, ends when the link says Good again.
+void tst_BusController::canConditionFollowsTheLinkStatus()
+{
+    using C = lk::transport::CanBusCondition;
+    BusModel model;
+    lk::bus::ConnectionStatus status;
+    status.state = lk::transport::Transport::State::Open;
+    status.link = lk::protocol::Link::Can;
+    status.canCondition = C::ErrorPassive;
+    status.conditionText = QStringLiteral("error passive: check termination");
+    model.setConnection(status, false);
+    QCOMPARE(model.canCondition(), C::ErrorPassive);
+    QCOMPARE(model.canConditionMessage(), status.conditionText);
+    status.canCondition = C::Good;
+    status.conditionText.clear();
+    model.setConnection(status, false);
+    QCOMPARE(model.canCondition(), C::Good);
+    QVERIFY(model.canConditionMessage().isEmpty());
+}
+
 #include "tst_buscontroller.moc"
