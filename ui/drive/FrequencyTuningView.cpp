@@ -17,6 +17,9 @@ FrequencyTuningView::FrequencyTuningView(TuningView *host, QWidget *parent)
             [this](bool running) { m_search->setEnabled(!running); });
     connect(m_search, &GainSearchView::runningChanged, m_response,
             [this](bool running) { m_response->setEnabled(!running); });
+    connect(m_response, &FrequencyResponseView::runningChanged, this,
+            &FrequencyTuningView::runningChanged);
+    connect(m_search, &GainSearchView::runningChanged, this, &FrequencyTuningView::runningChanged);
 }
 
 void FrequencyTuningView::halt()

@@ -23,6 +23,10 @@ public:
     void halt();
     bool isRunning() const;
 
+signals:
+    /// A sweep or a search started or ended (the host greys its gain writes meanwhile).
+    void runningChanged(bool running);
+
 private:
     FrequencyResponseView *m_response;
     GainSearchView *m_search;

@@ -149,7 +149,9 @@ void TuningView::buildUi()
     m_side->setObjectName(QStringLiteral("tuningSide"));
     m_side->addTab(m_plot, tr("Live plot"));
     m_side->addTab(buildStepTab(), tr("Step response"));
-    m_side->addTab(new FrequencyTuningView(this), tr("Frequency response"));
+    m_frequency = new FrequencyTuningView(this);
+    m_side->addTab(m_frequency, tr("Frequency response"));
+    connect(m_frequency, &FrequencyTuningView::runningChanged, this, &TuningView::refreshEnabled);
     auto *layout = new QHBoxLayout(this);
     layout->addWidget(leftWidget);
     layout->addWidget(m_side, 1);
@@ -198,7 +200,7 @@ void TuningView::showStepResponse(bool show)
 void TuningView::haltLocalMotion(const QString &reason)
 {
     m_stepTest->halt(reason);
-    findChild<FrequencyTuningView *>()->halt();
+    m_frequency->halt();
 }
 
 QJsonObject TuningView::heldObject(bool ramps) const
@@ -468,8 +470,13 @@ void TuningView::refreshWarnings()
 
 void TuningView::refreshEnabled()
 {
-    // No gain writes while a step test runs: its trace would mix two sets of gains.
-    const bool idle = !isBusy() && !m_stepTest->isRunning();
+    // No gain writes while a step test, a sweep or a search runs: a trace would mix two sets
+    // of gains, and the sweep or search puts the gains it read back at its end. One of the
+    // three moves the drive at a time (each replaces the other's setpoint stream).
+    const bool frequencyRunning = m_frequency->isRunning();
+    const bool idle = !isBusy() && !m_stepTest->isRunning() && !frequencyRunning;
+    m_stepTest->setEnabled(!frequencyRunning);
+    m_frequency->setEnabled(!m_stepTest->isRunning());
     const bool read = canSendToDrive() && m_cycle->readComplete();
     const bool pending = m_table->pending().has_value();
     m_read->setEnabled(canSendToDrive() && idle && !m_ramOnly);

@@ -21,6 +21,8 @@ class QTabWidget;
 
 namespace lk::ui {
 
+class FrequencyTuningView;
+
 class DriveLimitsView;
 class LoopPlot;
 class StepRunList;
@@ -152,7 +154,8 @@ private:
     QLabel *m_note = nullptr;
     QLabel *m_ramOnlyNote = nullptr; ///< why a CAN V2.36 drive has no ROM button
     LoopPlot *m_plot = nullptr;
-    QTabWidget *m_side = nullptr; ///< live plot | step response
+    QTabWidget *m_side = nullptr; ///< live plot | step response | frequency response
+    FrequencyTuningView *m_frequency = nullptr;
     StepRunList *m_runs = nullptr;
     StepTestPanel *m_stepTest = nullptr;
     StepRunsView *m_stepRuns = nullptr;

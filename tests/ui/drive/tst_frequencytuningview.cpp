@@ -13,6 +13,7 @@
 #include <tuning/BodeChart.h>
 #include <tuning/FrequencyRunList.h>
 #include <tuning/StepOverlayChart.h>
+#include <tuning/StepTestPanel.h>
 
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QScatterSeries>
@@ -212,8 +213,16 @@ void tst_FrequencyTuningView::escMidSweepRestoresGainsAndTurnsOff()
     QVERIFY(o.sweep->runSweep());
     QTRY_VERIFY_WITH_TIMEOUT(rig.count(1, Command::Speed) > 100, kWaitMs);
     QVERIFY(motorOn(rig, 1));
+    // Meanwhile no gain write and no step test: the sweep puts the gains it read back.
+    const auto button = [&](const char *name) {
+        return o.view->findChild<QPushButton *>(QLatin1String(name));
+    };
+    QVERIFY(!button("read")->isEnabled());
+    QVERIFY(!button("writeRam")->isEnabled());
+    QVERIFY(!o.view->findChild<lk::ui::StepTestPanel *>()->isEnabled());
     o.view->haltLocalMotion(QStringLiteral("Emergency stop."));
     QTRY_VERIFY_WITH_TIMEOUT(!o.sweep->isRunning(), kWaitMs);
+    QTRY_VERIFY_WITH_TIMEOUT(o.view->findChild<lk::ui::StepTestPanel *>()->isEnabled(), kWaitMs);
     const QString status = o.sweep->statusText();
     QVERIFY2(status.startsWith(QStringLiteral("Stopped.")), qPrintable(status));
     QVERIFY2(status.contains(QStringLiteral("acknowledged")), qPrintable(status));
