@@ -69,6 +69,23 @@
     </message>
 </context>
 <context>
+    <name>lk::ui::GainSearchView</name>
+    <message numerus="yes">
+        <source>%n candidate(s) tried in %1 s; the best is in bold, Write to RAM tries it. Nothing else was kept.</source>
+        <translation>
+            <numerusform>%n candidate tried in %1 s; the best is in bold, Write to RAM tries it. Nothing else was kept.</numerusform>
+            <numerusform>%n candidates tried in %1 s; the best is in bold, Write to RAM tries it. Nothing else was kept.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n candidate(s) tried in %1 s; none stayed within the bounds.</source>
+        <translation>
+            <numerusform>%n candidate tried in %1 s; none stayed within the bounds.</numerusform>
+            <numerusform>%n candidates tried in %1 s; none stayed within the bounds.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::OverviewPanel</name>
     <message numerus="yes">
         <source>%n drive(s) on the bus</source>
@@ -154,6 +171,13 @@
         <translation>
             <numerusform>Scan done in %1: %n drive found</numerusform>
             <numerusform>Scan done in %1: %n drives found</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>ID %1 at %2 · %n drive(s) found · about %3 left</source>
+        <translation>
+            <numerusform>ID %1 at %2 · %n drive found · about %3 left</numerusform>
+            <numerusform>ID %1 at %2 · %n drives found · about %3 left</numerusform>
         </translation>
     </message>
 </context>

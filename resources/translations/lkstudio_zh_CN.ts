@@ -57,6 +57,41 @@
         <source>cancelled: drive %1 went past its speed limit</source>
         <translation>已取消：驱动器 %1 超过了速度限制</translation>
     </message>
+    <message>
+        <source>%1 to drive %2 was not sent: %3</source>
+        <translation>%1 未发送到驱动器 %2：%3</translation>
+    </message>
+</context>
+<context>
+    <name>lk::bus::DriveIdentity</name>
+    <message>
+        <source>&quot;%1&quot;: write ID:SERIES@GENERATION, e.g. 3:MG@2.35 or 1:MF@can236</source>
+        <translation>“%1”：请写成 ID:系列@代次，例如 3:MG@2.35 或 1:MF@can236</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: the ID must be 1..32</source>
+        <translation>“%1”：ID 必须在 1..32 之间</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: the series must be MS, MF, MG or MH</source>
+        <translation>“%1”：系列必须是 MS、MF、MG 或 MH</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: the gear ratio after / must be a number of 1 or more</source>
+        <translation>“%1”：/ 后的减速比必须是不小于 1 的数字</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: the generation must be 2.3 or 2.35 (RS485), can (old CAN) or can236 (CAN V2.36)</source>
+        <translation>“%1”：代次必须是 2.3 或 2.35（RS485）、can（旧版 CAN）或 can236（CAN V2.36）</translation>
+    </message>
+    <message>
+        <source>drive %1 is named twice</source>
+        <translation>驱动器 %1 被指定了两次</translation>
+    </message>
+    <message>
+        <source>no drive given: write ID:SERIES@GENERATION,..., e.g. 3:MG@2.35</source>
+        <translation>未指定驱动器：请写成 ID:系列@代次,...，例如 3:MG@2.35</translation>
+    </message>
 </context>
 <context>
     <name>lk::bus::LinkMode</name>
@@ -74,6 +109,10 @@
     <message>
         <source>drive %1 speaks protocol V2.3, which has no %2 (firmware 2.35 added it); nothing was sent</source>
         <translation>驱动器 %1 使用 V2.3 协议，该协议没有 %2（2.35 固件才加入）；未发送任何内容</translation>
+    </message>
+    <message>
+        <source>drive %1 speaks %2, which has no %3; nothing was sent</source>
+        <translation>驱动器 %1 使用 %2，该协议没有 %3；未发送任何内容</translation>
     </message>
 </context>
 <context>
@@ -160,6 +199,22 @@
     <message>
         <source>Commanded angle</source>
         <translation>指令角度</translation>
+    </message>
+    <message>
+        <source>Commanded single-turn angle</source>
+        <translation>指令单圈角度</translation>
+    </message>
+    <message>
+        <source>Commanded direction</source>
+        <translation>指令方向</translation>
+    </message>
+    <message>
+        <source>Commanded increment</source>
+        <translation>指令增量</translation>
+    </message>
+    <message>
+        <source>Commanded speed limit</source>
+        <translation>指令限速</translation>
     </message>
 </context>
 <context>
@@ -1238,6 +1293,14 @@
         <source>The simulated bus was disconnected (fault injection). Open it again to reconnect.</source>
         <translation>模拟总线已断开（故障注入）。重新打开即可重新连接。</translation>
     </message>
+    <message>
+        <source>Simulated CAN bus (1 drive) @ %1 bit/s</source>
+        <translation>模拟 CAN 总线（1 个驱动器）@ %1 bit/s</translation>
+    </message>
+    <message>
+        <source>Simulated CAN bus (%1 drives) @ %2 bit/s</source>
+        <translation>模拟 CAN 总线（%1 个驱动器）@ %2 bit/s</translation>
+    </message>
 </context>
 <context>
     <name>lk::tuning::StepRunFile</name>
@@ -1312,6 +1375,69 @@
     <message>
         <source>Cannot create the folder %1.</source>
         <translation>无法创建文件夹 %1。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::BodeChart</name>
+    <message>
+        <source>Magnitude (dB)</source>
+        <translation>幅值 (dB)</translation>
+    </message>
+    <message>
+        <source>Phase (°)</source>
+        <translation>相位 (°)</translation>
+    </message>
+    <message>
+        <source>Frequency (Hz)</source>
+        <translation>频率 (Hz)</translation>
+    </message>
+    <message>
+        <source>-3 dB bandwidth</source>
+        <translation>-3 dB 带宽</translation>
+    </message>
+    <message>
+        <source>Resolution limit</source>
+        <translation>分辨极限</translation>
+    </message>
+    <message>
+        <source>Dashed line: %1 Hz, the highest frequency %2 samples/s resolve (%3 samples a period at least). Not shown above it: %4 Hz.</source>
+        <translation>虚线：%1 Hz，即 %2 次采样/秒所能分辨的最高频率（每周期至少 %3 个采样）。高于它而未显示的频率：%4 Hz。</translation>
+    </message>
+    <message>
+        <source>-3 dB bandwidth %1 Hz (phase there %2°)</source>
+        <translation>-3 dB 带宽 %1 Hz（该处相位 %2°）</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>no -3 dB bandwidth within the frequencies measured</source>
+        <translation>在所测频率内没有 -3 dB 带宽</translation>
+    </message>
+    <message>
+        <source>peak %1 dB at %2 Hz</source>
+        <translation>峰值 %1 dB，位于 %2 Hz</translation>
+    </message>
+    <message>
+        <source>no peak (too few points)</source>
+        <translation>无峰值（点数太少）</translation>
+    </message>
+    <message>
+        <source>%1: %2; %3.</source>
+        <translation>%1：%2；%3。</translation>
+    </message>
+    <message>
+        <source>No frequency response yet.</source>
+        <translation>尚无频率响应。</translation>
+    </message>
+    <message>
+        <source>%1
+%2 Hz: %3 dB, %4°
+Fit quality %5 (%6 samples)</source>
+        <translation>%1
+%2 Hz：%3 dB，%4°
+拟合质量 %5（%6 个采样）</translation>
     </message>
 </context>
 <context>
@@ -1515,6 +1641,10 @@
         <source>This tool is now the bus master: it transmits, polls the drives it saw and its emergency stop sends Motor Off.</source>
         <translation>本工具现在是总线主站：它会发送数据、轮询已看到的驱动器，急停会发送电机关闭。</translation>
     </message>
+    <message>
+        <source>No drive answered on %1. Check that the drives use %2, the CAN-H/CAN-L wiring, the drives&apos; supply and a 120-ohm terminator at each end of the bus.</source>
+        <translation>%1 上没有驱动应答。请检查驱动是否使用 %2、CAN-H/CAN-L 接线、驱动供电，以及总线两端各有一个 120 欧终端电阻。</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::BusModel</name>
@@ -1634,6 +1764,42 @@
     <message>
         <source>Listen-only: this tool transmits nothing (%1)</source>
         <translation>仅监听：本工具不发送任何内容（%1）</translation>
+    </message>
+    <message>
+        <source>RS485</source>
+        <translation>RS485</translation>
+    </message>
+    <message>
+        <source>CAN</source>
+        <translation>CAN</translation>
+    </message>
+    <message>
+        <source>How the drives are wired to this computer: a USB-RS485 adapter, or a CAN adapter (candleLight/gs_usb, PCAN-USB, CANable; see README, &quot;Drives on CAN&quot;)</source>
+        <translation>驱动与本机的连接方式：USB-RS485 适配器，或 CAN 适配器（candleLight/gs_usb、PCAN-USB、CANable；见 README“CAN 总线上的驱动”）</translation>
+    </message>
+    <message>
+        <source>The Qt SerialBus plugin: socketcan for every adapter the Linux kernel knows (candleLight/gs_usb, PCAN-USB, CANable through slcand, vcan), virtualcan for tests without hardware</source>
+        <translation>Qt SerialBus 插件：socketcan 用于 Linux 内核支持的所有适配器（candleLight/gs_usb、PCAN-USB、经 slcand 的 CANable、vcan），virtualcan 用于无硬件测试</translation>
+    </message>
+    <message>
+        <source>The CAN interface the plugin reports (can0, slcan0, vcan0); `ip link show` lists them</source>
+        <translation>插件报告的 CAN 接口（can0、slcan0、vcan0）；`ip link show` 可列出它们</translation>
+    </message>
+    <message>
+        <source>The drives&apos; CAN bit rate (1 Mbit/s unless changed with the vendor&apos;s tool over RS485). lkstudio sets it on the interface where the system allows; otherwise it shows the command to run as root.</source>
+        <translation>驱动的 CAN 比特率（除非已用厂商工具经 RS485 修改，否则为 1 Mbit/s）。系统允许时 lkstudio 会在接口上设置它；否则显示需以 root 运行的命令。</translation>
+    </message>
+    <message>
+        <source>Plugin:</source>
+        <translation>插件：</translation>
+    </message>
+    <message>
+        <source>Interface:</source>
+        <translation>接口：</translation>
+    </message>
+    <message>
+        <source>Bit rate:</source>
+        <translation>比特率：</translation>
     </message>
 </context>
 <context>
@@ -3333,6 +3499,359 @@ not read</source>
         <source>rel.</source>
         <translation>相对值</translation>
     </message>
+    <message>
+        <source>%1 Mbit/s</source>
+        <translation>%1 Mbit/s</translation>
+    </message>
+    <message>
+        <source>%1 kbit/s</source>
+        <translation>%1 kbit/s</translation>
+    </message>
+    <message>
+        <source>%1 bit/s</source>
+        <translation>%1 bit/s</translation>
+    </message>
+    <message>
+        <source>CAN errors (warning level), frames still get through</source>
+        <translation>CAN 错误（警告级别），帧仍可通过</translation>
+    </message>
+    <message>
+        <source>CAN error-passive: many frames fail</source>
+        <translation>CAN 错误被动：大量帧失败</translation>
+    </message>
+    <message>
+        <source>CAN bus-off: the adapter stopped sending</source>
+        <translation>CAN 离线（bus-off）：适配器已停止发送</translation>
+    </message>
+    <message>
+        <source>no acknowledgement: no drive powered, or another bit rate</source>
+        <translation>无应答：没有驱动上电，或比特率不同</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::FrequencyResponseView</name>
+    <message>
+        <source>Measure</source>
+        <translation>测量</translation>
+    </message>
+    <message>
+        <source>Clear runs</source>
+        <translation>清除运行记录</translation>
+    </message>
+    <message>
+        <source>Measures the speed loop&apos;s frequency response: a sine of the speed setpoint around the operating point, one frequency after the other. Its extremes are checked against the soft limits (Control view) before anything moves; Esc stops the motor and puts the gains read back.</source>
+        <translation>测量速度环的频率响应：在工作点附近对速度设定值施加正弦，逐个频率进行。在任何运动之前先用软限位（“控制”视图）检查其极值；Esc 停止电机并写回读取的增益。</translation>
+    </message>
+    <message>
+        <source> dps</source>
+        <translation> °/s</translation>
+    </message>
+    <message>
+        <source>The speed the sine is centred on. Away from 0, so that the rotor never stops: friction would bend the response.</source>
+        <translation>正弦的中心速度。应远离 0，使转子不会停转：摩擦会使响应失真。</translation>
+    </message>
+    <message>
+        <source>The sine&apos;s peak around the operating point.</source>
+        <translation>正弦在工作点附近的峰值。</translation>
+    </message>
+    <message>
+        <source> Hz</source>
+        <translation> Hz</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> 秒</translation>
+    </message>
+    <message>
+        <source>Each frequency lasts at least this long (and 5 cycles).</source>
+        <translation>每个频率至少持续这么久（且至少 5 个周期）。</translation>
+    </message>
+    <message>
+        <source>Operating point ± amplitude</source>
+        <translation>工作点 ± 幅值</translation>
+    </message>
+    <message>
+        <source>From → to</source>
+        <translation>从 → 到</translation>
+    </message>
+    <message>
+        <source>Frequencies, each at least</source>
+        <translation>频率个数，每个至少</translation>
+    </message>
+    <message>
+        <source>The sweep cannot run as set (%1). Nothing was sent.</source>
+        <translation>扫频无法按当前设置运行（%1）。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Refused at %1 dps: %2. Nothing was sent.</source>
+        <translation>在 %1 dps 处被拒绝：%2。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Frequency response</source>
+        <translation>频率响应</translation>
+    </message>
+    <message>
+        <source>Cancelled: nothing was sent.</source>
+        <translation>已取消：未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>The drive or the connection changed: nothing was sent.</source>
+        <translation>驱动器或连接已改变：未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Reading the gains and speed of drive %1…</source>
+        <translation>正在读取驱动 %1 的增益和速度…</translation>
+    </message>
+    <message>
+        <source>Sweeping drive %1: %2 frequencies over %3 s. Esc stops it.</source>
+        <translation>正在对驱动 %1 扫频：%2 个频率，共 %3 秒。按 Esc 停止。</translation>
+    </message>
+    <message>
+        <source>%1 points at %2 samples/s. %3 %4</source>
+        <translation>%1 个点，采样率 %2 次/秒。%3 %4</translation>
+    </message>
+    <message>
+        <source>Refused at %1 dps: %2.</source>
+        <translation>在 %1 dps 处被拒绝：%2。</translation>
+    </message>
+    <message>
+        <source>Stop (Esc)</source>
+        <translation>停止 (Esc)</translation>
+    </message>
+    <message>
+        <source>Stop at once: Motor Off, and the gains read back to RAM.</source>
+        <translation>立即停止：电机关闭，并把读取的增益写回 RAM。</translation>
+    </message>
+    <message>
+        <source>Measure the frequency response set above on the selected drive (asks first).</source>
+        <translation>在所选驱动上测量上面设置的频率响应（先询问）。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::FrequencyTuningView</name>
+    <message>
+        <source>Bode</source>
+        <translation>伯德图</translation>
+    </message>
+    <message>
+        <source>Suggested gains</source>
+        <translation>建议增益</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::GainSearchView</name>
+    <message>
+        <source>within the bounds</source>
+        <translation>在界限内</translation>
+    </message>
+    <message>
+        <source>overshoots</source>
+        <translation>超调过大</translation>
+    </message>
+    <message>
+        <source>oscillates</source>
+        <translation>振荡</translation>
+    </message>
+    <message>
+        <source>did not settle</source>
+        <translation>未稳定</translation>
+    </message>
+    <message>
+        <source>current at its limit: unstable, search stopped</source>
+        <translation>电流达到限值：不稳定，搜索已停止</translation>
+    </message>
+    <message>
+        <source>swings growing: unstable, search stopped</source>
+        <translation>振荡逐渐增大：不稳定，搜索已停止</translation>
+    </message>
+    <message>
+        <source>Search gains</source>
+        <translation>搜索增益</translation>
+    </message>
+    <message>
+        <source>Write to RAM</source>
+        <translation>写入 RAM</translation>
+    </message>
+    <message>
+        <source>Write the suggested speed Kp and Ki to the drive&apos;s RAM (lost at power-off), then read back. Nothing is written before this.</source>
+        <translation>把建议的速度环 Kp 和 Ki 写入驱动的 RAM（断电丢失），然后回读。在此之前不写入任何内容。</translation>
+    </message>
+    <message>
+        <source>Write to ROM…</source>
+        <translation>写入 ROM…</translation>
+    </message>
+    <message>
+        <source>Keep the suggested gains written to RAM: asks first, then writes them to ROM.</source>
+        <translation>保留已写入 RAM 的建议增益：先询问，然后写入 ROM。</translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <source>Kp</source>
+        <translation>Kp</translation>
+    </message>
+    <message>
+        <source>Ki</source>
+        <translation>Ki</translation>
+    </message>
+    <message>
+        <source>Rise</source>
+        <translation>上升时间</translation>
+    </message>
+    <message>
+        <source>Overshoot</source>
+        <translation>超调</translation>
+    </message>
+    <message>
+        <source>Error area</source>
+        <translation>误差面积</translation>
+    </message>
+    <message>
+        <source>Verdict</source>
+        <translation>结论</translation>
+    </message>
+    <message>
+        <source>Tries speed-loop gains with short speed steps within the soft limits and suggests the fastest whose overshoot stays under the bound. Nothing is kept in the drive: the gains read go back to RAM at the end.</source>
+        <translation>在软限位内用短速度阶跃尝试速度环增益，并建议超调不超过界限的最快增益。驱动中不会保留任何改动：结束时读取的增益会写回 RAM。</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>A candidate whose step overshoots more than this is not suggested.</source>
+        <translation>阶跃超调大于此值的候选不会被建议。</translation>
+    </message>
+    <message>
+        <source> dps</source>
+        <translation> °/s</translation>
+    </message>
+    <message>
+        <source>Each candidate steps the speed between these two, away from 0 where friction would bend the steps.</source>
+        <translation>每个候选在这两个速度之间阶跃，远离 0（摩擦会使阶跃失真）。</translation>
+    </message>
+    <message>
+        <source>Max overshoot</source>
+        <translation>最大超调</translation>
+    </message>
+    <message>
+        <source>Steps between</source>
+        <translation>阶跃区间</translation>
+    </message>
+    <message>
+        <source>Candidates at most</source>
+        <translation>最多候选数</translation>
+    </message>
+    <message>
+        <source>Gains read</source>
+        <translation>读取的增益</translation>
+    </message>
+    <message>
+        <source>Suggested</source>
+        <translation>建议值</translation>
+    </message>
+    <message>
+        <source>Suggested gains</source>
+        <translation>建议增益</translation>
+    </message>
+    <message>
+        <source>Cancelled: nothing was sent.</source>
+        <translation>已取消：未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>The drive or the connection changed: nothing was sent.</source>
+        <translation>驱动器或连接已改变：未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Searching the speed-loop gains of drive %1… Esc stops it.</source>
+        <translation>正在搜索驱动 %1 的速度环增益… 按 Esc 停止。</translation>
+    </message>
+    <message>
+        <source>read</source>
+        <translation>读取值</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 秒</translation>
+    </message>
+    <message>
+        <source>Candidate %1 of at most %2 tried on drive %3… Esc stops it.</source>
+        <translation>已在驱动 %3 上尝试第 %1 个候选（最多 %2 个）… 按 Esc 停止。</translation>
+    </message>
+    <message>
+        <source>Refused: %1.</source>
+        <translation>已拒绝：%1。</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n candidate(s) tried in %1 s; the best is in bold, Write to RAM tries it. Nothing else was kept.</source>
+        <translation>
+            <numerusform>在 %1 秒内尝试了 %n 组候选参数；最佳一组以粗体显示，“写入 RAM”将试用它。其他内容均未保留。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n candidate(s) tried in %1 s; none stayed within the bounds.</source>
+        <translation>
+            <numerusform>在 %1 秒内尝试了 %n 组候选参数；没有一组保持在限值之内。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The search stopped at the first unstable candidate.</source>
+        <translation>搜索在第一个不稳定的候选处停止。</translation>
+    </message>
+    <message>
+        <source>none within the bounds</source>
+        <translation>没有在界限内的</translation>
+    </message>
+    <message>
+        <source>Speed Kp</source>
+        <translation>速度环 Kp</translation>
+    </message>
+    <message>
+        <source>Speed Ki</source>
+        <translation>速度环 Ki</translation>
+    </message>
+    <message>
+        <source>Nothing was written: there is no suggestion yet.</source>
+        <translation>未写入任何内容：尚无建议值。</translation>
+    </message>
+    <message>
+        <source>Nothing was written: the suggestion is for drive %1, which is not the drive selected and read on this connection.</source>
+        <translation>未写入任何内容：该建议针对驱动 %1，它不是本次连接中所选并已读取的驱动。</translation>
+    </message>
+    <message>
+        <source>Nothing was written: the drive&apos;s gains are not all known.</source>
+        <translation>未写入任何内容：驱动的增益并未全部已知。</translation>
+    </message>
+    <message>
+        <source>Nothing was written: wait until the drive is idle.</source>
+        <translation>未写入任何内容：请等待驱动空闲。</translation>
+    </message>
+    <message>
+        <source>The suggested gains went to the RAM of drive %1 (PID gains shows the read-back). Try them with a step test or a sweep; Write to ROM keeps them.</source>
+        <translation>建议增益已写入驱动 %1 的 RAM（“PID 增益”显示回读值）。可用阶跃测试或扫频试用；“写入 ROM”会保留它们。</translation>
+    </message>
+    <message>
+        <source>Nothing was written: write the suggestion to RAM first.</source>
+        <translation>未写入任何内容：请先把建议值写入 RAM。</translation>
+    </message>
+    <message>
+        <source>Nothing was written: the drive does not hold the suggested gains in RAM (read back). Write to RAM again first.</source>
+        <translation>未写入任何内容：驱动 RAM 中（回读）并不是建议的增益。请先重新写入 RAM。</translation>
+    </message>
+    <message>
+        <source>Stop (Esc)</source>
+        <translation>停止 (Esc)</translation>
+    </message>
+    <message>
+        <source>Stop at once: Motor Off, and the gains read back to RAM.</source>
+        <translation>立即停止：电机关闭，并把读取的增益写回 RAM。</translation>
+    </message>
+    <message>
+        <source>Search the speed-loop gains of the selected drive (asks first).</source>
+        <translation>搜索所选驱动的速度环增益（先询问）。</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::HelpMenu</name>
@@ -4520,6 +5039,22 @@ not read</source>
         <source>The black box could not be saved after %1: %2</source>
         <translation>因%1保存黑匣子失败：%2</translation>
     </message>
+    <message>
+        <source>Black box &amp;length…</source>
+        <translation>黑匣子时长(&amp;L)…</translation>
+    </message>
+    <message>
+        <source>Black box length</source>
+        <translation>黑匣子时长</translation>
+    </message>
+    <message>
+        <source>Minutes of the link the black box keeps (it also keeps at most 128 MB):</source>
+        <translation>黑匣子保留链路的分钟数（同时最多保留 128 MB）：</translation>
+    </message>
+    <message>
+        <source>The black box length (recording/blackBoxMinutes) must be %1..%2 minutes, not %3: it stays %4.</source>
+        <translation>黑匣子时长（recording/blackBoxMinutes）必须为 %1..%2 分钟，不能是 %3：仍为 %4。</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::ReplayBar</name>
@@ -4604,6 +5139,16 @@ not read</source>
         <source>Scan takes about %1 at %2 baud</source>
         <translation>在 %2 波特率下扫描约需 %1</translation>
     </message>
+    <message numerus="yes">
+        <source>ID %1 at %2 · %n drive(s) found · about %3 left</source>
+        <translation>
+            <numerusform>ID %1，%2 · 已找到 %n 个驱动器 · 约剩 %3</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Scan takes about %1 at %2</source>
+        <translation>在 %2 下扫描约需 %1</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::SerialGroupAdvice</name>
@@ -4629,6 +5174,14 @@ not read</source>
     <message>
         <source>Series of drive %1:</source>
         <translation>驱动器 %1 的系列：</translation>
+    </message>
+    <message>
+        <source>Gear ratio:</source>
+        <translation>减速比：</translation>
+    </message>
+    <message>
+        <source>No model name told this drive&apos;s gearbox (CAN drives have no model read): angles and speeds at the output shaft use this ratio. Remembered for this drive.</source>
+        <translation>没有型号名称说明该驱动的减速箱（CAN 驱动无法读取型号）：输出轴上的角度和速度使用此减速比。按驱动记住。</translation>
     </message>
 </context>
 <context>
@@ -4938,10 +5491,6 @@ not read</source>
         <translation>找到驱动 ID 后选中它。</translation>
     </message>
     <message>
-        <source>LK Servo Studio: connect, scan, watch, plot and diagnose LK-TECH servo drives on an RS485 bus. With no options it opens the last port used if it is plugged in, else the built-in simulated bus.</source>
-        <translation>LK Servo Studio：连接、扫描、监视、绘制和诊断 RS485 总线上的 LK-TECH 伺服驱动。不带选项时，如果上次使用的串口已插上就打开它，否则打开内置模拟总线。</translation>
-    </message>
-    <message>
         <source>Unexpected argument: %1</source>
         <translation>多余的参数：%1</translation>
     </message>
@@ -5016,6 +5565,34 @@ not read</source>
     <message>
         <source>--listen and --no-listen exclude each other.</source>
         <translation>--listen 与 --no-listen 不能同时使用。</translation>
+    </message>
+    <message>
+        <source>Open a CAN interface through a Qt SerialBus plugin, e.g. socketcan:can0 (see the README, &quot;Drives on CAN&quot;).</source>
+        <translation>通过 Qt SerialBus 插件打开 CAN 接口，例如 socketcan:can0（见 README“CAN 总线上的驱动”）。</translation>
+    </message>
+    <message>
+        <source>CAN bit rate: 1000000, 500000, 250000, 125000 or 100000 (default 1000000).</source>
+        <translation>CAN 比特率：1000000、500000、250000、125000 或 100000（默认 1000000）。</translation>
+    </message>
+    <message>
+        <source>LK Servo Studio: connect, scan, watch, plot and diagnose LK-TECH servo drives on an RS485 or CAN bus. With no options it opens the last port used if it is plugged in, else the built-in simulated bus.</source>
+        <translation>LK Servo Studio：连接、扫描、监视、绘图并诊断 RS485 或 CAN 总线上的 LK-TECH 伺服驱动。不带选项时，若上次使用的端口已插入则打开它，否则打开内置的模拟总线。</translation>
+    </message>
+    <message>
+        <source>--can, --port and --sim exclude each other: pick one bus.</source>
+        <translation>--can、--port 和 --sim 互斥：请只选一条总线。</translation>
+    </message>
+    <message>
+        <source>--can takes PLUGIN:INTERFACE, e.g. socketcan:can0 (found &quot;%1&quot;).</source>
+        <translation>--can 的参数为 插件:接口，例如 socketcan:can0（实际为“%1”）。</translation>
+    </message>
+    <message>
+        <source>--bitrate is the bit rate of a CAN bus; it cannot go with --port or --sim (their rate is --baud).</source>
+        <translation>--bitrate 是 CAN 总线的比特率，不能与 --port 或 --sim 同用（它们的速率用 --baud）。</translation>
+    </message>
+    <message>
+        <source>--bitrate %1 is not a CAN bit rate of LK drives (1000000, 500000, 250000, 125000, 100000).</source>
+        <translation>--bitrate %1 不是 LK 驱动的 CAN 比特率（1000000、500000、250000、125000、100000）。</translation>
     </message>
 </context>
 <context>
@@ -5789,6 +6366,14 @@ not read</source>
         <source>Hide the state and angle reads of the poll rounds, so that commands (PID writes, stops, setpoints) stand out</source>
         <translation>隐藏轮询中的状态和角度读取，使命令（PID 写入、停止、设定值）更加醒目</translation>
     </message>
+    <message>
+        <source>candump log (*.log)</source>
+        <translation>candump 日志 (*.log)</translation>
+    </message>
+    <message>
+        <source>Traffic log (*.txt)</source>
+        <translation>通信记录 (*.txt)</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::TuningFile</name>
@@ -5823,6 +6408,101 @@ not read</source>
     <message>
         <source>Careful: the file comes from a %1, this drive is a %2.</source>
         <translation>注意：文件来自 %1，而此驱动是 %2。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::TuningRunGate</name>
+    <message>
+        <source>Nothing was sent: connect and select a drive first.</source>
+        <translation>未发送任何内容：请先连接并选择驱动器。</translation>
+    </message>
+    <message>
+        <source>Nothing was sent: the gains of drive %1 have not been read on this connection. Read from drive first.</source>
+        <translation>未发送任何内容：本次连接中尚未读取驱动 %1 的增益。请先从驱动读取。</translation>
+    </message>
+    <message>
+        <source>Nothing was sent: a step test, read or write of drive %1 is in progress.</source>
+        <translation>未发送任何内容：驱动 %1 的阶跃测试、读取或写入正在进行。</translation>
+    </message>
+    <message>
+        <source>Nothing was sent: no soft limits are in force.</source>
+        <translation>未发送任何内容：没有生效的软限位。</translation>
+    </message>
+    <message>
+        <source>Refused: an angle range is set for drive %1 (Control view), and this turns the axis for as long as it runs, past any range. Nothing was sent.</source>
+        <translation>已拒绝：驱动 %1 设置了角度范围（“控制”视图），而此操作在运行期间会让轴持续转动，超出任何范围。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Drive %1 turns at %2 to %3 dps (rotor) for about %4 s: up to %5 rotor turns, %6 turns of the output. Speed limit %7 dps.</source>
+        <translation>驱动 %1 将以 %2 到 %3 dps（转子）转动约 %4 秒：转子最多 %5 圈，输出轴 %6 圈。速度限值 %7 dps。</translation>
+    </message>
+    <message>
+        <source>Is the axis of drive %1 free to turn?</source>
+        <translation>驱动 %1 的轴可以自由转动吗？</translation>
+    </message>
+    <message>
+        <source>The gains read are written back to RAM at the end; Esc stops the motor at once.</source>
+        <translation>结束时读取的增益会写回 RAM；按 Esc 立即停止电机。</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>开始</translation>
+    </message>
+    <message>
+        <source>It cannot run as set. Nothing was sent.</source>
+        <translation>无法按当前设置运行。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Refused by a soft limit.</source>
+        <translation>被软限位拒绝。</translation>
+    </message>
+    <message>
+        <source>Drive %1 did not answer: it stopped.</source>
+        <translation>驱动 %1 未应答：已停止。</translation>
+    </message>
+    <message>
+        <source>The link went down: it stopped.</source>
+        <translation>链路断开：已停止。</translation>
+    </message>
+    <message>
+        <source>Stopped.</source>
+        <translation>已停止。</translation>
+    </message>
+    <message>
+        <source>Nothing was sent.</source>
+        <translation>未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>No step was sent.</source>
+        <translation>未发送任何阶跃。</translation>
+    </message>
+    <message>
+        <source>Drive %1 did not acknowledge Motor Off: it may still be moving.</source>
+        <translation>驱动 %1 未确认“电机关闭”：它可能仍在运动。</translation>
+    </message>
+    <message>
+        <source>Motor Off went to drive %1 and it acknowledged.</source>
+        <translation>已向驱动 %1 发送“电机关闭”，驱动已确认。</translation>
+    </message>
+    <message>
+        <source>The gains read before could NOT be written back: read the drive and check them.</source>
+        <translation>之前读取的增益未能写回：请读取驱动并检查。</translation>
+    </message>
+    <message>
+        <source>The gains read before are back in RAM.</source>
+        <translation>之前读取的增益已写回 RAM。</translation>
+    </message>
+    <message>
+        <source>The gains read are back in RAM; drive %1 holds 0 dps, its motor stays on.</source>
+        <translation>读取的增益已写回 RAM；驱动 %1 保持 0 dps，电机仍处于开启状态。</translation>
+    </message>
+    <message>
+        <source>The gains read are back in RAM; drive %1 is back at the speed it had and keeps turning until stopped.</source>
+        <translation>读取的增益已写回 RAM；驱动 %1 已回到原来的速度，并将持续转动直到被停止。</translation>
+    </message>
+    <message>
+        <source>The gains read are back in RAM.</source>
+        <translation>读取的增益已写回 RAM。</translation>
     </message>
 </context>
 <context>
@@ -6031,6 +6711,14 @@ not read</source>
         <source>The drive reports acceleration %1 dps/s after %2 dps/s was written: some firmware ignores 0x34 or reads 0 with 0x33 (see docs/ERRATA.md), so the acceleration in effect is not known.</source>
         <translation>写入 %2 dps/s 后，驱动报告的加速度为 %1 dps/s：部分固件忽略 0x34 或用 0x33 读出 0（见 docs/ERRATA.md），因此实际生效的加速度未知。</translation>
     </message>
+    <message>
+        <source>CAN V2.36 drive: its control parameters (0xC0/0xC1) live in RAM only. A write takes effect at once and is lost when the drive is switched off; the drive has no command to store them in ROM, so this view has no &quot;Write to ROM&quot; button.</source>
+        <translation>CAN V2.36 驱动：其控制参数（0xC0/0xC1）只在 RAM 中。写入立即生效，驱动断电后丢失；驱动没有把它们存入 ROM 的命令，因此本视图没有“写入 ROM”按钮。</translation>
+    </message>
+    <message>
+        <source>This build does not read or write the control parameters of a CAN V2.36 drive yet (0xC0/0xC1): nothing is sent. The RS485 parameter commands (0x40..0x44) do not exist on CAN.</source>
+        <translation>此版本尚不能读写 CAN V2.36 驱动的控制参数（0xC0/0xC1）：不发送任何内容。RS485 的参数命令（0x40..0x44）在 CAN 上不存在。</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::TuningView</name>
@@ -6153,6 +6841,10 @@ not read</source>
     <message>
         <source>RAM write</source>
         <translation>写入 RAM</translation>
+    </message>
+    <message>
+        <source>Frequency response</source>
+        <translation>频率响应</translation>
     </message>
 </context>
 <context>
