@@ -151,18 +151,13 @@ QWidget *PlotPanel::buildSignalRow()
 
 QVector<TelemetryChannel> PlotPanel::pickableChannels()
 {
-    return {TelemetryChannel::Torque,
-            TelemetryChannel::Speed,
-            TelemetryChannel::Encoder,
-            TelemetryChannel::MultiTurn,
-            TelemetryChannel::Temperature,
-            TelemetryChannel::Voltage,
-            TelemetryChannel::CommandedTorque,
-            TelemetryChannel::CommandedSpeed,
-            TelemetryChannel::CommandedAngle,
-            TelemetryChannel::CommandedSingleTurn,
-            TelemetryChannel::CommandedIncrement,
-            TelemetryChannel::CommandedMaxSpeed};
+    // The commanded 0xA5..0xA8 channels (single-turn target, increment, speed cap) are recorded
+    // and exported but not offered here: three more boxes widen the row past a 1366-pixel screen.
+    return {TelemetryChannel::Torque,          TelemetryChannel::Speed,
+            TelemetryChannel::Encoder,         TelemetryChannel::MultiTurn,
+            TelemetryChannel::Temperature,     TelemetryChannel::Voltage,
+            TelemetryChannel::CommandedTorque, TelemetryChannel::CommandedSpeed,
+            TelemetryChannel::CommandedAngle};
 }
 
 void PlotPanel::setDrives(const QVector<int> &ids)
