@@ -77,10 +77,11 @@ bool readCan(const ArgParser &parser, const QString &text, const QString &source
 }
 } // namespace
 
-std::optional<BusOptions> BusOptions::from(const ArgParser &parser, QString *error)
+std::optional<BusOptions> BusOptions::from(const ArgParser &parser, QString *error,
+                                           bool listenDrives)
 {
     BusOptions o;
-    if (parser.isSet(QStringLiteral("drives"))) {
+    if (!listenDrives && parser.isSet(QStringLiteral("drives"))) {
         const auto drives =
             bus::DriveIdentity::parseList(parser.value(QStringLiteral("drives")), error);
         if (!drives) {
@@ -188,9 +189,9 @@ bus::TransportFactory BusOptions::factory() const
     return transport::SimTransport::factory(s);
 }
 
-QString BusOptions::helpText()
+QString BusOptions::helpText(bool withDrives)
 {
-    return QStringLiteral(
+    const QString common = QStringLiteral(
         "Bus (one of --port, --can and --sim is required, unless LKCTL_PORT or LKCTL_CAN\n"
         "names it):\n"
         "  --port DEV         serial adapter, e.g. /dev/ttyUSB0 or ttyUSB0 (8N1); a name\n"
@@ -211,12 +212,19 @@ QString BusOptions::helpText()
         "                     own); default: the environment variable LKCTL_CAN\n"
         "  --bitrate N        CAN bit rate: 1000000 (default), 500000, 250000, 125000 or\n"
         "                     100000; it must be the drives'. Where Qt cannot set it, the\n"
-        "                     message gives the `ip link` command to run as root\n"
-        "  --drives LIST      what each drive is, where no model read tells it (every drive\n"
-        "                     on CAN): ID:SERIES@GEN[/GEAR],... e.g. 3:MG@2.35, 1:MF@can236,\n"
-        "                     2:MS@can; GEN is 2.3 or 2.35 (RS485), can (old CAN) or can236\n"
-        "                     (CAN V2.36). Until a drive's series is known, torque, power\n"
-        "                     and open loop are refused\n");
+        "                     message gives the `ip link` command to run as root\n");
+    if (!withDrives)
+        return common;
+    return common +
+           QStringLiteral(
+               "  --drives LIST      what each drive is, where no model read tells it (every "
+               "drive\n"
+               "                     on CAN): ID:SERIES@GEN[/GEAR],... e.g. 3:MG@2.35, "
+               "1:MF@can236,\n"
+               "                     2:MS@can; GEN is 2.3 or 2.35 (RS485), can (old CAN) or "
+               "can236\n"
+               "                     (CAN V2.36). Until a drive's series is known, torque, power\n"
+               "                     and open loop are refused\n");
 }
 
 } // namespace lk::lkctl

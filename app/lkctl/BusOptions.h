@@ -39,7 +39,10 @@ struct BusOptions {
     /// Read them back, with LKCTL_PORT and LKCTL_BAUD filling in what the command line leaves
     /// out; nullopt with `error` when unusable (no bus, both --port and --sim, a baud that
     /// is not one of the nine, naming --baud or LKCTL_BAUD, a bad --sim spec).
-    static std::optional<BusOptions> from(const ArgParser &parser, QString *error);
+    /// `listenDrives`: --drives is listen's own (ID:SERIES, the generation from the replies'
+    /// lengths), not a drive identity: left to the command.
+    static std::optional<BusOptions> from(const ArgParser &parser, QString *error,
+                                          bool listenDrives = false);
 
     bool isSimulated() const { return !simSpec.isEmpty(); }
     bool isCan() const { return !canPlugin.isEmpty(); }
@@ -49,8 +52,9 @@ struct BusOptions {
     /// with a slash is a path, made absolute against the working directory ("./bus").
     static QString portPath(const QString &port);
     bus::TransportFactory factory() const;
-    /// The text of `lkctl CMD --help` that documents these options.
-    static QString helpText();
+    /// The text of `lkctl CMD --help` that documents these options (without --drives for
+    /// listen, which documents its own).
+    static QString helpText(bool withDrives = true);
 };
 
 } // namespace lk::lkctl

@@ -68,7 +68,7 @@ QString ListenCommand::usage() const
                "  lkctl listen --port ttyUSB0 --json --duration 60 | jq .speed_dps\n"
                "\n"
                "%2")
-        .arg(BusOptions::helpText(),
+        .arg(BusOptions::helpText(false),
              exitStatusText(QStringLiteral("  A silent bus is no error: listen waits. --sim is "
                                            "refused (no other master there).\n")));
 }
@@ -202,7 +202,8 @@ int ListenCommand::run(const QStringList &args, Console &console)
     parser.addOption(QStringLiteral("drives"), true);
     parser.addOption(QStringLiteral("csv"), false);
     int status = kExitOk;
-    std::optional<BusOptions> busOptions = parseBus(parser, args, console, &status);
+    std::optional<BusOptions> busOptions =
+        parseBus(parser, args, console, &status, /*listenDrives=*/true);
     if (!busOptions)
         return status;
     if (busOptions->isSimulated())

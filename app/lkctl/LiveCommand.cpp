@@ -49,14 +49,15 @@ ArgParser LiveCommand::makeParser(bool json)
 }
 
 std::optional<BusOptions> LiveCommand::parseBus(ArgParser &parser, const QStringList &args,
-                                                Console &console, int *status) const
+                                                Console &console, int *status,
+                                                bool listenDrives) const
 {
     QString error;
     if (!parser.parse(args, &error)) {
         *status = usageError(console, error);
         return std::nullopt;
     }
-    std::optional<BusOptions> bus = BusOptions::from(parser, &error);
+    std::optional<BusOptions> bus = BusOptions::from(parser, &error, listenDrives);
     if (!bus)
         *status = usageError(console, error);
     return bus;

@@ -26,9 +26,10 @@ public:
 protected:
     /// A parser with the bus options (and --json when `json`) declared.
     static ArgParser makeParser(bool json = true);
-    /// Parse and read the bus options; on failure prints and returns nullopt.
+    /// Parse and read the bus options; on failure prints and returns nullopt. `listenDrives`:
+    /// --drives is the command's own (BusOptions::from).
     std::optional<BusOptions> parseBus(ArgParser &parser, const QStringList &args, Console &console,
-                                       int *status) const;
+                                       int *status, bool listenDrives = false) const;
     /// The exit status section shared by every live command's help.
     static QString exitStatusText(const QString &extra = QString());
 };
