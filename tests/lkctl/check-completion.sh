@@ -37,7 +37,7 @@ expect()
 
 expect "scan step stop" s
 expect "decode" de
-expect "--baud --from --json --port --retries --sim --sim-rom-dir --sweep-bauds --to" scan --
+expect "--baud --bitrate --can --drives --from --json --port --retries --sim --sim-rom-dir --sweep-bauds --to" scan --
 expect "--sweep-bauds" scan --sw
 expect "--sim --sim-rom-dir" info 3 --si
 expect "115200" scan --baud 1152

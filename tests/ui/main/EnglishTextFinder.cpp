@@ -28,15 +28,20 @@
 namespace {
 // Units, acronyms, protocol and product names: the same in every language ("English" is the
 // language menu naming English in English).
+// CAN: the Qt SerialBus plugin names (listed as Qt reports them) and the commands to run.
 const char *const kAllowed[] = {
-    "dps",     "rpm",     "Hz",   "ms",     "RAM",    "ROM",  "PID",   "ID",           "IDs",
-    "CSV",     "JSON",    "PNG",  "HTML",   "INI",    "Kp",   "Ki",    "iq",           "MS",
-    "MF",      "MG",      "MH",   "LK",     "TECH",   "RS",   "USB",   "lkstudio",     "lkctl",
-    "lksim",   "Esc",     "Ctrl", "Servo",  "Studio", "UTC",  "sudo",  "usermod",      "aG",
-    "USER",    "dialout", "uucp", "Debian", "Ubuntu", "Arch", "fuser", "ModemManager", "ERRATA",
-    "FOC",     "dev",     "tty",  "pts",    "ttyUSB", "ttyS", "COM",   "decode",       "DRV",
-    "English", "txt",     "json", "csv",    "png",    "min",  "max",   "Alt",          "Shift",
-    "FTDI",    "RTS",     "DTR",  "README",
+    "dps",    "rpm",          "Hz",        "ms",      "RAM",         "ROM",     "PID",
+    "ID",     "IDs",          "CSV",       "JSON",    "PNG",         "HTML",    "INI",
+    "Kp",     "Ki",           "iq",        "MS",      "MF",          "MG",      "MH",
+    "LK",     "TECH",         "RS",        "USB",     "lkstudio",    "lkctl",   "lksim",
+    "Esc",    "Ctrl",         "Servo",     "Studio",  "UTC",         "sudo",    "usermod",
+    "aG",     "USER",         "dialout",   "uucp",    "Debian",      "Ubuntu",  "Arch",
+    "fuser",  "ModemManager", "ERRATA",    "FOC",     "dev",         "tty",     "pts",
+    "ttyUSB", "ttyS",         "COM",       "decode",  "DRV",         "English", "txt",
+    "json",   "csv",          "png",       "min",     "max",         "Alt",     "Shift",
+    "FTDI",   "RTS",          "DTR",       "README",  "CAN",         "PCAN",    "CANable",
+    "dB",     "SerialBus",    "socketcan", "peakcan", "passthrucan", "tinycan", "virtualcan",
+    "vcan",   "slcand",       "Linux",     "ip",      "link",        "show",    "root",
 };
 const QRegularExpression kWord(QStringLiteral("(?<![A-Za-z0-9_./])[A-Za-z]{2,}(?![A-Za-z0-9_/])"));
 } // namespace
