@@ -139,7 +139,6 @@ private slots:
     void badFileChangesNothing_data();
     void badFileChangesNothing();
     void disconnectedDisablesWrites();
-    void oldCanKeepsRamAndRom();
 };
 
 void tst_TuningView::readsDriveOnSelection()
@@ -477,8 +476,7 @@ void tst_TuningView::plotFollowsEditedLoop()
     QVERIFY(rig.open());
     auto view = openView(rig, 1);
     QVERIFY(view);
-    QApplication::setActiveWindow(view.get());
-    // Start from another loop so that the switch is visible.
+    QApplication::setActiveWindow(view.get()); // from another loop, so that the switch shows
     view->plot()->setLoop(loop == int(lk::ui::TunedLoop::Angle) ? lk::ui::TunedLoop::Current
                                                                 : lk::ui::TunedLoop::Angle);
     if (QWidget *focus = QApplication::focusWidget())
@@ -599,20 +597,4 @@ void tst_TuningView::disconnectedDisablesWrites()
 }
 
 QTEST_MAIN(tst_TuningView)
-void tst_TuningView::oldCanKeepsRamAndRom()
-{
-    // The old CAN generation has V2.3's 0x30..0x34 with RAM and ROM: the link alone takes
-    // nothing away (only a V2.36 drive on CAN is RAM only).
-    SimRig rig;
-    QVERIFY(rig.open());
-    auto view = openView(rig, 1);
-    QVERIFY(view);
-    view->setLink(lk::protocol::Link::Can);
-    QVERIFY(!view->isRamOnly());
-    QVERIFY(view->readComplete()); // what was read stays: the set did not change
-    QVERIFY(rig.count(1, Command::ReadPid) > 0);
-    QVERIFY(lk::drivetest::button(*view, "writeRom")->isVisible());
-    QVERIFY(!view->findChild<QLabel *>(QStringLiteral("ramOnlyNote"))->isVisible());
-}
-
 #include "tst_tuningview.moc"

@@ -84,6 +84,7 @@ private slots:
     void restoreWritesFirstRead();
     void filesKeepTheirGeneration();
     void canV236IsRamOnly();
+    void oldCanKeepsRamAndRom();
 };
 
 void tst_TuningView235::readShowsKpKiKd()
@@ -330,6 +331,22 @@ void tst_TuningView235::canV236IsRamOnly()
     QVERIFY(button(*view, "writeRom")->isVisible());
     QVERIFY(read.wait(kWaitMs) || !read.isEmpty());
     QVERIFY(rig.count(1, Command::ReadParam) > 0);
+}
+
+void tst_TuningView235::oldCanKeepsRamAndRom()
+{
+    // A V2.3 drive: the old CAN generation has V2.3's 0x30..0x34 with RAM and ROM: the link alone
+    // takes nothing away (only a V2.36 drive on CAN is RAM only).
+    SimRig rig;
+    QVERIFY(rig.open());
+    auto view = openView(rig, 1);
+    QVERIFY(view);
+    view->setLink(lk::protocol::Link::Can);
+    QVERIFY(!view->isRamOnly());
+    QVERIFY(view->readComplete()); // what was read stays: the set did not change
+    QVERIFY(rig.count(1, Command::ReadPid) > 0);
+    QVERIFY(button(*view, "writeRom")->isVisible());
+    QVERIFY(!view->findChild<QLabel *>(QStringLiteral("ramOnlyNote"))->isVisible());
 }
 
 #include "tst_tuningview235.moc"
