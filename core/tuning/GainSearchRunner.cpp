@@ -14,6 +14,15 @@ GainSearchRunner::GainSearchRunner(bus::BusSession &session, QObject *parent)
 {
     connect(&m_step, &StepTestRunner::finished, this, &GainSearchRunner::onStepFinished);
     connect(&m_step, &StepTestRunner::failed, this, &GainSearchRunner::onStepFailed);
+    // An emergency stop from anywhere (Esc, another view, another command) ends the search.
+    // Between two steps no stream runs for it to stop: without this, the next candidate's
+    // step would start after the Motor Off. (The runner's own halt comes while Aborting.)
+    const auto onEmergencyStop = [this] {
+        if (m_phase == Phase::Searching)
+            haltAndRestore(StepTestFailure::Aborted, QStringLiteral("an emergency stop"));
+    };
+    connect(&m_session, &bus::BusSession::emergencyStopProgress, this, onEmergencyStop);
+    connect(&m_session, &bus::BusSession::emergencyStopFinished, this, onEmergencyStop);
 }
 
 GainSearchRunner::~GainSearchRunner()

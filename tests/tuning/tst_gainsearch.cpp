@@ -141,6 +141,7 @@ private slots:
     void searchBeatsTheGainsRead_data();
     void searchBeatsTheGainsRead();
     void abortRestoresAndTurnsOff();
+    void emergencyStopBetweenStepsEndsTheSearch();
     void saturationStopsAndRestores();
 };
 
@@ -301,6 +302,29 @@ void tst_GainSearch::abortRestoresAndTurnsOff()
     const GainSearchResult r = rig.waitForEnd();
     QCOMPARE(r.failure, StepTestFailure::Aborted);
     QVERIFY2(r.message.contains(QLatin1String("drive 3 is off")), qPrintable(r.message));
+    QCOMPARE(rig.gains(3), before);
+    const RequestResult state =
+        rig.request(*protocol::build::plain(Command::ReadState2, 3).request);
+    QVERIFY(state.reply);
+    QCOMPARE(std::get<protocol::State2>(state.reply->payload).iqA(), 0.0);
+}
+
+// The main window's Esc reaches the bus, not the runner: one that comes while the next
+// candidate's gains are being written (no step stream to stop) must still end the search.
+void tst_GainSearch::emergencyStopBetweenStepsEndsTheSearch()
+{
+    Rig rig;
+    const std::optional<LoopGains> before = rig.gains(3);
+    QObject context;
+    QObject::connect(&rig.runner, &GainSearchRunner::candidateScored, &context, [&] {
+        if (rig.scored.size() == 1)
+            rig.session.emergencyStop();
+    });
+    QVERIFY(rig.runner.start(spec(3), safety::SoftLimits::defaults(Series::MF)));
+    const GainSearchResult r = rig.waitForEnd();
+    QCOMPARE(r.failure, StepTestFailure::Aborted);
+    QVERIFY2(r.message.startsWith(QLatin1String("an emergency stop")), qPrintable(r.message));
+    QCOMPARE(r.candidates.size(), 1);
     QCOMPARE(rig.gains(3), before);
     const RequestResult state =
         rig.request(*protocol::build::plain(Command::ReadState2, 3).request);
