@@ -4911,6 +4911,18 @@ not read</source>
         <source>time_s, id, then a column per signal</source>
         <translation>先是 time_s 和驱动 ID，然后每个信号各一列</translation>
     </message>
+    <message>
+        <source>What a master commanded, beside what the drive replied (the other master&apos;s commands on a listen-only link)</source>
+        <translation>主站下发的指令，与驱动器的应答并列（只听模式下为另一主站的指令）</translation>
+    </message>
+    <message>
+        <source>Commanded</source>
+        <translation>指令值</translation>
+    </message>
+    <message>
+        <source>Commanded (%1)</source>
+        <translation>指令值（%1）</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::PollRateControl</name>

@@ -128,12 +128,14 @@ QWidget *PlotPanel::buildSignalRow()
     auto *layout = new QHBoxLayout(row);
     layout->setContentsMargins(4, 0, 4, 0);
     layout->addWidget(new QLabel(tr("Signals:"), row));
-    // Two rows of three: with temperature and voltage the signals fit a 1366-pixel screen.
+    // What the drive reports as two rows of three boxes; what a master commanded (six more
+    // signals, read on a listen-only link) behind one menu button: with every signal as a box
+    // the row would pass a 1366-pixel screen.
     auto *boxes = new QGridLayout;
     boxes->setVerticalSpacing(0);
-    const QVector<TelemetryChannel> channels = pickableChannels();
-    for (int i = 0; i < channels.size(); ++i) {
-        const TelemetryChannel channel = channels.at(i);
+    const QVector<TelemetryChannel> measured = measuredChannels();
+    for (int i = 0; i < measured.size(); ++i) {
+        const TelemetryChannel channel = measured.at(i);
         auto *box = new QCheckBox(channelPickerLabel(channel), row);
         box->setChecked(m_channels.contains(channel));
         connect(box, &QCheckBox::toggled, this,
@@ -142,6 +144,7 @@ QWidget *PlotPanel::buildSignalRow()
         boxes->addWidget(box, i / 3, i % 3);
     }
     layout->addLayout(boxes);
+    layout->addWidget(buildCommandedButton(row));
     layout->addStretch(1);
     m_pollRate = new PollRateControl(row);
     connect(m_pollRate, &PollRateControl::pollRateRequested, this, &PlotPanel::pollRateRequested);
@@ -149,15 +152,51 @@ QWidget *PlotPanel::buildSignalRow()
     return row;
 }
 
+QToolButton *PlotPanel::buildCommandedButton(QWidget *parent)
+{
+    m_commandedButton = new QToolButton(parent);
+    m_commandedButton->setObjectName(QStringLiteral("commandedSignals"));
+    m_commandedButton->setPopupMode(QToolButton::InstantPopup);
+    m_commandedButton->setToolTip(tr("What a master commanded, beside what the drive replied "
+                                     "(the other master's commands on a listen-only link)"));
+    auto *menu = new QMenu(m_commandedButton);
+    for (const TelemetryChannel channel : commandedChannels()) {
+        QAction *action = menu->addAction(channelPickerLabel(channel));
+        action->setCheckable(true);
+        action->setChecked(m_channels.contains(channel));
+        connect(action, &QAction::toggled, this,
+                [this, channel](bool on) { setChannelVisible(channel, on); });
+        m_commandedActions[channel] = action;
+    }
+    m_commandedButton->setMenu(menu);
+    updateCommandedButton();
+    return m_commandedButton;
+}
+
+void PlotPanel::updateCommandedButton()
+{
+    int shown = 0;
+    for (const TelemetryChannel channel : commandedChannels())
+        shown += m_channels.contains(channel) ? 1 : 0;
+    m_commandedButton->setText(shown == 0 ? tr("Commanded") : tr("Commanded (%1)").arg(shown));
+}
+
+QVector<TelemetryChannel> PlotPanel::measuredChannels()
+{
+    return {TelemetryChannel::Torque,    TelemetryChannel::Speed,       TelemetryChannel::Encoder,
+            TelemetryChannel::MultiTurn, TelemetryChannel::Temperature, TelemetryChannel::Voltage};
+}
+
+QVector<TelemetryChannel> PlotPanel::commandedChannels()
+{
+    return {TelemetryChannel::CommandedTorque,    TelemetryChannel::CommandedSpeed,
+            TelemetryChannel::CommandedAngle,     TelemetryChannel::CommandedSingleTurn,
+            TelemetryChannel::CommandedIncrement, TelemetryChannel::CommandedMaxSpeed};
+}
+
 QVector<TelemetryChannel> PlotPanel::pickableChannels()
 {
-    // The commanded 0xA5..0xA8 channels (single-turn target, increment, speed cap) are recorded
-    // and exported but not offered here: three more boxes widen the row past a 1366-pixel screen.
-    return {TelemetryChannel::Torque,          TelemetryChannel::Speed,
-            TelemetryChannel::Encoder,         TelemetryChannel::MultiTurn,
-            TelemetryChannel::Temperature,     TelemetryChannel::Voltage,
-            TelemetryChannel::CommandedTorque, TelemetryChannel::CommandedSpeed,
-            TelemetryChannel::CommandedAngle};
+    return measuredChannels() + commandedChannels();
 }
 
 void PlotPanel::setDrives(const QVector<int> &ids)
@@ -195,8 +234,14 @@ void PlotPanel::setChannelVisible(TelemetryChannel channel, bool visible)
         }
     }
     m_channels = next;
-    const QSignalBlocker block(m_channelBoxes.at(channel));
-    m_channelBoxes.at(channel)->setChecked(visible);
+    if (const auto box = m_channelBoxes.find(channel); box != m_channelBoxes.end()) {
+        const QSignalBlocker block(box->second);
+        box->second->setChecked(visible);
+    } else if (QAction *action = m_commandedActions.at(channel)) {
+        const QSignalBlocker block(action);
+        action->setChecked(visible);
+        updateCommandedButton();
+    }
     syncCharts();
     markDirty();
 }

@@ -20,6 +20,7 @@ class QComboBox;
 class QMenu;
 class QSplitter;
 class QToolBar;
+class QToolButton;
 
 namespace lk::ui {
 
@@ -52,8 +53,11 @@ public:
     /// once samples arrive, what they carry wins.
     void setDriveSeries(int id, lk::protocol::Series series);
 
-    /// The channels the signal picker offers, in display order.
+    /// The channels the signal picker offers, in display order: measuredChannels() as boxes,
+    /// then commandedChannels() in the "Commanded" menu.
     static QVector<TelemetryChannel> pickableChannels();
+    static QVector<TelemetryChannel> measuredChannels();
+    static QVector<TelemetryChannel> commandedChannels();
     void setChannelVisible(TelemetryChannel channel, bool visible);
     bool isChannelVisible(TelemetryChannel channel) const;
 
@@ -103,6 +107,8 @@ protected:
 private:
     QToolBar *buildToolbar();
     QWidget *buildSignalRow();
+    QToolButton *buildCommandedButton(QWidget *parent);
+    void updateCommandedButton();
     void markDirty();
     void onRedrawTimer();
     void redraw();
@@ -140,6 +146,8 @@ private:
     QAction *m_autoscaleAction = nullptr;
     QComboBox *m_windowCombo = nullptr;
     std::map<TelemetryChannel, QCheckBox *> m_channelBoxes;
+    std::map<TelemetryChannel, QAction *> m_commandedActions;
+    QToolButton *m_commandedButton = nullptr;
     PollRateControl *m_pollRate = nullptr;
     CursorReadout *m_readout = nullptr;
     QSplitter *m_chartArea = nullptr;

@@ -15,6 +15,8 @@
 #include <QtWidgets/QCheckBox>
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QDoubleSpinBox>
+#include <QtWidgets/QMenu>
+#include <QtWidgets/QToolButton>
 
 #include <cmath>
 
@@ -81,6 +83,7 @@ private slots:
     void msDriveShowsPower();
     void overlaidModeHasAxisPerUnit();
     void signalPickerChangesCharts();
+    void commandedMenuOffersEveryCommandedSignal();
     void wheelZoomsAndFollowLiveReturns();
     void dragPans();
     void cursorReadoutShowsValues();
@@ -280,6 +283,37 @@ void tst_PlotPanel::signalPickerChangesCharts()
     QCOMPARE(panel.charts().at(1)->traces().first().channel, TelemetryChannel::Encoder);
     QCOMPARE(panel.charts().at(2)->traces().first().channel, TelemetryChannel::MultiTurn);
     QVERIFY(panel.charts().at(2)->valueAxis(Quantity::Angle));
+}
+
+void tst_PlotPanel::commandedMenuOffersEveryCommandedSignal()
+{
+    // The six commanded signals (0xA5..0xA8's target, step and speed cap among them) are in the
+    // picker's "Commanded" menu; the button counts those shown.
+    TelemetryStore store;
+    PlotPanel panel(&store);
+    panel.setDrives({1});
+    showPanel(panel);
+    auto *button = panel.findChild<QToolButton *>(QStringLiteral("commandedSignals"));
+    QVERIFY(button && button->menu());
+    QCOMPARE(button->menu()->actions().size(), PlotPanel::commandedChannels().size());
+    QCOMPARE(button->text(), QStringLiteral("Commanded"));
+    QAction *singleTurn = nullptr;
+    for (QAction *action : button->menu()->actions()) {
+        if (action->text() == channelPickerLabel(TelemetryChannel::CommandedSingleTurn))
+            singleTurn = action;
+    }
+    QVERIFY(singleTurn);
+    singleTurn->setChecked(true);
+    QVERIFY(panel.isChannelVisible(TelemetryChannel::CommandedSingleTurn));
+    QCOMPARE(button->text(), QStringLiteral("Commanded (1)"));
+    QTRY_COMPARE(panel.charts().size(), 4);
+    QCOMPARE(panel.charts().at(3)->traces().first().channel, TelemetryChannel::CommandedSingleTurn);
+    // Set from code, the menu follows.
+    panel.setChannelVisible(TelemetryChannel::CommandedMaxSpeed, true);
+    QCOMPARE(button->text(), QStringLiteral("Commanded (2)"));
+    panel.setChannelVisible(TelemetryChannel::CommandedSingleTurn, false);
+    QVERIFY(!singleTurn->isChecked());
+    QCOMPARE(button->text(), QStringLiteral("Commanded (1)"));
 }
 
 void tst_PlotPanel::wheelZoomsAndFollowLiveReturns()
