@@ -22,6 +22,20 @@ PositionLoopTransfer PositionLoopTransfer::of(const DrivePhysics &physics)
                                 physics.plantOptions().resonance);
 }
 
+PositionLoopTransfer PositionLoopTransfer::forSeries(protocol::Series series,
+                                                     const protocol::PidGains &gains,
+                                                     const DerivativeGains &kd,
+                                                     const MechanicalResonance &resonance)
+{
+    DrivePhysics physics(RotorParams::forSeries(series), 1, 1); // no limit enters the loop
+    physics.setGains(gains);
+    physics.setDerivativeGains(kd);
+    PlantOptions plant;
+    plant.resonance = resonance;
+    physics.setPlantOptions(plant);
+    return of(physics);
+}
+
 PositionLoopTransfer::State PositionLoopTransfer::substep(const State &x, double r) const
 {
     // DrivePhysics::outerLoops in Position mode, term for term, inside its bounds: the command

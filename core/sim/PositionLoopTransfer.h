@@ -25,6 +25,10 @@ public:
                          const MechanicalResonance &resonance = {});
     /// The transfer function of `physics` as its gains stand now.
     static PositionLoopTransfer of(const DrivePhysics &physics);
+    /// The transfer function of a simulated drive of `series` with these gains.
+    static PositionLoopTransfer forSeries(protocol::Series series, const protocol::PidGains &gains,
+                                          const DerivativeGains &kd = {},
+                                          const MechanicalResonance &resonance = {});
 
     /// Angle over angle target, samples to samples (T = DrivePhysics::kStepSeconds).
     std::complex<double> angleDiscrete(double hz) const;
