@@ -11,6 +11,8 @@
 #include <tuning/FrequencyRunList.h>
 #include <tuning/StepRunsModel.h>
 
+#include <QtGui/QStandardItemModel>
+#include <QtWidgets/QComboBox>
 #include <QtWidgets/QDoubleSpinBox>
 #include <QtWidgets/QFormLayout>
 #include <QtWidgets/QHBoxLayout>
@@ -24,6 +26,11 @@ namespace lk::ui {
 using tuning::FrequencySweepPlan;
 using tuning::FrequencySweepResult;
 using tuning::FrequencySweepSpec;
+using tuning::SweepLoop;
+
+namespace {
+constexpr double kPositionAmplitudeDeg = 5; // a few degrees: well inside most windows
+}
 
 FrequencyResponseView::FrequencyResponseView(TuningView *host, QWidget *parent)
     : QWidget(parent), m_host(host), m_runs(new FrequencyRunList(this))
@@ -64,7 +71,8 @@ FrequencyResponseView::FrequencyResponseView(TuningView *host, QWidget *parent)
     setStatus(tr("Measures the speed loop's frequency response: a sine of the speed setpoint "
                  "around the operating point, one frequency after the other. Its extremes are "
                  "checked against the soft limits (Control view) before anything moves; Esc "
-                 "stops the motor and puts the gains read back."));
+                 "stops the motor and puts the gains read back. The position loop's is offered "
+                 "while an angle range is set: a sine of the angle around where the drive is."));
     refreshChart();
     // Not refresh(): the host builds its widgets before its read cycle; showEvent() asks it.
     m_run->setEnabled(false);
@@ -96,6 +104,13 @@ QWidget *FrequencyResponseView::buildFields()
         return s;
     };
     const FrequencySweepSpec d;
+    m_loop = new QComboBox(w);
+    m_loop->setObjectName(QStringLiteral("sweepLoop"));
+    m_loop->addItem(tr("Speed loop"), int(SweepLoop::Speed));
+    m_loop->addItem(tr("Position loop"), int(SweepLoop::Position));
+    m_loop->setToolTip(tr("The position loop needs an angle range (Control view): its sine "
+                          "stays inside it, around where the drive is."));
+    form->addRow(tr("Loop"), m_loop);
     // The soft limits bound the speeds, not the boxes.
     m_centre = spin(QStringLiteral("sweepCentre"), -1e5, 1e5, 0, 2 * d.amplitude, tr(" dps"));
     m_centre->setToolTip(tr("The speed the sine is centred on. Away from 0, so that the rotor "
@@ -126,14 +141,70 @@ QWidget *FrequencyResponseView::buildFields()
     for (QDoubleSpinBox *s : {m_centre, m_amplitude, m_from, m_to, m_perPoint})
         connect(s, &QDoubleSpinBox::valueChanged, this, &FrequencyResponseView::refresh);
     connect(m_points, &QSpinBox::valueChanged, this, &FrequencyResponseView::refresh);
+    connect(m_loop, &QComboBox::currentIndexChanged, this, &FrequencyResponseView::onLoopChosen);
     return w;
+}
+
+SweepLoop FrequencyResponseView::loop() const
+{
+    return SweepLoop(m_loop->currentData().toInt());
+}
+
+bool FrequencyResponseView::positionOffered() const
+{
+    const auto *model = qobject_cast<const QStandardItemModel *>(m_loop->model());
+    return model && model->item(1)->isEnabled();
+}
+
+bool FrequencyResponseView::setLoop(SweepLoop loop)
+{
+    if (loop == SweepLoop::Position && !positionOffered())
+        return false;
+    m_loop->setCurrentIndex(loop == SweepLoop::Position ? 1 : 0);
+    return true;
+}
+
+void FrequencyResponseView::onLoopChosen()
+{
+    // The amplitude's unit follows the loop; a position sine is centred where the drive is.
+    const bool position = loop() == SweepLoop::Position;
+    const QSignalBlocker block(m_amplitude);
+    m_amplitude->setSuffix(position ? tr(" deg") : tr(" dps"));
+    m_amplitude->setDecimals(position ? 1 : 0);
+    m_amplitude->setValue(position ? kPositionAmplitudeDeg : FrequencySweepSpec{}.amplitude);
+    m_centre->setVisible(!position);
+    refreshChart();
+    refresh();
+}
+
+FrequencySweepPlan FrequencyResponseView::planFor(const FrequencySweepSpec &spec,
+                                                  const TuningRunDrive &drive)
+{
+    FrequencySweepSpec planned = spec;
+    // A position sweep's centre is read when it starts: planned in the window's middle.
+    if (spec.loop == SweepLoop::Position && TuningRunGate::hasAngleWindow(drive.limits))
+        planned.operatingPoint = (*drive.limits.minAngleDeg + *drive.limits.maxAngleDeg) / 2;
+    return FrequencySweepPlan::make(planned, drive.series, drive.limits);
+}
+
+QString FrequencyResponseView::refusedText(const FrequencySweepSpec &spec, double value,
+                                           const safety::Verdict &verdict) const
+{
+    const bool angle = spec.loop == SweepLoop::Position &&
+                       verdict.kind != safety::LimitKind::SoftSpeed &&
+                       verdict.kind != safety::LimitKind::SeriesSpeed;
+    return (angle ? tr("Refused at %1\u00b0: %2.") : tr("Refused at %1 dps: %2."))
+        .arg(Format::number(value, angle ? 2 : 0),
+             text::VerdictText::verdict(verdict, m_host->series()));
 }
 
 FrequencySweepSpec FrequencyResponseView::spec() const
 {
     FrequencySweepSpec s;
     s.id = m_host->driveId();
-    s.operatingPoint = m_centre->value();
+    s.loop = loop();
+    if (s.loop == SweepLoop::Speed)
+        s.operatingPoint = m_centre->value(); // a position sweep's is read from the drive
     s.amplitude = m_amplitude->value();
     s.fromHz = m_from->value();
     s.toHz = m_to->value();
@@ -144,7 +215,9 @@ FrequencySweepSpec FrequencyResponseView::spec() const
 
 void FrequencyResponseView::setSpec(const FrequencySweepSpec &s)
 {
-    m_centre->setValue(s.centre());
+    setLoop(s.loop);
+    if (s.loop == SweepLoop::Speed)
+        m_centre->setValue(s.centre());
     m_amplitude->setValue(s.amplitude);
     m_from->setValue(s.fromHz);
     m_to->setValue(s.toHz);
@@ -154,11 +227,14 @@ void FrequencyResponseView::setSpec(const FrequencySweepSpec &s)
 
 QString FrequencyResponseView::travelText() const
 {
-    const std::optional<TuningRunDrive> drive = TuningRunGate::check(*m_host, nullptr);
+    const FrequencySweepSpec s = spec();
+    const std::optional<TuningRunDrive> drive = TuningRunGate::check(*m_host, s.loop, nullptr);
     if (!drive)
         return {};
-    const FrequencySweepSpec s = spec();
-    const FrequencySweepPlan plan = FrequencySweepPlan::make(s, drive->series, drive->limits);
+    const FrequencySweepPlan plan = planFor(s, *drive);
+    if (s.loop == SweepLoop::Position) // the centre is read when it starts: the sine's size
+        return TuningRunGate::positionTravelText(*drive, s.amplitude, s.peakSpeedDps(),
+                                                 plan.endS());
     if (!plan.allowed())
         return {};
     return TuningRunGate::travelText(*drive, s.centre() - s.amplitude, s.centre() + s.amplitude,
@@ -170,33 +246,43 @@ bool FrequencyResponseView::runSweep()
     if (isRunning())
         return false;
     QString why;
-    const std::optional<TuningRunDrive> drive = TuningRunGate::check(*m_host, &why);
+    const FrequencySweepSpec s = spec();
+    const bool position = s.loop == SweepLoop::Position;
+    const std::optional<TuningRunDrive> drive = TuningRunGate::check(*m_host, s.loop, &why);
     if (!drive) {
         setStatus(why, true);
         return false;
     }
-    const FrequencySweepSpec s = spec();
-    // The same plan the runner makes: a refusal names the limit before the question.
-    const FrequencySweepPlan plan = FrequencySweepPlan::make(s, drive->series, drive->limits);
-    if (!plan.allowed()) {
+    // The same plan the runner makes: a refusal names the limit before the question. A
+    // position sweep's centre is read when it starts; the runner checks its extremes from
+    // there, its peak speed is checked here already.
+    const FrequencySweepPlan plan = planFor(s, *drive);
+    const bool angleRefusal = position && !plan.allowed() && !plan.verdict().allowed() &&
+                              plan.verdict().kind != safety::LimitKind::SoftSpeed &&
+                              plan.verdict().kind != safety::LimitKind::SeriesSpeed;
+    if (!plan.allowed() && !angleRefusal) {
         setStatus(
             plan.verdict().allowed()
                 ? tr("The sweep cannot run as set (%1). Nothing was sent.").arg(plan.specError())
-                : tr("Refused at %1 dps: %2. Nothing was sent.")
-                      .arg(Format::number(plan.refusedDps(), 0),
-                           text::VerdictText::verdict(plan.verdict(), drive->series)),
+                : refusedText(s, plan.refusedDps(), plan.verdict()) + QLatin1Char(' ') +
+                      tr("Nothing was sent."),
             true);
         return false;
     }
-    const QString travel = TuningRunGate::travelText(*drive, s.centre() - s.amplitude,
-                                                     s.centre() + s.amplitude, plan.endS());
-    if (!TuningRunGate::askFreeToTurn(this, *drive, QStringLiteral("frequency_sweep"),
+    const QString travel =
+        position
+            ? TuningRunGate::positionTravelText(*drive, s.amplitude, s.peakSpeedDps(), plan.endS())
+            : TuningRunGate::travelText(*drive, s.centre() - s.amplitude, s.centre() + s.amplitude,
+                                        plan.endS());
+    if (!TuningRunGate::askFreeToTurn(this, *drive,
+                                      position ? QStringLiteral("frequency_sweep_position")
+                                               : QStringLiteral("frequency_sweep"),
                                       tr("Frequency response"), travel)) {
         setStatus(tr("Cancelled: nothing was sent."));
         return false;
     }
     // The question ran an event loop: the drive or the link may have changed meanwhile.
-    if (!TuningRunGate::check(*m_host, &why) || m_host->driveId() != drive->id) {
+    if (!TuningRunGate::check(*m_host, s.loop, &why) || m_host->driveId() != drive->id) {
         setStatus(tr("The drive or the connection changed: nothing was sent."), true);
         return false;
     }
@@ -204,7 +290,9 @@ bool FrequencyResponseView::runSweep()
     if (!m_runner || !m_runner->start(s, drive->limits))
         return false;
     m_runningModel = drive->model;
-    setStatus(tr("Reading the gains and speed of drive %1\u2026").arg(drive->id));
+    setStatus((position ? tr("Reading the gains and angle of drive %1\u2026")
+                        : tr("Reading the gains and speed of drive %1\u2026"))
+                  .arg(drive->id));
     refresh();
     emit runningChanged(true);
     return true;
@@ -268,10 +356,8 @@ void FrequencyResponseView::onFailed(const FrequencySweepResult &result)
 {
     QString text = TuningRunGate::failureText(result.failure, result.spec.id, result.message);
     if (result.failure == tuning::StepTestFailure::Refused && !result.refusal.allowed())
-        text = tr("Refused at %1 dps: %2.")
-                   .arg(Format::number(result.refusedDps, 0),
-                        text::VerdictText::verdict(result.refusal, m_host->series())) +
-               QLatin1Char(' ') + text;
+        text =
+            refusedText(result.spec, result.refusedDps, result.refusal) + QLatin1Char(' ') + text;
     setStatus(text, true);
     refresh();
     emit runningChanged(false);
@@ -282,9 +368,11 @@ void FrequencyResponseView::refreshChart()
     QVector<BodeRun> shown;
     const QVector<FrequencyRun> runs = m_runs->shownRuns();
     const QVector<int> keys = m_runs->shownKeys();
+    // Only comparable runs share the axes: the loop chosen, its unit.
     for (int i = 0; i < runs.size(); ++i)
-        shown.append({m_runs->title(m_runs->indexOf(keys.at(i))),
-                      StepRunsModel::runColor(keys.at(i)), runs.at(i).response});
+        if (runs.at(i).spec.loop == loop())
+            shown.append({m_runs->title(m_runs->indexOf(keys.at(i))),
+                          StepRunsModel::runColor(keys.at(i)), runs.at(i).response});
     m_chart->setRuns(shown);
     m_clear->setEnabled(!m_runs->runs().isEmpty() && !isRunning());
 }
@@ -297,9 +385,18 @@ void FrequencyResponseView::refresh()
                               : tr("Measure the frequency response set above on the selected "
                                    "drive (asks first)."));
     m_run->setEnabled(running || (m_host->canSendToDrive() && m_host->readComplete()));
-    for (QWidget *w : {static_cast<QWidget *>(m_centre), static_cast<QWidget *>(m_amplitude),
-                       static_cast<QWidget *>(m_from), static_cast<QWidget *>(m_to),
-                       static_cast<QWidget *>(m_points), static_cast<QWidget *>(m_perPoint)})
+    // The position loop is offered while an angle window is set.
+    if (auto *model = qobject_cast<QStandardItemModel *>(m_loop->model())) {
+        const bool offered =
+            TuningRunGate::positionOffered(*m_host) || (running && loop() == SweepLoop::Position);
+        model->item(1)->setEnabled(offered);
+        if (!offered && loop() == SweepLoop::Position)
+            m_loop->setCurrentIndex(0); // refresh() again, through onLoopChosen()
+    }
+    for (QWidget *w : {static_cast<QWidget *>(m_loop), static_cast<QWidget *>(m_centre),
+                       static_cast<QWidget *>(m_amplitude), static_cast<QWidget *>(m_from),
+                       static_cast<QWidget *>(m_to), static_cast<QWidget *>(m_points),
+                       static_cast<QWidget *>(m_perPoint)})
         w->setEnabled(!running);
     m_clear->setEnabled(!m_runs->runs().isEmpty() && !running);
     if (!running)

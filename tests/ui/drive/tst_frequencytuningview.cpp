@@ -107,6 +107,8 @@ private slots:
     void sweepIsKeptAndDrawn();
     void refusalsSendNothing_data();
     void refusalsSendNothing();
+    void positionLoopNeedsAnAngleWindow();
+    void positionPeakSpeedRefusedBeforeTheQuestion();
     void escMidSweepRestoresGainsAndTurnsOff();
     void escMidSearchRestoresGainsAndTurnsOff();
     void suggestionIsWrittenOnlyWhenClicked();
@@ -196,6 +198,77 @@ void tst_FrequencyTuningView::refusalsSendNothing()
     QCOMPARE(answers.asked.size(), questions);
     if (questions > 0)
         QVERIFY(answers.asked.last().reason.contains(QStringLiteral("turns")));
+    QVERIFY(rig.barrier());
+    QCOMPARE(motionTo(rig, 1), 0);
+}
+
+void tst_FrequencyTuningView::positionLoopNeedsAnAngleWindow()
+{
+    // Without an angle window the position loop is not offered; with one it runs around where
+    // the drive is, and the chart overlays only the runs of the loop chosen.
+    SimRig rig;
+    QVERIFY(rig.open());
+    lk::safety::SoftLimits limits = limitsOf(rig, 1);
+    {
+        Opened o = openView(rig, 1, limits);
+        QVERIFY(o.view);
+        QVERIFY(!o.sweep->positionOffered());
+        QVERIFY(!o.sweep->setLoop(lk::tuning::SweepLoop::Position));
+        QCOMPARE(o.sweep->loop(), lk::tuning::SweepLoop::Speed);
+    }
+    limits.minAngleDeg = -1e5;
+    limits.maxAngleDeg = 1e5;
+    Opened o = openView(rig, 1, limits);
+    QVERIFY(o.view);
+    QVERIFY(o.sweep->positionOffered());
+    lk::tuning::FrequencySweepSpec spec = shortSweep(0.3);
+    spec.loop = lk::tuning::SweepLoop::Position;
+    spec.operatingPoint.reset();
+    spec.amplitude = 4;
+    o.sweep->setSpec(spec);
+    QCOMPARE(o.sweep->loop(), lk::tuning::SweepLoop::Position);
+    QVERIFY2(o.sweep->travelText().contains(QStringLiteral("either side of where it is")),
+             qPrintable(o.sweep->travelText()));
+    const lk::protocol::PidGains before = rig.ramPid(1);
+    Answers yes(true);
+    QVERIFY2(o.sweep->runSweep(), qPrintable(o.sweep->statusText()));
+    QCOMPARE(yes.asked.first().key, QStringLiteral("frequency_sweep_position"));
+    QTRY_VERIFY_WITH_TIMEOUT(!o.sweep->isRunning(), kWaitMs);
+    QVERIFY2(o.sweep->runs()->runs().size() == 1, qPrintable(o.sweep->statusText()));
+    QCOMPARE(o.sweep->runs()->runs().first().spec.loop, lk::tuning::SweepLoop::Position);
+    QVERIFY(rig.count(1, Command::MultiPositionLimited) > 100);
+    QCOMPARE(rig.count(1, Command::Speed), 0);
+    QVERIFY2(o.sweep->statusText().contains(QStringLiteral("holds the angle it started at")),
+             qPrintable(o.sweep->statusText()));
+    QVERIFY(samePid(rig.ramPid(1), before));
+    QCOMPARE(o.sweep->chart()->runCount(), 1);
+    // A speed run and a position run do not share the axes.
+    QVERIFY(o.sweep->setLoop(lk::tuning::SweepLoop::Speed));
+    QCOMPARE(o.sweep->chart()->runCount(), 0);
+}
+
+void tst_FrequencyTuningView::positionPeakSpeedRefusedBeforeTheQuestion()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    lk::safety::SoftLimits limits = limitsOf(rig, 1);
+    limits.minAngleDeg = -1e5;
+    limits.maxAngleDeg = 1e5;
+    limits.maxSpeedDps = 1000;
+    Opened o = openView(rig, 1, limits);
+    QVERIFY(o.view);
+    lk::tuning::FrequencySweepSpec spec = shortSweep(0.3);
+    spec.loop = lk::tuning::SweepLoop::Position;
+    spec.amplitude = 5;
+    spec.toHz = 40; // 2 pi x 40 x 5 = 1257 dps
+    o.sweep->setSpec(spec);
+    Answers yes(true);
+    QVERIFY(!o.sweep->runSweep());
+    QVERIFY2(o.sweep->statusText().contains(QStringLiteral("Refused at 1,257 dps")),
+             qPrintable(o.sweep->statusText()));
+    QVERIFY2(o.sweep->statusText().contains(QStringLiteral("1000")),
+             qPrintable(o.sweep->statusText()));
+    QCOMPARE(yes.asked.size(), 0);
     QVERIFY(rig.barrier());
     QCOMPARE(motionTo(rig, 1), 0);
 }
