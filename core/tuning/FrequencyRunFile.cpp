@@ -27,6 +27,7 @@ const std::vector<FileField> &rootFields()
     static const std::vector<FileField> f{
         {"format", Type::Text},
         {"version", Type::Integer, 1, 1000000},
+        {"number", Type::Integer, 0, 1000000},
         {"label", Type::Text},
         {"ran_at", Type::Text},
         {"drive_id", Type::Integer, 1, 32},
@@ -221,6 +222,7 @@ QJsonObject FrequencyRunFile::toJson(const FrequencyRun &run)
         dropped.append(QJsonObject{{"hz", d.hz}, {"reason", QLatin1String(droppedWord(d.reason))}});
     return {{"format", QLatin1String(kFormatName)},
             {"version", kFormatVersion},
+            {"number", run.number},
             {"label", run.label},
             {"ran_at", run.ranAt.toUTC().toString(Qt::ISODateWithMs)},
             {"drive_id", run.driveId},
@@ -248,6 +250,7 @@ std::optional<FrequencyRun> FrequencyRunFile::fromJson(const QJsonObject &root,
         !ParameterFileCheck::checkObject(keys, QString(), rootFields(), error))
         return std::nullopt;
     FrequencyRun run;
+    run.number = root.value("number").toInt();
     run.label = root.value("label").toString();
     run.ranAt = QDateTime::fromString(root.value("ran_at").toString(), Qt::ISODateWithMs);
     if (!run.ranAt.isValid()) {

@@ -13,7 +13,7 @@ namespace lk::tuning {
 
 /// Saves and loads one frequency run (#25), so that today's response can be overlaid on last
 /// week's. `NAME.lkfreq.json`:
-/// {"format":"lkstudio-frequency-run","version":1,"label","ran_at","drive_id","series",
+/// {"format":"lkstudio-frequency-run","version":1,"number","label","ran_at","drive_id","series",
 /// "model","loop":"speed"|"position","from_hz","to_hz","points_planned","amplitude",
 /// "operating_point","gains":{...}|null,"sample_rate_hz","points":[{"hz","magnitude_db",
 /// "phase_deg","quality","samples","input_amplitude","output_amplitude"}],"dropped":[{"hz",

@@ -21,6 +21,7 @@ namespace {
 FrequencyRun sampleRun()
 {
     FrequencyRun run;
+    run.number = 3;
     run.label = QStringLiteral("after the new coupling");
     run.ranAt = QDateTime(QDate(2026, 11, 27), QTime(17, 3, 4, 500), Qt::UTC);
     run.driveId = 7;
@@ -73,6 +74,7 @@ void tst_FrequencyRunFile::roundTrip()
     ParameterFileError error;
     const auto back = FrequencyRunFile::load(path, &error);
     QVERIFY2(back, qPrintable(error.key));
+    QCOMPARE(back->number, 3);
     QCOMPARE(back->label, run.label);
     QCOMPARE(back->ranAt, run.ranAt);
     QCOMPARE(back->driveId, 7);

@@ -3,11 +3,15 @@
 #include "TuningRunGate.h"
 #include "TuningView.h"
 
+#include "ParameterFileText.h"
+
 #include <bus/BusSession.h>
+#include <panels/FileDialogs.h>
 #include <panels/Format.h>
 #include <panels/StatusColors.h>
 #include <text/VerdictText.h>
 #include <tuning/BodeChart.h>
+#include <tuning/FrequencyRunFile.h>
 #include <tuning/FrequencyRunList.h>
 #include <tuning/StepRunsModel.h>
 
@@ -56,6 +60,7 @@ FrequencyResponseView::FrequencyResponseView(TuningView *host, QWidget *parent)
     layout->addWidget(buildFields());
     layout->addWidget(m_travel);
     layout->addLayout(buttons);
+    layout->addLayout(buildRunButtons());
     layout->addWidget(m_status);
     layout->addWidget(m_chart, 1);
     connect(m_run, &QPushButton::clicked, this, [this] {
@@ -196,6 +201,127 @@ QString FrequencyResponseView::refusedText(const FrequencySweepSpec &spec, doubl
     return (angle ? tr("Refused at %1\u00b0: %2.") : tr("Refused at %1 dps: %2."))
         .arg(Format::number(value, angle ? 2 : 0),
              text::VerdictText::verdict(verdict, m_host->series()));
+}
+
+QHBoxLayout *FrequencyResponseView::buildRunButtons()
+{
+    m_runPick = new QComboBox(this);
+    m_runPick->setObjectName(QStringLiteral("sweepRunPick"));
+    m_runPick->setMinimumContentsLength(24);
+    m_save = new QPushButton(tr("Save run\u2026"), this);
+    m_save->setObjectName(QStringLiteral("saveSweepRun"));
+    m_open = new QPushButton(tr("Open run\u2026"), this);
+    m_open->setObjectName(QStringLiteral("openSweepRun"));
+    m_remove = new QPushButton(tr("Remove run"), this);
+    m_remove->setObjectName(QStringLiteral("removeSweepRun"));
+    m_remove->setToolTip(tr("Take the chosen run off the chart (a saved file stays)."));
+    auto *row = new QHBoxLayout;
+    row->addWidget(m_runPick, 1);
+    row->addWidget(m_save);
+    row->addWidget(m_open);
+    row->addWidget(m_remove);
+    connect(m_remove, &QPushButton::clicked, this, [this] { m_runs->remove(chosenRun()); });
+    connect(m_save, &QPushButton::clicked, this, [this] {
+        const FrequencyRun *run = m_runs->find(chosenRun());
+        if (!run)
+            return;
+        const QString path = FileDialogs::saveFile(
+            this, FileDialogs::Purpose::StepRuns, tr("Save frequency run"),
+            FileDialogs::suggestedName(QStringLiteral("frequency-run"), {run->driveId}, run->ranAt,
+                                       QLatin1String(tuning::FrequencyRunFile::kSuffix)),
+            tr("Frequency runs (*%1)").arg(QLatin1String(tuning::FrequencyRunFile::kSuffix)));
+        if (!path.isEmpty())
+            saveRun(chosenRun(), path);
+    });
+    connect(m_open, &QPushButton::clicked, this, [this] {
+        const QString path =
+            FileDialogs::openFile(this, FileDialogs::Purpose::StepRuns, tr("Open frequency run"),
+                                  tr("Frequency runs (*%1);;All files (*)")
+                                      .arg(QLatin1String(tuning::FrequencyRunFile::kSuffix)));
+        if (!path.isEmpty())
+            openRun(path);
+    });
+    return row;
+}
+
+int FrequencyResponseView::chosenRun() const
+{
+    return m_runPick->currentData().toInt();
+}
+
+bool FrequencyResponseView::saveRun(int key, const QString &path)
+{
+    const FrequencyRun *run = m_runs->find(key);
+    if (!run)
+        return false;
+    const QString failed = tuning::FrequencyRunFile::save(path, *run);
+    if (!failed.isEmpty()) {
+        setStatus(tr("%1 was not saved: %2").arg(m_runs->title(m_runs->indexOf(key)), failed),
+                  true);
+        return false;
+    }
+    setStatus(tr("%1 saved to %2.").arg(m_runs->title(m_runs->indexOf(key)), path));
+    return true;
+}
+
+bool FrequencyResponseView::openRun(const QString &path)
+{
+    record::ParameterFileError error;
+    const std::optional<FrequencyRun> run = tuning::FrequencyRunFile::load(path, &error);
+    if (!run) {
+        // A word of a fixed list ("loop", a dropped frequency's "reason") says which words.
+        const QString why =
+            error.kind == record::ParameterFileError::Kind::WrongType && !error.detail.isEmpty()
+                ? tr("%1 is %2: it must be %3").arg(error.key, error.found, error.detail)
+                : ParameterFileText::describe(error);
+        setStatus(tr("%1 was not opened: %2").arg(path, why), true);
+        return false;
+    }
+    const int key = m_runs->addLoaded(*run, path);
+    // Only runs of the loop chosen share the axes: show the loaded run's, where offered.
+    if (run->spec.loop != loop() && !setLoop(run->spec.loop)) {
+        setStatus(tr("%1 is a position loop's response: it is shown when the position loop is "
+                     "chosen (an angle range is set).")
+                      .arg(m_runs->title(m_runs->indexOf(key))));
+        return true;
+    }
+    setStatus(tr("Opened %1.").arg(m_runs->title(m_runs->indexOf(key))));
+    return true;
+}
+
+QString FrequencyResponseView::legendText(int key) const
+{
+    const int i = m_runs->indexOf(key);
+    if (i < 0)
+        return {};
+    const FrequencyRun &run = m_runs->runs().at(i);
+    const bool position = run.spec.loop == SweepLoop::Position;
+    QString gains = tr("gains unknown");
+    if (run.gains) {
+        const tuning::PidTriple &g = position ? run.gains->angle : run.gains->speed;
+        gains = tr("Kp %1 Ki %2 Kd %3").arg(g.kp).arg(g.ki).arg(g.kd);
+    }
+    return tr("%1: drive %2, %3, %4, %5")
+        .arg(m_runs->title(i))
+        .arg(run.driveId)
+        .arg(position ? tr("position loop") : tr("speed loop"), gains,
+             run.ranAt.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm")));
+}
+
+void FrequencyResponseView::refreshRunPick()
+{
+    // The chosen run stays chosen; a run just added (measured or opened) becomes the choice.
+    const int chosen = chosenRun();
+    const bool added = m_runs->runs().size() > m_runPick->count();
+    const QSignalBlocker block(m_runPick);
+    m_runPick->clear();
+    for (int i = 0; i < m_runs->runs().size(); ++i)
+        m_runPick->addItem(legendText(m_runs->keyAt(i)), m_runs->keyAt(i));
+    const int at = m_runPick->findData(chosen);
+    m_runPick->setCurrentIndex(at >= 0 && !added ? at : m_runPick->count() - 1);
+    const bool any = m_runPick->count() > 0;
+    m_save->setEnabled(any);
+    m_remove->setEnabled(any && !isRunning());
 }
 
 FrequencySweepSpec FrequencyResponseView::spec() const
@@ -371,10 +497,11 @@ void FrequencyResponseView::refreshChart()
     // Only comparable runs share the axes: the loop chosen, its unit.
     for (int i = 0; i < runs.size(); ++i)
         if (runs.at(i).spec.loop == loop())
-            shown.append({m_runs->title(m_runs->indexOf(keys.at(i))),
-                          StepRunsModel::runColor(keys.at(i)), runs.at(i).response});
+            shown.append(
+                {legendText(keys.at(i)), StepRunsModel::runColor(keys.at(i)), runs.at(i).response});
     m_chart->setRuns(shown);
     m_clear->setEnabled(!m_runs->runs().isEmpty() && !isRunning());
+    refreshRunPick();
 }
 
 void FrequencyResponseView::refresh()

@@ -8,6 +8,7 @@
 #include <memory>
 
 class QComboBox;
+class QHBoxLayout;
 class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
@@ -55,6 +56,14 @@ public:
     bool setLoop(tuning::SweepLoop loop);
     bool positionOffered() const;
     FrequencyRunList *runs() const { return m_runs; }
+    /// Saves the run `key` (FrequencyRunFile); false with the status saying why.
+    bool saveRun(int key, const QString &path);
+    /// Adds the run saved in `path` to the overlay; false with the status naming the bad key.
+    bool openRun(const QString &path);
+    /// The run chosen in the run picker (0: none).
+    int chosenRun() const;
+    /// The legend's text of a run: its title, drive, loop, gains and date.
+    QString legendText(int key) const;
     BodeChart *chart() const { return m_chart; }
 
 signals:
@@ -65,6 +74,8 @@ protected:
 
 private:
     QWidget *buildFields();
+    QHBoxLayout *buildRunButtons();
+    void refreshRunPick();
     void ensureRunner(bus::BusSession *session);
     void onFinished(const tuning::FrequencySweepResult &result);
     void onFailed(const tuning::FrequencySweepResult &result);
@@ -93,6 +104,10 @@ private:
     QLabel *m_travel = nullptr;
     QPushButton *m_run = nullptr;
     QPushButton *m_clear = nullptr;
+    QComboBox *m_runPick = nullptr;
+    QPushButton *m_save = nullptr;
+    QPushButton *m_open = nullptr;
+    QPushButton *m_remove = nullptr;
     QLabel *m_status = nullptr;
 };
 

@@ -17,8 +17,10 @@
 
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QScatterSeries>
+#include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
 #include <QtWidgets/QLabel>
+#include <QtWidgets/QPushButton>
 #include <QtWidgets/QTableWidget>
 
 using lk::drivetest::kWaitMs;
@@ -241,6 +243,33 @@ void tst_FrequencyTuningView::positionLoopNeedsAnAngleWindow()
     QVERIFY2(o.sweep->statusText().contains(QStringLiteral("holds the angle it started at")),
              qPrintable(o.sweep->statusText()));
     QVERIFY(samePid(rig.ramPid(1), before));
+    QCOMPARE(o.sweep->chart()->runCount(), 1);
+    // The legend: the run, its drive, loop, gains and date.
+    const QStringList legend = o.sweep->chart()->legendLabels();
+    QCOMPARE(legend.size(), 1);
+    QVERIFY2(legend.first().startsWith(QStringLiteral("Run 1: drive 1, position loop, Kp ")),
+             qPrintable(legend.first()));
+    // Saved, opened again beside it, then taken off the chart.
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("run.lkfreq.json"));
+    QVERIFY(o.sweep->saveRun(o.sweep->runs()->keyAt(0), file));
+    QVERIFY2(o.sweep->openRun(file), qPrintable(o.sweep->statusText()));
+    QCOMPARE(o.sweep->chart()->runCount(), 2);
+    QCOMPARE(o.sweep->chart()->legendLabels().size(), 2);
+    QFile bad(dir.filePath(QStringLiteral("bad.lkfreq.json")));
+    QVERIFY(bad.open(QIODevice::WriteOnly));
+    QFile saved(file);
+    QVERIFY(saved.open(QIODevice::ReadOnly));
+    bad.write(saved.readAll().replace("\"position\"", "\"angle\""));
+    bad.close();
+    QVERIFY(!o.sweep->openRun(bad.fileName()));
+    QVERIFY2(o.sweep->statusText().contains(
+                 QStringLiteral("loop is \"angle\": it must be \"speed\" or \"position\"")),
+             qPrintable(o.sweep->statusText()));
+    QCOMPARE(o.sweep->runs()->runs().size(), 2);
+    QCOMPARE(o.sweep->chosenRun(), o.sweep->runs()->keyAt(1));
+    o.sweep->findChild<QPushButton *>(QStringLiteral("removeSweepRun"))->click();
+    QCOMPARE(o.sweep->runs()->runs().size(), 1);
     QCOMPARE(o.sweep->chart()->runCount(), 1);
     // A speed run and a position run do not share the axes.
     QVERIFY(o.sweep->setLoop(lk::tuning::SweepLoop::Speed));
