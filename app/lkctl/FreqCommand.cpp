@@ -5,6 +5,7 @@
 #include "TuningJson.h"
 
 #include <text/VerdictText.h>
+#include <tuning/FrequencyRunFile.h>
 
 #include <cmath>
 
@@ -53,7 +54,8 @@ QString FreqCommand::usage() const
     return QStringLiteral(
                "Usage: lkctl freq ID speed|position [--from HZ] [--to HZ] [--points N]\n"
                "                  [--amplitude DPS|DEG] [--operating-point DPS] [--per-point S]\n"
-               "                  [LIMITS] (--port DEV [--baud N] | --sim SPEC) [--json]\n"
+               "                  [--save FILE] [LIMITS] (--port DEV [--baud N] | --sim SPEC)\n"
+               "                  [--json]\n"
                "\n"
                "The speed loop's frequency response on drive ID. THE AXIS MUST BE FREE TO\n"
                "TURN: it runs at the operating point +- the amplitude for the whole sweep.\n"
@@ -87,6 +89,8 @@ QString FreqCommand::usage() const
                "                         amplitude (the rotor never stops: friction would bend\n"
                "                         the response); speed only\n"
                "  --per-point S          each frequency lasts at least this long, default 0.3\n"
+               "  --save FILE            also save the run (FILE.lkfreq.json, lkstudio's\n"
+               "                         Frequency response view opens it to overlay)\n"
                "%1"
                "  --json                 one line: command, id, loop, from_hz, to_hz, amplitude,\n"
                "                         operating_point, sample_rate_hz, resolved_hz, points\n"
@@ -186,7 +190,8 @@ FrequencySweepResult FreqCommand::runSweep(LiveBus &bus, const Plan &plan,
 int FreqCommand::run(const QStringList &args, Console &console)
 {
     ArgParser parser = makeParser();
-    for (const char *o : {"from", "to", "points", "amplitude", "operating-point", "per-point"})
+    for (const char *o :
+         {"from", "to", "points", "amplitude", "operating-point", "per-point", "save"})
         parser.addOption(QLatin1String(o), true);
     MotionLimitOptions::declare(parser);
     int status = kExitOk;
@@ -221,11 +226,34 @@ int FreqCommand::run(const QStringList &args, Console &console)
     };
     if (const auto failed = failureStatus(bus, console, result.failure, result.message, refusal))
         return *failed;
+    if (parser.isSet(QStringLiteral("save")) &&
+        !saveRun(parser.value(QStringLiteral("save")), bus.session().series(id), result, console))
+        return kExitFailure;
     if (plan->json)
         printJson(console, *plan, result);
     else
         printText(console, *plan, result);
     return kExitOk;
+}
+
+bool FreqCommand::saveRun(const QString &path, std::optional<protocol::Series> series,
+                          const FrequencySweepResult &result, Console &console) const
+{
+    tuning::FrequencyRun run;
+    run.number = 1;
+    run.ranAt = QDateTime::currentDateTimeUtc();
+    run.driveId = result.spec.id;
+    if (series)
+        run.series = protocol::seriesName(*series);
+    run.spec = result.spec;
+    run.gains = result.gains;
+    run.response = result.response;
+    const QString failed = tuning::FrequencyRunFile::save(path, run);
+    if (failed.isEmpty())
+        return true;
+    console.errLine(
+        QStringLiteral("lkctl freq: the run was measured but not saved: %1").arg(failed));
+    return false;
 }
 
 void FreqCommand::printJson(Console &console, const Plan &plan, const FrequencySweepResult &r) const

@@ -1,5 +1,7 @@
 #include "E2eUtil.h"
 
+#include <tuning/FrequencyRunFile.h>
+
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
@@ -56,9 +58,10 @@ QString tst_LkctlFreq::limitsFile(const char *json)
 void tst_LkctlFreq::positionJson()
 {
     const QString window = limitsFile(R"({"min_angle_deg":-100000,"max_angle_deg":100000})");
+    const QString saved = m_dir.filePath(QStringLiteral("run.lkfreq.json"));
     const auto r = lkctl(args("freq 3 position --from 1 --to 20 --points 4 --amplitude 4 --json "
                               "--sim 3:MF+friction=0 --limits ") +
-                         QStringList{window});
+                         QStringList{window, QStringLiteral("--save"), saved});
     QVERIFY2(r.exitCode == 0, r.err.constData());
     const QJsonObject o = QJsonDocument::fromJson(r.out).object();
     QCOMPARE(o.value(QLatin1String("loop")).toString(), QStringLiteral("position"));
