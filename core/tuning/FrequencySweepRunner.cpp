@@ -167,17 +167,22 @@ void FrequencySweepRunner::readSpeed()
     });
 }
 
+void FrequencySweepRunner::unanswered(const bus::RequestResult &result, const char *read)
+{
+    end(result.status == RequestStatus::Disconnected ? StepTestFailure::Disconnected
+                                                     : StepTestFailure::Silent,
+        QStringLiteral("drive %1 did not answer %2 (%3); nothing was sent")
+            .arg(m_spec.id)
+            .arg(QLatin1String(read), QLatin1String(bus::requestStatusName(result.status))));
+}
+
 void FrequencySweepRunner::onAngleRead(const bus::RequestResult &result)
 {
     const auto *angle = result.ok() && result.reply
                             ? std::get_if<protocol::MultiTurnAngle>(&result.reply->payload)
                             : nullptr;
     if (!angle) {
-        end(result.status == RequestStatus::Disconnected ? StepTestFailure::Disconnected
-                                                         : StepTestFailure::Silent,
-            QStringLiteral("drive %1 did not answer read_multi_turn (%2); nothing was sent")
-                .arg(m_spec.id)
-                .arg(QLatin1String(bus::requestStatusName(result.status))));
+        unanswered(result, "read_multi_turn");
         return;
     }
     m_result.startAngle = angle->degrees();
@@ -192,11 +197,7 @@ void FrequencySweepRunner::onSpeedRead(const bus::RequestResult &result)
                             ? std::get_if<protocol::State2>(&result.reply->payload)
                             : nullptr;
     if (!state) {
-        end(result.status == RequestStatus::Disconnected ? StepTestFailure::Disconnected
-                                                         : StepTestFailure::Silent,
-            QStringLiteral("drive %1 did not answer read_state2 (%2); nothing was sent")
-                .arg(m_spec.id)
-                .arg(QLatin1String(bus::requestStatusName(result.status))));
+        unanswered(result, "read_state2");
         return;
     }
     m_result.startSpeed = double(state->speedDps);

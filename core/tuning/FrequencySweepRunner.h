@@ -81,6 +81,8 @@ private:
     void readSpeed();
     void onSpeedRead(const bus::RequestResult &result);
     void onAngleRead(const bus::RequestResult &result);
+    /// The read before the sweep went unanswered: nothing was sent.
+    void unanswered(const bus::RequestResult &result, const char *read);
     void startSweep();
     void onCompleted(const bus::RequestResult &result);
     void onTelemetry(const bus::TelemetryBatch &batch);

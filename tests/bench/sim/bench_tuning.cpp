@@ -61,7 +61,9 @@ QString key(const Drive &d)
 {
     return protocol::seriesName(d.series) +
            (d.v235 ? QStringLiteral("_v235") : QStringLiteral("_v23")) +
-           (*d.plant ? QStringLiteral("_resonant") : QString());
+           (std::string_view(d.plant) == "friction=0" ? QStringLiteral("_frictionless")
+            : *d.plant                                ? QStringLiteral("_resonant")
+                                                      : QString());
 }
 
 template <typename Runner, typename Result, typename Spec>
