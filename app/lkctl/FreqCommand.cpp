@@ -5,6 +5,7 @@
 #include "TuningJson.h"
 
 #include <text/VerdictText.h>
+#include <tuning/FrequencyRunFile.h>
 
 #include <cmath>
 
@@ -22,16 +23,24 @@ void optionalReal(OrderedJson &o, const QString &key, std::optional<double> v, d
         o.null(key);
 }
 
+constexpr double kDefaultPositionAmplitudeDeg = 5;
+
 QString figure(std::optional<double> v, const char *unit, int decimals)
 {
     return v ? QStringLiteral("%1 %2").arg(*v, 0, 'f', decimals).arg(QLatin1String(unit))
              : QStringLiteral("none");
 }
+QString loopWord(tuning::SweepLoop loop)
+{
+    return loop == tuning::SweepLoop::Position ? QStringLiteral("position")
+                                               : QStringLiteral("speed");
+}
 } // namespace
 
 QString FreqCommand::summary() const
 {
-    return QStringLiteral("measure the speed loop's frequency response (Bode) with a stepped sine");
+    return QStringLiteral(
+        "measure the speed or position loop's frequency response (Bode) with a stepped sine");
 }
 
 QString FreqCommand::example() const
@@ -43,12 +52,22 @@ QString FreqCommand::example() const
 QString FreqCommand::usage() const
 {
     return QStringLiteral(
-               "Usage: lkctl freq ID speed [--from HZ] [--to HZ] [--points N] [--amplitude DPS]\n"
-               "                  [--operating-point DPS] [--per-point S] [LIMITS]\n"
-               "                  (--port DEV [--baud N] | --sim SPEC) [--json]\n"
+               "Usage: lkctl freq ID speed|position [--from HZ] [--to HZ] [--points N]\n"
+               "                  [--amplitude DPS|DEG] [--operating-point DPS] [--per-point S]\n"
+               "                  [--save FILE] [LIMITS] (--port DEV [--baud N] | --sim SPEC)\n"
+               "                  [--json]\n"
                "\n"
                "The speed loop's frequency response on drive ID. THE AXIS MUST BE FREE TO\n"
                "TURN: it runs at the operating point +- the amplitude for the whole sweep.\n"
+               "\n"
+               "position: the position loop's instead, around the angle the drive is at (read\n"
+               "first, 0x92): a sine of the multi-turn target (0xA3, sent as 0xA4 at the speed\n"
+               "limit) of --amplitude DEG (default 5, at most 180). It needs an angle window\n"
+               "(min_angle_deg and max_angle_deg in --limits, exit 4 without one); the sine's\n"
+               "extremes must lie inside it and its peak speed, 2 pi x --to x the amplitude,\n"
+               "under the speed limit (else refused naming the limit, exit 4). The replies\n"
+               "carry the speed: each point is the angle's response, the speed's over jw. The\n"
+               "drive ends holding the angle it started at.\n"
                "Reads the drive's gains and acceleration limit (nothing runs without them)\n"
                "and its speed, checks the sine's extremes against the series and your limits\n"
                "(a refusal names the limit and sends NOTHING, exit 4), lifts the acceleration\n"
@@ -65,11 +84,13 @@ QString FreqCommand::usage() const
                "  --from HZ              the lowest frequency, 0.1..500, default 1\n"
                "  --to HZ                the highest, --from..500, default 100\n"
                "  --points N             log-spaced frequencies, 1..60, default 12\n"
-               "  --amplitude DPS        the sine's peak, default 50\n"
+               "  --amplitude DPS|DEG    the sine's peak, default 50 dps (position: 5 deg)\n"
                "  --operating-point DPS  the speed the sine is centred on, default twice the\n"
                "                         amplitude (the rotor never stops: friction would bend\n"
-               "                         the response)\n"
+               "                         the response); speed only\n"
                "  --per-point S          each frequency lasts at least this long, default 0.3\n"
+               "  --save FILE            also save the run (FILE.lkfreq.json, lkstudio's\n"
+               "                         Frequency response view opens it to overlay)\n"
                "%1"
                "  --json                 one line: command, id, loop, from_hz, to_hz, amplitude,\n"
                "                         operating_point, sample_rate_hz, resolved_hz, points\n"
@@ -83,12 +104,14 @@ QString FreqCommand::usage() const
                "Examples:\n"
                "  lkctl freq 3 speed --port /dev/ttyUSB0 --baud 1000000\n"
                "  lkctl freq 3 speed --from 2 --to 150 --amplitude 60 --sim 3:MF --json\n"
+               "  lkctl freq 3 position --to 30 --amplitude 4 --limits window.json --sim 3:MF\n"
                "\n"
                "%3")
         .arg(MotionLimitOptions::helpText(), BusOptions::helpText(),
              exitStatusText(QStringLiteral(
-                 "  4  refused for safety: the sine's centre or an extreme breaks the series\n"
-                 "     or one of your limits; nothing was sent\n")));
+                 "  4  refused for safety: the sine's centre, an extreme or (position) its\n"
+                 "     peak speed breaks the series or one of your limits, or a position\n"
+                 "     sweep has no angle window; nothing was sent\n")));
 }
 
 std::optional<FreqCommand::Plan> FreqCommand::parse(const ArgParser &parser, Console &console,
@@ -100,18 +123,20 @@ std::optional<FreqCommand::Plan> FreqCommand::parse(const ArgParser &parser, Con
     };
     const QStringList &pos = parser.positionals();
     if (pos.size() != 2)
-        return fail(QStringLiteral("expected ID speed"));
+        return fail(QStringLiteral("expected ID speed|position"));
     Plan plan;
     QString error;
     const std::optional<int> id = parseId(pos.at(0), &error);
     if (!id)
         return fail(error);
     plan.spec.id = *id;
-    if (pos.at(1) != QLatin1String("speed"))
-        return fail(QStringLiteral("unknown loop '%1'; the response is measured on the speed "
-                                   "loop: speed")
-                        .arg(pos.at(1)));
     tuning::FrequencySweepSpec &s = plan.spec;
+    if (pos.at(1) == QLatin1String("position")) {
+        s.loop = tuning::SweepLoop::Position;
+        s.amplitude = kDefaultPositionAmplitudeDeg;
+    } else if (pos.at(1) != QLatin1String("speed")) {
+        return fail(QStringLiteral("unknown loop '%1': speed or position").arg(pos.at(1)));
+    }
     const std::pair<const char *, double *> numbers[] = {{"from", &s.fromHz},
                                                          {"to", &s.toHz},
                                                          {"amplitude", &s.amplitude},
@@ -125,6 +150,9 @@ std::optional<FreqCommand::Plan> FreqCommand::parse(const ArgParser &parser, Con
         *into = *v;
     }
     if (parser.isSet(QStringLiteral("operating-point"))) {
+        if (s.loop == tuning::SweepLoop::Position)
+            return fail(QStringLiteral("--operating-point is the speed loop's: a position sweep "
+                                       "is centred on the angle the drive is at"));
         s.operatingPoint = parser.numberValue(QStringLiteral("operating-point"), -1e9, &error);
         if (!s.operatingPoint)
             return fail(error);
@@ -162,7 +190,8 @@ FrequencySweepResult FreqCommand::runSweep(LiveBus &bus, const Plan &plan,
 int FreqCommand::run(const QStringList &args, Console &console)
 {
     ArgParser parser = makeParser();
-    for (const char *o : {"from", "to", "points", "amplitude", "operating-point", "per-point"})
+    for (const char *o :
+         {"from", "to", "points", "amplitude", "operating-point", "per-point", "save"})
         parser.addOption(QLatin1String(o), true);
     MotionLimitOptions::declare(parser);
     int status = kExitOk;
@@ -178,20 +207,53 @@ int FreqCommand::run(const QStringList &args, Console &console)
         openDrive(bus, *busOptions, id, plan->limits, console, &status);
     if (!limits)
         return status;
+    const bool position = plan->spec.loop == tuning::SweepLoop::Position;
+    if (position && (!limits->minAngleDeg || !limits->maxAngleDeg)) {
+        bus.refused(QStringLiteral("the position loop's sweep needs an angle window "
+                                   "(min_angle_deg and max_angle_deg in --limits)"),
+                    id);
+        return kExitRefused;
+    }
     const FrequencySweepResult result = runSweep(bus, *plan, *limits);
     const auto refusal = [&] {
-        bus.refused(QStringLiteral("the sweep's %1 dps: %2")
+        const bool angle = position && result.refusal.kind != safety::LimitKind::SoftSpeed &&
+                           result.refusal.kind != safety::LimitKind::SeriesSpeed;
+        bus.refused(QStringLiteral("the sweep's %1 %2: %3")
                         .arg(result.refusedDps)
+                        .arg(angle ? QStringLiteral("deg") : QStringLiteral("dps"))
                         .arg(text::VerdictText::verdict(result.refusal, bus.session().series(id))),
                     id);
     };
     if (const auto failed = failureStatus(bus, console, result.failure, result.message, refusal))
         return *failed;
+    if (parser.isSet(QStringLiteral("save")) &&
+        !saveRun(parser.value(QStringLiteral("save")), bus.session().series(id), result, console))
+        return kExitFailure;
     if (plan->json)
         printJson(console, *plan, result);
     else
         printText(console, *plan, result);
     return kExitOk;
+}
+
+bool FreqCommand::saveRun(const QString &path, std::optional<protocol::Series> series,
+                          const FrequencySweepResult &result, Console &console) const
+{
+    tuning::FrequencyRun run;
+    run.number = 1;
+    run.ranAt = QDateTime::currentDateTimeUtc();
+    run.driveId = result.spec.id;
+    if (series)
+        run.series = protocol::seriesName(*series);
+    run.spec = result.spec;
+    run.gains = result.gains;
+    run.response = result.response;
+    const QString failed = tuning::FrequencyRunFile::save(path, run);
+    if (failed.isEmpty())
+        return true;
+    console.errLine(
+        QStringLiteral("lkctl freq: the run was measured but not saved: %1").arg(failed));
+    return false;
 }
 
 void FreqCommand::printJson(Console &console, const Plan &plan, const FrequencySweepResult &r) const
@@ -200,11 +262,11 @@ void FreqCommand::printJson(Console &console, const Plan &plan, const FrequencyS
     OrderedJson o;
     o.text(QStringLiteral("command"), QStringLiteral("freq"))
         .integer(QStringLiteral("id"), plan.spec.id)
-        .text(QStringLiteral("loop"), QStringLiteral("speed"))
+        .text(QStringLiteral("loop"), loopWord(r.spec.loop))
         .real(QStringLiteral("from_hz"), plan.spec.fromHz)
         .real(QStringLiteral("to_hz"), plan.spec.toHz)
         .real(QStringLiteral("amplitude"), plan.spec.amplitude)
-        .real(QStringLiteral("operating_point"), plan.spec.centre())
+        .real(QStringLiteral("operating_point"), r.spec.centre())
         .real(QStringLiteral("sample_rate_hz"), std::round(r.response.sampleRateHz * 10) / 10)
         .real(QStringLiteral("resolved_hz"),
               std::round(tuning::FrequencyResponse::resolvedHz(r.response.sampleRateHz) * 10) / 10)
@@ -222,14 +284,23 @@ void FreqCommand::printJson(Console &console, const Plan &plan, const FrequencyS
 
 void FreqCommand::printText(Console &console, const Plan &plan, const FrequencySweepResult &r) const
 {
-    console.outLine(QStringLiteral("Frequency response of drive %1's speed loop: %2 +- %3 dps, "
-                                   "%4..%5 Hz.")
+    const bool position = r.spec.loop == tuning::SweepLoop::Position;
+    console.outLine(QStringLiteral("Frequency response of drive %1's %2 loop: %3 +- %4 %5, "
+                                   "%6..%7 Hz.")
                         .arg(plan.spec.id)
-                        .arg(plan.spec.centre())
+                        .arg(loopWord(r.spec.loop))
+                        .arg(r.spec.centre())
                         .arg(plan.spec.amplitude)
+                        .arg(position ? QStringLiteral("deg") : QStringLiteral("dps"))
                         .arg(plan.spec.fromHz)
                         .arg(plan.spec.toHz));
-    if (r.gains)
+    if (r.gains && position)
+        console.outLine(QStringLiteral("Gains: angle Kp %1 Ki %2 Kd %3; %4.")
+                            .arg(r.gains->angle.kp)
+                            .arg(r.gains->angle.ki)
+                            .arg(r.gains->angle.kd)
+                            .arg(TuningJson::speedGainsText(*r.gains)));
+    else if (r.gains)
         console.outLine(QStringLiteral("Gains: %1.").arg(TuningJson::speedGainsText(*r.gains)));
     console.outLine(
         QStringLiteral("Sent %1 setpoints; %2 samples/s, so up to %3 Hz is resolved.")

@@ -60,6 +60,11 @@ void DrivePhysics::setPlantOptions(const PlantOptions &options)
     m_countedTheta = countedAngle(m_theta);
 }
 
+double DrivePhysics::coulombFriction() const
+{
+    return m_plant.coulombFrictionNm.value_or(m_params.coulombFriction);
+}
+
 double DrivePhysics::countedAngle(double theta) const
 {
     const int counts = m_plant.sensor.countsPerTurn;
@@ -147,7 +152,7 @@ bool DrivePhysics::atRest() const
 {
     return m_target.mode == LoopMode::Off && m_omega == 0.0 && m_current == 0.0 &&
            m_omegaLoad == 0.0 && m_twist == 0.0 &&
-           (m_locked || std::abs(m_loadTorque) <= m_params.coulombFriction);
+           (m_locked || std::abs(m_loadTorque) <= coulombFriction());
 }
 
 void DrivePhysics::advance(double seconds)
@@ -286,7 +291,7 @@ void DrivePhysics::mechanics(double dt)
     TwoMassMechanics::State x = m_mechanics.step(before, torque, dt);
     // Coulomb friction never reverses the motion within a step: that is what makes it stick.
     double w = x.motor;
-    const double dw = m_params.coulombFriction * dt / m_mechanics.j1;
+    const double dw = coulombFriction() * dt / m_mechanics.j1;
     if (w > dw)
         w -= dw;
     else if (w < -dw)

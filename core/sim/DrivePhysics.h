@@ -136,6 +136,7 @@ private:
     void mechanics(double dt);
     void measureSpeed();
     double countedAngle(double theta) const; ///< rad, down to the encoder's count
+    double coulombFriction() const;          ///< Nm: the plant option's, else the rotor's
     void thermal(double dt);
     bool atRest() const;
     void resetIntegrators();

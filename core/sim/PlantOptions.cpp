@@ -38,7 +38,7 @@ bool PlantOptions::isItem(const QString &item)
     const QString key = item.section(QLatin1Char('='), 0, 0).trimmed().toLower();
     return item.contains(QLatin1Char('=')) &&
            (key == QLatin1String("resonance") || key == QLatin1String("counts") ||
-            key == QLatin1String("speed-res"));
+            key == QLatin1String("speed-res") || key == QLatin1String("friction"));
 }
 
 bool PlantOptions::parseItem(const QString &item, QString *error)
@@ -86,8 +86,17 @@ bool PlantOptions::parseItem(const QString &item, QString *error)
         sensor.speedResolutionDps = *dps;
         return true;
     }
+    if (key == QLatin1String("friction")) {
+        const auto nm = number(value);
+        if (!nm || *nm < 0 || *nm > kMaxFrictionNm)
+            return fail(error, QStringLiteral("\"%1\": the Coulomb friction must be 0..%2 Nm")
+                                   .arg(item)
+                                   .arg(kMaxFrictionNm));
+        coulombFrictionNm = *nm;
+        return true;
+    }
     return fail(error, QStringLiteral("\"%1\": unknown plant option (resonance=, counts=, "
-                                      "speed-res=)")
+                                      "speed-res=, friction=)")
                            .arg(item));
 }
 
@@ -103,6 +112,8 @@ QString PlantOptions::toString() const
         items << QStringLiteral("counts=%1").arg(sensor.countsPerTurn);
     if (sensor.speedResolutionDps > 0)
         items << QStringLiteral("speed-res=%1").arg(sensor.speedResolutionDps);
+    if (coulombFrictionNm)
+        items << QStringLiteral("friction=%1").arg(*coulombFrictionNm);
     return items.join(QLatin1Char('+'));
 }
 

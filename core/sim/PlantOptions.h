@@ -33,18 +33,25 @@ struct SensorQuantisation {
 };
 
 /// The plant's optional parts, as lksim takes them per drive:
-/// "resonance=HZ[/DAMPING[/LOAD_RATIO]]", "counts=N", "speed-res=DPS", joined by '+'
-/// ("resonance=120/0.05+counts=16384").
+/// "resonance=HZ[/DAMPING[/LOAD_RATIO]]", "counts=N", "speed-res=DPS", "friction=NM", joined
+/// by '+' ("resonance=120/0.05+counts=16384").
 struct PlantOptions {
     MechanicalResonance resonance;
     SensorQuantisation sensor;
+    /// The rotor's Coulomb friction (Nm) instead of the series' (RotorParams); 0: none. A
+    /// sine of the angle around a standstill reverses the rotor twice a cycle, where friction
+    /// is no part of a linear loop: friction=0 makes the position loop's response the
+    /// PositionLoopTransfer's at any amplitude.
+    std::optional<double> coulombFrictionNm;
 
     static constexpr double kMinResonanceHz = 5;
     static constexpr double kMaxResonanceHz = 1500; ///< below the substep's stability bound
+    static constexpr double kMaxFrictionNm = 1;
 
     /// Parse a '+'-joined list; nullopt with one sentence naming the item in `error`.
     static std::optional<PlantOptions> parse(const QString &text, QString *error = nullptr);
-    /// Whether `item` is one of ours ("resonance=...", "counts=...", "speed-res=...").
+    /// Whether `item` is one of ours ("resonance=...", "counts=...", "speed-res=...",
+    /// "friction=...").
     static bool isItem(const QString &item);
     /// Take one "key=value" item; false (and `error`) for an unknown key or a bad value.
     bool parseItem(const QString &item, QString *error = nullptr);
@@ -52,7 +59,8 @@ struct PlantOptions {
     QString toString() const;
     bool operator==(const PlantOptions &o) const
     {
-        return resonance == o.resonance && sensor == o.sensor;
+        return resonance == o.resonance && sensor == o.sensor &&
+               coulombFrictionNm == o.coulombFrictionNm;
     }
 };
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "DiscreteLoop.h"
 #include "DrivePhysics.h"
 
 #include <array>
@@ -42,16 +43,30 @@ public:
     double magnitudeDb(double hz) const;
     double phaseDeg(double hz) const; ///< -180..180
 
-private:
     using State = std::array<double, kStates>;
-    /// One substep of the linear loop from state `x` with reference `r`.
-    State step(const State &x, double r) const;
+    /// One substep of the linear loop from state `x` with speed reference `r` (rad/s): what
+    /// PositionLoopTransfer runs under its angle loop.
+    State substep(const State &x, double r) const;
+    /// The substep hold of a reference at hz (sinc(wT/2) e^{-jwT/2}): a stepped sine measures
+    /// discrete() over it.
+    static std::complex<double> substepHold(double hz);
+    /// The states' indices.
+    enum Index {
+        Current,
+        CurrentIntegral,
+        Speed,
+        Estimate,
+        EstimateAccel,
+        SpeedIntegral,
+        LoadSpeed,
+        Twist
+    };
 
+private:
     RotorParams m_rotor;
     PhysicalGains m_gains;
     TwoMassMechanics m_mechanics;
-    std::array<State, kStates> m_a{}; ///< columns of A
-    State m_b{};
+    DiscreteLoop<kStates> m_loop;
 };
 
 } // namespace lk::sim

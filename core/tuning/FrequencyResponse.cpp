@@ -87,6 +87,16 @@ std::optional<FrequencyPoint> FrequencyResponse::measure(const QVector<double> &
     return p;
 }
 
+FrequencyPoint FrequencyResponse::integrated(const FrequencyPoint &speed)
+{
+    FrequencyPoint p = speed;
+    const double w = 2 * 3.14159265358979323846 * speed.hz;
+    p.magnitudeDb -= 20 * std::log10(w);
+    p.phaseDeg -= 90;
+    p.outputAmplitude /= w;
+    return p;
+}
+
 void FrequencyResponse::unwrapPhases()
 {
     for (int i = 1; i < points.size(); ++i) {

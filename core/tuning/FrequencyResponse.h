@@ -62,6 +62,10 @@ struct FrequencyResponse {
     measure(const QVector<double> &inputT, const QVector<double> &inputV,
             const QVector<double> &outputT, const QVector<double> &outputY, double hz, double from,
             double to, DroppedReason *why = nullptr);
+    /// A point of the speed's response (dps per unit of setpoint) as the response of its
+    /// integral, the angle (deg per unit): magnitude over w, phase less 90 degrees; the
+    /// amplitude becomes the angle's.
+    static FrequencyPoint integrated(const FrequencyPoint &speed);
     /// Makes the phases continuous from the lowest frequency on (points in ascending order).
     void unwrapPhases();
     BodeFigures figures() const;

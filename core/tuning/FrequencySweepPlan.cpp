@@ -13,7 +13,46 @@ using Spec = FrequencySweepSpec;
 // the first setpoint's reply, a transaction later: the windows end this much early so that no
 // sample of the next frequency falls into them.
 constexpr double kWindowGuardS = 0.002;
+constexpr double kPi = 3.14159265358979323846;
+// Half an output turn of a direct drive: a sine around an angle, not a move.
+constexpr double kMaxPositionAmplitudeDeg = 180;
 } // namespace
+
+double FrequencySweepSpec::peakSpeedDps() const
+{
+    return loop == SweepLoop::Position ? 2 * kPi * toHz * amplitude : std::abs(amplitude);
+}
+
+bool FrequencySweepPlan::checkExtremes(std::optional<protocol::Series> series,
+                                       const safety::SoftLimits &limits)
+{
+    const FrequencySweepSpec &spec = m_spec;
+    const bool position = spec.loop == SweepLoop::Position;
+    safety::DrivePosition from;
+    from.angleDeg = spec.operatingPoint;
+    const double centre = spec.centre();
+    QVector<std::pair<protocol::BuildResult, double>> checks;
+    for (double v : {centre, centre + spec.amplitude, centre - spec.amplitude})
+        checks.append({position ? protocol::build::multiPosition(spec.id, v)
+                                : protocol::build::speed(spec.id, v),
+                       v});
+    if (position) // the setpoint's fastest: a speed command of that speed meets the same limits
+        checks.append({protocol::build::speed(spec.id, spec.peakSpeedDps()), spec.peakSpeedDps()});
+    for (const auto &[built, value] : checks) {
+        if (!built.ok()) {
+            m_specError = built.error.message();
+            return false;
+        }
+        const safety::MotionPlan motion =
+            safety::MotionPlanner::plan(*built.request, series, limits, from);
+        if (!motion.allowed()) {
+            m_verdict = motion.verdict;
+            m_refusedDps = value;
+            return false;
+        }
+    }
+    return true;
+}
 
 QVector<double> FrequencySweepPlan::frequencies(double from, double to, int points)
 {
@@ -42,8 +81,15 @@ QString FrequencySweepPlan::checkSpec(const FrequencySweepSpec &s)
         return QStringLiteral("the points must be 1..%1, got %2")
             .arg(Spec::kMaxPoints)
             .arg(s.points);
+    const bool position = s.loop == SweepLoop::Position;
     if (!finite(s.amplitude) || s.amplitude <= 0)
-        return QStringLiteral("the amplitude must be above 0 dps, got %1").arg(s.amplitude);
+        return QStringLiteral("the amplitude must be above 0 %1, got %2")
+            .arg(position ? QStringLiteral("deg") : QStringLiteral("dps"))
+            .arg(s.amplitude);
+    if (position && s.amplitude > kMaxPositionAmplitudeDeg)
+        return QStringLiteral("the amplitude of a position sweep must be at most %1 deg, got %2")
+            .arg(kMaxPositionAmplitudeDeg)
+            .arg(s.amplitude);
     if (s.operatingPoint && !finite(*s.operatingPoint))
         return QStringLiteral("the operating point must be a number");
     if (!finite(s.leadInS) || s.leadInS < bus::SetpointWaveform::kMinPeriodS || s.leadInS > 60)
@@ -66,26 +112,14 @@ FrequencySweepPlan FrequencySweepPlan::make(const FrequencySweepSpec &spec,
         return plan;
     // The extremes and the centre, as every setpoint will be checked on the bus thread: a
     // refusal here names the limit before anything moves.
-    const double centre = spec.centre();
-    for (double dps : {centre, centre + spec.amplitude, centre - spec.amplitude}) {
-        const protocol::BuildResult built = protocol::build::speed(spec.id, dps);
-        if (!built.ok()) {
-            plan.m_specError = built.error.message();
-            return plan;
-        }
-        const safety::MotionPlan motion =
-            safety::MotionPlanner::plan(*built.request, series, limits, {});
-        if (!motion.allowed()) {
-            plan.m_verdict = motion.verdict;
-            plan.m_refusedDps = dps;
-            return plan;
-        }
-    }
+    if (!plan.checkExtremes(series, limits))
+        return plan;
     bus::SetpointWaveform::Settings &w = plan.m_settings;
     w.waveform = bus::SetpointWaveform::Waveform::SteppedSine;
-    w.target = bus::SetpointWaveform::Target::Speed;
+    w.target = spec.loop == SweepLoop::Position ? bus::SetpointWaveform::Target::Position
+                                                : bus::SetpointWaveform::Target::Speed;
     w.amplitude = spec.amplitude;
-    w.offset = centre;
+    w.offset = spec.centre();
     w.periodS = spec.leadInS;
     w.rateHz = spec.rateHz;
     double start = spec.leadInS;

@@ -14,16 +14,23 @@
 
 namespace lk::tuning {
 
-/// A frequency response measurement of the speed loop as the user asks for it: a stepped sine
-/// of the speed setpoint around an operating point.
+/// The loop a sweep measures: its setpoint is the speed (0xA2) or the multi-turn angle (0xA3,
+/// sent as 0xA4 at the speed limit).
+enum class SweepLoop { Speed, Position };
+
+/// A frequency response measurement of the speed or position loop as the user asks for it: a
+/// stepped sine of the setpoint around an operating point.
 struct FrequencySweepSpec {
     int id = 1;
+    SweepLoop loop = SweepLoop::Speed;
     double fromHz = 1;
     double toHz = 100;
     int points = 12;       ///< log-spaced frequencies from fromHz to toHz
-    double amplitude = 50; ///< dps, the sine's peak
-    /// dps: the speed the sine is centred on; nullopt: twice the amplitude, so that the rotor
-    /// never stops (friction would then bend the response).
+    double amplitude = 50; ///< the sine's peak: dps (speed) or deg (position)
+    /// Speed: the speed (dps) the sine is centred on; nullopt: twice the amplitude, so that the
+    /// rotor never stops (friction would then bend the response). Position: the multi-turn
+    /// angle (deg) the drive was read at, which the runner sets: the sine starts where the
+    /// drive is; nullopt refuses the sweep (AngleUnknown).
     std::optional<double> operatingPoint;
     double leadInS = 0.5;   ///< held at the operating point before the first frequency
     double minPointS = 0.3; ///< each frequency lasts at least this long
@@ -34,7 +41,14 @@ struct FrequencySweepSpec {
     static constexpr int kMaxPoints = 60;
     static constexpr int kSettleCycles = 1; ///< cycles of each frequency left out of the fit
     static constexpr int kMinFitCycles = 3;
-    double centre() const { return operatingPoint.value_or(2 * amplitude); }
+    double centre() const
+    {
+        return loop == SweepLoop::Position ? operatingPoint.value_or(0)
+                                           : operatingPoint.value_or(2 * amplitude);
+    }
+    /// The fastest the setpoint moves: the amplitude (speed) or 2 pi toHz x amplitude
+    /// (position: dps), which the soft speed limit bounds.
+    double peakSpeedDps() const;
 };
 
 /// One frequency of the sweep: when it plays and the window it is fitted over (whole cycles
@@ -48,8 +62,11 @@ struct SweepSegment {
 };
 
 /// The stepped sine of a sweep, its segments, and the check of its extremes against the
-/// series and the soft limits (the stream checks every setpoint again on the bus thread).
-/// Pure.
+/// series and the soft limits (the stream checks every setpoint again on the bus thread). A
+/// position sweep's extremes are checked from its centre (the angle window, one output turn)
+/// and its peak speed, 2 pi f A at the top frequency, against the speed limit: the refusal
+/// names it. Keeping 2 pi f A under the speed limit also keeps the drive's angle loop short of
+/// its move speed, the small-signal region its response is linear in. Pure.
 class FrequencySweepPlan {
 public:
     static FrequencySweepPlan make(const FrequencySweepSpec &spec,
@@ -68,10 +85,13 @@ public:
     const QString &specError() const { return m_specError; }
     /// The limit that refused the sweep (kind None when allowed or the spec was bad).
     const safety::Verdict &verdict() const { return m_verdict; }
-    /// The speed the refused extreme asked for.
+    /// The speed (or, for a position sweep's extremes, the angle) the refused extreme asked for.
     double refusedDps() const { return m_refusedDps; }
 
 private:
+    /// The extremes' check: false (and the refusal or the spec error set) when refused.
+    bool checkExtremes(std::optional<protocol::Series> series, const safety::SoftLimits &limits);
+
     FrequencySweepSpec m_spec;
     bus::SetpointWaveform::Settings m_settings;
     QVector<SweepSegment> m_segments;

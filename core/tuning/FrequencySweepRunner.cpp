@@ -153,11 +153,42 @@ void FrequencySweepRunner::onGainsRead()
 
 void FrequencySweepRunner::readSpeed()
 {
-    const protocol::BuildResult read = protocol::build::plain(Command::ReadState2, m_spec.id);
-    m_session.send(*read.request, this, [this, run = m_run](const bus::RequestResult &r) {
-        if (run == m_run && m_phase == Phase::ReadingSpeed)
+    // A position sweep is centred on where the drive is: its multi-turn angle (0x92).
+    const bool position = m_spec.loop == SweepLoop::Position;
+    const protocol::BuildResult read =
+        protocol::build::plain(position ? Command::ReadMultiTurn : Command::ReadState2, m_spec.id);
+    m_session.send(*read.request, this, [this, run = m_run, position](const bus::RequestResult &r) {
+        if (run != m_run || m_phase != Phase::ReadingSpeed)
+            return;
+        if (position)
+            onAngleRead(r);
+        else
             onSpeedRead(r);
     });
+}
+
+void FrequencySweepRunner::unanswered(const bus::RequestResult &result, const char *read)
+{
+    end(result.status == RequestStatus::Disconnected ? StepTestFailure::Disconnected
+                                                     : StepTestFailure::Silent,
+        QStringLiteral("drive %1 did not answer %2 (%3); nothing was sent")
+            .arg(m_spec.id)
+            .arg(QLatin1String(read), QLatin1String(bus::requestStatusName(result.status))));
+}
+
+void FrequencySweepRunner::onAngleRead(const bus::RequestResult &result)
+{
+    const auto *angle = result.ok() && result.reply
+                            ? std::get_if<protocol::MultiTurnAngle>(&result.reply->payload)
+                            : nullptr;
+    if (!angle) {
+        unanswered(result, "read_multi_turn");
+        return;
+    }
+    m_result.startAngle = angle->degrees();
+    m_spec.operatingPoint = angle->degrees();
+    m_result.spec = m_spec;
+    startSweep();
 }
 
 void FrequencySweepRunner::onSpeedRead(const bus::RequestResult &result)
@@ -166,14 +197,15 @@ void FrequencySweepRunner::onSpeedRead(const bus::RequestResult &result)
                             ? std::get_if<protocol::State2>(&result.reply->payload)
                             : nullptr;
     if (!state) {
-        end(result.status == RequestStatus::Disconnected ? StepTestFailure::Disconnected
-                                                         : StepTestFailure::Silent,
-            QStringLiteral("drive %1 did not answer read_state2 (%2); nothing was sent")
-                .arg(m_spec.id)
-                .arg(QLatin1String(bus::requestStatusName(result.status))));
+        unanswered(result, "read_state2");
         return;
     }
     m_result.startSpeed = double(state->speedDps);
+    startSweep();
+}
+
+void FrequencySweepRunner::startSweep()
+{
     m_plan = FrequencySweepPlan::make(m_spec, m_session.series(m_spec.id), m_limits);
     if (!m_plan.allowed()) {
         m_result.refusal = m_plan.verdict();
@@ -196,6 +228,7 @@ void FrequencySweepRunner::onSpeedRead(const bus::RequestResult &result)
     stream.settings = m_plan.settings();
     stream.series = m_session.series(m_spec.id);
     stream.limits = m_limits;
+    stream.position.angleDeg = m_result.startAngle; // position setpoints are checked from it
     m_phase = Phase::Sweeping;
     m_stream = m_session.startSetpointStream(stream);
     emit started(m_plan);
@@ -208,9 +241,14 @@ void FrequencySweepRunner::onCompleted(const bus::RequestResult &result)
         !bus::SetpointStream::isSetpointTicket(result.ticket) || result.request.id != m_spec.id)
         return;
     ++m_result.sent;
-    const auto *speed = std::get_if<protocol::SpeedCommand>(&result.request.payload);
-    if (result.ok() && speed) {
+    if (!result.ok())
+        return;
+    if (const auto *speed = std::get_if<protocol::SpeedCommand>(&result.request.payload)) {
         m_sentValues.append(speed->speedDps());
+        m_latencies.append(result.latencyMs * 1e-3);
+    } else if (const auto *angle =
+                   std::get_if<protocol::MultiPositionCommand>(&result.request.payload)) {
+        m_sentValues.append(double(angle->angleRaw) * protocol::kCentiUnits);
         m_latencies.append(result.latencyMs * 1e-3);
     }
 }
@@ -220,7 +258,10 @@ void FrequencySweepRunner::onTelemetry(const bus::TelemetryBatch &batch)
     if (m_phase != Phase::Sweeping && m_phase != Phase::Returning)
         return;
     for (const bus::TelemetrySample &s : batch) {
-        if (s.id != m_spec.id || s.source != Command::Speed || !s.has(bus::TelemetryField::Speed))
+        const bool setpointReply = s.source == Command::Speed ||
+                                   s.source == Command::MultiPosition ||
+                                   s.source == Command::MultiPositionLimited;
+        if (s.id != m_spec.id || !setpointReply || !s.has(bus::TelemetryField::Speed))
             continue;
         m_replyTimes.append(s.time);
         m_replySpeeds.append(s.speedDps);
@@ -272,6 +313,19 @@ void FrequencySweepRunner::sweepDone()
 
 void FrequencySweepRunner::returnToStart()
 {
+    if (m_spec.loop == SweepLoop::Position) {
+        // The stepped sine ends on its centre, the angle read at the start: the drive holds it.
+        QTimer::singleShot(StepTestRunner::kSampleGraceMs, this, [this, run = m_run] {
+            if (run != m_run || m_phase != Phase::Returning)
+                return;
+            restorePolling();
+            end(StepTestFailure::None,
+                QStringLiteral("the gains and acceleration read are back in RAM; the drive holds "
+                               "the angle it started at (%1 deg)")
+                    .arg(m_result.startAngle.value_or(0), 0, 'f', 2));
+        });
+        return;
+    }
     // Back to the speed the drive had before the sweep, through the same gate.
     TuningEnd::returnToSpeed(
         m_session, m_spec.id, m_result.startSpeed.value_or(0), m_limits, this,
@@ -320,9 +374,11 @@ void FrequencySweepRunner::analyse()
             continue;
         }
         DroppedReason why = DroppedReason::TooFewSamples;
-        const std::optional<FrequencyPoint> p = FrequencyResponse::measure(
+        std::optional<FrequencyPoint> p = FrequencyResponse::measure(
             m_result.time, m_result.setpoint, m_result.time, m_result.speed, s.hz,
             origin + s.fitFromS, origin + s.fitToS, &why);
+        if (p && m_spec.loop == SweepLoop::Position)
+            *p = FrequencyResponse::integrated(*p); // the angle is the speed over jw
         if (p)
             r.points.append(*p);
         else

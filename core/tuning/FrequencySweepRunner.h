@@ -27,10 +27,11 @@ struct FrequencySweepResult {
     FrequencySweepSpec spec;
     FrequencyResponse response;
     std::optional<LoopGains> gains;   ///< as read before anything moved
-    std::optional<double> startSpeed; ///< dps, read before anything moved
-    /// The setpoints as the drive acknowledged them (dps, at the times they were written:
-    /// the reply's time less its latency) and the speed each reply carried: the raw data
-    /// behind the points.
+    std::optional<double> startSpeed; ///< dps, read before anything moved (speed loop)
+    std::optional<double> startAngle; ///< deg, multi-turn, read before (position loop)
+    /// The setpoints as the drive acknowledged them (dps or deg, at the times they were
+    /// written: the reply's time less its latency) and the speed each reply carried: the raw
+    /// data behind the points.
     QVector<double> time, setpoint, speed;
     qint64 sent = 0;
     StepTestFailure failure = StepTestFailure::None;
@@ -40,12 +41,15 @@ struct FrequencySweepResult {
     bool ok() const { return failure == StepTestFailure::None; }
 };
 
-/// Measures the speed loop's frequency response on a BusSession: reads the drive's gains and
-/// acceleration limit (nothing runs without them; the limit is lifted in RAM for the sweep and
-/// put back after it, whatever happens), its speed, plans the stepped sine (FrequencySweepPlan: a
+/// Measures the speed or position loop's frequency response on a BusSession: reads the drive's
+/// gains and acceleration limit (nothing runs without them; the limit is lifted in RAM for the
+/// sweep and put back after it, whatever happens), its speed (or its multi-turn angle, which a
+/// position sweep is centred on), plans the stepped sine (FrequencySweepPlan: a
 /// refusal sends nothing), pauses the poll plan (each setpoint's reply is a sample), runs the
 /// sine from the setpoint stream on the bus thread, fits each frequency on the replies' real
-/// times and gives the poll plan back. At the end it sets the speed read at the start again.
+/// times and gives the poll plan back. At the end it sets the speed read at the start again; a
+/// position sweep ends on the angle it started from. The replies carry the speed, not the
+/// angle: a position point is the speed's response over jw (the angle of a sine).
 ///
 /// abort() (Esc, Ctrl-C) halts the stream, sends motor off to the drive (an emergency stop:
 /// every ID) and writes the gains read back to RAM; failed(Aborted) follows once both ended.
@@ -76,6 +80,10 @@ private:
     void onGainsRead();
     void readSpeed();
     void onSpeedRead(const bus::RequestResult &result);
+    void onAngleRead(const bus::RequestResult &result);
+    /// The read before the sweep went unanswered: nothing was sent.
+    void unanswered(const bus::RequestResult &result, const char *read);
+    void startSweep();
     void onCompleted(const bus::RequestResult &result);
     void onTelemetry(const bus::TelemetryBatch &batch);
     void onStreamStopped(const bus::SetpointStop &stop);

@@ -228,6 +228,9 @@ void tst_SpeedLoopTransfer::plantOptionsParse_data()
     QTest::newRow("resonance") << "resonance=120" << true << "resonance=120/0.05/1";
     QTest::newRow("all") << "resonance=80/0.1/2+counts=16384+speed-res=0.5" << true
                          << "resonance=80/0.1/2+counts=16384+speed-res=0.5";
+    QTest::newRow("frictionless") << "friction=0" << true << "friction=0";
+    QTest::newRow("friction") << "counts=4096+friction=0.02" << true << "counts=4096+friction=0.02";
+    QTest::newRow("negative friction") << "friction=-1" << false << "";
     QTest::newRow("too low") << "resonance=1" << false << "";
     QTest::newRow("no damping") << "resonance=100/0" << false << "";
     QTest::newRow("bad ratio") << "resonance=100/0.1/100" << false << "";

@@ -3,14 +3,20 @@
 #include "TuningRunGate.h"
 #include "TuningView.h"
 
+#include "ParameterFileText.h"
+
 #include <bus/BusSession.h>
+#include <panels/FileDialogs.h>
 #include <panels/Format.h>
 #include <panels/StatusColors.h>
 #include <text/VerdictText.h>
 #include <tuning/BodeChart.h>
+#include <tuning/FrequencyRunFile.h>
 #include <tuning/FrequencyRunList.h>
 #include <tuning/StepRunsModel.h>
 
+#include <QtGui/QStandardItemModel>
+#include <QtWidgets/QComboBox>
 #include <QtWidgets/QDoubleSpinBox>
 #include <QtWidgets/QFormLayout>
 #include <QtWidgets/QHBoxLayout>
@@ -24,6 +30,11 @@ namespace lk::ui {
 using tuning::FrequencySweepPlan;
 using tuning::FrequencySweepResult;
 using tuning::FrequencySweepSpec;
+using tuning::SweepLoop;
+
+namespace {
+constexpr double kPositionAmplitudeDeg = 5; // a few degrees: well inside most windows
+}
 
 FrequencyResponseView::FrequencyResponseView(TuningView *host, QWidget *parent)
     : QWidget(parent), m_host(host), m_runs(new FrequencyRunList(this))
@@ -49,6 +60,7 @@ FrequencyResponseView::FrequencyResponseView(TuningView *host, QWidget *parent)
     layout->addWidget(buildFields());
     layout->addWidget(m_travel);
     layout->addLayout(buttons);
+    layout->addLayout(buildRunButtons());
     layout->addWidget(m_status);
     layout->addWidget(m_chart, 1);
     connect(m_run, &QPushButton::clicked, this, [this] {
@@ -64,7 +76,8 @@ FrequencyResponseView::FrequencyResponseView(TuningView *host, QWidget *parent)
     setStatus(tr("Measures the speed loop's frequency response: a sine of the speed setpoint "
                  "around the operating point, one frequency after the other. Its extremes are "
                  "checked against the soft limits (Control view) before anything moves; Esc "
-                 "stops the motor and puts the gains read back."));
+                 "stops the motor and puts the gains read back. The position loop's is offered "
+                 "while an angle range is set: a sine of the angle around where the drive is."));
     refreshChart();
     // Not refresh(): the host builds its widgets before its read cycle; showEvent() asks it.
     m_run->setEnabled(false);
@@ -96,6 +109,13 @@ QWidget *FrequencyResponseView::buildFields()
         return s;
     };
     const FrequencySweepSpec d;
+    m_loop = new QComboBox(w);
+    m_loop->setObjectName(QStringLiteral("sweepLoop"));
+    m_loop->addItem(tr("Speed loop"), int(SweepLoop::Speed));
+    m_loop->addItem(tr("Position loop"), int(SweepLoop::Position));
+    m_loop->setToolTip(tr("The position loop needs an angle range (Control view): its sine "
+                          "stays inside it, around where the drive is."));
+    form->addRow(tr("Loop"), m_loop);
     // The soft limits bound the speeds, not the boxes.
     m_centre = spin(QStringLiteral("sweepCentre"), -1e5, 1e5, 0, 2 * d.amplitude, tr(" dps"));
     m_centre->setToolTip(tr("The speed the sine is centred on. Away from 0, so that the rotor "
@@ -126,14 +146,191 @@ QWidget *FrequencyResponseView::buildFields()
     for (QDoubleSpinBox *s : {m_centre, m_amplitude, m_from, m_to, m_perPoint})
         connect(s, &QDoubleSpinBox::valueChanged, this, &FrequencyResponseView::refresh);
     connect(m_points, &QSpinBox::valueChanged, this, &FrequencyResponseView::refresh);
+    connect(m_loop, &QComboBox::currentIndexChanged, this, &FrequencyResponseView::onLoopChosen);
     return w;
+}
+
+SweepLoop FrequencyResponseView::loop() const
+{
+    return SweepLoop(m_loop->currentData().toInt());
+}
+
+bool FrequencyResponseView::positionOffered() const
+{
+    const auto *model = qobject_cast<const QStandardItemModel *>(m_loop->model());
+    return model && model->item(1)->isEnabled();
+}
+
+bool FrequencyResponseView::setLoop(SweepLoop loop)
+{
+    if (loop == SweepLoop::Position && !positionOffered())
+        return false;
+    m_loop->setCurrentIndex(loop == SweepLoop::Position ? 1 : 0);
+    return true;
+}
+
+void FrequencyResponseView::onLoopChosen()
+{
+    // The amplitude's unit follows the loop; a position sine is centred where the drive is.
+    const bool position = loop() == SweepLoop::Position;
+    const QSignalBlocker block(m_amplitude);
+    m_amplitude->setSuffix(position ? tr(" deg") : tr(" dps"));
+    m_amplitude->setDecimals(position ? 1 : 0);
+    m_amplitude->setValue(position ? kPositionAmplitudeDeg : FrequencySweepSpec{}.amplitude);
+    m_centre->setVisible(!position);
+    refreshChart();
+    refresh();
+}
+
+FrequencySweepPlan FrequencyResponseView::planFor(const FrequencySweepSpec &spec,
+                                                  const TuningRunDrive &drive)
+{
+    FrequencySweepSpec planned = spec;
+    // A position sweep's centre is read when it starts: planned in the window's middle.
+    if (spec.loop == SweepLoop::Position && TuningRunGate::hasAngleWindow(drive.limits))
+        planned.operatingPoint = (*drive.limits.minAngleDeg + *drive.limits.maxAngleDeg) / 2;
+    return FrequencySweepPlan::make(planned, drive.series, drive.limits);
+}
+
+QString FrequencyResponseView::refusedText(const FrequencySweepSpec &spec, double value,
+                                           const safety::Verdict &verdict) const
+{
+    const bool angle = spec.loop == SweepLoop::Position &&
+                       verdict.kind != safety::LimitKind::SoftSpeed &&
+                       verdict.kind != safety::LimitKind::SeriesSpeed;
+    return (angle ? tr("Refused at %1\u00b0: %2.") : tr("Refused at %1 dps: %2."))
+        .arg(Format::number(value, angle ? 2 : 0),
+             text::VerdictText::verdict(verdict, m_host->series()));
+}
+
+QHBoxLayout *FrequencyResponseView::buildRunButtons()
+{
+    m_runPick = new QComboBox(this);
+    m_runPick->setObjectName(QStringLiteral("sweepRunPick"));
+    m_runPick->setMinimumContentsLength(24);
+    m_save = new QPushButton(tr("Save run\u2026"), this);
+    m_save->setObjectName(QStringLiteral("saveSweepRun"));
+    m_open = new QPushButton(tr("Open run\u2026"), this);
+    m_open->setObjectName(QStringLiteral("openSweepRun"));
+    m_remove = new QPushButton(tr("Remove run"), this);
+    m_remove->setObjectName(QStringLiteral("removeSweepRun"));
+    m_remove->setToolTip(tr("Take the chosen run off the chart (a saved file stays)."));
+    auto *row = new QHBoxLayout;
+    row->addWidget(m_runPick, 1);
+    row->addWidget(m_save);
+    row->addWidget(m_open);
+    row->addWidget(m_remove);
+    connect(m_remove, &QPushButton::clicked, this, [this] { m_runs->remove(chosenRun()); });
+    connect(m_save, &QPushButton::clicked, this, [this] {
+        const FrequencyRun *run = m_runs->find(chosenRun());
+        if (!run)
+            return;
+        const QString path = FileDialogs::saveFile(
+            this, FileDialogs::Purpose::StepRuns, tr("Save frequency run"),
+            FileDialogs::suggestedName(QStringLiteral("frequency-run"), {run->driveId}, run->ranAt,
+                                       QLatin1String(tuning::FrequencyRunFile::kSuffix)),
+            tr("Frequency runs (*%1)").arg(QLatin1String(tuning::FrequencyRunFile::kSuffix)));
+        if (!path.isEmpty())
+            saveRun(chosenRun(), path);
+    });
+    connect(m_open, &QPushButton::clicked, this, [this] {
+        const QString path =
+            FileDialogs::openFile(this, FileDialogs::Purpose::StepRuns, tr("Open frequency run"),
+                                  tr("Frequency runs (*%1);;All files (*)")
+                                      .arg(QLatin1String(tuning::FrequencyRunFile::kSuffix)));
+        if (!path.isEmpty())
+            openRun(path);
+    });
+    return row;
+}
+
+int FrequencyResponseView::chosenRun() const
+{
+    return m_runPick->currentData().toInt();
+}
+
+bool FrequencyResponseView::saveRun(int key, const QString &path)
+{
+    const FrequencyRun *run = m_runs->find(key);
+    if (!run)
+        return false;
+    const QString failed = tuning::FrequencyRunFile::save(path, *run);
+    if (!failed.isEmpty()) {
+        setStatus(tr("%1 was not saved: %2").arg(m_runs->title(m_runs->indexOf(key)), failed),
+                  true);
+        return false;
+    }
+    setStatus(tr("%1 saved to %2.").arg(m_runs->title(m_runs->indexOf(key)), path));
+    return true;
+}
+
+bool FrequencyResponseView::openRun(const QString &path)
+{
+    record::ParameterFileError error;
+    const std::optional<FrequencyRun> run = tuning::FrequencyRunFile::load(path, &error);
+    if (!run) {
+        // A word of a fixed list ("loop", a dropped frequency's "reason") says which words.
+        const QString why =
+            error.kind == record::ParameterFileError::Kind::WrongType && !error.detail.isEmpty()
+                ? tr("%1 is %2: it must be %3").arg(error.key, error.found, error.detail)
+                : ParameterFileText::describe(error);
+        setStatus(tr("%1 was not opened: %2").arg(path, why), true);
+        return false;
+    }
+    const int key = m_runs->addLoaded(*run, path);
+    // Only runs of the loop chosen share the axes: show the loaded run's, where offered.
+    if (run->spec.loop != loop() && !setLoop(run->spec.loop)) {
+        setStatus(tr("%1 is a position loop's response: it is shown when the position loop is "
+                     "chosen (an angle range is set).")
+                      .arg(m_runs->title(m_runs->indexOf(key))));
+        return true;
+    }
+    setStatus(tr("Opened %1.").arg(m_runs->title(m_runs->indexOf(key))));
+    return true;
+}
+
+QString FrequencyResponseView::legendText(int key) const
+{
+    const int i = m_runs->indexOf(key);
+    if (i < 0)
+        return {};
+    const FrequencyRun &run = m_runs->runs().at(i);
+    const bool position = run.spec.loop == SweepLoop::Position;
+    QString gains = tr("gains unknown");
+    if (run.gains) {
+        const tuning::PidTriple &g = position ? run.gains->angle : run.gains->speed;
+        gains = tr("Kp %1 Ki %2 Kd %3").arg(g.kp).arg(g.ki).arg(g.kd);
+    }
+    return tr("%1: drive %2, %3, %4, %5")
+        .arg(m_runs->title(i))
+        .arg(run.driveId)
+        .arg(position ? tr("position loop") : tr("speed loop"), gains,
+             run.ranAt.toLocalTime().toString(QStringLiteral("yyyy-MM-dd HH:mm")));
+}
+
+void FrequencyResponseView::refreshRunPick()
+{
+    // The chosen run stays chosen; a run just added (measured or opened) becomes the choice.
+    const int chosen = chosenRun();
+    const bool added = m_runs->runs().size() > m_runPick->count();
+    const QSignalBlocker block(m_runPick);
+    m_runPick->clear();
+    for (int i = 0; i < m_runs->runs().size(); ++i)
+        m_runPick->addItem(legendText(m_runs->keyAt(i)), m_runs->keyAt(i));
+    const int at = m_runPick->findData(chosen);
+    m_runPick->setCurrentIndex(at >= 0 && !added ? at : m_runPick->count() - 1);
+    const bool any = m_runPick->count() > 0;
+    m_save->setEnabled(any);
+    m_remove->setEnabled(any && !isRunning());
 }
 
 FrequencySweepSpec FrequencyResponseView::spec() const
 {
     FrequencySweepSpec s;
     s.id = m_host->driveId();
-    s.operatingPoint = m_centre->value();
+    s.loop = loop();
+    if (s.loop == SweepLoop::Speed)
+        s.operatingPoint = m_centre->value(); // a position sweep's is read from the drive
     s.amplitude = m_amplitude->value();
     s.fromHz = m_from->value();
     s.toHz = m_to->value();
@@ -144,7 +341,9 @@ FrequencySweepSpec FrequencyResponseView::spec() const
 
 void FrequencyResponseView::setSpec(const FrequencySweepSpec &s)
 {
-    m_centre->setValue(s.centre());
+    setLoop(s.loop);
+    if (s.loop == SweepLoop::Speed)
+        m_centre->setValue(s.centre());
     m_amplitude->setValue(s.amplitude);
     m_from->setValue(s.fromHz);
     m_to->setValue(s.toHz);
@@ -154,11 +353,14 @@ void FrequencyResponseView::setSpec(const FrequencySweepSpec &s)
 
 QString FrequencyResponseView::travelText() const
 {
-    const std::optional<TuningRunDrive> drive = TuningRunGate::check(*m_host, nullptr);
+    const FrequencySweepSpec s = spec();
+    const std::optional<TuningRunDrive> drive = TuningRunGate::check(*m_host, s.loop, nullptr);
     if (!drive)
         return {};
-    const FrequencySweepSpec s = spec();
-    const FrequencySweepPlan plan = FrequencySweepPlan::make(s, drive->series, drive->limits);
+    const FrequencySweepPlan plan = planFor(s, *drive);
+    if (s.loop == SweepLoop::Position) // the centre is read when it starts: the sine's size
+        return TuningRunGate::positionTravelText(*drive, s.amplitude, s.peakSpeedDps(),
+                                                 plan.endS());
     if (!plan.allowed())
         return {};
     return TuningRunGate::travelText(*drive, s.centre() - s.amplitude, s.centre() + s.amplitude,
@@ -170,33 +372,43 @@ bool FrequencyResponseView::runSweep()
     if (isRunning())
         return false;
     QString why;
-    const std::optional<TuningRunDrive> drive = TuningRunGate::check(*m_host, &why);
+    const FrequencySweepSpec s = spec();
+    const bool position = s.loop == SweepLoop::Position;
+    const std::optional<TuningRunDrive> drive = TuningRunGate::check(*m_host, s.loop, &why);
     if (!drive) {
         setStatus(why, true);
         return false;
     }
-    const FrequencySweepSpec s = spec();
-    // The same plan the runner makes: a refusal names the limit before the question.
-    const FrequencySweepPlan plan = FrequencySweepPlan::make(s, drive->series, drive->limits);
-    if (!plan.allowed()) {
+    // The same plan the runner makes: a refusal names the limit before the question. A
+    // position sweep's centre is read when it starts; the runner checks its extremes from
+    // there, its peak speed is checked here already.
+    const FrequencySweepPlan plan = planFor(s, *drive);
+    const bool angleRefusal = position && !plan.allowed() && !plan.verdict().allowed() &&
+                              plan.verdict().kind != safety::LimitKind::SoftSpeed &&
+                              plan.verdict().kind != safety::LimitKind::SeriesSpeed;
+    if (!plan.allowed() && !angleRefusal) {
         setStatus(
             plan.verdict().allowed()
                 ? tr("The sweep cannot run as set (%1). Nothing was sent.").arg(plan.specError())
-                : tr("Refused at %1 dps: %2. Nothing was sent.")
-                      .arg(Format::number(plan.refusedDps(), 0),
-                           text::VerdictText::verdict(plan.verdict(), drive->series)),
+                : refusedText(s, plan.refusedDps(), plan.verdict()) + QLatin1Char(' ') +
+                      tr("Nothing was sent."),
             true);
         return false;
     }
-    const QString travel = TuningRunGate::travelText(*drive, s.centre() - s.amplitude,
-                                                     s.centre() + s.amplitude, plan.endS());
-    if (!TuningRunGate::askFreeToTurn(this, *drive, QStringLiteral("frequency_sweep"),
+    const QString travel =
+        position
+            ? TuningRunGate::positionTravelText(*drive, s.amplitude, s.peakSpeedDps(), plan.endS())
+            : TuningRunGate::travelText(*drive, s.centre() - s.amplitude, s.centre() + s.amplitude,
+                                        plan.endS());
+    if (!TuningRunGate::askFreeToTurn(this, *drive,
+                                      position ? QStringLiteral("frequency_sweep_position")
+                                               : QStringLiteral("frequency_sweep"),
                                       tr("Frequency response"), travel)) {
         setStatus(tr("Cancelled: nothing was sent."));
         return false;
     }
     // The question ran an event loop: the drive or the link may have changed meanwhile.
-    if (!TuningRunGate::check(*m_host, &why) || m_host->driveId() != drive->id) {
+    if (!TuningRunGate::check(*m_host, s.loop, &why) || m_host->driveId() != drive->id) {
         setStatus(tr("The drive or the connection changed: nothing was sent."), true);
         return false;
     }
@@ -204,7 +416,9 @@ bool FrequencyResponseView::runSweep()
     if (!m_runner || !m_runner->start(s, drive->limits))
         return false;
     m_runningModel = drive->model;
-    setStatus(tr("Reading the gains and speed of drive %1\u2026").arg(drive->id));
+    setStatus((position ? tr("Reading the gains and angle of drive %1\u2026")
+                        : tr("Reading the gains and speed of drive %1\u2026"))
+                  .arg(drive->id));
     refresh();
     emit runningChanged(true);
     return true;
@@ -268,10 +482,8 @@ void FrequencyResponseView::onFailed(const FrequencySweepResult &result)
 {
     QString text = TuningRunGate::failureText(result.failure, result.spec.id, result.message);
     if (result.failure == tuning::StepTestFailure::Refused && !result.refusal.allowed())
-        text = tr("Refused at %1 dps: %2.")
-                   .arg(Format::number(result.refusedDps, 0),
-                        text::VerdictText::verdict(result.refusal, m_host->series())) +
-               QLatin1Char(' ') + text;
+        text =
+            refusedText(result.spec, result.refusedDps, result.refusal) + QLatin1Char(' ') + text;
     setStatus(text, true);
     refresh();
     emit runningChanged(false);
@@ -282,11 +494,14 @@ void FrequencyResponseView::refreshChart()
     QVector<BodeRun> shown;
     const QVector<FrequencyRun> runs = m_runs->shownRuns();
     const QVector<int> keys = m_runs->shownKeys();
+    // Only comparable runs share the axes: the loop chosen, its unit.
     for (int i = 0; i < runs.size(); ++i)
-        shown.append({m_runs->title(m_runs->indexOf(keys.at(i))),
-                      StepRunsModel::runColor(keys.at(i)), runs.at(i).response});
+        if (runs.at(i).spec.loop == loop())
+            shown.append(
+                {legendText(keys.at(i)), StepRunsModel::runColor(keys.at(i)), runs.at(i).response});
     m_chart->setRuns(shown);
     m_clear->setEnabled(!m_runs->runs().isEmpty() && !isRunning());
+    refreshRunPick();
 }
 
 void FrequencyResponseView::refresh()
@@ -297,9 +512,18 @@ void FrequencyResponseView::refresh()
                               : tr("Measure the frequency response set above on the selected "
                                    "drive (asks first)."));
     m_run->setEnabled(running || (m_host->canSendToDrive() && m_host->readComplete()));
-    for (QWidget *w : {static_cast<QWidget *>(m_centre), static_cast<QWidget *>(m_amplitude),
-                       static_cast<QWidget *>(m_from), static_cast<QWidget *>(m_to),
-                       static_cast<QWidget *>(m_points), static_cast<QWidget *>(m_perPoint)})
+    // The position loop is offered while an angle window is set.
+    if (auto *model = qobject_cast<QStandardItemModel *>(m_loop->model())) {
+        const bool offered =
+            TuningRunGate::positionOffered(*m_host) || (running && loop() == SweepLoop::Position);
+        model->item(1)->setEnabled(offered);
+        if (!offered && loop() == SweepLoop::Position)
+            m_loop->setCurrentIndex(0); // refresh() again, through onLoopChosen()
+    }
+    for (QWidget *w : {static_cast<QWidget *>(m_loop), static_cast<QWidget *>(m_centre),
+                       static_cast<QWidget *>(m_amplitude), static_cast<QWidget *>(m_from),
+                       static_cast<QWidget *>(m_to), static_cast<QWidget *>(m_points),
+                       static_cast<QWidget *>(m_perPoint)})
         w->setEnabled(!running);
     m_clear->setEnabled(!m_runs->runs().isEmpty() && !running);
     if (!running)

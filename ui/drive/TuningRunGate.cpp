@@ -12,7 +12,8 @@
 
 namespace lk::ui {
 
-std::optional<TuningRunDrive> TuningRunGate::check(const TuningView &host, QString *why)
+std::optional<TuningRunDrive> TuningRunGate::check(const TuningView &host, tuning::SweepLoop loop,
+                                                   QString *why)
 {
     const auto refuse = [why](const QString &text) {
         if (why)
@@ -37,7 +38,12 @@ std::optional<TuningRunDrive> TuningRunGate::check(const TuningView &host, QStri
     if (!limits)
         return refuse(limitWhy.isEmpty() ? tr("Nothing was sent: no soft limits are in force.")
                                          : limitWhy);
-    if (limits->minAngleDeg || limits->maxAngleDeg)
+    if (loop == tuning::SweepLoop::Position && !hasAngleWindow(*limits))
+        return refuse(tr("Refused: the position loop's response needs an angle range for drive "
+                         "%1 (Control view, both ends): its sine stays inside it. Nothing was "
+                         "sent.")
+                          .arg(host.driveId()));
+    if (loop == tuning::SweepLoop::Speed && (limits->minAngleDeg || limits->maxAngleDeg))
         return refuse(tr("Refused: an angle range is set for drive %1 (Control view), and this "
                          "turns the axis for as long as it runs, past any range. Nothing was "
                          "sent.")
@@ -65,6 +71,26 @@ QString TuningRunGate::travelText(const TuningRunDrive &drive, double minDps, do
         .arg(drive.id)
         .arg(Format::number(minDps, 0), Format::number(maxDps, 0), Format::number(seconds, 1),
              Format::number(rotorDeg / 360.0, 1), Format::number(outputTurns, 1),
+             Format::number(drive.limits.maxSpeedDps, 0));
+}
+
+bool TuningRunGate::positionOffered(const TuningView &host)
+{
+    const StepTestSources &sources = host.stepTest()->sources();
+    const std::optional<safety::SoftLimits> limits =
+        sources.limits ? sources.limits(nullptr) : std::nullopt;
+    return limits && hasAngleWindow(*limits);
+}
+
+QString TuningRunGate::positionTravelText(const TuningRunDrive &drive, double amplitudeDeg,
+                                          double peakDps, double seconds)
+{
+    return tr("Drive %1 swings up to %2\u00b0 (rotor) either side of where it is, at up to %3 dps, "
+              "for about %4 s, inside the angle range %5\u00b0 to %6\u00b0. Speed limit %7 dps.")
+        .arg(drive.id)
+        .arg(Format::number(amplitudeDeg, 1), Format::number(peakDps, 0),
+             Format::number(seconds, 1), Format::number(drive.limits.minAngleDeg.value_or(0), 1),
+             Format::number(drive.limits.maxAngleDeg.value_or(0), 1),
              Format::number(drive.limits.maxSpeedDps, 0));
 }
 
@@ -129,6 +155,10 @@ QString TuningRunGate::endedText(int id, const QString &message)
     // TuningEnd::returnToSpeed's words: 0 dps holds with the motor on; any other speed turns on.
     if (message.contains(QLatin1String("holds 0 dps")))
         return tr("The gains read are back in RAM; drive %1 holds 0 dps, its motor stays on.")
+            .arg(id);
+    if (message.contains(QLatin1String("holds the angle it started at")))
+        return tr("The gains read are back in RAM; drive %1 holds the angle it started at, its "
+                  "motor stays on.")
             .arg(id);
     if (message.contains(QLatin1String("is back at")))
         return tr("The gains read are back in RAM; drive %1 is back at the speed it had and keeps "

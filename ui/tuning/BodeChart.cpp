@@ -5,6 +5,7 @@
 #include <QtCharts/QChart>
 #include <QtCharts/QChartView>
 #include <QtCharts/QLegend>
+#include <QtCharts/QLegendMarker>
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QLogValueAxis>
 #include <QtCharts/QScatterSeries>
@@ -88,6 +89,9 @@ BodeChart::BodeChart(QWidget *parent)
     m_figures->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_resolution->setObjectName(QStringLiteral("bodeResolution"));
     m_resolution->setWordWrap(true);
+    QLegend *legend = m_magnitudeView->chart()->legend();
+    legend->setVisible(true);
+    legend->setAlignment(Qt::AlignBottom);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_magnitudeView, 1);
@@ -119,6 +123,7 @@ void BodeChart::rebuild()
     clearChart(m_phaseView->chart());
     m_magnitudePoints.clear();
     m_phasePoints.clear();
+    m_runLines.clear();
     m_resolutionLine = nullptr;
     fitAxes();
     for (int i = 0; i < m_runs.size(); ++i)
@@ -192,6 +197,11 @@ void BodeChart::addRun(int index)
             s->attachAxis(chart->axes(Qt::Horizontal).value(0));
             s->attachAxis(chart->axes(Qt::Vertical).value(0));
         }
+        // The legend names each run once, by its line.
+        for (QLegendMarker *m : chart->legend()->markers(dots))
+            m->setVisible(false);
+        if (magnitude)
+            m_runLines.append(line);
         // The fit quality of each point is one hover away.
         connect(dots, &QScatterSeries::hovered, this,
                 [this, index, dots](const QPointF &at, bool state) {
@@ -223,6 +233,8 @@ QLineSeries *BodeChart::verticalLine(QChart *chart, double hz, const QColor &col
     line->append(hz, axis->min());
     line->append(hz, axis->max());
     chart->addSeries(line);
+    for (QLegendMarker *m : chart->legend()->markers(line))
+        m->setVisible(false); // a marker, not a run
     line->attachAxis(chart->axes(Qt::Horizontal).value(0));
     line->attachAxis(axis);
     return line;
@@ -264,6 +276,17 @@ QString BodeChart::resolutionText() const
              Format::number(r.sampleRateHz, 0),
              Format::number(FrequencyResponse::kSamplesPerPeriod, 0),
              dropped.join(QStringLiteral(", ")));
+}
+
+QStringList BodeChart::legendLabels() const
+{
+    QStringList out;
+    // The runs' lines' markers (a marker's own visibility follows the legend's layout, which
+    // has not run yet right after a change).
+    for (QLegendMarker *m : m_magnitudeView->chart()->legend()->markers())
+        if (m_runLines.contains(m->series()))
+            out << m->label();
+    return out;
 }
 
 QString BodeChart::figuresLine(const QString &label, const FrequencyResponse &response)

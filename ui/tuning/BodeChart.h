@@ -6,6 +6,7 @@
 #include <QtGui/QColor>
 #include <QtWidgets/QWidget>
 
+class QAbstractSeries;
 class QChart;
 class QChartView;
 class QLabel;
@@ -25,7 +26,8 @@ struct BodeRun {
 /// against a logarithmic frequency axis. Only measured points are drawn: the frequencies a
 /// run's sample rate could not resolve are left out, and a dashed line at the newest run's
 /// limit says so (its note gives the rate and the frequencies dropped). The newest run's -3 dB
-/// bandwidth is marked on both plots. Hovering a point shows its values and fit quality.
+/// bandwidth is marked on both plots. Hovering a point shows its values and fit quality. The
+/// magnitude plot's legend names each run by its label.
 class BodeChart : public QWidget {
     Q_OBJECT
 public:
@@ -45,6 +47,8 @@ public:
     QString figuresText() const;
     /// The tooltip of point `point` of run `run`: frequency, magnitude, phase, fit quality.
     QString pointText(int run, int point) const;
+    /// The legend's entries (the magnitude plot's): one per run, its label.
+    QStringList legendLabels() const;
     /// One line of a run's figures: bandwidth, phase there, peak.
     static QString figuresLine(const QString &label, const tuning::FrequencyResponse &response);
 
@@ -63,6 +67,7 @@ private:
     QVector<BodeRun> m_runs;
     QVector<QScatterSeries *> m_magnitudePoints;
     QVector<QScatterSeries *> m_phasePoints;
+    QVector<QAbstractSeries *> m_runLines; ///< each run's magnitude line: its legend entry
     QLineSeries *m_resolutionLine = nullptr;
 };
 

@@ -4,6 +4,10 @@
 //           (SpeedLoopTransfer), on an MF and an MG of each generation and an MF with a
 //           resonance and encoder counts: the largest dB and degree errors up to a quarter of
 //           the sample rate reached, that rate, and the points compared;
+//   freqpos_*: the measured Bode of the position loop (a sine of the angle around where the
+//           drive is, inside an angle window) against PositionLoopTransfer, on a frictionless
+//           MF (V2.3) and MG (V2.35) (friction=0: Coulomb friction is the one part of a sine
+//           around a standstill that is not linear); `bench_tuning position` runs only these;
 //   tune_*: a full speed-loop gain search: its time, and the gains read (the defaults) beside
 //           the suggested ones with their rise time, overshoot and settling time.
 // Every candidate and a side-by-side table of default vs suggested gains go to standard error.
@@ -13,6 +17,7 @@
 #include <E2eUtil.h>
 #include <LksimProcess.h>
 #include <protocol/RequestBuilder.h>
+#include <sim/PositionLoopTransfer.h>
 #include <sim/SpeedLoopTransfer.h>
 #include <tuning/FrequencySweepRunner.h>
 #include <tuning/GainSearchRunner.h>
@@ -21,6 +26,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string_view>
 
 using namespace lk;
 using namespace lk::tuning;
@@ -47,36 +53,43 @@ const Drive kDrives[] = {{1, Series::MS, false},
                          {7, Series::MG, true},
                          {8, Series::MH, true},
                          {9, Series::MF, false, "resonance=80/0.1+counts=16384"}};
+/// The position loop's drives: not tuned.
+const Drive kPositionDrives[] = {{10, Series::MF, false, "friction=0"},
+                                 {11, Series::MG, true, "friction=0"}};
 
 QString key(const Drive &d)
 {
     return protocol::seriesName(d.series) +
            (d.v235 ? QStringLiteral("_v235") : QStringLiteral("_v23")) +
-           (*d.plant ? QStringLiteral("_resonant") : QString());
+           (std::string_view(d.plant) == "friction=0" ? QStringLiteral("_frictionless")
+            : *d.plant                                ? QStringLiteral("_resonant")
+                                                      : QString());
 }
 
 template <typename Runner, typename Result, typename Spec>
-std::optional<Result> run(bus::BusSession &session, const Spec &spec, int id)
+std::optional<Result> run(bus::BusSession &session, const Spec &spec, int id,
+                          std::optional<safety::SoftLimits> limits = std::nullopt)
 {
     Runner runner(session);
     std::optional<Result> result;
     QObject::connect(&runner, &Runner::finished, [&](const Result &r) { result = r; });
     QObject::connect(&runner, &Runner::failed, [&](const Result &r) { result = r; });
-    runner.start(spec, safety::SoftLimits::defaults(session.series(id)));
+    runner.start(spec, limits.value_or(safety::SoftLimits::defaults(session.series(id))));
     if (!bench::waitUntil([&] { return result.has_value(); }, 300000))
         runner.abort();
     bench::waitUntil([&] { return result.has_value(); }, 30000);
     return result;
 }
 
-sim::SpeedLoopTransfer transferFor(const Drive &d, const LoopGains &g)
+/// The simulated drive's own speed (or position) loop for the gains read from it.
+template <typename Transfer> Transfer transferFor(const Drive &d, const LoopGains &g)
 {
     const auto u8 = [](quint16 v) { return quint8(std::min<int>(v, 255)); };
-    return sim::SpeedLoopTransfer::forSeries(d.series,
-                                             {u8(g.angle.kp), u8(g.angle.ki), u8(g.speed.kp),
-                                              u8(g.speed.ki), u8(g.current.kp), u8(g.current.ki)},
-                                             {g.angle.kd, g.speed.kd, g.current.kd},
-                                             sim::PlantOptions::parse(d.plant)->resonance);
+    return Transfer::forSeries(d.series,
+                               {u8(g.angle.kp), u8(g.angle.ki), u8(g.speed.kp), u8(g.speed.ki),
+                                u8(g.current.kp), u8(g.current.ki)},
+                               {g.angle.kd, g.speed.kd, g.current.kd},
+                               sim::PlantOptions::parse(d.plant)->resonance);
 }
 
 bool bode(bus::BusSession &session, const Drive &d, bench::JsonLine &json)
@@ -88,26 +101,46 @@ bool bode(bus::BusSession &session, const Drive &d, bench::JsonLine &json)
     spec.points = 14;
     spec.amplitude = 60;
     spec.operatingPoint = 300;
-    const auto r = run<FrequencySweepRunner, FrequencySweepResult>(session, spec, d.id);
+    std::optional<safety::SoftLimits> limits;
+    if (std::string_view(d.plant) == "friction=0") { // the position loop's drives
+        spec.loop = SweepLoop::Position;
+        spec.operatingPoint.reset(); // where the drive is
+        spec.fromHz = 1;
+        spec.toHz = 100;
+        spec.points = 12;
+        spec.amplitude = 2; // deg: 2 pi x 100 Hz x 2 deg = 1257 dps, under both top speeds
+        limits = safety::SoftLimits::defaults(d.series);
+        limits->minAngleDeg = -1e6;
+        limits->maxAngleDeg = 1e6;
+    }
+    const auto r = run<FrequencySweepRunner, FrequencySweepResult>(session, spec, d.id, limits);
     if (!r || !r->ok() || !r->gains) {
         std::fprintf(stderr, "bench_tuning: the sweep of drive %d failed: %s\n", d.id,
                      r ? qPrintable(r->message) : "no result");
         return false;
     }
-    const sim::SpeedLoopTransfer h = transferFor(d, *r->gains);
+    const bool position = spec.loop == SweepLoop::Position;
+    const auto speedLoop = transferFor<sim::SpeedLoopTransfer>(d, *r->gains);
+    const auto positionLoop = transferFor<sim::PositionLoopTransfer>(d, *r->gains);
+    const auto simDb = [&](double hz) {
+        return position ? positionLoop.magnitudeDb(hz) : speedLoop.magnitudeDb(hz);
+    };
+    const auto simDeg = [&](double hz) {
+        return position ? positionLoop.phaseDeg(hz) : speedLoop.phaseDeg(hz);
+    };
     double maxDb = 0, maxDeg = 0;
-    std::fprintf(stderr, "Bode of drive %d (%s), %.0f samples/s:\n", d.id, qPrintable(key(d)),
-                 r->response.sampleRateHz);
+    std::fprintf(stderr, "Bode of drive %d's %s loop (%s), %.0f samples/s:\n", d.id,
+                 position ? "position" : "speed", qPrintable(key(d)), r->response.sampleRateHz);
     for (const FrequencyPoint &p : r->response.points) {
-        const double db = p.magnitudeDb - h.magnitudeDb(p.hz);
-        const double deg = std::remainder(p.phaseDeg - h.phaseDeg(p.hz), 360.0);
+        const double db = p.magnitudeDb - simDb(p.hz);
+        const double deg = std::remainder(p.phaseDeg - simDeg(p.hz), 360.0);
         maxDb = std::max(maxDb, std::abs(db));
         maxDeg = std::max(maxDeg, std::abs(deg));
         std::fprintf(stderr, "  %7.2f Hz  %7.2f dB %7.1f deg  sim %7.2f dB %7.1f deg  q %.3f\n",
-                     p.hz, p.magnitudeDb, p.phaseDeg, h.magnitudeDb(p.hz), h.phaseDeg(p.hz),
-                     p.quality);
+                     p.hz, p.magnitudeDb, p.phaseDeg, simDb(p.hz), simDeg(p.hz), p.quality);
     }
-    const QString k = QStringLiteral("freq_") + key(d) + QLatin1Char('_');
+    const QString k = (position ? QStringLiteral("freqpos_") : QStringLiteral("freq_")) + key(d) +
+                      QLatin1Char('_');
     json.add(k + "sample_rate_hz", r->response.sampleRateHz, 1);
     json.add(k + "resolved_hz", FrequencyResponse::resolvedHz(r->response.sampleRateHz), 1);
     json.addInt(k + "points", r->response.points.size());
@@ -197,8 +230,14 @@ int main(int argc, char *argv[])
 {
     qputenv("QT_LOGGING_RULES", "lk.*.info=false");
     QCoreApplication app(argc, argv);
+    const bool positionOnly = app.arguments().contains(QStringLiteral("position"));
     QStringList motors;
+    QVector<Drive> drives;
     for (const Drive &d : kDrives)
+        drives.append(d);
+    for (const Drive &d : kPositionDrives)
+        drives.append(d);
+    for (const Drive &d : drives)
         motors << QStringLiteral("%1:%2%3%4")
                       .arg(d.id)
                       .arg(protocol::seriesName(d.series))
@@ -213,13 +252,18 @@ int main(int argc, char *argv[])
     bus::BusSession session;
     if (!bench::openSerial(session, sim.devicePath(), kBaud))
         return 1;
-    for (const Drive &d : kDrives) {
+    for (const Drive &d : drives) {
         session.send(*protocol::build::plain(protocol::Command::ReadModel, d.id).request);
     }
-    bench::waitUntil([&] { return session.knownMotors().size() >= int(std::size(kDrives)); },
-                     10000);
+    bench::waitUntil([&] { return session.knownMotors().size() >= int(drives.size()); }, 10000);
     bench::JsonLine json;
     bool ok = true;
+    for (const Drive &d : kPositionDrives)
+        ok = bode(session, d, json) && ok;
+    if (positionOnly) {
+        json.print();
+        return ok ? 0 : 1;
+    }
     for (const Drive &d : kDrives) {
         if (d.series == Series::MF || d.series == Series::MG) // the resonant MF too
             ok = bode(session, d, json) && ok;

@@ -17,8 +17,10 @@
 
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QScatterSeries>
+#include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
 #include <QtWidgets/QLabel>
+#include <QtWidgets/QPushButton>
 #include <QtWidgets/QTableWidget>
 
 using lk::drivetest::kWaitMs;
@@ -107,6 +109,8 @@ private slots:
     void sweepIsKeptAndDrawn();
     void refusalsSendNothing_data();
     void refusalsSendNothing();
+    void positionLoopNeedsAnAngleWindow();
+    void positionPeakSpeedRefusedBeforeTheQuestion();
     void escMidSweepRestoresGainsAndTurnsOff();
     void escMidSearchRestoresGainsAndTurnsOff();
     void suggestionIsWrittenOnlyWhenClicked();
@@ -196,6 +200,104 @@ void tst_FrequencyTuningView::refusalsSendNothing()
     QCOMPARE(answers.asked.size(), questions);
     if (questions > 0)
         QVERIFY(answers.asked.last().reason.contains(QStringLiteral("turns")));
+    QVERIFY(rig.barrier());
+    QCOMPARE(motionTo(rig, 1), 0);
+}
+
+void tst_FrequencyTuningView::positionLoopNeedsAnAngleWindow()
+{
+    // Without an angle window the position loop is not offered; with one it runs around where
+    // the drive is, and the chart overlays only the runs of the loop chosen.
+    SimRig rig;
+    QVERIFY(rig.open());
+    lk::safety::SoftLimits limits = limitsOf(rig, 1);
+    {
+        Opened o = openView(rig, 1, limits);
+        QVERIFY(o.view);
+        QVERIFY(!o.sweep->positionOffered());
+        QVERIFY(!o.sweep->setLoop(lk::tuning::SweepLoop::Position));
+        QCOMPARE(o.sweep->loop(), lk::tuning::SweepLoop::Speed);
+    }
+    limits.minAngleDeg = -1e5;
+    limits.maxAngleDeg = 1e5;
+    Opened o = openView(rig, 1, limits);
+    QVERIFY(o.view);
+    QVERIFY(o.sweep->positionOffered());
+    lk::tuning::FrequencySweepSpec spec = shortSweep(0.3);
+    spec.loop = lk::tuning::SweepLoop::Position;
+    spec.operatingPoint.reset();
+    spec.amplitude = 4;
+    o.sweep->setSpec(spec);
+    QCOMPARE(o.sweep->loop(), lk::tuning::SweepLoop::Position);
+    QVERIFY2(o.sweep->travelText().contains(QStringLiteral("either side of where it is")),
+             qPrintable(o.sweep->travelText()));
+    const lk::protocol::PidGains before = rig.ramPid(1);
+    Answers yes(true);
+    QVERIFY2(o.sweep->runSweep(), qPrintable(o.sweep->statusText()));
+    QCOMPARE(yes.asked.first().key, QStringLiteral("frequency_sweep_position"));
+    QTRY_VERIFY_WITH_TIMEOUT(!o.sweep->isRunning(), kWaitMs);
+    QVERIFY2(o.sweep->runs()->runs().size() == 1, qPrintable(o.sweep->statusText()));
+    QCOMPARE(o.sweep->runs()->runs().first().spec.loop, lk::tuning::SweepLoop::Position);
+    QVERIFY(rig.count(1, Command::MultiPositionLimited) > 100);
+    QCOMPARE(rig.count(1, Command::Speed), 0);
+    QVERIFY2(o.sweep->statusText().contains(QStringLiteral("holds the angle it started at")),
+             qPrintable(o.sweep->statusText()));
+    QVERIFY(samePid(rig.ramPid(1), before));
+    QCOMPARE(o.sweep->chart()->runCount(), 1);
+    // The legend: the run, its drive, loop, gains and date.
+    const QStringList legend = o.sweep->chart()->legendLabels();
+    QCOMPARE(legend.size(), 1);
+    QVERIFY2(legend.first().startsWith(QStringLiteral("Run 1: drive 1, position loop, Kp ")),
+             qPrintable(legend.first()));
+    // Saved, opened again beside it, then taken off the chart.
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("run.lkfreq.json"));
+    QVERIFY(o.sweep->saveRun(o.sweep->runs()->keyAt(0), file));
+    QVERIFY2(o.sweep->openRun(file), qPrintable(o.sweep->statusText()));
+    QCOMPARE(o.sweep->chart()->runCount(), 2);
+    QCOMPARE(o.sweep->chart()->legendLabels().size(), 2);
+    QFile bad(dir.filePath(QStringLiteral("bad.lkfreq.json")));
+    QVERIFY(bad.open(QIODevice::WriteOnly));
+    QFile saved(file);
+    QVERIFY(saved.open(QIODevice::ReadOnly));
+    bad.write(saved.readAll().replace("\"position\"", "\"angle\""));
+    bad.close();
+    QVERIFY(!o.sweep->openRun(bad.fileName()));
+    QVERIFY2(o.sweep->statusText().contains(
+                 QStringLiteral("loop is \"angle\": it must be \"speed\" or \"position\"")),
+             qPrintable(o.sweep->statusText()));
+    QCOMPARE(o.sweep->runs()->runs().size(), 2);
+    QCOMPARE(o.sweep->chosenRun(), o.sweep->runs()->keyAt(1));
+    o.sweep->findChild<QPushButton *>(QStringLiteral("removeSweepRun"))->click();
+    QCOMPARE(o.sweep->runs()->runs().size(), 1);
+    QCOMPARE(o.sweep->chart()->runCount(), 1);
+    // A speed run and a position run do not share the axes.
+    QVERIFY(o.sweep->setLoop(lk::tuning::SweepLoop::Speed));
+    QCOMPARE(o.sweep->chart()->runCount(), 0);
+}
+
+void tst_FrequencyTuningView::positionPeakSpeedRefusedBeforeTheQuestion()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    lk::safety::SoftLimits limits = limitsOf(rig, 1);
+    limits.minAngleDeg = -1e5;
+    limits.maxAngleDeg = 1e5;
+    limits.maxSpeedDps = 1000;
+    Opened o = openView(rig, 1, limits);
+    QVERIFY(o.view);
+    lk::tuning::FrequencySweepSpec spec = shortSweep(0.3);
+    spec.loop = lk::tuning::SweepLoop::Position;
+    spec.amplitude = 5;
+    spec.toHz = 40; // 2 pi x 40 x 5 = 1257 dps
+    o.sweep->setSpec(spec);
+    Answers yes(true);
+    QVERIFY(!o.sweep->runSweep());
+    QVERIFY2(o.sweep->statusText().contains(QStringLiteral("Refused at 1,257 dps")),
+             qPrintable(o.sweep->statusText()));
+    QVERIFY2(o.sweep->statusText().contains(QStringLiteral("1000")),
+             qPrintable(o.sweep->statusText()));
+    QCOMPARE(yes.asked.size(), 0);
     QVERIFY(rig.barrier());
     QCOMPARE(motionTo(rig, 1), 0);
 }
