@@ -94,7 +94,8 @@ QString ExportCommand::writeCsv(RecordingReader &reader, QIODevice &file)
     const record::TelemetryCsv csv = record::TelemetryCsv::longLayout(columns);
     file.write(csv.header());
     qint64 rows = 0;
-    recording::RecordedFrameParser parser(reader.header().context);
+    recording::RecordedFrameParser parser(reader.header().context,
+                                          recording::linkOf(reader.header()));
     const auto sink = [&](const recording::RecordedFrame &f) {
         if (!f.event.isFrame || f.event.direction != protocol::FrameDirection::Reply)
             return;

@@ -35,7 +35,8 @@ bool isRecordingFile(const QString &path)
 int decodeRecording(recording::RecordingReader &reader, Console &console)
 {
     bool sawFault = false;
-    recording::RecordedFrameParser parser(reader.header().context);
+    recording::RecordedFrameParser parser(reader.header().context,
+                                          recording::linkOf(reader.header()));
     const auto sink = [&](const RecordedFrame &f) {
         QJsonObject o = protocol::FieldJson::eventObject(f.event, f.context);
         sawFault = sawFault || protocol::FieldJson::isError(o);

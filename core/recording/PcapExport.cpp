@@ -40,7 +40,7 @@ qint64 PcapExport::write(RecordingReader &reader, QIODevice &out)
     const qint64 startNs = reader.header().wallClockStartMs * 1'000'000;
     qint64 packets = 0;
     out.write(fileHeader());
-    RecordedFrameParser parser(reader.header().context);
+    RecordedFrameParser parser(reader.header().context, linkOf(reader.header()));
     const auto sink = [&](const RecordedFrame &f) {
         FrameKind kind = FrameKind::NoFrame;
         if (f.event.isFrame)

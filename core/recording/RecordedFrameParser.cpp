@@ -1,10 +1,14 @@
 #include "RecordedFrameParser.h"
 
+#include <bus/PassivePairing.h>
+
 namespace lk::recording {
 
-protocol::DecodeContext decodeContextOf(const ContextSnapshot &snapshot, int id)
+protocol::DecodeContext decodeContextOf(const ContextSnapshot &snapshot, int id,
+                                        protocol::Link link)
 {
     protocol::DecodeContext c;
+    c.link = link;
     for (const DriveContext &d : snapshot) {
         if (d.id != id)
             continue;
@@ -14,17 +18,34 @@ protocol::DecodeContext decodeContextOf(const ContextSnapshot &snapshot, int id)
     return c;
 }
 
+RecordedFrameParser::RecordedFrameParser(ContextSnapshot context, protocol::Link link)
+    : m_context(std::move(context)), m_link(link),
+      m_rx(protocol::makeFrameParser(link, protocol::LinkEnd::Host)),
+      // What the tool sent, seen from the drives' end: on CAN, its frames are requests.
+      m_tx(protocol::makeFrameParser(link, protocol::LinkEnd::Drive))
+{
+}
+
+void RecordedFrameParser::emitEvent(bool transmitted, protocol::ParseEvent event,
+                                    const Sink &sink) const
+{
+    const protocol::DecodeContext context = decodeContextOf(m_context, event.frame.id, m_link);
+    if (m_link == protocol::Link::Can && !transmitted && event.isFrame && !event.echoed)
+        event.direction = bus::PassivePairing::canDirections(event, context).direction;
+    sink(RecordedFrame{m_timeNs, transmitted, std::move(event), context});
+}
+
 void RecordedFrameParser::parse(bool transmitted, const QByteArray &bytes, const Sink &sink)
 {
-    (transmitted ? m_tx : m_rx).feed(bytes, [&](const protocol::ParseEvent &e) {
-        sink(RecordedFrame{m_timeNs, transmitted, e, decodeContextOf(m_context, e.frame.id)});
+    (transmitted ? m_tx : m_rx)->feed(bytes, [&](const protocol::ParseEvent &e) {
+        emitEvent(transmitted, e, sink);
     });
 }
 
 void RecordedFrameParser::finishStream(bool transmitted, const Sink &sink)
 {
-    (transmitted ? m_tx : m_rx).finish([&](const protocol::ParseEvent &e) {
-        sink(RecordedFrame{m_timeNs, transmitted, e, decodeContextOf(m_context, e.frame.id)});
+    (transmitted ? m_tx : m_rx)->finish([&](const protocol::ParseEvent &e) {
+        emitEvent(transmitted, e, sink);
     });
 }
 

@@ -29,6 +29,16 @@ const QString kOnRequest = QStringLiteral("on request");
 recording::RecordingHeader headerFor(const ConnectionChoice &choice)
 {
     recording::RecordingHeader h;
+    if (choice.isCan()) {
+        // The CAN transport's records are what is recorded: the file says so, and readers
+        // parse it as CAN (recording::linkOf).
+        h.linkKind = recording::LinkKind::Can;
+        h.linkDescription = QStringLiteral("%1:%2 @ %3")
+                                .arg(choice.canPlugin, choice.canInterface)
+                                .arg(choice.bitRate);
+        h.baud = choice.bitRate;
+        return h;
+    }
     h.linkKind =
         choice.isSimulator() ? recording::LinkKind::Simulated : recording::LinkKind::Serial;
     h.linkDescription = QStringLiteral("%1 @ %2")
