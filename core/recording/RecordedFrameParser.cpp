@@ -1,6 +1,7 @@
 #include "RecordedFrameParser.h"
 
 #include <bus/PassivePairing.h>
+#include <protocol/CanLayout.h>
 
 namespace lk::recording {
 
@@ -18,6 +19,26 @@ protocol::DecodeContext decodeContextOf(const ContextSnapshot &snapshot, int id,
     return c;
 }
 
+bool learnCanGeneration(ContextSnapshot &context, const protocol::ParseEvent &reply)
+{
+    if (!reply.canId || !reply.isFrame || reply.echoed)
+        return false;
+    const protocol::can::CanData data{*reply.canId, protocol::can::bytesOf(reply.frame)};
+    const std::optional<protocol::Generation> g = protocol::can::generationHint(data);
+    if (!g)
+        return false;
+    for (DriveContext &d : context) {
+        if (d.id != reply.frame.id)
+            continue;
+        if (d.generation == *g)
+            return false;
+        d.generation = *g;
+        return true;
+    }
+    context.append(DriveContext{reply.frame.id, std::nullopt, *g});
+    return true;
+}
+
 RecordedFrameParser::RecordedFrameParser(ContextSnapshot context, protocol::Link link)
     : m_context(std::move(context)), m_link(link),
       m_rx(protocol::makeFrameParser(link, protocol::LinkEnd::Host)),
@@ -26,12 +47,15 @@ RecordedFrameParser::RecordedFrameParser(ContextSnapshot context, protocol::Link
 {
 }
 
-void RecordedFrameParser::emitEvent(bool transmitted, protocol::ParseEvent event,
-                                    const Sink &sink) const
+void RecordedFrameParser::emitEvent(bool transmitted, protocol::ParseEvent event, const Sink &sink)
 {
-    const protocol::DecodeContext context = decodeContextOf(m_context, event.frame.id, m_link);
-    if (m_link == protocol::Link::Can && !transmitted && event.isFrame && !event.echoed)
+    protocol::DecodeContext context = decodeContextOf(m_context, event.frame.id, m_link);
+    if (m_link == protocol::Link::Can && !transmitted && event.isFrame && !event.echoed) {
         event.direction = bus::PassivePairing::canDirections(event, context).direction;
+        if (event.direction != protocol::FrameDirection::Request &&
+            learnCanGeneration(m_context, event))
+            context = decodeContextOf(m_context, event.frame.id, m_link);
+    }
     sink(RecordedFrame{m_timeNs, transmitted, std::move(event), context});
 }
 

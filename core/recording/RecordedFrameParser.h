@@ -39,7 +39,7 @@ public:
 private:
     void parse(bool transmitted, const QByteArray &bytes, const Sink &sink);
     void finishStream(bool transmitted, const Sink &sink);
-    void emitEvent(bool transmitted, protocol::ParseEvent event, const Sink &sink) const;
+    void emitEvent(bool transmitted, protocol::ParseEvent event, const Sink &sink);
 
     ContextSnapshot m_context;
     protocol::Link m_link;
@@ -47,6 +47,11 @@ private:
     std::unique_ptr<protocol::FrameParser> m_tx;
     qint64 m_timeNs = 0;
 };
+
+/// What a received CAN reply says of its drive's generation (a reply on 0x180+ID, a 0x9A
+/// layout: protocol::can::generationHint), put into `context` as the live engine learns it
+/// before it decodes that reply; true when the context changed.
+bool learnCanGeneration(ContextSnapshot &context, const protocol::ParseEvent &reply);
 
 /// The decode context of `id` in a snapshot (unknown series decodes as MF) on `link`.
 protocol::DecodeContext decodeContextOf(const ContextSnapshot &snapshot, int id,

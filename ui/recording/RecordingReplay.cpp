@@ -2,6 +2,7 @@
 
 #include <bus/PassivePairing.h>
 #include <protocol/Reply.h>
+#include <recording/RecordedFrameParser.h>
 
 namespace lk::ui {
 
@@ -171,8 +172,13 @@ void RecordingReplay::onFrame(const protocol::ParseEvent &event, double time,
                               bus::TrafficBatch *traffic, bus::TelemetryBatch *telemetry)
 {
     protocol::ParseEvent e = event;
-    if (m_link == protocol::Link::Can && e.isFrame && !e.echoed)
+    if (m_link == protocol::Link::Can && e.isFrame && !e.echoed) {
         e.direction = bus::PassivePairing::canDirections(e, contextOf(e.frame.id)).direction;
+        // As the live engine does: the reply's ID or layout names the generation it decodes with.
+        if (e.direction != protocol::FrameDirection::Request &&
+            recording::learnCanGeneration(m_context, e))
+            emit drivesChanged(m_context);
+    }
     bus::TrafficEvent row;
     row.time = time;
     row.bytes = e.bytes;
