@@ -21,6 +21,21 @@ QString CandumpLog::interfaceOf(const RecordingHeader &header)
     return name.section(QLatin1Char('/'), -1);
 }
 
+void CandumpLog::forEachFrame(RecordingReader &reader,
+                              const std::function<void(qint64, const CanRecord &)> &frame)
+{
+    RecordEvent e;
+    while (reader.next(&e)) {
+        if (e.kind != RecordEvent::Kind::Rx && e.kind != RecordEvent::Kind::Tx)
+            continue;
+        for (qsizetype at = 0; at + CanRecord::kSize <= e.bytes.size(); at += CanRecord::kSize) {
+            const std::optional<CanRecord> r = CanRecord::decode(e.bytes.constData() + at);
+            if (r && !(e.kind == RecordEvent::Kind::Rx && r->isEcho()))
+                frame(e.timeNs, *r); // a looped-back frame: its transmitted copy is the one
+        }
+    }
+}
+
 qint64 CandumpLog::write(RecordingReader &reader, QIODevice &out)
 {
     if (linkOf(reader.header()) != protocol::Link::Can)
@@ -28,19 +43,12 @@ qint64 CandumpLog::write(RecordingReader &reader, QIODevice &out)
     const QString iface = interfaceOf(reader.header());
     const qint64 startUs = reader.header().wallClockStartMs * 1000;
     qint64 frames = 0;
-    RecordEvent e;
-    while (reader.next(&e)) {
-        if (e.kind != RecordEvent::Kind::Rx && e.kind != RecordEvent::Kind::Tx)
-            continue;
-        for (qsizetype at = 0; at + CanRecord::kSize <= e.bytes.size(); at += CanRecord::kSize) {
-            std::optional<CanRecord> r = CanRecord::decode(e.bytes.constData() + at);
-            if (!r || (e.kind == RecordEvent::Kind::Rx && r->isEcho()))
-                continue;
-            r->timestampUs = startUs + e.timeNs / 1000;
-            out.write(r->candumpLogLine(iface).toLatin1() + '\n');
-            ++frames;
-        }
-    }
+    forEachFrame(reader, [&](qint64 timeNs, const CanRecord &record) {
+        CanRecord r = record;
+        r.timestampUs = startUs + timeNs / 1000;
+        out.write(r.candumpLogLine(iface).toLatin1() + '\n');
+        ++frames;
+    });
     return frames;
 }
 

@@ -7,6 +7,7 @@
 #include <QtCore/QByteArray>
 #include <QtCore/QIODevice>
 
+#include <functional>
 #include <optional>
 
 namespace lk::recording {
@@ -27,6 +28,10 @@ public:
     /// (those are the same frames). Returns the frames written; -1 for a recording not made
     /// on CAN (nothing written).
     static qint64 write(RecordingReader &reader, QIODevice &out);
+    /// Calls `frame` for every CAN frame of a CAN recording, in order, with its session time:
+    /// what the tool sent, and what it received but for its own frames looped back.
+    static void forEachFrame(RecordingReader &reader,
+                             const std::function<void(qint64, const protocol::CanRecord &)> &frame);
     /// One line of a candump log; nullopt for anything else.
     static std::optional<protocol::CanRecord> parseLine(const QString &line);
     /// Whether `text` starts like a candump log (its first non-empty line parses).

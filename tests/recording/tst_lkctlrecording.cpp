@@ -8,7 +8,9 @@
 #include <protocol/Reply.h>
 #include <recording/PcapExport.h>
 
+#include <QtCore/QStandardPaths>
 #include <QtCore/QTemporaryDir>
+#include <QtCore/QtEndian>
 #include <QtTest/QtTest>
 
 using namespace lk::recording;
@@ -330,6 +332,36 @@ private slots:
                                     dir.filePath(QStringLiteral("s.log"))});
         QCOMPARE(refused.exitCode, 2);
         QVERIFY(refused.err.contains("not CAN"));
+    }
+
+    void canRecordingExportsAsSocketCanPcap()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("can.lkrec"));
+        const QString pcap = dir.filePath(QStringLiteral("can.pcap"));
+        QVERIFY(writeFile(path, canRecording()));
+        const auto r = lkctl({QStringLiteral("export"), path, QStringLiteral("--pcap"), pcap});
+        QVERIFY2(r.exitCode == 0, describeRun(r).toUtf8());
+        QFile f(pcap);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray bytes = f.readAll();
+        QCOMPARE(qFromLittleEndian<quint32>(bytes.constData() + 20), 227u); // CAN_SOCKETCAN
+        // Five frames (the looped-back echo once), 16 + 16 bytes each; the first is
+        // 141#9C00000000000000 as struct can_frame: ID big-endian, DLC, 3 zeros, data.
+        QCOMPARE(bytes.size(), 24 + 5 * 32);
+        QCOMPARE(bytes.mid(24 + 16, 16), QByteArray::fromHex("00000141080000009C00000000000000"));
+        QCOMPARE(bytes.mid(24 + 4 * 32 + 16, 4), QByteArray::fromHex("20000080")); // CAN_ERR_FLAG
+        // Wireshark's own CAN dissector reads it.
+        const QString tshark = QStandardPaths::findExecutable(QStringLiteral("tshark"));
+        QVERIFY2(!tshark.isEmpty(), "tshark is missing (.ci installs it)");
+        const auto all = lk::e2e::runProgram(tshark, {QStringLiteral("-r"), pcap},
+                                             QProcessEnvironment::systemEnvironment(), 120000);
+        QCOMPARE(lines(all.out).size(), 5);
+        const auto v236 = lk::e2e::runProgram(
+            tshark,
+            {QStringLiteral("-r"), pcap, QStringLiteral("-Y"), QStringLiteral("can.id == 0x182")},
+            QProcessEnvironment::systemEnvironment(), 120000);
+        QCOMPARE(lines(v236.out).size(), 1);
     }
 
     void exportRefusesWhatIsNoRecording()
