@@ -63,6 +63,18 @@ QByteArray canRecordBytes(QChar kind, quint8 cmd, quint8 id)
     return protocol::CanRecord::of({base + id, QByteArray(1, char(cmd)) + data}).encode();
 }
 
+void verifyCounts(const PassivePairing::Counts &c, const Expected &expected)
+{
+    QCOMPARE(c.requests, expected.requests);
+    QCOMPARE(c.replies, expected.replies);
+    QCOMPARE(c.paired, expected.paired);
+    QCOMPARE(c.unanswered, expected.unanswered);
+    QCOMPARE(c.orphanReplies, expected.orphans);
+    QCOMPARE(c.ambiguous, expected.ambiguous);
+    QCOMPARE(c.corruptReplies, expected.corrupt);
+    QCOMPARE(c.brokenPairs, expected.broken);
+}
+
 } // namespace
 
 Q_DECLARE_METATYPE(Expected)
@@ -141,15 +153,7 @@ void tst_PassivePairing::script()
         }
     }
     parser.finish([&](const protocol::ParseEvent &ev) { pairing.take(ev, nowNs); });
-    const PassivePairing::Counts &c = pairing.counts();
-    QCOMPARE(c.requests, expected.requests);
-    QCOMPARE(c.replies, expected.replies);
-    QCOMPARE(c.paired, expected.paired);
-    QCOMPARE(c.unanswered, expected.unanswered);
-    QCOMPARE(c.orphanReplies, expected.orphans);
-    QCOMPARE(c.ambiguous, expected.ambiguous);
-    QCOMPARE(c.corruptReplies, expected.corrupt);
-    QCOMPARE(c.brokenPairs, expected.broken);
+    verifyCounts(pairing.counts(), expected);
 }
 
 void tst_PassivePairing::latencyAndUnansweredFrame()
@@ -253,15 +257,7 @@ void tst_PassivePairing::canScript()
             parser.feed(canRecordBytes(kind, cmd, quint8(word.mid(4).toUInt())), take);
         }
     }
-    const PassivePairing::Counts &c = pairing.counts();
-    QCOMPARE(c.requests, expected.requests);
-    QCOMPARE(c.replies, expected.replies);
-    QCOMPARE(c.paired, expected.paired);
-    QCOMPARE(c.unanswered, expected.unanswered);
-    QCOMPARE(c.orphanReplies, expected.orphans);
-    QCOMPARE(c.ambiguous, expected.ambiguous);
-    QCOMPARE(c.corruptReplies, expected.corrupt);
-    QCOMPARE(c.brokenPairs, expected.broken);
+    verifyCounts(pairing.counts(), expected);
 }
 
 QTEST_GUILESS_MAIN(tst_PassivePairing)

@@ -80,6 +80,70 @@ QVector<Values> decodedReplies(const QString &path)
     return out;
 }
 
+/// A live session on `factory` at `rate`, recorded into `path` with `header` (the decode
+/// context goes in as it changes, as the GUI wires it: from the signal, so polling starts once
+/// it has been recorded), polled until `samples` samples came. The live samples.
+QVector<Values> recordLive(const QString &path, const RecordingHeader &header,
+                           bus::TransportFactory factory, int rate,
+                           const QMap<int, protocol::Series> &drives, int samples)
+{
+    auto recorder = std::make_shared<SessionRecorder>();
+    auto clock = bus::makeSteadyBusClock();
+    QVector<Values> live;
+    if (recorder->start(path, header))
+        return live;
+    {
+        bus::BusSession session;
+        QObject::connect(&session, &bus::BusSession::telemetryReceived,
+                         [&](const bus::TelemetryBatch &b) {
+                             for (const TelemetrySample &s : b)
+                                 live.append(valuesOf(s));
+                         });
+        int recordedDrives = 0;
+        QObject::connect(&session, &bus::BusSession::knownMotorsChanged,
+                         [&](const bus::KnownMotors &m) {
+                             recorder->append(contextRecord(clock->nowNs(), m));
+                             recordedDrives = int(m.size());
+                         });
+        session.open(recordingFactory(std::move(factory), recorder, clock), rate);
+        const bool polled =
+            QTest::qWaitFor([&] { return session.connection().isOpen(); }, 60000) &&
+            [&] {
+                for (auto it = drives.cbegin(); it != drives.cend(); ++it)
+                    session.setSeries(it.key(), it.value());
+                return true;
+            }() &&
+            QTest::qWaitFor([&] { return recordedDrives == drives.size(); }, 60000) && [&] {
+                session.startPolling(bus::PollPlan::standard(drives.keys().toVector()));
+                return QTest::qWaitFor([&] { return live.size() >= samples; }, 60000);
+            }();
+        if (!polled)
+            live.clear();
+        session.close();
+    }
+    recorder->stop();
+    return live;
+}
+
+/// Whether every live sample is in `recorded`, in order (a reply the session discarded as
+/// late is on the wire, and in the recording, but was no sample); `why` names the first not.
+bool inOrder(const QVector<Values> &live, const QVector<Values> &recorded, QString *why)
+{
+    int j = 0;
+    for (int i = 0; i < live.size(); ++i) {
+        while (j < recorded.size() && !(recorded[j] == live[i]))
+            ++j;
+        if (j >= recorded.size()) {
+            *why = QStringLiteral("live sample %1 of drive %2 is not in the recording")
+                       .arg(i)
+                       .arg(live[i].id);
+            return false;
+        }
+        ++j;
+    }
+    return true;
+}
+
 /// Plays a recording whole (load all) and decodes its replies as a tap would: one stream,
 /// request and reply told apart by LEN, the context from the recording.
 QVector<Values> replay(const QString &path)
@@ -131,54 +195,15 @@ private slots:
     {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("live.lkrec"));
-        auto recorder = std::make_shared<SessionRecorder>();
-        auto clock = bus::makeSteadyBusClock();
-        QVERIFY(!recorder->start(path, lk::testsupport::testHeader()));
-
-        QVector<Values> live;
-        {
-            bus::BusSession session;
-            QObject::connect(&session, &bus::BusSession::telemetryReceived,
-                             [&](const bus::TelemetryBatch &b) {
-                                 for (const TelemetrySample &s : b)
-                                     live.append(valuesOf(s));
-                             });
-            // The decode context goes into the recording as it changes (as the GUI would wire
-            // it: from the signal, so polling starts once it has been recorded).
-            int recordedDrives = 0;
-            QObject::connect(&session, &bus::BusSession::knownMotorsChanged,
-                             [&](const bus::KnownMotors &m) {
-                                 recorder->append(contextRecord(clock->nowNs(), m));
-                                 recordedDrives = int(m.size());
-                             });
-            session.open(recordingFactory(simFactory(), recorder, clock), 115200);
-            QTRY_VERIFY(session.connection().isOpen());
-            session.setSeries(3, protocol::Series::MF);
-            session.setSeries(17, protocol::Series::MS);
-            session.setSeries(32, protocol::Series::MG);
-            QTRY_COMPARE(recordedDrives, 3);
-            session.startPolling(bus::PollPlan::standard({3, 17, 32}));
-            QTRY_VERIFY_WITH_TIMEOUT(live.size() >= 300, 60000);
-            session.stopPolling();
-            session.close();
-        }
-        recorder->stop();
-
+        const QVector<Values> live = recordLive(
+            path, lk::testsupport::testHeader(), simFactory(), 115200,
+            {{3, protocol::Series::MF}, {17, protocol::Series::MS}, {32, protocol::Series::MG}},
+            300);
         const QVector<Values> replayed = replay(path);
         qInfo("live %d samples, replayed %d", int(live.size()), int(replayed.size()));
         QVERIFY(live.size() >= 300);
-        // Every live sample is in the replay, in order; a reply the session discarded as
-        // late is on the wire (and in the recording) but was no sample.
-        int j = 0;
-        for (int i = 0; i < live.size(); ++i) {
-            while (j < replayed.size() && !(replayed[j] == live[i]))
-                ++j;
-            QVERIFY2(j < replayed.size(), qPrintable(QStringLiteral("live sample %1 of drive %2 "
-                                                                    "is not in the replay")
-                                                         .arg(i)
-                                                         .arg(live[i].id)));
-            ++j;
-        }
+        QString why;
+        QVERIFY2(inOrder(live, replayed, &why), qPrintable(why));
         QVERIFY(replayed.size() - live.size() <= live.size() / 100);
         // The MS drive's replies carried power, on replay too.
         const int power = int(record::TelemetryColumns::indexOf(QStringLiteral("power")).value());
@@ -188,55 +213,24 @@ private slots:
     }
 
     /// On CAN the recorder wraps a CAN transport: the engine still sees a CAN link through
-    /// it, and the recording (LinkKind::Can) parses as CAN records with the recorded context.
+    /// it (else it would parse RS485 and give no sample), and the recording (LinkKind::Can)
+    /// parses as CAN records, each reply with the generation its ID names.
     void aCanSessionRecordsAndDecodesAsCan()
     {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("can.lkrec"));
-        auto recorder = std::make_shared<SessionRecorder>();
-        auto clock = bus::makeSteadyBusClock();
         RecordingHeader header = lk::testsupport::testHeader();
         header.linkKind = LinkKind::Can;
         header.baud = 1000000;
         header.context.clear();
-        QVERIFY(!recorder->start(path, header));
-        QVector<Values> live;
-        {
-            bus::BusSession session;
-            QObject::connect(&session, &bus::BusSession::telemetryReceived,
-                             [&](const bus::TelemetryBatch &b) {
-                                 for (const TelemetrySample &s : b)
-                                     live.append(valuesOf(s));
-                             });
-            int recordedDrives = 0;
-            QObject::connect(&session, &bus::BusSession::knownMotorsChanged,
-                             [&](const bus::KnownMotors &m) {
-                                 recorder->append(contextRecord(clock->nowNs(), m));
-                                 recordedDrives = int(m.size());
-                             });
-            session.open(recordingFactory(canSimFactory(), recorder, clock), 1000000);
-            QTRY_VERIFY(session.connection().isOpen());
-            QCOMPARE(session.connection().link, protocol::Link::Can);
-            session.setSeries(1, protocol::Series::MG);
-            session.setSeries(2, protocol::Series::MF);
-            QTRY_COMPARE(recordedDrives, 2);
-            session.startPolling(bus::PollPlan::standard({1, 2}));
-            QTRY_VERIFY_WITH_TIMEOUT(live.size() >= 100, 60000);
-            session.stopPolling();
-            session.close();
-        }
-        recorder->stop();
+        const QVector<Values> live =
+            recordLive(path, header, canSimFactory(), 1000000,
+                       {{1, protocol::Series::MG}, {2, protocol::Series::MF}}, 100);
         const QVector<Values> decoded = decodedReplies(path);
         qInfo("live %d samples, decoded %d", int(live.size()), int(decoded.size()));
-        int j = 0;
-        for (int i = 0; i < live.size(); ++i) {
-            while (j < decoded.size() && !(decoded[j] == live[i]))
-                ++j;
-            QVERIFY2(j < decoded.size(),
-                     qPrintable(QStringLiteral("live sample %1 is not in the recording").arg(i)));
-            ++j;
-        }
         QVERIFY(live.size() >= 100);
+        QString why;
+        QVERIFY2(inOrder(live, decoded, &why), qPrintable(why));
         QVERIFY(decoded.size() - live.size() <= live.size() / 100);
     }
 };
