@@ -5,8 +5,10 @@
 #include "RecordingDecode.h"
 
 #include "protocol/FieldJson.h"
+#include "recording/CandumpLog.h"
 #include "recording/RecordingReader.h"
 
+#include <QtCore/QFile>
 #include <QtCore/QFileInfo>
 
 namespace lk::lkctl {
@@ -36,6 +38,7 @@ QString DecodeCommand::usage() const
         "       lkctl decode [--series S] [--generation G] -            hex text on stdin\n"
         "       lkctl decode [--series S] [--generation G] --binary -   raw bytes on stdin\n"
         "       lkctl decode FILE.lkrec                                  a recording\n"
+        "       lkctl decode FILE.log                                    a candump log\n"
         "\n"
         "Decode LK RS485 bytes as captured on a bus: many frames, both directions, garbage\n"
         "between them. Prints one compact JSON object per line, in stream order:\n"
@@ -67,6 +70,13 @@ QString DecodeCommand::usage() const
         "               moment; link events and drops as {\"note\":...}. A truncated or\n"
         "               damaged recording is decoded up to the damage, whose byte offset is\n"
         "               named on standard error (exit status 3).\n"
+        "               A candump log (can-utils: `candump -L` lines \"(1700000000.123456)\n"
+        "               can0 141#9C00000000000000\", or candump's default \"can0  141   [8]\n"
+        "               9C 00 ...\", with or without a time) is decoded the same way, as a\n"
+        "               recording of received CAN frames: time_s from its first frame, a\n"
+        "               frame on 0x180+ID or with a reply's layout a reply, one with a\n"
+        "               request's layout on 0x140+ID told by order; a line that is no frame\n"
+        "               is refused with its number.\n"
         "  -            read standard input; frames are printed as they arrive, so a live\n"
         "               pipe is decoded live\n"
         "  -h, --help   show this help\n"
@@ -270,8 +280,28 @@ int DecodeCommand::decodeStdinBinary(Console &console)
 
 int DecodeCommand::decodeRecordingFile(const QString &path, Console &console)
 {
+    if (!isRecordingFile(path)) {
+        QFile f(path);
+        const QByteArray text = f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+        if (recording::CandumpLog::looksLikeLog(text))
+            return decodeCandump(text, console);
+    }
     recording::RecordingReader reader;
     if (!reader.open(path))
+        return usageError(reader.error().message, console);
+    return decodeRecording(reader, console);
+}
+
+int DecodeCommand::decodeCandump(const QByteArray &text, Console &console)
+{
+    int badLine = 0;
+    const std::optional<QByteArray> asRecording =
+        recording::CandumpLog::toRecording(text, &badLine);
+    recording::RecordingReader reader;
+    if (!asRecording)
+        return usageError(QStringLiteral("line %1 of the candump log is no CAN frame").arg(badLine),
+                          console);
+    if (!reader.openBytes(*asRecording))
         return usageError(reader.error().message, console);
     return decodeRecording(reader, console);
 }
@@ -305,6 +335,18 @@ int DecodeCommand::run(const QStringList &args, Console &console)
         if (!reader.openBytes(m_firstInput))
             return usageError(reader.error().message, console);
         return decodeRecording(reader, console);
+    }
+    // A candump log is told by its first line: hex text is read by lines anyway.
+    while (!options->binary && !m_firstInput.contains('\n')) {
+        const QByteArray chunk = console.readSome();
+        if (chunk.isEmpty())
+            break;
+        m_firstInput += chunk;
+    }
+    if (!options->binary && recording::CandumpLog::looksLikeLog(m_firstInput)) {
+        for (QByteArray chunk = console.readSome(); !chunk.isEmpty(); chunk = console.readSome())
+            m_firstInput += chunk;
+        return decodeCandump(m_firstInput, console);
     }
     return options->binary ? decodeStdinBinary(console) : decodeStdinText(console);
 }

@@ -33,6 +33,8 @@ private:
     int decodeStdinText(Console &console);
     int decodeStdinBinary(Console &console);
     int decodeRecordingFile(const QString &path, Console &console);
+    /// A candump log, read as a recording of received CAN frames (recording::CandumpLog).
+    int decodeCandump(const QByteArray &text, Console &console);
     void feed(const QByteArray &bytes, Console &console);
     int finish(Console &console);
     int usageError(const QString &problem, Console &console) const;

@@ -5,6 +5,7 @@
 #include "LiveBus.h"
 #include "StreamEnd.h"
 
+#include <protocol/CanRecord.h>
 #include <protocol/Command.h>
 
 #include <csignal>
@@ -26,6 +27,7 @@ QString ListenCommand::usage() const
     return QStringLiteral(
                "Usage: lkctl listen --port DEV [--baud N] [--drives LIST] [--csv | --json]\n"
                "                    [--duration S]\n"
+               "       lkctl listen --can PLUGIN:INTERFACE [--bitrate N] [--drives LIST] ...\n"
                "\n"
                "Watch a running machine's bus without taking part: another controller is the\n"
                "master, lkctl only listens. NOTHING is ever sent: the port is opened read-only,\n"
@@ -52,6 +54,16 @@ QString ListenCommand::usage() const
                "reply. Until one passes, an MS drive's power reads as iq (iq_a): name its series\n"
                "with --drives. A V2.35 drive's read_state1 is read with V2.3's layout until a\n"
                "read_model reply or a V2.35-only command passes.\n"
+               "\n"
+               "On CAN (--can) the CAN transport sends nothing either. Requests travel on\n"
+               "0x140+ID, replies on 0x140+ID (old generation) or 0x180+ID (V2.36): a frame on\n"
+               "0x180+ID, or one whose bytes are no request's layout, is a reply; one with a\n"
+               "request's layout on 0x140+ID is a request, unless it follows the open request\n"
+               "of its command and ID within the reply window (an echo command's reply, the\n"
+               "brake state after a read): told by order, as echo frames are on RS485. A reply\n"
+               "on 0x180+ID, or a read_state1 reply whose layout only one generation has,\n"
+               "names its drive's generation. The bus line counts frames, CAN error frames and\n"
+               "frames on IDs that are no drive's (0x280 included).\n"
                "\n"
                "Options:\n"
                "  --csv               CSV, long layout (the default)\n"
@@ -171,11 +183,19 @@ void ListenCommand::report(LiveBus &bus, qint64 rows, const bus::ListenStatistic
                   .arg(s.ambiguous)
                   .arg(s.corruptReplies)
                   .arg(s.brokenPairs));
-    bus.error(QStringLiteral("bus: %1 bytes, load %2%, checksum errors %3, garbage bytes %4")
-                  .arg(s.bytes)
-                  .arg(100 * s.busLoad, 0, 'f', 1)
-                  .arg(s.checksumErrors)
-                  .arg(s.garbageBytes));
+    if (bus.session().connection().link == protocol::Link::Can)
+        bus.error(QStringLiteral("bus: %1 frames, load %2%, CAN error frames %3, frames on other "
+                                 "IDs %4")
+                      .arg(s.bytes / protocol::CanRecord::kSize)
+                      .arg(100 * s.busLoad, 0, 'f', 1)
+                      .arg(s.canErrorFrames)
+                      .arg(s.otherFrames));
+    else
+        bus.error(QStringLiteral("bus: %1 bytes, load %2%, checksum errors %3, garbage bytes %4")
+                      .arg(s.bytes)
+                      .arg(100 * s.busLoad, 0, 'f', 1)
+                      .arg(s.checksumErrors)
+                      .arg(s.garbageBytes));
     for (auto it = s.perDrive.cbegin(); it != s.perDrive.cend(); ++it) {
         const bus::ListenDriveStatistics &d = it.value();
         bus.error(QStringLiteral("drive %1: requests %2 (%3/s), replies %4, unanswered %5, "

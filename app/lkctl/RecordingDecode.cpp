@@ -3,7 +3,9 @@
 #include "Console.h"
 #include "Subcommand.h"
 
+#include <protocol/Command.h>
 #include <protocol/FieldJson.h>
+#include <protocol/Request.h>
 #include <recording/RecordTraffic.h>
 #include <recording/RecordedFrameParser.h>
 #include <recording/RecordingReader.h>
@@ -24,6 +26,39 @@ QString noteText(const RecordEvent &r)
     return notes.isEmpty() ? QString() : notes.first().text;
 }
 
+QString canIdText(quint32 canId)
+{
+    return QStringLiteral("0x") +
+           QString::number(canId, 16).toUpper().rightJustified(3, QLatin1Char('0'));
+}
+
+/// The CLI.md object of a recorded frame or fault; a CAN frame also names its "can_id".
+QJsonObject objectOf(const RecordedFrame &f)
+{
+    using protocol::FieldJson;
+    const protocol::ParseEvent &e = f.event;
+    if (!e.isFrame || !f.context.onCan() || e.direction == protocol::FrameDirection::Reply) {
+        QJsonObject o = FieldJson::eventObject(e, f.context);
+        if (e.canId)
+            o.insert(QStringLiteral("can_id"), canIdText(*e.canId));
+        return o;
+    }
+    // A CAN request's B1..B7 decode with the CAN layouts of its drive's generation
+    // (FieldJson::frameObject reads a request's data with RS485's).
+    const protocol::RequestDecodeResult r = protocol::decodeRequest(e.frame, f.context);
+    if (!r.request)
+        return FieldJson::errorObject(protocol::ParseError::BadLength, e.bytes);
+    QJsonObject o{
+        {QStringLiteral("direction"), QLatin1String(protocol::directionName(e.direction))},
+        {QStringLiteral("command"), protocol::CommandTable::name(r.request->command)},
+        {QStringLiteral("code"), protocol::CommandTable::codeText(e.frame.command)},
+        {QStringLiteral("id"), int(e.frame.id)},
+        {QStringLiteral("fields"), FieldJson::requestFields(*r.request, f.context)}};
+    if (e.canId)
+        o.insert(QStringLiteral("can_id"), canIdText(*e.canId));
+    return o;
+}
+
 } // namespace
 
 bool isRecordingFile(const QString &path)
@@ -35,9 +70,10 @@ bool isRecordingFile(const QString &path)
 int decodeRecording(recording::RecordingReader &reader, Console &console)
 {
     bool sawFault = false;
-    recording::RecordedFrameParser parser(reader.header().context);
+    recording::RecordedFrameParser parser(reader.header().context,
+                                          recording::linkOf(reader.header()));
     const auto sink = [&](const RecordedFrame &f) {
-        QJsonObject o = protocol::FieldJson::eventObject(f.event, f.context);
+        QJsonObject o = objectOf(f);
         sawFault = sawFault || protocol::FieldJson::isError(o);
         o.insert(QStringLiteral("time_s"), double(f.timeNs) * 1e-9);
         o.insert(QStringLiteral("wire"),

@@ -62,6 +62,9 @@ QString ReplayCommand::usage() const
         "a request commands printed as one row in the long layout of `lkctl monitor`\n"
         "(time_s: the recording's session seconds, id, then every column), decoded with the\n"
         "series and generation recorded for its moment. The whole file is read at once.\n"
+        "A recording made on CAN is read as CAN frames: a frame on 0x180+ID, or with a\n"
+        "reply's layout, is a reply; one with a request's layout on the shared 0x140+ID is\n"
+        "told by order.\n"
         "Then the traffic's statistics go to standard error: requests, replies paired,\n"
         "requests left unanswered, ambiguous echo frames, checksum errors.\n"
         "\n"
@@ -122,6 +125,9 @@ int ReplayCommand::run(const QStringList &args, Console &console)
                              }
                      });
     console.out(table.header());
+    const protocol::Link link = recording::linkOf(reader.header());
+    motors.setLink(link);
+    monitor.restart(link);
     applyContext(motors, reader.header().context);
     int baud = reader.header().baud > 0 ? reader.header().baud : 115200;
     RecordEvent e;
@@ -140,10 +146,10 @@ int ReplayCommand::run(const QStringList &args, Console &console)
             if (e.baud > 0)
                 baud = e.baud;
             if (e.link != recording::LinkEventKind::Error)
-                monitor.restart(); // a new stream: no partial frame, no open request
+                monitor.restart(link); // a new stream: no partial frame, no open request
             break;
         case RecordEvent::Kind::Dropped:
-            monitor.restart(); // bytes are missing: pair nothing across the gap
+            monitor.restart(link); // bytes are missing: pair nothing across the gap
             break;
         }
     }
@@ -152,7 +158,7 @@ int ReplayCommand::run(const QStringList &args, Console &console)
     console.flush();
     console.errLine(QStringLiteral("lkctl replay: %1 rows; requests %2, replies %3, paired %4, "
                                    "unanswered %5, replies without their request %6, ambiguous "
-                                   "echo frames %7, corrupt replies %8, checksum errors %9")
+                                   "echo frames %7, corrupt replies %8, checksum errors %9%10")
                         .arg(rows)
                         .arg(s.requests)
                         .arg(s.replies)
@@ -161,7 +167,10 @@ int ReplayCommand::run(const QStringList &args, Console &console)
                         .arg(s.orphanReplies)
                         .arg(s.ambiguous)
                         .arg(s.corruptReplies)
-                        .arg(s.checksumErrors));
+                        .arg(s.checksumErrors)
+                        .arg(link == protocol::Link::Can
+                                 ? QStringLiteral(", CAN error frames %1").arg(s.canErrorFrames)
+                                 : QString()));
     if (reader.error().isError()) {
         console.errLine(QStringLiteral("lkctl replay: %1").arg(reader.error().message));
         return kExitBadData;

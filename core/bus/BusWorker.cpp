@@ -170,7 +170,7 @@ void BusWorker::onLinkState(Transport::State state, const QString &reason)
     if (state == Transport::State::Open) {
         m_motors.setLink(m_link.link());
         m_wire.restartStream();
-        m_listen.restart();
+        m_listen.restart(m_link.link());
         m_link.report();
         if (m_polls.isSuspended() && (m_config.resumePollingOnReconnect || !m_polls.isActive()))
             m_polls.setSuspended(false);

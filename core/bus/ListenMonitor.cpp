@@ -2,6 +2,8 @@
 
 #include "BusDiagnostics.h"
 
+#include <protocol/CanLayout.h>
+#include <protocol/CanRecordParser.h>
 #include <protocol/Reply.h>
 #include <protocol/Request.h>
 
@@ -13,11 +15,19 @@ ListenMonitor::ListenMonitor(MotorRegistry &motors, TelemetryBatcher &telemetry,
     : QObject(parent), m_motors(motors), m_telemetry(telemetry), m_diagnostics(diagnostics),
       m_clock(std::move(clock)), m_intake(motors, telemetry)
 {
+    restart(protocol::Link::Rs485);
 }
 
-void ListenMonitor::restart()
+void ListenMonitor::restart(protocol::Link link)
 {
-    m_parser.reset();
+    m_link = link;
+    m_parser = protocol::makeFrameParser(link, protocol::LinkEnd::Host);
+    if (auto *can = dynamic_cast<protocol::CanRecordParser *>(m_parser.get())) {
+        can->setErrorFrameSink([this](const protocol::CanRecord &) { m_stats.canErrorFrame(); });
+        can->setOtherFrameSink([this](const protocol::CanRecord &) { m_stats.otherFrame(); });
+    }
+    m_stats.setLink(link);
+    m_pairing.setLink(link);
     m_pairing.reset();
 }
 
@@ -27,15 +37,38 @@ void ListenMonitor::feed(const QByteArray &bytes, int baud)
     m_stats.addBytes(bytes.size());
     // Every frame of a chunk arrived when the chunk did: that is all the host knows.
     const qint64 nowNs = m_clock->nowNs();
-    m_parser.feed(bytes, [this, nowNs](const protocol::ParseEvent &ev) { onEvent(ev, nowNs); });
+    m_parser->feed(bytes, [this, nowNs](const protocol::ParseEvent &ev) { onEvent(ev, nowNs); });
+}
+
+PassivePairing::Outcome ListenMonitor::pair(const protocol::ParseEvent &event, qint64 nowNs)
+{
+    if (m_link != protocol::Link::Can || !event.isFrame)
+        return m_pairing.take(event, nowNs);
+    const PassivePairing::CanDirections d =
+        PassivePairing::canDirections(event, m_motors.decodeContext(event.frame.id));
+    return m_pairing.takeCan(event, d.direction, d.openAs, nowNs);
+}
+
+void ListenMonitor::noteCanGeneration(const protocol::ParseEvent &event)
+{
+    const protocol::can::CanData data{*event.canId, protocol::can::bytesOf(event.frame)};
+    const std::optional<protocol::Generation> g = protocol::can::generationHint(data);
+    if (g && m_motors.learnCanGeneration(event.frame.id, *g))
+        emit motorsChanged();
 }
 
 void ListenMonitor::onEvent(const protocol::ParseEvent &event, qint64 nowNs)
 {
+    if (event.echoed)
+        return; // our own frame looped back (a replayed active recording): its Tx copy counted
     m_diagnostics.recordParseEvent(event);
     if (!event.isFrame)
         m_stats.fault(event);
-    const PassivePairing::Outcome out = m_pairing.take(event, nowNs);
+    const PassivePairing::Outcome out = pair(event, nowNs);
+    // A reply says which CAN generation its drive speaks (its ID, its 0x9A layout) before it
+    // is decoded: the decode then reads it with that generation.
+    if (out.role == PassivePairing::Outcome::Role::Reply && event.canId)
+        noteCanGeneration(event);
     noteUnanswered(out.unanswered);
     const double time = static_cast<double>(nowNs) * 1e-9;
     switch (out.role) {
@@ -60,7 +93,8 @@ void ListenMonitor::noteUnanswered(const std::optional<protocol::Frame> &request
 void ListenMonitor::takeRequest(const protocol::Frame &frame, double time)
 {
     m_stats.request(frame);
-    const protocol::RequestDecodeResult dec = protocol::decodeRequest(frame);
+    const protocol::RequestDecodeResult dec =
+        protocol::decodeRequest(frame, m_motors.decodeContext(frame.id));
     if (!dec.request)
         return;
     const KnownMotor known = m_motors.all().value(frame.id);

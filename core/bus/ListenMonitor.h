@@ -6,7 +6,7 @@
 #include "PassivePairing.h"
 #include "ReplyIntake.h"
 
-#include <protocol/StreamParser.h>
+#include <protocol/FrameParser.h>
 
 #include <QtCore/QByteArray>
 #include <QtCore/QObject>
@@ -23,15 +23,19 @@ class BusDiagnostics;
 /// observed replies go through the same ReplyIntake (drives appear, generation and series are
 /// learnt, telemetry samples into the same batcher), the other master's commands become
 /// commanded-value samples (TelemetrySample::fromRequest), frames reach the traffic capture,
-/// and ListenStatistics counts what that master does.
+/// and ListenStatistics counts what that master does. On CAN the link's records are parsed
+/// (CanRecordParser), the reply ID and layout tell requests from replies
+/// (PassivePairing::canDirections), a reply names its drive's generation
+/// (can::generationHint), and error frames are counted.
 class ListenMonitor : public QObject {
     Q_OBJECT
 public:
     ListenMonitor(MotorRegistry &motors, TelemetryBatcher &telemetry, BusDiagnostics &diagnostics,
                   std::shared_ptr<BusClock> clock, QObject *parent = nullptr);
 
-    /// A new byte stream (the link opened): no partial frame, no open request.
-    void restart();
+    /// A new byte stream on `link` (the link opened): the link's frame parser, no partial
+    /// frame, no open request.
+    void restart(protocol::Link link);
     /// Bytes from the link, at the link's `baud` (it sets the silence that ends a pairing).
     void feed(const QByteArray &bytes, int baud);
     /// The statistics now (rates since the last call); also ends a request whose reply can no
@@ -48,6 +52,8 @@ signals:
 private:
     double now() const { return static_cast<double>(m_clock->nowNs()) * 1e-9; }
     void onEvent(const protocol::ParseEvent &event, qint64 nowNs);
+    PassivePairing::Outcome pair(const protocol::ParseEvent &event, qint64 nowNs);
+    void noteCanGeneration(const protocol::ParseEvent &event);
     void takeRequest(const protocol::Frame &frame, double time);
     void takeReply(const protocol::Frame &frame, const std::optional<protocol::Frame> &request,
                    double time);
@@ -58,7 +64,8 @@ private:
     BusDiagnostics &m_diagnostics;
     std::shared_ptr<BusClock> m_clock;
     ReplyIntake m_intake;
-    protocol::StreamParser m_parser;
+    protocol::Link m_link = protocol::Link::Rs485;
+    std::unique_ptr<protocol::FrameParser> m_parser;
     PassivePairing m_pairing;
     ListenStatisticsCollector m_stats;
 };

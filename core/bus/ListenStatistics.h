@@ -41,10 +41,13 @@ struct ListenStatistics {
     quint64 brokenPairs = 0;    ///< requests left unpaired because bytes were lost meanwhile
     quint64 checksumErrors = 0; ///< bad header or data checksums
     quint64 garbageBytes = 0;   ///< bytes skipped while resynchronising
-    quint64 bytes = 0;          ///< every byte seen
+    quint64 bytes = 0;          ///< every byte seen (on CAN: of the transport's records)
+    quint64 canErrorFrames = 0; ///< CAN error frames (bus errors, not faults of a frame)
+    quint64 otherFrames = 0;    ///< CAN frames on IDs that are no drive's (0x280 included)
     double requestsPerSecond = 0;
     /// The share of the wire's capacity the bytes of the last period took (10 bits a byte at
-    /// the baud): 1.0 is a saturated bus.
+    /// the baud; on CAN the bits of an 8-byte frame, unstuffed, at the bit rate): 1.0 is a
+    /// saturated bus.
     double busLoad = 0;
     QMap<int, ListenDriveStatistics> perDrive;
     QMap<quint8, ListenCommandStatistics> perCommand; ///< by command code

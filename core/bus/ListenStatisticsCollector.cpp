@@ -1,6 +1,10 @@
 #include "ListenStatisticsCollector.h"
 
 #include "BusTiming.h"
+#include "LinkTiming.h"
+
+#include <protocol/CanLayout.h>
+#include <protocol/CanRecord.h>
 
 namespace lk::bus {
 
@@ -34,6 +38,17 @@ void ListenStatisticsCollector::fault(const protocol::ParseEvent &event)
         m_garbageBytes += static_cast<quint64>(event.bytes.size());
 }
 
+double ListenStatisticsCollector::busLoad(quint64 bytes, int baud, double dt) const
+{
+    if (baud <= 0 || dt <= 0)
+        return 0;
+    const double bits = m_link == protocol::Link::Can
+                            ? static_cast<double>(bytes / protocol::CanRecord::kSize) *
+                                  LinkTiming::canFrameBits(protocol::can::kDataSize)
+                            : static_cast<double>(bytes) * BusTiming::kBitsPerByte;
+    return bits / (baud * dt);
+}
+
 ListenStatistics ListenStatisticsCollector::snapshot(double time, int baud,
                                                      const PassivePairing::Counts &counts)
 {
@@ -52,14 +67,14 @@ ListenStatistics ListenStatisticsCollector::snapshot(double time, int baud,
     s.checksumErrors = m_checksumErrors;
     s.garbageBytes = m_garbageBytes;
     s.bytes = m_bytes;
+    s.canErrorFrames = m_canErrorFrames;
+    s.otherFrames = m_otherFrames;
     const double dt = s.periodS;
     const auto rate = [dt](quint64 now, quint64 before) {
         return dt > 0 ? static_cast<double>(now - before) / dt : 0.0;
     };
     s.requestsPerSecond = rate(counts.requests, m_requestsAtSnapshot);
-    if (baud > 0 && dt > 0)
-        s.busLoad = static_cast<double>(m_bytes - m_bytesAtSnapshot) * BusTiming::kBitsPerByte /
-                    (baud * dt);
+    s.busLoad = busLoad(m_bytes - m_bytesAtSnapshot, baud, dt);
     for (auto it = m_drives.begin(); it != m_drives.end(); ++it) {
         Drive &d = it.value();
         d.stats.requestsPerSecond = rate(d.stats.requests, d.requestsAtSnapshot);
@@ -81,7 +96,9 @@ ListenStatistics ListenStatisticsCollector::snapshot(double time, int baud,
 
 void ListenStatisticsCollector::reset()
 {
+    const protocol::Link link = m_link;
     *this = ListenStatisticsCollector{};
+    m_link = link;
 }
 
 } // namespace lk::bus

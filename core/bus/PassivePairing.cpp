@@ -1,19 +1,26 @@
 #include "PassivePairing.h"
 
 #include "BusTiming.h"
+#include "LinkTiming.h"
 
+#include <protocol/CanLayout.h>
 #include <protocol/Command.h>
+#include <protocol/Values.h>
 
 #include <algorithm>
 
 namespace lk::bus {
 
+using protocol::Command;
 using protocol::FrameDirection;
 
 qint64 PassivePairing::windowNs(quint8 command) const
 {
     const auto c = static_cast<protocol::Command>(command);
-    return static_cast<qint64>(BusTiming::replyTimeoutS(c, m_baud, m_slackS) * 1e9);
+    const double s = m_link == protocol::Link::Can
+                         ? LinkTiming::can(m_baud).replyTimeoutS(c, m_slackS)
+                         : BusTiming::replyTimeoutS(c, m_baud, m_slackS);
+    return static_cast<qint64>(s * 1e9);
 }
 
 std::optional<protocol::Frame> PassivePairing::closeUnanswered()
@@ -70,7 +77,60 @@ PassivePairing::Outcome PassivePairing::take(const protocol::ParseEvent &event, 
         takeFault(event);
         return {};
     }
-    return takeFrame(event, nowNs);
+    return takeFrame(event, event.direction, event.direction, nowNs);
+}
+
+PassivePairing::Outcome PassivePairing::takeCan(const protocol::ParseEvent &event,
+                                                FrameDirection direction, FrameDirection openAs,
+                                                qint64 nowNs)
+{
+    if (!event.isFrame)
+        return take(event, nowNs);
+    return takeFrame(event, direction, openAs, nowNs);
+}
+
+namespace {
+
+/// Whether B1..B7 could be a request of `command` on either CAN generation: it decodes as one
+/// and encodes back to the same bytes. Where the codec cannot tell (a frame it refuses either
+/// way), it could.
+bool hasRequestLayout(const protocol::Frame &frame, const protocol::DecodeContext &context)
+{
+    for (const protocol::Generation g : {protocol::Generation::V2_3, protocol::Generation::V2_35}) {
+        protocol::DecodeContext c = context;
+        c.link = protocol::Link::Can;
+        c.generation = g;
+        const protocol::RequestDecodeResult dec = protocol::can::decodeRequest(frame, c);
+        if (!dec.request)
+            return true;
+        const protocol::can::CanEncodeResult enc = protocol::can::encodeRequest(*dec.request, c);
+        if (!enc.data || enc.data->bytes == protocol::can::bytesOf(frame))
+            return true;
+    }
+    return false;
+}
+
+} // namespace
+
+PassivePairing::CanDirections PassivePairing::canDirections(const protocol::ParseEvent &event,
+                                                            const protocol::DecodeContext &context)
+{
+    const protocol::Frame &f = event.frame;
+    const bool brakeRead = f.command == quint8(protocol::Command::Brake) && !f.data.isEmpty() &&
+                           static_cast<quint8>(f.data.at(0)) == protocol::kBrakeReadCode;
+    const protocol::CommandInfo *info = protocol::CommandTable::find(f.command);
+    // 0x8C's reply repeats the state the request set (or says it, to a read).
+    const bool echoLike = info && (info->replyEchoesRequest || info->command == Command::Brake);
+    CanDirections d;
+    d.openAs = echoLike && !brakeRead ? FrameDirection::Echo : FrameDirection::Request;
+    const std::optional<protocol::can::DriveAddress> address =
+        event.canId ? protocol::can::driveAddressOf(*event.canId) : std::nullopt;
+    if ((address && address->base == protocol::can::IdBase::Base180) ||
+        !hasRequestLayout(f, context))
+        d.direction = FrameDirection::Reply; // only a drive sends there, or sends that
+    else
+        d.direction = echoLike && !brakeRead ? FrameDirection::Echo : FrameDirection::Request;
+    return d;
 }
 
 void PassivePairing::takeFault(const protocol::ParseEvent &event)
@@ -93,11 +153,12 @@ void PassivePairing::takeFault(const protocol::ParseEvent &event)
     m_open->faultSince = true;
 }
 
-PassivePairing::Outcome PassivePairing::takeFrame(const protocol::ParseEvent &event, qint64 nowNs)
+PassivePairing::Outcome PassivePairing::takeFrame(const protocol::ParseEvent &event,
+                                                  FrameDirection direction, FrameDirection openAs,
+                                                  qint64 nowNs)
 {
     Outcome out;
     const protocol::Frame &f = event.frame;
-    const FrameDirection direction = event.direction;
     // A long silence closed the open request. Short of that, a reply with its command and ID
     // answers it however late it was read (no other request came between); but an echo frame
     // after the open echo request's reply window is its retry, not its reply.
@@ -127,7 +188,7 @@ PassivePairing::Outcome PassivePairing::takeFrame(const protocol::ParseEvent &ev
     }
     if (m_open)
         out.unanswered = closeUnanswered();
-    m_open = Open{f, direction, nowNs};
+    m_open = Open{f, openAs, nowNs};
     out.role = Outcome::Role::Request;
     ++m_counts.requests;
     return out;

@@ -32,6 +32,11 @@ namespace lk::bus {
 /// if none comes, the request is counted a broken pair, not a timeout, since the lost bytes may
 /// have been its reply. A reply whose request was not seen is still the drive's word about
 /// itself (its header names drive and command): it is reported, unpaired.
+///
+/// On CAN (setLink) frames have no length to tell requests from replies; the caller says
+/// which way a frame may go (takeCan, CanTapDirection): a frame on 0x180+ID, or on 0x140+ID
+/// with a reply's layout, is a reply; a frame on the old generation's shared 0x140+ID with a
+/// request's layout is told by order, as an echo frame on RS485 is.
 class PassivePairing {
 public:
     /// What one frame was, as far as the pairing tells.
@@ -60,9 +65,27 @@ public:
     static constexpr qint64 kSilenceNs = 250'000'000;
 
     void setBaud(int baud) { m_baud = baud; }
+    /// The link the frames come on: its timing sets the reply window (RS485 by default).
+    void setLink(protocol::Link link) { m_link = link; }
     void setSlackS(double slackS) { m_slackS = slackS; }
     /// Takes the next parse event, which arrived at `nowNs`.
     Outcome take(const protocol::ParseEvent &event, qint64 nowNs);
+    /// Takes the next CAN frame or fault. `direction`: Reply for a frame only a drive sends;
+    /// Echo for a frame that is a request or, following one with its command and ID, the
+    /// reply; Request for a frame that can only be a request. `openAs`: how the frame, taken
+    /// as a request, waits for its reply (Echo: only a frame repeating it answers it).
+    Outcome takeCan(const protocol::ParseEvent &event, protocol::FrameDirection direction,
+                    protocol::FrameDirection openAs, qint64 nowNs);
+    /// Which way a CAN frame a listener hears may go, for takeCan.
+    struct CanDirections {
+        protocol::FrameDirection direction = protocol::FrameDirection::Request;
+        protocol::FrameDirection openAs = protocol::FrameDirection::Request;
+    };
+    /// A frame on 0x180+ID, or with no request's layout on either generation, is a reply.
+    /// One with a request's layout on 0x140+ID is a request, unless it follows the open
+    /// request of its command and ID (an echo command's reply, 0x8C's state after a read).
+    static CanDirections canDirections(const protocol::ParseEvent &event,
+                                       const protocol::DecodeContext &context);
     /// Time passed without a frame: an open request silent for kSilenceNs (or its reply
     /// window, if longer) is unanswered (returned).
     std::optional<protocol::Frame> expire(qint64 nowNs);
@@ -82,7 +105,8 @@ private:
     bool answersOpen(const protocol::Frame &frame, protocol::FrameDirection direction) const;
     /// The open request got no answer: counted (ambiguous for an echo frame), returned.
     std::optional<protocol::Frame> closeUnanswered();
-    Outcome takeFrame(const protocol::ParseEvent &event, qint64 nowNs);
+    Outcome takeFrame(const protocol::ParseEvent &event, protocol::FrameDirection direction,
+                      protocol::FrameDirection openAs, qint64 nowNs);
     void takeFault(const protocol::ParseEvent &event);
     qint64 windowNs(quint8 command) const;
     bool pastWindow(qint64 nowNs) const;
@@ -90,6 +114,7 @@ private:
     std::optional<Open> m_open;
     Counts m_counts;
     int m_baud = 115200;
+    protocol::Link m_link = protocol::Link::Rs485;
     double m_slackS = kDefaultSlackS;
 };
 

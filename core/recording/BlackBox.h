@@ -28,6 +28,8 @@ public:
     BlackBox(RecordingHeader header, Limits limits);
 
     void append(RecordEvent event) override;
+    /// The link and tool the ring was made on (its context: the one at the start).
+    const RecordingHeader &header() const { return m_header; }
 
     /// Write what the ring holds to `path`; the path, or the error that stopped it.
     struct SaveResult {

@@ -1,12 +1,13 @@
 #include "PcapExport.h"
 
+#include "CandumpLog.h"
 #include "RecordEncoder.h"
 #include "RecordedFrameParser.h"
 #include "Varint.h"
 
 namespace lk::recording {
 
-QByteArray PcapExport::fileHeader()
+QByteArray PcapExport::fileHeader(quint32 linkType)
 {
     QByteArray h;
     varint::putFixed<quint32>(h, 0xA1B2C3D4u); // microsecond timestamps, little-endian
@@ -15,9 +16,48 @@ QByteArray PcapExport::fileHeader()
     varint::putFixed<qint32>(h, 0);      // thiszone
     varint::putFixed<quint32>(h, 0);     // sigfigs
     varint::putFixed<quint32>(h, 65535); // snaplen
-    varint::putFixed<quint32>(h, kLinkType);
+    varint::putFixed<quint32>(h, linkType);
     return h;
 }
+
+QByteArray PcapExport::socketCanPacket(qint64 unixNs, const protocol::CanRecord &record)
+{
+    constexpr quint32 kEffFlag = 0x80000000u; // CAN_EFF_FLAG
+    constexpr quint32 kErrFlag = 0x20000000u; // CAN_ERR_FLAG
+    quint32 id = record.canId;
+    if (record.isError())
+        id |= kErrFlag;
+    else if (record.isExtended())
+        id |= kEffFlag;
+    QByteArray frame;
+    frame.append(char(id >> 24)).append(char(id >> 16)).append(char(id >> 8)).append(char(id));
+    frame.append(char(record.data.size()));
+    frame.append(3, '\0');
+    frame.append(record.data.leftJustified(protocol::CanRecord::kMaxData, '\0', true));
+    QByteArray p;
+    const qint64 us = unixNs / 1000;
+    varint::putFixed<quint32>(p, quint32(us / 1'000'000));
+    varint::putFixed<quint32>(p, quint32(us % 1'000'000));
+    varint::putFixed<quint32>(p, quint32(frame.size()));
+    varint::putFixed<quint32>(p, quint32(frame.size()));
+    return p + frame;
+}
+
+namespace {
+
+qint64 writeSocketCan(RecordingReader &reader, QIODevice &out)
+{
+    const qint64 startNs = reader.header().wallClockStartMs * 1'000'000;
+    out.write(PcapExport::fileHeader(PcapExport::kLinkTypeSocketCan));
+    qint64 packets = 0;
+    CandumpLog::forEachFrame(reader, [&](qint64 timeNs, const protocol::CanRecord &r) {
+        out.write(PcapExport::socketCanPacket(startNs + timeNs, r));
+        ++packets;
+    });
+    return packets;
+}
+
+} // namespace
 
 QByteArray PcapExport::packet(qint64 unixNs, bool transmitted, FrameKind kind,
                               const QByteArray &bytes)
@@ -37,10 +77,12 @@ QByteArray PcapExport::packet(qint64 unixNs, bool transmitted, FrameKind kind,
 
 qint64 PcapExport::write(RecordingReader &reader, QIODevice &out)
 {
+    if (linkOf(reader.header()) == protocol::Link::Can)
+        return writeSocketCan(reader, out);
     const qint64 startNs = reader.header().wallClockStartMs * 1'000'000;
     qint64 packets = 0;
     out.write(fileHeader());
-    RecordedFrameParser parser(reader.header().context);
+    RecordedFrameParser parser(reader.header().context, linkOf(reader.header()));
     const auto sink = [&](const RecordedFrame &f) {
         FrameKind kind = FrameKind::NoFrame;
         if (f.event.isFrame)

@@ -1,10 +1,15 @@
 #include "RecordedFrameParser.h"
 
+#include <bus/PassivePairing.h>
+#include <protocol/CanLayout.h>
+
 namespace lk::recording {
 
-protocol::DecodeContext decodeContextOf(const ContextSnapshot &snapshot, int id)
+protocol::DecodeContext decodeContextOf(const ContextSnapshot &snapshot, int id,
+                                        protocol::Link link)
 {
     protocol::DecodeContext c;
+    c.link = link;
     for (const DriveContext &d : snapshot) {
         if (d.id != id)
             continue;
@@ -14,17 +19,57 @@ protocol::DecodeContext decodeContextOf(const ContextSnapshot &snapshot, int id)
     return c;
 }
 
+bool learnCanGeneration(ContextSnapshot &context, const protocol::ParseEvent &reply)
+{
+    if (!reply.canId || !reply.isFrame || reply.echoed)
+        return false;
+    const protocol::can::CanData data{*reply.canId, protocol::can::bytesOf(reply.frame)};
+    const std::optional<protocol::Generation> g = protocol::can::generationHint(data);
+    if (!g)
+        return false;
+    for (DriveContext &d : context) {
+        if (d.id != reply.frame.id)
+            continue;
+        if (d.generation == *g)
+            return false;
+        d.generation = *g;
+        return true;
+    }
+    context.append(DriveContext{reply.frame.id, std::nullopt, *g});
+    return true;
+}
+
+RecordedFrameParser::RecordedFrameParser(ContextSnapshot context, protocol::Link link)
+    : m_context(std::move(context)), m_link(link),
+      m_rx(protocol::makeFrameParser(link, protocol::LinkEnd::Host)),
+      // What the tool sent, seen from the drives' end: on CAN, its frames are requests.
+      m_tx(protocol::makeFrameParser(link, protocol::LinkEnd::Drive))
+{
+}
+
+void RecordedFrameParser::emitEvent(bool transmitted, protocol::ParseEvent event, const Sink &sink)
+{
+    protocol::DecodeContext context = decodeContextOf(m_context, event.frame.id, m_link);
+    if (m_link == protocol::Link::Can && !transmitted && event.isFrame && !event.echoed) {
+        event.direction = bus::PassivePairing::canDirections(event, context).direction;
+        if (event.direction != protocol::FrameDirection::Request &&
+            learnCanGeneration(m_context, event))
+            context = decodeContextOf(m_context, event.frame.id, m_link);
+    }
+    sink(RecordedFrame{m_timeNs, transmitted, std::move(event), context});
+}
+
 void RecordedFrameParser::parse(bool transmitted, const QByteArray &bytes, const Sink &sink)
 {
-    (transmitted ? m_tx : m_rx).feed(bytes, [&](const protocol::ParseEvent &e) {
-        sink(RecordedFrame{m_timeNs, transmitted, e, decodeContextOf(m_context, e.frame.id)});
+    (transmitted ? m_tx : m_rx)->feed(bytes, [&](const protocol::ParseEvent &e) {
+        emitEvent(transmitted, e, sink);
     });
 }
 
 void RecordedFrameParser::finishStream(bool transmitted, const Sink &sink)
 {
-    (transmitted ? m_tx : m_rx).finish([&](const protocol::ParseEvent &e) {
-        sink(RecordedFrame{m_timeNs, transmitted, e, decodeContextOf(m_context, e.frame.id)});
+    (transmitted ? m_tx : m_rx)->finish([&](const protocol::ParseEvent &e) {
+        emitEvent(transmitted, e, sink);
     });
 }
 

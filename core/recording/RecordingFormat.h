@@ -53,6 +53,13 @@ struct RecordingHeader {
     ContextSnapshot context;     ///< the decode context at the first record
 };
 
+/// What the Rx and Tx bytes of a recording made on `header`'s link are: CAN records
+/// (protocol/CanRecord.h) on a CAN link, else the RS485 byte stream.
+inline protocol::Link linkOf(const RecordingHeader &header)
+{
+    return header.linkKind == LinkKind::Can ? protocol::Link::Can : protocol::Link::Rs485;
+}
+
 /// One record: bytes that passed the link, a link event, a decode-context snapshot, or bytes
 /// the recorder had to drop. `timeNs` is the session clock (ns since the recording started).
 struct RecordEvent {

@@ -45,6 +45,8 @@ void RecordingTransport::recordLink(LinkEventKind kind, const QString &text)
 
 bool RecordingTransport::open()
 {
+    // Listen-only reaches the transport that owns the port: it opens read-only and refuses.
+    m_inner->setReadOnly(isReadOnly());
     const bool ok = m_inner->open();
     if (ok)
         recordLink(LinkEventKind::Opened, m_inner->description());
@@ -60,6 +62,8 @@ void RecordingTransport::close()
 
 void RecordingTransport::write(const QByteArray &bytes)
 {
+    if (refuseWriteIfReadOnly(bytes))
+        return; // never recorded as sent: nothing was
     // Only what can reach the wire: a closed or disconnected transport drops the bytes.
     if (m_inner->state() == State::Open)
         m_sink->append(RecordEvent::data(RecordEvent::Kind::Tx, m_clock->nowNs(), bytes));

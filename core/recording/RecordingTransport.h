@@ -12,7 +12,8 @@ namespace lk::recording {
 
 /// A Transport that passes everything through to another and hands a copy of each tx and rx
 /// chunk, state change and error to a RecordSink, stamped with the session clock. It changes
-/// nothing the bus engine sees; the sink does the disk work elsewhere.
+/// nothing the bus engine sees (the link it carries, listen-only included); the sink does the
+/// disk work elsewhere.
 class RecordingTransport : public transport::Transport {
     Q_OBJECT
 public:
@@ -27,6 +28,8 @@ public:
     State state() const override { return m_inner->state(); }
     int baud() const override { return m_inner->baud(); }
     QString description() const override { return m_inner->description(); }
+    /// The wrapped transport's: a recorded CAN link is still CAN to the engine.
+    protocol::Link link() const override { return m_inner->link(); }
 
     transport::Transport *inner() const { return m_inner.get(); }
 

@@ -150,7 +150,7 @@ void CanTransport::close()
 
 void CanTransport::write(const QByteArray &bytes)
 {
-    if (m_state != State::Open || !m_device)
+    if (m_state != State::Open || !m_device || refuseWriteIfReadOnly(bytes))
         return;
     for (qsizetype at = 0; at < bytes.size(); at += protocol::CanRecord::kSize) {
         const std::optional<protocol::CanRecord> r =

@@ -4,10 +4,13 @@
 #include "E2eUtil.h"
 #include "RecordingTestUtil.h"
 
+#include <protocol/CanRecord.h>
 #include <protocol/Reply.h>
 #include <recording/PcapExport.h>
 
+#include <QtCore/QStandardPaths>
 #include <QtCore/QTemporaryDir>
+#include <QtCore/QtEndian>
 #include <QtTest/QtTest>
 
 using namespace lk::recording;
@@ -59,6 +62,41 @@ QByteArray sampleRecording(qsizetype *secondBlock = nullptr)
     lost.link = LinkEventKind::Disconnected;
     lost.text = QStringLiteral("/dev/ttyTEST");
     enc.append(lost);
+    file += enc.takeBlock();
+    return file;
+}
+
+QByteArray canRecord(quint32 canId, const char *hex, quint8 flags = 0)
+{
+    protocol::CanRecord r = protocol::CanRecord::of({canId, QByteArray::fromHex(hex)});
+    r.flags = flags;
+    return r.encode();
+}
+
+/// A recording made on CAN: drive 1 (old CAN MG) answers on 0x141, drive 2 (V2.36) on 0x182;
+/// then an error frame (bus error).
+QByteArray canRecording()
+{
+    RecordingHeader h = lk::testsupport::testHeader();
+    h.linkKind = LinkKind::Can;
+    h.linkDescription = QStringLiteral("virtualcan:can0 @ 1000000");
+    h.baud = 1000000;
+    h.context = {{1, protocol::Series::MG, protocol::Generation::V2_3},
+                 {2, protocol::Series::MF, protocol::Generation::V2_3}};
+    QByteArray file = RecordEncoder::encodeHeader(h);
+    RecordEncoder enc;
+    enc.append(
+        RecordEvent::data(RecordEvent::Kind::Tx, 1'000'000, canRecord(0x141, "9C00000000000000")));
+    enc.append(
+        RecordEvent::data(RecordEvent::Kind::Rx, 1'200'000, canRecord(0x141, "9C1E64000A001027")));
+    enc.append(
+        RecordEvent::data(RecordEvent::Kind::Tx, 2'000'000, canRecord(0x142, "9A00000000000000")));
+    // The adapter loops the tool's own frame back (flagged), then drive 2 answers.
+    enc.append(RecordEvent::data(RecordEvent::Kind::Rx, 2'100'000,
+                                 canRecord(0x142, "9A00000000000000", protocol::CanRecord::Echo) +
+                                     canRecord(0x182, "9A1E60090A001000")));
+    enc.append(RecordEvent::data(RecordEvent::Kind::Rx, 3'000'000,
+                                 canRecord(0x80, "0000000000000000", protocol::CanRecord::Error)));
     file += enc.takeBlock();
     return file;
 }
@@ -217,6 +255,113 @@ private slots:
         QCOMPARE(r.exitCode, 3);
         QCOMPARE(lines(r.out).size(), 1);
         QVERIFY2(r.err.contains(QByteArray::number(second)), describeRun(r).toUtf8());
+    }
+
+    void canRecordingReplaysAndDecodesAsCan()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("can.lkrec"));
+        QVERIFY(writeFile(path, canRecording()));
+        const auto r = lkctl({QStringLiteral("replay"), path, QStringLiteral("--json")});
+        QVERIFY2(r.exitCode == 0, describeRun(r).toUtf8());
+        const auto l = lines(r.out);
+        QCOMPARE(l.size(), 2);
+        QCOMPARE(jsonOf(l[0]).value("id").toInt(), 1);
+        QCOMPARE(jsonOf(l[0]).value("speed_dps").toDouble(), 10.0);
+        QCOMPARE(jsonOf(l[0]).value("encoder").toInt(), 10000);
+        QCOMPARE(jsonOf(l[1]).value("id").toInt(), 2);
+        // The reply on 0x182 names drive 2 V2.36: 0.01 V, bus current, motor state.
+        QCOMPARE(jsonOf(l[1]).value("voltage_v").toDouble(), 24.0);
+        QCOMPARE(jsonOf(l[1]).value("bus_current_a").toDouble(), 0.1);
+        QVERIFY2(r.err.contains("paired 2") && r.err.contains("CAN error frames 1"),
+                 r.err.constData());
+
+        const auto d = lkctl({QStringLiteral("decode"), path});
+        QVERIFY2(d.exitCode == 0, describeRun(d).toUtf8());
+        const auto dl = lines(d.out);
+        QCOMPARE(dl.size(), 5); // the echo is a row of its own, as the adapter gave it
+        QCOMPARE(jsonOf(dl[0]).value("direction").toString(), QStringLiteral("request"));
+        QCOMPARE(jsonOf(dl[0]).value("wire").toString(), QStringLiteral("tx"));
+        QCOMPARE(jsonOf(dl[0]).value("can_id").toString(), QStringLiteral("0x141"));
+        QCOMPARE(jsonOf(dl[1]).value("direction").toString(), QStringLiteral("reply"));
+        QCOMPARE(jsonOf(dl[1]).value("fields").toObject().value("speed_dps").toDouble(), 10.0);
+        QCOMPARE(jsonOf(dl[4]).value("can_id").toString(), QStringLiteral("0x182"));
+        QCOMPARE(jsonOf(dl[4]).value("fields").toObject().value("voltage_v").toDouble(), 24.0);
+    }
+
+    void candumpLogOutAndBackIn()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("can.lkrec"));
+        const QString log = dir.filePath(QStringLiteral("can.log"));
+        QVERIFY(writeFile(path, canRecording()));
+        const auto r = lkctl({QStringLiteral("export"), path, QStringLiteral("--candump"), log});
+        QVERIFY2(r.exitCode == 0, describeRun(r).toUtf8());
+        QFile f(log);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        // The wall clock of the header plus the session time; the looped-back echo once.
+        QCOMPARE(f.readAll(), QByteArray("(1800000000.001000) can0 141#9C00000000000000\n"
+                                         "(1800000000.001200) can0 141#9C1E64000A001027\n"
+                                         "(1800000000.002000) can0 142#9A00000000000000\n"
+                                         "(1800000000.002100) can0 182#9A1E60090A001000\n"
+                                         "(1800000000.003000) can0 20000080#0000000000000000\n"));
+        // Read back: decoded as a recording of received frames, told apart as a listener does.
+        const auto d = lkctl({QStringLiteral("decode"), log});
+        QVERIFY2(d.exitCode == 0, describeRun(d).toUtf8());
+        const auto dl = lines(d.out);
+        QCOMPARE(dl.size(), 4);
+        QCOMPARE(jsonOf(dl[0]).value("direction").toString(), QStringLiteral("request"));
+        QCOMPARE(jsonOf(dl[1]).value("direction").toString(), QStringLiteral("reply"));
+        QCOMPARE(jsonOf(dl[1]).value("time_s").toDouble(), 0.0002);
+        QCOMPARE(jsonOf(dl[2]).value("command").toString(), QStringLiteral("read_state1"));
+        QCOMPARE(jsonOf(dl[3]).value("fields").toObject().value("voltage_v").toDouble(), 24.0);
+        // candump's default form on standard input.
+        const auto plain = lk::e2e::runProgram(QStringLiteral(LKCTL_PATH),
+                                               {QStringLiteral("decode"), QStringLiteral("-")},
+                                               QProcessEnvironment::systemEnvironment(), 60000,
+                                               "  can0  141   [8]  9C 00 00 00 00 00 00 00\n"
+                                               "  can0  141   [8]  9C 1E 64 00 0A 00 10 27\n");
+        QVERIFY2(plain.exitCode == 0, describeRun(plain).toUtf8());
+        QCOMPARE(lines(plain.out).size(), 2);
+        QCOMPARE(jsonOf(lines(plain.out)[1]).value("fields").toObject().value("encoder").toInt(),
+                 10000);
+        // An RS485 recording has no candump form.
+        const QString rs485 = dir.filePath(QStringLiteral("s.lkrec"));
+        QVERIFY(writeFile(rs485, sampleRecording()));
+        const auto refused = lkctl({QStringLiteral("export"), rs485, QStringLiteral("--candump"),
+                                    dir.filePath(QStringLiteral("s.log"))});
+        QCOMPARE(refused.exitCode, 2);
+        QVERIFY(refused.err.contains("not CAN"));
+    }
+
+    void canRecordingExportsAsSocketCanPcap()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("can.lkrec"));
+        const QString pcap = dir.filePath(QStringLiteral("can.pcap"));
+        QVERIFY(writeFile(path, canRecording()));
+        const auto r = lkctl({QStringLiteral("export"), path, QStringLiteral("--pcap"), pcap});
+        QVERIFY2(r.exitCode == 0, describeRun(r).toUtf8());
+        QFile f(pcap);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QByteArray bytes = f.readAll();
+        QCOMPARE(qFromLittleEndian<quint32>(bytes.constData() + 20), 227u); // CAN_SOCKETCAN
+        // Five frames (the looped-back echo once), 16 + 16 bytes each; the first is
+        // 141#9C00000000000000 as struct can_frame: ID big-endian, DLC, 3 zeros, data.
+        QCOMPARE(bytes.size(), 24 + 5 * 32);
+        QCOMPARE(bytes.mid(24 + 16, 16), QByteArray::fromHex("00000141080000009C00000000000000"));
+        QCOMPARE(bytes.mid(24 + 4 * 32 + 16, 4), QByteArray::fromHex("20000080")); // CAN_ERR_FLAG
+        // Wireshark's own CAN dissector reads it.
+        const QString tshark = QStandardPaths::findExecutable(QStringLiteral("tshark"));
+        QVERIFY2(!tshark.isEmpty(), "tshark is missing (.ci installs it)");
+        const auto all = lk::e2e::runProgram(tshark, {QStringLiteral("-r"), pcap},
+                                             QProcessEnvironment::systemEnvironment(), 120000);
+        QCOMPARE(lines(all.out).size(), 5);
+        const auto v236 = lk::e2e::runProgram(
+            tshark,
+            {QStringLiteral("-r"), pcap, QStringLiteral("-Y"), QStringLiteral("can.id == 0x182")},
+            QProcessEnvironment::systemEnvironment(), 120000);
+        QCOMPARE(lines(v236.out).size(), 1);
     }
 
     void exportRefusesWhatIsNoRecording()

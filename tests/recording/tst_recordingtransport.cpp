@@ -26,6 +26,23 @@ struct ListSink : RecordSink {
 class tst_RecordingTransport : public QObject {
     Q_OBJECT
 private slots:
+    /// Listen-only reaches the transport that owns the port: it opens read-only, and a write
+    /// that still came is refused before it reaches it or the recording.
+    void listenOnlyReachesTheWrappedTransport()
+    {
+        auto sink = std::make_shared<ListSink>();
+        auto *fake = new FakeTransport(115200);
+        RecordingTransport t(std::unique_ptr<Transport>(fake), sink,
+                             std::make_shared<ManualClock>());
+        t.setReadOnly(true);
+        QVERIFY(t.open());
+        QCOMPARE(fake->log()->readOnly.value(0), true);
+        t.write(QByteArray::fromHex("3e9c0100db"));
+        QCOMPARE(fake->log()->writtenCopy().size(), 0);
+        QCOMPARE(t.refusedWrites(), quint64(5));
+        for (const RecordEvent &e : sink->events)
+            QVERIFY(e.kind != RecordEvent::Kind::Tx);
+    }
     void forwardsAndRecordsBothDirections()
     {
         auto sink = std::make_shared<ListSink>();

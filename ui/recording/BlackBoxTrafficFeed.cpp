@@ -52,10 +52,13 @@ void BlackBoxTrafficFeed::reload()
     m_recorder->tap()->setEnabled(true);
     recording::ContextSnapshot context;
     QVector<recording::RecordEvent> records;
-    if (const auto box = m_recorder->box())
+    protocol::Link link = protocol::Link::Rs485;
+    if (const auto box = m_recorder->box()) {
         records = box->events(&context);
+        link = recording::linkOf(box->header());
+    }
     m_shownUntilNs = records.isEmpty() ? -1 : records.constLast().timeNs;
-    m_converter = RecordTrafficConverter(context);
+    m_converter = RecordTrafficConverter(context, link);
     m_panel->showTraffic(m_converter.convert(records));
 }
 

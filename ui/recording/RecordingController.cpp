@@ -14,8 +14,13 @@
 #include <panels/TrafficPanel.h>
 #include <plot/TelemetryStore.h>
 
+#include <recording/CandumpLog.h>
+#include <recording/RecordingReader.h>
+
 #include <QtCore/QDateTime>
+#include <QtCore/QDir>
 #include <QtCore/QFileInfo>
+#include <QtCore/QSaveFile>
 #include <QtWidgets/QFileDialog>
 #include <QtWidgets/QInputDialog>
 #include <QtWidgets/QMainWindow>
@@ -29,6 +34,16 @@ const QString kOnRequest = QStringLiteral("on request");
 recording::RecordingHeader headerFor(const ConnectionChoice &choice)
 {
     recording::RecordingHeader h;
+    if (choice.isCan()) {
+        // The CAN transport's records are what is recorded: the file says so, and readers
+        // parse it as CAN (recording::linkOf).
+        h.linkKind = recording::LinkKind::Can;
+        h.linkDescription = QStringLiteral("%1:%2 @ %3")
+                                .arg(choice.canPlugin, choice.canInterface)
+                                .arg(choice.bitRate);
+        h.baud = choice.bitRate;
+        return h;
+    }
     h.linkKind =
         choice.isSimulator() ? recording::LinkKind::Simulated : recording::LinkKind::Serial;
     h.linkDescription = QStringLiteral("%1 @ %2")
@@ -97,6 +112,63 @@ void RecordingController::addFileActions(QMenu *file)
     QAction *open = file->addAction(tr("&Open recording\u2026"), this,
                                     &RecordingController::openRecordingWithDialog);
     open->setObjectName(QStringLiteral("openRecording"));
+    QAction *candump = file->addAction(tr("Export recording as &candump log\u2026"), this,
+                                       &RecordingController::exportCandumpWithDialog);
+    candump->setObjectName(QStringLiteral("exportCandump"));
+    candump->setToolTip(tr("Write a recording made on CAN as a candump -L log, which can-utils, "
+                           "python-can and SavvyCAN read"));
+}
+
+void RecordingController::exportCandumpWithDialog()
+{
+    const QString in = QFileDialog::getOpenFileName(
+        m_parts.window, tr("Export recording as candump log"), m_recorder->folder(),
+        tr("LK Servo Studio recordings (*.lkrec);;All files (*)"));
+    if (in.isEmpty())
+        return;
+    const QString suggested =
+        QFileInfo(in).dir().filePath(QFileInfo(in).completeBaseName() + QStringLiteral(".log"));
+    const QString out =
+        QFileDialog::getSaveFileName(m_parts.window, tr("Export recording as candump log"),
+                                     suggested, tr("candump logs (*.log);;All files (*)"));
+    if (!out.isEmpty())
+        exportCandump(in, out);
+}
+
+bool RecordingController::exportCandump(const QString &recordingPath, const QString &logPath)
+{
+    const auto fail = [this](const QString &text) {
+        m_parts.banner->setEntry(exportKey(), MessageBanner::Level::Error, text);
+        return false;
+    };
+    recording::RecordingReader reader;
+    if (!reader.open(recordingPath))
+        return fail(
+            tr("Cannot export %1: %2")
+                .arg(recordingPath.toHtmlEscaped(), reader.error().message.toHtmlEscaped()));
+    if (recording::linkOf(reader.header()) != protocol::Link::Can)
+        return fail(tr("%1 was recorded on %2, not on CAN: a candump log holds CAN frames only.")
+                        .arg(QFileInfo(recordingPath).fileName().toHtmlEscaped(),
+                             reader.header().linkDescription.toHtmlEscaped()));
+    QSaveFile file(logPath);
+    if (!file.open(QIODevice::WriteOnly))
+        return fail(tr("Cannot write %1: %2")
+                        .arg(logPath.toHtmlEscaped(), file.errorString().toHtmlEscaped()));
+    const qint64 frames = recording::CandumpLog::write(reader, file);
+    if (!file.commit())
+        return fail(tr("Cannot write %1: %2")
+                        .arg(logPath.toHtmlEscaped(), file.errorString().toHtmlEscaped()));
+    QString text = tr("%n frame(s) written to %1 as a candump log.", nullptr, int(frames))
+                       .arg(logPath.toHtmlEscaped());
+    if (reader.error().isError())
+        text += QLatin1Char(' ') + tr("The recording is damaged: it was exported up to the "
+                                      "damage (%1).")
+                                       .arg(reader.error().message.toHtmlEscaped());
+    m_parts.banner->setEntry(exportKey(),
+                             reader.error().isError() ? MessageBanner::Level::Warning
+                                                      : MessageBanner::Level::Info,
+                             text);
+    return true;
 }
 
 void RecordingController::openRecordingWithDialog()

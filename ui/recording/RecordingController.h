@@ -40,6 +40,7 @@ public:
     static QString entryKey() { return QStringLiteral("blackBox"); }
     /// The banner entry of the recording being replayed (or that could not be opened).
     static QString replayKey() { return QStringLiteral("replay"); }
+    static QString exportKey() { return QStringLiteral("recordingExport"); }
 
     RecordingController(const Parts &parts, QObject *parent = nullptr);
 
@@ -66,6 +67,12 @@ public slots:
     bool openRecording(const QString &path);
     void openRecordingWithDialog();
     void closeRecording();
+    /// Writes the CAN recording `recordingPath` (a saved black box too) as a candump -L log
+    /// at `logPath` (recording::CandumpLog), whole or not at all. False, with the banner
+    /// saying why, for a recording not made on CAN or a file that cannot be read or written.
+    bool exportCandump(const QString &recordingPath, const QString &logPath);
+    /// File -> Export recording as candump log: asks for the recording and the log.
+    void exportCandumpWithDialog();
 
 private:
     /// The cause a save names (BlackBoxTriggers' reason names, or kOnRequest), worded.

@@ -1,6 +1,8 @@
 #include "RecordingReplay.h"
 
+#include <bus/PassivePairing.h>
 #include <protocol/Reply.h>
+#include <recording/RecordedFrameParser.h>
 
 namespace lk::ui {
 
@@ -24,7 +26,6 @@ bool RecordingReplay::open(const QString &path, recording::ReplayTransport::Opti
             &RecordingReplay::onRecord);
     connect(transport.get(), &recording::ReplayTransport::finished, this,
             &RecordingReplay::finished);
-    m_parser = protocol::StreamParser{};
     m_seen.clear();
     m_context.clear();
     m_transport = std::move(transport);
@@ -38,6 +39,8 @@ bool RecordingReplay::open(const QString &path, recording::ReplayTransport::Opti
         return false;
     }
     disconnect(failed); // it writes to this call's local
+    m_link = recording::linkOf(m_transport->header());
+    restartParser();
     setContext(m_transport->header().context);
     return true;
 }
@@ -102,7 +105,7 @@ void RecordingReplay::seek(double seconds)
 {
     if (!m_transport)
         return;
-    m_parser = protocol::StreamParser{}; // a frame cut by the jump is no frame
+    restartParser(); // a frame cut by the jump is no frame
     m_transport->seek(qint64(seconds * 1e9));
     emit positionChanged(positionSeconds());
 }
@@ -128,12 +131,18 @@ void RecordingReplay::onRecord(const RecordEvent &record)
     if (record.kind == RecordEvent::Kind::Context)
         setContext(record.context);
     else if (record.kind == RecordEvent::Kind::Link)
-        m_parser = protocol::StreamParser{}; // a reopened link starts a new stream
+        restartParser(); // a reopened link starts a new stream
+}
+
+void RecordingReplay::restartParser()
+{
+    m_parser = protocol::makeFrameParser(m_link, protocol::LinkEnd::Host);
 }
 
 protocol::DecodeContext RecordingReplay::contextOf(int id) const
 {
     protocol::DecodeContext c;
+    c.link = m_link;
     for (const recording::DriveContext &d : m_context) {
         if (d.id == id) {
             c.series = d.series.value_or(protocol::Series::MF);
@@ -148,8 +157,10 @@ void RecordingReplay::onBytes(const QByteArray &bytes)
     const double time = positionSeconds();
     bus::TrafficBatch traffic;
     bus::TelemetryBatch telemetry;
-    m_parser.feed(bytes,
-                  [&](const protocol::ParseEvent &e) { onFrame(e, time, &traffic, &telemetry); });
+    if (!m_parser)
+        return;
+    m_parser->feed(bytes,
+                   [&](const protocol::ParseEvent &e) { onFrame(e, time, &traffic, &telemetry); });
     if (!traffic.isEmpty())
         emit trafficCaptured(traffic);
     if (!telemetry.isEmpty())
@@ -157,9 +168,17 @@ void RecordingReplay::onBytes(const QByteArray &bytes)
     emit positionChanged(time);
 }
 
-void RecordingReplay::onFrame(const protocol::ParseEvent &e, double time,
+void RecordingReplay::onFrame(const protocol::ParseEvent &event, double time,
                               bus::TrafficBatch *traffic, bus::TelemetryBatch *telemetry)
 {
+    protocol::ParseEvent e = event;
+    if (m_link == protocol::Link::Can && e.isFrame && !e.echoed) {
+        e.direction = bus::PassivePairing::canDirections(e, contextOf(e.frame.id)).direction;
+        // As the live engine does: the reply's ID or layout names the generation it decodes with.
+        if (e.direction != protocol::FrameDirection::Request &&
+            recording::learnCanGeneration(m_context, e))
+            emit drivesChanged(m_context);
+    }
     bus::TrafficEvent row;
     row.time = time;
     row.bytes = e.bytes;

@@ -4,7 +4,7 @@
 
 #include <bus/TelemetrySample.h>
 #include <bus/TrafficEvent.h>
-#include <protocol/StreamParser.h>
+#include <protocol/FrameParser.h>
 
 #include <QtCore/QObject>
 
@@ -16,6 +16,8 @@ namespace lk::ui {
 /// replies as telemetry samples on the recording's clock (seconds since it started), decoded
 /// with the decode context the recording carries at each moment. Built on ReplayTransport,
 /// which never transmits; no bus session is involved, so nothing can be sent while it plays.
+/// A recording made on CAN plays as CAN frames, each one's direction told as a listener tells
+/// it (bus::PassivePairing::canDirections).
 class RecordingReplay : public QObject {
     Q_OBJECT
 public:
@@ -67,7 +69,11 @@ private:
 
     std::unique_ptr<recording::ReplayTransport> m_transport;
     QString m_path;
-    protocol::StreamParser m_parser;
+    /// A new stream of the recording's link: RS485 bytes or CAN records.
+    void restartParser();
+
+    std::unique_ptr<protocol::FrameParser> m_parser;
+    protocol::Link m_link = protocol::Link::Rs485;
     recording::ContextSnapshot m_context;
     QVector<int> m_seen; ///< every drive reported (context or reply)
 };

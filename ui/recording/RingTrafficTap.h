@@ -38,8 +38,9 @@ private:
 /// Fault, link events and drops as Notes; each frame with the decode context of its moment.
 class RecordTrafficConverter {
 public:
-    explicit RecordTrafficConverter(recording::ContextSnapshot context = {})
-        : m_parser(std::move(context))
+    explicit RecordTrafficConverter(recording::ContextSnapshot context = {},
+                                    protocol::Link link = protocol::Link::Rs485)
+        : m_parser(std::move(context), link)
     {
     }
     bus::TrafficBatch convert(const QVector<recording::RecordEvent> &records);

@@ -1,0 +1,117 @@
+// A recording made on CAN in the window: File -> Open recording plays it as CAN frames (drive
+// 1 old CAN on 0x141, drive 2 V2.36 on 0x182, its generation from the reply ID), and File ->
+// Export recording as candump log writes it as a candump -L log; a recording made on RS485 is
+// refused for that with the reason in the banner.
+#include "../MainWindowFixture.h"
+
+#include <panels/TrafficModel.h>
+#include <panels/TrafficPanel.h>
+#include <protocol/CanRecord.h>
+#include <recording/RecordEncoder.h>
+#include <recording/RecordingReplay.h>
+
+using namespace lk;
+using namespace lk::recording;
+
+namespace {
+
+QByteArray canRecord(quint32 canId, const char *hex)
+{
+    return protocol::CanRecord::of({canId, QByteArray::fromHex(hex)}).encode();
+}
+
+QByteArray recordingOn(LinkKind kind, const QVector<QPair<RecordEvent::Kind, QByteArray>> &chunks)
+{
+    RecordingHeader h;
+    h.linkKind = kind;
+    h.linkDescription = kind == LinkKind::Can ? QStringLiteral("socketcan:can1 @ 1000000")
+                                              : QStringLiteral("/dev/ttyUSB0 @ 115200");
+    h.baud = kind == LinkKind::Can ? 1000000 : 115200;
+    h.wallClockStartMs = 1'800'000'000'000;
+    QByteArray file = RecordEncoder::encodeHeader(h);
+    RecordEncoder enc;
+    qint64 t = 0;
+    for (const auto &c : chunks)
+        enc.append(RecordEvent::data(c.first, t += 1'000'000, c.second));
+    return file + enc.takeBlock();
+}
+
+QByteArray canRecording()
+{
+    using K = RecordEvent::Kind;
+    return recordingOn(LinkKind::Can, {{K::Tx, canRecord(0x141, "9C00000000000000")},
+                                       {K::Rx, canRecord(0x141, "9C1E64000A001027")},
+                                       {K::Tx, canRecord(0x142, "9A00000000000000")},
+                                       {K::Rx, canRecord(0x182, "9A1E60090A001000")}});
+}
+
+bool writeAll(const QString &path, const QByteArray &bytes)
+{
+    QFile f(path);
+    return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
+}
+
+} // namespace
+
+class tst_CanReplayWindow : public uitest::MainWindowFixture {
+    Q_OBJECT
+private slots:
+    void init() { QVERIFY(openWindow()); }
+    void cleanup() { closeWindow(); }
+
+    void canRecordingPlaysAsCan()
+    {
+        const QString path = m_dir->filePath(QStringLiteral("can.lkrec"));
+        QVERIFY(writeAll(path, canRecording()));
+        bus::TelemetryBatch samples;
+        auto *replay = m_window->recording()->replay();
+        QObject::connect(replay, &ui::RecordingReplay::telemetryReceived,
+                         [&samples](const bus::TelemetryBatch &b) { samples += b; });
+        bool done = false;
+        QObject::connect(replay, &ui::RecordingReplay::finished, [&done] { done = true; });
+        QVERIFY(m_window->recording()->openRecording(path));
+        replay->loadAll();
+        QVERIFY(QTest::qWaitFor([&] { return done; }, uitest::kWaitMs));
+        QCOMPARE(samples.size(), 2); // the requests are no samples
+        QCOMPARE(samples.at(0).id, 1);
+        QCOMPARE(samples.at(0).speedDps, 10.0);
+        QCOMPARE(samples.at(0).encoder, 10000);
+        QCOMPARE(samples.at(1).id, 2);
+        QCOMPARE(samples.at(1).voltageV, 24.0); // V2.36: 0.01 V, told by the reply on 0x182
+        m_window->traffic()->flush();
+        QCOMPARE(m_window->traffic()->trafficModel()->rowCount(), 4);
+    }
+
+    void exportsACanRecordingAsACandumpLog()
+    {
+        const QString path = m_dir->filePath(QStringLiteral("can.lkrec"));
+        const QString log = m_dir->filePath(QStringLiteral("can.log"));
+        QVERIFY(writeAll(path, canRecording()));
+        QVERIFY(m_window->recording()->exportCandump(path, log));
+        QFile f(log);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QCOMPARE(f.readAll(), QByteArray("(1800000000.001000) can1 141#9C00000000000000\n"
+                                         "(1800000000.002000) can1 141#9C1E64000A001027\n"
+                                         "(1800000000.003000) can1 142#9A00000000000000\n"
+                                         "(1800000000.004000) can1 182#9A1E60090A001000\n"));
+        const QString entry = m_window->banner()->entryText(ui::RecordingController::exportKey());
+        QVERIFY2(entry.contains(QStringLiteral("4 frame")), qPrintable(entry));
+
+        const QString rs485 = m_dir->filePath(QStringLiteral("rs485.lkrec"));
+        QVERIFY(writeAll(
+            rs485, recordingOn(LinkKind::Serial,
+                               {{RecordEvent::Kind::Tx, QByteArray::fromHex("3e9c0100db")}})));
+        const QString refusedLog = m_dir->filePath(QStringLiteral("rs485.log"));
+        QVERIFY(!m_window->recording()->exportCandump(rs485, refusedLog));
+        QVERIFY(!QFile::exists(refusedLog));
+        QCOMPARE(m_window->banner()->entryLevel(ui::RecordingController::exportKey()),
+                 ui::MessageBanner::Level::Error);
+        QVERIFY2(m_window->banner()
+                     ->entryText(ui::RecordingController::exportKey())
+                     .contains(QStringLiteral("not on CAN")),
+                 qPrintable(m_window->banner()->entryText(ui::RecordingController::exportKey())));
+    }
+};
+
+QTEST_MAIN(tst_CanReplayWindow)
+#include "tst_canreplaywindow.moc"
