@@ -23,6 +23,8 @@ private slots:
     void can();
     void rememberedCan_data();
     void rememberedCan();
+    void simulatedCan_data();
+    void simulatedCan();
 
 private:
     QTemporaryDir m_dir;
@@ -300,6 +302,58 @@ void tst_StartupOptions::rememberedCan()
     QCOMPARE(o->fellBackToSimulator(settings, exists), !present);
     if (present)
         QCOMPARE(c, remembered);
+    else // without the adapter the drives are simulated on the same link
+        QVERIFY(c.isSimulator() && c.simulatedCan && c.link() == lk::protocol::Link::Can);
+}
+
+void tst_StartupOptions::simulatedCan_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("refusal"); ///< empty: accepted
+    QTest::addColumn<int>("simDrives");   ///< 0: the default drives
+    QTest::addColumn<int>("bitRate");
+    QTest::newRow("can sim") << QStringList{"--can", "sim"} << QString() << 0 << 1000000;
+    QTest::newRow("with drives and bit rate")
+        << QStringList{"--can", "sim", "--sim", "1:MG@can,2:MF@can236", "--bitrate", "500000"}
+        << QString() << 2 << 500000;
+    QTest::newRow("with a port") << QStringList{"--can", "sim", "--port", "/dev/ttyUSB0"}
+                                 << QStringLiteral("cannot go with --port") << 0 << 0;
+    QTest::newRow("bit rate with the RS485 simulator")
+        << QStringList{"--sim", "1:MF", "--bitrate", "500000"} << QStringLiteral("--bitrate") << 0
+        << 0;
+}
+
+void tst_StartupOptions::simulatedCan()
+{
+    // --can sim: the built-in simulated bus with its drives on CAN, whatever was remembered.
+    QFETCH(QStringList, args);
+    QFETCH(QString, refusal);
+    QFETCH(int, simDrives);
+    QFETCH(int, bitRate);
+    args.prepend(QStringLiteral("lkstudio"));
+    QString error;
+    const auto o = StartupOptions::parse(args, &error);
+    QCOMPARE(o.has_value(), refusal.isEmpty());
+    if (!o) {
+        QVERIFY2(error.contains(refusal), qPrintable(error));
+        return;
+    }
+    QCOMPARE(o->sim ? int(o->sim->drives.size()) : 0, simDrives);
+    AppSettings settings(m_dir.filePath(QString::fromLatin1(QTest::currentDataTag()) + ".ini"));
+    ConnectionChoice remembered;
+    remembered.kind = ConnectionChoice::Kind::Serial;
+    remembered.port = QStringLiteral("/dev/ttyUSB0");
+    settings.setConnection(remembered);
+    const auto present = [](const QString &) { return true; };
+    const ConnectionChoice c = o->initialChoice(settings, present);
+    QVERIFY(c.isSimulator() && c.simulatedCan);
+    QCOMPARE(c.link(), lk::protocol::Link::Can);
+    QCOMPARE(c.bitRate, bitRate);
+    QCOMPARE(c.rate(), bitRate);
+    QVERIFY(!o->fellBackToSimulator(settings, present));
+    // The simulator alone stays on RS485.
+    const auto rs485 = StartupOptions::parse({"lkstudio", "--sim", "1:MF"}, nullptr);
+    QVERIFY(!rs485->initialChoice(settings, present).simulatedCan);
 }
 
 QTEST_GUILESS_MAIN(tst_StartupOptions)
