@@ -7,7 +7,6 @@
 #include "OrderedJson.h"
 #include "ReplyText.h"
 
-#include <motor/ModelNameInfo.h>
 #include <protocol/RequestBuilder.h>
 #include <safety/MotionPlanner.h>
 #include <text/VerdictText.h>
@@ -211,8 +210,7 @@ bool ControlCommand::readPosition(LiveBus &bus, const Plan &plan, const LiveBus:
                                   const safety::SoftLimits &limits,
                                   safety::DrivePosition &position) const
 {
-    position.gearRatio =
-        who.gearRatio.value_or(motor::ModelNameInfo::parse(who.model.motorName).gearRatio);
+    position.gearRatio = who.gear();
     if (!safety::MotionPlanner::needsAngle(plan.request, limits))
         return true;
     // Targets start where the drive is: never judge a move from an assumed 0.

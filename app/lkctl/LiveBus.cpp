@@ -4,6 +4,7 @@
 
 #include <bus/MotorRegistry.h>
 #include <bus/Scanner.h>
+#include <motor/ModelNameInfo.h>
 #include <protocol/Command.h>
 #include <system/FileHolders.h>
 #include <transport/SerialTransport.h>
@@ -179,6 +180,11 @@ void LiveBus::reportFailure(const RequestResult &result)
         text += QStringLiteral("; check the ID, the baud (--baud) and the wiring, or run "
                                "'lkctl scan'");
     error(text);
+}
+
+double LiveBus::Identity::gear() const
+{
+    return gearRatio.value_or(motor::ModelNameInfo::parse(model.motorName).gearRatio);
 }
 
 std::optional<LiveBus::Identity> LiveBus::identifyOnCan(int id)

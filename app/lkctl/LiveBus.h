@@ -54,6 +54,9 @@ public:
         std::optional<protocol::Series> series; ///< nullopt: the model names no series
         protocol::Reply reply;           ///< the read_model reply itself (`read model` prints it)
         std::optional<double> gearRatio; ///< CAN: the user's (--drives ID:SERIES@GEN/GEAR)
+        /// Rotor turns per output turn: the user's (--drives), else the model name's ("-i36"),
+        /// else 1. Every command that bounds or scales by the gearbox takes it from here.
+        double gear() const;
     };
     std::optional<Identity> identify(int id);
     /// The link the bus opened on (RS485 until open()).

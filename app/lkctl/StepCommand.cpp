@@ -5,7 +5,6 @@
 #include "OrderedJson.h"
 #include "ReplyText.h"
 
-#include <motor/ModelNameInfo.h>
 #include <protocol/FieldJson.h>
 #include <text/VerdictText.h>
 #include <tuning/StepMetrics.h>
@@ -394,8 +393,7 @@ int StepCommand::run(const QStringList &args, Console &console)
         bus.error(QStringLiteral("the gains could not be read; nothing was sent"));
         return kExitFailure;
     }
-    const StepTestResult result =
-        runTest(bus, *plan, *limits, motor::ModelNameInfo::parse(who.model.motorName).gearRatio);
+    const StepTestResult result = runTest(bus, *plan, *limits, who.gear());
     const auto refusal = [&] { bus.refused(text::VerdictText::stepRefusal(result.refusal)); };
     if (const auto failed =
             failureStatus(bus, console, result.failure, failureText(result), refusal))

@@ -5,8 +5,6 @@
 #include "OrderedJson.h"
 #include "ReplyText.h"
 
-#include <motor/ModelNameInfo.h>
-
 #include <cmath>
 
 namespace lk::lkctl {
@@ -364,7 +362,7 @@ int ZeroCommand::run(const QStringList &args, Console &console)
         return kExitFailure;
     }
     if (command == Command::ClearTurnCount)
-        return clearTurns(bus, *plan, motor::ModelNameInfo::parse(who->model.motorName).gearRatio);
+        return clearTurns(bus, *plan, who->gear());
     return command == Command::WriteZeroRom ? writeZeroRom(bus, *plan) : clearAngle(bus, *plan);
 }
 

@@ -8,7 +8,44 @@ SimCanFront::SimCanFront(SimBus &bus) : m_bus(bus)
 {
     const auto other = [this](const protocol::CanRecord &) { ++m_counters.otherFrames; };
     m_parser.setErrorFrameSink(other);
-    m_parser.setOtherFrameSink(other);
+    m_parser.setOtherFrameSink([this](const protocol::CanRecord &record) {
+        ++m_counters.otherFrames;
+        if (m_out && !record.isEcho() && !record.isError() && !record.isExtended() &&
+            record.canId == protocol::can::kMultiMotorId)
+            answerMultiMotor(record.canData(), *m_out);
+    });
+}
+
+void SimCanFront::setMultiMotorMode(int id, bool on)
+{
+    if (on)
+        m_multiMotorOff.remove(id);
+    else
+        m_multiMotorOff.insert(id);
+}
+
+void SimCanFront::answerMultiMotor(const protocol::can::CanData &data, QList<SimReply> &out)
+{
+    const auto iq = protocol::can::decodeMultiMotorTorque(data);
+    if (!iq)
+        return;
+    // Drives 1..4 answer in ascending ID order, each on its own ID with a motion reply, as an
+    // old drive answers 0xA1 (docs/CAN.md section 5). V2.36 documents no multi-motor frame and
+    // a drive not in the mode ignores it: both stay silent.
+    for (int id = 1; id <= protocol::can::kMultiMotorDrives; ++id) {
+        SimDrive *drive = m_bus.drive(id);
+        if (!drive || drive->generation() != protocol::Generation::V2_3 ||
+            m_multiMotorOff.contains(id))
+            continue;
+        if (m_bus.faults().isSilenced(id)) {
+            m_bus.faults().countSilenced();
+            continue;
+        }
+        ++m_counters.requests;
+        protocol::TorqueCommand torque;
+        torque.iqRaw = (*iq)[static_cast<size_t>(id - 1)];
+        answer(*drive, protocol::Request{protocol::Command::Torque, quint8(id), torque}, out);
+    }
 }
 
 protocol::DecodeContext SimCanFront::contextOf(const SimDrive &drive)
@@ -20,7 +57,9 @@ QList<SimReply> SimCanFront::receive(const QByteArray &records, double nowSecond
 {
     m_bus.advanceTo(nowSeconds);
     QList<SimReply> out;
+    m_out = &out; // for the multi-motor frame, which reaches the other-frame sink
     m_parser.feed(records, [&](const protocol::ParseEvent &e) { onEvent(e, out); });
+    m_out = nullptr;
     return out;
 }
 

@@ -8,6 +8,7 @@
 #include <QtCore/QByteArray>
 #include <QtCore/QHash>
 #include <QtCore/QList>
+#include <QtCore/QSet>
 
 #include <optional>
 
@@ -27,7 +28,8 @@ struct SimCanCounters {
 /// typed handling (SimDrive::handle), CAN records out. A drive of generation V2_3 is an old
 /// CAN drive, V2_35 a V2.36 one; both keep their physics and faults. A CAN drive never
 /// answers what its generation lacks on CAN (0x12, 0x93, 0x40..0x44), and an old drive echoes
-/// 0x95 without changing its angle (docs/CAN.md section 9). Replies go out on the documented
+/// 0x95 without changing its angle (docs/CAN.md section 9). Old drives 1..4 take the 0x280
+/// multi-motor torque frame (section 5). Replies go out on the documented
 /// ID of the drive's generation unless setReplyBase() says otherwise. Not thread-safe; time is
 /// the caller's, as for SimBus.
 class SimCanFront {
@@ -36,6 +38,10 @@ public:
 
     /// Host records in; reply records out, in order. Advances the bus to nowSeconds first.
     QList<SimReply> receive(const QByteArray &records, double nowSeconds);
+    /// Whether old drive `id` (1..4) is in the multi-motor ("broadcast") mode the vendor tool
+    /// sets: such a drive takes its iq from the 0x280 frame and answers on its own ID. On by
+    /// default; V2.36 drives never answer 0x280 (undocumented there).
+    void setMultiMotorMode(int id, bool on);
     /// Answer on 0x140+ID or 0x180+ID whatever the generation (nullopt: as documented).
     void setReplyBase(std::optional<protocol::can::IdBase> base) { m_replyBase = base; }
     const SimCanCounters &counters() const { return m_counters; }
@@ -45,11 +51,14 @@ public:
 private:
     void onEvent(const protocol::ParseEvent &event, QList<SimReply> &out);
     void answer(SimDrive &drive, const protocol::Request &request, QList<SimReply> &out);
+    void answerMultiMotor(const protocol::can::CanData &data, QList<SimReply> &out);
 
     SimBus &m_bus;
     protocol::CanRecordParser m_parser{protocol::LinkEnd::Drive};
     std::optional<protocol::can::IdBase> m_replyBase;
     SimCanCounters m_counters;
+    QSet<int> m_multiMotorOff;        ///< old drives 1..4 not in the multi-motor mode
+    QList<SimReply> *m_out = nullptr; ///< the replies of the receive() under way
 };
 
 } // namespace lk::sim

@@ -40,7 +40,10 @@ private:
 
 } // namespace
 
-SimBusHandle::SimBusHandle(const sim::SimBusSpec &spec) : m_spec(spec) {}
+SimBusHandle::SimBusHandle(const sim::SimBusSpec &spec, protocol::Link link)
+    : m_spec(spec), m_link(link)
+{
+}
 
 void SimBusHandle::setFaultSpec(const QString &spec)
 {
@@ -54,6 +57,7 @@ SimBusHandle::factory(const std::shared_ptr<SimBusHandle> &self)
     return [self](int baud) -> std::unique_ptr<Transport> {
         SimSettings settings;
         settings.spec = self->m_spec;
+        settings.link = self->m_link;
         {
             const std::lock_guard<std::mutex> lock(self->m_mutex);
             settings.faultSpec = self->m_faultSpec;

@@ -28,9 +28,12 @@ public:
     /// 16-bit encoder range), so a first run shows both protocol generations.
     static QString defaultSpecText() { return QStringLiteral("1:MF,2:MG,3:MS4015@2.35,4:MH"); }
 
-    explicit SimBusHandle(const sim::SimBusSpec &spec);
+    /// The drives of `spec` on `link`: on CAN (sim::SimCanFront, with CAN wire time) a drive
+    /// of generation V2_3 is an old CAN drive, V2_35 a V2.36 one.
+    explicit SimBusHandle(const sim::SimBusSpec &spec, protocol::Link link = protocol::Link::Rs485);
 
     const sim::SimBusSpec &spec() const { return m_spec; }
+    protocol::Link link() const { return m_link; }
     /// Faults to inject into every reply (sim::FaultInjector::configure syntax), for training
     /// and demos: "corrupt=0.01,garbage=0.01". Checked by the caller; applied on (re)open.
     void setFaultSpec(const QString &spec);
@@ -53,6 +56,7 @@ private:
     void detach(SimTransport *transport);
 
     const sim::SimBusSpec m_spec;
+    const protocol::Link m_link;
     std::mutex m_mutex; ///< guards the two below; never held while `f` runs or is awaited
     QString m_faultSpec;
     /// The live transport. It is only ever dereferenced under m_mutex (to queue a call to it)

@@ -5,6 +5,8 @@
 // process on the machine: this test picks a free port of its own so that parallel ctest runs
 // never share a bus.
 
+#include "FakeCanDevice.h"
+
 #include <protocol/CanLayout.h>
 #include <protocol/CanRecord.h>
 #include <protocol/CanRecordParser.h>
@@ -23,54 +25,10 @@ using lk::transport::CanTransport;
 using lk::transport::Transport;
 using lk::transport::TransportError;
 using Kind = lk::transport::TransportError::Kind;
+using lk::bustest::errorFrame;
+using lk::bustest::FakeCanDevice;
 
 namespace {
-
-/// A QCanBusDevice the test drives by hand.
-class FakeCanDevice : public QCanBusDevice {
-public:
-    bool connectAtOnce = true;
-    bool acceptWrites = true;
-    QList<QCanBusFrame> written;
-
-    bool writeFrame(const QCanBusFrame &frame) override
-    {
-        if (!acceptWrites) {
-            setError(QStringLiteral("No buffer space available"), WriteError);
-            return false;
-        }
-        written.append(frame);
-        return true;
-    }
-    QString interpretErrorFrame(const QCanBusFrame &) override { return {}; }
-    void receive(const QList<QCanBusFrame> &frames) { enqueueReceivedFrames(frames); }
-    void fail(const QString &text, CanBusError e) { setError(text, e); }
-    void finishConnecting() { setState(ConnectedState); }
-    void vanish()
-    {
-        setError(QStringLiteral("Network is down"), ConnectionError);
-        setState(UnconnectedState);
-    }
-
-protected:
-    bool open() override
-    {
-        if (connectAtOnce)
-            setState(ConnectedState);
-        return true;
-    }
-    void close() override { setState(UnconnectedState); }
-};
-
-QCanBusFrame errorFrame(QCanBusFrame::FrameErrors errors, quint8 controllerDetail = 0)
-{
-    QCanBusFrame f(QCanBusFrame::ErrorFrame);
-    f.setError(errors);
-    QByteArray data(8, '\0');
-    data[1] = char(controllerDetail);
-    f.setPayload(data);
-    return f;
-}
 
 QCanBusFrame dataFrame(quint32 id, const char *hex)
 {

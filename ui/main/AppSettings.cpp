@@ -25,7 +25,8 @@ const char kListenOnly[] = "connection/listenOnly";
 const char kCanPlugin[] = "connection/canPlugin";
 const char kCanInterface[] = "connection/canInterface";
 const char kCanBitRate[] = "connection/canBitRate";
-const char kChosenSeriesGroup[] = "chosenSeries"; // /<port, percent-encoded>/<id>
+const char kChosenSeriesGroup[] = "chosenSeries";         // /<port, percent-encoded>/<id>
+const char kChosenGenerationGroup[] = "chosenGeneration"; // the same; "can" or "can236"
 const char kScanFirstId[] = "scan/firstId";
 const char kScanLastId[] = "scan/lastId";
 const char kScanSweepBauds[] = "scan/sweepBauds";
@@ -41,6 +42,7 @@ const char kLastFolderGroup[] = "lastFolder/"; // + a FileDialogs purpose key
 const char kKindSerial[] = "serial";
 const char kKindSimulator[] = "simulator";
 const char kKindCan[] = "can";
+const char kKindSimulatorCan[] = "simulator-can"; // the built-in simulator with CAN drives
 constexpr int kMinId = 1;
 constexpr int kMaxId = 32;
 constexpr double kMaxPollRateHz = 10000;
@@ -63,7 +65,7 @@ bool validKind(const QVariant &v)
 {
     const QString s = v.toString();
     return s == QLatin1String(kKindSerial) || s == QLatin1String(kKindSimulator) ||
-           s == QLatin1String(kKindCan);
+           s == QLatin1String(kKindCan) || s == QLatin1String(kKindSimulatorCan);
 }
 
 bool validBitRate(const QVariant &v)
@@ -120,12 +122,31 @@ bool validSeries(const QVariant &v)
 }
 
 // "chosenSeries/%2Fdev%2FttyUSB0/3": the port's slashes must not open settings groups.
-QString chosenSeriesKey(const QString &port, int id)
+QString chosenKey(const char *group, const QString &port, int id)
 {
     return QStringLiteral("%1/%2/%3")
-        .arg(QLatin1String(key::kChosenSeriesGroup),
-             QString::fromLatin1(QUrl::toPercentEncoding(port)))
+        .arg(QLatin1String(group), QString::fromLatin1(QUrl::toPercentEncoding(port)))
         .arg(id);
+}
+
+QString chosenSeriesKey(const QString &port, int id)
+{
+    return chosenKey(key::kChosenSeriesGroup, port, id);
+}
+
+/// The CAN generations by the words of lkctl --drives: "can" (old), "can236" (V2.36).
+QString canGenerationWord(protocol::Generation g)
+{
+    return g == protocol::Generation::V2_35 ? QStringLiteral("can236") : QStringLiteral("can");
+}
+
+std::optional<protocol::Generation> canGenerationFromWord(const QString &word)
+{
+    if (word == QLatin1String("can"))
+        return protocol::Generation::V2_3;
+    if (word == QLatin1String("can236"))
+        return protocol::Generation::V2_35;
+    return std::nullopt;
 }
 
 bool validBlackBoxMinutes(const QVariant &v)
@@ -150,7 +171,7 @@ struct CheckedKey {
 };
 const CheckedKey kCheckedKeys[] = {
     {key::kVersion, validVersion, "a whole number"},
-    {key::kConnectionKind, validKind, "serial, can or simulator"},
+    {key::kConnectionKind, validKind, "serial, can, simulator or simulator-can"},
     {key::kCanPlugin, validCanPlugin, "a Qt CAN plugin such as socketcan"},
     {key::kCanInterface, validCanInterface, "an interface name such as can0"},
     {key::kCanBitRate, validBitRate, "1000000, 500000, 250000, 125000 or 100000"},
@@ -227,6 +248,10 @@ QStringList AppSettings::findDamage(QSettings &settings)
             !validSeries(settings.value(k)))
             damage << QStringLiteral("%1: must be MS, MF, MG or MH (found \"%2\")")
                           .arg(k, settings.value(k).toString());
+        if (k.startsWith(QLatin1String(key::kChosenGenerationGroup) + QLatin1Char('/')) &&
+            !canGenerationFromWord(settings.value(k).toString()))
+            damage << QStringLiteral("%1: must be can or can236 (found \"%2\")")
+                          .arg(k, settings.value(k).toString());
     }
     return damage + IniDriveStore::damagedEntries(settings);
 }
@@ -281,6 +306,7 @@ ConnectionChoice AppSettings::connection() const
     c.kind = kind == QLatin1String(kKindSerial) ? ConnectionChoice::Kind::Serial
              : kind == QLatin1String(kKindCan)  ? ConnectionChoice::Kind::Can
                                                 : ConnectionChoice::Kind::Simulator;
+    c.simulatedCan = kind == QLatin1String(kKindSimulatorCan);
     c.port = s.value(QLatin1String(key::kConnectionPort)).toString();
     const QVariant baud = s.value(QLatin1String(key::kConnectionBaud));
     c.baud = validBaud(baud) ? baud.toInt() : bus::BusTiming::kDefaultBaud;
@@ -304,9 +330,10 @@ void AppSettings::setConnection(const ConnectionChoice &choice)
 {
     QSettings &s = m_settings;
     s.setValue(QLatin1String(key::kConnectionKind),
-               QLatin1String(choice.isCan()         ? kKindCan
-                             : choice.isSimulator() ? kKindSimulator
-                                                    : kKindSerial));
+               QLatin1String(choice.isCan() ? kKindCan
+                             : choice.isSimulator()
+                                 ? (choice.simulatedCan ? kKindSimulatorCan : kKindSimulator)
+                                 : kKindSerial));
     s.setValue(QLatin1String(key::kConnectionPort), choice.port);
     s.setValue(QLatin1String(key::kConnectionBaud), choice.baud);
     s.setValue(QLatin1String(key::kCanPlugin), choice.canPlugin);
@@ -324,6 +351,18 @@ std::optional<protocol::Series> AppSettings::chosenSeries(const QString &port, i
 void AppSettings::setChosenSeries(const QString &port, int id, protocol::Series series)
 {
     m_settings.setValue(chosenSeriesKey(port, id), protocol::seriesName(series));
+}
+
+std::optional<protocol::Generation> AppSettings::chosenGeneration(const QString &port, int id) const
+{
+    return canGenerationFromWord(
+        m_settings.value(chosenKey(key::kChosenGenerationGroup, port, id)).toString());
+}
+
+void AppSettings::setChosenGeneration(const QString &port, int id, protocol::Generation generation)
+{
+    m_settings.setValue(chosenKey(key::kChosenGenerationGroup, port, id),
+                        canGenerationWord(generation));
 }
 
 int AppSettings::scanFirstId() const

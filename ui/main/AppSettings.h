@@ -62,6 +62,10 @@ public:
     /// whose 0x12 reply never passed); nullopt: none chosen, or the value is damaged.
     std::optional<protocol::Series> chosenSeries(const QString &port, int id) const;
     void setChosenSeries(const QString &port, int id, protocol::Series series);
+    /// The CAN generation the user chose for drive `id` on `port` (V2_3: old CAN, V2_35:
+    /// V2.36); nullopt when none.
+    std::optional<protocol::Generation> chosenGeneration(const QString &port, int id) const;
+    void setChosenGeneration(const QString &port, int id, protocol::Generation generation);
 
     int scanFirstId() const;
     int scanLastId() const;

@@ -78,15 +78,15 @@ void BusController::connectTo(const ConnectionChoice &choice)
     m_reconnecting = false;
     m_choice = choice;
     bus::TransportFactory factory;
-    int rate = choice.baud;
+    const int rate = choice.rate(); // the session's "baud" is the bit rate on CAN
     if (choice.isSimulator()) {
-        m_sim = std::make_shared<transport::SimBusHandle>(m_simSpec);
+        // On CAN the same drives: a V2.3 one is an old CAN drive, a V2.35 one a V2.36 drive.
+        m_sim = std::make_shared<transport::SimBusHandle>(m_simSpec, choice.link());
         m_sim->setFaultSpec(m_simFaults);
         factory = transport::SimBusHandle::factory(m_sim);
     } else if (choice.isCan()) {
         m_sim.reset();
         factory = transport::CanTransport::factory(canSettings(choice));
-        rate = choice.bitRate; // the session's "baud" is the bit rate on CAN
     } else {
         m_sim.reset();
         transport::SerialSettings s;
@@ -97,8 +97,7 @@ void BusController::connectTo(const ConnectionChoice &choice)
         factory = wrap(std::move(factory), choice);
     m_model->clearDrives();
     m_model->setPolling(bus::PollPlan{}, false);
-    m_model->setLink(choice.isCan() ? protocol::Link::Can : protocol::Link::Rs485,
-                     choice.canInterface);
+    m_model->setLink(choice.link(), choice.isCan() ? choice.canInterface : QString());
     m_awaitingFirstOpen = true;
     m_wasOpen = false;
     m_wasListening = false;
@@ -123,7 +122,7 @@ transport::CanSettings BusController::canSettings(const ConnectionChoice &choice
 QString BusController::linkName() const
 {
     if (m_choice.isSimulator())
-        return tr("the simulator");
+        return m_choice.simulatedCan ? tr("the simulated CAN bus") : tr("the simulator");
     if (m_choice.isCan())
         return QStringLiteral("%1:%2").arg(m_choice.canPlugin, m_choice.canInterface);
     return m_choice.port;
@@ -160,8 +159,10 @@ QString BusController::portKey() const
 {
     if (m_choice.isCan()) // "can:socketcan:can0": never a serial path, so never mixed up
         return QStringLiteral("can:%1:%2").arg(m_choice.canPlugin, m_choice.canInterface);
-    return m_choice.isSimulator() ? QStringLiteral("simulator")
-                                  : transport::SerialTransport::systemPath(m_choice.port);
+    if (m_choice.isSimulator()) // its CAN drives are other drives than its RS485 ones
+        return m_choice.simulatedCan ? QStringLiteral("simulator-can")
+                                     : QStringLiteral("simulator");
+    return transport::SerialTransport::systemPath(m_choice.port);
 }
 
 bool BusController::portPresent() const
@@ -224,7 +225,7 @@ void BusController::onError(const transport::TransportError &error)
     // An unplug never comes here: it is a state (onConnectionChanged), with what happens next.
     if (m_reconnecting)
         return; // the banner already says we are waiting for the adapter: no flood per retry
-    if (m_choice.isCan() && onCanCondition(error))
+    if (m_choice.link() == protocol::Link::Can && onCanCondition(error))
         return;
     emit message(
         MessageBanner::Level::Error,
@@ -282,7 +283,7 @@ void BusController::onScanFinished(const bus::ScanSummary &summary)
         emit message(MessageBanner::Level::Warning, tr("Scan stopped: %1").arg(summary.error));
     else if (summary.motors.isEmpty() && !summary.cancelled)
         emit message(MessageBanner::Level::Warning,
-                     m_choice.isCan()
+                     m_choice.link() == protocol::Link::Can
                          ? tr("No drive answered on %1. Check that the drives use %2, the "
                               "CAN-H/CAN-L wiring, the drives' supply and a 120-ohm terminator "
                               "at each end of the bus.")
@@ -374,6 +375,11 @@ void BusController::onTookOver()
 void BusController::setSeries(int id, protocol::Series series)
 {
     m_session->setSeries(id, series);
+}
+
+void BusController::setDriveIdentity(const bus::DriveIdentity &identity)
+{
+    m_session->setDriveIdentity(identity);
 }
 
 void BusController::clearErrors(int id)

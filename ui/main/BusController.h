@@ -81,6 +81,9 @@ public slots:
     void takeOver();
     /// The user says which series drive `id` is (no 0x12 reply told): decode by it.
     void setSeries(int id, protocol::Series series);
+    /// The user's word on a drive no model read tells (CAN): series, generation, gear ratio
+    /// (bus::BusSession::setDriveIdentity); no reply overrides it.
+    void setDriveIdentity(const lk::bus::DriveIdentity &identity);
     void setPollRate(double hz);
     void setTrafficCapture(bool on);
 

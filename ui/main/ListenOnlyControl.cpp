@@ -26,6 +26,8 @@ ListenOnlyControl::ListenOnlyControl(BusController *controller, AppSettings *set
     connect(model, &BusModel::drivesChanged, this, &ListenOnlyControl::applyRemembered);
     connect(m_chooser, &SeriesChooser::seriesChosen, this, &ListenOnlyControl::chooseSeries);
     connect(m_chooser, &SeriesChooser::gearRatioChosen, this, &ListenOnlyControl::chooseGearRatio);
+    connect(m_chooser, &SeriesChooser::generationChosen, this,
+            &ListenOnlyControl::chooseGeneration);
     syncStopButton();
 }
 
@@ -65,7 +67,7 @@ void ListenOnlyControl::requestTakeOver()
 void ListenOnlyControl::chooseSeries(int id, protocol::Series series)
 {
     m_settings->setChosenSeries(m_controller->portKey(), id, series);
-    m_controller->setSeries(id, series);
+    applyChoice(id, series);
 }
 
 void ListenOnlyControl::chooseGearRatio(int id, double ratio)
@@ -74,6 +76,47 @@ void ListenOnlyControl::chooseGearRatio(int id, double ratio)
     if (m_store)
         m_store->setGearRatio(DriveSettingsStore::driveKey(id, known.value(id)), ratio);
     m_controller->model()->setChosenGearRatio(id, ratio);
+    if (m_controller->model()->link() == protocol::Link::Can)
+        applyChoice(id, m_controller->session()->series(id));
+}
+
+void ListenOnlyControl::chooseGeneration(int id, protocol::Generation generation)
+{
+    m_settings->setChosenGeneration(m_controller->portKey(), id, generation);
+    m_controller->model()->setLinkGeneration(id, generation);
+    applyChoice(id, m_controller->session()->series(id));
+}
+
+void ListenOnlyControl::applyChoice(int id, std::optional<protocol::Series> series)
+{
+    BusModel *model = m_controller->model();
+    const QString port = m_controller->portKey();
+    // Only a series the user chose or the bus learnt: never one made up for the generation.
+    if (const auto chosen = m_settings->chosenSeries(port, id))
+        series = chosen;
+    else if (!m_controller->session()->series(id))
+        series.reset();
+    if (!series)
+        return; // torque, power and open loop stay refused until a series is known
+    if (model->link() != protocol::Link::Can) {
+        m_controller->setSeries(id, *series);
+        return;
+    }
+    const DriveRecord *d = model->drive(id);
+    std::optional<protocol::Generation> generation = m_settings->chosenGeneration(port, id);
+    if (!generation && d)
+        generation = d->generation();
+    if (!generation) {
+        m_controller->setSeries(id, *series); // the generation follows when a reply tells it
+        return;
+    }
+    bus::DriveIdentity identity;
+    identity.id = id;
+    identity.series = *series;
+    identity.generation = *generation;
+    if (d)
+        identity.gearRatio = d->gearRatio();
+    m_controller->setDriveIdentity(identity);
 }
 
 void ListenOnlyControl::applyRemembered()
@@ -91,11 +134,19 @@ void ListenOnlyControl::applyRemembered()
                 d = model->drive(id);
             }
         }
+        const QString port = m_controller->portKey();
+        const auto generation = m_settings->chosenGeneration(port, id);
+        if (d && generation && model->link() == protocol::Link::Can &&
+            d->linkGeneration != generation) {
+            m_chooser->markChosen(id);
+            model->setLinkGeneration(id, *generation); // drivesChanged again: this one is set
+            d = model->drive(id);
+        }
         if (!d || d->series)
             continue; // the bus knows it (a 0x12 reply passed, or the choice is applied)
-        if (const auto series = m_settings->chosenSeries(m_controller->portKey(), id)) {
+        if (const auto series = m_settings->chosenSeries(port, id)) {
             m_chooser->markChosen(id);
-            m_controller->setSeries(id, *series);
+            applyChoice(id, series);
         }
     }
 }

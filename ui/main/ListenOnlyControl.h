@@ -5,6 +5,8 @@
 #include <QtCore/QObject>
 #include <QtCore/QString>
 
+#include <optional>
+
 class QPushButton;
 class QWidget;
 
@@ -20,7 +22,10 @@ class SeriesChooser;
 /// stop button says that it sends nothing while listening; and a drive's series the user chose
 /// (SeriesChooser) is remembered per port and ID and applied to the bus, again whenever that
 /// drive is seen on that port. The same holds on CAN, which has no model read: there the
-/// chooser also takes the gear ratio, kept in the drive views' store (the Encoder view's).
+/// chooser also takes the gear ratio, kept in the drive views' store (the Encoder view's),
+/// and the generation where no reply told it; series, generation and ratio go to the bus
+/// together as the drive's identity (BusSession::setDriveIdentity) once series and
+/// generation are known.
 class ListenOnlyControl : public QObject {
     Q_OBJECT
 public:
@@ -42,6 +47,10 @@ public slots:
 private:
     void chooseSeries(int id, protocol::Series series);
     void chooseGearRatio(int id, double ratio);
+    void chooseGeneration(int id, protocol::Generation generation);
+    /// Give the bus what is known of drive `id`: on CAN its identity once series and
+    /// generation are known, else its series alone.
+    void applyChoice(int id, std::optional<protocol::Series> series);
     void applyRemembered();
     void syncStopButton();
 

@@ -45,7 +45,8 @@ struct StartupOptions::Definitions {
                             QStringLiteral("N")};
     QCommandLineOption can{QStringLiteral("can"),
                            tr("Open a CAN interface through a Qt SerialBus plugin, e.g. "
-                              "socketcan:can0 (see the README, \"Drives on CAN\")."),
+                              "socketcan:can0 (see the README, \"Drives on CAN\"); \"sim\": "
+                              "the built-in simulated bus on CAN (with --sim for its drives)."),
                            QStringLiteral("PLUGIN:INTERFACE")};
     QCommandLineOption bitRate{QStringLiteral("bitrate"),
                                tr("CAN bit rate: 1000000, 500000, 250000, 125000 or 100000 "
@@ -225,11 +226,15 @@ QString StartupOptions::readBus(const QCommandLineParser &p, const Definitions &
 
 QString StartupOptions::readCan(const QCommandLineParser &p, const Definitions &d)
 {
-    if (p.isSet(d.can)) {
+    const QString value = p.value(d.can).trimmed();
+    simCan = p.isSet(d.can) && value == QLatin1String("sim");
+    if (simCan) {
+        if (p.isSet(d.port))
+            return tr("--can sim is the simulated bus: it cannot go with --port.");
+    } else if (p.isSet(d.can)) {
         if (p.isSet(d.port) || p.isSet(d.sim))
             return tr("--can, --port and --sim exclude each other: pick one bus.");
         // The first colon only: a virtualcan interface is a URL ("tcp://127.0.0.1:35468/can0").
-        const QString value = p.value(d.can);
         canPlugin = value.section(QLatin1Char(':'), 0, 0).trimmed();
         canInterface = value.section(QLatin1Char(':'), 1).trimmed();
         if (canPlugin.isEmpty() || canInterface.isEmpty())
@@ -237,7 +242,7 @@ QString StartupOptions::readCan(const QCommandLineParser &p, const Definitions &
                 .arg(value);
     }
     if (p.isSet(d.bitRate)) {
-        if (p.isSet(d.port) || p.isSet(d.sim))
+        if (p.isSet(d.port) || (p.isSet(d.sim) && !simCan))
             return tr("--bitrate is the bit rate of a CAN bus; it cannot go with --port or "
                       "--sim (their rate is --baud).");
         bool ok = false;
@@ -297,10 +302,12 @@ StartupOptions::initialChoice(const AppSettings &settings,
         c.kind = ConnectionChoice::Kind::Can;
         c.canPlugin = canPlugin;
         c.canInterface = canInterface;
-    } else if (sim) {
+    } else if (sim || simCan) {
         c.kind = ConnectionChoice::Kind::Simulator;
+        c.simulatedCan = simCan; // --sim alone: the simulated RS485 bus
     } else if (c.isCan() ? !portExists(canKey)
                          : !c.isSimulator() && (c.port.isEmpty() || !portExists(c.port))) {
+        c.simulatedCan = c.isCan(); // without the CAN adapter: the simulated CAN bus
         c.kind = ConnectionChoice::Kind::Simulator;
         c.listenOnly = false; // the built-in bus has no other master to listen to
     }
@@ -317,7 +324,7 @@ bool StartupOptions::fellBackToSimulator(
     const AppSettings &settings, const std::function<bool(const QString &)> &portExists) const
 {
     const ConnectionChoice remembered = settings.connection();
-    return !port && !sim && canPlugin.isEmpty() && !remembered.isSimulator() &&
+    return !port && !sim && !simCan && canPlugin.isEmpty() && !remembered.isSimulator() &&
            initialChoice(settings, portExists).isSimulator();
 }
 

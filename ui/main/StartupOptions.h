@@ -29,6 +29,9 @@ public:
     /// "can0"); empty plugin: not given.
     QString canPlugin;
     QString canInterface;
+    /// --can sim: the built-in simulated bus with its drives on CAN (old and V2.36 drives, CAN
+    /// wire time at --bitrate); goes with --sim for the drives.
+    bool simCan = false;
     int bitRate = ConnectionChoice::kDefaultBitRate; ///< --bitrate N (a CAN bit rate)
     bool bitRateGiven = false;
     /// --listen: the bus opens listen-only (transmits nothing); --no-listen: as bus master.

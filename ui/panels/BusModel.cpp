@@ -31,6 +31,15 @@ void BusModel::setConnection(const bus::ConnectionStatus &status, bool simulated
     }
 }
 
+void BusModel::setLinkGeneration(int id, protocol::Generation generation)
+{
+    auto it = m_drives.find(id);
+    if (it == m_drives.end() || it->linkGeneration == generation)
+        return;
+    it->linkGeneration = generation;
+    emit drivesChanged();
+}
+
 void BusModel::setChosenGearRatio(int id, double ratio)
 {
     const auto it = m_drives.find(id);
@@ -104,7 +113,12 @@ void BusModel::addFound(const bus::FoundMotor &found)
     DriveRecord &d = m_drives[found.id];
     d.id = found.id;
     d.baud = found.baud;
-    d.model = found.model;
+    // On CAN nothing reads the model: an empty one would claim the V2.3 generation.
+    if (found.link == protocol::Link::Can && !found.modelKnown)
+        d.model.reset();
+    else
+        d.model = found.model;
+    d.linkGeneration = found.generation;
     d.nameInfo = motor::ModelNameInfo::parse(found.model.motorName);
     d.series = found.series ? found.series : d.nameInfo.series;
     if (found.state1)
@@ -152,6 +166,12 @@ void BusModel::applyKnownMotors(const bus::KnownMotors &motors)
         // A series learnt (a 0x12 reply passed, or the user chose one) beats a name's guess.
         if (m.series && it->series != m.series) {
             it->series = m.series;
+            changed = true;
+        }
+        // Without a model read: the generation a reply told or the user chose.
+        if (!m.model && (m.identityChosen || m.generationSeen) &&
+            it->linkGeneration != m.generation) {
+            it->linkGeneration = m.generation;
             changed = true;
         }
     }

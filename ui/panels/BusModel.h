@@ -61,6 +61,8 @@ public:
     void applyKnownMotors(const bus::KnownMotors &motors);
     /// The gear ratio the user chose for drive `id` (no model name to read it from).
     void setChosenGearRatio(int id, double ratio);
+    /// The generation the user chose for drive `id` (CAN), shown until the bus reports it.
+    void setLinkGeneration(int id, protocol::Generation generation);
     /// Values for the drives shown; while listening, an ID seen answering becomes a drive.
     void applyTelemetry(const bus::TelemetryBatch &batch);
     /// Host clock the field timestamps use (ms since the model was made).

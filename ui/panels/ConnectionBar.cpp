@@ -193,9 +193,18 @@ void ConnectionBar::rebuildCanItems()
         m_pluginList = plugins;
         const QSignalBlocker block(m_canPlugin);
         m_canPlugin->clear();
-        m_canPlugin->addItems(plugins);
+        // First, as on RS485: the built-in simulated CAN bus (old and V2.36 drives).
+        m_canPlugin->addItem(ThemedIcon::get(QStringLiteral(":/icons/simulator.svg")),
+                             tr("Simulator (built-in)"));
+        m_canPlugin->setItemData(0, static_cast<int>(ConnectionChoice::Kind::Simulator), kKindRole);
+        for (const QString &plugin : plugins) {
+            m_canPlugin->addItem(plugin);
+            m_canPlugin->setItemData(m_canPlugin->count() - 1,
+                                     static_cast<int>(ConnectionChoice::Kind::Can), kKindRole);
+        }
     }
-    const QStringList interfaces = m_canInterfaces(keep.canPlugin);
+    const QStringList interfaces =
+        keep.isSimulator() && keep.simulatedCan ? QStringList() : m_canInterfaces(keep.canPlugin);
     if (interfaces != m_interfaceList) {
         m_interfaceList = interfaces;
         const QSignalBlocker block(m_canInterface);
@@ -275,7 +284,7 @@ ConnectionChoice ConnectionBar::choice() const
     c.baud = m_baud->currentData().toInt();
     c.autoReconnect = m_autoReconnect->isChecked();
     c.listenOnly = m_listenOnly->isChecked();
-    if (!m_canPlugin->currentText().isEmpty())
+    if (!m_canPlugin->currentText().isEmpty() && !canSimulatorChosen())
         c.canPlugin = m_canPlugin->currentText();
     c.canInterface = m_canInterface->currentText().trimmed();
     c.bitRate = m_bitRate->currentData().toInt();
@@ -289,8 +298,12 @@ ConnectionChoice ConnectionBar::choice() const
             text.isEmpty() ? ConnectionChoice::Kind::Simulator : ConnectionChoice::Kind::Serial;
         c.port = text;
     }
-    if (m_link->currentData().toBool())
-        c.kind = ConnectionChoice::Kind::Can; // the serial port stays chosen for RS485
+    if (m_link->currentData().toBool()) {
+        // The serial port stays chosen for RS485; on CAN the plugin's first entry is the
+        // built-in simulated bus.
+        c.simulatedCan = canSimulatorChosen();
+        c.kind = c.simulatedCan ? ConnectionChoice::Kind::Simulator : ConnectionChoice::Kind::Can;
+    }
     return c;
 }
 
@@ -303,7 +316,8 @@ void ConnectionBar::setChoice(const ConnectionChoice &c)
     m_listenOnly->setChecked(c.listenOnly);
     setCanChoice(c);
     // On CAN the RS485 side keeps its port for a switch back: a port named is a serial port.
-    if (c.isSimulator() || (c.isCan() && c.port.isEmpty())) {
+    if ((c.isSimulator() && !c.simulatedCan) ||
+        (c.link() == protocol::Link::Can && c.port.isEmpty())) {
         m_port->setCurrentIndex(0);
         return;
     }
@@ -319,14 +333,35 @@ void ConnectionBar::setChoice(const ConnectionChoice &c)
     m_port->setEditText(c.port);
 }
 
+bool ConnectionBar::canSimulatorChosen() const
+{
+    return m_canPlugin->currentIndex() >= 0 &&
+           m_canPlugin->currentData(kKindRole).toInt() ==
+               static_cast<int>(ConnectionChoice::Kind::Simulator);
+}
+
 void ConnectionBar::setCanChoice(const ConnectionChoice &c)
 {
-    m_link->setCurrentIndex(c.isCan() ? 1 : 0);
+    const bool onCan = c.link() == protocol::Link::Can;
+    m_link->setCurrentIndex(onCan ? 1 : 0);
     showLinkWidgets();
-    int plugin = m_canPlugin->findText(c.canPlugin);
+    const int rate = m_bitRate->findData(c.bitRate);
+    if (rate >= 0)
+        m_bitRate->setCurrentIndex(rate);
+    if (onCan && c.isSimulator()) {
+        m_canPlugin->setCurrentIndex(0);
+        m_canInterface->setEnabled(false); // the simulated bus has no interface
+        return;
+    }
+    m_canInterface->setEnabled(m_status.state == transport::Transport::State::Closed);
+    int plugin = c.canPlugin.isEmpty() ? -1 : m_canPlugin->findText(c.canPlugin);
+    if (plugin == 0)
+        plugin = -1; // a plugin named like the simulator's entry is no plugin of Qt's
     if (plugin < 0 && !c.canPlugin.isEmpty()) {
         // Remembered but not found now (its library is gone): keep it, opening says why.
         m_canPlugin->addItem(c.canPlugin);
+        m_canPlugin->setItemData(m_canPlugin->count() - 1,
+                                 static_cast<int>(ConnectionChoice::Kind::Can), kKindRole);
         plugin = m_canPlugin->count() - 1;
     }
     m_canPlugin->setCurrentIndex(plugin);
@@ -334,9 +369,6 @@ void ConnectionBar::setCanChoice(const ConnectionChoice &c)
     m_canInterface->setCurrentIndex(iface);
     if (iface < 0)
         m_canInterface->setEditText(c.canInterface); // not up yet: keep the name as typed
-    const int rate = m_bitRate->findData(c.bitRate);
-    if (rate >= 0)
-        m_bitRate->setCurrentIndex(rate);
 }
 
 void ConnectionBar::setCanCondition(transport::CanBusCondition condition, const QString &message)
@@ -398,7 +430,7 @@ void ConnectionBar::updateState()
     m_port->setEnabled(closed);
     m_baud->setEnabled(closed);
     m_canPlugin->setEnabled(closed);
-    m_canInterface->setEnabled(closed);
+    m_canInterface->setEnabled(closed && !canSimulatorChosen());
     m_bitRate->setEnabled(closed);
     m_listenOnly->setEnabled(closed);
     // Taking over is for a link that is up and listening; a closed one simply reconnects.

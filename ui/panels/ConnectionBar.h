@@ -38,11 +38,12 @@ struct PortEntry {
 };
 
 /// Top bar: the link (RS485 or CAN); for RS485 the port (serial ports with USB description and
-/// VID:PID, or the built-in simulator) and baud, for CAN the Qt SerialBus plugin, its
-/// interface and the bit rate; listen only, connect/disconnect, auto-reconnect, and the link
-/// state (on CAN with the bus condition: bus-off, error-passive, no acknowledgement); while a
-/// link listens, "Take over the bus". The port and interface lists refresh themselves about
-/// once a second so that adapters coming and going show up without a click.
+/// VID:PID, or the built-in simulator) and baud, for CAN the Qt SerialBus plugin (or the
+/// built-in simulator with CAN drives), its interface and the bit rate; listen only,
+/// connect/disconnect, auto-reconnect, and the link state (on CAN with the bus condition: bus-off,
+/// error-passive, no acknowledgement); while a link listens, "Take over the bus". The port and
+/// interface lists refresh themselves about once a second so that adapters coming and going show up
+/// without a click.
 class ConnectionBar : public QWidget {
     Q_OBJECT
 public:
@@ -100,6 +101,8 @@ private:
     void rebuildCanItems();
     void showLinkWidgets();
     void setCanChoice(const ConnectionChoice &choice);
+    /// The CAN plugin list's first entry, the built-in simulated CAN bus, is chosen.
+    bool canSimulatorChosen() const;
     QWidget *buildRs485Row();
     QWidget *buildCanRow();
     void onConnectClicked();

@@ -23,6 +23,10 @@ struct DriveRecord {
     motor::ModelNameInfo nameInfo;            ///< gear ratio and encoder bits from the name
     /// The gear ratio the user chose for a drive without a model name (CAN, listening).
     std::optional<double> chosenGearRatio;
+    /// Where no model was read (CAN): the generation a reply told (its ID, the 0x9A layout)
+    /// or the user chose; nullopt when neither says. On CAN V2_3 is the old generation,
+    /// V2_35 V2.36.
+    std::optional<protocol::Generation> linkGeneration;
     int baud = 0;                ///< where the scan found it
     bus::TelemetrySample latest; ///< every field ever received, merged; `fields` says which
     std::array<qint64, kFieldCount> updatedMs{}; ///< host ms (BusModel clock) per field; 0 never
@@ -34,10 +38,11 @@ struct DriveRecord {
     /// Merge the fields a sample carries, stamping them with `nowMs`.
     void apply(const bus::TelemetrySample &sample, qint64 nowMs);
 
-    /// The protocol generation from read_model; nullopt until the model was read.
+    /// The protocol generation from read_model, else (CAN) the one the link told or the user
+    /// chose; nullopt while nothing says.
     std::optional<protocol::Generation> generation() const
     {
-        return model ? std::optional(model->generation) : std::nullopt;
+        return model ? std::optional(model->generation) : linkGeneration;
     }
     bool reportsPower() const { return series == protocol::Series::MS; }
     bool hasPhaseCurrents() const { return series != protocol::Series::MS; }

@@ -6,6 +6,7 @@
 
 #include <bus/BusConfig.h>
 #include <bus/BusTiming.h>
+#include <bus/LinkTiming.h>
 #include <bus/Scanner.h>
 
 #include <QtGui/QIcon>
@@ -107,6 +108,10 @@ void ScanControls::setCanSend(bool canSend)
 
 void ScanControls::setLink(protocol::Link link)
 {
+    if (link != m_link) { // what a scan took on the other link says nothing of this one
+        m_measuredPerId.clear();
+        m_lastAnswers.clear();
+    }
     m_link = link;
     m_sweep->setVisible(link == protocol::Link::Rs485); // the choice is kept for RS485
     // Until the link reports its own rate, the estimate is for the link's default.
@@ -127,9 +132,14 @@ void ScanControls::setBaud(int baud)
 }
 
 double ScanControls::estimateSeconds(const bus::ScanOptions &o, int baud,
-                                     const QMap<int, int> &answeringAt)
+                                     const QMap<int, int> &answeringAt, protocol::Link link)
 {
-    return bus::Scanner::estimatedSeconds(o, baud, bus::BusConfig{}, answeringAt);
+    if (link == protocol::Link::Rs485)
+        return bus::Scanner::estimatedSeconds(o, baud, bus::BusConfig{}, answeringAt);
+    // One bit rate, no sweep: the CAN timing of the probes alone.
+    return bus::Scanner::estimatedSeconds(qMax(0, o.lastId - o.firstId + 1),
+                                          bus::LinkTiming::can(baud), bus::BusConfig{},
+                                          answeringAt.value(baud));
 }
 
 double ScanControls::expectedSeconds(const bus::ScanOptions &o) const
@@ -146,7 +156,7 @@ double ScanControls::expectedSeconds(const bus::ScanOptions &o) const
         bus::ScanOptions one = o;
         one.sweepBauds = false;
         total += m_measuredPerId.contains(b) ? ids * m_measuredPerId.value(b)
-                                             : estimateSeconds(one, b, answering);
+                                             : estimateSeconds(one, b, answering, m_link);
     }
     return total;
 }

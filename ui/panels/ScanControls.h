@@ -38,9 +38,12 @@ public:
     /// margins (bus::Scanner::estimatedSeconds: per ID the first pass's probe timeout, per
     /// baud the listening for late replies). It does not follow the adaptive margin, which
     /// moves with the host's load, so it stays put for the same bus.
-    /// `answeringAt`: how many IDs of the range are expected to answer at a baud.
+    /// `answeringAt`: how many IDs of the range are expected to answer at a baud. On CAN
+    /// `baud` is the bit rate and the time is of CAN frames (bus::LinkTiming::can: no model
+    /// read, the 0.25 ms reply time), not of RS485 bytes.
     static double estimateSeconds(const bus::ScanOptions &options, int baud,
-                                  const QMap<int, int> &answeringAt = {});
+                                  const QMap<int, int> &answeringAt = {},
+                                  protocol::Link link = protocol::Link::Rs485);
     /// The estimate shown: from the last complete scan at that baud when there was one (its
     /// time per ID), else estimateSeconds() with the drives that scan found where they
     /// answered.

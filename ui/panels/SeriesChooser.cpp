@@ -16,7 +16,8 @@ const protocol::Series kSeries[] = {protocol::Series::MS, protocol::Series::MF,
 
 SeriesChooser::SeriesChooser(BusModel *model, QWidget *parent)
     : QWidget(parent), m_model(model), m_label(new QLabel(this)), m_combo(new QComboBox(this)),
-      m_ratioLabel(new QLabel(tr("Gear ratio:"), this)), m_ratio(new QDoubleSpinBox(this))
+      m_ratioLabel(new QLabel(tr("Gear ratio:"), this)), m_ratio(new QDoubleSpinBox(this)),
+      m_generationLabel(new QLabel(tr("CAN generation:"), this)), m_generation(new QComboBox(this))
 {
     setObjectName(QStringLiteral("seriesChooser"));
     m_combo->setObjectName(QStringLiteral("seriesCombo"));
@@ -34,13 +35,25 @@ SeriesChooser::SeriesChooser(BusModel *model, QWidget *parent)
     m_ratio->setToolTip(tr("No model name told this drive's gearbox (CAN drives have no model "
                            "read): angles and speeds at the output shaft use this ratio. "
                            "Remembered for this drive."));
+    m_generation->setObjectName(QStringLiteral("generationCombo"));
+    m_generation->addItem(tr("unknown"));
+    m_generation->addItem(tr("old (0x140 replies)"), static_cast<int>(protocol::Generation::V2_3));
+    m_generation->addItem(tr("V2.36"), static_cast<int>(protocol::Generation::V2_35));
+    m_generation->setToolTip(tr("CAN has no model read: the reply ID and the 0x9A layout tell "
+                                "most drives' generation. Choose it where they do not (a V2.36 "
+                                "drive that answers on 0x140+ID); values and the commands "
+                                "offered follow it. Remembered for this port and ID."));
     auto *layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_label);
     layout->addWidget(m_combo);
+    layout->addWidget(m_generationLabel);
+    layout->addWidget(m_generation);
     layout->addWidget(m_ratioLabel);
     layout->addWidget(m_ratio);
     layout->addStretch(1);
+    connect(m_generation, qOverload<int>(&QComboBox::activated), this,
+            &SeriesChooser::onGenerationActivated);
     connect(m_combo, qOverload<int>(&QComboBox::activated), this, &SeriesChooser::onActivated);
     connect(m_ratio, &QDoubleSpinBox::editingFinished, this, &SeriesChooser::onRatioEdited);
     connect(m_model, &BusModel::drivesChanged, this, &SeriesChooser::refresh);
@@ -60,10 +73,18 @@ void SeriesChooser::refresh()
         m_chosen.clear(); // another bus (or a rescan): choices come back from the settings
     const int id = m_model->currentId();
     const DriveRecord *d = m_model->drive(id);
-    const bool show = d && (!d->series || m_chosen.contains(id));
+    const bool can = m_model->link() == protocol::Link::Can;
+    const bool show = d && (!d->series || m_chosen.contains(id) || (can && !d->generation()));
     setVisible(show);
     if (!show)
         return;
+    m_generationLabel->setVisible(can);
+    m_generation->setVisible(can);
+    {
+        const QSignalBlocker blockGeneration(m_generation);
+        const std::optional<protocol::Generation> g = d->generation();
+        m_generation->setCurrentIndex(g ? m_generation->findData(static_cast<int>(*g)) : 0);
+    }
     m_label->setText(tr("Series of drive %1:").arg(id));
     const QSignalBlocker block(m_combo);
     m_combo->setCurrentIndex(d->series ? m_combo->findData(static_cast<int>(*d->series)) : 0);
@@ -83,6 +104,18 @@ void SeriesChooser::onRatioEdited()
         return;
     m_chosen.insert(id);
     emit gearRatioChosen(id, m_ratio->value());
+}
+
+void SeriesChooser::onGenerationActivated(int index)
+{
+    const int id = m_model->currentId();
+    const QVariant data = m_generation->itemData(index);
+    if (id == 0 || !data.isValid()) {
+        refresh(); // "unknown" is not a choice
+        return;
+    }
+    m_chosen.insert(id);
+    emit generationChosen(id, static_cast<protocol::Generation>(data.toInt()));
 }
 
 void SeriesChooser::onActivated(int index)

@@ -247,6 +247,12 @@ void tst_AppSettings::damagedFileIsNamed_data()
     QTest::newRow("can plugin") << 1 << "connection/canPlugin"
                                 << "socket can"
                                 << "connection/canPlugin: must be a Qt CAN plugin";
+    QTest::newRow("chosen generation") << 1 << "chosenGeneration/simulator-can/4"
+                                       << "v2.4"
+                                       << "chosenGeneration/simulator-can/4: must be can or can236";
+    QTest::newRow("connection kind") << 1 << "connection/kind"
+                                     << "modem"
+                                     << "serial, can, simulator or simulator-can";
     QTest::newRow("can interface") << 1 << "connection/canInterface"
                                    << "can 0"
                                    << "connection/canInterface: must be an interface name";
@@ -268,6 +274,15 @@ void tst_AppSettings::canConnectionRoundTrip()
     AppSettings s(file());
     QVERIFY(s.damage().isEmpty());
     QCOMPARE(s.connection(), c);
+    // The built-in simulator on CAN is remembered as such, apart from the RS485 one.
+    c.kind = ConnectionChoice::Kind::Simulator;
+    c.simulatedCan = true;
+    c.listenOnly = false;
+    s.setConnection(c);
+    QCOMPARE(AppSettings(file()).connection(), c);
+    c.simulatedCan = false;
+    s.setConnection(c);
+    QCOMPARE(AppSettings(file()).connection(), c);
 }
 
 void tst_AppSettings::damagedCanValuesAreNotUsed()
@@ -322,6 +337,17 @@ void tst_AppSettings::chosenSeriesPerPortAndId()
     QCOMPARE(s.chosenSeries(QStringLiteral("simulator"), 7), std::optional(Series::MH));
     QVERIFY(!s.chosenSeries(QStringLiteral("/dev/ttyUSB0"), 6)); // never chosen: unknown
     QVERIFY(!s.chosenSeries(QStringLiteral("/dev/ttyUSB2"), 5));
+    // The CAN generation beside it, per port and ID.
+    using lk::protocol::Generation;
+    s.setChosenGeneration(QStringLiteral("can:socketcan:can0"), 5, Generation::V2_35);
+    s.setChosenGeneration(QStringLiteral("can:socketcan:can0"), 6, Generation::V2_3);
+    const AppSettings again(file());
+    QVERIFY(again.damage().isEmpty());
+    QCOMPARE(again.chosenGeneration(QStringLiteral("can:socketcan:can0"), 5),
+             std::optional(Generation::V2_35));
+    QCOMPARE(again.chosenGeneration(QStringLiteral("can:socketcan:can0"), 6),
+             std::optional(Generation::V2_3));
+    QVERIFY(!again.chosenGeneration(QStringLiteral("can:socketcan:can1"), 5));
 }
 
 void tst_AppSettings::cleanFileReportsNothing()

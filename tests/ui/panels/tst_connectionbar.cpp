@@ -290,7 +290,9 @@ void tst_ConnectionBar::canListsPluginsInterfacesAndBitRates()
     auto *plugin = combo(bar, "canPluginCombo");
     auto *iface = combo(bar, "canInterfaceCombo");
     auto *rate = combo(bar, "bitRateCombo");
-    QCOMPARE(plugin->count(), 2);
+    QCOMPARE(plugin->count(), 3); // the built-in simulated CAN bus first, then Qt's plugins
+    QCOMPARE(plugin->itemText(0), QStringLiteral("Simulator (built-in)"));
+    QCOMPARE(plugin->currentText(), QStringLiteral("socketcan"));
     QCOMPARE(iface->count(), 2);
     QCOMPARE(iface->itemText(1), QStringLiteral("vcan0"));
     QCOMPARE(rate->count(), 5);
@@ -299,8 +301,8 @@ void tst_ConnectionBar::canListsPluginsInterfacesAndBitRates()
     QCOMPARE(rate->itemText(3), QStringLiteral("125 kbit/s"));
 
     // Another plugin lists its own interfaces.
-    plugin->setCurrentIndex(1);
-    emit plugin->activated(1);
+    plugin->setCurrentIndex(2);
+    emit plugin->activated(2);
     QCOMPARE(iface->itemText(1), QStringLiteral("can1"));
 
     QSignalSpy connectSpy(&bar, &ConnectionBar::connectRequested);
@@ -337,6 +339,21 @@ void tst_ConnectionBar::canChoiceRoundTrip()
     bar.setChoice(c);
     QCOMPARE(bar.choice(), c);
     QCOMPARE(combo(bar, "linkCombo")->currentIndex(), 0);
+    // The built-in simulator on CAN: kept apart from the RS485 one, no interface to choose.
+    c.kind = ConnectionChoice::Kind::Simulator;
+    c.simulatedCan = true;
+    bar.setChoice(c);
+    QCOMPARE(bar.choice(), c);
+    QCOMPARE(bar.choice().link(), lk::protocol::Link::Can);
+    QCOMPARE(combo(bar, "linkCombo")->currentIndex(), 1);
+    QCOMPARE(combo(bar, "canPluginCombo")->currentIndex(), 0);
+    QVERIFY(!combo(bar, "canInterfaceCombo")->isEnabled());
+    c.simulatedCan = false; // the simulator on RS485: the port combo's first entry
+    c.port.clear();
+    bar.setChoice(c);
+    QCOMPARE(bar.choice(), c);
+    QCOMPARE(combo(bar, "linkCombo")->currentIndex(), 0);
+    QCOMPARE(combo(bar, "portCombo")->currentIndex(), 0);
 }
 
 void tst_ConnectionBar::canInterfacesComeAndGo()

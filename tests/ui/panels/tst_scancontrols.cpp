@@ -4,6 +4,7 @@
 
 #include <bus/BusConfig.h>
 #include <bus/BusTiming.h>
+#include <bus/LinkTiming.h>
 #include <bus/ScanTypes.h>
 #include <bus/Scanner.h>
 #include <panels/ScanControls.h>
@@ -23,6 +24,8 @@ private slots:
     void sweepCountsDrivesNotAnswers();
     void lastScanTimesTheBus();
     void canHasNoBaudSweep();
+    void canEstimateUsesCanTiming_data();
+    void canEstimateUsesCanTiming();
 };
 
 void tst_ScanControls::estimateIsTheScannersPerBaud()
@@ -126,6 +129,51 @@ void tst_ScanControls::canHasNoBaudSweep()
     controls.setLink(lk::protocol::Link::Rs485);
     QVERIFY(controls.options().sweepBauds);
     QVERIFY(controls.findChild<QCheckBox *>(QStringLiteral("scanSweepBauds"))->isVisible());
+}
+
+void tst_ScanControls::canEstimateUsesCanTiming_data()
+{
+    QTest::addColumn<int>("bitRate");
+    QTest::addColumn<int>("answering");
+    QTest::newRow("500 kbit/s, 1 drive") << 500000 << 1;
+    QTest::newRow("1 Mbit/s, 4 drives") << 1000000 << 4;
+    QTest::newRow("125 kbit/s, 2 drives") << 125000 << 2;
+}
+
+// On CAN the estimate is the scanner's for CAN frames at the bit rate (no model read, the
+// 0.25 ms reply time), not the RS485 formula at a "baud" of the same number.
+void tst_ScanControls::canEstimateUsesCanTiming()
+{
+    QFETCH(int, bitRate);
+    QFETCH(int, answering);
+    ScanControls controls;
+    controls.setLink(lk::protocol::Link::Can);
+    controls.setBaud(bitRate);
+    controls.setRange(1, 32, false);
+    const double can =
+        Scanner::estimatedSeconds(32, lk::bus::LinkTiming::can(bitRate), lk::bus::BusConfig{}, 0);
+    QCOMPARE(controls.expectedSeconds(controls.options()), can);
+    // A scan's drives are expected again where they answered, with CAN's cost per drive.
+    controls.onScanStarted();
+    lk::bus::ScanSummary done;
+    done.finalBaud = bitRate;
+    done.cancelled = true; // not a timing of the bus: the estimate stays computed
+    for (int id = 1; id <= answering; ++id) {
+        lk::bus::FoundMotor m;
+        m.id = id;
+        m.baud = bitRate;
+        done.motors << m;
+    }
+    controls.onScanFinished(done);
+    done.cancelled = false;
+    done.elapsedS = 0; // no time measured: the estimate is computed with the drives found
+    controls.onScanStarted();
+    controls.onScanFinished(done);
+    const double expected = Scanner::estimatedSeconds(32, lk::bus::LinkTiming::can(bitRate),
+                                                      lk::bus::BusConfig{}, answering);
+    QCOMPARE(controls.expectedSeconds(controls.options()), expected);
+    // Not the RS485 figure of a "baud" of the same number (bytes, a model read per drive).
+    QVERIFY(expected != Scanner::estimatedSeconds(32, bitRate, lk::bus::BusConfig{}, answering));
 }
 
 QTEST_MAIN(tst_ScanControls)

@@ -61,6 +61,7 @@ class tst_SeriesChooser : public QObject {
 private slots:
     void noModelAsksSeriesAndGearRatio();
     void modelNameGivesTheRatio();
+    void canAsksTheGenerationAndGivesTheIdentity();
 
 private:
     QTemporaryDir m_dir;
@@ -74,6 +75,8 @@ void tst_SeriesChooser::noModelAsksSeriesAndGearRatio()
     QVERIFY(!rig.chooser->isHidden());
     QVERIFY(!rig.ratio()->isHidden());
     QVERIFY(!rig.model.drive(3)->gearRatio()); // unknown, not 1
+    // On RS485 the generation is the model read's (or the reply lengths'): not asked.
+    QVERIFY(rig.chooser->findChild<QComboBox *>(QStringLiteral("generationCombo"))->isHidden());
 
     rig.ratio()->setValue(36);
     emit rig.ratio()->editingFinished();
@@ -103,6 +106,56 @@ void tst_SeriesChooser::modelNameGivesTheRatio()
     rig.model.setCurrentId(4);
     QCOMPARE(rig.model.drive(4)->gearRatio(), std::optional<double>(10)); // the name wins
     QVERIFY(rig.chooser->isHidden()); // the series came with the name
+}
+
+// On CAN, where no reply told the generation, the chooser asks it too; series, generation and
+// gear ratio reach the bus together as the drive's identity (setDriveIdentity), remembered for
+// the port and ID. Without a series nothing is made up: torque stays refused.
+void tst_SeriesChooser::canAsksTheGenerationAndGivesTheIdentity()
+{
+    using lk::protocol::Generation;
+    Rig rig(m_dir.filePath(QStringLiteral("c.ini")));
+    rig.model.setLink(lk::protocol::Link::Can);
+    lk::bus::FoundMotor m = found(5);
+    m.link = lk::protocol::Link::Can;
+    rig.model.addFound(m);
+    rig.model.setCurrentId(5);
+    QVERIFY(!rig.model.drive(5)->generation()); // no model read on CAN: not V2.3 by default
+    auto *generation = rig.chooser->findChild<QComboBox *>(QStringLiteral("generationCombo"));
+    QVERIFY(!rig.chooser->isHidden());
+    QVERIFY(!generation->isHidden());
+    QCOMPARE(generation->currentIndex(), 0); // "unknown"
+    const int v236 = generation->findData(int(Generation::V2_35));
+    generation->setCurrentIndex(v236);
+    emit generation->activated(v236);
+    lk::bus::BusSession *session = rig.controller.session();
+    QCOMPARE(rig.settings.chosenGeneration(rig.controller.portKey(), 5),
+             std::optional(Generation::V2_35));
+    QCOMPARE(rig.model.drive(5)->generation(), std::optional(Generation::V2_35));
+    QVERIFY(!session->driveIdentity(5)); // no series yet: no identity, nothing guessed
+    QVERIFY(!session->series(5));
+
+    rig.ratio()->setValue(6);
+    emit rig.ratio()->editingFinished();
+    auto *series = rig.chooser->findChild<QComboBox *>(QStringLiteral("seriesCombo"));
+    const int mf = series->findText(QStringLiteral("MF"));
+    series->setCurrentIndex(mf);
+    emit series->activated(mf);
+    auto identity = session->driveIdentity(5);
+    QVERIFY(identity);
+    QCOMPARE(identity->series, Series::MF);
+    QCOMPARE(identity->generation, Generation::V2_35);
+    QCOMPARE(identity->gearRatio, std::optional<double>(6));
+    QVERIFY(session->knownMotors().value(5).identityChosen);
+
+    // The drive comes back (a rescan): generation and series are applied again.
+    rig.model.clearDrives();
+    session->forgetMotors();
+    rig.model.addFound(m);
+    QCOMPARE(rig.model.drive(5)->generation(), std::optional(Generation::V2_35));
+    identity = session->driveIdentity(5);
+    QVERIFY(identity);
+    QCOMPARE(identity->generation, Generation::V2_35);
 }
 
 QTEST_MAIN(tst_SeriesChooser)

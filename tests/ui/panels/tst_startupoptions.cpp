@@ -8,6 +8,24 @@ using lk::ui::AppSettings;
 using lk::ui::ConnectionChoice;
 using lk::ui::StartupOptions;
 
+namespace {
+
+/// Parse `args` (without the program name) into `out`: true when it was refused exactly when
+/// `refusal` is not empty, with a message that contains it.
+bool parsedAsExpected(QStringList args, const QString &refusal, std::optional<StartupOptions> *out)
+{
+    args.prepend(QStringLiteral("lkstudio"));
+    QString error;
+    *out = StartupOptions::parse(args, &error);
+    if (out->has_value() != refusal.isEmpty() || (!*out && !error.contains(refusal))) {
+        qWarning("%s", qPrintable(error));
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
 class tst_StartupOptions : public QObject {
     Q_OBJECT
 private slots:
@@ -23,6 +41,8 @@ private slots:
     void can();
     void rememberedCan_data();
     void rememberedCan();
+    void simulatedCan_data();
+    void simulatedCan();
 
 private:
     QTemporaryDir m_dir;
@@ -251,14 +271,10 @@ void tst_StartupOptions::can()
     QFETCH(QString, plugin);
     QFETCH(QString, iface);
     QFETCH(int, bitRate);
-    args.prepend(QStringLiteral("lkstudio"));
-    QString error;
-    const auto o = StartupOptions::parse(args, &error);
-    QCOMPARE(o.has_value(), refusal.isEmpty());
-    if (!o) {
-        QVERIFY2(error.contains(refusal), qPrintable(error));
+    std::optional<StartupOptions> o;
+    QVERIFY(parsedAsExpected(args, refusal, &o));
+    if (!o)
         return;
-    }
     AppSettings settings(m_dir.filePath(QString::fromLatin1(QTest::currentDataTag()) + ".ini"));
     const auto absent = [](const QString &) { return false; };
     const ConnectionChoice c = o->initialChoice(settings, absent);
@@ -300,6 +316,54 @@ void tst_StartupOptions::rememberedCan()
     QCOMPARE(o->fellBackToSimulator(settings, exists), !present);
     if (present)
         QCOMPARE(c, remembered);
+    else // without the adapter the drives are simulated on the same link
+        QVERIFY(c.isSimulator() && c.simulatedCan && c.link() == lk::protocol::Link::Can);
+}
+
+void tst_StartupOptions::simulatedCan_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::addColumn<QString>("refusal"); ///< empty: accepted
+    QTest::addColumn<int>("simDrives");   ///< 0: the default drives
+    QTest::addColumn<int>("bitRate");
+    QTest::newRow("can sim") << QStringList{"--can", "sim"} << QString() << 0 << 1000000;
+    QTest::newRow("with drives and bit rate")
+        << QStringList{"--can", "sim", "--sim", "1:MG@can,2:MF@can236", "--bitrate", "500000"}
+        << QString() << 2 << 500000;
+    QTest::newRow("with a port") << QStringList{"--can", "sim", "--port", "/dev/ttyUSB0"}
+                                 << QStringLiteral("cannot go with --port") << 0 << 0;
+    QTest::newRow("bit rate with the RS485 simulator")
+        << QStringList{"--sim", "1:MF", "--bitrate", "500000"} << QStringLiteral("--bitrate") << 0
+        << 0;
+}
+
+void tst_StartupOptions::simulatedCan()
+{
+    // --can sim: the built-in simulated bus with its drives on CAN, whatever was remembered.
+    QFETCH(QStringList, args);
+    QFETCH(QString, refusal);
+    QFETCH(int, simDrives);
+    QFETCH(int, bitRate);
+    std::optional<StartupOptions> o;
+    QVERIFY(parsedAsExpected(args, refusal, &o));
+    if (!o)
+        return;
+    QCOMPARE(o->sim ? int(o->sim->drives.size()) : 0, simDrives);
+    AppSettings settings(m_dir.filePath(QString::fromLatin1(QTest::currentDataTag()) + ".ini"));
+    ConnectionChoice remembered;
+    remembered.kind = ConnectionChoice::Kind::Serial;
+    remembered.port = QStringLiteral("/dev/ttyUSB0");
+    settings.setConnection(remembered);
+    const auto present = [](const QString &) { return true; };
+    const ConnectionChoice c = o->initialChoice(settings, present);
+    QVERIFY(c.isSimulator() && c.simulatedCan);
+    QCOMPARE(c.link(), lk::protocol::Link::Can);
+    QCOMPARE(c.bitRate, bitRate);
+    QCOMPARE(c.rate(), bitRate);
+    QVERIFY(!o->fellBackToSimulator(settings, present));
+    // The simulator alone stays on RS485.
+    const auto rs485 = StartupOptions::parse({"lkstudio", "--sim", "1:MF"}, nullptr);
+    QVERIFY(!rs485->initialChoice(settings, present).simulatedCan);
 }
 
 QTEST_GUILESS_MAIN(tst_StartupOptions)
