@@ -7,12 +7,41 @@
 
 #include <QtCore/QTimer>
 
+#include <cmath>
+
 namespace lk::tuning {
 
+FrequencySweepSpec GainSearchSpec::bode() const
+{
+    FrequencySweepSpec s;
+    s.id = id;
+    s.operatingPoint = (from + to) / 2;
+    s.amplitude = std::abs(to - from) / 4;
+    s.fromHz = 5;
+    s.toHz = 120;
+    s.points = 8;
+    s.leadInS = 0.3;
+    s.minPointS = 0.25;
+    return s;
+}
+
+std::optional<double> GainSearchSpec::bodeSeconds(std::optional<protocol::Series> series,
+                                                  const safety::SoftLimits &limits) const
+{
+    const FrequencySweepPlan plan = FrequencySweepPlan::make(bode(), series, limits);
+    if (!plan.allowed())
+        return std::nullopt;
+    // Two sweeps, each with its reads, writes and return (about half a second at 1 Mbaud).
+    return 2 * (plan.endS() + 0.5);
+}
+
 GainSearchRunner::GainSearchRunner(bus::BusSession &session, QObject *parent)
-    : QObject(parent), m_session(session), m_keeper(session), m_step(session)
+    : QObject(parent), m_session(session), m_keeper(session), m_step(session),
+      m_bode(session, m_keeper)
 {
     connect(&m_step, &StepTestRunner::finished, this, &GainSearchRunner::onStepFinished);
+    connect(&m_bode, &GainSearchBode::ended, this, &GainSearchRunner::onBodeEnded);
+    connect(&m_bode, &GainSearchBode::sweepStarted, this, &GainSearchRunner::bodeSweepStarted);
     connect(&m_step, &StepTestRunner::failed, this, &GainSearchRunner::onStepFailed);
     // An emergency stop from anywhere (Esc, another view, another command) ends the search.
     // Between two steps no stream runs for it to stop: without this, the next candidate's
@@ -20,6 +49,8 @@ GainSearchRunner::GainSearchRunner(bus::BusSession &session, QObject *parent)
     const auto onEmergencyStop = [this] {
         if (m_phase == Phase::Searching)
             haltAndRestore(StepTestFailure::Aborted, QStringLiteral("an emergency stop"));
+        else if (m_phase == Phase::Measuring)
+            m_bode.abort(); // its sweep may be between two: nothing else would stop it
     };
     connect(&m_session, &bus::BusSession::emergencyStopProgress, this, onEmergencyStop);
     connect(&m_session, &bus::BusSession::emergencyStopFinished, this, onEmergencyStop);
@@ -27,6 +58,7 @@ GainSearchRunner::GainSearchRunner(bus::BusSession &session, QObject *parent)
 
 GainSearchRunner::~GainSearchRunner()
 {
+    // Measuring: m_bode's destructor halts its sweep and then puts the gains read back.
     if (m_phase == Phase::Searching || m_phase == Phase::Restoring || m_phase == Phase::Aborting) {
         // Nobody is left to hear the outcome: motor off, and the gains read go back (the
         // writes go out; their ends are not waited for).
@@ -46,6 +78,7 @@ bool GainSearchRunner::start(const GainSearchSpec &spec, const safety::SoftLimit
     m_result.spec = spec;
     m_strategy.reset();
     m_startSpeed.reset();
+    m_measured = false;
     ++m_run;
     m_clock.start();
     m_phase = Phase::Reading;
@@ -82,6 +115,9 @@ void GainSearchRunner::abort()
     case Phase::Searching:
     case Phase::Restoring:
         haltAndRestore(StepTestFailure::Aborted, QStringLiteral("aborted"));
+        return;
+    case Phase::Measuring:
+        m_bode.abort(); // ends with onBodeEnded(Aborted): Motor Off, the gains read back
         return;
     }
 }
@@ -182,9 +218,40 @@ void GainSearchRunner::returnToStart()
                 haltAndRestore(StepTestFailure::Silent, words);
                 return;
             }
-            end(StepTestFailure::None,
-                QStringLiteral("the gains and acceleration read are back in RAM; %1").arg(words));
+            if (m_spec.measureBode && m_strategy->best() && !m_measured)
+                measureBode(words);
+            else
+                end(StepTestFailure::None,
+                    QStringLiteral("the gains and acceleration read are back in RAM; %1")
+                        .arg(words));
         });
+}
+
+void GainSearchRunner::measureBode(const QString &returned)
+{
+    m_phase = Phase::Measuring;
+    const LoopGains &best = m_strategy->scores().at(*m_strategy->best()).gains;
+    if (!m_bode.start(m_spec.bode(), best, m_limits))
+        end(StepTestFailure::None, QStringLiteral("the gains and acceleration read are back in "
+                                                  "RAM; %1; the Bode step could not start")
+                                       .arg(returned));
+}
+
+void GainSearchRunner::onBodeEnded(const GainSearchBodeResult &bode)
+{
+    if (m_phase != Phase::Measuring)
+        return;
+    m_result.bodeRead = bode.read;
+    m_result.bodeBest = bode.best;
+    if (bode.ok()) {
+        // Each sweep went back to the speed it read, which a rotor still settling from the
+        // search may have left a few dps off: back to the search's own start speed.
+        m_measured = true;
+        m_phase = Phase::Restoring;
+        returnToStart();
+    } else {
+        end(bode.failure, QStringLiteral("the Bode step: %1").arg(bode.message));
+    }
 }
 
 void GainSearchRunner::haltAndRestore(StepTestFailure failure, const QString &message)

@@ -18,6 +18,16 @@ namespace lk::tuning {
 
 class GainKeeper;
 
+/// What TuningEnd::halt() did: the facts a user needs after a stop.
+struct HaltOutcome {
+    int id = 0;
+    bool offAcknowledged = false; ///< false: the drive may still be moving
+    bool gainsRestored = false;   ///< false: RAM holds what the run last wrote, or nothing known
+    QString restoreError;         ///< why they were not written back (English)
+    /// English: "drive 3 is off; the gains and acceleration read before are back in RAM".
+    QString words() const;
+};
+
 /// How a frequency sweep or a gain search begins and the two ways it ends on the drive,
 /// shared so that both run alike: the gains read first, the safe stop (abort, failure) and the
 /// return to the speed read at the start.
@@ -34,6 +44,9 @@ public:
     /// words ("drive 3 is off; the gains and acceleration read before are back in RAM").
     static void haltAndRestore(bus::BusSession &session, GainKeeper &keeper, int id,
                                QObject *context, std::function<void(const QString &)> done);
+    /// haltAndRestore() with the outcome as facts.
+    static void halt(bus::BusSession &session, GainKeeper &keeper, int id, QObject *context,
+                     std::function<void(const HaltOutcome &)> done);
     /// Speed `dps` to drive `id` through the motion gate; `done(ok, words)`: what the drive
     /// does now, or why it was not sent or not answered.
     static void returnToSpeed(bus::BusSession &session, int id, double dps,
