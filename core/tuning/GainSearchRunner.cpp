@@ -18,8 +18,9 @@ FrequencySweepSpec GainSearchSpec::bode() const
     s.operatingPoint = (from + to) / 2;
     s.amplitude = std::abs(to - from) / 4;
     s.fromHz = 5;
-    s.toHz = 120;
-    s.points = 8;
+    // Up to 100 Hz: a quarter of the sample rate a loaded host still reaches at 1 Mbaud.
+    s.toHz = 100;
+    s.points = 9;
     s.leadInS = 0.3;
     s.minPointS = 0.25;
     return s;

@@ -35,7 +35,7 @@ struct GainSearchSpec {
         return StepTestSpec{id, StepLoop::Speed, from, to, stepS, periods, preRollS, {}};
     }
     /// The short sweep the Bode step measures each set with: a sine between FROM and TO's
-    /// middle and half-way to each (where the steps already went), 5 to 120 Hz.
+    /// middle and half-way to each (where the steps already went), 9 frequencies from 5 to 100 Hz.
     FrequencySweepSpec bode() const;
     /// About how long the Bode step takes on `series` within `limits`, seconds (both sweeps,
     /// their reads and writes); nullopt when its sweep is refused there.

@@ -134,6 +134,7 @@ private slots:
     void judge_data();
     void judge();
     void errorAreaOfAFirstOrderStep();
+    void scoreKeepsItsTrace();
     void candidateOrder();
     void climbsUntilSomethingIsAccepted();
     void climbEndsWhenNoFaster();
@@ -180,6 +181,16 @@ void tst_GainSearch::judge()
     options.effortLimit = saturated ? 0.5 : 10.0;
     const EdgeMetrics m = StepMetrics::forEdge(trace, 0, options);
     QCOMPARE(GainSearchStrategy::judge(m, trace, 5), verdict);
+}
+
+void tst_GainSearch::scoreKeepsItsTrace()
+{
+    // The views overlay a candidate's step from its score: the trace it was judged on.
+    const StepTrace trace = syntheticStep(0.01, 0.1, -8);
+    const CandidateScore s = GainSearchStrategy::score(readGains(), trace, 10.0, 5);
+    QCOMPARE(s.trace.time, trace.time);
+    QCOMPARE(s.trace.value, trace.value);
+    QCOMPARE(s.trace.edges.size(), 1);
 }
 
 void tst_GainSearch::candidateOrder()
@@ -270,6 +281,8 @@ void tst_GainSearch::searchBeatsTheGainsRead()
     const GainSearchResult r = rig.waitForEnd();
     QVERIFY2(r.ok(), qPrintable(r.message));
     QCOMPARE(rig.scored.size(), r.candidates.size());
+    for (const CandidateScore &c : r.candidates)
+        QVERIFY(c.trace.size() > 50 && c.trace.edges.size() >= 2); // each its own step's
     for (const CandidateScore &c : r.candidates)
         qInfo("Kp %3d Ki %3d (%.0f Hz): area %.2f ms, rise %s ms, overshoot %s %%, verdict %d",
               c.gains.speed.kp, c.gains.speed.ki, c.metrics.sampleRateHz, c.errorAreaS * 1e3,
