@@ -124,8 +124,7 @@ void tst_GainSearchBodeView::bodeOfBothBesideTheGainsRead()
     auto *table = o.search->findChild<QTableWidget *>(QStringLiteral("bestVsRead"));
     const QString readBw = rowText(table, QStringLiteral("Bandwidth (-3 dB)"), 0);
     const QString bestBw = rowText(table, QStringLiteral("Bandwidth (-3 dB)"), 1);
-    qInfo("bandwidth: gains read %s, suggested %s (%s); %s", qPrintable(readBw),
-          qPrintable(bestBw), qPrintable(QString::number(int(rig.motor(1).series.value_or(lk::protocol::Series::MF)))),
+    qInfo("bandwidth: gains read %s, suggested %s; %s", qPrintable(readBw), qPrintable(bestBw),
           qPrintable(o.search->bode()->figuresText()));
     // The best's may lie above what the host's sample rate resolves ("not reached"); the gains
     // read's is well below it.
