@@ -147,7 +147,7 @@ QString TuneCommand::usage() const
                "                         where friction would bend them)\n"
                "  --bode                 then measure the speed loop's frequency response with\n"
                "                         the gains read and with the best's (two short sweeps,\n"
-               "                         5-120 Hz around the steps' middle, about 10 s more;\n"
+               "                         5-100 Hz around the steps' middle, about 10 s more;\n"
                "                         the best's gains are in RAM only for their sweep)\n"
                "  --write ram            write the best candidate's gains to RAM at the end\n"
                "                         (never ROM: that is lkctl write pid, after checking)\n"

@@ -48,10 +48,13 @@ GainSearchRunner::GainSearchRunner(bus::BusSession &session, QObject *parent)
     // Between two steps no stream runs for it to stop: without this, the next candidate's
     // step would start after the Motor Off. (The runner's own halt comes while Aborting.)
     const auto onEmergencyStop = [this] {
-        if (m_phase == Phase::Searching)
-            haltAndRestore(StepTestFailure::Aborted, QStringLiteral("an emergency stop"));
-        else if (m_phase == Phase::Measuring)
+        if (m_phase == Phase::Searching) {
+            haltAndRestore(StepTestFailure::Aborted, SearchEnd::EmergencyStop,
+                           QStringLiteral("an emergency stop"));
+        } else if (m_phase == Phase::Measuring) {
+            m_emergencyStop = true;
             m_bode.abort(); // its sweep may be between two: nothing else would stop it
+        }
     };
     connect(&m_session, &bus::BusSession::emergencyStopProgress, this, onEmergencyStop);
     connect(&m_session, &bus::BusSession::emergencyStopFinished, this, onEmergencyStop);
@@ -80,6 +83,9 @@ bool GainSearchRunner::start(const GainSearchSpec &spec, const safety::SoftLimit
     m_strategy.reset();
     m_startSpeed.reset();
     m_measured = false;
+    m_emergencyStop = false;
+    m_userAbort = false;
+    m_returned = DriveLeft::Untouched;
     ++m_run;
     m_clock.start();
     m_phase = Phase::Reading;
@@ -98,7 +104,10 @@ bool GainSearchRunner::start(const GainSearchSpec &spec, const safety::SoftLimit
                              if (failure == StepTestFailure::None)
                                  onRead();
                              else
-                                 end(failure, why);
+                                 end(failure,
+                                     failure == StepTestFailure::BadSpec ? SearchEnd::BadSpec
+                                                                         : SearchEnd::FailedToRead,
+                                     DriveLeft::Untouched, true, why);
                          });
     return true;
 }
@@ -110,14 +119,17 @@ void GainSearchRunner::abort()
     case Phase::Aborting:
         return;
     case Phase::Reading:
-        end(StepTestFailure::Aborted,
+        end(StepTestFailure::Aborted, SearchEnd::AbortedByUser, DriveLeft::Untouched, true,
             QStringLiteral("aborted before anything moved; nothing was sent"));
         return;
     case Phase::Searching:
     case Phase::Restoring:
-        haltAndRestore(StepTestFailure::Aborted, QStringLiteral("aborted"));
+        haltAndRestore(StepTestFailure::Aborted, SearchEnd::AbortedByUser,
+                       QStringLiteral("aborted"));
         return;
     case Phase::Measuring:
+        // Its sweep's own Motor Off is an emergency stop too: this one was the user's.
+        m_userAbort = true;
         m_bode.abort(); // ends with onBodeEnded(Aborted): Motor Off, the gains read back
         return;
     }
@@ -147,7 +159,7 @@ void GainSearchRunner::tryNext()
             return;
         if (!ok) {
             haltAndRestore(
-                StepTestFailure::Silent,
+                StepTestFailure::Silent, SearchEnd::DriveSilent,
                 QStringLiteral("a candidate's gains could not be written (%1)").arg(why));
             return;
         }
@@ -179,7 +191,7 @@ void GainSearchRunner::onStepFailed(const StepTestResult &result)
         m_phase = Phase::Restoring;
         m_keeper.restore([this, run = m_run](bool ok, const QString &) {
             if (run == m_run)
-                end(StepTestFailure::Refused,
+                end(StepTestFailure::Refused, SearchEnd::Refused, DriveLeft::NoStepSent, ok,
                     ok ? QStringLiteral("refused for safety, no step was sent; the gains read "
                                         "are back in RAM")
                        : QStringLiteral("refused for safety, no step was sent; the gains read "
@@ -187,8 +199,9 @@ void GainSearchRunner::onStepFailed(const StepTestResult &result)
         });
         return;
     }
-    haltAndRestore(result.failure == StepTestFailure::Disconnected ? StepTestFailure::Disconnected
-                                                                   : StepTestFailure::Silent,
+    const bool lost = result.failure == StepTestFailure::Disconnected;
+    haltAndRestore(lost ? StepTestFailure::Disconnected : StepTestFailure::Silent,
+                   lost ? SearchEnd::LinkLost : SearchEnd::DriveSilent,
                    QStringLiteral("a step failed: %1").arg(result.message));
 }
 
@@ -200,7 +213,7 @@ void GainSearchRunner::finishSearch()
             return;
         if (!ok) {
             haltAndRestore(
-                StepTestFailure::Silent,
+                StepTestFailure::Silent, SearchEnd::FailedToRestore,
                 QStringLiteral("the gains read could not be written back (%1)").arg(why));
             return;
         }
@@ -216,13 +229,16 @@ void GainSearchRunner::returnToStart()
             if (run != m_run || m_phase != Phase::Restoring)
                 return;
             if (!ok) {
-                haltAndRestore(StepTestFailure::Silent, words);
+                haltAndRestore(StepTestFailure::Silent, SearchEnd::DriveSilent, words);
                 return;
             }
+            const double speed = m_startSpeed.value_or(0);
+            m_returned = speed == 0 ? DriveLeft::HoldsZero : DriveLeft::BackAtSpeed;
+            m_result.outcome.speedDps = speed;
             if (m_spec.measureBode && m_strategy->best() && !m_measured)
                 measureBode(words);
             else
-                end(StepTestFailure::None,
+                end(StepTestFailure::None, finishedEnd(), m_returned, true,
                     QStringLiteral("the gains and acceleration read are back in RAM; %1")
                         .arg(words));
         });
@@ -233,9 +249,10 @@ void GainSearchRunner::measureBode(const QString &returned)
     m_phase = Phase::Measuring;
     const LoopGains &best = m_strategy->scores().at(*m_strategy->best()).gains;
     if (!m_bode.start(m_spec.bode(), best, m_limits))
-        end(StepTestFailure::None, QStringLiteral("the gains and acceleration read are back in "
-                                                  "RAM; %1; the Bode step could not start")
-                                       .arg(returned));
+        end(StepTestFailure::None, finishedEnd(), m_returned, true,
+            QStringLiteral("the gains and acceleration read are back in "
+                           "RAM; %1; the Bode step could not start")
+                .arg(returned));
 }
 
 void GainSearchRunner::onBodeEnded(const GainSearchBodeResult &bode)
@@ -251,19 +268,55 @@ void GainSearchRunner::onBodeEnded(const GainSearchBodeResult &bode)
         m_phase = Phase::Restoring;
         returnToStart();
     } else {
-        end(bode.failure, QStringLiteral("the Bode step: %1").arg(bode.message));
+        bodeFailed(bode);
     }
 }
 
-void GainSearchRunner::haltAndRestore(StepTestFailure failure, const QString &message)
+void GainSearchRunner::bodeFailed(const GainSearchBodeResult &bode)
+{
+    using F = StepTestFailure;
+    const SearchEnd why = bode.failure == F::Aborted
+                              ? (m_emergencyStop && !m_userAbort ? SearchEnd::EmergencyStop
+                                                                 : SearchEnd::AbortedByUser)
+                          : bode.failure == F::Refused      ? SearchEnd::Refused
+                          : bode.failure == F::BadSpec      ? SearchEnd::BadSpec
+                          : bode.failure == F::Disconnected ? SearchEnd::LinkLost
+                                                            : SearchEnd::DriveSilent;
+    // Halted: Motor Off as acknowledged; refused before it moved: where the search left it.
+    const DriveLeft drive = !bode.halt                   ? m_returned
+                            : bode.halt->offAcknowledged ? DriveLeft::Off
+                                                         : DriveLeft::MayBeMoving;
+    end(bode.failure, why, drive, bode.restored,
+        QStringLiteral("the Bode step: %1").arg(bode.message));
+}
+
+void GainSearchRunner::haltAndRestore(StepTestFailure failure, SearchEnd why,
+                                      const QString &message)
 {
     m_phase = Phase::Aborting;
     m_step.abort();
-    TuningEnd::haltAndRestore(m_session, m_keeper, m_spec.id, this,
-                              [this, failure, message, run = m_run](const QString &outcome) {
-                                  if (run == m_run)
-                                      end(failure, QStringLiteral("%1: %2").arg(message, outcome));
-                              });
+    TuningEnd::halt(m_session, m_keeper, m_spec.id, this,
+                    [this, failure, why, message, run = m_run](const HaltOutcome &h) {
+                        if (run == m_run)
+                            end(failure, why,
+                                h.offAcknowledged ? DriveLeft::Off : DriveLeft::MayBeMoving,
+                                h.gainsRestored, QStringLiteral("%1: %2").arg(message, h.words()));
+                    });
+}
+
+SearchEnd GainSearchRunner::finishedEnd() const
+{
+    return m_strategy && m_strategy->stoppedByInstability() ? SearchEnd::Unstable
+                                                            : SearchEnd::Finished;
+}
+
+void GainSearchRunner::end(StepTestFailure failure, SearchEnd why, DriveLeft drive, bool restored,
+                           const QString &message)
+{
+    m_result.outcome.end = why;
+    m_result.outcome.drive = drive;
+    m_result.outcome.gainsRestored = restored;
+    end(failure, message);
 }
 
 void GainSearchRunner::end(StepTestFailure failure, const QString &message)

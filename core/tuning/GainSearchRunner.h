@@ -57,8 +57,9 @@ struct GainSearchResult {
     bool stoppedByInstability = false;
     double seconds = 0; ///< the search's wall time
     StepTestFailure failure = StepTestFailure::None;
-    StepRefusal refusal; ///< a Refused step: which setpoint and limit
-    QString message;     ///< English: how it ended and what the drive was left doing
+    StepRefusal refusal;   ///< a Refused step: which setpoint and limit
+    QString message;       ///< English: how it ended and what the drive was left doing
+    TuningOutcome outcome; ///< the same as facts
     bool ok() const { return failure == StepTestFailure::None; }
 };
 
@@ -100,8 +101,14 @@ private:
     void returnToStart();
     void measureBode(const QString &returned);
     void onBodeEnded(const GainSearchBodeResult &bode);
-    void haltAndRestore(StepTestFailure failure, const QString &message);
+    void bodeFailed(const GainSearchBodeResult &bode);
+    /// Finished, or Unstable when the search stopped at an unstable candidate.
+    SearchEnd finishedEnd() const;
+    void haltAndRestore(StepTestFailure failure, SearchEnd why, const QString &message);
+    /// Ends with `failure`; m_result.outcome has been filled in.
     void end(StepTestFailure failure, const QString &message);
+    void end(StepTestFailure failure, SearchEnd why, DriveLeft drive, bool restored,
+             const QString &message);
 
     bus::BusSession &m_session;
     GainKeeper m_keeper;
@@ -113,7 +120,10 @@ private:
     std::optional<GainSearchStrategy> m_strategy;
     GainSearchResult m_result;
     std::optional<double> m_startSpeed;
-    bool m_measured = false; ///< the Bode step is done: the return to the start speed ends it
+    bool m_measured = false;      ///< the Bode step is done: the return to the start speed ends it
+    bool m_emergencyStop = false; ///< one came in the Bode step: its abort is worded as one
+    bool m_userAbort = false;     ///< abort() came first in the Bode step
+    DriveLeft m_returned = DriveLeft::Untouched; ///< what the last return to the start left
     quint64 m_run = 0;
     QElapsedTimer m_clock;
 };

@@ -49,18 +49,19 @@ void tst_LkctlTune::bodeGivesBeforeAndAfterBandwidth()
     const QJsonObject o = QJsonDocument::fromJson(r.out).object();
     QVERIFY2(o.value(QStringLiteral("bode")).isObject(), r.out.constData());
     const QJsonObject bode = o.value(QStringLiteral("bode")).toObject();
-    const double before = bode.value(QStringLiteral("before"))
-                              .toObject()
-                              .value(QStringLiteral("bandwidth_hz"))
-                              .toDouble();
-    const double after = bode.value(QStringLiteral("after"))
-                             .toObject()
-                             .value(QStringLiteral("bandwidth_hz"))
-                             .toDouble();
-    qInfo("bandwidth %.1f Hz -> %.1f Hz; %s", before, after,
+    const QJsonValue before =
+        bode.value(QStringLiteral("before")).toObject().value(QStringLiteral("bandwidth_hz"));
+    const QJsonValue after =
+        bode.value(QStringLiteral("after")).toObject().value(QStringLiteral("bandwidth_hz"));
+    qInfo("bandwidth %s -> %s; %s", qPrintable(before.toVariant().toString()),
+          qPrintable(after.toVariant().toString()),
           qPrintable(o.value(QStringLiteral("after_text")).toString()));
-    QVERIFY(before > 0);
-    QVERIFY2(after > 1.1 * before, r.out.constData());
+    // The best's may lie beyond what the sample rate resolves (null); the gains read's not.
+    QVERIFY(before.toDouble() > 0);
+    QVERIFY2(after.isNull() || after.toDouble() > 1.1 * before.toDouble(), r.out.constData());
+    QCOMPARE(
+        bode.value(QStringLiteral("after")).toObject().value(QStringLiteral("points")).isDouble(),
+        true);
     QVERIFY(o.value(QStringLiteral("written")).isNull());
 }
 

@@ -299,6 +299,9 @@ void tst_GainSearch::searchBeatsTheGainsRead()
     QVERIFY(best.accepted());
     QVERIFY2(best.riseS() < base.riseS(), qPrintable(r.message));
     QVERIFY(*best.metrics.overshootPct.value <= 5);
+    QCOMPARE(r.outcome.end, SearchEnd::Finished);
+    QCOMPARE(r.outcome.drive, DriveLeft::HoldsZero);
+    QVERIFY(r.outcome.gainsRestored);
     // Nothing written until asked: the drive holds the gains it had.
     QCOMPARE(rig.gains(id), before);
 }
@@ -315,6 +318,9 @@ void tst_GainSearch::abortRestoresAndTurnsOff()
     const GainSearchResult r = rig.waitForEnd();
     QCOMPARE(r.failure, StepTestFailure::Aborted);
     QVERIFY2(r.message.contains(QLatin1String("drive 3 is off")), qPrintable(r.message));
+    QCOMPARE(r.outcome.end, SearchEnd::AbortedByUser);
+    QCOMPARE(r.outcome.drive, DriveLeft::Off);
+    QVERIFY(r.outcome.gainsRestored);
     QCOMPARE(rig.gains(3), before);
     const RequestResult state =
         rig.request(*protocol::build::plain(Command::ReadState2, 3).request);
@@ -337,6 +343,8 @@ void tst_GainSearch::emergencyStopBetweenStepsEndsTheSearch()
     const GainSearchResult r = rig.waitForEnd();
     QCOMPARE(r.failure, StepTestFailure::Aborted);
     QVERIFY2(r.message.startsWith(QLatin1String("an emergency stop")), qPrintable(r.message));
+    QCOMPARE(r.outcome.end, SearchEnd::EmergencyStop);
+    QCOMPARE(r.outcome.drive, DriveLeft::Off);
     QCOMPARE(r.candidates.size(), 1);
     QCOMPARE(rig.gains(3), before);
     const RequestResult state =
@@ -360,6 +368,8 @@ void tst_GainSearch::saturationStopsAndRestores()
     QCOMPARE(r.candidates.first().verdict, CandidateVerdict::Saturated);
     QVERIFY(r.stoppedByInstability);
     QVERIFY(!r.best);
+    QCOMPARE(r.outcome.end, SearchEnd::Unstable);
+    QVERIFY(r.outcome.drive == DriveLeft::HoldsZero || r.outcome.drive == DriveLeft::BackAtSpeed);
     QCOMPARE(rig.gains(7), before);
     const RequestResult state =
         rig.request(*protocol::build::plain(Command::ReadState2, 7).request);

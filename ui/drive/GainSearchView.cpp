@@ -1,6 +1,7 @@
 #include "GainSearchView.h"
 
 #include "GainSearchViewComparison.h"
+#include "GainSearchViewOutcome.h"
 #include "ParameterTable.h"
 #include "TuningRunGate.h"
 #include "TuningView.h"
@@ -8,7 +9,6 @@
 #include <bus/BusSession.h>
 #include <panels/Format.h>
 #include <panels/StatusColors.h>
-#include <text/VerdictText.h>
 #include <tuning/MetricText.h>
 
 #include <QtWidgets/QCheckBox>
@@ -358,24 +358,8 @@ void GainSearchView::onEnded(const GainSearchResult &result)
         }
     }
     m_compare->show(m_result);
-    QString text;
-    if (!result.ok()) {
-        text = TuningRunGate::failureText(result.failure, result.spec.id, result.message);
-        if (result.failure == tuning::StepTestFailure::Refused)
-            text = tr("Refused: %1.").arg(text::VerdictText::stepRefusal(result.refusal)) +
-                   QLatin1Char(' ') + text;
-    } else {
-        text = (result.best ? tr("%n candidate(s) tried in %1 s; the best is in bold, Write to "
-                                 "RAM tries it. Nothing else was kept.",
-                                 nullptr, int(result.candidates.size()))
-                                  .arg(Format::number(result.seconds, 0))
-                            : tr("%n candidate(s) tried in %1 s; none stayed within the bounds.",
-                                 nullptr, int(result.candidates.size()))
-                                  .arg(Format::number(result.seconds, 0))) +
-               QLatin1Char(' ') + TuningRunGate::endedText(result.spec.id, result.message);
-        if (result.stoppedByInstability)
-            text += QLatin1Char(' ') + tr("The search stopped at the first unstable candidate.");
-    }
+    // The runner's typed outcome, worded here (its English message is for logs and lkctl).
+    const QString text = GainSearchViewOutcome::text(result);
     setStatus(text, !result.ok());
     refresh();
     emit runningChanged(false);

@@ -8,6 +8,7 @@
 #include <drive/ConfirmDialog.h>
 #include <drive/FrequencyTuningView.h>
 #include <drive/GainSearchView.h>
+#include <drive/GainSearchViewOutcome.h>
 #include <drive/TuningView.h>
 #include <safety/SoftLimits.h>
 #include <tuning/BodeChart.h>
@@ -27,6 +28,9 @@ using lk::ui::ConfirmDialog;
 using lk::ui::ConfirmRequest;
 using lk::ui::GainSearchView;
 using lk::ui::TuningView;
+
+Q_DECLARE_METATYPE(lk::tuning::SearchEnd)
+Q_DECLARE_METATYPE(lk::tuning::DriveLeft)
 
 namespace {
 
@@ -79,10 +83,61 @@ struct Yes {
 class tst_GainSearchBodeView : public QObject {
     Q_OBJECT
 private slots:
+    void outcomeWords_data();
+    void outcomeWords();
     void boxSaysHowLong();
     void bodeOfBothBesideTheGainsRead();
     void escInTheBestsSweepRestores();
 };
+
+void tst_GainSearchBodeView::outcomeWords_data()
+{
+    using lk::tuning::DriveLeft;
+    using lk::tuning::SearchEnd;
+    QTest::addColumn<SearchEnd>("end");
+    QTest::addColumn<DriveLeft>("drive");
+    QTest::addColumn<bool>("restored");
+    QTest::addColumn<QString>("message"); // the runner's English, never read for the words
+    QTest::addColumn<QString>("text");
+    QTest::newRow("Esc: off, gains back")
+        << SearchEnd::AbortedByUser << DriveLeft::Off << true << QString()
+        << "Stopped. Motor Off went to drive 4 and it acknowledged. The gains read are back in "
+           "RAM.";
+    QTest::newRow("an emergency stop, Motor Off unanswered")
+        << SearchEnd::EmergencyStop << DriveLeft::MayBeMoving << true
+        << "the Bode step: a sweep ended: aborted: drive 4 is off; back in RAM"
+        << "Stopped by an emergency stop. Drive 4 did not acknowledge Motor Off: it may still be "
+           "moving. The gains read are back in RAM.";
+    QTest::newRow("gains not written back")
+        << SearchEnd::FailedToRestore << DriveLeft::Off << false << "are back in RAM"
+        << "The gains read could not be written back at the end: it stopped. Motor Off went to "
+           "drive 4 and it acknowledged. The gains read before could NOT be written back: read "
+           "the drive and check them.";
+    QTest::newRow("not read") << SearchEnd::FailedToRead << DriveLeft::Untouched << true
+                              << "drive 4 is off"
+                              << "The gains of drive 4 could not be read. Nothing was sent.";
+    QTest::newRow("unstable, back at speed")
+        << SearchEnd::Unstable << DriveLeft::BackAtSpeed << true << "holds 0 dps"
+        << "1 candidate(s) tried in 3 s; none stayed within the bounds. The search stopped at the "
+           "first unstable candidate. Drive 4 is back at 150 dps, the speed it had, and keeps "
+           "turning until stopped. The gains read are back in RAM.";
+}
+
+void tst_GainSearchBodeView::outcomeWords()
+{
+    QFETCH(lk::tuning::SearchEnd, end);
+    QFETCH(lk::tuning::DriveLeft, drive);
+    QFETCH(bool, restored);
+    QFETCH(QString, message);
+    QFETCH(QString, text);
+    lk::tuning::GainSearchResult r;
+    r.spec.id = 4;
+    r.seconds = 3;
+    r.candidates.resize(1);
+    r.outcome = {end, drive, 150, restored};
+    r.message = message;
+    QCOMPARE(lk::ui::GainSearchViewOutcome::text(r), text);
+}
 
 void tst_GainSearchBodeView::boxSaysHowLong()
 {
