@@ -60,6 +60,37 @@ QByteArray candidateJson(const CandidateScore &c)
     return o.toJson();
 }
 
+/// The Bode figures of one response: {"bandwidth_hz":..,"phase_at_bandwidth_deg":..,
+/// "peak_db":..,"peak_hz":..,"points":N} (null figures: not measured or never 3 dB down).
+QByteArray bodeJson(const tuning::FrequencyResponse &r)
+{
+    const tuning::BodeFigures f = r.figures();
+    OrderedJson o;
+    const std::pair<const char *, std::optional<double>> figures[] = {
+        {"bandwidth_hz", f.bandwidthHz},
+        {"phase_at_bandwidth_deg", f.phaseAtBandwidth},
+        {"peak_db", f.peakDb},
+        {"peak_hz", f.peakHz}};
+    for (const auto &[key, value] : figures) {
+        if (value)
+            o.real(QLatin1String(key), std::round(*value * 100) / 100);
+        else
+            o.null(QLatin1String(key));
+    }
+    o.integer(QStringLiteral("points"), r.points.size());
+    return o.toJson();
+}
+
+QString bodeText(const tuning::FrequencyResponse &r)
+{
+    const tuning::BodeFigures f = r.figures();
+    const auto v = [](std::optional<double> x, int decimals) {
+        return x ? QString::number(*x, 'f', decimals) : QStringLiteral("?");
+    };
+    return QStringLiteral("bandwidth %1 Hz (phase %2 deg), peak %3 dB at %4 Hz")
+        .arg(v(f.bandwidthHz, 1), v(f.phaseAtBandwidth, 0), v(f.peakDb, 2), v(f.peakHz, 1));
+}
+
 QString candidateText(const CandidateScore &c)
 {
     const auto v = [](const tuning::Metric &m, double scale, int decimals) {
@@ -90,7 +121,8 @@ QString TuneCommand::usage() const
 {
     return QStringLiteral(
                "Usage: lkctl tune ID speed [--max-overshoot PCT] [--from DPS] [--to DPS]\n"
-               "                  [--write ram] [LIMITS] (--port DEV [--baud N] | --sim SPEC)\n"
+               "                  [--bode] [--write ram] [LIMITS]\n"
+               "                  (--port DEV [--baud N] | --sim SPEC)\n"
                "                  [--json]\n"
                "\n"
                "Suggested speed-loop gains for drive ID. THE AXIS MUST BE FREE TO TURN: it\n"
@@ -113,6 +145,10 @@ QString TuneCommand::usage() const
                "  --max-overshoot PCT    the overshoot bound, 0..100 %, default 5\n"
                "  --from DPS, --to DPS   the steps' speeds, default 100 and 300 (away from 0,\n"
                "                         where friction would bend them)\n"
+               "  --bode                 then measure the speed loop's frequency response with\n"
+               "                         the gains read and with the best's (two short sweeps,\n"
+               "                         5-100 Hz around the steps' middle, about 10 s more;\n"
+               "                         the best's gains are in RAM only for their sweep)\n"
                "  --write ram            write the best candidate's gains to RAM at the end\n"
                "                         (never ROM: that is lkctl write pid, after checking)\n"
                "%1"
@@ -123,13 +159,17 @@ QString TuneCommand::usage() const
                "                         saturated_s, error_area_s, verdict), best (index or\n"
                "                         null), before, after (the read gains' and the best's\n"
                "                         candidate), suggested (gains or null), written (\"ram\"\n"
-               "                         or null), stopped_by_instability, seconds, after_text\n"
+               "                         or null), stopped_by_instability, seconds, after_text;\n"
+               "                         with --bode also bode: before and after (each\n"
+               "                         bandwidth_hz, phase_at_bandwidth_deg, peak_db,\n"
+               "                         peak_hz, points), or null without a best\n"
                "\n"
                "%2"
                "\n"
                "Examples:\n"
                "  lkctl tune 3 speed --port /dev/ttyUSB0 --baud 1000000\n"
                "  lkctl tune 3 speed --max-overshoot 2 --write ram --sim 3:MF --json\n"
+               "  lkctl tune 3 speed --bode --sim 3:MF --json\n"
                "\n"
                "%3")
         .arg(MotionLimitOptions::helpText(), BusOptions::helpText(),
@@ -183,6 +223,7 @@ std::optional<TuneCommand::Plan> TuneCommand::parse(const ArgParser &parser, Con
         return fail(error);
     plan.limits = *limits;
     plan.json = parser.isSet(QStringLiteral("json"));
+    plan.spec.measureBode = parser.isSet(QStringLiteral("bode"));
     return plan;
 }
 
@@ -217,6 +258,7 @@ int TuneCommand::run(const QStringList &args, Console &console)
     ArgParser parser = makeParser();
     for (const char *o : {"max-overshoot", "from", "to", "write"})
         parser.addOption(QLatin1String(o), true);
+    parser.addOption(QStringLiteral("bode"), false);
     MotionLimitOptions::declare(parser);
     int status = kExitOk;
     const std::optional<BusOptions> busOptions = parseBus(parser, args, console, &status);
@@ -282,6 +324,15 @@ void TuneCommand::printJson(Console &console, const GainSearchResult &r, bool wr
     o.boolean(QStringLiteral("stopped_by_instability"), r.stoppedByInstability)
         .real(QStringLiteral("seconds"), std::round(r.seconds * 10) / 10)
         .text(QStringLiteral("after_text"), r.message);
+    if (r.spec.measureBode) {
+        if (r.bodeRead && r.bodeBest)
+            o.raw(QStringLiteral("bode"), OrderedJson()
+                                              .raw(QStringLiteral("before"), bodeJson(*r.bodeRead))
+                                              .raw(QStringLiteral("after"), bodeJson(*r.bodeBest))
+                                              .toJson());
+        else
+            o.null(QStringLiteral("bode"));
+    }
     console.out(o.toJson() + '\n');
 }
 
@@ -311,6 +362,10 @@ void TuneCommand::printText(Console &console, const GainSearchResult &r, bool wr
                                  written
                                      ? QStringLiteral(", written to RAM")
                                      : QStringLiteral("; not written (--write ram writes it)")));
+    }
+    if (r.bodeRead && r.bodeBest) {
+        console.outLine(QStringLiteral("Bode before: %1.").arg(bodeText(*r.bodeRead)));
+        console.outLine(QStringLiteral("Bode best:   %1.").arg(bodeText(*r.bodeBest)));
     }
     console.outLine(QStringLiteral("After the search: %1.").arg(r.message));
 }

@@ -7,19 +7,54 @@
 
 #include <QtCore/QTimer>
 
+#include <cmath>
+
 namespace lk::tuning {
 
+FrequencySweepSpec GainSearchSpec::bode() const
+{
+    FrequencySweepSpec s;
+    s.id = id;
+    s.operatingPoint = (from + to) / 2;
+    s.amplitude = std::abs(to - from) / 4;
+    s.fromHz = 5;
+    // Up to 100 Hz: a quarter of the sample rate a loaded host still reaches at 1 Mbaud.
+    s.toHz = 100;
+    s.points = 9;
+    s.leadInS = 0.3;
+    s.minPointS = 0.25;
+    return s;
+}
+
+std::optional<double> GainSearchSpec::bodeSeconds(std::optional<protocol::Series> series,
+                                                  const safety::SoftLimits &limits) const
+{
+    const FrequencySweepPlan plan = FrequencySweepPlan::make(bode(), series, limits);
+    if (!plan.allowed())
+        return std::nullopt;
+    // Two sweeps, each with its reads, writes and return (about half a second at 1 Mbaud).
+    return 2 * (plan.endS() + 0.5);
+}
+
 GainSearchRunner::GainSearchRunner(bus::BusSession &session, QObject *parent)
-    : QObject(parent), m_session(session), m_keeper(session), m_step(session)
+    : QObject(parent), m_session(session), m_keeper(session), m_step(session),
+      m_bode(session, m_keeper)
 {
     connect(&m_step, &StepTestRunner::finished, this, &GainSearchRunner::onStepFinished);
+    connect(&m_bode, &GainSearchBode::ended, this, &GainSearchRunner::onBodeEnded);
+    connect(&m_bode, &GainSearchBode::sweepStarted, this, &GainSearchRunner::bodeSweepStarted);
     connect(&m_step, &StepTestRunner::failed, this, &GainSearchRunner::onStepFailed);
     // An emergency stop from anywhere (Esc, another view, another command) ends the search.
     // Between two steps no stream runs for it to stop: without this, the next candidate's
     // step would start after the Motor Off. (The runner's own halt comes while Aborting.)
     const auto onEmergencyStop = [this] {
-        if (m_phase == Phase::Searching)
-            haltAndRestore(StepTestFailure::Aborted, QStringLiteral("an emergency stop"));
+        if (m_phase == Phase::Searching) {
+            haltAndRestore(StepTestFailure::Aborted, SearchEnd::EmergencyStop,
+                           QStringLiteral("an emergency stop"));
+        } else if (m_phase == Phase::Measuring) {
+            m_emergencyStop = true;
+            m_bode.abort(); // its sweep may be between two: nothing else would stop it
+        }
     };
     connect(&m_session, &bus::BusSession::emergencyStopProgress, this, onEmergencyStop);
     connect(&m_session, &bus::BusSession::emergencyStopFinished, this, onEmergencyStop);
@@ -27,6 +62,7 @@ GainSearchRunner::GainSearchRunner(bus::BusSession &session, QObject *parent)
 
 GainSearchRunner::~GainSearchRunner()
 {
+    // Measuring: m_bode's destructor halts its sweep and then puts the gains read back.
     if (m_phase == Phase::Searching || m_phase == Phase::Restoring || m_phase == Phase::Aborting) {
         // Nobody is left to hear the outcome: motor off, and the gains read go back (the
         // writes go out; their ends are not waited for).
@@ -46,6 +82,10 @@ bool GainSearchRunner::start(const GainSearchSpec &spec, const safety::SoftLimit
     m_result.spec = spec;
     m_strategy.reset();
     m_startSpeed.reset();
+    m_measured = false;
+    m_emergencyStop = false;
+    m_userAbort = false;
+    m_returned = DriveLeft::Untouched;
     ++m_run;
     m_clock.start();
     m_phase = Phase::Reading;
@@ -64,7 +104,10 @@ bool GainSearchRunner::start(const GainSearchSpec &spec, const safety::SoftLimit
                              if (failure == StepTestFailure::None)
                                  onRead();
                              else
-                                 end(failure, why);
+                                 end(failure,
+                                     failure == StepTestFailure::BadSpec ? SearchEnd::BadSpec
+                                                                         : SearchEnd::FailedToRead,
+                                     DriveLeft::Untouched, true, why);
                          });
     return true;
 }
@@ -76,12 +119,18 @@ void GainSearchRunner::abort()
     case Phase::Aborting:
         return;
     case Phase::Reading:
-        end(StepTestFailure::Aborted,
+        end(StepTestFailure::Aborted, SearchEnd::AbortedByUser, DriveLeft::Untouched, true,
             QStringLiteral("aborted before anything moved; nothing was sent"));
         return;
     case Phase::Searching:
     case Phase::Restoring:
-        haltAndRestore(StepTestFailure::Aborted, QStringLiteral("aborted"));
+        haltAndRestore(StepTestFailure::Aborted, SearchEnd::AbortedByUser,
+                       QStringLiteral("aborted"));
+        return;
+    case Phase::Measuring:
+        // Its sweep's own Motor Off is an emergency stop too: this one was the user's.
+        m_userAbort = true;
+        m_bode.abort(); // ends with onBodeEnded(Aborted): Motor Off, the gains read back
         return;
     }
 }
@@ -110,7 +159,7 @@ void GainSearchRunner::tryNext()
             return;
         if (!ok) {
             haltAndRestore(
-                StepTestFailure::Silent,
+                StepTestFailure::Silent, SearchEnd::DriveSilent,
                 QStringLiteral("a candidate's gains could not be written (%1)").arg(why));
             return;
         }
@@ -142,7 +191,7 @@ void GainSearchRunner::onStepFailed(const StepTestResult &result)
         m_phase = Phase::Restoring;
         m_keeper.restore([this, run = m_run](bool ok, const QString &) {
             if (run == m_run)
-                end(StepTestFailure::Refused,
+                end(StepTestFailure::Refused, SearchEnd::Refused, DriveLeft::NoStepSent, ok,
                     ok ? QStringLiteral("refused for safety, no step was sent; the gains read "
                                         "are back in RAM")
                        : QStringLiteral("refused for safety, no step was sent; the gains read "
@@ -150,8 +199,9 @@ void GainSearchRunner::onStepFailed(const StepTestResult &result)
         });
         return;
     }
-    haltAndRestore(result.failure == StepTestFailure::Disconnected ? StepTestFailure::Disconnected
-                                                                   : StepTestFailure::Silent,
+    const bool lost = result.failure == StepTestFailure::Disconnected;
+    haltAndRestore(lost ? StepTestFailure::Disconnected : StepTestFailure::Silent,
+                   lost ? SearchEnd::LinkLost : SearchEnd::DriveSilent,
                    QStringLiteral("a step failed: %1").arg(result.message));
 }
 
@@ -163,7 +213,7 @@ void GainSearchRunner::finishSearch()
             return;
         if (!ok) {
             haltAndRestore(
-                StepTestFailure::Silent,
+                StepTestFailure::Silent, SearchEnd::FailedToRestore,
                 QStringLiteral("the gains read could not be written back (%1)").arg(why));
             return;
         }
@@ -179,23 +229,94 @@ void GainSearchRunner::returnToStart()
             if (run != m_run || m_phase != Phase::Restoring)
                 return;
             if (!ok) {
-                haltAndRestore(StepTestFailure::Silent, words);
+                haltAndRestore(StepTestFailure::Silent, SearchEnd::DriveSilent, words);
                 return;
             }
-            end(StepTestFailure::None,
-                QStringLiteral("the gains and acceleration read are back in RAM; %1").arg(words));
+            const double speed = m_startSpeed.value_or(0);
+            m_returned = speed == 0 ? DriveLeft::HoldsZero : DriveLeft::BackAtSpeed;
+            m_result.outcome.speedDps = speed;
+            if (m_spec.measureBode && m_strategy->best() && !m_measured)
+                measureBode(words);
+            else
+                end(StepTestFailure::None, finishedEnd(), m_returned, true,
+                    QStringLiteral("the gains and acceleration read are back in RAM; %1")
+                        .arg(words));
         });
 }
 
-void GainSearchRunner::haltAndRestore(StepTestFailure failure, const QString &message)
+void GainSearchRunner::measureBode(const QString &returned)
+{
+    m_phase = Phase::Measuring;
+    const LoopGains &best = m_strategy->scores().at(*m_strategy->best()).gains;
+    if (!m_bode.start(m_spec.bode(), best, m_limits))
+        end(StepTestFailure::None, finishedEnd(), m_returned, true,
+            QStringLiteral("the gains and acceleration read are back in "
+                           "RAM; %1; the Bode step could not start")
+                .arg(returned));
+}
+
+void GainSearchRunner::onBodeEnded(const GainSearchBodeResult &bode)
+{
+    if (m_phase != Phase::Measuring)
+        return;
+    m_result.bodeRead = bode.read;
+    m_result.bodeBest = bode.best;
+    if (bode.ok()) {
+        // Each sweep went back to the speed it read, which a rotor still settling from the
+        // search may have left a few dps off: back to the search's own start speed.
+        m_measured = true;
+        m_phase = Phase::Restoring;
+        returnToStart();
+    } else {
+        bodeFailed(bode);
+    }
+}
+
+void GainSearchRunner::bodeFailed(const GainSearchBodeResult &bode)
+{
+    using F = StepTestFailure;
+    const SearchEnd why = bode.failure == F::Aborted
+                              ? (m_emergencyStop && !m_userAbort ? SearchEnd::EmergencyStop
+                                                                 : SearchEnd::AbortedByUser)
+                          : bode.failure == F::Refused      ? SearchEnd::Refused
+                          : bode.failure == F::BadSpec      ? SearchEnd::BadSpec
+                          : bode.failure == F::Disconnected ? SearchEnd::LinkLost
+                                                            : SearchEnd::DriveSilent;
+    // Halted: Motor Off as acknowledged; refused before it moved: where the search left it.
+    const DriveLeft drive = !bode.halt                   ? m_returned
+                            : bode.halt->offAcknowledged ? DriveLeft::Off
+                                                         : DriveLeft::MayBeMoving;
+    end(bode.failure, why, drive, bode.restored,
+        QStringLiteral("the Bode step: %1").arg(bode.message));
+}
+
+void GainSearchRunner::haltAndRestore(StepTestFailure failure, SearchEnd why,
+                                      const QString &message)
 {
     m_phase = Phase::Aborting;
     m_step.abort();
-    TuningEnd::haltAndRestore(m_session, m_keeper, m_spec.id, this,
-                              [this, failure, message, run = m_run](const QString &outcome) {
-                                  if (run == m_run)
-                                      end(failure, QStringLiteral("%1: %2").arg(message, outcome));
-                              });
+    TuningEnd::halt(m_session, m_keeper, m_spec.id, this,
+                    [this, failure, why, message, run = m_run](const HaltOutcome &h) {
+                        if (run == m_run)
+                            end(failure, why,
+                                h.offAcknowledged ? DriveLeft::Off : DriveLeft::MayBeMoving,
+                                h.gainsRestored, QStringLiteral("%1: %2").arg(message, h.words()));
+                    });
+}
+
+SearchEnd GainSearchRunner::finishedEnd() const
+{
+    return m_strategy && m_strategy->stoppedByInstability() ? SearchEnd::Unstable
+                                                            : SearchEnd::Finished;
+}
+
+void GainSearchRunner::end(StepTestFailure failure, SearchEnd why, DriveLeft drive, bool restored,
+                           const QString &message)
+{
+    m_result.outcome.end = why;
+    m_result.outcome.drive = drive;
+    m_result.outcome.gainsRestored = restored;
+    end(failure, message);
 }
 
 void GainSearchRunner::end(StepTestFailure failure, const QString &message)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "GainKeeper.h"
+#include "GainSearchBode.h"
 #include "GainSearchStrategy.h"
 #include "StepTestRunner.h"
 
@@ -25,12 +26,21 @@ struct GainSearchSpec {
     int periods = 3;        ///< a square of this many periods: 2N steps per candidate
     double preRollS = 0.15; ///< FROM held before it
     int maxCandidates = 24;
+    /// After the search, the Bode of the gains read and of the best (GainSearchBode).
+    bool measureBode = false;
 
     /// The step test each candidate is scored by.
     StepTestSpec step() const
     {
         return StepTestSpec{id, StepLoop::Speed, from, to, stepS, periods, preRollS, {}};
     }
+    /// The short sweep the Bode step measures each set with: a sine between FROM and TO's
+    /// middle and half-way to each (where the steps already went), 9 frequencies from 5 to 100 Hz.
+    FrequencySweepSpec bode() const;
+    /// About how long the Bode step takes on `series` within `limits`, seconds (both sweeps,
+    /// their reads and writes); nullopt when its sweep is refused there.
+    std::optional<double> bodeSeconds(std::optional<protocol::Series> series,
+                                      const safety::SoftLimits &limits) const;
 };
 
 /// What a gain search tried and found. Nothing of it stays in the drive: the gains read are
@@ -41,11 +51,15 @@ struct GainSearchResult {
     QVector<CandidateScore> candidates;
     std::optional<int> baseline; ///< the read gains' score (the first candidate), if measured
     std::optional<int> best;     ///< the fastest accepted candidate
+    /// measureBode: the speed loop's response with the gains read and with the best (the
+    /// Bode step runs once the search found a best; a failed one leaves what it measured).
+    std::optional<FrequencyResponse> bodeRead, bodeBest;
     bool stoppedByInstability = false;
     double seconds = 0; ///< the search's wall time
     StepTestFailure failure = StepTestFailure::None;
-    StepRefusal refusal; ///< a Refused step: which setpoint and limit
-    QString message;     ///< English: how it ended and what the drive was left doing
+    StepRefusal refusal;   ///< a Refused step: which setpoint and limit
+    QString message;       ///< English: how it ended and what the drive was left doing
+    TuningOutcome outcome; ///< the same as facts
     bool ok() const { return failure == StepTestFailure::None; }
 };
 
@@ -71,11 +85,13 @@ public:
 signals:
     /// A candidate's step was scored (index into the result's candidates).
     void candidateScored(const lk::tuning::CandidateScore &score, int index);
+    /// measureBode: a sweep of the Bode step began (`best`: with the best's gains in RAM).
+    void bodeSweepStarted(bool best, double seconds);
     void finished(const lk::tuning::GainSearchResult &result);
     void failed(const lk::tuning::GainSearchResult &result);
 
 private:
-    enum class Phase { Idle, Reading, Searching, Restoring, Aborting };
+    enum class Phase { Idle, Reading, Searching, Restoring, Measuring, Aborting };
 
     void onRead();
     void tryNext();
@@ -83,18 +99,31 @@ private:
     void onStepFailed(const StepTestResult &result);
     void finishSearch();
     void returnToStart();
-    void haltAndRestore(StepTestFailure failure, const QString &message);
+    void measureBode(const QString &returned);
+    void onBodeEnded(const GainSearchBodeResult &bode);
+    void bodeFailed(const GainSearchBodeResult &bode);
+    /// Finished, or Unstable when the search stopped at an unstable candidate.
+    SearchEnd finishedEnd() const;
+    void haltAndRestore(StepTestFailure failure, SearchEnd why, const QString &message);
+    /// Ends with `failure`; m_result.outcome has been filled in.
     void end(StepTestFailure failure, const QString &message);
+    void end(StepTestFailure failure, SearchEnd why, DriveLeft drive, bool restored,
+             const QString &message);
 
     bus::BusSession &m_session;
     GainKeeper m_keeper;
     StepTestRunner m_step;
+    GainSearchBode m_bode;
     Phase m_phase = Phase::Idle;
     GainSearchSpec m_spec;
     safety::SoftLimits m_limits;
     std::optional<GainSearchStrategy> m_strategy;
     GainSearchResult m_result;
     std::optional<double> m_startSpeed;
+    bool m_measured = false;      ///< the Bode step is done: the return to the start speed ends it
+    bool m_emergencyStop = false; ///< one came in the Bode step: its abort is worded as one
+    bool m_userAbort = false;     ///< abort() came first in the Bode step
+    DriveLeft m_returned = DriveLeft::Untouched; ///< what the last return to the start left
     quint64 m_run = 0;
     QElapsedTimer m_clock;
 };

@@ -172,6 +172,7 @@ CandidateScore GainSearchStrategy::score(const LoopGains &gains, const StepTrace
     s.metrics = combine(StepMetrics::forAllEdges(trace, options));
     s.errorAreaS = errorArea(trace);
     s.verdict = judge(s.metrics, trace, maxOvershootPct);
+    s.trace = trace;
     return s;
 }
 

@@ -31,6 +31,8 @@ struct CandidateScore {
     /// and rises with overshoot and ringing; it breaks ties between equally fast candidates.
     double errorAreaS = 0;
     CandidateVerdict verdict = CandidateVerdict::NotSettled;
+    /// The step test it was scored on (what the views overlay: the search's own samples).
+    StepTrace trace;
     bool accepted() const { return verdict == CandidateVerdict::Accepted; }
     bool unstable() const
     {
@@ -92,8 +94,9 @@ public:
     static EdgeMetrics combine(const QVector<EdgeMetrics> &edges);
     /// CandidateScore::errorAreaS of a trace (trapezoids on the samples' times).
     static double errorArea(const StepTrace &trace);
-    /// The score of a candidate whose step test gave `trace`: its combined metrics, error area
-    /// and verdict. `effortLimit`: the drive's current (power) limit, for saturation.
+    /// The score of a candidate whose step test gave `trace`: its combined metrics, error area,
+    /// verdict and the trace itself. `effortLimit`: the drive's current (power) limit, for
+    /// saturation.
     static CandidateScore score(const LoopGains &gains, const StepTrace &trace,
                                 std::optional<double> effortLimit, double maxOvershootPct);
 

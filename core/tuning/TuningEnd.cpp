@@ -28,28 +28,42 @@ void TuningEnd::readFirst(GainKeeper &keeper, int id, const QString &specError, 
     });
 }
 
+QString HaltOutcome::words() const
+{
+    const QString off = offAcknowledged ? QStringLiteral("drive %1 is off").arg(id)
+                                        : QStringLiteral("drive %1 did not acknowledge motor off: "
+                                                         "it may still be moving")
+                                              .arg(id);
+    return QStringLiteral("%1; %2").arg(
+        off, gainsRestored ? QStringLiteral("the gains and acceleration read before are back in "
+                                            "RAM")
+                           : QStringLiteral("the gains and acceleration read before could not be "
+                                            "written back (%1)")
+                                 .arg(restoreError));
+}
+
 void TuningEnd::haltAndRestore(bus::BusSession &session, GainKeeper &keeper, int id,
                                QObject *context, std::function<void(const QString &)> done)
 {
+    halt(session, keeper, id, context, [done](const HaltOutcome &h) { done(h.words()); });
+}
+
+void TuningEnd::halt(bus::BusSession &session, GainKeeper &keeper, int id, QObject *context,
+                     std::function<void(const HaltOutcome &)> done)
+{
     session.stopSetpointStream();
-    session.emergencyStop(
-        {id}, protocol::Command::MotorOff, context,
-        [&keeper, id, done](const QVector<int> &acknowledged, const QVector<int> &,
-                            const QVector<int> &) {
-            const QString off = acknowledged.contains(id)
-                                    ? QStringLiteral("drive %1 is off").arg(id)
-                                    : QStringLiteral("drive %1 did not acknowledge motor off: "
-                                                     "it may still be moving")
-                                          .arg(id);
-            keeper.restore([off, done](bool ok, const QString &why) {
-                done(QStringLiteral("%1; %2").arg(
-                    off, ok ? QStringLiteral("the gains and acceleration read before are back "
-                                             "in RAM")
-                            : QStringLiteral("the gains and acceleration read before could not "
-                                             "be written back (%1)")
-                                  .arg(why)));
-            });
-        });
+    session.emergencyStop({id}, protocol::Command::MotorOff, context,
+                          [&keeper, id, done](const QVector<int> &acknowledged,
+                                              const QVector<int> &, const QVector<int> &) {
+                              HaltOutcome h;
+                              h.id = id;
+                              h.offAcknowledged = acknowledged.contains(id);
+                              keeper.restore([h, done](bool ok, const QString &why) mutable {
+                                  h.gainsRestored = ok;
+                                  h.restoreError = why;
+                                  done(h);
+                              });
+                          });
 }
 
 void TuningEnd::returnToSpeed(bus::BusSession &session, int id, double dps,

@@ -134,6 +134,7 @@ private slots:
     void judge_data();
     void judge();
     void errorAreaOfAFirstOrderStep();
+    void scoreKeepsItsTrace();
     void candidateOrder();
     void climbsUntilSomethingIsAccepted();
     void climbEndsWhenNoFaster();
@@ -180,6 +181,16 @@ void tst_GainSearch::judge()
     options.effortLimit = saturated ? 0.5 : 10.0;
     const EdgeMetrics m = StepMetrics::forEdge(trace, 0, options);
     QCOMPARE(GainSearchStrategy::judge(m, trace, 5), verdict);
+}
+
+void tst_GainSearch::scoreKeepsItsTrace()
+{
+    // The views overlay a candidate's step from its score: the trace it was judged on.
+    const StepTrace trace = syntheticStep(0.01, 0.1, -8);
+    const CandidateScore s = GainSearchStrategy::score(readGains(), trace, 10.0, 5);
+    QCOMPARE(s.trace.time, trace.time);
+    QCOMPARE(s.trace.value, trace.value);
+    QCOMPARE(s.trace.edges.size(), 1);
 }
 
 void tst_GainSearch::candidateOrder()
@@ -271,6 +282,8 @@ void tst_GainSearch::searchBeatsTheGainsRead()
     QVERIFY2(r.ok(), qPrintable(r.message));
     QCOMPARE(rig.scored.size(), r.candidates.size());
     for (const CandidateScore &c : r.candidates)
+        QVERIFY(c.trace.size() > 50 && c.trace.edges.size() >= 2); // each its own step's
+    for (const CandidateScore &c : r.candidates)
         qInfo("Kp %3d Ki %3d (%.0f Hz): area %.2f ms, rise %s ms, overshoot %s %%, verdict %d",
               c.gains.speed.kp, c.gains.speed.ki, c.metrics.sampleRateHz, c.errorAreaS * 1e3,
               qPrintable(QString::number(c.metrics.riseTimeS.value.value_or(-1) * 1e3)),
@@ -286,6 +299,9 @@ void tst_GainSearch::searchBeatsTheGainsRead()
     QVERIFY(best.accepted());
     QVERIFY2(best.riseS() < base.riseS(), qPrintable(r.message));
     QVERIFY(*best.metrics.overshootPct.value <= 5);
+    QCOMPARE(r.outcome.end, SearchEnd::Finished);
+    QCOMPARE(r.outcome.drive, DriveLeft::HoldsZero);
+    QVERIFY(r.outcome.gainsRestored);
     // Nothing written until asked: the drive holds the gains it had.
     QCOMPARE(rig.gains(id), before);
 }
@@ -302,6 +318,9 @@ void tst_GainSearch::abortRestoresAndTurnsOff()
     const GainSearchResult r = rig.waitForEnd();
     QCOMPARE(r.failure, StepTestFailure::Aborted);
     QVERIFY2(r.message.contains(QLatin1String("drive 3 is off")), qPrintable(r.message));
+    QCOMPARE(r.outcome.end, SearchEnd::AbortedByUser);
+    QCOMPARE(r.outcome.drive, DriveLeft::Off);
+    QVERIFY(r.outcome.gainsRestored);
     QCOMPARE(rig.gains(3), before);
     const RequestResult state =
         rig.request(*protocol::build::plain(Command::ReadState2, 3).request);
@@ -324,6 +343,8 @@ void tst_GainSearch::emergencyStopBetweenStepsEndsTheSearch()
     const GainSearchResult r = rig.waitForEnd();
     QCOMPARE(r.failure, StepTestFailure::Aborted);
     QVERIFY2(r.message.startsWith(QLatin1String("an emergency stop")), qPrintable(r.message));
+    QCOMPARE(r.outcome.end, SearchEnd::EmergencyStop);
+    QCOMPARE(r.outcome.drive, DriveLeft::Off);
     QCOMPARE(r.candidates.size(), 1);
     QCOMPARE(rig.gains(3), before);
     const RequestResult state =
@@ -347,6 +368,8 @@ void tst_GainSearch::saturationStopsAndRestores()
     QCOMPARE(r.candidates.first().verdict, CandidateVerdict::Saturated);
     QVERIFY(r.stoppedByInstability);
     QVERIFY(!r.best);
+    QCOMPARE(r.outcome.end, SearchEnd::Unstable);
+    QVERIFY(r.outcome.drive == DriveLeft::HoldsZero || r.outcome.drive == DriveLeft::BackAtSpeed);
     QCOMPARE(rig.gains(7), before);
     const RequestResult state =
         rig.request(*protocol::build::plain(Command::ReadState2, 7).request);

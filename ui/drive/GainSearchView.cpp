@@ -1,5 +1,7 @@
 #include "GainSearchView.h"
 
+#include "GainSearchViewComparison.h"
+#include "GainSearchViewOutcome.h"
 #include "ParameterTable.h"
 #include "TuningRunGate.h"
 #include "TuningView.h"
@@ -7,12 +9,9 @@
 #include <bus/BusSession.h>
 #include <panels/Format.h>
 #include <panels/StatusColors.h>
-#include <text/VerdictText.h>
-#include <tuning/CandidateTraceRecorder.h>
 #include <tuning/MetricText.h>
-#include <tuning/StepOverlayChart.h>
-#include <tuning/StepRunsModel.h>
 
+#include <QtWidgets/QCheckBox>
 #include <QtWidgets/QDoubleSpinBox>
 #include <QtWidgets/QFormLayout>
 #include <QtWidgets/QHBoxLayout>
@@ -34,39 +33,13 @@ namespace {
 
 enum Column { Number, Kp, Ki, Rise, Overshoot, ErrorArea, Verdict, kColumns };
 
-QString verdictText(CandidateVerdict v)
-{
-    switch (v) {
-    case CandidateVerdict::Accepted:
-        return GainSearchView::tr("within the bounds");
-    case CandidateVerdict::Overshoot:
-        return GainSearchView::tr("overshoots");
-    case CandidateVerdict::Oscillates:
-        return GainSearchView::tr("oscillates");
-    case CandidateVerdict::NotSettled:
-        return GainSearchView::tr("did not settle");
-    case CandidateVerdict::Saturated:
-        return GainSearchView::tr("current at its limit: unstable, search stopped");
-    case CandidateVerdict::Growing:
-        return GainSearchView::tr("swings growing: unstable, search stopped");
-    }
-    return {};
-}
-
-QString riseText(const CandidateScore &s)
-{
-    return MetricText::value(s.metrics, StepMetricKind::RiseTime, tuning::StepLoop::Speed, false);
-}
-
-QString overshootText(const CandidateScore &s)
-{
-    return MetricText::value(s.metrics, StepMetricKind::Overshoot, tuning::StepLoop::Speed, false);
-}
-
-/// How far a search may turn the axis: every candidate's pre-roll and square, at most.
+/// How far a search may turn the axis: every candidate's pre-roll and square, at most, and its
+/// Bode step.
 QString searchTravel(const TuningRunDrive &drive, const GainSearchSpec &s)
 {
-    const double seconds = s.maxCandidates * (s.preRollS + 2 * s.periods * s.stepS);
+    const double seconds =
+        s.maxCandidates * (s.preRollS + 2 * s.periods * s.stepS) +
+        (s.measureBode ? s.bodeSeconds(drive.series, drive.limits).value_or(0) : 0);
     return TuningRunGate::travelText(drive, std::min(s.from, s.to), std::max(s.from, s.to),
                                      seconds);
 }
@@ -83,8 +56,36 @@ int fieldIndex(const ParamSetSpec &spec, const QString &key)
 
 } // namespace
 
-GainSearchView::GainSearchView(TuningView *host, QWidget *parent)
-    : QWidget(parent), m_host(host), m_recorder(new CandidateTraceRecorder(this))
+QString GainSearchView::verdictText(CandidateVerdict v)
+{
+    switch (v) {
+    case CandidateVerdict::Accepted:
+        return tr("within the bounds");
+    case CandidateVerdict::Overshoot:
+        return tr("overshoots");
+    case CandidateVerdict::Oscillates:
+        return tr("oscillates");
+    case CandidateVerdict::NotSettled:
+        return tr("did not settle");
+    case CandidateVerdict::Saturated:
+        return tr("current at its limit: unstable, search stopped");
+    case CandidateVerdict::Growing:
+        return tr("swings growing: unstable, search stopped");
+    }
+    return {};
+}
+
+QString GainSearchView::riseText(const CandidateScore &s)
+{
+    return MetricText::value(s.metrics, StepMetricKind::RiseTime, tuning::StepLoop::Speed, false);
+}
+
+QString GainSearchView::overshootText(const CandidateScore &s)
+{
+    return MetricText::value(s.metrics, StepMetricKind::Overshoot, tuning::StepLoop::Speed, false);
+}
+
+GainSearchView::GainSearchView(TuningView *host, QWidget *parent) : QWidget(parent), m_host(host)
 {
     setObjectName(QStringLiteral("gainSearch"));
     m_travel = new QLabel(this);
@@ -125,7 +126,8 @@ GainSearchView::GainSearchView(TuningView *host, QWidget *parent)
     layout->addLayout(buttons);
     layout->addWidget(m_status);
     layout->addWidget(m_table, 1);
-    layout->addWidget(buildComparison(), 2);
+    m_compare = new GainSearchViewComparison(this);
+    layout->addWidget(m_compare, 2);
     connect(m_run, &QPushButton::clicked, this, [this] {
         if (isRunning())
             halt();
@@ -189,28 +191,30 @@ QWidget *GainSearchView::buildFields()
     form->addRow(tr("Max overshoot"), m_overshoot);
     form->addRow(tr("Steps between"), steps);
     form->addRow(tr("Candidates at most"), m_maxCandidates);
+    // On by default here (the "best beside the current gains (step overlay and Bode)"),
+    // off in lkctl: it adds two sweeps.
+    m_measureBode = new QCheckBox(tr("Measure the Bode of both"), w);
+    m_measureBode->setObjectName(QStringLiteral("measureBode"));
+    m_measureBode->setChecked(true);
+    m_measureBode->setToolTip(tr("After the search, measure the speed loop's frequency response "
+                                 "with the gains read and with the suggested gains (written to "
+                                 "RAM for that sweep only, the gains read put back after it)."));
+    form->addRow(QString(), m_measureBode);
+    connect(m_measureBode, &QCheckBox::toggled, this, &GainSearchView::refresh);
     for (QDoubleSpinBox *s : {m_overshoot, m_from, m_to})
         connect(s, &QDoubleSpinBox::valueChanged, this, &GainSearchView::refresh);
     connect(m_maxCandidates, &QSpinBox::valueChanged, this, &GainSearchView::refresh);
     return w;
 }
 
-QWidget *GainSearchView::buildComparison()
+StepOverlayChart *GainSearchView::overlay() const
 {
-    m_compare = new QTableWidget(0, 2, this);
-    m_compare->setObjectName(QStringLiteral("bestVsRead"));
-    m_compare->setHorizontalHeaderLabels({tr("Gains read"), tr("Suggested")});
-    m_compare->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    m_compare->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
-    m_compare->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_overlay = new StepOverlayChart(this);
-    m_overlay->setObjectName(QStringLiteral("bestStepOverlay"));
-    auto *w = new QWidget(this);
-    auto *h = new QHBoxLayout(w);
-    h->setContentsMargins(0, 0, 0, 0);
-    h->addWidget(m_compare, 1);
-    h->addWidget(m_overlay, 2);
-    return w;
+    return m_compare->overlay();
+}
+
+BodeChart *GainSearchView::bode() const
+{
+    return m_compare->bode();
 }
 
 GainSearchSpec GainSearchView::spec() const
@@ -221,6 +225,7 @@ GainSearchSpec GainSearchView::spec() const
     s.from = m_from->value();
     s.to = m_to->value();
     s.maxCandidates = m_maxCandidates->value();
+    s.measureBode = m_measureBode->isChecked();
     return s;
 }
 
@@ -230,6 +235,7 @@ void GainSearchView::setSpec(const GainSearchSpec &s)
     m_from->setValue(s.from);
     m_to->setValue(s.to);
     m_maxCandidates->setValue(s.maxCandidates);
+    m_measureBode->setChecked(s.measureBode);
 }
 
 bool GainSearchView::runSearch()
@@ -243,6 +249,12 @@ bool GainSearchView::runSearch()
         return false;
     }
     const GainSearchSpec s = spec();
+    if (s.measureBode && !s.bodeSeconds(drive->series, drive->limits)) {
+        setStatus(tr("The Bode of both is refused within these limits: clear the box or change "
+                     "the steps. Nothing was sent."),
+                  true);
+        return false;
+    }
     const QString travel = searchTravel(*drive, s);
     if (!TuningRunGate::askFreeToTurn(this, *drive, QStringLiteral("gain_search"),
                                       tr("Suggested gains"), travel)) {
@@ -259,9 +271,8 @@ bool GainSearchView::runSearch()
     m_result.reset();
     m_ramWritten = false;
     m_searchedId = drive->id;
-    m_recorder->start(drive->session, drive->id);
     m_table->setRowCount(0);
-    showComparison();
+    m_compare->show(m_result);
     setStatus(tr("Searching the speed-loop gains of drive %1\u2026 Esc stops it.").arg(drive->id));
     refresh();
     emit runningChanged(true);
@@ -279,6 +290,8 @@ void GainSearchView::ensureRunner(bus::BusSession *session)
     m_runner = std::make_unique<tuning::GainSearchRunner>(*session);
     connect(m_runner.get(), &tuning::GainSearchRunner::candidateScored, this,
             &GainSearchView::onScored);
+    connect(m_runner.get(), &tuning::GainSearchRunner::bodeSweepStarted, this,
+            &GainSearchView::onBodeSweep);
     connect(m_runner.get(), &tuning::GainSearchRunner::finished, this, &GainSearchView::onEnded);
     connect(m_runner.get(), &tuning::GainSearchRunner::failed, this, &GainSearchView::onEnded);
 }
@@ -309,7 +322,6 @@ void GainSearchView::fillRow(int row, const CandidateScore &score)
 
 void GainSearchView::onScored(const CandidateScore &score, int index)
 {
-    m_recorder->cut(); // this candidate's step ended with its score
     if (m_table->rowCount() <= index)
         m_table->setRowCount(index + 1);
     fillRow(index, score);
@@ -320,9 +332,20 @@ void GainSearchView::onScored(const CandidateScore &score, int index)
                   .arg(m_searchedId));
 }
 
+void GainSearchView::onBodeSweep(bool best, double seconds)
+{
+    setStatus(best ? tr("Measuring the Bode of the suggested gains on drive %1 (in RAM for this "
+                        "sweep only, %2 s)\u2026 Esc stops it.")
+                         .arg(m_searchedId)
+                         .arg(Format::number(seconds, 0))
+                   : tr("Measuring the Bode of the gains read on drive %1 (%2 s)\u2026 Esc "
+                        "stops it.")
+                         .arg(m_searchedId)
+                         .arg(Format::number(seconds, 0)));
+}
+
 void GainSearchView::onEnded(const GainSearchResult &result)
 {
-    m_recorder->stop();
     m_result = result;
     m_table->setRowCount(int(result.candidates.size()));
     for (int i = 0; i < result.candidates.size(); ++i)
@@ -334,25 +357,9 @@ void GainSearchView::onEnded(const GainSearchResult &result)
             m_table->item(*result.best, c)->setFont(bold);
         }
     }
-    showComparison();
-    QString text;
-    if (!result.ok()) {
-        text = TuningRunGate::failureText(result.failure, result.spec.id, result.message);
-        if (result.failure == tuning::StepTestFailure::Refused)
-            text = tr("Refused: %1.").arg(text::VerdictText::stepRefusal(result.refusal)) +
-                   QLatin1Char(' ') + text;
-    } else {
-        text = (result.best ? tr("%n candidate(s) tried in %1 s; the best is in bold, Write to "
-                                 "RAM tries it. Nothing else was kept.",
-                                 nullptr, int(result.candidates.size()))
-                                  .arg(Format::number(result.seconds, 0))
-                            : tr("%n candidate(s) tried in %1 s; none stayed within the bounds.",
-                                 nullptr, int(result.candidates.size()))
-                                  .arg(Format::number(result.seconds, 0))) +
-               QLatin1Char(' ') + TuningRunGate::endedText(result.spec.id, result.message);
-        if (result.stoppedByInstability)
-            text += QLatin1Char(' ') + tr("The search stopped at the first unstable candidate.");
-    }
+    m_compare->show(m_result);
+    // The runner's typed outcome, worded here (its English message is for logs and lkctl).
+    const QString text = GainSearchViewOutcome::text(result);
     setStatus(text, !result.ok());
     refresh();
     emit runningChanged(false);
@@ -363,40 +370,6 @@ std::optional<tuning::LoopGains> GainSearchView::best() const
     if (!m_result || !m_result->best)
         return std::nullopt;
     return m_result->candidates.at(*m_result->best).gains;
-}
-
-void GainSearchView::showComparison()
-{
-    m_compare->setRowCount(0);
-    m_overlay->setRuns({});
-    if (!m_result || m_result->candidates.isEmpty())
-        return;
-    // The steps side by side: the gains read (the first candidate) and the best.
-    const QVector<tuning::StepTrace> &traces = m_recorder->traces();
-    QVector<OverlayRun> steps;
-    if (!traces.isEmpty())
-        steps.append({tr("Gains read"), StepRunsModel::runColor(1), traces.first()});
-    if (m_result->best && *m_result->best > 0 && *m_result->best < traces.size())
-        steps.append({tr("Suggested"), StepRunsModel::runColor(2), traces.at(*m_result->best)});
-    m_overlay->setRuns(steps);
-    const CandidateScore &read = m_result->candidates.first();
-    const std::optional<CandidateScore> best =
-        m_result->best ? std::optional(m_result->candidates.at(*m_result->best)) : std::nullopt;
-    const auto row = [this](const QString &name, const QString &a, const QString &b) {
-        const int r = m_compare->rowCount();
-        m_compare->insertRow(r);
-        m_compare->setVerticalHeaderItem(r, new QTableWidgetItem(name));
-        m_compare->setItem(r, 0, new QTableWidgetItem(a));
-        m_compare->setItem(r, 1, new QTableWidgetItem(b));
-    };
-    const QString none = tr("none within the bounds");
-    row(tr("Speed Kp"), QString::number(read.gains.speed.kp),
-        best ? QString::number(best->gains.speed.kp) : none);
-    row(tr("Speed Ki"), QString::number(read.gains.speed.ki),
-        best ? QString::number(best->gains.speed.ki) : none);
-    row(tr("Rise"), riseText(read), best ? riseText(*best) : QString());
-    row(tr("Overshoot"), overshootText(read), best ? overshootText(*best) : QString());
-    row(tr("Verdict"), verdictText(read.verdict), best ? verdictText(best->verdict) : QString());
 }
 
 std::optional<QVector<qint64>> GainSearchView::suggestedValues(QString *why) const
@@ -477,12 +450,24 @@ void GainSearchView::refresh()
     m_writeRam->setEnabled(suggestion);
     m_writeRom->setEnabled(suggestion && m_ramWritten);
     for (QWidget *w : {static_cast<QWidget *>(m_overshoot), static_cast<QWidget *>(m_from),
-                       static_cast<QWidget *>(m_to), static_cast<QWidget *>(m_maxCandidates)})
+                       static_cast<QWidget *>(m_to), static_cast<QWidget *>(m_maxCandidates),
+                       static_cast<QWidget *>(m_measureBode)})
         w->setEnabled(!running);
     if (running)
         return;
     const std::optional<TuningRunDrive> drive = TuningRunGate::check(*m_host, nullptr);
-    m_travel->setText(drive ? searchTravel(*drive, spec()) : QString());
+    m_travel->setText(drive ? searchTravel(*drive, spec()) + bodeTimeText(*drive) : QString());
+}
+
+QString GainSearchView::bodeTimeText(const TuningRunDrive &drive) const
+{
+    if (!m_measureBode->isChecked())
+        return {};
+    const std::optional<double> seconds = spec().bodeSeconds(drive.series, drive.limits);
+    return seconds ? QLatin1Char(' ') +
+                         tr("The Bode of both adds about %1 s.").arg(Format::number(*seconds, 0))
+                   : QLatin1Char(' ') + tr("The Bode of both is refused within these limits: "
+                                           "clear the box or change the steps.");
 }
 
 void GainSearchView::setStatus(const QString &text, bool error)

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 
+class QCheckBox;
 class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
@@ -20,14 +21,17 @@ class BusSession;
 
 namespace lk::ui {
 
-class CandidateTraceRecorder;
+class BodeChart;
+class GainSearchViewComparison;
 class StepOverlayChart;
 class TuningView;
+struct TuningRunDrive;
 
 /// Suggested gains for the Tuning view's drive: a search over the speed loop's Kp and Ki
 /// (tuning::GainSearchRunner: short speed steps within the soft limits, scored on rise time
 /// with the overshoot under a bound), the candidates tried as a table and the best beside the
-/// gains read. It writes nothing to the drive but the candidates it tries, and puts the gains
+/// gains read (their steps, and optionally their Bode: GainSearchSpec::measureBode). It writes
+/// nothing to the drive but the candidates it tries, and puts the gains
 /// read back at the end: "Write to RAM" writes the best (through the Tuning view's own write
 /// and read-back), and ROM is a separate step behind the Tuning view's confirmation. Esc and
 /// the Stop button stop a search at once (Motor Off, the gains read back in RAM).
@@ -51,11 +55,17 @@ public:
     QString statusText() const;
     QTableWidget *candidates() const { return m_table; }
     /// The step of the gains read beside the best candidate's.
-    StepOverlayChart *overlay() const { return m_overlay; }
+    StepOverlayChart *overlay() const;
+    /// The Bode of the gains read beside the best candidate's (when measured).
+    BodeChart *bode() const;
     /// The last search's outcome (nullopt before one ended).
     const std::optional<tuning::GainSearchResult> &result() const { return m_result; }
     /// The best candidate's gains (nullopt: none accepted yet).
     std::optional<tuning::LoopGains> best() const;
+
+    static QString verdictText(tuning::CandidateVerdict verdict);
+    static QString riseText(const tuning::CandidateScore &score);
+    static QString overshootText(const tuning::CandidateScore &score);
 
 signals:
     void runningChanged(bool running);
@@ -65,12 +75,13 @@ protected:
 
 private:
     QWidget *buildFields();
-    QWidget *buildComparison();
     void ensureRunner(bus::BusSession *session);
     void onScored(const tuning::CandidateScore &score, int index);
     void onEnded(const tuning::GainSearchResult &result);
+    void onBodeSweep(bool best, double seconds);
     void fillRow(int row, const tuning::CandidateScore &score);
-    void showComparison();
+    /// What the search's Bode step adds, in words ("" without a drive or when refused).
+    QString bodeTimeText(const TuningRunDrive &drive) const;
     /// The Tuning view's values with the best speed Kp and Ki; nullopt with `why`.
     std::optional<QVector<qint64>> suggestedValues(QString *why) const;
     void refresh();
@@ -86,14 +97,13 @@ private:
     QDoubleSpinBox *m_from = nullptr;
     QDoubleSpinBox *m_to = nullptr;
     QSpinBox *m_maxCandidates = nullptr;
+    QCheckBox *m_measureBode = nullptr;
     QLabel *m_travel = nullptr;
     QPushButton *m_run = nullptr;
     QPushButton *m_writeRam = nullptr;
     QPushButton *m_writeRom = nullptr;
     QTableWidget *m_table = nullptr;
-    QTableWidget *m_compare = nullptr;
-    StepOverlayChart *m_overlay = nullptr;
-    CandidateTraceRecorder *m_recorder = nullptr;
+    GainSearchViewComparison *m_compare = nullptr;
     QLabel *m_status = nullptr;
 };
 
