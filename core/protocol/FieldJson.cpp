@@ -97,6 +97,50 @@ QJsonObject parameterFields(const ParameterValue &v)
     return o;
 }
 
+QJsonObject controlParamHead(quint8 paramId)
+{
+    const ControlParamInfo *info = ControlParamTable::find(paramId);
+    return {{QStringLiteral("control_param"),
+             info ? QString::fromLatin1(info->name) : CommandTable::codeText(paramId)},
+            {QStringLiteral("control_param_id"), integer(paramId)}};
+}
+
+// A CAN V2.36 control parameter under the field names of its V2.35 counterpart
+// (ProtocolFields::ofControlParam): angle_kp..iq_kd, max_torque, max_speed_dps (+ _raw),
+// max_angle_deg (+ max_angle_raw), current_ramp_raw (no unit is known), speed_ramp_dps2.
+QJsonObject controlParamFields(const ControlParameter &v)
+{
+    QJsonObject o = controlParamHead(v.paramId);
+    const std::optional<ControlParamId> id = v.id();
+    if (!id) {
+        QByteArray raw;
+        for (quint8 b : v.bytes)
+            raw.append(char(b));
+        o.insert(QStringLiteral("value_bytes"), FieldJson::hexText(raw));
+        return o;
+    }
+    const QList<FieldSpec> fields = ProtocolFields::ofControlParam(*id);
+    if (fields.size() == 3) {
+        for (int i = 0; i < 3; ++i)
+            o.insert(fields.at(i).name, integer(v.pid()[size_t(i)]));
+        return o;
+    }
+    switch (*id) {
+    case ControlParamId::InputSpeedLimit:
+        o.insert(QStringLiteral("max_speed_dps"), centi(v.value()));
+        o.insert(QStringLiteral("max_speed_raw"), integer(v.value()));
+        break;
+    case ControlParamId::InputAngleLimit:
+        o.insert(QStringLiteral("max_angle_deg"), centi(v.value()));
+        o.insert(QStringLiteral("max_angle_raw"), integer(v.value()));
+        break;
+    default:
+        o.insert(fields.constFirst().name, integer(v.value()));
+        break;
+    }
+    return o;
+}
+
 QString brakeActionName(BrakeAction a)
 {
     switch (a) {
@@ -159,6 +203,8 @@ struct RequestFieldVisitor {
         return angleFields(c.angleRaw, c.maxSpeedRaw);
     }
     QJsonObject operator()(const ParamRead &p) const { return paramHead(p.paramId); }
+    QJsonObject operator()(const ControlParamRead &p) const { return controlParamHead(p.paramId); }
+    QJsonObject operator()(const ControlParameter &v) const { return controlParamFields(v); }
     QJsonObject operator()(const ParameterValue &v) const { return parameterFields(v); }
     QJsonObject operator()(const BrakeCommand &b) const
     {
@@ -248,6 +294,7 @@ struct ReplyFieldVisitor {
     }
     QJsonObject operator()(const ModelInfo &m) const { return modelFields(m); }
     QJsonObject operator()(const ParameterValue &v) const { return parameterFields(v); }
+    QJsonObject operator()(const ControlParameter &v) const { return controlParamFields(v); }
     QJsonObject operator()(const ParamWriteResult &r) const
     {
         QJsonObject o = paramHead(r.paramId);
