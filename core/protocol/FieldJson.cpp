@@ -50,12 +50,26 @@ QJsonObject angleFields(qint64 angleRaw, const std::optional<quint32> &maxSpeedR
     return o;
 }
 
+/// {"<key>": its name (or its code when unknown), "<key>_id": the ID byte}.
+QJsonObject head(const QString &key, const char *name, quint8 paramId)
+{
+    return {{key, name ? QString::fromLatin1(name) : CommandTable::codeText(paramId)},
+            {key + QLatin1String("_id"), integer(paramId)}};
+}
+
 QJsonObject paramHead(quint8 paramId)
 {
     const ParamInfo *info = ParamTable::find(paramId);
-    return {{QStringLiteral("param"),
-             info ? QString::fromLatin1(info->name) : CommandTable::codeText(paramId)},
-            {QStringLiteral("param_id"), integer(paramId)}};
+    return head(QStringLiteral("param"), info ? info->name : nullptr, paramId);
+}
+
+/// The six value bytes of a parameter nobody knows, as hex.
+QString valueBytes(const std::array<quint8, 6> &bytes)
+{
+    QByteArray raw;
+    for (quint8 b : bytes)
+        raw.append(char(b));
+    return FieldJson::hexText(raw);
 }
 
 // A parameter's value under the field names of V2.3 where they exist (angle_kp ... iq_ki,
@@ -65,10 +79,7 @@ QJsonObject parameterFields(const ParameterValue &v)
     QJsonObject o = paramHead(v.paramId);
     const std::optional<ParamId> id = v.id();
     if (!id) {
-        QByteArray raw;
-        for (quint8 b : v.bytes)
-            raw.append(char(b));
-        o.insert(QStringLiteral("value_bytes"), FieldJson::hexText(raw));
+        o.insert(QStringLiteral("value_bytes"), valueBytes(v.bytes));
         return o;
     }
     switch (ParamTable::info(*id).layout) {
@@ -100,9 +111,7 @@ QJsonObject parameterFields(const ParameterValue &v)
 QJsonObject controlParamHead(quint8 paramId)
 {
     const ControlParamInfo *info = ControlParamTable::find(paramId);
-    return {{QStringLiteral("control_param"),
-             info ? QString::fromLatin1(info->name) : CommandTable::codeText(paramId)},
-            {QStringLiteral("control_param_id"), integer(paramId)}};
+    return head(QStringLiteral("control_param"), info ? info->name : nullptr, paramId);
 }
 
 // A CAN V2.36 control parameter under the field names of its V2.35 counterpart
@@ -113,10 +122,7 @@ QJsonObject controlParamFields(const ControlParameter &v)
     QJsonObject o = controlParamHead(v.paramId);
     const std::optional<ControlParamId> id = v.id();
     if (!id) {
-        QByteArray raw;
-        for (quint8 b : v.bytes)
-            raw.append(char(b));
-        o.insert(QStringLiteral("value_bytes"), FieldJson::hexText(raw));
+        o.insert(QStringLiteral("value_bytes"), valueBytes(v.bytes));
         return o;
     }
     const QList<FieldSpec> fields = ProtocolFields::ofControlParam(*id);
