@@ -280,6 +280,19 @@ int WriteCommand::runParam(const ArgParser &parser, const BusOptions &busOptions
         ParamWrite::plan(pos, *rom, parser.isSet(QStringLiteral("json")), &error);
     if (!plan)
         return usageError(console, error);
+    if (*rom && busOptions.isCan()) {
+        // A CAN V2.36 drive keeps its control parameters in RAM only (docs/CAN.md 4.1), and
+        // no CAN drive has the RS485 parameter table: there is no ROM to write, --yes or not.
+        for (const bus::DriveIdentity &d : busOptions.drives) {
+            if (d.id == plan->id && d.generation == protocol::Generation::V2_35)
+                return usageError(
+                    console, QStringLiteral("drive %1 is a CAN V2.36 drive: it keeps its control "
+                                            "parameters in RAM only (lost at power-off) and has "
+                                            "no command that writes them to ROM; nothing was "
+                                            "sent. Use --ram.")
+                                 .arg(plan->id));
+        }
+    }
     if (*rom && !parser.isSet(QStringLiteral("yes")))
         return refuseRom(console, plan->param.name);
     LiveBus bus(console, name());

@@ -182,6 +182,18 @@ struct RequestEncoder {
     {
         return encoded(canId, head().at(1, static_cast<quint8>(c.action)));
     }
+    CanEncodeResult operator()(const ControlParamRead &p) const
+    {
+        return encoded(canId, head().at(1, p.paramId));
+    }
+    CanEncodeResult operator()(const ControlParameter &v) const
+    {
+        Bytes8 b = head();
+        b.at(1, v.paramId);
+        for (int i = 0; i < 6; ++i)
+            b.at(2 + i, v.bytes[size_t(i)]);
+        return encoded(canId, b);
+    }
     CanEncodeResult operator()(const ParamRead &) const { return notOnCan(); }
     CanEncodeResult operator()(const ParameterValue &) const { return notOnCan(); }
 
@@ -265,6 +277,10 @@ struct ReplyEncoder {
     {
         return encoded(canId, head().at(1, b.raw));
     }
+    CanEncodeResult operator()(const ControlParameter &v) const
+    {
+        return RequestEncoder{command, canId, context}(v);
+    }
     CanEncodeResult operator()(const ModelInfo &) const { return notOnCan(); }
     CanEncodeResult operator()(const ParameterValue &) const { return notOnCan(); }
     CanEncodeResult operator()(const ParamWriteResult &) const { return notOnCan(); }
@@ -281,6 +297,16 @@ PidGains pidAt(const Bytes7 &b)
     g.iqKp = b.at<quint8>(6);
     g.iqKi = b.at<quint8>(7);
     return g;
+}
+
+/// B1 the control parameter's ID, B2..B7 its value bytes (0xC0 reply, 0xC1 both ways).
+ControlParameter controlParamAt(const Bytes7 &b)
+{
+    ControlParameter p;
+    p.paramId = b.at<quint8>(1);
+    for (int i = 0; i < 6; ++i)
+        p.bytes[size_t(i)] = b.at<quint8>(2 + i);
+    return p;
 }
 
 std::optional<quint32> centiDps(Command limited, Command cmd, const Bytes7 &b)
@@ -328,6 +354,10 @@ RequestPayload requestPayload(Command cmd, const Bytes7 &b, const DecodeContext 
                                         centiDps(Command::IncrementPositionLimited, cmd, b)};
     case Command::Brake:
         return BrakeCommand{static_cast<BrakeAction>(b.at<quint8>(1))};
+    case Command::ReadControlParam:
+        return ControlParamRead{b.at<quint8>(1)};
+    case Command::WriteControlParam:
+        return controlParamAt(b);
     default:
         return NoPayload{};
     }
@@ -372,6 +402,9 @@ std::optional<ReplyPayload> ownLayoutReply(Command cmd, const Frame &frame)
         return Acknowledged{};
     case Command::Brake:
         return BrakeState{b.at<quint8>(1)};
+    case Command::ReadControlParam:
+    case Command::WriteControlParam:
+        return controlParamAt(b);
     default:
         return std::nullopt; // the RS485 reply's seven bytes: read by the RS485 layouts
     }
@@ -562,22 +595,6 @@ std::optional<qint32> decodeSetPosition(const CanData &data)
         static_cast<quint8>(data.bytes[0]) != static_cast<quint8>(Command::ClearAngle))
         return std::nullopt;
     return qFromLittleEndian<qint32>(data.bytes.constData() + 4);
-}
-
-CanData encodeControlParamRead(quint8 driveId, ControlParamId param)
-{
-    Bytes8 b(kReadControlParam);
-    b.at(1, static_cast<quint8>(param));
-    return CanData{requestCanId(driveId), b.bytes()};
-}
-
-CanData encodeControlParamWrite(quint8 driveId, const ControlParameter &value)
-{
-    Bytes8 b(kWriteControlParam);
-    b.at(1, value.paramId);
-    for (int i = 0; i < 6; ++i)
-        b.at(2 + i, value.bytes[static_cast<size_t>(i)]);
-    return CanData{requestCanId(driveId), b.bytes()};
 }
 
 } // namespace lk::protocol::can

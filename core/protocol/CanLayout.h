@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ControlParameter.h"
 #include "FieldError.h"
 #include "Frame.h"
 #include "Reply.h"
@@ -106,35 +107,11 @@ CanData encodeSetPosition(quint8 driveId, qint32 angleRaw);
 std::optional<qint32> decodeSetPosition(const CanData &data);
 
 /// The CAN V2.36 control parameters of 0xC0 (read) and 0xC1 (write, RAM only), docs/CAN.md.
-enum class ControlParamId : quint8 {
-    AnglePid = 0x0A,
-    SpeedPid = 0x0B,
-    CurrentPid = 0x0C,
-    InputTorqueLimit = 0x1E,
-    InputSpeedLimit = 0x20,
-    InputAngleLimit = 0x22,
-    InputCurrentRamp = 0x24, ///< unit [unknown]
-    InputSpeedRamp = 0x26,
-};
+using protocol::ControlParameter;
+using protocol::ControlParamId;
 constexpr quint8 kReadControlParam = 0xC0;
 constexpr quint8 kWriteControlParam = 0xC1;
 
-/// A control parameter: its ID and value bytes 1..6 (B2..B7).
-struct ControlParameter {
-    quint8 paramId = 0;
-    std::array<quint8, 6> bytes{};
-    /// Kp, Ki, Kd of a PID parameter (uint16 each).
-    std::array<quint16, 3> pid() const;
-    /// The value of a one-number parameter: int16 in bytes 3-4 (torque limit), int32 in
-    /// bytes 3-6 (the others).
-    qint32 value() const;
-    static ControlParameter ofPid(ControlParamId id, quint16 kp, quint16 ki, quint16 kd);
-    static ControlParameter ofValue(ControlParamId id, qint32 value);
-    bool operator==(const ControlParameter &o) const
-    {
-        return paramId == o.paramId && bytes == o.bytes;
-    }
-};
 CanData encodeControlParamRead(quint8 driveId, ControlParamId param);
 CanData encodeControlParamWrite(quint8 driveId, const ControlParameter &value);
 /// A 0xC0 reply or 0xC1 request/reply; nullopt for any other frame.

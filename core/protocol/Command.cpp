@@ -43,6 +43,10 @@ constexpr std::array<CommandInfo, CommandTable::kCount> kCommands{{
     {Command::WriteParamRom, "write_param_rom", 7, 2, -1, false, false, true, kOnV235},
     {Command::Brake, "brake", 1, 1, -1, false, false, false, kOnV235},
     {Command::ClearTurnCount, "clear_turn_count", 0, 0, -1, true, false, false, kOnV235},
+    // CAN V2.36's control parameters (docs/CAN.md section 4.1): RAM only, never flash.
+    {Command::ReadControlParam, "read_control_param", 7, 7, -1, false, false, false, kOnV235, true},
+    {Command::WriteControlParam, "write_control_param", 7, 7, -1, false, false, false, kOnV235,
+     true},
 }};
 
 // Dense code -> table index map, built once, so that the parser's lookup is O(1).
@@ -109,13 +113,21 @@ QString CommandTable::codeText(quint8 code)
 bool CommandTable::availableOn(Command command, Generation generation)
 {
     const CommandInfo *i = find(static_cast<quint8>(command));
-    if (!i)
+    if (!i || i->canOnly)
         return false;
     return i->generations & (generation == Generation::V2_3 ? kOnV23 : kOnV235);
 }
 
+const CommandInfo *CommandTable::findOnRs485(quint8 code)
+{
+    const CommandInfo *i = find(code);
+    return i && !i->canOnly ? i : nullptr;
+}
+
 bool CommandTable::availableOn(Command command, const DecodeContext &context)
 {
+    if (context.link == Link::Can && info(command).canOnly)
+        return context.generation == Generation::V2_35 && find(quint8(command));
     if (!availableOn(command, context.generation))
         return false;
     if (context.link == Link::Rs485)

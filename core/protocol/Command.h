@@ -46,6 +46,8 @@ enum class Command : quint8 {
     SinglePositionLimited = 0xA6,
     IncrementPosition = 0xA7,
     IncrementPositionLimited = 0xA8,
+    ReadControlParam = 0xC0,  ///< CAN V2.36 only
+    WriteControlParam = 0xC1, ///< CAN V2.36 only, RAM
 };
 
 /// Which protocol generations have a command (a bit set of Generation).
@@ -67,12 +69,15 @@ struct CommandInfo {
     bool writesFlash;   ///< writes the drive's ROM (0x32, 0x91, 0x19, 0x44): ask first, never loop
     quint8 generations; ///< GenerationMask: V2.3-only 0x30..0x34 and 0x91, V2.35-only
                         ///< 0x40..0x44, 0x8C, 0x93 (docs/V2.35.md section 3)
+    /// Only on CAN (V2.36's 0xC0/0xC1, docs/CAN.md): no RS485 drive has it, and an RS485
+    /// frame with its code is an unknown command. The lengths are a CAN frame's B1..B7.
+    bool canOnly = false;
 };
 
 /// The command table: lookup by code or by name.
 class CommandTable {
 public:
-    static constexpr int kCount = 33;
+    static constexpr int kCount = 35;
     static const std::array<CommandInfo, kCount> &all();
     static const CommandInfo *find(quint8 code);
     /// Facts about a command; a value outside the table (a cast) gets an entry named
@@ -83,11 +88,15 @@ public:
     static QString name(Command command);
     static QString codeText(quint8 code); ///< "0xA2"
     /// Whether an RS485 drive of `generation` has `command` (nothing it lacks is ever sent to
-    /// it).
+    /// it); never a CAN-only command.
     static bool availableOn(Command command, Generation generation);
     /// Whether a drive of `context`'s link and generation has `command`: on CAN there is no
-    /// 0x12, 0x93 or 0x40..0x44; the old CAN generation has no working 0x95 (docs/CAN.md).
+    /// 0x12, 0x93 or 0x40..0x44; the old CAN generation has no working 0x95; only CAN V2.36
+    /// has 0xC0/0xC1 (docs/CAN.md).
     static bool availableOn(Command command, const DecodeContext &context);
+    /// The command of an RS485 frame's code: nullptr for codes outside the table and for the
+    /// CAN-only ones.
+    static const CommandInfo *findOnRs485(quint8 code);
 };
 
 } // namespace lk::protocol

@@ -50,12 +50,26 @@ QJsonObject angleFields(qint64 angleRaw, const std::optional<quint32> &maxSpeedR
     return o;
 }
 
+/// {"<key>": its name (or its code when unknown), "<key>_id": the ID byte}.
+QJsonObject head(const QString &key, const char *name, quint8 paramId)
+{
+    return {{key, name ? QString::fromLatin1(name) : CommandTable::codeText(paramId)},
+            {key + QLatin1String("_id"), integer(paramId)}};
+}
+
 QJsonObject paramHead(quint8 paramId)
 {
     const ParamInfo *info = ParamTable::find(paramId);
-    return {{QStringLiteral("param"),
-             info ? QString::fromLatin1(info->name) : CommandTable::codeText(paramId)},
-            {QStringLiteral("param_id"), integer(paramId)}};
+    return head(QStringLiteral("param"), info ? info->name : nullptr, paramId);
+}
+
+/// The six value bytes of a parameter nobody knows, as hex.
+QString valueBytes(const std::array<quint8, 6> &bytes)
+{
+    QByteArray raw;
+    for (quint8 b : bytes)
+        raw.append(char(b));
+    return FieldJson::hexText(raw);
 }
 
 // A parameter's value under the field names of V2.3 where they exist (angle_kp ... iq_ki,
@@ -65,10 +79,7 @@ QJsonObject parameterFields(const ParameterValue &v)
     QJsonObject o = paramHead(v.paramId);
     const std::optional<ParamId> id = v.id();
     if (!id) {
-        QByteArray raw;
-        for (quint8 b : v.bytes)
-            raw.append(char(b));
-        o.insert(QStringLiteral("value_bytes"), FieldJson::hexText(raw));
+        o.insert(QStringLiteral("value_bytes"), valueBytes(v.bytes));
         return o;
     }
     switch (ParamTable::info(*id).layout) {
@@ -92,6 +103,45 @@ QJsonObject parameterFields(const ParameterValue &v)
         } else {
             o.insert(ProtocolFields::ofParam(*id).constFirst().name, integer(v.asInt32()));
         }
+        break;
+    }
+    return o;
+}
+
+QJsonObject controlParamHead(quint8 paramId)
+{
+    const ControlParamInfo *info = ControlParamTable::find(paramId);
+    return head(QStringLiteral("control_param"), info ? info->name : nullptr, paramId);
+}
+
+// A CAN V2.36 control parameter under the field names of its V2.35 counterpart
+// (ProtocolFields::ofControlParam): angle_kp..iq_kd, max_torque, max_speed_dps (+ _raw),
+// max_angle_deg (+ max_angle_raw), current_ramp_raw (no unit is known), speed_ramp_dps2.
+QJsonObject controlParamFields(const ControlParameter &v)
+{
+    QJsonObject o = controlParamHead(v.paramId);
+    const std::optional<ControlParamId> id = v.id();
+    if (!id) {
+        o.insert(QStringLiteral("value_bytes"), valueBytes(v.bytes));
+        return o;
+    }
+    const QList<FieldSpec> fields = ProtocolFields::ofControlParam(*id);
+    if (fields.size() == 3) {
+        for (int i = 0; i < 3; ++i)
+            o.insert(fields.at(i).name, integer(v.pid()[size_t(i)]));
+        return o;
+    }
+    switch (*id) {
+    case ControlParamId::InputSpeedLimit:
+        o.insert(QStringLiteral("max_speed_dps"), centi(v.value()));
+        o.insert(QStringLiteral("max_speed_raw"), integer(v.value()));
+        break;
+    case ControlParamId::InputAngleLimit:
+        o.insert(QStringLiteral("max_angle_deg"), centi(v.value()));
+        o.insert(QStringLiteral("max_angle_raw"), integer(v.value()));
+        break;
+    default:
+        o.insert(fields.constFirst().name, integer(v.value()));
         break;
     }
     return o;
@@ -159,6 +209,8 @@ struct RequestFieldVisitor {
         return angleFields(c.angleRaw, c.maxSpeedRaw);
     }
     QJsonObject operator()(const ParamRead &p) const { return paramHead(p.paramId); }
+    QJsonObject operator()(const ControlParamRead &p) const { return controlParamHead(p.paramId); }
+    QJsonObject operator()(const ControlParameter &v) const { return controlParamFields(v); }
     QJsonObject operator()(const ParameterValue &v) const { return parameterFields(v); }
     QJsonObject operator()(const BrakeCommand &b) const
     {
@@ -248,6 +300,7 @@ struct ReplyFieldVisitor {
     }
     QJsonObject operator()(const ModelInfo &m) const { return modelFields(m); }
     QJsonObject operator()(const ParameterValue &v) const { return parameterFields(v); }
+    QJsonObject operator()(const ControlParameter &v) const { return controlParamFields(v); }
     QJsonObject operator()(const ParamWriteResult &r) const
     {
         QJsonObject o = paramHead(r.paramId);

@@ -81,6 +81,46 @@ QString parameterText(const ParameterValue &v)
     return paramName(v.paramId);
 }
 
+QString controlParamName(quint8 paramId)
+{
+    const ControlParamInfo *info = ControlParamTable::find(paramId);
+    return info ? QString::fromLatin1(info->name)
+                : QStringLiteral("control param 0x%1").arg(paramId, 2, 16, QLatin1Char('0'));
+}
+
+/// A CAN V2.36 control parameter: its value in the unit inferred for it (docs/CAN.md section
+/// 4.1); the input current ramp has none, so its raw number and "unit unknown".
+QString controlParamText(const ControlParameter &v)
+{
+    const QString name = controlParamName(v.paramId);
+    const std::optional<ControlParamId> id = v.id();
+    if (!id)
+        return name;
+    switch (*id) {
+    case ControlParamId::AnglePid:
+    case ControlParamId::SpeedPid:
+    case ControlParamId::CurrentPid:
+        return QCoreApplication::translate("lk::protocol::FieldText", "%1 Kp %2 Ki %3 Kd %4")
+            .arg(name)
+            .arg(v.pid()[0])
+            .arg(v.pid()[1])
+            .arg(v.pid()[2]);
+    case ControlParamId::InputTorqueLimit:
+        return QStringLiteral("%1 %2").arg(name).arg(v.value());
+    case ControlParamId::InputSpeedLimit:
+        return QStringLiteral("%1 %2 dps").arg(name, centi(v.value()));
+    case ControlParamId::InputAngleLimit:
+        return QStringLiteral("%1 %2 deg").arg(name, centi(v.value()));
+    case ControlParamId::InputCurrentRamp:
+        return QCoreApplication::translate("lk::protocol::FieldText", "%1 %2 (unit unknown)")
+            .arg(name)
+            .arg(v.value());
+    case ControlParamId::InputSpeedRamp:
+        return QStringLiteral("%1 %2 dps/s").arg(name).arg(v.value());
+    }
+    return name;
+}
+
 QString brakeText(BrakeAction a)
 {
     switch (a) {
@@ -98,6 +138,8 @@ struct RequestTextVisitor {
     DecodeContext context;
     QString operator()(const NoPayload &) const { return {}; }
     QString operator()(const ParamRead &p) const { return paramName(p.paramId); }
+    QString operator()(const ControlParamRead &p) const { return controlParamName(p.paramId); }
+    QString operator()(const ControlParameter &v) const { return controlParamText(v); }
     QString operator()(const ParameterValue &v) const { return parameterText(v); }
     QString operator()(const BrakeCommand &b) const { return brakeText(b.action); }
     QString operator()(const PidGains &g) const { return pidText(g); }
@@ -230,6 +272,7 @@ struct ReplyTextVisitor {
     }
     QString operator()(const ModelInfo &m) const { return modelText(m); }
     QString operator()(const ParameterValue &v) const { return parameterText(v); }
+    QString operator()(const ControlParameter &v) const { return controlParamText(v); }
     QString operator()(const ParamWriteResult &r) const
     {
         return r.succeeded()

@@ -169,6 +169,15 @@ const QList<ProtocolField> &table()
         number(FieldId::SpeedRampDps2, "speed_ramp_dps2", false, "dps/s", 1, 1, 0, kInt32Max,
                "0..2147483647 dps/s")
             .shown("speed ramp", "dps/s"),
+        // CAN V2.36 control parameters (docs/CAN.md section 4.1): int32 where V2.35 has an
+        // int64 angle and an int16 current ramp; the ramp's unit is unknown, so its raw value.
+        {"control_param", FieldId::ControlParam, false, "", 1, 1, K::Choice, 0, 0, ""},
+        out("control_param_id"),
+        number(FieldId::ControlMaxAngleDeg, "max_angle_deg", true, "deg", 1, 100, 0, kInt32Max,
+               "0..21474836.47 deg"),
+        integer(FieldId::ControlCurrentRampRaw, "current_ramp_raw", 0, kInt32Max,
+                "0..2147483647 (unit unknown)")
+            .shown("current ramp (raw, unit unknown)"),
         out("value_bytes"),
         out("success"),
         out("success_flag"),
@@ -190,6 +199,14 @@ QString paramWords()
 {
     QStringList names;
     for (const ParamInfo &p : ParamTable::all())
+        names << QString::fromLatin1(p.name);
+    return names.join(QLatin1Char('|'));
+}
+
+QString controlParamWords()
+{
+    QStringList names;
+    for (const ControlParamInfo &p : ControlParamTable::all())
         names << QString::fromLatin1(p.name);
     return names.join(QLatin1Char('|'));
 }
@@ -226,8 +243,10 @@ const ProtocolField &ProtocolFields::field(FieldId id)
 FieldSpec ProtocolFields::spec(FieldId id)
 {
     const ProtocolField &f = field(id);
-    return {QString::fromLatin1(f.name), f.kind,
-            id == FieldId::Param ? paramWords() : QString::fromLatin1(f.range), id};
+    const QString range = id == FieldId::Param          ? paramWords()
+                          : id == FieldId::ControlParam ? controlParamWords()
+                                                        : QString::fromLatin1(f.range);
+    return {QString::fromLatin1(f.name), f.kind, range, id};
 }
 
 FieldSpec ProtocolFields::idSpec()
@@ -298,6 +317,9 @@ QList<FieldSpec> ProtocolFields::ofCommand(Command command)
         return specs({FieldId::Param});
     case Command::Brake:
         return specs({FieldId::Action});
+    case Command::ReadControlParam:
+    case Command::WriteControlParam:
+        return specs({FieldId::ControlParam});
     default:
         return {};
     }
@@ -344,6 +366,29 @@ QList<FieldSpec> ProtocolFields::ofParam(ParamId param)
     case ParamId::CurrentRamp:
         return specs({FieldId::CurrentRamp});
     case ParamId::SpeedRamp:
+        return specs({FieldId::SpeedRampDps2});
+    }
+    return {};
+}
+
+QList<FieldSpec> ProtocolFields::ofControlParam(ControlParamId param)
+{
+    switch (param) {
+    case ControlParamId::AnglePid:
+        return ofParam(ParamId::AnglePid);
+    case ControlParamId::SpeedPid:
+        return ofParam(ParamId::SpeedPid);
+    case ControlParamId::CurrentPid:
+        return ofParam(ParamId::CurrentPid);
+    case ControlParamId::InputTorqueLimit:
+        return specs({FieldId::MaxTorque});
+    case ControlParamId::InputSpeedLimit:
+        return specs({FieldId::ParamMaxSpeedDps});
+    case ControlParamId::InputAngleLimit:
+        return specs({FieldId::ControlMaxAngleDeg});
+    case ControlParamId::InputCurrentRamp:
+        return specs({FieldId::ControlCurrentRampRaw});
+    case ControlParamId::InputSpeedRamp:
         return specs({FieldId::SpeedRampDps2});
     }
     return {};

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Command.h"
+#include "ControlParameter.h"
 #include "Parameter.h"
 #include "Series.h"
 
@@ -49,6 +50,9 @@ enum class FieldId : quint8 {
     MaxAngleDeg,
     CurrentRamp,
     SpeedRampDps2,
+    ControlParam,          ///< CAN V2.36 0xC0/0xC1: which control parameter
+    ControlMaxAngleDeg,    ///< CAN V2.36 input angle limit: int32 of 0.01 deg
+    ControlCurrentRampRaw, ///< CAN V2.36 input current ramp: int32, unit unknown
 };
 
 /// How a request field is written on the command line (`lkctl encode`).
@@ -131,6 +135,10 @@ public:
     static QList<FieldSpec> ofCommand(Command command);
     /// The value fields of one V2.35 parameter (write_param_ram/rom after `param`).
     static QList<FieldSpec> ofParam(ParamId param);
+    /// The value fields of one CAN V2.36 control parameter (write_control_param after
+    /// `control_param`): the V2.35 parameter's where the wire range is the same (gains, torque
+    /// limit, speed limit, speed ramp), int32 ones for the angle limit and the current ramp.
+    static QList<FieldSpec> ofControlParam(ControlParamId param);
     /// The row that names a one-value V2.35 parameter on a drive of `series`: ParamID 0x99 is
     /// "max power" on MS (whose commands and replies carry power) and "max torque current"
     /// on MF/MG/MH (and an unknown series). The one place both names live.

@@ -92,6 +92,10 @@ struct PayloadEncoder {
         return WireWriter().put(r.paramId).put(r.flag).bytes();
     }
     QByteArray operator()(const BrakeState &b) const { return WireWriter().put(b.raw).bytes(); }
+    QByteArray operator()(const ControlParameter &v) const // CAN V2.36 only: B1..B7
+    {
+        return Request{Command::WriteControlParam, 1, v}.toFrame().data;
+    }
     QByteArray operator()(const ModelInfo &m) const
     {
         WireWriter w(58);
@@ -209,6 +213,9 @@ ReplyPayload decodePayload(Command cmd, const QByteArray &d, const DecodeContext
     case Command::IncrementPosition:
     case Command::IncrementPositionLimited:
         return readState2(r, ctx.reportsPower() && cmd != Command::Torque, ctx);
+    case Command::ReadControlParam: // CAN only: never decoded from an RS485 frame
+    case Command::WriteControlParam:
+        break;
     }
     return Acknowledged{};
 }
@@ -232,7 +239,7 @@ ReplyDecodeResult decodeReply(const Frame &frame, const DecodeContext &context)
     if (context.link == Link::Can)
         return can::decodeReply(frame, context);
     ReplyDecodeResult result;
-    const CommandInfo *info = CommandTable::find(frame.command);
+    const CommandInfo *info = CommandTable::findOnRs485(frame.command);
     if (!info) {
         result.error = DecodeError::UnknownCommand;
         return result;

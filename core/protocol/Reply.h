@@ -20,11 +20,13 @@ struct Acknowledged {}; ///< echo of a request without data (motor_off/stop/run,
 /// read_single_turn -> SingleTurnAngle; read_state1/clear_errors -> State1;
 /// read_state2 and 0xA0..0xA8 -> State2; read_state3 -> State3; read_model -> ModelInfo;
 /// motor_off/stop/run, clear_angle, clear_turn_count -> Acknowledged; read_param ->
-/// ParameterValue; write_param_ram/rom -> ParamWriteResult; brake -> BrakeState.
+/// ParameterValue; write_param_ram/rom -> ParamWriteResult; brake -> BrakeState;
+/// read_control_param/write_control_param -> ControlParameter (CAN V2.36: the value held, after
+/// a write the value the drive took).
 using ReplyPayload =
     std::variant<Acknowledged, PidGains, Acceleration, EncoderReading, EncoderOffset, ZeroWritten,
                  MultiTurnAngle, SingleTurnAngle, State1, State2, State3, ModelInfo, ParameterValue,
-                 ParamWriteResult, BrakeState>;
+                 ParamWriteResult, BrakeState, ControlParameter>;
 
 /// A typed drive -> host reply.
 struct Reply {

@@ -19,11 +19,11 @@ QByteArray pidBytes(const PidGains &g)
         .bytes();
 }
 
-QByteArray parameterBytes(const ParameterValue &v)
+QByteArray parameterBytes(quint8 paramId, const std::array<quint8, 6> &bytes)
 {
     WireWriter w(7);
-    w.put(v.paramId);
-    for (quint8 b : v.bytes)
+    w.put(paramId);
+    for (quint8 b : bytes)
         w.put(b);
     return w.bytes();
 }
@@ -80,7 +80,16 @@ struct PayloadEncoder {
     {
         return WireWriter().put(p.paramId).put(quint8(0)).bytes();
     }
-    QByteArray operator()(const ParameterValue &v) const { return parameterBytes(v); }
+    QByteArray operator()(const ParameterValue &v) const
+    {
+        return parameterBytes(v.paramId, v.bytes);
+    }
+    // CAN V2.36 only: B1..B7 of the CAN frame (LinkCodec never sends them on RS485).
+    QByteArray operator()(const ControlParamRead &p) const { return parameterBytes(p.paramId, {}); }
+    QByteArray operator()(const ControlParameter &v) const
+    {
+        return parameterBytes(v.paramId, v.bytes);
+    }
     QByteArray operator()(const BrakeCommand &b) const
     {
         return WireWriter().put(static_cast<quint8>(b.action)).bytes();
@@ -166,7 +175,7 @@ Frame Request::toFrame() const
 RequestDecodeResult decodeRequest(const Frame &frame)
 {
     RequestDecodeResult result;
-    const CommandInfo *info = CommandTable::find(frame.command);
+    const CommandInfo *info = CommandTable::findOnRs485(frame.command);
     if (!info) {
         result.error = DecodeError::UnknownCommand;
         return result;

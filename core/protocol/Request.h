@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Command.h"
+#include "ControlParameter.h"
 #include "FieldError.h"
 #include "Frame.h"
 #include "Parameter.h"
@@ -14,11 +15,13 @@ namespace lk::protocol {
 struct NoPayload {};
 
 /// The payload of a request, by command: empty for reads and off/stop/run; read_param ->
-/// ParamRead; write_param_ram/rom -> ParameterValue; brake -> BrakeCommand.
+/// ParamRead; write_param_ram/rom -> ParameterValue; brake -> BrakeCommand;
+/// read_control_param -> ControlParamRead; write_control_param -> ControlParameter (CAN V2.36).
 using RequestPayload =
     std::variant<NoPayload, PidGains, Acceleration, EncoderOffset, OpenLoopCommand, TorqueCommand,
                  SpeedCommand, MultiPositionCommand, SinglePositionCommand,
-                 IncrementPositionCommand, ParamRead, ParameterValue, BrakeCommand>;
+                 IncrementPositionCommand, ParamRead, ParameterValue, BrakeCommand,
+                 ControlParamRead, ControlParameter>;
 
 /// A host -> drive request. Built with the functions in RequestBuilder.h it has passed the
 /// wire ranges of the spec and ERRATA; read back with decodeRequest() it holds the values as

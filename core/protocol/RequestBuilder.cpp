@@ -332,4 +332,55 @@ BuildResult brake(int id, BrakeAction action)
     return done(Command::Brake, id, BrakeCommand{action});
 }
 
+BuildResult readControlParam(int id, ControlParamId param)
+{
+    if (auto e = checkId(id))
+        return fail(e->field, e->range, e->problem);
+    return done(Command::ReadControlParam, id, ControlParamRead{static_cast<quint8>(param)});
+}
+
+BuildResult writeControlParamPid(int id, ControlParamId param, qint64 kp, qint64 ki, qint64 kd)
+{
+    if (auto e = checkId(id))
+        return fail(e->field, e->range, e->problem);
+    if (ControlParamTable::info(param).layout != ControlParamLayout::Pid)
+        return fail(QStringLiteral("control_param"), QStringLiteral("angle_pid|speed_pid|iq_pid"),
+                    ControlParamTable::name(param));
+    const QList<FieldSpec> fields = ProtocolFields::ofControlParam(param); // Kp, Ki, Kd
+    const qint64 gains[] = {kp, ki, kd};
+    for (qsizetype i = 0; i < fields.size(); ++i) {
+        if (!inRange(fields.at(i).id, gains[i]))
+            return refuse(fields.at(i).id, double(gains[i]));
+    }
+    return done(Command::WriteControlParam, id,
+                ControlParameter::ofPid(param, quint16(kp), quint16(ki), quint16(kd)));
+}
+
+BuildResult writeControlParam(int id, ControlParamId param, double value)
+{
+    if (auto e = checkId(id))
+        return fail(e->field, e->range, e->problem);
+    if (ControlParamTable::info(param).layout == ControlParamLayout::Pid)
+        return fail(QStringLiteral("control_param"),
+                    QStringLiteral("input_torque_limit|input_speed_limit|input_angle_limit|"
+                                   "input_current_ramp|input_speed_ramp"),
+                    ControlParamTable::name(param));
+    const FieldId field = ProtocolFields::ofControlParam(param).constFirst().id;
+    const auto raw = value < 0 ? std::nullopt : scaled(field, value); // no negative limits
+    if (!raw)
+        return refuse(field, value);
+    return done(Command::WriteControlParam, id,
+                ControlParameter::ofValue(param, static_cast<qint32>(*raw)));
+}
+
+BuildResult writeControlParam(int id, const ControlParameter &value)
+{
+    if (auto e = checkId(id))
+        return fail(e->field, e->range, e->problem);
+    if (!value.id())
+        return fail(QStringLiteral("control_param"), QStringLiteral("0x0A..0x26"),
+                    CommandTable::codeText(value.paramId));
+    return done(Command::WriteControlParam, id, value);
+}
+
 } // namespace lk::protocol::build

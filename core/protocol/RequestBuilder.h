@@ -47,6 +47,19 @@ BuildResult writeParamPid(int id, ParamId param, qint64 kp, qint64 ki, qint64 kd
 BuildResult writeParam(int id, ParamId param, double value, bool rom);
 BuildResult brake(int id, BrakeAction action);
 
+// CAN V2.36 only (docs/CAN.md section 4.1): 0xC0 reads a control parameter, 0xC1 writes it to
+// RAM. There is no ROM write. Sent to anything but a CAN V2.36 drive they are refused, nothing
+// sent (LinkCodec, MotorRegistry).
+BuildResult readControlParam(int id, ControlParamId param);
+/// A PID control parameter (angle_pid, speed_pid, iq_pid): Kp, Ki, Kd each 0..65535.
+BuildResult writeControlParamPid(int id, ControlParamId param, qint64 kp, qint64 ki, qint64 kd);
+/// A one-number control parameter in the unit of its field (ProtocolFields::ofControlParam):
+/// the torque limit in iq units 0..2048, the speed limit in dps (0.01 dps on the wire), the
+/// angle limit in deg (0.01 deg), the current ramp raw (unit unknown), the speed ramp dps/s.
+BuildResult writeControlParam(int id, ControlParamId param, double value);
+/// The write of a value read or built before (the bytes as they are; the ID checked).
+BuildResult writeControlParam(int id, const ControlParameter &value);
+
 /// The ID check shared by every builder: 1..32.
 std::optional<FieldError> checkId(int id);
 

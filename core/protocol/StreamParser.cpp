@@ -158,7 +158,7 @@ void StreamParser::process(const Sink &sink)
             continue;
         }
         const std::optional<FrameDirection> dir = ev.frame.direction();
-        if (!CommandTable::find(cmd)) {
+        if (!CommandTable::findOnRs485(cmd)) {
             ev.error = ParseError::UnknownCommand;
         } else if (!dir) {
             ev.error = ParseError::BadLength;

@@ -151,10 +151,14 @@ void SimDrive::applyParams()
 
 std::optional<Reply> SimDrive::handle(const Request &r)
 {
-    // A drive is silent to what its series or its generation does not implement.
+    // A drive is silent to what its series or its generation does not implement. 0xC0/0xC1
+    // reach it only from the CAN front (no RS485 frame decodes to them): a V2.36 drive's.
+    const bool canV236 = protocol::CommandTable::info(r.command).canOnly && isV235();
     if (r.id != m_id || !motor::supports(series(), r.command) ||
-        !protocol::CommandTable::availableOn(r.command, generation()))
+        (!canV236 && !protocol::CommandTable::availableOn(r.command, generation())))
         return std::nullopt;
+    if (canV236)
+        return handleV235(r); // nullopt there is silence, not "go on to the motion handler"
     if (auto reply = handleV235(r))
         return reply;
     if (auto reply = handleParameter(r))
@@ -236,6 +240,23 @@ std::optional<Reply> SimDrive::handleV235(const Request &r)
         }
         return Reply{r.command, r.id,
                      protocol::ParamWriteResult{value.paramId, quint8(ok ? 0 : 1)}};
+    }
+    case Command::ReadControlParam: {
+        const auto value =
+            m_ramParams.readControl(std::get<protocol::ControlParamRead>(r.payload).paramId);
+        if (!value)
+            return std::nullopt; // an unknown ID gets no answer (untested on hardware)
+        return Reply{r.command, r.id, *value};
+    }
+    case Command::WriteControlParam: {
+        // RAM only, effective at once; the reply carries the value the drive holds after the
+        // write (the old one when the write was refused). No command writes it to ROM.
+        const auto value = std::get<protocol::ControlParameter>(r.payload);
+        if (!value.id())
+            return std::nullopt;
+        if (!m_model.quirks.paramWriteRefused && m_ramParams.writeControl(value))
+            applyParams();
+        return Reply{r.command, r.id, *m_ramParams.readControl(value.paramId)};
     }
     case Command::Brake: {
         const auto action = std::get<protocol::BrakeCommand>(r.payload).action;

@@ -1,6 +1,7 @@
 #include "SimParams.h"
 
 #include <algorithm>
+#include <cstdint>
 
 namespace lk::sim {
 
@@ -35,7 +36,7 @@ std::optional<ParameterValue> SimParams::read(quint8 paramId) const
     case ParamId::MaxAngleHigh:
         return ParameterValue::maxAngleHalf(maxAngleRaw, true);
     case ParamId::CurrentRamp:
-        return ParameterValue::int16(info->id, currentRamp);
+        return ParameterValue::int16(info->id, static_cast<qint16>(currentRamp));
     case ParamId::SpeedRamp:
         return ParameterValue::int32(info->id, speedRampDps2);
     }
@@ -77,6 +78,71 @@ bool SimParams::write(const ParameterValue &v)
         break;
     case ParamId::SpeedRamp:
         speedRampDps2 = v.asInt32();
+        break;
+    }
+    return true;
+}
+
+std::optional<protocol::ControlParameter> SimParams::readControl(quint8 paramId) const
+{
+    using protocol::ControlParameter;
+    using protocol::ControlParamId;
+    const protocol::ControlParamInfo *info = protocol::ControlParamTable::find(paramId);
+    if (!info)
+        return std::nullopt;
+    switch (info->id) {
+    case ControlParamId::AnglePid:
+        return ControlParameter::ofPid(info->id, anglePid[0], anglePid[1], anglePid[2]);
+    case ControlParamId::SpeedPid:
+        return ControlParameter::ofPid(info->id, speedPid[0], speedPid[1], speedPid[2]);
+    case ControlParamId::CurrentPid:
+        return ControlParameter::ofPid(info->id, currentPid[0], currentPid[1], currentPid[2]);
+    case ControlParamId::InputTorqueLimit:
+        return ControlParameter::ofValue(info->id, maxTorque);
+    case ControlParamId::InputSpeedLimit:
+        return ControlParameter::ofValue(info->id, maxSpeedRaw);
+    case ControlParamId::InputAngleLimit:
+        return ControlParameter::ofValue(
+            info->id, static_cast<qint32>(std::clamp<qint64>(maxAngleRaw, INT32_MIN, INT32_MAX)));
+    case ControlParamId::InputCurrentRamp:
+        return ControlParameter::ofValue(info->id, currentRamp);
+    case ControlParamId::InputSpeedRamp:
+        return ControlParameter::ofValue(info->id, speedRampDps2);
+    }
+    return std::nullopt;
+}
+
+bool SimParams::writeControl(const protocol::ControlParameter &v)
+{
+    using protocol::ControlParamId;
+    const std::optional<ControlParamId> id = v.id();
+    if (!id)
+        return false;
+    const std::array<quint16, 3> k = v.pid();
+    switch (*id) {
+    case ControlParamId::AnglePid:
+        anglePid = k;
+        break;
+    case ControlParamId::SpeedPid:
+        speedPid = k;
+        break;
+    case ControlParamId::CurrentPid:
+        currentPid = k;
+        break;
+    case ControlParamId::InputTorqueLimit:
+        maxTorque = static_cast<qint16>(v.value());
+        break;
+    case ControlParamId::InputSpeedLimit:
+        maxSpeedRaw = v.value();
+        break;
+    case ControlParamId::InputAngleLimit:
+        maxAngleRaw = v.value();
+        break;
+    case ControlParamId::InputCurrentRamp:
+        currentRamp = v.value();
+        break;
+    case ControlParamId::InputSpeedRamp:
+        speedRampDps2 = v.value();
         break;
     }
     return true;

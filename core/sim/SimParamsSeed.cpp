@@ -39,7 +39,7 @@ SimRom SimParamsSeed::seeded(const SimRom &factory, int id, quint32 seed)
     p.maxTorque = static_cast<qint16>(pick(seed, id, n++, 500, 1500));
     p.maxSpeedRaw = static_cast<qint32>(pick(seed, id, n++, 10, 90) * 10000);
     p.maxAngleRaw = pick(seed, id, n++, 0, 20) * 36000;
-    p.currentRamp = static_cast<qint16>(pick(seed, id, n++, 0, 1000));
+    p.currentRamp = static_cast<qint32>(pick(seed, id, n++, 0, 1000));
     p.speedRampDps2 = static_cast<qint32>(pick(seed, id, n++, 5, 50) * 1000);
     return rom;
 }

@@ -61,12 +61,14 @@ void GainKeeper::read(int id, Done done)
     m_read.reset();
     m_inRam.reset();
     const protocol::Generation generation = m_session.knownMotors().value(id).generation;
+    // On CAN V2.36 the gains are control parameters (0xC0/0xC1), RAM only.
+    const protocol::Link link = m_session.connection().link;
     const quint64 run = ++m_run;
     auto decoded = std::make_shared<bool>(false);
     sendAll(
-        LoopGains::reads(id, generation), run,
-        [this, generation, decoded](const QVector<protocol::Reply> &replies) {
-            m_read = LoopGains::decode(generation, replies);
+        LoopGains::reads(id, generation, link), run,
+        [this, generation, link, decoded](const QVector<protocol::Reply> &replies) {
+            m_read = LoopGains::decode(generation, replies, link);
             m_inRam = m_read;
             *decoded = m_read.has_value();
         },
@@ -80,7 +82,7 @@ void GainKeeper::read(int id, Done done)
 
 void GainKeeper::write(const LoopGains &gains, Done done)
 {
-    if (!m_read || gains.generation != m_read->generation) {
+    if (!m_read || gains.generation != m_read->generation || gains.link != m_read->link) {
         QTimer::singleShot(0, this, [done] {
             done(false, QStringLiteral("the gains were not read on this connection: nothing "
                                        "was written"));

@@ -133,6 +133,12 @@ struct Fields {
         m[QStringLiteral("kind")] = "brake";
         m[QStringLiteral("brake_raw")] = b.raw;
     }
+    void operator()(const proto::ControlParameter &v)
+    {
+        m[QStringLiteral("kind")] = "control_param";
+        m[QStringLiteral("param_id")] = v.paramId;
+        m[QStringLiteral("value_i32")] = v.value();
+    }
 };
 
 inline QVariantMap fields(const proto::Reply &r)

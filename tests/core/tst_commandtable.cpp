@@ -70,7 +70,12 @@ const Expected kExpected[] = {
     {0x44, "write_param_rom", 7, 2, -1, false, false, true},
     {0x8C, "brake", 1, 1, -1, false, false, false},
     {0x93, "clear_turn_count", 0, 0, -1, true, false, false}, // PDF "8 byte" is a typo
+    // CAN V2.36 only (docs/CAN.md section 4.1): lengths of a CAN frame's B1..B7, RAM only.
+    {0xC0, "read_control_param", 7, 7, -1, false, false, false},
+    {0xC1, "write_control_param", 7, 7, -1, false, false, false},
 };
+constexpr int kRs485Commands = 33;
+constexpr int kCanOnlyCommands = 2;
 
 bool isExpectedCode(int code)
 {
@@ -135,8 +140,9 @@ void tst_CommandTable::everyCommand()
 
 void tst_CommandTable::tableHasExactly33DistinctEntries()
 {
-    QCOMPARE(CommandTable::kCount, 33);
-    QCOMPARE(int(CommandTable::all().size()), 33);
+    QCOMPARE(CommandTable::kCount, kRs485Commands + kCanOnlyCommands);
+    QCOMPARE(int(CommandTable::all().size()), CommandTable::kCount);
+    int rs485 = 0;
     QSet<int> codes;
     QSet<QString> names;
     for (const CommandInfo &c : CommandTable::all()) {
@@ -144,9 +150,14 @@ void tst_CommandTable::tableHasExactly33DistinctEntries()
         names.insert(QString::fromLatin1(c.name));
         QVERIFY2(isExpectedCode(static_cast<int>(c.command)), c.name);
         QCOMPARE(CommandTable::find(static_cast<quint8>(c.command)), &c);
+        // An RS485 frame never carries a CAN-only code: the stream parser calls it unknown.
+        QCOMPARE(CommandTable::findOnRs485(static_cast<quint8>(c.command)),
+                 c.canOnly ? nullptr : &c);
+        rs485 += c.canOnly ? 0 : 1;
     }
-    QCOMPARE(codes.size(), 33);
-    QCOMPARE(names.size(), 33);
+    QCOMPARE(rs485, kRs485Commands);
+    QCOMPARE(codes.size(), CommandTable::kCount);
+    QCOMPARE(names.size(), CommandTable::kCount);
 }
 
 void tst_CommandTable::unknownCodes_data()
@@ -176,7 +187,7 @@ void tst_CommandTable::onlyTheTableCodesAreKnown()
         QVERIFY2(found == isExpectedCode(code), qPrintable(QString::number(code, 16)));
         known += found ? 1 : 0;
     }
-    QCOMPARE(known, 33);
+    QCOMPARE(known, CommandTable::kCount);
 }
 
 void tst_CommandTable::unknownNames_data()
@@ -240,6 +251,8 @@ void tst_CommandTable::availabilityByLink_data()
     QTest::newRow("0x9A read_state1") << 0x9A << "1111";
     QTest::newRow("0xA2 speed") << 0xA2 << "1111";
     QTest::newRow("0xA8 increment_position_limited") << 0xA8 << "1111";
+    QTest::newRow("0xC0 read_control_param") << 0xC0 << "0001";
+    QTest::newRow("0xC1 write_control_param") << 0xC1 << "0001";
 }
 
 void tst_CommandTable::availabilityByLink()

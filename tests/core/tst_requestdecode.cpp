@@ -101,6 +101,14 @@ struct Describe {
     {
         return QStringLiteral("brake %1").arg(int(b.action));
     }
+    QString operator()(const proto::ControlParamRead &p) const
+    {
+        return QStringLiteral("read control param %1").arg(p.paramId);
+    }
+    QString operator()(const proto::ControlParameter &v) const
+    {
+        return QStringLiteral("control param %1 = %2").arg(v.paramId).arg(v.value());
+    }
 };
 
 QString describe(const Request &r)

@@ -127,6 +127,8 @@ void tst_FieldJson::replyFieldsCoverEveryCommand()
           "over_temperature"}},
     };
     for (const CommandInfo &info : CommandTable::all()) {
+        if (info.canOnly) // CAN V2.36's 0xC0/0xC1: lkctl encode/decode work on RS485 frames
+            continue;
         const Frame f{quint8(info.command), 1, QByteArray(info.replyLength, '\x01')};
         const ReplyDecodeResult r = decodeReply(f);
         QVERIFY2(r.reply, info.name);

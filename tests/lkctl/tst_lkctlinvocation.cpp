@@ -46,6 +46,7 @@ class tst_LkctlInvocation : public QObject {
 private slots:
     void initTestCase();
     void shortVersion();
+    void romWriteToCan236IsRefused();
     void portFromEnvironment();
     void commandLineWinsOverPortVariable();
     void simWinsOverPortVariable();
@@ -72,6 +73,21 @@ void tst_LkctlInvocation::shortVersion()
     QCOMPARE(shortForm.exitCode, 0);
     QCOMPARE(shortForm.out, QByteArray("lkctl " LK_VERSION "\n"));
     QCOMPARE(shortForm.out, longForm.out);
+}
+
+void tst_LkctlInvocation::romWriteToCan236IsRefused()
+{
+    // A CAN V2.36 drive keeps its control parameters in RAM only: --rom is refused by name,
+    // --yes or not, before the bus is opened (nothing can be sent).
+    const CtlResult r =
+        lkctl({QStringLiteral("write"), QStringLiteral("2"), QStringLiteral("param"),
+               QStringLiteral("angle_pid"), QStringLiteral("1"), QStringLiteral("2"),
+               QStringLiteral("3"), QStringLiteral("--rom"), QStringLiteral("--yes"),
+               QStringLiteral("--can"), QStringLiteral("virtualcan:can0"),
+               QStringLiteral("--drives"), QStringLiteral("2:MF@can236")});
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains("RAM only"), r.err.constData());
+    QVERIFY2(r.err.contains("nothing was sent"), r.err.constData());
 }
 
 void tst_LkctlInvocation::portFromEnvironment()

@@ -61,6 +61,8 @@ std::optional<Owner> ownerOf(FieldId id)
                            [id](const FieldSpec &s) { return s.id == id; });
     };
     for (const CommandInfo &info : CommandTable::all()) {
+        if (info.canOnly) // CAN V2.36's 0xC0/0xC1: lkctl encode/decode work on RS485 frames
+            continue;
         QList<FieldSpec> specs = ProtocolFields::ofCommand(info.command);
         specs.prepend(ProtocolFields::idSpec());
         if (info.command == Command::WriteParamRam) {
@@ -204,6 +206,8 @@ void tst_ProtocolFields::writtenKeysAreInTheTable()
     // would trail, sorted, after the known ones).
     const int unknown = int(distinctNames().size());
     for (const CommandInfo &info : CommandTable::all()) {
+        if (info.canOnly) // CAN V2.36's 0xC0/0xC1: lkctl encode/decode work on RS485 frames
+            continue;
         const std::optional<ParamId> param =
             info.command == Command::WriteParamRam || info.command == Command::WriteParamRom
                 ? std::optional<ParamId>(ParamId::MaxAngleLow)
@@ -237,6 +241,8 @@ void tst_ProtocolFields::commandFieldsFollowTheTable()
         return true;
     };
     for (const CommandInfo &info : CommandTable::all()) {
+        if (info.canOnly) // CAN V2.36's 0xC0/0xC1: lkctl encode/decode work on RS485 frames
+            continue;
         QList<FieldSpec> specs = ProtocolFields::ofCommand(info.command);
         if (info.command == Command::WriteParamRam) {
             for (const ParamInfo &p : ParamTable::all())

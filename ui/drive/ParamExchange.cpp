@@ -60,6 +60,8 @@ QString ParamExchange::write(int id, const ParamValues &values, bool rom)
     const std::optional<ParamValues> held = ParamSetSpec::known(m_held);
     if (!m_spec || !held)
         return tr("the drive's values have not been read.");
+    if (rom && m_spec->ramOnly()) // the last gate before the bus: nothing goes to ROM
+        return m_spec->texts().romTip;
     const QVector<ParamWrite> frames = m_spec->writes(id, values, *held, rom);
     if (frames.isEmpty())
         return tr("the pending edit does not differ from what the drive holds.");
@@ -113,7 +115,8 @@ void ParamExchange::onWriteResult(int id, const ParamWrite &frame, const ParamVa
     if (command == protocol::Command::WritePidRom || command == protocol::Command::WriteParamRom)
         emit romWritten(id, values, frame.fields);
     else if (command == protocol::Command::WritePidRam ||
-             command == protocol::Command::WriteParamRam)
+             command == protocol::Command::WriteParamRam ||
+             command == protocol::Command::WriteControlParam)
         emit ramWritten(id);
 }
 

@@ -69,6 +69,8 @@ public:
     virtual ~ParamSetSpec() = default;
 
     virtual protocol::Generation generation() const = 0;
+    /// The set lives in RAM only (CAN V2.36): nothing of it is ever written to ROM.
+    virtual bool ramOnly() const { return false; }
     virtual QVector<ParamField> fields() const = 0;
     virtual ParamSetTexts texts() const = 0;
     /// The requests of one complete read of drive `id`.

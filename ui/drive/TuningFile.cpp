@@ -54,8 +54,12 @@ TuningFileResult TuningFile::load(const QString &path, const ParamSetSpec &spec,
         result.status = tr("Could not load %1: %2. Nothing was changed.").arg(path, result.error);
         return result;
     }
-    result.status = tr("Loaded the parameters of drive %1 (%2, firmware %3, saved %4) into the "
-                       "pending edit: nothing is written until you write to RAM or ROM.")
+    result.status = (spec.ramOnly() ? tr("Loaded the parameters of drive %1 (%2, firmware %3, "
+                                         "saved %4) into the pending edit: nothing is written "
+                                         "until you write to RAM (this drive has no ROM write).")
+                                    : tr("Loaded the parameters of drive %1 (%2, firmware %3, "
+                                         "saved %4) into the pending edit: nothing is written "
+                                         "until you write to RAM or ROM."))
                         .arg(set->driveId)
                         .arg(set->motorName.isEmpty() ? tr("unknown motor") : set->motorName)
                         .arg(set->firmwareVersion)

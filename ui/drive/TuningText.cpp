@@ -94,16 +94,9 @@ QString TuningText::written(const TuningWrite &sent, int id)
 
 QString TuningText::can236RamOnly()
 {
-    return tr("CAN V2.36 drive: its control parameters (0xC0/0xC1) live in RAM only. A write "
-              "takes effect at once and is lost when the drive is switched off; the drive has "
-              "no command to store them in ROM, so this view has no \"Write to ROM\" button.");
-}
-
-QString TuningText::can236NotRead()
-{
-    return tr("This build does not read or write the control parameters of a CAN V2.36 drive "
-              "yet (0xC0/0xC1): nothing is sent. The RS485 parameter commands (0x40..0x44) do "
-              "not exist on CAN.");
+    return tr("CAN V2.36 keeps these in RAM only: they are lost at power-off. The drive has no "
+              "command to store its control parameters (0xC0/0xC1) in ROM, so this view has no "
+              "\"Write to ROM\" button.");
 }
 
 } // namespace lk::ui

@@ -40,8 +40,6 @@ public:
     static QString written(const TuningWrite &sent, int id);
     /// Why a CAN V2.36 drive's view has no ROM button: its control parameters live in RAM.
     static QString can236RamOnly();
-    /// What the view does with a CAN V2.36 drive's control parameters in this build.
-    static QString can236NotRead();
 };
 
 } // namespace lk::ui

@@ -313,19 +313,11 @@ bool TuningView::readComplete() const
 
 void TuningView::readFromDrive()
 {
-    if (m_ramOnly) { // V2.35's 0x40 does not exist on CAN: never send it there
-        setStatus(TuningText::can236NotRead(), true);
-        return;
-    }
     m_cycle->readFromDrive();
 }
 
 void TuningView::writeToRam()
 {
-    if (m_ramOnly) {
-        setStatus(TuningText::can236NotRead(), true);
-        return;
-    }
     m_cycle->write(TuningSetCycle::WriteKind::Ram);
 }
 
@@ -363,6 +355,8 @@ void TuningView::restoreFirstRead()
 
 const ParamSetSpec *TuningView::specFor(protocol::Generation generation) const
 {
+    if (m_ramOnly) // CAN V2.36: the control parameters, 0xC0/0xC1
+        return &m_can236;
     if (generation == protocol::Generation::V2_35)
         return &m_v235;
     return &m_v23;
@@ -426,11 +420,8 @@ void TuningView::contextChanged(Changes changes)
     m_cycle->showDrive();
     m_plot->setDrive(driveId(), series() == protocol::Series::MS);
     m_title->setText(driveTitle());
-    if (canSendToDrive() && !m_ramOnly &&
-        (changes & (Change::Session | Change::Drive | Change::Connection)))
+    if (canSendToDrive() && (changes & (Change::Session | Change::Drive | Change::Connection)))
         m_cycle->read(true);
-    if (m_ramOnly && (changes & (Change::Session | Change::Drive | Change::Connection)))
-        setStatus(TuningText::can236NotRead());
     if (linkDown && hasDrive())
         setStatus(cannotSendText(tr("Disconnected: the values shown are the last ones read. Tuning "
                                     "resumes after the drive has been read again on the next "
@@ -465,7 +456,7 @@ void TuningView::refreshWarnings()
     m_romWarning->setStyleSheet(m_romWarningActive
                                     ? StatusColors::boxStyle(StatusColors::Role::Warning, pal)
                                     : StatusColors::boxStyle(StatusColors::Role::Info, pal));
-    m_romWarning->setVisible(hasDrive());
+    m_romWarning->setVisible(hasDrive() && !m_ramOnly); // RAM only: the note says it
 }
 
 void TuningView::refreshEnabled()
@@ -479,8 +470,8 @@ void TuningView::refreshEnabled()
     m_frequency->setEnabled(!m_stepTest->isRunning());
     const bool read = canSendToDrive() && m_cycle->readComplete();
     const bool pending = m_table->pending().has_value();
-    m_read->setEnabled(canSendToDrive() && idle && !m_ramOnly);
-    m_writeRam->setEnabled(read && idle && pending && !m_ramOnly);
+    m_read->setEnabled(canSendToDrive() && idle);
+    m_writeRam->setEnabled(read && idle && pending);
     m_writeRom->setEnabled(read && idle && pending && !m_ramOnly);
     m_writeRom->setVisible(!m_ramOnly); // absent, not greyed: the drive has no ROM write
     m_ramOnlyNote->setVisible(m_ramOnly);

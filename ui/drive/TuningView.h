@@ -3,6 +3,7 @@
 #include "DriveView.h"
 #include "ParamSetSpec.h"
 #include "ParameterTable.h"
+#include "TuningSetCan236.h"
 #include "TuningSetV23.h"
 #include "TuningSetV235.h"
 
@@ -95,8 +96,9 @@ public:
     /// The set of the selected drive's generation.
     const ParamSetSpec &spec() const { return *m_spec; }
     /// The link the drives are reached over. A V2.36 drive on CAN keeps its control
-    /// parameters in RAM only (0xC0/0xC1): no ROM write is offered, and a label says why; an
-    /// old CAN drive keeps V2.3's 0x30..0x34 with RAM and ROM.
+    /// parameters in RAM only: they are read with 0xC0 and written with 0xC1 (TuningSetCan236),
+    /// no ROM write is offered, and a label says why; an old CAN drive keeps V2.3's 0x30..0x34
+    /// with RAM and ROM.
     void setLink(protocol::Link link);
     /// The selected drive is a V2.36 drive on CAN: its parameters are RAM only.
     bool isRamOnly() const { return m_ramOnly; }
@@ -145,6 +147,7 @@ private:
 
     TuningSetV23 m_v23;
     TuningSetV235 m_v235;
+    TuningSetCan236 m_can236;
     const ParamSetSpec *m_spec = &m_v23;
     TuningSetCycle *m_cycle = nullptr;
     ParameterTable *m_table = nullptr;

@@ -60,6 +60,10 @@ constexpr Title kTitles[] = {
      QT_TRANSLATE_NOOP("lk::text::CommandTitle", "Incremental position")},
     {Command::IncrementPositionLimited,
      QT_TRANSLATE_NOOP("lk::text::CommandTitle", "Incremental position with speed limit")},
+    {Command::ReadControlParam,
+     QT_TRANSLATE_NOOP("lk::text::CommandTitle", "Read control parameter")},
+    {Command::WriteControlParam,
+     QT_TRANSLATE_NOOP("lk::text::CommandTitle", "Write control parameter to RAM")},
 };
 static_assert(std::size(kTitles) == protocol::CommandTable::kCount,
               "a command of the table has no title");

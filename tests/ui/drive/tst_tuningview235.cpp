@@ -3,10 +3,13 @@
 #include <drive/ConfirmDialog.h>
 #include <drive/DriveLimitsView.h>
 #include <drive/ParameterTable.h>
+#include <drive/TuningSetCan236.h>
 #include <drive/TuningSetV235.h>
 #include <drive/TuningView.h>
 #include <sim/FaultInjector.h>
 #include <sim/SimBus.h>
+#include <sim/SimBusSpec.h>
+#include <transport/SimTransport.h>
 
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
@@ -27,6 +30,7 @@ using lk::ui::ConfirmRequest;
 using lk::ui::ParamValues;
 using lk::ui::TuningView;
 using V235 = lk::ui::TuningSetV235;
+using Can236 = lk::ui::TuningSetCan236;
 
 namespace {
 
@@ -296,41 +300,77 @@ void tst_TuningView235::filesKeepTheirGeneration()
 QTEST_MAIN(tst_TuningView235)
 void tst_TuningView235::canV236IsRamOnly()
 {
-    // A V2.36 drive on CAN: control parameters (0xC0/0xC1) in RAM only. No ROM button (absent,
-    // not greyed), a label that says why, and nothing of RS485's 0x40..0x44 ever sent.
-    SimRig rig(QStringLiteral("1:MF@2.35"));
-    QVERIFY(rig.open());
+    // A V2.36 drive on CAN (the simulator's CAN front): its control parameters are read with
+    // 0xC0 and written with 0xC1 to RAM only. No ROM button (absent, not greyed), a label
+    // that says why, only the changed parameter written, read back, and nothing of RS485's
+    // 0x40..0x44 or any ROM write ever sent.
+    lk::bus::BusSession session;
+    QSignalSpy done(&session, &lk::bus::BusSession::requestCompleted);
+    session.setDriveIdentity({1, lk::protocol::Series::MF, lk::protocol::Generation::V2_35, {}});
+    lk::transport::SimSettings settings;
+    settings.spec = *lk::sim::SimBusSpec::parse(QStringLiteral("1:MF@2.35"));
+    settings.link = lk::protocol::Link::Can;
+    lk::bus::BusConfig config;
+    config.minMarginMs = 100; // a loaded machine must never turn a late reply into silence
+    config.initialMarginMs = 100;
+    session.open(lk::transport::SimTransport::factory(settings), 1000000, config);
+    QVERIFY(QTest::qWaitFor([&] { return session.connection().isOpen(); }, kWaitMs));
     auto view = std::make_unique<TuningView>();
     view->resize(1200, 800);
-    view->setSession(&rig.session);
+    QSignalSpy read(view.get(), &TuningView::parametersRead);
+    view->setSession(&session);
     view->setLink(lk::protocol::Link::Can);
     view->setConnected(true);
-    view->setDrive(1, rig.motor(1));
+    view->setDrive(1, session.knownMotors().value(1));
     view->show();
-    QVERIFY(QTest::qWaitForWindowExposed(view.get()));
+    QVERIFY(read.wait(kWaitMs) || !read.isEmpty());
+    QVERIFY(waitIdle(*view));
     QVERIFY(view->isRamOnly());
+    QVERIFY2(view->readComplete(), qPrintable(view->statusText()));
+    QCOMPARE(view->table()->rowCount(), int(Can236::kFieldCount));
     QVERIFY(!button(*view, "writeRom")->isVisible());
     const auto *note = view->findChild<QLabel *>(QStringLiteral("ramOnlyNote"));
     QVERIFY(note && note->isVisible());
-    QVERIFY(note->text().contains(QStringLiteral("RAM only")));
-    QVERIFY(!button(*view, "read")->isEnabled());
-    view->readFromDrive();
-    view->writeToRom();
-    view->writeToRam();
-    QVERIFY(!view->isBusy());
-    QTest::qWait(50); // anything queued would have reached the simulated bus by now
-    for (Command c : {Command::ReadParam, Command::WriteParamRam, Command::WriteParamRom,
-                      Command::ReadPid, Command::WritePidRom})
-        QCOMPARE(rig.count(1, c), 0);
-    QVERIFY(view->statusText().contains(QStringLiteral("nothing is sent")));
+    QVERIFY(note->text().contains(
+        QStringLiteral("CAN V2.36 keeps these in RAM only: they are lost at power-off.")));
+    // The current ramp's unit is unknown: its row says so and shows the raw number.
+    QVERIFY(view->table()->field(Can236::CurrentRamp).name.contains(QStringLiteral("unknown")));
+    QVERIFY(view->table()->field(Can236::CurrentRamp).suffix.isEmpty());
 
-    // Back on RS485 the same drive reads and offers ROM again.
-    QSignalSpy read(view.get(), &TuningView::parametersRead);
-    view->setLink(lk::protocol::Link::Rs485);
-    QVERIFY(!view->isRamOnly());
-    QVERIFY(button(*view, "writeRom")->isVisible());
-    QVERIFY(read.wait(kWaitMs) || !read.isEmpty());
-    QVERIFY(rig.count(1, Command::ReadParam) > 0);
+    const auto commands = [&] {
+        QList<Command> out;
+        for (const auto &args : done)
+            out << args.at(0).value<lk::bus::RequestResult>().request.command;
+        return out;
+    };
+    QCOMPARE(commands().count(Command::ReadControlParam), 8);
+    const qsizetype before = done.size();
+    edit(*view, Can236::SpeedKp, 77);
+    view->writeToRam();
+    QVERIFY(waitIdle(*view));
+    QVERIFY2(view->mismatchText().isEmpty(), qPrintable(view->mismatchText()));
+    QCOMPARE(heldText(*view->table(), Can236::SpeedKp), QStringLiteral("77"));
+    QCOMPARE(commands().count(Command::WriteControlParam), 1); // only the changed loop
+    QVERIFY(done.size() > before);
+    // ROM: refused with the reason, nothing sent.
+    const qsizetype afterRam = done.size();
+    view->writeToRom();
+    QTest::qWait(50);
+    QCOMPARE(done.size(), afterRam);
+    QVERIFY(view->statusText().contains(QStringLiteral("RAM only")));
+    for (Command c : commands())
+        QVERIFY2(c == Command::ReadControlParam || c == Command::WriteControlParam,
+                 qPrintable(lk::protocol::CommandTable::name(c)));
+    // The drive holds it: an independent 0xC0 read.
+    QSignalSpy one(&session, &lk::bus::BusSession::requestCompleted);
+    session.send(
+        *lk::protocol::build::readControlParam(1, lk::protocol::ControlParamId::SpeedPid).request);
+    QVERIFY(one.wait(kWaitMs) || !one.isEmpty());
+    const auto r = one.at(0).at(0).value<lk::bus::RequestResult>();
+    QVERIFY(r.reply);
+    QCOMPARE(std::get<lk::protocol::ControlParameter>(r.reply->payload).pid()[0], quint16(77));
+    view.reset();
+    session.close();
 }
 
 void tst_TuningView235::oldCanKeepsRamAndRom()
