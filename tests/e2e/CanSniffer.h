@@ -1,6 +1,7 @@
 #pragma once
 
 #include "E2eUtil.h"
+#include "LksimProcess.h"
 
 #include <QtCore/QByteArray>
 #include <QtCore/QList>
@@ -136,6 +137,54 @@ inline CtlResult lkctlHeard(const QString &program, const QStringList &args)
     r.err = p.readAllStandardError();
     return r;
 }
+
+#if defined(LKCTL_PATH) && defined(LKSIM_PATH)
+/// What every CAN end-to-end test starts from: lksim --can on a virtualcan port of its own,
+/// a CanSniffer on the same bus, and lkctl runs the sniffer hears.
+class CanE2eBus {
+public:
+    /// Starts lksim with `motors` (with wire time); `marker` (e.g. "1:MG@can") is a drive of
+    /// them whose single-turn read shows the sniffer hears the bus: the server forwards
+    /// frames only once it read the sniffer's "connect:can0" line. Empty, or what failed.
+    QString start(const QString &motors, const QString &marker)
+    {
+        m_can = QStringLiteral("virtualcan:tcp://127.0.0.1:%1/can0").arg(freeCanPort());
+        m_sim = std::make_unique<LksimProcess>(QStringLiteral(LKSIM_PATH));
+        if (!m_sim->start({QStringLiteral("--can"), m_can, QStringLiteral("--motors"), motors,
+                           QStringLiteral("--wire-time")}))
+            return m_sim->errorString();
+        if (!m_wire.open(m_can.mid(QStringLiteral("virtualcan:").size())))
+            return QStringLiteral("the sniffer could not join %1").arg(m_can);
+        const quint32 id = 0x140 + marker.section(QLatin1Char(':'), 0, 0).toUInt();
+        const bool heard = QTest::qWaitFor(
+            [&] {
+                const CtlResult r =
+                    run({QStringLiteral("read"), marker.section(':', 0, 0),
+                         QStringLiteral("single-turn"), QStringLiteral("--drives"), marker});
+                return r.exitCode == 0 && m_wire.waitFor(id, 0x94, 1, 2000);
+            },
+            60000);
+        return heard ? QString() : QStringLiteral("the sniffer heard no frame on %1").arg(m_can);
+    }
+    void stop()
+    {
+        m_wire.close();
+        m_sim.reset();
+    }
+    /// lkctl ARGS --can (this bus), the sniffer hearing the wire while it runs.
+    CtlResult run(const QStringList &args)
+    {
+        return lkctlHeard(QStringLiteral(LKCTL_PATH), args + QStringList{"--can", m_can});
+    }
+    CanSniffer &wire() { return m_wire; }
+    QString can() const { return m_can; }
+
+private:
+    std::unique_ptr<LksimProcess> m_sim;
+    CanSniffer m_wire;
+    QString m_can;
+};
+#endif
 
 /// Little-endian integers of a sniffed frame's data bytes (B0 = the command).
 inline qint64 leBytes(const QByteArray &d, int from, int n, bool isSigned)

@@ -61,41 +61,24 @@ private slots:
     void needsCantuneV236RomWriteRefusedAsRamOnly();
 
 private:
-    /// lkctl on the bus, the sniffer hearing the wire while it runs.
-    CtlResult run(const QStringList &args)
-    {
-        return lkctlHeard(QStringLiteral(LKCTL_PATH), args + QStringList{"--can", m_can});
-    }
+    CtlResult run(const QStringList &args) { return m_bus.run(args); }
     /// Waits until a marker read of drive 1 has passed the sniffer: frames an earlier lkctl
     /// sent are then all seen.
     void settle();
 
-    std::unique_ptr<LksimProcess> m_sim;
-    CanSniffer m_wire;
-    QString m_can;
+    CanE2eBus m_bus;
+    CanSniffer &m_wire = m_bus.wire();
 };
 
 void tst_E2eCanCommands::init()
 {
-    m_can = QStringLiteral("virtualcan:tcp://127.0.0.1:%1/can0").arg(freeCanPort());
-    m_sim = std::make_unique<LksimProcess>(QStringLiteral(LKSIM_PATH));
-    QVERIFY2(m_sim->start({"--can", m_can, "--motors", kBoth, "--wire-time"}),
-             qPrintable(m_sim->errorString()));
-    QVERIFY(m_wire.open(m_can.mid(QStringLiteral("virtualcan:").size())));
-    // The server forwards frames only once it read the sniffer's "connect:can0" line: until
-    // a marker read is heard, the sniffer may miss frames.
-    QVERIFY(QTest::qWaitFor(
-        [this] {
-            const CtlResult r = run({"read", "1", "single-turn", "--drives", kOld});
-            return r.exitCode == 0 && m_wire.waitFor(kOldReq, 0x94, 1, 2000);
-        },
-        60000));
+    const QString error = m_bus.start(kBoth, kOld);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
 }
 
 void tst_E2eCanCommands::cleanup()
 {
-    m_wire.close();
-    m_sim.reset();
+    m_bus.stop();
 }
 
 void tst_E2eCanCommands::settle()

@@ -48,37 +48,22 @@ private slots:
     void needsCanviewGearFromDrivesBoundsAMove();
 
 private:
-    CtlResult run(const QStringList &args)
-    {
-        return lkctlHeard(QStringLiteral(LKCTL_PATH), args + QStringList{"--can", m_can});
-    }
+    CtlResult run(const QStringList &args) { return m_bus.run(args); }
 
-    std::unique_ptr<LksimProcess> m_sim;
-    CanSniffer m_wire;
-    QString m_can;
+    CanE2eBus m_bus;
+    CanSniffer &m_wire = m_bus.wire();
     QTemporaryDir m_dir;
 };
 
 void tst_E2eCanTools::init()
 {
-    m_can = QStringLiteral("virtualcan:tcp://127.0.0.1:%1/can0").arg(freeCanPort());
-    m_sim = std::make_unique<LksimProcess>(QStringLiteral(LKSIM_PATH));
-    QVERIFY2(m_sim->start({"--can", m_can, "--motors", kAll, "--wire-time"}),
-             qPrintable(m_sim->errorString()));
-    QVERIFY(m_wire.open(m_can.mid(QStringLiteral("virtualcan:").size())));
-    // The server forwards frames once it read the sniffer's "connect:can0": wait for a marker.
-    QVERIFY(QTest::qWaitFor(
-        [this] {
-            const CtlResult r = run({"read", "1", "single-turn", "--drives", kOld});
-            return r.exitCode == 0 && m_wire.waitFor(0x141, 0x94, 1, 2000);
-        },
-        60000));
+    const QString error = m_bus.start(kAll, kOld);
+    QVERIFY2(error.isEmpty(), qPrintable(error));
 }
 
 void tst_E2eCanTools::cleanup()
 {
-    m_wire.close();
-    m_sim.reset();
+    m_bus.stop();
 }
 
 void tst_E2eCanTools::monitorReadsBothGenerations()
@@ -270,8 +255,8 @@ void tst_E2eCanTools::needsCanrecListenPairsCanFrames()
 {
     QSKIP("needs canrec: lkctl listen --can pairs another master's CAN requests and replies");
     QProcess listen;
-    listen.start(QStringLiteral(LKCTL_PATH),
-                 {"listen", "--can", m_can, "--drives", "1:MG,2:MF", "--json", "--duration", "5"});
+    listen.start(QStringLiteral(LKCTL_PATH), {"listen", "--can", m_bus.can(), "--drives",
+                                              "1:MG,2:MF", "--json", "--duration", "5"});
     QVERIFY(listen.waitForStarted(60000));
     QVERIFY(QTest::qWaitFor(
         [this] {

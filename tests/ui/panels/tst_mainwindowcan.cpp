@@ -6,6 +6,9 @@
 
 #include "MainWindowFixture.h"
 
+#include <drive/BrakePanel.h>
+#include <drive/ControlView.h>
+#include <drive/EncoderView.h>
 #include <main/DriveViews.h>
 #include <panels/DashboardPanel.h>
 #include <panels/DriveRecord.h>
@@ -58,9 +61,14 @@ private slots:
     void plotsReceiveSamplesOfBothDrives();
     void trafficRowsAreInCandumpNotation();
     void emergencyStopReachesEveryIdAsMotorOff();
+    void encoderZeroInRamIsSetAngleOnV236Only();
+    void brakeOnV236ReadsItsState();
+    void tuningViewReadsOldCanGains();
 
 private:
     bool findCanDrives();
+    /// Drives found, their identity told as a user does on CAN (no model read), `id` current.
+    bool selectIdentified(int id);
     /// The traffic view's raw column of every row so far, one string.
     QString trafficText();
     /// Traffic captured with "Keep recording", the view hidden: thousands of rows a second
@@ -96,6 +104,17 @@ bool tst_MainWindowCan::findCanDrives()
     model()->setLink(lk::protocol::Link::Can, QStringLiteral("can0"));
     return QTest::qWaitFor([this] { return model()->ids() == kCanIds && model()->isPolling(); },
                            kWaitMs);
+}
+
+bool tst_MainWindowCan::selectIdentified(int id)
+{
+    if (!findCanDrives())
+        return false;
+    auto *session = m_window->controller()->session();
+    session->setDriveIdentity({1, Series::MG, Generation::V2_3, std::nullopt});
+    session->setDriveIdentity({2, Series::MF, Generation::V2_35, std::nullopt});
+    model()->setCurrentId(id);
+    return true;
 }
 
 QString tst_MainWindowCan::trafficText()
@@ -214,6 +233,38 @@ void tst_MainWindowCan::emergencyStopReachesEveryIdAsMotorOff()
     }
     for (int id : kCanIds)
         QVERIFY(sim()->requestCount(id, Command::MotorOff) >= 1);
+}
+
+void tst_MainWindowCan::encoderZeroInRamIsSetAngleOnV236Only()
+{
+    // V2.36 0x95 sets the position (B4..B7, here 0); the old generation's 0x95 is "not
+    // implemented" (CAN.md 7), so the Encoder view sends it nowhere there.
+    QVERIFY(selectIdentified(1));
+    auto *encoder = m_window->driveViews()->encoder();
+    encoder->clearAngle(); // drive 1, old CAN: refused
+    model()->setCurrentId(2);
+    encoder->clearAngle(); // drive 2, V2.36: sent
+    QTRY_COMPARE_WITH_TIMEOUT(sim()->requestCount(2, Command::ClearAngle), 1, kWaitMs);
+    QCOMPARE(sim()->requestCount(1, Command::ClearAngle), 0);
+}
+
+void tst_MainWindowCan::brakeOnV236ReadsItsState()
+{
+    QVERIFY(selectIdentified(2));
+    auto *brake = m_window->driveViews()->control()->brakePanel();
+    QSignalSpy read(brake, &lk::ui::BrakePanel::stateRead);
+    QTRY_VERIFY_WITH_TIMEOUT(brake->isEnabled(), kWaitMs);
+    brake->readState();
+    QTRY_COMPARE_WITH_TIMEOUT(read.count(), 1, kWaitMs);
+    QVERIFY(sim()->requestCount(2, Command::Brake) >= 1);
+}
+
+void tst_MainWindowCan::tuningViewReadsOldCanGains()
+{
+    // Old CAN keeps 0x30..0x34 (RAM and ROM): the Tuning view reads the gains of drive 1.
+    QVERIFY(selectIdentified(1));
+    m_window->showView(QStringLiteral("tuning"));
+    QTRY_VERIFY_WITH_TIMEOUT(sim()->requestCount(1, Command::ReadPid) >= 1, kWaitMs);
 }
 
 QTEST_MAIN(tst_MainWindowCan)
