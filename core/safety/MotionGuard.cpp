@@ -37,7 +37,10 @@ Verdict checkMaxSpeed(const std::optional<quint32> &raw, std::optional<Series> s
 {
     if (!raw)
         return {};
-    return checkSpeed(*raw * protocol::kCentiUnits, series, limits);
+    // Divided, not multiplied by 0.01: the division rounds to the double nearest the decimal
+    // value, the one the limit was parsed as (36090 x 0.01 is 360.90000000000003, over a
+    // limit of 360.9 that MotionPlanner sent as exactly 36090).
+    return checkSpeed(*raw / 100.0, series, limits);
 }
 
 Verdict checkTorque(double iqA, std::optional<Series> series, const SoftLimits &limits)
