@@ -132,6 +132,12 @@ int BrakeCommand::run(const QStringList &args, Console &console)
     const std::optional<LiveBus::Identity> who = bus.identify(*id);
     if (!who)
         return kExitFailure;
+    if (who->model.generation != protocol::Generation::V2_35 && bus.link() == protocol::Link::Can) {
+        bus.error(QStringLiteral("drive %1 speaks CAN (old), which has no brake command (0x8C); "
+                                 "nothing was sent")
+                      .arg(*id));
+        return kExitFailure;
+    }
     if (who->model.generation != protocol::Generation::V2_35) {
         bus.error(QStringLiteral("drive %1 runs firmware before 2.35 (protocol V2.3), which has no "
                                  "brake command (0x8C); nothing was sent. A V2.3 drive's brake, "

@@ -4,6 +4,7 @@
 #include "DriveParams.h"
 #include "LiveBus.h"
 #include "OrderedJson.h"
+#include "ReadCommand.h"
 #include "ReplyText.h"
 
 #include <protocol/FieldJson.h>
@@ -69,25 +70,33 @@ void InfoCommand::print(Console &console, int id, const LiveBus::Identity &who,
         else
             o.null(QStringLiteral("series"));
         o.text(QStringLiteral("generation"), protocol::generationName(who.model.generation));
-        o.fields(QStringLiteral("model"), modelFields);
+        if (who.modelRead)
+            o.fields(QStringLiteral("model"), modelFields);
+        else
+            o.null(QStringLiteral("model")); // CAN: nothing of the model was read
         for (const auto &[key, fields] : parts)
             o.fields(key, fields);
         console.out(o.toJson() + '\n');
         return;
     }
-    console.outLine(QStringLiteral("Drive %1: %2 series, protocol %3")
-                        .arg(id)
-                        .arg(series.isEmpty() ? QStringLiteral("unknown") : series)
-                        .arg(who.model.generation == protocol::Generation::V2_3
-                                 ? QStringLiteral("V2.3")
-                                 : QStringLiteral("V2.35")));
+    protocol::DecodeContext dialect;
+    dialect.generation = who.model.generation;
+    dialect.link = who.modelRead ? protocol::Link::Rs485 : protocol::Link::Can;
+    console.outLine(
+        QStringLiteral("Drive %1: %2 series, %3%4")
+            .arg(id)
+            .arg(series.isEmpty() ? QStringLiteral("unknown") : series)
+            .arg(protocol::dialectName(dialect))
+            .arg(who.modelRead ? QString() : QStringLiteral(" (CAN has no model read)")));
     // The model first (it names the drive), then what it reports, one aligned block.
     QJsonObject reported;
     for (const auto &[key, fields] : parts) {
         for (auto it = fields.begin(); it != fields.end(); ++it)
             reported.insert(it.key(), it.value());
     }
-    for (const QString &line : ReplyText::lines({modelFields, reported}, QStringLiteral("  ")))
+    const QList<QJsonObject> blocks =
+        who.modelRead ? QList<QJsonObject>{modelFields, reported} : QList<QJsonObject>{reported};
+    for (const QString &line : ReplyText::lines(blocks, QStringLiteral("  ")))
         console.outLine(line);
 }
 
@@ -156,7 +165,12 @@ bool InfoCommand::readV235(LiveBus &bus, int id, QList<QPair<QString, QJsonObjec
     // under the V2.3 names plus *_kd, and the drive's own limits and ramps beside them.
     QJsonObject state1, pid, params;
     bool ok = readInto(bus, *protocol::build::plain(Command::ReadState1, id).request, state1);
-    ok &= DriveParams::readAll(bus, id, pid, params);
+    // CAN V2.36 has no parameter table: its gains and limits are control parameters (0xC0).
+    if (bus.link() == protocol::Link::Can)
+        ok &= ReadCommand::readCan236Params(bus, id, true, false, pid) &&
+              ReadCommand::readCan236Params(bus, id, false, true, params);
+    else
+        ok &= DriveParams::readAll(bus, id, pid, params);
     if (!state1.isEmpty())
         parts.append({QStringLiteral("state1"), state1});
     if (!pid.isEmpty())

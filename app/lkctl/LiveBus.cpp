@@ -209,6 +209,7 @@ std::optional<LiveBus::Identity> LiveBus::identifyOnCan(int id)
     i.model.generation = known.generation;
     i.series = known.identityChosen ? known.series : std::nullopt;
     i.gearRatio = known.gearRatio;
+    i.modelRead = false;
     i.reply = *r.reply;
     return i;
 }

@@ -54,6 +54,8 @@ public:
         std::optional<protocol::Series> series; ///< nullopt: the model names no series
         protocol::Reply reply;           ///< the read_model reply itself (`read model` prints it)
         std::optional<double> gearRatio; ///< CAN: the user's (--drives ID:SERIES@GEN/GEAR)
+        /// False on CAN, which has no model read: `model` then holds only the generation.
+        bool modelRead = true;
         /// Rotor turns per output turn: the user's (--drives), else the model name's ("-i36"),
         /// else 1. Every command that bounds or scales by the gearbox takes it from here.
         double gear() const;

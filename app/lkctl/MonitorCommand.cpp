@@ -6,7 +6,7 @@
 #include "ReadCommand.h"
 #include "StreamEnd.h"
 
-#include <bus/BusTiming.h>
+#include <bus/LinkTiming.h>
 #include <motor/SeriesLimits.h>
 #include <record/TelemetryColumns.h>
 
@@ -326,12 +326,13 @@ void MonitorCommand::report(LiveBus &bus, const Plan &plan, const MonitorTable &
         // The wire time is the one true ceiling. The 0.5 ms turnaround is the most a drive may
         // take to answer, not what it takes (lksim 0.2 ms, real drives often less): a rate
         // measured against it can pass 100 %, so it is given as what slow drives would allow.
-        limit = QStringLiteral(", %1% of the %2/s the wire carries for this mix at %3 baud "
-                               "(%4/s if every drive took the 0.5 ms it may to answer)")
+        limit = QStringLiteral(", %1% of the %2/s the wire carries for this mix at %3 "
+                               "(%4/s if every drive took the %5 ms it may to answer)")
                     .arg(100 * repliesPerS / plan.wireLimit, 0, 'f', 0)
                     .arg(plan.wireLimit, 0, 'f', 0)
-                    .arg(plan.baud)
-                    .arg(plan.slowDriveLimit, 0, 'f', 0);
+                    .arg(plan.linkRate)
+                    .arg(plan.slowDriveLimit, 0, 'f', 0)
+                    .arg(plan.turnaroundMs);
     bus.error(QStringLiteral("%1 rows in %2 s, %3 Hz per drive (%4); %5 replies/s%6")
                   .arg(rows)
                   .arg(table.elapsedS(), 0, 'f', 2)
@@ -402,9 +403,16 @@ int MonitorCommand::run(const QStringList &args, Console &console)
                 mix.append(c);
         }
     }
-    plan->baud = busOptions->baud;
-    plan->wireLimit = bus::BusTiming::transactionsPerSecond(mix, plan->baud, 0.0);
-    plan->slowDriveLimit = bus::BusTiming::transactionsPerSecond(mix, plan->baud);
+    // The link's own timing: a CAN frame's bits at the bit rate and its 0.25 ms reply time,
+    // or RS485 bytes at the baud and its 0.5 ms turnaround.
+    const bus::LinkTiming timing = busOptions->isCan() ? bus::LinkTiming::can(busOptions->bitRate)
+                                                       : bus::LinkTiming::rs485(busOptions->baud);
+    plan->linkRate = busOptions->isCan()
+                         ? QStringLiteral("%1 bit/s on CAN").arg(busOptions->bitRate)
+                         : QStringLiteral("%1 baud").arg(busOptions->baud);
+    plan->turnaroundMs = timing.turnaroundS() * 1e3;
+    plan->wireLimit = timing.transactionsPerSecond(mix, 0.0);
+    plan->slowDriveLimit = timing.transactionsPerSecond(mix);
     MonitorTable table(plan->commands, series, plan->format, v235);
     return stream(bus, *plan, table);
 }

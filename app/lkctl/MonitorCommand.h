@@ -7,6 +7,7 @@
 #include <protocol/Command.h>
 
 #include <QtCore/QMap>
+#include <QtCore/QString>
 #include <QtCore/QVector>
 
 #include <optional>
@@ -39,10 +40,11 @@ private:
         std::optional<double> durationS;
         std::optional<qint64> count;
         MonitorFormat format = MonitorFormat::CsvWide;
-        bool simulated = false; ///< --sim: no wire time, so no bus limit to compare with
-        int baud = 0;
-        /// Transactions/s for this mix (BusTiming): the wire time alone (no rate can pass
-        /// it), and with the 0.5 ms turnaround a drive may take (a rate can pass that one).
+        bool simulated = false;  ///< --sim: no wire time, so no bus limit to compare with
+        QString linkRate;        ///< "115200 baud", "1000000 bit/s on CAN"
+        double turnaroundMs = 0; ///< the most a drive may take to answer on this link
+        /// Transactions/s for this mix (LinkTiming): the wire time alone (no rate can pass
+        /// it), and with the turnaround a drive may take (a rate can pass that one).
         double wireLimit = 0;
         double slowDriveLimit = 0;
     };

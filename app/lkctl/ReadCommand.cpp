@@ -7,6 +7,7 @@
 #include "ReplyText.h"
 
 #include <motor/SeriesLimits.h>
+#include <protocol/ControlParameter.h>
 #include <protocol/FieldJson.h>
 #include <protocol/RequestBuilder.h>
 
@@ -133,6 +134,34 @@ bool ReadCommand::readV235Params(LiveBus &bus, int id, bool gainsOnly, QJsonObje
     return true;
 }
 
+bool ReadCommand::readCan236Params(LiveBus &bus, int id, bool gains, bool limits,
+                                   QJsonObject &fields)
+{
+    // CAN V2.36 keeps its gains and input limits as control parameters (0xC0, one request
+    // each), under the field names of their V2.35 counterparts.
+    for (const protocol::ControlParamInfo &p : protocol::ControlParamTable::all()) {
+        if ((p.layout == protocol::ControlParamLayout::Pid) ? !gains : !limits)
+            continue;
+        const protocol::BuildResult b = protocol::build::readControlParam(id, p.id);
+        if (!b.ok()) {
+            bus.error(b.error.message());
+            return false;
+        }
+        const bus::RequestResult r = bus.request(*b.request);
+        if (!r.ok() || !r.reply ||
+            !std::holds_alternative<protocol::ControlParameter>(r.reply->payload)) {
+            bus.reportFailure(r);
+            return false;
+        }
+        const QJsonObject read = protocol::FieldJson::replyFields(*r.reply);
+        for (auto it = read.begin(); it != read.end(); ++it) {
+            if (!it.key().startsWith(QLatin1String("control_param"))) // the head: which one
+                fields.insert(it.key(), it.value());
+        }
+    }
+    return true;
+}
+
 int ReadCommand::run(const QStringList &args, Console &console)
 {
     ArgParser parser = makeParser();
@@ -159,6 +188,14 @@ int ReadCommand::run(const QStringList &args, Console &console)
     LiveBus bus(console, name());
     if (!bus.open(*busOptions))
         return kExitFailure;
+    if (*command == Command::ReadModel && bus.link() == protocol::Link::Can) {
+        // Identification on CAN reads state 1 in its place: printing that as a model would
+        // claim a read that never happened.
+        bus.error(QStringLiteral("CAN has no read_model (0x12): drive %1's model cannot be "
+                                 "read on this link; nothing was sent")
+                      .arg(*id));
+        return kExitFailure;
+    }
     // The model first: its series and generation decide what may be asked and how the
     // replies read (a V2.35 drive has no read_pid; its gains are parameters).
     const std::optional<LiveBus::Identity> who = bus.identify(*id);
@@ -178,14 +215,18 @@ int ReadCommand::run(const QStringList &args, Console &console)
     }
     QJsonObject fields;
     const bool viaParams = *command == Command::ReadParam || (*command == Command::ReadPid && v235);
+    const bool viaControl = viaParams && bus.link() == protocol::Link::Can; // CAN V2.36: 0xC0
     if (*command == Command::ReadModel)
         fields = protocol::FieldJson::replyFields(who->reply); // read once, above
-    else if (viaParams ? !readV235Params(bus, *id, *command == Command::ReadPid, fields)
-                       : !readInto(bus, *command, *id, fields))
+    else if (viaControl  ? !readCan236Params(bus, *id, true, *command == Command::ReadParam, fields)
+             : viaParams ? !readV235Params(bus, *id, *command == Command::ReadPid, fields)
+                         : !readInto(bus, *command, *id, fields))
         return kExitFailure;
     if (parser.isSet(QStringLiteral("json"))) {
         OrderedJson o;
-        const Command sent = viaParams ? Command::ReadParam : *command; // what went on the wire
+        const Command sent = viaControl  ? Command::ReadControlParam
+                             : viaParams ? Command::ReadParam
+                                         : *command; // what went on the wire
         o.text(QStringLiteral("command"), protocol::CommandTable::name(sent))
             .text(QStringLiteral("code"), protocol::CommandTable::codeText(quint8(sent)))
             .integer(QStringLiteral("id"), *id)

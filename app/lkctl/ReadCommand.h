@@ -23,6 +23,11 @@ public:
 
     /// "state2" -> read_state2; nullopt for anything else.
     static std::optional<protocol::Command> commandFor(const QString &what);
+    /// A CAN V2.36 drive's gains and limits from its control parameters (0xC0), under the
+    /// V2.35 field names: the three PIDs (`gains`), the input limits and ramps (`limits`).
+    /// False after printing why.
+    static bool readCan236Params(LiveBus &bus, int id, bool gains, bool limits,
+                                 QJsonObject &fields);
 
 private:
     static bool readInto(LiveBus &bus, protocol::Command command, int id, QJsonObject &fields);

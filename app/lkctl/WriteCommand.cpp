@@ -209,13 +209,18 @@ int WriteCommand::run(const QStringList &args, Console &console)
     // The model first: a V2.35 drive has neither command, and is never sent one it lacks.
     const int id = plan->request.id;
     const QString lacks = protocol::CommandTable::name(plan->request.command);
-    if (!speaks(bus, id, protocol::Generation::V2_3,
-                QStringLiteral("drive %1 runs firmware 2.35 or later (protocol V2.35), which has "
-                               "no %2; nothing was sent. Its gains and ramps are parameters: "
-                               "'lkctl write %1 param angle_pid KP KI KD' (speed_pid, iq_pid), "
-                               "'lkctl write %1 param speed_ramp_dps2 DPS2'")
-                    .arg(id)
-                    .arg(lacks)))
+    // On CAN V2.36 the gains are control parameters (0xC0/0xC1), which lkctl does not write
+    // yet: the advice names what does, not the RS485 parameters the drive lacks.
+    const QString lacksText =
+        bus.link() == protocol::Link::Can
+            ? QStringLiteral("drive %1 speaks CAN V2.36, which has no %2; nothing was sent. Its "
+                             "gains are control parameters (0xC0/0xC1, RAM only): lkstudio's "
+                             "Tuning view reads and writes them")
+            : QStringLiteral("drive %1 runs firmware 2.35 or later (protocol V2.35), which has "
+                             "no %2; nothing was sent. Its gains and ramps are parameters: "
+                             "'lkctl write %1 param angle_pid KP KI KD' (speed_pid, iq_pid), "
+                             "'lkctl write %1 param speed_ramp_dps2 DPS2'");
+    if (!speaks(bus, id, protocol::Generation::V2_3, lacksText.arg(id).arg(lacks)))
         return kExitFailure;
     const bus::RequestResult w = bus.request(plan->request);
     if (w.ok())

@@ -211,6 +211,8 @@ std::optional<ZeroCommand::Angles> ZeroCommand::sendBetweenAngles(LiveBus &bus, 
     const bus::RequestResult r = bus.request(command, id, bus::Priority::Operator, 0);
     if (!r.ok()) {
         bus.reportFailure(r);
+        if (r.attempts == 0)
+            return std::nullopt; // refused before the wire: the refusal said nothing was sent
         bus.error(QStringLiteral("whether drive %1 applied %2 is not known (it was not sent "
                                  "again): 'lkctl read %1 multi-turn' shows its angle")
                       .arg(id)
@@ -273,6 +275,8 @@ int ZeroCommand::writeZeroRom(LiveBus &bus, const Plan &plan) const
         r.ok() && r.reply ? std::get_if<protocol::ZeroWritten>(&r.reply->payload) : nullptr;
     if (!zero) {
         bus.reportFailure(r);
+        if (r.attempts == 0)
+            return kExitFailure; // refused before the wire: nothing was written
         bus.error(QStringLiteral("whether drive %1 wrote the zero to its flash is not known; "
                                  "write_zero_rom was NOT sent again (a ROM write is never "
                                  "repeated). After a power cycle, 'lkctl read %1 multi-turn' "

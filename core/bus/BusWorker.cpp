@@ -287,9 +287,9 @@ bool BusWorker::encode(Pending &p)
 {
     const protocol::Request &r = p.req.request;
     const auto limits = m_softLimits.constFind(r.id);
-    const protocol::WireEncodeResult e =
-        encodeForWire(p.req.request, m_motors.decodeContext(r.id),
-                      limits == m_softLimits.cend() ? nullptr : &*limits);
+    const protocol::WireEncodeResult e = encodeForWire(
+        p.req.request, m_motors.decodeContext(r.id),
+        limits == m_softLimits.cend() ? nullptr : &*limits, m_motors.series(r.id).has_value());
     p.bytes = e.bytes;
     if (e.ok())
         return true;

@@ -56,16 +56,15 @@ void TransportLink::attach(std::unique_ptr<Transport> t)
     m_link = m_transport->link();
     m_condition = transport::CanBusCondition::Good;
     m_conditionText.clear();
-    if (auto *can = qobject_cast<transport::CanTransport *>(m_transport.get())) {
-        // Good and Warning come as a condition alone; the bad ones come with their sentence
-        // as an error first (onTransportError).
-        connect(can, &transport::CanTransport::conditionChanged, this,
-                [this](transport::CanBusCondition c) {
-                    if (c == transport::CanBusCondition::Good ||
-                        c == transport::CanBusCondition::Warning)
-                        onCanCondition(c, {});
-                });
-    }
+    // Good and Warning come as a condition alone; the bad ones come with their sentence as an
+    // error first (onTransportError). Through the base signal, so a recorder in between passes
+    // them on.
+    connect(m_transport.get(), &Transport::canConditionChanged, this,
+            [this](transport::CanBusCondition c) {
+                if (c == transport::CanBusCondition::Good ||
+                    c == transport::CanBusCondition::Warning)
+                    onCanCondition(c, {});
+            });
     connect(m_transport.get(), &Transport::bytesReceived, this, &TransportLink::bytesReceived);
     connect(m_transport.get(), &Transport::stateChanged, this, &TransportLink::onTransportState);
     connect(m_transport.get(), &Transport::errorOccurred, this, &TransportLink::onTransportError);

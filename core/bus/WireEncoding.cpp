@@ -1,5 +1,7 @@
 #include "WireEncoding.h"
 
+#include <QtCore/QCoreApplication>
+
 #include <protocol/RequestBuilder.h>
 
 #include <variant>
@@ -23,10 +25,24 @@ void addSpeedTorqueLimit(protocol::Request &r, const protocol::DecodeContext &co
 
 protocol::WireEncodeResult encodeForWire(protocol::Request &request,
                                          const protocol::DecodeContext &context,
-                                         const safety::SoftLimits *limits)
+                                         const safety::SoftLimits *limits, bool seriesKnown)
 {
-    if (limits && request.command == protocol::Command::Speed)
+    if (limits && request.command == protocol::Command::Speed) {
+        // The torque limit's raw value depends on the series' iq scale: a drive whose series
+        // nobody gave would get a limit at MF's scale, twice the current on an MG.
+        const auto *c = std::get_if<protocol::SpeedCommand>(&request.payload);
+        if (c && !c->iqLimitRaw && context.onCan() &&
+            context.generation == protocol::Generation::V2_35 && !seriesKnown) {
+            protocol::WireEncodeResult refused;
+            refused.error.field = QStringLiteral("series");
+            refused.error.range = QStringLiteral("MS, MF, MG or MH");
+            refused.error.problem = QCoreApplication::translate(
+                "lk::bus::WireEncoding",
+                "not known: a CAN V2.36 speed command carries a torque limit scaled by it");
+            return refused;
+        }
         addSpeedTorqueLimit(request, context, *limits);
+    }
     return protocol::encodeRequest(request, context);
 }
 

@@ -340,7 +340,7 @@ std::optional<QJsonObject> FieldJson::frameObject(const Frame &frame, FrameDirec
         fields = replyFields(*r.reply);
     } else {
         // An echo carries the request's bytes: its fields are the values written.
-        const RequestDecodeResult r = decodeRequest(frame);
+        const RequestDecodeResult r = decodeRequest(frame, context);
         if (!r.request)
             return std::nullopt;
         fields = requestFields(*r.request, context);

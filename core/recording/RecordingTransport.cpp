@@ -24,6 +24,7 @@ RecordingTransport::RecordingTransport(std::unique_ptr<Transport> inner,
                 recordLink(LinkEventKind::Error, error.message);
                 emit errorOccurred(error);
             });
+    connect(m_inner.get(), &Transport::canConditionChanged, this, &Transport::canConditionChanged);
 }
 
 RecordingTransport::~RecordingTransport()

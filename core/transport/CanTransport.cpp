@@ -243,7 +243,7 @@ void CanTransport::setCondition(CanBusCondition condition)
     if (m_condition == condition)
         return;
     m_condition = condition;
-    emit conditionChanged(condition);
+    emit canConditionChanged(condition);
     const QString rate = QString::number(m_settings.bitRate);
     switch (condition) {
     case CanBusCondition::Good:

@@ -66,9 +66,6 @@ public:
     /// A transport factory for BusSession: a new CanTransport per open, at `bitRate`.
     static std::function<std::unique_ptr<Transport>(int bitRate)> factory(CanSettings settings);
 
-signals:
-    void conditionChanged(lk::transport::CanBusCondition condition);
-
 private:
     void onFramesReceived();
     void onDeviceError(QCanBusDevice::CanBusError error);

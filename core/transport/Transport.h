@@ -1,5 +1,7 @@
 #pragma once
 
+#include "CanBusCondition.h"
+
 #include <protocol/Series.h>
 
 #include <QtCore/QByteArray>
@@ -75,6 +77,10 @@ signals:
     /// A link lost while open says why first (Unplugged, IoError), then goes Disconnected:
     /// the state's reason can name the cause.
     void errorOccurred(const lk::transport::TransportError &error);
+    /// A CAN link's bus condition changed (only a CAN transport emits it). It is declared here
+    /// so that a decorator (the black-box recorder) forwards it like any other signal and the
+    /// engine sees bus-off and no-ACK through it.
+    void canConditionChanged(lk::transport::CanBusCondition condition);
 
 private:
     bool m_readOnly = false;

@@ -69,7 +69,7 @@
     </message>
 </context>
 <context>
-    <name>lk::ui::GainSearchView</name>
+    <name>lk::ui::GainSearchViewOutcome</name>
     <message numerus="yes">
         <source>%n candidate(s) tried in %1 s; the best is in bold, Write to RAM tries it. Nothing else was kept.</source>
         <translation>
@@ -147,6 +147,13 @@
         <translation>
             <numerusform>Black box saved after %1: the last %n minute of the link is in %2</numerusform>
             <numerusform>Black box saved after %1: the last %n minutes of the link are in %2</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n frame(s) written to %1 as a candump log.</source>
+        <translation>
+            <numerusform>%n frame written to %1 as a candump log.</numerusform>
+            <numerusform>%n frames written to %1 as a candump log.</numerusform>
         </translation>
     </message>
 </context>

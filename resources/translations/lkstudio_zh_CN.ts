@@ -240,6 +240,13 @@
     </message>
 </context>
 <context>
+    <name>lk::bus::WireEncoding</name>
+    <message>
+        <source>not known: a CAN V2.36 speed command carries a torque limit scaled by it</source>
+        <translation>未知：CAN V2.36 的速度指令携带按系列换算的转矩限制</translation>
+    </message>
+</context>
+<context>
     <name>lk::bus::WireExchange</name>
     <message numerus="yes">
         <source>no reply to %1 after %n attempt(s)</source>
@@ -505,6 +512,17 @@
     <message>
         <source>brake applied</source>
         <translation>抱闸已锁紧</translation>
+    </message>
+    <message>
+        <source>%1 %2 (unit unknown)</source>
+        <translation>%1 %2（单位未知）</translation>
+    </message>
+</context>
+<context>
+    <name>lk::protocol::LinkCodec</name>
+    <message>
+        <source>%1 exists on CAN V2.36 only</source>
+        <translation>%1 仅在 CAN V2.36 上存在</translation>
     </message>
 </context>
 <context>
@@ -1037,6 +1055,14 @@
     <message>
         <source>Incremental position with speed limit</source>
         <translation>限速增量位置控制</translation>
+    </message>
+    <message>
+        <source>Read control parameter</source>
+        <translation>读取控制参数</translation>
+    </message>
+    <message>
+        <source>Write control parameter to RAM</source>
+        <translation>写控制参数到 RAM</translation>
     </message>
 </context>
 <context>
@@ -1644,6 +1670,10 @@ Fit quality %5 (%6 samples)</source>
     <message>
         <source>No drive answered on %1. Check that the drives use %2, the CAN-H/CAN-L wiring, the drives&apos; supply and a 120-ohm terminator at each end of the bus.</source>
         <translation>%1 上没有驱动应答。请检查驱动是否使用 %2、CAN-H/CAN-L 接线、驱动供电，以及总线两端各有一个 120 欧终端电阻。</translation>
+    </message>
+    <message>
+        <source>the simulated CAN bus</source>
+        <translation>模拟 CAN 总线</translation>
     </message>
 </context>
 <context>
@@ -3539,10 +3569,6 @@ not read</source>
         <translation>清除运行记录</translation>
     </message>
     <message>
-        <source>Measures the speed loop&apos;s frequency response: a sine of the speed setpoint around the operating point, one frequency after the other. Its extremes are checked against the soft limits (Control view) before anything moves; Esc stops the motor and puts the gains read back.</source>
-        <translation>测量速度环的频率响应：在工作点附近对速度设定值施加正弦，逐个频率进行。在任何运动之前先用软限位（“控制”视图）检查其极值；Esc 停止电机并写回读取的增益。</translation>
-    </message>
-    <message>
         <source> dps</source>
         <translation> °/s</translation>
     </message>
@@ -3583,10 +3609,6 @@ not read</source>
         <translation>扫频无法按当前设置运行（%1）。未发送任何内容。</translation>
     </message>
     <message>
-        <source>Refused at %1 dps: %2. Nothing was sent.</source>
-        <translation>在 %1 dps 处被拒绝：%2。未发送任何内容。</translation>
-    </message>
-    <message>
         <source>Frequency response</source>
         <translation>频率响应</translation>
     </message>
@@ -3625,6 +3647,118 @@ not read</source>
     <message>
         <source>Measure the frequency response set above on the selected drive (asks first).</source>
         <translation>在所选驱动上测量上面设置的频率响应（先询问）。</translation>
+    </message>
+    <message>
+        <source>Measures the speed loop&apos;s frequency response: a sine of the speed setpoint around the operating point, one frequency after the other. Its extremes are checked against the soft limits (Control view) before anything moves; Esc stops the motor and puts the gains read back. The position loop&apos;s is offered while an angle range is set: a sine of the angle around where the drive is.</source>
+        <translation>测量速度环的频率响应：速度设定值围绕工作点做正弦变化，逐个频率进行。在任何运动之前，其极值都会按软限位（控制视图）检查；Esc 立即停止电机并写回读取的增益。设置了角度范围时还可测量位置环：角度围绕驱动器当前位置做正弦变化。</translation>
+    </message>
+    <message>
+        <source>Speed loop</source>
+        <translation>速度环</translation>
+    </message>
+    <message>
+        <source>Position loop</source>
+        <translation>位置环</translation>
+    </message>
+    <message>
+        <source>The position loop needs an angle range (Control view): its sine stays inside it, around where the drive is.</source>
+        <translation>位置环需要角度范围（控制视图）：正弦围绕驱动器当前位置，始终保持在该范围内。</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>环</translation>
+    </message>
+    <message>
+        <source> deg</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>Refused at %1°: %2.</source>
+        <translation>在 %1° 处被拒绝：%2。</translation>
+    </message>
+    <message>
+        <source>Save run…</source>
+        <translation>保存运行…</translation>
+    </message>
+    <message>
+        <source>Open run…</source>
+        <translation>打开运行…</translation>
+    </message>
+    <message>
+        <source>Remove run</source>
+        <translation>移除此运行</translation>
+    </message>
+    <message>
+        <source>Take the chosen run off the chart (a saved file stays).</source>
+        <translation>将所选运行从图中移除（已保存的文件保留）。</translation>
+    </message>
+    <message>
+        <source>Save frequency run</source>
+        <translation>保存频率响应运行</translation>
+    </message>
+    <message>
+        <source>Frequency runs (*%1)</source>
+        <translation>频率响应运行 (*%1)</translation>
+    </message>
+    <message>
+        <source>Open frequency run</source>
+        <translation>打开频率响应运行</translation>
+    </message>
+    <message>
+        <source>Frequency runs (*%1);;All files (*)</source>
+        <translation>频率响应运行 (*%1);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>%1 was not saved: %2</source>
+        <translation>%1 未保存：%2</translation>
+    </message>
+    <message>
+        <source>%1 saved to %2.</source>
+        <translation>%1 已保存到 %2。</translation>
+    </message>
+    <message>
+        <source>%1 is %2: it must be %3</source>
+        <translation>%1 为 %2：它必须是%3</translation>
+    </message>
+    <message>
+        <source>%1 was not opened: %2</source>
+        <translation>未打开 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 is a position loop&apos;s response: it is shown when the position loop is chosen (an angle range is set).</source>
+        <translation>%1 是位置环的响应：选择位置环时显示（需设置角度范围）。</translation>
+    </message>
+    <message>
+        <source>Opened %1.</source>
+        <translation>已打开 %1.</translation>
+    </message>
+    <message>
+        <source>gains unknown</source>
+        <translation>增益未知</translation>
+    </message>
+    <message>
+        <source>Kp %1 Ki %2 Kd %3</source>
+        <translation>Kp %1 Ki %2 Kd %3</translation>
+    </message>
+    <message>
+        <source>%1: drive %2, %3, %4, %5</source>
+        <translation>%1：驱动器 %2，%3，%4，%5</translation>
+    </message>
+    <message>
+        <source>position loop</source>
+        <translation>位置环</translation>
+    </message>
+    <message>
+        <source>speed loop</source>
+        <translation>速度环</translation>
+    </message>
+    <message>
+        <source>Nothing was sent.</source>
+        <translation>未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Reading the gains and angle of drive %1…</source>
+        <translation>正在读取驱动器 %1 的增益和角度…</translation>
     </message>
 </context>
 <context>
@@ -3745,14 +3879,6 @@ not read</source>
         <translation>最多候选数</translation>
     </message>
     <message>
-        <source>Gains read</source>
-        <translation>读取的增益</translation>
-    </message>
-    <message>
-        <source>Suggested</source>
-        <translation>建议值</translation>
-    </message>
-    <message>
         <source>Suggested gains</source>
         <translation>建议增益</translation>
     </message>
@@ -3779,38 +3905,6 @@ not read</source>
     <message>
         <source>Candidate %1 of at most %2 tried on drive %3… Esc stops it.</source>
         <translation>已在驱动 %3 上尝试第 %1 个候选（最多 %2 个）… 按 Esc 停止。</translation>
-    </message>
-    <message>
-        <source>Refused: %1.</source>
-        <translation>已拒绝：%1。</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n candidate(s) tried in %1 s; the best is in bold, Write to RAM tries it. Nothing else was kept.</source>
-        <translation>
-            <numerusform>在 %1 秒内尝试了 %n 组候选参数；最佳一组以粗体显示，“写入 RAM”将试用它。其他内容均未保留。</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n candidate(s) tried in %1 s; none stayed within the bounds.</source>
-        <translation>
-            <numerusform>在 %1 秒内尝试了 %n 组候选参数；没有一组保持在限值之内。</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>The search stopped at the first unstable candidate.</source>
-        <translation>搜索在第一个不稳定的候选处停止。</translation>
-    </message>
-    <message>
-        <source>none within the bounds</source>
-        <translation>没有在界限内的</translation>
-    </message>
-    <message>
-        <source>Speed Kp</source>
-        <translation>速度环 Kp</translation>
-    </message>
-    <message>
-        <source>Speed Ki</source>
-        <translation>速度环 Ki</translation>
     </message>
     <message>
         <source>Nothing was written: there is no suggestion yet.</source>
@@ -3851,6 +3945,192 @@ not read</source>
     <message>
         <source>Search the speed-loop gains of the selected drive (asks first).</source>
         <translation>搜索所选驱动的速度环增益（先询问）。</translation>
+    </message>
+    <message>
+        <source>Measure the Bode of both</source>
+        <translation>测量两者的伯德图</translation>
+    </message>
+    <message>
+        <source>After the search, measure the speed loop&apos;s frequency response with the gains read and with the suggested gains (written to RAM for that sweep only, the gains read put back after it).</source>
+        <translation>搜索结束后，分别用读取的增益和建议的增益测量速度环的频率响应（建议增益仅在该次扫频期间写入 RAM，扫频后写回读取的增益）。</translation>
+    </message>
+    <message>
+        <source>The Bode of both is refused within these limits: clear the box or change the steps. Nothing was sent.</source>
+        <translation>在这些限制内无法测量两者的伯德图：请取消勾选或更改阶跃。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Measuring the Bode of the suggested gains on drive %1 (in RAM for this sweep only, %2 s)… Esc stops it.</source>
+        <translation>正在测量驱动器 %1 建议增益的伯德图（仅在本次扫频期间位于 RAM，%2 秒）… 按 Esc 停止。</translation>
+    </message>
+    <message>
+        <source>Measuring the Bode of the gains read on drive %1 (%2 s)… Esc stops it.</source>
+        <translation>正在测量驱动器 %1 读取增益的伯德图（%2 秒）… 按 Esc 停止。</translation>
+    </message>
+    <message>
+        <source>The Bode of both adds about %1 s.</source>
+        <translation>测量两者的伯德图约增加 %1 秒。</translation>
+    </message>
+    <message>
+        <source>The Bode of both is refused within these limits: clear the box or change the steps.</source>
+        <translation>在这些限制内无法测量两者的伯德图：请取消勾选或更改阶跃。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::GainSearchViewComparison</name>
+    <message>
+        <source>Gains read</source>
+        <translation>读取的增益</translation>
+    </message>
+    <message>
+        <source>Suggested</source>
+        <translation>建议值</translation>
+    </message>
+    <message>
+        <source>Steps</source>
+        <translation>阶跃</translation>
+    </message>
+    <message>
+        <source>Bode</source>
+        <translation>伯德图</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <source>not reached</source>
+        <translation>未到达</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>未知</translation>
+    </message>
+    <message>
+        <source>%1 dB at %2 Hz</source>
+        <translation>%2 Hz 处 %1 dB</translation>
+    </message>
+    <message>
+        <source>none within the bounds</source>
+        <translation>没有在界限内的</translation>
+    </message>
+    <message>
+        <source>Speed Kp</source>
+        <translation>速度环 Kp</translation>
+    </message>
+    <message>
+        <source>Speed Ki</source>
+        <translation>速度环 Ki</translation>
+    </message>
+    <message>
+        <source>Rise</source>
+        <translation>上升时间</translation>
+    </message>
+    <message>
+        <source>Overshoot</source>
+        <translation>超调</translation>
+    </message>
+    <message>
+        <source>Verdict</source>
+        <translation>结论</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>未测量</translation>
+    </message>
+    <message>
+        <source>Bandwidth (-3 dB)</source>
+        <translation>带宽（-3 dB）</translation>
+    </message>
+    <message>
+        <source>Peak</source>
+        <translation>峰值</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::GainSearchViewOutcome</name>
+    <message numerus="yes">
+        <source>%n candidate(s) tried in %1 s; the best is in bold, Write to RAM tries it. Nothing else was kept.</source>
+        <translation>
+            <numerusform>在 %1 秒内尝试了 %n 组候选参数；最佳一组以粗体显示，“写入 RAM”将试用它。其他内容均未保留。</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n candidate(s) tried in %1 s; none stayed within the bounds.</source>
+        <translation>
+            <numerusform>在 %1 秒内尝试了 %n 组候选参数；没有一组保持在限值之内。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The search stopped at the first unstable candidate.</source>
+        <translation>搜索在第一个不稳定的候选处停止。</translation>
+    </message>
+    <message>
+        <source>Stopped.</source>
+        <translation>已停止。</translation>
+    </message>
+    <message>
+        <source>Stopped by an emergency stop.</source>
+        <translation>已停止：紧急停止。</translation>
+    </message>
+    <message>
+        <source>Refused by a soft limit.</source>
+        <translation>被软限位拒绝。</translation>
+    </message>
+    <message>
+        <source>Refused: %1.</source>
+        <translation>已拒绝：%1。</translation>
+    </message>
+    <message>
+        <source>It cannot run as set.</source>
+        <translation>按当前设置无法运行。</translation>
+    </message>
+    <message>
+        <source>The gains of drive %1 could not be read.</source>
+        <translation>无法读取驱动器 %1 的增益。</translation>
+    </message>
+    <message>
+        <source>Drive %1 did not answer: it stopped.</source>
+        <translation>驱动 %1 未应答：已停止。</translation>
+    </message>
+    <message>
+        <source>The link went down: it stopped.</source>
+        <translation>链路断开：已停止。</translation>
+    </message>
+    <message>
+        <source>The gains read could not be written back at the end: it stopped.</source>
+        <translation>结束时无法写回读取的增益：已停止。</translation>
+    </message>
+    <message>
+        <source>Nothing was sent.</source>
+        <translation>未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>No step was sent.</source>
+        <translation>未发送任何阶跃。</translation>
+    </message>
+    <message>
+        <source>Motor Off went to drive %1 and it acknowledged.</source>
+        <translation>已向驱动 %1 发送“电机关闭”，驱动已确认。</translation>
+    </message>
+    <message>
+        <source>Drive %1 did not acknowledge Motor Off: it may still be moving.</source>
+        <translation>驱动 %1 未确认“电机关闭”：它可能仍在运动。</translation>
+    </message>
+    <message>
+        <source>Drive %1 holds 0 dps, its motor stays on.</source>
+        <translation>驱动器 %1 保持 0 dps，电机保持开启。</translation>
+    </message>
+    <message>
+        <source>Drive %1 is back at %2 dps, the speed it had, and keeps turning until stopped.</source>
+        <translation>驱动器 %1 已回到原来的速度 %2 dps，并持续转动直到停止。</translation>
+    </message>
+    <message>
+        <source>The gains read are back in RAM.</source>
+        <translation>读取的增益已写回 RAM。</translation>
+    </message>
+    <message>
+        <source>The gains read before could NOT be written back: read the drive and check them.</source>
+        <translation>之前读取的增益未能写回：请读取驱动并检查。</translation>
     </message>
 </context>
 <context>
@@ -5067,6 +5347,44 @@ not read</source>
         <source>The black box length (recording/blackBoxMinutes) must be %1..%2 minutes, not %3: it stays %4.</source>
         <translation>黑匣子时长（recording/blackBoxMinutes）必须为 %1..%2 分钟，不能是 %3：仍为 %4。</translation>
     </message>
+    <message>
+        <source>Export recording as &amp;candump log…</source>
+        <translation>将录制导出为 &amp;candump 日志…</translation>
+    </message>
+    <message>
+        <source>Write a recording made on CAN as a candump -L log, which can-utils, python-can and SavvyCAN read</source>
+        <translation>将在 CAN 上录制的内容写成 candump -L 日志，can-utils、python-can 和 SavvyCAN 均可读取</translation>
+    </message>
+    <message>
+        <source>Export recording as candump log</source>
+        <translation>将录制导出为 candump 日志</translation>
+    </message>
+    <message>
+        <source>candump logs (*.log);;All files (*)</source>
+        <translation>candump 日志 (*.log);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Cannot export %1: %2</source>
+        <translation>无法导出 %1：%2</translation>
+    </message>
+    <message>
+        <source>%1 was recorded on %2, not on CAN: a candump log holds CAN frames only.</source>
+        <translation>%1 录制于 %2，而非 CAN 总线：candump 日志只能保存 CAN 帧。</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>无法写入 %1：%2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n frame(s) written to %1 as a candump log.</source>
+        <translation>
+            <numerusform>已将 %n 帧以 candump 日志写入 %1。</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The recording is damaged: it was exported up to the damage (%1).</source>
+        <translation>录制文件已损坏：已导出损坏处之前的内容（%1）。</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::ReplayBar</name>
@@ -5194,6 +5512,22 @@ not read</source>
     <message>
         <source>No model name told this drive&apos;s gearbox (CAN drives have no model read): angles and speeds at the output shaft use this ratio. Remembered for this drive.</source>
         <translation>没有型号名称说明该驱动的减速箱（CAN 驱动无法读取型号）：输出轴上的角度和速度使用此减速比。按驱动记住。</translation>
+    </message>
+    <message>
+        <source>CAN generation:</source>
+        <translation>CAN 代次：</translation>
+    </message>
+    <message>
+        <source>old (0x140 replies)</source>
+        <translation>旧版（0x140 应答）</translation>
+    </message>
+    <message>
+        <source>V2.36</source>
+        <translation>V2.36</translation>
+    </message>
+    <message>
+        <source>CAN has no model read: the reply ID and the 0x9A layout tell most drives&apos; generation. Choose it where they do not (a V2.36 drive that answers on 0x140+ID); values and the commands offered follow it. Remembered for this port and ID.</source>
+        <translation>CAN 没有型号读取：大多数驱动器的代次由应答 ID 和 0x9A 的布局判断。无法判断时请在此选择（例如在 0x140+ID 上应答的 V2.36 驱动器）；数值解码和可用命令都随之而定。按此端口和 ID 记住。</translation>
     </message>
 </context>
 <context>
@@ -5579,10 +5913,6 @@ not read</source>
         <translation>--listen 与 --no-listen 不能同时使用。</translation>
     </message>
     <message>
-        <source>Open a CAN interface through a Qt SerialBus plugin, e.g. socketcan:can0 (see the README, &quot;Drives on CAN&quot;).</source>
-        <translation>通过 Qt SerialBus 插件打开 CAN 接口，例如 socketcan:can0（见 README“CAN 总线上的驱动”）。</translation>
-    </message>
-    <message>
         <source>CAN bit rate: 1000000, 500000, 250000, 125000 or 100000 (default 1000000).</source>
         <translation>CAN 比特率：1000000、500000、250000、125000 或 100000（默认 1000000）。</translation>
     </message>
@@ -5605,6 +5935,14 @@ not read</source>
     <message>
         <source>--bitrate %1 is not a CAN bit rate of LK drives (1000000, 500000, 250000, 125000, 100000).</source>
         <translation>--bitrate %1 不是 LK 驱动的 CAN 比特率（1000000、500000、250000、125000、100000）。</translation>
+    </message>
+    <message>
+        <source>Open a CAN interface through a Qt SerialBus plugin, e.g. socketcan:can0 (see the README, &quot;Drives on CAN&quot;); &quot;sim&quot;: the built-in simulated bus on CAN (with --sim for its drives).</source>
+        <translation>通过 Qt SerialBus 插件打开 CAN 接口，例如 socketcan:can0（见 README“CAN 上的驱动器”）；“sim”：内置的 CAN 模拟总线（用 --sim 指定其驱动器）。</translation>
+    </message>
+    <message>
+        <source>--can sim is the simulated bus: it cannot go with --port.</source>
+        <translation>--can sim 是模拟总线：不能与 --port 同用。</translation>
     </message>
 </context>
 <context>
@@ -5943,7 +6281,7 @@ not read</source>
     </message>
     <message>
         <source>Remove run</source>
-        <translation>删除测试</translation>
+        <translation>移除此运行</translation>
     </message>
     <message>
         <source>Clear all</source>
@@ -6421,6 +6759,10 @@ not read</source>
         <source>Careful: the file comes from a %1, this drive is a %2.</source>
         <translation>注意：文件来自 %1，而此驱动是 %2。</translation>
     </message>
+    <message>
+        <source>Loaded the parameters of drive %1 (%2, firmware %3, saved %4) into the pending edit: nothing is written until you write to RAM (this drive has no ROM write).</source>
+        <translation>已将驱动器 %1（%2，固件 %3，保存于 %4）的参数载入待写编辑：在写入 RAM 之前不会写入任何内容（该驱动器没有 ROM 写入）。</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::TuningRunGate</name>
@@ -6515,6 +6857,121 @@ not read</source>
     <message>
         <source>The gains read are back in RAM.</source>
         <translation>读取的增益已写回 RAM。</translation>
+    </message>
+    <message>
+        <source>Refused: the position loop&apos;s response needs an angle range for drive %1 (Control view, both ends): its sine stays inside it. Nothing was sent.</source>
+        <translation>已拒绝：位置环频率响应需要为驱动器 %1 设置角度范围（控制视图，两端都要设置）：正弦始终保持在该范围内。未发送任何指令。</translation>
+    </message>
+    <message>
+        <source>Drive %1 swings up to %2° (rotor) either side of where it is, at up to %3 dps, for about %4 s, inside the angle range %5° to %6°. Speed limit %7 dps.</source>
+        <translation>驱动器 %1 在当前位置两侧各摆动最多 %2°（转子），速度最高 %3 dps，持续约 %4 秒，始终在角度范围 %5° 至 %6° 之内。速度限制 %7 dps。</translation>
+    </message>
+    <message>
+        <source>The gains read are back in RAM; drive %1 holds the angle it started at, its motor stays on.</source>
+        <translation>读取的增益已写回 RAM；驱动器 %1 保持在开始时的角度，电机保持开启。</translation>
+    </message>
+</context>
+<context>
+    <name>lk::ui::TuningSetCan236</name>
+    <message>
+        <source>CAN V2.36 keeps these in RAM only: they are lost at power-off.</source>
+        <translation>CAN V2.36 只把这些参数保存在 RAM 中：断电后即丢失。</translation>
+    </message>
+    <message>
+        <source>0..65535, raw gain (CAN V2.36 control parameters 0x0A..0x0C)</source>
+        <translation>0..65535，原始增益（CAN V2.36 控制参数 0x0A..0x0C）</translation>
+    </message>
+    <message>
+        <source>Angle loop</source>
+        <translation>角度环</translation>
+    </message>
+    <message>
+        <source>Speed loop</source>
+        <translation>速度环</translation>
+    </message>
+    <message>
+        <source>Current loop</source>
+        <translation>电流环</translation>
+    </message>
+    <message>
+        <source>Input torque limit</source>
+        <translation>输入转矩限制</translation>
+    </message>
+    <message>
+        <source> (of 2048)</source>
+        <translation>（满量程 2048）</translation>
+    </message>
+    <message>
+        <source>0x1E, iq units, 2048 = full scale (inferred)</source>
+        <translation>0x1E，iq 单位，2048 = 满量程（推断）</translation>
+    </message>
+    <message>
+        <source>Input speed limit</source>
+        <translation>输入速度限制</translation>
+    </message>
+    <message>
+        <source> dps</source>
+        <translation> dps</translation>
+    </message>
+    <message>
+        <source>0x20, 0.01 dps on the wire (inferred)</source>
+        <translation>0x20，线上单位 0.01 dps（推断）</translation>
+    </message>
+    <message>
+        <source>Input angle limit</source>
+        <translation>输入角度限制</translation>
+    </message>
+    <message>
+        <source> deg</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source>0x22, 0.01 deg on the wire (inferred)</source>
+        <translation>0x22，线上单位 0.01 度（推断）</translation>
+    </message>
+    <message>
+        <source>Input current ramp (unit unknown)</source>
+        <translation>输入电流斜率（单位未知）</translation>
+    </message>
+    <message>
+        <source>0x24: the raw number; the CAN V2.36 document gives no unit</source>
+        <translation>0x24：原始数值；CAN V2.36 文档未给出单位</translation>
+    </message>
+    <message>
+        <source>Input speed ramp</source>
+        <translation>输入速度斜率</translation>
+    </message>
+    <message>
+        <source> dps/s</source>
+        <translation> dps/s</translation>
+    </message>
+    <message>
+        <source>0x26, dps/s (inferred)</source>
+        <translation>0x26，dps/s（推断）</translation>
+    </message>
+    <message>
+        <source>Control parameters (CAN V2.36)</source>
+        <translation>控制参数（CAN V2.36）</translation>
+    </message>
+    <message>
+        <source>Read with 0xC0 and written with 0xC1 to RAM: effective at once, lost at power-off. </source>
+        <translation>用 0xC0 读取、用 0xC1 写入 RAM：立即生效，断电丢失。</translation>
+    </message>
+    <message>
+        <source>read_control_param (0xC0) for IDs 0x0A..0x0C and 0x1E..0x26</source>
+        <translation>对 ID 0x0A..0x0C 与 0x1E..0x26 发送 read_control_param (0xC0)</translation>
+    </message>
+    <message>
+        <source>Write the changed values: 0xC1, RAM only, lost at power-off; read back.</source>
+        <translation>写入改动的值：0xC1，仅 RAM，断电丢失；随后回读。</translation>
+    </message>
+    <message>
+        <source>No ROM on CAN V2.36</source>
+        <translation>CAN V2.36 没有 ROM 写入</translation>
+    </message>
+    <message>
+        <source>Written to the RAM of drive %1 (0xC1) and read back with 0xC0: the drive holds what was sent. </source>
+        <translation>已写入驱动器 %1 的 RAM（0xC1）并用 0xC0 回读：驱动器保存的与发送的一致。</translation>
     </message>
 </context>
 <context>
@@ -6724,12 +7181,8 @@ not read</source>
         <translation>写入 %2 dps/s 后，驱动报告的加速度为 %1 dps/s：部分固件忽略 0x34 或用 0x33 读出 0（见 docs/ERRATA.md），因此实际生效的加速度未知。</translation>
     </message>
     <message>
-        <source>CAN V2.36 drive: its control parameters (0xC0/0xC1) live in RAM only. A write takes effect at once and is lost when the drive is switched off; the drive has no command to store them in ROM, so this view has no &quot;Write to ROM&quot; button.</source>
-        <translation>CAN V2.36 驱动：其控制参数（0xC0/0xC1）只在 RAM 中。写入立即生效，驱动断电后丢失；驱动没有把它们存入 ROM 的命令，因此本视图没有“写入 ROM”按钮。</translation>
-    </message>
-    <message>
-        <source>This build does not read or write the control parameters of a CAN V2.36 drive yet (0xC0/0xC1): nothing is sent. The RS485 parameter commands (0x40..0x44) do not exist on CAN.</source>
-        <translation>此版本尚不能读写 CAN V2.36 驱动的控制参数（0xC0/0xC1）：不发送任何内容。RS485 的参数命令（0x40..0x44）在 CAN 上不存在。</translation>
+        <source>CAN V2.36 keeps these in RAM only: they are lost at power-off. The drive has no command to store its control parameters (0xC0/0xC1) in ROM, so this view has no &quot;Write to ROM&quot; button.</source>
+        <translation>CAN V2.36 只把这些参数保存在 RAM 中：断电后即丢失。驱动器没有把控制参数（0xC0/0xC1）存入 ROM 的命令，因此本视图没有“写入 ROM”按钮。</translation>
     </message>
 </context>
 <context>

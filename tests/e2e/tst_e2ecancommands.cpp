@@ -56,7 +56,7 @@ private slots:
     void clearErrorsOnBoth();
     void motorStateCommandsOnBoth_data();
     void motorStateCommandsOnBoth();
-    void needsCantuneV236InfoReadsGainsWithC0();
+    void v236InfoReadsGainsWithC0();
     void needsCantuneV236WritesGainsInRamOnly();
     void needsCantuneV236RomWriteRefusedAsRamOnly();
 
@@ -498,9 +498,8 @@ void tst_E2eCanCommands::motorStateCommandsOnBoth()
              QByteArray::number(code, 16) + QByteArray(14, '0'));
 }
 
-void tst_E2eCanCommands::needsCantuneV236InfoReadsGainsWithC0()
+void tst_E2eCanCommands::v236InfoReadsGainsWithC0()
 {
-    QSKIP("needs cantune: info on V2.36 reads the gains with 0xC0 (IDs 0x0A..0x0C)");
     const CtlResult r = run({"info", "2", "--json", "--drives", kNew});
     QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     QVERIFY(m_wire.waitFor(kNewRep, 0xC0, 3));

@@ -6,6 +6,7 @@
 #include <recording/RecordingTransport.h>
 #include <recording/SessionRecorder.h>
 
+#include <QtTest/QSignalSpy>
 #include <QtTest/QtTest>
 
 using namespace lk::recording;
@@ -42,6 +43,19 @@ private slots:
         QCOMPARE(t.refusedWrites(), quint64(5));
         for (const RecordEvent &e : sink->events)
             QVERIFY(e.kind != RecordEvent::Kind::Tx);
+    }
+    /// A CAN link's bus condition (bus-off, no-ACK) passes through the recorder: the GUI always
+    /// records, and without this the engine never heard of a bus-off.
+    void forwardsTheCanBusCondition()
+    {
+        auto *fake = new FakeTransport(1000000);
+        RecordingTransport t(std::unique_ptr<Transport>(fake), std::make_shared<ListSink>(),
+                             std::make_shared<ManualClock>());
+        QSignalSpy spy(&t, &Transport::canConditionChanged);
+        emit fake->canConditionChanged(lk::transport::CanBusCondition::BusOff);
+        QCOMPARE(spy.size(), 1);
+        QCOMPARE(spy.at(0).at(0).value<lk::transport::CanBusCondition>(),
+                 lk::transport::CanBusCondition::BusOff);
     }
     void forwardsAndRecordsBothDirections()
     {
