@@ -93,6 +93,8 @@ QString EncodeCommand::commandList()
     constexpr int kWidth = 34;
     QString text;
     for (const protocol::CommandInfo &info : CommandTable::all()) {
+        if (info.canOnly) // encode writes RS485 frames: 0xC0/0xC1 exist only on CAN V2.36
+            continue;
         QString head =
             QStringLiteral("  %1 (%2)")
                 .arg(QLatin1String(info.name), CommandTable::codeText(quint8(info.command)));

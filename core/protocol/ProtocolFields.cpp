@@ -162,6 +162,9 @@ const QList<ProtocolField> &table()
         number(FieldId::MaxAngleDeg, "max_angle_deg", true, "deg", 1, 100, 0, kMultiTurnLimitRaw,
                "0..9e16 deg")
             .shown("max angle", "deg", 2, false),
+        // CAN V2.36's input angle limit (docs/CAN.md section 4.1): an int32, not V2.35's int64.
+        number(FieldId::ControlMaxAngleDeg, "max_angle_deg", true, "deg", 1, 100, 0, kInt32Max,
+               "0..21474836.47 deg"),
         out("max_angle_raw"),
         out("max_angle_half_raw"),
         number(FieldId::CurrentRamp, "current_ramp", false, "", 1, 1, 0, 32767, "0..32767")
@@ -169,12 +172,10 @@ const QList<ProtocolField> &table()
         number(FieldId::SpeedRampDps2, "speed_ramp_dps2", false, "dps/s", 1, 1, 0, kInt32Max,
                "0..2147483647 dps/s")
             .shown("speed ramp", "dps/s"),
-        // CAN V2.36 control parameters (docs/CAN.md section 4.1): int32 where V2.35 has an
-        // int64 angle and an int16 current ramp; the ramp's unit is unknown, so its raw value.
+        // CAN V2.36 control parameters (docs/CAN.md section 4.1): the current ramp is an int32
+        // where V2.35 has an int16, and its unit is unknown, so its raw value.
         {"control_param", FieldId::ControlParam, false, "", 1, 1, K::Choice, 0, 0, ""},
         out("control_param_id"),
-        number(FieldId::ControlMaxAngleDeg, "max_angle_deg", true, "deg", 1, 100, 0, kInt32Max,
-               "0..21474836.47 deg"),
         integer(FieldId::ControlCurrentRampRaw, "current_ramp_raw", 0, kInt32Max,
                 "0..2147483647 (unit unknown)")
             .shown("current ramp (raw, unit unknown)"),

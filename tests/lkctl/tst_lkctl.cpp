@@ -557,7 +557,9 @@ void tst_Lkctl::helpListsEveryCommand()
         const QByteArray entry =
             QByteArray("  ") + info.name + " (" +
             lk::protocol::CommandTable::codeText(quint8(info.command)).toLatin1() + ")";
-        QVERIFY2(r.out.contains(entry), entry.constData());
+        // encode writes RS485 frames: CAN V2.36's 0xC0/0xC1 are not offered where they cannot
+        // be built.
+        QVERIFY2(r.out.contains(entry) != info.canOnly, entry.constData());
     }
 }
 

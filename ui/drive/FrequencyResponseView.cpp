@@ -203,11 +203,14 @@ QString FrequencyResponseView::refusedText(const FrequencySweepSpec &spec, doubl
              text::VerdictText::verdict(verdict, m_host->series()));
 }
 
-QHBoxLayout *FrequencyResponseView::buildRunButtons()
+QVBoxLayout *FrequencyResponseView::buildRunButtons()
 {
     m_runPick = new QComboBox(this);
     m_runPick->setObjectName(QStringLiteral("sweepRunPick"));
-    m_runPick->setMinimumContentsLength(24);
+    // Short, and never grown by its entries: the list shows a run's whole legend when it opens,
+    // and the Tuning view must fit a 1366-pixel screen beside the gains.
+    m_runPick->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_runPick->setMinimumContentsLength(12);
     m_save = new QPushButton(tr("Save run\u2026"), this);
     m_save->setObjectName(QStringLiteral("saveSweepRun"));
     m_open = new QPushButton(tr("Open run\u2026"), this);
@@ -215,11 +218,15 @@ QHBoxLayout *FrequencyResponseView::buildRunButtons()
     m_remove = new QPushButton(tr("Remove run"), this);
     m_remove->setObjectName(QStringLiteral("removeSweepRun"));
     m_remove->setToolTip(tr("Take the chosen run off the chart (a saved file stays)."));
-    auto *row = new QHBoxLayout;
-    row->addWidget(m_runPick, 1);
-    row->addWidget(m_save);
-    row->addWidget(m_open);
-    row->addWidget(m_remove);
+    // The list above its buttons: in one row they set the Tuning view's narrowest width.
+    auto *buttons = new QHBoxLayout;
+    buttons->addWidget(m_save);
+    buttons->addWidget(m_open);
+    buttons->addWidget(m_remove);
+    buttons->addStretch(1);
+    auto *row = new QVBoxLayout;
+    row->addWidget(m_runPick);
+    row->addLayout(buttons);
     connect(m_remove, &QPushButton::clicked, this, [this] { m_runs->remove(chosenRun()); });
     connect(m_save, &QPushButton::clicked, this, [this] {
         const FrequencyRun *run = m_runs->find(chosenRun());

@@ -9,6 +9,7 @@
 
 class QComboBox;
 class QHBoxLayout;
+class QVBoxLayout;
 class QDoubleSpinBox;
 class QLabel;
 class QPushButton;
@@ -74,7 +75,7 @@ protected:
 
 private:
     QWidget *buildFields();
-    QHBoxLayout *buildRunButtons();
+    QVBoxLayout *buildRunButtons();
     void refreshRunPick();
     void ensureRunner(bus::BusSession *session);
     void onFinished(const tuning::FrequencySweepResult &result);

@@ -7,10 +7,10 @@
 #include <tuning/StepOverlayChart.h>
 #include <tuning/StepRunsModel.h>
 
-#include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QHeaderView>
 #include <QtWidgets/QTabWidget>
 #include <QtWidgets/QTableWidget>
+#include <QtWidgets/QVBoxLayout>
 
 namespace lk::ui {
 
@@ -30,10 +30,12 @@ GainSearchViewComparison::GainSearchViewComparison(QWidget *parent)
     m_tabs->setObjectName(QStringLiteral("bestCharts"));
     m_tabs->addTab(m_overlay, tr("Steps"));
     m_tabs->addTab(m_bode, tr("Bode"));
-    auto *h = new QHBoxLayout(this);
-    h->setContentsMargins(0, 0, 0, 0);
-    h->addWidget(m_table, 1);
-    h->addWidget(m_tabs, 2);
+    // The table above the charts: side by side their minimum widths add up, and with the Bode
+    // tab the Tuning view passed a 1366-pixel screen.
+    auto *v = new QVBoxLayout(this);
+    v->setContentsMargins(0, 0, 0, 0);
+    v->addWidget(m_table, 1);
+    v->addWidget(m_tabs, 2);
 }
 
 QString GainSearchViewComparison::bandwidthText(const tuning::FrequencyResponse &response)
