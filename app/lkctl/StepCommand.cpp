@@ -3,6 +3,7 @@
 #include "Console.h"
 #include "DriveParams.h"
 #include "OrderedJson.h"
+#include "ReadCommand.h"
 #include "ReplyText.h"
 
 #include <protocol/FieldJson.h>
@@ -296,6 +297,12 @@ std::optional<QJsonObject> StepCommand::readGains(LiveBus &bus, int id,
             return std::nullopt;
         }
         return protocol::FieldJson::replyFields(*r.reply);
+    }
+    // CAN V2.36 keeps them as control parameters (0xC0).
+    if (bus.link() == protocol::Link::Can) {
+        if (!ReadCommand::readCan236Params(bus, id, true, false, gains))
+            return std::nullopt;
+        return gains;
     }
     // V2.35 has no 0x30: the loops' gains (with Kd) come from the parameter table.
     for (const DriveParam &p : DriveParams::all()) {

@@ -18,8 +18,13 @@ std::optional<safety::SoftLimits> TuningCommand::openDrive(LiveBus &bus,
         *who = *identity;
     QString error;
     std::optional<safety::SoftLimits> limits = options.limitsFor(identity->series, &error);
-    if (!limits)
+    if (!limits) {
         *status = usageError(console, error);
+        return limits;
+    }
+    // The engine's own bounds for this drive: the speed watch, and the torque limit a CAN
+    // V2.36 speed command carries (the sweep's, the step's and the return to the start speed).
+    bus.session().setSoftLimits(id, *limits);
     return limits;
 }
 

@@ -104,10 +104,8 @@ void SimBus::onParseEvent(const protocol::ParseEvent &event, QList<SimReply> &ou
 void SimBus::dispatch(const protocol::Request &request, QList<SimReply> &out)
 {
     const int id = request.id;
-    const auto code = static_cast<quint8>(request.command);
     ++m_counters.requests;
-    ++m_perId[id];
-    ++m_perIdAndCommand[id << 8 | code];
+    countRequest(id, request.command);
 
     SimDrive *target = drive(id);
     if (target && m_faults.isSilenced(id)) {
@@ -131,6 +129,12 @@ void SimBus::dispatch(const protocol::Request &request, QList<SimReply> &out)
         return;
     ++m_counters.replies;
     out.append(r);
+}
+
+void SimBus::countRequest(int id, protocol::Command command)
+{
+    ++m_perId[id];
+    ++m_perIdAndCommand[id << 8 | static_cast<quint8>(command)];
 }
 
 int SimBus::requestCount(int id) const

@@ -83,6 +83,9 @@ public:
     // Counters (since construction or resetCounters()).
     int requestCount(int id) const;
     int requestCount(int id, protocol::Command command) const;
+    /// Counts a request that reached a drive by another front (SimCanFront), so that the counts
+    /// above hold on every link.
+    void countRequest(int id, protocol::Command command);
     const SimBusCounters &counters() const { return m_counters; }
     void resetCounters();
 

@@ -42,6 +42,7 @@ void SimCanFront::answerMultiMotor(const protocol::can::CanData &data, QList<Sim
             continue;
         }
         ++m_counters.requests;
+        m_bus.countRequest(id, protocol::Command::Torque);
         protocol::TorqueCommand torque;
         torque.iqRaw = (*iq)[static_cast<size_t>(id - 1)];
         answer(*drive, protocol::Request{protocol::Command::Torque, quint8(id), torque}, out);
@@ -97,6 +98,7 @@ void SimCanFront::onEvent(const protocol::ParseEvent &event, QList<SimReply> &ou
         return;
     }
     ++m_counters.requests;
+    m_bus.countRequest(decoded.request->id, decoded.request->command);
     answer(*drive, *decoded.request, out);
 }
 

@@ -83,6 +83,13 @@ void TuningEnd::returnToSpeed(bus::BusSession &session, int id, double dps,
         return;
     }
     session.send(*motion.request, context, [id, dps, done](const bus::RequestResult &r) {
+        if (!r.ok() && r.attempts == 0) { // refused before the wire: say why, not "no answer"
+            done(false, QStringLiteral("the speed back to %1 dps was not sent to drive %2: %3")
+                            .arg(dps)
+                            .arg(id)
+                            .arg(r.reason));
+            return;
+        }
         if (!r.ok()) {
             done(false, QStringLiteral("drive %1 did not answer the speed back to %2 dps")
                             .arg(id)

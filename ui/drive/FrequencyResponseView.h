@@ -8,7 +8,6 @@
 #include <memory>
 
 class QComboBox;
-class QHBoxLayout;
 class QVBoxLayout;
 class QDoubleSpinBox;
 class QLabel;

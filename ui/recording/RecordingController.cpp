@@ -34,13 +34,15 @@ const QString kOnRequest = QStringLiteral("on request");
 recording::RecordingHeader headerFor(const ConnectionChoice &choice)
 {
     recording::RecordingHeader h;
-    if (choice.isCan()) {
-        // The CAN transport's records are what is recorded: the file says so, and readers
-        // parse it as CAN (recording::linkOf).
+    if (choice.link() == protocol::Link::Can) {
+        // CAN records are what is recorded (a CAN interface or the simulator on CAN): the
+        // file says so, and readers parse it as CAN (recording::linkOf).
         h.linkKind = recording::LinkKind::Can;
-        h.linkDescription = QStringLiteral("%1:%2 @ %3")
-                                .arg(choice.canPlugin, choice.canInterface)
-                                .arg(choice.bitRate);
+        h.linkDescription =
+            QStringLiteral("%1:%2 @ %3")
+                .arg(choice.isSimulator() ? QStringLiteral("simulator") : choice.canPlugin,
+                     choice.isSimulator() ? QStringLiteral("can0") : choice.canInterface)
+                .arg(choice.bitRate);
         h.baud = choice.bitRate;
         return h;
     }
