@@ -1,6 +1,6 @@
 // The whole window on the built-in simulated CAN bus: chosen in the connection bar (RS485/CAN,
-// then the built-in simulator in the list of CAN plugins), the scan finds old and V2.36 drives by their
-// replies, and the series chooser gives each drive its identity (series, generation, gear
+// then the built-in simulator in the list of CAN plugins), the scan finds old and V2.36 drives by
+// their replies, and the series chooser gives each drive its identity (series, generation, gear
 // ratio), remembered for the connection; until a series is known torque stays refused.
 
 #include "MainWindowFixture.h"
