@@ -257,7 +257,7 @@ void tst_E2eCanTools::listenPairsCanFrames()
 {
     QProcess listen;
     listen.start(QStringLiteral(LKCTL_PATH), {"listen", "--can", m_bus.can(), "--drives",
-                                              "1:MG,2:MF", "--json", "--duration", "5"});
+                                              "1:MG,2:MF", "--json", "--duration", "20"});
     QVERIFY(listen.waitForStarted(60000));
     QVERIFY(QTest::qWaitFor(
         [this] {
