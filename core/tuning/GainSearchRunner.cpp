@@ -4,9 +4,11 @@
 #include "TuningEnd.h"
 
 #include <bus/BusSession.h>
+#include <protocol/RequestBuilder.h>
 
 #include <QtCore/QTimer>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lk::tuning {
@@ -24,6 +26,38 @@ FrequencySweepSpec GainSearchSpec::bode() const
     s.leadInS = 0.3;
     s.minPointS = 0.25;
     return s;
+}
+
+GainSearchSpec GainSearchSpec::forPosition(int id)
+{
+    GainSearchSpec s;
+    s.id = id;
+    s.loop = StepLoop::Position;
+    s.from = 0;
+    s.to = kPositionStepDeg;
+    return s;
+}
+
+QString GainSearchSpec::check(const safety::SoftLimits &limits) const
+{
+    if (!(maxOvershootPct >= 0 && maxOvershootPct <= 100))
+        return QStringLiteral("the overshoot bound must be 0..100 %, got %1").arg(maxOvershootPct);
+    if (maxCandidates < 1 || maxCandidates > 50)
+        return QStringLiteral("the candidates must be 1..50, got %1").arg(maxCandidates);
+    if (loop == StepLoop::Position) {
+        // Position targets are checked against the window; without one a step could go
+        // anywhere the motor's multi-turn range allows.
+        if (!limits.minAngleDeg || !limits.maxAngleDeg)
+            return QStringLiteral("the position loop's search needs an angle window (min and "
+                                  "max angle in the soft limits)");
+        if (measureBode)
+            return QStringLiteral("the Bode step measures the speed loop; a position search "
+                                  "has none");
+        if (periods < 2)
+            return QStringLiteral("a position search steps in a square (2 periods or more) "
+                                  "so that it ends where it began");
+    }
+    return StepTestPlan::checkSpec(step());
 }
 
 std::optional<double> GainSearchSpec::bodeSeconds(std::optional<protocol::Series> series,
@@ -82,6 +116,7 @@ bool GainSearchRunner::start(const GainSearchSpec &spec, const safety::SoftLimit
     m_result.spec = spec;
     m_strategy.reset();
     m_startSpeed.reset();
+    m_startAngle = 0;
     m_measured = false;
     m_emergencyStop = false;
     m_userAbort = false;
@@ -89,14 +124,7 @@ bool GainSearchRunner::start(const GainSearchSpec &spec, const safety::SoftLimit
     ++m_run;
     m_clock.start();
     m_phase = Phase::Reading;
-    QString bad;
-    if (!(spec.maxOvershootPct >= 0 && spec.maxOvershootPct <= 100))
-        bad = QStringLiteral("the overshoot bound must be 0..100 %, got %1")
-                  .arg(spec.maxOvershootPct);
-    else if (spec.maxCandidates < 1 || spec.maxCandidates > 50)
-        bad = QStringLiteral("the candidates must be 1..50, got %1").arg(spec.maxCandidates);
-    else
-        bad = StepTestPlan::checkSpec(spec.step());
+    const QString bad = spec.check(limits);
     TuningEnd::readFirst(m_keeper, spec.id, bad, this,
                          [this, run = m_run](StepTestFailure failure, const QString &why) {
                              if (run != m_run || m_phase != Phase::Reading)
@@ -138,7 +166,55 @@ void GainSearchRunner::abort()
 void GainSearchRunner::onRead()
 {
     m_result.read = m_keeper.gains();
-    m_strategy.emplace(*m_keeper.gains(), m_spec.maxOvershootPct, m_spec.maxCandidates);
+    if (m_spec.loop != StepLoop::Position) {
+        startStrategy();
+        return;
+    }
+    // Position steps go from the angle the drive is at (its multi-turn angle, 0x92).
+    const protocol::BuildResult read =
+        protocol::build::plain(protocol::Command::ReadMultiTurn, m_spec.id);
+    if (!read.ok()) {
+        end(StepTestFailure::BadSpec, SearchEnd::BadSpec, DriveLeft::NoStepSent, true,
+            QStringLiteral("%1; nothing was sent").arg(read.error.message()));
+        return;
+    }
+    m_session.send(*read.request, this, [this, run = m_run](const bus::RequestResult &r) {
+        if (run == m_run && m_phase == Phase::Reading)
+            onAngleRead(r);
+    });
+}
+
+void GainSearchRunner::onAngleRead(const bus::RequestResult &result)
+{
+    const auto *angle = result.ok() && result.reply
+                            ? std::get_if<protocol::MultiTurnAngle>(&result.reply->payload)
+                            : nullptr;
+    if (!angle) {
+        // Only reads went out: nothing to put back, nothing moved.
+        const bool lost = result.status == bus::RequestStatus::Disconnected;
+        end(lost ? StepTestFailure::Disconnected : StepTestFailure::Silent, SearchEnd::FailedToRead,
+            DriveLeft::Untouched, true,
+            QStringLiteral("drive %1 did not answer read_multi_turn_angle; nothing was sent")
+                .arg(m_spec.id));
+        return;
+    }
+    m_startAngle = angle->degrees();
+    m_result.startAngle = m_startAngle;
+    // Toward the side of the window with room for the step; the plan checks every target.
+    const double reach = std::max(std::abs(m_spec.from), std::abs(m_spec.to));
+    if (m_limits.maxAngleDeg && m_startAngle + reach > *m_limits.maxAngleDeg &&
+        (!m_limits.minAngleDeg || m_startAngle - reach >= *m_limits.minAngleDeg)) {
+        m_spec.from = -m_spec.from;
+        m_spec.to = -m_spec.to;
+        m_result.direction = -1;
+    }
+    startStrategy();
+}
+
+void GainSearchRunner::startStrategy()
+{
+    m_strategy.emplace(*m_keeper.gains(), m_spec.maxOvershootPct, m_spec.maxCandidates,
+                       m_spec.loop);
     m_phase = Phase::Searching;
     tryNext();
 }
@@ -163,7 +239,7 @@ void GainSearchRunner::tryNext()
                 QStringLiteral("a candidate's gains could not be written (%1)").arg(why));
             return;
         }
-        m_step.start(m_spec.step(), m_limits);
+        m_step.start(m_spec.step(m_startAngle), m_limits);
     });
 }
 
@@ -171,7 +247,7 @@ void GainSearchRunner::onStepFinished(const StepTestResult &result)
 {
     if (m_phase != Phase::Searching)
         return;
-    if (!m_startSpeed)
+    if (!m_startSpeed && m_spec.loop == StepLoop::Speed)
         m_startSpeed = result.startValue;
     const CandidateScore score = GainSearchStrategy::score(
         *m_strategy->next(), result.trace, seriesEffortLimit(m_session.series(m_spec.id)),
@@ -215,6 +291,17 @@ void GainSearchRunner::finishSearch()
             haltAndRestore(
                 StepTestFailure::Silent, SearchEnd::FailedToRestore,
                 QStringLiteral("the gains read could not be written back (%1)").arg(why));
+            return;
+        }
+        if (m_spec.loop == StepLoop::Position) {
+            // Every square ended at FROM, the angle read: the drive holds it, and a speed
+            // command would take it out of the position loop.
+            m_result.outcome.angleDeg = m_startAngle;
+            end(StepTestFailure::None, finishedEnd(), DriveLeft::HoldsAngle, true,
+                QStringLiteral("the gains and acceleration read are back in RAM; drive %1 "
+                               "holds %2 deg, the angle it started at")
+                    .arg(m_spec.id)
+                    .arg(m_startAngle, 0, 'f', 2));
             return;
         }
         returnToStart();

@@ -16,10 +16,15 @@ class BusSession;
 namespace lk::tuning {
 
 /// A gain search as the user asks for it: the speed loop's Kp and Ki, scored by short speed
-/// steps FROM -> TO.
+/// steps FROM -> TO, or the position loop's (LoopGains::angle), scored by short position steps
+/// from the angle the drive is at.
 struct GainSearchSpec {
     int id = 1;
-    double from = 100; ///< dps: away from 0, where friction would bend the steps
+    StepLoop loop = StepLoop::Speed;
+    /// Speed: dps, away from 0, where friction would bend the steps. Position: deg from the
+    /// angle read at the start (forPosition(): 0 and kPositionStepDeg); the steps go the other
+    /// way when the angle window has no room for them the first way.
+    double from = 100;
     double to = 300;
     double maxOvershootPct = 5;
     double stepS = 0.25;    ///< how long each step is held
@@ -29,11 +34,21 @@ struct GainSearchSpec {
     /// After the search, the Bode of the gains read and of the best (GainSearchBode).
     bool measureBode = false;
 
-    /// The step test each candidate is scored by.
-    StepTestSpec step() const
+    static constexpr double kPositionStepDeg = 10; ///< rotor deg: a few encoder counts x 1000
+
+    /// A position search's defaults: steps of kPositionStepDeg from the angle the drive is at.
+    static GainSearchSpec forPosition(int id);
+    /// The step test each candidate is scored by; `startAngle`: the angle read at the start
+    /// (position: FROM and TO are offsets from it; the square ends at FROM, so the drive ends
+    /// where it started).
+    StepTestSpec step(double startAngle = 0) const
     {
-        return StepTestSpec{id, StepLoop::Speed, from, to, stepS, periods, preRollS, {}};
+        const double base = loop == StepLoop::Position ? startAngle : 0;
+        return StepTestSpec{id, loop, base + from, base + to, stepS, periods, preRollS, {}};
     }
+    /// What is wrong with the search as set, before anything is sent (English), or "".
+    /// `limits`: a position search needs their angle window.
+    QString check(const safety::SoftLimits &limits) const;
     /// The short sweep the Bode step measures each set with: a sine between FROM and TO's
     /// middle and half-way to each (where the steps already went), 9 frequencies from 5 to 100 Hz.
     FrequencySweepSpec bode() const;
@@ -48,6 +63,10 @@ struct GainSearchSpec {
 struct GainSearchResult {
     GainSearchSpec spec;
     std::optional<LoopGains> read; ///< the gains read before anything moved
+    /// Position: the angle read before anything moved, deg, and the sign the steps went
+    /// (-1: down from it, the window had no room above).
+    std::optional<double> startAngle;
+    int direction = 1;
     QVector<CandidateScore> candidates;
     std::optional<int> baseline; ///< the read gains' score (the first candidate), if measured
     std::optional<int> best;     ///< the fastest accepted candidate
@@ -68,7 +87,8 @@ struct GainSearchResult {
 /// writes its gains to RAM and runs a step test (StepTestRunner: every setpoint checked
 /// against the limits, a refusal sends nothing more), until the strategy is done or a
 /// candidate shows instability (current at its limit, swings growing). Then it writes the
-/// gains read back to RAM and returns the drive to the speed it had.
+/// gains read back to RAM and returns the drive to the speed it had (speed), or leaves it
+/// holding the angle it had (position: every square ends where it began).
 ///
 /// abort() (Esc, Ctrl-C) stops the step at once, sends motor off (an emergency stop) and
 /// writes the gains read back to RAM; failed(Aborted) follows once both ended.
@@ -94,6 +114,8 @@ private:
     enum class Phase { Idle, Reading, Searching, Restoring, Measuring, Aborting };
 
     void onRead();
+    void onAngleRead(const bus::RequestResult &result);
+    void startStrategy();
     void tryNext();
     void onStepFinished(const StepTestResult &result);
     void onStepFailed(const StepTestResult &result);
@@ -120,6 +142,7 @@ private:
     std::optional<GainSearchStrategy> m_strategy;
     GainSearchResult m_result;
     std::optional<double> m_startSpeed;
+    double m_startAngle = 0;      ///< position: the angle read (FROM and TO are offsets from it)
     bool m_measured = false;      ///< the Bode step is done: the return to the start speed ends it
     bool m_emergencyStop = false; ///< one came in the Bode step: its abort is worded as one
     bool m_userAbort = false;     ///< abort() came first in the Bode step

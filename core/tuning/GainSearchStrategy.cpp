@@ -24,10 +24,21 @@ double CandidateScore::riseS() const
 }
 
 GainSearchStrategy::GainSearchStrategy(const LoopGains &read, double maxOvershootPct,
-                                       int maxCandidates)
-    : m_read(read), m_maxOvershootPct(maxOvershootPct), m_maxCandidates(maxCandidates),
-      m_rowKp(read.speed.kp), m_rowKi(read.speed.ki), m_next(read)
+                                       int maxCandidates, StepLoop loop)
+    : m_read(read), m_loop(loop), m_maxOvershootPct(maxOvershootPct),
+      m_maxCandidates(maxCandidates), m_rowKp(tuned(read, loop).kp), m_rowKi(tuned(read, loop).ki),
+      m_next(read)
 {
+}
+
+const PidTriple &GainSearchStrategy::tuned(const LoopGains &gains, StepLoop loop)
+{
+    return loop == StepLoop::Position ? gains.angle : gains.speed;
+}
+
+PidTriple &GainSearchStrategy::tuned(LoopGains &gains, StepLoop loop)
+{
+    return loop == StepLoop::Position ? gains.angle : gains.speed;
 }
 
 std::optional<LoopGains> GainSearchStrategy::next() const
@@ -211,18 +222,18 @@ void GainSearchStrategy::record(const CandidateScore &score)
     if (m_stage == Stage::Refining) {
         ++m_refinements;
         if (score.accepted())
-            m_accepted = score.gains.speed;
+            m_accepted = tunedOf(score);
         else
-            m_rejectedKp = score.gains.speed.kp;
+            m_rejectedKp = tunedOf(score).kp;
         nextRefinement();
         return;
     }
     // Down the row (Ki lower: less overshoot) until a candidate is accepted, the row ends or
     // a lower Ki stops helping.
-    if (!score.accepted() && m_kiStep + 1 < kKiSteps && score.gains.speed.ki > 1 &&
+    if (!score.accepted() && m_kiStep + 1 < kKiSteps && tunedOf(score).ki > 1 &&
         lowerKiHelps(score)) {
         ++m_kiStep;
-        m_next = candidate(m_rowKp, scaled(score.gains.speed.ki, 1 / kKiFactor, m_read.maxGain()));
+        m_next = candidate(m_rowKp, scaled(tunedOf(score).ki, 1 / kKiFactor, m_read.maxGain()));
         return;
     }
     endRow(score);
@@ -263,8 +274,8 @@ void GainSearchStrategy::endRow(const CandidateScore &last)
     const bool improved = rowBest < m_bestBeforeRow * (1 - kMinGain);
     m_bestBeforeRow = std::min(m_bestBeforeRow, rowBest);
     if (rowAccepted) {
-        m_accepted = last.gains.speed;
-        m_rowKi = last.gains.speed.ki;
+        m_accepted = tunedOf(last);
+        m_rowKi = tunedOf(last).ki;
     }
     // One row that is no faster may be the noise of a few samples: two in a row end the climb.
     m_rowsWithoutGain = rowAccepted && !improved ? m_rowsWithoutGain + 1 : 0;
@@ -292,8 +303,8 @@ void GainSearchStrategy::nextRefinement()
 LoopGains GainSearchStrategy::candidate(quint16 kp, quint16 ki) const
 {
     LoopGains g = m_read;
-    g.speed.kp = kp;
-    g.speed.ki = ki;
+    tuned(g, m_loop).kp = kp;
+    tuned(g, m_loop).ki = ki;
     return g;
 }
 

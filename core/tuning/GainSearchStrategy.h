@@ -42,7 +42,9 @@ struct CandidateScore {
     double riseS() const;
 };
 
-/// Which speed-loop gains to try next, from the gains read and the scores so far.
+/// Which gains of one loop (the speed loop's, or the position loop's: LoopGains::angle) to try
+/// next, from the gains read and the scores so far. The same climb serves both: each is a PI
+/// whose Kp sets its bandwidth and whose Ki, too high, overshoots.
 ///
 /// Climbing, in rows: row k has Kp = the read Kp x kKpFactor^k and starts at the Ki the row
 /// before accepted (the read Ki until something is accepted); while a candidate overshoots or
@@ -57,7 +59,7 @@ struct CandidateScore {
 /// (geometric middle, with the accepted Ki), each accepted one its new lower end.
 ///
 /// The best is the accepted candidate with the fastest (median) rise, the least error area
-/// among rises within kRiseTieS of it. Only the speed loop's Kp and Ki change; every other
+/// among rises within kRiseTieS of it. Only the searched loop's Kp and Ki change; every other
 /// value stays as read (never beyond the generation's range). The first unstable candidate
 /// (current at its limit, swings growing) or `maxCandidates` end the search. Pure.
 class GainSearchStrategy {
@@ -74,7 +76,13 @@ public:
     static constexpr int kMaxSwings = 2;         ///< oscillations allowed in a step
     static constexpr double kMaxSteadyPct = 2.0; ///< of the step
 
-    GainSearchStrategy(const LoopGains &read, double maxOvershootPct, int maxCandidates);
+    GainSearchStrategy(const LoopGains &read, double maxOvershootPct, int maxCandidates,
+                       StepLoop loop = StepLoop::Speed);
+
+    /// The gains of `loop` in `gains`: speed, or angle for the position loop.
+    static const PidTriple &tuned(const LoopGains &gains, StepLoop loop);
+    static PidTriple &tuned(LoopGains &gains, StepLoop loop);
+    StepLoop loop() const { return m_loop; }
 
     /// The next candidate; nullopt: the search is over.
     std::optional<LoopGains> next() const;
@@ -113,7 +121,10 @@ private:
     bool lowerKiHelps(const CandidateScore &score) const;
     LoopGains candidate(quint16 kp, quint16 ki) const;
 
+    const PidTriple &tunedOf(const CandidateScore &s) const { return tuned(s.gains, m_loop); }
+
     LoopGains m_read;
+    StepLoop m_loop = StepLoop::Speed;
     double m_maxOvershootPct;
     int m_maxCandidates;
     Stage m_stage = Stage::Climbing;

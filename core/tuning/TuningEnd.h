@@ -40,6 +40,7 @@ enum class DriveLeft {
     MayBeMoving, ///< Motor Off went out and was not acknowledged
     HoldsZero,   ///< at 0 dps, the speed read at the start, motor on
     BackAtSpeed, ///< back at the speed read at the start (TuningOutcome::speedDps), turning
+    HoldsAngle,  ///< holds the angle read at the start (TuningOutcome::angleDeg), motor on
 };
 
 /// How a gain search ended, as facts (the views word them; the English message is for logs).
@@ -47,6 +48,7 @@ struct TuningOutcome {
     SearchEnd end = SearchEnd::BadSpec;
     DriveLeft drive = DriveLeft::Untouched;
     double speedDps = 0;       ///< BackAtSpeed: the speed
+    double angleDeg = 0;       ///< HoldsAngle: the multi-turn rotor angle, deg
     bool gainsRestored = true; ///< false: RAM may hold a candidate's gains (read them back)
 };
 

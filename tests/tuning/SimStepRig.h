@@ -83,12 +83,28 @@ public:
         return ok;
     }
 
-    /// A step test as StepTestRunner runs it (speed loop): the trace from the first
-    /// setpoint's reply on, edges at their replies' times. An empty trace: refused.
+    /// The multi-turn angle (0x92), deg; nullopt: no answer.
+    std::optional<double> readAngle()
+    {
+        const auto reply =
+            transact(*protocol::build::plain(protocol::Command::ReadMultiTurn, m_id).request);
+        const auto *a = reply ? std::get_if<protocol::MultiTurnAngle>(&reply->payload) : nullptr;
+        return a ? std::optional<double>(a->degrees()) : std::nullopt;
+    }
+
+    /// A step test as StepTestRunner runs it: the trace from the first setpoint's reply on,
+    /// edges at their replies' times. Speed: read_state2 in every gap, each reply a sample.
+    /// Position: the angle read first (the plan's targets start there), then rounds of
+    /// read_state2 and read_multi_turn in the gaps, each angle a sample with the round's
+    /// current as its effort. An empty trace: refused.
     tuning::StepTrace runStep(const tuning::StepTestSpec &spec, const safety::SoftLimits &limits)
     {
+        const bool position = spec.loop == tuning::StepLoop::Position;
+        safety::DrivePosition at;
+        if (position)
+            at.angleDeg = readAngle();
         const tuning::StepTestPlan plan =
-            tuning::StepTestPlan::make(spec, m_context.series, limits, safety::DrivePosition{});
+            tuning::StepTestPlan::make(spec, m_context.series, limits, at);
         tuning::StepTrace trace;
         trace.loop = spec.loop;
         if (!plan.allowed())
@@ -96,13 +112,19 @@ public:
         const double start = m_now;
         int next = 0;
         bool first = true;
+        bool readAngleNext = false;
+        double roundEffort = tuning::StepTrace::missing();
         while (m_now - start < plan.endS() || next < plan.setpoints().size()) {
             const bool due = next < plan.setpoints().size() &&
                              plan.setpoints().at(next).atS <= m_now - start + 0.0005;
             const tuning::StepSetpoint *setpoint = due ? &plan.setpoints().at(next++) : nullptr;
+            const protocol::Command poll = position && readAngleNext
+                                               ? protocol::Command::ReadMultiTurn
+                                               : protocol::Command::ReadState2;
+            if (!setpoint && position)
+                readAngleNext = !readAngleNext;
             const std::optional<protocol::Reply> reply = transact(
-                setpoint ? setpoint->request
-                         : *protocol::build::plain(protocol::Command::ReadState2, m_id).request);
+                setpoint ? setpoint->request : *protocol::build::plain(poll, m_id).request);
             if (!reply) {
                 first = first && !setpoint;
                 continue;
@@ -115,14 +137,22 @@ public:
                 continue; // before the first setpoint's reply: not the trace's
             const std::optional<bus::TelemetrySample> s =
                 bus::TelemetrySample::fromReply(*reply, time);
-            if (!s || !s->has(bus::TelemetryField::Speed))
+            if (!s)
                 continue;
             const double effort = s->has(bus::TelemetryField::IqA) ? s->iqA
                                   : s->has(bus::TelemetryField::Power)
                                       ? s->power
                                       : tuning::StepTrace::missing();
             trace.effortIsPower = trace.effortIsPower || s->has(bus::TelemetryField::Power);
-            trace.append(time, s->speedDps, effort);
+            if (position) {
+                if (!setpoint && poll == protocol::Command::ReadState2)
+                    roundEffort = effort;
+                if (s->has(bus::TelemetryField::MultiTurn))
+                    trace.append(time, s->multiTurnDeg, roundEffort);
+                continue;
+            }
+            if (s->has(bus::TelemetryField::Speed))
+                trace.append(time, s->speedDps, effort);
         }
         return trace;
     }

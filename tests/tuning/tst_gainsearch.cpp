@@ -2,29 +2,23 @@
 // instability ending the search, and the runner on the built-in simulator at 1 Mbaud: a
 // faster rise than the gains read within the overshoot bound, nothing left written, and the
 // abort path (motor off, the gains read back in RAM).
-#include <bus/BusSession.h>
-#include <protocol/RequestBuilder.h>
-#include <sim/SimBus.h>
-#include <sim/SimBusSpec.h>
-#include <transport/SimTransport.h>
-#include <tuning/GainSearchRunner.h>
+#include "GainSearchRig.h"
 
-#include <QtTest/QSignalSpy>
-#include <QtTest/QTest>
+#include <protocol/RequestBuilder.h>
 
 #include <cmath>
 
 using namespace lk;
 using namespace lk::bus;
 using namespace lk::tuning;
+using lk::test::GainSearchRig;
+using lk::test::kWaitMs;
 using protocol::Command;
 using protocol::Series;
 
 Q_DECLARE_METATYPE(lk::tuning::CandidateVerdict)
 
 namespace {
-
-constexpr int kWaitMs = 120000; // a loaded 2-core machine; never a timing assertion
 
 /// A step 0 -> 100 sampled every ms: a first-order rise of `tau`, plus a decaying or growing
 /// swing of `swing` (fraction of the step) at 20 Hz with `growth` per second.
@@ -61,63 +55,6 @@ CandidateScore scored(const LoopGains &g, double area, double overshoot, Candida
     s.verdict = v;
     return s;
 }
-
-TransportFactory simFactory()
-{
-    return [](int baud) -> std::unique_ptr<transport::Transport> {
-        auto bus =
-            sim::SimBus::fromSpec(*sim::SimBusSpec::parse(QStringLiteral("3:MF,5:MG@2.35,7:MH")));
-        auto t = std::make_unique<transport::SimTransport>(std::move(bus));
-        t->setBaud(baud);
-        return t;
-    };
-}
-
-struct Rig {
-    BusSession session;
-    QSignalSpy completed{&session, &BusSession::requestCompleted};
-    GainSearchRunner runner{session};
-    QSignalSpy finished{&runner, &GainSearchRunner::finished};
-    QSignalSpy failed{&runner, &GainSearchRunner::failed};
-    QSignalSpy scored{&runner, &GainSearchRunner::candidateScored};
-    Rig()
-    {
-        session.open(simFactory(), 1000000);
-        (void)QTest::qWaitFor([this] { return session.connection().isOpen(); }, kWaitMs);
-        request(*protocol::build::plain(Command::ReadModel, 3).request);
-        request(*protocol::build::plain(Command::ReadModel, 5).request);
-        request(*protocol::build::plain(Command::ReadModel, 7).request);
-    }
-    RequestResult request(const protocol::Request &r)
-    {
-        const quint64 t = session.send(r);
-        std::optional<RequestResult> out;
-        (void)QTest::qWaitFor(
-            [&] {
-                for (const auto &args : completed)
-                    if (args.at(0).value<RequestResult>().ticket == t)
-                        out = args.at(0).value<RequestResult>();
-                return out.has_value();
-            },
-            kWaitMs);
-        return out.value_or(RequestResult{});
-    }
-    std::optional<LoopGains> gains(int id)
-    {
-        const protocol::Generation g = session.knownMotors().value(id).generation;
-        QVector<protocol::Reply> replies;
-        for (const protocol::Request &r : LoopGains::reads(id, g))
-            if (const RequestResult res = request(r); res.reply)
-                replies.append(*res.reply);
-        return LoopGains::decode(g, replies);
-    }
-    GainSearchResult waitForEnd()
-    {
-        if (!QTest::qWaitFor([this] { return finished.size() + failed.size() > 0; }, kWaitMs))
-            return {};
-        return (finished.isEmpty() ? failed : finished).at(0).at(0).value<GainSearchResult>();
-    }
-};
 
 GainSearchSpec spec(int id)
 {
@@ -274,7 +211,7 @@ void tst_GainSearch::searchBeatsTheGainsRead_data()
 void tst_GainSearch::searchBeatsTheGainsRead()
 {
     QFETCH(int, id);
-    Rig rig;
+    GainSearchRig rig;
     const std::optional<LoopGains> before = rig.gains(id);
     QVERIFY(before);
     QVERIFY(rig.runner.start(spec(id), safety::SoftLimits::defaults(rig.session.series(id))));
@@ -308,7 +245,7 @@ void tst_GainSearch::searchBeatsTheGainsRead()
 
 void tst_GainSearch::abortRestoresAndTurnsOff()
 {
-    Rig rig;
+    GainSearchRig rig;
     const std::optional<LoopGains> before = rig.gains(3);
     QVERIFY(rig.runner.start(spec(3), safety::SoftLimits::defaults(Series::MF)));
     // Mid-search: the second candidate's gains are in RAM.
@@ -332,7 +269,7 @@ void tst_GainSearch::abortRestoresAndTurnsOff()
 // candidate's gains are being written (no step stream to stop) must still end the search.
 void tst_GainSearch::emergencyStopBetweenStepsEndsTheSearch()
 {
-    Rig rig;
+    GainSearchRig rig;
     const std::optional<LoopGains> before = rig.gains(3);
     QObject context;
     QObject::connect(&rig.runner, &GainSearchRunner::candidateScored, &context, [&] {
@@ -357,7 +294,7 @@ void tst_GainSearch::saturationStopsAndRestores()
 {
     // Steps of 11900 dps hold the MH drive's current at its limit for about 50 ms: the first
     // candidate is the last, the gains read stay in RAM and the drive is back at its speed.
-    Rig rig;
+    GainSearchRig rig;
     const std::optional<LoopGains> before = rig.gains(7);
     GainSearchSpec s = spec(7);
     s.to = 12000;

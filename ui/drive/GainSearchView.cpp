@@ -12,6 +12,7 @@
 #include <tuning/MetricText.h>
 
 #include <QtWidgets/QCheckBox>
+#include <QtWidgets/QComboBox>
 #include <QtWidgets/QDoubleSpinBox>
 #include <QtWidgets/QFormLayout>
 #include <QtWidgets/QHBoxLayout>
@@ -28,6 +29,7 @@ using tuning::CandidateScore;
 using tuning::CandidateVerdict;
 using tuning::GainSearchResult;
 using tuning::GainSearchSpec;
+using tuning::StepLoop;
 
 namespace {
 
@@ -40,8 +42,17 @@ QString searchTravel(const TuningRunDrive &drive, const GainSearchSpec &s)
     const double seconds =
         s.maxCandidates * (s.preRollS + 2 * s.periods * s.stepS) +
         (s.measureBode ? s.bodeSeconds(drive.series, drive.limits).value_or(0) : 0);
+    // Position: steps of `to` from where the drive is, at most the speed limit fast.
+    if (s.loop == StepLoop::Position)
+        return TuningRunGate::positionTravelText(drive, std::abs(s.to), drive.limits.maxSpeedDps,
+                                                 seconds);
     return TuningRunGate::travelText(drive, std::min(s.from, s.to), std::max(s.from, s.to),
                                      seconds);
+}
+
+tuning::SweepLoop gateLoop(StepLoop loop)
+{
+    return loop == StepLoop::Position ? tuning::SweepLoop::Position : tuning::SweepLoop::Speed;
 }
 
 int fieldIndex(const ParamSetSpec &spec, const QString &key)
@@ -75,14 +86,19 @@ QString GainSearchView::verdictText(CandidateVerdict v)
     return {};
 }
 
+QString GainSearchView::loopGainName(StepLoop loop)
+{
+    return loop == StepLoop::Position ? tr("Angle") : tr("Speed");
+}
+
 QString GainSearchView::riseText(const CandidateScore &s)
 {
-    return MetricText::value(s.metrics, StepMetricKind::RiseTime, tuning::StepLoop::Speed, false);
+    return MetricText::value(s.metrics, StepMetricKind::RiseTime, s.trace.loop, false);
 }
 
 QString GainSearchView::overshootText(const CandidateScore &s)
 {
-    return MetricText::value(s.metrics, StepMetricKind::Overshoot, tuning::StepLoop::Speed, false);
+    return MetricText::value(s.metrics, StepMetricKind::Overshoot, s.trace.loop, false);
 }
 
 GainSearchView::GainSearchView(TuningView *host, QWidget *parent) : QWidget(parent), m_host(host)
@@ -99,7 +115,7 @@ GainSearchView::GainSearchView(TuningView *host, QWidget *parent) : QWidget(pare
     m_run->setObjectName(QStringLiteral("runSearch"));
     m_writeRam = new QPushButton(tr("Write to RAM"), this);
     m_writeRam->setObjectName(QStringLiteral("writeSuggestedRam"));
-    m_writeRam->setToolTip(tr("Write the suggested speed Kp and Ki to the drive's RAM (lost at "
+    m_writeRam->setToolTip(tr("Write the suggested Kp and Ki to the drive's RAM (lost at "
                               "power-off), then read back. Nothing is written before this."));
     m_writeRom = new QPushButton(tr("Write to ROM\u2026"), this);
     m_writeRom->setObjectName(QStringLiteral("writeSuggestedRom"));
@@ -137,9 +153,10 @@ GainSearchView::GainSearchView(TuningView *host, QWidget *parent) : QWidget(pare
     connect(m_writeRam, &QPushButton::clicked, this, &GainSearchView::writeBestToRam);
     connect(m_writeRom, &QPushButton::clicked, this, &GainSearchView::writeBestToRom);
     connect(m_host, &TuningView::parametersRead, this, &GainSearchView::refresh);
-    setStatus(tr("Tries speed-loop gains with short speed steps within the soft limits and "
-                 "suggests the fastest whose overshoot stays under the bound. Nothing is kept "
-                 "in the drive: the gains read go back to RAM at the end."));
+    setStatus(tr("Tries speed-loop gains (or, with an angle window, position-loop gains) with "
+                 "short steps within the soft limits and suggests the fastest whose overshoot "
+                 "stays under the bound. Nothing is kept in the drive: the gains read go back to "
+                 "RAM at the end."));
     // Not refresh(): the host builds its widgets before its read cycle; showEvent() asks it.
     m_run->setEnabled(false);
     m_writeRam->setEnabled(false);
@@ -158,6 +175,7 @@ QWidget *GainSearchView::buildFields()
 {
     auto *w = new QWidget(this);
     auto *form = new QFormLayout(w);
+    m_form = form;
     form->setContentsMargins(0, 0, 0, 0);
     const GainSearchSpec d;
     auto spin = [w](const QString &name, double min, double max, double value,
@@ -180,16 +198,31 @@ QWidget *GainSearchView::buildFields()
     m_from->setToolTip(tr("Each candidate steps the speed between these two, away from 0 where "
                           "friction would bend the steps."));
     m_to->setToolTip(m_from->toolTip());
+    m_loop = new QComboBox(w);
+    m_loop->setObjectName(QStringLiteral("searchLoop"));
+    m_loop->addItem(tr("Speed loop"), int(StepLoop::Speed));
+    m_loop->addItem(tr("Position loop"), int(StepLoop::Position));
+    m_loop->setToolTip(tr("The position loop is offered while an angle range (both ends) is "
+                          "set: its steps go from the angle the drive is at and back, inside "
+                          "the range."));
+    m_step =
+        spin(QStringLiteral("searchStep"), 0.5, 180, GainSearchSpec::kPositionStepDeg, tr(" deg"));
+    m_step->setDecimals(1);
+    m_step->setToolTip(tr("Each candidate steps the angle this far from where the drive is and "
+                          "back (down when the range has no room above)."));
     m_maxCandidates = new QSpinBox(w);
     m_maxCandidates->setObjectName(QStringLiteral("maxCandidates"));
     m_maxCandidates->setRange(1, 50);
     m_maxCandidates->setValue(d.maxCandidates);
     auto *steps = new QHBoxLayout;
+    m_speedSteps = steps;
     steps->addWidget(m_from, 1);
     steps->addWidget(new QLabel(QStringLiteral("\u2194"), w));
     steps->addWidget(m_to, 1);
+    form->addRow(tr("Loop"), m_loop);
     form->addRow(tr("Max overshoot"), m_overshoot);
     form->addRow(tr("Steps between"), steps);
+    form->addRow(tr("Step size"), m_step);
     form->addRow(tr("Candidates at most"), m_maxCandidates);
     // On by default here (the "best beside the current gains (step overlay and Bode)"),
     // off in lkctl: it adds two sweeps.
@@ -201,8 +234,9 @@ QWidget *GainSearchView::buildFields()
                                  "RAM for that sweep only, the gains read put back after it)."));
     form->addRow(QString(), m_measureBode);
     connect(m_measureBode, &QCheckBox::toggled, this, &GainSearchView::refresh);
-    for (QDoubleSpinBox *s : {m_overshoot, m_from, m_to})
+    for (QDoubleSpinBox *s : {m_overshoot, m_from, m_to, m_step})
         connect(s, &QDoubleSpinBox::valueChanged, this, &GainSearchView::refresh);
+    connect(m_loop, &QComboBox::currentIndexChanged, this, &GainSearchView::refresh);
     connect(m_maxCandidates, &QSpinBox::valueChanged, this, &GainSearchView::refresh);
     return w;
 }
@@ -217,23 +251,38 @@ BodeChart *GainSearchView::bode() const
     return m_compare->bode();
 }
 
+StepLoop GainSearchView::loop() const
+{
+    return StepLoop(m_loop->currentData().toInt());
+}
+
 GainSearchSpec GainSearchView::spec() const
 {
-    GainSearchSpec s;
+    const bool position = loop() == StepLoop::Position;
+    GainSearchSpec s = position ? GainSearchSpec::forPosition(m_host->driveId()) : GainSearchSpec{};
     s.id = m_host->driveId();
     s.maxOvershootPct = m_overshoot->value();
-    s.from = m_from->value();
-    s.to = m_to->value();
+    if (position) {
+        s.to = m_step->value();
+    } else {
+        s.from = m_from->value();
+        s.to = m_to->value();
+        s.measureBode = m_measureBode->isChecked(); // the Bode step is the speed loop's
+    }
     s.maxCandidates = m_maxCandidates->value();
-    s.measureBode = m_measureBode->isChecked();
     return s;
 }
 
 void GainSearchView::setSpec(const GainSearchSpec &s)
 {
+    m_loop->setCurrentIndex(m_loop->findData(int(s.loop)));
     m_overshoot->setValue(s.maxOvershootPct);
-    m_from->setValue(s.from);
-    m_to->setValue(s.to);
+    if (s.loop == StepLoop::Position) {
+        m_step->setValue(std::abs(s.to));
+    } else {
+        m_from->setValue(s.from);
+        m_to->setValue(s.to);
+    }
     m_maxCandidates->setValue(s.maxCandidates);
     m_measureBode->setChecked(s.measureBode);
 }
@@ -243,12 +292,13 @@ bool GainSearchView::runSearch()
     if (isRunning())
         return false;
     QString why;
-    const std::optional<TuningRunDrive> drive = TuningRunGate::check(*m_host, &why);
+    const GainSearchSpec s = spec();
+    const std::optional<TuningRunDrive> drive =
+        TuningRunGate::check(*m_host, gateLoop(s.loop), &why);
     if (!drive) {
         setStatus(why, true);
         return false;
     }
-    const GainSearchSpec s = spec();
     if (s.measureBode && !s.bodeSeconds(drive->series, drive->limits)) {
         setStatus(tr("The Bode of both is refused within these limits: clear the box or change "
                      "the steps. Nothing was sent."),
@@ -256,12 +306,13 @@ bool GainSearchView::runSearch()
         return false;
     }
     const QString travel = searchTravel(*drive, s);
-    if (!TuningRunGate::askFreeToTurn(this, *drive, QStringLiteral("gain_search"),
-                                      tr("Suggested gains"), travel)) {
+    const QString key = s.loop == StepLoop::Position ? QStringLiteral("gain_search_position")
+                                                     : QStringLiteral("gain_search");
+    if (!TuningRunGate::askFreeToTurn(this, *drive, key, tr("Suggested gains"), travel)) {
         setStatus(tr("Cancelled: nothing was sent."));
         return false;
     }
-    if (!TuningRunGate::check(*m_host, &why) || m_host->driveId() != drive->id) {
+    if (!TuningRunGate::check(*m_host, gateLoop(s.loop), &why) || m_host->driveId() != drive->id) {
         setStatus(tr("The drive or the connection changed: nothing was sent."), true);
         return false;
     }
@@ -273,7 +324,10 @@ bool GainSearchView::runSearch()
     m_searchedId = drive->id;
     m_table->setRowCount(0);
     m_compare->show(m_result);
-    setStatus(tr("Searching the speed-loop gains of drive %1\u2026 Esc stops it.").arg(drive->id));
+    setStatus(
+        s.loop == StepLoop::Position
+            ? tr("Searching the position-loop gains of drive %1\u2026 Esc stops it.").arg(drive->id)
+            : tr("Searching the speed-loop gains of drive %1\u2026 Esc stops it.").arg(drive->id));
     refresh();
     emit runningChanged(true);
     return true;
@@ -309,9 +363,11 @@ bool GainSearchView::isRunning() const
 
 void GainSearchView::fillRow(int row, const CandidateScore &score)
 {
+    const tuning::PidTriple &gains =
+        tuning::GainSearchStrategy::tuned(score.gains, score.trace.loop);
     const QStringList cells{row == 0 ? tr("read") : QString::number(row),
-                            QString::number(score.gains.speed.kp),
-                            QString::number(score.gains.speed.ki),
+                            QString::number(gains.kp),
+                            QString::number(gains.ki),
                             riseText(score),
                             overshootText(score),
                             tr("%1 s").arg(Format::number(score.errorAreaS, 4)),
@@ -386,14 +442,17 @@ std::optional<QVector<qint64>> GainSearchView::suggestedValues(QString *why) con
                          "the drive selected and read on this connection.")
                           .arg(m_searchedId));
     const std::optional<ParamValues> held = ParamSetSpec::known(m_host->driveValues());
-    const int kp = fieldIndex(m_host->spec(), QStringLiteral("speed_kp"));
-    const int ki = fieldIndex(m_host->spec(), QStringLiteral("speed_ki"));
+    const StepLoop searched = m_result->spec.loop;
+    const QString prefix =
+        searched == StepLoop::Position ? QStringLiteral("angle") : QStringLiteral("speed");
+    const int kp = fieldIndex(m_host->spec(), prefix + QStringLiteral("_kp"));
+    const int ki = fieldIndex(m_host->spec(), prefix + QStringLiteral("_ki"));
     if (!held || kp < 0 || ki < 0)
         return refuse(tr("Nothing was written: the drive's gains are not all known."));
-    // Only the speed Kp and Ki change, on the values the drive holds now.
+    // Only the searched loop's Kp and Ki change, on the values the drive holds now.
     ParamValues values = *held;
-    values[kp] = gains->speed.kp;
-    values[ki] = gains->speed.ki;
+    values[kp] = tuning::GainSearchStrategy::tuned(*gains, searched).kp;
+    values[ki] = tuning::GainSearchStrategy::tuned(*gains, searched).ki;
     return values;
 }
 
@@ -442,7 +501,7 @@ void GainSearchView::refresh()
     const bool running = isRunning();
     m_run->setText(running ? tr("Stop (Esc)") : tr("Search gains"));
     m_run->setToolTip(running ? tr("Stop at once: Motor Off, and the gains read back to RAM.")
-                              : tr("Search the speed-loop gains of the selected drive (asks "
+                              : tr("Search the gains of the selected drive's loop (asks "
                                    "first)."));
     m_run->setEnabled(running || (m_host->canSendToDrive() && m_host->readComplete()));
     QString why;
@@ -451,11 +510,22 @@ void GainSearchView::refresh()
     m_writeRom->setEnabled(suggestion && m_ramWritten);
     for (QWidget *w : {static_cast<QWidget *>(m_overshoot), static_cast<QWidget *>(m_from),
                        static_cast<QWidget *>(m_to), static_cast<QWidget *>(m_maxCandidates),
-                       static_cast<QWidget *>(m_measureBode)})
+                       static_cast<QWidget *>(m_measureBode), static_cast<QWidget *>(m_loop),
+                       static_cast<QWidget *>(m_step)})
         w->setEnabled(!running);
     if (running)
         return;
-    const std::optional<TuningRunDrive> drive = TuningRunGate::check(*m_host, nullptr);
+    // The position loop only where an angle window is set (its steps stay inside it).
+    const bool offered = TuningRunGate::positionOffered(*m_host);
+    m_loop->setEnabled(offered);
+    if (!offered && loop() == StepLoop::Position)
+        m_loop->setCurrentIndex(m_loop->findData(int(StepLoop::Speed))); // refresh()es again
+    const bool position = loop() == StepLoop::Position;
+    m_form->setRowVisible(m_step, position);
+    m_form->setRowVisible(m_speedSteps, !position);
+    m_form->setRowVisible(m_measureBode, !position); // the Bode step is the speed loop's
+    const std::optional<TuningRunDrive> drive =
+        TuningRunGate::check(*m_host, gateLoop(loop()), nullptr);
     m_travel->setText(drive ? searchTravel(*drive, spec()) + bodeTimeText(*drive) : QString());
 }
 

@@ -79,10 +79,16 @@ void GainSearchViewComparison::show(const std::optional<tuning::GainSearchResult
         steps.append({bestName, StepRunsModel::runColor(2), best->trace});
     m_overlay->setRuns(steps);
     const QString none = tr("none within the bounds");
-    addRow(tr("Speed Kp"), QString::number(read.gains.speed.kp),
-           best ? QString::number(best->gains.speed.kp) : none);
-    addRow(tr("Speed Ki"), QString::number(read.gains.speed.ki),
-           best ? QString::number(best->gains.speed.ki) : none);
+    // The searched loop's gains: the speed loop's, or the position loop's (angle).
+    const tuning::StepLoop loop = result->spec.loop;
+    const auto gains = [loop](const CandidateScore &c) {
+        return tuning::GainSearchStrategy::tuned(c.gains, loop);
+    };
+    const QString name = GainSearchView::loopGainName(loop);
+    addRow(tr("%1 Kp").arg(name), QString::number(gains(read).kp),
+           best ? QString::number(gains(*best).kp) : none);
+    addRow(tr("%1 Ki").arg(name), QString::number(gains(read).ki),
+           best ? QString::number(gains(*best).ki) : none);
     addRow(tr("Rise"), GainSearchView::riseText(read),
            best ? GainSearchView::riseText(*best) : QString());
     addRow(tr("Overshoot"), GainSearchView::overshootText(read),

@@ -70,6 +70,10 @@ QString GainSearchViewOutcome::driveText(const tuning::TuningOutcome &o, int id)
                   "stopped.")
             .arg(id)
             .arg(Format::number(o.speedDps, 0));
+    case DriveLeft::HoldsAngle:
+        return tr("Drive %1 holds %2 deg, the angle it started at, its motor stays on.")
+            .arg(id)
+            .arg(Format::number(o.angleDeg, 2));
     }
     return {};
 }

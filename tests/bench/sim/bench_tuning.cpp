@@ -9,7 +9,10 @@
 //           MF (V2.3) and MG (V2.35) (friction=0: Coulomb friction is the one part of a sine
 //           around a standstill that is not linear); `bench_tuning position` runs only these;
 //   tune_*: a full speed-loop gain search: its time, and the gains read (the defaults) beside
-//           the suggested ones with their rise time, overshoot and settling time.
+//           the suggested ones with their rise time, overshoot and settling time;
+//   tunepos_*: the same for the position loop's search (the angle gains, steps of 10 deg from
+//           where the drive is inside a wide angle window); `bench_tuning position` runs these
+//           after the position Bode.
 // Every candidate and a side-by-side table of default vs suggested gains go to standard error.
 #include "../bus/BenchSession.h"
 #include "../bus/BenchUtil.h"
@@ -154,6 +157,7 @@ bool bode(bus::BusSession &session, const Drive &d, bench::JsonLine &json)
 /// One drive's search, for the side-by-side table.
 struct TuneRow {
     Drive drive;
+    StepLoop loop = StepLoop::Speed;
     double seconds = 0;
     int candidates = 0;
     std::optional<CandidateScore> defaults, suggested;
@@ -164,27 +168,37 @@ double ms(const Metric &m)
     return m.value.value_or(std::nan("")) * 1e3;
 }
 
-bool tune(bus::BusSession &session, const Drive &d, bench::JsonLine &json, QVector<TuneRow> &rows)
+bool tune(bus::BusSession &session, const Drive &d, StepLoop loop, bench::JsonLine &json,
+          QVector<TuneRow> &rows)
 {
     GainSearchSpec spec;
     spec.id = d.id;
-    const auto r = run<GainSearchRunner, GainSearchResult>(session, spec, d.id);
+    std::optional<safety::SoftLimits> limits;
+    if (loop == StepLoop::Position) {
+        spec = GainSearchSpec::forPosition(d.id);
+        limits = safety::SoftLimits::defaults(d.series);
+        limits->minAngleDeg = -1e6;
+        limits->maxAngleDeg = 1e6;
+    }
+    const auto r = run<GainSearchRunner, GainSearchResult>(session, spec, d.id, limits);
     if (!r || !r->ok()) {
         std::fprintf(stderr, "bench_tuning: the search on drive %d failed: %s\n", d.id,
                      r ? qPrintable(r->message) : "no result");
         return false;
     }
-    const QString k = QStringLiteral("tune_") + key(d) + QLatin1Char('_');
+    const QString k =
+        (loop == StepLoop::Position ? QStringLiteral("tunepos_") : QStringLiteral("tune_")) +
+        key(d) + QLatin1Char('_');
     json.add(k + "seconds", r->seconds, 1);
     json.addInt(k + "candidates", r->candidates.size());
     const auto put = [&](const QString &which, const CandidateScore &c) {
-        json.addInt(k + which + "_kp", c.gains.speed.kp);
-        json.addInt(k + which + "_ki", c.gains.speed.ki);
+        json.addInt(k + which + "_kp", GainSearchStrategy::tuned(c.gains, loop).kp);
+        json.addInt(k + which + "_ki", GainSearchStrategy::tuned(c.gains, loop).ki);
         json.add(k + which + "_rise_ms", ms(c.metrics.riseTimeS), 2);
         json.add(k + which + "_overshoot_pct", c.metrics.overshootPct.value.value_or(-1), 1);
         json.add(k + which + "_settling_ms", ms(c.metrics.settling5S), 1);
     };
-    TuneRow row{d, r->seconds, int(r->candidates.size()), {}, {}};
+    TuneRow row{d, loop, r->seconds, int(r->candidates.size()), {}, {}};
     if (r->baseline) {
         row.defaults = r->candidates[*r->baseline];
         put(QStringLiteral("default"), *row.defaults);
@@ -194,32 +208,37 @@ bool tune(bus::BusSession &session, const Drive &d, bench::JsonLine &json, QVect
         put(QStringLiteral("suggested"), *row.suggested);
     }
     for (const CandidateScore &c : r->candidates)
-        std::fprintf(stderr, "  drive %d  Kp %3d Ki %3d  rise %6.2f ms  overshoot %5.1f %%  %s\n",
-                     d.id, c.gains.speed.kp, c.gains.speed.ki, ms(c.metrics.riseTimeS),
+        std::fprintf(stderr, "  drive %d %s Kp %3d Ki %3d  rise %6.2f ms  overshoot %5.1f %%  %s\n",
+                     d.id, loop == StepLoop::Position ? "angle" : "speed",
+                     GainSearchStrategy::tuned(c.gains, loop).kp,
+                     GainSearchStrategy::tuned(c.gains, loop).ki, ms(c.metrics.riseTimeS),
                      c.metrics.overshootPct.value.value_or(-1), c.accepted() ? "accepted" : "-");
     rows.append(row);
     return true;
 }
 
-/// Default vs suggested speed gains per drive: Kp/Ki, rise (10-90 %), overshoot, settling (5 %).
+/// Default vs suggested gains of the loop searched per drive: Kp/Ki, rise (10-90 %), overshoot,
+/// settling (5 %).
 void printTable(const QVector<TuneRow> &rows)
 {
-    std::fprintf(stderr, "\n%-9s %6s %5s | %-8s %8s %7s %8s | %-8s %8s %7s %8s | %s\n", "drive",
-                 "tune s", "cands", "default", "rise ms", "over %", "settl ms", "suggest",
-                 "rise ms", "over %", "settl ms", "faster");
-    const auto cell = [](const std::optional<CandidateScore> &c) {
+    std::fprintf(stderr, "\n%-9s %-5s %6s %5s | %-8s %8s %7s %8s | %-8s %8s %7s %8s | %s\n",
+                 "drive", "loop", "tune s", "cands", "default", "rise ms", "over %", "settl ms",
+                 "suggest", "rise ms", "over %", "settl ms", "faster");
+    const auto cell = [](const std::optional<CandidateScore> &c, StepLoop loop) {
         if (!c)
             return QStringLiteral("%1 %2 %3 %4").arg("-", -8).arg("-", 8).arg("-", 7).arg("-", 8);
+        const PidTriple &g = GainSearchStrategy::tuned(c->gains, loop);
         return QStringLiteral("%1 %2 %3 %4")
-            .arg(QStringLiteral("%1/%2").arg(c->gains.speed.kp).arg(c->gains.speed.ki), -8)
+            .arg(QStringLiteral("%1/%2").arg(g.kp).arg(g.ki), -8)
             .arg(ms(c->metrics.riseTimeS), 8, 'f', 2)
             .arg(c->metrics.overshootPct.value.value_or(std::nan("")), 7, 'f', 1)
             .arg(ms(c->metrics.settling5S), 8, 'f', 1);
     };
     for (const TuneRow &r : rows) {
         const bool faster = r.defaults && r.suggested && r.suggested->riseS() < r.defaults->riseS();
-        std::fprintf(stderr, "%-9s %6.1f %5d | %s | %s | %s\n", qPrintable(key(r.drive)), r.seconds,
-                     r.candidates, qPrintable(cell(r.defaults)), qPrintable(cell(r.suggested)),
+        std::fprintf(stderr, "%-9s %-5s %6.1f %5d | %s | %s | %s\n", qPrintable(key(r.drive)),
+                     r.loop == StepLoop::Position ? "pos" : "speed", r.seconds, r.candidates,
+                     qPrintable(cell(r.defaults, r.loop)), qPrintable(cell(r.suggested, r.loop)),
                      faster ? "yes" : "NO");
     }
 }
@@ -260,17 +279,19 @@ int main(int argc, char *argv[])
     bool ok = true;
     for (const Drive &d : kPositionDrives)
         ok = bode(session, d, json) && ok;
-    if (positionOnly) {
-        json.print();
-        return ok ? 0 : 1;
-    }
-    for (const Drive &d : kDrives) {
-        if (d.series == Series::MF || d.series == Series::MG) // the resonant MF too
-            ok = bode(session, d, json) && ok;
-    }
     QVector<TuneRow> rows;
+    if (!positionOnly) {
+        for (const Drive &d : kDrives) {
+            if (d.series == Series::MF || d.series == Series::MG) // the resonant MF too
+                ok = bode(session, d, json) && ok;
+        }
+        for (const Drive &d : kDrives)
+            ok = tune(session, d, StepLoop::Speed, json, rows) && ok;
+    }
+    // The position loop's search on each series of each generation (not the resonant MF).
     for (const Drive &d : kDrives)
-        ok = tune(session, d, json, rows) && ok;
+        if (!*d.plant)
+            ok = tune(session, d, StepLoop::Position, json, rows) && ok;
     printTable(rows);
     json.print();
     return ok ? 0 : 1;

@@ -19,6 +19,7 @@
 #include <QtCharts/QScatterSeries>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
+#include <QtWidgets/QComboBox>
 #include <QtWidgets/QLabel>
 #include <QtWidgets/QPushButton>
 #include <QtWidgets/QTableWidget>
@@ -114,6 +115,7 @@ private slots:
     void escMidSweepRestoresGainsAndTurnsOff();
     void escMidSearchRestoresGainsAndTurnsOff();
     void suggestionIsWrittenOnlyWhenClicked();
+    void positionSearchWritesTheAngleGainsOnlyWhenClicked();
 };
 
 void tst_FrequencyTuningView::sweepIsKeptAndDrawn()
@@ -433,6 +435,61 @@ void tst_FrequencyTuningView::suggestionIsWrittenOnlyWhenClicked()
     QVERIFY(o.search->writeBestToRom());
     QCOMPARE(yesAgain.asked.size(), 1);
     QTRY_VERIFY_WITH_TIMEOUT(rig.romPid(1).speedKp == best->speed.kp && !o.view->isBusy(), kWaitMs);
+}
+
+// The position loop's search: offered only with an angle window; it changes and suggests the
+// angle gains, leaves the gains read in RAM and the drive at its angle, and writes the angle
+// Kp and Ki (nothing else) only when Write to RAM is clicked.
+void tst_FrequencyTuningView::positionSearchWritesTheAngleGainsOnlyWhenClicked()
+{
+    SimRig rig;
+    QVERIFY(rig.open());
+    lk::safety::SoftLimits limits = limitsOf(rig, 1);
+    lk::tuning::GainSearchSpec spec = lk::tuning::GainSearchSpec::forPosition(1);
+    spec.maxCandidates = 6;
+    spec.maxOvershootPct = 25; // a loaded host jitters the samples: a suggestion stays likely
+    {
+        Opened o = openView(rig, 1, limits);
+        QVERIFY(o.view);
+        o.search->setSpec(spec);
+        // Without a window the loop stays the speed loop's, and its choice is disabled.
+        QCOMPARE(o.search->spec().loop, lk::tuning::StepLoop::Speed);
+        QVERIFY(!o.search->findChild<QComboBox *>(QStringLiteral("searchLoop"))->isEnabled());
+    }
+    limits.minAngleDeg = -1e5;
+    limits.maxAngleDeg = 1e5;
+    Opened o = openView(rig, 1, limits);
+    QVERIFY(o.view);
+    o.search->setSpec(spec);
+    QCOMPARE(o.search->spec().loop, lk::tuning::StepLoop::Position);
+    const lk::protocol::PidGains before = rig.ramPid(1);
+    Answers yes(true);
+    QVERIFY2(o.search->runSearch(), qPrintable(o.search->statusText()));
+    QCOMPARE(yes.asked.first().key, QStringLiteral("gain_search_position"));
+    QTRY_VERIFY_WITH_TIMEOUT(!o.search->isRunning(), kWaitMs);
+    QVERIFY2(o.search->result() && o.search->result()->ok(), qPrintable(o.search->statusText()));
+    QVERIFY2(o.search->statusText().contains(QStringLiteral("the angle it started at")),
+             qPrintable(o.search->statusText()));
+    QVERIFY(rig.count(1, Command::MultiPositionLimited) > 0);
+    QCOMPARE(rig.count(1, Command::Speed), 0); // position steps only, and no return by speed
+    const std::optional<lk::tuning::LoopGains> best = o.search->best();
+    QVERIFY2(best, qPrintable(o.search->statusText()));
+    qInfo("%d candidates: angle Kp %d Ki %d (read: Kp %d Ki %d)",
+          int(o.search->result()->candidates.size()), best->angle.kp, best->angle.ki,
+          before.angleKp, before.angleKi);
+    auto *compare = o.search->findChild<QTableWidget *>(QStringLiteral("bestVsRead"));
+    QCOMPARE(compare->verticalHeaderItem(0)->text(), QStringLiteral("Angle Kp"));
+    QCOMPARE(compare->item(0, 1)->text(), QString::number(best->angle.kp));
+    QVERIFY(rig.barrier());
+    QVERIFY(samePid(rig.ramPid(1), before)); // nothing kept until the click
+    auto *writeRam = o.search->findChild<QPushButton *>(QStringLiteral("writeSuggestedRam"));
+    QVERIFY(writeRam->isEnabled());
+    QTest::mouseClick(writeRam, Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!o.view->isBusy() && rig.ramPid(1).angleKp == best->angle.kp &&
+                                 rig.ramPid(1).angleKi == best->angle.ki,
+                             kWaitMs);
+    QCOMPARE(rig.ramPid(1).speedKp, before.speedKp); // only the angle Kp and Ki
+    QCOMPARE(rig.ramPid(1).speedKi, before.speedKi);
 }
 
 QTEST_MAIN(tst_FrequencyTuningView)
