@@ -95,7 +95,10 @@ bool FrequencySweepRunner::start(const FrequencySweepSpec &spec, const safety::S
                              if (failure == StepTestFailure::None)
                                  onGainsRead();
                              else
-                                 end(failure, why);
+                                 end(failure,
+                                     failure == StepTestFailure::BadSpec ? SearchEnd::BadSpec
+                                                                         : SearchEnd::FailedToRead,
+                                     DriveLeft::Untouched, true, why);
                          });
     return true;
 }
@@ -108,12 +111,14 @@ void FrequencySweepRunner::abort()
         return;
     case Phase::ReadingGains:
     case Phase::ReadingSpeed:
-        end(StepTestFailure::Aborted, QStringLiteral("aborted before anything moved; nothing "
-                                                     "was sent"));
+        // The acceleration limit may have been lifted already: endBeforeMotion puts it back.
+        endBeforeMotion(StepTestFailure::Aborted, SearchEnd::AbortedByUser,
+                        QStringLiteral("aborted before anything moved"));
         return;
     case Phase::Sweeping:
     case Phase::Returning:
-        haltAndRestore(StepTestFailure::Aborted, QStringLiteral("aborted"));
+        haltAndRestore(StepTestFailure::Aborted, SearchEnd::AbortedByUser,
+                       QStringLiteral("aborted"));
         return;
     }
 }
@@ -137,17 +142,10 @@ void FrequencySweepRunner::onGainsRead()
             readSpeed();
             return;
         }
-        m_keeper.restore([this, run, failure](bool restored, const QString &) {
-            if (run != m_run || m_phase != Phase::ReadingSpeed)
-                return;
-            end(StepTestFailure::Silent,
-                QStringLiteral("the acceleration limit could not be lifted (%1); nothing moved; "
-                               "%2")
-                    .arg(failure, restored
-                                      ? QStringLiteral("the settings read are back in RAM")
-                                      : QStringLiteral("the settings read could not be written "
-                                                       "back")));
-        });
+        endBeforeMotion(
+            StepTestFailure::Silent, SearchEnd::DriveSilent,
+            QStringLiteral("the acceleration limit could not be lifted (%1); nothing moved")
+                .arg(failure));
     });
 }
 
@@ -169,9 +167,11 @@ void FrequencySweepRunner::readSpeed()
 
 void FrequencySweepRunner::unanswered(const bus::RequestResult &result, const char *read)
 {
-    end(result.status == RequestStatus::Disconnected ? StepTestFailure::Disconnected
-                                                     : StepTestFailure::Silent,
-        QStringLiteral("drive %1 did not answer %2 (%3); nothing was sent")
+    const bool lost = result.status == RequestStatus::Disconnected;
+    endBeforeMotion(
+        lost ? StepTestFailure::Disconnected : StepTestFailure::Silent,
+        lost ? SearchEnd::LinkLost : SearchEnd::FailedToRead,
+        QStringLiteral("drive %1 did not answer %2 (%3); nothing moved")
             .arg(m_spec.id)
             .arg(QLatin1String(read), QLatin1String(bus::requestStatusName(result.status))));
 }
@@ -211,10 +211,11 @@ void FrequencySweepRunner::startSweep()
         m_result.refusal = m_plan.verdict();
         m_result.refusedDps = m_plan.refusedDps();
         if (m_plan.verdict().allowed())
-            end(StepTestFailure::BadSpec,
-                m_plan.specError() + QStringLiteral("; nothing was sent"));
+            endBeforeMotion(StepTestFailure::BadSpec, SearchEnd::BadSpec,
+                            m_plan.specError() + QStringLiteral("; nothing moved"));
         else
-            end(StepTestFailure::Refused, QStringLiteral("refused for safety, nothing was sent"));
+            endBeforeMotion(StepTestFailure::Refused, SearchEnd::Refused,
+                            QStringLiteral("refused for safety, nothing moved"));
         return;
     }
     // Each setpoint's reply carries the speed: polling would only take bus time from them.
@@ -276,13 +277,16 @@ void FrequencySweepRunner::onStreamStopped(const bus::SetpointStop &stop)
         return;
     if (stop.reason == bus::SetpointStopReason::Refused) {
         m_result.refusal = stop.verdict;
-        haltAndRestore(StepTestFailure::Refused,
+        haltAndRestore(StepTestFailure::Refused, SearchEnd::Refused,
                        QStringLiteral("a setpoint was refused by a limit mid-sweep"));
         return;
     }
-    haltAndRestore(stop.reason == bus::SetpointStopReason::Disconnected
-                       ? StepTestFailure::Disconnected
-                       : StepTestFailure::Aborted,
+    const bool lost = stop.reason == bus::SetpointStopReason::Disconnected;
+    haltAndRestore(lost ? StepTestFailure::Disconnected : StepTestFailure::Aborted,
+                   lost ? SearchEnd::LinkLost
+                   : stop.reason == bus::SetpointStopReason::EmergencyStop
+                       ? SearchEnd::EmergencyStop
+                       : SearchEnd::AbortedByUser,
                    QStringLiteral("the sweep stopped: %1").arg(stopReasonText(stop.reason)));
 }
 
@@ -290,7 +294,8 @@ void FrequencySweepRunner::onConnection(const bus::ConnectionStatus &status)
 {
     if (status.isOpen() || (m_phase != Phase::Sweeping && m_phase != Phase::Returning))
         return;
-    haltAndRestore(StepTestFailure::Disconnected, QStringLiteral("the bus went away"));
+    haltAndRestore(StepTestFailure::Disconnected, SearchEnd::LinkLost,
+                   QStringLiteral("the bus went away"));
 }
 
 void FrequencySweepRunner::sweepDone()
@@ -306,7 +311,7 @@ void FrequencySweepRunner::sweepDone()
             returnToStart();
         else
             haltAndRestore(
-                StepTestFailure::Silent,
+                StepTestFailure::Silent, SearchEnd::FailedToRestore,
                 QStringLiteral("the gains read could not be written back (%1)").arg(why));
     });
 }
@@ -319,7 +324,8 @@ void FrequencySweepRunner::returnToStart()
             if (run != m_run || m_phase != Phase::Returning)
                 return;
             restorePolling();
-            end(StepTestFailure::None,
+            m_result.outcome.angleDeg = m_result.startAngle.value_or(0);
+            end(StepTestFailure::None, SearchEnd::Finished, DriveLeft::HoldsAngle, true,
                 QStringLiteral("the gains and acceleration read are back in RAM; the drive holds "
                                "the angle it started at (%1 deg)")
                     .arg(m_result.startAngle.value_or(0), 0, 'f', 2));
@@ -333,7 +339,7 @@ void FrequencySweepRunner::returnToStart()
             if (run != m_run || m_phase != Phase::Returning)
                 return;
             if (!ok) {
-                haltAndRestore(StepTestFailure::Silent, words);
+                haltAndRestore(StepTestFailure::Silent, SearchEnd::DriveSilent, words);
                 return;
             }
             // The last replies' samples arrive in the next telemetry batch.
@@ -341,7 +347,10 @@ void FrequencySweepRunner::returnToStart()
                 if (run != m_run || m_phase != Phase::Returning)
                     return;
                 restorePolling();
-                end(StepTestFailure::None,
+                const double speed = m_result.startSpeed.value_or(0);
+                m_result.outcome.speedDps = speed;
+                end(StepTestFailure::None, SearchEnd::Finished,
+                    speed == 0 ? DriveLeft::HoldsZero : DriveLeft::BackAtSpeed, true,
                     QStringLiteral("the gains and acceleration read are back in RAM; %1")
                         .arg(words));
             });
@@ -387,17 +396,40 @@ void FrequencySweepRunner::analyse()
     r.unwrapPhases();
 }
 
-void FrequencySweepRunner::haltAndRestore(StepTestFailure failure, const QString &message)
+void FrequencySweepRunner::haltAndRestore(StepTestFailure failure, SearchEnd why,
+                                          const QString &message)
 {
     m_phase = Phase::Aborting;
     m_endTimer.stop();
-    TuningEnd::haltAndRestore(m_session, m_keeper, m_spec.id, this,
-                              [this, failure, message, run = m_run](const QString &outcome) {
-                                  if (run != m_run)
-                                      return;
-                                  restorePolling();
-                                  end(failure, QStringLiteral("%1: %2").arg(message, outcome));
-                              });
+    TuningEnd::halt(m_session, m_keeper, m_spec.id, this,
+                    [this, failure, why, message, run = m_run](const HaltOutcome &h) {
+                        if (run != m_run)
+                            return;
+                        restorePolling();
+                        end(failure, why,
+                            h.offAcknowledged ? DriveLeft::Off : DriveLeft::MayBeMoving,
+                            h.gainsRestored, QStringLiteral("%1: %2").arg(message, h.words()));
+                    });
+}
+
+void FrequencySweepRunner::endBeforeMotion(StepTestFailure failure, SearchEnd why,
+                                           const QString &message)
+{
+    // Only reads went out unless the acceleration limit was lifted (onGainsRead writes it
+    // when it is not 0; that write may still be on its way: the restore queues behind it).
+    if (!m_keeper.gains() || m_keeper.gains()->accelerationDps2 == 0) {
+        end(failure, why, DriveLeft::Untouched, true,
+            QStringLiteral("%1; nothing was sent").arg(message));
+        return;
+    }
+    m_phase = Phase::Aborting;
+    m_keeper.restore([this, failure, why, message, run = m_run](bool ok, const QString &) {
+        if (run == m_run)
+            end(failure, why, DriveLeft::NoStepSent, ok,
+                QStringLiteral("%1; %2").arg(
+                    message, ok ? QStringLiteral("the settings read are back in RAM")
+                                : QStringLiteral("the settings read could not be written back")));
+    });
 }
 
 void FrequencySweepRunner::restorePolling()
@@ -409,8 +441,12 @@ void FrequencySweepRunner::restorePolling()
         m_session.startPolling(*m_previousPlan);
 }
 
-void FrequencySweepRunner::end(StepTestFailure failure, const QString &message)
+void FrequencySweepRunner::end(StepTestFailure failure, SearchEnd why, DriveLeft drive,
+                               bool restored, const QString &message)
 {
+    m_result.outcome.end = why;
+    m_result.outcome.drive = drive;
+    m_result.outcome.gainsRestored = restored;
     m_endTimer.stop();
     analyse();
     m_phase = Phase::Idle;

@@ -4,6 +4,7 @@
 #include "FrequencySweepPlan.h"
 #include "GainKeeper.h"
 #include "StepTestRunner.h"
+#include "TuningEnd.h"
 
 #include <bus/PollPlan.h>
 #include <bus/RequestResult.h>
@@ -37,7 +38,8 @@ struct FrequencySweepResult {
     StepTestFailure failure = StepTestFailure::None;
     safety::Verdict refusal; ///< Refused: the limit
     double refusedDps = 0;
-    QString message; ///< English: why it failed, and what the drive was left doing
+    QString message;       ///< English: why it failed, and what the drive was left doing
+    TuningOutcome outcome; ///< the same as facts (the views word them from these)
     bool ok() const { return failure == StepTestFailure::None; }
 };
 
@@ -92,8 +94,11 @@ private:
     void returnToStart();
     void analyse();
     void restorePolling();
-    void end(StepTestFailure failure, const QString &message);
-    void haltAndRestore(StepTestFailure failure, const QString &message);
+    void end(StepTestFailure failure, SearchEnd why, DriveLeft drive, bool restored,
+             const QString &message);
+    /// Ends before anything moved: the acceleration limit, if it was lifted, goes back first.
+    void endBeforeMotion(StepTestFailure failure, SearchEnd why, const QString &message);
+    void haltAndRestore(StepTestFailure failure, SearchEnd why, const QString &message);
 
     bus::BusSession &m_session;
     GainKeeper m_keeper;

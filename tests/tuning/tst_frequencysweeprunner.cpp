@@ -221,13 +221,18 @@ void tst_FrequencySweepRunner::measuresTheSimulatorsTransfer()
         QVERIFY(d.reason != DroppedReason::AboveResolution || d.hz > resolved);
     QCOMPARE(r.response.points.size() + r.response.dropped.size(), 7);
     QVERIFY(r.response.figures().peakDb);
-    // Back at the speed read before (0 dps) and nothing moving.
+    // Back at the speed read before (0 dps) and nothing moving: as facts and in words.
+    QCOMPARE(r.outcome.end, SearchEnd::Finished);
+    QCOMPARE(r.outcome.drive, DriveLeft::HoldsZero);
+    QVERIFY(r.outcome.gainsRestored);
     QVERIFY2(r.message.contains(QLatin1String("holds 0 dps")), qPrintable(r.message));
 }
 
 void tst_FrequencySweepRunner::refusedSweepSendsNothing()
 {
     Rig rig;
+    const std::optional<LoopGains> before = rig.gains(3);
+    QVERIFY(before);
     safety::SoftLimits limits = safety::SoftLimits::defaults(Series::MF);
     limits.maxSpeedDps = 200; // the sine's peak (300 + 60) is beyond it
     QVERIFY(rig.runner.start(quickSpec(3), limits));
@@ -236,6 +241,12 @@ void tst_FrequencySweepRunner::refusedSweepSendsNothing()
     QVERIFY(!r.refusal.allowed());
     QCOMPARE(r.refusedDps, 300.0); // the centre, the first extreme checked
     QCOMPARE(rig.motionCount(), 0);
+    QCOMPARE(r.outcome.end, SearchEnd::Refused);
+    // The acceleration limit, lifted before the plan was checked, is back as read.
+    QCOMPARE(r.outcome.drive,
+             before->accelerationDps2 != 0 ? DriveLeft::NoStepSent : DriveLeft::Untouched);
+    QVERIFY(r.outcome.gainsRestored);
+    QCOMPARE(rig.gains(3), before);
 }
 
 void tst_FrequencySweepRunner::silentDriveSendsNothing()
@@ -246,6 +257,8 @@ void tst_FrequencySweepRunner::silentDriveSendsNothing()
     QCOMPARE(r.failure, StepTestFailure::Silent);
     QVERIFY2(r.message.contains(QLatin1String("gains could not be read")), qPrintable(r.message));
     QCOMPARE(rig.motionCount(), 0);
+    QCOMPARE(r.outcome.end, SearchEnd::FailedToRead);
+    QCOMPARE(r.outcome.drive, DriveLeft::Untouched);
 }
 
 void tst_FrequencySweepRunner::abortHaltsRestoresAndTurnsOff()
@@ -263,6 +276,9 @@ void tst_FrequencySweepRunner::abortHaltsRestoresAndTurnsOff()
     QCOMPARE(r.failure, StepTestFailure::Aborted);
     QVERIFY2(r.message.contains(QLatin1String("drive 3 is off")), qPrintable(r.message));
     QVERIFY2(r.message.contains(QLatin1String("are back in RAM")), qPrintable(r.message));
+    QCOMPARE(r.outcome.end, SearchEnd::AbortedByUser);
+    QCOMPARE(r.outcome.drive, DriveLeft::Off);
+    QVERIFY(r.outcome.gainsRestored);
     const int motions = rig.motionCount();
     QTest::qWait(200);
     QCOMPARE(rig.motionCount(), motions); // no setpoint after the abort
@@ -304,6 +320,8 @@ void tst_FrequencySweepRunner::positionMeasuresTheSimulatorsTransfer()
     }
     QVERIFY2(r.message.contains(QLatin1String("holds the angle it started at")),
              qPrintable(r.message));
+    QCOMPARE(r.outcome.drive, DriveLeft::HoldsAngle);
+    QCOMPARE(r.outcome.angleDeg, start);
     // Every setpoint stayed inside the window.
     for (double v : r.setpoint)
         QVERIFY(std::abs(v - start) <= 5.01);

@@ -480,14 +480,14 @@ void FrequencyResponseView::onFinished(const FrequencySweepResult &result)
                   .arg(result.response.points.size())
                   .arg(Format::number(result.response.sampleRateHz, 0),
                        BodeChart::figuresLine(title, result.response),
-                       TuningRunGate::endedText(result.spec.id, result.message)));
+                       TuningRunGate::endedText(result.outcome, result.spec.id)));
     refresh();
     emit runningChanged(false);
 }
 
 void FrequencyResponseView::onFailed(const FrequencySweepResult &result)
 {
-    QString text = TuningRunGate::failureText(result.failure, result.spec.id, result.message);
+    QString text = TuningRunGate::failureText(result.failure, result.outcome, result.spec.id);
     if (result.failure == tuning::StepTestFailure::Refused && !result.refusal.allowed())
         text =
             refusedText(result.spec, result.refusedDps, result.refusal) + QLatin1Char(' ') + text;

@@ -108,15 +108,18 @@ bool TuningRunGate::askFreeToTurn(QWidget *parent, const TuningRunDrive &drive, 
     return ConfirmDialog::ask(parent, q);
 }
 
-QString TuningRunGate::failureText(tuning::StepTestFailure failure, int id, const QString &message)
+QString TuningRunGate::failureText(tuning::StepTestFailure failure, const tuning::TuningOutcome &o,
+                                   int id)
 {
     using F = tuning::StepTestFailure;
+    using tuning::DriveLeft;
     QString how;
     switch (failure) {
     case F::None:
         return {};
     case F::BadSpec:
-        return tr("It cannot run as set. Nothing was sent.");
+        how = tr("It cannot run as set.");
+        break;
     case F::Refused:
         how = tr("Refused by a soft limit.");
         break;
@@ -130,41 +133,46 @@ QString TuningRunGate::failureText(tuning::StepTestFailure failure, int id, cons
         how = tr("Stopped.");
         break;
     }
-    // The runners' account is English for logs; the two facts the user needs are read from it.
-    if (message.contains(QLatin1String("nothing was sent")))
+    if (o.drive == DriveLeft::Untouched)
         return how + QLatin1Char(' ') + tr("Nothing was sent.");
-    // A search refused at its first step has written a candidate's gains, nothing that moves.
-    const QString off =
-        message.contains(QLatin1String("no step was sent")) ? tr("No step was sent.")
-        : message.contains(QLatin1String("did not acknowledge motor off"))
-            ? tr("Drive %1 did not acknowledge Motor Off: it may still be moving.").arg(id)
-        : message.contains(QLatin1String("is off"))
-            ? tr("Motor Off went to drive %1 and it acknowledged.").arg(id)
-            : QString();
-    const QString gains = message.contains(QLatin1String("could not be written back"))
-                              ? tr("The gains read before could NOT be written back: read the "
-                                   "drive and check them.")
-                          : message.contains(QLatin1String("back in RAM"))
-                              ? tr("The gains read before are back in RAM.")
-                              : QString();
+    QString off;
+    switch (o.drive) {
+    case DriveLeft::NoStepSent: // the acceleration limit was lifted and put back
+        off = tr("No step was sent.");
+        break;
+    case DriveLeft::Off:
+        off = tr("Motor Off went to drive %1 and it acknowledged.").arg(id);
+        break;
+    case DriveLeft::MayBeMoving:
+        off = tr("Drive %1 did not acknowledge Motor Off: it may still be moving.").arg(id);
+        break;
+    default:
+        break;
+    }
+    const QString gains = o.gainsRestored ? tr("The gains read before are back in RAM.")
+                                          : tr("The gains read before could NOT be written "
+                                               "back: read the drive and check them.");
     return QStringList{how, off, gains}.join(QLatin1Char(' ')).simplified();
 }
 
-QString TuningRunGate::endedText(int id, const QString &message)
+QString TuningRunGate::endedText(const tuning::TuningOutcome &o, int id)
 {
-    // TuningEnd::returnToSpeed's words: 0 dps holds with the motor on; any other speed turns on.
-    if (message.contains(QLatin1String("holds 0 dps")))
+    using tuning::DriveLeft;
+    switch (o.drive) {
+    case DriveLeft::HoldsZero: // 0 dps holds with the motor on
         return tr("The gains read are back in RAM; drive %1 holds 0 dps, its motor stays on.")
             .arg(id);
-    if (message.contains(QLatin1String("holds the angle it started at")))
+    case DriveLeft::HoldsAngle:
         return tr("The gains read are back in RAM; drive %1 holds the angle it started at, its "
                   "motor stays on.")
             .arg(id);
-    if (message.contains(QLatin1String("is back at")))
+    case DriveLeft::BackAtSpeed:
         return tr("The gains read are back in RAM; drive %1 is back at the speed it had and keeps "
                   "turning until stopped.")
             .arg(id);
-    return tr("The gains read are back in RAM.");
+    default:
+        return tr("The gains read are back in RAM.");
+    }
 }
 
 } // namespace lk::ui

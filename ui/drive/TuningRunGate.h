@@ -4,6 +4,7 @@
 #include <safety/SoftLimits.h>
 #include <tuning/FrequencySweepPlan.h>
 #include <tuning/StepTestRunner.h>
+#include <tuning/TuningEnd.h>
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QPointer>
@@ -67,13 +68,13 @@ public:
     /// Asks whether the axis is free to turn as travelText() says; `key` names the question.
     static bool askFreeToTurn(QWidget *parent, const TuningRunDrive &drive, const QString &key,
                               const QString &what, const QString &travel);
-    /// How a sweep or search that did not finish ended, and what the drive was left doing:
-    /// `message` is the runner's account (English), read for the two facts that matter.
-    static QString failureText(tuning::StepTestFailure failure, int id, const QString &message);
-    /// What the drive does after a sweep or search that finished: back at the speed read
-    /// before it, or holding the angle it started at (`message`, the runner's English account,
-    /// says which).
-    static QString endedText(int id, const QString &message);
+    /// How a sweep that did not finish ended, and what the drive was left doing: from its
+    /// typed outcome (tuning::TuningOutcome), never from the runner's English account.
+    static QString failureText(tuning::StepTestFailure failure, const tuning::TuningOutcome &o,
+                               int id);
+    /// What the drive does after a sweep that finished: back at the speed read before it, or
+    /// holding the angle it started at.
+    static QString endedText(const tuning::TuningOutcome &o, int id);
 };
 
 } // namespace lk::ui
