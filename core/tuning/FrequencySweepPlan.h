@@ -32,6 +32,11 @@ struct FrequencySweepSpec {
     /// angle (deg) the drive was read at, which the runner sets: the sine starts where the
     /// drive is; nullopt refuses the sweep (AngleUnknown).
     std::optional<double> operatingPoint;
+    /// Speed: the speed the sweep ends at; nullopt: the speed read before it. A caller that
+    /// knows the speed it commanded (a search, a sweep after a sweep) sets it: each speed read
+    /// differs from the command by the rotor's ripple, and sweep after sweep the drive would
+    /// wander off the speed it was given.
+    std::optional<double> returnSpeedDps;
     double leadInS = 0.5;   ///< held at the operating point before the first frequency
     double minPointS = 0.3; ///< each frequency lasts at least this long
     double rateHz = bus::SetpointWaveform::kMaxSweepRateHz; ///< the bus sets the pace below it

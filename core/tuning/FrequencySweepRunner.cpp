@@ -334,7 +334,7 @@ void FrequencySweepRunner::returnToStart()
     }
     // Back to the speed the drive had before the sweep, through the same gate.
     TuningEnd::returnToSpeed(
-        m_session, m_spec.id, m_result.startSpeed.value_or(0), m_limits, this,
+        m_session, m_spec.id, returnSpeed(), m_limits, this,
         [this, run = m_run](bool ok, const QString &words) {
             if (run != m_run || m_phase != Phase::Returning)
                 return;
@@ -347,7 +347,7 @@ void FrequencySweepRunner::returnToStart()
                 if (run != m_run || m_phase != Phase::Returning)
                     return;
                 restorePolling();
-                const double speed = m_result.startSpeed.value_or(0);
+                const double speed = returnSpeed();
                 m_result.outcome.speedDps = speed;
                 end(StepTestFailure::None, SearchEnd::Finished,
                     speed == 0 ? DriveLeft::HoldsZero : DriveLeft::BackAtSpeed, true,
@@ -355,6 +355,11 @@ void FrequencySweepRunner::returnToStart()
                         .arg(words));
             });
         });
+}
+
+double FrequencySweepRunner::returnSpeed() const
+{
+    return m_spec.returnSpeedDps.value_or(m_result.startSpeed.value_or(0));
 }
 
 void FrequencySweepRunner::analyse()

@@ -49,7 +49,8 @@ struct FrequencySweepResult {
 /// position sweep is centred on), plans the stepped sine (FrequencySweepPlan: a
 /// refusal sends nothing), pauses the poll plan (each setpoint's reply is a sample), runs the
 /// sine from the setpoint stream on the bus thread, fits each frequency on the replies' real
-/// times and gives the poll plan back. At the end it sets the speed read at the start again; a
+/// times and gives the poll plan back. At the end it sets the speed read at the start again
+/// (or the spec's returnSpeedDps, the speed the caller commanded); a
 /// position sweep ends on the angle it started from. The replies carry the speed, not the
 /// angle: a position point is the speed's response over jw (the angle of a sine).
 ///
@@ -92,6 +93,8 @@ private:
     void onConnection(const bus::ConnectionStatus &status);
     void sweepDone();
     void returnToStart();
+    /// Where a speed sweep ends: the spec's returnSpeedDps, else the speed read before it.
+    double returnSpeed() const;
     void analyse();
     void restorePolling();
     void end(StepTestFailure failure, SearchEnd why, DriveLeft drive, bool restored,

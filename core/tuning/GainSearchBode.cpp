@@ -96,7 +96,10 @@ void GainSearchBode::onSwept(const FrequencySweepResult &result)
             return;
         }
         m_phase = Phase::WritingBest;
-        m_keeper.write(m_best, [this, run = m_run](bool ok, const QString &why) {
+        // Back to where the first sweep ended, not to a second reading of it.
+        const std::optional<double> ended =
+            m_spec.returnSpeedDps ? m_spec.returnSpeedDps : result.startSpeed;
+        m_keeper.write(m_best, [this, ended, run = m_run](bool ok, const QString &why) {
             if (run != m_run || m_phase != Phase::WritingBest)
                 return;
             if (!ok) {
@@ -107,7 +110,9 @@ void GainSearchBode::onSwept(const FrequencySweepResult &result)
                 return;
             }
             m_phase = Phase::SweepBest;
-            if (!m_sweep->start(m_spec, m_limits))
+            FrequencySweepSpec second = m_spec;
+            second.returnSpeedDps = ended;
+            if (!m_sweep->start(second, m_limits))
                 haltAndRestore(StepTestFailure::BadSpec,
                                QStringLiteral("the second sweep could not start"));
         });

@@ -335,7 +335,10 @@ void GainSearchRunner::measureBode(const QString &returned)
 {
     m_phase = Phase::Measuring;
     const LoopGains &best = m_strategy->scores().at(*m_strategy->best()).gains;
-    if (!m_bode.start(m_spec.bode(), best, m_limits))
+    // Both sweeps end at the search's own start speed (the one the drive is back at now).
+    FrequencySweepSpec bode = m_spec.bode();
+    bode.returnSpeedDps = m_startSpeed.value_or(0);
+    if (!m_bode.start(bode, best, m_limits))
         end(StepTestFailure::None, finishedEnd(), m_returned, true,
             QStringLiteral("the gains and acceleration read are back in "
                            "RAM; %1; the Bode step could not start")

@@ -178,6 +178,7 @@ private slots:
     void positionMeasuresTheSimulatorsTransfer();
     void positionSweepBeyondALimitSendsNothing_data();
     void positionSweepBeyondALimitSendsNothing();
+    void endsAtTheSpeedItWasGiven();
 };
 
 void tst_FrequencySweepRunner::measuresTheSimulatorsTransfer_data()
@@ -365,6 +366,32 @@ void tst_FrequencySweepRunner::positionSweepBeyondALimitSendsNothing()
     QCOMPARE(int(r.refusal.kind), kind);
     QCOMPARE(r.refusedDps - (kind == int(safety::LimitKind::SoftSpeed) ? 0 : start), refused);
     QCOMPARE(rig.motionCount(), 0);
+}
+
+void tst_FrequencySweepRunner::endsAtTheSpeedItWasGiven()
+{
+    // The drive turns at 150 dps; a sweep told so ends with a speed command of exactly 150
+    // dps, whatever its own read of the turning rotor says, so that sweeps in a row do not
+    // wander off it.
+    Rig rig;
+    QVERIFY(rig.request(*protocol::build::speed(3, 150).request).ok());
+    QVERIFY(QTest::qWaitFor([&] { return std::abs(rig.state(3).speedDps - 150) < 10; }, kWaitMs));
+    FrequencySweepSpec spec = quickSpec(3);
+    spec.toHz = 20;
+    spec.points = 2;
+    spec.returnSpeedDps = 150;
+    QVERIFY(rig.runner.start(spec, safety::SoftLimits::defaults(Series::MF)));
+    const FrequencySweepResult r = rig.waitForEnd();
+    QVERIFY2(r.ok(), qPrintable(r.message));
+    QCOMPARE(r.outcome.drive, DriveLeft::BackAtSpeed);
+    QCOMPARE(r.outcome.speedDps, 150.0);
+    std::optional<double> last;
+    for (const auto &args : rig.completed) {
+        const protocol::Request req = args.at(0).value<RequestResult>().request;
+        if (const auto *s = std::get_if<protocol::SpeedCommand>(&req.payload))
+            last = s->speedDps();
+    }
+    QVERIFY(last && *last == 150.0);
 }
 
 QTEST_GUILESS_MAIN(tst_FrequencySweepRunner)
