@@ -531,8 +531,8 @@ void GainSearchView::refresh()
 
 QString GainSearchView::bodeTimeText(const TuningRunDrive &drive) const
 {
-    if (!m_measureBode->isChecked())
-        return {};
+    if (!m_measureBode->isChecked() || loop() == StepLoop::Position)
+        return {}; // the Bode step is the speed loop's
     const std::optional<double> seconds = spec().bodeSeconds(drive.series, drive.limits);
     return seconds ? QLatin1Char(' ') +
                          tr("The Bode of both adds about %1 s.").arg(Format::number(*seconds, 0))
