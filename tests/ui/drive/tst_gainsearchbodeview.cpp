@@ -134,7 +134,10 @@ void tst_GainSearchBodeView::outcomeWords()
     r.spec.id = 4;
     r.seconds = 3;
     r.candidates.resize(1);
-    r.outcome = {end, drive, 150, restored};
+    r.outcome.end = end;
+    r.outcome.drive = drive;
+    r.outcome.speedDps = 150;
+    r.outcome.gainsRestored = restored;
     r.message = message;
     QCOMPARE(lk::ui::GainSearchViewOutcome::text(r), text);
 }
