@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace lk::tuning {
 
@@ -261,7 +262,7 @@ void GainSearchStrategy::endRow(const CandidateScore &last)
     for (const CandidateScore &c : m_rowScores)
         if (c.accepted())
             rowBest = std::min(rowBest, c.riseS());
-    m_rowScores.clear();
+    const QVector<CandidateScore> endedRow = std::exchange(m_rowScores, {});
     const bool rowAccepted = last.accepted();
     const bool acceptedBefore = m_accepted.has_value();
     if (!rowAccepted && acceptedBefore) {
@@ -273,6 +274,15 @@ void GainSearchStrategy::endRow(const CandidateScore &last)
     }
     const bool improved = rowBest < m_bestBeforeRow * (1 - kMinGain);
     m_bestBeforeRow = std::min(m_bestBeforeRow, rowBest);
+    // Before any candidate is accepted the climb goes on only while some rise gets faster: a
+    // drive whose step is never reached (no rise measured) would otherwise climb to the gain
+    // ceiling (65535 on V2.35), each candidate a stiffer loop tried on a real axis.
+    double rowRise = std::numeric_limits<double>::infinity();
+    for (const CandidateScore &c : endedRow)
+        rowRise = std::min(rowRise, c.riseS());
+    const bool riseImproved = rowRise < m_riseBeforeRow * (1 - kMinGain);
+    m_riseBeforeRow = std::min(m_riseBeforeRow, rowRise);
+    m_blindRows = !rowAccepted && !acceptedBefore && !riseImproved ? m_blindRows + 1 : 0;
     if (rowAccepted) {
         m_accepted = tunedOf(last);
         m_rowKi = tunedOf(last).ki;
@@ -280,7 +290,7 @@ void GainSearchStrategy::endRow(const CandidateScore &last)
     // One row that is no faster may be the noise of a few samples: two in a row end the climb.
     m_rowsWithoutGain = rowAccepted && !improved ? m_rowsWithoutGain + 1 : 0;
     const quint16 max = m_read.maxGain();
-    if (m_rowsWithoutGain >= kPatienceRows || m_rowKp >= max) {
+    if (m_rowsWithoutGain >= kPatienceRows || m_blindRows >= kBlindRows || m_rowKp >= max) {
         m_stage = Stage::Done;
         return;
     }

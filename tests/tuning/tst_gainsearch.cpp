@@ -75,6 +75,7 @@ private slots:
     void candidateOrder();
     void climbsUntilSomethingIsAccepted();
     void climbEndsWhenNoFaster();
+    void climbEndsWhenTheStepIsNeverReached();
     void instabilityEndsTheSearch();
     void searchBeatsTheGainsRead_data();
     void searchBeatsTheGainsRead();
@@ -189,6 +190,23 @@ void tst_GainSearch::climbEndsWhenNoFaster()
     s.record(scored(*s.next(), 0.0098, 3, CandidateVerdict::Accepted));
     QVERIFY(!s.next());
     QCOMPARE(*s.best(), 2);
+}
+
+void tst_GainSearch::climbEndsWhenTheStepIsNeverReached()
+{
+    // No candidate ever reaches the step (no rise measured): three such rows end the climb
+    // instead of stiffening the loop up to the generation's gain ceiling.
+    GainSearchStrategy s(readGains(), 5, 40);
+    int tried = 0;
+    while (const auto next = s.next()) {
+        CandidateScore never = scored(*next, 1.0, 0, CandidateVerdict::NotSettled);
+        never.metrics.riseTimeS = Metric::none(MetricGap::NotReached);
+        s.record(never);
+        ++tried;
+    }
+    QCOMPARE(tried, 3);
+    QVERIFY(!s.best());
+    QVERIFY(!s.stoppedByInstability());
 }
 
 void tst_GainSearch::instabilityEndsTheSearch()
