@@ -20,7 +20,8 @@ namespace lk::ui {
 /// just before) it is refused unless the user also confirms a second, explicit warning. Every
 /// change is followed by a read-back; the panel says what was sent and what the drive answered.
 /// On a V2.3 drive (or one whose generation is unknown) it says why there is no brake command
-/// and sends nothing; a CAN V2.36 drive has it (docs/CAN.md). It sends through the function the Control view gives it.
+/// and sends nothing; a CAN V2.36 drive has it (docs/CAN.md). It sends through the function the
+/// Control view gives it.
 class BrakePanel : public QGroupBox {
     Q_OBJECT
 public:
