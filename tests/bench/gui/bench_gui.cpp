@@ -38,6 +38,7 @@
 
 #include "BenchUtil.h"
 #include "CanLksim.h"
+#include "CanSniffer.h"
 #include "LksimProcess.h"
 
 #include <bus/LinkTiming.h>
@@ -48,8 +49,6 @@
 #include <QtCore/QFile>
 #include <QtCore/QProcess>
 #include <QtCore/QTemporaryDir>
-#include <QtSerialBus/QCanBus>
-#include <QtSerialBus/QCanBusDevice>
 
 #include <unistd.h>
 
@@ -112,42 +111,6 @@ const char kCanMotors[] = "1:MG@can,2:MF@can,3:MG@can236,4:MF@can236";
 const char kCanSimSpec[] = "1:MG,2:MF,3:MG@2.35,4:MF@2.35";
 constexpr int kCanBitRate = 1000000;
 
-/// A third node on the virtual CAN bus that only counts the frames of the drives' IDs
-/// (requests on 0x140 + ID, replies on 0x140 + ID (old) or 0x180 + ID (V2.36)).
-class CanFrameCounter {
-public:
-    bool open(const QString &url)
-    {
-        QString error;
-        m_device.reset(
-            QCanBus::instance()->createDevice(QStringLiteral("virtualcan"), url, &error));
-        if (!m_device || !m_device->connectDevice())
-            return false;
-        QObject::connect(m_device.get(), &QCanBusDevice::framesReceived, [this] { drain(); });
-        return bench::waitUntil(
-            [this] { return m_device->state() == QCanBusDevice::ConnectedState; }, 10000);
-    }
-    qint64 frames()
-    {
-        drain();
-        return m_frames;
-    }
-
-private:
-    void drain()
-    {
-        while (m_device && m_device->framesAvailable() > 0) {
-            const QCanBusFrame f = m_device->readFrame();
-            if (f.frameType() == QCanBusFrame::DataFrame && f.frameId() > 0x140 &&
-                f.frameId() <= 0x1A0)
-                ++m_frames;
-        }
-    }
-
-    std::unique_ptr<QCanBusDevice> m_device;
-    qint64 m_frames = 0;
-};
-
 struct Options {
     int seconds = 20;
     int warmup = 8;
@@ -156,7 +119,7 @@ struct Options {
 
 /// The bus of `sc` started and lkstudio's arguments for it; false (said why) if it failed.
 bool startBus(const Scenario &sc, const Options &o, e2e::LksimProcess &sim, e2e::CanLksim &canSim,
-              CanFrameCounter &wire, QStringList *args)
+              e2e::CanSniffer &wire, QStringList *args)
 {
     switch (sc.bus) {
     case Bus::Rs485Pty:
@@ -201,7 +164,7 @@ bool measure(const Scenario &sc, const Options &o, bench::JsonLine &json,
 {
     e2e::LksimProcess sim(QStringLiteral(LKSIM_PATH));
     e2e::CanLksim canSim;
-    CanFrameCounter wire;
+    e2e::CanSniffer wire; // a third node on the virtual bus: what the wire carried
     QTemporaryDir dir;
     QStringList args{QStringLiteral("--settings"), dir.filePath(QStringLiteral("lkstudio.ini"))};
     if (!startBus(sc, o, sim, canSim, wire, &args))
@@ -228,7 +191,7 @@ bool measure(const Scenario &sc, const Options &o, bench::JsonLine &json,
     const qint64 pid = studio.processId();
     const bool rs485 = sc.bus == Bus::Rs485Pty;
     const auto countsBefore = rs485 ? sim.currentCounters() : std::nullopt;
-    const qint64 framesBefore = wire.frames(); // the window starts now
+    wire.clear(); // the window starts now
     const auto before = usageOf(pid);
     QElapsedTimer wall;
     wall.start();
@@ -242,7 +205,7 @@ bool measure(const Scenario &sc, const Options &o, bench::JsonLine &json,
     const auto after = usageOf(pid);
     const double seconds = wall.elapsed() / 1e3;
     const auto countsAfter = rs485 ? sim.currentCounters() : std::nullopt;
-    const qint64 framesAfter = wire.frames();
+    const qint64 frames = wire.frames().size();
     studio.terminate();
     studio.waitForFinished(10000);
     sim.stop();
@@ -266,7 +229,7 @@ bool measure(const Scenario &sc, const Options &o, bench::JsonLine &json,
     }
     if (sc.bus == Bus::CanVirtual) {
         // Every request is answered by one frame: a transaction is two frames on the wire.
-        const double txn = (framesAfter - framesBefore) / 2.0 / seconds;
+        const double txn = frames / 2.0 / seconds;
         const double limit = bus::LinkTiming::can(kCanBitRate)
                                  .transactionsPerSecond({protocol::Command::ReadState2});
         json.add(QStringLiteral("can_txn_per_s_") + sc.name, txn, 1);
