@@ -82,14 +82,14 @@ void DriveViews::syncDrive()
     // another motor at the same ID is a new drive.
     const bus::KnownMotor &motor = motors.value(id);
     const QString key = DriveSettingsStore::driveKey(id, motor);
-    const auto protocol = std::make_tuple(motor.series, motor.generation, motor.generationKnown());
-    if (key == m_shownKey && protocol == m_shownProtocol)
+    const auto facts = std::make_tuple(motor.series, motor.generation, motor.generationKnown());
+    if (key == m_shownKey && facts == m_shownProtocol)
         return;
     // Same key, other protocol facts: the same drive better known (setDrive with the same ID
     // is MotorInfo news, nothing pending is dropped).
     m_shownId = id;
     m_shownKey = key;
-    m_shownProtocol = protocol;
+    m_shownProtocol = facts;
     m_tuning->setDrive(id, motor);
     m_control->setDrive(id, motor);
     m_encoder->setDrive(id, motor);
