@@ -61,6 +61,31 @@ QJsonObject objectOf(const RecordedFrame &f)
 
 } // namespace
 
+QByteArray recordTimeText(qint64 timeNs)
+{
+    // Integer microseconds, rounded half away from zero: exact, where ns * 1e-9 as a double
+    // printed at its shortest gives 0.00030000000000000003.
+    const qint64 magnitude = timeNs < 0 ? -timeNs : timeNs;
+    const qint64 us = (magnitude + 500) / 1000;
+    QByteArray text = QByteArray::number(us / 1000000) + '.' +
+                      QByteArray::number(us % 1000000).rightJustified(6, '0');
+    return timeNs < 0 && us > 0 ? '-' + text : text;
+}
+
+QByteArray timedJsonLine(const QJsonObject &object, qint64 timeNs, const char *wire)
+{
+    // time_s and wire sort after every key an event or note object has: appended, they keep
+    // the order toJsonLine gives the rest.
+    QByteArray line = protocol::FieldJson::toJsonLine(object);
+    line.chop(1);
+    if (line.size() > 1)
+        line += ',';
+    line += "\"time_s\":" + recordTimeText(timeNs);
+    if (wire)
+        line += QByteArray(",\"wire\":\"") + wire + '"';
+    return line + "}\n";
+}
+
 bool isRecordingFile(const QString &path)
 {
     QFile f(path);
@@ -73,20 +98,15 @@ int decodeRecording(recording::RecordingReader &reader, Console &console)
     recording::RecordedFrameParser parser(reader.header().context,
                                           recording::linkOf(reader.header()));
     const auto sink = [&](const RecordedFrame &f) {
-        QJsonObject o = objectOf(f);
+        const QJsonObject o = objectOf(f);
         sawFault = sawFault || protocol::FieldJson::isError(o);
-        o.insert(QStringLiteral("time_s"), double(f.timeNs) * 1e-9);
-        o.insert(QStringLiteral("wire"),
-                 f.transmitted ? QStringLiteral("tx") : QStringLiteral("rx"));
-        console.out(protocol::FieldJson::toJsonLine(o) + '\n');
+        console.out(timedJsonLine(o, f.timeNs, f.transmitted ? "tx" : "rx"));
     };
     RecordEvent e;
     while (reader.next(&e)) {
         parser.feed(e, sink);
         if (e.kind == RecordEvent::Kind::Link || e.kind == RecordEvent::Kind::Dropped) {
-            QJsonObject o{{QStringLiteral("note"), noteText(e)},
-                          {QStringLiteral("time_s"), double(e.timeNs) * 1e-9}};
-            console.out(protocol::FieldJson::toJsonLine(o) + '\n');
+            console.out(timedJsonLine({{QStringLiteral("note"), noteText(e)}}, e.timeNs));
         }
     }
     parser.finish(sink);

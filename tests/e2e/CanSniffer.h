@@ -1,5 +1,6 @@
 #pragma once
 
+#include "CanLksim.h"
 #include "E2eUtil.h"
 #include "LksimProcess.h"
 
@@ -7,7 +8,6 @@
 #include <QtCore/QList>
 #include <QtCore/QProcess>
 #include <QtCore/QString>
-#include <QtNetwork/QTcpServer>
 #include <QtSerialBus/QCanBus>
 #include <QtSerialBus/QCanBusDevice>
 #include <QtSerialBus/QCanBusFrame>
@@ -16,15 +16,6 @@
 #include <memory>
 
 namespace lk::e2e {
-
-/// A TCP port nobody uses now: Qt's virtualcan server is system-wide, so each test (and each
-/// parallel ctest run) takes a port of its own and never hears another's frames.
-inline quint16 freeCanPort()
-{
-    QTcpServer s;
-    s.listen(QHostAddress::LocalHost, 0);
-    return s.serverPort();
-}
 
 /// One frame seen on the virtual bus: its 11-bit ID and its eight data bytes.
 struct SniffedFrame {
@@ -148,13 +139,11 @@ public:
     /// frames only once it read the sniffer's "connect:can0" line. Empty, or what failed.
     QString start(const QString &motors, const QString &marker)
     {
-        m_can = QStringLiteral("virtualcan:tcp://127.0.0.1:%1/can0").arg(freeCanPort());
-        m_sim = std::make_unique<LksimProcess>(QStringLiteral(LKSIM_PATH));
-        if (!m_sim->start({QStringLiteral("--can"), m_can, QStringLiteral("--motors"), motors,
-                           QStringLiteral("--wire-time")}))
-            return m_sim->errorString();
-        if (!m_wire.open(m_can.mid(QStringLiteral("virtualcan:").size())))
-            return QStringLiteral("the sniffer could not join %1").arg(m_can);
+        if (const QString failed = m_sim.start(motors, {QStringLiteral("--wire-time")});
+            !failed.isEmpty())
+            return failed;
+        if (!m_wire.open(can().mid(QStringLiteral("virtualcan:").size())))
+            return QStringLiteral("the sniffer could not join %1").arg(can());
         const quint32 id = 0x140 + marker.section(QLatin1Char(':'), 0, 0).toUInt();
         const bool heard = QTest::qWaitFor(
             [&] {
@@ -164,25 +153,24 @@ public:
                 return r.exitCode == 0 && m_wire.waitFor(id, 0x94, 1, 2000);
             },
             60000);
-        return heard ? QString() : QStringLiteral("the sniffer heard no frame on %1").arg(m_can);
+        return heard ? QString() : QStringLiteral("the sniffer heard no frame on %1").arg(can());
     }
     void stop()
     {
         m_wire.close();
-        m_sim.reset();
+        m_sim.stop();
     }
     /// lkctl ARGS --can (this bus), the sniffer hearing the wire while it runs.
     CtlResult run(const QStringList &args)
     {
-        return lkctlHeard(QStringLiteral(LKCTL_PATH), args + QStringList{"--can", m_can});
+        return lkctlHeard(QStringLiteral(LKCTL_PATH), args + m_sim.can());
     }
     CanSniffer &wire() { return m_wire; }
-    QString can() const { return m_can; }
+    QString can() const { return m_sim.url(); }
 
 private:
-    std::unique_ptr<LksimProcess> m_sim;
+    CanLksim m_sim;
     CanSniffer m_wire;
-    QString m_can;
 };
 #endif
 

@@ -1,26 +1,12 @@
+#include "CanLksim.h"
 #include "E2eUtil.h"
-#include "LksimProcess.h"
 
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
-#include <QtNetwork/QTcpServer>
 #include <QtTest/QTest>
 
-#include <memory>
-
 using namespace lk::e2e;
-
-namespace {
-/// A TCP port nobody uses now: Qt's virtualcan server is system-wide, so each test (and each
-/// parallel ctest run) takes a port of its own and never hears another's frames.
-quint16 freePort()
-{
-    QTcpServer s;
-    s.listen(QHostAddress::LocalHost, 0);
-    return s.serverPort();
-}
-} // namespace
 
 /// lkctl --can against lksim --can over Qt's virtualcan: both CAN generations, one old CAN MG
 /// (replies on 0x141) and one V2.36 MF (replies on 0x182), through real QCanBusDevices.
@@ -36,24 +22,21 @@ private slots:
     void badOptionsAreNamed();
 
 private:
-    QStringList can() const { return {QStringLiteral("--can"), m_can}; }
+    QStringList can() const { return m_bus.can(); }
 
-    std::unique_ptr<LksimProcess> m_sim;
-    QString m_can;
+    CanLksim m_bus;
 };
 
 void tst_E2eCan::init()
 {
-    m_can = QStringLiteral("virtualcan:tcp://127.0.0.1:%1/can0").arg(freePort());
-    m_sim = std::make_unique<LksimProcess>(QStringLiteral(LKSIM_PATH));
-    QVERIFY2(m_sim->start({QStringLiteral("--can"), m_can, QStringLiteral("--motors"),
-                           QStringLiteral("1:MG@can,2:MF@can236"), QStringLiteral("--wire-time")}),
-             qPrintable(m_sim->errorString()));
+    const QString failed =
+        m_bus.start(QStringLiteral("1:MG@can,2:MF@can236"), {QStringLiteral("--wire-time")});
+    QVERIFY2(failed.isEmpty(), qPrintable(failed));
 }
 
 void tst_E2eCan::cleanup()
 {
-    m_sim.reset();
+    m_bus.stop();
 }
 
 void tst_E2eCan::scanFindsBothGenerations()

@@ -4,25 +4,13 @@
 // over Qt's virtualcan, on a TCP port of this test's own (the virtualcan server is
 // system-wide).
 
+#include "CanLksim.h"
 #include "E2eUtil.h"
-#include "LksimProcess.h"
 
 #include <QtCore/QJsonObject>
-#include <QtNetwork/QTcpServer>
 #include <QtTest/QTest>
 
-#include <memory>
-
 using namespace lk::e2e;
-
-namespace {
-quint16 freePort()
-{
-    QTcpServer s;
-    s.listen(QHostAddress::LocalHost, 0);
-    return s.serverPort();
-}
-} // namespace
 
 class tst_LkctlCan : public QObject {
     Q_OBJECT
@@ -33,26 +21,22 @@ private slots:
     void stepTakesTheGearRatioOfDrives();
 
 private:
-    QStringList can() const { return {QStringLiteral("--can"), m_can}; }
+    QStringList can() const { return m_bus.can(); }
 
-    std::unique_ptr<LksimProcess> m_sim;
-    QString m_can;
+    CanLksim m_bus;
 };
 
 void tst_LkctlCan::init()
 {
-    m_can = QStringLiteral("virtualcan:tcp://127.0.0.1:%1/can0").arg(freePort());
-    m_sim = std::make_unique<LksimProcess>(QStringLiteral(LKSIM_PATH));
-    QVERIFY2(m_sim->start({QStringLiteral("--can"), m_can, QStringLiteral("--motors"),
-                           QStringLiteral("1:MG@can")}),
-             qPrintable(m_sim->errorString()));
+    const QString failed = m_bus.start(QStringLiteral("1:MG@can"));
+    QVERIFY2(failed.isEmpty(), qPrintable(failed));
 }
 
 void tst_LkctlCan::cleanup()
 {
-    if (m_sim)
+    if (m_bus.isRunning())
         lkctl(QStringList{"off", "1"} + can());
-    m_sim.reset();
+    m_bus.stop();
 }
 
 void tst_LkctlCan::stepTakesTheGearRatioOfDrives_data()

@@ -1,9 +1,10 @@
+#include "E2eUtil.h"
+
 #include <QtCore/QDir>
 #include <QtCore/QFile>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
-#include <QtCore/QProcess>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
 
@@ -14,27 +15,8 @@
 
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Result lkctl(const QStringList &args)
-{
-    QProcess p;
-    p.start(QStringLiteral(LKCTL_PATH), args);
-    if (!p.waitForStarted(60000))
-        qFatal("cannot start %s", LKCTL_PATH);
-    p.closeWriteChannel();
-    if (!p.waitForFinished(120000)) // generous: the machine is shared and may be loaded
-        qFatal("lkctl %s did not finish", qPrintable(args.join(' ')));
-    Result r;
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
-}
+using Result = lk::e2e::CtlResult;
+using lk::e2e::lkctl;
 
 QStringList words(const char *text)
 {

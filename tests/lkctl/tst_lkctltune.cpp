@@ -4,35 +4,24 @@
 // Nothing is written: the drive holds the gains it had. tune ID position: the angle gains,
 // steps inside the limits' angle window (refused, exit 4, without one), --write ram writes the
 // best's angle gains and nothing else.
+#include "E2eUtil.h"
+
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
-#include <QtCore/QProcess>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QtTest>
 
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
+using Result = lk::e2e::CtlResult;
+
+/// A search and two sweeps on a shared, loaded machine.
+constexpr int kTuneTimeoutMs = 400000;
 
 Result lkctl(const QStringList &args)
 {
-    QProcess p;
-    p.start(QStringLiteral(LKCTL_PATH), args);
-    if (!p.waitForStarted(60000))
-        qFatal("cannot start %s", LKCTL_PATH);
-    p.closeWriteChannel();
-    if (!p.waitForFinished(400000)) // a search and two sweeps on a shared, loaded machine
-        qFatal("lkctl %s did not finish", qPrintable(args.join(' ')));
-    Result r;
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
+    return lk::e2e::lkctl(args, kTuneTimeoutMs);
 }
 
 } // namespace

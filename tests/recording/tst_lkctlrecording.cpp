@@ -8,6 +8,7 @@
 #include <protocol/Reply.h>
 #include <recording/PcapExport.h>
 
+#include <QtCore/QRegularExpression>
 #include <QtCore/QStandardPaths>
 #include <QtCore/QTemporaryDir>
 #include <QtCore/QtEndian>
@@ -217,6 +218,40 @@ private slots:
         QCOMPARE(row2.value(1), QByteArray("2"));
         QCOMPARE(row2.value(power), QByteArray());
         QVERIFY(!row2.value(iq).isEmpty());
+    }
+
+    void timesAreMicrosecondsInEveryOutput()
+    {
+        // One notation for a recording's moments: six decimals, as monitor and the CSVs write
+        // them, never a binary fraction's tail (300000 ns * 1e-9 = 0.00030000000000000003).
+        static const QRegularExpression time(QStringLiteral("\"time_s\":(-?\\d+\\.\\d{6})[,}]"));
+        QTemporaryDir dir;
+        const QString log = dir.filePath(QStringLiteral("t.log"));
+        QVERIFY(writeFile(log, "(1700000000.000000) can0 141#9C00000000000000\n"
+                               "(1700000000.000300) can0 141#9C1E64000A001027\n"
+                               "(1700000001.234567) can0 141#9C1E64000A001027\n"));
+        const auto d = lkctl({QStringLiteral("decode"), log});
+        QVERIFY2(d.exitCode == 0, describeRun(d).toUtf8());
+        QStringList times;
+        for (const QByteArray &line : lines(d.out))
+            times << time.match(QString::fromUtf8(line)).captured(1);
+        QCOMPARE(times, (QStringList{QStringLiteral("0.000000"), QStringLiteral("0.000300"),
+                                     QStringLiteral("1.234567")}));
+        // A recording: every frame, fault and note; the reply of drive 1 at 1.2 ms is written
+        // as replay and the CSV export write it.
+        const QString path = dir.filePath(QStringLiteral("s.lkrec"));
+        QVERIFY(writeFile(path, sampleRecording()));
+        const auto r = lkctl({QStringLiteral("decode"), path});
+        for (const QByteArray &line : lines(r.out))
+            QVERIFY2(time.match(QString::fromUtf8(line)).hasMatch(), line.constData());
+        QVERIFY2(lines(r.out).value(0).endsWith("\"time_s\":0.001000,\"wire\":\"tx\"}"),
+                 r.out.constData());
+        QVERIFY2(lines(r.out).value(1).contains("\"time_s\":0.001200,"), r.out.constData());
+        QVERIFY2(lines(r.out).value(5).endsWith("\"time_s\":0.003000}"), r.out.constData());
+        const auto replay = lkctl({QStringLiteral("replay"), path, QStringLiteral("--json")});
+        QVERIFY2(lines(replay.out).value(0).startsWith("{\"time_s\":0.001200,"),
+                 replay.out.constData());
+        QVERIFY(lines(exported(QStringLiteral("--csv"))).value(1).startsWith("0.001200,"));
     }
 
     void replayDecodesThroughThePassivePath()

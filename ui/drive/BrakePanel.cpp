@@ -55,7 +55,7 @@ BrakePanel::BrakePanel(QWidget *parent) : QGroupBox(tr("Brake (0x8C)"), parent)
     setDrive(0, {}, false);
 }
 
-void BrakePanel::setDrive(int id, const bus::KnownMotor &motor, bool canSend)
+void BrakePanel::setDrive(int id, const bus::KnownMotor &motor, bool canSend, protocol::Link link)
 {
     const bool other =
         id != m_id ||
@@ -64,8 +64,8 @@ void BrakePanel::setDrive(int id, const bus::KnownMotor &motor, bool canSend)
     m_id = id;
     m_motor = motor;
     m_canSend = canSend;
-    m_absence =
-        id > 0 ? GenerationNote::absence(motor, Command::Brake, tr("brake control")) : QString();
+    m_absence = id > 0 ? GenerationNote::absence(motor, Command::Brake, tr("brake control"), link)
+                       : QString();
     if (!canSend)
         m_busy = false; // the view forgets pending requests when the link goes: none is awaited
     if (other) {

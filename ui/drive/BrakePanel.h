@@ -20,7 +20,8 @@ namespace lk::ui {
 /// just before) it is refused unless the user also confirms a second, explicit warning. Every
 /// change is followed by a read-back; the panel says what was sent and what the drive answered.
 /// On a V2.3 drive (or one whose generation is unknown) it says why there is no brake command
-/// and sends nothing. It sends through the function the Control view gives it.
+/// and sends nothing; a CAN V2.36 drive has it (docs/CAN.md). It sends through the function the
+/// Control view gives it.
 class BrakePanel : public QGroupBox {
     Q_OBJECT
 public:
@@ -31,8 +32,10 @@ public:
     explicit BrakePanel(QWidget *parent = nullptr);
 
     void setSender(Sender sender) { m_send = std::move(sender); }
-    /// The drive acted on (0: none) and whether anything can be sent; forgets the state read.
-    void setDrive(int id, const bus::KnownMotor &motor, bool canSend);
+    /// The drive acted on (0: none), whether anything can be sent, and the link (on CAN the
+    /// generation is known without a model read); forgets the state read.
+    void setDrive(int id, const bus::KnownMotor &motor, bool canSend,
+                  protocol::Link link = protocol::Link::Rs485);
 
     void readState(); ///< 0x8C with 0x10 (read only)
     void engage();    ///< 0x8C 0x00, then read back

@@ -320,7 +320,7 @@ void ControlView::refreshEnabled()
     m_setpointPanel->setStartEnabled(can);
     m_limitsEditor->setEnabled(hasDrive());
     m_modes->setEnabled(hasDrive());
-    m_brake->setDrive(driveId(), motor(), can);
+    m_brake->setDrive(driveId(), motor(), can, link());
 }
 
 QString ControlView::statusText() const

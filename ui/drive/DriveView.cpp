@@ -60,6 +60,14 @@ void DriveView::setConnected(bool connected, const QString &whyNot)
     notify(Change::Connection);
 }
 
+void DriveView::setLink(protocol::Link link)
+{
+    if (m_link == link)
+        return;
+    m_link = link;
+    notify(Change::MotorInfo);
+}
+
 std::optional<protocol::Series> DriveView::series() const
 {
     if (m_motor.series)

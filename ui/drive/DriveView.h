@@ -45,6 +45,10 @@ public:
     /// controls are disabled while it may not. `whyNot`: what the disabled buttons' tooltips
     /// and the views' status say (empty: the plain "disconnected" wording).
     void setConnected(bool connected, const QString &whyNot = {});
+    /// The link's kind (RS485 or CAN): on CAN the generation is known without a model read and
+    /// the link decides which commands exist (GenerationNote). A change is MotorInfo news.
+    void setLink(protocol::Link link);
+    protocol::Link link() const { return m_link; }
 
     int driveId() const { return m_id; } ///< 0 when no drive is selected
     bool hasDrive() const { return m_id > 0; }
@@ -76,6 +80,7 @@ private:
     lk::bus::KnownMotor m_motor;
     bool m_connected = false;
     QString m_whyNot;
+    protocol::Link m_link = protocol::Link::Rs485;
 };
 
 } // namespace lk::ui

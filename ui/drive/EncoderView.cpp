@@ -427,7 +427,7 @@ void EncoderView::refreshEnabled()
                                    "spec's command table calls 0x91 a ROM write: it may write the "
                                    "drive's flash.")
                               : noOffset);
-    m_zero->setDrive(driveId(), motor(), canSendToDrive());
+    m_zero->setDrive(driveId(), motor(), canSendToDrive(), link());
     m_zero->setGearRatio(m_ratio);
     m_zero->setBlocked(m_busy);
     m_useRaw->setEnabled(hasDrive() && m_encoder.has_value());
@@ -528,7 +528,7 @@ QString EncoderView::absenceOf(Command command) const
         return QString();
     if (command == Command::ClearTurnCount)
         return m_zero->turnCountAbsence();
-    return GenerationNote::absence(motor(), command, tr("encoder offset"));
+    return GenerationNote::absence(motor(), command, tr("encoder offset"), link());
 }
 
 } // namespace lk::ui

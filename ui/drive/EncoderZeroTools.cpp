@@ -54,10 +54,12 @@ EncoderZeroTools::EncoderZeroTools(QWidget *parent) : QGroupBox(tr("Zero"), pare
     refreshEnabled();
 }
 
-void EncoderZeroTools::setDrive(int id, const bus::KnownMotor &motor, bool canSend)
+void EncoderZeroTools::setDrive(int id, const bus::KnownMotor &motor, bool canSend,
+                                protocol::Link link)
 {
     m_id = id;
     m_motor = motor;
+    m_link = link;
     m_canSend = canSend;
     refreshEnabled();
 }
@@ -93,7 +95,8 @@ QString EncoderZeroTools::turnCountAbsence() const
 {
     if (m_id <= 0)
         return QString();
-    return GenerationNote::absence(m_motor, Command::ClearTurnCount, tr("clear turn count"));
+    return GenerationNote::absence(m_motor, Command::ClearTurnCount, tr("clear turn count"),
+                                   m_link);
 }
 
 void EncoderZeroTools::refreshEnabled()

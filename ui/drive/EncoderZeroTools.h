@@ -34,8 +34,10 @@ public:
     explicit EncoderZeroTools(QWidget *parent = nullptr);
 
     void setSender(Sender sender) { m_send = std::move(sender); }
-    /// The drive acted on (0: none) and whether anything can be sent.
-    void setDrive(int id, const bus::KnownMotor &motor, bool canSend);
+    /// The drive acted on (0: none), whether anything can be sent, and the link (CAN has no
+    /// 0x93: GenerationNote).
+    void setDrive(int id, const bus::KnownMotor &motor, bool canSend,
+                  protocol::Link link = protocol::Link::Rs485);
     /// The requests of a running sequence were dropped (another session or drive, nothing
     /// pending any more): it ends without a result. `forgetCheck`: the last check goes too.
     void abandon(bool forgetCheck);
@@ -75,6 +77,7 @@ private:
     Sender m_send;
     int m_id = 0;
     bus::KnownMotor m_motor;
+    protocol::Link m_link = protocol::Link::Rs485;
     bool m_canSend = false;
     bool m_busy = false;
     bool m_blocked = false;

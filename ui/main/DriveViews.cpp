@@ -75,16 +75,21 @@ void DriveViews::syncDrive()
         }
         m_shownId = 0;
         m_shownKey.clear();
+        m_shownProtocol = {};
         return;
     }
     // A rescan that finds the same drive must not throw away pending edits or undo history;
     // another motor at the same ID is a new drive.
     const bus::KnownMotor &motor = motors.value(id);
     const QString key = DriveSettingsStore::driveKey(id, motor);
-    if (key == m_shownKey)
+    const auto facts = std::make_tuple(motor.series, motor.generation, motor.generationKnown());
+    if (key == m_shownKey && facts == m_shownProtocol)
         return;
+    // Same key, other protocol facts: the same drive better known (setDrive with the same ID
+    // is MotorInfo news, nothing pending is dropped).
     m_shownId = id;
     m_shownKey = key;
+    m_shownProtocol = facts;
     m_tuning->setDrive(id, motor);
     m_control->setDrive(id, motor);
     m_encoder->setDrive(id, motor);
@@ -98,6 +103,8 @@ void DriveViews::syncConnection()
     const bool canSend = m_model->canSend();
     const QString why = m_model->isListening() ? m_model->sendBlockedReason() : QString();
     m_tuning->setLink(m_model->link()); // first: a V2.36 CAN drive is never read with 0x40
+    m_control->setLink(m_model->link());
+    m_encoder->setLink(m_model->link());
     m_tuning->setConnected(canSend, why);
     m_control->setConnected(canSend, why);
     m_encoder->setConnected(canSend, why);

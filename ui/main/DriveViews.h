@@ -1,9 +1,13 @@
 #pragma once
 
+#include <protocol/Series.h>
+
 #include <QtCore/QObject>
 #include <QtCore/QString>
 
 #include <memory>
+#include <optional>
+#include <tuple>
 
 namespace lk::ui {
 
@@ -61,6 +65,9 @@ private:
     DriveInfoView *m_info;
     int m_shownId = 0;
     QString m_shownKey; ///< DriveSettingsStore::driveKey of the drive the views show
+    /// What the views were last told of that drive's protocol: on CAN (no model, so the same
+    /// key) the generation comes later, chosen or seen in a reply, and must still reach them.
+    std::tuple<std::optional<protocol::Series>, protocol::Generation, bool> m_shownProtocol;
 };
 
 } // namespace lk::ui

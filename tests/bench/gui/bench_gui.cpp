@@ -11,6 +11,14 @@
 //   views_cycling  every signal plotted, the next view shown every second (GUI actions)
 //   plots_32   32 drives, Plots view, every signal (only with --drives32)
 //
+// With --can, on CAN at 1 Mbit/s instead, 4 drives (two old CAN, two V2.36), Plots view,
+// every signal of every drive plotted:
+//   can_sim     lkstudio --can sim: the built-in simulated CAN bus, as a user starts it; the
+//               figure is the whole process: GUI, bus thread and the four simulated drives
+//   can_virtual lksim --can on Qt's virtualcan (wire time, the V2.36 0.25 ms reply) and
+//               lkstudio --can virtualcan:...: the GUI's own cost, no simulator inside it,
+//               and the poll rate on the wire, counted by a listening node of this bench
+//
 // Prints one JSON line:
 //   gui_cpu_pct_<scenario>   CPU time of lkstudio / wall time, % of one core
 //   gui_rss_mb_<scenario>    resident memory at the end of the window
@@ -20,12 +28,20 @@
 //   bus_longest_gap_ms_<scenario>   the longest silence between requests of the whole run
 //   gui_rss_mb_series        with --rss-minutes M: RSS every 30 s of an M-minute plots run,
 //                            to show where memory levels off (the 10-minute window fills)
+//   can_txn_per_s_can_virtual   request-reply pairs per second on the virtual CAN wire
+//   can_limit_per_s          LinkTiming's CAN limit at the bit rate (8-byte frames with
+//                            worst-case stuffing, 0.25 ms reply): a ratio of 1 is a full bus
+//   can_poll_ratio_can_virtual  the two above divided
 //
 // Options: --seconds S (measured window, default 20), --warmup S (default 8), --drives32,
-// --rss-minutes M, --baud N.
+// --rss-minutes M, --baud N, --can.
 
 #include "BenchUtil.h"
+#include "CanLksim.h"
+#include "CanSniffer.h"
 #include "LksimProcess.h"
+
+#include <bus/LinkTiming.h>
 
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QDir>
@@ -75,13 +91,25 @@ QString motors(int count)
     return list.join(QLatin1Char(','));
 }
 
+enum class Bus {
+    Rs485Pty,   ///< lksim on a pseudo-terminal, lkstudio --port
+    CanSim,     ///< lkstudio --can sim: the simulated drives inside lkstudio
+    CanVirtual, ///< lksim --can on virtualcan, lkstudio --can virtualcan:...
+};
+
 struct Scenario {
     QString name;
     int drives = 4;
     QString view = QStringLiteral("plots");
     bool minimized = false;
     int cycleViewsMs = 0; ///< lkstudio --cycle-views: GUI actions beside the polling
+    Bus bus = Bus::Rs485Pty;
 };
+
+/// Two drives of each CAN generation (docs/CAN.md): lksim's words and the built-in spec's.
+const char kCanMotors[] = "1:MG@can,2:MF@can,3:MG@can236,4:MF@can236";
+const char kCanSimSpec[] = "1:MG,2:MF,3:MG@2.35,4:MF@2.35";
+constexpr int kCanBitRate = 1000000;
 
 struct Options {
     int seconds = 20;
@@ -89,23 +117,60 @@ struct Options {
     int baud = 1000000;
 };
 
-/// One lkstudio on one lksim: CPU and RSS over the window. `each30s` gets the RSS every 30 s.
+/// The bus of `sc` started and lkstudio's arguments for it; false (said why) if it failed.
+bool startBus(const Scenario &sc, const Options &o, e2e::LksimProcess &sim, e2e::CanLksim &canSim,
+              e2e::CanSniffer &wire, QStringList *args)
+{
+    switch (sc.bus) {
+    case Bus::Rs485Pty:
+        if (!sim.start({QStringLiteral("--motors"), motors(sc.drives),
+                        QStringLiteral("--wire-time"), QStringLiteral("--baud"),
+                        QString::number(o.baud)})) {
+            std::fprintf(stderr, "bench_gui: lksim: %s\n", qPrintable(sim.errorString()));
+            return false;
+        }
+        *args << QStringLiteral("--port") << sim.devicePath() << QStringLiteral("--baud")
+              << QString::number(o.baud);
+        return true;
+    case Bus::CanSim:
+        *args << QStringLiteral("--can") << QStringLiteral("sim") << QStringLiteral("--bitrate")
+              << QString::number(kCanBitRate) << QStringLiteral("--sim")
+              << QString::fromLatin1(kCanSimSpec);
+        return true;
+    case Bus::CanVirtual: {
+        const QString failed =
+            canSim.start(QString::fromLatin1(kCanMotors),
+                         {QStringLiteral("--wire-time"), QStringLiteral("--bitrate"),
+                          QString::number(kCanBitRate), QStringLiteral("--reply-delay-us"),
+                          QString::number(qRound(bus::LinkTiming::kCanReplyTimeS * 1e6))});
+        if (!failed.isEmpty()) {
+            std::fprintf(stderr, "bench_gui: lksim --can: %s\n", qPrintable(failed));
+            return false;
+        }
+        if (!wire.open(canSim.url().mid(QStringLiteral("virtualcan:").size()))) {
+            std::fprintf(stderr, "bench_gui: cannot listen on %s\n", qPrintable(canSim.url()));
+            return false;
+        }
+        *args << canSim.can() << QStringLiteral("--bitrate") << QString::number(kCanBitRate);
+        return true;
+    }
+    }
+    return false;
+}
+
+/// One lkstudio on one bus: CPU and RSS over the window. `each30s` gets the RSS every 30 s.
 bool measure(const Scenario &sc, const Options &o, bench::JsonLine &json,
              const std::function<void(double)> &each30s = {})
 {
     e2e::LksimProcess sim(QStringLiteral(LKSIM_PATH));
-    if (!sim.start({QStringLiteral("--motors"), motors(sc.drives), QStringLiteral("--wire-time"),
-                    QStringLiteral("--baud"), QString::number(o.baud)})) {
-        std::fprintf(stderr, "bench_gui: lksim: %s\n", qPrintable(sim.errorString()));
-        return false;
-    }
+    e2e::CanLksim canSim;
+    e2e::CanSniffer wire; // a third node on the virtual bus: what the wire carried
     QTemporaryDir dir;
-    QStringList args{QStringLiteral("--settings"), dir.filePath(QStringLiteral("lkstudio.ini")),
-                     QStringLiteral("--port"),     sim.devicePath(),
-                     QStringLiteral("--baud"),     QString::number(o.baud),
-                     QStringLiteral("--view"),     sc.view,
-                     QStringLiteral("--plot-all"), QStringLiteral("--window-size"),
-                     QStringLiteral("1400x900")};
+    QStringList args{QStringLiteral("--settings"), dir.filePath(QStringLiteral("lkstudio.ini"))};
+    if (!startBus(sc, o, sim, canSim, wire, &args))
+        return false;
+    args << QStringLiteral("--view") << sc.view << QStringLiteral("--plot-all")
+         << QStringLiteral("--window-size") << QStringLiteral("1400x900");
     if (sc.minimized)
         args << QStringLiteral("--minimized");
     if (sc.cycleViewsMs > 0)
@@ -124,7 +189,9 @@ bool measure(const Scenario &sc, const Options &o, bench::JsonLine &json,
     }
     bench::spin(o.warmup * 1000);
     const qint64 pid = studio.processId();
-    const auto countsBefore = sim.currentCounters(); // the window starts now
+    const bool rs485 = sc.bus == Bus::Rs485Pty;
+    const auto countsBefore = rs485 ? sim.currentCounters() : std::nullopt;
+    wire.clear(); // the window starts now
     const auto before = usageOf(pid);
     QElapsedTimer wall;
     wall.start();
@@ -137,10 +204,12 @@ bool measure(const Scenario &sc, const Options &o, bench::JsonLine &json,
     }
     const auto after = usageOf(pid);
     const double seconds = wall.elapsed() / 1e3;
-    const auto countsAfter = sim.currentCounters();
+    const auto countsAfter = rs485 ? sim.currentCounters() : std::nullopt;
+    const qint64 frames = wire.frames().size();
     studio.terminate();
     studio.waitForFinished(10000);
     sim.stop();
+    canSim.stop();
     if (!before || !after) {
         std::fprintf(stderr, "bench_gui: lkstudio ended during the measurement\n");
         return false;
@@ -157,6 +226,15 @@ bool measure(const Scenario &sc, const Options &o, bench::JsonLine &json,
                     countsAfter->requestGapsOver100ms - countsBefore->requestGapsOver100ms);
         json.add(QStringLiteral("bus_longest_gap_ms_") + sc.name, countsAfter->longestRequestGapMs,
                  1);
+    }
+    if (sc.bus == Bus::CanVirtual) {
+        // Every request is answered by one frame: a transaction is two frames on the wire.
+        const double txn = frames / 2.0 / seconds;
+        const double limit = bus::LinkTiming::can(kCanBitRate)
+                                 .transactionsPerSecond({protocol::Command::ReadState2});
+        json.add(QStringLiteral("can_txn_per_s_") + sc.name, txn, 1);
+        json.add(QStringLiteral("can_limit_per_s"), limit, 0);
+        json.add(QStringLiteral("can_poll_ratio_") + sc.name, txn / limit, 3);
     }
     return true;
 }
@@ -176,7 +254,8 @@ int main(int argc, char *argv[])
     const QCommandLineOption drives32(QStringLiteral("drives32"), QStringLiteral("32 drives"));
     const QCommandLineOption rss(QStringLiteral("rss-minutes"), QStringLiteral("long run"),
                                  QStringLiteral("M"));
-    p.addOptions({seconds, warmup, baud, drives32, rss});
+    const QCommandLineOption can(QStringLiteral("can"), QStringLiteral("CAN at 1 Mbit/s"));
+    p.addOptions({seconds, warmup, baud, drives32, rss, can});
     p.process(app);
     Options o;
     o.seconds = std::max(1, p.value(seconds).toInt());
@@ -184,6 +263,19 @@ int main(int argc, char *argv[])
     o.baud = p.value(baud).toInt();
 
     bench::JsonLine json;
+    if (p.isSet(can)) {
+        json.addInt(QStringLiteral("can_bit_rate"), kCanBitRate);
+        Scenario builtIn{QStringLiteral("can_sim")};
+        builtIn.bus = Bus::CanSim;
+        Scenario virtualBus{QStringLiteral("can_virtual")};
+        virtualBus.bus = Bus::CanVirtual;
+        for (const Scenario &sc : {builtIn, virtualBus}) {
+            if (!measure(sc, o, json))
+                return 1;
+        }
+        json.print();
+        return 0;
+    }
     json.addInt(QStringLiteral("baud"), o.baud);
     if (p.isSet(rss)) {
         Options longRun = o;

@@ -63,6 +63,8 @@ private slots:
     void releaseWithMotorOffNeedsASecondConfirmation();
     void declinedReleaseSendsNothing();
     void v23DriveHasNoBrake();
+    void generationKnownPerLink_data();
+    void generationKnownPerLink();
 };
 
 void tst_BrakePanel::readEngageRelease()
@@ -196,6 +198,66 @@ void tst_BrakePanel::v23DriveHasNoBrake()
     view->setDrive(3, rig.motor(3));
     QVERIFY(brake->absence().isEmpty());
     QVERIFY(button(*view, "brakeRead")->isEnabled());
+}
+
+void tst_BrakePanel::generationKnownPerLink_data()
+{
+    QTest::addColumn<bool>("onCan");
+    QTest::addColumn<bool>("v235");       // V2.35 on RS485, V2.36 on CAN
+    QTest::addColumn<QString>("knownBy"); // "", "model", "chosen", "seen"
+    QTest::addColumn<QString>("absence"); // a word of the reason; empty: offered
+    // RS485: the model read tells the generation; nothing else does.
+    QTest::newRow("RS485 V2.35, model read") << false << true << "model"
+                                             << "";
+    QTest::newRow("RS485 V2.35, chosen only") << false << true << "chosen"
+                                              << "model was not read";
+    // CAN has no model read: the user's choice or a reply tells it, and the dialect decides.
+    QTest::newRow("CAN V2.36, chosen") << true << true << "chosen"
+                                       << "";
+    QTest::newRow("CAN V2.36, seen in a reply") << true << true << "seen"
+                                                << "";
+    QTest::newRow("CAN old, seen") << true << false << "seen"
+                                   << "CAN (old)";
+    QTest::newRow("CAN, not known yet") << true << true << ""
+                                        << "not known yet";
+}
+
+void tst_BrakePanel::generationKnownPerLink()
+{
+    using lk::protocol::Generation;
+    QFETCH(bool, onCan);
+    QFETCH(bool, v235);
+    QFETCH(QString, knownBy);
+    QFETCH(QString, absence);
+    lk::bus::KnownMotor motor;
+    motor.id = 2;
+    motor.generation = v235 ? Generation::V2_35 : Generation::V2_3;
+    if (knownBy == QLatin1String("model")) {
+        motor.model = lk::protocol::ModelInfo{};
+        motor.model->generation = motor.generation;
+    }
+    motor.identityChosen = knownBy == QLatin1String("chosen");
+    motor.generationSeen = knownBy == QLatin1String("seen");
+    const auto link = onCan ? lk::protocol::Link::Can : lk::protocol::Link::Rs485;
+    BrakePanel panel;
+    int sent = 0;
+    panel.setSender([&sent](const lk::protocol::Request &, lk::ui::RequestTracker::Callback, int) {
+        return quint64(++sent);
+    });
+    panel.setDrive(2, motor, true, link);
+    auto *read = panel.findChild<QPushButton *>(QStringLiteral("brakeRead"));
+    QVERIFY(read);
+    if (absence.isEmpty()) {
+        QVERIFY2(panel.absence().isEmpty(), qPrintable(panel.absence()));
+        QVERIFY(read->isEnabled());
+        panel.readState();
+        QCOMPARE(sent, 1);
+    } else {
+        QVERIFY2(panel.absence().contains(absence), qPrintable(panel.absence()));
+        QVERIFY(!read->isEnabled());
+        panel.readState();
+        QCOMPARE(sent, 0);
+    }
 }
 
 QTEST_MAIN(tst_BrakePanel)

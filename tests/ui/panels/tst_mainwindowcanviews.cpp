@@ -46,6 +46,7 @@ private slots:
     void emergencyStopReachesEveryIdAsMotorOff();
     void encoderZeroInRamIsSetAngleOnV236Only();
     void brakeOnV236ReadsItsState();
+    void brakeOnOldCanIsAbsentAndSendsNothing();
     void tuningViewReadsOldCanGains();
 
 private:
@@ -236,18 +237,32 @@ void tst_MainWindowCanViews::encoderZeroInRamIsSetAngleOnV236Only()
 
 void tst_MainWindowCanViews::brakeOnV236ReadsItsState()
 {
-    QSKIP("open bug: on the built-in simulated CAN bus the Brake panel of a V2.36 drive is "
-          "enabled but sends no read (passed on the test's own CAN wrapper); see docs/CAN.md "
-          "section 12");
+    // CAN has no model read: the generation the user chose (or the replies told) is what
+    // offers 0x8C, and it reaches the panel although the drive's settings key stays "id2".
     QVERIFY(selectIdentified(2));
     auto *brake = m_window->driveViews()->control()->brakePanel();
     QSignalSpy read(brake, &lk::ui::BrakePanel::stateRead);
-    QTRY_VERIFY_WITH_TIMEOUT(brake->isEnabled(), kWaitMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(brake->absence().isEmpty(), qPrintable(brake->absence()), kWaitMs);
+    auto *readButton = brake->findChild<QAbstractButton *>(QStringLiteral("brakeRead"));
+    QVERIFY(readButton);
+    QTRY_VERIFY_WITH_TIMEOUT(readButton->isEnabled(), kWaitMs);
     // A read already in flight (the one on selection) takes this one's place: ask until an
     // answer comes.
     QTRY_VERIFY2_WITH_TIMEOUT((brake->readState(), read.count() >= 1),
                               qPrintable(brake->statusText()), kWaitMs);
     QVERIFY(sim()->requestCount(2, Command::Brake) >= 1);
+}
+
+void tst_MainWindowCanViews::brakeOnOldCanIsAbsentAndSendsNothing()
+{
+    // The old CAN generation has no 0x8C: the panel names the dialect and sends nothing.
+    QVERIFY(selectIdentified(1));
+    auto *brake = m_window->driveViews()->control()->brakePanel();
+    QTRY_VERIFY2_WITH_TIMEOUT(brake->absence().contains(QStringLiteral("CAN (old)")),
+                              qPrintable(brake->absence()), kWaitMs);
+    brake->readState();
+    QTest::qWait(200);
+    QCOMPARE(sim()->requestCount(1, Command::Brake), 0);
 }
 
 void tst_MainWindowCanViews::tuningViewReadsOldCanGains()
