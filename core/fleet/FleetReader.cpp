@@ -161,7 +161,8 @@ void FleetReader::finishDrive()
     ValueMap raw = m_current.valueMap();
     FleetCatalog::joinHalves(raw);
     const QString angle = QStringLiteral("max_angle_raw");
-    if (raw.contains(angle)) {
+    // V2.35's int64 comes in two halves; CAN V2.36's int32 is read whole, with its own time.
+    if (raw.contains(angle) && m_current.values.contains(QStringLiteral("max_angle_high"))) {
         const QDateTime at = m_current.values.value(QStringLiteral("max_angle_high")).readAt;
         m_current.values.insert(angle, ReadValue{raw.value(angle), at});
     }

@@ -324,7 +324,9 @@ void tst_E2eCanTools::v236BackupHoldsControlParamsRestoreIsRamOnly()
 
     CtlResult w = run({"write", "2", "param", "max_speed_dps", "123", "--ram", "--drives", kNew});
     QVERIFY2(w.exitCode == 0, qPrintable(describeRun(w)));
+    QVERIFY(m_wire.waitFor(0x182, 0xC1)); // its reply seen: the request was seen before it
     const int written = m_wire.count(0x142, 0xC1);
+    QCOMPARE(written, 1);
 
     const CtlResult rom = run({"restore", file, "--rom", "--yes", "--drives", kNew});
     QVERIFY2(rom.exitCode == 4, qPrintable(describeRun(rom)));
@@ -339,6 +341,9 @@ void tst_E2eCanTools::v236BackupHoldsControlParamsRestoreIsRamOnly()
                  .toObject()
                  .value("refused_key"),
              QJsonValue("series"));
+    // A read after the refusals has passed the sniffer: so has anything they sent before it.
+    QVERIFY(run({"read", "2", "single-turn", "--drives", kNew}).exitCode == 0);
+    QVERIFY(m_wire.waitFor(0x182, 0x94));
     QCOMPARE(m_wire.count(0x142, 0xC1), written);
 
     const CtlResult ram = run(

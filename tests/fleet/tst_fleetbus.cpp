@@ -280,6 +280,13 @@ void tst_FleetBus::canReadsTheDeclaredIdentityNeverTheModel()
         QVERIFY(who.motorName.isEmpty() && who.driverName.isEmpty());
     }
     QCOMPARE(read.at(1).identity.gearRatio, std::optional<double>(36.0));
+    // What was read is a valid backup: every value with the time its reply came.
+    fleet::BackupFile file;
+    file.savedAt = QDateTime::currentDateTimeUtc();
+    file.drives = read.mid(0, 2);
+    record::ParameterFileError error;
+    QVERIFY2(fleet::BackupFile::fromJson(file.toJsonBytes(), &error),
+             qPrintable(fleet::BackupFile::errorText(error)));
     sim::SimParams params;
     protocol::PidGains pid;
     rig.withDrive(1, [&](sim::SimDrive &d) { pid = d.ramPid(); });
