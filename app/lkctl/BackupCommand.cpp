@@ -32,6 +32,11 @@ QString BackupCommand::usage() const
                "generation, the unique ID where the drive has one, and each parameter with\n"
                "the value read and when. V2.3: the six gains, acceleration and encoder\n"
                "offset; V2.35: the three loops' Kp/Ki/Kd, the drive limits and encoder offset.\n"
+               "On CAN, which has no model read, each drive must be declared with --drives\n"
+               "(ID:SERIES@can or @can236): the file says the identity was declared, not read,\n"
+               "and has no model, names or versions. The old CAN generation is saved as V2.3;\n"
+               "CAN V2.36 holds its control parameters (0xC0: the three loops' Kp/Ki/Kd, the\n"
+               "input limits and ramps) and encoder offset.\n"
                "A drive whose read failed is listed as failed, with no values, and the exit\n"
                "status is 1. Nothing is written to any drive.\n"
                "\n"
@@ -45,6 +50,8 @@ QString BackupCommand::usage() const
                "Examples:\n"
                "  lkctl backup all --out machine.json --port /dev/ttyUSB0\n"
                "  lkctl backup 1-4 --out axes.json --sim 1:MF,2:MF,3:MF,4:MF --json\n"
+               "  lkctl backup 1,2 --out can.json --can socketcan:can0 --drives "
+               "1:MG@can,2:MF@can236\n"
                "\n"
                "%2")
         .arg(BusOptions::helpText(), exitStatusText());
@@ -87,7 +94,7 @@ int BackupCommand::run(const QStringList &args, Console &console)
         allRead &= d.complete() && d.failure.isEmpty();
         drives.append(FleetBus::driveJson(d));
         if (!d.failure.isEmpty())
-            bus.error(QStringLiteral("drive %1 was not read: %2").arg(d.id()).arg(d.failure));
+            bus.error(FleetBus::failureText(bus, d));
     }
     if (parser.isSet(QStringLiteral("json"))) {
         const QJsonObject o{{QStringLiteral("command"), name()},

@@ -102,7 +102,7 @@ int DiffCommand::run(const QStringList &args, Console &console)
         pairs.append({drives ? read.first() : file->drives.at(i), read.at(i)});
     for (const fleet::DriveSnapshot &d : read) {
         if (!d.failure.isEmpty())
-            bus.error(QStringLiteral("drive %1 was not read: %2").arg(d.id()).arg(d.failure));
+            bus.error(FleetBus::failureText(bus, d));
     }
     return report(console, parser.isSet(QStringLiteral("json")), pairs);
 }

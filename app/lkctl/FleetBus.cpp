@@ -32,16 +32,22 @@ QVector<fleet::DriveSnapshot> FleetBus::read(LiveBus &bus, const QVector<int> &i
 QJsonObject FleetBus::driveJson(const fleet::DriveSnapshot &d)
 {
     const bool read = d.complete() && d.failure.isEmpty();
+    const fleet::DriveIdentity &who = d.identity;
+    const bool modelRead = d.identified && !who.declared;
+    // A declared identity (CAN) says so, and names nothing only read_model could tell.
     QJsonObject o{
         {QStringLiteral("id"), d.id()},
         {QStringLiteral("status"), read ? QStringLiteral("read") : QStringLiteral("failed")},
         {QStringLiteral("failure"), read ? QJsonValue() : QJsonValue(d.failure)},
+        {QStringLiteral("link"), protocol::linkName(who.link)},
+        {QStringLiteral("identity"), !d.identified  ? QJsonValue()
+                                     : who.declared ? QStringLiteral("declared")
+                                                    : QStringLiteral("read")},
         {QStringLiteral("generation"),
-         d.identified ? QJsonValue(protocol::generationName(d.identity.generation)) : QJsonValue()},
+         d.identified ? QJsonValue(generationText(who)) : QJsonValue()},
         {QStringLiteral("series"),
-         d.identity.series ? QJsonValue(protocol::seriesName(*d.identity.series)) : QJsonValue()},
-        {QStringLiteral("motor_name"),
-         d.identified ? QJsonValue(d.identity.motorName) : QJsonValue()}};
+         who.series ? QJsonValue(protocol::seriesName(*who.series)) : QJsonValue()},
+        {QStringLiteral("motor_name"), modelRead ? QJsonValue(who.motorName) : QJsonValue()}};
     return o;
 }
 
@@ -65,9 +71,27 @@ QJsonArray FleetBus::diffJson(const fleet::DriveSnapshot &reference,
     return rows;
 }
 
+QString FleetBus::generationText(const fleet::DriveIdentity &who)
+{
+    if (who.link != protocol::Link::Can)
+        return protocol::generationName(who.generation);
+    return who.generation == protocol::Generation::V2_3 ? QStringLiteral("can")
+                                                        : QStringLiteral("can236");
+}
+
+QString FleetBus::failureText(LiveBus &bus, const fleet::DriveSnapshot &d)
+{
+    QString text = QStringLiteral("drive %1 was not read: %2").arg(d.id()).arg(d.failure);
+    if (bus.link() == protocol::Link::Can && !d.identified)
+        text += QStringLiteral(". Declare it with --drives, e.g. --drives %1:MG@can (old CAN) "
+                               "or %1:MF@can236 (CAN V2.36)")
+                    .arg(d.id());
+    return text;
+}
+
 bool FleetBus::isRestorable(const fleet::DriveSnapshot &drive, const QString &key)
 {
-    const auto p = fleet::FleetCatalog::find(drive.identity.generation, key);
+    const auto p = fleet::FleetCatalog::find(drive.identity.generation, key, drive.identity.link);
     return !p || p->restorable;
 }
 

@@ -25,8 +25,13 @@ public:
     /// Reads every parameter of `ids`, one drive after another.
     static QVector<fleet::DriveSnapshot> read(LiveBus &bus, const QVector<int> &ids);
 
-    /// The drive summary of backup's output: id, status, generation, series, failure.
+    /// The drive summary of backup's output: id, status, failure, link, identity ("read" or,
+    /// on CAN, "declared"), generation, series, motor name (null unless read).
     static QJsonObject driveJson(const fleet::DriveSnapshot &d);
+    /// "v2.3", "v2.35"; on CAN the words of --drives: "can", "can236".
+    static QString generationText(const fleet::DriveIdentity &who);
+    /// "drive N was not read: WHY", and on CAN for a drive not declared, how to declare it.
+    static QString failureText(LiveBus &bus, const fleet::DriveSnapshot &d);
     /// False for a key a restore never writes (the encoder offset: each motor's own zero).
     static bool isRestorable(const fleet::DriveSnapshot &drive, const QString &key);
     /// The rows of `against` compared with `reference`; `differing` counts the restorable

@@ -20,6 +20,17 @@ QJsonArray texts(const QStringList &list)
     return QJsonArray::fromStringList(list);
 }
 
+/// The first CAN V2.36 drive among `identities` (by ID), or 0: its control parameters are RAM
+/// only, so a ROM restore onto it has nothing to write.
+int firstCan236(const QVector<fleet::DriveIdentity> &identities)
+{
+    for (const fleet::DriveIdentity &who : identities) {
+        if (!fleet::FleetCatalog::hasRom(who.generation, who.link))
+            return who.id;
+    }
+    return 0;
+}
+
 QJsonObject reportJson(const fleet::RestorePlan &plan, const DriveReport *report)
 {
     QJsonArray changes;
@@ -43,6 +54,7 @@ QJsonObject reportJson(const fleet::RestorePlan &plan, const DriveReport *report
         {QStringLiteral("changes"), changes},
         {QStringLiteral("mismatches"), texts(report ? report->mismatches : QStringList())},
         {QStringLiteral("not_verified"), texts(report ? report->notVerified : QStringList())},
+        {QStringLiteral("notes"), texts(report ? report->notes : QStringList())},
     };
 }
 
@@ -122,6 +134,11 @@ QString RestoreCommand::usage() const
             "the values again; V2.3 cannot read ROM (RAM is compared, the ROM copy is not\n"
             "verified) and has no ROM command for acceleration. The encoder offset is the\n"
             "motor's own zero: compared, never written.\n"
+            "On CAN, which has no model read, the targets' series and generation are the\n"
+            "ones --drives declares, and they must match the source's (else refused, the key\n"
+            "named). The old CAN generation restores as V2.3. CAN V2.36 keeps its control\n"
+            "parameters in RAM only (0xC1): --ram writes them there, lost at power-off, and\n"
+            "--rom is refused with nothing sent.\n"
             "Per drive: verified, written (acknowledged, not all verifiable), unchanged,\n"
             "differs, refused or failed.\n"
             "\n"
@@ -247,6 +264,23 @@ int RestoreCommand::run(const QStringList &args, Console &console)
             targets << *ids;
         }
     }
+    if (rom) {
+        // Known before the bus opens: the file's drives, or FROM as --drives declares it.
+        QVector<fleet::DriveIdentity> sources;
+        for (const FleetRestore::Job &job : std::as_const(jobs))
+            sources << job.source.identity;
+        for (const bus::DriveIdentity &d : busOptions->drives) {
+            if (!from || d.id != *from || !busOptions->isCan())
+                continue;
+            fleet::DriveIdentity who;
+            who.id = d.id;
+            who.generation = d.generation;
+            who.link = protocol::Link::Can;
+            sources << who;
+        }
+        if (const int id = firstCan236(sources))
+            return refuseRamOnly(console, id);
+    }
     if (rom && !parser.isSet(QStringLiteral("yes"))) {
         console.errLine(
             QStringLiteral(
@@ -260,6 +294,10 @@ int RestoreCommand::run(const QStringList &args, Console &console)
         return kExitFailure;
     if (from) {
         const fleet::DriveSnapshot source = FleetBus::read(bus, {*from}).value(0);
+        if (!source.failure.isEmpty())
+            bus.error(FleetBus::failureText(bus, source));
+        if (rom && firstCan236({source.identity}))
+            return refuseRamOnly(console, *from);
         for (int t : std::as_const(targets))
             jobs << FleetRestore::Job{source, t};
     }
@@ -269,6 +307,16 @@ int RestoreCommand::run(const QStringList &args, Console &console)
             : QStringLiteral("lkctl-undo-%1.json")
                   .arg(QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyyMMdd-HHmmss")));
     return restore(bus, jobs, rom, undo, parser.isSet(QStringLiteral("json")));
+}
+
+int RestoreCommand::refuseRamOnly(Console &console, int id) const
+{
+    console.errLine(QStringLiteral("lkctl %1: refused, nothing was sent: drive %2 is CAN V2.36, "
+                                   "whose control parameters (0xC1) are RAM only: there is no "
+                                   "ROM write. Restore with --ram (lost at power-off).")
+                        .arg(name())
+                        .arg(id));
+    return kExitRefused;
 }
 
 int RestoreCommand::restore(LiveBus &bus, const QVector<FleetRestore::Job> &jobs, bool rom,
@@ -312,7 +360,7 @@ int RestoreCommand::restore(LiveBus &bus, const QVector<FleetRestore::Job> &jobs
             status = kExitMismatch;
         else if (r->outcome == DriveReport::Outcome::Failed && status == kExitOk)
             status = kExitFailure;
-        QStringList notes = r->mismatches + r->notVerified;
+        QStringList notes = r->mismatches + r->notVerified + r->notes;
         if (!r->reason.isEmpty())
             notes.prepend(r->reason);
         if (!json)

@@ -26,6 +26,8 @@ private:
     /// The restores of `restore FILE [IDS] [--map]`; nullopt after printing why (exit 2).
     std::optional<QVector<fleet::FleetRestore::Job>> restoreJobs(const ArgParser &parser,
                                                                  Console &console) const;
+    /// --rom onto a CAN V2.36 drive `id`: says it is RAM only, nothing sent; kExitRefused.
+    int refuseRamOnly(Console &console, int id) const;
     /// Prepares, writes the undo file, refuses or executes, prints; returns the exit status.
     int restore(LiveBus &bus, const QVector<fleet::FleetRestore::Job> &jobs, bool rom,
                 const QString &undoPath, bool json) const;

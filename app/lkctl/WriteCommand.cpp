@@ -1,6 +1,7 @@
 #include "WriteCommand.h"
 
 #include "Console.h"
+#include "ControlParamWrite.h"
 #include "DriveParams.h"
 #include "LiveBus.h"
 #include "OrderedJson.h"
@@ -18,6 +19,18 @@ using protocol::FieldJson;
 namespace {
 
 const QStringList kPidFields{"angle_kp", "angle_ki", "speed_kp", "speed_ki", "iq_kp", "iq_ki"};
+
+/// --drives says drive `id` is a CAN V2.36 drive (its gains are control parameters, RAM only).
+bool declaresCan236(const BusOptions &options, int id)
+{
+    if (!options.isCan())
+        return false;
+    for (const bus::DriveIdentity &d : options.drives) {
+        if (d.id == id)
+            return d.generation == protocol::Generation::V2_35;
+    }
+    return false;
+}
 
 } // namespace
 
@@ -57,6 +70,14 @@ QString WriteCommand::usage() const
                "(exit 1), naming the parameter; the rest of a pair is then not sent. A V2.3\n"
                "drive has no parameter table: refused after read_model (exit 1).\n"
                "\n"
+               "On CAN the old generation writes pid and accel as V2.3. A CAN V2.36 drive\n"
+               "(--drives ID:SERIES@can236) keeps its gains and limits as control parameters,\n"
+               "in RAM only: pid (gains 0..65535) and param go out as write_control_param\n"
+               "(0xC1) and are read back with 0xC0; pid reads each loop's Kd first and writes\n"
+               "it back as read. Its param names: %4.\n"
+               "--rom to it is refused (exit 1, nothing sent), as is param --rom on any CAN\n"
+               "drive.\n"
+               "\n"
                "  --ram   write_pid_ram / write_accel_ram / write_param_ram: takes effect now,\n"
                "          lost at power-off\n"
                "  --rom   write_pid_rom / write_param_rom: kept across power-off. ROM is the\n"
@@ -86,7 +107,7 @@ QString WriteCommand::usage() const
                  "     values (some firmware ignores write_accel_ram); both are printed\n"
                  "  (1 also: a V2.35 drive answered a parameter write with flag 1 = failure,\n"
                  "     or the drive's generation lacks the command)\n")),
-             DriveParams::helpLines(QStringLiteral("  ")));
+             DriveParams::helpLines(QStringLiteral("  ")), ControlParamWrite::names());
 }
 
 std::optional<WriteCommand::Plan> WriteCommand::parse(const ArgParser &parser, Console &console,
@@ -198,6 +219,9 @@ int WriteCommand::run(const QStringList &args, Console &console)
     const QStringList &pos = parser.positionals();
     if (pos.size() >= 2 && pos.at(1) == QLatin1String("param"))
         return runParam(parser, *busOptions, console);
+    if (pos.size() >= 2 && pos.at(1) == QLatin1String("pid") &&
+        declaresCan236(*busOptions, pos.at(0).toInt()))
+        return runCan236Pid(parser, *busOptions, console);
     const std::optional<Plan> plan = parse(parser, console, &status);
     if (!plan)
         return status;
@@ -209,19 +233,41 @@ int WriteCommand::run(const QStringList &args, Console &console)
     // The model first: a V2.35 drive has neither command, and is never sent one it lacks.
     const int id = plan->request.id;
     const QString lacks = protocol::CommandTable::name(plan->request.command);
-    // On CAN V2.36 the gains are control parameters (0xC0/0xC1), which lkctl does not write
-    // yet: the advice names what does, not the RS485 parameters the drive lacks.
-    const QString lacksText =
-        bus.link() == protocol::Link::Can
-            ? QStringLiteral("drive %1 speaks CAN V2.36, which has no %2; nothing was sent. Its "
-                             "gains are control parameters (0xC0/0xC1, RAM only): lkstudio's "
-                             "Tuning view reads and writes them")
-            : QStringLiteral("drive %1 runs firmware 2.35 or later (protocol V2.35), which has "
-                             "no %2; nothing was sent. Its gains and ramps are parameters: "
-                             "'lkctl write %1 param angle_pid KP KI KD' (speed_pid, iq_pid), "
-                             "'lkctl write %1 param speed_ramp_dps2 DPS2'");
-    if (!speaks(bus, id, protocol::Generation::V2_3, lacksText.arg(id).arg(lacks)))
+    const std::optional<LiveBus::Identity> who = bus.identify(id);
+    if (!who)
         return kExitFailure;
+    const bool can236 =
+        bus.link() == protocol::Link::Can && who->model.generation == protocol::Generation::V2_35;
+    if (can236 && plan->readBack == Command::ReadPid) {
+        // Its reply told V2.36 (no --drives): the gains are control parameters, RAM only.
+        if (plan->rom) {
+            bus.error(ControlParamWrite::romRefusal(id));
+            return kExitFailure;
+        }
+        QString error;
+        const auto control =
+            ControlParamWrite::pidPlan(id, parser.positionals().mid(2), plan->json, &error);
+        if (!control) {
+            bus.error(error);
+            return kExitFailure;
+        }
+        return ControlParamWrite::run(bus, *control);
+    }
+    if (who->model.generation != protocol::Generation::V2_3) {
+        bus.error(
+            (can236 ? QStringLiteral("drive %1 speaks CAN V2.36, which has no %2; nothing was "
+                                     "sent. Its acceleration is the input speed ramp, a control "
+                                     "parameter (RAM only): 'lkctl write %1 param "
+                                     "speed_ramp_dps2 DPS2 --ram'")
+                    : QStringLiteral("drive %1 runs firmware 2.35 or later (protocol V2.35), "
+                                     "which has no %2; nothing was sent. Its gains and ramps are "
+                                     "parameters: 'lkctl write %1 param angle_pid KP KI KD' "
+                                     "(speed_pid, iq_pid), 'lkctl write %1 param "
+                                     "speed_ramp_dps2 DPS2'"))
+                .arg(id)
+                .arg(lacks));
+        return kExitFailure;
+    }
     const bus::RequestResult w = bus.request(plan->request);
     if (w.ok())
         return readBack(bus, *plan, true);
@@ -281,23 +327,12 @@ int WriteCommand::runParam(const ArgParser &parser, const BusOptions &busOptions
     const std::optional<bool> rom = romChosen(parser, &error);
     if (!rom)
         return usageError(console, error);
+    if (busOptions.isCan())
+        return runCanParam(parser, busOptions, console, *rom);
     const std::optional<ParamWrite::Plan> plan =
         ParamWrite::plan(pos, *rom, parser.isSet(QStringLiteral("json")), &error);
     if (!plan)
         return usageError(console, error);
-    if (*rom && busOptions.isCan()) {
-        // A CAN V2.36 drive keeps its control parameters in RAM only (docs/CAN.md 4.1), and
-        // no CAN drive has the RS485 parameter table: there is no ROM to write, --yes or not.
-        for (const bus::DriveIdentity &d : busOptions.drives) {
-            if (d.id == plan->id && d.generation == protocol::Generation::V2_35)
-                return usageError(
-                    console, QStringLiteral("drive %1 is a CAN V2.36 drive: it keeps its control "
-                                            "parameters in RAM only (lost at power-off) and has "
-                                            "no command that writes them to ROM; nothing was "
-                                            "sent. Use --ram.")
-                                 .arg(plan->id));
-        }
-    }
     if (*rom && !parser.isSet(QStringLiteral("yes")))
         return refuseRom(console, plan->param.name);
     LiveBus bus(console, name());
@@ -308,6 +343,77 @@ int WriteCommand::runParam(const ArgParser &parser, const BusOptions &busOptions
                 DriveParams::noTableMessage(plan->id, QStringLiteral("write ") + plan->param.name)))
         return kExitFailure;
     return ParamWrite::run(bus, *plan);
+}
+
+int WriteCommand::runCan236Pid(const ArgParser &parser, const BusOptions &busOptions,
+                               Console &console) const
+{
+    const QStringList &pos = parser.positionals();
+    QString error;
+    const std::optional<int> id = parseId(pos.at(0), &error);
+    if (!id)
+        return usageError(console, error);
+    const std::optional<bool> rom = romChosen(parser, &error);
+    if (!rom)
+        return usageError(console, error);
+    if (*rom) { // before --yes: there is no ROM to confirm
+        console.errLine(
+            QStringLiteral("lkctl %1: %2").arg(name(), ControlParamWrite::romRefusal(*id)));
+        return kExitFailure;
+    }
+    if (pos.size() != 2 + kPidFields.size())
+        return usageError(console, QStringLiteral("pid takes six gains: ANGLE_KP ANGLE_KI SPEED_KP "
+                                                  "SPEED_KI IQ_KP IQ_KI (got %1)")
+                                       .arg(pos.size() - 2));
+    const auto plan =
+        ControlParamWrite::pidPlan(*id, pos.mid(2), parser.isSet(QStringLiteral("json")), &error);
+    if (!plan)
+        return usageError(console, error);
+    LiveBus bus(console, name());
+    if (!bus.open(busOptions) || !bus.identify(*id)) // the drive answers, by the declared identity
+        return kExitFailure;
+    return ControlParamWrite::run(bus, *plan);
+}
+
+int WriteCommand::runCanParam(const ArgParser &parser, const BusOptions &busOptions,
+                              Console &console, bool rom) const
+{
+    const QStringList &pos = parser.positionals();
+    const int id = pos.at(0).toInt(); // checked by the caller
+    if (rom) {
+        // No CAN drive keeps a parameter in ROM: the old generation has no parameter table,
+        // V2.36 keeps its control parameters in RAM only. Refused before --yes, nothing sent.
+        console.errLine(QStringLiteral("lkctl %1: %2")
+                            .arg(name(), declaresCan236(busOptions, id)
+                                             ? ControlParamWrite::romRefusal(id)
+                                             : QStringLiteral("no CAN drive writes a parameter "
+                                                              "to ROM: CAN V2.36's control "
+                                                              "parameters (0xC1) are RAM only "
+                                                              "and the old CAN generation has "
+                                                              "no parameter table; nothing was "
+                                                              "sent. Use --ram.")));
+        return kExitFailure;
+    }
+    QString error;
+    const auto plan =
+        ControlParamWrite::paramPlan(pos, parser.isSet(QStringLiteral("json")), &error);
+    if (!plan)
+        return usageError(console, error);
+    LiveBus bus(console, name());
+    if (!bus.open(busOptions))
+        return kExitFailure;
+    const std::optional<LiveBus::Identity> who = bus.identify(id);
+    if (!who)
+        return kExitFailure;
+    if (who->model.generation != protocol::Generation::V2_35) {
+        bus.error(QStringLiteral("drive %1 speaks the old CAN generation, which has no parameter "
+                                 "table (0xC1 is CAN V2.36's); nothing was sent. Its gains and "
+                                 "acceleration: 'lkctl write %1 pid ...', 'lkctl write %1 accel "
+                                 "DPS2'")
+                      .arg(id));
+        return kExitFailure;
+    }
+    return ControlParamWrite::run(bus, *plan);
 }
 
 } // namespace lk::lkctl

@@ -35,6 +35,12 @@ private:
     std::optional<Plan> parse(const ArgParser &parser, Console &console, int *status) const;
     /// `write ID param NAME VALUE...` (V2.35), see ParamWrite.
     int runParam(const ArgParser &parser, const BusOptions &busOptions, Console &console) const;
+    /// `write ID pid ...` to a drive --drives declares CAN V2.36: 0xC1, RAM only
+    /// (ControlParamWrite); --rom refused, nothing sent.
+    int runCan236Pid(const ArgParser &parser, const BusOptions &busOptions, Console &console) const;
+    /// `write ID param NAME VALUE...` on CAN: V2.36's control parameters (0xC1, RAM only).
+    int runCanParam(const ArgParser &parser, const BusOptions &busOptions, Console &console,
+                    bool rom) const;
     /// --rom (true) or --ram (false); nullopt with `error` when neither or both are given.
     static std::optional<bool> romChosen(const ArgParser &parser, QString *error);
     /// A ROM write without --yes: explain, send nothing, kExitRefused.

@@ -33,37 +33,50 @@ const std::vector<FileField> &rootFields()
     return fields;
 }
 
-const std::vector<FileField> &driveFields(bool read)
+const QString kDeclared = QStringLiteral("declared");
+
+const std::vector<FileField> &driveFields(bool read, bool declared)
 {
-    // A failed drive may lack what read_model would have told.
-    auto make = [](bool required) {
+    // A failed drive may lack what read_model would have told; a declared one (CAN) never
+    // has the names and versions only read_model tells.
+    auto make = [](bool read, bool modelRead) {
+        const bool named = read && modelRead;
         return std::vector<FileField>{
             {"status", ValueType::Text},
             {"failure", ValueType::Text, 0, 0, false},
             {"read_at", ValueType::Text},
-            {"driver_name", ValueType::Text, 0, 0, required},
-            {"motor_name", ValueType::Text, 0, 0, required},
+            {"link", ValueType::Text, 0, 0, false},
+            {"identity", ValueType::Text, 0, 0, false},
+            {"driver_name", ValueType::Text, 0, 0, named},
+            {"motor_name", ValueType::Text, 0, 0, named},
             {"series", ValueType::Text, 0, 0, false},
-            {"generation", ValueType::Text, 0, 0, required},
-            {"hardware_version_raw", ValueType::Integer, 0, 65535, required},
-            {"firmware_version_raw", ValueType::Integer, 0, 65535, required},
+            {"generation", ValueType::Text, 0, 0, read},
+            {"gear_ratio", ValueType::Number, 1, 1000000, false},
+            {"hardware_version_raw", ValueType::Integer, 0, 65535, named},
+            {"firmware_version_raw", ValueType::Integer, 0, 65535, named},
             {"unique_id", ValueType::Text, 0, 0, false},
-            {"params", ValueType::Object, 0, 0, required},
+            {"params", ValueType::Object, 0, 0, read},
         };
     };
-    static const std::vector<FileField> readFields = make(true);
-    static const std::vector<FileField> failedFields = make(false);
-    return read ? readFields : failedFields;
+    static const std::vector<FileField> fields[2][2] = {{make(false, true), make(false, false)},
+                                                        {make(true, true), make(true, false)}};
+    return fields[read ? 1 : 0][declared ? 1 : 0];
+}
+
+/// How a CAN drive's generation is written: the words of `--drives` ("can", "can236").
+QString canGenerationWord(protocol::Generation g)
+{
+    return g == protocol::Generation::V2_3 ? QStringLiteral("can") : QStringLiteral("can236");
 }
 
 // Every parameter of the generation, each an object {"value": N, "read_at": T}.
-const std::vector<FileField> &paramFields(protocol::Generation g)
+const std::vector<FileField> &paramFields(protocol::Generation g, protocol::Link link)
 {
-    static QList<QByteArray> names[2]; // FileField keeps the key as a C string
-    static std::vector<FileField> fields[2];
-    const int i = g == protocol::Generation::V2_3 ? 0 : 1;
+    static QList<QByteArray> names[3]; // FileField keeps the key as a C string
+    static std::vector<FileField> fields[3];
+    const int i = FleetCatalog::isCan236(g, link) ? 2 : g == protocol::Generation::V2_3 ? 0 : 1;
     if (fields[i].empty()) {
-        for (const FleetParam &p : FleetCatalog::params(g))
+        for (const FleetParam &p : FleetCatalog::params(g, link))
             names[i] << p.key.toLatin1();
         for (const QByteArray &n : std::as_const(names[i]))
             fields[i].push_back({n.constData(), ValueType::Object});
@@ -86,9 +99,10 @@ bool readParams(const QJsonObject &params, const QString &prefix, DriveSnapshot 
                 ParameterFileError *error)
 {
     const protocol::Generation g = drive.identity.generation;
-    if (!Check::checkObject(params, prefix, paramFields(g), error))
+    const protocol::Link link = drive.identity.link;
+    if (!Check::checkObject(params, prefix, paramFields(g, link), error))
         return false;
-    for (const FleetParam &p : FleetCatalog::params(g)) {
+    for (const FleetParam &p : FleetCatalog::params(g, link)) {
         const QString at = prefix + p.key + QLatin1Char('.');
         const QJsonObject o = params.value(p.key).toObject();
         const std::vector<FileField> valueFields = {
@@ -115,13 +129,23 @@ bool readIdentity(const QJsonObject &d, const QString &prefix, DriveSnapshot &dr
     drive.identified = !generation.isUndefined();
     if (!drive.identified)
         return true;
-    const std::optional<protocol::Generation> g =
-        protocol::generationFromName(generation.toString());
-    if (!g)
-        return Check::refuse(error,
-                             Check::textError(Kind::UnknownGeneration,
-                                              prefix + QStringLiteral("generation"), generation));
+    const bool can = who.link == protocol::Link::Can;
+    std::optional<protocol::Generation> g;
+    for (protocol::Generation each : {protocol::Generation::V2_3, protocol::Generation::V2_35}) {
+        if (generation.toString() ==
+            (can ? canGenerationWord(each) : protocol::generationName(each)))
+            g = each;
+    }
+    if (!g) {
+        ParameterFileError e = Check::textError(Kind::UnknownGeneration,
+                                                prefix + QStringLiteral("generation"), generation);
+        if (can)
+            e.detail = QStringLiteral("\"can\" or \"can236\" (the drive is on CAN)");
+        return Check::refuse(error, e);
+    }
     who.generation = *g;
+    if (const QJsonValue gear = d.value(QStringLiteral("gear_ratio")); gear.isDouble())
+        who.gearRatio = gear.toDouble();
     who.driverName = d.value(QStringLiteral("driver_name")).toString();
     who.motorName = d.value(QStringLiteral("motor_name")).toString();
     who.hardwareRaw = quint16(d.value(QStringLiteral("hardware_version_raw")).toInt());
@@ -135,6 +159,38 @@ bool readIdentity(const QJsonObject &d, const QString &prefix, DriveSnapshot &dr
                 error,
                 Check::textError(Kind::UnknownSeries, prefix + QStringLiteral("series"), series));
     }
+    return true;
+}
+
+/// "link" (absent: RS485, as every file before CAN) and "identity": a CAN drive's identity is
+/// always "declared", since CAN has no model read; an RS485 one's is read.
+bool readLink(const QJsonObject &d, const QString &prefix, DriveIdentity &who,
+              ParameterFileError *error)
+{
+    const QJsonValue link = d.value(QStringLiteral("link"));
+    if (!link.isUndefined()) {
+        const std::optional<protocol::Link> l = protocol::linkFromName(link.toString());
+        if (!link.isString() || !l) {
+            ParameterFileError e =
+                Check::textError(Kind::WrongType, prefix + QStringLiteral("link"), link);
+            e.detail = QStringLiteral("\"rs485\" or \"can\"");
+            return Check::refuse(error, e);
+        }
+        who.link = *l;
+    }
+    const QJsonValue identity = d.value(QStringLiteral("identity"));
+    const bool can = who.link == protocol::Link::Can;
+    const QString expected = can ? kDeclared : kRead;
+    if (identity.isUndefined() ? can : identity.toString() != expected) {
+        ParameterFileError e =
+            Check::textError(Kind::WrongType, prefix + QStringLiteral("identity"), identity);
+        if (identity.isUndefined())
+            e.found = QStringLiteral("missing");
+        e.detail = can ? QStringLiteral("\"declared\": CAN has no model read")
+                       : QStringLiteral("\"read\" (RS485 reads the model)");
+        return Check::refuse(error, e);
+    }
+    who.declared = can;
     return true;
 }
 
@@ -167,7 +223,8 @@ bool readDrive(const QString &idKey, const QJsonValue &value, DriveSnapshot &dri
         e.detail = QStringLiteral("\"read\" or \"failed\"");
         return Check::refuse(error, e);
     }
-    if (!Check::checkObject(d, prefix, driveFields(read), error))
+    if (!readLink(d, prefix, drive.identity, error) ||
+        !Check::checkObject(d, prefix, driveFields(read, drive.identity.declared), error))
         return false;
     drive.identity.id = id;
     drive.failure = d.value(QStringLiteral("failure")).toString();
@@ -202,19 +259,31 @@ QJsonObject driveJson(const DriveSnapshot &d)
     if (!d.identified)
         return o;
     const DriveIdentity &who = d.identity;
-    o.insert(QStringLiteral("driver_name"), who.driverName);
-    o.insert(QStringLiteral("motor_name"), who.motorName);
+    const bool can = who.link == protocol::Link::Can;
+    if (can) {
+        // The user's word, not a read: no names or versions, which only read_model tells.
+        o.insert(QStringLiteral("link"), protocol::linkName(who.link));
+        o.insert(QStringLiteral("identity"), kDeclared);
+    } else {
+        o.insert(QStringLiteral("driver_name"), who.driverName);
+        o.insert(QStringLiteral("motor_name"), who.motorName);
+    }
     if (who.series)
         o.insert(QStringLiteral("series"), protocol::seriesName(*who.series));
-    o.insert(QStringLiteral("generation"), protocol::generationName(who.generation));
-    o.insert(QStringLiteral("hardware_version_raw"), who.hardwareRaw);
-    o.insert(QStringLiteral("firmware_version_raw"), who.firmwareRaw);
+    o.insert(QStringLiteral("generation"),
+             can ? canGenerationWord(who.generation) : protocol::generationName(who.generation));
+    if (who.gearRatio)
+        o.insert(QStringLiteral("gear_ratio"), *who.gearRatio);
+    if (!can) {
+        o.insert(QStringLiteral("hardware_version_raw"), who.hardwareRaw);
+        o.insert(QStringLiteral("firmware_version_raw"), who.firmwareRaw);
+    }
     if (!who.uniqueId.isEmpty())
         o.insert(QStringLiteral("unique_id"), QString::fromLatin1(who.uniqueId.toHex(' ')));
     if (!read)
         return o;
     QJsonObject params;
-    for (const FleetParam &p : FleetCatalog::params(who.generation)) {
+    for (const FleetParam &p : FleetCatalog::params(who.generation, who.link)) {
         const ReadValue v = d.values.value(p.key);
         params.insert(p.key, QJsonObject{{QStringLiteral("value"), v.value},
                                          {QStringLiteral("read_at"), timeText(v.readAt)}});
@@ -239,9 +308,14 @@ QJsonObject BackupFile::toJson() const
     QJsonObject byId;
     for (const DriveSnapshot &d : drives)
         byId.insert(QString::number(d.id()), driveJson(d));
+    // Version 2 added CAN drives (link, declared identity): a file without one stays version
+    // 1, which older releases read.
+    const bool anyCan = std::any_of(drives.begin(), drives.end(), [](const DriveSnapshot &d) {
+        return d.identity.link == protocol::Link::Can;
+    });
     QJsonObject o;
     o.insert(QStringLiteral("format"), QLatin1String(kFormatName));
-    o.insert(QStringLiteral("version"), kFormatVersion);
+    o.insert(QStringLiteral("version"), anyCan ? kFormatVersion : 1);
     o.insert(QStringLiteral("saved_at"), timeText(savedAt));
     o.insert(QStringLiteral("drives"), byId);
     return o;
@@ -342,6 +416,8 @@ QString BackupFile::errorText(const ParameterFileError &e)
     case Kind::UnknownSeries:
         return tr("%1 is %2: it must be MS, MF, MG or MH").arg(e.key, e.found);
     case Kind::UnknownGeneration:
+        if (!e.detail.isEmpty())
+            return tr("%1 is %2: it must be %3").arg(e.key, e.found, e.detail);
         return tr("%1 is %2: it must be \"v2.3\" or \"v2.35\"").arg(e.key, e.found);
     case Kind::BadTimestamp:
         return tr("%1 is %2: it must be a date and time such as \"2026-05-04T03:02:01.000Z\"")

@@ -18,7 +18,8 @@ namespace lk::fleet {
 /// touching a machine and restores or clones from (docs/BACKUP.md). A drive whose read
 /// failed is listed as failed, with what was known of it and no values.
 struct BackupFile {
-    static constexpr int kFormatVersion = 1;
+    /// 2: drives on CAN ("link", the "identity" declared); a file without one is written as 1.
+    static constexpr int kFormatVersion = 2;
     static constexpr char kFormatName[] = "lkstudio-bus-backup"; ///< the "format" value
     /// 32 drives are a few tens of KiB; load() refuses a larger file unread.
     static constexpr qint64 kMaxFileBytes = 4 << 20;

@@ -1,6 +1,7 @@
 #include "FleetCatalog.h"
 
 #include <motor/SeriesLimits.h>
+#include <protocol/ControlParameter.h>
 #include <protocol/Parameter.h>
 #include <protocol/ProtocolFields.h>
 #include <protocol/RequestBuilder.h>
@@ -11,8 +12,11 @@ namespace lk::fleet {
 
 namespace {
 
+using protocol::ControlParameter;
+using protocol::ControlParamId;
 using protocol::FieldId;
 using protocol::Generation;
+using protocol::Link;
 using protocol::ParameterValue;
 using protocol::ParamId;
 
@@ -39,6 +43,23 @@ const LimitParam kLimits[] = {
     {"current_ramp", ParamId::CurrentRamp, FieldId::CurrentRamp},
     {"speed_ramp_dps2", ParamId::SpeedRamp, FieldId::SpeedRampDps2},
 };
+
+/// The CAN V2.36 one-number control parameters (docs/CAN.md 4.1): key (wire units), ID, the
+/// largest value CAN.md section 3 allows (none is negative).
+struct ControlLimit {
+    const char *key;
+    ControlParamId id;
+    qint64 max;
+};
+const ControlLimit kControlLimits[] = {
+    {"max_torque", ControlParamId::InputTorqueLimit, 2048},
+    {"max_speed_raw", ControlParamId::InputSpeedLimit, kInt32Max},
+    {"max_angle_raw", ControlParamId::InputAngleLimit, kInt32Max},
+    {"current_ramp_raw", ControlParamId::InputCurrentRamp, kInt32Max},
+    {"speed_ramp_dps2", ControlParamId::InputSpeedRamp, kInt32Max},
+};
+const ControlParamId kControlLoops[] = {ControlParamId::AnglePid, ControlParamId::SpeedPid,
+                                        ControlParamId::CurrentPid};
 
 QString loopKey(int loop, const char *gain)
 {
@@ -114,10 +135,46 @@ QVector<ParamFrame> writesV235(int id, const ValueMap &v, const QStringList &cha
     return out;
 }
 
+/// RAM only: CAN V2.36 has no ROM write for its control parameters.
+QVector<ParamFrame> writesCan236(int id, const ValueMap &v, const QStringList &changed)
+{
+    QVector<ParamFrame> out;
+    for (int l = 0; l < 3; ++l) {
+        const QStringList keys{loopKey(l, "kp"), loopKey(l, "ki"), loopKey(l, "kd")};
+        if (!anyOf(changed, keys))
+            continue;
+        auto g = [&](int i) { return static_cast<quint16>(v.value(keys.at(i))); };
+        const ControlParameter value = ControlParameter::ofPid(kControlLoops[l], g(0), g(1), g(2));
+        out << ParamFrame{*protocol::build::writeControlParam(id, value).request, keys};
+    }
+    for (const ControlLimit &c : kControlLimits) {
+        const QString key = QLatin1String(c.key);
+        if (!changed.contains(key))
+            continue;
+        const ControlParameter value =
+            ControlParameter::ofValue(c.id, static_cast<qint32>(v.value(key)));
+        out << ParamFrame{*protocol::build::writeControlParam(id, value).request, {key}};
+    }
+    return out;
+}
+
 } // namespace
 
-const QVector<FleetParam> &FleetCatalog::params(Generation generation)
+const QVector<FleetParam> &FleetCatalog::params(Generation generation, Link link)
 {
+    static const QVector<FleetParam> can236 = [] {
+        QVector<FleetParam> out;
+        for (int l = 0; l < 3; ++l) {
+            for (const char *g : {"kp", "ki", "kd"})
+                out << FleetParam{loopKey(l, g), 0, 65535, true, true};
+        }
+        for (const ControlLimit &c : kControlLimits)
+            out << FleetParam{QLatin1String(c.key), 0, c.max, true, true};
+        out << encoderOffset();
+        return out;
+    }();
+    if (isCan236(generation, link))
+        return can236;
     static const QVector<FleetParam> v23 = [] {
         QVector<FleetParam> out;
         for (const char *k : kGainsV23)
@@ -142,30 +199,33 @@ const QVector<FleetParam> &FleetCatalog::params(Generation generation)
     return generation == Generation::V2_3 ? v23 : v235;
 }
 
-std::optional<FleetParam> FleetCatalog::find(Generation generation, const QString &key)
+std::optional<FleetParam> FleetCatalog::find(Generation generation, const QString &key, Link link)
 {
-    for (const FleetParam &p : params(generation)) {
+    for (const FleetParam &p : params(generation, link)) {
         if (p.key == key)
             return p;
     }
     return std::nullopt;
 }
 
-bool FleetCatalog::inRange(Generation generation, const QString &key, qint64 value)
+bool FleetCatalog::inRange(Generation generation, const QString &key, qint64 value, Link link)
 {
-    const std::optional<FleetParam> p = find(generation, key);
+    const std::optional<FleetParam> p = find(generation, key, link);
     return p && value >= p->min && value <= p->max;
 }
 
 QVector<protocol::Request> FleetCatalog::reads(int id, Generation generation,
-                                               std::optional<protocol::Series> series)
+                                               std::optional<protocol::Series> series, Link link)
 {
     QVector<protocol::Request> out;
     auto add = [&](protocol::Command c) {
         if (!series || motor::supports(*series, c))
             out << *protocol::build::plain(c, id).request;
     };
-    if (generation == Generation::V2_3) {
+    if (isCan236(generation, link)) {
+        for (const protocol::ControlParamInfo &info : protocol::ControlParamTable::all())
+            out << *protocol::build::readControlParam(id, info.id).request;
+    } else if (generation == Generation::V2_3) {
         add(protocol::Command::ReadPid);
         add(protocol::Command::ReadAccel);
     } else {
@@ -188,6 +248,18 @@ ValueMap FleetCatalog::decode(const protocol::Reply &reply)
         out.insert(QStringLiteral("accel_dps2"), a->dps2);
     } else if (const auto *e = std::get_if<protocol::EncoderReading>(&reply.payload)) {
         out.insert(QStringLiteral("encoder_offset"), e->encoderOffset);
+    } else if (const auto *c = std::get_if<ControlParameter>(&reply.payload)) {
+        for (int l = 0; l < 3; ++l) {
+            if (c->id() == kControlLoops[l]) {
+                out.insert(loopKey(l, "kp"), c->pid()[0]);
+                out.insert(loopKey(l, "ki"), c->pid()[1]);
+                out.insert(loopKey(l, "kd"), c->pid()[2]);
+            }
+        }
+        for (const ControlLimit &cl : kControlLimits) {
+            if (c->id() == cl.id)
+                out.insert(QLatin1String(cl.key), c->value());
+        }
     } else if (const auto *p = std::get_if<ParameterValue>(&reply.payload)) {
         for (int l = 0; l < 3; ++l) {
             if (p->id() == kLoopIds[l]) {
@@ -224,8 +296,10 @@ void FleetCatalog::joinHalves(ValueMap &values)
 }
 
 QVector<ParamFrame> FleetCatalog::writes(int id, Generation generation, const ValueMap &values,
-                                         const QStringList &changed, bool rom)
+                                         const QStringList &changed, bool rom, Link link)
 {
+    if (isCan236(generation, link))
+        return rom ? QVector<ParamFrame>() : writesCan236(id, values, changed);
     return generation == Generation::V2_3 ? writesV23(id, values, changed, rom)
                                           : writesV235(id, values, changed, rom);
 }

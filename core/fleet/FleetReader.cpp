@@ -54,6 +54,10 @@ void FleetReader::readNext()
     m_current.identity.id = m_ids.at(m_snapshots.size());
     m_current.readAt = QDateTime::currentDateTimeUtc();
     m_failures.clear();
+    if (m_session->connection().link == protocol::Link::Can) {
+        identifyOnCan();
+        return;
+    }
     m_outstanding = 1;
     const quint64 run = m_run;
     m_session->send(*protocol::build::plain(protocol::Command::ReadModel, m_current.id()).request,
@@ -83,8 +87,49 @@ void FleetReader::onModel(const bus::RequestResult &r)
     m_current.identified = true;
     if (who.series && m_session)
         m_session->setSeries(who.id, *who.series); // replies decode by it (MS: power)
+    readValues();
+}
+
+void FleetReader::identifyOnCan()
+{
+    // CAN has no read_model (0x12): who the drive is comes from the user's word alone
+    // (BusSession::setDriveIdentity), and the file will say it was declared. A reply could
+    // hint the generation, but never the series a restore must match.
+    DriveIdentity &who = m_current.identity;
+    const std::optional<bus::DriveIdentity> declared = m_session->driveIdentity(who.id);
+    if (!declared) {
+        m_failures << QStringLiteral("CAN has no model read (0x12), and drive %1's series and "
+                                     "generation were not declared, so its parameters are not "
+                                     "known; nothing was sent to it")
+                          .arg(who.id);
+        // Later, as a reply would come: start() never finishes before its caller listens.
+        const quint64 run = m_run;
+        m_outstanding = 1;
+        QMetaObject::invokeMethod(
+            this,
+            [this, run] {
+                if (run != m_run)
+                    return;
+                m_outstanding = 0;
+                finishDrive();
+            },
+            Qt::QueuedConnection);
+        return;
+    }
+    who.link = protocol::Link::Can;
+    who.declared = true;
+    who.series = declared->series;
+    who.generation = declared->generation;
+    who.gearRatio = declared->gearRatio;
+    m_current.identified = true;
+    readValues();
+}
+
+void FleetReader::readValues()
+{
+    const DriveIdentity &who = m_current.identity;
     const QVector<protocol::Request> reads =
-        FleetCatalog::reads(who.id, who.generation, who.series);
+        FleetCatalog::reads(who.id, who.generation, who.series, who.link);
     m_outstanding = int(reads.size());
     const quint64 run = m_run;
     for (const protocol::Request &request : reads) {
@@ -116,7 +161,8 @@ void FleetReader::finishDrive()
     ValueMap raw = m_current.valueMap();
     FleetCatalog::joinHalves(raw);
     const QString angle = QStringLiteral("max_angle_raw");
-    if (raw.contains(angle)) {
+    // V2.35's int64 comes in two halves; CAN V2.36's int32 is read whole, with its own time.
+    if (raw.contains(angle) && m_current.values.contains(QStringLiteral("max_angle_high"))) {
         const QDateTime at = m_current.values.value(QStringLiteral("max_angle_high")).readAt;
         m_current.values.insert(angle, ReadValue{raw.value(angle), at});
     }

@@ -15,7 +15,8 @@ class BusSession;
 namespace lk::fleet {
 
 /// Reads every parameter of several drives, one drive after another: read_model (identity
-/// and generation), then the generation's reads (FleetCatalog). Reports progress per drive;
+/// and generation; on CAN, which has none, the identity the user declared to the session),
+/// then the generation's reads (FleetCatalog). Reports progress per drive;
 /// cancel() stops it after the drive being read (nothing already queued is abandoned, so the
 /// bus stays in step). A failed read leaves its values unknown and says why.
 class FleetReader : public QObject {
@@ -40,6 +41,8 @@ signals:
 private:
     void readNext();
     void onModel(const bus::RequestResult &r);
+    void identifyOnCan();
+    void readValues();
     void onValue(const bus::RequestResult &r);
     void finishDrive();
 

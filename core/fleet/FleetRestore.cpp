@@ -110,7 +110,16 @@ void FleetRestore::nextPlan()
     m_report.targetId = plan.targetId();
     m_report.refusal = plan.refusal;
     m_report.changes = plan.changes;
-    if (plan.refusal) {
+    const DriveIdentity &to = plan.target.identity;
+    if (!plan.refusal && m_rom && !FleetCatalog::hasRom(to.generation, to.link)) {
+        // The last gate before the bus: a CAN V2.36 drive has nothing that writes ROM.
+        m_report.refusal = Refusal{
+            QStringLiteral("rom"),
+            QStringLiteral("drive %1 is CAN V2.36: its control parameters (0xC1) are RAM only, "
+                           "there is no ROM write; nothing was sent")
+                .arg(plan.targetId())};
+    }
+    if (m_report.refusal) {
         endDrive(Outcome::Refused);
     } else if (plan.changes.isEmpty() && !m_rom) {
         m_report.after = plan.target;
@@ -129,9 +138,9 @@ void FleetRestore::startStage(Stage stage)
         m_reader.start({plan.targetId()});
         return;
     }
-    m_frames =
-        FleetCatalog::writes(plan.targetId(), plan.target.identity.generation,
-                             plan.source.valueMap(), plan.changedKeys(), stage == Stage::Rom);
+    const DriveIdentity &to = plan.target.identity;
+    m_frames = FleetCatalog::writes(plan.targetId(), to.generation, plan.source.valueMap(),
+                                    plan.changedKeys(), stage == Stage::Rom, to.link);
     sendNextFrame();
 }
 
@@ -195,7 +204,8 @@ void FleetRestore::onReadBack()
         endDrive(Outcome::Failed);
         return;
     }
-    for (const FleetParam &p : FleetCatalog::params(plan.target.identity.generation)) {
+    const DriveIdentity &to = plan.target.identity;
+    for (const FleetParam &p : FleetCatalog::params(to.generation, to.link)) {
         const qint64 wrote = plan.source.values.value(p.key).value;
         const qint64 reads = after.values.value(p.key).value;
         if (p.restorable && wrote != reads)
@@ -207,17 +217,25 @@ void FleetRestore::onReadBack()
         return;
     }
     if (m_stage == Stage::ReadBack) {
+        if (!FleetCatalog::hasRom(to.generation, to.link))
+            m_report.notes << QStringLiteral("RAM only: CAN V2.36 keeps its control parameters "
+                                             "in RAM (0xC1), they are lost at power-off; "
+                                             "nothing was written to ROM");
         if (m_rom)
             startStage(Stage::Rom);
         else
             endDrive(Outcome::Verified);
         return;
     }
-    if (plan.target.identity.generation == protocol::Generation::V2_3) {
+    if (to.generation == protocol::Generation::V2_3) {
+        const QString v23 = to.link == protocol::Link::Can
+                                ? QStringLiteral("the old CAN generation (protocol V2.3)")
+                                : QStringLiteral("protocol V2.3");
         m_report.notVerified
-            << QStringLiteral("ROM: protocol V2.3 has no command that reads ROM; RAM was read back "
-                              "equal after write_pid_rom was acknowledged")
-            << QStringLiteral("accel_dps2: RAM only, protocol V2.3 has no ROM command for it");
+            << QStringLiteral("ROM: %1 has no command that reads ROM; RAM was read back equal "
+                              "after write_pid_rom was acknowledged")
+                   .arg(v23)
+            << QStringLiteral("accel_dps2: RAM only, %1 has no ROM command for it").arg(v23);
         endDrive(Outcome::Written);
         return;
     }

@@ -37,6 +37,7 @@ struct DriveReport {
     bool romAcknowledged = false; ///< every ROM frame was acknowledged
     QStringList mismatches;       ///< "angle_kp: wrote 100, reads 90"
     QStringList notVerified;      ///< what could not be checked, and why
+    QStringList notes;            ///< what the user must know (CAN V2.36: RAM only)
     DriveSnapshot after;          ///< the last read-back (empty when none)
 
     static const char *outcomeName(Outcome o); ///< "verified", "written", ...
@@ -47,7 +48,8 @@ struct DriveReport {
 /// changes); nothing is written. execute() then writes each planned target: RAM first (only
 /// the values that change), reads back and compares; with `rom`, and only for a target whose
 /// RAM read-back matched, the ROM frames go out once each, never retried (a lost reply stops
-/// that drive's ROM writes), and the drive is read back again.
+/// that drive's ROM writes), and the drive is read back again. A CAN V2.36 target has no ROM:
+/// with `rom` it is refused, nothing sent; without, its report notes that it is RAM only.
 class FleetRestore : public QObject {
     Q_OBJECT
 public:

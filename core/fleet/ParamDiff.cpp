@@ -15,13 +15,16 @@ std::optional<qint64> ParamDiff::value(const DriveSnapshot &drive, const QString
 QStringList ParamDiff::keys(const QVector<DriveSnapshot> &drives)
 {
     QStringList out;
-    for (protocol::Generation g : {protocol::Generation::V2_3, protocol::Generation::V2_35}) {
-        const bool present = std::any_of(drives.begin(), drives.end(), [g](const DriveSnapshot &d) {
-            return d.identified && d.identity.generation == g;
-        });
-        for (const FleetParam &p : FleetCatalog::params(g)) {
-            if (present && !out.contains(p.key))
-                out << p.key;
+    for (protocol::Link l : {protocol::Link::Rs485, protocol::Link::Can}) {
+        for (protocol::Generation g : {protocol::Generation::V2_3, protocol::Generation::V2_35}) {
+            const bool present =
+                std::any_of(drives.begin(), drives.end(), [g, l](const DriveSnapshot &d) {
+                    return d.identified && d.identity.generation == g && d.identity.link == l;
+                });
+            for (const FleetParam &p : FleetCatalog::params(g, l)) {
+                if (present && !out.contains(p.key))
+                    out << p.key;
+            }
         }
     }
     return out;
@@ -33,7 +36,7 @@ QVector<DiffRow> ParamDiff::rows(const DriveSnapshot &a, const DriveSnapshot &b)
     for (const DriveSnapshot *d : {&a, &b}) {
         if (!d->identified)
             continue;
-        for (const FleetParam &p : FleetCatalog::params(d->identity.generation)) {
+        for (const FleetParam &p : FleetCatalog::params(d->identity.generation, d->identity.link)) {
             if (!order.contains(p.key))
                 order << p.key;
         }

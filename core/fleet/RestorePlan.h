@@ -9,8 +9,8 @@
 
 namespace lk::fleet {
 
-/// Why a target is not written: `key` names what differs or is wrong ("generation",
-/// "series", "angle_kp", "read"), `reason` says it in English.
+/// Why a target is not written: `key` names what differs or is wrong ("link", "generation",
+/// "series", "angle_kp", "read", "rom"), `reason` says it in English.
 struct Refusal {
     QString key;
     QString reason;
@@ -34,9 +34,9 @@ struct RestorePlan {
     int targetId() const { return target.id(); }
     QStringList changedKeys() const;
 
-    /// Refused when the source or the target was not read completely, when generation or
-    /// series differ (or a series is not known), or when a value is outside the target's
-    /// range; otherwise the changes.
+    /// Refused when the source or the target was not read completely, when link, generation
+    /// or series differ (or a series is not known; on CAN the target's are the user's word),
+    /// or when a value is outside the target's range; otherwise the changes.
     static RestorePlan make(const DriveSnapshot &source, const DriveSnapshot &target);
 };
 

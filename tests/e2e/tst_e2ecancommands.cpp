@@ -3,7 +3,6 @@
 // decoded here by docs/CAN.md's layouts, and what the protocol lacks is refused with nothing
 // sent. A listening third node (CanSniffer) sees every frame. Drive 1 is an old CAN MG
 // (request and reply on 0x141), drive 2 a V2.36 MF (request 0x142, reply 0x182).
-// A function that QSKIPs names what is not built yet (docs/CAN.md section 12).
 
 #include "CanSniffer.h"
 #include "E2eUtil.h"
@@ -57,8 +56,10 @@ private slots:
     void motorStateCommandsOnBoth_data();
     void motorStateCommandsOnBoth();
     void v236InfoReadsGainsWithC0();
-    void needsCantuneV236WritesGainsInRamOnly();
-    void needsCantuneV236RomWriteRefusedAsRamOnly();
+    void v236PidWriteGoesOutAsC1KeepingKd();
+    void v236ParamWriteGoesOutAsC1();
+    void v236RomWriteIsRefusedAsRamOnly_data();
+    void v236RomWriteIsRefusedAsRamOnly();
 
 private:
     CtlResult run(const QStringList &args) { return m_bus.run(args); }
@@ -514,25 +515,71 @@ void tst_E2eCanCommands::v236InfoReadsGainsWithC0()
     QCOMPARE(m_wire.count(kNewReq, 0x30), 0);
 }
 
-void tst_E2eCanCommands::needsCantuneV236WritesGainsInRamOnly()
+void tst_E2eCanCommands::v236PidWriteGoesOutAsC1KeepingKd()
 {
-    QSKIP("needs cantune: write ID pid ... --ram on V2.36 goes out as 0xC1 0x0A..0x0C");
+    // Six gains are Kp and Ki of each loop; V2.36 keeps Kd in the same control parameter, so
+    // each loop is read first (0xC0) and its Kd written back as read, in RAM (0xC1), then
+    // read back. Nothing goes to ROM, and the V2.3 commands the drive lacks are never sent.
     const CtlResult r = run({"write", "2", "pid", "90", "80", "70", "60", "50", "40", "--ram",
                              "--json", "--drives", kNew});
     QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    const QJsonObject o = jsonOf(r.out.trimmed());
+    QVERIFY2(o.value("match").toBool(), r.out.constData());
+    QCOMPARE(o.value("command").toString(), QStringLiteral("write_control_param"));
     QVERIFY(m_wire.waitFor(kNewRep, 0xC1, 3));
-    QVERIFY(jsonOf(r.out.trimmed()).value("match").toBool());
+    QVERIFY(m_wire.waitFor(kNewRep, 0xC0, 6)); // the Kd reads, then the read-back
+    const QList<SniffedFrame> reads = m_wire.on(kNewRep, 0xC0);
+    const QList<SniffedFrame> writes = m_wire.on(kNewReq, 0xC1);
+    QCOMPARE(writes.size(), 3);
+    const quint8 loops[] = {0x0A, 0x0B, 0x0C};
+    const int kp[] = {90, 70, 50}, ki[] = {80, 60, 40};
+    for (int l = 0; l < 3; ++l) {
+        const QByteArray &w = writes.at(l).data;
+        QCOMPARE(quint8(w.at(1)), loops[l]);
+        QCOMPARE(leBytes(w, 2, 2, false), kp[l]);
+        QCOMPARE(leBytes(w, 4, 2, false), ki[l]);
+        QCOMPARE(leBytes(w, 6, 2, false), leBytes(reads.at(l).data, 6, 2, false)); // Kd as read
+        const QString loop = QStringList{"angle", "speed", "iq"}.at(l);
+        QCOMPARE(o.value("holds").toObject().value(loop + "_kd").toInt(),
+                 int(leBytes(reads.at(l).data, 6, 2, false)));
+    }
+    settle();
+    for (int code : {0x30, 0x31, 0x32})
+        QCOMPARE(m_wire.count(kNewReq, quint8(code)), 0);
 }
 
-void tst_E2eCanCommands::needsCantuneV236RomWriteRefusedAsRamOnly()
+void tst_E2eCanCommands::v236ParamWriteGoesOutAsC1()
 {
-    QSKIP("needs cantune: a ROM write to V2.36 is refused saying 0xC1 is RAM only");
-    const CtlResult r = run({"write", "2", "pid", "90", "80", "70", "60", "50", "40", "--rom",
-                             "--yes", "--drives", kNew});
-    QVERIFY(r.exitCode != 0);
-    QVERIFY2(r.err.contains("RAM only"), r.err.constData());
+    // 500 dps is 50000 of 0.01 dps, an int32 in value bytes 3-6 (B4..B7) of parameter 0x20.
+    const CtlResult r =
+        run({"write", "2", "param", "max_speed_dps", "500", "--ram", "--json", "--drives", kNew});
+    QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    const QJsonObject o = jsonOf(r.out.trimmed());
+    QVERIFY2(o.value("match").toBool(), r.out.constData());
+    QVERIFY(o.value("ram_only").toBool());
+    QVERIFY(m_wire.waitFor(kNewRep, 0xC1));
+    QCOMPARE(m_wire.on(kNewReq, 0xC1).first().data.toHex(), QByteArray("c1200000"
+                                                                       "50c30000"));
+    QCOMPARE(m_wire.count(kNewReq, 0xC1), 1);
+}
+
+void tst_E2eCanCommands::v236RomWriteIsRefusedAsRamOnly_data()
+{
+    QTest::addColumn<QStringList>("args");
+    QTest::newRow("pid") << QStringList{"pid", "90", "80", "70", "60", "50", "40"};
+    QTest::newRow("param") << QStringList{"param", "speed_pid", "1", "2", "3"};
+}
+
+void tst_E2eCanCommands::v236RomWriteIsRefusedAsRamOnly()
+{
+    QFETCH(QStringList, args);
+    const CtlResult r =
+        run(QStringList{"write", "2"} + args + QStringList{"--rom", "--yes", "--drives", kNew});
+    QVERIFY2(r.exitCode == 1, qPrintable(describeRun(r)));
+    QVERIFY2(r.err.contains("RAM only") && r.err.contains("nothing was sent"), r.err.constData());
     settle();
-    QCOMPARE(m_wire.count(kNewReq, 0xC1), 0);
+    for (int code : {0xC0, 0xC1, 0x32})
+        QCOMPARE(m_wire.count(kNewReq, quint8(code)), 0);
 }
 
 QTEST_GUILESS_MAIN(tst_E2eCanCommands)

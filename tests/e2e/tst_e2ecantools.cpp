@@ -2,7 +2,6 @@
 // lksim --can over Qt's virtualcan (a port per test), the wire heard by CanSniffer: monitor,
 // step, freq, tune, backup/diff/restore/clone, stop/run/off all. Drives 1 and 3 are old CAN
 // MGs (0x141/0x143 both ways), drive 2 a V2.36 MF (0x142 -> 0x182).
-// A function that QSKIPs names what is not built yet (docs/CAN.md section 12).
 
 #include "CanSniffer.h"
 #include "E2eUtil.h"
@@ -10,6 +9,7 @@
 
 #include <QtCore/QFile>
 #include <QtCore/QJsonArray>
+#include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QTest>
@@ -42,18 +42,33 @@ private slots:
     void runAllResumesTheDrivesFound();
     void stepOnV236();
     void freqAndTuneOnV236();
-    void needsCantuneBackupOnV236();
+    void v236BackupHoldsControlParamsRestoreIsRamOnly();
     void listenPairsCanFrames();
     void decodeReadsCandumpLog();
     void gearFromDrivesBoundsAMove();
 
 private:
     CtlResult run(const QStringList &args) { return m_bus.run(args); }
+    /// Drive `id` of the backup file `path`, as JSON.
+    static QJsonObject fileDrive(const QString &path, int id);
 
     CanE2eBus m_bus;
     CanSniffer &m_wire = m_bus.wire();
     QTemporaryDir m_dir;
 };
+
+QJsonObject tst_E2eCanTools::fileDrive(const QString &path, int id)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    return QJsonDocument::fromJson(f.readAll())
+        .object()
+        .value("drives")
+        .toObject()
+        .value(QString::number(id))
+        .toObject();
+}
 
 void tst_E2eCanTools::init()
 {
@@ -162,34 +177,76 @@ void tst_E2eCanTools::tuneOnOldCanWritesNothingUnasked()
 
 void tst_E2eCanTools::backupDiffRestoreOnOldCan()
 {
-    QSKIP("not built: backup, diff and restore identify a drive by its model (0x12), which CAN "
-          "lacks; on CAN they fail naming that and send nothing");
-    // CAN has no read_model: the drive's identity is the user's --drives, and a backup of an
-    // old CAN drive holds its gains and acceleration (0x30, 0x33).
+    // CAN has no read_model: the drive's identity is the user's --drives, the file says it was
+    // declared, and a backup of an old CAN drive holds its gains, acceleration and encoder
+    // offset (0x30, 0x33, 0x90), as V2.3.
     const QString file = m_dir.filePath(QStringLiteral("b.json"));
     const CtlResult b = run({"backup", "1", "--out", file, "--json", "--drives", kOld});
     QVERIFY2(b.exitCode == 0, qPrintable(describeRun(b)));
-    QCOMPARE(m_wire.count(0x141, 0x12), 0);
+    for (int code : {0x30, 0x33, 0x90})
+        QVERIFY2(m_wire.waitFor(0x141, quint8(code), 2), qPrintable(QString::number(code, 16)));
+    const QJsonObject saved = fileDrive(file, 1);
+    QCOMPARE(saved.value("identity").toString(), QStringLiteral("declared"));
+    QCOMPARE(saved.value("link").toString(), QStringLiteral("can"));
+    QCOMPARE(saved.value("generation").toString(), QStringLiteral("can"));
+    QVERIFY2(!saved.contains("motor_name") && !saved.contains("firmware_version_raw"),
+             qPrintable(QJsonDocument(saved).toJson()));
+    const QByteArray gains = m_wire.last(0x141, 0x30).data;
+    QCOMPARE(saved.value("params").toObject().value("speed_kp").toObject().value("value").toInt(),
+             int(quint8(gains.at(4))));
     const CtlResult d = run({"diff", file, "--json", "--drives", kOld});
     QVERIFY2(d.exitCode == 0, qPrintable(describeRun(d)));
     const CtlResult w =
         run({"write", "1", "pid", "1", "2", "3", "4", "5", "6", "--ram", "--drives", kOld});
     QVERIFY2(w.exitCode == 0, qPrintable(describeRun(w)));
-    const CtlResult r = run({"restore", file, "--ram", "--json", "--drives", kOld});
+    QCOMPARE(run({"diff", file, "--drives", kOld}).exitCode, 5);
+    const CtlResult r = run(
+        {"restore", file, "--ram", "--undo", m_dir.filePath("u.json"), "--json", "--drives", kOld});
     QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
+    QCOMPARE(jsonOf(r.out.trimmed()).value("drives").toArray().at(0).toObject().value("outcome"),
+             QJsonValue("verified"));
+    // The restore wrote the backup's gains with 0x31 (RAM), once, and nothing to ROM.
+    QVERIFY(m_wire.waitFor(0x141, 0x31, 4)); // the write above and the restore, each echoed
+    QCOMPARE(m_wire.last(0x141, 0x31).data.mid(2).toHex(), gains.mid(2).toHex());
+    QCOMPARE(m_wire.count(0x141, 0x32), 0);
+    QCOMPARE(m_wire.count(0x141, 0x12), 0);
     const CtlResult after = run({"diff", file, "--json", "--drives", kOld});
     QVERIFY2(after.exitCode == 0, qPrintable(describeRun(after)));
 }
 
 void tst_E2eCanTools::cloneOnOldCan()
 {
-    QSKIP("not built: clone reads the source's model (0x12), which CAN lacks; on CAN it is "
-          "refused naming that and sends nothing");
+    const QString drives = kOld + ",3:MG@can";
+    const CtlResult w =
+        run({"write", "3", "pid", "1", "2", "3", "4", "5", "6", "--ram", "--drives", drives});
+    QVERIFY2(w.exitCode == 0, qPrintable(describeRun(w)));
     const QString undo = m_dir.filePath(QStringLiteral("undo.json"));
     const CtlResult r =
-        run({"clone", "1", "3", "--ram", "--undo", undo, "--json", "--drives", kOld + ",3:MG@can"});
+        run({"clone", "1", "3", "--ram", "--undo", undo, "--json", "--drives", drives});
     QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
-    QCOMPARE(m_wire.count(0x143, 0x32), 0); // RAM asked: nothing to ROM
+    QCOMPARE(jsonOf(r.out.trimmed()).value("drives").toArray().at(0).toObject().value("outcome"),
+             QJsonValue("verified"));
+    // Drive 1's gains went to drive 3 in RAM (0x31 on 0x143), nothing to ROM; the undo file
+    // holds what drive 3 had, declared.
+    QVERIFY(m_wire.waitFor(0x141, 0x30, 2));
+    QVERIFY(m_wire.waitFor(0x143, 0x31, 4));
+    QCOMPARE(m_wire.last(0x143, 0x31).data.mid(2).toHex(),
+             m_wire.last(0x141, 0x30).data.mid(2).toHex());
+    QCOMPARE(m_wire.count(0x143, 0x32), 0);
+    const QJsonObject before = fileDrive(undo, 3);
+    QCOMPARE(before.value("identity").toString(), QStringLiteral("declared"));
+    QCOMPARE(before.value("params").toObject().value("angle_kp").toObject().value("value").toInt(),
+             1);
+    // A target declared as another series than the source is refused, nothing sent.
+    const int sent = m_wire.count(0x143, 0x31);
+    const CtlResult other =
+        run({"clone", "1", "3", "--ram", "--undo", undo, "--json", "--drives", kOld + ",3:MF@can"});
+    QCOMPARE(other.exitCode, 4);
+    QCOMPARE(
+        jsonOf(other.out.trimmed()).value("drives").toArray().at(0).toObject().value("refused_key"),
+        QJsonValue("series"));
+    QCOMPARE(m_wire.count(0x143, 0x31), sent);
+    QCOMPARE(m_wire.count(0x143, 0xC1), 0);
 }
 
 void tst_E2eCanTools::haltAllReachesEveryId_data()
@@ -242,15 +299,66 @@ void tst_E2eCanTools::freqAndTuneOnV236()
     QVERIFY(m_wire.count(0x142, 0xC1) > 0);
 }
 
-void tst_E2eCanTools::needsCantuneBackupOnV236()
+void tst_E2eCanTools::v236BackupHoldsControlParamsRestoreIsRamOnly()
 {
-    QSKIP("needs cantune: a V2.36 backup holds the 0xC0 control parameters, restore is RAM only");
+    // A V2.36 backup reads every control parameter with 0xC0 (0x0A..0x26) and says its
+    // identity was declared; a restore writes RAM only (0xC1) and says so; --rom is refused
+    // with nothing sent; a declared series other than the file's is refused naming the key.
     const QString file = m_dir.filePath(QStringLiteral("b236.json"));
     const CtlResult b = run({"backup", "2", "--out", file, "--json", "--drives", kNew});
     QVERIFY2(b.exitCode == 0, qPrintable(describeRun(b)));
+    QVERIFY(m_wire.waitFor(0x182, 0xC0, 8));
+    QStringList asked;
+    for (const SniffedFrame &f : m_wire.on(0x142, 0xC0))
+        asked << QString::number(quint8(f.data.at(1)), 16);
+    QCOMPARE(asked, (QStringList{"a", "b", "c", "1e", "20", "22", "24", "26"}));
+    QCOMPARE(m_wire.count(0x142, 0x12), 0);
+    const QJsonObject saved = fileDrive(file, 2);
+    QCOMPARE(saved.value("identity").toString(), QStringLiteral("declared"));
+    QCOMPARE(saved.value("generation").toString(), QStringLiteral("can236"));
+    const QJsonObject params = saved.value("params").toObject();
+    for (const char *key : {"angle_kd", "max_torque", "max_speed_raw", "current_ramp_raw",
+                            "speed_ramp_dps2", "encoder_offset"})
+        QVERIFY2(params.contains(key), key);
+    const qint64 speedLimit = params.value("max_speed_raw").toObject().value("value").toInteger();
+
+    CtlResult w = run({"write", "2", "param", "max_speed_dps", "123", "--ram", "--drives", kNew});
+    QVERIFY2(w.exitCode == 0, qPrintable(describeRun(w)));
+    QVERIFY(m_wire.waitFor(0x182, 0xC1)); // its reply seen: the request was seen before it
+    const int written = m_wire.count(0x142, 0xC1);
+    QCOMPARE(written, 1);
+
     const CtlResult rom = run({"restore", file, "--rom", "--yes", "--drives", kNew});
-    QVERIFY(rom.exitCode != 0);
-    QCOMPARE(m_wire.count(0x142, 0xC1), 0);
+    QVERIFY2(rom.exitCode == 4, qPrintable(describeRun(rom)));
+    QVERIFY2(rom.err.contains("RAM only"), rom.err.constData());
+    const CtlResult series = run({"restore", file, "--ram", "--undo", m_dir.filePath("u0.json"),
+                                  "--json", "--drives", "2:MG@can236"});
+    QVERIFY2(series.exitCode == 4, qPrintable(describeRun(series)));
+    QCOMPARE(jsonOf(series.out.trimmed())
+                 .value("drives")
+                 .toArray()
+                 .at(0)
+                 .toObject()
+                 .value("refused_key"),
+             QJsonValue("series"));
+    // A read after the refusals has passed the sniffer: so has anything they sent before it.
+    QVERIFY(run({"read", "2", "single-turn", "--drives", kNew}).exitCode == 0);
+    QVERIFY(m_wire.waitFor(0x182, 0x94));
+    QCOMPARE(m_wire.count(0x142, 0xC1), written);
+
+    const CtlResult ram = run(
+        {"restore", file, "--ram", "--undo", m_dir.filePath("u.json"), "--json", "--drives", kNew});
+    QVERIFY2(ram.exitCode == 0, qPrintable(describeRun(ram)));
+    const QJsonObject drive = jsonOf(ram.out.trimmed()).value("drives").toArray().at(0).toObject();
+    QCOMPARE(drive.value("outcome"), QJsonValue("verified"));
+    QVERIFY2(drive.value("notes").toArray().at(0).toString().contains("RAM only"),
+             ram.out.constData());
+    // Only the value that changed went out: the speed limit, back to the backup's.
+    QVERIFY(m_wire.waitFor(0x182, 0xC1, written + 1));
+    QCOMPARE(m_wire.count(0x142, 0xC1), written + 1);
+    const QByteArray restored = m_wire.last(0x142, 0xC1).data;
+    QCOMPARE(quint8(restored.at(1)), quint8(0x20));
+    QCOMPARE(leBytes(restored, 4, 4, true), speedLimit);
 }
 
 void tst_E2eCanTools::listenPairsCanFrames()

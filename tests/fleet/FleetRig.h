@@ -23,8 +23,9 @@ constexpr int kWaitMs = 30000;
 /// A BusSession on the in-process simulated bus, with the simulated drives at hand.
 class FleetRig {
 public:
-    explicit FleetRig(const QString &spec)
-        : sim(std::make_shared<transport::SimBusHandle>(*sim::SimBusSpec::parse(spec)))
+    /// On CAN (`link`), a drive of generation V2_3 is an old CAN drive, V2_35 a V2.36 one.
+    explicit FleetRig(const QString &spec, protocol::Link link = protocol::Link::Rs485)
+        : sim(std::make_shared<transport::SimBusHandle>(*sim::SimBusSpec::parse(spec), link))
     {
     }
     ~FleetRig() { session.close(); }

@@ -60,6 +60,9 @@ private slots:
     void failedDriveHasNoValues();
     void refusedNamingTheKey_data();
     void refusedNamingTheKey();
+    void canDrivesAreDeclaredNotRead();
+    void canDriveRefusedNamingTheKey_data();
+    void canDriveRefusedNamingTheKey();
     void directoryIsRefusedUnopened();
     void documentedExampleIsAccepted();
 };
@@ -167,7 +170,7 @@ void tst_BackupFile::refusedNamingTheKey_data()
     QTest::newRow("other format") << bytesWith(QStringLiteral("format"),
                                                QStringLiteral("lkstudio-parameters"))
                                   << int(Kind::WrongFormat) << QStringLiteral("format");
-    QTest::newRow("newer version") << bytesWith(QStringLiteral("version"), 2)
+    QTest::newRow("newer version") << bytesWith(QStringLiteral("version"), 3)
                                    << int(Kind::NewerVersion) << QStringLiteral("version");
     QByteArray twice = good;
     twice.replace("\"angle_ki\"", "\"angle_kp\"");
@@ -186,6 +189,96 @@ void tst_BackupFile::refusedNamingTheKey()
     QCOMPARE(error.key, key);
     const QString text = BackupFile::errorText(error);
     QVERIFY2(key.isEmpty() || text.contains(key), qPrintable(text));
+}
+
+namespace {
+BackupFile canSample()
+{
+    BackupFile file;
+    file.savedAt = QDateTime(QDate(2026, 11, 27), QTime(10, 5), Qt::UTC);
+    file.drives << fleettest::snapshot(1, Generation::V2_3, protocol::Series::MG, 10,
+                                       protocol::Link::Can)
+                << fleettest::snapshot(2, Generation::V2_35, protocol::Series::MF, 100,
+                                       protocol::Link::Can);
+    file.drives[1].identity.gearRatio = 36;
+    return file;
+}
+} // namespace
+
+void tst_BackupFile::canDrivesAreDeclaredNotRead()
+{
+    const BackupFile file = canSample();
+    const QJsonObject root = file.toJson();
+    QCOMPARE(root.value("version").toInt(), 2); // CAN drives: version 2; RS485 only stays 1
+    QCOMPARE(sample().toJson().value("version").toInt(), 1);
+    const QJsonObject two = root.value("drives").toObject().value("2").toObject();
+    QCOMPARE(two.value("link").toString(), QStringLiteral("can"));
+    QCOMPARE(two.value("identity").toString(), QStringLiteral("declared"));
+    QCOMPARE(two.value("generation").toString(), QStringLiteral("can236"));
+    QCOMPARE(root.value("drives").toObject().value("1").toObject().value("generation"),
+             QJsonValue("can"));
+    // Nothing only read_model could tell is written, not even as empty or 0.
+    for (const char *key :
+         {"driver_name", "motor_name", "hardware_version_raw", "firmware_version_raw", "unique_id"})
+        QVERIFY2(!two.contains(key), key);
+    QStringList keys = two.value("params").toObject().keys();
+    QVERIFY(keys.contains("angle_kd") && keys.contains("current_ramp_raw"));
+    QVERIFY(!keys.contains("current_ramp")); // V2.35's int16 ramp is not V2.36's
+    record::ParameterFileError error;
+    const std::optional<BackupFile> back = BackupFile::fromJson(file.toJsonBytes(), &error);
+    QVERIFY2(back, qPrintable(BackupFile::errorText(error)));
+    for (int id : {1, 2}) {
+        const fleet::DriveSnapshot *a = file.drive(id);
+        const fleet::DriveSnapshot *b = back->drive(id);
+        QVERIFY(b->identity.declared);
+        QCOMPARE(b->identity.link, protocol::Link::Can);
+        QCOMPARE(b->identity.generation, a->identity.generation);
+        QCOMPARE(b->identity.series, a->identity.series);
+        QCOMPARE(b->identity.gearRatio, a->identity.gearRatio);
+        QCOMPARE(b->valueMap(), a->valueMap());
+        QVERIFY(b->complete());
+    }
+}
+
+void tst_BackupFile::canDriveRefusedNamingTheKey_data()
+{
+    QTest::addColumn<QString>("path");
+    QTest::addColumn<QJsonValue>("value");
+    QTest::addColumn<int>("kind");
+    QTest::addColumn<QString>("key");
+    QTest::newRow("a CAN identity claimed read")
+        << "drives.2.identity" << QJsonValue("read") << int(Kind::WrongType) << "drives.2.identity";
+    QTest::newRow("CAN without identity")
+        << "drives.2.identity" << QJsonValue() << int(Kind::WrongType) << "drives.2.identity";
+    QTest::newRow("RS485 generation word on CAN")
+        << "drives.2.generation" << QJsonValue("v2.35") << int(Kind::UnknownGeneration)
+        << "drives.2.generation";
+    QTest::newRow("unknown link") << "drives.2.link" << QJsonValue("usb") << int(Kind::WrongType)
+                                  << "drives.2.link";
+    QTest::newRow("old CAN holding V2.36 values")
+        << "drives.2.generation" << QJsonValue("can") << int(Kind::UnknownKey)
+        << "drives.2.params.angle_kd";
+    QTest::newRow("torque limit beyond 2048")
+        << "drives.2.params.max_torque.value" << QJsonValue(2049) << int(Kind::OutOfRange)
+        << "drives.2.params.max_torque.value";
+    QTest::newRow("negative speed limit")
+        << "drives.2.params.max_speed_raw.value" << QJsonValue(-1) << int(Kind::OutOfRange)
+        << "drives.2.params.max_speed_raw.value";
+}
+
+void tst_BackupFile::canDriveRefusedNamingTheKey()
+{
+    QFETCH(QString, path);
+    QFETCH(QJsonValue, value);
+    QFETCH(int, kind);
+    QFETCH(QString, key);
+    const QJsonObject o = edited(canSample().toJson(), path.split(QLatin1Char('.')),
+                                 value.isNull() ? QJsonValue(QJsonValue::Undefined) : value);
+    record::ParameterFileError error;
+    QVERIFY(!BackupFile::fromJson(QJsonDocument(o).toJson(), &error));
+    QCOMPARE(int(error.kind), kind);
+    QCOMPARE(error.key, key);
+    QVERIFY2(BackupFile::errorText(error).contains(key), qPrintable(BackupFile::errorText(error)));
 }
 
 void tst_BackupFile::directoryIsRefusedUnopened()

@@ -20,7 +20,8 @@ const QString kSpec = QStringLiteral("1:MF,2:MF,3:MS4015@2.35,4:MS4015@2.35");
 fleet::ValueMap restorable(const fleet::DriveSnapshot &d)
 {
     fleet::ValueMap out = d.valueMap();
-    for (const fleet::FleetParam &p : fleet::FleetCatalog::params(d.identity.generation)) {
+    for (const fleet::FleetParam &p :
+         fleet::FleetCatalog::params(d.identity.generation, d.identity.link)) {
         if (!p.restorable)
             out.remove(p.key);
     }
@@ -57,6 +58,8 @@ private slots:
     void romIsSentOnceWhenItsReplyIsLost_data();
     void romIsSentOnceWhenItsReplyIsLost();
     void cancelStopsAfterTheDriveBeingRead();
+    void canReadsTheDeclaredIdentityNeverTheModel();
+    void canV236RestoreIsRamOnly();
 };
 
 void tst_FleetBus::readsEveryParameterOfEveryDrive()
@@ -250,6 +253,86 @@ void tst_FleetBus::cancelStopsAfterTheDriveBeingRead()
     QVERIFY(reader.cancelled());
     QCOMPARE(reader.snapshots().size(), 1);
     QCOMPARE(rig.count(2, Command::ReadModel), 0);
+}
+
+namespace {
+/// Drive 1 an old CAN MG, drive 2 a V2.36 MF, drive 3 a V2.36 MF nobody declares.
+bool openCan(FleetRig &rig)
+{
+    using protocol::Generation;
+    rig.session.setDriveIdentity({1, protocol::Series::MG, Generation::V2_3, std::nullopt});
+    rig.session.setDriveIdentity({2, protocol::Series::MF, Generation::V2_35, 36.0});
+    return rig.open();
+}
+} // namespace
+
+void tst_FleetBus::canReadsTheDeclaredIdentityNeverTheModel()
+{
+    FleetRig rig(QStringLiteral("1:MG,2:MF@2.35,3:MF@2.35"), protocol::Link::Can);
+    QVERIFY(openCan(rig));
+    const QVector<fleet::DriveSnapshot> read = rig.read({1, 2, 3});
+    QCOMPARE(read.size(), 3);
+    for (int i = 0; i < 2; ++i) {
+        const fleet::DriveIdentity &who = read.at(i).identity;
+        QVERIFY2(read.at(i).complete(), qPrintable(read.at(i).failure));
+        QVERIFY(who.declared);
+        QCOMPARE(who.link, protocol::Link::Can);
+        QVERIFY(who.motorName.isEmpty() && who.driverName.isEmpty());
+    }
+    QCOMPARE(read.at(1).identity.gearRatio, std::optional<double>(36.0));
+    // What was read is a valid backup: every value with the time its reply came.
+    fleet::BackupFile file;
+    file.savedAt = QDateTime::currentDateTimeUtc();
+    file.drives = read.mid(0, 2);
+    record::ParameterFileError error;
+    QVERIFY2(fleet::BackupFile::fromJson(file.toJsonBytes(), &error),
+             qPrintable(fleet::BackupFile::errorText(error)));
+    sim::SimParams params;
+    protocol::PidGains pid;
+    rig.withDrive(1, [&](sim::SimDrive &d) { pid = d.ramPid(); });
+    rig.withDrive(2, [&](sim::SimDrive &d) { params = d.ramParams(); });
+    QCOMPARE(read.at(0).valueMap().value(QStringLiteral("speed_kp")), pid.speedKp);
+    const fleet::ValueMap two = read.at(1).valueMap();
+    QCOMPARE(two.value(QStringLiteral("speed_kd")), params.speedPid[2]);
+    QCOMPARE(two.value(QStringLiteral("max_torque")), params.maxTorque);
+    QCOMPARE(two.value(QStringLiteral("speed_ramp_dps2")), params.speedRampDps2);
+    QCOMPARE(rig.count(2, Command::ReadControlParam), 8);
+    // Drive 3 is not declared: nothing was guessed and nothing sent to it.
+    QVERIFY(!read.at(2).identified);
+    QVERIFY2(read.at(2).failure.contains(QStringLiteral("not declared")),
+             qPrintable(read.at(2).failure));
+    QVERIFY(rig.barrier(1));
+    for (int id : {1, 2, 3})
+        QCOMPARE(rig.count(id, Command::ReadModel), 0);
+    QCOMPARE(rig.count(3, Command::ReadControlParam), 0);
+    QCOMPARE(rig.count(3, Command::ReadEncoder), 0);
+}
+
+void tst_FleetBus::canV236RestoreIsRamOnly()
+{
+    FleetRig rig(QStringLiteral("1:MG,2:MF@2.35"), protocol::Link::Can);
+    QVERIFY(openCan(rig));
+    fleet::DriveSnapshot source = rig.read({2}).value(0);
+    QVERIFY2(source.complete(), qPrintable(source.failure));
+    source.values[QStringLiteral("speed_ki")].value += 7;
+    const qint64 wanted = source.values.value(QStringLiteral("speed_ki")).value;
+
+    FleetRestore rom(&rig.session);
+    QVERIFY(rig.restore(rom, jobs({{source, 2}}), true, true));
+    QCOMPARE(DriveReport::outcomeName(rom.reports().at(0).outcome), "refused");
+    QCOMPARE(rom.reports().at(0).refusal->key, QStringLiteral("rom"));
+    QVERIFY(rig.barrier(2));
+    QCOMPARE(rig.count(2, Command::WriteControlParam), 0);
+
+    FleetRestore ram(&rig.session);
+    QVERIFY(rig.restore(ram, jobs({{source, 2}}), true));
+    const DriveReport &r = ram.reports().at(0);
+    QCOMPARE(DriveReport::outcomeName(r.outcome), "verified");
+    QVERIFY(r.notes.join(' ').contains(QStringLiteral("RAM only")));
+    QCOMPARE(rig.count(2, Command::WriteControlParam), 1); // the speed loop, once
+    sim::SimParams params;
+    rig.withDrive(2, [&](sim::SimDrive &d) { params = d.ramParams(); });
+    QCOMPARE(qint64(params.speedPid[1]), wanted);
 }
 
 QTEST_GUILESS_MAIN(tst_FleetBus)

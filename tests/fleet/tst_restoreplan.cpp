@@ -23,6 +23,10 @@ private slots:
     void changesAreTheDifferingRestorableValues();
     void writesCarryOnlyWhatChanges_data();
     void writesCarryOnlyWhatChanges();
+    void can236WritesAreControlParamsInRamOnly();
+    void can236ReadsAndDecodesControlParams();
+    void canTargetIdentityIsCheckedFirst_data();
+    void canTargetIdentityIsCheckedFirst();
     void diffMarksUnknownNeverEqual();
     void idListsAndMaps_data();
     void idListsAndMaps();
@@ -50,6 +54,9 @@ void tst_RestorePlan::refused_data()
     QTest::newRow("other generation")
         << Edit([](auto &, auto &t) { t = snapshot(5, Generation::V2_35); })
         << QStringLiteral("generation");
+    QTest::newRow("other link") << Edit([](auto &, auto &t) {
+        t = snapshot(5, Generation::V2_3, Series::MF, 50, protocol::Link::Can);
+    }) << QStringLiteral("link");
     QTest::newRow("other series") << Edit([](auto &, auto &t) { t.identity.series = Series::MG; })
                                   << QStringLiteral("series");
     QTest::newRow("series unknown")
@@ -127,6 +134,87 @@ void tst_RestorePlan::writesCarryOnlyWhatChanges()
         QCOMPARE(int(f.request.id), 4);
     }
     QCOMPARE(sent, commands);
+}
+
+void tst_RestorePlan::can236WritesAreControlParamsInRamOnly()
+{
+    using protocol::Link;
+    const fleet::DriveSnapshot source = snapshot(3, Generation::V2_35, Series::MF, 10, Link::Can);
+    const fleet::ValueMap v = source.valueMap();
+    // One changed gain writes its loop (Kp, Ki, Kd together); a limit its own parameter.
+    const QVector<fleet::ParamFrame> frames = fleet::FleetCatalog::writes(
+        4, Generation::V2_35, v, {"speed_ki", "max_speed_raw"}, false, Link::Can);
+    QCOMPARE(frames.size(), 2);
+    const auto *pid = std::get_if<protocol::ControlParameter>(&frames.at(0).request.payload);
+    QVERIFY(pid);
+    QCOMPARE(frames.at(0).request.command, protocol::Command::WriteControlParam);
+    QCOMPARE(pid->paramId, quint8(0x0B));
+    QCOMPARE(qint64(pid->pid()[0]), v.value("speed_kp"));
+    QCOMPARE(qint64(pid->pid()[2]), v.value("speed_kd"));
+    const auto *limit = std::get_if<protocol::ControlParameter>(&frames.at(1).request.payload);
+    QCOMPARE(limit->paramId, quint8(0x20));
+    QCOMPARE(qint64(limit->value()), v.value("max_speed_raw"));
+    // There is no ROM: a ROM pass has no frame, whatever changed.
+    QVERIFY(fleet::FleetCatalog::writes(4, Generation::V2_35, v, {"speed_ki"}, true, Link::Can)
+                .isEmpty());
+    QVERIFY(!fleet::FleetCatalog::hasRom(Generation::V2_35, Link::Can));
+    QVERIFY(fleet::FleetCatalog::hasRom(Generation::V2_3, Link::Can));
+    // The old CAN generation writes as V2.3 (0x31, 0x32 with --rom).
+    const fleet::ValueMap old = snapshot(3, Generation::V2_3, Series::MG, 10, Link::Can).valueMap();
+    QCOMPARE(fleet::FleetCatalog::writes(4, Generation::V2_3, old, {"iq_kp"}, true, Link::Can)
+                 .value(0)
+                 .request.command,
+             protocol::Command::WritePidRom);
+}
+
+void tst_RestorePlan::can236ReadsAndDecodesControlParams()
+{
+    using protocol::Link;
+    QStringList reads;
+    for (const protocol::Request &r :
+         fleet::FleetCatalog::reads(2, Generation::V2_35, Series::MF, Link::Can)) {
+        const auto *c = std::get_if<protocol::ControlParamRead>(&r.payload);
+        reads << (c ? QString::number(c->paramId, 16) : protocol::CommandTable::name(r.command));
+    }
+    QCOMPARE(reads, (QStringList{"a", "b", "c", "1e", "20", "22", "24", "26", "read_encoder"}));
+    protocol::Reply reply{
+        protocol::Command::ReadControlParam, 2,
+        protocol::ControlParameter::ofValue(protocol::ControlParamId::InputTorqueLimit, 1500)};
+    QCOMPARE(fleet::FleetCatalog::decode(reply), (fleet::ValueMap{{"max_torque", 1500}}));
+    reply.payload =
+        protocol::ControlParameter::ofPid(protocol::ControlParamId::CurrentPid, 1, 2, 3);
+    QCOMPARE(fleet::FleetCatalog::decode(reply),
+             (fleet::ValueMap{{"iq_kp", 1}, {"iq_ki", 2}, {"iq_kd", 3}}));
+}
+
+void tst_RestorePlan::canTargetIdentityIsCheckedFirst_data()
+{
+    QTest::addColumn<int>("generation");
+    QTest::addColumn<int>("series");
+    QTest::addColumn<QString>("key");
+    QTest::newRow("declared as V2.36") << int(Generation::V2_35) << int(Series::MG) << "generation";
+    QTest::newRow("declared as MF") << int(Generation::V2_3) << int(Series::MF) << "series";
+    QTest::newRow("as the source") << int(Generation::V2_3) << int(Series::MG) << "read";
+}
+
+void tst_RestorePlan::canTargetIdentityIsCheckedFirst()
+{
+    // A target declared wrongly may well fail its read too: the refusal names the identity
+    // that differs, the thing the user must correct; only a matching one is refused as unread.
+    QFETCH(int, generation);
+    QFETCH(int, series);
+    QFETCH(QString, key);
+    using protocol::Link;
+    const fleet::DriveSnapshot source = snapshot(1, Generation::V2_3, Series::MG, 10, Link::Can);
+    fleet::DriveSnapshot target =
+        snapshot(3, Generation(generation), Series(series), 10, Link::Can);
+    target.values.clear();
+    target.failure = QStringLiteral("read_control_param: timeout");
+    const RestorePlan plan = RestorePlan::make(source, target);
+    QVERIFY(plan.refusal);
+    QCOMPARE(plan.refusal->key, key);
+    QVERIFY2(key == QLatin1String("read") || plan.refusal->reason.contains("(declared)"),
+             qPrintable(plan.refusal->reason));
 }
 
 void tst_RestorePlan::diffMarksUnknownNeverEqual()
