@@ -286,9 +286,9 @@ int main(int argc, char *argv[])
                        "tool on the device should only listen: bytes it writes are a second "
                        "master (a collision over the controller's frames, logged). --faults "
                        "and --fault apply. With --can the master is a node of the CAN bus: its "
-                       "requests go on 0x140+ID in each drive's CAN layout, and its frames, the "
-                       "drives' replies and an error frame for each corrupted reply go on the "
-                       "bus in order (wire time at --bitrate), for a listener there; a V2.36 "
+                       "requests go on 0x140+ID in each drive's CAN layout, and its frames and the "
+                       "drives' replies (a corrupted one never comes) go on the bus in order "
+                       "(wire time at --bitrate), for a listener there; a V2.36 "
                        "drive's speed setpoint carries the torque limit 2048; read_model "
                        "cannot be polled. Example: rate=200,ids=1-4,poll=9c:9a:92,"
                        "speed=sine:300dps:0.5Hz,move=every:5s"),

@@ -30,8 +30,9 @@ struct CanWireFrame {
 /// Frames take their time at the bit rate (protocol::can::frameSeconds); a reply follows its
 /// drive's turnaround. The bus's faults apply to replies as CAN makes them happen: a dropped
 /// reply never comes (Dropped), a late one comes late, and a corrupted one (corrupt, length,
-/// garbage) fails every node's CRC check: an error frame is on the bus instead and the reply
-/// never reaches anyone (Garbled). A V2.36 drive's speed setpoint carries the full torque
+/// garbage) fails every node's CRC check: an error frame is on the bus instead (a record with
+/// the Error flag; lksim's CanTransport does not write it) and the reply never reaches anyone
+/// (Garbled). A V2.36 drive's speed setpoint carries the full torque
 /// limit (kSpeedIqLimitMax), as a machine configured so would send. A request the drive's CAN
 /// generation cannot carry (read_model on CAN) is not sent and not logged.
 ///

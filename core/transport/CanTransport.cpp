@@ -155,18 +155,11 @@ void CanTransport::write(const QByteArray &bytes)
     for (qsizetype at = 0; at < bytes.size(); at += protocol::CanRecord::kSize) {
         const std::optional<protocol::CanRecord> r =
             protocol::CanRecord::decode(bytes.mid(at, protocol::CanRecord::kSize));
-        if (!r) {
-            qCWarning(lcCan) << "not a CAN record, dropped:" << bytes.mid(at).toHex(' ');
+        if (!r || r->isError()) {
+            qCWarning(lcCan) << "not a CAN data record, dropped:" << bytes.mid(at).toHex(' ');
             continue;
         }
         QCanBusFrame frame(r->canId, r->data);
-        if (r->isError()) {
-            // Only a simulator writes one (lksim: a reply whose CRC failed); the engine never
-            // does, and a real controller makes its own. virtualcan and vcan carry it.
-            frame = QCanBusFrame(QCanBusFrame::ErrorFrame);
-            frame.setError(QCanBusFrame::FrameErrors(int(r->canId)));
-            frame.setPayload(r->data);
-        }
         frame.setExtendedFrameFormat(r->isExtended());
         if (m_device->state() == QCanBusDevice::ConnectedState)
             sendNow(frame);

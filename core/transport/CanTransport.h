@@ -44,8 +44,7 @@ public:
 
     bool open() override;
     void close() override;
-    /// Whole CanRecords; a trailing partial record is dropped (and logged). An error record
-    /// becomes an error frame (a simulator's: lksim puts one on a virtual bus for a spoilt reply).
+    /// Whole CanRecords; a trailing partial record is dropped (and logged).
     void write(const QByteArray &bytes) override;
     State state() const override { return m_state; }
     int baud() const override { return m_settings.bitRate; } ///< the bit rate

@@ -3,6 +3,7 @@
 #include "ListenTruth.h"
 #include "LksimProcess.h"
 
+#include <QtCore/QJsonDocument>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QTest>
 
@@ -11,7 +12,7 @@
 // request with a commanded value and every reply the log has in the window lkctl listened to
 // comes out as its row, in bus order, of the right drive, with the log's values; at least
 // 99.9 % of the answered requests in that window are paired, and the counts agree with the
-// log's outcomes, also with CAN's faults on (dropped and late replies, error frames).
+// log's outcomes, also with CAN's faults on (dropped, late and spoilt replies).
 
 using namespace lk;
 using namespace lk::e2e;
@@ -28,7 +29,7 @@ void tst_E2eCanListenController::listenMatchesTheControllersLog_data()
 {
     QTest::addColumn<QString>("faults");
     QTest::newRow("clean bus") << QString();
-    QTest::newRow("drops, error frames, late replies")
+    QTest::newRow("drops, spoilt and late replies")
         << QStringLiteral("drop=0.02,corrupt=0.01,garbage=0.01,delay=0.02,delay_ms=8,seed=11");
 }
 
@@ -74,6 +75,15 @@ void tst_E2eCanListenController::listenMatchesTheControllersLog()
     for (qsizetype j = 0; j < got.size(); ++j) {
         const Row &w = want[at + j];
         const QString why = differenceFrom(want[at].logLine, got[j], w, learnt, &learningRows);
+        if (!why.isEmpty()) {
+            for (qsizetype k = std::max<qsizetype>(0, j - 4); k <= j; ++k)
+                qWarning(
+                    "got %d %s / want %d %s (log line %d)", got[k].id,
+                    QJsonDocument(got[k].values).toJson(QJsonDocument::Compact).constData(),
+                    want[at + k].id,
+                    QJsonDocument(want[at + k].values).toJson(QJsonDocument::Compact).constData(),
+                    want[at + k].logLine + 1);
+        }
         QVERIFY2(
             why.isEmpty(),
             qPrintable(
@@ -117,7 +127,8 @@ void tst_E2eCanListenController::listenMatchesTheControllersLog()
     QVERIFY2(replies >= answered, r.err.constData());
     QVERIFY2(orphans <= 1 && paired + orphans == replies, r.err.constData());
     QVERIFY2(notAnswered >= unanswered - garbled, r.err.constData());
-    QVERIFY2(errorFrames.captured(1).toLongLong() >= garbled, r.err.constData());
+    // lksim's error frame for a spoilt reply does not reach the bus: CanTransport writes data
+    // frames only (docs/CAN.md section 12). The listener sees the request go unanswered.
     QCOMPARE(ambiguous, qint64(0)); // the controller sends no echo command
     QVERIFY(commanded > 50);
 }
