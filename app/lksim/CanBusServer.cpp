@@ -20,15 +20,21 @@ constexpr quint32 kErrorClassProtocol = 0x00000008;
 } // namespace
 
 CanBusServer::CanBusServer(sim::SimBus &bus, const Options &options, QObject *parent)
-    : QObject(parent), m_bus(bus), m_options(options), m_front(bus)
+    : QObject(parent), m_bus(bus), m_options(options), m_front(bus),
+      m_controllerLog(options.controllerLog)
 {
     m_clock.start();
+    m_controllerTimer.setSingleShot(true);
+    m_controllerTimer.setTimerType(Qt::PreciseTimer);
+    connect(&m_controllerTimer, &QTimer::timeout, this, &CanBusServer::tickController);
 }
 
 CanBusServer::~CanBusServer() = default;
 
 bool CanBusServer::open()
 {
+    if (m_options.controller && !m_controllerLog.open())
+        return false;
     transport::CanSettings s = m_options.can;
     s.setBitRate = m_options.can.plugin != QLatin1String("virtualcan");
     m_transport = std::make_unique<transport::CanTransport>(s);
@@ -49,10 +55,36 @@ int CanBusServer::run(const std::atomic<bool> &stop)
             QCoreApplication::quit();
     });
     poll.start(kStopPollMs);
+    if (m_options.controller) {
+        m_controller.emplace(*m_options.controller, m_bus, m_front, m_options.can.bitRate,
+                             nowSeconds());
+        m_controllerTimer.start(0);
+    }
     QCoreApplication::exec();
     if (m_transport)
         m_transport->close();
     return 0;
+}
+
+double CanBusServer::nowSeconds() const
+{
+    return static_cast<double>(m_clock.nsecsElapsed()) * 1e-9;
+}
+
+void CanBusServer::tickController()
+{
+    const double now = nowSeconds();
+    for (const sim::CanWireFrame &f : m_controller->advanceTo(now)) {
+        m_transport->write(f.record);
+        if (m_options.verbose)
+            std::fprintf(stderr, "lksim: controller %s\n",
+                         qPrintable(protocol::CanRecord::decode(f.record)->candumpText()));
+    }
+    m_controllerLog.record(m_controller->takeFinished());
+    // Frames go out in order, at most a millisecond late (the timer's grain): a listener hears
+    // the conversation as it was, a little later.
+    const double wait = std::clamp(m_controller->nextEventS() - now, 0.0, kStopPollMs * 1e-3);
+    m_controllerTimer.start(static_cast<int>(std::ceil(wait * 1e3)));
 }
 
 void CanBusServer::onRecords(const QByteArray &records)
@@ -107,13 +139,20 @@ void CanBusServer::sendLater(const QByteArray &record, double delayS)
 QString CanBusServer::summary() const
 {
     const sim::SimCanCounters &c = m_front.counters();
-    return QStringLiteral("lksim: %1 CAN requests, %2 replies, %3 unanswered, %4 faults, %5 "
-                          "error frames sent")
-        .arg(c.requests)
-        .arg(c.replies)
-        .arg(c.unanswered)
-        .arg(c.faults)
-        .arg(m_errorFrames);
+    const QString controller = m_controller
+                                   ? QStringLiteral("lksim: controller: %1, %2 error frames\n")
+                                         .arg(m_controllerLog.outcomesText())
+                                         .arg(m_controller->errorFrames())
+                                   : QString();
+    return controller +
+           QStringLiteral("lksim: %1 CAN requests, %2 replies, %3 unanswered, %4 faults, %5 "
+                          "error frames sent, %6 frames heard that were no request (not answered)")
+               .arg(c.requests)
+               .arg(c.replies)
+               .arg(c.unanswered)
+               .arg(c.faults)
+               .arg(m_errorFrames)
+               .arg(c.notRequests);
 }
 
 } // namespace lk::app

@@ -1,5 +1,9 @@
 #pragma once
 
+#include "ControllerLogFile.h"
+
+#include <sim/CanForeignController.h>
+#include <sim/ControllerSpec.h>
 #include <sim/SimBus.h>
 #include <sim/SimCanFront.h>
 #include <transport/CanTransport.h>
@@ -7,9 +11,11 @@
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QObject>
 #include <QtCore/QString>
+#include <QtCore/QTimer>
 
 #include <atomic>
 #include <memory>
+#include <optional>
 
 namespace lk::app {
 
@@ -19,7 +25,15 @@ namespace lk::app {
 /// V2.36 on 0x180+ID unless --can-reply-base says otherwise), after the drive's reply delay
 /// and, with wire-time emulation, the CAN frames' wire time at the bit rate. The bus's faults
 /// apply: dropped and late replies; a corrupt reply becomes what CAN makes of one, an error
-/// frame on the bus and no reply (the controllers' CRC throws it away).
+/// frame on the bus and no reply (the controllers' CRC throws it away). Only requests are
+/// answered (SimCanFront): another node's replies on the bus are ignored.
+///
+/// With a controller (--controller), a simulated foreign master (sim::CanForeignController)
+/// asks the drives in this process and every frame of its conversation, requests, replies and
+/// error frames, goes on the bus in order when it is due, so that a listener on the same bus
+/// hears exactly that conversation; each finished request is a line of the controller log.
+/// Frames of other hosts are still answered, as another master's (CAN arbitrates: they do not
+/// collide with the controller's).
 class CanBusServer : public QObject {
     Q_OBJECT
 public:
@@ -27,6 +41,8 @@ public:
         transport::CanSettings can;
         bool emulateWireTime = false;
         bool verbose = false;
+        std::optional<sim::ControllerSpec> controller;
+        QString controllerLog; ///< with a controller: its ground-truth log (empty: none)
     };
     CanBusServer(sim::SimBus &bus, const Options &options, QObject *parent = nullptr);
     ~CanBusServer() override;
@@ -41,6 +57,9 @@ public:
 private:
     void onRecords(const QByteArray &records);
     void sendLater(const QByteArray &record, double delayS);
+    double nowSeconds() const;
+    /// Runs the controller to now, puts its due frames on the bus and waits for the next.
+    void tickController();
 
     sim::SimBus &m_bus;
     Options m_options;
@@ -49,6 +68,9 @@ private:
     QElapsedTimer m_clock;
     qint64 m_wireFreeNs = 0; ///< when the emulated bus is next idle
     qint64 m_errorFrames = 0;
+    std::optional<sim::CanForeignController> m_controller; ///< made when serving starts
+    ControllerLogFile m_controllerLog;
+    QTimer m_controllerTimer;
 };
 
 } // namespace lk::app

@@ -29,12 +29,7 @@ TapBusServer::TapBusServer(PtyDevice &pty, sim::SimBus &bus, const sim::Controll
 
 bool TapBusServer::open()
 {
-    if (!m_options.logFile.isEmpty() && !m_log.open(QIODevice::WriteOnly | QIODevice::Truncate)) {
-        std::fprintf(stderr, "lksim: --controller-log %s: %s\n", qPrintable(m_options.logFile),
-                     qPrintable(m_log.errorString()));
-        return false;
-    }
-    return writeStats(true);
+    return m_log.open() && writeStats(true);
 }
 
 bool TapBusServer::writeStats(bool running)
@@ -55,26 +50,17 @@ void TapBusServer::record(const QList<sim::ControllerTransaction> &done)
 {
     if (done.isEmpty())
         return;
-    QByteArray lines;
     const qint64 collisionsSoFar = m_wire.collisions();
     for (const sim::ControllerTransaction &t : done) {
-        ++m_outcomes[static_cast<size_t>(t.outcome)];
         ++m_wire.requests;
         if (t.outcome == Outcome::Collided) // lost to the second master: one collision each
             ++(t.replyBytes.isEmpty() ? m_wire.collisionsBefore : m_wire.collisionsDuring);
         if (!t.replyBytes.isEmpty())
             ++m_wire.replies;
-        if (m_log.isOpen())
-            lines += t.toJsonLine() + '\n';
     }
-    // Flushed per batch: a test reads the log while lksim runs.
     if (m_wire.collisions() != collisionsSoFar)
         writeStats(true); // the collision count is always current
-    if (m_log.isOpen() && (m_log.write(lines) != lines.size() || !m_log.flush())) {
-        std::fprintf(stderr, "lksim: --controller-log %s: %s; the log stops here\n",
-                     qPrintable(m_options.logFile), qPrintable(m_log.errorString()));
-        m_log.close();
-    }
+    m_log.record(done);
 }
 
 void TapBusServer::advance(double now)
@@ -149,16 +135,9 @@ int TapBusServer::run(const std::atomic<bool> &stop, std::atomic<bool> &dumpStat
 
 QString TapBusServer::summary() const
 {
-    return QStringLiteral("lksim: controller: %1 requests (%2 answered, %3 unanswered, %4 "
-                          "dropped, %5 garbled, %6 collided); second master: %7 writes, %8 "
-                          "of them over the controller's frames; %9 bytes of the tap discarded "
-                          "unread")
-        .arg(m_wire.requests)
-        .arg(m_outcomes[size_t(Outcome::Answered)])
-        .arg(m_outcomes[size_t(Outcome::Unanswered)])
-        .arg(m_outcomes[size_t(Outcome::Dropped)])
-        .arg(m_outcomes[size_t(Outcome::Garbled)])
-        .arg(m_outcomes[size_t(Outcome::Collided)])
+    return QStringLiteral("lksim: controller: %1; second master: %2 writes, %3 of them over "
+                          "the controller's frames; %4 bytes of the tap discarded unread")
+        .arg(m_log.outcomesText())
         .arg(m_secondMasterWrites)
         .arg(m_secondMasterCollisions)
         .arg(m_tapBytesDiscarded);

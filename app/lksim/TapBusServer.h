@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ControllerLogFile.h"
 #include "StatsFile.h"
 #include "WireMonitor.h"
 
@@ -7,10 +8,8 @@
 #include <sim/ForeignController.h>
 
 #include <QtCore/QByteArray>
-#include <QtCore/QFile>
 #include <QtCore/QString>
 
-#include <array>
 #include <atomic>
 #include <deque>
 #include <optional>
@@ -75,12 +74,11 @@ private:
     Options m_options;
     std::optional<sim::ForeignController> m_controller; ///< made when serving starts
     StatsFile m_stats;
-    QFile m_log;
+    ControllerLogFile m_log; ///< the ground truth, and the outcomes' counts
     std::deque<Pending> m_pending;
     /// The controller's requests and replies; collisions: its requests lost to the second
     /// master (before: the request was hit; during: its reply was)
     WireCounters m_wire;
-    std::array<qint64, 5> m_outcomes{}; ///< by ControllerTransaction::Outcome
     qint64 m_secondMasterWrites = 0;
     qint64 m_secondMasterCollisions = 0; ///< writes that met the controller's frames
     qint64 m_tapBytesDiscarded = 0;

@@ -8,6 +8,7 @@
 #include <bus/BusTiming.h>
 #include <bus/LinkTiming.h>
 #include <protocol/CanLayout.h>
+#include <protocol/Command.h>
 #include <sim/ControllerSpec.h>
 #include <sim/SimBus.h>
 #include <sim/SimBusSpec.h>
@@ -55,10 +56,39 @@ int fail(const QString &message)
     return 2;
 }
 
-/// lksim --can: the drives on a CAN interface until SIGINT/SIGTERM (CanBusServer).
-int serveCan(lk::sim::SimBus &bus, const lk::sim::SimBusSpec &spec, const QString &where,
-             const QString &rateText, const QString &baseText, bool wireTime, bool verbose)
+/// What --can adds to the drives: where, how fast, and a foreign master if any.
+struct CanServe {
+    QString where;
+    QString rateText;
+    QString baseText;
+    bool wireTime = false;
+    bool verbose = false;
+    std::optional<lk::sim::ControllerSpec> controller;
+    QString controllerLog;
+};
+
+/// A poll command of --controller that neither CAN generation has (read_model), named.
+QString notOnCan(const lk::sim::ControllerSpec &spec)
 {
+    using lk::protocol::DecodeContext;
+    using lk::protocol::Generation;
+    for (const lk::protocol::Command c : spec.poll) {
+        const bool onCan = lk::protocol::CommandTable::availableOn(
+                               c, DecodeContext{{}, Generation::V2_3, lk::protocol::Link::Can}) ||
+                           lk::protocol::CommandTable::availableOn(
+                               c, DecodeContext{{}, Generation::V2_35, lk::protocol::Link::Can});
+        if (!onCan)
+            return lk::protocol::CommandTable::name(c);
+    }
+    return {};
+}
+
+/// lksim --can: the drives on a CAN interface until SIGINT/SIGTERM (CanBusServer).
+int serveCan(lk::sim::SimBus &bus, const lk::sim::SimBusSpec &spec, const CanServe &serve)
+{
+    const QString &where = serve.where;
+    const QString &rateText = serve.rateText;
+    const QString &baseText = serve.baseText;
     const qsizetype colon = where.indexOf(QLatin1Char(':'));
     if (colon <= 0)
         return fail(QStringLiteral("--can takes PLUGIN:INTERFACE, e.g. virtualcan:can0"));
@@ -70,8 +100,10 @@ int serveCan(lk::sim::SimBus &bus, const lk::sim::SimBusSpec &spec, const QStrin
     o.can.plugin = where.left(colon);
     o.can.interfaceName = where.mid(colon + 1);
     o.can.bitRate = rate;
-    o.emulateWireTime = wireTime;
-    o.verbose = verbose;
+    o.emulateWireTime = serve.wireTime;
+    o.verbose = serve.verbose;
+    o.controller = serve.controller;
+    o.controllerLog = serve.controllerLog;
     lk::app::CanBusServer server(bus, o);
     if (baseText == QLatin1String("140"))
         server.front().setReplyBase(lk::protocol::can::IdBase::Base140);
@@ -84,8 +116,12 @@ int serveCan(lk::sim::SimBus &bus, const lk::sim::SimBusSpec &spec, const QStrin
     installSignalHandlers();
     std::printf("%s\n", qPrintable(where));
     std::fflush(stdout);
-    std::fprintf(stderr, "lksim: %s on CAN %s at %d bit/s\n", qPrintable(spec.toString()),
-                 qPrintable(where), rate);
+    std::fprintf(
+        stderr, "lksim: %s on CAN %s at %d bit/s%s\n", qPrintable(spec.toString()),
+        qPrintable(where), rate,
+        serve.controller
+            ? qPrintable(QStringLiteral(", controller %1").arg(serve.controller->toString()))
+            : "");
     const int rc = server.run(g_stop);
     std::fprintf(stderr, "%s\n", qPrintable(server.summary()));
     return rc;
@@ -249,7 +285,12 @@ int main(int argc, char *argv[])
                        "then -STEP; default 90deg, 360dps), timeout=Nms (default 5ms). The "
                        "tool on the device should only listen: bytes it writes are a second "
                        "master (a collision over the controller's frames, logged). --faults "
-                       "and --fault apply. Example: rate=200,ids=1-4,poll=9c:9a:92,"
+                       "and --fault apply. With --can the master is a node of the CAN bus: its "
+                       "requests go on 0x140+ID in each drive's CAN layout, and its frames and the "
+                       "drives' replies (a corrupted one never comes) go on the bus in order "
+                       "(wire time at --bitrate), for a listener there; a V2.36 "
+                       "drive's speed setpoint carries the torque limit 2048; read_model "
+                       "cannot be polled. Example: rate=200,ids=1-4,poll=9c:9a:92,"
                        "speed=sine:300dps:0.5Hz,move=every:5s"),
         QStringLiteral("spec"));
     const QCommandLineOption controllerLog(
@@ -334,9 +375,20 @@ int main(int argc, char *argv[])
                         .arg(parser.value(badChecksumPct)));
     bus->faults().setProbability(lk::sim::Fault::FirmwareChecksum, badChecksum / 100.0);
 
-    if (parser.isSet(can))
-        return serveCan(*bus, *spec, parser.value(can), parser.value(bitRate),
-                        parser.value(replyBase), parser.isSet(wireTime), parser.isSet(verbose));
+    if (parser.isSet(can)) {
+        if (controllerSpec && !notOnCan(*controllerSpec).isEmpty())
+            return fail(QStringLiteral("--controller poll=%1: CAN has no such read")
+                            .arg(notOnCan(*controllerSpec)));
+        CanServe serve;
+        serve.where = parser.value(can);
+        serve.rateText = parser.value(bitRate);
+        serve.baseText = parser.value(replyBase);
+        serve.wireTime = parser.isSet(wireTime);
+        serve.verbose = parser.isSet(verbose);
+        serve.controller = controllerSpec;
+        serve.controllerLog = parser.value(controllerLog);
+        return serveCan(*bus, *spec, serve);
+    }
 
     lk::app::PtyDevice pty;
     if (!pty.open())

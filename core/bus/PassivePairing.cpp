@@ -1,5 +1,8 @@
 #include "PassivePairing.h"
 
+#include <type_traits>
+#include <variant>
+
 #include "BusTiming.h"
 #include "LinkTiming.h"
 
@@ -92,22 +95,41 @@ PassivePairing::Outcome PassivePairing::takeCan(const protocol::ParseEvent &even
 namespace {
 
 /// Whether B1..B7 could be a request of `command` on either CAN generation: it decodes as one
-/// and encodes back to the same bytes. Where the codec cannot tell (a frame it refuses either
-/// way), it could.
+/// and encodes back to the same bytes. A generation whose codec refuses the frame either way
+/// (no such request, or a value it will not send: V2.36's 0xA2 torque limit read from an MS
+/// drive's negative power) tells nothing; where no generation can tell, it could be.
 bool hasRequestLayout(const protocol::Frame &frame, const protocol::DecodeContext &context)
 {
+    bool told = false;
     for (const protocol::Generation g : {protocol::Generation::V2_3, protocol::Generation::V2_35}) {
         protocol::DecodeContext c = context;
         c.link = protocol::Link::Can;
         c.generation = g;
-        const protocol::RequestDecodeResult dec = protocol::can::decodeRequest(frame, c);
+        protocol::RequestDecodeResult dec = protocol::can::decodeRequest(frame, c);
         if (!dec.request)
-            return true;
+            continue;
+        // A max speed of 0 is no request's (the encoder refuses it), but the bytes compare as
+        // well without it: a motion reply with no current in B2-B3 still has its temperature
+        // in B1, where a request has 0.
+        std::visit(
+            [](auto &p) {
+                using P = std::decay_t<decltype(p)>;
+                if constexpr (std::is_same_v<P, protocol::MultiPositionCommand> ||
+                              std::is_same_v<P, protocol::SinglePositionCommand> ||
+                              std::is_same_v<P, protocol::IncrementPositionCommand>) {
+                    if (p.maxSpeedRaw == 0u)
+                        p.maxSpeedRaw.reset();
+                }
+            },
+            dec.request->payload);
         const protocol::can::CanEncodeResult enc = protocol::can::encodeRequest(*dec.request, c);
-        if (!enc.data || enc.data->bytes == protocol::can::bytesOf(frame))
+        if (!enc.data)
+            continue;
+        told = true;
+        if (enc.data->bytes == protocol::can::bytesOf(frame))
             return true;
     }
-    return false;
+    return !told;
 }
 
 } // namespace

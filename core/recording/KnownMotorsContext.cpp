@@ -6,7 +6,7 @@ ContextSnapshot contextOf(const bus::KnownMotors &motors)
 {
     ContextSnapshot out;
     for (const bus::KnownMotor &m : motors)
-        out.append(DriveContext{m.id, m.series, m.generation});
+        out.append(DriveContext{m.id, m.series, m.generation, m.identityChosen});
     return out;
 }
 

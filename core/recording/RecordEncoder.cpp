@@ -27,6 +27,18 @@ void RecordEncoder::putContext(QByteArray &out, const ContextSnapshot &context)
         out.append(char(d.series ? quint8(int(*d.series) + 1) : quint8(0)));
         out.append(char(quint8(d.generation == protocol::Generation::V2_35 ? 1 : 0)));
     }
+    // The drives the user chose follow, only when there are any: a context without a choice
+    // is byte for byte what readers before this revision wrote, and those readers step over
+    // the list (it lies past the entries they know, inside the record's or header's length).
+    QByteArray chosen;
+    for (const DriveContext &d : context) {
+        if (d.chosen)
+            chosen.append(char(quint8(d.id)));
+    }
+    if (chosen.isEmpty())
+        return;
+    varint::put(out, quint64(chosen.size()));
+    out.append(chosen);
 }
 
 QByteArray RecordEncoder::encodeHeader(const RecordingHeader &header)

@@ -30,7 +30,8 @@ bool learnCanGeneration(ContextSnapshot &context, const protocol::ParseEvent &re
     for (DriveContext &d : context) {
         if (d.id != reply.frame.id)
             continue;
-        if (d.generation == *g)
+        // The user's choice stands, as it does live (bus::MotorRegistry::learnCanGeneration).
+        if (d.chosen || d.generation == *g)
             return false;
         d.generation = *g;
         return true;

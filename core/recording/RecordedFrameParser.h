@@ -50,7 +50,8 @@ private:
 
 /// What a received CAN reply says of its drive's generation (a reply on 0x180+ID, a 0x9A
 /// layout: protocol::can::generationHint), put into `context` as the live engine learns it
-/// before it decodes that reply; true when the context changed.
+/// before it decodes that reply, unless the user chose the drive's generation
+/// (DriveContext::chosen); true when the context changed.
 bool learnCanGeneration(ContextSnapshot &context, const protocol::ParseEvent &reply);
 
 /// The decode context of `id` in a snapshot (unknown series decodes as MF) on `link`.

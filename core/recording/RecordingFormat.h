@@ -35,9 +35,12 @@ struct DriveContext {
     int id = 0;
     std::optional<protocol::Series> series;
     protocol::Generation generation = protocol::Generation::V2_3;
+    /// The user chose series and generation (bus::KnownMotor::identityChosen): a reply's hint
+    /// never overrides them on replay, as it does not live (docs/RECORDING.md "Context").
+    bool chosen = false;
     bool operator==(const DriveContext &o) const
     {
-        return id == o.id && series == o.series && generation == o.generation;
+        return id == o.id && series == o.series && generation == o.generation && chosen == o.chosen;
     }
 };
 using ContextSnapshot = QVector<DriveContext>;

@@ -4,6 +4,8 @@
 #include "RecordTags.h"
 #include "Varint.h"
 
+#include <algorithm>
+
 #include <QtCore/QBuffer>
 #include <QtCore/QCoreApplication>
 #include <QtCore/QFile>
@@ -43,6 +45,21 @@ bool getContext(const char *d, qsizetype end, qsizetype &pos, ContextSnapshot *o
             c.series = protocol::Series(series - 1);
         c.generation = d[pos + 2] ? protocol::Generation::V2_35 : protocol::Generation::V2_3;
         out->append(c);
+    }
+    if (pos >= end)
+        return true;
+    // The drives the user chose (a later revision of version 1): varint count, then IDs, each
+    // one of the entries above.
+    quint64 m = 0;
+    if (!varint::get(d, end, pos, m) || m > quint64(end - pos))
+        return false;
+    for (quint64 i = 0; i < m; ++i, ++pos) {
+        const int id = quint8(d[pos]);
+        const auto it = std::find_if(out->begin(), out->end(),
+                                     [id](const DriveContext &c) { return c.id == id; });
+        if (it == out->end())
+            return false;
+        it->chosen = true;
     }
     return true;
 }

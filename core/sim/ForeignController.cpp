@@ -1,7 +1,6 @@
 #include "ForeignController.h"
 
 #include "SimBus.h"
-#include "protocol/RequestBuilder.h"
 #include "protocol/StreamParser.h"
 
 #include <algorithm>
@@ -19,9 +18,9 @@ using Outcome = ControllerTransaction::Outcome;
 ForeignController::ForeignController(const ControllerSpec &spec, SimBus &bus, int baud,
                                      double startS)
     : m_spec(spec), m_bus(bus), m_baud(baud), m_startS(startS),
-      m_ids(spec.ids.isEmpty() ? bus.ids() : spec.ids), m_nextRequestS(startS)
+      m_round(spec, spec.ids.isEmpty() ? bus.ids() : spec.ids, startS), m_nextRequestS(startS)
 {
-    if (m_ids.isEmpty())
+    if (m_round.ids().isEmpty())
         m_nextRequestS = kNever;
 }
 
@@ -43,10 +42,10 @@ QList<WireChunk> ForeignController::advanceTo(double nowS)
             if (m_nextRequestS > nowS)
                 break;
             const double at = m_nextRequestS;
-            if (const std::optional<protocol::Request> r = nextRequest(at)) {
+            if (const std::optional<protocol::Request> r = m_round.next(at)) {
                 startRequest(*r, at);
             } else {
-                m_nextRequestS = std::max(idleUntilS(at), at + 1e-3);
+                m_nextRequestS = std::max(m_round.idleUntilS(at), at + 1e-3);
             }
             continue;
         }
@@ -86,63 +85,6 @@ QList<ControllerTransaction> ForeignController::takeFinished()
     QList<ControllerTransaction> out;
     out.swap(m_finished);
     return out;
-}
-
-std::optional<protocol::Request> ForeignController::nextRequest(double atS)
-{
-    // The round: for each drive, its setpoint slot, then each poll command.
-    const int items = 1 + static_cast<int>(m_spec.poll.size());
-    const int slotCount = static_cast<int>(m_ids.size()) * items;
-    for (int step = 0; step < slotCount; ++step) {
-        const int id = m_ids[m_idIndex];
-        const int item = m_itemIndex;
-        if (++m_itemIndex >= items) {
-            m_itemIndex = 0;
-            m_idIndex = (m_idIndex + 1) % static_cast<int>(m_ids.size());
-        }
-        if (item == 0) {
-            if (std::optional<protocol::Request> r = setpoint(id, atS))
-                return r;
-            continue;
-        }
-        return protocol::build::plain(m_spec.poll[item - 1], id).request;
-    }
-    return std::nullopt; // only setpoints, and none is due: wait for one
-}
-
-std::optional<protocol::Request> ForeignController::setpoint(int id, double atS)
-{
-    const double elapsed = atS - m_startS;
-    if (m_spec.move) {
-        const ControllerSpec::Move &m = *m_spec.move;
-        // Moves due so far; a master that fell behind sends the latest one, not a burst.
-        const int due = static_cast<int>(std::floor(elapsed / m.periodS));
-        if (due > m_movesSent.value(id)) {
-            m_movesSent[id] = due;
-            m_holdUntilS[id] = atS + m.stepDeg / m.maxSpeedDps + kMoveSettleS;
-            const double step = due % 2 ? m.stepDeg : -m.stepDeg;
-            return protocol::build::incrementPosition(id, step, m.maxSpeedDps).request;
-        }
-    }
-    if (m_spec.speed && atS >= m_holdUntilS.value(id, -kNever)) {
-        const double v =
-            m_spec.speed->amplitudeDps * std::sin(2 * M_PI * m_spec.speed->frequencyHz * elapsed);
-        return protocol::build::speed(id, v).request;
-    }
-    return std::nullopt;
-}
-
-double ForeignController::idleUntilS(double atS) const
-{
-    double wake = kNever;
-    for (int id : m_ids) {
-        if (m_spec.move)
-            wake = std::min(wake, m_startS + (m_movesSent.value(id) + 1) * m_spec.move->periodS);
-        const double hold = m_holdUntilS.value(id, -kNever);
-        if (m_spec.speed && hold > atS)
-            wake = std::min(wake, hold);
-    }
-    return wake;
 }
 
 void ForeignController::startRequest(const protocol::Request &request, double atS)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ControllerRound.h"
 #include "ControllerSpec.h"
 #include "ControllerTransaction.h"
 
@@ -38,7 +39,7 @@ public:
     /// The master's pause between a reply's last byte and its next request.
     static constexpr double kTurnaroundS = 0.0001;
     /// After a move, a drive gets no speed setpoint for the move's duration and this long.
-    static constexpr double kMoveSettleS = 0.1;
+    static constexpr double kMoveSettleS = ControllerRound::kMoveSettleS;
 
     /// `startS`: the bus clock when the master sends its first request. `ids` in the spec
     /// empty: every drive on the bus.
@@ -70,7 +71,7 @@ public:
     /// the drives even when the controller's next request then overlaps it.
     SecondMaster secondMaster(const QByteArray &bytes, double nowS);
 
-    const QList<int> &ids() const { return m_ids; }
+    const QList<int> &ids() const { return m_round.ids(); }
     int baud() const { return m_baud; }
 
 private:
@@ -87,16 +88,12 @@ private:
         double endS = 0;
     };
 
-    std::optional<protocol::Request> nextRequest(double atS);
-    std::optional<protocol::Request> setpoint(int id, double atS);
     void startRequest(const protocol::Request &request, double atS);
     void deliver();
     void classifyReply(const QByteArray &bytes);
     void finish();
     void emitChunk(double atS, const QByteArray &bytes);
     bool foreignBusy(double startS, double endS) const;
-    /// With nothing due at `atS` (only setpoints, all held): when one next is.
-    double idleUntilS(double atS) const;
     double wire(qsizetype bytes) const;
     protocol::DecodeContext contextOf(int id) const;
 
@@ -104,13 +101,9 @@ private:
     SimBus &m_bus;
     int m_baud;
     double m_startS;
-    QList<int> m_ids;
+    ControllerRound m_round;
     double m_nextRequestS;
     std::optional<InFlight> m_inFlight;
-    int m_idIndex = 0;
-    int m_itemIndex = 0; ///< 0: the setpoint slot; 1..: spec.poll[i - 1]
-    QHash<int, int> m_movesSent;
-    QHash<int, double> m_holdUntilS;
     std::deque<WireChunk> m_chunks;      ///< on the wire, not yet handed out; by atS
     std::deque<Window> m_foreignWindows; ///< the second master's frames and their replies
     QList<ControllerTransaction> m_finished;

@@ -97,9 +97,24 @@ void SimCanFront::onEvent(const protocol::ParseEvent &event, QList<SimReply> &ou
             ++m_counters.notRequests;
         return;
     }
+    if (!oldClearAngle && !isRequestLayout(*decoded.request, event.frame, ctx)) {
+        ++m_counters.notRequests; // another node's reply on the shared 0x140+ID
+        return;
+    }
     ++m_counters.requests;
     m_bus.countRequest(decoded.request->id, decoded.request->command);
     answer(*drive, *decoded.request, out);
+}
+
+bool SimCanFront::isRequestLayout(const protocol::Request &request, const protocol::Frame &frame,
+                                  const protocol::DecodeContext &context)
+{
+    // A reply of the old generation travels on the request's own ID, and most of its layouts
+    // decode as a request too; encoded back, a request gives its own bytes, a reply (a read's
+    // temperature where a request has zeros) does not. Where the codec will not encode what
+    // it decoded, nothing tells: it is taken as a request.
+    const protocol::can::CanEncodeResult encoded = protocol::can::encodeRequest(request, context);
+    return !encoded.data || encoded.data->bytes == protocol::can::bytesOf(frame);
 }
 
 void SimCanFront::answer(SimDrive &drive, const protocol::Request &request, QList<SimReply> &out)

@@ -16,16 +16,21 @@ namespace lk::sim {
 
 /// Counters of a SimCanFront.
 struct SimCanCounters {
-    qint64 requests = 0;    ///< drive frames read as requests
-    qint64 replies = 0;     ///< records sent back
-    qint64 faults = 0;      ///< records that were not frames (garbage, bad DLC, unknown B0)
-    qint64 notRequests = 0; ///< frames that do not decode as a request of the drive's dialect
+    qint64 requests = 0; ///< drive frames read as requests
+    qint64 replies = 0;  ///< records sent back
+    qint64 faults = 0;   ///< records that were not frames (garbage, bad DLC, unknown B0)
+    /// frames that are no request of the drive's dialect: another node's replies on 0x140+ID
+    qint64 notRequests = 0;
     qint64 unanswered = 0;  ///< absent IDs, commands the drive lacks on CAN
     qint64 otherFrames = 0; ///< frames of no drive (0x280 included) and error frames
 };
 
 /// The CAN face of a SimBus: CAN records (protocol/CanRecord.h) in, the addressed drive's own
-/// typed handling (SimDrive::handle), CAN records out. A drive of generation V2_3 is an old
+/// typed handling (SimDrive::handle), CAN records out. Only requests are answered: a frame on
+/// 0x140+ID whose bytes are no request's layout of the drive's dialect (another node's reply
+/// of the old generation, which shares the ID) and every frame on 0x180+ID are ignored. An
+/// echo command's reply repeats its request byte for byte: such a frame of another node is
+/// taken as a request (nothing can tell). A drive of generation V2_3 is an old
 /// CAN drive, V2_35 a V2.36 one; both keep their physics and faults. A CAN drive never
 /// answers what its generation lacks on CAN (0x12, 0x93, 0x40..0x44), and an old drive echoes
 /// 0x95 without changing its angle (docs/CAN.md section 9). Old drives 1..4 take the 0x280
@@ -52,6 +57,8 @@ private:
     void onEvent(const protocol::ParseEvent &event, QList<SimReply> &out);
     void answer(SimDrive &drive, const protocol::Request &request, QList<SimReply> &out);
     void answerMultiMotor(const protocol::can::CanData &data, QList<SimReply> &out);
+    static bool isRequestLayout(const protocol::Request &request, const protocol::Frame &frame,
+                                const protocol::DecodeContext &context);
 
     SimBus &m_bus;
     protocol::CanRecordParser m_parser{protocol::LinkEnd::Drive};

@@ -77,6 +77,7 @@ private slots:
     void oldClearAngleEchoesAndChangesNothing();
     void replyBaseCanBeChosen();
     void notRequests();
+    void anotherNodesRepliesAreNotAnswered();
 
 private:
     std::unique_ptr<SimBus> m_bus;
@@ -199,6 +200,24 @@ void tst_SimCanFront::notRequests()
     QCOMPARE(m_front->counters().requests, qint64(0));
     m_bus->faults().setSilenced(1, true);
     QVERIFY(m_front->receive(rawRecord(0x141, "9C00000000000000"), 0.0).isEmpty());
+}
+
+void tst_SimCanFront::anotherNodesRepliesAreNotAnswered()
+{
+    // The old generation replies on the request's own 0x140+ID: a listener, a second simulator
+    // or a played drive puts such frames on the bus. Only requests are answered.
+    const QList<SimReply> own = m_front->receive(rawRecord(0x141, "9C00000000000000"), 0.0);
+    QCOMPARE(own.size(), 1);
+    QCOMPARE(m_front->counters().requests, qint64(1));
+    QVERIFY(m_front->receive(own[0].bytes, 0.0).isEmpty()); // its own reply, heard back
+    QVERIFY(m_front->receive(rawRecord(0x141, "A2326400F4010020"), 0.0).isEmpty()); // 0xA2's
+    // A read_state1 reply: temperature and voltage where the request has zeros.
+    QVERIFY(m_front->receive(rawRecord(0x141, "9A1E00F000000000"), 0.0).isEmpty());
+    QCOMPARE(m_front->counters().notRequests, qint64(3));
+    QCOMPARE(m_front->counters().requests, qint64(1));
+    QCOMPARE(m_front->counters().replies, qint64(1));
+    // A request with its own layout still is one.
+    QCOMPARE(m_front->receive(rawRecord(0x141, "A200000010270000"), 0.0).size(), 1);
 }
 
 QTEST_APPLESS_MAIN(tst_SimCanFront)

@@ -68,8 +68,9 @@ MainWindow::MainWindow(AppSettings *settings, QWidget *parent)
     m_motion->setSession(m_controller->session());
     buildPanels();
     buildSafety();
-    m_recording = new RecordingController(
-        {m_controller, m_leaveGuard, m_store, m_traffic, m_banner, this, m_settings}, this);
+    m_recording = new RecordingController({m_controller, m_leaveGuard, m_store, m_traffic, m_banner,
+                                           this, m_settings, m_dashboard->statisticsView()},
+                                          this);
     buildToolbar();
     buildMenus();
     wirePanels();

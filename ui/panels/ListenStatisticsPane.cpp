@@ -77,6 +77,7 @@ ListenStatisticsPane::ListenStatisticsPane(BusModel *model, QWidget *parent)
     layout->addWidget(m_commands, 1);
     layout->addWidget(note);
     connect(m_model, &BusModel::listenStatisticsChanged, this, &ListenStatisticsPane::refresh);
+    connect(m_model, &BusModel::connectionChanged, this, &ListenStatisticsPane::refresh);
     refresh();
 }
 
@@ -85,18 +86,39 @@ QString ListenStatisticsPane::summary() const
     return m_summary->text();
 }
 
+void ListenStatisticsPane::setReplaying(bool replaying)
+{
+    m_replaying = replaying;
+    refresh();
+}
+
 void ListenStatisticsPane::refresh()
 {
     const bus::ListenStatistics &st = m_model->listenStatistics();
+    // CAN frames carry their own CRC, checked by the adapter: what the link counts instead of
+    // checksum errors and garbage is error frames and frames on IDs that are no drive's.
+    const QString faults =
+        m_model->link() == protocol::Link::Can
+            ? tr("%1 CAN error frames, %2 frames of no drive (other IDs, 0x280 included)")
+                  .arg(st.canErrorFrames)
+                  .arg(st.otherFrames)
+            : tr("%1 checksum errors, %2 garbage bytes")
+                  .arg(st.checksumErrors)
+                  .arg(st.garbageBytes);
+    // A replay hears the recording tool's own requests as well as another master's.
+    const QString text =
+        m_replaying
+            ? tr("The recorded master: %1 requests/s, bus load %2 %; %3 requests, %4 "
+                 "unanswered (its timeouts); %5; %6 replies without their request, %7 echo "
+                 "frames not paired (ambiguous).")
+            : tr("The other master: %1 requests/s, bus load %2 %; %3 requests, %4 unanswered "
+                 "(its timeouts); %5; %6 replies without their request, %7 echo frames not "
+                 "paired (ambiguous).");
     m_summary->setText(
-        tr("The other master: %1 requests/s, bus load %2 %; %3 requests, %4 unanswered (its "
-           "timeouts); %5 checksum errors, %6 garbage bytes; %7 replies without their request, "
-           "%8 echo frames not paired (ambiguous).")
-            .arg(Format::number(st.requestsPerSecond, 0), Format::number(st.busLoad * 100, 1))
+        text.arg(Format::number(st.requestsPerSecond, 0), Format::number(st.busLoad * 100, 1))
             .arg(st.requests)
             .arg(st.unanswered)
-            .arg(st.checksumErrors)
-            .arg(st.garbageBytes)
+            .arg(faults)
             .arg(st.orphanReplies)
             .arg(st.ambiguous));
     fillDrives();

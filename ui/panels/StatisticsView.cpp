@@ -61,12 +61,21 @@ StatisticsView::StatisticsView(BusModel *model, QWidget *parent)
 
 void StatisticsView::showMode()
 {
-    // Listening, this tool sends nothing: its own figures would all be 0.
-    const bool listening = m_model->isListening();
+    // Listening, this tool sends nothing: its own figures would all be 0. A replay sends
+    // nothing either: what it shows is the recorded traffic, counted as a listener counts it.
+    const bool listening = m_model->isListening() || m_replaying;
     m_own->setVisible(!listening);
     m_listen->setVisible(listening);
-    setTitle(listening ? tr("Bus statistics: the other master (listen-only)")
-                       : tr("Bus statistics"));
+    setTitle(m_replaying ? tr("Bus statistics: the recording (replay)")
+             : listening ? tr("Bus statistics: the other master (listen-only)")
+                         : tr("Bus statistics"));
+}
+
+void StatisticsView::setReplaying(bool replaying)
+{
+    m_replaying = replaying;
+    m_listen->setReplaying(replaying);
+    showMode();
 }
 
 QLabel *StatisticsView::addRow(const QString &key, const QString &caption)

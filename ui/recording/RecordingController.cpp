@@ -11,6 +11,7 @@
 #include <main/LeaveGuard.h>
 #include <panels/BusModel.h>
 #include <panels/MessageBanner.h>
+#include <panels/StatisticsView.h>
 #include <panels/TrafficPanel.h>
 #include <plot/TelemetryStore.h>
 
@@ -95,6 +96,15 @@ void RecordingController::wireReplay()
             });
     connect(m_replay, &RecordingReplay::driveSeen, this,
             [addDrive](int id) { addDrive(id, std::nullopt); });
+    // What the drives are and the traffic's figures, as a listening session gives them.
+    connect(m_replay, &RecordingReplay::knownMotorsChanged, this,
+            [addDrive, model](const bus::KnownMotors &motors) {
+                for (const bus::KnownMotor &m : motors)
+                    addDrive(m.id, m.series); // the model shows no drive it does not list
+                model->applyKnownMotors(motors);
+            });
+    connect(m_replay, &RecordingReplay::listenStatisticsUpdated, model,
+            &BusModel::setListenStatistics);
     connect(m_replay, &RecordingReplay::telemetryReceived, model, &BusModel::applyTelemetry);
     connect(m_replay, &RecordingReplay::telemetryReceived, m_parts.store, &TelemetryStore::append);
     connect(m_replay, &RecordingReplay::trafficCaptured, m_parts.traffic,
@@ -195,6 +205,8 @@ bool RecordingController::openRecording(const QString &path)
     m_parts.controller->model()->clearDrives();
     m_parts.traffic->showTraffic({});
     QString error;
+    BusModel *model = m_parts.controller->model();
+    model->setListenStatistics({}); // the last link's figures are not the recording's
     if (!m_replay->open(path, recording::ReplayTransport::Options{}, &error)) {
         m_feed->setSuspended(false);
         m_parts.banner->setEntry(replayKey(), MessageBanner::Level::Error,
@@ -202,6 +214,9 @@ bool RecordingController::openRecording(const QString &path)
                                      .arg(path.toHtmlEscaped(), error.toHtmlEscaped()));
         return false;
     }
+    model->setLink(recording::linkOf(m_replay->header()));
+    if (m_parts.statistics)
+        m_parts.statistics->setReplaying(true);
     m_bar->refresh();
     showReplaying();
     return true;
@@ -229,6 +244,9 @@ void RecordingController::closeRecording()
     if (!m_replay->isOpen())
         return;
     m_replay->close();
+    if (m_parts.statistics)
+        m_parts.statistics->setReplaying(false);
+    m_parts.controller->model()->setListenStatistics({});
     m_bar->refresh();
     m_parts.banner->clearEntry(replayKey());
     m_feed->setSuspended(false);

@@ -16,6 +16,7 @@ class LeaveGuard;
 class MessageBanner;
 class RecordingReplay;
 class ReplayBar;
+class StatisticsView;
 class TelemetryStore;
 class TrafficPanel;
 
@@ -33,8 +34,9 @@ public:
         TelemetryStore *store = nullptr;
         TrafficPanel *traffic = nullptr;
         MessageBanner *banner = nullptr;
-        QMainWindow *window = nullptr;   ///< gets the replay toolbar
-        AppSettings *settings = nullptr; ///< keeps the black box's length; none: not kept
+        QMainWindow *window = nullptr;        ///< gets the replay toolbar
+        AppSettings *settings = nullptr;      ///< keeps the black box's length; none: not kept
+        StatisticsView *statistics = nullptr; ///< shows a replay's figures; none: not shown
     };
     /// The banner entry of a saved (or failed) black-box recording.
     static QString entryKey() { return QStringLiteral("blackBox"); }

@@ -24,10 +24,13 @@ bool RecordingReplay::open(const QString &path, recording::ReplayTransport::Opti
     connect(transport.get(), &transport::Transport::bytesReceived, this, &RecordingReplay::onBytes);
     connect(transport.get(), &recording::ReplayTransport::recordPlayed, this,
             &RecordingReplay::onRecord);
-    connect(transport.get(), &recording::ReplayTransport::finished, this,
-            &RecordingReplay::finished);
+    connect(transport.get(), &recording::ReplayTransport::finished, this, [this] {
+        emitStatistics(); // the figures at the end
+        emit finished();
+    });
     m_seen.clear();
     m_context.clear();
+    m_known.clear();
     m_transport = std::move(transport);
     m_path = path;
     if (!m_transport->open()) {
@@ -40,8 +43,10 @@ bool RecordingReplay::open(const QString &path, recording::ReplayTransport::Opti
     }
     disconnect(failed); // it writes to this call's local
     m_link = recording::linkOf(m_transport->header());
+    m_statistics.restart(m_link, m_transport->header().baud, 0);
     restartParser();
     setContext(m_transport->header().context);
+    emitStatistics();
     return true;
 }
 
@@ -107,6 +112,9 @@ void RecordingReplay::seek(double seconds)
         return;
     restartParser(); // a frame cut by the jump is no frame
     m_transport->seek(qint64(seconds * 1e9));
+    // The figures count from the new place: what came before it is not heard again.
+    m_statistics.restart(m_link, m_transport->header().baud, positionNs());
+    emitStatistics();
     emit positionChanged(positionSeconds());
 }
 
@@ -116,27 +124,64 @@ void RecordingReplay::loadAll()
         m_transport->setFastForward(true);
 }
 
+qint64 RecordingReplay::positionNs() const
+{
+    return m_transport ? m_transport->positionNs() : 0;
+}
+
+void RecordingReplay::emitStatistics()
+{
+    if (m_transport)
+        emit listenStatisticsUpdated(m_statistics.snapshot(positionNs()));
+}
+
 void RecordingReplay::setContext(const recording::ContextSnapshot &context)
 {
     m_context = context;
     for (const recording::DriveContext &d : context) {
         if (!m_seen.contains(d.id))
             m_seen.append(d.id);
+        bus::KnownMotor &m = m_known[d.id];
+        m.id = d.id;
+        if (d.series)
+            m.series = d.series;
+        m.generation = m.model ? m.model->generation : d.generation;
+        m.generationSeen = true; // the recording says it: the session knew it then
+        m.identityChosen = d.chosen;
     }
     emit drivesChanged(context);
+    emit knownMotorsChanged(m_known);
+}
+
+void RecordingReplay::learnModel(const protocol::Reply &reply)
+{
+    const auto *model = std::get_if<protocol::ModelInfo>(&reply.payload);
+    if (!model)
+        return;
+    bus::KnownMotor &m = m_known[reply.id];
+    if (m.model && m.model->motorName == model->motorName &&
+        m.model->driverName == model->driverName && m.model->firmwareRaw == model->firmwareRaw)
+        return;
+    m.id = reply.id;
+    m.model = *model;
+    m.generation = model->generation;
+    emit knownMotorsChanged(m_known);
 }
 
 void RecordingReplay::onRecord(const RecordEvent &record)
 {
     if (record.kind == RecordEvent::Kind::Context)
         setContext(record.context);
-    else if (record.kind == RecordEvent::Kind::Link)
+    else if (record.kind == RecordEvent::Kind::Link) {
         restartParser(); // a reopened link starts a new stream
+        m_statistics.newStream();
+    }
 }
 
 void RecordingReplay::restartParser()
 {
     m_parser = protocol::makeFrameParser(m_link, protocol::LinkEnd::Host);
+    m_statistics.attach(*m_parser);
 }
 
 protocol::DecodeContext RecordingReplay::contextOf(int id) const
@@ -159,12 +204,15 @@ void RecordingReplay::onBytes(const QByteArray &bytes)
     bus::TelemetryBatch telemetry;
     if (!m_parser)
         return;
+    m_statistics.addBytes(bytes.size());
     m_parser->feed(bytes,
                    [&](const protocol::ParseEvent &e) { onFrame(e, time, &traffic, &telemetry); });
     if (!traffic.isEmpty())
         emit trafficCaptured(traffic);
     if (!telemetry.isEmpty())
         emit telemetryReceived(telemetry);
+    if (m_statistics.snapshotDue(positionNs()))
+        emitStatistics();
     emit positionChanged(time);
 }
 
@@ -177,8 +225,9 @@ void RecordingReplay::onFrame(const protocol::ParseEvent &event, double time,
         // As the live engine does: the reply's ID or layout names the generation it decodes with.
         if (e.direction != protocol::FrameDirection::Request &&
             recording::learnCanGeneration(m_context, e))
-            emit drivesChanged(m_context);
+            setContext(m_context);
     }
+    m_statistics.take(event, contextOf(e.frame.id), qint64(time * 1e9));
     bus::TrafficEvent row;
     row.time = time;
     row.bytes = e.bytes;
@@ -200,6 +249,7 @@ void RecordingReplay::onFrame(const protocol::ParseEvent &event, double time,
     const auto reply = protocol::decodeReply(e.frame, context);
     if (!reply.reply)
         return;
+    learnModel(*reply.reply);
     if (const auto s = bus::TelemetrySample::fromReply(*reply.reply, time)) {
         if (!m_seen.contains(s->id)) {
             m_seen.append(s->id);

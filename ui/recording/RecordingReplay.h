@@ -1,7 +1,10 @@
 #pragma once
 
+#include <recording/ReplayStatistics.h>
 #include <recording/ReplayTransport.h>
 
+#include <bus/KnownMotor.h>
+#include <bus/ListenStatistics.h>
 #include <bus/TelemetrySample.h>
 #include <bus/TrafficEvent.h>
 #include <protocol/FrameParser.h>
@@ -18,6 +21,11 @@ namespace lk::ui {
 /// which never transmits; no bus session is involved, so nothing can be sent while it plays.
 /// A recording made on CAN plays as CAN frames, each one's direction told as a listener tells
 /// it (bus::PassivePairing::canDirections).
+///
+/// As live listening does, it also gives the statistics of the traffic (ListenStatistics on
+/// the recording's clock, every half second of it and at the end; a seek starts them afresh)
+/// and what is known of each drive (series and generation from the recording's decode
+/// context, model and firmware from the read_model replies that pass).
 class RecordingReplay : public QObject {
     Q_OBJECT
 public:
@@ -56,6 +64,10 @@ signals:
     void drivesChanged(const lk::recording::ContextSnapshot &drives);
     /// A drive not in the context replied (its series is unknown: decoded as MF).
     void driveSeen(int id);
+    /// What the drives are, as far as the recording tells so far (knownMotors of a session).
+    void knownMotorsChanged(const lk::bus::KnownMotors &motors);
+    /// The traffic's figures so far (since the last seek).
+    void listenStatisticsUpdated(const lk::bus::ListenStatistics &statistics);
     void positionChanged(double seconds);
     void finished();
 
@@ -66,6 +78,9 @@ private:
                  bus::TelemetryBatch *telemetry);
     protocol::DecodeContext contextOf(int id) const;
     void setContext(const recording::ContextSnapshot &context);
+    void learnModel(const protocol::Reply &reply);
+    void emitStatistics();
+    qint64 positionNs() const;
 
     std::unique_ptr<recording::ReplayTransport> m_transport;
     QString m_path;
@@ -76,6 +91,8 @@ private:
     protocol::Link m_link = protocol::Link::Rs485;
     recording::ContextSnapshot m_context;
     QVector<int> m_seen; ///< every drive reported (context or reply)
+    recording::ReplayStatistics m_statistics;
+    bus::KnownMotors m_known;
 };
 
 } // namespace lk::ui

@@ -472,6 +472,17 @@ void tst_Dashboard::statisticsOfTheOtherMaster()
     QCOMPARE(commands->item(0, 0)->text(),
              lk::text::CommandTitle::withCode(protocol::Command::ReadState2));
     QCOMPARE(commands->item(0, 1)->text(), QStringLiteral("400.0"));
+    QVERIFY2(!summary.contains(QStringLiteral("CAN error frames")), qPrintable(summary));
+    // On CAN: the error frames and the frames of no drive the CAN listen path counts, instead
+    // of checksums and garbage, which CAN frames do not have.
+    st.canErrorFrames = 4;
+    st.otherFrames = 9;
+    model.setListenStatistics(st);
+    model.setLink(protocol::Link::Can, QStringLiteral("can0"));
+    const QString onCan = pane->summary();
+    QVERIFY2(onCan.contains(QStringLiteral("4 CAN error frames")), qPrintable(onCan));
+    QVERIFY2(onCan.contains(QStringLiteral("9 frames of no drive")), qPrintable(onCan));
+    QVERIFY2(!onCan.contains(QStringLiteral("checksum")), qPrintable(onCan));
     lk::bus::ConnectionStatus closed;
     model.setConnection(closed, false);
     QVERIFY(!pane->isVisible());

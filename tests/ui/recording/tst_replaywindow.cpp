@@ -1,9 +1,12 @@
 // Replay in the window: File -> Open recording plays a saved black box into the views; the
 // samples are the ones the live session had, decoded with the recorded context (the MS
 // drive's power too); a damaged file opens up to the damage and the banner names the offset;
-// a file that is no recording is refused with the reader's message; nothing is sent.
+// a file that is no recording is refused with the reader's message; nothing is sent. The
+// statistics and drive info panes show the recording as they show a bus listened to.
 #include "../MainWindowFixture.h"
 
+#include <panels/ListenStatisticsPane.h>
+#include <panels/StatisticsView.h>
 #include <panels/TrafficModel.h>
 #include <panels/TrafficPanel.h>
 #include <plot/TelemetryStore.h>
@@ -123,6 +126,28 @@ void tst_ReplayWindow::replayGivesTheSamplesTheLiveSessionHad()
     QCOMPARE(m_window->telemetryStore()->torqueIsPower(3), std::optional(true));
     m_window->traffic()->flush();
     QVERIFY(m_window->traffic()->trafficModel()->rowCount() > 400);
+    // The statistics and drive info as live: the recorded traffic paired as a listener pairs
+    // it (every live sample came from a reply the session paired; the replay pairs it too),
+    // and each drive's model, series and generation from its recorded read_model reply.
+    const bus::ListenStatistics &st = model()->listenStatistics();
+    qInfo("replay statistics: %llu requests, %llu replies, %llu paired, %llu unanswered",
+          st.requests, st.replies, st.paired, st.unanswered);
+    QVERIFY2(st.paired * 100 >= quint64(live.size()) * 99, qPrintable(QString::number(st.paired)));
+    QVERIFY(st.requests >= st.paired && st.perDrive.size() >= uitest::kSimIds.size());
+    auto *statistics = m_window->findChild<ui::StatisticsView *>();
+    QVERIFY(statistics && statistics->isReplaying() && !statistics->listenPane()->isHidden());
+    QVERIFY2(statistics->listenPane()->summary().startsWith(QStringLiteral("The recorded master")),
+             qPrintable(statistics->listenPane()->summary()));
+    for (int id : uitest::kSimIds) {
+        const ui::DriveRecord *d = model()->drive(id);
+        QVERIFY(d && d->model && !d->model->motorName.isEmpty());
+        QVERIFY(d->series && d->generation());
+    }
+    QCOMPARE(*model()->drive(3)->series, protocol::Series::MS);
+    // A seek starts the figures afresh: what came before is not heard again.
+    recording()->replay()->pause();
+    recording()->replay()->seek(0);
+    QCOMPARE(model()->listenStatistics().requests, quint64(0));
     // And nothing can transmit: no bus is open, no view may send.
     QVERIFY(!m_window->controller()->session()->isRunning());
     QVERIFY(!model()->canSend());
