@@ -4,9 +4,11 @@
 #include "ControlWatch.h"
 #include "LiveBus.h"
 #include "MotionLimitOptions.h"
+#include "MultiTorqueControl.h"
 #include "OrderedJson.h"
 #include "ReplyText.h"
 
+#include <protocol/CanLayout.h>
 #include <protocol/RequestBuilder.h>
 #include <safety/MotionPlanner.h>
 #include <text/VerdictText.h>
@@ -51,6 +53,23 @@ QString modeList()
     return names.join(QStringLiteral(", "));
 }
 
+/// The fields of `request` as sent to `drive`. On CAN a max speed goes out as a uint16 of
+/// 1 dps, rounded down (docs/CAN.md section 6): max_speed_raw is that number, the one on the
+/// wire, not RS485's 0.01 dps.
+QJsonObject sentFields(const protocol::Request &request, const protocol::DecodeContext &drive)
+{
+    QJsonObject sent = FieldJson::requestFields(request, drive);
+    if (!drive.onCan() || !sent.contains(QStringLiteral("max_speed_raw")))
+        return sent;
+    const protocol::can::CanEncodeResult e = protocol::can::encodeRequest(request, drive);
+    if (e.ok()) {
+        const QByteArray &b = e.data->bytes; // B2-B3: the max speed, little-endian
+        sent.insert(QStringLiteral("max_speed_raw"),
+                    int(quint8(b.at(2))) | (int(quint8(b.at(3))) << 8));
+    }
+    return sent;
+}
+
 } // namespace
 
 QString ControlCommand::summary() const
@@ -69,6 +88,8 @@ QString ControlCommand::usage() const
                "Usage: lkctl control ID MODE VALUE [MODE OPTIONS] [LIMITS] (--port DEV [--baud N] "
                "| --sim SPEC)\n"
                "                     [--json]\n"
+               "       lkctl control multi-torque ID=IQ_A[,ID=IQ_A...] [LIMITS] --can PLUGIN:IF\n"
+               "                     --drives LIST [--watch SECONDS] [--json]\n"
                "\n"
                "Send one motion command to drive ID and print its reply (state 2). Values are\n"
                "rotor values in physical units, checked against the wire range first (a value\n"
@@ -101,6 +122,7 @@ QString ControlCommand::usage() const
                "  multi-position DEG     multi-turn target angle in deg (absolute)\n"
                "  single-position DEG    single-turn target 0..359.99 deg, needs --direction\n"
                "  increment DEG          move by DEG (sign gives the direction)\n"
+               "%5"
                "Mode options:\n"
                "  --direction cw|ccw     single-position only\n"
                "  --max-speed DPS        position modes: a lower max speed for this move (above\n"
@@ -124,6 +146,8 @@ QString ControlCommand::usage() const
                "  lkctl control 3 single-position 90 --direction ccw --port ttyUSB0\n"
                "  lkctl control 3 increment -45 --limits bench-limits.json --port ttyUSB0\n"
                "  lkctl control 17 open-loop 150 --sim 17:MS\n"
+               "  lkctl control multi-torque 1=0.5,2=-0.5 --watch 5 --can socketcan:can0 \\\n"
+               "        --drives 1:MG@can,2:MG@can\n"
                "\n"
                "%3")
         .arg(BusOptions::helpText(), MotionLimitOptions::helpText(),
@@ -133,7 +157,7 @@ QString ControlCommand::usage() const
                      "     (the message names the limit and both values), or a V2.35 drive is\n"
                      "     off; nothing was sent\n") +
                  ControlWatch::exitStatusLine()),
-             ControlWatch::helpText());
+             ControlWatch::helpText(), MultiTorqueControl::helpText());
 }
 
 std::optional<FieldBuildResult> ControlCommand::build(const QStringList &pos,
@@ -304,7 +328,7 @@ int ControlCommand::send(LiveBus &bus, const Plan &plan, const safety::MotionPla
                           .arg(id));
         return kExitFailure;
     }
-    const QJsonObject sent = FieldJson::requestFields(request, drive);
+    const QJsonObject sent = sentFields(request, drive);
     const QJsonObject reply = FieldJson::replyFields(*r.reply);
     const QString command = protocol::CommandTable::name(request.command);
     if (plan.json) {
@@ -354,6 +378,8 @@ int ControlCommand::run(const QStringList &args, Console &console)
     const std::optional<BusOptions> busOptions = parseBus(parser, args, console, &status);
     if (!busOptions)
         return status;
+    if (parser.positionals().value(0) == QLatin1String(MultiTorqueControl::kMode))
+        return MultiTorqueControl::run(parser, *busOptions, console, name());
     const std::optional<Plan> plan = parse(parser, console, &status);
     if (!plan)
         return status;

@@ -29,8 +29,14 @@ QString modeName(const protocol::Request &r)
     return r.command == Command::OpenLoop ? QStringLiteral("open loop") : QStringLiteral("torque");
 }
 
-/// Why a watch ended.
-enum class End { Time, Signal, SpeedLimit, LinkLost };
+using End = ControlWatch::End;
+
+QString endText(End e)
+{
+    return e == End::Signal     ? QStringLiteral("Interrupted")
+           : e == End::LinkLost ? QStringLiteral("The link went away")
+                                : QStringLiteral("Watch over");
+}
 
 QString endName(End e)
 {
@@ -81,9 +87,10 @@ std::optional<ControlWatch> ControlWatch::read(const ArgParser &parser, QString 
     if (!parser.isSet(QStringLiteral("watch")))
         return w;
     const QString mode = parser.positionals().value(1);
-    if (mode != QStringLiteral("torque") && mode != QStringLiteral("open-loop")) {
-        *error = QStringLiteral("--watch goes with torque and open-loop only (the drive bounds "
-                                "the speed of the other modes itself)");
+    const bool group = parser.positionals().value(0) == QStringLiteral("multi-torque");
+    if (!group && mode != QStringLiteral("torque") && mode != QStringLiteral("open-loop")) {
+        *error = QStringLiteral("--watch goes with torque, open-loop and multi-torque only (the "
+                                "drive bounds the speed of the other modes itself)");
         return std::nullopt;
     }
     const std::optional<double> seconds = parser.numberValue(QStringLiteral("watch"), 0.1, error);
@@ -99,7 +106,7 @@ std::optional<ControlWatch> ControlWatch::read(const ArgParser &parser, QString 
 
 void ControlWatch::arm(LiveBus &bus, int id, const safety::SoftLimits &limits)
 {
-    m_limits = limits;
+    m_limits.insert(id, limits);
     bus.session().setSoftLimits(id, limits);
 }
 
@@ -109,7 +116,7 @@ int ControlWatch::follow(LiveBus &bus, const protocol::Request &request, bool js
     if (!bus::SpeedWatch::drives(request))
         return status;
     if (m_seconds > 0 && (status == kExitOk || status == kExitFailure)) // it may have acted
-        return watch(bus, request, json, status);
+        return watch(bus, {request.id}, json, status);
     if (status != kExitOk)
         return status;
     const QString note =
@@ -125,10 +132,37 @@ int ControlWatch::follow(LiveBus &bus, const protocol::Request &request, bool js
     return status;
 }
 
-int ControlWatch::watch(LiveBus &bus, const protocol::Request &request, bool json, int status) const
+int ControlWatch::followGroup(LiveBus &bus, const QVector<protocol::Request> &torques, bool json,
+                              int status) const
 {
-    const int id = request.id;
-    const double limit = m_limits.maxSpeedDps;
+    QVector<int> ids;
+    for (const protocol::Request &r : torques) {
+        if (bus::SpeedWatch::drives(r))
+            ids.append(r.id);
+    }
+    if (ids.isEmpty())
+        return status;
+    if (m_seconds > 0 && (status == kExitOk || status == kExitFailure)) // they may have acted
+        return watch(bus, ids, json, status);
+    if (status != kExitOk)
+        return status;
+    const QString note =
+        QStringLiteral("drives %1 stay under torque after lkctl exits, and nothing watches their "
+                       "speed (a drive does not bound torque): stop them with 'lkctl off', or "
+                       "give --watch SECONDS")
+            .arg(idList(ids));
+    if (json)
+        bus.error(QStringLiteral("note: ") + note);
+    else
+        bus.console().outLine(QStringLiteral("Note: ") + note + QLatin1Char('.'));
+    return status;
+}
+
+int ControlWatch::watch(LiveBus &bus, const QVector<int> &ids, bool json, int status) const
+{
+    const bool single = ids.size() == 1;
+    const int id = ids.first();
+    const double limit = limitOf(id);
     const double threshold = bus::SpeedWatch::thresholdDps(limit);
     // Before the first line: whoever reads "Watching" may press Ctrl+C at once.
     int signalled = 0;
@@ -137,28 +171,34 @@ int ControlWatch::watch(LiveBus &bus, const protocol::Request &request, bool jso
                                      [&signalled](int n) { signalled = n; });
     if (!json)
         bus.console().outLine(
-            QStringLiteral("Watching drive %1 for %2 s: Motor Stop above %3 dps (speed limit %4 "
-                           "dps + margin); Ctrl+C stops it now.")
-                .arg(id)
-                .arg(m_seconds)
-                .arg(dps(threshold), dps(limit)));
+            single ? QStringLiteral("Watching drive %1 for %2 s: Motor Stop above %3 dps (speed "
+                                    "limit %4 dps + margin); Ctrl+C stops it now.")
+                         .arg(id)
+                         .arg(m_seconds)
+                         .arg(dps(threshold), dps(limit))
+                   : QStringLiteral("Watching drives %1 for %2 s: Motor Stop to all of them as "
+                                    "soon as one turns faster than %3; Ctrl+C stops them now.")
+                         .arg(idList(ids))
+                         .arg(m_seconds)
+                         .arg(thresholdList(ids)));
     bus.console().flush(); // a script or a person reads it while the drive turns
     std::optional<bus::SpeedWatchTrip> trip;
-    double peak = 0;
+    QMap<int, double> peak;
     bool open = true;
     bus::BusSession &session = bus.session();
     const auto c1 = QObject::connect(&session, &bus::BusSession::speedWatchTripped,
-                                     [&trip, id](const bus::SpeedWatchTrip &t) {
-                                         if (t.id == id)
+                                     [&trip, &ids](const bus::SpeedWatchTrip &t) {
+                                         if (ids.contains(t.id) && !trip)
                                              trip = t;
                                      });
-    const auto c2 = QObject::connect(&session, &bus::BusSession::telemetryReceived,
-                                     [&peak, id](const bus::TelemetryBatch &batch) {
-                                         for (const bus::TelemetrySample &s : batch) {
-                                             if (s.id == id && s.has(bus::TelemetryField::Speed))
-                                                 peak = std::max(peak, std::abs(s.speedDps));
-                                         }
-                                     });
+    const auto c2 =
+        QObject::connect(&session, &bus::BusSession::telemetryReceived,
+                         [&peak, &ids](const bus::TelemetryBatch &batch) {
+                             for (const bus::TelemetrySample &s : batch) {
+                                 if (ids.contains(s.id) && s.has(bus::TelemetryField::Speed))
+                                     peak[s.id] = std::max(peak.value(s.id), std::abs(s.speedDps));
+                             }
+                         });
     const auto c3 =
         QObject::connect(&session, &bus::BusSession::connectionChanged,
                          [&open](const bus::ConnectionStatus &s) { open = s.isOpen(); });
@@ -172,50 +212,135 @@ int ControlWatch::watch(LiveBus &bus, const protocol::Request &request, bool jso
         QObject::disconnect(c);
     const End end =
         trip ? End::SpeedLimit : (!open ? End::LinkLost : (signalled ? End::Signal : End::Time));
-    // The watch's own stop has ended already; every other end stops the drive now.
-    const bool stopped = trip ? trip->stopAcknowledged() : (open && stop(bus, id));
+    if (trip)
+        peak[trip->id] = std::max(peak.value(trip->id), std::abs(trip->speedDps));
+    // The watch's own stop has ended already; every other end stops the drives now (the
+    // drives of a multi-motor frame beside the one that tripped get lkctl's own stop too).
+    QMap<int, bool> acked;
+    for (int d : ids)
+        acked[d] = trip && trip->id == d ? trip->stopAcknowledged() : (open && stop(bus, d));
+    const bool stopped = !acked.values().contains(false);
     const double seconds = clock.elapsed() / 1e3;
+    const Outcome outcome{end, trip, peak, acked, seconds};
+    if (single)
+        reportOne(bus, id, json, outcome);
+    else
+        reportGroup(bus, ids, json, outcome);
+    if (!stopped)
+        return kExitFailure;
+    return trip ? kExitWatchStopped : status;
+}
+
+QString ControlWatch::idList(const QVector<int> &ids)
+{
+    QStringList out;
+    for (int id : ids)
+        out << QString::number(id);
+    return out.join(QStringLiteral(", "));
+}
+
+QString ControlWatch::thresholdList(const QVector<int> &ids) const
+{
+    QStringList out;
+    for (int id : ids)
+        out << QStringLiteral("%1 dps (drive %2, speed limit %3 dps + margin)")
+                   .arg(dps(bus::SpeedWatch::thresholdDps(limitOf(id))))
+                   .arg(id)
+                   .arg(dps(limitOf(id)));
+    return out.join(QStringLiteral(", "));
+}
+
+void ControlWatch::reportOne(LiveBus &bus, int id, bool json, const Outcome &o) const
+{
+    const double limit = limitOf(id);
+    const double threshold = bus::SpeedWatch::thresholdDps(limit);
+    const bool stopped = o.acked.value(id);
     if (json) {
-        OrderedJson o;
-        o.integer(QStringLiteral("id"), id)
-            .real(QStringLiteral("watched_s"), std::round(seconds * 10) / 10)
-            .text(QStringLiteral("ended"), endName(end))
+        OrderedJson j;
+        j.integer(QStringLiteral("id"), id)
+            .real(QStringLiteral("watched_s"), std::round(o.seconds * 10) / 10)
+            .text(QStringLiteral("ended"), endName(o.end))
             .real(QStringLiteral("limit_dps"), limit)
             .real(QStringLiteral("threshold_dps"), threshold)
-            .real(QStringLiteral("peak_dps"),
-                  trip ? std::max(peak, std::abs(trip->speedDps)) : peak)
+            .real(QStringLiteral("peak_dps"), o.peak.value(id))
             .boolean(QStringLiteral("stop_acknowledged"), stopped);
         OrderedJson line;
-        line.raw(QStringLiteral("watch"), o.toJson());
+        line.raw(QStringLiteral("watch"), j.toJson());
         bus.console().out(line.toJson() + '\n');
-    } else if (trip) {
+    } else if (o.trip) {
         bus.console().outLine(
             QStringLiteral("Drive %1 reached %2 dps, past %3 dps (speed limit %4 dps): the speed "
                            "watch sent Motor Stop (0x81) after %5 s, %6.")
                 .arg(id)
-                .arg(dps(trip->speedDps), dps(threshold), dps(limit))
-                .arg(seconds, 0, 'f', 1)
+                .arg(dps(o.trip->speedDps), dps(threshold), dps(limit))
+                .arg(o.seconds, 0, 'f', 1)
                 .arg(stopped ? QStringLiteral("acknowledged")
                              : QStringLiteral("NOT acknowledged: it may still be turning")));
     } else {
-        const QString why = end == End::Signal     ? QStringLiteral("Interrupted")
-                            : end == End::LinkLost ? QStringLiteral("The link went away")
-                                                   : QStringLiteral("Watch over");
         bus.console().outLine(
             QStringLiteral("%1 after %2 s (peak %3 dps): %4")
-                .arg(why)
-                .arg(seconds, 0, 'f', 1)
-                .arg(dps(peak))
-                .arg(!open ? QStringLiteral("nothing could be sent; drive %1 may still be turning")
-                                 .arg(id)
+                .arg(endText(o.end))
+                .arg(o.seconds, 0, 'f', 1)
+                .arg(dps(o.peak.value(id)))
+                .arg(o.end == End::LinkLost
+                         ? QStringLiteral("nothing could be sent; drive %1 may still be turning")
+                               .arg(id)
                      : stopped ? QStringLiteral("drive %1 acknowledged Motor Stop (0x81).").arg(id)
                                : QStringLiteral("drive %1 did NOT acknowledge Motor Stop "
                                                 "(0x81): it may still be turning.")
                                      .arg(id)));
     }
-    if (!stopped)
-        return kExitFailure;
-    return trip ? kExitWatchStopped : status;
+}
+
+void ControlWatch::reportGroup(LiveBus &bus, const QVector<int> &ids, bool json,
+                               const Outcome &o) const
+{
+    if (json) {
+        QByteArray drives = "[";
+        for (int id : ids) {
+            OrderedJson d;
+            d.integer(QStringLiteral("id"), id)
+                .real(QStringLiteral("limit_dps"), limitOf(id))
+                .real(QStringLiteral("threshold_dps"), bus::SpeedWatch::thresholdDps(limitOf(id)))
+                .real(QStringLiteral("peak_dps"), o.peak.value(id))
+                .boolean(QStringLiteral("stop_acknowledged"), o.acked.value(id));
+            drives += (drives.size() > 1 ? "," : "") + d.toJson();
+        }
+        drives += ']';
+        OrderedJson j;
+        j.raw(QStringLiteral("ids"), '[' + idList(ids).remove(QLatin1Char(' ')).toLatin1() + ']')
+            .real(QStringLiteral("watched_s"), std::round(o.seconds * 10) / 10)
+            .text(QStringLiteral("ended"), endName(o.end));
+        if (o.trip)
+            j.integer(QStringLiteral("tripped_id"), o.trip->id);
+        j.raw(QStringLiteral("drives"), drives);
+        OrderedJson line;
+        line.raw(QStringLiteral("watch"), j.toJson());
+        bus.console().out(line.toJson() + '\n');
+        return;
+    }
+    if (o.trip)
+        bus.console().outLine(
+            QStringLiteral("Drive %1 reached %2 dps, past %3 dps (speed limit %4 dps): the speed "
+                           "watch sent Motor Stop (0x81) to drives %5 after %6 s.")
+                .arg(o.trip->id)
+                .arg(dps(o.trip->speedDps), dps(bus::SpeedWatch::thresholdDps(limitOf(o.trip->id))),
+                     dps(limitOf(o.trip->id)), idList(ids))
+                .arg(o.seconds, 0, 'f', 1));
+    else
+        bus.console().outLine(
+            QStringLiteral("%1 after %2 s.").arg(endText(o.end)).arg(o.seconds, 0, 'f', 1));
+    for (int id : ids)
+        bus.console().outLine(
+            QStringLiteral("  drive %1: peak %2 dps, %3")
+                .arg(id)
+                .arg(dps(o.peak.value(id)))
+                .arg(o.end == End::LinkLost && !(o.trip && o.trip->id == id)
+                         ? QStringLiteral("nothing could be sent: it may still be turning")
+                     : o.acked.value(id)
+                         ? QStringLiteral("acknowledged Motor Stop (0x81)")
+                         : QStringLiteral("did NOT acknowledge Motor Stop (0x81): it may still be "
+                                          "turning")));
 }
 
 bool ControlWatch::stop(LiveBus &bus, int id)

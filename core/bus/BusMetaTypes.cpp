@@ -6,6 +6,7 @@
 #include "KnownMotor.h"
 #include "LinkMode.h"
 #include "ListenStatistics.h"
+#include "MultiTorque.h"
 #include "PollPlan.h"
 #include "RequestResult.h"
 #include "ScanTypes.h"
@@ -26,6 +27,7 @@ void registerBusMetaTypes()
     static std::once_flag once;
     std::call_once(once, [] {
         qRegisterMetaType<RequestResult>("lk::bus::RequestResult");
+        qRegisterMetaType<MultiTorqueResult>("lk::bus::MultiTorqueResult");
         qRegisterMetaType<TelemetrySample>("lk::bus::TelemetrySample");
         qRegisterMetaType<TelemetryBatch>("lk::bus::TelemetryBatch");
         qRegisterMetaType<BusStatistics>("lk::bus::BusStatistics");

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "MultiTorque.h"
 #include "Priority.h"
 #include "RequestResult.h"
 
@@ -25,6 +26,10 @@ struct BusRequest {
     /// probes and emergency stops use a short one so that silent IDs cost little; retries
     /// always wait the adaptive timeout.
     double firstTimeoutS = 0;
+    /// Non-empty: the old CAN generation's multi-motor torque frame (0x280), one torque
+    /// request per drive, ascending IDs 1..4; `request` is the first of them. It waits on the
+    /// wire for every drive's reply and is never sent again.
+    QVector<protocol::Request> group;
 };
 
 /// A request waiting in a queue or on the wire, with its progress and its listener.
@@ -37,6 +42,15 @@ struct PendingRequest {
     Completion done;       ///< empty: BusWorker::requestCompleted
     quint64 pollCycle = 0; ///< a poll: its round (PollScheduler::cycle()); else 0
     double pollCycleStart = 0;
+    /// A multi-motor frame (BusRequest::group): the replies taken so far, in arrival order.
+    struct GroupReply {
+        protocol::Reply reply;
+        double latencyS = 0;
+    };
+    QVector<GroupReply> groupReplies;
+    /// A multi-motor frame's listener (empty: BusWorker::multiTorqueCompleted); `done` is not
+    /// used for it.
+    std::function<void(const MultiTorqueResult &)> groupDone;
 };
 
 } // namespace lk::bus

@@ -76,6 +76,33 @@ void BusSession::connectWorker()
     relay(&BusWorker::listenStatisticsUpdated, &BusSession::listenStatisticsUpdated);
     relay(&BusWorker::trafficCaptured, &BusSession::trafficCaptured);
     relay(&BusWorker::speedWatchTripped, &BusSession::speedWatchTripped);
+    relay(&BusWorker::multiTorqueCompleted, &BusSession::finishMultiTorque);
+}
+
+void BusSession::finishMultiTorque(const MultiTorqueResult &result)
+{
+    const auto done = m_multiTorqueCallbacks.take(result.ticket);
+    emit multiTorqueCompleted(result);
+    if (done)
+        done(result);
+}
+
+quint64 BusSession::sendMultiTorque(const MultiTorqueRequest &request, QObject *context,
+                                    MultiTorqueCompletion done)
+{
+    const quint64 ticket = m_nextTicket++;
+    m_multiTorqueCallbacks.add(ticket, context, std::move(done));
+    if (!m_worker) {
+        MultiTorqueResult r;
+        r.ticket = ticket;
+        r.status = RequestStatus::Disconnected;
+        r.reason = tr("the bus is not open");
+        QMetaObject::invokeMethod(
+            this, [this, r] { finishMultiTorque(r); }, Qt::QueuedConnection);
+        return ticket;
+    }
+    post([w = m_worker, ticket, request] { w->submitMultiTorque(ticket, request); });
+    return ticket;
 }
 
 void BusSession::finishRequest(const RequestResult &result)
@@ -152,6 +179,7 @@ void BusSession::close()
     ++m_generation;
     // Only a bus thread that did not stop leaves any: their ends will never be heard.
     m_requestCallbacks.clear();
+    m_multiTorqueCallbacks.clear();
     m_stopCallbacks.clear();
     if (m_connection.state != transport::Transport::State::Closed) {
         m_connection.state = transport::Transport::State::Closed;

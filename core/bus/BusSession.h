@@ -7,6 +7,7 @@
 #include "KnownMotor.h"
 #include "LinkMode.h"
 #include "ListenStatistics.h"
+#include "MultiTorque.h"
 #include "PollPlan.h"
 #include "Priority.h"
 #include "RequestResult.h"
@@ -98,6 +99,16 @@ public:
     /// deleted while the result is posted to it: Qt's rule for queued calls).
     quint64 send(const protocol::Request &request, QObject *context, Completion done,
                  Priority priority = Priority::Operator, int retries = -1);
+    using MultiTorqueCompletion = std::function<void(const MultiTorqueResult &)>;
+    /// The old CAN generation's multi-motor torque frame (0x280): up to four drives' torque in
+    /// one frame, queued and sent on the bus thread like send(), its drives' replies matched
+    /// to them and published as telemetry. Unlike send(), the bus thread applies the soft
+    /// limits itself (BusWorker::submitMultiTorque; those given with setSoftLimits, else the
+    /// series' defaults) and refuses it, nothing sent to any drive, naming the drive and the
+    /// limit; callers check first with safety::MultiTorqueGuard and the user's limits, as for
+    /// any motion. Ends with multiTorqueCompleted, then `done` (send()'s rules for `context`).
+    quint64 sendMultiTorque(const MultiTorqueRequest &request, QObject *context = nullptr,
+                            MultiTorqueCompletion done = {});
     /// Motor off to every ID in `ids` and every known ID first, then to every other ID of
     /// 1..32, ahead of everything queued; a running scan and queued motion commands are
     /// cancelled first. Each motor_off ends with a requestCompleted carrying the returned
@@ -211,11 +222,14 @@ signals:
     /// The speed watch stopped a drive under torque or open loop past its speed limit; sent
     /// once the Motor Stop has ended (which also comes as requestCompleted, ticket 0).
     void speedWatchTripped(const lk::bus::SpeedWatchTrip &trip);
+    /// The end of a sendMultiTorque(): each drive's reply or why there was none.
+    void multiTorqueCompleted(const lk::bus::MultiTorqueResult &result);
 
 private:
     void connectWorker();
     void join();
     void finishRequest(const RequestResult &result);
+    void finishMultiTorque(const MultiTorqueResult &result);
     void postPollPlan(); ///< the worker polls effectivePollPlan()
     void postIdentity(const DriveIdentity &identity);
     void finishStop(quint64 ticket, const QVector<int> &acknowledged, const QVector<int> &silent,
@@ -243,6 +257,7 @@ private:
     QMap<int, safety::SoftLimits> m_softLimits; ///< by drive, given again to each new worker
     QMap<int, DriveIdentity> m_identities;      ///< by drive, given again to each new worker
     TicketCallbacks<RequestResult> m_requestCallbacks;
+    TicketCallbacks<MultiTorqueResult> m_multiTorqueCallbacks;
     TicketCallbacks<QVector<int>, QVector<int>, QVector<int>> m_stopCallbacks;
 };
 

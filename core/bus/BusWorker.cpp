@@ -285,6 +285,8 @@ void BusWorker::pumpNow()
 
 bool BusWorker::encode(Pending &p)
 {
+    if (!p.req.group.isEmpty())
+        return encodeMultiTorque(p);
     const protocol::Request &r = p.req.request;
     const auto limits = m_softLimits.constFind(r.id);
     const protocol::WireEncodeResult e = encodeForWire(
@@ -325,6 +327,8 @@ void BusWorker::onAttemptFailed(Pending p, RequestStatus status, const QString &
 void BusWorker::complete(Pending p, RequestStatus status, std::optional<protocol::Reply> reply,
                          const QString &reason, double latencyS, SendRefusal refusal)
 {
+    if (!p.req.group.isEmpty())
+        return completeMultiTorque(std::move(p), status, reason, refusal);
     m_speedWatch.noteRequestEnded(p.req.request, status, p.attempts);
     RequestResult r;
     r.ticket = p.req.ticket;
@@ -387,7 +391,8 @@ void BusWorker::onBytes(const QByteArray &bytes)
 
 void BusWorker::onReplied(Pending p, protocol::Reply reply, double latencyS)
 {
-    noteReply(reply, now(), p);
+    if (p.req.group.isEmpty()) // a multi-motor frame publishes each drive's reply at its end
+        noteReply(reply, now(), p);
     complete(std::move(p), RequestStatus::Ok, std::move(reply), {}, latencyS);
     schedulePump();
 }
@@ -403,30 +408,6 @@ void BusWorker::noteReply(const protocol::Reply &reply, double time, const Pendi
         emit knownMotorsChanged(m_motors.all());
     if (s)
         m_speedWatch.noteSample(*s);
-}
-
-void BusWorker::stopForSpeedWatch(int id, Completion done)
-{
-    if (m_setpointDrive == id)
-        haltSetpoints(SetpointStopReason::SpeedLimit);
-    const auto motionTo = [id](const Pending &p) {
-        return p.req.request.id == id && movesMotor(p.req.request.command);
-    };
-    cancelQueued(motionTo, RequestStatus::Cancelled,
-                 tr("cancelled: drive %1 went past its speed limit").arg(id));
-    if (Pending *p = m_wire.inflight(); p && motionTo(*p))
-        p->noRetry = true;
-    BusRequest stop;
-    stop.request.command = Command::MotorStop;
-    stop.request.id = static_cast<quint8>(id);
-    stop.priority = Priority::Emergency;
-    stop.origin = RequestOrigin::Emergency;
-    // Its end reaches requestCompleted (ticket 0) as well: whoever follows a drive's motion
-    // hears that it was stopped.
-    submit(stop, [this, done = std::move(done)](const RequestResult &r) {
-        emit requestCompleted(r);
-        done(r);
-    });
 }
 
 void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command halt)

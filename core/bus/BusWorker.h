@@ -124,6 +124,17 @@ public:
 
     void setConfig(const BusConfig &config);
     void submit(BusRequest request, Completion done = {});
+    using MultiTorqueCompletion = std::function<void(const MultiTorqueResult &)>;
+    /// The old CAN generation's multi-motor torque frame (0x280) at Operator priority, queued
+    /// and sent like any request, and on the wire until every drive named answered (or each
+    /// silent one timed out, counted per drive); never sent twice. Refused, nothing sent for
+    /// any drive, when MultiTorqueGuard refuses it: not CAN, a drive of V2.36 or unknown
+    /// generation, a series unknown, an iq over a drive's series current or torque limit (its
+    /// soft limits, setSoftLimits, else SoftLimits::defaults of its series), or listen-only.
+    /// Its drives are then watched as under a torque command; a trip of one stops them all.
+    /// Ends once, through `done`, else multiTorqueCompleted; its replies are telemetry.
+    void submitMultiTorque(quint64 ticket, const MultiTorqueRequest &request,
+                           MultiTorqueCompletion done = {});
     /// `halt`: MotorOff, or MotorStop for a "stop all" that keeps the drives' commands.
     void emergencyStop(quint64 ticket, const QVector<int> &ids,
                        protocol::Command halt = protocol::Command::MotorOff);
@@ -228,6 +239,8 @@ signals:
     void trafficCaptured(const lk::bus::TrafficBatch &batch);
     /// The speed watch stopped a drive past its limit (after the stop's end).
     void speedWatchTripped(const lk::bus::SpeedWatchTrip &trip);
+    /// The end of a multi-motor torque frame submitted without a completion.
+    void multiTorqueCompleted(const lk::bus::MultiTorqueResult &result);
 
 private:
     using Pending = PendingRequest;
@@ -261,6 +274,16 @@ private:
     /// Motor Stop to `id` from the emergency lane, for the speed watch: its setpoint stream
     /// and queued motion commands go first, so that nothing restarts it behind the stop.
     void stopForSpeedWatch(int id, Completion done);
+    /// Defined in BusWorkerMotion.cpp (this file's twin is at its size limit):
+    /// The refusal of a multi-motor frame by MultiTorqueGuard with the drives known now.
+    std::optional<QString> multiTorqueRefusal(const QVector<protocol::Request> &torques) const;
+    /// The multi-motor frame's bytes, checked again for the link and drives of now.
+    bool encodeMultiTorque(Pending &p);
+    /// Its end: each drive's result, the speed watch told of each, the replies published.
+    void completeMultiTorque(Pending p, RequestStatus status, const QString &reason,
+                             SendRefusal refusal);
+    /// Whether `p` commands drive `id` (its own request, or a slot of its multi-motor frame).
+    static bool commands(const Pending &p, int id);
     int retriesFor(const BusRequest &r) const;
     /// Whether sending `command` again after a timeout or a corrupt reply is harmless.
     static bool isRetrySafe(protocol::Command command);
@@ -293,6 +316,8 @@ private:
     ListenMonitor m_listen{m_motors, m_telemetry, m_diagnostics, m_clock, this};
     quint64 m_refusedCalls = 0;
     QMap<int, safety::SoftLimits> m_softLimits; ///< by drive: the V2.36 speed's torque limit
+    /// The drives the last multi-motor frame set turning: a speed-watch trip of one stops all.
+    QVector<int> m_multiTorqueIds;
 };
 
 } // namespace lk::bus

@@ -7,6 +7,8 @@
 #include <protocol/CanLayout.h>
 #include <protocol/CanRecordParser.h>
 
+#include <QtCore/QStringList>
+
 #include <algorithm>
 #include <cmath>
 
@@ -88,9 +90,9 @@ void WireExchange::send(Pending p)
     const protocol::Request &r = p.req.request;
     m_diagnostics.counters().requestSent(r.id, p.attempts > 1);
     m_diagnostics.recordSent(p.bytes, r.id);
-    const double timeoutS = p.attempts == 1 && p.req.firstTimeoutS > 0
-                                ? p.req.firstTimeoutS
-                                : m_timeout.timeoutS(r.command, timing(), r.id);
+    double timeoutS = p.attempts == 1 && p.req.firstTimeoutS > 0
+                          ? p.req.firstTimeoutS
+                          : m_timeout.timeoutS(r.command, timing(), r.id);
     const protocol::Request request = r;
     const QByteArray bytes = p.bytes;
     m_inflight = std::move(p);
@@ -103,7 +105,15 @@ void WireExchange::send(Pending p)
     // answers in time. Replies are only read from the event loop, so expecting one now is
     // early enough.
     m_sentNs = m_clock->nowNs();
-    m_matcher.expect(request, bytes, m_sentNs, m_sentNs + earliestReplyNs(request.command));
+    const int group = static_cast<int>(m_inflight->req.group.size());
+    if (group == 0) {
+        m_matcher.expect(request, bytes, m_sentNs, m_sentNs + earliestReplyNs(request.command));
+    } else {
+        // A multi-motor frame: its drives' replies are taken by takeGroupReply(), one after
+        // the other on the bus, so the last may come the other replies' wire time later.
+        m_matcher.clear();
+        timeoutS += (group - 1) * timing().maxReplyWireS(request.command);
+    }
     const int timeoutMs = std::max(1, static_cast<int>(std::ceil(timeoutS * 1e3)));
     m_deadlineNs = m_sentNs + qint64(timeoutMs) * 1'000'000;
     m_hurried = false;
@@ -166,18 +176,69 @@ void WireExchange::onTimeout()
     // An ID with no drive answers no probe: a scan or a stop would otherwise add some 28
     // "timeouts" each, hiding the ones that mean something.
     const RequestOrigin origin = m_inflight->req.origin;
+    const QVector<int> silent = silentInGroup();
     if ((origin == RequestOrigin::Scan || origin == RequestOrigin::Emergency) &&
         !m_motors.answered().contains(r.id))
         m_diagnostics.counters().silentProbe();
-    else
+    else if (silent.isEmpty())
         m_diagnostics.counters().timedOut(r.id);
+    for (int id : silent) // a multi-motor frame: one timeout for each drive that stayed silent
+        m_diagnostics.counters().timedOut(id);
     m_matcher.timedOut();
     beginQuiet(r, m_inflight->attempts == 1 && m_inflight->req.firstTimeoutS > 0,
                m_inflight->req.priority == Priority::Emergency || m_hurried);
     m_diagnostics.recordTimeout(r.id, static_cast<quint8>(r.command));
+    if (!silent.isEmpty()) {
+        QStringList ids;
+        for (int id : silent)
+            ids << QString::number(id);
+        fail(RequestStatus::Timeout, tr("no reply from drive(s) %1 to the multi-motor torque "
+                                        "frame (0x280): not in its Broadcast Mode, or absent")
+                                         .arg(ids.join(QStringLiteral(", "))));
+        return;
+    }
     fail(RequestStatus::Timeout,
          tr("no reply to %1 after %n attempt(s)", nullptr, m_inflight->attempts)
              .arg(commandText(r)));
+}
+
+QVector<int> WireExchange::silentInGroup() const
+{
+    QVector<int> silent;
+    if (!m_inflight)
+        return silent;
+    for (const protocol::Request &r : m_inflight->req.group) {
+        const auto answered =
+            std::any_of(m_inflight->groupReplies.cbegin(), m_inflight->groupReplies.cend(),
+                        [&r](const PendingRequest::GroupReply &g) { return g.reply.id == r.id; });
+        if (!answered)
+            silent.append(r.id);
+    }
+    return silent;
+}
+
+bool WireExchange::takeGroupReply(const protocol::ParseEvent &ev)
+{
+    if (!m_inflight || m_inflight->req.group.isEmpty() || !ev.isFrame || ev.echoed ||
+        ev.frame.command != static_cast<quint8>(Command::Torque) ||
+        !silentInGroup().contains(ev.frame.id))
+        return false;
+    const protocol::ReplyDecodeResult dec =
+        protocol::decodeReply(ev.frame, m_motors.decodeContext(ev.frame.id));
+    if (!dec.reply) {
+        // That drive's reply is lost; the others may still come (its timeout is counted).
+        m_diagnostics.counters().undecodable(ev.frame.id);
+        return true;
+    }
+    const double latency = static_cast<double>(m_clock->nowNs() - m_sentNs) * 1e-9;
+    m_diagnostics.counters().replyReceived(ev.frame.id, latency);
+    m_inflight->groupReplies.append({*dec.reply, latency});
+    if (!silentInGroup().isEmpty())
+        return true;
+    std::optional<Pending> p = abort();
+    if (p && m_outcomes.replied)
+        m_outcomes.replied(std::move(*p), *dec.reply, latency);
+    return true;
 }
 
 void WireExchange::beginQuiet(const protocol::Request &request, bool probe, bool emergency)
@@ -247,6 +308,8 @@ void WireExchange::onParseEvent(const protocol::ParseEvent &ev)
 {
     noteCanGeneration(ev); // first: the frame is recorded and decoded with what it tells
     m_diagnostics.recordParseEvent(ev);
+    if (takeGroupReply(ev))
+        return;
     StatisticsCollector &stats = m_diagnostics.counters();
     using V = ReplyMatcher::Verdict;
     const protocol::Frame &f = ev.frame;

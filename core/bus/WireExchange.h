@@ -102,6 +102,11 @@ private:
     void onParseEvent(const protocol::ParseEvent &ev);
     /// CAN: what a drive's frame says about its generation, passed on (Outcomes).
     void noteCanGeneration(const protocol::ParseEvent &ev);
+    /// A multi-motor frame on the wire (BusRequest::group): `ev` is the 0xA1 reply of one of
+    /// its drives still to answer: taken (true); once all answered, the frame is replied.
+    bool takeGroupReply(const protocol::ParseEvent &ev);
+    /// The drives of the multi-motor frame on the wire that have not answered yet.
+    QVector<int> silentInGroup() const;
     /// `frameBytes`: the reply's length on the wire.
     void takeReply(protocol::Reply reply, int frameBytes);
     /// The request on the wire timed out: hold transmissions until its reply cannot come.

@@ -66,7 +66,7 @@ DriveLimits DriveLimits::fromParams(const QList<protocol::ParameterValue> &value
                 d.maxTorqueA = positive<double>(v.asInt16() * protocol::iqCommandAmpsPerLsb(drive));
             break;
         case ParamId::MaxSpeed:
-            d.maxSpeedDps = positive<double>(v.asInt32() * protocol::kCentiUnits);
+            d.maxSpeedDps = positive<double>(v.asInt32() / 100.0);
             break;
         case ParamId::MaxAngleLow:
             low = v;
@@ -79,8 +79,8 @@ DriveLimits DriveLimits::fromParams(const QList<protocol::ParameterValue> &value
         }
     }
     if (low && high)
-        d.maxAngleDeg = positive<double>(static_cast<double>(protocol::joinMaxAngle(*low, *high)) *
-                                         protocol::kCentiUnits);
+        d.maxAngleDeg =
+            positive<double>(static_cast<double>(protocol::joinMaxAngle(*low, *high)) / 100.0);
     return d;
 }
 

@@ -59,8 +59,10 @@ Verdict checkTorque(double iqA, std::optional<Series> series, const SoftLimits &
 Verdict checkMultiTurn(const protocol::MultiPositionCommand &c, std::optional<Series> series,
                        const SoftLimits &limits)
 {
+    // Divided, as checkMaxSpeed does: 36090 x 0.01 is 360.90000000000003, over a limit of
+    // 360.9 the target was built from; 36090 / 100.0 is the double nearest 360.9.
     const Verdict window =
-        MotionGuard::checkTarget(static_cast<double>(c.angleRaw) * protocol::kCentiUnits, limits);
+        MotionGuard::checkTarget(static_cast<double>(c.angleRaw) / 100.0, limits);
     if (!window.allowed())
         return window;
     return checkMaxSpeed(c.maxSpeedRaw, series, limits);
@@ -69,7 +71,7 @@ Verdict checkMultiTurn(const protocol::MultiPositionCommand &c, std::optional<Se
 Verdict checkIncrement(const protocol::IncrementPositionCommand &c, std::optional<Series> series,
                        const SoftLimits &limits)
 {
-    const double deg = std::fabs(c.angleRaw * protocol::kCentiUnits);
+    const double deg = std::fabs(static_cast<double>(c.angleRaw) / 100.0); // as checkMultiTurn
     if (limits.maxIncrementDeg && deg > *limits.maxIncrementDeg)
         return refuse(LimitKind::SoftIncrement, deg, *limits.maxIncrementDeg);
     return checkMaxSpeed(c.maxSpeedRaw, series, limits);

@@ -55,7 +55,7 @@ double positiveMod(double v, double m)
 double singleTurnTravelDeg(const protocol::SinglePositionCommand &c, double fromDeg)
 {
     const double current = positiveMod(fromDeg, 360.0);
-    const double target = c.angleRaw * protocol::kCentiUnits;
+    const double target = c.angleRaw / 100.0; // divided: the double nearest the decimal
     return c.direction == protocol::SpinDirection::Clockwise
                ? positiveMod(target - current, 360.0)
                : -positiveMod(current - target, 360.0);
@@ -71,12 +71,11 @@ std::optional<MotionPlan> checkDistance(const protocol::Request &r, const SoftLi
         if (!at.angleDeg)
             return refused(LimitKind::AngleUnknown, 0, 0, r);
         // MotionGuard checks the target against the angle range.
-        const double distance =
-            std::fabs(static_cast<double>(c->angleRaw) * protocol::kCentiUnits - *at.angleDeg);
+        const double distance = std::fabs(static_cast<double>(c->angleRaw) / 100.0 - *at.angleDeg);
         if (distance > turn)
             return refused(LimitKind::OutputTurn, distance, turn, r, at.angleDeg);
     } else if (const auto *c = std::get_if<protocol::IncrementPositionCommand>(&r.payload)) {
-        const double step = c->angleRaw * protocol::kCentiUnits;
+        const double step = static_cast<double>(c->angleRaw) / 100.0;
         if (std::fabs(step) > turn)
             return refused(LimitKind::OutputTurn, std::fabs(step), turn, r);
         if (limits.minAngleDeg || limits.maxAngleDeg) {

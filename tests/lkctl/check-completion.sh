@@ -43,6 +43,8 @@ expect "--sim --sim-rom-dir" info 3 --si
 expect "115200" scan --baud 1152
 expect "multi-turn" read 3 mu
 expect "single-position speed" control 3 s
+expect "multi-position" control 3 m
+expect "multi-torque" control m
 expect "increment_position increment_position_limited" encode incr
 expect "--speed-dps" encode speed --id 1 --speed-d
 expect "MF MG MH MS" decode --series ""

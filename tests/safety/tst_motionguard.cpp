@@ -24,6 +24,8 @@ class tst_MotionGuard : public QObject {
 private slots:
     void check_data();
     void check();
+    void anglesAtTheLimitPass_data();
+    void anglesAtTheLimitPass();
     void defaultsAreSafe();
     void json_roundTrip();
     void json_refusesBadValues();
@@ -91,6 +93,37 @@ void tst_MotionGuard::check()
     QCOMPARE(v.kind, expected);
     QCOMPARE(v.allowed(), expected == LimitKind::None);
     QCOMPARE(text::VerdictText::verdict(v, series).isEmpty(), expected == LimitKind::None);
+}
+
+void tst_MotionGuard::anglesAtTheLimitPass_data()
+{
+    // A target or increment exactly at its limit is allowed: 36090 x 0.01 is
+    // 360.90000000000003 in floating point, which a product comparison would read as over a
+    // limit of 360.9 (the max speed had the same bug, fixed the same way: divide by 100).
+    QTest::addColumn<protocol::Request>("request");
+    QTest::addColumn<LimitKind>("expected");
+    using namespace protocol::build;
+    QTest::newRow("target at max") << req(multiPosition(1, 360.9)) << LimitKind::None;
+    QTest::newRow("target at min") << req(multiPosition(1, -360.9)) << LimitKind::None;
+    QTest::newRow("limited target at max") << req(multiPosition(1, 360.9, 100)) << LimitKind::None;
+    QTest::newRow("target over max") << req(multiPosition(1, 360.91)) << LimitKind::AngleAboveMax;
+    QTest::newRow("target under min") << req(multiPosition(1, -360.91)) << LimitKind::AngleBelowMin;
+    QTest::newRow("increment at max") << req(incrementPosition(1, 360.9)) << LimitKind::None;
+    QTest::newRow("increment at max, back") << req(incrementPosition(1, -360.9)) << LimitKind::None;
+    QTest::newRow("increment over")
+        << req(incrementPosition(1, 360.91)) << LimitKind::SoftIncrement;
+}
+
+void tst_MotionGuard::anglesAtTheLimitPass()
+{
+    QFETCH(protocol::Request, request);
+    QFETCH(LimitKind, expected);
+    safety::SoftLimits limits = safety::SoftLimits::defaults(protocol::Series::MF);
+    limits.minAngleDeg = -360.9;
+    limits.maxAngleDeg = 360.9;
+    limits.maxIncrementDeg = 360.9;
+    const safety::Verdict v = safety::MotionGuard::check(request, protocol::Series::MF, limits);
+    QCOMPARE(v.kind, expected);
 }
 
 void tst_MotionGuard::defaultsAreSafe()
