@@ -11,6 +11,14 @@
         <source>This drive speaks protocol %1, which has no %2 command (%3): it came with V2.35 (firmware 2.35 and later). Nothing is sent.</source>
         <translation>此驱动使用协议 %1，该协议没有%2命令 (%3)：它随 V2.35（固件 2.35 及更高版本）引入。不发送任何命令。</translation>
     </message>
+    <message>
+        <source>The protocol generation of this drive is not known yet (CAN has no model read: choose it, or wait for its replies), so %1 (%2) is not offered. Nothing is sent.</source>
+        <translation>此驱动器的协议版本尚未可知（CAN 没有型号读取：请选择它，或等待它的回复），因此不提供%1（%2）。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>This drive speaks %1, which has no %2 command (%3). Nothing is sent.</source>
+        <translation>此驱动器使用 %1，该协议没有%2命令（%3）。未发送任何内容。</translation>
+    </message>
 </context>
 <context>
     <name>lk::bus::BusSession</name>
@@ -60,6 +68,10 @@
     <message>
         <source>%1 to drive %2 was not sent: %3</source>
         <translation>%1 未发送到驱动器 %2：%3</translation>
+    </message>
+    <message>
+        <source>the multi-motor torque frame could not be encoded; nothing was sent</source>
+        <translation>无法编码多电机转矩帧；未发送任何内容</translation>
     </message>
 </context>
 <context>
@@ -261,6 +273,10 @@
     <message>
         <source>undecodable reply to %1</source>
         <translation>%1 的回复无法解码</translation>
+    </message>
+    <message>
+        <source>no reply from drive(s) %1 to the multi-motor torque frame (0x280): not in its Broadcast Mode, or absent</source>
+        <translation>驱动器 %1 未应答多电机转矩帧（0x280）：未处于广播模式，或不存在</translation>
     </message>
 </context>
 <context>
@@ -835,6 +851,61 @@
     <message>
         <source>max speed %1 dps (the drive&apos;s own Max Speed, read from it)</source>
         <translation>最大速度 %1 dps（驱动器自身的最大速度，从驱动器读取）</translation>
+    </message>
+</context>
+<context>
+    <name>lk::safety::MultiTorqueGuard</name>
+    <message>
+        <source>the multi-motor torque frame names no drive; nothing was sent</source>
+        <translation>多电机转矩帧未指定任何驱动器；未发送任何内容</translation>
+    </message>
+    <message>
+        <source>the multi-motor torque frame carries at most 4 drives (IDs 1..4); nothing was sent</source>
+        <translation>多电机转矩帧最多承载 4 个驱动器（ID 1..4）；未发送任何内容</translation>
+    </message>
+    <message>
+        <source>drive %1: the multi-motor torque frame (0x280) has slots for IDs 1..4 only; nothing was sent</source>
+        <translation>驱动器 %1：多电机转矩帧（0x280）只有 ID 1..4 的位置；未发送任何内容</translation>
+    </message>
+    <message>
+        <source>drive %1 is named twice; nothing was sent</source>
+        <translation>驱动器 %1 被指定了两次；未发送任何内容</translation>
+    </message>
+    <message>
+        <source>drive %1: only torque goes in a multi-motor frame; nothing was sent</source>
+        <translation>驱动器 %1：多电机帧只能承载转矩；未发送任何内容</translation>
+    </message>
+    <message>
+        <source>the multi-motor torque frame (0x280) exists on CAN only (the old CAN generation); RS485 has none; nothing was sent</source>
+        <translation>多电机转矩帧（0x280）仅存在于 CAN（旧一代 CAN）；RS485 没有该帧；未发送任何内容</translation>
+    </message>
+    <message>
+        <source>drive %1: its series and CAN generation are not known (give them, e.g. --drives %1:MG@can); the multi-motor frame exists on the old generation only; nothing was sent</source>
+        <translation>驱动器 %1：其系列和 CAN 代别未知（请给出，例如 --drives %1:MG@can）；多电机帧仅存在于旧一代；未发送任何内容</translation>
+    </message>
+    <message>
+        <source>drive %1 speaks CAN V2.36, whose documents have no multi-motor torque frame (0x280 is encoded for the old generation only); nothing was sent</source>
+        <translation>驱动器 %1 使用 CAN V2.36，其文档中没有多电机转矩帧（0x280 仅按旧一代编码）；未发送任何内容</translation>
+    </message>
+    <message>
+        <source>drive %1: its series is not known, so its torque cannot be bounded (give it, e.g. --drives %1:MG@can); nothing was sent</source>
+        <translation>驱动器 %1：其系列未知，无法限制其转矩（请给出，例如 --drives %1:MG@can）；未发送任何内容</translation>
+    </message>
+    <message>
+        <source>drive %1: |iq| %2 A is over its series&apos; current %3 A; nothing was sent</source>
+        <translation>驱动器 %1：|iq| %2 A 超过其系列电流 %3 A；未发送任何内容</translation>
+    </message>
+    <message>
+        <source>drive %1: |iq| %2 A is over its torque limit %3 A (max_torque_a); nothing was sent</source>
+        <translation>驱动器 %1：|iq| %2 A 超过其转矩限制 %3 A（max_torque_a）；未发送任何内容</translation>
+    </message>
+    <message>
+        <source>drive %1: its series has no torque command; nothing was sent</source>
+        <translation>驱动器 %1：其系列没有转矩命令；未发送任何内容</translation>
+    </message>
+    <message>
+        <source>drive %1: refused by its limits; nothing was sent</source>
+        <translation>驱动器 %1：被其限制拒绝；未发送任何内容</translation>
     </message>
 </context>
 <context>
@@ -3807,10 +3878,6 @@ not read</source>
         <translation>写入 RAM</translation>
     </message>
     <message>
-        <source>Write the suggested speed Kp and Ki to the drive&apos;s RAM (lost at power-off), then read back. Nothing is written before this.</source>
-        <translation>把建议的速度环 Kp 和 Ki 写入驱动的 RAM（断电丢失），然后回读。在此之前不写入任何内容。</translation>
-    </message>
-    <message>
         <source>Write to ROM…</source>
         <translation>写入 ROM…</translation>
     </message>
@@ -3845,10 +3912,6 @@ not read</source>
     <message>
         <source>Verdict</source>
         <translation>结论</translation>
-    </message>
-    <message>
-        <source>Tries speed-loop gains with short speed steps within the soft limits and suggests the fastest whose overshoot stays under the bound. Nothing is kept in the drive: the gains read go back to RAM at the end.</source>
-        <translation>在软限位内用短速度阶跃尝试速度环增益，并建议超调不超过界限的最快增益。驱动中不会保留任何改动：结束时读取的增益会写回 RAM。</translation>
     </message>
     <message>
         <source> %</source>
@@ -3943,10 +4006,6 @@ not read</source>
         <translation>立即停止：电机关闭，并把读取的增益写回 RAM。</translation>
     </message>
     <message>
-        <source>Search the speed-loop gains of the selected drive (asks first).</source>
-        <translation>搜索所选驱动的速度环增益（先询问）。</translation>
-    </message>
-    <message>
         <source>Measure the Bode of both</source>
         <translation>测量两者的伯德图</translation>
     </message>
@@ -3973,6 +4032,58 @@ not read</source>
     <message>
         <source>The Bode of both is refused within these limits: clear the box or change the steps.</source>
         <translation>在这些限制内无法测量两者的伯德图：请取消勾选或更改阶跃。</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>角度</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>速度</translation>
+    </message>
+    <message>
+        <source>Write the suggested Kp and Ki to the drive&apos;s RAM (lost at power-off), then read back. Nothing is written before this.</source>
+        <translation>把建议的 Kp 和 Ki 写入驱动的 RAM（断电后丢失），然后回读。在此之前不会写入任何内容。</translation>
+    </message>
+    <message>
+        <source>Tries speed-loop gains (or, with an angle window, position-loop gains) with short steps within the soft limits and suggests the fastest whose overshoot stays under the bound. Nothing is kept in the drive: the gains read go back to RAM at the end.</source>
+        <translation>在软限位内用短阶跃尝试速度环增益（设置了角度范围时也可尝试位置环增益），建议超调不超过界限的最快增益。驱动中不会保留任何改动：结束时读取的增益写回 RAM。</translation>
+    </message>
+    <message>
+        <source>Speed loop</source>
+        <translation>速度环</translation>
+    </message>
+    <message>
+        <source>Position loop</source>
+        <translation>位置环</translation>
+    </message>
+    <message>
+        <source>The position loop is offered while an angle range (both ends) is set: its steps go from the angle the drive is at and back, inside the range.</source>
+        <translation>只有设置了角度范围（两端）时才提供位置环：其阶跃从驱动当前角度出发再返回，保持在范围内。</translation>
+    </message>
+    <message>
+        <source> deg</source>
+        <translation> 度</translation>
+    </message>
+    <message>
+        <source>Each candidate steps the angle this far from where the drive is and back (down when the range has no room above).</source>
+        <translation>每个候选让角度从驱动当前位置阶跃这么远再返回（上方没有空间时向下）。</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>控制环</translation>
+    </message>
+    <message>
+        <source>Step size</source>
+        <translation>阶跃幅度</translation>
+    </message>
+    <message>
+        <source>Searching the position-loop gains of drive %1… Esc stops it.</source>
+        <translation>正在搜索驱动 %1 的位置环增益… 按 Esc 停止。</translation>
+    </message>
+    <message>
+        <source>Search the gains of the selected drive&apos;s loop (asks first).</source>
+        <translation>搜索所选驱动该控制环的增益（先询问）。</translation>
     </message>
 </context>
 <context>
@@ -4014,14 +4125,6 @@ not read</source>
         <translation>没有在界限内的</translation>
     </message>
     <message>
-        <source>Speed Kp</source>
-        <translation>速度环 Kp</translation>
-    </message>
-    <message>
-        <source>Speed Ki</source>
-        <translation>速度环 Ki</translation>
-    </message>
-    <message>
         <source>Rise</source>
         <translation>上升时间</translation>
     </message>
@@ -4044,6 +4147,14 @@ not read</source>
     <message>
         <source>Peak</source>
         <translation>峰值</translation>
+    </message>
+    <message>
+        <source>%1 Kp</source>
+        <translation>%1 Kp</translation>
+    </message>
+    <message>
+        <source>%1 Ki</source>
+        <translation>%1 Ki</translation>
     </message>
 </context>
 <context>
@@ -4131,6 +4242,10 @@ not read</source>
     <message>
         <source>The gains read before could NOT be written back: read the drive and check them.</source>
         <translation>之前读取的增益未能写回：请读取驱动并检查。</translation>
+    </message>
+    <message>
+        <source>Drive %1 holds %2 deg, the angle it started at, its motor stays on.</source>
+        <translation>驱动 %1 保持在开始时的角度 %2 度，电机保持开启。</translation>
     </message>
 </context>
 <context>
@@ -4406,8 +4521,20 @@ not read</source>
         <translation>按命令</translation>
     </message>
     <message>
-        <source>The other master: %1 requests/s, bus load %2 %; %3 requests, %4 unanswered (its timeouts); %5 checksum errors, %6 garbage bytes; %7 replies without their request, %8 echo frames not paired (ambiguous).</source>
-        <translation>另一个主站：%1 请求/秒，总线负载 %2 %；%3 个请求，%4 个未应答（其超时）；%5 个校验错误，%6 个垃圾字节；%7 个应答没有对应的请求，%8 个回显帧未配对（有歧义）。</translation>
+        <source>%1 CAN error frames, %2 frames of no drive (other IDs, 0x280 included)</source>
+        <translation>%1 个 CAN 错误帧，%2 个不属于任何驱动器的帧（其他 ID，含 0x280）</translation>
+    </message>
+    <message>
+        <source>%1 checksum errors, %2 garbage bytes</source>
+        <translation>%1 个校验错误，%2 个垃圾字节</translation>
+    </message>
+    <message>
+        <source>The recorded master: %1 requests/s, bus load %2 %; %3 requests, %4 unanswered (its timeouts); %5; %6 replies without their request, %7 echo frames not paired (ambiguous).</source>
+        <translation>所记录的主站：%1 请求/秒，总线负载 %2 %；%3 个请求，%4 个未应答（其超时）；%5；%6 个应答没有对应的请求，%7 个回显帧未配对（有歧义）。</translation>
+    </message>
+    <message>
+        <source>The other master: %1 requests/s, bus load %2 %; %3 requests, %4 unanswered (its timeouts); %5; %6 replies without their request, %7 echo frames not paired (ambiguous).</source>
+        <translation>另一个主站：%1 请求/秒，总线负载 %2 %；%3 个请求，%4 个未应答（其超时）；%5；%6 个应答没有对应的请求，%7 个回显帧未配对（有歧义）。</translation>
     </message>
 </context>
 <context>
@@ -6031,6 +6158,10 @@ not read</source>
         <source>Bus statistics: the other master (listen-only)</source>
         <translation>总线统计：另一个主站（仅监听）</translation>
     </message>
+    <message>
+        <source>Bus statistics: the recording (replay)</source>
+        <translation>总线统计：记录文件（回放）</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::StatusSummary</name>
@@ -6803,10 +6934,6 @@ not read</source>
         <translation>开始</translation>
     </message>
     <message>
-        <source>It cannot run as set. Nothing was sent.</source>
-        <translation>无法按当前设置运行。未发送任何内容。</translation>
-    </message>
-    <message>
         <source>Refused by a soft limit.</source>
         <translation>被软限位拒绝。</translation>
     </message>
@@ -6869,6 +6996,10 @@ not read</source>
     <message>
         <source>The gains read are back in RAM; drive %1 holds the angle it started at, its motor stays on.</source>
         <translation>读取的增益已写回 RAM；驱动器 %1 保持在开始时的角度，电机保持开启。</translation>
+    </message>
+    <message>
+        <source>It cannot run as set.</source>
+        <translation>按当前设置无法运行。</translation>
     </message>
 </context>
 <context>
