@@ -52,6 +52,18 @@ QString endName(End e)
     }
     return {};
 }
+
+/// The fastest speed read of a drive, or that none was read (never shown as 0 dps).
+QString peakText(const QMap<int, double> &peak, int id)
+{
+    return peak.contains(id) ? dps(peak.value(id)) + QStringLiteral(" dps")
+                             : QStringLiteral("no speed read");
+}
+
+QByteArray peakJson(const QMap<int, double> &peak, int id)
+{
+    return peak.contains(id) ? protocol::OrderedJson::realText(peak.value(id)) : "null";
+}
 } // namespace
 
 void ControlWatch::declare(ArgParser &parser)
@@ -262,7 +274,7 @@ void ControlWatch::reportOne(LiveBus &bus, int id, bool json, const Outcome &o) 
             .text(QStringLiteral("ended"), endName(o.end))
             .real(QStringLiteral("limit_dps"), limit)
             .real(QStringLiteral("threshold_dps"), threshold)
-            .real(QStringLiteral("peak_dps"), o.peak.value(id))
+            .raw(QStringLiteral("peak_dps"), peakJson(o.peak, id))
             .boolean(QStringLiteral("stop_acknowledged"), stopped);
         OrderedJson line;
         line.raw(QStringLiteral("watch"), j.toJson());
@@ -278,10 +290,10 @@ void ControlWatch::reportOne(LiveBus &bus, int id, bool json, const Outcome &o) 
                              : QStringLiteral("NOT acknowledged: it may still be turning")));
     } else {
         bus.console().outLine(
-            QStringLiteral("%1 after %2 s (peak %3 dps): %4")
+            QStringLiteral("%1 after %2 s (peak %3): %4")
                 .arg(endText(o.end))
                 .arg(o.seconds, 0, 'f', 1)
-                .arg(dps(o.peak.value(id)))
+                .arg(peakText(o.peak, id))
                 .arg(o.end == End::LinkLost
                          ? QStringLiteral("nothing could be sent; drive %1 may still be turning")
                                .arg(id)
@@ -302,7 +314,7 @@ void ControlWatch::reportGroup(LiveBus &bus, const QVector<int> &ids, bool json,
             d.integer(QStringLiteral("id"), id)
                 .real(QStringLiteral("limit_dps"), limitOf(id))
                 .real(QStringLiteral("threshold_dps"), bus::SpeedWatch::thresholdDps(limitOf(id)))
-                .real(QStringLiteral("peak_dps"), o.peak.value(id))
+                .raw(QStringLiteral("peak_dps"), peakJson(o.peak, id))
                 .boolean(QStringLiteral("stop_acknowledged"), o.acked.value(id));
             drives += (drives.size() > 1 ? "," : "") + d.toJson();
         }
@@ -332,9 +344,9 @@ void ControlWatch::reportGroup(LiveBus &bus, const QVector<int> &ids, bool json,
             QStringLiteral("%1 after %2 s.").arg(endText(o.end)).arg(o.seconds, 0, 'f', 1));
     for (int id : ids)
         bus.console().outLine(
-            QStringLiteral("  drive %1: peak %2 dps, %3")
+            QStringLiteral("  drive %1: peak %2, %3")
                 .arg(id)
-                .arg(dps(o.peak.value(id)))
+                .arg(peakText(o.peak, id))
                 .arg(o.end == End::LinkLost && !(o.trip && o.trip->id == id)
                          ? QStringLiteral("nothing could be sent: it may still be turning")
                      : o.acked.value(id)

@@ -42,6 +42,15 @@ std::optional<bus::DriveIdentity> identityOf(const BusOptions &options, int id)
     return std::nullopt;
 }
 
+/// The drives --drives declares: on CAN the only word lkctl has of who is on the bus.
+QSet<int> declaredIds(const BusOptions &options)
+{
+    QSet<int> ids;
+    for (const bus::DriveIdentity &d : options.drives)
+        ids.insert(d.id);
+    return ids;
+}
+
 QString frameText(const QVector<protocol::Request> &torques)
 {
     const std::optional<protocol::CanRecord> r =
@@ -155,7 +164,7 @@ int MultiTorqueControl::run(const ArgParser &parser, const BusOptions &options, 
     }
     LiveBus bus(console, command);
     const safety::MultiTorqueVerdict verdict = safety::MultiTorqueGuard::check(
-        torques, link, [&known](int id) { return known.value(id); });
+        torques, link, [&known](int id) { return known.value(id); }, declaredIds(options));
     if (!verdict.allowed()) {
         if (verdict.problem == safety::MultiTorqueProblem::Limit &&
             verdict.verdict.kind != safety::LimitKind::UnknownSeries)

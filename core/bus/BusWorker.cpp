@@ -414,6 +414,8 @@ void BusWorker::emergencyStop(quint64 ticket, const QVector<int> &ids, Command h
 {
     // The setpoint stream first: no setpoint may follow the stop, whatever the GUI does.
     haltSetpoints(SetpointStopReason::EmergencyStop);
+    // The stop ends every multi-motor frame's group: a later trip names only its own drive.
+    m_multiTorqueIds.clear();
     if (refuseListenOnly()) {
         // Nothing may go on a bus another master owns: the stop says so rather than claim one.
         const QVector<int> targets = m_motors.emergencyTargets(ids).all();

@@ -68,8 +68,13 @@ void BusWorker::stopForSpeedWatch(int id, Completion done)
 std::optional<QString>
 BusWorker::multiTorqueRefusal(const QVector<protocol::Request> &torques) const
 {
-    const safety::MultiTorqueVerdict v =
-        safety::MultiTorqueGuard::check(torques, link(), [this](int id) {
+    // Who is on the bus: every drive that answered or that the user declared.
+    QSet<int> onBus = m_motors.answered();
+    for (auto it = m_motors.all().cbegin(); it != m_motors.all().cend(); ++it)
+        onBus.insert(it.key());
+    const safety::MultiTorqueVerdict v = safety::MultiTorqueGuard::check(
+        torques, link(),
+        [this](int id) {
             safety::MultiTorqueDrive d;
             d.series = m_motors.series(id);
             const auto known = m_motors.all().constFind(id);
@@ -79,7 +84,8 @@ BusWorker::multiTorqueRefusal(const QVector<protocol::Request> &torques) const
             d.limits =
                 limits != m_softLimits.cend() ? *limits : safety::SoftLimits::defaults(d.series);
             return d;
-        });
+        },
+        onBus);
     if (v.allowed())
         return std::nullopt;
     return safety::MultiTorqueGuard::text(v);

@@ -88,7 +88,12 @@ void WireExchange::send(Pending p)
 {
     ++p.attempts;
     const protocol::Request &r = p.req.request;
-    m_diagnostics.counters().requestSent(r.id, p.attempts > 1);
+    // A multi-motor frame is a request to each drive it names: each counts one, as each
+    // counts its reply or its timeout.
+    if (p.req.group.isEmpty())
+        m_diagnostics.counters().requestSent(r.id, p.attempts > 1);
+    for (const protocol::Request &member : std::as_const(p.req.group))
+        m_diagnostics.counters().requestSent(member.id, p.attempts > 1);
     m_diagnostics.recordSent(p.bytes, r.id);
     double timeoutS = p.attempts == 1 && p.req.firstTimeoutS > 0
                           ? p.req.firstTimeoutS
@@ -135,7 +140,13 @@ void WireExchange::hurry()
     }
     if (m_inflight->req.priority == Priority::Emergency)
         return; // the stop's own requests wait the physical limit already
-    const qint64 freeNs = wireFreeNs(m_inflight->req.request.command);
+    qint64 freeNs = wireFreeNs(m_inflight->req.request.command);
+    // A multi-motor frame's replies follow one another: the wire is free after all of them,
+    // and a drive cut short of its turn would be reported silent when it was not.
+    const auto group = static_cast<qint64>(m_inflight->req.group.size());
+    if (group > 1)
+        freeNs += static_cast<qint64>(
+            (group - 1) * timing().maxReplyWireS(m_inflight->req.request.command) * 1e9);
     if (freeNs >= m_deadlineNs)
         return;
     m_hurried = true;
@@ -187,7 +198,10 @@ void WireExchange::onTimeout()
     m_matcher.timedOut();
     beginQuiet(r, m_inflight->attempts == 1 && m_inflight->req.firstTimeoutS > 0,
                m_inflight->req.priority == Priority::Emergency || m_hurried);
-    m_diagnostics.recordTimeout(r.id, static_cast<quint8>(r.command));
+    if (silent.isEmpty())
+        m_diagnostics.recordTimeout(r.id, static_cast<quint8>(r.command));
+    for (int id : silent)
+        m_diagnostics.recordTimeout(id, static_cast<quint8>(r.command));
     if (!silent.isEmpty()) {
         QStringList ids;
         for (int id : silent)

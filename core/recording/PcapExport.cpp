@@ -95,8 +95,11 @@ qint64 PcapExport::write(RecordingReader &reader, QIODevice &out)
     const auto context = [&](qint64 timeNs, const ContextSnapshot &snapshot) {
         QByteArray triples;
         RecordEncoder::putContext(triples, snapshot);
-        // The encoder's count prefix is one varint byte for up to 127 drives: drop it.
-        out.write(packet(startNs + timeNs, false, FrameKind::Context, triples.mid(1)));
+        // The encoder's count prefix is one varint byte for up to 127 drives: drop it. The
+        // dissector reads (id, series, generation) triples only: the list of drives the user
+        // chose, after them, is left out.
+        out.write(packet(startNs + timeNs, false, FrameKind::Context,
+                         triples.mid(1, 3 * snapshot.size())));
         ++packets;
     };
     context(0, reader.header().context);

@@ -1,5 +1,7 @@
 #include "MultiTorqueGuard.h"
 
+#include <algorithm>
+
 #include <QtCore/QCoreApplication>
 #include <QtCore/QSet>
 
@@ -42,7 +44,8 @@ MultiTorqueVerdict checkShape(const QVector<protocol::Request> &torques, protoco
 } // namespace
 
 MultiTorqueVerdict MultiTorqueGuard::check(const QVector<protocol::Request> &torques,
-                                           protocol::Link link, const DriveLookup &drive)
+                                           protocol::Link link, const DriveLookup &drive,
+                                           const QSet<int> &onBus)
 {
     const MultiTorqueVerdict shape = checkShape(torques, link);
     if (!shape.allowed())
@@ -60,6 +63,13 @@ MultiTorqueVerdict MultiTorqueGuard::check(const QVector<protocol::Request> &tor
             out.verdict = v;
             return out;
         }
+    }
+    // After the named drives' own refusals, which say more about what was asked.
+    for (int id = 1; id <= kMaxDrives; ++id) {
+        const bool named = std::any_of(torques.cbegin(), torques.cend(),
+                                       [id](const protocol::Request &r) { return r.id == id; });
+        if (!named && onBus.contains(id))
+            return problem(MultiTorqueProblem::UnnamedDrive, id);
     }
     return {};
 }
@@ -92,6 +102,13 @@ QString MultiTorqueGuard::text(const MultiTorqueVerdict &v)
         return QCoreApplication::translate(
                    "lk::safety::MultiTorqueGuard",
                    "drive %1: only torque goes in a multi-motor frame; nothing was sent")
+            .arg(v.id);
+    case MultiTorqueProblem::UnnamedDrive:
+        return QCoreApplication::translate(
+                   "lk::safety::MultiTorqueGuard",
+                   "drive %1 is on the bus and would get 0 A from the multi-motor torque frame, "
+                   "which has a slot for each of IDs 1..4: name it (%1=0 for zero torque on "
+                   "purpose); nothing was sent")
             .arg(v.id);
     case MultiTorqueProblem::NotCan:
         return QCoreApplication::translate(

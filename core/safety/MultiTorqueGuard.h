@@ -6,6 +6,7 @@
 #include <protocol/Request.h>
 #include <protocol/Series.h>
 
+#include <QtCore/QSet>
 #include <QtCore/QString>
 #include <QtCore/QVector>
 
@@ -21,6 +22,7 @@ enum class MultiTorqueProblem {
     TooManyDrives,     ///< more than four
     IdOutOfRange,      ///< the frame has slots for IDs 1..4 only
     DuplicateId,       ///< an ID named twice
+    UnnamedDrive,      ///< a drive of ID 1..4 on the bus, not named: it would get 0 A
     NotTorque,         ///< an entry that is not a torque request
     NotCan,            ///< RS485 has no such frame
     UnknownGeneration, ///< the drive's CAN generation is not known
@@ -53,9 +55,12 @@ public:
     static constexpr int kMaxDrives = 4;
     using DriveLookup = std::function<MultiTorqueDrive(int id)>;
 
-    /// `torques`: one torque request per drive (built for it: build::torque).
+    /// `torques`: one torque request per drive (built for it: build::torque). `onBus`: the IDs
+    /// known to be on the bus (answered or declared). The frame has a slot for each of IDs
+    /// 1..4 and a drive in Broadcast Mode takes an empty slot as 0 A (a held axis drops its
+    /// load), so a known drive of ID 1..4 must be named, with 0 if zero torque is meant.
     static MultiTorqueVerdict check(const QVector<protocol::Request> &torques, protocol::Link link,
-                                    const DriveLookup &drive);
+                                    const DriveLookup &drive, const QSet<int> &onBus);
     /// The refusal in English, naming the drive and the limit (the engine's reason; lkctl and
     /// the GUI may word a Limit refusal with lktext's VerdictText instead).
     static QString text(const MultiTorqueVerdict &verdict);

@@ -68,7 +68,7 @@ public:
     static constexpr double kKiFactor = 1.5;
     static constexpr int kKiSteps = 4;
     static constexpr int kPatienceRows = 2; ///< rows no better in a row that end the climb
-    static constexpr int kBlindRows = 3; ///< rows, none accepted yet, whose rise got no faster
+    static constexpr int kBlindRows = 3;    ///< rows, none accepted yet, whose rise got no faster
     static constexpr int kRefinements = 3;  ///< halvings between accepted and rejected Kp
     /// A lower Ki "helped" when the overshoot fell by this many points, or the swings fewer.
     static constexpr double kKiHelpPct = 0.5;
@@ -135,7 +135,7 @@ private:
     int m_rowsWithoutGain = 0;
     int m_blindRows = 0;
     double m_riseBeforeRow = 1e9; ///< the fastest rise of any candidate of the rows before, s
-    double m_bestBeforeRow = 1e9;        ///< the fastest accepted rise of the rows before, seconds
+    double m_bestBeforeRow = 1e9; ///< the fastest accepted rise of the rows before, seconds
     std::optional<PidTriple> m_accepted; ///< the last accepted row's (or refinement's) gains
     quint16 m_rejectedKp = 0;            ///< Refining: the lowest Kp found outside the bounds
     int m_refinements = 0;

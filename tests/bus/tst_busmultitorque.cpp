@@ -193,6 +193,9 @@ void tst_BusMultiTorque::refusalSendsNothing_data()
         << "drive 2: its series and CAN generation are not known";
     QTest::newRow("drive 2 is V2.36") << "1:MG,2:MG@2.35" << QVector<int>{1} << true << 0.5 << false
                                       << false << "drive 2 speaks CAN V2.36";
+    QTest::newRow("drive 3 known, not named")
+        << "1:MG,2:MG,3:MG" << QVector<int>{1, 2, 3} << false << 0.5 << false << false
+        << "drive 3 is on the bus and would get 0 A";
     QTest::newRow("RS485") << "1:MG,2:MG" << QVector<int>{1, 2} << false << 0.5 << true << false
                            << "exists on CAN only";
     QTest::newRow("listen-only") << "1:MG,2:MG" << QVector<int>{1, 2} << false << 0.5 << false

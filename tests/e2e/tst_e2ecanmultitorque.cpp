@@ -16,6 +16,8 @@ using namespace lk::e2e;
 namespace {
 const QString kDrives = QStringLiteral("1:MG@can,2:MG@can,3:MF@can236");
 const QString kMarker = QStringLiteral("1:MG@can");
+/// Drives 1 and 2 only: drive 3, declared, would get 0 A from the frame's empty slot.
+const QString kPair = QStringLiteral("1:MG@can,2:MG@can");
 constexpr quint32 kMulti = 0x280;
 } // namespace
 
@@ -71,7 +73,7 @@ void tst_E2eCanMultiTorque::cleanup()
 void tst_E2eCanMultiTorque::theDocumentedFrameIsOnTheWire()
 {
     // 1.6 A at the old generation's 32 A / 2000 is 100: CAN.md's example, ID 1 +100, ID 2 -100.
-    const CtlResult r = run({"control", "multi-torque", "1=1.6,2=-1.6", "--drives", kDrives,
+    const CtlResult r = run({"control", "multi-torque", "1=1.6,2=-1.6", "--drives", kPair,
                              "--max-torque-a", "2", "--json"});
     QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     QVERIFY(m_wire.waitFor(0x141, 0xA1) && m_wire.waitFor(0x142, 0xA1));
@@ -103,8 +105,8 @@ void tst_E2eCanMultiTorque::theDocumentedFrameIsOnTheWire()
 
 void tst_E2eCanMultiTorque::watchStopsEveryDrive()
 {
-    const CtlResult r = run({"control", "multi-torque", "1=0.1,2=-0.1", "--drives", kDrives,
-                             "--watch", "0.5", "--json"});
+    const CtlResult r = run(
+        {"control", "multi-torque", "1=0.1,2=-0.1", "--drives", kPair, "--watch", "0.5", "--json"});
     QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     const QList<QByteArray> lines = r.out.trimmed().split('\n');
     QCOMPARE(lines.size(), 2);
@@ -131,6 +133,8 @@ void tst_E2eCanMultiTorque::refusalPutsNoFrameOnTheBus_data()
         << "drive 2: its series and CAN generation are not known";
     QTest::newRow("drive 3 is V2.36")
         << QStringList{"1=0.5,3=0.5", "--drives", kDrives} << 4 << "drive 3 speaks CAN V2.36";
+    QTest::newRow("drive 3 declared, not named") << QStringList{"1=0.5,2=-0.5", "--drives", kDrives}
+                                                 << 4 << "drive 3 is on the bus and would get 0 A";
     QTest::newRow("ID 5") << QStringList{"1=0.5,5=0.5", "--drives", kDrives} << 2
                           << "IDs 1..4 only";
     QTest::newRow("named twice") << QStringList{"1=0.5,1=0.2", "--drives", kDrives} << 2

@@ -60,40 +60,56 @@ void tst_MultiTorqueGuard::check_data()
     QTest::addColumn<MultiTorqueProblem>("problem");
     QTest::addColumn<int>("id");
     QTest::addColumn<LimitKind>("limit");
-    QTest::addColumn<QString>("words"); ///< must appear in the refusal
+    QTest::addColumn<QString>("words");    ///< must appear in the refusal
+    QTest::addColumn<QList<int>>("onBus"); ///< the drives known to be on the bus
 
     using P = MultiTorqueProblem;
     const QVector<protocol::Request> two{torque(1, 1.6), torque(2, -1.6)};
-    QTest::newRow("two within") << two << Link::Can << P::None << 0 << LimitKind::None << "";
+    QTest::newRow("two within") << two << Link::Can << P::None << 0 << LimitKind::None << ""
+                                << QList<int>{};
     QTest::newRow("at the limit") << QVector<protocol::Request>{torque(1, 2.0), torque(2, -2.0)}
-                                  << Link::Can << P::None << 0 << LimitKind::None << "";
+                                  << Link::Can << P::None << 0 << LimitKind::None << ""
+                                  << QList<int>{};
     QTest::newRow("over drive 2's torque limit")
         << QVector<protocol::Request>{torque(1, 1.0), torque(2, -2.4)} << Link::Can << P::Limit << 2
-        << LimitKind::SoftTorque << "drive 2: |iq| 2.4 A is over its torque limit 2 A";
+        << LimitKind::SoftTorque << "drive 2: |iq| 2.4 A is over its torque limit 2 A"
+        << QList<int>{};
     QTest::newRow("unknown series")
         << QVector<protocol::Request>{torque(1, 0.5), torque(4, 0.5)} << Link::Can << P::Limit << 4
-        << LimitKind::UnknownSeries << "drive 4: its series is not known";
+        << LimitKind::UnknownSeries << "drive 4: its series is not known" << QList<int>{};
     QTest::newRow("unknown generation")
         << QVector<protocol::Request>{torque(1, 0.5), torque(2, 0.5)} << Link::Can
         << P::UnknownGeneration << 2 << LimitKind::None
-        << "drive 2: its series and CAN generation are not known";
+        << "drive 2: its series and CAN generation are not known" << QList<int>{};
     QTest::newRow("V2.36") << QVector<protocol::Request>{torque(3, 0.5)} << Link::Can << P::V236
-                           << 3 << LimitKind::None << "drive 3 speaks CAN V2.36";
+                           << 3 << LimitKind::None << "drive 3 speaks CAN V2.36" << QList<int>{};
     QTest::newRow("RS485") << two << Link::Rs485 << P::NotCan << 0 << LimitKind::None
-                           << "exists on CAN only";
+                           << "exists on CAN only" << QList<int>{};
     QTest::newRow("none") << QVector<protocol::Request>{} << Link::Can << P::NoDrive << 0
-                          << LimitKind::None << "names no drive";
+                          << LimitKind::None << "names no drive" << QList<int>{};
     QTest::newRow("five") << QVector<protocol::Request>{torque(1, 0), torque(2, 0), torque(3, 0),
                                                         torque(4, 0), torque(1, 0)}
-                          << Link::Can << P::TooManyDrives << 0 << LimitKind::None << "at most 4";
+                          << Link::Can << P::TooManyDrives << 0 << LimitKind::None << "at most 4"
+                          << QList<int>{};
     QTest::newRow("ID 6") << QVector<protocol::Request>{torque(6, 0.1)} << Link::Can
-                          << P::IdOutOfRange << 6 << LimitKind::None << "IDs 1..4 only";
+                          << P::IdOutOfRange << 6 << LimitKind::None << "IDs 1..4 only"
+                          << QList<int>{};
     QTest::newRow("twice") << QVector<protocol::Request>{torque(2, 0.1), torque(2, 0.2)}
                            << Link::Can << P::DuplicateId << 2 << LimitKind::None
-                           << "drive 2 is named twice";
+                           << "drive 2 is named twice" << QList<int>{};
     QTest::newRow("not a torque") << QVector<protocol::Request>{req(protocol::build::speed(1, 10))}
                                   << Link::Can << P::NotTorque << 1 << LimitKind::None
-                                  << "only torque";
+                                  << "only torque" << QList<int>{};
+    // An empty slot is 0 A to a drive in Broadcast Mode: a known drive must be named.
+    QTest::newRow("drive 2 on the bus, not named")
+        << QVector<protocol::Request>{torque(1, 0.5)} << Link::Can << P::UnnamedDrive << 2
+        << LimitKind::None << "drive 2 is on the bus and would get 0 A" << QList<int>{1, 2};
+    QTest::newRow("drive 2 named with 0 A")
+        << QVector<protocol::Request>{torque(1, 0.5), torque(2, 0)} << Link::Can << P::None << 0
+        << LimitKind::None << "" << QList<int>{1, 2};
+    QTest::newRow("drive 6 beyond the frame's slots")
+        << QVector<protocol::Request>{torque(1, 0.5)} << Link::Can << P::None << 0
+        << LimitKind::None << "" << QList<int>{1, 6};
 }
 
 void tst_MultiTorqueGuard::check()
@@ -104,15 +120,18 @@ void tst_MultiTorqueGuard::check()
     QFETCH(int, id);
     QFETCH(LimitKind, limit);
     QFETCH(QString, words);
+    QFETCH(QList<int>, onBus);
     // Drive 2's generation is unknown in the row that says so.
     const bool forget = QByteArray(QTest::currentDataTag()) == "unknown generation";
-    const safety::MultiTorqueVerdict v =
-        safety::MultiTorqueGuard::check(torques, link, [forget](int id) {
+    const safety::MultiTorqueVerdict v = safety::MultiTorqueGuard::check(
+        torques, link,
+        [forget](int id) {
             safety::MultiTorqueDrive d = drive(id);
             if (forget && id == 2)
                 d.generation.reset();
             return d;
-        });
+        },
+        QSet<int>(onBus.cbegin(), onBus.cend()));
     QCOMPARE(v.problem, problem);
     QCOMPARE(v.id, id);
     QCOMPARE(v.verdict.kind, limit);
