@@ -164,12 +164,10 @@ void tst_BusMultiTorque::aSilentDriveTimesOutAlone()
     QVERIFY2(r.reason.contains(QStringLiteral("drive(s) 3 ")), qPrintable(r.reason));
     QCOMPARE(r.drives.at(0).status, RequestStatus::Ok);
     QCOMPARE(r.drives.at(1).status, RequestStatus::Timeout);
-    // Counted for drive 3 alone. Open: the per-drive timeout of a silent drive does not show
-    // in the statistics snapshot within the wait (not yet found why; reported to the lead).
-    QEXPECT_FAIL("", "per-drive timeout of a multi-motor frame not seen in BusStatistics yet",
-                 Abort);
+    // Counted against drive 3, never drive 1. Drive 3 may have taken the frame without its
+    // reply reaching us, so the speed watch goes on reading it (each read another timeout).
     QTRY_VERIFY_WITH_TIMEOUT(
-        !stats.isEmpty() && stats.last().at(0).value<BusStatistics>().perId.value(3).timeouts == 1,
+        !stats.isEmpty() && stats.last().at(0).value<BusStatistics>().perId.value(3).timeouts >= 1,
         10000);
     const BusStatistics s = stats.last().at(0).value<BusStatistics>();
     QCOMPARE(s.perId.value(1).timeouts, quint64(0));
