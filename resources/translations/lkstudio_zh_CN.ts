@@ -907,6 +907,10 @@
         <source>drive %1: refused by its limits; nothing was sent</source>
         <translation>驱动器 %1：被其限制拒绝；未发送任何内容</translation>
     </message>
+    <message>
+        <source>drive %1 is on the bus and would get 0 A from the multi-motor torque frame, which has a slot for each of IDs 1..4: name it (%1=0 for zero torque on purpose); nothing was sent</source>
+        <translation>驱动器 %1 在总线上，多电机转矩帧为 ID 1..4 各留一个位置，它会收到 0 A：请写出它（%1=0 表示有意给零转矩）；未发送任何内容</translation>
+    </message>
 </context>
 <context>
     <name>lk::safety::SoftLimits</name>
