@@ -186,6 +186,8 @@ void tst_E2eController::tapMatchesLog()
     bool v235State1 = false;
     for (qsizetype i = 1; i < seen.size() && at + i - 1 < truth.size(); ++i) {
         const QJsonObject &logged = truth[at + i - 1];
+        if (i == seen.size() - 1 && !seen[i].reply)
+            break; // the tap closed after the last request, before its reply was whole
         const QString why = disagreement(seen[i], logged);
         QVERIFY2(why.isEmpty(),
                  qPrintable(QStringLiteral("tap request %1, log line %2: %3: %4")

@@ -53,7 +53,7 @@ expect "position" step 3 p
 expect "--duration" step 3 speed 0 100 --du
 expect "speed" freq 3 s
 expect "position" freq 3 p
-expect "speed" tune 3 ""
+expect "position speed" tune 3 ""
 expect "ram" tune 3 speed --write ""
 expect "--max-overshoot" tune 3 speed --max-o
 expect "ccw cw" control 3 single-position 90 --direction ""
