@@ -157,7 +157,8 @@ void tst_LkctlWatch::watchArgumentErrors_data()
     QTest::addColumn<QStringList>("args");
     QTest::addColumn<QByteArray>("message");
     QTest::newRow("speed mode") << words("control 3 speed 90 --watch 5 --sim 3:MF")
-                                << QByteArray("--watch goes with torque, open-loop and multi-torque only");
+                                << QByteArray(
+                                       "--watch goes with torque, open-loop and multi-torque only");
     QTest::newRow("no number") << words("control 3 torque 0.1 --watch soon --sim 3:MF")
                                << QByteArray("--watch");
     QTest::newRow("too short") << words("control 3 torque 0.1 --watch 0 --sim 3:MF")
