@@ -11,6 +11,7 @@
 #include <QtTest/QTest>
 
 #include <atomic>
+#include <chrono>
 #include <memory>
 #include <thread>
 #include <vector>
@@ -191,16 +192,22 @@ void tst_SimBusHandle::survivesCloseAndReopenWhileAnotherThreadCalls()
     std::atomic<bool> stop{false};
     std::atomic<int> ran{0};
     std::atomic<int> missed{0};
+    // A caller that found no bus pauses briefly: spinning three threads on two cores starved
+    // the bus thread, and half a million Ticket allocations a run recycled ASan's quarantine
+    // so fast that a use after free would show as a wild SEGV instead of a report.
     const auto callInALoop = [&] {
         while (!stop.load()) {
+            bool none = false;
             if (handle->withBus([](sim::SimBus &bus) { (void)bus.ids(); }))
                 ++ran;
             else
-                ++missed;
+                ++missed, none = true;
             if (handle->requestCount(1, Command::ReadState1) >= 0)
                 ++ran;
             else
-                ++missed;
+                ++missed, none = true;
+            if (none)
+                std::this_thread::sleep_for(std::chrono::microseconds(200));
         }
     };
     std::vector<std::thread> callers;

@@ -367,16 +367,26 @@ void tst_E2eCanTools::listenPairsCanFrames()
     listen.start(QStringLiteral(LKCTL_PATH), {"listen", "--can", m_bus.can(), "--drives",
                                               "1:MG,2:MF", "--json", "--duration", "20"});
     QVERIFY(listen.waitForStarted(60000));
+    // Rows in monitor's schema: drive 2's state 2 reply, paired with the read another master
+    // (this test's lkctl) sent, gives its encoder. Read until listen has printed such a row
+    // (it may join the bus after the first read), then end it as a user would: SIGTERM.
+    QByteArray out;
+    const auto listenSawIt = [&] {
+        out += listen.readAllStandardOutput();
+        return out.contains("\"id\":2") && out.contains("\"encoder\"");
+    };
     QVERIFY(QTest::qWaitFor(
-        [this] {
-            return run({"read", "2", "state2", "--drives", kNew}).out.contains("encoder");
+        [&] {
+            if (!run({"read", "2", "state2", "--drives", kNew}).out.contains("encoder"))
+                return false;
+            return QTest::qWaitFor(listenSawIt, 500);
         },
         30000));
-    QVERIFY(QTest::qWaitFor([&] { return listen.state() == QProcess::NotRunning; }, 120000));
-    // Rows in monitor's schema: drive 2's state 2 reply, paired with the read another master
-    // (this test's lkctl) sent, gives its encoder.
-    const QByteArray out = listen.readAllStandardOutput();
-    QVERIFY2(out.contains("\"id\":2") && out.contains("\"encoder\""), out.constData());
+    listen.terminate();
+    QVERIFY(QTest::qWaitFor([&] { return listen.state() == QProcess::NotRunning; }, 60000));
+    QCOMPARE(listen.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(listen.exitCode(), 0);
+    QVERIFY2(listenSawIt(), out.constData());
 }
 
 void tst_E2eCanTools::decodeReadsCandumpLog()

@@ -64,7 +64,8 @@ public:
         fleet::FleetReader reader(&session);
         QSignalSpy done(&reader, &fleet::FleetReader::finished);
         reader.start(ids);
-        if (!done.wait(kWaitMs) && done.isEmpty())
+        // A signal sent before the wait (a refusal is immediate) must not cost the whole wait.
+        if (done.isEmpty() && !done.wait(kWaitMs))
             return {};
         return reader.snapshots();
     }
@@ -75,13 +76,13 @@ public:
     {
         QSignalSpy prepared(&restore, &fleet::FleetRestore::prepared);
         restore.prepare(jobs);
-        if (!prepared.wait(kWaitMs) && prepared.isEmpty())
+        if (prepared.isEmpty() && !prepared.wait(kWaitMs))
             return false;
         if (!execute)
             return true;
         QSignalSpy finished(&restore, &fleet::FleetRestore::finished);
         restore.execute(rom);
-        return finished.wait(kWaitMs) || !finished.isEmpty();
+        return !finished.isEmpty() || finished.wait(kWaitMs);
     }
 
     std::shared_ptr<transport::SimBusHandle> sim;

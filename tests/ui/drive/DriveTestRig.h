@@ -44,7 +44,7 @@ public:
         options.firstId = 1;
         options.lastId = 8;
         session.scan(options);
-        return finished.wait(kWaitMs) || finished.count() > 0;
+        return finished.count() > 0 || finished.wait(kWaitMs);
     }
 
     bus::KnownMotor motor(int id) const { return session.knownMotors().value(id); }

@@ -55,7 +55,7 @@ public:
         lk::bus::ScanOptions options;
         options.lastId = 4;
         session.scan(options);
-        return finished.wait(kWaitMs) || finished.count() > 0;
+        return finished.count() > 0 || finished.wait(kWaitMs);
     }
 
     /// One request, waited for (the test thread may wait; the views never do).
