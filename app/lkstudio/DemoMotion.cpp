@@ -39,6 +39,11 @@ DemoMotion::DemoMotion(lk::ui::BusController *controller, int stepMs, QObject *p
         stopForGood();
     });
     connect(session, &lk::bus::BusSession::requestCompleted, this, &DemoMotion::observe);
+    connect(session, &lk::bus::BusSession::requestSubmitted, this,
+            [this](quint64, const lk::protocol::Request &request, lk::bus::Priority priority) {
+                if (!m_sending)
+                    takeOver(request.id, request.command, priority);
+            });
     // The first steps as soon as the drives are polled: a first run shows motion at once.
     connect(m_controller->model(), &lk::ui::BusModel::pollingChanged, this, [this] {
         if (m_running && m_moved.isEmpty() && canMove())
@@ -98,25 +103,35 @@ void DemoMotion::step()
         const auto built = lk::protocol::build::speed(ids[i], speed);
         if (!built.ok())
             continue;
+        m_sending = true;
         m_tickets.insert(m_controller->session()->send(*built.request));
+        m_sending = false;
         m_moved.insert(ids[i]);
     }
 }
 
 void DemoMotion::observe(const lk::bus::RequestResult &result)
 {
-    if (m_tickets.remove(result.ticket) || !m_running || !takesOver(result.request.command))
+    // Commands from send() took over when they were submitted; this catches the rest (an
+    // emergency lane's stop).
+    if (!m_tickets.remove(result.ticket))
+        takeOver(result.request.id, result.request.command, result.priority);
+}
+
+void DemoMotion::takeOver(int id, lk::protocol::Command command, lk::bus::Priority priority)
+{
+    if (!m_running || !takesOver(command))
         return;
-    if (result.priority == lk::bus::Priority::Emergency) {
+    if (priority == lk::bus::Priority::Emergency) {
         // A stop from the emergency lane (leaving lkstudio, the speed watch): the others are
         // being stopped too; a speed 0 now would turn them on again behind their stop.
-        qCInfo(lcDemo) << "demo motion ends: drive" << result.request.id << "was stopped";
+        qCInfo(lcDemo) << "demo motion ends: drive" << id << "was stopped";
         m_moved.clear();
         stopForGood();
         return;
     }
-    qCInfo(lcDemo) << "demo motion ends: a command to drive" << result.request.id << "took over";
-    standStill(result.request.id);
+    qCInfo(lcDemo) << "demo motion ends: a command to drive" << id << "took over";
+    standStill(id);
     stopForGood();
 }
 
@@ -127,8 +142,11 @@ void DemoMotion::standStill(int except)
     for (int id : std::as_const(m_moved)) {
         if (id == except)
             continue;
-        if (const auto built = lk::protocol::build::speed(id, 0); built.ok())
+        if (const auto built = lk::protocol::build::speed(id, 0); built.ok()) {
+            m_sending = true;
             m_controller->session()->send(*built.request);
+            m_sending = false;
+        }
     }
     m_moved.clear();
 }

@@ -45,6 +45,9 @@ signals:
 private:
     void step();
     void observe(const lk::bus::RequestResult &result);
+    /// Someone else's command, as soon as it is queued (observe() sees its completion: by
+    /// then a step of the demo could already have been queued behind it).
+    void takeOver(int id, lk::protocol::Command command, lk::bus::Priority priority);
     void stopForGood();
     /// Speed 0 to every drive the demo set moving but `except`.
     void standStill(int except);
@@ -57,4 +60,5 @@ private:
     int m_phase = 0;
     bool m_running = false;
     bool m_stopped = false;
+    bool m_sending = false; ///< inside the demo's own send(): its submission is not a take-over
 };

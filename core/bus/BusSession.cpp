@@ -218,6 +218,7 @@ void BusSession::setConfig(const BusConfig &config)
 quint64 BusSession::send(const protocol::Request &request, Priority priority, int retries)
 {
     const quint64 ticket = m_nextTicket++;
+    emit requestSubmitted(ticket, request, priority);
     if (!m_worker) {
         RequestResult r;
         r.ticket = ticket;

@@ -188,6 +188,11 @@ signals:
     /// The end of a send() or of one emergency motor_off. Polls and scan probes do not
     /// report here: their replies arrive as telemetry and scan signals.
     void requestCompleted(const lk::bus::RequestResult &result);
+    /// A send() was accepted for the bus, emitted on the caller's thread before send()
+    /// returns: whoever moves drives on its own (the demo) hears of a command before one of
+    /// its own can be queued behind it.
+    void requestSubmitted(quint64 ticket, const lk::protocol::Request &request,
+                          lk::bus::Priority priority);
     /// One more ID of an emergency stop answered or stayed silent (in the order the results
     /// came); `remaining` halts are still to come. emergencyStopFinished follows the last.
     void emergencyStopProgress(quint64 ticket, const QVector<int> &acknowledged,
