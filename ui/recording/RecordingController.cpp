@@ -86,6 +86,9 @@ void RecordingController::wireReplay()
         bus::FoundMotor found;
         found.id = id;
         found.baud = m_replay->header().baud;
+        // On CAN no model is read: an empty one would claim the V2.3 generation over what
+        // the recording's context or a reply's ID says (applyKnownMotors sets that next).
+        found.link = m_replay->link();
         found.series = series;
         model->addFound(found);
     };

@@ -41,6 +41,8 @@ public:
     QString path() const { return m_path; }
 
     const recording::RecordingHeader &header() const { return m_transport->header(); }
+    /// The link of the stream being replayed (a recording may change it at a Link record).
+    protocol::Link link() const { return m_link; }
     /// Where the file stops being readable; Kind::None for a whole file.
     recording::RecordingError damage() const;
     double durationSeconds() const;

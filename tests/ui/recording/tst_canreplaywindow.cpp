@@ -84,19 +84,17 @@ private slots:
         m_window->traffic()->flush();
         QCOMPARE(m_window->traffic()->trafficModel()->rowCount(), 4);
         // Statistics as a listener on CAN counts them, drive info from the recording: drive 2
-        // is V2.36 (its reply on 0x182 told), drive 1 the old generation (the context's).
+        // is V2.36 (its reply on 0x182 told).
         ui::BusModel *model = m_window->busModel();
         const bus::ListenStatistics &st = model->listenStatistics();
         QCOMPARE(st.requests, quint64(2));
         QCOMPARE(st.paired, quint64(2));
         QCOMPARE(st.perDrive.value(2).replies, quint64(1));
         QCOMPARE(st.perCommand.value(0x9C).requests, quint64(1));
-        QEXPECT_FAIL("",
-                     "open bug: the generation the replay learns from drive 2's reply on "
-                     "0x182 does not reach the drive list's record (the replay decodes with "
-                     "it; BusModel::applyKnownMotors is not seen to apply it)",
-                     Continue);
         QCOMPARE(model->drive(2)->generation(), std::optional(protocol::Generation::V2_35));
+        // A reply on 0x141 does not tell (a V2.36 drive may be set to answer on 0x140+ID):
+        // unknown until the user chooses, never the V2.3 of an empty model read.
+        QCOMPARE(model->drive(1)->generation(), std::nullopt);
         auto *statistics = m_window->findChild<ui::StatisticsView *>();
         QVERIFY(statistics && statistics->isReplaying() && !statistics->listenPane()->isHidden());
         const QString summary = statistics->listenPane()->summary();
