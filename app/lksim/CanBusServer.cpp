@@ -14,6 +14,7 @@ namespace lk::app {
 
 namespace {
 constexpr int kStopPollMs = 50;
+constexpr qint64 kGroupNs = 1000000; ///< replies closer than this are written together
 /// CAN_ERR_PROT | CAN_ERR_CRC-style bus error: what a receiver reports for a frame whose CRC
 /// failed (linux/can/error.h: CAN_ERR_PROT 0x08; data[3] location, CRC sequence 0x08).
 constexpr quint32 kErrorClassProtocol = 0x00000008;
@@ -27,6 +28,10 @@ CanBusServer::CanBusServer(sim::SimBus &bus, const Options &options, QObject *pa
     m_controllerTimer.setSingleShot(true);
     m_controllerTimer.setTimerType(Qt::PreciseTimer);
     connect(&m_controllerTimer, &QTimer::timeout, this, &CanBusServer::tickController);
+    connect(&m_wake, &transport::PreciseWake::woke, this, &CanBusServer::sendDue);
+    m_coarseWake.setSingleShot(true);
+    m_coarseWake.setTimerType(Qt::PreciseTimer);
+    connect(&m_coarseWake, &QTimer::timeout, this, &CanBusServer::sendDue);
 }
 
 CanBusServer::~CanBusServer() = default;
@@ -97,6 +102,17 @@ void CanBusServer::onRecords(const QByteArray &records)
     // The request was on the wire already (it reached us); each reply follows its drive's
     // turnaround and never overlaps the one before it.
     m_wireFreeNs = std::max(m_wireFreeNs, now);
+    // Replies due within a millisecond of each other (a multi-motor frame's) go out together
+    // at the last one's time: Qt's virtualcan (6.4) was seen to hold back the second of two
+    // frames one client wrote 0.1 ms apart until the next frame came (drive 2's reply to a
+    // 0x280 frame went missing), and our timeouts allow for the group's wire time anyway.
+    QByteArray group;
+    qint64 groupDueNs = 0;
+    const auto sendGroup = [&] {
+        if (!group.isEmpty())
+            sendAt(group, groupDueNs);
+        group.clear();
+    };
     for (const sim::SimReply &r : replies) {
         QByteArray bytes = r.bytes;
         double extra = 0;
@@ -110,30 +126,48 @@ void CanBusServer::onRecords(const QByteArray &records)
             err.flags = protocol::CanRecord::Error;
             err.data = QByteArray(8, '\0');
             ++m_errorFrames;
-            sendLater(err.encode(), 0);
+            sendAt(err.encode(), now);
             continue;
         }
         const qint64 start =
             std::max(now + std::llround((r.delaySeconds + extra) * 1e9), m_wireFreeNs);
         m_wireFreeNs = start + frameNs;
-        sendLater(bytes, static_cast<double>(m_wireFreeNs - now) * 1e-9);
+        if (!group.isEmpty() && m_wireFreeNs - groupDueNs >= kGroupNs)
+            sendGroup();
+        group += bytes;
+        groupDueNs = m_wireFreeNs;
         if (m_options.verbose)
             std::fprintf(stderr, "lksim: reply %s\n",
                          qPrintable(protocol::CanRecord::decode(bytes)->candumpText()));
     }
+    sendGroup();
 }
 
-void CanBusServer::sendLater(const QByteArray &record, double delayS)
+void CanBusServer::sendAt(const QByteArray &record, qint64 due)
 {
-    const int ms = static_cast<int>(std::floor(delayS * 1e3));
-    if (ms <= 0) {
-        m_transport->write(record);
-        return;
-    }
-    QTimer::singleShot(ms, Qt::PreciseTimer, this, [this, record] {
+    // After every frame due no later: the wire's order, and an error frame at once.
+    const auto at = std::upper_bound(m_outgoing.begin(), m_outgoing.end(), due,
+                                     [](qint64 d, const Outgoing &o) { return d < o.dueNs; });
+    m_outgoing.insert(at, Outgoing{due, record});
+    sendDue();
+}
+
+void CanBusServer::sendDue()
+{
+    const qint64 now = m_clock.nsecsElapsed();
+    while (!m_outgoing.empty() && m_outgoing.front().dueNs <= now) {
+        const QByteArray record = m_outgoing.front().record;
+        m_outgoing.pop_front();
         if (m_transport)
             m_transport->write(record);
-    });
+    }
+    if (m_outgoing.empty())
+        return;
+    const qint64 wait = m_outgoing.front().dueNs - now;
+    if (m_wake.isValid())
+        m_wake.wakeIn(wait);
+    else
+        m_coarseWake.start(static_cast<int>((wait + 999999) / 1000000));
 }
 
 QString CanBusServer::summary() const

@@ -7,6 +7,7 @@
 #include <sim/SimBus.h>
 #include <sim/SimCanFront.h>
 #include <transport/CanTransport.h>
+#include <transport/PreciseWake.h>
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QObject>
@@ -14,6 +15,7 @@
 #include <QtCore/QTimer>
 
 #include <atomic>
+#include <deque>
 #include <memory>
 #include <optional>
 
@@ -56,7 +58,11 @@ public:
 
 private:
     void onRecords(const QByteArray &records);
-    void sendLater(const QByteArray &record, double delayS);
+    /// Puts `record` on the bus when m_clock reaches `dueNs`, to the microsecond, after the
+    /// frames due no later.
+    void sendAt(const QByteArray &record, qint64 dueNs);
+    /// Writes every frame that is due and waits for the next.
+    void sendDue();
     double nowSeconds() const;
     /// Runs the controller to now, puts its due frames on the bus and waits for the next.
     void tickController();
@@ -71,6 +77,13 @@ private:
     std::optional<sim::CanForeignController> m_controller; ///< made when serving starts
     ControllerLogFile m_controllerLog;
     QTimer m_controllerTimer;
+    struct Outgoing {
+        qint64 dueNs = 0;
+        QByteArray record;
+    };
+    std::deque<Outgoing> m_outgoing; ///< in due order
+    transport::PreciseWake m_wake;   ///< a frame's wire time is a tenth of QTimer's grain
+    QTimer m_coarseWake;             ///< without a timerfd: whole milliseconds, late
 };
 
 } // namespace lk::app
