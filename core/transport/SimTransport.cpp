@@ -174,7 +174,8 @@ void SimTransport::schedule()
         return;
     }
     const qint64 remaining = m_pending.front().dueNs - m_clock.nsecsElapsed();
-    if (m_wake->isValid()) {
+    if (remaining > 0 && m_wake->isValid()) {
+        m_timer->stop();
         m_wake->wakeIn(remaining); // QElapsedTimer and the timerfd share CLOCK_MONOTONIC
         return;
     }
