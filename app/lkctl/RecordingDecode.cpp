@@ -3,6 +3,8 @@
 #include "Console.h"
 #include "Subcommand.h"
 
+#include <protocol/CanLayout.h>
+#include <protocol/CanRecord.h>
 #include <protocol/Command.h>
 #include <protocol/FieldJson.h>
 #include <protocol/Request.h>
@@ -32,11 +34,33 @@ QString canIdText(quint32 canId)
            QString::number(canId, 16).toUpper().rightJustified(3, QLatin1Char('0'));
 }
 
+/// The tool's own multi-motor torque frame (0x280, docs/CAN.md section 4.2): the torque of
+/// each of IDs 1..4, an empty slot's 0 A too.
+QJsonObject multiTorqueObject(const protocol::ParseEvent &e)
+{
+    const std::optional<protocol::CanRecord> record = protocol::CanRecord::decode(e.bytes);
+    const auto iq =
+        record ? protocol::can::decodeMultiMotorTorque(record->canData()) : std::nullopt;
+    if (!iq)
+        return protocol::FieldJson::errorObject(protocol::ParseError::BadLength, e.bytes);
+    QJsonObject fields;
+    for (size_t i = 0; i < iq->size(); ++i)
+        fields.insert(QStringLiteral("iq_a_%1").arg(i + 1),
+                      (*iq)[i] * protocol::kIqCommandAmpsPerLsb);
+    return {{QStringLiteral("direction"),
+             QLatin1String(protocol::directionName(protocol::FrameDirection::Request))},
+            {QStringLiteral("command"), QStringLiteral("multi_torque")},
+            {QStringLiteral("can_id"), canIdText(protocol::can::kMultiMotorId)},
+            {QStringLiteral("fields"), fields}};
+}
+
 /// The CLI.md object of a recorded frame or fault; a CAN frame also names its "can_id".
 QJsonObject objectOf(const RecordedFrame &f)
 {
     using protocol::FieldJson;
     const protocol::ParseEvent &e = f.event;
+    if (e.isFrame && e.canId == protocol::can::kMultiMotorId)
+        return multiTorqueObject(e);
     if (!e.isFrame || !f.context.onCan() || e.direction == protocol::FrameDirection::Reply) {
         QJsonObject o = FieldJson::eventObject(e, f.context);
         if (e.canId)

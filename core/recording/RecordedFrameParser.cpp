@@ -2,6 +2,8 @@
 
 #include <bus/PassivePairing.h>
 #include <protocol/CanLayout.h>
+#include <protocol/CanRecord.h>
+#include <protocol/CanRecordParser.h>
 
 namespace lk::recording {
 
@@ -62,9 +64,29 @@ void RecordedFrameParser::emitEvent(bool transmitted, protocol::ParseEvent event
 
 void RecordedFrameParser::parse(bool transmitted, const QByteArray &bytes, const Sink &sink)
 {
+    // The tool's own multi-motor torque frame (0x280, docs/CAN.md section 4.2) is on no
+    // drive's ID, so the CAN parser hands it aside: it is a request the tool sent all the
+    // same, reported as one (no drive, no command of the table; its bytes hold the slots).
+    auto *can = transmitted && m_link == protocol::Link::Can
+                    ? dynamic_cast<protocol::CanRecordParser *>(m_tx.get())
+                    : nullptr;
+    if (can)
+        can->setOtherFrameSink([&](const protocol::CanRecord &r) {
+            if (r.isEcho() || r.isError() || r.isExtended() ||
+                r.canId != protocol::can::kMultiMotorId)
+                return;
+            protocol::ParseEvent e;
+            e.isFrame = true;
+            e.direction = protocol::FrameDirection::Request;
+            e.bytes = r.encode();
+            e.canId = r.canId;
+            emitEvent(true, e, sink);
+        });
     (transmitted ? m_tx : m_rx)->feed(bytes, [&](const protocol::ParseEvent &e) {
         emitEvent(transmitted, e, sink);
     });
+    if (can)
+        can->setOtherFrameSink({}); // it refers to this call's sink
 }
 
 void RecordedFrameParser::finishStream(bool transmitted, const Sink &sink)

@@ -324,6 +324,41 @@ private slots:
         QCOMPARE(jsonOf(dl[4]).value("fields").toObject().value("voltage_v").toDouble(), 24.0);
     }
 
+    void decodeShowsOurMultiTorqueFrame()
+    {
+        // The tool's own 0x280 (docs/CAN.md section 4.2): a request of no drive, every slot.
+        RecordingHeader h = lk::testsupport::testHeader();
+        h.linkKind = LinkKind::Can;
+        h.linkDescription = QStringLiteral("virtualcan:can0 @ 1000000");
+        h.baud = 1000000;
+        h.context = {{1, protocol::Series::MG, protocol::Generation::V2_3}};
+        QByteArray file = RecordEncoder::encodeHeader(h);
+        RecordEncoder enc;
+        enc.append(RecordEvent::data(RecordEvent::Kind::Tx, 1'000'000,
+                                     canRecord(0x280, "64009CFF00000000")));
+        enc.append(RecordEvent::data(RecordEvent::Kind::Rx, 1'200'000,
+                                     canRecord(0x141, "A11E64000A001027")));
+        file += enc.takeBlock();
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("multi.lkrec"));
+        QVERIFY(writeFile(path, file));
+        const auto d = lkctl({QStringLiteral("decode"), path});
+        QVERIFY2(d.exitCode == 0, describeRun(d).toUtf8());
+        const auto dl = lines(d.out);
+        QCOMPARE(dl.size(), 2);
+        const QJsonObject frame = jsonOf(dl[0]);
+        QCOMPARE(frame.value("command").toString(), QStringLiteral("multi_torque"));
+        QCOMPARE(frame.value("direction").toString(), QStringLiteral("request"));
+        QCOMPARE(frame.value("wire").toString(), QStringLiteral("tx"));
+        QCOMPARE(frame.value("can_id").toString(), QStringLiteral("0x280"));
+        const QJsonObject fields = frame.value("fields").toObject();
+        QCOMPARE(fields.value("iq_a_1").toDouble(), 1.6);
+        QCOMPARE(fields.value("iq_a_2").toDouble(), -1.6);
+        QCOMPARE(fields.value("iq_a_3").toDouble(), 0.0);
+        QCOMPARE(fields.value("iq_a_4").toDouble(), 0.0);
+        QCOMPARE(jsonOf(dl[1]).value("direction").toString(), QStringLiteral("reply"));
+    }
+
     void candumpLogOutAndBackIn()
     {
         QTemporaryDir dir;

@@ -45,12 +45,33 @@ QString ControlLimits::load(int id, const bus::KnownMotor &motor,
         // Nothing to keep for this drive: show the defaults as a proposal, send nothing until
         // the user applies limits.
         m_soft = defaults;
-        m_problem = tr("Refused: the soft limits stored for %1 are damaged (%2). Check "
-                       "and apply the limits first; nothing sent.")
-                        .arg(driveTitle, error);
+        m_problem = damaged(driveTitle, error);
     }
     m_key = key;
     return status;
+}
+
+QString ControlLimits::damaged(const QString &driveTitle, const QString &error)
+{
+    return tr("Refused: the soft limits stored for %1 are damaged (%2). Check and apply the "
+              "limits first; nothing sent.")
+        .arg(driveTitle, error);
+}
+
+std::optional<safety::SoftLimits> ControlLimits::stored(DriveSettingsStore &store, int id,
+                                                        const bus::KnownMotor &motor,
+                                                        const QString &driveTitle, QString *why)
+{
+    const safety::SoftLimits defaults = safety::SoftLimits::defaults(motor.series);
+    QString error;
+    const std::optional<safety::SoftLimits> limits =
+        store.softLimits(DriveSettingsStore::driveKey(id, motor), defaults, &error);
+    if (!error.isEmpty()) {
+        if (why)
+            *why = damaged(driveTitle, error);
+        return std::nullopt;
+    }
+    return limits.value_or(defaults);
 }
 
 void ControlLimits::apply(int id, const bus::KnownMotor &motor, const safety::SoftLimits &limits)

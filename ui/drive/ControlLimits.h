@@ -38,6 +38,12 @@ public:
     /// to show when stored limits broke under the drive shown (its limits in force stay).
     QString load(int id, const bus::KnownMotor &motor, std::optional<protocol::Series> series,
                  const QString &driveTitle);
+    /// The soft limits stored for drive `id` in `store` as load() takes them (the series'
+    /// defaults when none are stored); nullopt with load()'s refusal in `why` when they are
+    /// damaged. For a drive the view does not show (the multi-motor torque panel's others).
+    static std::optional<safety::SoftLimits> stored(DriveSettingsStore &store, int id,
+                                                    const bus::KnownMotor &motor,
+                                                    const QString &driveTitle, QString *why);
     /// Applies and persists the soft limits of drive `id`.
     void apply(int id, const bus::KnownMotor &motor, const safety::SoftLimits &limits);
 
@@ -59,6 +65,9 @@ signals:
     void driveLimitsChanged();
 
 private:
+    /// The refusal while the stored limits of `driveTitle` are damaged (`error` says how).
+    static QString damaged(const QString &driveTitle, const QString &error);
+
     Sender m_send;
     std::unique_ptr<DriveSettingsStore> m_ownStore;
     DriveSettingsStore *m_store;

@@ -69,7 +69,7 @@ ControlView::ControlView(QWidget *parent)
     left->addWidget(m_status);
     m_plot = new LoopPlot(this);
     left->addWidget(m_plot, 1);
-    auto *right = new QVBoxLayout;
+    auto *right = m_side = new QVBoxLayout;
     right->addWidget(m_limitsEditor);
     right->addWidget(m_setpointPanel);
     right->addWidget(m_brake);

@@ -9,6 +9,8 @@
 #include <bus/TelemetrySample.h>
 #include <safety/SoftLimits.h>
 
+#include <QtWidgets/QBoxLayout>
+
 #include <functional>
 
 class QLabel;
@@ -98,6 +100,8 @@ public:
     JogPanel *jogPanel() const { return m_jog; }
     SetpointPanel *setpointPanel() const { return m_setpointPanel; }
     BrakePanel *brakePanel() const { return m_brake; }
+    /// Places `panel` in the right column under the brake (lkstudio's multi-motor torque).
+    void addSidePanel(QWidget *panel) { m_side->insertWidget(m_side->count() - 1, panel); }
     DriveStateCheck *driveState() const { return m_driveState; }
     ControlLimits *limits() const { return m_limitSet; }
     SetpointGenerator *generator() const { return m_generator; }
@@ -150,6 +154,7 @@ private:
     JogKeys *m_keys = nullptr; ///< the arrow keys as jog controls
     SetpointPanel *m_setpointPanel = nullptr;
     BrakePanel *m_brake = nullptr;
+    QVBoxLayout *m_side = nullptr; ///< the right column, its stretch last
     SetpointGenerator *m_generator = nullptr;
     LoopPlot *m_plot = nullptr;
     QLabel *m_title = nullptr;

@@ -5,11 +5,13 @@
 #include "SoftLimitsFeed.h"
 
 #include <bus/BusSession.h>
+#include <drive/ControlLimits.h>
 #include <drive/ControlView.h>
 #include <drive/DriveInfoView.h>
 #include <drive/DriveSettingsStore.h>
 #include <drive/EncoderResolutions.h>
 #include <drive/EncoderView.h>
+#include <drive/MultiTorquePanel.h>
 #include <drive/TuningView.h>
 #include <panels/BusModel.h>
 
@@ -25,7 +27,7 @@ DriveViews::DriveViews(BusModel *model, BusController *controller, TelemetryStor
           std::make_unique<IniDriveStore>(settingsFile.settings()), controller->session())),
       m_resolutions(new EncoderResolutions(this)), m_tuning(new TuningView(parentWidget)),
       m_control(new ControlView(parentWidget)), m_encoder(new EncoderView(parentWidget)),
-      m_info(new DriveInfoView(parentWidget))
+      m_info(new DriveInfoView(parentWidget)), m_multiTorque(new MultiTorquePanel(m_control))
 {
     m_tuning->setTelemetryStore(store);
     m_control->setTelemetryStore(store);
@@ -44,6 +46,16 @@ DriveViews::DriveViews(BusModel *model, BusController *controller, TelemetryStor
     m_tuning->setStepTestLimits([this](QString *why) { return m_control->limitsInForce(why); });
     connect(m_tuning, &TuningView::emergencyStopRequested, this,
             &DriveViews::emergencyStopRequested);
+    // Every drive of the frame is bounded as the Control view bounds the drive it shows: its
+    // limits in force there, the stored soft limits for the others.
+    m_multiTorque->setLimitsLookup([this](int id, const bus::KnownMotor &motor, QString *why) {
+        if (id == m_control->driveId())
+            return m_control->limitsInForce(why);
+        return ControlLimits::stored(*m_settings, id, motor,
+                                     MultiTorquePanel::driveTitle(id, motor), why);
+    });
+    m_multiTorque->setSession(session);
+    m_control->addSidePanel(m_multiTorque);
 
     connect(m_model, &BusModel::currentDriveChanged, this, &DriveViews::syncDrive);
     connect(m_model, &BusModel::drivesChanged, this, &DriveViews::syncDrive);
@@ -60,6 +72,7 @@ void DriveViews::haltLocalMotion(const QString &reason)
 {
     m_tuning->haltLocalMotion(reason);
     m_control->haltLocalMotion(reason);
+    m_multiTorque->reset(reason);
 }
 
 void DriveViews::syncDrive()
@@ -109,6 +122,8 @@ void DriveViews::syncConnection()
     m_control->setConnected(canSend, why);
     m_encoder->setConnected(canSend, why);
     m_info->setConnected(canSend, why);
+    m_multiTorque->setLink(m_model->link());
+    m_multiTorque->setConnected(canSend, why);
     if (!canSend)
         m_control->haltLocalMotion(m_model->isListening() ? why : tr("The bus is not connected."));
 }

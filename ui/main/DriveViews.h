@@ -18,6 +18,7 @@ class DriveInfoView;
 class DriveSettingsStore;
 class EncoderResolutions;
 class EncoderView;
+class MultiTorquePanel;
 class SettingsFile;
 class TelemetryStore;
 class TuningView;
@@ -38,6 +39,8 @@ public:
     ControlView *control() const { return m_control; }
     EncoderView *encoder() const { return m_encoder; }
     DriveInfoView *info() const { return m_info; }
+    /// The multi-motor torque frame (0x280) of old CAN drives 1..4, in the Control view.
+    MultiTorquePanel *multiTorque() const { return m_multiTorque; }
     /// Where per-drive soft limits, encoder resolutions and gear ratios are kept.
     DriveSettingsStore *settingsStore() const { return m_settings.get(); }
     /// The encoder resolutions the Encoder view uses; the dashboard shares them.
@@ -45,6 +48,7 @@ public:
 
     /// Stop what the views send by themselves (jog, setpoint generator) at once, before the
     /// emergency stop reaches the bus: a generator tick must not restart a motor after it.
+    /// The multi-motor torque panel unticks everything (it never sends on its own).
     void haltLocalMotion(const QString &reason);
 
 signals:
@@ -63,6 +67,7 @@ private:
     ControlView *m_control;
     EncoderView *m_encoder;
     DriveInfoView *m_info;
+    MultiTorquePanel *m_multiTorque;
     int m_shownId = 0;
     QString m_shownKey; ///< DriveSettingsStore::driveKey of the drive the views show
     /// What the views were last told of that drive's protocol: on CAN (no model, so the same

@@ -2,6 +2,7 @@
 
 #include "StatusColors.h"
 
+#include <protocol/CanLayout.h>
 #include <protocol/CanRecord.h>
 #include <protocol/Command.h>
 #include <protocol/FieldJson.h>
@@ -17,9 +18,38 @@ namespace {
 
 using Kind = bus::TrafficEvent::Kind;
 
+/// The iq of each slot (IDs 1..4) when `e` is the old CAN generation's multi-motor torque
+/// frame (0x280, docs/CAN.md section 4.2): one record on no drive's ID, so the frame the bus
+/// thread made of it is empty and the row is decoded here, from its bytes.
+std::optional<std::array<qint16, protocol::can::kMultiMotorDrives>>
+multiTorqueSlots(const bus::TrafficEvent &e)
+{
+    if ((e.kind != Kind::Sent && e.kind != Kind::Frame) || !e.context.onCan() ||
+        e.bytes.size() != protocol::CanRecord::kSize)
+        return std::nullopt;
+    const std::optional<protocol::CanRecord> r = protocol::CanRecord::decode(e.bytes);
+    if (!r || r->isExtended() || r->isError() || r->canId != protocol::can::kMultiMotorId)
+        return std::nullopt;
+    return protocol::can::decodeMultiMotorTorque(r->canData());
+}
+
+/// "ID 1 1.60 A, ID 2 -1.60 A, ID 3 0.00 A, ID 4 0.00 A": every slot, an empty one's 0 A too
+/// (a drive of that ID in Broadcast Mode takes it).
+QString multiTorqueText(const std::array<qint16, protocol::can::kMultiMotorDrives> &iq)
+{
+    QStringList parts;
+    for (size_t i = 0; i < iq.size(); ++i)
+        parts << TrafficModel::tr("ID %1 %2 A")
+                     .arg(i + 1)
+                     .arg(iq[i] * protocol::kIqCommandAmpsPerLsb, 0, 'f', 2);
+    return TrafficModel::tr("torque current of IDs 1..4: %1").arg(parts.join(QStringLiteral(", ")));
+}
+
 /// The fields summary of a Sent or Frame event, from the frame and context it carries.
 QString formatFields(const bus::TrafficEvent &e)
 {
+    if (const auto iq = multiTorqueSlots(e))
+        return multiTorqueText(*iq);
     const auto dir = e.kind == Kind::Sent
                          ? protocol::FrameDirection::Request
                          : e.frame.direction().value_or(protocol::FrameDirection::Reply);
@@ -151,6 +181,8 @@ QString TrafficModel::commandText(int row) const
         return QString::fromLatin1(protocol::parseErrorName(e.error));
     if (e.kind == Kind::Note)
         return {};
+    if (multiTorqueSlots(e))
+        return QStringLiteral("multi_torque"); // lkctl's name of it (docs/CLI.md)
     const auto *info = protocol::CommandTable::find(e.command);
     return info ? QString::fromLatin1(info->name) : protocol::CommandTable::codeText(e.command);
 }
@@ -298,6 +330,8 @@ QVariant TrafficModel::data(const QModelIndex &index, int role) const
         return e.kind == Kind::Sent ? QVariant(QBrush(StatusColors::text(StatusColors::Role::Sent)))
                                     : QVariant();
     case kCommandRole:
+        if (multiTorqueSlots(e)) // torque to each drive of it, answered with 0xA1 replies
+            return int(protocol::Command::Torque);
         return e.kind == Kind::Note || e.kind == Kind::Fault ? -1 : int(e.command);
     case kIdRole:
         return e.id;
@@ -306,6 +340,8 @@ QVariant TrafficModel::data(const QModelIndex &index, int role) const
     case Qt::ToolTipRole:
         // The column keeps CLI.md's names (what lkctl and the exports say); its words are
         // one hover away.
+        if (index.column() == Command && multiTorqueSlots(e))
+            return text::CommandTitle::multiTorque();
         if (index.column() == Command &&
             (e.kind == Kind::Sent || e.kind == Kind::Frame || e.kind == Kind::Timeout))
             return text::CommandTitle::withCode(protocol::Command(e.command));

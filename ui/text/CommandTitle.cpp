@@ -85,4 +85,9 @@ QString CommandTitle::withCode(Command command)
                                          protocol::CommandTable::codeText(quint8(command)));
 }
 
+QString CommandTitle::multiTorque()
+{
+    return tr("Multi-motor torque (0x280)");
+}
+
 } // namespace lk::text

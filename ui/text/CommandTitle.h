@@ -19,6 +19,9 @@ public:
     static QString name(protocol::Command command);
     /// "Multi-turn position with speed limit (0xA4)".
     static QString withCode(protocol::Command command);
+    /// "Multi-motor torque (0x280)": the old CAN generation's frame for drives 1..4
+    /// (docs/CAN.md section 4.2), which is no command of the table (it has no drive ID).
+    static QString multiTorque();
 };
 
 } // namespace lk::text

@@ -1,5 +1,8 @@
 #include "../../support/FileSizeLimit.h"
 
+#include <bus/MultiTorque.h>
+#include <bus/TrafficRecorder.h>
+
 #include <panels/BusModel.h>
 #include <panels/TrafficFilter.h>
 #include <panels/TrafficModel.h>
@@ -159,6 +162,7 @@ private slots:
     void canRowsInCandumpNotation();
     void canFaultFollowsTheLink();
     void candumpLogExport();
+    void multiTorqueFrameIsDecoded();
 };
 
 void tst_TrafficModel::columns()
@@ -492,6 +496,43 @@ void tst_TrafficModel::candumpLogExport()
     QVERIFY2(lines[1].startsWith(QStringLiteral("(1.500625) can1 141#9C")), qPrintable(lines[1]));
     for (const QString &line : lines) // what can-utils' candump -L writes, read back
         QVERIFY2(protocol::CanRecord::fromCandump(line).has_value(), qPrintable(line));
+}
+
+void tst_TrafficModel::multiTorqueFrameIsDecoded()
+{
+    // Our own 0x280 as the bus thread records it (CAN.md section 4.2): one record on no
+    // drive's ID, so its frame is empty; the row reads it from the bytes, every slot named.
+    protocol::DecodeContext oldCan = onCan();
+    oldCan.series = protocol::Series::MG;
+    const QByteArray bytes =
+        lk::bus::encodeMultiTorque({*protocol::build::torque(1, 1.6, oldCan).request,
+                                    *protocol::build::torque(2, -1.6, oldCan).request});
+    lk::bus::TrafficRecorder recorder;
+    recorder.setEnabled(true);
+    recorder.recordSent(0.25, bytes, oldCan);
+    TrafficModel m;
+    m.append(recorder.take(0.25));
+    QCOMPARE(m.rowCount(), 1);
+    QCOMPARE(m.data(m.index(0, TrafficModel::Raw)).toString(),
+             QStringLiteral("280#64009CFF00000000"));
+    QCOMPARE(m.data(m.index(0, TrafficModel::Command)).toString(), QStringLiteral("multi_torque"));
+    QCOMPARE(m.data(m.index(0, TrafficModel::Command), Qt::ToolTipRole).toString(),
+             QStringLiteral("Multi-motor torque (0x280)"));
+    QCOMPARE(m.data(m.index(0, TrafficModel::Fields)).toString(),
+             QStringLiteral("torque current of IDs 1..4: ID 1 1.60 A, ID 2 -1.60 A, ID 3 0.00 A, "
+                            "ID 4 0.00 A"));
+    QCOMPARE(m.data(m.index(0, TrafficModel::Id)), QVariant()); // no one drive's
+    // The command filter's torque shows it with the replies it draws.
+    QCOMPARE(m.data(m.index(0, 0), TrafficModel::kCommandRole).toInt(),
+             int(protocol::Command::Torque));
+    QCOMPARE(m.exportLine(0), QStringLiteral("280#64009CFF00000000  # 0.250000 TX multi_torque: "
+                                             "torque current of IDs 1..4: ID 1 1.60 A, ID 2 "
+                                             "-1.60 A, ID 3 0.00 A, ID 4 0.00 A"));
+    // The same bytes from an RS485 context are no CAN record: not decoded as one.
+    TrafficEvent rs485 = m.event(0);
+    rs485.context = {};
+    m.append({rs485});
+    QVERIFY(m.commandText(1) != QLatin1String("multi_torque"));
 }
 
 QTEST_MAIN(tst_TrafficModel)
