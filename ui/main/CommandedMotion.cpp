@@ -37,10 +37,19 @@ CommandedMotion::CommandedMotion(QObject *parent) : QObject(parent) {}
 void CommandedMotion::setSession(bus::BusSession *session)
 {
     disconnect(m_connection);
+    disconnect(m_multiTorqueConnection);
     m_session = session;
-    if (session)
-        m_connection =
-            connect(session, &bus::BusSession::requestCompleted, this, &CommandedMotion::observe);
+    if (!session)
+        return;
+    m_connection =
+        connect(session, &bus::BusSession::requestCompleted, this, &CommandedMotion::observe);
+    // A multi-motor torque frame sets each drive it names going as a torque command would:
+    // quitting and the link-loss warnings must know them too.
+    m_multiTorqueConnection = connect(session, &bus::BusSession::multiTorqueCompleted, this,
+                                      [this](const bus::MultiTorqueResult &frame) {
+                                          for (const bus::RequestResult &d : frame.drives)
+                                              observe(d);
+                                      });
 }
 
 std::optional<CommandedMotion::Entry> CommandedMotion::last(int id) const

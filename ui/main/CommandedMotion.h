@@ -51,6 +51,7 @@ signals:
 private:
     QPointer<bus::BusSession> m_session;
     QMetaObject::Connection m_connection;
+    QMetaObject::Connection m_multiTorqueConnection;
     QMap<int, Entry> m_entries;
 };
 

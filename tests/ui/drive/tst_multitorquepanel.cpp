@@ -224,6 +224,8 @@ void tst_MultiTorquePanel::sendWithinLimitsMovesTheDrivesAndSaysWhoAnswered()
         QVERIFY2(panel()->replyText(id).startsWith(QStringLiteral("iq ")) &&
                      panel()->replyText(id).contains(QStringLiteral("dps")),
                  qPrintable(panel()->replyText(id)));
+    // Quitting and the link-loss warnings know both drives are under torque.
+    QCOMPARE(m_window->commandedMotion()->movingIds(), (QVector<int>{1, 2}));
     // Nothing repeats it on its own.
     QTest::qWait(500);
     QCOMPARE(torques(1), 1);
@@ -244,6 +246,7 @@ void tst_MultiTorquePanel::sendWithinLimitsMovesTheDrivesAndSaysWhoAnswered()
                              kWaitMs);
     QVERIFY(panel()->statusText().startsWith(QStringLiteral("Sent Motor Stop (0x81) to drive(s) "
                                                             "1, 2.")));
+    QTRY_VERIFY_WITH_TIMEOUT(m_window->commandedMotion()->movingIds().isEmpty(), kWaitMs);
 }
 
 void tst_MultiTorquePanel::overTheSoftLimitIsRefusedAndSendsNothing()
