@@ -1139,6 +1139,10 @@
         <source>Write control parameter to RAM</source>
         <translation>写控制参数到 RAM</translation>
     </message>
+    <message>
+        <source>Multi-motor torque (0x280)</source>
+        <translation>多电机转矩（0x280）</translation>
+    </message>
 </context>
 <context>
     <name>lk::text::VerdictText</name>
@@ -4781,6 +4785,153 @@ not read</source>
     </message>
 </context>
 <context>
+    <name>lk::ui::MultiTorquePanel</name>
+    <message>
+        <source>Send</source>
+        <translation>发送</translation>
+    </message>
+    <message>
+        <source>One frame (0x280) with the torque of every ticked drive, each checked against its limits first; sent once, never repeated. The drives must be in their Broadcast Mode (set with the vendor&apos;s tool).</source>
+        <translation>一帧（0x280）携带每个已勾选驱动器的转矩，发送前逐个按其限值检查；只发送一次，从不重复。驱动器须处于广播模式（用厂商工具设置）。</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>停止</translation>
+    </message>
+    <message>
+        <source>Motor Stop (0x81) to every drive of the last frame</source>
+        <translation>向上一帧的每个驱动器发送电机停止（0x81）</translation>
+    </message>
+    <message>
+        <source>%1 Nothing is ticked now and every torque is back to 0 A.</source>
+        <translation>%1 现已全部取消勾选，每个转矩都已恢复为 0 A。</translation>
+    </message>
+    <message>
+        <source>The connection changed: nothing is ticked now and every torque is back to 0 A.</source>
+        <translation>连接已改变：现已全部取消勾选，每个转矩都已恢复为 0 A。</translation>
+    </message>
+    <message>
+        <source>Drive %1 (%2)</source>
+        <translation>驱动器 %1（%2）</translation>
+    </message>
+    <message>
+        <source>Drive %1</source>
+        <translation>驱动器 %1</translation>
+    </message>
+    <message>
+        <source>no reply yet</source>
+        <translation>尚无应答</translation>
+    </message>
+    <message>
+        <source>CAN generation not known: select drive %1 in the drive list and choose its series and CAN generation (old: 0x140 replies) below it</source>
+        <translation>CAN 代次未知：在驱动器列表中选中驱动器 %1，并在列表下方选择其系列和 CAN 代次（旧版：0x140 应答）</translation>
+    </message>
+    <message>
+        <source>CAN V2.36 documents no multi-motor frame</source>
+        <translation>CAN V2.36 文档中没有多电机帧</translation>
+    </message>
+    <message>
+        <source>series not known: select drive %1 in the drive list and choose its series below it</source>
+        <translation>系列未知：在驱动器列表中选中驱动器 %1，并在列表下方选择其系列</translation>
+    </message>
+    <message>
+        <source>Torque current of drive %1: at most %2 A either way (its limits)</source>
+        <translation>驱动器 %1 的转矩电流：正反向最大 %2 A（其限值）</translation>
+    </message>
+    <message>
+        <source>No such frame on RS485: the multi-motor torque frame (0x280) is a CAN frame of the old generation.</source>
+        <translation>RS485 上没有此帧：多电机转矩帧（0x280）是旧版 CAN 的帧。</translation>
+    </message>
+    <message>
+        <source>No drive of ID 1..4 is on the bus: the frame (0x280) has slots for IDs 1..4 only.</source>
+        <translation>总线上没有 ID 1..4 的驱动器：该帧（0x280）只有 ID 1..4 的槽位。</translation>
+    </message>
+    <message>
+        <source>The CAN generation of drive %1 is not known: select it in the drive list and choose its series and CAN generation (old: 0x140 replies) below it.</source>
+        <translation>驱动器 %1 的 CAN 代次未知：在驱动器列表中选中它，并在列表下方选择其系列和 CAN 代次（旧版：0x140 应答）。</translation>
+    </message>
+    <message>
+        <source>Drive %1 speaks CAN V2.36, which documents no multi-motor frame (0x280).</source>
+        <translation>驱动器 %1 使用 CAN V2.36，其文档中没有多电机帧（0x280）。</translation>
+    </message>
+    <message>
+        <source>Disconnected: nothing can be sent.</source>
+        <translation>未连接：无法发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Refused: drive %1: %2. Nothing sent.</source>
+        <translation>已拒绝：驱动器 %1：%2。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>drive %1 %2 A</source>
+        <translation>驱动器 %1 %2 A</translation>
+    </message>
+    <message>
+        <source>Multi-motor torque (0x280) handed to the bus: %1. Waiting for the replies…</source>
+        <translation>多电机转矩（0x280）已交给总线：%1。正在等待应答…</translation>
+    </message>
+    <message>
+        <source>Nothing is ticked: tick the drives the frame is for. Nothing sent.</source>
+        <translation>没有勾选任何驱动器：请勾选该帧要发给的驱动器。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Refused: drive %1 is on the bus, would get 0 A from this frame (it has a slot for each of IDs 1..4) and cannot be ticked: %2. Nothing sent.</source>
+        <translation>已拒绝：驱动器 %1 在总线上，会从此帧得到 0 A（该帧为 ID 1..4 各有一个槽位），且无法勾选：%2。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Refused: drive %1 is on the bus and would get 0 A from this frame (it has a slot for each of IDs 1..4). Tick drive %1 with 0 A if zero torque is meant. Nothing sent.</source>
+        <translation>已拒绝：驱动器 %1 在总线上，会从此帧得到 0 A（该帧为 ID 1..4 各有一个槽位）。如确实要零转矩，请勾选驱动器 %1 并设为 0 A。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Refused: the CAN generation of drive %1 is not known: choose it below the drive list. Nothing sent.</source>
+        <translation>已拒绝：驱动器 %1 的 CAN 代次未知：请在驱动器列表下方选择。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Refused: drive %1 speaks CAN V2.36, which documents no multi-motor frame. Nothing sent.</source>
+        <translation>已拒绝：驱动器 %1 使用 CAN V2.36，其文档中没有多电机帧。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Refused: the series of drive %1 is not known: choose it below the drive list. Nothing sent.</source>
+        <translation>已拒绝：驱动器 %1 的系列未知：请在驱动器列表下方选择。未发送任何内容。</translation>
+    </message>
+    <message>
+        <source>Refused: %1</source>
+        <translation>已拒绝：%1</translation>
+    </message>
+    <message>
+        <source>Refused by the bus: %1</source>
+        <translation>被总线拒绝：%1</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>未发送：%1</translation>
+    </message>
+    <message>
+        <source>iq %1 A, %2 dps, %3 °C</source>
+        <translation>iq %1 A，%2 dps，%3 °C</translation>
+    </message>
+    <message>
+        <source>no reply to the last frame</source>
+        <translation>上一帧无应答</translation>
+    </message>
+    <message>
+        <source>Sent multi-motor torque (0x280): %1.</source>
+        <translation>已发送多电机转矩（0x280）：%1。</translation>
+    </message>
+    <message>
+        <source>Answered: drive(s) %1.</source>
+        <translation>已应答：驱动器 %1。</translation>
+    </message>
+    <message>
+        <source>No reply from drive(s) %1 (not in Broadcast Mode, or absent): they may have acted on it all the same; Stop or Esc stops them.</source>
+        <translation>驱动器 %1 无应答（未处于广播模式，或不存在）：它们仍可能已执行该帧；按“停止”或 Esc 使其停止。</translation>
+    </message>
+    <message>
+        <source>Sent Motor Stop (0x81) to drive(s) %1.</source>
+        <translation>已向驱动器 %1 发送电机停止（0x81）。</translation>
+    </message>
+</context>
+<context>
     <name>lk::ui::OverviewModel</name>
     <message>
         <source>At the output shaft when the motor name gives a gear ratio, else at the rotor</source>
@@ -6743,6 +6894,14 @@ not read</source>
     <message>
         <source>Raw bytes</source>
         <translation>原始字节</translation>
+    </message>
+    <message>
+        <source>ID %1 %2 A</source>
+        <translation>ID %1 %2 A</translation>
+    </message>
+    <message>
+        <source>torque current of IDs 1..4: %1</source>
+        <translation>ID 1..4 的转矩电流：%1</translation>
     </message>
 </context>
 <context>
