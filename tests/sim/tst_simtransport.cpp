@@ -23,6 +23,19 @@ std::unique_ptr<SimTransport> makeTransport(const char *spec = "1:MF,2:MS,3:MG")
         SimBus::fromSpec(*sim::SimBusSpec::parse(QString::fromLatin1(spec))));
 }
 
+/// An open transport answering after `replyDelay` s, plus the wire time of `baud` (0: none).
+std::unique_ptr<SimTransport> openTransport(double replyDelay, int baud)
+{
+    auto t = makeTransport();
+    t->setReplyDelay(replyDelay);
+    if (baud > 0) {
+        t->setBaud(baud);
+        t->setWireTimeEmulation(true);
+    }
+    t->open();
+    return t;
+}
+
 const QByteArray kRead1 = hex("3E 9C 01 00 DB");
 } // namespace
 
@@ -133,13 +146,7 @@ void tst_SimTransport::delayHonoured()
     QFETCH(double, replyDelay);
     QFETCH(int, baud);
     QFETCH(double, expectedMin);
-    auto t = makeTransport();
-    t->setReplyDelay(replyDelay);
-    if (baud > 0) {
-        t->setBaud(baud);
-        t->setWireTimeEmulation(true);
-    }
-    t->open();
+    auto t = openTransport(replyDelay, baud);
     qint64 arrivedNs = -1;
     QElapsedTimer clock;
     connect(t.get(), &Transport::bytesReceived, this, [&] { arrivedNs = clock.nsecsElapsed(); });
@@ -170,13 +177,7 @@ void tst_SimTransport::waitsWithoutSpinning()
 {
     QFETCH(double, replyDelay);
     QFETCH(int, baud);
-    auto t = makeTransport();
-    t->setReplyDelay(replyDelay);
-    if (baud > 0) {
-        t->setBaud(baud);
-        t->setWireTimeEmulation(true);
-    }
-    t->open();
+    auto t = openTransport(replyDelay, baud);
     QSignalSpy bytes(t.get(), &Transport::bytesReceived);
     constexpr int kRounds = 50;
     const int before = t->wakeups();
