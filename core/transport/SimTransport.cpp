@@ -2,8 +2,6 @@
 
 #include <QtCore/QCoreApplication>
 
-#include "PreciseWake.h"
-
 #include "sim/SimBus.h"
 #include "sim/SimCanFront.h"
 
@@ -25,15 +23,14 @@ constexpr int kHousekeepingMs = 100;
 } // namespace
 
 SimTransport::SimTransport(std::unique_ptr<sim::SimBus> bus, QObject *parent)
-    : Transport(parent), m_bus(std::move(bus)), m_wake(new PreciseWake(this)),
-      m_timer(new QTimer(this)), m_housekeeping(new QTimer(this))
+    : Transport(parent), m_bus(std::move(bus)), m_timer(new QTimer(this)),
+      m_housekeeping(new QTimer(this))
 {
     Q_ASSERT(m_bus);
     m_clock.start();
     m_timer->setSingleShot(true);
     m_timer->setTimerType(Qt::PreciseTimer);
     connect(m_timer, &QTimer::timeout, this, &SimTransport::deliverDue);
-    connect(m_wake, &PreciseWake::woke, this, &SimTransport::deliverDue);
     m_housekeeping->setInterval(kHousekeepingMs);
     connect(m_housekeeping, &QTimer::timeout, this, &SimTransport::housekeeping);
 }
@@ -127,7 +124,6 @@ void SimTransport::close()
 {
     m_pending.clear();
     m_timer->stop();
-    m_wake->cancel();
     m_housekeeping->stop();
     setState(State::Closed);
 }
@@ -170,15 +166,9 @@ void SimTransport::schedule()
 {
     if (m_pending.empty()) {
         m_timer->stop();
-        m_wake->cancel();
         return;
     }
     const qint64 remaining = m_pending.front().dueNs - m_clock.nsecsElapsed();
-    if (remaining > 0 && m_wake->isValid()) {
-        m_timer->stop();
-        m_wake->wakeIn(remaining); // QElapsedTimer and the timerfd share CLOCK_MONOTONIC
-        return;
-    }
     if (remaining >= kNsPerMs) {
         // Whole milliseconds only, so the timer never fires late; the rest is polled.
         m_timer->start(static_cast<int>(remaining / kNsPerMs));
@@ -204,7 +194,6 @@ void SimTransport::postCheck()
 
 void SimTransport::deliverDue()
 {
-    ++m_wakeups;
     while (m_state == State::Open && !m_pending.empty() &&
            m_pending.front().dueNs <= m_clock.nsecsElapsed()) {
         const QByteArray bytes = m_pending.front().bytes;
@@ -229,7 +218,6 @@ void SimTransport::goDisconnected()
 {
     m_pending.clear();
     m_timer->stop();
-    m_wake->cancel();
     m_housekeeping->stop();
     // The cause first, as a serial port says it: the state's reason then names it.
     emit errorOccurred(
