@@ -75,6 +75,7 @@ QString FreqCommand::usage() const
                "fast as the bus answers: each frequency a whole number of cycles, the first one\n"
                "left to settle. Each reply is a sample; each frequency is fitted on the\n"
                "samples' real times. Frequencies above a quarter of the sample rate reached\n"
+               "(a sixteenth for the position loop, measured through the replies' speed)\n"
                "are dropped (reason above_resolution). At the end the gains and acceleration\n"
                "read go back to RAM and the drive returns to the speed it had. Ctrl-C stops at\n"
                "once: motor off, the settings read back in RAM (exit 1). Nothing is written\n"
@@ -268,8 +269,7 @@ void FreqCommand::printJson(Console &console, const Plan &plan, const FrequencyS
         .real(QStringLiteral("amplitude"), plan.spec.amplitude)
         .real(QStringLiteral("operating_point"), r.spec.centre())
         .real(QStringLiteral("sample_rate_hz"), std::round(r.response.sampleRateHz * 10) / 10)
-        .real(QStringLiteral("resolved_hz"),
-              std::round(tuning::FrequencyResponse::resolvedHz(r.response.sampleRateHz) * 10) / 10)
+        .real(QStringLiteral("resolved_hz"), std::round(r.response.resolvedHz() * 10) / 10)
         .raw(QStringLiteral("points"), TuningJson::points(r.response))
         .raw(QStringLiteral("dropped"), TuningJson::dropped(r.response));
     optionalReal(o, QStringLiteral("bandwidth_hz"), f.bandwidthHz, 0.01);
@@ -302,11 +302,10 @@ void FreqCommand::printText(Console &console, const Plan &plan, const FrequencyS
                             .arg(TuningJson::speedGainsText(*r.gains)));
     else if (r.gains)
         console.outLine(QStringLiteral("Gains: %1.").arg(TuningJson::speedGainsText(*r.gains)));
-    console.outLine(
-        QStringLiteral("Sent %1 setpoints; %2 samples/s, so up to %3 Hz is resolved.")
-            .arg(r.sent)
-            .arg(r.response.sampleRateHz, 0, 'f', 1)
-            .arg(tuning::FrequencyResponse::resolvedHz(r.response.sampleRateHz), 0, 'f', 1));
+    console.outLine(QStringLiteral("Sent %1 setpoints; %2 samples/s, so up to %3 Hz is resolved.")
+                        .arg(r.sent)
+                        .arg(r.response.sampleRateHz, 0, 'f', 1)
+                        .arg(r.response.resolvedHz(), 0, 'f', 1));
     console.outLine(QStringLiteral("      Hz       dB      deg  quality"));
     for (const tuning::FrequencyPoint &p : r.response.points)
         console.outLine(QStringLiteral("%1 %2 %3 %4")

@@ -22,7 +22,7 @@ struct FrequencyPoint {
 
 /// Why a planned frequency has no point.
 enum class DroppedReason {
-    AboveResolution, ///< fewer than kSamplesPerPeriod samples per period at the achieved rate
+    AboveResolution, ///< fewer than samplesPerPeriod samples per period at the achieved rate
     TooFewSamples,   ///< the window held fewer than SineFit::kMinSamples samples
     NoInput,         ///< the setpoints did not cover the window (a stop, lost replies)
 };
@@ -49,12 +49,20 @@ struct FrequencyResponse {
     QVector<FrequencyPoint> points;
     QVector<DroppedFrequency> dropped;
     double sampleRateHz = 0;
+    /// The samples a period this response needed (kSpeedSamplesPerPeriod or
+    /// kPositionSamplesPerPeriod): frequencies above resolvedHz() are not resolved, not shown.
+    double samplesPerPeriod = kSpeedSamplesPerPeriod;
 
-    /// A stepped sine needs this many samples per period at least: frequencies above
-    /// sampleRateHz / kSamplesPerPeriod are not resolved and not shown.
-    static constexpr double kSamplesPerPeriod = 4;
-    /// The highest frequency the rate resolves.
-    static double resolvedHz(double sampleRateHz) { return sampleRateHz / kSamplesPerPeriod; }
+    /// A stepped sine of the speed loop needs this many samples per period at least.
+    static constexpr double kSpeedSamplesPerPeriod = 4;
+    /// The position loop is measured through the speed its replies carry, and each setpoint
+    /// step makes the speed jump: a reply samples that jump at a moment the bus's timing
+    /// decides. With few samples a period the jumps dominate the fit and the magnitude reads
+    /// high (lksim's MF: 0.1 dB at 12 samples a period on a loaded host, 7 to 9 dB at 8.6)
+    /// while the phase holds. Sixteen keeps the jumps small beside the sine.
+    static constexpr double kPositionSamplesPerPeriod = 16;
+    /// The highest frequency the rate reached resolves.
+    double resolvedHz() const { return sampleRateHz / samplesPerPeriod; }
 
     /// One point: the held input's component (SineFit::ofHeld) and the sampled output's
     /// (SineFit::fitSampled) over [from, to]; nullopt (and `why`) when either has none.

@@ -287,6 +287,7 @@ std::optional<FrequencyRun> FrequencyRunFile::fromJson(const QJsonObject &root,
     if (!gainsOk)
         return std::nullopt;
     run.response.sampleRateHz = root.value("sample_rate_hz").toDouble();
+    run.response.samplesPerPeriod = s.samplesPerPeriod();
     const bool pointsOk =
         readArray(root, "points", pointFields(), error, [&](const QJsonObject &o, const QString &) {
             FrequencyPoint p;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "FrequencyResponse.h"
 #include "StepTrace.h"
 
 #include <bus/SetpointWaveform.h>
@@ -50,6 +51,13 @@ struct FrequencySweepSpec {
     {
         return loop == SweepLoop::Position ? operatingPoint.value_or(0)
                                            : operatingPoint.value_or(2 * amplitude);
+    }
+    /// The samples a period the loop's response needs (FrequencyResponse explains the
+    /// position loop's larger figure).
+    double samplesPerPeriod() const
+    {
+        return loop == SweepLoop::Position ? FrequencyResponse::kPositionSamplesPerPeriod
+                                           : FrequencyResponse::kSpeedSamplesPerPeriod;
     }
     /// The fastest the setpoint moves: the amplitude (speed) or 2 pi toHz x amplitude
     /// (position: dps), which the soft speed limit bounds.

@@ -380,10 +380,11 @@ void FrequencySweepRunner::analyse()
         return;
     const double span = m_result.time.last() - m_result.time.first();
     r.sampleRateHz = span > 0 ? (n - 1) / span : 0;
+    r.samplesPerPeriod = m_spec.samplesPerPeriod();
     // The stream's time 0 is its first setpoint, which the first reply answers.
     const double origin = m_result.time.first();
     for (const SweepSegment &s : m_plan.segments()) {
-        if (s.hz > FrequencyResponse::resolvedHz(r.sampleRateHz)) {
+        if (s.hz > r.resolvedHz()) {
             r.dropped.append({s.hz, DroppedReason::AboveResolution});
             continue;
         }

@@ -145,7 +145,7 @@ void BodeChart::fitAxes()
         }
     }
     if (!m_runs.isEmpty() && droppedAboveResolution(m_runs.last().response))
-        hz.take(FrequencyResponse::resolvedHz(m_runs.last().response.sampleRateHz));
+        hz.take(m_runs.last().response.resolvedHz());
     if (hz.empty) {
         hz = {1, 100, false};
         db = {-10, 2, false};
@@ -252,7 +252,7 @@ void BodeChart::addMarkers()
                          tr("-3 dB bandwidth"));
     }
     if (droppedAboveResolution(newest.response)) {
-        const double limit = FrequencyResponse::resolvedHz(newest.response.sampleRateHz);
+        const double limit = newest.response.resolvedHz();
         m_resolutionLine = verticalLine(m_magnitudeView->chart(), limit, palette().text().color(),
                                         Qt::DashLine, tr("Resolution limit"));
         verticalLine(m_phaseView->chart(), limit, palette().text().color(), Qt::DashLine,
@@ -272,10 +272,8 @@ QString BodeChart::resolutionText() const
     }
     return tr("Dashed line: %1 Hz, the highest frequency %2 samples/s resolve (%3 samples a "
               "period at least). Not shown above it: %4 Hz.")
-        .arg(Format::number(FrequencyResponse::resolvedHz(r.sampleRateHz), 1),
-             Format::number(r.sampleRateHz, 0),
-             Format::number(FrequencyResponse::kSamplesPerPeriod, 0),
-             dropped.join(QStringLiteral(", ")));
+        .arg(Format::number(r.resolvedHz(), 1), Format::number(r.sampleRateHz, 0),
+             Format::number(r.samplesPerPeriod, 0), dropped.join(QStringLiteral(", ")));
 }
 
 QStringList BodeChart::legendLabels() const

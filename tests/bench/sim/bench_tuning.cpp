@@ -145,7 +145,7 @@ bool bode(bus::BusSession &session, const Drive &d, bench::JsonLine &json)
     const QString k = (position ? QStringLiteral("freqpos_") : QStringLiteral("freq_")) + key(d) +
                       QLatin1Char('_');
     json.add(k + "sample_rate_hz", r->response.sampleRateHz, 1);
-    json.add(k + "resolved_hz", FrequencyResponse::resolvedHz(r->response.sampleRateHz), 1);
+    json.add(k + "resolved_hz", r->response.resolvedHz(), 1);
     json.addInt(k + "points", r->response.points.size());
     json.add(k + "max_db_error", maxDb, 2);
     json.add(k + "max_deg_error", maxDeg, 1);

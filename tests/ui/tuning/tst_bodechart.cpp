@@ -17,13 +17,15 @@ using lk::ui::BodeRun;
 namespace {
 
 /// A first-order lag with its corner at `cornerHz`, measured at `hz`, sampled at `rateHz`:
-/// what the rate does not resolve is dropped, as the runner drops it.
-FrequencyResponse lag(double cornerHz, const QVector<double> &hz, double rateHz)
+/// what the rate does not resolve at `samplesPerPeriod` is dropped, as the runner drops it.
+FrequencyResponse lag(double cornerHz, const QVector<double> &hz, double rateHz,
+                      double samplesPerPeriod = FrequencyResponse::kSpeedSamplesPerPeriod)
 {
     FrequencyResponse r;
     r.sampleRateHz = rateHz;
+    r.samplesPerPeriod = samplesPerPeriod;
     for (double f : hz) {
-        if (f > FrequencyResponse::resolvedHz(rateHz)) {
+        if (f > r.resolvedHz()) {
             r.dropped.append({f, DroppedReason::AboveResolution});
             continue;
         }
@@ -94,6 +96,19 @@ void tst_BodeChart::resolutionLimitIsALineWithItsReason()
     QVERIFY2(text.contains(QStringLiteral("100.0 Hz")), qPrintable(text));
     QVERIFY2(text.contains(QStringLiteral("400 samples/s")), qPrintable(text));
     QVERIFY2(text.contains(QStringLiteral("300.0 Hz")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("4 samples a period")), qPrintable(text));
+
+    // A position loop's response needs 16 samples a period: its line sits at 25 Hz.
+    chart.setRuns({{QStringLiteral("Run 2"), Qt::blue,
+                    lag(10, {1, 10, 20, 40}, 400, FrequencyResponse::kPositionSamplesPerPeriod)}});
+    line = chart.resolutionLine();
+    QVERIFY(line);
+    QCOMPARE(line->at(0).x(), 25.0);
+    const QString position = chart.resolutionText();
+    QVERIFY2(position.contains(QStringLiteral("25.0 Hz")) &&
+                 position.contains(QStringLiteral("16 samples a period")) &&
+                 position.contains(QStringLiteral("40.0 Hz")),
+             qPrintable(position));
 }
 
 void tst_BodeChart::noLineWhenEverythingWasResolved()
