@@ -1,5 +1,6 @@
 #include "RequestText.h"
 
+#include <protocol/ControlParameter.h>
 #include <protocol/RequestBuilder.h>
 
 #include <QtCore/QHash>
@@ -102,6 +103,12 @@ QList<FieldSpec> specsFor(Command command, const FieldValues &values)
         if (param)
             specs.append(ProtocolFields::ofParam(*param));
     }
+    if (command == Command::WriteControlParam) {
+        const auto param =
+            ControlParamTable::fromName(values.value(QStringLiteral("control_param")).toLower());
+        if (param)
+            specs.append(ProtocolFields::ofControlParam(*param));
+    }
     return specs;
 }
 
@@ -149,6 +156,18 @@ BuildResult buildParamWrite(int id, const ParsedFields &p, bool rom)
     return build::writeParam(id, param, p.numbers.value(specs[0].id), rom);
 }
 
+BuildResult buildControlParamWrite(int id, const ParsedFields &p)
+{
+    const ControlParamId param =
+        *ControlParamTable::fromName(p.choices.value(FieldId::ControlParam));
+    const QList<FieldSpec> specs = ProtocolFields::ofControlParam(param);
+    if (ControlParamTable::info(param).layout == ControlParamLayout::Pid)
+        return build::writeControlParamPid(id, param, p.integers.value(specs[0].id),
+                                           p.integers.value(specs[1].id),
+                                           p.integers.value(specs[2].id));
+    return build::writeControlParam(id, param, p.numbers.value(specs[0].id));
+}
+
 BuildResult buildParsed(Command command, int id, const ParsedFields &p, const DecodeContext &drive)
 {
     const auto num = [&p](FieldId field) { return p.numbers.value(field); };
@@ -189,6 +208,11 @@ BuildResult buildParsed(Command command, int id, const ParsedFields &p, const De
     case Command::WriteParamRam:
     case Command::WriteParamRom:
         return buildParamWrite(id, p, command == Command::WriteParamRom);
+    case Command::ReadControlParam:
+        return build::readControlParam(
+            id, *ControlParamTable::fromName(p.choices.value(FieldId::ControlParam)));
+    case Command::WriteControlParam:
+        return buildControlParamWrite(id, p);
     case Command::Brake:
         return build::brake(id, brakeAction(p.choices.value(FieldId::Action)));
     default:

@@ -47,6 +47,7 @@ expect "multi-position" control 3 m
 expect "multi-torque" control m
 expect "increment_position increment_position_limited" encode incr
 expect "--speed-dps" encode speed --id 1 --speed-d
+expect "can can236" encode speed --link ca
 expect "MF MG MH MS" decode --series ""
 expect "all" off a
 expect "position" step 3 p
