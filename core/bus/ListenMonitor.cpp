@@ -6,6 +6,7 @@
 #include <protocol/CanRecordParser.h>
 #include <protocol/Reply.h>
 #include <protocol/Request.h>
+#include <protocol/Values.h>
 
 namespace lk::bus {
 
@@ -24,7 +25,10 @@ void ListenMonitor::restart(protocol::Link link)
     m_parser = protocol::makeFrameParser(link, protocol::LinkEnd::Host);
     if (auto *can = dynamic_cast<protocol::CanRecordParser *>(m_parser.get())) {
         can->setErrorFrameSink([this](const protocol::CanRecord &) { m_stats.canErrorFrame(); });
-        can->setOtherFrameSink([this](const protocol::CanRecord &) { m_stats.otherFrame(); });
+        can->setOtherFrameSink([this](const protocol::CanRecord &record) {
+            m_stats.otherFrame();
+            takeMultiTorque(record);
+        });
     }
     m_stats.setLink(link);
     m_pairing.setLink(link);
@@ -37,6 +41,7 @@ void ListenMonitor::feed(const QByteArray &bytes, int baud)
     m_stats.addBytes(bytes.size());
     // Every frame of a chunk arrived when the chunk did: that is all the host knows.
     const qint64 nowNs = m_clock->nowNs();
+    m_feedNs = nowNs;
     m_parser->feed(bytes, [this, nowNs](const protocol::ParseEvent &ev) { onEvent(ev, nowNs); });
 }
 
@@ -70,6 +75,7 @@ void ListenMonitor::onEvent(const protocol::ParseEvent &event, qint64 nowNs)
     if (out.role == PassivePairing::Outcome::Role::Reply && event.canId)
         noteCanGeneration(event);
     noteUnanswered(out.unanswered);
+    noteUnanswered(out.unansweredInGroup);
     const double time = static_cast<double>(nowNs) * 1e-9;
     switch (out.role) {
     case PassivePairing::Outcome::Role::Request:
@@ -88,6 +94,60 @@ void ListenMonitor::noteUnanswered(const std::optional<protocol::Frame> &request
 {
     if (request)
         m_stats.unanswered(*request);
+}
+
+void ListenMonitor::noteUnanswered(const QVector<protocol::Frame> &requests)
+{
+    for (const protocol::Frame &f : requests)
+        m_stats.unanswered(f);
+}
+
+void ListenMonitor::takeMultiTorque(const protocol::CanRecord &record)
+{
+    // Another master's multi-motor torque frame (docs/CAN.md 4.2): a torque for each of IDs
+    // 1..4, which each drive in its Broadcast Mode answers as a 0xA1. A slot is that master's
+    // torque command to a drive known on the old generation (V2.36 has no such frame); a slot
+    // of no drive seen is not counted, since nothing tells whether one is there.
+    if (record.canId != protocol::can::kMultiMotorId || record.isExtended() || record.isEcho())
+        return;
+    const auto iq = protocol::can::decodeMultiMotorTorque({record.canId, record.data});
+    if (!iq)
+        return;
+    // The Traffic view reads the frame from its record (TrafficModel: multi_torque).
+    protocol::ParseEvent seen;
+    seen.isFrame = true;
+    seen.bytes = record.encode();
+    seen.canId = record.canId;
+    m_diagnostics.recordParseEvent(seen);
+    const double time = static_cast<double>(m_feedNs) * 1e-9;
+    QVector<protocol::Frame> torques;
+    for (int slot = 0; slot < protocol::can::kMultiMotorDrives; ++slot) {
+        const int id = slot + 1;
+        if (!m_motors.all().contains(id))
+            continue;
+        const protocol::DecodeContext context = m_motors.decodeContext(id);
+        if (context.generation != protocol::Generation::V2_3)
+            continue;
+        protocol::Request request;
+        request.command = protocol::Command::Torque;
+        request.id = quint8(id);
+        protocol::TorqueCommand torque;
+        torque.iqRaw = (*iq)[slot];
+        torque.ampsPerLsb = protocol::iqCommandAmpsPerLsb(context);
+        request.payload = torque;
+        const protocol::can::CanEncodeResult data = protocol::can::encodeRequest(request, context);
+        const std::optional<protocol::Frame> frame =
+            data.data ? protocol::can::frameOf(*data.data) : std::nullopt;
+        if (!frame)
+            continue;
+        torques.append(*frame);
+        m_stats.request(*frame);
+        const KnownMotor known = m_motors.all().value(id);
+        if (std::optional<TelemetrySample> s =
+                TelemetrySample::fromRequest(request, known.series, known.generation, time))
+            m_telemetry.add(*s);
+    }
+    noteUnanswered(m_pairing.openGroup(torques, m_feedNs));
 }
 
 void ListenMonitor::takeRequest(const protocol::Frame &frame, double time)
@@ -124,6 +184,7 @@ ListenStatistics ListenMonitor::snapshot(int baud)
     const qint64 nowNs = m_clock->nowNs();
     m_pairing.setBaud(baud);
     noteUnanswered(m_pairing.expire(nowNs));
+    noteUnanswered(m_pairing.expireGroup(nowNs));
     return m_stats.snapshot(static_cast<double>(nowNs) * 1e-9, baud, m_pairing.counts());
 }
 

@@ -6,6 +6,7 @@
 #include "PassivePairing.h"
 #include "ReplyIntake.h"
 
+#include <protocol/CanRecord.h>
 #include <protocol/FrameParser.h>
 
 #include <QtCore/QByteArray>
@@ -26,7 +27,9 @@ class BusDiagnostics;
 /// and ListenStatistics counts what that master does. On CAN the link's records are parsed
 /// (CanRecordParser), the reply ID and layout tell requests from replies
 /// (PassivePairing::canDirections), a reply names its drive's generation
-/// (can::generationHint), and error frames are counted.
+/// (can::generationHint), error frames are counted, and another master's multi-motor torque
+/// frame (0x280) is a torque command to each known drive of the old generation it names,
+/// paired with their 0xA1 replies.
 class ListenMonitor : public QObject {
     Q_OBJECT
 public:
@@ -58,6 +61,8 @@ private:
     void takeReply(const protocol::Frame &frame, const std::optional<protocol::Frame> &request,
                    double time);
     void noteUnanswered(const std::optional<protocol::Frame> &request);
+    void noteUnanswered(const QVector<protocol::Frame> &requests);
+    void takeMultiTorque(const protocol::CanRecord &record);
 
     MotorRegistry &m_motors;
     TelemetryBatcher &m_telemetry;
@@ -68,6 +73,7 @@ private:
     std::unique_ptr<protocol::FrameParser> m_parser;
     PassivePairing m_pairing;
     ListenStatisticsCollector m_stats;
+    qint64 m_feedNs = 0; ///< when the chunk being parsed arrived
 };
 
 } // namespace lk::bus

@@ -11,6 +11,7 @@
 #include <protocol/Values.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace lk::bus {
 
@@ -72,6 +73,26 @@ bool PassivePairing::answersOpen(const protocol::Frame &frame, FrameDirection di
         return false;
     }
     return false;
+}
+
+QVector<protocol::Frame> PassivePairing::expireGroup(qint64 nowNs)
+{
+    if (m_group.isEmpty() || nowNs - m_groupTimeNs <= windowNs(quint8(Command::Torque)))
+        return {};
+    m_counts.unanswered += quint64(m_group.size());
+    return std::exchange(m_group, {});
+}
+
+QVector<protocol::Frame> PassivePairing::openGroup(const QVector<protocol::Frame> &torques,
+                                                   qint64 nowNs)
+{
+    // The drives of the frame before answer within their window: any still silent at the next
+    // frame (a master repeats it every cycle) did not answer it.
+    m_counts.unanswered += quint64(m_group.size());
+    QVector<protocol::Frame> silent = std::exchange(m_group, torques);
+    m_groupTimeNs = nowNs;
+    m_counts.requests += quint64(torques.size());
+    return silent;
 }
 
 PassivePairing::Outcome PassivePairing::take(const protocol::ParseEvent &event, qint64 nowNs)
@@ -192,6 +213,19 @@ PassivePairing::Outcome PassivePairing::takeFrame(const protocol::ParseEvent &ev
         out.request = std::move(m_open->frame);
         out.latencyNs = nowNs - m_open->timeNs;
         m_open.reset();
+        ++m_counts.replies;
+        ++m_counts.paired;
+        return out;
+    }
+    out.unansweredInGroup = expireGroup(nowNs);
+    const auto inGroup = std::find_if(m_group.begin(), m_group.end(), [&f](const auto &t) {
+        return t.id == f.id && t.command == f.command;
+    });
+    if (direction == FrameDirection::Reply && inGroup != m_group.end()) {
+        out.role = Outcome::Role::Reply;
+        out.request = *inGroup;
+        out.latencyNs = nowNs - m_groupTimeNs;
+        m_group.erase(inGroup);
         ++m_counts.replies;
         ++m_counts.paired;
         return out;

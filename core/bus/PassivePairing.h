@@ -3,6 +3,7 @@
 #include <protocol/Frame.h>
 #include <protocol/StreamParser.h>
 
+#include <QtCore/QVector>
 #include <QtCore/QtGlobal>
 
 #include <optional>
@@ -49,6 +50,9 @@ public:
         /// The request that was open before this frame and is now known to be unanswered
         /// (not for an ambiguous echo frame nor after a fault: those are only counted).
         std::optional<protocol::Frame> unanswered;
+        /// The torques of a multi-motor frame (openGroup) whose drives stayed silent past
+        /// their reply window.
+        QVector<protocol::Frame> unansweredInGroup;
     };
     struct Counts {
         quint64 requests = 0;
@@ -89,8 +93,20 @@ public:
     /// Time passed without a frame: an open request silent for kSilenceNs (or its reply
     /// window, if longer) is unanswered (returned).
     std::optional<protocol::Frame> expire(qint64 nowNs);
+    /// Another master's multi-motor torque frame (CAN 0x280): each drive it names answers on
+    /// its own ID with the 0xA1 reply. `torques`: the 0xA1 request each drive expected to
+    /// answer takes it as, all counted as requests; a 0xA1 reply of one of them pairs with it
+    /// (another request may come between). Returns the torques of an earlier frame whose
+    /// drives have not answered: unanswered.
+    QVector<protocol::Frame> openGroup(const QVector<protocol::Frame> &torques, qint64 nowNs);
+    /// The open group's silent drives once its reply window has passed (counted unanswered).
+    QVector<protocol::Frame> expireGroup(qint64 nowNs);
     /// A new stream (the port reopened): nothing is open.
-    void reset() { m_open.reset(); }
+    void reset()
+    {
+        m_open.reset();
+        m_group.clear();
+    }
     const Counts &counts() const { return m_counts; }
     bool hasOpenRequest() const { return m_open.has_value(); }
 
@@ -110,6 +126,10 @@ private:
     void takeFault(const protocol::ParseEvent &event);
     qint64 windowNs(quint8 command) const;
     bool pastWindow(qint64 nowNs) const;
+
+    /// The open multi-motor frame's torques, one per drive still to answer, and its time.
+    QVector<protocol::Frame> m_group;
+    qint64 m_groupTimeNs = 0;
 
     std::optional<Open> m_open;
     Counts m_counts;

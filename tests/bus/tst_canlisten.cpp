@@ -112,6 +112,7 @@ private slots:
     void initTestCase() { registerBusMetaTypes(); }
     void decodesBothGenerations();
     void statisticsOnCan();
+    void anotherMastersMultiTorque();
     void listeningWorkerOnACanLink();
     void readOnlyCanTransportSendsNothing();
 };
@@ -171,6 +172,70 @@ void tst_CanListen::statisticsOnCan()
     QCOMPARE(s.perDrive.value(1).latency.medianMs, 0.25);
     // 23 data frames of 111 bits (unstuffed) at 1 Mbit/s in one second, plus the error frame.
     QCOMPARE(s.busLoad, 24 * 111 / 1e6);
+}
+
+void tst_CanListen::anotherMastersMultiTorque()
+{
+    // A robot controller commanding drives 1..4 with the old generation's 0x280 frame: each
+    // slot is its torque command to the drive of that ID, and each drive's 0xA1 reply pairs
+    // with it (docs/CAN.md 4.2: the vector "ID 1 +100, ID 2 -100").
+    Monitor m;
+    TrafficBatch traffic;
+    QObject::connect(&m.diagnostics, &BusDiagnostics::trafficCaptured,
+                     [&traffic](const TrafficBatch &b) { traffic += b; });
+    m.diagnostics.setTrafficCapture(true);
+    m.monitor.snapshot(1000000);
+    // Drives 1 and 2 are seen first (a state read each); 3 and 4 never are.
+    m.hear(record(0x141, "9C00000000000000"), 1.0);
+    m.hear(record(0x141, "9C1E64000A001027"), 1.25);
+    m.hear(record(0x142, "9C00000000000000"), 2.0);
+    m.hear(record(0x142, "9C1E64000A001027"), 2.25);
+    m.motors.setSeries(1, protocol::Series::MF);
+    m.motors.setSeries(2, protocol::Series::MG);
+    m.hear(record(0x280, "64009CFF00000000"), 3.0);
+    // Both answer in ID order: temp 30, iq +-100, 10 dps, encoder 10000.
+    m.hear(record(0x141, "A11E64000A001027"), 3.25);
+    m.hear(record(0x142, "A11E9CFF0A001027"), 3.5);
+    const TelemetrySample c1 = m.only(1, TelemetryField::CommandedIq);
+    const TelemetrySample c2 = m.only(2, TelemetryField::CommandedIq);
+    QVERIFY(c1.has(TelemetryField::CommandedIq) && c2.has(TelemetryField::CommandedIq));
+    QCOMPARE(c1.commandedIqA, 100 * 32.0 / 2000); // V2.3's scale: 1.60 A
+    QCOMPARE(c2.commandedIqA, -100 * 32.0 / 2000);
+    QCOMPARE(c1.time, 0.003);
+    for (int id : {3, 4}) // no drive seen there: no command to one
+        QVERIFY(!m.only(id, TelemetryField::CommandedIq).has(TelemetryField::CommandedIq));
+    // The replies are paired with their slots, not orphans; the speeds are the drives'.
+    QCOMPARE(m.monitor.counts().orphanReplies, quint64(0));
+    QCOMPARE(m.monitor.counts().paired, quint64(4));
+    QCOMPARE(m.monitor.counts().requests, quint64(4));
+    int replies = 0;
+    for (const TelemetrySample &s : m.samples)
+        replies += s.has(TelemetryField::Speed) && s.time > 0.0031 ? 1 : 0;
+    QCOMPARE(replies, 2);
+    // Drive 2 stays silent on the next frame: once its window has passed it is the other
+    // master's timeout, named by drive and command; drive 1's answer pairs.
+    m.hear(record(0x280, "0A00F6FF00000000"), 4.0);
+    m.hear(record(0x141, "A11E0A000A001027"), 4.25);
+    m.clock->setNs(qint64(1e9));
+    const ListenStatistics s = m.monitor.snapshot(1000000);
+    QCOMPARE(s.requests, quint64(6));
+    QCOMPARE(s.paired, quint64(5));
+    QCOMPARE(s.unanswered, quint64(1));
+    QCOMPARE(s.perDrive.value(2).unanswered, quint64(1));
+    QCOMPARE(s.perCommand.value(0xA1).requests, quint64(4));
+    QCOMPARE(s.perDrive.value(1).latency.medianMs, 0.25);
+    QCOMPARE(s.otherFrames, quint64(2)); // the 0x280 frames themselves, as before
+    // The Traffic view gets each 0x280 as a received frame with its record's bytes.
+    const auto multiTorques = [&traffic] {
+        int n = 0;
+        for (const TrafficEvent &e : traffic)
+            n += e.kind == TrafficEvent::Kind::Frame &&
+                         e.bytes == record(0x280, "64009CFF00000000") && e.context.onCan()
+                     ? 1
+                     : 0;
+        return n;
+    };
+    QTRY_COMPARE(multiTorques(), 1); // delivered every 50 ms
 }
 
 void tst_CanListen::listeningWorkerOnACanLink()
