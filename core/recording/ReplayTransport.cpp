@@ -132,9 +132,10 @@ void ReplayTransport::advance()
 void ReplayTransport::emitRecord(const RecordEvent &record)
 {
     m_positionNs = qMax(m_positionNs, record.timeNs);
-    if (record.kind == RecordEvent::Kind::Rx || record.kind == RecordEvent::Kind::Tx)
+    if (record.kind == RecordEvent::Kind::Rx || record.kind == RecordEvent::Kind::Tx) {
+        emit chunkPlayed(record.bytes, record.kind == RecordEvent::Kind::Tx);
         emit bytesReceived(record.bytes);
-    else
+    } else
         emit recordPlayed(record);
 }
 

@@ -69,6 +69,10 @@ public:
 signals:
     /// A link, context or dropped record was reached (a context sets the decode context).
     void recordPlayed(const lk::recording::RecordEvent &record);
+    /// A chunk of bytes was reached (also emitted as bytesReceived): `transmitted` when the
+    /// recording tool sent them, which a reader that tells its own commands from another
+    /// master's needs.
+    void chunkPlayed(const QByteArray &bytes, bool transmitted);
     void writeRefused(int bytes);
     /// The last record was played (or the damage that ends the file was reached).
     void finished();

@@ -8,9 +8,11 @@
 #include "LksimProcess.h"
 
 #include <QtCore/QFile>
+#include <QtCore/QHash>
 #include <QtCore/QJsonArray>
 #include <QtCore/QJsonDocument>
 #include <QtCore/QJsonObject>
+#include <QtCore/QSet>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QTest>
 
@@ -83,22 +85,35 @@ void tst_E2eCanTools::cleanup()
 
 void tst_E2eCanTools::monitorReadsBothGenerations()
 {
-    const CtlResult r = run({"monitor", "1", "2", "--count", "4", "--rate", "20", "--json",
+    const CtlResult r = run({"monitor", "1", "2", "--count", "8", "--rate", "20", "--json",
                              "--drives", kOld + "," + kNew});
     QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     const QList<QByteArray> lines = r.out.trimmed().split('\n');
-    QCOMPARE(lines.size(), 4); // --count counts rows: one per drive and round
+    QCOMPARE(lines.size(), 8); // --count counts rows: one per drive and round
     const QByteArray oldState = m_wire.last(0x141, 0x9A).data;
     const QByteArray newState = m_wire.last(0x182, 0x9A).data;
+    // A reply that came later than its timeout (lksim descheduled on a loaded host) leaves its
+    // values out of that row, never 0 (CSV.md): each value is checked where it is, and each
+    // drive must have brought every one of them in some round.
+    QHash<int, QSet<QString>> keys;
     for (const QByteArray &line : lines) {
         const QJsonObject o = jsonOf(line);
         const bool old = o.value("id").toInt() == 1;
         // Old CAN: 0.1 V in B3-B4, no bus current; V2.36: 0.01 V in B2-B3, bus current, state.
-        QCOMPARE(o.value("voltage_v").toDouble(),
-                 old ? leBytes(oldState, 3, 2, false) * 0.1 : leBytes(newState, 2, 2, true) * 0.01);
-        QCOMPARE(o.contains("bus_current_a"), !old);
-        QCOMPARE(o.contains("motor_on"), !old);
-        QVERIFY2(o.contains("multi_turn_deg"), line.constData());
+        if (o.contains("voltage_v"))
+            QCOMPARE(o.value("voltage_v").toDouble(), old ? leBytes(oldState, 3, 2, false) * 0.1
+                                                          : leBytes(newState, 2, 2, true) * 0.01);
+        QVERIFY2(!old || (!o.contains("bus_current_a") && !o.contains("motor_on")),
+                 line.constData());
+        for (const QString &k : o.keys())
+            keys[o.value("id").toInt()].insert(k);
+    }
+    for (int id : {1, 2}) {
+        const QSet<QString> &k = keys.value(id);
+        QVERIFY2(k.contains("voltage_v") && k.contains("multi_turn_deg"),
+                 qPrintable(describeRun(r)));
+        QCOMPARE(k.contains("bus_current_a"), id == 2);
+        QCOMPARE(k.contains("motor_on"), id == 2);
     }
 }
 

@@ -2,6 +2,7 @@
 
 #include <bus/PassivePairing.h>
 #include <protocol/Reply.h>
+#include <protocol/Request.h>
 #include <recording/RecordedFrameParser.h>
 
 namespace lk::ui {
@@ -21,7 +22,8 @@ bool RecordingReplay::open(const QString &path, recording::ReplayTransport::Opti
     const auto failed =
         connect(transport.get(), &transport::Transport::errorOccurred, this,
                 [&failure](const transport::TransportError &e) { failure = e.message; });
-    connect(transport.get(), &transport::Transport::bytesReceived, this, &RecordingReplay::onBytes);
+    connect(transport.get(), &recording::ReplayTransport::chunkPlayed, this,
+            &RecordingReplay::onBytes);
     connect(transport.get(), &recording::ReplayTransport::recordPlayed, this,
             &RecordingReplay::onRecord);
     connect(transport.get(), &recording::ReplayTransport::finished, this, [this] {
@@ -197,8 +199,28 @@ protocol::DecodeContext RecordingReplay::contextOf(int id) const
     return c;
 }
 
-void RecordingReplay::onBytes(const QByteArray &bytes)
+void RecordingReplay::takeCommand(const protocol::Frame &frame, double time,
+                                  bus::TelemetryBatch *telemetry)
 {
+    // Live, a listen-only session samples another master's commands (bus::ListenMonitor); the
+    // tool's own commands are no samples, in a session or in its replay.
+    const protocol::DecodeContext context = contextOf(frame.id);
+    const protocol::RequestDecodeResult dec = protocol::decodeRequest(frame, context);
+    if (!dec.request)
+        return;
+    std::optional<protocol::Series> series;
+    for (const recording::DriveContext &d : m_context) {
+        if (d.id == frame.id)
+            series = d.series;
+    }
+    if (const auto s =
+            bus::TelemetrySample::fromRequest(*dec.request, series, context.generation, time))
+        telemetry->append(*s);
+}
+
+void RecordingReplay::onBytes(const QByteArray &bytes, bool transmitted)
+{
+    m_transmitted = transmitted;
     const double time = positionSeconds();
     bus::TrafficBatch traffic;
     bus::TelemetryBatch telemetry;
@@ -244,6 +266,8 @@ void RecordingReplay::onFrame(const protocol::ParseEvent &event, double time,
     row.frame = e.frame;
     row.context = context;
     traffic->append(row);
+    if (e.direction == protocol::FrameDirection::Request && !m_transmitted && !e.echoed)
+        takeCommand(e.frame, time, telemetry);
     if (e.direction != protocol::FrameDirection::Reply)
         return;
     const auto reply = protocol::decodeReply(e.frame, context);

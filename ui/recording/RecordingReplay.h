@@ -74,13 +74,15 @@ signals:
     void finished();
 
 private:
-    void onBytes(const QByteArray &bytes);
+    void onBytes(const QByteArray &bytes, bool transmitted);
     void onRecord(const recording::RecordEvent &record);
     void onFrame(const protocol::ParseEvent &event, double time, bus::TrafficBatch *traffic,
                  bus::TelemetryBatch *telemetry);
     protocol::DecodeContext contextOf(int id) const;
     void setContext(const recording::ContextSnapshot &context);
     void learnModel(const protocol::Reply &reply);
+    /// What another master's request commands, as the live listener samples it.
+    void takeCommand(const protocol::Frame &frame, double time, bus::TelemetryBatch *telemetry);
     void emitStatistics();
     qint64 positionNs() const;
 
@@ -95,6 +97,7 @@ private:
     QVector<int> m_seen; ///< every drive reported (context or reply)
     recording::ReplayStatistics m_statistics;
     bus::KnownMotors m_known;
+    bool m_transmitted = false; ///< the chunk being parsed is one the recording tool sent
 };
 
 } // namespace lk::ui

@@ -105,6 +105,38 @@ private slots:
         QCOMPARE(model->listenStatistics().requests, quint64(0));
     }
 
+    void anotherMastersCommandsAreSamplesAsLive()
+    {
+        // As a live listener samples them (tst_canlisten): another master's speed command
+        // (received, 100.00 dps) is a commanded-speed sample of its drive; the tool's own
+        // (transmitted, 200.00 dps) is none, as it is none in the session that sent it.
+        using K = RecordEvent::Kind;
+        const QString path = m_dir->filePath(QStringLiteral("listen.lkrec"));
+        QVERIFY(writeAll(
+            path, recordingOn(LinkKind::Can, {{K::Rx, canRecord(0x141, "A200000010270000")},
+                                              {K::Rx, canRecord(0x141, "A21E64000A001027")},
+                                              {K::Tx, canRecord(0x141, "A2000000204E0000")},
+                                              {K::Rx, canRecord(0x141, "A21E64000A001027")}})));
+        bus::TelemetryBatch samples;
+        auto *replay = m_window->recording()->replay();
+        QObject::connect(replay, &ui::RecordingReplay::telemetryReceived,
+                         [&samples](const bus::TelemetryBatch &b) { samples += b; });
+        bool done = false;
+        QObject::connect(replay, &ui::RecordingReplay::finished, [&done] { done = true; });
+        QVERIFY(m_window->recording()->openRecording(path));
+        replay->loadAll();
+        QVERIFY(QTest::qWaitFor([&] { return done; }, uitest::kWaitMs));
+        QVector<double> commanded;
+        int replies = 0;
+        for (const bus::TelemetrySample &s : samples) {
+            if (s.has(bus::TelemetryField::CommandedSpeed))
+                commanded.append(s.commandedSpeedDps);
+            replies += s.has(bus::TelemetryField::Speed) ? 1 : 0;
+        }
+        QCOMPARE(commanded, QVector<double>{100.0});
+        QCOMPARE(replies, 2);
+    }
+
     void exportsACanRecordingAsACandumpLog()
     {
         const QString path = m_dir->filePath(QStringLiteral("can.lkrec"));
