@@ -56,8 +56,16 @@ std::optional<FrequencyPoint> FrequencyResponse::measure(const QVector<double> &
                                                          const QVector<double> &inputV,
                                                          const QVector<double> &outputT,
                                                          const QVector<double> &outputY, double hz,
-                                                         double from, double to, DroppedReason *why)
+                                                         double from, double to, DroppedReason *why,
+                                                         double minSamplesPerPeriod)
 {
+    const int samples = int(std::count_if(outputT.begin(), outputT.end(),
+                                          [&](double t) { return t >= from && t <= to; }));
+    if (double(samples) < minSamplesPerPeriod * (to - from) * hz) {
+        if (why)
+            *why = DroppedReason::TooFewSamples;
+        return std::nullopt;
+    }
     const SineComponent u = SineFit::ofHeld(inputT, inputV, hz, from, to);
     if (!u.ok || u.amplitude <= 0) {
         if (why)
@@ -82,8 +90,7 @@ std::optional<FrequencyPoint> FrequencyResponse::measure(const QVector<double> &
     phase = std::remainder(phase, 360.0); // -180..180
     p.phaseDeg = phase;
     p.quality = y.quality;
-    p.samples = int(std::count_if(outputT.begin(), outputT.end(),
-                                  [&](double t) { return t >= from && t <= to; }));
+    p.samples = samples;
     return p;
 }
 

@@ -23,8 +23,10 @@ struct FrequencyPoint {
 /// Why a planned frequency has no point.
 enum class DroppedReason {
     AboveResolution, ///< fewer than samplesPerPeriod samples per period at the achieved rate
-    TooFewSamples,   ///< the window held fewer than SineFit::kMinSamples samples
-    NoInput,         ///< the setpoints did not cover the window (a stop, lost replies)
+    /// The window held fewer than SineFit::kMinSamples samples, or fewer than samplesPerPeriod
+    /// a period (the host or the bus stalled during it)
+    TooFewSamples,
+    NoInput, ///< the setpoints did not cover the window (a stop, lost replies)
 };
 
 struct DroppedFrequency {
@@ -65,11 +67,14 @@ struct FrequencyResponse {
     double resolvedHz() const { return sampleRateHz / samplesPerPeriod; }
 
     /// One point: the held input's component (SineFit::ofHeld) and the sampled output's
-    /// (SineFit::fitSampled) over [from, to]; nullopt (and `why`) when either has none.
+    /// (SineFit::fitSampled) over [from, to]; nullopt (and `why`) when either has none, or
+    /// when the window holds fewer than `minSamplesPerPeriod` output samples a period (a host
+    /// or bus that stalled during it: the point would be as wrong as one above the
+    /// resolution, though the whole sweep's rate resolves it).
     static std::optional<FrequencyPoint>
     measure(const QVector<double> &inputT, const QVector<double> &inputV,
             const QVector<double> &outputT, const QVector<double> &outputY, double hz, double from,
-            double to, DroppedReason *why = nullptr);
+            double to, DroppedReason *why = nullptr, double minSamplesPerPeriod = 0);
     /// A point of the speed's response (dps per unit of setpoint) as the response of its
     /// integral, the angle (deg per unit): magnitude over w, phase less 90 degrees; the
     /// amplitude becomes the angle's.

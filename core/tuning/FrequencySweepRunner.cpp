@@ -388,10 +388,14 @@ void FrequencySweepRunner::analyse()
             r.dropped.append({s.hz, DroppedReason::AboveResolution});
             continue;
         }
+        // The rate within this frequency's own window counts too: a host or bus that stalled
+        // during it leaves fewer samples a period than the loop needs (a loaded host's
+        // position loop read 9 dB high at 40 Hz with 6.5 samples a period in its window while
+        // the whole sweep averaged more than 16).
         DroppedReason why = DroppedReason::TooFewSamples;
         std::optional<FrequencyPoint> p = FrequencyResponse::measure(
             m_result.time, m_result.setpoint, m_result.time, m_result.speed, s.hz,
-            origin + s.fitFromS, origin + s.fitToS, &why);
+            origin + s.fitFromS, origin + s.fitToS, &why, r.samplesPerPeriod);
         if (p && m_spec.loop == SweepLoop::Position)
             *p = FrequencyResponse::integrated(*p); // the angle is the speed over jw
         if (p)

@@ -308,11 +308,13 @@ void tst_FrequencySweepRunner::positionMeasuresTheSimulatorsTransfer()
     const double resolved = r.response.resolvedHz();
     // Every planned frequency is measured, or dropped because this host's rate does not
     // resolve it for the position loop (at 1 Mbaud an idle host reaches about 750 samples/s,
-    // 47 Hz; a loaded one or a sanitizer build less).
+    // 47 Hz; a loaded one or a sanitizer build less), overall or within its own window (a
+    // host that stalled during it: too few samples).
     QCOMPARE(r.response.points.size() + r.response.dropped.size(), 6);
     for (const DroppedFrequency &d : r.response.dropped) {
-        QCOMPARE(d.reason, DroppedReason::AboveResolution);
-        QVERIFY2(d.hz > resolved, qPrintable(QString::number(d.hz)));
+        QVERIFY2(d.reason == DroppedReason::TooFewSamples ||
+                     (d.reason == DroppedReason::AboveResolution && d.hz > resolved),
+                 qPrintable(QString::number(d.hz)));
     }
     QVERIFY2(r.response.points.size() >= 4, qPrintable(QString::number(resolved)));
     for (const FrequencyPoint &p : r.response.points) {

@@ -44,6 +44,7 @@ private slots:
     void heldComponent_data();
     void heldComponent();
     void responsePointAndFigures();
+    void sparseWindowIsDropped();
 };
 
 void tst_SineFit::sampledFit_data()
@@ -212,6 +213,35 @@ void tst_SineFit::responsePointAndFigures()
     DroppedReason why = DroppedReason::AboveResolution;
     QVERIFY(!FrequencyResponse::measure({5.0}, {1.0}, {}, {}, 10, 0, 1, &why));
     QCOMPARE(why, DroppedReason::NoInput);
+}
+
+/// A window where the samples thinned out (the host stalled: one sample in 20 kept for half of
+/// it) gives no point when the loop needs more samples a period than it holds, though the
+/// samples around it are dense; the same window without that need still gives its point.
+void tst_SineFit::sparseWindowIsDropped()
+{
+    const double hz = 40;
+    const QVector<double> all = jitteredTimes(1000, 1.0, 0.3, 9); // 25 samples a period
+    const double from = 0.3;
+    const double to = from + 10 / hz;
+    QVector<double> t, u;
+    int kept = 0;
+    for (int k = 0; k < all.size(); ++k) {
+        const bool stalled = all[k] > from && all[k] < from + 5 / hz;
+        if (stalled && k % 20 != 0)
+            continue;
+        t.append(all[k]);
+        u.append(50 * std::sin(2 * kPi * hz * all[k]));
+        kept += all[k] >= from && all[k] <= to ? 1 : 0;
+    }
+    const double perPeriod = kept / ((to - from) * hz);
+    QVERIFY2(perPeriod > 12 && perPeriod < 16, qPrintable(QString::number(perPeriod)));
+    DroppedReason why = DroppedReason::NoInput;
+    QVERIFY(!FrequencyResponse::measure(t, u, t, u, hz, from, to, &why, 16));
+    QCOMPARE(why, DroppedReason::TooFewSamples);
+    const auto p = FrequencyResponse::measure(t, u, t, u, hz, from, to, &why, 4);
+    QVERIFY(p);
+    QCOMPARE(p->samples, kept);
 }
 
 QTEST_APPLESS_MAIN(tst_SineFit)
