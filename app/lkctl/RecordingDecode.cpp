@@ -34,7 +34,7 @@ QString canIdText(quint32 canId)
            QString::number(canId, 16).toUpper().rightJustified(3, QLatin1Char('0'));
 }
 
-/// The tool's own multi-motor torque frame (0x280, docs/CAN.md section 4.2): the torque of
+/// A multi-motor torque frame (0x280, docs/CAN.md section 4.2), sent or heard: the torque of
 /// each of IDs 1..4, an empty slot's 0 A too.
 QJsonObject multiTorqueObject(const protocol::ParseEvent &e)
 {

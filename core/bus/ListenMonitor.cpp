@@ -1,6 +1,7 @@
 #include "ListenMonitor.h"
 
 #include "BusDiagnostics.h"
+#include "HeardMultiTorque.h"
 
 #include <protocol/CanLayout.h>
 #include <protocol/CanRecordParser.h>
@@ -104,14 +105,15 @@ void ListenMonitor::noteUnanswered(const QVector<protocol::Frame> &requests)
 
 void ListenMonitor::takeMultiTorque(const protocol::CanRecord &record)
 {
-    // Another master's multi-motor torque frame (docs/CAN.md 4.2): a torque for each of IDs
-    // 1..4, which each drive in its Broadcast Mode answers as a 0xA1. A slot is that master's
-    // torque command to a drive known on the old generation (V2.36 has no such frame); a slot
-    // of no drive seen is not counted, since nothing tells whether one is there.
-    if (record.canId != protocol::can::kMultiMotorId || record.isExtended() || record.isEcho())
-        return;
-    const auto iq = protocol::can::decodeMultiMotorTorque({record.canId, record.data});
-    if (!iq)
+    // Another master's multi-motor torque frame: a torque command to each drive it names that
+    // has been seen on the old generation, which answers it as a 0xA1.
+    const std::optional<QVector<HeardMultiTorque::Slot>> heard =
+        HeardMultiTorque::decode(record, [this](int id) -> std::optional<protocol::DecodeContext> {
+            if (!m_motors.all().contains(id))
+                return std::nullopt;
+            return m_motors.decodeContext(id);
+        });
+    if (!heard)
         return;
     // The Traffic view reads the frame from its record (TrafficModel: multi_torque).
     protocol::ParseEvent seen;
@@ -121,30 +123,12 @@ void ListenMonitor::takeMultiTorque(const protocol::CanRecord &record)
     m_diagnostics.recordParseEvent(seen);
     const double time = static_cast<double>(m_feedNs) * 1e-9;
     QVector<protocol::Frame> torques;
-    for (int slot = 0; slot < protocol::can::kMultiMotorDrives; ++slot) {
-        const int id = slot + 1;
-        if (!m_motors.all().contains(id))
-            continue;
-        const protocol::DecodeContext context = m_motors.decodeContext(id);
-        if (context.generation != protocol::Generation::V2_3)
-            continue;
-        protocol::Request request;
-        request.command = protocol::Command::Torque;
-        request.id = quint8(id);
-        protocol::TorqueCommand torque;
-        torque.iqRaw = (*iq)[slot];
-        torque.ampsPerLsb = protocol::iqCommandAmpsPerLsb(context);
-        request.payload = torque;
-        const protocol::can::CanEncodeResult data = protocol::can::encodeRequest(request, context);
-        const std::optional<protocol::Frame> frame =
-            data.data ? protocol::can::frameOf(*data.data) : std::nullopt;
-        if (!frame)
-            continue;
-        torques.append(*frame);
-        m_stats.request(*frame);
-        const KnownMotor known = m_motors.all().value(id);
+    for (const HeardMultiTorque::Slot &slot : *heard) {
+        torques.append(slot.frame);
+        m_stats.request(slot.frame);
+        const KnownMotor known = m_motors.all().value(slot.request.id);
         if (std::optional<TelemetrySample> s =
-                TelemetrySample::fromRequest(request, known.series, known.generation, time))
+                TelemetrySample::fromRequest(slot.request, known.series, known.generation, time))
             m_telemetry.add(*s);
     }
     noteUnanswered(m_pairing.openGroup(torques, m_feedNs));

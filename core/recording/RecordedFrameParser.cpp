@@ -53,7 +53,9 @@ RecordedFrameParser::RecordedFrameParser(ContextSnapshot context, protocol::Link
 void RecordedFrameParser::emitEvent(bool transmitted, protocol::ParseEvent event, const Sink &sink)
 {
     protocol::DecodeContext context = decodeContextOf(m_context, event.frame.id, m_link);
-    if (m_link == protocol::Link::Can && !transmitted && event.isFrame && !event.echoed) {
+    const bool multiTorque = event.canId == protocol::can::kMultiMotorId;
+    if (m_link == protocol::Link::Can && !transmitted && event.isFrame && !event.echoed &&
+        !multiTorque) {
         event.direction = bus::PassivePairing::canDirections(event, context).direction;
         if (event.direction != protocol::FrameDirection::Request &&
             learnCanGeneration(m_context, event))
@@ -64,11 +66,11 @@ void RecordedFrameParser::emitEvent(bool transmitted, protocol::ParseEvent event
 
 void RecordedFrameParser::parse(bool transmitted, const QByteArray &bytes, const Sink &sink)
 {
-    // The tool's own multi-motor torque frame (0x280, docs/CAN.md section 4.2) is on no
-    // drive's ID, so the CAN parser hands it aside: it is a request the tool sent all the
+    // The multi-motor torque frame (0x280, docs/CAN.md section 4.2), the tool's own or another
+    // master's, is on no drive's ID, so the CAN parser hands it aside: it is a request all the
     // same, reported as one (no drive, no command of the table; its bytes hold the slots).
-    auto *can = transmitted && m_link == protocol::Link::Can
-                    ? dynamic_cast<protocol::CanRecordParser *>(m_tx.get())
+    auto *can = m_link == protocol::Link::Can
+                    ? dynamic_cast<protocol::CanRecordParser *>((transmitted ? m_tx : m_rx).get())
                     : nullptr;
     if (can)
         can->setOtherFrameSink([&](const protocol::CanRecord &r) {
@@ -80,7 +82,7 @@ void RecordedFrameParser::parse(bool transmitted, const QByteArray &bytes, const
             e.direction = protocol::FrameDirection::Request;
             e.bytes = r.encode();
             e.canId = r.canId;
-            emitEvent(true, e, sink);
+            emitEvent(transmitted, e, sink);
         });
     (transmitted ? m_tx : m_rx)->feed(bytes, [&](const protocol::ParseEvent &e) {
         emitEvent(transmitted, e, sink);

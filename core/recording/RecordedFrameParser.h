@@ -22,8 +22,9 @@ struct RecordedFrame {
 /// or reopens ends both, context records change how later frames decode. On CAN a received
 /// frame's direction is the one a listener tells (bus::PassivePairing::canDirections): the
 /// tool's own frames are requests, what it heard a reply unless it has a request's layout on
-/// 0x140+ID. The tool's own multi-motor torque frame (0x280) is a transmitted frame of no
-/// drive: event.frame is empty (ID 0, command 0), event.canId says 0x280, its bytes the slots.
+/// 0x140+ID. A multi-motor torque frame (0x280), the tool's own or another master's, is a
+/// request of no drive: event.frame is empty (ID 0, command 0), event.canId says 0x280, its
+/// bytes the slots.
 class RecordedFrameParser {
 public:
     using Sink = std::function<void(const RecordedFrame &)>;

@@ -18,13 +18,27 @@ void ReplayStatistics::restart(protocol::Link link, int baud, qint64 timeNs)
     m_lastSnapshotNs = timeNs;
 }
 
-void ReplayStatistics::attach(protocol::FrameParser &parser)
+void ReplayStatistics::attach(protocol::FrameParser &parser,
+                              std::function<void(const protocol::CanRecord &)> otherFrame)
 {
     if (auto *can = dynamic_cast<protocol::CanRecordParser *>(&parser)) {
         can->setErrorFrameSink(
             [this](const protocol::CanRecord &) { m_collector.canErrorFrame(); });
-        can->setOtherFrameSink([this](const protocol::CanRecord &) { m_collector.otherFrame(); });
+        can->setOtherFrameSink(
+            [this, otherFrame = std::move(otherFrame)](const protocol::CanRecord &record) {
+                m_collector.otherFrame();
+                if (otherFrame)
+                    otherFrame(record);
+            });
     }
+}
+
+void ReplayStatistics::takeMultiTorque(const QVector<protocol::Frame> &torques, qint64 timeNs)
+{
+    for (const protocol::Frame &f : m_pairing.openGroup(torques, timeNs))
+        m_collector.unanswered(f);
+    for (const protocol::Frame &f : torques)
+        m_collector.request(f);
 }
 
 void ReplayStatistics::take(const protocol::ParseEvent &event,
@@ -44,6 +58,8 @@ void ReplayStatistics::take(const protocol::ParseEvent &event,
     }
     if (out.unanswered)
         m_collector.unanswered(*out.unanswered);
+    for (const protocol::Frame &f : out.unansweredInGroup)
+        m_collector.unanswered(f);
     if (out.role == bus::PassivePairing::Outcome::Role::Request)
         m_collector.request(event.frame);
     else if (out.role == bus::PassivePairing::Outcome::Role::Reply)
@@ -54,6 +70,8 @@ bus::ListenStatistics ReplayStatistics::snapshot(qint64 timeNs)
 {
     if (const std::optional<protocol::Frame> late = m_pairing.expire(timeNs))
         m_collector.unanswered(*late);
+    for (const protocol::Frame &f : m_pairing.expireGroup(timeNs))
+        m_collector.unanswered(f);
     m_lastSnapshotNs = timeNs;
     return m_collector.snapshot(static_cast<double>(timeNs - m_startNs) * 1e-9, m_baud,
                                 m_pairing.counts());

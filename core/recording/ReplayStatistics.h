@@ -3,7 +3,10 @@
 #include <bus/ListenStatistics.h>
 #include <bus/ListenStatisticsCollector.h>
 #include <bus/PassivePairing.h>
+#include <protocol/CanRecord.h>
 #include <protocol/FrameParser.h>
+
+#include <functional>
 
 namespace lk::recording {
 
@@ -22,8 +25,10 @@ public:
     /// A new stream on `link` at `baud` (bit rate on CAN): nothing counted, nothing open.
     void restart(protocol::Link link, int baud, qint64 timeNs);
     /// Sends `parser`'s CAN error frames and frames of no drive here (a CanRecordParser;
-    /// others have neither).
-    void attach(protocol::FrameParser &parser);
+    /// others have neither); `otherFrame` then hears each frame of no drive (another master's
+    /// multi-motor torque frame: takeMultiTorque).
+    void attach(protocol::FrameParser &parser,
+                std::function<void(const protocol::CanRecord &)> otherFrame = {});
     void addBytes(qsizetype n) { m_collector.addBytes(n); }
     /// The recorded link reopened: a request still open gets no reply from the new stream.
     void newStream() { m_pairing.reset(); }
@@ -31,6 +36,10 @@ public:
     /// `context`. Echoed frames are skipped: the Tx copy of the same frame counts.
     void take(const protocol::ParseEvent &event, const protocol::DecodeContext &context,
               qint64 timeNs);
+    /// A multi-motor torque frame (CAN 0x280) at `timeNs`: the 0xA1 request each drive it names
+    /// answers as (bus::HeardMultiTorque), each counted a request; their replies pair with
+    /// them, and a drive still silent past its window is unanswered.
+    void takeMultiTorque(const QVector<protocol::Frame> &torques, qint64 timeNs);
     /// Whether a period of the recording's time passed since the last snapshot.
     bool snapshotDue(qint64 timeNs) const { return timeNs - m_lastSnapshotNs >= kPeriodNs; }
     /// The figures at `timeNs` (rates since the last snapshot); a request whose reply can no

@@ -324,9 +324,17 @@ private slots:
         QCOMPARE(jsonOf(dl[4]).value("fields").toObject().value("voltage_v").toDouble(), 24.0);
     }
 
-    void decodeShowsOurMultiTorqueFrame()
+    void decodeShowsAMultiTorqueFrame_data()
     {
-        // The tool's own 0x280 (docs/CAN.md section 4.2): a request of no drive, every slot.
+        QTest::addColumn<bool>("ours");
+        QTest::newRow("the tool's own (tx)") << true;
+        QTest::newRow("another master's (rx)") << false;
+    }
+
+    void decodeShowsAMultiTorqueFrame()
+    {
+        // A 0x280 (docs/CAN.md section 4.2), sent or heard: a request of no drive, every slot.
+        QFETCH(bool, ours);
         RecordingHeader h = lk::testsupport::testHeader();
         h.linkKind = LinkKind::Can;
         h.linkDescription = QStringLiteral("virtualcan:can0 @ 1000000");
@@ -334,8 +342,8 @@ private slots:
         h.context = {{1, protocol::Series::MG, protocol::Generation::V2_3}};
         QByteArray file = RecordEncoder::encodeHeader(h);
         RecordEncoder enc;
-        enc.append(RecordEvent::data(RecordEvent::Kind::Tx, 1'000'000,
-                                     canRecord(0x280, "64009CFF00000000")));
+        enc.append(RecordEvent::data(ours ? RecordEvent::Kind::Tx : RecordEvent::Kind::Rx,
+                                     1'000'000, canRecord(0x280, "64009CFF00000000")));
         enc.append(RecordEvent::data(RecordEvent::Kind::Rx, 1'200'000,
                                      canRecord(0x141, "A11E64000A001027")));
         file += enc.takeBlock();
@@ -349,13 +357,20 @@ private slots:
         const QJsonObject frame = jsonOf(dl[0]);
         QCOMPARE(frame.value("command").toString(), QStringLiteral("multi_torque"));
         QCOMPARE(frame.value("direction").toString(), QStringLiteral("request"));
-        QCOMPARE(frame.value("wire").toString(), QStringLiteral("tx"));
+        QCOMPARE(frame.value("wire").toString(),
+                 ours ? QStringLiteral("tx") : QStringLiteral("rx"));
         QCOMPARE(frame.value("can_id").toString(), QStringLiteral("0x280"));
         const QJsonObject fields = frame.value("fields").toObject();
         QCOMPARE(fields.value("iq_a_1").toDouble(), 1.6);
         QCOMPARE(fields.value("iq_a_2").toDouble(), -1.6);
         QCOMPARE(fields.value("iq_a_3").toDouble(), 0.0);
         QCOMPARE(fields.value("iq_a_4").toDouble(), 0.0);
+        // lkctl replay hears it as a listener does: drive 1's torque command, its 0xA1 paired
+        // (drive 2 was never seen: no request to it).
+        const auto r = lkctl({QStringLiteral("replay"), path, QStringLiteral("--json")});
+        QVERIFY2(r.exitCode == 0, describeRun(r).toUtf8());
+        QVERIFY2(r.out.contains("\"commanded_iq_a\":1.6"), r.out.constData());
+        QVERIFY2(r.err.contains("requests 1, replies 1, paired 1"), r.err.constData());
         QCOMPARE(jsonOf(dl[1]).value("direction").toString(), QStringLiteral("reply"));
     }
 

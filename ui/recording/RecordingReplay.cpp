@@ -1,9 +1,12 @@
 #include "RecordingReplay.h"
 
+#include <bus/HeardMultiTorque.h>
 #include <bus/PassivePairing.h>
 #include <protocol/Reply.h>
 #include <protocol/Request.h>
 #include <recording/RecordedFrameParser.h>
+
+#include <utility>
 
 namespace lk::ui {
 
@@ -183,7 +186,8 @@ void RecordingReplay::onRecord(const RecordEvent &record)
 void RecordingReplay::restartParser()
 {
     m_parser = protocol::makeFrameParser(m_link, protocol::LinkEnd::Host);
-    m_statistics.attach(*m_parser);
+    m_statistics.attach(*m_parser,
+                        [this](const protocol::CanRecord &record) { takeOtherFrame(record); });
 }
 
 protocol::DecodeContext RecordingReplay::contextOf(int id) const
@@ -202,37 +206,67 @@ protocol::DecodeContext RecordingReplay::contextOf(int id) const
 void RecordingReplay::takeCommand(const protocol::Frame &frame, double time,
                                   bus::TelemetryBatch *telemetry)
 {
+    const protocol::RequestDecodeResult dec = protocol::decodeRequest(frame, contextOf(frame.id));
+    if (dec.request)
+        takeCommand(*dec.request, time, telemetry);
+}
+
+void RecordingReplay::takeCommand(const protocol::Request &request, double time,
+                                  bus::TelemetryBatch *telemetry)
+{
     // Live, a listen-only session samples another master's commands (bus::ListenMonitor); the
     // tool's own commands are no samples, in a session or in its replay.
-    const protocol::DecodeContext context = contextOf(frame.id);
-    const protocol::RequestDecodeResult dec = protocol::decodeRequest(frame, context);
-    if (!dec.request)
-        return;
     std::optional<protocol::Series> series;
     for (const recording::DriveContext &d : m_context) {
-        if (d.id == frame.id)
+        if (d.id == request.id)
             series = d.series;
     }
-    if (const auto s =
-            bus::TelemetrySample::fromRequest(*dec.request, series, context.generation, time))
+    if (const auto s = bus::TelemetrySample::fromRequest(request, series,
+                                                         contextOf(request.id).generation, time))
         telemetry->append(*s);
+}
+
+void RecordingReplay::takeOtherFrame(const protocol::CanRecord &record)
+{
+    // As the live listener does (bus::ListenMonitor): each drive seen so far on the old
+    // generation takes its slot as a torque command and answers it as a 0xA1.
+    const auto heard = bus::HeardMultiTorque::decode(
+        record, [this](int id) -> std::optional<protocol::DecodeContext> {
+            if (!m_seen.contains(id))
+                return std::nullopt;
+            return contextOf(id);
+        });
+    if (!heard)
+        return;
+    bus::TrafficEvent row;
+    row.kind = bus::TrafficEvent::Kind::Frame; // as onFrame shows every recorded frame
+    row.time = m_chunkTime;
+    row.bytes = record.encode();
+    row.context.link = m_link; // TrafficModel reads the slots from the record
+    m_traffic.append(row);
+    QVector<protocol::Frame> torques;
+    for (const bus::HeardMultiTorque::Slot &slot : *heard) {
+        torques.append(slot.frame);
+        if (!m_transmitted)
+            takeCommand(slot.request, m_chunkTime, &m_telemetry);
+    }
+    m_statistics.takeMultiTorque(torques, qint64(m_chunkTime * 1e9));
 }
 
 void RecordingReplay::onBytes(const QByteArray &bytes, bool transmitted)
 {
     m_transmitted = transmitted;
     const double time = positionSeconds();
-    bus::TrafficBatch traffic;
-    bus::TelemetryBatch telemetry;
+    m_chunkTime = time;
     if (!m_parser)
         return;
     m_statistics.addBytes(bytes.size());
-    m_parser->feed(bytes,
-                   [&](const protocol::ParseEvent &e) { onFrame(e, time, &traffic, &telemetry); });
-    if (!traffic.isEmpty())
-        emit trafficCaptured(traffic);
-    if (!telemetry.isEmpty())
-        emit telemetryReceived(telemetry);
+    m_parser->feed(
+        bytes, [&](const protocol::ParseEvent &e) { onFrame(e, time, &m_traffic, &m_telemetry); });
+    if (!m_traffic.isEmpty())
+        emit trafficCaptured(std::exchange(m_traffic, {}));
+    if (!m_telemetry.isEmpty())
+        emit telemetryReceived(std::exchange(m_telemetry, {}));
     if (m_statistics.snapshotDue(positionNs()))
         emitStatistics();
     emit positionChanged(time);

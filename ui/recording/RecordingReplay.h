@@ -83,6 +83,10 @@ private:
     void learnModel(const protocol::Reply &reply);
     /// What another master's request commands, as the live listener samples it.
     void takeCommand(const protocol::Frame &frame, double time, bus::TelemetryBatch *telemetry);
+    void takeCommand(const protocol::Request &request, double time, bus::TelemetryBatch *telemetry);
+    /// A frame on no drive's ID: a multi-motor torque frame (CAN 0x280) is a traffic row, a
+    /// request to each drive it names (statistics) and, another master's, its commands.
+    void takeOtherFrame(const protocol::CanRecord &record);
     void emitStatistics();
     qint64 positionNs() const;
 
@@ -98,6 +102,10 @@ private:
     recording::ReplayStatistics m_statistics;
     bus::KnownMotors m_known;
     bool m_transmitted = false; ///< the chunk being parsed is one the recording tool sent
+    // What the chunk being parsed gives, emitted when it is done.
+    double m_chunkTime = 0;
+    bus::TrafficBatch m_traffic;
+    bus::TelemetryBatch m_telemetry;
 };
 
 } // namespace lk::ui

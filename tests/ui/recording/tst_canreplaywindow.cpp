@@ -23,9 +23,11 @@ QByteArray canRecord(quint32 canId, const char *hex)
     return protocol::CanRecord::of({canId, QByteArray::fromHex(hex)}).encode();
 }
 
-QByteArray recordingOn(LinkKind kind, const QVector<QPair<RecordEvent::Kind, QByteArray>> &chunks)
+QByteArray recordingOn(LinkKind kind, const QVector<QPair<RecordEvent::Kind, QByteArray>> &chunks,
+                       const ContextSnapshot &context = {})
 {
     RecordingHeader h;
+    h.context = context;
     h.linkKind = kind;
     h.linkDescription = kind == LinkKind::Can ? QStringLiteral("socketcan:can1 @ 1000000")
                                               : QStringLiteral("/dev/ttyUSB0 @ 115200");
@@ -58,6 +60,22 @@ bool writeAll(const QString &path, const QByteArray &bytes)
 
 class tst_CanReplayWindow : public uitest::MainWindowFixture {
     Q_OBJECT
+    /// Opens `path` in the window and plays it whole ("Load all"); the samples it gave.
+    bool playAll(const QString &path, bus::TelemetryBatch *samples)
+    {
+        auto *replay = m_window->recording()->replay();
+        QObject context;
+        QObject::connect(replay, &ui::RecordingReplay::telemetryReceived, &context,
+                         [samples](const bus::TelemetryBatch &b) { *samples += b; });
+        bool done = false;
+        QObject::connect(replay, &ui::RecordingReplay::finished, &context,
+                         [&done] { done = true; });
+        if (!m_window->recording()->openRecording(path))
+            return false;
+        replay->loadAll();
+        return QTest::qWaitFor([&] { return done; }, uitest::kWaitMs);
+    }
+
 private slots:
     void init() { QVERIFY(openWindow()); }
     void cleanup() { closeWindow(); }
@@ -67,14 +85,7 @@ private slots:
         const QString path = m_dir->filePath(QStringLiteral("can.lkrec"));
         QVERIFY(writeAll(path, canRecording()));
         bus::TelemetryBatch samples;
-        auto *replay = m_window->recording()->replay();
-        QObject::connect(replay, &ui::RecordingReplay::telemetryReceived,
-                         [&samples](const bus::TelemetryBatch &b) { samples += b; });
-        bool done = false;
-        QObject::connect(replay, &ui::RecordingReplay::finished, [&done] { done = true; });
-        QVERIFY(m_window->recording()->openRecording(path));
-        replay->loadAll();
-        QVERIFY(QTest::qWaitFor([&] { return done; }, uitest::kWaitMs));
+        QVERIFY(playAll(path, &samples));
         QCOMPARE(samples.size(), 2); // the requests are no samples
         QCOMPARE(samples.at(0).id, 1);
         QCOMPARE(samples.at(0).speedDps, 10.0);
@@ -118,14 +129,7 @@ private slots:
                                               {K::Tx, canRecord(0x141, "A2000000204E0000")},
                                               {K::Rx, canRecord(0x141, "A21E64000A001027")}})));
         bus::TelemetryBatch samples;
-        auto *replay = m_window->recording()->replay();
-        QObject::connect(replay, &ui::RecordingReplay::telemetryReceived,
-                         [&samples](const bus::TelemetryBatch &b) { samples += b; });
-        bool done = false;
-        QObject::connect(replay, &ui::RecordingReplay::finished, [&done] { done = true; });
-        QVERIFY(m_window->recording()->openRecording(path));
-        replay->loadAll();
-        QVERIFY(QTest::qWaitFor([&] { return done; }, uitest::kWaitMs));
+        QVERIFY(playAll(path, &samples));
         QVector<double> commanded;
         int replies = 0;
         for (const bus::TelemetrySample &s : samples) {
@@ -135,6 +139,56 @@ private slots:
         }
         QCOMPARE(commanded, QVector<double>{100.0});
         QCOMPARE(replies, 2);
+    }
+
+    void anotherMastersMultiTorqueIsReplayedAsHeardLive()
+    {
+        // As tst_canlisten hears it live: another master's 0x280 (1.60 A to drive 1, -1.60 A
+        // to drive 2) is a traffic row, a commanded torque of each drive and a request its
+        // 0xA1 reply pairs with; the tool's own 0x280 (transmitted) is a row and requests, no
+        // samples. Drives 3 and 4 are never seen: their slots are no requests.
+        using K = RecordEvent::Kind;
+        using protocol::Series;
+        const QString path = m_dir->filePath(QStringLiteral("multi.lkrec"));
+        const ContextSnapshot drives{{1, Series::MF, protocol::Generation::V2_3, true},
+                                     {2, Series::MG, protocol::Generation::V2_3, true}};
+        QVERIFY(writeAll(path, recordingOn(LinkKind::Can,
+                                           {{K::Rx, canRecord(0x141, "9C00000000000000")},
+                                            {K::Rx, canRecord(0x141, "9C1E64000A001027")},
+                                            {K::Rx, canRecord(0x142, "9C00000000000000")},
+                                            {K::Rx, canRecord(0x142, "9C1E64000A001027")},
+                                            {K::Rx, canRecord(0x280, "64009CFF00000000")},
+                                            {K::Rx, canRecord(0x141, "A11E64000A001027")},
+                                            {K::Rx, canRecord(0x142, "A11E9CFF0A001027")},
+                                            {K::Tx, canRecord(0x280, "0A00F6FF00000000")},
+                                            {K::Rx, canRecord(0x141, "A11E0A000A001027")}},
+                                           drives)));
+        bus::TelemetryBatch samples;
+        QVERIFY(playAll(path, &samples));
+        QMap<int, QVector<double>> commanded;
+        for (const bus::TelemetrySample &s : samples) {
+            if (s.has(bus::TelemetryField::CommandedIq))
+                commanded[s.id].append(s.commandedIqA);
+        }
+        QCOMPARE(commanded.value(1), QVector<double>{1.6});
+        QCOMPARE(commanded.value(2), QVector<double>{-1.6});
+        QCOMPARE(commanded.size(), 2);
+        const bus::ListenStatistics &st = m_window->busModel()->listenStatistics();
+        QCOMPARE(st.requests, quint64(2 + 2 + 2));
+        QCOMPARE(st.paired, quint64(2 + 2 + 1));
+        QCOMPARE(st.orphanReplies, quint64(0));
+        QCOMPARE(st.perCommand.value(0xA1).requests, quint64(4));
+        QCOMPARE(st.otherFrames, quint64(2));
+        m_window->traffic()->flush();
+        const ui::TrafficModel *traffic = m_window->traffic()->trafficModel();
+        QStringList multi;
+        for (int row = 0; row < traffic->rowCount(); ++row) {
+            if (traffic->commandText(row) == QLatin1String("multi_torque"))
+                multi.append(traffic->fieldsText(row));
+        }
+        QCOMPARE(multi.size(), 2);
+        QVERIFY2(multi.first().contains(QStringLiteral("ID 1 1.60 A, ID 2 -1.60 A")),
+                 qPrintable(multi.first()));
     }
 
     void exportsACanRecordingAsACandumpLog()
