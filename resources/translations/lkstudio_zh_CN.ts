@@ -3468,6 +3468,18 @@ not read</source>
         <source>Differs from drive %1 (%2)</source>
         <translation>与驱动 %1 不同（%2）</translation>
     </message>
+    <message>
+        <source>ID %1
+%2 (declared)
+%3</source>
+        <translation>ID %1
+%2（用户声明）
+%3</translation>
+    </message>
+    <message>
+        <source>series unknown</source>
+        <translation>系列未知</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::FleetWriteDialog</name>
@@ -3572,6 +3584,14 @@ not read</source>
     <message>
         <source>Done. The values before are in %1.</source>
         <translation>完成。写入前的值保存在 %1。</translation>
+    </message>
+    <message>
+        <source> (RAM only: CAN V2.36 has no ROM write for these parameters)</source>
+        <translation>（仅 RAM：CAN V2.36 的这些参数没有 ROM 写入）</translation>
+    </message>
+    <message>
+        <source>The targets are CAN V2.36 drives: their control parameters are RAM only (0xC1), there is no ROM write. Write to RAM instead.</source>
+        <translation>目标为 CAN V2.36 驱动器：其控制参数仅存于 RAM（0xC1），没有 ROM 写入。请改为写入 RAM。</translation>
     </message>
 </context>
 <context>

@@ -28,7 +28,11 @@ namespace {
 const QString kSpec = QStringLiteral("1:MF,2:MF,3:MS4015@2.35");
 
 struct ViewRig {
-    FleetRig rig{kSpec};
+    explicit ViewRig(const QString &spec = kSpec, protocol::Link link = protocol::Link::Rs485)
+        : rig(spec, link)
+    {
+    }
+    FleetRig rig;
     ui::ParametersView view;
 
     bool open(const QVector<int> &ids)
@@ -92,6 +96,7 @@ private slots:
     void romAsksFirstAndSendsNothingWhenDeclined();
     void restoreRefusesADamagedFile();
     void restoreFollowsTheIdMap();
+    void canDrivesAreDeclaredAndV236IsRamOnly();
 };
 
 void tst_ParametersView::readAllShowsDrivesAndUnknown()
@@ -238,6 +243,54 @@ void tst_ParametersView::restoreFollowsTheIdMap()
     v.rig.withDrive(1, [&](sim::SimDrive &s) { one = s.ramPid(); });
     v.rig.withDrive(2, [&](sim::SimDrive &s) { two = s.ramPid(); });
     QVERIFY(one == two);
+}
+
+void tst_ParametersView::canDrivesAreDeclaredAndV236IsRamOnly()
+{
+    // On CAN (no model read) each drive is named by the series the user declared and its CAN
+    // generation. Cloning drive 2 (V2.36 MF) offers RAM only: its twin 3 has no ROM write for
+    // these parameters (0xC1), the old CAN MG 1 is refused (another series and generation).
+    using protocol::Generation;
+    using protocol::Series;
+    ViewRig v(QStringLiteral("1:MG,2:MF@2.35,3:MF@2.35"), protocol::Link::Can);
+    v.rig.session.setDriveIdentity({1, Series::MG, Generation::V2_3, std::nullopt});
+    v.rig.session.setDriveIdentity({2, Series::MF, Generation::V2_35, std::nullopt});
+    v.rig.session.setDriveIdentity({3, Series::MF, Generation::V2_35, std::nullopt});
+    QVERIFY(v.open({2, 3, 1}));
+    QVERIFY(v.readAll());
+    QTableWidget *t = v.view.table();
+    QCOMPARE(t->columnCount(), 3);
+    const QString two = t->horizontalHeaderItem(0)->text();
+    const QString one = t->horizontalHeaderItem(2)->text();
+    QVERIFY2(two.contains(QStringLiteral("MF (declared)")) &&
+                 two.contains(QStringLiteral("CAN V2.36")),
+             qPrintable(two));
+    QVERIFY2(one.contains(QStringLiteral("MG (declared)")) &&
+                 one.contains(QStringLiteral("CAN (old)")),
+             qPrintable(one));
+    sim::SimParams params;
+    v.rig.withDrive(2, [&](sim::SimDrive &d) { params = d.ramParams(); });
+    QCOMPARE(v.cell(QStringLiteral("speed_kp"), 0)->text(), QString::number(params.speedPid[0]));
+
+    ui::FleetWriteDialog *d = v.view.cloneReference();
+    QVERIFY(waitPrepared(d));
+    const QString text = d->text();
+    QVERIFY2(text.contains(QStringLiteral("RAM only")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("Drive 1 from drive 2: refused")), qPrintable(text));
+    auto *rom = d->findChild<QPushButton *>(QStringLiteral("writeRom"));
+    QVERIFY(!rom->isEnabled());
+    QVERIFY2(rom->toolTip().contains(QStringLiteral("RAM only")), qPrintable(rom->toolTip()));
+    d->findChild<QPushButton *>(QStringLiteral("writeRam"))->click();
+    QVERIFY(QTest::qWaitFor([d] { return d->finished(); }, kWaitMs));
+    QCOMPARE(fleet::DriveReport::outcomeName(d->restore().reports().at(0).outcome), "verified");
+    QCOMPARE(fleet::DriveReport::outcomeName(d->restore().reports().at(1).outcome), "refused");
+    sim::SimParams three;
+    v.rig.withDrive(3, [&](sim::SimDrive &s) { three = s.ramParams(); });
+    QVERIFY(three.speedPid == params.speedPid);
+    QVERIFY(v.rig.barrier(1));
+    QVERIFY(v.rig.count(3, Command::WriteControlParam) >= 1);
+    QCOMPARE(v.rig.count(1, Command::WritePidRam), 0);
+    QCOMPARE(v.rig.count(1, Command::WritePidRom), 0);
 }
 
 QTEST_MAIN(tst_ParametersView)

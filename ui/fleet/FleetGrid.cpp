@@ -25,6 +25,18 @@ QString FleetGrid::header(const fleet::DriveSnapshot &d)
 {
     if (!d.identified)
         return tr("ID %1\nnot read").arg(d.id());
+    if (d.identity.declared) {
+        // CAN has no model read: the series is the user's word, and the dialect says which
+        // CAN generation (docs/CAN.md section 3).
+        protocol::DecodeContext dialect;
+        dialect.link = d.identity.link;
+        dialect.generation = d.identity.generation;
+        return tr("ID %1\n%2 (declared)\n%3")
+            .arg(d.id())
+            .arg(d.identity.series ? protocol::seriesName(*d.identity.series)
+                                   : tr("series unknown"),
+                 protocol::dialectName(dialect));
+    }
     return tr("ID %1\n%2\n%3")
         .arg(d.id())
         .arg(d.identity.motorName, protocol::generationName(d.identity.generation));

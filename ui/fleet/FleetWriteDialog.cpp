@@ -2,6 +2,7 @@
 
 #include <drive/ConfirmDialog.h>
 #include <fleet/BackupFile.h>
+#include <fleet/FleetCatalog.h>
 
 #include <QtWidgets/QDialogButtonBox>
 #include <QtWidgets/QLabel>
@@ -68,6 +69,8 @@ QString FleetWriteDialog::planText(const fleet::RestorePlan &plan) const
     if (plan.changes.isEmpty())
         return head + tr("already holds every value");
     QString text = head + tr("%n value(s) change", nullptr, int(plan.changes.size()));
+    if (!hasRom(plan))
+        text += tr(" (RAM only: CAN V2.36 has no ROM write for these parameters)");
     for (const fleet::ParamChange &c : plan.changes)
         text += QStringLiteral("\n    %1: %2 -> %3").arg(c.key).arg(c.from).arg(c.to);
     return text;
@@ -82,9 +85,11 @@ void FleetWriteDialog::onPrepared()
     const QString why = undo.save(m_undoPath);
     QStringList lines;
     bool any = false;
+    bool anyRom = false;
     for (const fleet::RestorePlan &p : m_restore.plans()) {
         lines << planText(p);
         any |= !p.refusal;
+        anyRom |= !p.refusal && hasRom(p);
     }
     m_text->setPlainText(lines.join(QLatin1Char('\n')));
     if (!why.isEmpty()) {
@@ -97,7 +102,18 @@ void FleetWriteDialog::onPrepared()
                         "undoes this). Nothing has been written yet.")
                          .arg(m_undoPath));
     m_ram->setEnabled(any);
-    m_rom->setEnabled(any);
+    // A CAN V2.36 drive keeps these parameters in RAM only (0xC1): with no other target, there
+    // is nothing a ROM write could do (FleetRestore would refuse it too).
+    m_rom->setEnabled(anyRom);
+    if (any && !anyRom)
+        m_rom->setToolTip(tr("The targets are CAN V2.36 drives: their control parameters are "
+                             "RAM only (0xC1), there is no ROM write. Write to RAM instead."));
+}
+
+bool FleetWriteDialog::hasRom(const fleet::RestorePlan &plan)
+{
+    const fleet::DriveIdentity &to = plan.target.identity;
+    return fleet::FleetCatalog::hasRom(to.generation, to.link);
 }
 
 void FleetWriteDialog::write(bool rom)

@@ -36,6 +36,8 @@ private:
     void write(bool rom);
     void onFinished();
     QString planText(const fleet::RestorePlan &plan) const;
+    /// Whether the target of `plan` has a ROM for these parameters (not CAN V2.36).
+    static bool hasRom(const fleet::RestorePlan &plan);
     QString reportText(const fleet::DriveReport &report) const;
 
     fleet::FleetRestore m_restore;
