@@ -10,6 +10,7 @@
 #include <QtTest/QTest>
 #include <QtWidgets/QPushButton>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -29,13 +30,19 @@ public:
     }
     ~SimRig() { session.close(); }
 
+    /// The reply margins the session opens with: a loaded machine must never turn a late
+    /// reply into silence. A test whose every write must be answered (a ROM write is never
+    /// retried) may widen them before open().
+    int minMarginMs = 100;
+    int maxMarginMs = 400;
+
     /// Opens, waits for the link and scans the IDs of the spec. False on failure.
     bool open()
     {
         bus::BusConfig config;
-        config.minMarginMs = 100; // a loaded machine must never turn a late reply into silence
-        config.initialMarginMs = 100;
-        config.maxMarginMs = 400;
+        config.minMarginMs = minMarginMs;
+        config.initialMarginMs = minMarginMs;
+        config.maxMarginMs = std::max(maxMarginMs, minMarginMs);
         session.open(transport::SimBusHandle::factory(sim), 115200, config);
         if (!QTest::qWaitFor([this] { return session.connection().isOpen(); }, kWaitMs))
             return false;

@@ -1,8 +1,7 @@
 // The whole window on CAN: the built-in simulator on CAN, chosen as the connection bar does
 // (sim::SimCanFront behind the black box's recorder) with one old CAN MG (ID 1, replies on 0x141)
 // and one V2.36 MF (ID 2, replies on 0x182). Scan, dashboard, plots, the traffic view in candump
-// notation, the emergency stop to every ID, and the views' rows on each generation. A function that
-// QSKIPs names what is not built yet (docs/CAN.md section 12).
+// notation, the emergency stop to every ID, and the views' rows on each generation.
 
 #include "MainWindowFixture.h"
 
