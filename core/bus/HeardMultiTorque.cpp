@@ -24,16 +24,23 @@ HeardMultiTorque::decode(const protocol::CanRecord &record, const ContextOf &con
             continue;
         protocol::DecodeContext c = *context;
         c.link = protocol::Link::Can;
+        const qint16 iqRaw = (*iq)[size_t(slot)];
         protocol::Request request;
         request.command = protocol::Command::Torque;
         request.id = quint8(id);
         protocol::TorqueCommand torque;
-        torque.iqRaw = (*iq)[size_t(slot)];
+        torque.iqRaw = iqRaw;
         torque.ampsPerLsb = protocol::iqCommandAmpsPerLsb(c);
         request.payload = torque;
-        const can::CanEncodeResult data = can::encodeRequest(request, c);
+        // The 0xA1 as the drive takes it, built here rather than by the encoder: the encoder
+        // refuses a value beyond +-2000 that we would not send, but another master may, and
+        // its drive still answers it.
+        QByteArray bytes(8, '\0');
+        bytes[0] = char(quint8(protocol::Command::Torque));
+        bytes[4] = char(quint16(iqRaw) & 0xFF);
+        bytes[5] = char(quint16(iqRaw) >> 8);
         const std::optional<protocol::Frame> frame =
-            data.data ? can::frameOf(*data.data) : std::nullopt;
+            can::frameOf({can::requestCanId(quint8(id)), bytes});
         if (frame)
             out.append({request, *frame});
     }

@@ -25,8 +25,9 @@ struct HeardMultiTorque {
 
     /// The slots of `record` whose drive `contextOf` knows on the old CAN generation (V2.36
     /// has no such frame; a slot of no drive seen is left out, since nothing tells whether one
-    /// is there). Nullopt for a record that is no 0x280 data frame heard on the bus (an echo of
-    /// our own, an error frame, another ID, a slot beyond the frame's range).
+    /// is there); a value beyond the +-2000 we send is kept as heard. Nullopt for a record that
+    /// is no 0x280 data frame heard on the bus (an echo of our own, an error frame, another
+    /// ID, another length).
     static std::optional<QVector<Slot>> decode(const protocol::CanRecord &record,
                                                const ContextOf &contextOf);
 };

@@ -113,6 +113,7 @@ private slots:
     void decodesBothGenerations();
     void statisticsOnCan();
     void anotherMastersMultiTorque();
+    void anotherMastersTorqueBeyondOursIsHeard();
     void listeningWorkerOnACanLink();
     void readOnlyCanTransportSendsNothing();
 };
@@ -236,6 +237,23 @@ void tst_CanListen::anotherMastersMultiTorque()
         return n;
     };
     QTRY_COMPARE(multiTorques(), 1); // delivered every 50 ms
+}
+
+void tst_CanListen::anotherMastersTorqueBeyondOursIsHeard()
+{
+    // We never send beyond +-2000 (32 A) in a 0x280 slot; another master may (2047), and its
+    // drive answers it: the command is heard as sent and the reply pairs, no orphan.
+    Monitor m;
+    m.hear(record(0x141, "9C00000000000000"), 1.0);
+    m.hear(record(0x141, "9C1E64000A001027"), 1.25);
+    m.motors.setSeries(1, protocol::Series::MF);
+    m.hear(record(0x280, "FF07000000000000"), 2.0);
+    m.hear(record(0x141, "A11EFF070A001027"), 2.25);
+    const TelemetrySample c = m.only(1, TelemetryField::CommandedIq);
+    QVERIFY(c.has(TelemetryField::CommandedIq));
+    QCOMPARE(c.commandedIqA, 2047 * 32.0 / 2000);
+    QCOMPARE(m.monitor.counts().orphanReplies, quint64(0));
+    QCOMPARE(m.monitor.counts().paired, quint64(2));
 }
 
 void tst_CanListen::listeningWorkerOnACanLink()
