@@ -59,9 +59,11 @@ QString ReplayCommand::usage() const
         "Decode a recording (docs/RECORDING.md: lkstudio's session recording or black box)\n"
         "as `lkctl listen` decodes a live bus: both directions on one stream, each request\n"
         "paired with its reply by order, every reply that carries telemetry and every value\n"
-        "a request commands printed as one row in the long layout of `lkctl monitor`\n"
-        "(time_s: the recording's session seconds, id, then every column), decoded with the\n"
-        "series and generation recorded for its moment. The whole file is read at once.\n"
+        "another master's request commands printed as one row in the long layout of\n"
+        "`lkctl monitor` (time_s: the recording's session seconds, id, then every column),\n"
+        "decoded with the series and generation recorded for its moment. The recording\n"
+        "tool's own requests are paired and counted, but give no commanded-value rows.\n"
+        "The whole file is read at once.\n"
         "A recording made on CAN is read as CAN frames: a frame on 0x180+ID, or with a\n"
         "reply's layout, is a reply; one with a request's layout on the shared 0x140+ID is\n"
         "told by order.\n"
@@ -136,7 +138,7 @@ int ReplayCommand::run(const QStringList &args, Console &console)
         switch (e.kind) {
         case RecordEvent::Kind::Rx:
         case RecordEvent::Kind::Tx:
-            monitor.feed(e.bytes, baud);
+            monitor.feed(e.bytes, baud, e.kind == RecordEvent::Kind::Tx);
             batcher.flush();
             break;
         case RecordEvent::Kind::Context:

@@ -36,8 +36,9 @@ void ListenMonitor::restart(protocol::Link link)
     m_pairing.reset();
 }
 
-void ListenMonitor::feed(const QByteArray &bytes, int baud)
+void ListenMonitor::feed(const QByteArray &bytes, int baud, bool ours)
 {
+    m_feedOurs = ours;
     m_pairing.setBaud(baud);
     m_stats.addBytes(bytes.size());
     // Every frame of a chunk arrived when the chunk did: that is all the host knows.
@@ -126,6 +127,8 @@ void ListenMonitor::takeMultiTorque(const protocol::CanRecord &record)
     for (const HeardMultiTorque::Slot &slot : *heard) {
         torques.append(slot.frame);
         m_stats.request(slot.frame);
+        if (m_feedOurs)
+            continue; // the recording tool's own command: no sample, as in its session
         const KnownMotor known = m_motors.all().value(slot.request.id);
         if (std::optional<TelemetrySample> s =
                 TelemetrySample::fromRequest(slot.request, known.series, known.generation, time))
@@ -137,6 +140,8 @@ void ListenMonitor::takeMultiTorque(const protocol::CanRecord &record)
 void ListenMonitor::takeRequest(const protocol::Frame &frame, double time)
 {
     m_stats.request(frame);
+    if (m_feedOurs)
+        return; // the recording tool's own command: no sample, as in its session
     const protocol::RequestDecodeResult dec =
         protocol::decodeRequest(frame, m_motors.decodeContext(frame.id));
     if (!dec.request)

@@ -40,7 +40,9 @@ public:
     /// frame, no open request.
     void restart(protocol::Link link);
     /// Bytes from the link, at the link's `baud` (it sets the silence that ends a pairing).
-    void feed(const QByteArray &bytes, int baud);
+    /// `ours`: a replayed recording's bytes its tool sent. They pair and count as any, but
+    /// their commands are no commanded-value samples, as in the session that sent them.
+    void feed(const QByteArray &bytes, int baud, bool ours = false);
     /// The statistics now (rates since the last call); also ends a request whose reply can no
     /// longer come (silence).
     ListenStatistics snapshot(int baud);
@@ -73,7 +75,8 @@ private:
     std::unique_ptr<protocol::FrameParser> m_parser;
     PassivePairing m_pairing;
     ListenStatisticsCollector m_stats;
-    qint64 m_feedNs = 0; ///< when the chunk being parsed arrived
+    qint64 m_feedNs = 0;     ///< when the chunk being parsed arrived
+    bool m_feedOurs = false; ///< the chunk being parsed is one the recording's tool sent
 };
 
 } // namespace lk::bus
