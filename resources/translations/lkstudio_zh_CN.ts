@@ -3586,12 +3586,12 @@ not read</source>
         <translation>完成。写入前的值保存在 %1。</translation>
     </message>
     <message>
-        <source> (RAM only: CAN V2.36 has no ROM write for these parameters)</source>
-        <translation>（仅 RAM：CAN V2.36 的这些参数没有 ROM 写入）</translation>
-    </message>
-    <message>
         <source>The targets are CAN V2.36 drives: their control parameters are RAM only (0xC1), there is no ROM write. Write to RAM instead.</source>
         <translation>目标为 CAN V2.36 驱动器：其控制参数仅存于 RAM（0xC1），没有 ROM 写入。请改为写入 RAM。</translation>
+    </message>
+    <message>
+        <source> (RAM only: CAN V2.36 has no ROM for these parameters; Write to RAM writes it, Write to ROM refuses it and sends it nothing)</source>
+        <translation>（仅 RAM：CAN V2.36 的这些参数没有 ROM；“写入 RAM”会写入它，“写入 ROM”会拒绝它且不向它发送任何内容）</translation>
     </message>
 </context>
 <context>

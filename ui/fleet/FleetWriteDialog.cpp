@@ -70,7 +70,8 @@ QString FleetWriteDialog::planText(const fleet::RestorePlan &plan) const
         return head + tr("already holds every value");
     QString text = head + tr("%n value(s) change", nullptr, int(plan.changes.size()));
     if (!hasRom(plan))
-        text += tr(" (RAM only: CAN V2.36 has no ROM write for these parameters)");
+        text += tr(" (RAM only: CAN V2.36 has no ROM for these parameters; Write to RAM writes "
+                   "it, Write to ROM refuses it and sends it nothing)");
     for (const fleet::ParamChange &c : plan.changes)
         text += QStringLiteral("\n    %1: %2 -> %3").arg(c.key).arg(c.from).arg(c.to);
     return text;
