@@ -132,6 +132,10 @@ QString unavailable(const QString &commandName, const EncodeTarget &t)
     const std::optional<protocol::Command> command = CommandTable::fromName(commandName);
     if (!command)
         return {}; // RequestText names the unknown command
+    const bool speedOn236 = *command == protocol::Command::Speed && t.onCan236();
+    // Never printed without the limit it was given: only V2.36's speed frame carries one.
+    if (t.torqueLimitA && !speedOn236)
+        return QStringLiteral("--torque-limit-a belongs to speed on --link can236 only");
     if (t.context.link == protocol::Link::Rs485) {
         return CommandTable::info(*command).canOnly
                    ? QStringLiteral("%1 exists on CAN V2.36 only (--link can236)").arg(commandName)
@@ -140,9 +144,6 @@ QString unavailable(const QString &commandName, const EncodeTarget &t)
     if (!CommandTable::availableOn(*command, t.context))
         return QStringLiteral("%1 does not exist on %2")
             .arg(commandName, protocol::dialectName(t.context));
-    const bool speedOn236 = *command == protocol::Command::Speed && t.onCan236();
-    if (t.torqueLimitA && !speedOn236)
-        return QStringLiteral("--torque-limit-a belongs to speed on --link can236 only");
     // On V2.36 the torque's scale is the series' own: without it the amps would be guessed.
     if (*command == protocol::Command::Torque && t.onCan236() && !t.seriesGiven)
         return QStringLiteral("torque on CAN V2.36 needs --series (its scale differs between "

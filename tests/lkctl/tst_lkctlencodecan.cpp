@@ -126,6 +126,8 @@ void tst_LkctlEncodeCan::refused_data()
     row("a torque limit where no frame carries one",
         "speed --id 1 --speed-dps 10 --link can --torque-limit-a 2",
         "--torque-limit-a belongs to speed on --link can236 only");
+    row("a torque limit on RS485", "speed --id 1 --speed-dps 10 --torque-limit-a 2",
+        "--torque-limit-a belongs to speed on --link can236 only");
     row("an unknown link", "motor_off --id 1 --link usb", "--link must be rs485, can or can236");
     row("an unknown series", "torque --id 1 --iq-a 1 --link can --series XY",
         "--series must be MS, MF, MG or MH");
