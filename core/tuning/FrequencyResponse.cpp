@@ -59,17 +59,17 @@ std::optional<FrequencyPoint> FrequencyResponse::measure(const QVector<double> &
                                                          double from, double to, DroppedReason *why,
                                                          double minSamplesPerPeriod)
 {
+    const SineComponent u = SineFit::ofHeld(inputT, inputV, hz, from, to);
+    if (!u.ok || u.amplitude <= 0) {
+        if (why)
+            *why = DroppedReason::NoInput;
+        return std::nullopt;
+    }
     const int samples = int(std::count_if(outputT.begin(), outputT.end(),
                                           [&](double t) { return t >= from && t <= to; }));
     if (double(samples) < minSamplesPerPeriod * (to - from) * hz) {
         if (why)
             *why = DroppedReason::TooFewSamples;
-        return std::nullopt;
-    }
-    const SineComponent u = SineFit::ofHeld(inputT, inputV, hz, from, to);
-    if (!u.ok || u.amplitude <= 0) {
-        if (why)
-            *why = DroppedReason::NoInput;
         return std::nullopt;
     }
     QVector<double> yt = outputT;
