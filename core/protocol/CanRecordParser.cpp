@@ -10,7 +10,8 @@ void CanRecordParser::feed(const char *data, qsizetype size, const Sink &sink)
     m_buf.append(data, size);
     qsizetype at = 0;
     for (; m_buf.size() - at >= CanRecord::kSize; at += CanRecord::kSize) {
-        const QByteArray bytes = m_buf.mid(at, CanRecord::kSize);
+        // A copy of its own: mid() of a buffer holding one record shares the whole buffer.
+        const QByteArray bytes(m_buf.constData() + at, CanRecord::kSize);
         if (const std::optional<CanRecord> record = CanRecord::decode(bytes.constData())) {
             handle(*record, bytes, sink);
             continue;

@@ -8,6 +8,15 @@
 namespace lk::protocol {
 
 namespace {
+/// `count` bytes of `buf` from `from`, in an allocation of their own. QByteArray::mid() returns
+/// the whole buffer, shared, when the range covers it (a chunk holding one frame): an event
+/// kept by a view (a Traffic row of the black box) then held the parser's reserved buffer,
+/// about 4 KiB a frame, hundreds of MB for a ring of traffic.
+QByteArray copyOf(const QByteArray &buf, qsizetype from, qsizetype count)
+{
+    return QByteArray(buf.constData() + from, count);
+}
+
 // Input is taken in slices so that the internal buffer stays bounded whatever the chunk size.
 constexpr qsizetype kSlice = 4096;
 
@@ -91,7 +100,7 @@ void StreamParser::emitError(ParseError error, qsizetype from, qsizetype count, 
     ParseEvent ev;
     ev.isFrame = false;
     ev.error = error;
-    ev.bytes = m_buf.mid(from, count);
+    ev.bytes = copyOf(m_buf, from, count);
     sink(ev);
 }
 
@@ -105,7 +114,7 @@ qsizetype StreamParser::consumeBadHeader(qsizetype pos, ParseError error, const 
     flushGarbage(sink);
     ParseEvent ev;
     ev.error = error;
-    ev.bytes = m_buf.mid(pos, k);
+    ev.bytes = copyOf(m_buf, pos, k);
     if (error == ParseError::BadLength) { // the header checksum held: its fields are real
         ev.frame.command = at(m_buf, pos + 1);
         ev.frame.id = at(m_buf, pos + 2);
@@ -146,10 +155,10 @@ void StreamParser::process(const Sink &sink)
         if (n() - pos < frameSize)
             break; // wait for the rest of the frame
         ParseEvent ev;
-        ev.bytes = m_buf.mid(pos, frameSize);
+        ev.bytes = copyOf(m_buf, pos, frameSize);
         ev.frame.command = cmd;
         ev.frame.id = id;
-        ev.frame.data = m_buf.mid(pos + kHeaderSize, len);
+        ev.frame.data = copyOf(m_buf, pos + kHeaderSize, len);
         pos += frameSize;
         if (len > 0 && at(ev.bytes, frameSize - 1) != byteSum(ev.frame.data.constData(), len)) {
             // The header is trusted (its checksum is good), so the whole frame is consumed.
