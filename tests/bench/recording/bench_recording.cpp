@@ -14,7 +14,8 @@
 //                                  and peak RSS to open and decode it whole into per-drive
 //                                  series (time, speed, torque) as "load all" would
 //
-// Usage: bench_recording [--minutes M] [--dir DIR]
+// Usage: bench_recording [--minutes M] [--dir DIR] [--keep FILE] (the hour's recording is
+// kept as FILE: bench_replay_gui opens it in lkstudio's window)
 #include "../bus/BenchUtil.h"
 
 #include <bus/BusClock.h>
@@ -224,7 +225,7 @@ struct Series {
     std::vector<float> torque;
 };
 
-void hour(double minutes, const QString &dir, bench::JsonLine &json)
+void hour(double minutes, const QString &dir, const QString &keep, bench::JsonLine &json)
 {
     const QString path = dir + QStringLiteral("/hour.lkrec");
     QElapsedTimer timer;
@@ -283,7 +284,9 @@ void hour(double minutes, const QString &dir, bench::JsonLine &json)
     json.add(QStringLiteral("hour_open_decode_s"), decodeS, 2);
     json.add(QStringLiteral("hour_peak_rss_mb_before_open"), rssBefore, 1);
     json.add(QStringLiteral("hour_peak_rss_mb"), peakRssMb(), 1);
-    QFile::remove(path);
+    QFile::remove(keep);
+    if (keep.isEmpty() || !QFile::rename(path, keep))
+        QFile::remove(path);
 }
 
 } // namespace
@@ -293,12 +296,15 @@ int main(int argc, char **argv)
     QCoreApplication app(argc, argv);
     double minutes = 60;
     QString dirArg;
+    QString keep;
     const QStringList args = app.arguments();
     for (int i = 1; i + 1 < args.size(); ++i) {
         if (args[i] == QLatin1String("--minutes"))
             minutes = args[i + 1].toDouble();
         else if (args[i] == QLatin1String("--dir"))
             dirArg = args[i + 1];
+        else if (args[i] == QLatin1String("--keep"))
+            keep = args[i + 1];
     }
     QTemporaryDir tmp(dirArg.isEmpty() ? QDir::tempPath() + QStringLiteral("/bench_recording")
                                        : dirArg + QStringLiteral("/bench_recording"));
@@ -311,7 +317,7 @@ int main(int argc, char **argv)
     json.add(QStringLiteral("blackbox_append_ns_per_chunk"), blackBoxNs(), 1);
     json.add(QStringLiteral("file_wire_ratio_poll"), fileWireRatio(115200, false));
     json.add(QStringLiteral("file_wire_ratio_poll_split"), fileWireRatio(115200, true));
-    hour(minutes, tmp.path(), json);
+    hour(minutes, tmp.path(), keep, json);
     json.print();
     return 0;
 }
