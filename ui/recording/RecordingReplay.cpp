@@ -203,16 +203,14 @@ protocol::DecodeContext RecordingReplay::contextOf(int id) const
     return c;
 }
 
-void RecordingReplay::takeCommand(const protocol::Frame &frame, double time,
-                                  bus::TelemetryBatch *telemetry)
+void RecordingReplay::takeCommand(const protocol::Frame &frame)
 {
     const protocol::RequestDecodeResult dec = protocol::decodeRequest(frame, contextOf(frame.id));
     if (dec.request)
-        takeCommand(*dec.request, time, telemetry);
+        takeCommand(*dec.request);
 }
 
-void RecordingReplay::takeCommand(const protocol::Request &request, double time,
-                                  bus::TelemetryBatch *telemetry)
+void RecordingReplay::takeCommand(const protocol::Request &request)
 {
     // Live, a listen-only session samples another master's commands (bus::ListenMonitor); the
     // tool's own commands are no samples, in a session or in its replay.
@@ -221,9 +219,9 @@ void RecordingReplay::takeCommand(const protocol::Request &request, double time,
         if (d.id == request.id)
             series = d.series;
     }
-    if (const auto s = bus::TelemetrySample::fromRequest(request, series,
-                                                         contextOf(request.id).generation, time))
-        telemetry->append(*s);
+    if (const auto s = bus::TelemetrySample::fromRequest(
+            request, series, contextOf(request.id).generation, m_chunkTime))
+        m_telemetry.append(*s);
 }
 
 void RecordingReplay::takeOtherFrame(const protocol::CanRecord &record)
@@ -248,7 +246,7 @@ void RecordingReplay::takeOtherFrame(const protocol::CanRecord &record)
     for (const bus::HeardMultiTorque::Slot &slot : *heard) {
         torques.append(slot.frame);
         if (!m_transmitted)
-            takeCommand(slot.request, m_chunkTime, &m_telemetry);
+            takeCommand(slot.request);
     }
     m_statistics.takeMultiTorque(torques, qint64(m_chunkTime * 1e9));
 }
@@ -256,24 +254,21 @@ void RecordingReplay::takeOtherFrame(const protocol::CanRecord &record)
 void RecordingReplay::onBytes(const QByteArray &bytes, bool transmitted)
 {
     m_transmitted = transmitted;
-    const double time = positionSeconds();
-    m_chunkTime = time;
+    m_chunkTime = positionSeconds();
     if (!m_parser)
         return;
     m_statistics.addBytes(bytes.size());
-    m_parser->feed(
-        bytes, [&](const protocol::ParseEvent &e) { onFrame(e, time, &m_traffic, &m_telemetry); });
+    m_parser->feed(bytes, [this](const protocol::ParseEvent &e) { onFrame(e); });
     if (!m_traffic.isEmpty())
         emit trafficCaptured(std::exchange(m_traffic, {}));
     if (!m_telemetry.isEmpty())
         emit telemetryReceived(std::exchange(m_telemetry, {}));
     if (m_statistics.snapshotDue(positionNs()))
         emitStatistics();
-    emit positionChanged(time);
+    emit positionChanged(m_chunkTime);
 }
 
-void RecordingReplay::onFrame(const protocol::ParseEvent &event, double time,
-                              bus::TrafficBatch *traffic, bus::TelemetryBatch *telemetry)
+void RecordingReplay::onFrame(const protocol::ParseEvent &event)
 {
     protocol::ParseEvent e = event;
     if (m_link == protocol::Link::Can && e.isFrame && !e.echoed) {
@@ -283,14 +278,14 @@ void RecordingReplay::onFrame(const protocol::ParseEvent &event, double time,
             recording::learnCanGeneration(m_context, e))
             setContext(m_context);
     }
-    m_statistics.take(event, contextOf(e.frame.id), qint64(time * 1e9));
+    m_statistics.take(event, contextOf(e.frame.id), qint64(m_chunkTime * 1e9));
     bus::TrafficEvent row;
-    row.time = time;
+    row.time = m_chunkTime;
     row.bytes = e.bytes;
     if (!e.isFrame) {
         row.kind = bus::TrafficEvent::Kind::Fault;
         row.error = e.error;
-        traffic->append(row);
+        m_traffic.append(row);
         return;
     }
     const protocol::DecodeContext context = contextOf(e.frame.id);
@@ -299,21 +294,21 @@ void RecordingReplay::onFrame(const protocol::ParseEvent &event, double time,
     row.command = e.frame.command;
     row.frame = e.frame;
     row.context = context;
-    traffic->append(row);
+    m_traffic.append(row);
     if (e.direction == protocol::FrameDirection::Request && !m_transmitted && !e.echoed)
-        takeCommand(e.frame, time, telemetry);
+        takeCommand(e.frame);
     if (e.direction != protocol::FrameDirection::Reply)
         return;
     const auto reply = protocol::decodeReply(e.frame, context);
     if (!reply.reply)
         return;
     learnModel(*reply.reply);
-    if (const auto s = bus::TelemetrySample::fromReply(*reply.reply, time)) {
+    if (const auto s = bus::TelemetrySample::fromReply(*reply.reply, m_chunkTime)) {
         if (!m_seen.contains(s->id)) {
             m_seen.append(s->id);
             emit driveSeen(s->id);
         }
-        telemetry->append(*s);
+        m_telemetry.append(*s);
     }
 }
 

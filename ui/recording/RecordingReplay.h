@@ -76,14 +76,15 @@ signals:
 private:
     void onBytes(const QByteArray &bytes, bool transmitted);
     void onRecord(const recording::RecordEvent &record);
-    void onFrame(const protocol::ParseEvent &event, double time, bus::TrafficBatch *traffic,
-                 bus::TelemetryBatch *telemetry);
+    /// One parsed frame or fault of the chunk being played: its rows and samples go to
+    /// m_traffic and m_telemetry, at m_chunkTime.
+    void onFrame(const protocol::ParseEvent &event);
     protocol::DecodeContext contextOf(int id) const;
     void setContext(const recording::ContextSnapshot &context);
     void learnModel(const protocol::Reply &reply);
     /// What another master's request commands, as the live listener samples it.
-    void takeCommand(const protocol::Frame &frame, double time, bus::TelemetryBatch *telemetry);
-    void takeCommand(const protocol::Request &request, double time, bus::TelemetryBatch *telemetry);
+    void takeCommand(const protocol::Frame &frame);
+    void takeCommand(const protocol::Request &request);
     /// A frame on no drive's ID: a multi-motor torque frame (CAN 0x280) is a traffic row, a
     /// request to each drive it names (statistics) and, another master's, its commands.
     void takeOtherFrame(const protocol::CanRecord &record);
