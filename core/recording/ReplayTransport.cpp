@@ -175,6 +175,8 @@ void ReplayTransport::tick()
         advance();
         emitRecord(record);
     }
+    if (m_state == State::Open)
+        emit batchPlayed();
     if (!m_next && m_state == State::Open) {
         emit finished();
         return;

@@ -73,6 +73,9 @@ signals:
     /// recording tool sent them, which a reader that tells its own commands from another
     /// master's needs.
     void chunkPlayed(const QByteArray &bytes, bool transmitted);
+    /// The records due at this turn of the event loop were played (a reader that gathers
+    /// what the chunks give hands it on here: once a batch, not once a chunk).
+    void batchPlayed();
     void writeRefused(int bytes);
     /// The last record was played (or the damage that ends the file was reached).
     void finished();

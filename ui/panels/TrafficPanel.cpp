@@ -77,7 +77,12 @@ TrafficPanel::TrafficPanel(BusModel *model, QWidget *parent, int capacity)
 
     m_flush = new QTimer(this);
     m_flush->setInterval(kFlushMs);
-    connect(m_flush, &QTimer::timeout, this, &TrafficPanel::flush);
+    // Only a table someone looks at (or keeps recording) is filled as the rows come; a hidden
+    // one catches up when it is shown.
+    connect(m_flush, &QTimer::timeout, this, [this] {
+        if (m_wantCapture)
+            flush();
+    });
     m_flush->start();
     connect(m_bus, &BusModel::statisticsChanged, this, &TrafficPanel::updateCounts);
     connect(m_bus, &BusModel::connectionChanged, this, [this] { m_model->setLink(m_bus->link()); });
@@ -150,6 +155,7 @@ QWidget *TrafficPanel::buildToolbar()
     connect(m_record, &QToolButton::toggled, this, &TrafficPanel::updateCapture);
     connect(clear, &QToolButton::clicked, this, [this] {
         m_pending.clear();
+        m_pendingRows = 0;
         m_model->clear();
         updateCounts();
     });
@@ -177,18 +183,25 @@ bool TrafficPanel::isPaused() const
 
 void TrafficPanel::appendTraffic(const bus::TrafficBatch &batch)
 {
-    m_pending += batch;
-    // The bus can outrun the 10 Hz flush for a while: never hold more than the table keeps.
-    const qsizetype excess = m_pending.size() - m_model->capacity();
-    if (excess > 0) {
-        m_model->countOnly(m_pending.mid(0, excess));
-        m_pending.remove(0, excess);
+    if (batch.isEmpty())
+        return;
+    // Batches are kept as they came (shared, not copied row by row). The bus can outrun the
+    // 10 Hz flush, a hidden table is not filled at all, and a replay's "Load all" hands on
+    // millions of rows: a batch none of whose rows the table could keep is only counted.
+    m_pending.append(batch);
+    m_pendingRows += batch.size();
+    while (m_pending.size() > 1 &&
+           m_pendingRows - m_pending.first().size() >= qsizetype(m_model->capacity())) {
+        m_model->countOnly(m_pending.first());
+        m_pendingRows -= m_pending.first().size();
+        m_pending.removeFirst();
     }
 }
 
 void TrafficPanel::showTraffic(const bus::TrafficBatch &batch)
 {
     m_pending.clear();
+    m_pendingRows = 0;
     m_model->clear();
     appendTraffic(batch);
     flush();
@@ -201,11 +214,20 @@ void TrafficPanel::flush()
         return;
     QScrollBar *bar = m_view->verticalScrollBar();
     const bool atBottom = bar->value() >= bar->maximum() - 2;
-    if (isPaused())
-        m_model->countOnly(m_pending);
-    else
-        m_model->append(m_pending);
+    if (isPaused()) {
+        for (const bus::TrafficBatch &batch : std::as_const(m_pending))
+            m_model->countOnly(batch);
+    } else if (m_pending.size() == 1) {
+        m_model->append(m_pending.first());
+    } else {
+        bus::TrafficBatch all; // one insertion into the table, however many batches came
+        all.reserve(m_pendingRows);
+        for (const bus::TrafficBatch &batch : std::as_const(m_pending))
+            all += batch;
+        m_model->append(all);
+    }
     m_pending.clear();
+    m_pendingRows = 0;
     updateCounts();
     if (atBottom && !isPaused())
         m_view->scrollToBottom();
@@ -310,6 +332,7 @@ void TrafficPanel::showEvent(QShowEvent *event)
     QWidget::showEvent(event);
     m_shown = true;
     updateCapture();
+    flush();
 }
 
 void TrafficPanel::hideEvent(QHideEvent *event)

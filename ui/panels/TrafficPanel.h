@@ -73,7 +73,8 @@ private:
     QToolButton *m_record = nullptr;
     QLabel *m_counts = nullptr;
     QTimer *m_flush = nullptr;
-    bus::TrafficBatch m_pending;
+    QList<bus::TrafficBatch> m_pending; ///< not yet in the table, oldest first
+    qsizetype m_pendingRows = 0;        ///< the rows of m_pending
     bool m_shown = false;
     bool m_wantCapture = false;
 };

@@ -5,6 +5,7 @@
 #include <QtCore/QCoreApplication>
 
 #include <array>
+#include <vector>
 
 namespace lk::ui {
 
@@ -73,12 +74,22 @@ int channelColumn(TelemetryChannel channel, bool power)
 
 std::optional<TelemetryChannel> channelOfColumn(int column)
 {
-    for (int c = 0; c < kTelemetryChannelCount; ++c) {
-        const ChannelColumns &columns = channelColumns()[size_t(c)];
-        if (columns.column == column || columns.powerColumn == column)
-            return TelemetryChannel(c);
-    }
-    return std::nullopt;
+    // Asked for every field of every sample the store takes: a table, built once.
+    static const std::vector<std::optional<TelemetryChannel>> kChannels = [] {
+        std::vector<std::optional<TelemetryChannel>> out(
+            size_t(bus::TelemetryFieldInfo::all().size()));
+        for (int c = 0; c < kTelemetryChannelCount; ++c) {
+            const ChannelColumns &columns = channelColumns()[size_t(c)];
+            for (const int column : {columns.column, columns.powerColumn}) {
+                if (!out[size_t(column)])
+                    out[size_t(column)] = TelemetryChannel(c);
+            }
+        }
+        return out;
+    }();
+    if (column < 0 || size_t(column) >= kChannels.size())
+        return std::nullopt;
+    return kChannels[size_t(column)];
 }
 
 Quantity channelQuantity(TelemetryChannel channel, bool power)

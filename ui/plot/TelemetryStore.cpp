@@ -35,7 +35,12 @@ void TelemetryStore::appendSample(const lk::bus::TelemetrySample &sample)
     Drive &drive = m_drives[sample.id];
     m_cycles.add(sample);
     const QVector<lk::bus::TelemetryFieldInfo> &rows = lk::bus::TelemetryFieldInfo::all();
-    for (int column : lk::bus::TelemetryFieldInfo::of(sample.fields)) {
+    // Every column of the table the sample carries, without a list per sample: a replay's
+    // "Load all" puts millions of samples through here.
+    for (int column = 0; column < rows.size(); ++column) {
+        if (!sample.fields.testFlag(rows.at(column).field)) {
+            continue;
+        }
         const std::optional<TelemetryChannel> channel = channelOfColumn(column);
         if (!channel) {
             continue; // not plotted

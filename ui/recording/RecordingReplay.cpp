@@ -29,6 +29,8 @@ bool RecordingReplay::open(const QString &path, recording::ReplayTransport::Opti
             &RecordingReplay::onBytes);
     connect(transport.get(), &recording::ReplayTransport::recordPlayed, this,
             &RecordingReplay::onRecord);
+    connect(transport.get(), &recording::ReplayTransport::batchPlayed, this,
+            &RecordingReplay::handOnBatch);
     connect(transport.get(), &recording::ReplayTransport::finished, this, [this] {
         emitStatistics(); // the figures at the end
         emit finished();
@@ -154,6 +156,7 @@ void RecordingReplay::setContext(const recording::ContextSnapshot &context)
         m.generationSeen = true; // the recording says it: the session knew it then
         m.identityChosen = d.chosen;
     }
+    handOnRows(); // what came before the change reaches the views first
     emit drivesChanged(context);
     emit knownMotorsChanged(m_known);
 }
@@ -170,6 +173,7 @@ void RecordingReplay::learnModel(const protocol::Reply &reply)
     m.id = reply.id;
     m.model = *model;
     m.generation = model->generation;
+    handOnRows();
     emit knownMotorsChanged(m_known);
 }
 
@@ -219,9 +223,9 @@ void RecordingReplay::takeCommand(const protocol::Request &request)
         if (d.id == request.id)
             series = d.series;
     }
-    if (const auto s = bus::TelemetrySample::fromRequest(
-            request, series, contextOf(request.id).generation, m_chunkTime))
-        m_telemetry.append(*s);
+    if (auto s = bus::TelemetrySample::fromRequest(request, series,
+                                                   contextOf(request.id).generation, m_chunkTime))
+        m_telemetry.append(std::move(*s));
 }
 
 void RecordingReplay::takeOtherFrame(const protocol::CanRecord &record)
@@ -241,7 +245,7 @@ void RecordingReplay::takeOtherFrame(const protocol::CanRecord &record)
     row.time = m_chunkTime;
     row.bytes = record.encode();
     row.context.link = m_link; // TrafficModel reads the slots from the record
-    m_traffic.append(row);
+    m_traffic.append(std::move(row));
     QVector<protocol::Frame> torques;
     for (const bus::HeardMultiTorque::Slot &slot : *heard) {
         torques.append(slot.frame);
@@ -259,13 +263,22 @@ void RecordingReplay::onBytes(const QByteArray &bytes, bool transmitted)
         return;
     m_statistics.addBytes(bytes.size());
     m_parser->feed(bytes, [this](const protocol::ParseEvent &e) { onFrame(e); });
+}
+
+void RecordingReplay::handOnRows()
+{
     if (!m_traffic.isEmpty())
         emit trafficCaptured(std::exchange(m_traffic, {}));
     if (!m_telemetry.isEmpty())
         emit telemetryReceived(std::exchange(m_telemetry, {}));
+}
+
+void RecordingReplay::handOnBatch()
+{
+    handOnRows();
     if (m_statistics.snapshotDue(positionNs()))
         emitStatistics();
-    emit positionChanged(m_chunkTime);
+    emit positionChanged(positionSeconds());
 }
 
 void RecordingReplay::onFrame(const protocol::ParseEvent &event)
@@ -285,7 +298,7 @@ void RecordingReplay::onFrame(const protocol::ParseEvent &event)
     if (!e.isFrame) {
         row.kind = bus::TrafficEvent::Kind::Fault;
         row.error = e.error;
-        m_traffic.append(row);
+        m_traffic.append(std::move(row));
         return;
     }
     const protocol::DecodeContext context = contextOf(e.frame.id);
@@ -294,7 +307,7 @@ void RecordingReplay::onFrame(const protocol::ParseEvent &event)
     row.command = e.frame.command;
     row.frame = e.frame;
     row.context = context;
-    m_traffic.append(row);
+    m_traffic.append(std::move(row));
     if (e.direction == protocol::FrameDirection::Request && !m_transmitted && !e.echoed)
         takeCommand(e.frame);
     if (e.direction != protocol::FrameDirection::Reply)
@@ -303,12 +316,13 @@ void RecordingReplay::onFrame(const protocol::ParseEvent &event)
     if (!reply.reply)
         return;
     learnModel(*reply.reply);
-    if (const auto s = bus::TelemetrySample::fromReply(*reply.reply, m_chunkTime)) {
+    if (auto s = bus::TelemetrySample::fromReply(*reply.reply, m_chunkTime)) {
         if (!m_seen.contains(s->id)) {
             m_seen.append(s->id);
+            handOnRows();
             emit driveSeen(s->id);
         }
-        m_telemetry.append(*s);
+        m_telemetry.append(std::move(*s));
     }
 }
 

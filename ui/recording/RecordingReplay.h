@@ -89,6 +89,10 @@ private:
     /// request to each drive it names (statistics) and, another master's, its commands.
     void takeOtherFrame(const protocol::CanRecord &record);
     void emitStatistics();
+    /// The rows and samples gathered so far go to the views: at the end of each batch the
+    /// transport plays, and before a drive or context signal, so the views see them in order.
+    void handOnRows();
+    void handOnBatch();
     qint64 positionNs() const;
 
     std::unique_ptr<recording::ReplayTransport> m_transport;
@@ -103,7 +107,7 @@ private:
     recording::ReplayStatistics m_statistics;
     bus::KnownMotors m_known;
     bool m_transmitted = false; ///< the chunk being parsed is one the recording tool sent
-    // What the chunk being parsed gives, emitted when it is done.
+    // What the chunks of the batch being played give, emitted when it is done.
     double m_chunkTime = 0;
     bus::TrafficBatch m_traffic;
     bus::TelemetryBatch m_telemetry;

@@ -11,7 +11,8 @@
 //   replay_samples         telemetry samples the replay gave the views
 //   replay_peak_rss_mb     the process's peak resident set (the issue asks <= 1 GB)
 //
-// Usage: bench_replay_gui [--minutes M] (default 60)
+// Usage: bench_replay_gui [--minutes M] (default 60) [--file FILE] (open FILE, written before
+// by bench_recording --keep, instead of writing one: for profiling the open alone)
 
 #include "../bus/BenchUtil.h"
 
@@ -43,30 +44,41 @@ double peakRssMb()
     return double(u.ru_maxrss) / 1024.0;
 }
 
+/// bench_recording writes `minutes` of the 4-drive bus to `file`.
+bool writeRecording(double minutes, const QString &dir, const QString &file)
+{
+    QProcess writer;
+    writer.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+    writer.setStandardOutputFile(QProcess::nullDevice());
+    writer.start(QStringLiteral(BENCH_RECORDING_PATH),
+                 {QStringLiteral("--minutes"), QString::number(minutes), QStringLiteral("--dir"),
+                  dir, QStringLiteral("--keep"), file});
+    if (!writer.waitForFinished(600000) || writer.exitCode() != 0 || !QFile::exists(file)) {
+        std::fprintf(stderr, "bench_replay_gui: bench_recording did not write %s\n",
+                     qPrintable(file));
+        return false;
+    }
+    return true;
+}
+
 } // namespace
 
 int main(int argc, char **argv)
 {
     QApplication app(argc, argv);
     double minutes = 60;
+    QString given;
     const QStringList args = app.arguments();
     for (int i = 1; i + 1 < args.size(); ++i) {
         if (args[i] == QLatin1String("--minutes"))
             minutes = args[i + 1].toDouble();
+        else if (args[i] == QLatin1String("--file"))
+            given = args[i + 1];
     }
     QTemporaryDir dir;
-    const QString file = dir.filePath(QStringLiteral("hour.lkrec"));
-    QProcess writer;
-    writer.setProcessChannelMode(QProcess::ForwardedErrorChannel);
-    writer.setStandardOutputFile(QProcess::nullDevice());
-    writer.start(QStringLiteral(BENCH_RECORDING_PATH),
-                 {QStringLiteral("--minutes"), QString::number(minutes), QStringLiteral("--dir"),
-                  dir.path(), QStringLiteral("--keep"), file});
-    if (!writer.waitForFinished(600000) || writer.exitCode() != 0 || !QFile::exists(file)) {
-        std::fprintf(stderr, "bench_replay_gui: bench_recording did not write %s\n",
-                     qPrintable(file));
+    const QString file = given.isEmpty() ? dir.filePath(QStringLiteral("hour.lkrec")) : given;
+    if (given.isEmpty() && !writeRecording(minutes, dir.path(), file))
         return 1;
-    }
 
     ui::AppSettings settings(dir.filePath(QStringLiteral("lkstudio.ini")));
     ui::MainWindow window(&settings);
