@@ -46,7 +46,8 @@ public:
 
     virtual ~FrameParser() = default;
     virtual void feed(const char *data, qsizetype size, const Sink &sink) = 0;
-    void feed(const QByteArray &bytes, const Sink &sink)
+    /// The same, from a QByteArray a parser may share rather than copy.
+    virtual void feed(const QByteArray &bytes, const Sink &sink)
     {
         feed(bytes.constData(), bytes.size(), sink);
     }

@@ -55,6 +55,18 @@ void StreamParser::feed(const char *data, qsizetype size, const Sink &sink)
     }
 }
 
+void StreamParser::feed(const QByteArray &bytes, const Sink &sink)
+{
+    // Shared only when the chunk's allocation is its bytes (not a reserved read buffer: see
+    // copyOf) and it lands alone at the start of the buffer.
+    constexpr qsizetype kSlack = 32;
+    const bool shareable = m_buf.isEmpty() && m_garbage.isEmpty() && bytes.size() <= kSlice &&
+                           bytes.capacity() <= bytes.size() + kSlack;
+    m_chunk = shareable ? &bytes : nullptr;
+    feed(bytes.constData(), bytes.size(), sink);
+    m_chunk = nullptr;
+}
+
 void StreamParser::finish(const Sink &sink)
 {
     process(sink);
@@ -155,7 +167,9 @@ void StreamParser::process(const Sink &sink)
         if (n() - pos < frameSize)
             break; // wait for the rest of the frame
         ParseEvent ev;
-        ev.bytes = copyOf(m_buf, pos, frameSize);
+        ev.bytes = m_chunk && pos == 0 && frameSize == m_chunk->size()
+                       ? *m_chunk
+                       : copyOf(m_buf, pos, frameSize);
         ev.frame.command = cmd;
         ev.frame.id = id;
         ev.frame.data = copyOf(m_buf, pos + kHeaderSize, len);

@@ -21,6 +21,9 @@ class StreamParser : public FrameParser {
 public:
     using FrameParser::feed;
     void feed(const char *data, qsizetype size, const Sink &sink) override;
+    /// A chunk that is exactly one frame, and holds no more memory than its bytes, gives that
+    /// frame its bytes shared, without a copy (a replay's records, a quiet bus's reads).
+    void feed(const QByteArray &bytes, const Sink &sink) override;
     /// End of stream: a pending partial frame is reported as Truncated.
     void finish(const Sink &sink) override;
     /// Drop pending bytes without reporting them (e.g. after reopening a port).
@@ -40,6 +43,8 @@ private:
 
     QByteArray m_buf;     ///< unconsumed bytes: at most one partial frame plus one input slice
     QByteArray m_garbage; ///< the current run of garbage, reported when it ends (or per 4 KiB)
+    /// While feed(QByteArray) runs: the chunk, when m_buf holds it and nothing before it.
+    const QByteArray *m_chunk = nullptr;
 };
 
 /// The seam's name for it: the parser of the RS485 link.

@@ -166,22 +166,35 @@ void ReplayTransport::tick()
     if (m_state != State::Open || m_paused)
         return;
     // Load all: a batch per turn of the event loop; else what is due by now.
-    const bool fast = m_options.fastForward;
-    const qint64 target = fast ? std::numeric_limits<qint64>::max() : targetNs();
-    for (int i = 0; (!fast || i < kFastForwardBatch) && m_next && m_next->timeNs <= target &&
-                    m_state == State::Open;
+    if (m_options.fastForward)
+        playDue(std::numeric_limits<qint64>::max(), kFastForwardBatch);
+    else
+        playDue(targetNs(), std::numeric_limits<int>::max());
+    if (m_next && m_state == State::Open)
+        schedule();
+}
+
+bool ReplayTransport::playNextBatch()
+{
+    if (m_state != State::Open || !m_next)
+        return false;
+    playDue(std::numeric_limits<qint64>::max(), kFastForwardBatch);
+    return m_next && m_state == State::Open;
+}
+
+void ReplayTransport::playDue(qint64 targetNs, int max)
+{
+    for (int i = 0; i < max && m_next && m_next->timeNs <= targetNs && m_state == State::Open;
          ++i) {
         const RecordEvent record = std::move(*m_next);
         advance();
         emitRecord(record);
     }
-    if (m_state == State::Open)
-        emit batchPlayed();
-    if (!m_next && m_state == State::Open) {
-        emit finished();
+    if (m_state != State::Open)
         return;
-    }
-    schedule();
+    emit batchPlayed();
+    if (!m_next)
+        emit finished();
 }
 
 bool ReplayTransport::seek(qint64 ns)

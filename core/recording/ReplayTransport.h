@@ -58,6 +58,10 @@ public:
     double speed() const { return m_options.speed; }
     void setSkipIdleNs(qint64 ns) { m_options.skipIdleNs = qMax<qint64>(0, ns); }
     void setFastForward(bool on);
+    /// Play the next batch of records at once, whatever their times, then batchPlayed (and
+    /// finished at the end); false once nothing is left. It never touches the timer, so a
+    /// worker thread may drive a paused transport through it (RecordingReplay's "Load all").
+    bool playNextBatch();
     void play();
     void pause();
     bool isPaused() const { return m_paused; }
@@ -86,6 +90,8 @@ private:
     void advance();
     void emitRecord(const RecordEvent &record);
     void tick();
+    /// Play up to `max` records due by `targetNs`, then batchPlayed (and finished at the end).
+    void playDue(qint64 targetNs, int max);
     void schedule();
 
     QString m_path;

@@ -1,31 +1,25 @@
 #pragma once
 
-#include <recording/ReplayStatistics.h>
-#include <recording/ReplayTransport.h>
-
-#include <bus/KnownMotor.h>
-#include <bus/ListenStatistics.h>
-#include <bus/TelemetrySample.h>
-#include <bus/TrafficEvent.h>
-#include <protocol/FrameParser.h>
+#include <recording/ReplayDecoder.h>
 
 #include <QtCore/QObject>
 
+#include <atomic>
 #include <memory>
+#include <optional>
+
+class QThread;
 
 namespace lk::ui {
 
-/// Plays a recording into what the live views read: its frames as traffic rows and its
-/// replies as telemetry samples on the recording's clock (seconds since it started), decoded
-/// with the decode context the recording carries at each moment. Built on ReplayTransport,
-/// which never transmits; no bus session is involved, so nothing can be sent while it plays.
-/// A recording made on CAN plays as CAN frames, each one's direction told as a listener tells
-/// it (bus::PassivePairing::canDirections).
+/// A recording played into the views (recording::ReplayDecoder does the decoding): at its
+/// pace on the event loop, or all of what is left at once ("Load all"), decoded on a worker
+/// thread while the views take each batch on this one, so an hour's recording loads in
+/// seconds. Nothing here can transmit.
 ///
-/// As live listening does, it also gives the statistics of the traffic (ListenStatistics on
-/// the recording's clock, every half second of it and at the end; a seek starts them afresh)
-/// and what is known of each drive (series and generation from the recording's decode
-/// context, model and firmware from the read_model replies that pass).
+/// While Load all runs, the worker owns the decoder: pause, seek and close stop it first (what
+/// it decoded reaches the views before they return), and the getters answer from what this
+/// object was told.
 class RecordingReplay : public QObject {
     Q_OBJECT
 public:
@@ -37,26 +31,31 @@ public:
     /// a file damaged later opens up to the damage and damage() says where.
     bool open(const QString &path, recording::ReplayTransport::Options options, QString *error);
     void close();
-    bool isOpen() const { return m_transport != nullptr; }
-    QString path() const { return m_path; }
+    bool isOpen() const { return m_decoder->isOpen(); }
+    QString path() const { return m_decoder->path(); }
 
-    const recording::RecordingHeader &header() const { return m_transport->header(); }
+    const recording::RecordingHeader &header() const { return m_decoder->header(); }
     /// The link of the stream being replayed (a recording may change it at a Link record).
-    protocol::Link link() const { return m_link; }
-    /// Where the file stops being readable; Kind::None for a whole file.
+    protocol::Link link() const { return m_decoder->link(); }
+    /// Where the file stops being readable; Kind::None for a whole file (as far as read, while
+    /// Load all runs).
     recording::RecordingError damage() const;
     double durationSeconds() const;
     double positionSeconds() const;
     bool isPaused() const;
     bool isFinished() const;
-    double speed() const;
+    double speed() const { return m_decoder->speed(); }
+    /// Load all is running on its worker.
+    bool isLoadingAll() const { return m_loader != nullptr; }
 
     void play();
+    /// Pause (and stop Load all where it got to).
     void pause();
     void setSpeed(double speed);
-    /// Continue from `seconds` into the recording (what was shown stays; later rows follow).
+    /// Continue from `seconds` into the recording (what was shown stays; later rows follow);
+    /// stops Load all, paused there.
     void seek(double seconds);
-    /// Everything left at once, as fast as the event loop takes it ("Load all").
+    /// Everything left at once, decoded on a worker thread ("Load all"); finished at the end.
     void loadAll();
 
 signals:
@@ -74,43 +73,22 @@ signals:
     void finished();
 
 private:
-    void onBytes(const QByteArray &bytes, bool transmitted);
-    void onRecord(const recording::RecordEvent &record);
-    /// One parsed frame or fault of the chunk being played: its rows and samples go to
-    /// m_traffic and m_telemetry, at m_chunkTime.
-    void onFrame(const protocol::ParseEvent &event);
-    protocol::DecodeContext contextOf(int id) const;
-    void setContext(const recording::ContextSnapshot &context);
-    void learnModel(const protocol::Reply &reply);
-    /// What another master's request commands, as the live listener samples it.
-    void takeCommand(const protocol::Frame &frame);
-    void takeCommand(const protocol::Request &request);
-    /// A frame on no drive's ID: a multi-motor torque frame (CAN 0x280) is a traffic row, a
-    /// request to each drive it names (statistics) and, another master's, its commands.
-    void takeOtherFrame(const protocol::CanRecord &record);
-    void emitStatistics();
-    /// The rows and samples gathered so far go to the views: at the end of each batch the
-    /// transport plays, and before a drive or context signal, so the views see them in order.
-    void handOnRows();
-    void handOnBatch();
-    qint64 positionNs() const;
+    /// Stop the Load all worker where it got to and wait for it; what it handed on is
+    /// delivered before this returns.
+    void stopLoading();
+    /// The worker is done (or told to stop): join it.
+    void joinLoader();
 
-    std::unique_ptr<recording::ReplayTransport> m_transport;
-    QString m_path;
-    /// A new stream of the recording's link: RS485 bytes or CAN records.
-    void restartParser();
-
-    std::unique_ptr<protocol::FrameParser> m_parser;
-    protocol::Link m_link = protocol::Link::Rs485;
-    recording::ContextSnapshot m_context;
-    QVector<int> m_seen; ///< every drive reported (context or reply)
-    recording::ReplayStatistics m_statistics;
-    bus::KnownMotors m_known;
-    bool m_transmitted = false; ///< the chunk being parsed is one the recording tool sent
-    // What the chunks of the batch being played give, emitted when it is done.
-    double m_chunkTime = 0;
-    bus::TrafficBatch m_traffic;
-    bus::TelemetryBatch m_telemetry;
+    std::unique_ptr<recording::ReplayDecoder> m_decoder;
+    QThread *m_loader = nullptr;
+    std::atomic<bool> m_stopLoading{false};
+    /// Batches the worker decoded that the views have not taken yet.
+    std::atomic<int> m_batchesAhead{0};
+    // What the getters answer while the worker owns the decoder.
+    double m_loadingPosition = 0;
+    double m_loadingDuration = 0;
+    recording::RecordingError m_loadingDamage;
+    std::optional<double> m_speedAfterLoading;
 };
 
 } // namespace lk::ui

@@ -1,0 +1,344 @@
+#include "ReplayDecoder.h"
+
+#include "RecordedFrameParser.h"
+#include <bus/HeardMultiTorque.h>
+#include <bus/PassivePairing.h>
+#include <protocol/Reply.h>
+#include <protocol/Request.h>
+
+#include <optional>
+#include <utility>
+
+namespace lk::recording {
+
+using lk::recording::RecordEvent;
+
+ReplayDecoder::ReplayDecoder(QObject *parent) : QObject(parent) {}
+
+ReplayDecoder::~ReplayDecoder() = default;
+
+bool ReplayDecoder::open(const QString &path, ReplayTransport::Options options, QString *error)
+{
+    close();
+    auto transport = std::make_unique<ReplayTransport>(path, std::move(options));
+    QString failure;
+    const auto failed =
+        connect(transport.get(), &transport::Transport::errorOccurred, this,
+                [&failure](const transport::TransportError &e) { failure = e.message; });
+    // Direct: a worker playing the transport (Load all) must decode on its own thread.
+    connect(transport.get(), &ReplayTransport::chunkPlayed, this, &ReplayDecoder::onBytes,
+            Qt::DirectConnection);
+    connect(transport.get(), &ReplayTransport::recordPlayed, this, &ReplayDecoder::onRecord,
+            Qt::DirectConnection);
+    connect(transport.get(), &ReplayTransport::batchPlayed, this, &ReplayDecoder::handOnBatch,
+            Qt::DirectConnection);
+    connect(
+        transport.get(), &ReplayTransport::finished, this,
+        [this] {
+            emitStatistics(); // the figures at the end
+            emit finished();
+        },
+        Qt::DirectConnection);
+    m_seen.clear();
+    m_context.clear();
+    m_known.clear();
+    m_transport = std::move(transport);
+    m_path = path;
+    if (!m_transport->open()) {
+        disconnect(failed);
+        m_transport.reset();
+        m_path.clear();
+        if (error)
+            *error = failure;
+        return false;
+    }
+    disconnect(failed); // it writes to this call's local
+    m_link = linkOf(m_transport->header());
+    m_statistics.restart(m_link, m_transport->header().baud, 0);
+    restartParser();
+    setContext(m_transport->header().context);
+    emitStatistics();
+    return true;
+}
+
+void ReplayDecoder::close()
+{
+    if (m_transport)
+        m_transport->close();
+    m_transport.reset();
+    m_path.clear();
+}
+
+RecordingError ReplayDecoder::damage() const
+{
+    return m_transport ? m_transport->damage() : RecordingError{};
+}
+
+double ReplayDecoder::durationSeconds() const
+{
+    return m_transport ? double(m_transport->durationNs()) * 1e-9 : 0;
+}
+
+double ReplayDecoder::positionSeconds() const
+{
+    return m_transport ? double(m_transport->positionNs()) * 1e-9 : 0;
+}
+
+bool ReplayDecoder::isPaused() const
+{
+    return m_transport && m_transport->isPaused();
+}
+
+bool ReplayDecoder::isFinished() const
+{
+    return !m_transport || m_transport->isFinished();
+}
+
+double ReplayDecoder::speed() const
+{
+    return m_transport ? m_transport->speed() : 1.0;
+}
+
+void ReplayDecoder::play()
+{
+    if (m_transport)
+        m_transport->play();
+}
+
+void ReplayDecoder::pause()
+{
+    if (m_transport)
+        m_transport->pause();
+}
+
+void ReplayDecoder::setSpeed(double speed)
+{
+    if (m_transport)
+        m_transport->setSpeed(speed);
+}
+
+void ReplayDecoder::seek(double seconds)
+{
+    if (!m_transport)
+        return;
+    restartParser(); // a frame cut by the jump is no frame
+    m_transport->seek(qint64(seconds * 1e9));
+    // The figures count from the new place: what came before it is not heard again.
+    m_statistics.restart(m_link, m_transport->header().baud, positionNs());
+    emitStatistics();
+    emit positionChanged(positionSeconds());
+}
+
+bool ReplayDecoder::playNextBatch()
+{
+    return m_transport && m_transport->playNextBatch();
+}
+
+qint64 ReplayDecoder::positionNs() const
+{
+    return m_transport ? m_transport->positionNs() : 0;
+}
+
+void ReplayDecoder::emitStatistics()
+{
+    if (m_transport)
+        emit listenStatisticsUpdated(m_statistics.snapshot(positionNs()));
+}
+
+void ReplayDecoder::setContext(const ContextSnapshot &context)
+{
+    m_context = context;
+    for (const DriveContext &d : context) {
+        if (!m_seen.contains(d.id))
+            m_seen.append(d.id);
+        bus::KnownMotor &m = m_known[d.id];
+        m.id = d.id;
+        if (d.series)
+            m.series = d.series;
+        m.generation = m.model ? m.model->generation : d.generation;
+        m.generationSeen = true; // the recording says it: the session knew it then
+        m.identityChosen = d.chosen;
+    }
+    handOnRows(); // what came before the change reaches the views first
+    emit drivesChanged(context);
+    emit knownMotorsChanged(m_known);
+}
+
+void ReplayDecoder::learnModel(const protocol::Reply &reply)
+{
+    const auto *model = std::get_if<protocol::ModelInfo>(&reply.payload);
+    if (!model)
+        return;
+    bus::KnownMotor &m = m_known[reply.id];
+    if (m.model && m.model->motorName == model->motorName &&
+        m.model->driverName == model->driverName && m.model->firmwareRaw == model->firmwareRaw)
+        return;
+    m.id = reply.id;
+    m.model = *model;
+    m.generation = model->generation;
+    handOnRows();
+    emit knownMotorsChanged(m_known);
+}
+
+void ReplayDecoder::onRecord(const RecordEvent &record)
+{
+    if (record.kind == RecordEvent::Kind::Context)
+        setContext(record.context);
+    else if (record.kind == RecordEvent::Kind::Link) {
+        restartParser(); // a reopened link starts a new stream
+        m_statistics.newStream();
+    }
+}
+
+void ReplayDecoder::restartParser()
+{
+    m_parser = protocol::makeFrameParser(m_link, protocol::LinkEnd::Host);
+    m_statistics.attach(*m_parser,
+                        [this](const protocol::CanRecord &record) { takeOtherFrame(record); });
+}
+
+protocol::DecodeContext ReplayDecoder::contextOf(int id) const
+{
+    protocol::DecodeContext c;
+    c.link = m_link;
+    for (const DriveContext &d : m_context) {
+        if (d.id == id) {
+            c.series = d.series.value_or(protocol::Series::MF);
+            c.generation = d.generation;
+        }
+    }
+    return c;
+}
+
+void ReplayDecoder::takeCommand(const protocol::Frame &frame)
+{
+    const protocol::RequestDecodeResult dec = protocol::decodeRequest(frame, contextOf(frame.id));
+    if (dec.request)
+        takeCommand(*dec.request);
+}
+
+void ReplayDecoder::takeCommand(const protocol::Request &request)
+{
+    // Live, a listen-only session samples another master's commands (bus::ListenMonitor); the
+    // tool's own commands are no samples, in a session or in its replay.
+    std::optional<protocol::Series> series;
+    for (const DriveContext &d : m_context) {
+        if (d.id == request.id)
+            series = d.series;
+    }
+    if (auto s = bus::TelemetrySample::fromRequest(request, series,
+                                                   contextOf(request.id).generation, m_chunkTime))
+        m_telemetry.append(std::move(*s));
+}
+
+void ReplayDecoder::takeOtherFrame(const protocol::CanRecord &record)
+{
+    // As the live listener does (bus::ListenMonitor): each drive seen so far on the old
+    // generation takes its slot as a torque command and answers it as a 0xA1.
+    const auto heard = bus::HeardMultiTorque::decode(
+        record, [this](int id) -> std::optional<protocol::DecodeContext> {
+            if (!m_seen.contains(id))
+                return std::nullopt;
+            return contextOf(id);
+        });
+    if (!heard)
+        return;
+    bus::TrafficEvent row;
+    row.kind = bus::TrafficEvent::Kind::Frame; // as onFrame shows every recorded frame
+    row.time = m_chunkTime;
+    row.bytes = record.encode();
+    row.context.link = m_link; // TrafficModel reads the slots from the record
+    m_traffic.append(std::move(row));
+    QVector<protocol::Frame> torques;
+    for (const bus::HeardMultiTorque::Slot &slot : *heard) {
+        torques.append(slot.frame);
+        if (!m_transmitted)
+            takeCommand(slot.request);
+    }
+    m_statistics.takeMultiTorque(torques, qint64(m_chunkTime * 1e9));
+}
+
+void ReplayDecoder::onBytes(const QByteArray &bytes, bool transmitted)
+{
+    m_transmitted = transmitted;
+    m_chunkTime = positionSeconds();
+    if (!m_parser)
+        return;
+    m_statistics.addBytes(bytes.size());
+    m_parser->feed(bytes, [this](const protocol::ParseEvent &e) { onFrame(e); });
+}
+
+void ReplayDecoder::handOnRows()
+{
+    // The next batch is sized like this one: Load all's batches of thousands of rows then
+    // grow no list row by row.
+    if (!m_traffic.isEmpty()) {
+        const qsizetype rows = m_traffic.size();
+        emit trafficCaptured(std::exchange(m_traffic, {}));
+        m_traffic.reserve(rows);
+    }
+    if (!m_telemetry.isEmpty()) {
+        const qsizetype samples = m_telemetry.size();
+        emit telemetryReceived(std::exchange(m_telemetry, {}));
+        m_telemetry.reserve(samples);
+    }
+}
+
+void ReplayDecoder::handOnBatch()
+{
+    handOnRows();
+    if (m_statistics.snapshotDue(positionNs()))
+        emitStatistics();
+    emit positionChanged(positionSeconds());
+}
+
+void ReplayDecoder::onFrame(const protocol::ParseEvent &event)
+{
+    // On CAN the direction is told as a listener tells it: a copy of the event carries it.
+    std::optional<protocol::ParseEvent> told;
+    if (m_link == protocol::Link::Can && event.isFrame && !event.echoed) {
+        told = event;
+        told->direction =
+            bus::PassivePairing::canDirections(*told, contextOf(told->frame.id)).direction;
+        // As the live engine does: the reply's ID or layout names the generation it decodes with.
+        if (told->direction != protocol::FrameDirection::Request &&
+            learnCanGeneration(m_context, *told))
+            setContext(m_context);
+    }
+    const protocol::ParseEvent &e = told ? *told : event;
+    m_statistics.take(event, contextOf(e.frame.id), qint64(m_chunkTime * 1e9));
+    bus::TrafficEvent row;
+    row.time = m_chunkTime;
+    row.bytes = e.bytes;
+    if (!e.isFrame) {
+        row.kind = bus::TrafficEvent::Kind::Fault;
+        row.error = e.error;
+        m_traffic.append(std::move(row));
+        return;
+    }
+    const protocol::DecodeContext context = contextOf(e.frame.id);
+    row.kind = bus::TrafficEvent::Kind::Frame;
+    row.id = e.frame.id;
+    row.command = e.frame.command;
+    row.frame = e.frame;
+    row.context = context;
+    m_traffic.append(std::move(row));
+    if (e.direction == protocol::FrameDirection::Request && !m_transmitted && !e.echoed)
+        takeCommand(e.frame);
+    if (e.direction != protocol::FrameDirection::Reply)
+        return;
+    const auto reply = protocol::decodeReply(e.frame, context);
+    if (!reply.reply)
+        return;
+    learnModel(*reply.reply);
+    if (auto s = bus::TelemetrySample::fromReply(*reply.reply, m_chunkTime)) {
+        if (!m_seen.contains(s->id)) {
+            m_seen.append(s->id);
+            handOnRows();
+            emit driveSeen(s->id);
+        }
+        m_telemetry.append(std::move(*s));
+    }
+}
+
+} // namespace lk::recording
