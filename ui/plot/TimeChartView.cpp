@@ -5,6 +5,7 @@
 #include <QtGui/QMouseEvent>
 #include <QtGui/QPainter>
 #include <QtGui/QWheelEvent>
+#include <QtWidgets/QGraphicsScene>
 #include <QtWidgets/QRubberBand>
 
 #include <cmath>
@@ -32,6 +33,10 @@ TimeChartView::TimeChartView(QWidget *parent) : QChartView(parent)
     setMouseTracking(true);
     setRubberBand(QChartView::NoRubberBand); // zoom is ours: every chart must zoom alike
     setDragMode(QGraphicsView::NoDrag);
+    // Every frame moves the axis's grid lines and labels: a BSP index of the scene would be
+    // rebuilt for each of them (a stroke of every line's shape), for lookups a chart of a few
+    // dozen items does not need.
+    scene()->setItemIndexMethod(QGraphicsScene::NoIndex);
     applyPalette();
 }
 
