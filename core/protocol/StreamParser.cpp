@@ -61,6 +61,7 @@ void StreamParser::feed(const QByteArray &bytes, const Sink &sink)
     // copyOf) and it lands alone at the start of the buffer.
     constexpr qsizetype kSlack = 32;
     const bool shareable = m_buf.isEmpty() && m_garbage.isEmpty() && bytes.size() <= kSlice &&
+                           bytes.capacity() >= bytes.size() && // not fromRawData
                            bytes.capacity() <= bytes.size() + kSlack;
     m_chunk = shareable ? &bytes : nullptr;
     feed(bytes.constData(), bytes.size(), sink);

@@ -42,6 +42,8 @@ bool ReplayDecoder::open(const QString &path, ReplayTransport::Options options, 
     m_seen.clear();
     m_context.clear();
     m_known.clear();
+    m_traffic.clear(); // a batch cut short by a close belongs to no file
+    m_telemetry.clear();
     m_transport = std::move(transport);
     m_path = path;
     if (!m_transport->open()) {
@@ -67,6 +69,8 @@ void ReplayDecoder::close()
         m_transport->close();
     m_transport.reset();
     m_path.clear();
+    m_traffic.clear();
+    m_telemetry.clear();
 }
 
 RecordingError ReplayDecoder::damage() const
@@ -122,6 +126,7 @@ void ReplayDecoder::seek(double seconds)
     if (!m_transport)
         return;
     restartParser(); // a frame cut by the jump is no frame
+    handOnRows();    // what came before the jump, before what comes after it
     m_transport->seek(qint64(seconds * 1e9));
     // The figures count from the new place: what came before it is not heard again.
     m_statistics.restart(m_link, m_transport->header().baud, positionNs());

@@ -64,6 +64,8 @@ public:
     /// The next batch of records at once, whatever their times, on the calling thread (a
     /// worker driving "Load all" while playback is paused); false once nothing is left.
     bool playNextBatch();
+    /// Inside the transport's playing of records (one of this object's signals is running).
+    bool isPlaying() const { return m_transport && m_transport->isPlaying(); }
 
 signals:
     void telemetryReceived(const lk::bus::TelemetryBatch &batch);

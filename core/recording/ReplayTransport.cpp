@@ -2,6 +2,7 @@
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QFileInfo>
+#include <QtCore/QScopedValueRollback>
 
 #include <algorithm>
 #include <cmath>
@@ -184,6 +185,7 @@ bool ReplayTransport::playNextBatch()
 
 void ReplayTransport::playDue(qint64 targetNs, int max)
 {
+    const QScopedValueRollback<bool> playing(m_playing, true);
     for (int i = 0; i < max && m_next && m_next->timeNs <= targetNs && m_state == State::Open;
          ++i) {
         const RecordEvent record = std::move(*m_next);

@@ -62,6 +62,8 @@ public:
     /// finished at the end); false once nothing is left. It never touches the timer, so a
     /// worker thread may drive a paused transport through it (RecordingReplay's "Load all").
     bool playNextBatch();
+    /// Records are being played out (a receiver of chunkPlayed is running).
+    bool isPlaying() const { return m_playing; }
     void play();
     void pause();
     bool isPaused() const { return m_paused; }
@@ -103,6 +105,7 @@ private:
     std::shared_ptr<bus::BusClock> m_recordingClock;
     State m_state = State::Closed;
     bool m_paused = false;
+    bool m_playing = false;
     qint64 m_anchorWallNs = 0;
     qint64 m_anchorRecordingNs = 0;
     qint64 m_positionNs = 0;

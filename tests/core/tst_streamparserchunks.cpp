@@ -29,7 +29,7 @@ void tst_StreamParserChunks::oneFrameChunkIsSharedOnlyWhenItHoldsNoMore()
     parser.feed(exact, keep);
     QCOMPARE(events.size(), 1);
     QVERIFY(events[0].isFrame);
-    QCOMPARE(events[0].bytes.constData(), exact.constData());
+    QVERIFY(events[0].bytes.constData() == exact.constData()); // the same bytes, not a copy
     // A chunk whose allocation is a read buffer: copied, so the event keeps no 4 KiB.
     QByteArray reserved;
     reserved.reserve(4096);
@@ -52,6 +52,12 @@ void tst_StreamParserChunks::oneFrameChunkIsSharedOnlyWhenItHoldsNoMore()
     QCOMPARE(events.size(), 6);
     QCOMPARE(events[4].bytes, wire);
     QCOMPARE(events[5].bytes, wire);
+    // Bytes the caller owns (fromRawData): copied, so the event outlives them.
+    const QByteArray raw = QByteArray::fromRawData(wire.constData(), wire.size());
+    parser.feed(raw, keep);
+    QCOMPARE(events.size(), 7);
+    QCOMPARE(events[6].bytes, wire);
+    QVERIFY(events[6].bytes.constData() != wire.constData());
 }
 
 QTEST_APPLESS_MAIN(tst_StreamParserChunks)

@@ -32,6 +32,7 @@
 #include <plot/PlotPanel.h>
 #include <plot/TelemetryStore.h>
 #include <recording/RecordingController.h>
+#include <recording/RecordingReplay.h>
 
 #include <QtCore/QCoreApplication>
 #include <QtCore/QTimer>
@@ -87,6 +88,8 @@ MainWindow::~MainWindow()
 {
     // Join the bus thread while every panel still exists: its last signals reach them safely.
     m_controller->disconnectBus();
+    // A replay's Load all worker too: what it decoded goes nowhere, the views are going.
+    m_recording->replay()->abandonLoading();
 }
 
 void MainWindow::buildPanels()

@@ -125,6 +125,12 @@ void TrafficModel::countOnly(const bus::TrafficBatch &batch)
         count(e);
 }
 
+void TrafficModel::countDropped(const bus::TrafficBatch &batch)
+{
+    countOnly(batch);
+    m_dropped += static_cast<quint64>(batch.size());
+}
+
 void TrafficModel::append(const bus::TrafficBatch &batch)
 {
     if (batch.isEmpty())

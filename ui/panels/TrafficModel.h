@@ -49,6 +49,9 @@ public:
     void append(const bus::TrafficBatch &batch);
     /// Count events without keeping them (while the view is paused).
     void countOnly(const bus::TrafficBatch &batch);
+    /// Count events the table never got to keep, as rows dropped too (a hidden view's backlog
+    /// past the capacity).
+    void countDropped(const bus::TrafficBatch &batch);
     void clear();
     const bus::TrafficEvent &event(int row) const { return m_rows.at(row).event; }
     const TrafficCounts &counts() const { return m_counts; }

@@ -192,7 +192,7 @@ void TrafficPanel::appendTraffic(const bus::TrafficBatch &batch)
     m_pendingRows += batch.size();
     while (m_pending.size() > 1 &&
            m_pendingRows - m_pending.first().size() >= qsizetype(m_model->capacity())) {
-        m_model->countOnly(m_pending.first());
+        m_model->countDropped(m_pending.first());
         m_pendingRows -= m_pending.first().size();
         m_pending.removeFirst();
     }

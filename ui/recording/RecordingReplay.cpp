@@ -1,6 +1,7 @@
 #include "RecordingReplay.h"
 
 #include <QtCore/QCoreApplication>
+#include <QtCore/QSemaphore>
 #include <QtCore/QThread>
 
 #include <utility>
@@ -40,9 +41,7 @@ RecordingReplay::RecordingReplay(QObject *parent)
 
 RecordingReplay::~RecordingReplay()
 {
-    // Stopped and joined, nothing delivered: the views may be gone already.
-    m_stopLoading = true;
-    joinLoader();
+    abandonLoading(); // nothing delivered: the views may be gone already
 }
 
 bool RecordingReplay::open(const QString &path, recording::ReplayTransport::Options options,
@@ -113,22 +112,28 @@ void RecordingReplay::loadAll()
 {
     if (m_loader || !m_decoder->isOpen() || m_decoder->isFinished())
         return;
+    if (m_draining > 0 || m_decoder->isPlaying()) {
+        // Rows are being handed on from this thread: the worker would play the transport
+        // while it is still being played here. Start once that is over.
+        QMetaObject::invokeMethod(this, &RecordingReplay::loadAll, Qt::QueuedConnection);
+        return;
+    }
     // The event loop's timer stays still while the worker plays the rest.
     m_decoder->pause();
     m_loadingPosition = m_decoder->positionSeconds();
     m_loadingDuration = m_decoder->durationSeconds();
     m_loadingDamage = m_decoder->damage();
     m_stopLoading = false;
-    m_batchesAhead = 0;
+    auto room = std::make_shared<QSemaphore>(kBatchesAhead);
+    m_queueRoom = room;
     recording::ReplayDecoder *decoder = m_decoder.get();
-    m_loader = QThread::create([this, decoder] {
+    m_loader = QThread::create([this, decoder, room] {
         while (!m_stopLoading.load() && decoder->playNextBatch()) {
-            ++m_batchesAhead;
-            // Queued behind the batch's rows: the views have taken it when this runs.
+            // Given back behind the batch's rows: the views have taken it when this runs.
             QMetaObject::invokeMethod(
-                this, [this] { --m_batchesAhead; }, Qt::QueuedConnection);
-            while (m_batchesAhead.load() > kBatchesAhead && !m_stopLoading.load())
-                QThread::usleep(200);
+                this, [room] { room->release(); }, Qt::QueuedConnection);
+            while (!room->tryAcquire(1, 20) && !m_stopLoading.load()) {
+            }
         }
     });
     m_loader->setObjectName(QStringLiteral("lk-replay-load-all"));
@@ -137,12 +142,24 @@ void RecordingReplay::loadAll()
 
 void RecordingReplay::stopLoading()
 {
-    if (!m_loader)
-        return;
+    const bool wasLoading = m_loader != nullptr;
+    if (wasLoading) {
+        m_stopLoading = true;
+        joinLoader();
+    }
+    // What the worker handed on reaches the views before whatever the caller does next; a
+    // slot that calls back in (a seek from a slot of these signals) waits for the rest too.
+    if (wasLoading || m_draining > 0) {
+        ++m_draining;
+        QCoreApplication::sendPostedEvents(this, QEvent::MetaCall);
+        --m_draining;
+    }
+}
+
+void RecordingReplay::abandonLoading()
+{
     m_stopLoading = true;
     joinLoader();
-    // What the worker handed on reaches the views before whatever the caller does next.
-    QCoreApplication::sendPostedEvents(this, QEvent::MetaCall);
 }
 
 void RecordingReplay::joinLoader()

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 
+class QSemaphore;
 class QThread;
 
 namespace lk::ui {
@@ -47,6 +48,9 @@ public:
     double speed() const { return m_decoder->speed(); }
     /// Load all is running on its worker.
     bool isLoadingAll() const { return m_loader != nullptr; }
+    /// Stop Load all without delivering what it decoded (the window's teardown, when the
+    /// views that would take it are going).
+    void abandonLoading();
 
     void play();
     /// Pause (and stop Load all where it got to).
@@ -56,6 +60,8 @@ public:
     /// stops Load all, paused there.
     void seek(double seconds);
     /// Everything left at once, decoded on a worker thread ("Load all"); finished at the end.
+    /// Called while the replay is handing rows on (from a slot of its signals), it starts when
+    /// that is over.
     void loadAll();
 
 signals:
@@ -82,8 +88,11 @@ private:
     std::unique_ptr<recording::ReplayDecoder> m_decoder;
     QThread *m_loader = nullptr;
     std::atomic<bool> m_stopLoading{false};
-    /// Batches the worker decoded that the views have not taken yet.
-    std::atomic<int> m_batchesAhead{0};
+    /// Free places in the queue to the views: the worker takes one a batch, the views give it
+    /// back when they took the batch. A new one for each Load all.
+    std::shared_ptr<QSemaphore> m_queueRoom;
+    /// stopLoading is delivering what the worker handed on (a slot may call back in).
+    int m_draining = 0;
     // What the getters answer while the worker owns the decoder.
     double m_loadingPosition = 0;
     double m_loadingDuration = 0;

@@ -155,6 +155,7 @@ private slots:
     void exportParsesBack();
     void failedExportKeepsTheEarlierFile();
     void pauseKeepsCounting();
+    void hiddenBacklogCountsWhatItDrops();
     void countsAreTheBusStatistics();
     void exportReadByLkctl();
     void rowKeepsTheContextOfItsMoment();
@@ -324,6 +325,22 @@ void tst_TrafficModel::failedExportKeepsTheEarlierFile()
     QCOMPARE(in.readAll(), earlier);
     QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden),
              QStringList{QStringLiteral("traffic.txt")}); // no half-written copy beside it
+}
+
+void tst_TrafficModel::hiddenBacklogCountsWhatItDrops()
+{
+    // A hidden table is not filled: its backlog keeps whole batches as long as the table could
+    // keep one of their rows, and counts the rest as rows dropped (a replay's Load all).
+    lk::ui::BusModel bus;
+    lk::ui::TrafficPanel panel(&bus, nullptr, 10);
+    QVERIFY(!panel.wantsCapture());
+    for (int i = 0; i < 6; ++i)
+        panel.appendTraffic(sampleTraffic()); // 42 rows of 7
+    QCOMPARE(panel.trafficModel()->rowCount(), 0);
+    panel.flush();
+    QCOMPARE(panel.trafficModel()->rowCount(), 10);
+    QCOMPARE(panel.trafficModel()->droppedRows(), quint64(32));
+    QCOMPARE(panel.trafficModel()->counts().timeouts, quint64(6)); // every batch counted
 }
 
 void tst_TrafficModel::pauseKeepsCounting()

@@ -9,6 +9,8 @@
 #include <QtTest/QSignalSpy>
 #include <QtTest/QTest>
 
+#include <algorithm>
+
 using namespace lk;
 using recording::RecordEvent;
 
@@ -141,6 +143,40 @@ private slots:
         QVERIFY(finished.wait(60000));
         QCOMPARE(taken.samples, qint64(kPairs));
         QVERIFY(taken.ordered);
+    }
+
+    void aSeekFromASlotComesAfterEverythingBeforeIt()
+    {
+        // A pause as the first batch arrives, and a seek from the slot that takes the next one
+        // (delivered by the pause itself): every batch decoded before the seek reaches the slot
+        // before the seek does its work, so nothing from before 50 s comes after it.
+        ui::RecordingReplay replay;
+        int batches = 0;
+        bool sought = false;
+        double afterSeekEarliest = 1e9;
+        connect(&replay, &ui::RecordingReplay::telemetryReceived, this,
+                [&](const bus::TelemetryBatch &b) {
+                    ++batches;
+                    if (sought) {
+                        for (const bus::TelemetrySample &s : b)
+                            afterSeekEarliest = std::min(afterSeekEarliest, s.time);
+                    }
+                    if (batches == 1)
+                        replay.pause();
+                    else if (batches == 2) {
+                        replay.seek(50.0);
+                        sought = true;
+                    }
+                });
+        QSignalSpy finished(&replay, &ui::RecordingReplay::finished);
+        QString error;
+        QVERIFY2(replay.open(m_path, options(), &error), qPrintable(error));
+        replay.loadAll();
+        QTRY_VERIFY(sought);
+        QVERIFY(!replay.isLoadingAll());
+        replay.loadAll();
+        QVERIFY(finished.wait(60000));
+        QVERIFY2(afterSeekEarliest >= 50.0, qPrintable(QString::number(afterSeekEarliest)));
     }
 
     void seekAndCloseStopIt()
