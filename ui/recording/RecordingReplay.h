@@ -21,6 +21,10 @@ namespace lk::ui {
 /// While Load all runs, the worker owns the decoder: pause, seek and close stop it first (what
 /// it decoded reaches the views before they return), and the getters answer from what this
 /// object was told.
+///
+/// Pause, seek and close are meant for user input. Called from a slot of telemetryReceived or
+/// trafficCaptured while Load all runs, they deliver the later batches to that slot before the
+/// receivers connected after it have the current one.
 class RecordingReplay : public QObject {
     Q_OBJECT
 public:
