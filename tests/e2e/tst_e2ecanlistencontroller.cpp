@@ -103,8 +103,13 @@ void tst_E2eCanListenController::listenMatchesTheControllersLog()
     const bool beganOnAReply =
         !want[at].values.keys().constFirst().startsWith(QLatin1String("commanded_"));
     const bool leftOut = beganOnAReply && orphans == 1;
+    // At the other end, lkctl may stop listening before the last row's request is answered or
+    // given up (a request closes as unanswered only when the next one passes, or its reply
+    // comes after the window): a last row that is a request is left out the same way.
+    const bool endsOnARequest = want[at + got.size() - 1].values.keys().constFirst().startsWith(
+        QLatin1String("commanded_"));
     qint64 answered = 0, unanswered = 0, garbled = 0, commanded = 0;
-    for (int line = first + (leftOut ? 1 : 0); line <= last; ++line) {
+    for (int line = first + (leftOut ? 1 : 0); line <= last - (endsOnARequest ? 1 : 0); ++line) {
         const QString outcome = log[line].value(QStringLiteral("outcome")).toString();
         answered += outcome == QLatin1String("answered");
         unanswered += outcome != QLatin1String("answered");
@@ -126,13 +131,14 @@ void tst_E2eCanListenController::listenMatchesTheControllersLog()
     qInfo("CAN pairing: %lld of %lld answered requests in the window paired (%.3f %%); %lld rows "
           "matched (log lines %d..%d: %lld not answered, %lld garbled, %lld speed commands); "
           "lkctl listen: replies %lld, paired %lld, without their request %lld, unanswered or "
-          "broken %lld, ambiguous %lld, CAN error frames %s; the first row %s",
+          "broken %lld, ambiguous %lld, CAN error frames %s; the first row %s, the last %s",
           std::min(paired, answered), answered, 100.0 * pairedShare, qint64(got.size()), first + 1,
           last + 1, unanswered, garbled, commanded, replies, paired, orphans, notAnswered,
           ambiguous, qPrintable(errorFrames.captured(1)),
           leftOut         ? "a reply without its request (its transaction left out)"
           : beganOnAReply ? "a reply"
-                          : "a command");
+                          : "a command",
+          endsOnARequest ? "a command (left out)" : "a reply");
     QVERIFY2(pairedShare >= 0.999, r.err.constData());
     QVERIFY2(replies >= answered, r.err.constData());
     QVERIFY2(orphans <= 1 && paired + orphans == replies, r.err.constData());

@@ -85,8 +85,12 @@ void tst_E2eListen::listenMatchesTheControllersLog()
     // without a row of their own: read_model, unanswered requests).
     const int first = want[at].logLine;
     const int last = want[at + got.size() - 1].logLine;
+    // lkctl may stop listening before the last row's request is answered or given up: a last
+    // row that is a request is left out of what lkctl must have counted.
+    const bool endsOnARequest = want[at + got.size() - 1].values.keys().constFirst().startsWith(
+        QLatin1String("commanded_"));
     qint64 answered = 0, unanswered = 0, commanded = 0;
-    for (int line = first; line <= last; ++line) {
+    for (int line = first; line <= last - (endsOnARequest ? 1 : 0); ++line) {
         const QString outcome = log[line].value(QStringLiteral("outcome")).toString();
         answered += outcome == QLatin1String("answered");
         unanswered += outcome != QLatin1String("answered");
