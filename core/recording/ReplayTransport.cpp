@@ -87,13 +87,6 @@ void ReplayTransport::setSpeed(double speed)
     schedule();
 }
 
-void ReplayTransport::setFastForward(bool on)
-{
-    m_options.fastForward = on;
-    anchor(m_positionNs);
-    schedule();
-}
-
 void ReplayTransport::play()
 {
     if (!m_paused)

@@ -57,7 +57,6 @@ public:
     void setSpeed(double speed); ///< clamped to kMinSpeed..kMaxSpeed
     double speed() const { return m_options.speed; }
     void setSkipIdleNs(qint64 ns) { m_options.skipIdleNs = qMax<qint64>(0, ns); }
-    void setFastForward(bool on);
     /// Play the next batch of records at once, whatever their times, then batchPlayed (and
     /// finished at the end); false once nothing is left. It never touches the timer, so a
     /// worker thread may drive a paused transport through it (RecordingReplay's "Load all").

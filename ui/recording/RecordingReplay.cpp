@@ -57,16 +57,6 @@ void RecordingReplay::close()
     m_decoder->close();
 }
 
-recording::RecordingError RecordingReplay::damage() const
-{
-    return m_loader ? m_loadingDamage : m_decoder->damage();
-}
-
-double RecordingReplay::durationSeconds() const
-{
-    return m_loader ? m_loadingDuration : m_decoder->durationSeconds();
-}
-
 double RecordingReplay::positionSeconds() const
 {
     return m_loader ? m_loadingPosition : m_decoder->positionSeconds();
@@ -121,8 +111,6 @@ void RecordingReplay::loadAll()
     // The event loop's timer stays still while the worker plays the rest.
     m_decoder->pause();
     m_loadingPosition = m_decoder->positionSeconds();
-    m_loadingDuration = m_decoder->durationSeconds();
-    m_loadingDamage = m_decoder->damage();
     m_stopLoading = false;
     auto room = std::make_shared<QSemaphore>(kBatchesAhead);
     m_queueRoom = room;

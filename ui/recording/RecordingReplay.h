@@ -19,8 +19,8 @@ namespace lk::ui {
 /// seconds. Nothing here can transmit.
 ///
 /// While Load all runs, the worker owns the decoder: pause, seek and close stop it first (what
-/// it decoded reaches the views before they return), and the getters answer from what this
-/// object was told.
+/// it decoded reaches the views before they return), and the position is the last one it
+/// handed on.
 ///
 /// Pause, seek and close are meant for user input. Called from a slot of telemetryReceived or
 /// trafficCaptured while Load all runs, they deliver the later batches to that slot before the
@@ -42,10 +42,10 @@ public:
     const recording::RecordingHeader &header() const { return m_decoder->header(); }
     /// The link of the stream being replayed (a recording may change it at a Link record).
     protocol::Link link() const { return m_decoder->link(); }
-    /// Where the file stops being readable; Kind::None for a whole file (as far as read, while
-    /// Load all runs).
-    recording::RecordingError damage() const;
-    double durationSeconds() const;
+    /// Where the file stops being readable; Kind::None for a whole file. It and the duration
+    /// come from the file's index, read at open: the worker never changes them.
+    recording::RecordingError damage() const { return m_decoder->damage(); }
+    double durationSeconds() const { return m_decoder->durationSeconds(); }
     double positionSeconds() const;
     bool isPaused() const;
     bool isFinished() const;
@@ -97,10 +97,8 @@ private:
     std::shared_ptr<QSemaphore> m_queueRoom;
     /// stopLoading is delivering what the worker handed on (a slot may call back in).
     int m_draining = 0;
-    // What the getters answer while the worker owns the decoder.
+    /// What positionSeconds answers while the worker owns the decoder (the last it handed on).
     double m_loadingPosition = 0;
-    double m_loadingDuration = 0;
-    recording::RecordingError m_loadingDamage;
     std::optional<double> m_speedAfterLoading;
 };
 
