@@ -21,6 +21,8 @@
 //
 // Prints one JSON line:
 //   gui_cpu_pct_<scenario>   CPU time of lkstudio / wall time, % of one core
+//   gui_thread_cpu_pct_<scenario>, bus_thread_cpu_pct_<scenario>   the same for its GUI
+//                            (main) thread and its bus thread ("lk-bus") alone
 //   gui_rss_mb_<scenario>    resident memory at the end of the window
 //   bus_replies_per_s_<scenario>  replies lksim sent per second (what was being plotted)
 //   bus_gaps_over_100ms_<scenario>  silences over 100 ms between requests in the window:
@@ -34,7 +36,7 @@
 //   can_poll_ratio_can_virtual  the two above divided
 //
 // Options: --seconds S (measured window, default 20), --warmup S (default 8), --drives32,
-// --rss-minutes M, --baud N, --can.
+// --rss-minutes M, --baud N, --can, --only NAME (that scenario alone).
 
 #include "BenchUtil.h"
 #include "CanLksim.h"
@@ -59,25 +61,46 @@ namespace {
 struct Usage {
     double cpuSeconds = 0; ///< user + system of every thread
     double rssMb = 0;
+    double guiThreadSeconds = 0; ///< of the main thread (the GUI's)
+    double busThreadSeconds = 0; ///< of the thread named "lk-bus" (the bus engine's)
 };
 
-/// utime + stime (fields 14, 15 of /proc/PID/stat, after the parenthesised name) and VmRSS.
-std::optional<Usage> usageOf(qint64 pid)
+/// utime + stime of a /proc stat line (fields 14, 15, after the parenthesised name).
+std::optional<double> cpuSecondsOf(const QString &statPath)
 {
-    QFile stat(QStringLiteral("/proc/%1/stat").arg(pid));
-    QFile status(QStringLiteral("/proc/%1/status").arg(pid));
-    if (!stat.open(QIODevice::ReadOnly) || !status.open(QIODevice::ReadOnly))
+    QFile stat(statPath);
+    if (!stat.open(QIODevice::ReadOnly))
         return std::nullopt;
     const QByteArray line = stat.readAll();
     const QList<QByteArray> f = line.mid(line.lastIndexOf(')') + 2).split(' ');
     if (f.size() < 13)
         return std::nullopt;
+    return (f[11].toLongLong() + f[12].toLongLong()) / double(sysconf(_SC_CLK_TCK));
+}
+
+/// The process's CPU time (every thread), its GUI and bus threads' and its VmRSS.
+std::optional<Usage> usageOf(qint64 pid)
+{
+    const QString proc = QStringLiteral("/proc/%1").arg(pid);
+    QFile status(proc + QStringLiteral("/status"));
+    const auto all = cpuSecondsOf(proc + QStringLiteral("/stat"));
+    if (!all || !status.open(QIODevice::ReadOnly))
+        return std::nullopt;
     Usage u;
-    const double tick = double(sysconf(_SC_CLK_TCK));
-    u.cpuSeconds = (f[11].toLongLong() + f[12].toLongLong()) / tick; // fields 14, 15
+    u.cpuSeconds = *all;
     for (const QByteArray &l : status.readAll().split('\n')) {
         if (l.startsWith("VmRSS:"))
             u.rssMb = l.mid(6).trimmed().split(' ').value(0).toDouble() / 1024.0;
+    }
+    const QString tasks = proc + QStringLiteral("/task/");
+    for (const QString &tid : QDir(tasks).entryList(QDir::Dirs | QDir::NoDotAndDotDot)) {
+        QFile comm(tasks + tid + QStringLiteral("/comm"));
+        const QByteArray name = comm.open(QIODevice::ReadOnly) ? comm.readAll().trimmed() : "";
+        const double t = cpuSecondsOf(tasks + tid + QStringLiteral("/stat")).value_or(0);
+        if (tid.toLongLong() == pid)
+            u.guiThreadSeconds = t;
+        else if (name == "lk-bus")
+            u.busThreadSeconds += t;
     }
     return u;
 }
@@ -216,6 +239,10 @@ bool measure(const Scenario &sc, const Options &o, bench::JsonLine &json,
     }
     json.add(QStringLiteral("gui_cpu_pct_") + sc.name,
              100.0 * (after->cpuSeconds - before->cpuSeconds) / seconds, 1);
+    json.add(QStringLiteral("gui_thread_cpu_pct_") + sc.name,
+             100.0 * (after->guiThreadSeconds - before->guiThreadSeconds) / seconds, 1);
+    json.add(QStringLiteral("bus_thread_cpu_pct_") + sc.name,
+             100.0 * (after->busThreadSeconds - before->busThreadSeconds) / seconds, 1);
     json.add(QStringLiteral("gui_rss_mb_") + sc.name, after->rssMb, 1);
     if (countsBefore && countsAfter) {
         json.add(QStringLiteral("bus_replies_per_s_") + sc.name,
@@ -255,7 +282,9 @@ int main(int argc, char *argv[])
     const QCommandLineOption rss(QStringLiteral("rss-minutes"), QStringLiteral("long run"),
                                  QStringLiteral("M"));
     const QCommandLineOption can(QStringLiteral("can"), QStringLiteral("CAN at 1 Mbit/s"));
-    p.addOptions({seconds, warmup, baud, drives32, rss, can});
+    const QCommandLineOption only(QStringLiteral("only"), QStringLiteral("one scenario"),
+                                  QStringLiteral("NAME"));
+    p.addOptions({seconds, warmup, baud, drives32, rss, can, only});
     p.process(app);
     Options o;
     o.seconds = std::max(1, p.value(seconds).toInt());
@@ -270,6 +299,8 @@ int main(int argc, char *argv[])
         Scenario virtualBus{QStringLiteral("can_virtual")};
         virtualBus.bus = Bus::CanVirtual;
         for (const Scenario &sc : {builtIn, virtualBus}) {
+            if (p.isSet(only) && sc.name != p.value(only))
+                continue;
             if (!measure(sc, o, json))
                 return 1;
         }
@@ -297,6 +328,8 @@ int main(int argc, char *argv[])
     if (p.isSet(drives32))
         scenarios.append({QStringLiteral("plots_32"), 32});
     for (const Scenario &sc : scenarios) {
+        if (p.isSet(only) && sc.name != p.value(only))
+            continue;
         if (!measure(sc, o, json))
             return 1;
     }
