@@ -1,6 +1,7 @@
 #include "StripChart.h"
 
 #include "SeriesColors.h"
+#include "TimeGridLayer.h"
 #include "TraceLayer.h"
 
 #include <QtCharts/QChart>
@@ -19,16 +20,7 @@ namespace {
 
 constexpr int kBaseMargin = 6;
 constexpr double kScalePadding = 0.05; // share of the range left free above and below
-constexpr int kTimeTicks = 8;
-// A time label needs about this many pixels ("1234.5" and a gap): a narrower plot gets
-// fewer ticks rather than labels QtCharts shortens to "...".
-constexpr int kPixelsPerTimeTick = 90;
 constexpr int kValueTicks = 5;
-
-int decimalsFor(double step)
-{
-    return std::clamp(int(std::ceil(-std::log10(step) - 1e-9)), 0, 6);
-}
 
 // Each setter is called only for a change: QValueAxis (Qt 6.4) emits its change signal on
 // every call, and QtCharts answers labelFormatChanged with a relayout of the whole chart (every
@@ -46,7 +38,7 @@ void setNiceTicks(QValueAxis *axis, double span, int ticks)
     // An axis whose labels are hidden (the time axis of every strip but the bottom one) still
     // has QtCharts format and lay out a rich-text label per tick whenever its range moves, at
     // every frame: a format without a conversion gives empty labels, which cost next to nothing.
-    const QString format = axis->labelsVisible() ? QStringLiteral("%.%1f").arg(decimalsFor(step))
+    const QString format = axis->labelsVisible() ? QStringLiteral("%.%1f").arg(tickDecimals(step))
                                                  : QStringLiteral("-");
     if (axis->labelFormat() != format)
         axis->setLabelFormat(format);
@@ -94,6 +86,11 @@ std::pair<double, double> scaledRange(const MinMax &data)
     return {std::floor((data.min - pad) / step) * step, std::ceil((data.max + pad) / step) * step};
 }
 
+int tickDecimals(double step)
+{
+    return std::clamp(int(std::ceil(-std::log10(step) - 1e-9)), 0, 6);
+}
+
 double niceStep(double raw)
 {
     if (!(raw > 0) || !std::isfinite(raw)) {
@@ -117,11 +114,18 @@ StripChart::StripChart(QWidget *parent) : TimeChartView(parent)
     c->setMargins(QMargins(kBaseMargin, kBaseMargin, kBaseMargin, kBaseMargin));
     c->legend()->setAlignment(Qt::AlignTop);
     c->legend()->hide();
+    // The time axis maps and holds the range; hidden, it costs QtCharts no layout when the range
+    // moves at every frame. TimeGridLayer draws its grid and labels.
     m_time = new QValueAxis(c);
-    setAxisRange(m_time, 0, 10, kTimeTicks);
+    m_time->setRange(0, 10);
     c->addAxis(m_time, Qt::AlignBottom);
+    m_time->setVisible(false);
+    m_grid = new TimeGridLayer(c, m_time);
     m_lines = new TraceLayer(c, m_time);
-    connect(c, &QChart::plotAreaChanged, this, [this] { m_lines->plotAreaChanged(); });
+    connect(c, &QChart::plotAreaChanged, this, [this] {
+        m_grid->plotAreaChanged();
+        m_lines->plotAreaChanged();
+    });
     applyPalette();
 }
 
@@ -142,6 +146,10 @@ void StripChart::clearChart()
 void StripChart::applyPalette()
 {
     TimeChartView::applyPalette();
+    // The hidden time axis took the palette's colours with the others: its grid draws in them.
+    m_grid->setColors(m_time->gridLineColor(), m_time->linePenColor(), m_time->labelsColor());
+    m_grid->setFonts(m_time->labelsFont(), m_time->titleFont());
+    applyMargins(); // the labels' height follows the font
     for (const auto &[quantity, color] : m_axisColors) {
         if (QValueAxis *axis = valueAxis(quantity)) {
             axis->setLabelsColor(color);
@@ -353,12 +361,13 @@ QValueAxis *StripChart::valueAxis(Quantity quantity) const
 
 void StripChart::setTimeLabelsVisible(bool visible)
 {
-    m_time->setLabelsVisible(visible);
-    m_time->setTitleText(visible ? tr("Time (s)") : QString());
-    // The label format follows the visibility (setNiceTicks): now, not at the next move of
-    // the time axis, which a paused plot may never make.
-    const int ticks = std::clamp(plotColumns() / kPixelsPerTimeTick, 2, kTimeTicks);
-    setNiceTicks(m_time, m_time->max() - m_time->min(), ticks);
+    m_grid->setLabels(visible, visible ? tr("Time (s)") : QString());
+    applyMargins();
+}
+
+bool StripChart::timeLabelsVisible() const
+{
+    return m_grid->labelsVisible();
 }
 
 int StripChart::plotColumns() const
@@ -410,10 +419,9 @@ void StripChart::refresh(const TelemetryStore &store, TimeSpan span, bool autosc
         }
         m_needsScale = m_needsScale && !scaled;
     }
-    const bool timeMoves = m_time->min() != span.begin || m_time->max() != span.end;
-    if (timeMoves) {
-        const int ticks = std::clamp(plotColumns() / kPixelsPerTimeTick, 2, kTimeTicks);
-        setAxisRange(m_time, span.begin, span.end, ticks);
+    if (m_time->min() != span.begin || m_time->max() != span.end) {
+        m_time->setRange(span.begin, span.end);
+        m_grid->update();
     }
     for (const auto &[quantity, range] : ranges) {
         QValueAxis *axis = m_valueAxes.at(quantity);
@@ -452,8 +460,16 @@ void StripChart::setAlignmentPadding(double left, double right)
     }
     m_padLeft = left;
     m_padRight = right;
-    chart()->setMargins(
-        QMargins(kBaseMargin + int(left), kBaseMargin, kBaseMargin + int(right), kBaseMargin));
+    applyMargins();
+}
+
+void StripChart::applyMargins()
+{
+    // QtCharts lays the chart out again on every margin change: set them only when they change.
+    const QMargins margins(kBaseMargin + int(m_padLeft), kBaseMargin, kBaseMargin + int(m_padRight),
+                           kBaseMargin + m_grid->labelAreaHeight());
+    if (chart()->margins() != margins)
+        chart()->setMargins(margins);
 }
 
 } // namespace lk::ui

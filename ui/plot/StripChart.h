@@ -16,6 +16,7 @@ class QValueAxis;
 
 namespace lk::ui {
 
+class TimeGridLayer;
 class TraceLayer;
 
 /// A labelled instant on a chart's time axis (e.g. "gains written").
@@ -52,7 +53,9 @@ public:
     const QVector<TimeMarker> &markers() const { return m_markers; }
     QValueAxis *valueAxis(Quantity quantity) const;
 
+    /// Time labels and title under the plot (the bottom strip of a stack), or the grid alone.
     void setTimeLabelsVisible(bool visible);
+    bool timeLabelsVisible() const;
     /// Decimates every trace over `span` to the plot's pixel width and hands the points to
     /// the series; rescales value axes when `autoscale` (or on the first data after a
     /// rebuild), else keeps their ranges.
@@ -83,11 +86,14 @@ private:
     void showSegments(int index, const LineSegments &segments);
     void collectOutages(const TelemetryStore &store, TimeSpan span);
     void drawMarkers(QPainter *painter);
+    /// Base margins, the alignment padding and room for the time labels.
+    void applyMargins();
 
     QVector<PlotTrace> m_traces;
     Coloring m_coloring = Coloring::ByDrive;
-    QList<QLineSeries *> m_series; ///< per trace: its legend entry
-    TraceLayer *m_lines = nullptr; ///< a child of the chart
+    QList<QLineSeries *> m_series;   ///< per trace: its legend entry
+    TraceLayer *m_lines = nullptr;   ///< a child of the chart
+    TimeGridLayer *m_grid = nullptr; ///< a child of the chart: time grid and labels
     QVector<TimeSpan> m_outages;
     QVector<TimeMarker> m_markers;
     std::map<Quantity, QValueAxis *> m_valueAxes;
@@ -99,6 +105,8 @@ private:
 
 /// A step of 1, 2 or 5 x 10^k at least `raw`, for tick intervals.
 double niceStep(double raw);
+/// The decimals a label needs to tell ticks `step` apart (0..6).
+int tickDecimals(double step);
 /// The autoscaled value range for data spanning `data`: padded and rounded out to ticks.
 std::pair<double, double> scaledRange(const MinMax &data);
 /// Shows [min, max] on `axis` with about `ticks` round steps (1, 2 or 5 x 10^k) and labels
