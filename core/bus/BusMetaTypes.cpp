@@ -14,6 +14,7 @@
 #include "SetpointStreamPlan.h"
 #include "SpeedWatchTrip.h"
 #include "TelemetrySample.h"
+#include "TrafficCounts.h"
 #include "TrafficEvent.h"
 
 #include <QtCore/QVector>
@@ -41,6 +42,7 @@ void registerBusMetaTypes()
         qRegisterMetaType<SendRefusal>("lk::bus::SendRefusal");
         qRegisterMetaType<TrafficEvent>("lk::bus::TrafficEvent");
         qRegisterMetaType<TrafficBatch>("lk::bus::TrafficBatch");
+        qRegisterMetaType<TrafficCounts>("lk::bus::TrafficCounts");
         qRegisterMetaType<PollPlan>("lk::bus::PollPlan");
         qRegisterMetaType<SetpointStreamPlan>("lk::bus::SetpointStreamPlan");
         qRegisterMetaType<SetpointStop>("lk::bus::SetpointStop");

@@ -73,14 +73,6 @@ std::optional<QList<protocol::CanRecord>> canRecords(const QByteArray &bytes)
 
 } // namespace
 
-quint64 TrafficCounts::faultTotal() const
-{
-    quint64 n = 0;
-    for (quint64 f : faults)
-        n += f;
-    return n;
-}
-
 TrafficModel::TrafficModel(QObject *parent, int capacity)
     : QAbstractTableModel(parent), m_capacity(qMax(1, capacity))
 {
@@ -96,39 +88,15 @@ int TrafficModel::columnCount(const QModelIndex &parent) const
     return parent.isValid() ? 0 : ColumnCount;
 }
 
-void TrafficModel::count(const bus::TrafficEvent &e)
-{
-    switch (e.kind) {
-    case Kind::Sent:
-        ++m_counts.sent;
-        break;
-    case Kind::Frame:
-        ++m_counts.frames;
-        break;
-    case Kind::Fault: {
-        const auto i = static_cast<size_t>(e.error);
-        if (i < m_counts.faults.size())
-            ++m_counts.faults[i];
-        break;
-    }
-    case Kind::Timeout:
-        ++m_counts.timeouts;
-        break;
-    case Kind::Note:
-        break;
-    }
-}
-
 void TrafficModel::countOnly(const bus::TrafficBatch &batch)
 {
-    for (const auto &e : batch)
-        count(e);
+    m_counts.add(batch);
 }
 
-void TrafficModel::countDropped(const bus::TrafficBatch &batch)
+void TrafficModel::countDropped(const TrafficCounts &dropped)
 {
-    countOnly(batch);
-    m_dropped += static_cast<quint64>(batch.size());
+    m_counts += dropped;
+    m_dropped += dropped.events;
 }
 
 void TrafficModel::append(const bus::TrafficBatch &batch)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <bus/TrafficCounts.h>
 #include <bus/TrafficEvent.h>
 #include <protocol/Series.h>
 
@@ -7,19 +8,9 @@
 #include <QtCore/QList>
 #include <QtCore/QStringList>
 
-#include <array>
-
 namespace lk::ui {
 
-/// Counts of traffic faults by kind (the traffic view's error summary).
-struct TrafficCounts {
-    static constexpr int kParseErrorKinds = 6; ///< protocol::ParseError values
-    std::array<quint64, kParseErrorKinds> faults{};
-    quint64 timeouts = 0;
-    quint64 sent = 0;
-    quint64 frames = 0;
-    quint64 faultTotal() const;
-};
+using bus::TrafficCounts; ///< the traffic view's summary: events and faults by kind
 
 /// The decoded bus log: a bounded ring of traffic events (oldest rows drop out past the
 /// capacity) with time, direction, ID, command, a fields summary and the raw bytes (hex on
@@ -50,8 +41,8 @@ public:
     /// Count events without keeping them (while the view is paused).
     void countOnly(const bus::TrafficBatch &batch);
     /// Count events the table never got to keep, as rows dropped too (a hidden view's backlog
-    /// past the capacity).
-    void countDropped(const bus::TrafficBatch &batch);
+    /// past the capacity, a replay's Load all).
+    void countDropped(const TrafficCounts &dropped);
     void clear();
     const bus::TrafficEvent &event(int row) const { return m_rows.at(row).event; }
     const TrafficCounts &counts() const { return m_counts; }
@@ -82,7 +73,6 @@ private:
         mutable QString fields;
         mutable bool fieldsFormatted = false;
     };
-    void count(const bus::TrafficEvent &e);
     bool isCanEvent(const bus::TrafficEvent &e) const;
 
     QList<Row> m_rows;

@@ -48,7 +48,7 @@ QToolButton *makeButton(QWidget *parent, const QString &name, const QString &tex
 
 TrafficPanel::TrafficPanel(BusModel *model, QWidget *parent, int capacity)
     : QWidget(parent), m_bus(model), m_model(new TrafficModel(this, capacity)),
-      m_filter(new TrafficFilter(this))
+      m_filter(new TrafficFilter(this)), m_backlog(capacity)
 {
     setObjectName(QStringLiteral("traffic"));
     m_filter->setSourceModel(m_model);
@@ -154,8 +154,7 @@ QWidget *TrafficPanel::buildToolbar()
     connect(m_hidePolling, &QCheckBox::toggled, m_filter, &TrafficFilter::setHidePolling);
     connect(m_record, &QToolButton::toggled, this, &TrafficPanel::updateCapture);
     connect(clear, &QToolButton::clicked, this, [this] {
-        m_pending.clear();
-        m_pendingRows = 0;
+        m_backlog.clear();
         m_model->clear();
         updateCounts();
     });
@@ -183,25 +182,20 @@ bool TrafficPanel::isPaused() const
 
 void TrafficPanel::appendTraffic(const bus::TrafficBatch &batch)
 {
-    if (batch.isEmpty())
-        return;
     // Batches are kept as they came (shared, not copied row by row). The bus can outrun the
     // 10 Hz flush, a hidden table is not filled at all, and a replay's "Load all" hands on
     // millions of rows: a batch none of whose rows the table could keep is only counted.
-    m_pending.append(batch);
-    m_pendingRows += batch.size();
-    while (m_pending.size() > 1 &&
-           m_pendingRows - m_pending.first().size() >= qsizetype(m_model->capacity())) {
-        m_model->countDropped(m_pending.first());
-        m_pendingRows -= m_pending.first().size();
-        m_pending.removeFirst();
-    }
+    m_backlog.append(batch);
+}
+
+void TrafficPanel::countDroppedTraffic(const bus::TrafficCounts &counts)
+{
+    m_backlog.addDropped(counts);
 }
 
 void TrafficPanel::showTraffic(const bus::TrafficBatch &batch)
 {
-    m_pending.clear();
-    m_pendingRows = 0;
+    m_backlog.clear();
     m_model->clear();
     appendTraffic(batch);
     flush();
@@ -210,24 +204,18 @@ void TrafficPanel::showTraffic(const bus::TrafficBatch &batch)
 
 void TrafficPanel::flush()
 {
-    if (m_pending.isEmpty())
+    if (m_backlog.isEmpty())
         return;
     QScrollBar *bar = m_view->verticalScrollBar();
     const bool atBottom = bar->value() >= bar->maximum() - 2;
+    m_model->countDropped(m_backlog.takeDropped());
     if (isPaused()) {
-        for (const bus::TrafficBatch &batch : std::as_const(m_pending))
+        for (const bus::TrafficBatch &batch : m_backlog.batches())
             m_model->countOnly(batch);
-    } else if (m_pending.size() == 1) {
-        m_model->append(m_pending.first());
+        m_backlog.clear();
     } else {
-        bus::TrafficBatch all; // one insertion into the table, however many batches came
-        all.reserve(m_pendingRows);
-        for (const bus::TrafficBatch &batch : std::as_const(m_pending))
-            all += batch;
-        m_model->append(all);
+        m_model->append(m_backlog.takeRows()); // one insertion, however many batches came
     }
-    m_pending.clear();
-    m_pendingRows = 0;
     updateCounts();
     if (atBottom && !isPaused())
         m_view->scrollToBottom();

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <bus/TrafficBacklog.h>
 #include <bus/TrafficEvent.h>
 
 #include <QtWidgets/QWidget>
@@ -43,6 +44,9 @@ public:
 
 public slots:
     void appendTraffic(const lk::bus::TrafficBatch &batch);
+    /// Count rows dropped before they reached this view (a replay's Load all keeps only the
+    /// newest rows the table can hold).
+    void countDroppedTraffic(const lk::bus::TrafficCounts &counts);
     /// Replace the log with `batch` (the black box's ring, read again when the view opens).
     void showTraffic(const lk::bus::TrafficBatch &batch);
     void flush(); ///< move buffered events into the table now (the timer does it at 10 Hz)
@@ -73,8 +77,7 @@ private:
     QToolButton *m_record = nullptr;
     QLabel *m_counts = nullptr;
     QTimer *m_flush = nullptr;
-    QList<bus::TrafficBatch> m_pending; ///< not yet in the table, oldest first
-    qsizetype m_pendingRows = 0;        ///< the rows of m_pending
+    bus::TrafficBacklog m_backlog; ///< not yet in the table
     bool m_shown = false;
     bool m_wantCapture = false;
 };

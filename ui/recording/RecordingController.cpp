@@ -12,6 +12,7 @@
 #include <panels/BusModel.h>
 #include <panels/MessageBanner.h>
 #include <panels/StatisticsView.h>
+#include <panels/TrafficModel.h>
 #include <panels/TrafficPanel.h>
 #include <plot/TelemetryStore.h>
 
@@ -112,6 +113,10 @@ void RecordingController::wireReplay()
     connect(m_replay, &RecordingReplay::telemetryReceived, m_parts.store, &TelemetryStore::append);
     connect(m_replay, &RecordingReplay::trafficCaptured, m_parts.traffic,
             &TrafficPanel::appendTraffic);
+    // Load all hands on only the rows the Traffic view can keep, and counts the others.
+    m_replay->setTrafficRowsKept(m_parts.traffic->trafficModel()->capacity());
+    connect(m_replay, &RecordingReplay::trafficDropped, m_parts.traffic,
+            &TrafficPanel::countDroppedTraffic);
     connect(m_bar, &ReplayBar::closeRequested, this, &RecordingController::closeRecording);
 }
 

@@ -24,6 +24,7 @@ RecordingReplay::RecordingReplay(QObject *parent)
     // while Load all's worker plays it.
     connect(m_decoder.get(), &D::telemetryReceived, this, &RecordingReplay::telemetryReceived);
     connect(m_decoder.get(), &D::trafficCaptured, this, &RecordingReplay::trafficCaptured);
+    connect(m_decoder.get(), &D::trafficDropped, this, &RecordingReplay::trafficDropped);
     connect(m_decoder.get(), &D::drivesChanged, this, &RecordingReplay::drivesChanged);
     connect(m_decoder.get(), &D::driveSeen, this, &RecordingReplay::driveSeen);
     connect(m_decoder.get(), &D::knownMotorsChanged, this, &RecordingReplay::knownMotorsChanged);
@@ -35,6 +36,7 @@ RecordingReplay::RecordingReplay(QObject *parent)
     });
     connect(m_decoder.get(), &D::finished, this, [this] {
         joinLoader(); // the worker ends right after the last batch
+        m_decoder->releaseTrafficTail();
         emit finished();
     });
 }
@@ -112,6 +114,7 @@ void RecordingReplay::loadAll()
     m_decoder->pause();
     m_loadingPosition = m_decoder->positionSeconds();
     m_stopLoading = false;
+    m_decoder->keepTrafficTail(m_trafficRowsKept); // handed on when the worker is done
     auto room = std::make_shared<QSemaphore>(kBatchesAhead);
     m_queueRoom = room;
     recording::ReplayDecoder *decoder = m_decoder.get();
@@ -142,6 +145,8 @@ void RecordingReplay::stopLoading()
         QCoreApplication::sendPostedEvents(this, QEvent::MetaCall);
         --m_draining;
     }
+    if (wasLoading)
+        m_decoder->releaseTrafficTail(); // the newest rows it decoded, after the rest
 }
 
 void RecordingReplay::abandonLoading()

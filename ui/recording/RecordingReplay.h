@@ -67,10 +67,16 @@ public:
     /// Called while the replay is handing rows on (from a slot of its signals), it starts when
     /// that is over.
     void loadAll();
+    /// Load all hands on only the newest `rows` traffic rows, when it ends or stops, and the
+    /// counts of the others (trafficDropped): what the Traffic view keeps. 0 (the default):
+    /// every row, batch by batch.
+    void setTrafficRowsKept(qsizetype rows) { m_trafficRowsKept = rows; }
 
 signals:
     void telemetryReceived(const lk::bus::TelemetryBatch &batch);
     void trafficCaptured(const lk::bus::TrafficBatch &batch);
+    /// Traffic rows Load all did not hand on (setTrafficRowsKept), counted by kind.
+    void trafficDropped(const lk::bus::TrafficCounts &counts);
     /// The decode context changed: these drives are on the recorded bus.
     void drivesChanged(const lk::recording::ContextSnapshot &drives);
     /// A drive not in the context replied (its series is unknown: decoded as MF).
@@ -100,6 +106,7 @@ private:
     /// What positionSeconds answers while the worker owns the decoder (the last it handed on).
     double m_loadingPosition = 0;
     std::optional<double> m_speedAfterLoading;
+    qsizetype m_trafficRowsKept = 0;
 };
 
 } // namespace lk::ui

@@ -105,6 +105,52 @@ private slots:
         QCOMPARE(replay.positionSeconds(), replay.durationSeconds());
     }
 
+    void loadAllHandsOnTheNewestRowsTheViewKeeps()
+    {
+        // What the Traffic view keeps (setTrafficRowsKept): the newest rows, whole batches of
+        // them, handed on when the load ends, and the others counted by kind.
+        constexpr qsizetype kKept = 5000;
+        ui::RecordingReplay replay;
+        replay.setTrafficRowsKept(kKept);
+        Taken taken;
+        bus::TrafficBatch rows;
+        bus::TrafficCounts dropped;
+        int droppedSignals = 0;
+        bool finishedSeen = false;
+        bool rowsAfterFinished = false;
+        connect(&replay, &ui::RecordingReplay::telemetryReceived, this,
+                [&taken](const bus::TelemetryBatch &b) { taken.take(b); });
+        connect(&replay, &ui::RecordingReplay::trafficCaptured, this,
+                [&](const bus::TrafficBatch &b) {
+                    rows += b;
+                    rowsAfterFinished = rowsAfterFinished || finishedSeen;
+                });
+        connect(&replay, &ui::RecordingReplay::trafficDropped, this,
+                [&](const bus::TrafficCounts &c) {
+                    dropped += c;
+                    ++droppedSignals;
+                });
+        QSignalSpy finished(&replay, &ui::RecordingReplay::finished);
+        connect(&replay, &ui::RecordingReplay::finished, this, [&] { finishedSeen = true; });
+        QString error;
+        QVERIFY2(replay.open(m_path, options(), &error), qPrintable(error));
+        replay.loadAll();
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(taken.samples, qint64(kPairs)); // the plots get everything
+        QVERIFY(!rowsAfterFinished);             // the rows come before "finished"
+        QCOMPARE(droppedSignals, 1);
+        QVERIFY(rows.size() >= kKept);
+        QVERIFY2(rows.size() < 2 * kKept, qPrintable(QString::number(rows.size())));
+        QCOMPARE(qint64(rows.size()) + qint64(dropped.events), qint64(2 * kPairs));
+        QCOMPARE(dropped.sent + dropped.frames, dropped.events); // requests and replies only
+        // The newest: the last reply of the recording, in order, nothing between lost.
+        QCOMPARE(rows.last().time, replay.durationSeconds());
+        for (qsizetype i = 1; i < rows.size(); ++i)
+            QVERIFY(rows.at(i).time >= rows.at(i - 1).time);
+        const double step = 0.0005 / 2; // a request or a reply every 250 us on average
+        QVERIFY(rows.last().time - rows.first().time < (rows.size() + 2) * step);
+    }
+
     void pauseStopsItWhereItGot()
     {
         ui::RecordingReplay replay;

@@ -1,0 +1,53 @@
+#pragma once
+
+#include "TrafficCounts.h"
+#include "TrafficEvent.h"
+
+#include <QtCore/QList>
+
+#include <optional>
+
+namespace lk::bus {
+
+/// Traffic batches waiting for a log that keeps at most `limit` rows: kept as they came
+/// (shared, not copied row by row), and a batch none of whose rows could be among the newest
+/// `limit` is dropped and only counted. A hidden Traffic view and a replay's Load all, which
+/// hands on millions of rows, keep their backlog in one.
+class TrafficBacklog {
+public:
+    explicit TrafficBacklog(qsizetype limit = 0) : m_limit(limit) {}
+
+    /// At most this many rows kept (0: no limit); applies from the next append on.
+    void setLimit(qsizetype limit) { m_limit = limit; }
+    qsizetype limit() const { return m_limit; }
+
+    void append(const TrafficBatch &batch);
+    /// The same, with the batch's own counts (TrafficCounts::add of each row, taken while the
+    /// rows were built): a dropped batch is then counted without reading its rows again.
+    void append(const TrafficBatch &batch, const TrafficCounts &counts);
+    /// Rows dropped elsewhere before they reached this backlog, counted with its own.
+    void addDropped(const TrafficCounts &counts) { m_dropped += counts; }
+
+    bool isEmpty() const { return m_batches.isEmpty() && m_dropped.events == 0; }
+    qsizetype rows() const { return m_rows; }
+    const QList<TrafficBatch> &batches() const { return m_batches; }
+    const TrafficCounts &dropped() const { return m_dropped; }
+
+    /// The rows kept, oldest first, as one batch (the backlog keeps none after).
+    TrafficBatch takeRows();
+    /// The counts of the rows dropped so far (the backlog counts from zero after).
+    TrafficCounts takeDropped();
+    void clear();
+
+private:
+    qsizetype m_limit = 0;
+    void trim();
+
+    QList<TrafficBatch> m_batches; ///< oldest first
+    /// Per batch of m_batches, its counts when append() was given them.
+    QList<std::optional<TrafficCounts>> m_counts;
+    qsizetype m_rows = 0; ///< the rows of m_batches
+    TrafficCounts m_dropped;
+};
+
+} // namespace lk::bus
