@@ -41,9 +41,13 @@ bool ReplayDecoder::open(const QString &path, ReplayTransport::Options options, 
         Qt::DirectConnection);
     m_seen.clear();
     m_context.clear();
+    m_contextsValid = false;
     m_known.clear();
     m_traffic.clear(); // a batch cut short by a close belongs to no file
+    m_trafficCounts = {};
     m_telemetry.clear();
+    m_keepTail = false;
+    m_tail.clear();
     m_transport = std::move(transport);
     m_path = path;
     if (!m_transport->open()) {
@@ -70,7 +74,45 @@ void ReplayDecoder::close()
     m_transport.reset();
     m_path.clear();
     m_traffic.clear();
+    m_trafficCounts = {};
     m_telemetry.clear();
+    m_keepTail = false;
+    m_tail.clear();
+}
+
+void ReplayDecoder::beginLoadAll(qsizetype trafficRowsKept)
+{
+    keepTrafficTail(trafficRowsKept);
+    if (m_transport)
+        m_transport->setReadAhead(true);
+}
+
+void ReplayDecoder::endLoadAll()
+{
+    if (m_transport)
+        m_transport->setReadAhead(false);
+    releaseTrafficTail();
+}
+
+void ReplayDecoder::keepTrafficTail(qsizetype rows)
+{
+    m_keepTail = rows > 0;
+    m_tail.setLimit(rows);
+    m_trafficCounts = {};
+    if (m_keepTail)
+        m_trafficCounts.add(m_traffic); // rows of the batch under way, if any
+}
+
+void ReplayDecoder::releaseTrafficTail()
+{
+    m_keepTail = false;
+    m_trafficCounts = {};
+    const bus::TrafficCounts dropped = m_tail.takeDropped();
+    bus::TrafficBatch rows = m_tail.takeRows();
+    if (dropped.events > 0)
+        emit trafficDropped(dropped);
+    if (!rows.isEmpty())
+        emit trafficCaptured(rows);
 }
 
 RecordingError ReplayDecoder::damage() const
@@ -153,6 +195,7 @@ void ReplayDecoder::emitStatistics()
 void ReplayDecoder::setContext(const ContextSnapshot &context)
 {
     m_context = context;
+    m_contextsValid = false;
     for (const DriveContext &d : context) {
         if (!m_seen.contains(d.id))
             m_seen.append(d.id);
@@ -204,15 +247,26 @@ void ReplayDecoder::restartParser()
 
 protocol::DecodeContext ReplayDecoder::contextOf(int id) const
 {
-    protocol::DecodeContext c;
-    c.link = m_link;
-    for (const DriveContext &d : m_context) {
-        if (d.id == id) {
-            c.series = d.series.value_or(protocol::Series::MF);
-            c.generation = d.generation;
+    // Asked a few times per frame: a table rebuilt when the context changes, not a search.
+    if (!m_contextsValid) {
+        protocol::DecodeContext c;
+        c.link = m_link;
+        m_contexts.fill(c);
+        for (const DriveContext &d : m_context) {
+            if (d.id < 0 || d.id >= int(m_contexts.size()))
+                continue;
+            protocol::DecodeContext &drive = m_contexts[size_t(d.id)];
+            drive.series = d.series.value_or(protocol::Series::MF);
+            drive.generation = d.generation;
         }
+        m_contextsValid = true;
     }
-    return c;
+    if (id < 0 || id >= int(m_contexts.size())) {
+        protocol::DecodeContext c;
+        c.link = m_link;
+        return c;
+    }
+    return m_contexts[size_t(id)];
 }
 
 void ReplayDecoder::takeCommand(const protocol::Frame &frame)
@@ -253,7 +307,7 @@ void ReplayDecoder::takeOtherFrame(const protocol::CanRecord &record)
     row.time = m_chunkTime;
     row.bytes = record.encode();
     row.context.link = m_link; // TrafficModel reads the slots from the record
-    m_traffic.append(std::move(row));
+    addRow(std::move(row));
     QVector<protocol::Frame> torques;
     for (const bus::HeardMultiTorque::Slot &slot : *heard) {
         torques.append(slot.frame);
@@ -273,13 +327,23 @@ void ReplayDecoder::onBytes(const QByteArray &bytes, bool transmitted)
     m_parser->feed(bytes, [this](const protocol::ParseEvent &e) { onFrame(e); });
 }
 
+void ReplayDecoder::addRow(bus::TrafficEvent &&row)
+{
+    if (m_keepTail)
+        m_trafficCounts.add(row); // while the row is at hand, not when its batch is dropped
+    m_traffic.append(std::move(row));
+}
+
 void ReplayDecoder::handOnRows()
 {
     // The next batch is sized like this one: Load all's batches of thousands of rows then
     // grow no list row by row.
     if (!m_traffic.isEmpty()) {
         const qsizetype rows = m_traffic.size();
-        emit trafficCaptured(std::exchange(m_traffic, {}));
+        if (m_keepTail)
+            m_tail.append(std::exchange(m_traffic, {}), std::exchange(m_trafficCounts, {}));
+        else
+            emit trafficCaptured(std::exchange(m_traffic, {}));
         m_traffic.reserve(rows);
     }
     if (!m_telemetry.isEmpty()) {
@@ -318,7 +382,7 @@ void ReplayDecoder::onFrame(const protocol::ParseEvent &event)
     if (!e.isFrame) {
         row.kind = bus::TrafficEvent::Kind::Fault;
         row.error = e.error;
-        m_traffic.append(std::move(row));
+        addRow(std::move(row));
         return;
     }
     const protocol::DecodeContext context = contextOf(e.frame.id);
@@ -327,7 +391,7 @@ void ReplayDecoder::onFrame(const protocol::ParseEvent &event)
     row.command = e.frame.command;
     row.frame = e.frame;
     row.context = context;
-    m_traffic.append(std::move(row));
+    addRow(std::move(row));
     if (e.direction == protocol::FrameDirection::Request && !m_transmitted && !e.echoed)
         takeCommand(e.frame);
     if (e.direction != protocol::FrameDirection::Reply)

@@ -6,11 +6,13 @@
 #include <bus/KnownMotor.h>
 #include <bus/ListenStatistics.h>
 #include <bus/TelemetrySample.h>
+#include <bus/TrafficBacklog.h>
 #include <bus/TrafficEvent.h>
 #include <protocol/FrameParser.h>
 
 #include <QtCore/QObject>
 
+#include <array>
 #include <memory>
 
 namespace lk::recording {
@@ -66,10 +68,21 @@ public:
     bool playNextBatch();
     /// Inside the transport's playing of records (one of this object's signals is running).
     bool isPlaying() const { return m_transport && m_transport->isPlaying(); }
+    /// Load all is about to call playNextBatch on a worker: read the file ahead on a thread of
+    /// its own, and keep the traffic rows here instead of handing them on, at most the newest
+    /// `trafficRowsKept` of them (the rest only counted; 0: hand every row on). Load all keeps
+    /// what the Traffic view can hold: building, queueing and freeing the millions of rows of
+    /// an hour that it would drop took a tenth of the load's time, most of it on the GUI thread.
+    void beginLoadAll(qsizetype trafficRowsKept);
+    /// Load all's worker is done (joined): stop reading ahead, and hand on the rows kept
+    /// (trafficDropped with the counts of those it did not keep, then trafficCaptured).
+    void endLoadAll();
 
 signals:
     void telemetryReceived(const lk::bus::TelemetryBatch &batch);
     void trafficCaptured(const lk::bus::TrafficBatch &batch);
+    /// Rows of the traffic that were not kept (keepTrafficTail), counted by kind.
+    void trafficDropped(const lk::bus::TrafficCounts &counts);
     /// The decode context changed: these drives are on the recorded bus.
     void drivesChanged(const lk::recording::ContextSnapshot &drives);
     /// A drive not in the context replied (its series is unknown: decoded as MF).
@@ -100,6 +113,9 @@ private:
     /// The rows and samples gathered so far go to the views: at the end of each batch the
     /// transport plays, and before a drive or context signal, so the views see them in order.
     void handOnRows();
+    void keepTrafficTail(qsizetype rows);
+    void releaseTrafficTail();
+    void addRow(bus::TrafficEvent &&row); ///< to m_traffic, counted while the tail is kept
     void handOnBatch();
     qint64 positionNs() const;
 
@@ -111,6 +127,9 @@ private:
     std::unique_ptr<protocol::FrameParser> m_parser;
     protocol::Link m_link = protocol::Link::Rs485;
     ContextSnapshot m_context;
+    /// contextOf() by drive ID, built from m_context and m_link when first asked after a change.
+    mutable std::array<protocol::DecodeContext, 256> m_contexts;
+    mutable bool m_contextsValid = false;
     QVector<int> m_seen; ///< every drive reported (context or reply)
     ReplayStatistics m_statistics;
     bus::KnownMotors m_known;
@@ -118,7 +137,10 @@ private:
     // What the chunks of the batch being played give, emitted when it is done.
     double m_chunkTime = 0;
     bus::TrafficBatch m_traffic;
+    bus::TrafficCounts m_trafficCounts; ///< of m_traffic, while m_keepTail
     bus::TelemetryBatch m_telemetry;
+    bool m_keepTail = false;
+    bus::TrafficBacklog m_tail; ///< the rows kept while m_keepTail
 };
 
 } // namespace lk::recording

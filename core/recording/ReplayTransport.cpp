@@ -1,5 +1,7 @@
 #include "ReplayTransport.h"
 
+#include "RecordReadAhead.h"
+
 #include <QtCore/QCoreApplication>
 #include <QtCore/QFileInfo>
 #include <QtCore/QScopedValueRollback>
@@ -37,6 +39,8 @@ ReplayTransport::ReplayTransport(const QString &path, Options options, QObject *
         this, [this] { tick(); }, Qt::PreciseTimer);
 }
 
+// The read-ahead is destroyed (its thread stopped) before the reader it reads: it is declared
+// after it.
 ReplayTransport::~ReplayTransport() = default;
 
 QString ReplayTransport::description() const
@@ -47,6 +51,8 @@ QString ReplayTransport::description() const
 
 bool ReplayTransport::open()
 {
+    setReadAhead(false);
+    m_ahead.clear();
     if (!m_reader.open(m_path)) {
         emit errorOccurred(transport::TransportError{transport::TransportError::Kind::IoError,
                                                      m_reader.error().message});
@@ -66,6 +72,8 @@ bool ReplayTransport::open()
 void ReplayTransport::close()
 {
     m_timer->stop();
+    setReadAhead(false);
+    m_ahead.clear();
     if (m_state == State::Closed)
         return;
     m_state = State::Closed;
@@ -114,10 +122,34 @@ void ReplayTransport::anchor(qint64 recordingNs)
     m_anchorRecordingNs = recordingNs;
 }
 
+void ReplayTransport::setReadAhead(bool on)
+{
+    if (on == bool(m_readAhead))
+        return;
+    if (on) {
+        m_readAhead = std::make_unique<RecordReadAhead>(m_reader);
+        m_readAhead->start();
+        return;
+    }
+    // What it read and nobody played yet comes before what the reader reads next.
+    std::deque<RecordEvent> left = m_readAhead->stop();
+    m_readAhead.reset();
+    for (RecordEvent &e : left)
+        m_ahead.push_back(std::move(e));
+}
+
 void ReplayTransport::advance()
 {
     RecordEvent e;
-    if (m_reader.next(&e))
+    bool got = false;
+    if (!m_ahead.empty()) {
+        e = std::move(m_ahead.front());
+        m_ahead.pop_front();
+        got = true;
+    } else {
+        got = m_readAhead ? m_readAhead->next(&e) : m_reader.next(&e);
+    }
+    if (got)
         m_next = std::move(e);
     else
         m_next.reset();
@@ -202,6 +234,8 @@ bool ReplayTransport::seek(qint64 ns)
         [](qint64 t, const RecordingReader::Block &b) { return t < b.baseTimeNs; });
     if (it != m_blocks.cbegin())
         --it;
+    setReadAhead(false);
+    m_ahead.clear();
     if (!m_reader.seek(*it))
         return false;
     std::optional<RecordEvent> context;

@@ -6,10 +6,13 @@
 #include <bus/SingleShotTimer.h>
 #include <transport/Transport.h>
 
+#include <deque>
 #include <memory>
 #include <optional>
 
 namespace lk::recording {
+
+class RecordReadAhead;
 
 /// A Transport that plays a recording back: tx and rx chunks alike arrive as received bytes,
 /// as a tap on the bus saw them, at their recorded times scaled by a speed (0.25x..20x), with
@@ -61,6 +64,9 @@ public:
     /// finished at the end); false once nothing is left. It never touches the timer, so a
     /// worker thread may drive a paused transport through it (RecordingReplay's "Load all").
     bool playNextBatch();
+    /// Read the file on a thread of its own, ahead of playNextBatch (Load all), until
+    /// setReadAhead(false); playback goes on from the same record either way.
+    void setReadAhead(bool on);
     /// Records are being played out (a receiver of chunkPlayed is running).
     bool isPlaying() const { return m_playing; }
     void play();
@@ -98,6 +104,8 @@ private:
     QString m_path;
     Options m_options;
     RecordingReader m_reader;
+    std::unique_ptr<RecordReadAhead> m_readAhead; ///< owns m_reader while set
+    std::deque<RecordEvent> m_ahead;              ///< read ahead, not yet played: next first
     QVector<RecordingReader::Block> m_blocks;
     std::optional<RecordEvent> m_next;
     std::unique_ptr<bus::SingleShotTimer> m_timer;

@@ -36,7 +36,7 @@ RecordingReplay::RecordingReplay(QObject *parent)
     });
     connect(m_decoder.get(), &D::finished, this, [this] {
         joinLoader(); // the worker ends right after the last batch
-        m_decoder->releaseTrafficTail();
+        m_decoder->endLoadAll();
         emit finished();
     });
 }
@@ -114,7 +114,7 @@ void RecordingReplay::loadAll()
     m_decoder->pause();
     m_loadingPosition = m_decoder->positionSeconds();
     m_stopLoading = false;
-    m_decoder->keepTrafficTail(m_trafficRowsKept); // handed on when the worker is done
+    m_decoder->beginLoadAll(m_trafficRowsKept); // the tail handed on when the worker is done
     auto room = std::make_shared<QSemaphore>(kBatchesAhead);
     m_queueRoom = room;
     recording::ReplayDecoder *decoder = m_decoder.get();
@@ -146,7 +146,7 @@ void RecordingReplay::stopLoading()
         --m_draining;
     }
     if (wasLoading)
-        m_decoder->releaseTrafficTail(); // the newest rows it decoded, after the rest
+        m_decoder->endLoadAll(); // the newest rows it decoded, after the rest
 }
 
 void RecordingReplay::abandonLoading()
