@@ -64,19 +64,38 @@ bool SampleRing::append(double time, double value)
         m_times[size_t(slot)] = time;
         m_values[size_t(slot)] = value;
     }
-    // A block restarts when its first slot is rewritten, so a block holds either only new
-    // points or only old ones unless it contains the write head; minMaxSlots never uses a
-    // block that contains the head (see there).
-    for (Level &level : m_levels) {
+    // A block's min/max is set when its last slot is written, from its points (the smallest
+    // blocks) or its two halves (the level below). minMaxSlots uses only blocks that lie
+    // wholly inside the held points, which never contain the write head, so a block being
+    // rewritten is not read before it is whole again. Most points end no block: the append
+    // then touches no level (every level at every point was a third of the GUI thread).
+    const qsizetype next = slot + 1;
+    for (size_t i = 0; i < m_levels.size(); ++i) {
+        Level &level = m_levels[i];
+        const qsizetype blockSize = qsizetype(1) << level.shift;
+        if ((next & (blockSize - 1)) != 0)
+            break; // not the end of a block here, nor of the larger blocks above
         const size_t block = size_t(slot) >> level.shift;
-        if ((slot & ((qsizetype(1) << level.shift) - 1)) != 0) {
-            level.min[block] = std::min(level.min[block], value);
-            level.max[block] = std::max(level.max[block], value);
-        } else if (block == level.min.size()) {
-            level.min.push_back(value);
-            level.max.push_back(value);
+        double lo = 0;
+        double hi = 0;
+        if (i == 0) {
+            const double *v = m_values.data() + (next - blockSize);
+            lo = hi = v[0];
+            for (qsizetype k = 1; k < blockSize; ++k) {
+                lo = std::min(lo, v[k]);
+                hi = std::max(hi, v[k]);
+            }
         } else {
-            level.min[block] = level.max[block] = value;
+            const Level &half = m_levels[i - 1];
+            lo = std::min(half.min[2 * block], half.min[2 * block + 1]);
+            hi = std::max(half.max[2 * block], half.max[2 * block + 1]);
+        }
+        if (block == level.min.size()) {
+            level.min.push_back(lo);
+            level.max.push_back(hi);
+        } else {
+            level.min[block] = lo;
+            level.max[block] = hi;
         }
     }
     m_head = slot + 1 == m_capacity ? 0 : slot + 1;

@@ -37,6 +37,10 @@ TimeChartView::TimeChartView(QWidget *parent) : QChartView(parent)
     // rebuilt for each of them (a stroke of every line's shape), for lookups a chart of a few
     // dozen items does not need.
     scene()->setItemIndexMethod(QGraphicsScene::NoIndex);
+    // The view paints every pixel of its viewport (its background brush, then the chart):
+    // without this, each frame also filled the viewport's own background and the window's
+    // behind it first (a seventh of the GUI thread with every signal plotted).
+    viewport()->setAttribute(Qt::WA_OpaquePaintEvent);
     applyPalette();
 }
 
