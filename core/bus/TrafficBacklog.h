@@ -11,13 +11,14 @@ namespace lk::bus {
 
 /// Traffic batches waiting for a log that keeps at most `limit` rows: kept as they came
 /// (shared, not copied row by row), and a batch none of whose rows could be among the newest
-/// `limit` is dropped and only counted. A hidden Traffic view and a replay's Load all, which
-/// hands on millions of rows, keep their backlog in one.
+/// `limit` is dropped and only counted. Whole batches are kept: the newest `limit` rows (when
+/// there are that many) and fewer than a batch more. A hidden Traffic view and a replay's Load all,
+/// which hands on millions of rows, keep their backlog in one.
 class TrafficBacklog {
 public:
     explicit TrafficBacklog(qsizetype limit = 0) : m_limit(limit) {}
 
-    /// At most this many rows kept (0: no limit); applies from the next append on.
+    /// The newest this many rows kept, in whole batches (0: no limit); from the next append.
     void setLimit(qsizetype limit) { m_limit = limit; }
     qsizetype limit() const { return m_limit; }
 

@@ -35,7 +35,9 @@ public:
     /// damage (the reader's error() tells which, once stopped).
     bool next(RecordEvent *event);
     /// Stop and join the thread: the reader is the caller's again, positioned after the last
-    /// record read. The records read but not taken are returned, oldest first.
+    /// record read. The records read but not taken are returned, oldest first. Call it from
+    /// the thread that takes the records, or once that thread is joined: a next() waiting
+    /// when it stops returns false as at the end.
     std::deque<RecordEvent> stop();
 
 private:

@@ -248,23 +248,12 @@ void ReplayDecoder::restartParser()
 protocol::DecodeContext ReplayDecoder::contextOf(int id) const
 {
     // Asked a few times per frame: a table rebuilt when the context changes, not a search.
+    if (id < 0 || id >= int(m_contexts.size())) // no frame carries such an ID
+        return decodeContextOf(m_context, id, m_link);
     if (!m_contextsValid) {
-        protocol::DecodeContext c;
-        c.link = m_link;
-        m_contexts.fill(c);
-        for (const DriveContext &d : m_context) {
-            if (d.id < 0 || d.id >= int(m_contexts.size()))
-                continue;
-            protocol::DecodeContext &drive = m_contexts[size_t(d.id)];
-            drive.series = d.series.value_or(protocol::Series::MF);
-            drive.generation = d.generation;
-        }
+        for (size_t i = 0; i < m_contexts.size(); ++i)
+            m_contexts[i] = decodeContextOf(m_context, int(i), m_link);
         m_contextsValid = true;
-    }
-    if (id < 0 || id >= int(m_contexts.size())) {
-        protocol::DecodeContext c;
-        c.link = m_link;
-        return c;
     }
     return m_contexts[size_t(id)];
 }

@@ -32,7 +32,7 @@ namespace lk::recording {
 ///
 /// Its signals go out on the thread that plays: the event loop's while it plays on its timer,
 /// a worker's while that worker calls playNextBatch (the transport's signals reach this object
-/// directly either way).
+/// directly either way); endLoadAll's on the thread that calls it.
 class ReplayDecoder : public QObject {
     Q_OBJECT
 public:

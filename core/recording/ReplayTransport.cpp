@@ -235,9 +235,9 @@ bool ReplayTransport::seek(qint64 ns)
     if (it != m_blocks.cbegin())
         --it;
     setReadAhead(false);
-    m_ahead.clear();
     if (!m_reader.seek(*it))
-        return false;
+        return false; // where it was: the records read ahead still play next
+    m_ahead.clear();
     std::optional<RecordEvent> context;
     advance();
     while (m_next && m_next->timeNs < ns) {

@@ -65,7 +65,9 @@ public:
     /// worker thread may drive a paused transport through it (RecordingReplay's "Load all").
     bool playNextBatch();
     /// Read the file on a thread of its own, ahead of playNextBatch (Load all), until
-    /// setReadAhead(false); playback goes on from the same record either way.
+    /// setReadAhead(false); playback goes on from the same record either way. Switch it only
+    /// while no thread is playing records (Load all's worker joined): stopping it under a
+    /// reader waiting for its next record would end that reader's playing early.
     void setReadAhead(bool on);
     /// Records are being played out (a receiver of chunkPlayed is running).
     bool isPlaying() const { return m_playing; }

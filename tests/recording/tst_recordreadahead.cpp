@@ -134,6 +134,39 @@ private slots:
         QVERIFY(ahead.stop().empty());
     }
 
+    void stopsAtDamageAsThePlainReaderDoes()
+    {
+        // A flipped byte in the tenth block: the records before it, then the reader's error.
+        QFile in(m_path);
+        QVERIFY(in.open(QIODevice::ReadOnly));
+        QByteArray bytes = in.readAll();
+        RecordingReader probe;
+        QVERIFY(probe.open(m_path));
+        const QVector<RecordingReader::Block> blocks = probe.index();
+        QVERIFY(blocks.size() > 10);
+        bytes[qsizetype(blocks[10].offset) + 20] =
+            char(bytes[qsizetype(blocks[10].offset) + 20] ^ 1);
+        const QString damaged = m_dir.filePath(QStringLiteral("damaged.lkrec"));
+        QVERIFY(lk::testsupport::writeFile(damaged, bytes));
+        RecordingError plainError;
+        QStringList expected;
+        for (const RecordEvent &e : lk::testsupport::readAll(damaged, &plainError))
+            expected << describe(e);
+        QCOMPARE(int(plainError.kind), int(RecordingError::Kind::Damaged));
+        RecordingReader reader;
+        QVERIFY(reader.open(damaged));
+        RecordReadAhead ahead(reader);
+        ahead.start();
+        QStringList got;
+        RecordEvent e;
+        while (ahead.next(&e))
+            got << describe(e);
+        QVERIFY(ahead.stop().empty());
+        QCOMPARE(got, expected);
+        QCOMPARE(int(reader.error().kind), int(RecordingError::Kind::Damaged));
+        QCOMPARE(reader.error().offset, plainError.offset);
+    }
+
     void aReplayPlaysTheSameWithAndWithoutIt()
     {
         Played without;

@@ -48,7 +48,7 @@ QToolButton *makeButton(QWidget *parent, const QString &name, const QString &tex
 
 TrafficPanel::TrafficPanel(BusModel *model, QWidget *parent, int capacity)
     : QWidget(parent), m_bus(model), m_model(new TrafficModel(this, capacity)),
-      m_filter(new TrafficFilter(this)), m_backlog(capacity)
+      m_filter(new TrafficFilter(this)), m_backlog(m_model->capacity())
 {
     setObjectName(QStringLiteral("traffic"));
     m_filter->setSourceModel(m_model);

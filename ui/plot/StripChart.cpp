@@ -24,8 +24,8 @@ constexpr int kValueTicks = 5;
 
 // Each setter is called only for a change: QValueAxis (Qt 6.4) emits its change signal on
 // every call, and QtCharts answers labelFormatChanged with a relayout of the whole chart (every
-// axis builds its labels again as rich text). Called at every frame as the time axis slides,
-// that relayout was a fifth of the GUI thread's time with every signal plotted.
+// axis builds its labels again as rich text). Called at every autoscale, that relayout cost a
+// fifth of the GUI thread's time with every signal plotted.
 void setNiceTicks(QValueAxis *axis, double span, int ticks)
 {
     const double step = niceStep(span / ticks);
@@ -35,11 +35,7 @@ void setNiceTicks(QValueAxis *axis, double span, int ticks)
         axis->setTickAnchor(0);
     if (axis->tickInterval() != step)
         axis->setTickInterval(step);
-    // An axis whose labels are hidden (the time axis of every strip but the bottom one) still
-    // has QtCharts format and lay out a rich-text label per tick whenever its range moves, at
-    // every frame: a format without a conversion gives empty labels, which cost next to nothing.
-    const QString format = axis->labelsVisible() ? QStringLiteral("%.%1f").arg(tickDecimals(step))
-                                                 : QStringLiteral("-");
+    const QString format = QStringLiteral("%.%1f").arg(tickDecimals(step));
     if (axis->labelFormat() != format)
         axis->setLabelFormat(format);
 }

@@ -33,9 +33,9 @@ TimeChartView::TimeChartView(QWidget *parent) : QChartView(parent)
     setMouseTracking(true);
     setRubberBand(QChartView::NoRubberBand); // zoom is ours: every chart must zoom alike
     setDragMode(QGraphicsView::NoDrag);
-    // Every frame moves the axis's grid lines and labels: a BSP index of the scene would be
-    // rebuilt for each of them (a stroke of every line's shape), for lookups a chart of a few
-    // dozen items does not need.
+    // Items move or change at every frame (the lines, an autoscaled axis): a BSP index of the
+    // scene would be rebuilt for each of them (a stroke of every line's shape), for lookups a
+    // chart of a few dozen items does not need.
     scene()->setItemIndexMethod(QGraphicsScene::NoIndex);
     // The view paints every pixel of its viewport (its background brush, then the chart):
     // without this, each frame also filled the viewport's own background and the window's

@@ -13,8 +13,9 @@
 namespace lk::ui {
 
 namespace {
-// QtCharts stacks its items by these z values (ChartPresenter): grid 3, axes 4, series 5.
-constexpr double kGridZ = 3;
+// QtCharts stacks its items by these z values (ChartPresenter, Qt 6): plot area 0, shades 1,
+// grid 2, axes 3, series 4, legend 5. The layer takes the grid's place, under the lines.
+constexpr double kGridZ = 2;
 constexpr double kLabelGap = 3; ///< pixels between the plot area and the labels, and below them
 // Labels are centred on their ticks: the outermost may reach this far beside the plot area.
 constexpr double kLabelOverhang = 60;
@@ -93,9 +94,10 @@ void TimeGridLayer::plotAreaChanged()
 
 QRectF TimeGridLayer::boundingRect() const
 {
+    // A pixel around the area: its lines are drawn on its edges.
     if (!m_labels)
-        return m_area;
-    return m_area.adjusted(-kLabelOverhang, 0, kLabelOverhang, labelAreaHeight());
+        return m_area.adjusted(-1, -1, 1, 1);
+    return m_area.adjusted(-kLabelOverhang, -1, kLabelOverhang, labelAreaHeight());
 }
 
 void TimeGridLayer::paint(QPainter *painter, const QStyleOptionGraphicsItem *, QWidget *)
@@ -124,11 +126,19 @@ void TimeGridLayer::paint(QPainter *painter, const QStyleOptionGraphicsItem *, Q
         const QFontMetricsF fm(m_font);
         const int decimals = tickDecimals(tickStep(t1 - t0, columns));
         const double top = m_area.bottom() + kLabelGap;
+        // Centred on its tick, but never past the chart's edge (the outermost of a plot with no
+        // axis beside it) nor over the label before it.
+        const QRectF chart = m_chart->rect();
+        double freeFrom = chart.left();
         for (double t : at) {
             const QString text = QString::number(t, 'f', decimals);
             const double x = m_area.left() + (t - t0) * xScale;
             const double w = fm.horizontalAdvance(text);
-            painter->drawText(QRectF(x - w / 2, top, w, fm.height()), Qt::AlignCenter, text);
+            const double left = std::min(x - w / 2, chart.right() - w);
+            if (left < freeFrom)
+                continue;
+            painter->drawText(QRectF(left, top, w, fm.height()), Qt::AlignCenter, text);
+            freeFrom = left + w + fm.averageCharWidth();
         }
         if (!m_title.isEmpty()) {
             painter->setFont(m_titleFont);

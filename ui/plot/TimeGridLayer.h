@@ -30,7 +30,8 @@ public:
     /// chart keeps that much margin for them.
     int labelAreaHeight() const;
     void setColors(const QColor &grid, const QColor &line, const QColor &text);
-    /// The fonts of the labels and of the title (the value axes' fonts, for a uniform look).
+    /// The fonts of the labels and of the title (the chart theme's axis fonts, which the
+    /// hidden time axis carries, for the value axes' look).
     void setFonts(const QFont &labels, const QFont &title);
     /// The plot area moved or resized, or the time axis's range changed: repaint.
     void plotAreaChanged();

@@ -7,9 +7,9 @@
 namespace lk::ui {
 
 namespace {
-// QtCharts stacks its items by these z values (ChartPresenter): grid 3, axes 4, series 5,
-// legend 6. The layer takes the series' place.
-constexpr double kSeriesZ = 5;
+// QtCharts stacks its items by these z values (ChartPresenter, Qt 6): plot area 0, shades 1,
+// grid 2, axes 3, series 4, legend 5. The layer takes the series' place.
+constexpr double kSeriesZ = 4;
 } // namespace
 
 TraceLayer::TraceLayer(QChart *chart, QValueAxis *timeAxis)

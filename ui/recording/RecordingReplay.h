@@ -67,9 +67,9 @@ public:
     /// Called while the replay is handing rows on (from a slot of its signals), it starts when
     /// that is over.
     void loadAll();
-    /// Load all hands on only the newest `rows` traffic rows, when it ends or stops, and the
-    /// counts of the others (trafficDropped): what the Traffic view keeps. 0 (the default):
-    /// every row, batch by batch.
+    /// Load all hands on only the newest `rows` traffic rows (in whole batches: up to a batch
+    /// more), when it ends or stops, and the counts of the others (trafficDropped): what the
+    /// Traffic view keeps. 0 (the default): every row, batch by batch.
     void setTrafficRowsKept(qsizetype rows) { m_trafficRowsKept = rows; }
 
 signals:

@@ -6,7 +6,8 @@
 // Prints one JSON line:
 //   poll_ratio_<rate>, poll_txn_per_s_<rate>,   read_state2 from 4 drives (two old CAN, two
 //   can_limit_per_s_<rate>                      V2.36): achieved / LinkTiming's CAN limit
-//   lost_frames_<rate>                          timeouts + late replies + unexpected frames
+//   lost_frames_<rate>                          timeouts + late replies + unexpected frames,
+//                                               from the open on (warm-up included)
 //   scan_ms_<rate>                              scan of IDs 1..32 with 4 drives, median of 5
 //   estop_first_ms, estop_last_ms (median, max) emergency stop with 4 drives turning: until
 //                                               the first and the last of them acknowledged
@@ -25,6 +26,7 @@
 
 #include <vector>
 
+#include <algorithm>
 #include <cstdio>
 
 using namespace lk;
@@ -92,8 +94,11 @@ void pollFigures(int rate, bench::JsonLine &out)
     if (snapshots.size() >= from + 2) {
         a = snapshots[from];
         b = snapshots.back();
-        const quint64 good =
-            (b.bus.replies - a.bus.replies) - (b.bus.unexpectedFrames - a.bus.unexpectedFrames);
+        // Less the frames nobody expected, as bench_bus_poll counts (a reply may have been
+        // taken for a newer identical request): never below zero.
+        const qint64 good =
+            std::max<qint64>(0, qint64(b.bus.replies - a.bus.replies) -
+                                    qint64(b.bus.unexpectedFrames - a.bus.unexpectedFrames));
         achieved = b.time > a.time ? static_cast<double>(good) / (b.time - a.time) : 0;
     }
     const double limit = LinkTiming::can(rate).transactionsPerSecond({Command::ReadState2});

@@ -156,6 +156,7 @@ private slots:
     void failedExportKeepsTheEarlierFile();
     void pauseKeepsCounting();
     void hiddenBacklogCountsWhatItDrops();
+    void rowsDroppedElsewhereAreCounted();
     void countsAreTheBusStatistics();
     void exportReadByLkctl();
     void rowKeepsTheContextOfItsMoment();
@@ -341,6 +342,29 @@ void tst_TrafficModel::hiddenBacklogCountsWhatItDrops()
     QCOMPARE(panel.trafficModel()->rowCount(), 10);
     QCOMPARE(panel.trafficModel()->droppedRows(), quint64(32));
     QCOMPARE(panel.trafficModel()->counts().timeouts, quint64(6)); // every batch counted
+}
+
+void tst_TrafficModel::rowsDroppedElsewhereAreCounted()
+{
+    // A replay's Load all hands on only the rows the table keeps and the counts of the rest:
+    // they reach the summary and the dropped total with the next flush, beside the rows.
+    lk::ui::BusModel bus;
+    lk::ui::TrafficPanel panel(&bus, nullptr, 10);
+    lk::bus::TrafficCounts elsewhere;
+    for (int i = 0; i < 3; ++i)
+        elsewhere.add(sampleTraffic()); // 21 rows, 3 timeouts
+    panel.countDroppedTraffic(elsewhere);
+    panel.appendTraffic(sampleTraffic());
+    panel.flush();
+    QCOMPARE(panel.trafficModel()->rowCount(), 7);
+    QCOMPARE(panel.trafficModel()->droppedRows(), quint64(21));
+    QCOMPARE(panel.trafficModel()->counts().timeouts, quint64(4));
+    QVERIFY(panel.countsText().contains(QStringLiteral("bad_data_checksum 4")));
+    // Counts alone are flushed too.
+    panel.countDroppedTraffic(elsewhere);
+    panel.flush();
+    QCOMPARE(panel.trafficModel()->droppedRows(), quint64(42));
+    QCOMPARE(panel.trafficModel()->rowCount(), 7);
 }
 
 void tst_TrafficModel::pauseKeepsCounting()

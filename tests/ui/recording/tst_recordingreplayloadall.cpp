@@ -151,6 +151,49 @@ private slots:
         QVERIFY(rows.last().time - rows.first().time < (rows.size() + 2) * step);
     }
 
+    void aPausedLoadHandsOnItsTailOnce()
+    {
+        // Paused while the views take its first batch, then loaded again to the end: each load
+        // hands on its newest rows and the counts of the others once, rows and counts together
+        // are every row decoded, and the rows of the first come before those of the second.
+        constexpr qsizetype kKept = 3000;
+        ui::RecordingReplay replay;
+        replay.setTrafficRowsKept(kKept);
+        Taken taken;
+        QVector<bus::TrafficBatch> handed;
+        QVector<quint64> dropped;
+        bool paused = false;
+        connect(&replay, &ui::RecordingReplay::telemetryReceived, this,
+                [&](const bus::TelemetryBatch &b) {
+                    taken.take(b);
+                    if (!paused) {
+                        paused = true;
+                        replay.pause();
+                    }
+                });
+        connect(&replay, &ui::RecordingReplay::trafficCaptured, this,
+                [&](const bus::TrafficBatch &b) { handed.append(b); });
+        connect(&replay, &ui::RecordingReplay::trafficDropped, this,
+                [&](const bus::TrafficCounts &c) { dropped.append(c.events); });
+        QSignalSpy finished(&replay, &ui::RecordingReplay::finished);
+        QString error;
+        QVERIFY2(replay.open(m_path, options(), &error), qPrintable(error));
+        replay.loadAll();
+        QTRY_VERIFY(paused);
+        QVERIFY(!replay.isLoadingAll());
+        QCOMPARE(handed.size(), 1); // the tail, once
+        const qint64 firstRows = handed.first().size() + qint64(dropped.value(0));
+        QCOMPARE(firstRows, 2 * taken.samples); // a request and a reply per sample so far
+        replay.loadAll();
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(handed.size(), 2);
+        QCOMPARE(dropped.size(), 2);
+        QCOMPARE(handed[0].size() + handed[1].size() + qint64(dropped[0] + dropped[1]),
+                 qint64(2 * kPairs));
+        QVERIFY(handed[0].last().time <= handed[1].first().time);
+        QCOMPARE(taken.samples, qint64(kPairs));
+    }
+
     void pauseStopsItWhereItGot()
     {
         ui::RecordingReplay replay;
