@@ -78,10 +78,14 @@ void ReplayDecoder::close()
     m_telemetry.clear();
     m_keepTail = false;
     m_tail.clear();
+    m_loadingAll = false;
+    m_statisticsHeld = false;
 }
 
 void ReplayDecoder::beginLoadAll(qsizetype trafficRowsKept)
 {
+    m_loadingAll = true;
+    m_statisticsClock.start();
     keepTrafficTail(trafficRowsKept);
     if (m_transport)
         m_transport->setReadAhead(true);
@@ -92,6 +96,9 @@ void ReplayDecoder::endLoadAll()
     if (m_transport)
         m_transport->setReadAhead(false);
     releaseTrafficTail();
+    m_loadingAll = false;
+    if (m_statisticsHeld)
+        emitStatistics(); // where it stopped (at the end, the finished one was sent already)
 }
 
 void ReplayDecoder::keepTrafficTail(qsizetype rows)
@@ -188,6 +195,7 @@ qint64 ReplayDecoder::positionNs() const
 
 void ReplayDecoder::emitStatistics()
 {
+    m_statisticsHeld = false;
     if (m_transport)
         emit listenStatisticsUpdated(m_statistics.snapshot(positionNs()));
 }
@@ -345,8 +353,14 @@ void ReplayDecoder::handOnRows()
 void ReplayDecoder::handOnBatch()
 {
     handOnRows();
-    if (m_statistics.snapshotDue(positionNs()))
-        emitStatistics();
+    if (m_statistics.snapshotDue(positionNs())) {
+        if (!m_loadingAll || m_statisticsClock.elapsed() >= kLoadAllStatisticsMs) {
+            emitStatistics();
+            m_statisticsClock.restart();
+        } else {
+            m_statisticsHeld = true;
+        }
+    }
     emit positionChanged(positionSeconds());
 }
 

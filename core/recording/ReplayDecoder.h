@@ -10,6 +10,7 @@
 #include <bus/TrafficEvent.h>
 #include <protocol/FrameParser.h>
 
+#include <QtCore/QElapsedTimer>
 #include <QtCore/QObject>
 
 #include <array>
@@ -75,7 +76,10 @@ public:
     /// an hour that it would drop took a tenth of the load's time, most of it on the GUI thread.
     void beginLoadAll(qsizetype trafficRowsKept);
     /// Load all's worker is done (joined): stop reading ahead, and hand on the rows kept
-    /// (trafficDropped with the counts of those it did not keep, then trafficCaptured).
+    /// (trafficDropped with the counts of those it did not keep, then trafficCaptured) and
+    /// the statistics where it got to. While it runs, the statistics go out at most every
+    /// kLoadAllStatisticsMs of wall time, not every half second of the recording: an hour
+    /// loads in seconds, and 7200 snapshots refilled the statistics view as many times.
     void endLoadAll();
 
 signals:
@@ -110,6 +114,7 @@ private:
     /// request to each drive it names (statistics) and, another master's, its commands.
     void takeOtherFrame(const protocol::CanRecord &record);
     void emitStatistics();
+    static constexpr int kLoadAllStatisticsMs = 100;
     /// The rows and samples gathered so far go to the views: at the end of each batch the
     /// transport plays, and before a drive or context signal, so the views see them in order.
     void handOnRows();
@@ -140,7 +145,10 @@ private:
     bus::TrafficCounts m_trafficCounts; ///< of m_traffic, while m_keepTail
     bus::TelemetryBatch m_telemetry;
     bool m_keepTail = false;
-    bus::TrafficBacklog m_tail; ///< the rows kept while m_keepTail
+    bool m_loadingAll = false;       ///< between beginLoadAll and endLoadAll
+    bool m_statisticsHeld = false;   ///< a snapshot was due and not sent (Load all's rate)
+    QElapsedTimer m_statisticsClock; ///< since the last snapshot sent during Load all
+    bus::TrafficBacklog m_tail;      ///< the rows kept while m_keepTail
 };
 
 } // namespace lk::recording

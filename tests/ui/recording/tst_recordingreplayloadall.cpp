@@ -5,6 +5,7 @@
 #include <recording/RecordFile.h>
 #include <recording/RecordingReplay.h>
 
+#include <QtCore/QElapsedTimer>
 #include <QtCore/QTemporaryDir>
 #include <QtTest/QSignalSpy>
 #include <QtTest/QTest>
@@ -149,6 +150,35 @@ private slots:
             QVERIFY(rows.at(i).time >= rows.at(i - 1).time);
         const double step = 0.0005 / 2; // a request or a reply every 250 us on average
         QVERIFY(rows.last().time - rows.first().time < (rows.size() + 2) * step);
+    }
+
+    void statisticsComeAtAWallClockRateAndAtTheEnd()
+    {
+        // 100 s of recording would give 200 half-second snapshots; Load all sends one every
+        // 100 ms of wall time at most, and the figures at the end count every request.
+        ui::RecordingReplay replay;
+        QVector<bus::ListenStatistics> snapshots;
+        QSignalSpy finished(&replay, &ui::RecordingReplay::finished);
+        QString error;
+        QVERIFY2(replay.open(m_path, options(), &error), qPrintable(error));
+        connect(&replay, &ui::RecordingReplay::listenStatisticsUpdated, this,
+                [&snapshots](const bus::ListenStatistics &s) { snapshots.append(s); });
+        QElapsedTimer wall;
+        wall.start();
+        replay.loadAll();
+        QVERIFY(finished.wait(60000));
+        const qint64 ms = wall.elapsed();
+        QVERIFY(!snapshots.isEmpty());
+        QVERIFY2(snapshots.size() <= ms / 100 + 2,
+                 qPrintable(QStringLiteral("%1 in %2 ms").arg(snapshots.size()).arg(ms)));
+        QCOMPARE(snapshots.last().requests, quint64(kPairs));
+        QCOMPARE(snapshots.last().paired, quint64(kPairs));
+        // Played as usual afterwards (a seek), snapshots follow the recording's clock again.
+        replay.seek(0);
+        snapshots.clear();
+        replay.loadAll();
+        QVERIFY(finished.wait(60000));
+        QCOMPARE(snapshots.last().requests, quint64(kPairs));
     }
 
     void aPausedLoadHandsOnItsTailOnce()
