@@ -309,7 +309,14 @@ void tst_E2eCanTools::freqAndTuneOnV236()
     CtlResult r = run({"freq", "2", "speed", "--from", "1", "--to", "4", "--points", "2",
                        "--amplitude", "30", "--per-point", "0.3", "--json", "--drives", kNew});
     QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
-    r = run({"tune", "2", "speed", "--write", "ram", "--json", "--drives", kNew});
+    const QStringList tune{"tune", "2", "speed", "--write", "ram", "--json", "--drives", kNew};
+    r = run(tune);
+    // A stall of the loaded machine can swallow a reply on virtualcan's TCP (seen once at the
+    // start of a full suite: two attempts of one 0xC1 unanswered). lkctl then says which, puts
+    // the gains it read back in RAM and exits 1, which is right; the tune is run once more.
+    if (r.exitCode == 1 && r.err.contains("no reply to") &&
+        r.err.contains("the gains and acceleration read before are back in RAM"))
+        r = run(tune);
     QVERIFY2(r.exitCode == 0, qPrintable(describeRun(r)));
     QVERIFY(m_wire.count(0x142, 0xC1) > 0);
 }
