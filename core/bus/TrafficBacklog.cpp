@@ -4,28 +4,13 @@
 
 namespace lk::bus {
 
-void TrafficBacklog::append(const TrafficBatch &batch)
+void TrafficBacklog::append(const TrafficBatch &batch, std::optional<TrafficCounts> counts)
 {
     if (batch.isEmpty())
         return;
     m_batches.append(batch);
-    m_counts.append(std::nullopt);
+    m_counts.append(std::move(counts));
     m_rows += batch.size();
-    trim();
-}
-
-void TrafficBacklog::append(const TrafficBatch &batch, const TrafficCounts &counts)
-{
-    if (batch.isEmpty())
-        return;
-    m_batches.append(batch);
-    m_counts.append(counts);
-    m_rows += batch.size();
-    trim();
-}
-
-void TrafficBacklog::trim()
-{
     // Whole batches go: the newest always stays, however large it is.
     while (m_limit > 0 && m_batches.size() > 1 && m_rows - m_batches.first().size() >= m_limit) {
         if (m_counts.first())

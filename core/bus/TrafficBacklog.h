@@ -22,10 +22,10 @@ public:
     void setLimit(qsizetype limit) { m_limit = limit; }
     qsizetype limit() const { return m_limit; }
 
-    void append(const TrafficBatch &batch);
-    /// The same, with the batch's own counts (TrafficCounts::add of each row, taken while the
-    /// rows were built): a dropped batch is then counted without reading its rows again.
-    void append(const TrafficBatch &batch, const TrafficCounts &counts);
+    /// Keep `batch`, dropping older batches past the limit. `counts`, when given, are the
+    /// batch's own (TrafficCounts::add of each row, taken while the rows were built): a dropped
+    /// batch is then counted without reading its rows again.
+    void append(const TrafficBatch &batch, std::optional<TrafficCounts> counts = std::nullopt);
     /// Rows dropped elsewhere before they reached this backlog, counted with its own.
     void addDropped(const TrafficCounts &counts) { m_dropped += counts; }
 
@@ -42,8 +42,6 @@ public:
 
 private:
     qsizetype m_limit = 0;
-    void trim();
-
     QList<TrafficBatch> m_batches; ///< oldest first
     /// Per batch of m_batches, its counts when append() was given them.
     QList<std::optional<TrafficCounts>> m_counts;

@@ -55,12 +55,30 @@ QString describe(const RecordEvent &e)
     return QStringLiteral("%1@%2").arg(QString::fromLatin1(e.bytes)).arg(e.timeNs);
 }
 
-QStringList plain(const QString &path)
+QStringList plain(const QString &path, RecordingError *error = nullptr)
 {
     QStringList out;
-    for (const RecordEvent &e : lk::testsupport::readAll(path))
+    for (const RecordEvent &e : lk::testsupport::readAll(path, error))
         out << describe(e);
     return out;
+}
+
+/// Every record of `path` through a RecordReadAhead run to its end; `error` gets the reader's,
+/// `leftOver` whether stop() still held records (it must not, after the end).
+QStringList readAhead(const QString &path, RecordingError *error, bool *leftOver)
+{
+    RecordingReader reader;
+    QStringList got;
+    if (!reader.open(path))
+        return got;
+    RecordReadAhead ahead(reader);
+    ahead.start();
+    RecordEvent e;
+    while (ahead.next(&e))
+        got << describe(e);
+    *leftOver = !ahead.stop().empty();
+    *error = reader.error();
+    return got;
 }
 
 /// The chunks a replay plays, in order.
@@ -89,17 +107,11 @@ private slots:
 
     void readsWhatThePlainReaderReads()
     {
-        RecordingReader reader;
-        QVERIFY(reader.open(m_path));
-        RecordReadAhead ahead(reader);
-        ahead.start();
-        QStringList got;
-        RecordEvent e;
-        while (ahead.next(&e))
-            got << describe(e);
-        QVERIFY(ahead.stop().empty());
-        QCOMPARE(got, m_plain);
-        QCOMPARE(int(reader.error().kind), int(RecordingError::Kind::None));
+        RecordingError error;
+        bool leftOver = true;
+        QCOMPARE(readAhead(m_path, &error, &leftOver), m_plain);
+        QVERIFY(!leftOver);
+        QCOMPARE(int(error.kind), int(RecordingError::Kind::None));
     }
 
     void stoppingHalfWayLosesAndDoublesNothing_data()
@@ -149,22 +161,14 @@ private slots:
         const QString damaged = m_dir.filePath(QStringLiteral("damaged.lkrec"));
         QVERIFY(lk::testsupport::writeFile(damaged, bytes));
         RecordingError plainError;
-        QStringList expected;
-        for (const RecordEvent &e : lk::testsupport::readAll(damaged, &plainError))
-            expected << describe(e);
+        const QStringList expected = plain(damaged, &plainError);
         QCOMPARE(int(plainError.kind), int(RecordingError::Kind::Damaged));
-        RecordingReader reader;
-        QVERIFY(reader.open(damaged));
-        RecordReadAhead ahead(reader);
-        ahead.start();
-        QStringList got;
-        RecordEvent e;
-        while (ahead.next(&e))
-            got << describe(e);
-        QVERIFY(ahead.stop().empty());
-        QCOMPARE(got, expected);
-        QCOMPARE(int(reader.error().kind), int(RecordingError::Kind::Damaged));
-        QCOMPARE(reader.error().offset, plainError.offset);
+        RecordingError error;
+        bool leftOver = true;
+        QCOMPARE(readAhead(damaged, &error, &leftOver), expected);
+        QVERIFY(!leftOver);
+        QCOMPARE(int(error.kind), int(RecordingError::Kind::Damaged));
+        QCOMPARE(error.offset, plainError.offset);
     }
 
     void aReplayPlaysTheSameWithAndWithoutIt()

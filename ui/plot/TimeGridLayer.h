@@ -33,7 +33,8 @@ public:
     /// The fonts of the labels and of the title (the chart theme's axis fonts, which the
     /// hidden time axis carries, for the value axes' look).
     void setFonts(const QFont &labels, const QFont &title);
-    /// The plot area moved or resized, or the time axis's range changed: repaint.
+    /// The plot area moved or resized: the bounds follow, and it repaints. (A new time range
+    /// only needs update().)
     void plotAreaChanged();
 
     /// The tick interval for `span` seconds over `columns` pixels: a round step (1, 2 or 5

@@ -20,6 +20,22 @@ using lk::ui::StripChart;
 using lk::ui::TelemetryStore;
 using lk::ui::TimeGridLayer;
 
+namespace {
+
+/// A shown panel of drive 1 with 20 s of its samples.
+struct ShownPanel {
+    TelemetryStore store;
+    PlotPanel panel{&store};
+    ShownPanel()
+    {
+        panel.setDrives({1});
+        lk::plottest::showPanel(panel);
+        store.append(lk::plottest::batch(1, 0, 201, 0.1));
+    }
+};
+
+} // namespace
+
 class tst_TimeGridLayer : public QObject {
     Q_OBJECT
 private slots:
@@ -85,12 +101,8 @@ void tst_TimeGridLayer::noTicksForAnEmptyRange()
 
 void tst_TimeGridLayer::bottomStripAloneHasLabels()
 {
-    TelemetryStore store;
-    PlotPanel panel(&store);
-    panel.setDrives({1});
-    lk::plottest::showPanel(panel);
-    store.append(lk::plottest::batch(1, 0, 201, 0.1));
-    const QList<StripChart *> charts = panel.charts();
+    ShownPanel shown;
+    const QList<StripChart *> charts = shown.panel.charts();
     QVERIFY(charts.size() >= 2);
     for (StripChart *chart : charts) {
         const bool bottom = chart == charts.last();
@@ -109,12 +121,8 @@ void tst_TimeGridLayer::bottomStripAloneHasLabels()
 
 void tst_TimeGridLayer::labelsArePaintedUnderThePlotArea()
 {
-    TelemetryStore store;
-    PlotPanel panel(&store);
-    panel.setDrives({1});
-    lk::plottest::showPanel(panel);
-    store.append(lk::plottest::batch(1, 0, 201, 0.1));
-    const QList<StripChart *> charts = panel.charts();
+    ShownPanel shown;
+    const QList<StripChart *> charts = shown.panel.charts();
     QVERIFY(charts.size() >= 2);
     QTRY_VERIFY(charts.last()->timeAxis()->max() >= 19.9);
     // The band under each plot area: dark text on the bottom strip, none under the others
