@@ -230,7 +230,9 @@ QLineSeries *StripChart::addLegendSeries(int index, const QPen &pen)
         tr("ID %1 %2").arg(trace.driveId).arg(channelLabel(trace.channel, trace.power)));
     series->setPen(pen);
     chart()->addSeries(series);
-    series->attachAxis(m_time);
+    // Not on the time axis: the legend needs no time, and a series on it had QtCharts
+    // recompute its domain and geometry at every frame's new range (a sixteenth of the GUI
+    // thread with every signal plotted, for series holding no point).
     series->attachAxis(valueAxis(trace.quantity()));
     return series;
 }
