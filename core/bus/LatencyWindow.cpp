@@ -18,13 +18,24 @@ void LatencyWindow::add(double seconds)
     // the bus thread does once per transaction.
     if (m_samples.size() < m_capacity) {
         m_samples.append(seconds);
-    } else {
-        const double evicted = m_samples[m_next];
-        m_sorted.erase(std::lower_bound(m_sorted.begin(), m_sorted.end(), evicted));
-        m_samples[m_next] = seconds;
-        m_next = (m_next + 1) % m_capacity;
+        m_sorted.insert(std::upper_bound(m_sorted.cbegin(), m_sorted.cend(), seconds), seconds);
+        return;
     }
-    m_sorted.insert(std::upper_bound(m_sorted.begin(), m_sorted.end(), seconds), seconds);
+    const double evicted = m_samples[m_next];
+    m_samples[m_next] = seconds;
+    m_next = (m_next + 1) % m_capacity;
+    // Full: the evicted sample's slot and the new one's are usually close (latencies vary
+    // little), so only what lies between them moves, by one, instead of the whole tail twice.
+    const auto first = m_sorted.begin();
+    const auto out = std::lower_bound(first, m_sorted.end(), evicted);
+    const auto in = std::upper_bound(first, m_sorted.end(), seconds);
+    if (in > out) {
+        std::move(out + 1, in, out);
+        *(in - 1) = seconds;
+    } else {
+        std::move_backward(in, out, out + 1);
+        *in = seconds;
+    }
 }
 
 void LatencyWindow::clear()

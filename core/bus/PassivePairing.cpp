@@ -218,10 +218,12 @@ PassivePairing::Outcome PassivePairing::takeFrame(const protocol::ParseEvent &ev
         return out;
     }
     out.unansweredInGroup = expireGroup(nowNs);
-    const auto inGroup = std::find_if(m_group.begin(), m_group.end(), [&f](const auto &t) {
+    // Const iterators: begin() on a list that holds nothing allocates one (Qt detaches a
+    // null list), and this runs for every frame heard.
+    const auto inGroup = std::find_if(m_group.cbegin(), m_group.cend(), [&f](const auto &t) {
         return t.id == f.id && t.command == f.command;
     });
-    if (direction == FrameDirection::Reply && inGroup != m_group.end()) {
+    if (direction == FrameDirection::Reply && inGroup != m_group.cend()) {
         out.role = Outcome::Role::Reply;
         out.request = *inGroup;
         out.latencyNs = nowNs - m_groupTimeNs;

@@ -2,6 +2,8 @@
 
 #include <protocol/CanRecordParser.h>
 
+#include <utility>
+
 namespace lk::recording {
 
 void ReplayStatistics::restart(protocol::Link link, int baud, qint64 timeNs)
@@ -58,7 +60,7 @@ void ReplayStatistics::take(const protocol::ParseEvent &event,
     }
     if (out.unanswered)
         m_collector.unanswered(*out.unanswered);
-    for (const protocol::Frame &f : out.unansweredInGroup)
+    for (const protocol::Frame &f : std::as_const(out.unansweredInGroup)) // no detach per frame
         m_collector.unanswered(f);
     if (out.role == bus::PassivePairing::Outcome::Role::Request)
         m_collector.request(event.frame);

@@ -4,7 +4,11 @@
 #include <bus/LinkTiming.h>
 #include <bus/TelemetrySample.h>
 
+#include <QtCore/QRandomGenerator>
 #include <QtTest/QTest>
+
+#include <algorithm>
+#include <cmath>
 
 using namespace lk;
 using namespace lk::bus;
@@ -27,6 +31,7 @@ private slots:
     void standardBauds();
     void latencyQuantiles();
     void latencyWindowIsBounded();
+    void latencyWindowKeepsItsLastSamplesSorted();
     void adaptiveMargin_data();
     void adaptiveMargin();
     void marginCoversTheSlowestPercent();
@@ -157,6 +162,30 @@ void tst_BusTiming::latencyWindowIsBounded()
     QCOMPARE(w.max(), 25.0);
     w.clear();
     QVERIFY(w.isEmpty());
+}
+
+void tst_BusTiming::latencyWindowKeepsItsLastSamplesSorted()
+{
+    // Full, the window moves only what lies between the evicted sample's place and the new
+    // one's: every order of the two (before, after, equal values, repeats) must leave the
+    // quantiles of a plain sort of the last samples.
+    constexpr int kCapacity = 16;
+    LatencyWindow w(kCapacity);
+    QRandomGenerator random(7);
+    QVector<double> added;
+    for (int i = 0; i < 3000; ++i) {
+        const double v = double(random.bounded(i % 3 == 0 ? 4 : 40)); // with many repeats
+        w.add(v);
+        added.append(v);
+        QVector<double> last = added.mid(std::max<qsizetype>(0, added.size() - kCapacity));
+        std::sort(last.begin(), last.end());
+        for (double q : {0.0, 0.1, 0.25, 0.5, 0.75, 0.95, 1.0}) {
+            const auto rank = std::max<qsizetype>(
+                0, std::min<qsizetype>(last.size() - 1,
+                                       qsizetype(std::ceil(q * double(last.size()))) - 1));
+            QCOMPARE(w.quantile(q), last.at(rank));
+        }
+    }
 }
 
 void tst_BusTiming::adaptiveMargin_data()
