@@ -18,8 +18,10 @@ void TrafficBacklog::append(const TrafficBatch &batch, std::optional<TrafficCoun
         else
             m_dropped.add(m_batches.first());
         m_rows -= m_batches.first().size();
-        m_batches.removeFirst();
+        TrafficBatch dropped = m_batches.takeFirst();
         m_counts.removeFirst();
+        if (m_dispose)
+            m_dispose(std::move(dropped));
     }
 }
 

@@ -5,6 +5,7 @@
 
 #include <QtCore/QList>
 
+#include <functional>
 #include <optional>
 
 namespace lk::bus {
@@ -21,6 +22,13 @@ public:
     /// The newest this many rows kept, in whole batches (0: no limit); from the next append.
     void setLimit(qsizetype limit) { m_limit = limit; }
     qsizetype limit() const { return m_limit; }
+    /// Where a dropped batch goes to be freed (none: freed here, in append). Its rows were
+    /// built long before they are dropped, out of every cache by then: freeing them is a
+    /// miss per byte array, which a caller on a busy thread may rather have done elsewhere.
+    void setDisposal(std::function<void(TrafficBatch &&)> dispose)
+    {
+        m_dispose = std::move(dispose);
+    }
 
     /// Keep `batch`, dropping older batches past the limit. `counts`, when given, are the
     /// batch's own (TrafficCounts::add of each row, taken while the rows were built): a dropped
@@ -47,6 +55,7 @@ private:
     QList<std::optional<TrafficCounts>> m_counts;
     qsizetype m_rows = 0; ///< the rows of m_batches
     TrafficCounts m_dropped;
+    std::function<void(TrafficBatch &&)> m_dispose;
 };
 
 } // namespace lk::bus

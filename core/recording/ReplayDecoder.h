@@ -12,6 +12,7 @@
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QObject>
+#include <QtCore/QThreadPool>
 
 #include <array>
 #include <memory>
@@ -149,6 +150,9 @@ private:
     bool m_statisticsHeld = false;   ///< a snapshot was due and not sent (Load all's rate)
     QElapsedTimer m_statisticsClock; ///< since the last snapshot sent during Load all
     bus::TrafficBacklog m_tail;      ///< the rows kept while m_keepTail
+    /// Frees the rows m_tail drops during Load all, off the thread that decodes (a thread
+    /// of its own, started with the first of them).
+    std::unique_ptr<QThreadPool> m_disposal;
 };
 
 } // namespace lk::recording

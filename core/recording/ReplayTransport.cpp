@@ -159,7 +159,8 @@ void ReplayTransport::emitRecord(const RecordEvent &record)
 {
     m_positionNs = qMax(m_positionNs, record.timeNs);
     if (record.kind == RecordEvent::Kind::Rx || record.kind == RecordEvent::Kind::Tx) {
-        emit chunkPlayed(record.bytes, record.kind == RecordEvent::Kind::Tx);
+        if (m_chunkHandler)
+            m_chunkHandler(record.bytes, record.kind == RecordEvent::Kind::Tx);
         emit bytesReceived(record.bytes);
     } else
         emit recordPlayed(record);

@@ -89,6 +89,29 @@ private slots:
         QCOMPARE(backlog.takeRows().size(), 50); // the table keeps its newest 10
     }
 
+    void droppedBatchesGoToTheDisposal()
+    {
+        TrafficBacklog backlog(10);
+        QList<double> disposedFirstTimes;
+        qsizetype disposedRows = 0;
+        backlog.setDisposal([&](TrafficBatch &&rows) {
+            disposedFirstTimes << rows.first().time;
+            disposedRows += rows.size();
+            rows = {};
+        });
+        for (int i = 0; i < 6; ++i)
+            backlog.append(batch(7, i * 7));
+        // The same four batches as kept without a disposal are dropped, in order, and counted.
+        QCOMPARE(disposedFirstTimes, (QList<double>{0, 7, 14, 21}));
+        QCOMPARE(disposedRows, qsizetype(28));
+        QCOMPARE(backlog.dropped().events, quint64(28));
+        QCOMPARE(backlog.rows(), qsizetype(14));
+        backlog.setDisposal({}); // freed here again
+        backlog.append(batch(7, 42));
+        QCOMPARE(disposedRows, qsizetype(28));
+        QCOMPARE(backlog.dropped().events, quint64(35));
+    }
+
     void noLimitKeepsEverything()
     {
         TrafficBacklog backlog;

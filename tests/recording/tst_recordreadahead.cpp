@@ -86,8 +86,8 @@ struct Played {
     QStringList chunks;
     void connectTo(ReplayTransport &replay)
     {
-        QObject::connect(&replay, &ReplayTransport::chunkPlayed,
-                         [this](const QByteArray &b, bool) { chunks << QString::fromLatin1(b); });
+        replay.setChunkHandler(
+            [this](const QByteArray &b, bool) { chunks << QString::fromLatin1(b); });
     }
 };
 
