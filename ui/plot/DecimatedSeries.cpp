@@ -38,6 +38,12 @@ void DecimatedSeries::add(double time, double value)
         }
         return;
     }
+    if (m_hasBefore && !m_beforeTaken) {
+        // Inputs ascend: no point before the window comes after this one. Appended now, it
+        // spares finish() a prepend, which moved the whole reduced series at every frame.
+        m_points.append(m_before);
+        m_beforeTaken = true;
+    }
     const int index = m_map(time);
     if (index != m_column.index) {
         flush(false);
@@ -99,8 +105,8 @@ QList<QPointF> DecimatedSeries::finish()
 {
     flush(true);
     m_column = Column{};
-    if (m_hasBefore) {
-        m_points.prepend(m_before);
+    if (m_hasBefore && !m_beforeTaken) {
+        m_points.prepend(m_before); // nothing inside the window: a list of at most one point
     }
     if (m_hasAfter) {
         m_points.append(m_after);

@@ -61,6 +61,7 @@ private:
     Column m_column;
     bool m_firstColumn = true;
     bool m_hasBefore = false, m_hasAfter = false;
+    bool m_beforeTaken = false; ///< m_before is in m_points already
     QPointF m_before, m_after;
     QList<QPointF> m_points;
 };
