@@ -13,9 +13,8 @@ LatencyWindow::LatencyWindow(int capacity) : m_capacity(std::max(1, capacity))
 
 void LatencyWindow::add(double seconds)
 {
-    // The sorted copy is kept up to date here (one erase, one insert: a memmove of at most
-    // the capacity) instead of sorting the window again for every timeout computed, which
-    // the bus thread does once per transaction.
+    // The sorted copy is kept up to date here instead of sorting the window again for every
+    // timeout computed, which the bus thread does once per transaction.
     if (m_samples.size() < m_capacity) {
         m_samples.append(seconds);
         m_sorted.insert(std::upper_bound(m_sorted.cbegin(), m_sorted.cend(), seconds), seconds);
@@ -24,6 +23,8 @@ void LatencyWindow::add(double seconds)
     const double evicted = m_samples[m_next];
     m_samples[m_next] = seconds;
     m_next = (m_next + 1) % m_capacity;
+    if (evicted == seconds)
+        return; // the sorted copy holds the same values
     // Full: the evicted sample's slot and the new one's are usually close (latencies vary
     // little), so only what lies between them moves, by one, instead of the whole tail twice.
     const auto first = m_sorted.begin();

@@ -25,9 +25,9 @@ bool ReplayDecoder::open(const QString &path, ReplayTransport::Options options, 
     const auto failed =
         connect(transport.get(), &transport::Transport::errorOccurred, this,
                 [&failure](const transport::TransportError &e) { failure = e.message; });
-    // Direct: a worker playing the transport (Load all) must decode on its own thread.
     transport->setChunkHandler(
         [this](const QByteArray &bytes, bool transmitted) { onBytes(bytes, transmitted); });
+    // Direct: a worker playing the transport (Load all) must decode on its own thread.
     connect(transport.get(), &ReplayTransport::recordPlayed, this, &ReplayDecoder::onRecord,
             Qt::DirectConnection);
     connect(transport.get(), &ReplayTransport::batchPlayed, this, &ReplayDecoder::handOnBatch,
@@ -93,8 +93,16 @@ void ReplayDecoder::beginLoadAll(qsizetype trafficRowsKept)
         m_disposal = std::make_unique<QThreadPool>();
         m_disposal->setMaxThreadCount(1);
     }
-    m_tail.setDisposal([pool = m_disposal.get()](bus::TrafficBatch &&rows) {
-        pool->start([rows = std::move(rows)]() mutable { rows = {}; });
+    m_tail.setDisposal([this](bus::TrafficBatch &&rows) {
+        if (m_disposalsQueued.load() >= kDisposalsQueued) {
+            rows = {}; // the disposal lags: freed here rather than queued without bound
+            return;
+        }
+        ++m_disposalsQueued;
+        m_disposal->start([this, rows = std::move(rows)]() mutable {
+            rows = {};
+            --m_disposalsQueued;
+        });
     });
     if (m_transport)
         m_transport->setReadAhead(true);

@@ -15,6 +15,7 @@
 #include <QtCore/QThreadPool>
 
 #include <array>
+#include <atomic>
 #include <memory>
 
 namespace lk::recording {
@@ -150,8 +151,13 @@ private:
     bool m_statisticsHeld = false;   ///< a snapshot was due and not sent (Load all's rate)
     QElapsedTimer m_statisticsClock; ///< since the last snapshot sent during Load all
     bus::TrafficBacklog m_tail;      ///< the rows kept while m_keepTail
+    /// Batches handed to m_disposal and not freed yet; past kDisposalsQueued the decoding
+    /// thread frees them itself, so that memory stays bounded if the disposal lags.
+    std::atomic<int> m_disposalsQueued{0};
+    static constexpr int kDisposalsQueued = 8;
     /// Frees the rows m_tail drops during Load all, off the thread that decodes (a thread
-    /// of its own, started with the first of them).
+    /// of its own, started with the first of them). Declared last: destroyed first, it waits
+    /// for its work, which counts in m_disposalsQueued.
     std::unique_ptr<QThreadPool> m_disposal;
 };
 

@@ -37,7 +37,8 @@ void ReplayStatistics::attach(protocol::FrameParser &parser,
 
 void ReplayStatistics::takeMultiTorque(const QVector<protocol::Frame> &torques, qint64 timeNs)
 {
-    for (const protocol::Frame &f : m_pairing.openGroup(torques, timeNs))
+    const QVector<protocol::Frame> silent = m_pairing.openGroup(torques, timeNs);
+    for (const protocol::Frame &f : silent) // const: an empty list is not given storage
         m_collector.unanswered(f);
     for (const protocol::Frame &f : torques)
         m_collector.request(f);
@@ -72,7 +73,8 @@ bus::ListenStatistics ReplayStatistics::snapshot(qint64 timeNs)
 {
     if (const std::optional<protocol::Frame> late = m_pairing.expire(timeNs))
         m_collector.unanswered(*late);
-    for (const protocol::Frame &f : m_pairing.expireGroup(timeNs))
+    const QVector<protocol::Frame> expired = m_pairing.expireGroup(timeNs);
+    for (const protocol::Frame &f : expired)
         m_collector.unanswered(f);
     m_lastSnapshotNs = timeNs;
     return m_collector.snapshot(static_cast<double>(timeNs - m_startNs) * 1e-9, m_baud,

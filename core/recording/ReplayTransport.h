@@ -70,11 +70,11 @@ public:
     /// while no thread is playing records (Load all's worker joined): stopping it under a
     /// reader waiting for its next record would end that reader's playing early.
     void setReadAhead(bool on);
-    /// What gets each chunk of bytes played (also emitted as bytesReceived): `transmitted`
-    /// when the recording tool sent them, which a reader that tells its own commands from
-    /// another master's needs. Called directly on the thread that plays: a queued or direct
-    /// signal per chunk cost a twelfth of Load all's decoding thread, for millions of chunks.
+    /// A chunk of bytes played: `transmitted` when the recording tool sent them.
     using ChunkHandler = std::function<void(const QByteArray &bytes, bool transmitted)>;
+    /// Who gets each chunk played (besides bytesReceived), called on the thread that plays:
+    /// a reader that tells its own commands from another master's needs `transmitted`. Not a
+    /// signal: one per chunk, for the millions of an hour, was a twelfth of Load all's thread.
     void setChunkHandler(ChunkHandler handler) { m_chunkHandler = std::move(handler); }
     /// Records are being played out (the chunk handler or a receiver of recordPlayed runs).
     bool isPlaying() const { return m_playing; }
