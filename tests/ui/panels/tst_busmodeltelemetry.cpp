@@ -29,8 +29,8 @@ void feed(BusModel &model, const QList<lk::bus::TelemetryBatch> &batches)
 lk::bus::TelemetryBatch randomBatch(QRandomGenerator &random, int samples)
 {
     static const TelemetryField kFields[] = {
-        TelemetryField::Temperature, TelemetryField::IqA,        TelemetryField::Speed,
-        TelemetryField::Encoder,     TelemetryField::Voltage,    TelemetryField::MultiTurn,
+        TelemetryField::Temperature, TelemetryField::IqA,           TelemetryField::Speed,
+        TelemetryField::Encoder,     TelemetryField::Voltage,       TelemetryField::MultiTurn,
         TelemetryField::SingleTurn,  TelemetryField::CommandedSpeed};
     lk::bus::TelemetryBatch batch;
     for (int i = 0; i < samples; ++i) {
