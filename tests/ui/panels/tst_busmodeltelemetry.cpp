@@ -16,6 +16,9 @@ constexpr int kDrives = 3;
 /// A model listening (drives appear as they reply), fed `batches` one after another.
 void feed(BusModel &model, const QList<lk::bus::TelemetryBatch> &batches)
 {
+    // The model's clock starts with it: a few ms on, every stamp it gives a field is above 0
+    // (what DriveRecord::updatedMs calls never), so that "stamped" can be compared.
+    QTest::qWait(5);
     bus::ConnectionStatus listening;
     listening.state = transport::Transport::State::Open;
     listening.canTransmit = false;
