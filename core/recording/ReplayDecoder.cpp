@@ -6,6 +6,8 @@
 #include <protocol/Reply.h>
 #include <protocol/Request.h>
 
+#include <QtCore/QThreadPool>
+
 #include <optional>
 #include <utility>
 

@@ -12,11 +12,12 @@
 
 #include <QtCore/QElapsedTimer>
 #include <QtCore/QObject>
-#include <QtCore/QThreadPool>
 
 #include <array>
 #include <atomic>
 #include <memory>
+
+class QThreadPool;
 
 namespace lk::recording {
 
