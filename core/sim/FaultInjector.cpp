@@ -44,6 +44,43 @@ void FaultInjector::injectNext(Fault fault, int count)
         m_oneShot[index(fault)] += count;
 }
 
+void FaultInjector::dropNextRepliesTo(quint8 command, int id, int count)
+{
+    if (count <= 0)
+        return;
+    for (AimedDrop &d : m_aimedDrops) {
+        if (d.command == command && d.id == id) {
+            d.count += count;
+            return;
+        }
+    }
+    m_aimedDrops.append({command, id, count});
+}
+
+int FaultInjector::pendingAimedDrops() const
+{
+    int n = 0;
+    for (const AimedDrop &d : m_aimedDrops)
+        n += d.count;
+    return n;
+}
+
+bool FaultInjector::firesAimedDrop(const QByteArray &reply)
+{
+    const auto command = static_cast<quint8>(reply[1]);
+    const auto id = static_cast<quint8>(reply[2]);
+    for (qsizetype i = 0; i < m_aimedDrops.size(); ++i) {
+        AimedDrop &d = m_aimedDrops[i];
+        if (d.command != command || (d.id != 0 && d.id != id))
+            continue;
+        if (--d.count == 0)
+            m_aimedDrops.removeAt(i);
+        ++m_count[index(Fault::DropReply)];
+        return true;
+    }
+    return false;
+}
+
 void FaultInjector::setSilenced(int id, bool silenced)
 {
     if (silenced)
@@ -56,6 +93,7 @@ void FaultInjector::clear()
 {
     m_probability.fill(0);
     m_oneShot.fill(0);
+    m_aimedDrops.clear();
     m_silenced.clear();
 }
 
@@ -65,7 +103,7 @@ bool FaultInjector::active() const
         if (m_probability[i] > 0 || m_oneShot[i] > 0)
             return true;
     }
-    return !m_silenced.isEmpty();
+    return !m_silenced.isEmpty() || !m_aimedDrops.isEmpty();
 }
 
 bool FaultInjector::fires(Fault fault)
@@ -89,7 +127,7 @@ bool FaultInjector::apply(QByteArray &reply, double &extraDelay)
 {
     if (reply.size() < protocol::kHeaderSize)
         return true;
-    if (fires(Fault::DropReply))
+    if (firesAimedDrop(reply) || fires(Fault::DropReply))
         return false;
     if (fires(Fault::WrongLength))
         shorten(reply);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QtCore/QByteArray>
+#include <QtCore/QList>
 #include <QtCore/QRandomGenerator>
 #include <QtCore/QSet>
 #include <QtCore/QString>
@@ -39,6 +40,12 @@ public:
     /// The next `count` replies get this fault for sure (adds to any pending count).
     void injectNext(Fault fault, int count = 1);
     int pending(Fault fault) const { return m_oneShot[index(fault)]; }
+    /// The next `count` replies to `command` from drive `id` (0: from any drive) are lost, whatever
+    /// else the bus answers in between. A test aims a drop at one request this way: a plain
+    /// injectNext() meets whichever reply comes first, and under load that order changes.
+    void dropNextRepliesTo(quint8 command, int id, int count = 1);
+    /// Aimed drops not yet spent, over every command and drive.
+    int pendingAimedDrops() const;
     void setExtraDelaySeconds(double seconds) { m_extraDelay = seconds; }
     double extraDelaySeconds() const { return m_extraDelay; }
 
@@ -79,11 +86,18 @@ private:
     void corrupt(QByteArray &reply);
     void shorten(QByteArray &reply);
     QByteArray garbage();
+    bool firesAimedDrop(const QByteArray &reply);
 
+    struct AimedDrop {
+        quint8 command;
+        int id;
+        int count;
+    };
     QRandomGenerator m_rng;
     std::array<double, kFaultKinds> m_probability{};
     std::array<int, kFaultKinds> m_oneShot{};
     std::array<int, kFaultKinds> m_count{};
+    QList<AimedDrop> m_aimedDrops;
     double m_extraDelay = 0.005;
     QSet<int> m_silenced;
     std::atomic<bool> m_disconnect{false};

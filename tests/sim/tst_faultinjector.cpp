@@ -19,6 +19,7 @@ private slots:
     void nextCountsArePending();
     void noFaultsLeavesReplyAlone();
     void probabilityOneAlwaysFires();
+    void aimedDropSkipsOtherReplies();
     void garbageNeverHoldsFrameHead();
     void disconnectFlag();
     void clearResets();
@@ -137,6 +138,36 @@ void tst_FaultInjector::probabilityOneAlwaysFires()
     QCOMPARE(f.injectedCount(Fault::DropReply), 10);
     f.resetCounts();
     QCOMPARE(f.injectedCount(Fault::DropReply), 0);
+}
+
+void tst_FaultInjector::aimedDropSkipsOtherReplies()
+{
+    FaultInjector f;
+    f.dropNextRepliesTo(0x30, 2, 2); // read_pid from drive 2, twice
+    f.dropNextRepliesTo(0x33, 0, 1); // read_accel from any drive, once
+    QVERIFY(f.active());
+    QCOMPARE(f.pendingAimedDrops(), 3);
+    // True when the reply came through, unchanged: an aimed drop touches nothing else.
+    const auto through = [&f](const char *text) {
+        QByteArray r = hex(text);
+        double delay = 0;
+        return f.apply(r, delay) && r == hex(text) && delay == 0;
+    };
+    QVERIFY(through("3E 9C 02 00 DC"));                      // another command from drive 2
+    QVERIFY(through("3E 30 01 06 6F 01 02 03 04 05 06 15")); // read_pid from drive 1
+    QVERIFY(!through("3E 30 02 06 70 01 02 03 04 05 06 15"));
+    QVERIFY(through("3E 9A 02 00 DA"));
+    QVERIFY(!through("3E 30 02 06 70 01 02 03 04 05 06 15"));
+    QVERIFY(through("3E 30 02 06 70 01 02 03 04 05 06 15")); // both spent
+    QVERIFY(!through("3E 33 05 04 78 20 4E 00 00 6E"));
+    QVERIFY(through("3E 33 05 04 78 20 4E 00 00 6E"));
+    QCOMPARE(f.pendingAimedDrops(), 0);
+    QCOMPARE(f.injectedCount(Fault::DropReply), 3);
+    QVERIFY(!f.active());
+
+    f.dropNextRepliesTo(0x30, 1, 1);
+    f.clear();
+    QCOMPARE(f.pendingAimedDrops(), 0);
 }
 
 void tst_FaultInjector::garbageNeverHoldsFrameHead()

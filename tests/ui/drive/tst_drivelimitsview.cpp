@@ -104,8 +104,10 @@ void tst_DriveLimitsView::nothingWritableBeforeRead()
 {
     SimRig rig(QStringLiteral("1:MF@2.35"));
     QVERIFY(rig.open());
-    rig.sim->withBus(
-        [](lk::sim::SimBus &bus) { bus.faults().injectNext(lk::sim::Fault::DropReply, 2); });
+    // The first 0x40's reply is lost twice (one retry); every other reply comes.
+    rig.sim->withBus([](lk::sim::SimBus &bus) {
+        bus.faults().dropNextRepliesTo(quint8(Command::ReadParam), 1, 2);
+    });
     auto view = openView(rig, 1);
     QVERIFY(view);
     QVERIFY(!view->readComplete());

@@ -80,12 +80,12 @@ QPushButton *button(TuningView &view, const char *name)
     return view.findChild<QPushButton *>(QLatin1String(name));
 }
 
-/// The next `count` replies of the simulated bus are lost (the drives still act on the
-/// requests). Reads are tried twice (BusConfig::retries = 1), so 2 makes the next read fail.
-void dropNextReplies(SimRig &rig, int count)
+/// Drive `id`'s next read_pid fails: both tries (BusConfig::retries = 1) lose their reply, the
+/// drive still acts on them, and every other reply on the bus is answered.
+void failNextPidRead(SimRig &rig, int id)
 {
-    rig.sim->withBus([count](lk::sim::SimBus &bus) {
-        bus.faults().injectNext(lk::sim::Fault::DropReply, count);
+    rig.sim->withBus([id](lk::sim::SimBus &bus) {
+        bus.faults().dropNextRepliesTo(quint8(Command::ReadPid), id, 2);
     });
 }
 
@@ -165,7 +165,7 @@ void tst_TuningView::failedReadWritesNothing()
     view.setSession(&rig.session);
     view.setConnected(true);
     view.show();
-    dropNextReplies(rig, 2); // both tries of read_pid; read_accel is answered
+    failNextPidRead(rig, 1); // read_accel is answered
     QVERIFY(selectAndWait(view, rig, 1));
     QTRY_VERIFY_WITH_TIMEOUT(!view.isBusy(), kWaitMs);
     QVERIFY(!drivePid(view));
@@ -205,7 +205,7 @@ void tst_TuningView::switchingDrivesCarriesNoEdits()
     QVERIFY(view->table()->isChanged(V23::SpeedKp));
 
     // Drive 2 does not answer read_pid: drive 1's edit must not become drive 2's.
-    dropNextReplies(rig, 2);
+    failNextPidRead(rig, 2);
     QVERIFY(selectAndWait(*view, rig, 2));
     QTRY_VERIFY_WITH_TIMEOUT(!view->isBusy(), kWaitMs);
     verifyNothingWritable(*view);
@@ -243,7 +243,7 @@ void tst_TuningView::reconnectionNeedsFreshRead()
     QVERIFY(!button(*view, "writeRam")->isEnabled());
 
     // The new connection's read fails: what was read on the old one does not count.
-    dropNextReplies(rig, 2);
+    failNextPidRead(rig, 1);
     QSignalSpy read(view.get(), &TuningView::parametersRead);
     view->setConnected(true);
     QVERIFY(read.wait(kWaitMs) || !read.isEmpty());
@@ -269,7 +269,7 @@ void tst_TuningView::loadNeedsCompleteRead()
     TuningView view;
     view.setSession(&rig.session);
     view.setConnected(true);
-    dropNextReplies(rig, 2);
+    failNextPidRead(rig, 3);
     QVERIFY(selectAndWait(view, rig, 3));
     QTRY_VERIFY_WITH_TIMEOUT(!view.isBusy(), kWaitMs);
     const QString error = view.loadParameters(path);
