@@ -101,6 +101,13 @@ void WireExchange::send(Pending p)
     const protocol::Request request = r;
     const QByteArray bytes = p.bytes;
     m_inflight = std::move(p);
+    // A reply cannot arrive sooner than its bytes and ours take on the wire after the write
+    // began. That bar is counted from here, not from m_sentNs below: a write that is slow to
+    // return (a preempted thread; the in-process simulator computing the reply within it) would
+    // otherwise make the drive's prompt answer look too soon, and it would be taken for the late
+    // reply to an earlier, timed-out identical request. Then this request timed out too, and so
+    // would every retry of the same command to that drive after it.
+    const qint64 writeStartNs = m_clock->nowNs();
     m_link.write(bytes);
     if (!m_inflight)
         return; // the write lost the link, which failed the request
@@ -112,7 +119,8 @@ void WireExchange::send(Pending p)
     m_sentNs = m_clock->nowNs();
     const int group = static_cast<int>(m_inflight->req.group.size());
     if (group == 0) {
-        m_matcher.expect(request, bytes, m_sentNs, m_sentNs + earliestReplyNs(request.command));
+        m_matcher.expect(request, bytes, m_sentNs,
+                         writeStartNs + earliestReplyNs(request.command));
     } else {
         // A multi-motor frame: its drives' replies are taken by takeGroupReply(), one after
         // the other on the bus, so the last may come the other replies' wire time later.

@@ -28,6 +28,7 @@ private slots:
     void lateLiftDecays();
     void quietPeriodHoldsTheRetry();
     void lateReplyInQuietPeriodIsCountedNotMatched();
+    void slowWriteKeepsPromptReplyItsOwn();
 };
 
 void tst_LateReplies::lateReplyWidensMargin()
@@ -176,6 +177,48 @@ void tst_LateReplies::lateReplyInQuietPeriodIsCountedNotMatched()
     QCOMPARE(st.perId.value(1).lateReplies, quint64(1));
     QCOMPARE(st.bus.unexpectedFrames, quint64(0));
     QCOMPARE(st.bus.replies, quint64(1));
+}
+
+void tst_LateReplies::slowWriteKeepsPromptReplyItsOwn()
+{
+    // Drive 1 answers read_state1 2 ms after each write; one reply is lost. Then a write takes
+    // 3 ms to return (a preempted thread, or the in-process simulator computing its reply inside
+    // write()), and the reply is there 1 ms after it returned: 4 ms after the write began, later
+    // than the 1.6 ms its bytes and ours need on the wire at 115200 baud. That reply is this
+    // request's, not the late answer to the lost one. (Measured from the write's return, it
+    // looked too soon, was taken for the late reply, and every retry after it timed out alike.)
+    auto slowWrite = std::make_shared<bool>(false);
+    WorkerRig *rigAtWrite = nullptr;
+    WorkerRig rig(
+        [slowWrite, &rigAtWrite](FakeTransport &t) {
+            t.drives().add(1, Series::MF);
+            FakeTransport *tp = &t;
+            t.setResponder([=, &rigAtWrite](const protocol::Frame &req, int index) {
+                if (index == 3)
+                    return QByteArray(); // lost
+                const QByteArray reply = tp->defaultReply(req);
+                if (*slowWrite)
+                    rigAtWrite->timers->clock()->advanceMs(3);
+                tp->after(*slowWrite ? 1 : 2, [tp, reply] { emit tp->bytesReceived(reply); });
+                return QByteArray();
+            });
+        },
+        quietTestConfig(), 115200, RigTime::Manual);
+    rigAtWrite = &rig;
+    const auto readState = [&rig] {
+        const quint64 t = rig.send(plainRequest(Command::ReadState1, 1), Priority::Operator, 0);
+        return rig.runUntil([&] { return rig.result(t); }, 10000) ? rig.result(t)->status
+                                                                   : RequestStatus::Error;
+    };
+    for (int i = 0; i < 3; ++i)
+        QCOMPARE(readState(), RequestStatus::Ok);
+    QCOMPARE(readState(), RequestStatus::Timeout);
+    *slowWrite = true;
+    for (int i = 0; i < 3; ++i)
+        QCOMPARE(readState(), RequestStatus::Ok);
+    const BusStatistics st = rig.worker->statisticsSnapshot();
+    QCOMPARE(st.bus.lateReplies, quint64(0));
+    QCOMPARE(st.bus.replies, quint64(6));
 }
 
 QTEST_GUILESS_MAIN(tst_LateReplies)
