@@ -24,6 +24,8 @@
 
 #include <text/VerdictText.h>
 
+#include <system/LocalTimeZone.h>
+
 #include <QtCore/QCoreApplication>
 #include <QtCore/QLoggingCategory>
 
@@ -31,6 +33,7 @@
 
 int main(int argc, char *argv[])
 {
+    lk::system::LocalTimeZone::readOnce(); // before any thread: Qt's CAN plugins stamp frames
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("lkctl"));
     QCoreApplication::setApplicationVersion(QStringLiteral(LK_VERSION));

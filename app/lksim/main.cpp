@@ -14,6 +14,8 @@
 #include <sim/SimBusSpec.h>
 #include <sim/SimParamsSeed.h>
 
+#include <system/LocalTimeZone.h>
+
 #include <QtCore/QCommandLineParser>
 #include <QtCore/QCoreApplication>
 
@@ -140,6 +142,7 @@ bool isLkBaud(int baud)
 
 int main(int argc, char *argv[])
 {
+    lk::system::LocalTimeZone::readOnce(); // before any thread: Qt's CAN plugins stamp frames
     QCoreApplication app(argc, argv);
     QCoreApplication::setApplicationName(QStringLiteral("lksim"));
     QCoreApplication::setApplicationVersion(QStringLiteral(LK_VERSION));

@@ -19,6 +19,7 @@
 
 #include <motor/SeriesLimits.h>
 #include <sim/SimBus.h>
+#include <system/LocalTimeZone.h>
 #include <system/LogFile.h>
 #include <system/SignalWatcher.h>
 #include <transport/CanTransport.h>
@@ -317,6 +318,7 @@ int runStudio(const lk::ui::StartupOptions &options)
 
 int main(int argc, char *argv[])
 {
+    lk::system::LocalTimeZone::readOnce(); // before any thread: Qt's CAN plugins stamp frames
     if (wantsTextOnly(argc, argv)) {
         QCoreApplication app(argc, argv);
         setNames();
