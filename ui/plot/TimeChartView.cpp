@@ -4,7 +4,9 @@
 #include <QtCharts/QValueAxis>
 #include <QtGui/QMouseEvent>
 #include <QtGui/QPainter>
+#include <QtGui/QRegion>
 #include <QtGui/QWheelEvent>
+#include <QtWidgets/QGraphicsLayout>
 #include <QtWidgets/QGraphicsScene>
 #include <QtWidgets/QRubberBand>
 
@@ -41,6 +43,10 @@ TimeChartView::TimeChartView(QWidget *parent) : QChartView(parent)
     // without this, each frame also filled the viewport's own background and the window's
     // behind it first (a seventh of the GUI thread with every signal plotted).
     viewport()->setAttribute(Qt::WA_OpaquePaintEvent);
+    // Every item paints inside its bounds, lines aliased: the 2 pixels QGraphicsView adds around
+    // each changed area for antialiasing only brought the value axis's labels beside the plot
+    // area into every frame's repaint (8 % of the GUI thread with every signal plotted).
+    setOptimizationFlag(QGraphicsView::DontAdjustForAntialiasing);
     applyPalette();
 }
 
@@ -64,6 +70,33 @@ void TimeChartView::applyPalette()
         axis->setGridLineColor(mix(base, text, kGridShare));
         axis->setMinorGridLineColor(mix(base, text, kGridShare / 2));
     }
+}
+
+QRectF TimeChartView::chartBackgroundInScene() const
+{
+    const QChart *c = chart();
+    // Only a square, opaque, shadowless background covers all of its rectangle.
+    if (!c || !c->layout() || c->backgroundRoundness() > 0 || c->isDropShadowEnabled() ||
+        !c->isBackgroundVisible() || c->backgroundBrush().style() != Qt::SolidPattern ||
+        !c->backgroundBrush().isOpaque())
+        return {};
+    qreal left = 0, top = 0, right = 0, bottom = 0;
+    c->layout()->getContentsMargins(&left, &top, &right, &bottom);
+    return c->mapRectToScene(c->rect().adjusted(left, top, -right, -bottom));
+}
+
+void TimeChartView::drawBackground(QPainter *painter, const QRectF &rect)
+{
+    // The chart's opaque background (square corners) paints what lies within it: the view's
+    // own fill underneath was a second fill of the plot area at every frame. Only the band
+    // around it is the view's.
+    const QRectF covered = chartBackgroundInScene();
+    if (covered.contains(rect))
+        return;
+    QRegion band(rect.toAlignedRect());
+    band -= covered.toAlignedRect().adjusted(1, 1, -1, -1); // its edge pixels may be partial
+    for (const QRect &r : band)
+        painter->fillRect(r, backgroundBrush());
 }
 
 void TimeChartView::changeEvent(QEvent *event)

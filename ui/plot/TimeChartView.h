@@ -44,6 +44,7 @@ protected:
     void leaveEvent(QEvent *event) override;
     void changeEvent(QEvent *event) override;
     void drawForeground(QPainter *painter, const QRectF &rect) override;
+    void drawBackground(QPainter *painter, const QRectF &rect) override;
 
 private:
     enum class Drag { None, Pan, Select };
@@ -52,6 +53,7 @@ private:
     QRect cursorStrip(std::optional<double> time) const;
     double secondsPerPixel() const;
     QRectF plotAreaInView() const;
+    QRectF chartBackgroundInScene() const;
 
     Drag m_drag = Drag::None;
     double m_lastX = 0;
