@@ -21,7 +21,9 @@ namespace lk::bus {
 struct PollPlan {
     QVector<int> ids;
     /// read_* commands only (anything else is dropped from the plan by the worker).
-    /// read_state3 is skipped for IDs known to be MS (no phase currents there).
+    /// read_state3 is skipped for IDs known to be MS (no phase currents there), and for a
+    /// drive of unknown series once it has left it unanswered while answering the others
+    /// (UnansweredPolls).
     QVector<protocol::Command> commands = standardCommands();
     /// Full cycles (every ID x command) per second; 0 = as fast as the bus allows.
     double rateHz = 0;

@@ -1,5 +1,9 @@
 #include "PollRunner.h"
 
+#include "BusLog.h"
+
+#include <protocol/Command.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -48,6 +52,23 @@ void PollRunner::setSuspended(bool suspended)
     emit pollingChanged(!suspended);
 }
 
+void PollRunner::noteAnswer(const RequestResult &res)
+{
+    // Only a reply or its absence says something about the drive; a closed link says nothing.
+    if (res.status != RequestStatus::Ok && res.status != RequestStatus::Timeout)
+        return;
+    const int id = res.request.id;
+    const protocol::Command command = res.request.command;
+    if (!m_poller.noteAnswer(id, command, res.ok()))
+        return;
+    qCInfo(lcBus,
+           "drive %d answers its other polls but left %s (0x%02X) unanswered %d times in a row: "
+           "not polled any more on this connection (a series without it, e.g. 0x9D on MS, while "
+           "the drive's series is not known)",
+           id, qPrintable(protocol::CommandTable::name(command)), unsigned(command),
+           UnansweredPolls::kMisses);
+}
+
 std::optional<PendingRequest> PollRunner::next(double now)
 {
     if (!m_poller.hasWork())
@@ -62,6 +83,7 @@ std::optional<PendingRequest> PollRunner::next(double now)
         p.req.origin = RequestOrigin::Poll;
         p.done = [this](const RequestResult &res) {
             m_poller.completed(res.request.id, res.request.command);
+            noteAnswer(res);
             m_ended();
         };
         if (!m_poller.lastWasWatch()) { // a watch poll answers no round of the plan

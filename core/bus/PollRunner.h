@@ -47,6 +47,8 @@ signals:
     void pollingChanged(bool active);
 
 private:
+    void noteAnswer(const RequestResult &res);
+
     PollScheduler m_poller;
     std::function<void()> m_ended;
     bool m_suspended = false;

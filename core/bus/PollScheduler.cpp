@@ -160,6 +160,7 @@ void PollScheduler::clear()
     m_plan.commands.clear();
     m_main = Ring{};
     m_others = Ring{};
+    m_unanswered.clear(); // the next plan may meet other drives at those IDs
 }
 
 bool PollScheduler::isActive() const
@@ -174,6 +175,8 @@ bool PollScheduler::eligible(const Slot &slot) const
 
 bool PollScheduler::skipped(const Slot &slot) const
 {
+    if (m_unanswered.isMuted(slot.id, slot.command))
+        return true;
     if (!m_series)
         return false;
     const std::optional<protocol::Series> s = m_series(slot.id);

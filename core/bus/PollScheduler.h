@@ -4,6 +4,7 @@
 #include "LinkTiming.h"
 
 #include "PollPlan.h"
+#include "UnansweredPolls.h"
 
 #include <protocol/Request.h>
 #include <protocol/Series.h>
@@ -52,6 +53,17 @@ public:
     double nextDueTime(double now) const;
     /// The poll for (id, command) ended (any status); its slot may be handed out again.
     void completed(int id, protocol::Command command);
+    /// The drive answered that poll, or it timed out: a command some series lack, left
+    /// unanswered while the drive answers its other polls, is polled no more (UnansweredPolls).
+    /// True when this result stopped it. clear() polls it again.
+    bool noteAnswer(int id, protocol::Command command, bool answered)
+    {
+        return m_unanswered.noteResult(id, command, answered);
+    }
+    bool isMuted(int id, protocol::Command command) const
+    {
+        return m_unanswered.isMuted(id, command);
+    }
     int outstanding() const;
     /// The round the poll last handed out by next() belongs to (after setPlan(): the plan's
     /// first round): 1 for the first round of the first plan, +1 for every new round and
@@ -107,6 +119,7 @@ private:
 
     PollPlan m_plan;
     SeriesLookup m_series;
+    UnansweredPolls m_unanswered;
     Ring m_main;
     Ring m_others;
     Ring m_watch;                ///< read_state2 of each watched drive; no rounds, no rate

@@ -2,6 +2,7 @@
 
 #include <bus/BusSession.h>
 #include <bus/LinkTiming.h>
+#include <bus/UnansweredPolls.h>
 #include <protocol/CanLayout.h>
 #include <protocol/CanRecord.h>
 #include <protocol/RequestBuilder.h>
@@ -75,6 +76,7 @@ private slots:
     void scanTellsGenerationsWithoutModelRead();
     void userIdentityDecidesAndIsKept();
     void pollingDecodesBothGenerations();
+    void unknownSeriesMsIsNotAskedForPhaseCurrentsForever();
     void v236SpeedNeedsItsTorqueLimit();
     void emergencyStopReachesEveryIdOnCan();
     void statisticsUseCanTiming();
@@ -172,6 +174,36 @@ void tst_BusCan::pollingDecodesBothGenerations()
     }
     QVERIFY2(v1 > 5 && v1 < 60, qPrintable(QString::number(v1)));
     QVERIFY2(v2 > 5 && v2 < 60, qPrintable(QString::number(v2)));
+    session.stopPolling();
+}
+
+void tst_BusCan::unknownSeriesMsIsNotAskedForPhaseCurrentsForever()
+{
+    // A CAN drive has no model read: until the user chooses its series, an MS (no 0x9D) is
+    // asked for phase currents with the rest. It answers everything else, so after
+    // UnansweredPolls::kMisses timeouts in a row 0x9D is polled no more: not tens of
+    // timeouts a second, each with the quiet after it, for as long as the plots run.
+    CanSim sim;
+    sim.spec = QStringLiteral("1:MS");
+    BusSession session;
+    QSignalSpy telemetry(&session, &BusSession::telemetryReceived);
+    QSignalSpy stats(&session, &BusSession::statisticsUpdated);
+    session.open(sim.factory(), 1000000);
+    PollPlan p = PollPlan::standard({1});
+    p.commands = {Command::ReadState1, Command::ReadState2, Command::ReadState3};
+    session.startPolling(p);
+    QTRY_VERIFY_WITH_TIMEOUT(countSamples(telemetry, 1, TelemetryField::Speed) >= 200, 30000);
+    const auto timeouts = [&] {
+        stats.clear();
+        return stats.wait(5000) ? stats.last().at(0).value<BusStatistics>().bus.timeouts
+                                : quint64(999);
+    };
+    QCOMPARE(timeouts(), quint64(lk::bus::UnansweredPolls::kMisses));
+    const int before = countSamples(telemetry, 1, TelemetryField::Speed);
+    QTRY_VERIFY_WITH_TIMEOUT(countSamples(telemetry, 1, TelemetryField::Speed) >= before + 200,
+                             30000);
+    QCOMPARE(timeouts(), quint64(lk::bus::UnansweredPolls::kMisses)); // and no more since
+    QCOMPARE(countSamples(telemetry, 1, TelemetryField::PhaseCurrents), 0);
     session.stopPolling();
 }
 
