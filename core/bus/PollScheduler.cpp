@@ -286,6 +286,15 @@ void PollScheduler::completed(int id, Command command)
     }
 }
 
+bool PollScheduler::noteAnswer(int id, Command command, bool answered)
+{
+    // A drive of known series is asked only what its series answers: a timeout there is a
+    // fault to show, never a series to learn.
+    if (m_series && m_series(id))
+        return false;
+    return m_unanswered.noteResult(id, command, answered);
+}
+
 int PollScheduler::outstanding() const
 {
     int n = 0;

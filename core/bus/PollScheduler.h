@@ -54,12 +54,9 @@ public:
     /// The poll for (id, command) ended (any status); its slot may be handed out again.
     void completed(int id, protocol::Command command);
     /// The drive answered that poll, or it timed out: a command some series lack, left
-    /// unanswered while the drive answers its other polls, is polled no more (UnansweredPolls).
-    /// True when this result stopped it. clear() polls it again.
-    bool noteAnswer(int id, protocol::Command command, bool answered)
-    {
-        return m_unanswered.noteResult(id, command, answered);
-    }
+    /// unanswered by a drive of unknown series while it answers its other polls, is polled no
+    /// more (UnansweredPolls). True when this result stopped it. clear() polls it again.
+    bool noteAnswer(int id, protocol::Command command, bool answered);
     bool isMuted(int id, protocol::Command command) const
     {
         return m_unanswered.isMuted(id, command);

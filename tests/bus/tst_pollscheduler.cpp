@@ -34,6 +34,7 @@ private slots:
     void roundRobin();
     void neverHandsOutAnOutstandingSlot();
     void skipsCommandsTheSeriesLacks();
+    void unknownSeriesLearnsWhatItLacks();
     void allSkippedDoesNotSpin();
     void rateLimit();
     void numbersRounds();
@@ -102,6 +103,42 @@ void tst_PollScheduler::skipsCommandsTheSeriesLacks()
     QVERIFY(!got.contains(qMakePair(Command::ReadState3, 2)));
     QVERIFY(got.contains(qMakePair(Command::ReadState3, 1)));
     QVERIFY(got.contains(qMakePair(Command::ReadState2, 2)));
+}
+
+void tst_PollScheduler::unknownSeriesLearnsWhatItLacks()
+{
+    // Drive 1's series is unknown, drive 2 is a known MF. Both leave 0x9D unanswered while
+    // answering 0x9C: drive 1 is taken to be of a series without it and asked no more; drive
+    // 2's series answers it, so its timeouts stay what they are (a fault to show), and it is
+    // still asked. clear() forgets what was learnt.
+    PollScheduler s;
+    s.setSeriesLookup([](int id) -> std::optional<Series> {
+        if (id == 2)
+            return Series::MF;
+        return std::nullopt;
+    });
+    s.setPlan(plan({1, 2}, {Command::ReadState2, Command::ReadState3}), 0);
+    int mutedAt = 0;
+    QVector<QPair<Command, int>> after;
+    for (int i = 0; i < 60; ++i) {
+        const auto r = s.next(0);
+        QVERIFY(r);
+        s.completed(r->id, r->command);
+        if (mutedAt > 0)
+            after.append(key(r));
+        if (s.noteAnswer(r->id, r->command, r->command != Command::ReadState3)) {
+            QCOMPARE(int(r->id), 1);
+            mutedAt = i;
+        }
+    }
+    QVERIFY(mutedAt > 0);
+    QVERIFY(s.isMuted(1, Command::ReadState3));
+    QVERIFY(!s.isMuted(2, Command::ReadState3));
+    QVERIFY(!after.contains(qMakePair(Command::ReadState3, 1)));
+    QVERIFY(after.contains(qMakePair(Command::ReadState3, 2)));
+    QVERIFY(after.contains(qMakePair(Command::ReadState2, 1)));
+    s.clear();
+    QVERIFY(!s.isMuted(1, Command::ReadState3));
 }
 
 void tst_PollScheduler::allSkippedDoesNotSpin()
