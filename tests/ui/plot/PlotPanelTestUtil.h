@@ -4,6 +4,7 @@
 
 #include <bus/TelemetrySample.h>
 #include <plot/PlotPanel.h>
+#include <plot/TelemetryStore.h>
 
 #include <QtTest/QTest>
 
@@ -43,5 +44,17 @@ inline void showPanel(ui::PlotPanel &panel)
     panel.show();
     QVERIFY(QTest::qWaitForWindowExposed(&panel));
 }
+
+/// A shown panel of drive 1 with 20 s of its samples.
+struct ShownPanel {
+    ui::TelemetryStore store;
+    ui::PlotPanel panel{&store};
+    ShownPanel()
+    {
+        panel.setDrives({1});
+        showPanel(panel);
+        store.append(batch(1, 0, 201, 0.1));
+    }
+};
 
 } // namespace lk::plottest

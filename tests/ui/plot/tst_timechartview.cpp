@@ -12,9 +12,8 @@
 #include <QtGui/QImage>
 #include <QtTest/QTest>
 
-using lk::ui::PlotPanel;
+using lk::plottest::ShownPanel;
 using lk::ui::StripChart;
-using lk::ui::TelemetryStore;
 
 class tst_TimeChartView : public QObject {
     Q_OBJECT
@@ -24,18 +23,6 @@ private slots:
 };
 
 namespace {
-
-/// A shown panel of drive 1 with 20 s of its samples.
-struct ShownPanel {
-    TelemetryStore store;
-    PlotPanel panel{&store};
-    ShownPanel()
-    {
-        panel.setDrives({1});
-        lk::plottest::showPanel(panel);
-        store.append(lk::plottest::batch(1, 0, 201, 0.1));
-    }
-};
 
 /// The chart rendered over an image filled with a colour no theme uses.
 QImage renderOverSentinel(StripChart *chart, QColor sentinel)

@@ -15,26 +15,9 @@
 
 #include <cmath>
 
-using lk::ui::PlotPanel;
+using lk::plottest::ShownPanel;
 using lk::ui::StripChart;
-using lk::ui::TelemetryStore;
 using lk::ui::TimeGridLayer;
-
-namespace {
-
-/// A shown panel of drive 1 with 20 s of its samples.
-struct ShownPanel {
-    TelemetryStore store;
-    PlotPanel panel{&store};
-    ShownPanel()
-    {
-        panel.setDrives({1});
-        lk::plottest::showPanel(panel);
-        store.append(lk::plottest::batch(1, 0, 201, 0.1));
-    }
-};
-
-} // namespace
 
 class tst_TimeGridLayer : public QObject {
     Q_OBJECT
