@@ -119,8 +119,7 @@ void WireExchange::send(Pending p)
     m_sentNs = m_clock->nowNs();
     const int group = static_cast<int>(m_inflight->req.group.size());
     if (group == 0) {
-        m_matcher.expect(request, bytes, m_sentNs,
-                         writeStartNs + earliestReplyNs(request.command));
+        m_matcher.expect(request, bytes, m_sentNs, writeStartNs + earliestReplyNs(request.command));
     } else {
         // A multi-motor frame: its drives' replies are taken by takeGroupReply(), one after
         // the other on the bus, so the last may come the other replies' wire time later.

@@ -208,7 +208,7 @@ void tst_LateReplies::slowWriteKeepsPromptReplyItsOwn()
     const auto readState = [&rig] {
         const quint64 t = rig.send(plainRequest(Command::ReadState1, 1), Priority::Operator, 0);
         return rig.runUntil([&] { return rig.result(t); }, 10000) ? rig.result(t)->status
-                                                                   : RequestStatus::Error;
+                                                                  : RequestStatus::Error;
     };
     for (int i = 0; i < 3; ++i)
         QCOMPARE(readState(), RequestStatus::Ok);
