@@ -1871,10 +1871,6 @@ Fit quality %5 (%6 samples)</source>
         <translation>以读写方式重新打开端口并成为总线主站（会先询问）</translation>
     </message>
     <message>
-        <source>Listen-only: this tool transmits nothing (%1)</source>
-        <translation>仅监听：本工具不发送任何内容（%1）</translation>
-    </message>
-    <message>
         <source>RS485</source>
         <translation>RS485</translation>
     </message>
@@ -3656,6 +3652,10 @@ not read</source>
         <source>no acknowledgement: no drive powered, or another bit rate</source>
         <translation>无应答：没有驱动上电，或比特率不同</translation>
     </message>
+    <message>
+        <source>Listen-only: this tool transmits nothing (%1)</source>
+        <translation>仅监听：本工具不发送任何内容（%1）</translation>
+    </message>
 </context>
 <context>
     <name>lk::ui::FrequencyResponseView</name>
@@ -4685,6 +4685,10 @@ not read</source>
     <message>
         <source>Parameters</source>
         <translation>参数</translation>
+    </message>
+    <message>
+        <source>Emergency stop</source>
+        <translation>急停</translation>
     </message>
 </context>
 <context>

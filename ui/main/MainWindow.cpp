@@ -186,12 +186,22 @@ void MainWindow::buildToolbar()
     bar->setObjectName(QStringLiteral("connectionToolbar"));
     bar->setMovable(false);
     bar->setFloatable(false);
-    bar->toggleViewAction()->setEnabled(false); // the emergency stop must never be hidden
+    bar->toggleViewAction()->setEnabled(false);
     m_connectionBar = new ConnectionBar(bar);
-    m_stop = new EmergencyStopButton(bar);
     bar->addWidget(m_connectionBar);
-    bar->addWidget(m_stop);
     addToolBar(Qt::TopToolBarArea, bar);
+    // The stop button has a toolbar of its own: a toolbar too narrow for its widgets hides the
+    // last ones behind an arrow, and on CAN (plugin, interface, bit rate) at 1366 pixels the
+    // stop was the one hidden. Alone in its bar it is that bar's first item, which a toolbar
+    // never hides, and the row squeezes the connection bar first.
+    auto *stopBar = new QToolBar(tr("Emergency stop"), this);
+    stopBar->setObjectName(QStringLiteral("emergencyStopToolbar"));
+    stopBar->setMovable(false);
+    stopBar->setFloatable(false);
+    stopBar->toggleViewAction()->setEnabled(false); // the emergency stop must never be hidden
+    m_stop = new EmergencyStopButton(stopBar);
+    stopBar->addWidget(m_stop);
+    addToolBar(Qt::TopToolBarArea, stopBar);
 
     // Esc anywhere (dialogs and pop-ups included) is the stop control's own application
     // filter; the button and the menu call the same stop.

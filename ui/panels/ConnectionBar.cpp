@@ -1,5 +1,6 @@
 #include "ConnectionBar.h"
 
+#include "ElidedLabel.h"
 #include "Format.h"
 #include "PortAccessDialog.h"
 #include "StatusColors.h"
@@ -69,7 +70,9 @@ ConnectionBar::ConnectionBar(QWidget *parent)
     m_autoReconnect->setObjectName(QStringLiteral("autoReconnect"));
     m_autoReconnect->setChecked(true);
     m_autoReconnect->setToolTip(tr("Reopen the port by itself when the adapter comes back"));
-    m_state = new QLabel(this);
+    m_stateDot = new QLabel(this);
+    m_stateDot->setObjectName(QStringLiteral("connectionStateDot"));
+    m_state = new ElidedLabel(this);
     m_state->setObjectName(QStringLiteral("connectionState"));
     m_accessHelp = new QToolButton(this);
     m_accessHelp->setObjectName(QStringLiteral("accessHelp"));
@@ -91,7 +94,10 @@ ConnectionBar::ConnectionBar(QWidget *parent)
     layout->addWidget(m_autoReconnect);
     layout->addWidget(m_accessHelp);
     layout->addWidget(m_takeOver);
-    layout->addWidget(m_state, 1);
+    layout->addWidget(m_stateDot);
+    // No stretch: the state takes the width of its text while there is room, and gives it up
+    // before any control does when there is not.
+    layout->addWidget(m_state);
 
     m_refresh = new QTimer(this);
     m_refresh->setInterval(kRefreshMs);
@@ -454,9 +460,9 @@ void ConnectionBar::updateState()
     if (m_status.isOpen() && Format::canConditionIsFault(m_canCondition))
         role = StatusColors::Role::Warning; // open, but the bus does not carry frames well
     const QString color = StatusColors::text(role, StatusColors::current()).name();
-    m_state->setText(QStringLiteral("<span style=\"color:%1\">\u25cf</span> %2")
-                         .arg(color, stateText().toHtmlEscaped()));
-    m_state->setToolTip(
+    m_stateDot->setText(QStringLiteral("<span style=\"color:%1\">\u25cf</span>").arg(color));
+    m_state->setFullText(stateText());
+    m_state->setDetail(
         m_canMessage.isEmpty()
             ? Format::connectionDetail(m_status)
             : QStringLiteral("%1\n%2").arg(Format::connectionDetail(m_status), m_canMessage));
@@ -464,15 +470,7 @@ void ConnectionBar::updateState()
 
 QString ConnectionBar::stateText() const
 {
-    // Listening is said first and plainly: nothing this tool does reaches the bus.
-    QString text =
-        m_status.isOpen() && !m_status.canTransmit
-            ? tr("Listen-only: this tool transmits nothing (%1)").arg(m_status.description)
-            : Format::connectionState(m_status);
-    // The CAN bus's condition belongs to the open link: said beside it, never "link lost".
-    if (m_status.isOpen() && m_canCondition != transport::CanBusCondition::Good)
-        text += QStringLiteral(" \u2013 ") + Format::canCondition(m_canCondition);
-    return text;
+    return Format::linkState(m_status, m_canCondition);
 }
 
 void ConnectionBar::changeEvent(QEvent *event)

@@ -21,6 +21,8 @@ class QToolButton;
 
 namespace lk::ui {
 
+class ElidedLabel;
+
 /// One serial port as the connection bar lists it.
 struct PortEntry {
     QString name;     ///< "ttyUSB0"
@@ -126,7 +128,8 @@ private:
     QCheckBox *m_autoReconnect = nullptr;
     QCheckBox *m_listenOnly = nullptr;
     QPushButton *m_takeOver = nullptr;
-    QLabel *m_state = nullptr;
+    QLabel *m_stateDot = nullptr;   ///< the state's colour, always shown
+    ElidedLabel *m_state = nullptr; ///< gives up width first; the status bar says it whole
     QToolButton *m_accessHelp = nullptr;
     QString m_deniedPort; ///< the port refused for lack of permission; empty: none
     QTimer *m_refresh = nullptr;

@@ -75,6 +75,17 @@ QString Format::connectionState(const bus::ConnectionStatus &status)
     return tr("Not connected");
 }
 
+QString Format::linkState(const bus::ConnectionStatus &status, transport::CanBusCondition condition)
+{
+    QString text = status.isOpen() && !status.canTransmit
+                       ? tr("Listen-only: this tool transmits nothing (%1)").arg(status.description)
+                       : connectionState(status);
+    // The CAN bus's condition belongs to the open link: said beside it, never "link lost".
+    if (status.isOpen() && condition != transport::CanBusCondition::Good)
+        text += QStringLiteral(" \u2013 ") + canCondition(condition);
+    return text;
+}
+
 QString Format::connectionDetail(const bus::ConnectionStatus &status)
 {
     QString text = status.description.isEmpty()

@@ -37,6 +37,11 @@ public:
     /// "Connected: /dev/ttyUSB0 @ 115200", "Disconnected", "Not connected" (short: the
     /// reason goes in a tooltip, see connectionDetail()).
     static QString connectionState(const bus::ConnectionStatus &status);
+    /// What the link is doing, in full: connectionState(), or the listen-only sentence (said
+    /// first: nothing this tool does reaches the bus), then the CAN bus's condition when the
+    /// open link has one. The connection bar and the status bar both say this.
+    static QString linkState(const bus::ConnectionStatus &status,
+                             transport::CanBusCondition condition);
     /// The link and, when it is down, why.
     static QString connectionDetail(const bus::ConnectionStatus &status);
     /// `text` as a sentence: capital first letter, final full stop.

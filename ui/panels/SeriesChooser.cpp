@@ -4,7 +4,7 @@
 
 #include <QtWidgets/QComboBox>
 #include <QtWidgets/QDoubleSpinBox>
-#include <QtWidgets/QHBoxLayout>
+#include <QtWidgets/QGridLayout>
 #include <QtWidgets/QLabel>
 
 namespace lk::ui {
@@ -43,15 +43,19 @@ SeriesChooser::SeriesChooser(BusModel *model, QWidget *parent)
                                 "most drives' generation. Choose it where they do not (a V2.36 "
                                 "drive that answers on 0x140+ID); values and the commands "
                                 "offered follow it. Remembered for this port and ID."));
-    auto *layout = new QHBoxLayout(this);
+    // One choice a row: side by side, the three on CAN made the bus panel (and with it the
+    // window's left dock) some 630 pixels wide, and every view beside it scrolled sideways on
+    // a 1366-pixel screen.
+    auto *layout = new QGridLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_label);
-    layout->addWidget(m_combo);
-    layout->addWidget(m_generationLabel);
-    layout->addWidget(m_generation);
-    layout->addWidget(m_ratioLabel);
-    layout->addWidget(m_ratio);
-    layout->addStretch(1);
+    layout->setVerticalSpacing(2);
+    layout->addWidget(m_label, 0, 0);
+    layout->addWidget(m_combo, 0, 1);
+    layout->addWidget(m_generationLabel, 1, 0);
+    layout->addWidget(m_generation, 1, 1);
+    layout->addWidget(m_ratioLabel, 2, 0);
+    layout->addWidget(m_ratio, 2, 1);
+    layout->setColumnStretch(2, 1);
     connect(m_generation, qOverload<int>(&QComboBox::activated), this,
             &SeriesChooser::onGenerationActivated);
     connect(m_combo, qOverload<int>(&QComboBox::activated), this, &SeriesChooser::onActivated);

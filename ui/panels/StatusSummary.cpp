@@ -1,6 +1,7 @@
 #include "StatusSummary.h"
 
 #include "BusModel.h"
+#include "ElidedLabel.h"
 #include "Format.h"
 
 #include <QtWidgets/QHBoxLayout>
@@ -10,7 +11,7 @@ namespace lk::ui {
 
 StatusSummary::StatusSummary(BusModel *model, QWidget *parent)
     : QWidget(parent), m_model(model), m_badge(new QLabel(tr("SIMULATED"), this)),
-      m_link(new QLabel(this)), m_stats(new QLabel(this))
+      m_link(new ElidedLabel(this)), m_stats(new QLabel(this))
 {
     m_badge->setObjectName(QStringLiteral("simulatedBadge"));
     m_badge->setToolTip(tr("The drives are simulated: nothing here moves a real motor"));
@@ -26,6 +27,7 @@ StatusSummary::StatusSummary(BusModel *model, QWidget *parent)
     layout->addWidget(m_link, 1);
     layout->addWidget(m_stats);
     connect(m_model, &BusModel::connectionChanged, this, &StatusSummary::updateLink);
+    connect(m_model, &BusModel::canConditionChanged, this, &StatusSummary::updateLink);
     connect(m_model, &BusModel::statisticsChanged, this, &StatusSummary::updateStatistics);
     connect(m_model, &BusModel::pollingChanged, this, &StatusSummary::updateStatistics);
     updateLink();
@@ -39,7 +41,7 @@ bool StatusSummary::isSimulatedBadgeShown() const
 
 QString StatusSummary::linkText() const
 {
-    return m_link->text();
+    return m_link->fullText();
 }
 
 QString StatusSummary::statisticsText() const
@@ -50,8 +52,9 @@ QString StatusSummary::statisticsText() const
 void StatusSummary::updateLink()
 {
     m_badge->setVisible(m_model->isSimulated());
-    m_link->setText(Format::connectionState(m_model->connection()));
-    m_link->setToolTip(Format::connectionDetail(m_model->connection()));
+    // The whole state, the CAN condition included: the connection bar's copy may be cut short.
+    m_link->setFullText(Format::linkState(m_model->connection(), m_model->canCondition()));
+    m_link->setDetail(Format::connectionDetail(m_model->connection()));
 }
 
 void StatusSummary::updateStatistics()

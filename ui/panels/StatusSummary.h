@@ -6,6 +6,8 @@ class QLabel;
 
 namespace lk::ui {
 
+class ElidedLabel;
+
 class BusModel;
 
 /// The status bar's permanent part: link state, a "Simulated" badge on the built-in bus,
@@ -25,7 +27,7 @@ private:
 
     BusModel *m_model;
     QLabel *m_badge;
-    QLabel *m_link;
+    ElidedLabel *m_link; ///< the whole link state; cut short rather than widen the window
     QLabel *m_stats;
 };
 

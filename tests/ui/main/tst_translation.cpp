@@ -177,13 +177,19 @@ void tst_Translation::menusAreChinese()
 void tst_Translation::fitsSmallScreen_data()
 {
     QTest::addColumn<QString>("language");
-    QTest::newRow("en") << "en";
-    QTest::newRow("zh_CN") << "zh_CN";
+    QTest::addColumn<bool>("can");
+    QTest::newRow("en") << "en" << false;
+    QTest::newRow("zh_CN") << "zh_CN" << false;
+    // On CAN the connection bar holds a plugin, an interface and a bit rate, and the bus panel
+    // a series, a generation and a gear ratio: both wider than their RS485 forms.
+    QTest::newRow("en CAN") << "en" << true;
+    QTest::newRow("zh_CN CAN") << "zh_CN" << true;
 }
 
 void tst_Translation::fitsSmallScreen()
 {
     QFETCH(QString, language);
+    QFETCH(bool, can);
     LanguageLoader::install(language);
     lk::ui::AppSettings settings(m_dir.filePath(QStringLiteral("fit-%1.ini").arg(language)));
     MainWindow window(&settings);
@@ -199,11 +205,21 @@ void tst_Translation::fitsSmallScreen()
     // signal plotted, the bus limit known (its text is the longest in the Plots toolbar).
     lk::ui::ConnectionChoice c;
     c.kind = lk::ui::ConnectionChoice::Kind::Simulator;
+    c.simulatedCan = can;
     c.autoReconnect = false;
     window.connectTo(c);
     auto *model = window.busModel();
     QTRY_COMPARE_WITH_TIMEOUT(model->ids().size(), 4, kWaitMs);
     model->setSelectedIds(model->ids());
+    // The stop button must never go behind the toolbar's overflow arrow, whatever the link.
+    auto *stop = window.findChild<QWidget *>(QStringLiteral("emergencyStop"));
+    QVERIFY(stop);
+    QVERIFY2(stop->isVisible() &&
+                 window.rect().contains(QRect(stop->mapTo(&window, QPoint()), stop->size())),
+             "the emergency stop button is hidden in the toolbar's overflow");
+    // ... nor push the window past the screen (a link's longer connection bar could).
+    QVERIFY2(window.minimumSizeHint().width() <= kSmallScreen.width(),
+             qPrintable(QStringLiteral("minimum width %1").arg(window.minimumSizeHint().width())));
     for (const auto channel : lk::ui::PlotPanel::pickableChannels())
         window.plots()->setChannelVisible(channel, true);
     QTRY_VERIFY_WITH_TIMEOUT(model->statistics().pollLimitPerSecond > 0, kWaitMs);

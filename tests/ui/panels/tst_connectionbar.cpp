@@ -1,4 +1,5 @@
 #include <panels/ConnectionBar.h>
+#include <panels/ElidedLabel.h>
 
 #include <QtTest/QtTest>
 #include <QtWidgets/QCheckBox>
@@ -81,6 +82,7 @@ private slots:
     void canWidgetsLockedWhileOpen();
     void canConditionIsAStateNotALoss_data();
     void canConditionIsAStateNotALoss();
+    void stateGivesUpWidthFirst();
 };
 
 void tst_ConnectionBar::label_data()
@@ -432,6 +434,41 @@ void tst_ConnectionBar::canConditionIsAStateNotALoss()
     s.state = lk::transport::Transport::State::Open;
     bar.setConnectionStatus(s);
     QVERIFY(!bar.stateText().contains(said));
+}
+
+// On a narrow screen the state text is cut (the status bar says it whole), not the controls
+// nor the emergency stop beside the bar: it asks for its whole width but accepts a few
+// characters, and the whole text is then the first line of its tooltip.
+void tst_ConnectionBar::stateGivesUpWidthFirst()
+{
+    ConnectionBar bar;
+    fakeCan(bar);
+    lk::bus::ConnectionStatus s;
+    s.state = lk::transport::Transport::State::Open;
+    s.canTransmit = true;
+    s.description = QStringLiteral("socketcan:can0 @ 1000000 bit/s");
+    bar.setConnectionStatus(s);
+    bar.setCanCondition(lk::transport::CanBusCondition::NoAcknowledge,
+                        QStringLiteral("Check the drives' power."));
+    auto *state = bar.findChild<lk::ui::ElidedLabel *>(QStringLiteral("connectionState"));
+    QVERIFY(state);
+    QCOMPARE(state->fullText(), bar.stateText());
+    const int whole = state->fontMetrics().horizontalAdvance(bar.stateText());
+    QVERIFY2(bar.minimumSizeHint().width() < bar.sizeHint().width() - whole / 2,
+             qPrintable(QStringLiteral("minimum %1, hint %2")
+                            .arg(bar.minimumSizeHint().width())
+                            .arg(bar.sizeHint().width())));
+    bar.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&bar));
+    bar.resize(bar.sizeHint());
+    QTRY_VERIFY(!state->isElided());
+    QVERIFY(!state->toolTip().startsWith(bar.stateText())); // the detail alone
+    bar.resize(bar.minimumSizeHint());
+    QTRY_VERIFY(state->isElided());
+    QVERIFY(state->text().endsWith(QChar(0x2026)));
+    QVERIFY2(state->toolTip().startsWith(bar.stateText() + QLatin1Char('\n')),
+             qPrintable(state->toolTip()));
+    QVERIFY(state->toolTip().contains(QStringLiteral("Check the drives' power.")));
 }
 
 QTEST_MAIN(tst_ConnectionBar)
