@@ -578,9 +578,13 @@ void ControlView::haltLocalMotion(const QString &reason)
 void ControlView::onTelemetry(const bus::TelemetryBatch &batch)
 {
     m_driveState->noteTelemetry(batch);
-    for (const bus::TelemetrySample &sample : batch) {
-        if (sample.id == driveId() && sample.has(bus::TelemetryField::MultiTurn))
-            onAngle(sample.id, sample.multiTurnDeg);
+    // Only the newest angle counts (targets start where the drive is now); setting the
+    // targets' spin boxes once per sample of a batch cost the GUI thread for nothing.
+    for (auto it = batch.crbegin(); it != batch.crend(); ++it) {
+        if (it->id == driveId() && it->has(bus::TelemetryField::MultiTurn)) {
+            onAngle(it->id, it->multiTurnDeg);
+            break;
+        }
     }
     for (auto it = batch.crbegin(); it != batch.crend(); ++it) {
         if (it->id != driveId() || !it->has(bus::TelemetryField::Speed))

@@ -10,7 +10,10 @@
 #include <QtCharts/QChart>
 #include <QtCharts/QValueAxis>
 #include <QtGui/QImage>
+#include <QtGui/QPen>
 #include <QtTest/QTest>
+
+#include <utility>
 
 using lk::plottest::ShownPanel;
 using lk::ui::StripChart;
@@ -20,6 +23,7 @@ class tst_TimeChartView : public QObject {
 private slots:
     void everyPixelIsPainted();
     void bandAroundChartIsTheWindowColour();
+    void hairlinesPaintWhatOnePixelPensPaint();
 };
 
 namespace {
@@ -68,6 +72,38 @@ void tst_TimeChartView::bandAroundChartIsTheWindowColour()
     const QRectF area = chart->chart()->plotArea();
     const QPoint inside = chart->mapFromScene(chart->chart()->mapToScene(area.topLeft()));
     QCOMPARE(image.pixelColor(inside.x() / 2, inside.y() / 2 + 1), base);
+}
+
+// The axes' lines and grids are hairlines (cheaper bounds for the view to ask at each frame):
+// the chart must look exactly as with the theme's 1-pixel pens.
+void tst_TimeChartView::hairlinesPaintWhatOnePixelPensPaint()
+{
+    ShownPanel shown;
+    shown.panel.setPaused(true); // the same data in both renders
+    StripChart *chart = shown.panel.charts().first();
+    const QList<QAbstractAxis *> axes = chart->chart()->axes();
+    QVERIFY(axes.size() >= 2);
+    for (QAbstractAxis *axis : axes)
+        QCOMPARE(axis->gridLinePen().widthF(), 0.0);
+    const QImage hair = renderOverSentinel(chart, Qt::black);
+    for (QAbstractAxis *axis : axes) {
+        for (auto [get, set] :
+             {std::pair{&QAbstractAxis::linePen, &QAbstractAxis::setLinePen},
+              {&QAbstractAxis::gridLinePen, &QAbstractAxis::setGridLinePen},
+              {&QAbstractAxis::minorGridLinePen, &QAbstractAxis::setMinorGridLinePen}}) {
+            QPen pen = (axis->*get)();
+            pen.setWidthF(1.0);
+            (axis->*set)(pen);
+        }
+    }
+    const QImage onePixel = renderOverSentinel(chart, Qt::black);
+    QCOMPARE(hair.size(), onePixel.size());
+    int differ = 0;
+    for (int y = 0; y < hair.height(); ++y) {
+        for (int x = 0; x < hair.width(); ++x)
+            differ += hair.pixel(x, y) != onePixel.pixel(x, y) ? 1 : 0;
+    }
+    QCOMPARE(differ, 0);
 }
 
 QTEST_MAIN(tst_TimeChartView)
