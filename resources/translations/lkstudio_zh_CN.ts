@@ -4686,10 +4686,6 @@ not read</source>
         <source>Parameters</source>
         <translation>参数</translation>
     </message>
-    <message>
-        <source>Emergency stop</source>
-        <translation>急停</translation>
-    </message>
 </context>
 <context>
     <name>lk::ui::MessageBanner</name>

@@ -41,6 +41,7 @@
 #include <QtGui/QScreen>
 #include <QtWidgets/QApplication>
 #include <QtWidgets/QDockWidget>
+#include <QtWidgets/QHBoxLayout>
 #include <QtWidgets/QMenuBar>
 #include <QtWidgets/QScrollArea>
 #include <QtWidgets/QStatusBar>
@@ -186,22 +187,20 @@ void MainWindow::buildToolbar()
     bar->setObjectName(QStringLiteral("connectionToolbar"));
     bar->setMovable(false);
     bar->setFloatable(false);
-    bar->toggleViewAction()->setEnabled(false);
-    m_connectionBar = new ConnectionBar(bar);
-    bar->addWidget(m_connectionBar);
+    bar->toggleViewAction()->setEnabled(false); // the emergency stop must never be hidden
+    // The bar and the stop button are one toolbar item: a toolbar too narrow for its items
+    // hides the last ones behind an arrow, and on CAN (plugin, interface, bit rate) at 1366
+    // pixels the stop button was the one hidden. A toolbar never hides its first item; when
+    // space is short the connection state gives up its width (ElidedLabel), never the stop.
+    auto *row = new QWidget(bar);
+    auto *rowLayout = new QHBoxLayout(row);
+    rowLayout->setContentsMargins(0, 0, 0, 0);
+    m_connectionBar = new ConnectionBar(row);
+    m_stop = new EmergencyStopButton(row);
+    rowLayout->addWidget(m_connectionBar, 1);
+    rowLayout->addWidget(m_stop);
+    bar->addWidget(row);
     addToolBar(Qt::TopToolBarArea, bar);
-    // The stop button has a toolbar of its own: a toolbar too narrow for its widgets hides the
-    // last ones behind an arrow, and on CAN (plugin, interface, bit rate) at 1366 pixels the
-    // stop was the one hidden. Alone in its bar it is that bar's first item, which a toolbar
-    // never hides, and the row squeezes the connection bar first.
-    auto *stopBar = new QToolBar(tr("Emergency stop"), this);
-    stopBar->setObjectName(QStringLiteral("emergencyStopToolbar"));
-    stopBar->setMovable(false);
-    stopBar->setFloatable(false);
-    stopBar->toggleViewAction()->setEnabled(false); // the emergency stop must never be hidden
-    m_stop = new EmergencyStopButton(stopBar);
-    stopBar->addWidget(m_stop);
-    addToolBar(Qt::TopToolBarArea, stopBar);
 
     // Esc anywhere (dialogs and pop-ups included) is the stop control's own application
     // filter; the button and the menu call the same stop.

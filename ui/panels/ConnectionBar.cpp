@@ -95,9 +95,11 @@ ConnectionBar::ConnectionBar(QWidget *parent)
     layout->addWidget(m_accessHelp);
     layout->addWidget(m_takeOver);
     layout->addWidget(m_stateDot);
-    // No stretch: the state takes the width of its text while there is room, and gives it up
-    // before any control does when there is not.
+    // No stretch of its own: the state takes the width of its text while there is room (the
+    // stretch after it takes the rest), and gives it up before any control does when there is
+    // not.
     layout->addWidget(m_state);
+    layout->addStretch(1);
 
     m_refresh = new QTimer(this);
     m_refresh->setInterval(kRefreshMs);

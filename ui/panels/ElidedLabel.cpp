@@ -2,6 +2,8 @@
 
 #include <QtGui/QFontMetrics>
 
+#include <algorithm>
+
 namespace lk::ui {
 
 namespace {
