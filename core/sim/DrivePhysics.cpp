@@ -241,8 +241,11 @@ double DrivePhysics::speedLoop(double omegaRef, double dt)
     const double error = omegaRef - m_omegaMeasured;
     const double out = m_kpSpeed * error + m_kiSpeed * (m_speedIntegral + error * dt) -
                        m_kdSpeed * m_accelMeasured;
-    if (std::abs(out) > m_currentLimit)
-        return clampAbs(out, m_currentLimit); // saturated: integrator frozen (anti-windup)
+    const double limit = m_target.currentLimitA > 0
+                             ? std::min(m_target.currentLimitA, m_currentLimit)
+                             : m_currentLimit;
+    if (std::abs(out) > limit)
+        return clampAbs(out, limit); // saturated: integrator frozen (anti-windup)
     m_speedIntegral += error * dt;
     return out;
 }

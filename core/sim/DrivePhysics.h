@@ -23,6 +23,9 @@ struct LoopTarget {
     double speedDps = 0;        ///< Speed
     double positionDeg = 0;     ///< Position: absolute rotor angle (physics frame)
     double maxSpeedDps = 0;     ///< Speed/Position: limit, already capped by the series maximum
+    /// Speed: a tighter bound on the speed loop's current than the drive's own (CAN V2.36's
+    /// 0xA2 torque limit); 0: none.
+    double currentLimitA = 0;
 };
 
 /// Derivative gains of the three loops (V2.35's Kd, 0..65535; V2.3 drives have none).

@@ -54,6 +54,15 @@ protocol::DecodeContext SimCanFront::contextOf(const SimDrive &drive)
     return protocol::DecodeContext{drive.series(), drive.generation(), protocol::Link::Can};
 }
 
+quint32 SimCanFront::replyId(quint8 id, const protocol::DecodeContext &context) const
+{
+    if (!m_replyBase)
+        return protocol::can::replyCanId(id, context.generation);
+    return (*m_replyBase == protocol::can::IdBase::Base180 ? protocol::can::kReplyBaseV236
+                                                           : protocol::can::kRequestBase) +
+           id;
+}
+
 QList<SimReply> SimCanFront::receive(const QByteArray &records, double nowSeconds)
 {
     m_bus.advanceTo(nowSeconds);
@@ -82,6 +91,8 @@ void SimCanFront::onEvent(const protocol::ParseEvent &event, QList<SimReply> &ou
         return;
     }
     const protocol::DecodeContext ctx = contextOf(*drive);
+    if (answerSetPosition(*drive, event.frame, ctx, out))
+        return;
     // The old generation lacks a working 0x95 but still echoes it: answer() does so.
     const bool oldClearAngle = event.frame.command == quint8(protocol::Command::ClearAngle) &&
                                ctx.generation == protocol::Generation::V2_3;
@@ -106,6 +117,34 @@ void SimCanFront::onEvent(const protocol::ParseEvent &event, QList<SimReply> &ou
     answer(*drive, *decoded.request, out);
 }
 
+bool SimCanFront::answerSetPosition(SimDrive &drive, const protocol::Frame &frame,
+                                    const protocol::DecodeContext &context, QList<SimReply> &out)
+{
+    // CAN V2.36's 0x95 sets the current position to any angle (RAM), where RS485 and the
+    // codec's request model know only "to zero": an angle of 0 takes the common path.
+    if (frame.command != quint8(protocol::Command::ClearAngle) ||
+        context.generation != protocol::Generation::V2_35)
+        return false;
+    const protocol::can::CanData data{protocol::can::requestCanId(frame.id),
+                                      protocol::can::bytesOf(frame)};
+    const std::optional<qint32> angle = protocol::can::decodeSetPosition(data);
+    if (!angle || *angle == 0)
+        return false;
+    ++m_counters.requests;
+    m_bus.countRequest(frame.id, protocol::Command::ClearAngle);
+    drive.setMultiTurnAngle(*angle);
+    SimReply r; // the echo, on the reply ID
+    r.bytes =
+        protocol::CanRecord::of(protocol::can::CanData{replyId(frame.id, context), data.bytes})
+            .encode();
+    r.delaySeconds = m_bus.replyDelay();
+    r.id = frame.id;
+    r.command = protocol::Command::ClearAngle;
+    ++m_counters.replies;
+    out.append(r);
+    return true;
+}
+
 bool SimCanFront::isRequestLayout(const protocol::Request &request, const protocol::Frame &frame,
                                   const protocol::DecodeContext &context)
 {
@@ -127,20 +166,23 @@ void SimCanFront::answer(SimDrive &drive, const protocol::Request &request, QLis
         data = protocol::can::CanData{protocol::can::replyCanId(request.id, ctx.generation),
                                       protocol::can::encodeSetPosition(request.id, 0).bytes};
     } else if (protocol::CommandTable::availableOn(request.command, ctx)) {
+        // On CAN every generation's 0x19 reply carries the zero that was set (docs/CAN.md).
+        if (request.command == protocol::Command::WriteZeroRom)
+            drive.setZeroReplyCarriesOffset(true);
         if (const std::optional<protocol::Reply> reply = drive.handle(request)) {
             const protocol::can::CanEncodeResult encoded = protocol::can::encodeReply(*reply, ctx);
             data = encoded.data;
+            // CAN V2.36 has no 0x93: its 0x80 clears the turn count too (docs/CAN.md).
+            if (request.command == protocol::Command::MotorOff &&
+                ctx.generation == protocol::Generation::V2_35)
+                drive.clearTurnCount();
         }
     }
     if (!data) {
         ++m_counters.unanswered;
         return;
     }
-    if (m_replyBase)
-        data->canId =
-            (*m_replyBase == protocol::can::IdBase::Base180 ? protocol::can::kReplyBaseV236
-                                                            : protocol::can::kRequestBase) +
-            request.id;
+    data->canId = replyId(request.id, ctx);
     SimReply r;
     r.bytes = protocol::CanRecord::of(*data).encode();
     r.delaySeconds = m_bus.replyDelay();

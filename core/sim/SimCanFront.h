@@ -57,6 +57,11 @@ private:
     void onEvent(const protocol::ParseEvent &event, QList<SimReply> &out);
     void answer(SimDrive &drive, const protocol::Request &request, QList<SimReply> &out);
     void answerMultiMotor(const protocol::can::CanData &data, QList<SimReply> &out);
+    /// CAN V2.36's 0x95 with an angle other than 0; false when `frame` is not one.
+    bool answerSetPosition(SimDrive &drive, const protocol::Frame &frame,
+                           const protocol::DecodeContext &context, QList<SimReply> &out);
+    /// The ID a reply of drive `id` goes out on: the generation's, or the one chosen.
+    quint32 replyId(quint8 id, const protocol::DecodeContext &context) const;
     static bool isRequestLayout(const protocol::Request &request, const protocol::Frame &frame,
                                 const protocol::DecodeContext &context);
 

@@ -119,6 +119,18 @@ void SimDrive::checkProtection()
         switchOff();
 }
 
+void SimDrive::clearTurnCount()
+{
+    const double turn = 360.0 * m_gearRatio;
+    const double pos = m_physics.positionDeg();
+    m_refDeg = pos - positiveMod(pos - m_refDeg, turn);
+}
+
+void SimDrive::setMultiTurnAngle(qint64 raw)
+{
+    m_refDeg = m_physics.positionDeg() - static_cast<double>(raw) * protocol::kCentiUnits;
+}
+
 void SimDrive::switchOff()
 {
     m_runState = RunState::Off;
@@ -267,13 +279,9 @@ std::optional<Reply> SimDrive::handleV235(const Request &r)
         holdShaft();
         return Reply{r.command, r.id, protocol::BrakeState{quint8(m_brakeReleased ? 1 : 0)}};
     }
-    case Command::ClearTurnCount: {
-        // The turn count goes, the angle within the (output) turn stays.
-        const double turn = 360.0 * m_gearRatio;
-        const double pos = m_physics.positionDeg();
-        m_refDeg = pos - positiveMod(pos - m_refDeg, turn);
+    case Command::ClearTurnCount:
+        clearTurnCount();
         return Reply{r.command, r.id, protocol::Acknowledged{}};
-    }
     default:
         return std::nullopt;
     }
@@ -381,6 +389,10 @@ std::optional<LoopTarget> SimDrive::motionTarget(const Request &r) const
     } else if (const auto *c = std::get_if<protocol::SpeedCommand>(&r.payload)) {
         t.mode = LoopMode::Speed;
         t.speedDps = c->speedDps();
+        // CAN V2.36's 0xA2 carries the torque limit of this command. What a limit of 0 does
+        // is unknown (docs/CAN.md): modelled as none of its own, the drive's limit stays.
+        if (c->iqLimitRaw && *c->iqLimitRaw != 0)
+            t.currentLimitA = std::abs(*c->iqLimitRaw) * protocol::iqCommandAmpsPerLsb(context());
     } else if (const auto *c = std::get_if<protocol::MultiPositionCommand>(&r.payload)) {
         t.mode = LoopMode::Position;
         t.positionDeg = m_refDeg + static_cast<double>(c->angleRaw) * protocol::kCentiUnits;

@@ -91,6 +91,12 @@ public:
     void setRotorLocked(bool locked);
     /// Newer firmware answers 0x19 with LEN 2 (the new zero); V2.3 echoes (default).
     void setZeroReplyCarriesOffset(bool on) { m_zeroReplyWithOffset = on; }
+
+    // What some links and generations do beside a command's common effect (SimCanFront).
+    /// The turn count goes, the angle within the (output) turn stays (0x93; CAN V2.36's 0x80).
+    void clearTurnCount();
+    /// The current position reads `raw` (0.01 deg) from now on, in RAM (CAN V2.36's 0x95).
+    void setMultiTurnAngle(qint64 raw);
     void setRomWrittenHandler(RomWrittenHandler handler) { m_romWritten = std::move(handler); }
     const DrivePhysics &physics() const { return m_physics; }
 

@@ -78,6 +78,10 @@ private slots:
     void replyBaseCanBeChosen();
     void notRequests();
     void anotherNodesRepliesAreNotAnswered();
+    void v236SetPositionTakesAnyAngle();
+    void v236MotorOffClearsTheTurnCount();
+    void zeroReplyCarriesTheOffsetOnBothGenerations();
+    void v236SpeedTorqueLimitBoundsTheCurrent();
 
 private:
     std::unique_ptr<SimBus> m_bus;
@@ -218,6 +222,96 @@ void tst_SimCanFront::anotherNodesRepliesAreNotAnswered()
     QCOMPARE(m_front->counters().replies, qint64(1));
     // A request with its own layout still is one.
     QCOMPARE(m_front->receive(rawRecord(0x141, "A200000010270000"), 0.0).size(), 1);
+}
+
+// docs/CAN.md §4 and its vector: V2.36's 0x95 makes the current position read the angle it
+// carries (RAM), and echoes; the old generation's echo changes nothing (above).
+void tst_SimCanFront::v236SetPositionTakesAnyAngle()
+{
+    const QList<SimReply> r = m_front->receive(rawRecord(0x142, "95000000A08C0000"), 0.0);
+    QCOMPARE(r.size(), 1);
+    QCOMPARE(r[0].bytes, rawRecord(0x182, "95000000A08C0000"));
+    QCOMPARE(m_bus->drive(2)->multiTurnRaw(), qint64(36000));
+    QCOMPARE(m_front->receive(rawRecord(0x142, "950000006073FFFF"), 0.0).size(), 1); // -360.00
+    QCOMPARE(m_bus->drive(2)->multiTurnRaw(), qint64(-36000));
+    QCOMPARE(m_front->receive(rawRecord(0x142, "9500000000000000"), 0.0).size(), 1);
+    QCOMPARE(m_bus->drive(2)->multiTurnRaw(), qint64(0));
+    QCOMPARE(m_front->counters().requests, qint64(3));
+}
+
+// docs/CAN.md §4 and §6: V2.36 has no 0x93; its 0x80 also clears the turn count. The old
+// generation's 0x80 leaves it.
+void tst_SimCanFront::v236MotorOffClearsTheTurnCount()
+{
+    const proto::DecodeContext oldCtx{proto::Series::MG, Generation::V2_3, proto::Link::Can};
+    const proto::DecodeContext newCtx{proto::Series::MF, Generation::V2_35, proto::Link::Can};
+    QVERIFY(!m_front
+                 ->receive(hostRecord(lk::test::req(proto::build::speed(1, 720.0, oldCtx, 1.0)),
+                                      Generation::V2_3, proto::Series::MG),
+                           0.0)
+                 .isEmpty());
+    QVERIFY(!m_front
+                 ->receive(hostRecord(lk::test::req(proto::build::speed(2, 720.0, newCtx, 1.0)),
+                                      Generation::V2_35, proto::Series::MF),
+                           0.0)
+                 .isEmpty());
+    m_bus->advanceTo(3.0);
+    const qint64 oldBefore = m_bus->drive(1)->multiTurnRaw();
+    const qint64 newBefore = m_bus->drive(2)->multiTurnRaw();
+    QVERIFY2(newBefore > 36000, qPrintable(QString::number(newBefore)));
+    QCOMPARE(m_front->receive(rawRecord(0x141, "8000000000000000"), 3.0).size(), 1);
+    QCOMPARE(m_front->receive(rawRecord(0x142, "8000000000000000"), 3.0).size(), 1);
+    QCOMPARE(m_bus->drive(1)->multiTurnRaw(), oldBefore);
+    const qint64 after = m_bus->drive(2)->multiTurnRaw();
+    QVERIFY2(after >= 0 && after < 36000, qPrintable(QString::number(after)));
+    QCOMPARE(after, newBefore % 36000); // the angle within the turn stays
+}
+
+// docs/CAN.md §3: on CAN the 0x19 reply carries the encoder offset that was set, on the old
+// generation as on V2.36 (on RS485 V2.3 echoes).
+void tst_SimCanFront::zeroReplyCarriesTheOffsetOnBothGenerations()
+{
+    const struct {
+        int id;
+        Generation generation;
+        proto::Series series;
+    } drives[] = {{1, Generation::V2_3, proto::Series::MG},
+                  {2, Generation::V2_35, proto::Series::MF}};
+    for (const auto &d : drives) {
+        const HostView v =
+            readBack(m_front->receive(rawRecord(0x140 + d.id, "1900000000000000"), 0.0),
+                     d.generation, d.series);
+        QVERIFY(v.reply);
+        const auto zero = std::get<proto::ZeroWritten>(v.reply->payload);
+        QVERIFY(zero.encoderOffset);
+        QCOMPARE(*zero.encoderOffset, quint16(m_bus->drive(d.id)->rom().encoderZero));
+        QVERIFY(*zero.encoderOffset != 0); // the drives' shafts sit away from the encoder's 0
+    }
+}
+
+// docs/CAN.md §4: V2.36's 0xA2 carries a torque limit for that speed command; the speed loop's
+// current stays within it.
+void tst_SimCanFront::v236SpeedTorqueLimitBoundsTheCurrent()
+{
+    auto peakCurrent = [this](const char *data) {
+        init();
+        if (m_front->receive(rawRecord(0x142, data), 0.0).isEmpty())
+            return -1.0;
+        double peak = 0;
+        for (int ms = 1; ms <= 200; ++ms) {
+            m_bus->advanceTo(ms / 1000.0);
+            peak = std::max(peak, std::abs(m_bus->drive(2)->iqA()));
+        }
+        return peak;
+    };
+    // 720 dps with a limit of 1 LSB, and with the largest the field takes (2048).
+    const double limited = peakCurrent("A200010040190100");
+    const double free = peakCurrent("A200000840190100");
+    const double lsb = proto::iqCommandAmpsPerLsb(
+        proto::DecodeContext{proto::Series::MF, Generation::V2_35, proto::Link::Can});
+    QVERIFY2(limited > 0 && limited <= lsb * 1.05,
+             qPrintable(QStringLiteral("%1 A, 1 LSB is %2 A").arg(limited).arg(lsb)));
+    QVERIFY2(free > 20 * lsb, qPrintable(QStringLiteral("%1 A").arg(free)));
 }
 
 QTEST_APPLESS_MAIN(tst_SimCanFront)

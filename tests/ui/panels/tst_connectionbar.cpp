@@ -55,6 +55,16 @@ void fakeCan(ConnectionBar &bar, const QStringList *socketcan = nullptr)
         });
 }
 
+/// A CAN link that is open and may transmit, as the session reports it.
+lk::bus::ConnectionStatus openCan()
+{
+    lk::bus::ConnectionStatus s;
+    s.state = lk::transport::Transport::State::Open;
+    s.canTransmit = true;
+    s.description = QStringLiteral("socketcan:can0 @ 1000000 bit/s");
+    return s;
+}
+
 QComboBox *combo(ConnectionBar &bar, const char *name)
 {
     return bar.findChild<QComboBox *>(QLatin1String(name));
@@ -410,10 +420,7 @@ void tst_ConnectionBar::canConditionIsAStateNotALoss()
     QFETCH(QString, said);
     ConnectionBar bar;
     fakeCan(bar);
-    lk::bus::ConnectionStatus s;
-    s.state = lk::transport::Transport::State::Open;
-    s.canTransmit = true;
-    s.description = QStringLiteral("socketcan:can0 @ 1000000 bit/s");
+    lk::bus::ConnectionStatus s = openCan();
     bar.setConnectionStatus(s);
     const QString fix = QStringLiteral("Check the drives' power, the wiring and the bit rate.");
     bar.setCanCondition(lk::transport::CanBusCondition(condition), fix);
@@ -443,10 +450,7 @@ void tst_ConnectionBar::stateGivesUpWidthFirst()
 {
     ConnectionBar bar;
     fakeCan(bar);
-    lk::bus::ConnectionStatus s;
-    s.state = lk::transport::Transport::State::Open;
-    s.canTransmit = true;
-    s.description = QStringLiteral("socketcan:can0 @ 1000000 bit/s");
+    lk::bus::ConnectionStatus s = openCan();
     bar.setConnectionStatus(s);
     bar.setCanCondition(lk::transport::CanBusCondition::NoAcknowledge,
                         QStringLiteral("Check the drives' power."));
