@@ -178,6 +178,12 @@ struct RequestEncoder {
         b.at(4, c.angleRaw);
         return withMaxSpeed(b, c.maxSpeedRaw);
     }
+    CanEncodeResult operator()(const PositionSet &p) const
+    {
+        if (command != Command::ClearAngle || !isV236(context))
+            return notOnCan(); // only V2.36's 0x95 carries an angle
+        return encoded(canId, head().at(4, p.angleRaw));
+    }
     CanEncodeResult operator()(const BrakeCommand &c) const
     {
         return encoded(canId, head().at(1, static_cast<quint8>(c.action)));
@@ -354,6 +360,11 @@ RequestPayload requestPayload(Command cmd, const Bytes7 &b, const DecodeContext 
                                         centiDps(Command::IncrementPositionLimited, cmd, b)};
     case Command::Brake:
         return BrakeCommand{static_cast<BrakeAction>(b.at<quint8>(1))};
+    case Command::ClearAngle:
+        // V2.36 sets the position to any angle; 0 (and the old generation's) is the plain one.
+        if (isV236(context) && b.at<qint32>(4) != 0)
+            return PositionSet{b.at<qint32>(4)};
+        return NoPayload{};
     case Command::ReadControlParam:
         return ControlParamRead{b.at<quint8>(1)};
     case Command::WriteControlParam:
@@ -507,11 +518,6 @@ RequestDecodeResult decodeRequest(const Frame &frame, const DecodeContext &conte
     if (!knownOn(frame, context, &result.error))
         return result;
     const Command cmd = CommandTable::find(frame.command)->command;
-    if (cmd == Command::ClearAngle && Bytes7(frame.data).at<qint32>(4) != 0) {
-        // A V2.36 "set position" other than 0 is no clear_angle: decodeSetPosition reads it.
-        result.error = DecodeError::BadLength;
-        return result;
-    }
     result.request = Request{cmd, frame.id, requestPayload(cmd, Bytes7(frame.data), context)};
     return result;
 }

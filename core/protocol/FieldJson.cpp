@@ -208,6 +208,7 @@ struct RequestFieldVisitor {
     {
         return angleFields(c.angleRaw, c.maxSpeedRaw);
     }
+    QJsonObject operator()(const PositionSet &p) const { return angleFields(p.angleRaw, {}); }
     QJsonObject operator()(const ParamRead &p) const { return paramHead(p.paramId); }
     QJsonObject operator()(const ControlParamRead &p) const { return controlParamHead(p.paramId); }
     QJsonObject operator()(const ControlParameter &v) const { return controlParamFields(v); }

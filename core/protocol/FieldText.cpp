@@ -180,6 +180,11 @@ struct RequestTextVisitor {
                                 .arg(dir, physical(FieldId::SingleAngleDeg, c.angleRaw)),
                             c.maxSpeedRaw);
     }
+    QString operator()(const PositionSet &p) const
+    {
+        return QCoreApplication::translate("lk::protocol::FieldText", "position := %1 deg")
+            .arg(physical(FieldId::MultiAngleDeg, p.angleRaw));
+    }
     QString operator()(const IncrementPositionCommand &c) const
     {
         const QString sign = c.angleRaw > 0 ? QStringLiteral("+") : QString();

@@ -33,7 +33,9 @@ WireEncodeResult encodeRequest(const Request &request, const DecodeContext &cont
 {
     if (context.link == Link::Can)
         return fromCan(can::encodeRequest(request, context));
-    if (CommandTable::info(request.command).canOnly)
+    // A 0x95 with an angle is CAN V2.36's; RS485's 0x95 only zeroes.
+    if (CommandTable::info(request.command).canOnly ||
+        std::holds_alternative<PositionSet>(request.payload))
         return notOnRs485(request.command, context);
     return WireEncodeResult{request.encode(), {}};
 }

@@ -94,6 +94,11 @@ struct PayloadEncoder {
     {
         return WireWriter().put(static_cast<quint8>(b.action)).bytes();
     }
+    // CAN V2.36 only: B1..B7 of the CAN frame (LinkCodec refuses it on RS485).
+    QByteArray operator()(const PositionSet &p) const
+    {
+        return WireWriter().put(quint8(0)).put(quint16(0)).put(p.angleRaw).bytes();
+    }
 };
 
 PidGains readPid(const QByteArray &d)

@@ -21,7 +21,7 @@ using RequestPayload =
     std::variant<NoPayload, PidGains, Acceleration, EncoderOffset, OpenLoopCommand, TorqueCommand,
                  SpeedCommand, MultiPositionCommand, SinglePositionCommand,
                  IncrementPositionCommand, ParamRead, ParameterValue, BrakeCommand,
-                 ControlParamRead, ControlParameter>;
+                 ControlParamRead, ControlParameter, PositionSet>;
 
 /// A host -> drive request. Built with the functions in RequestBuilder.h it has passed the
 /// wire ranges of the spec and ERRATA; read back with decodeRequest() it holds the values as

@@ -215,5 +215,10 @@ struct IncrementPositionCommand {
     qint32 angleRaw = 0;                ///< signed 0.01 deg
     std::optional<quint32> maxSpeedRaw; ///< 0xA8 only
 };
+/// CAN V2.36's 0x95 with an angle: the current position takes this multi-turn angle (RAM).
+/// A 0x95 to zero, on any link, has no payload.
+struct PositionSet {
+    qint32 angleRaw = 0; ///< signed 0.01 deg
+};
 
 } // namespace lk::protocol

@@ -533,6 +533,10 @@
         <source>%1 %2 (unit unknown)</source>
         <translation>%1 %2（单位未知）</translation>
     </message>
+    <message>
+        <source>position := %1 deg</source>
+        <translation>位置设为 %1°</translation>
+    </message>
 </context>
 <context>
     <name>lk::protocol::LinkCodec</name>

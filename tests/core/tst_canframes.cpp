@@ -4,6 +4,9 @@
 
 #include <protocol/CanLayout.h>
 #include <protocol/Command.h>
+#include <protocol/FieldJson.h>
+#include <protocol/FieldText.h>
+#include <protocol/LinkCodec.h>
 #include <protocol/Request.h>
 
 #include <QtTest/QTest>
@@ -72,11 +75,32 @@ void tst_CanFrames::setPosition()
     QCOMPARE(can::decodeSetPosition(canFrame("141#950000006073FFFF")),
              std::optional<qint32>(-36000));
     QVERIFY(!can::decodeSetPosition(canFrame("141#9400000000000000")));
-    // clear_angle is the same frame with 0; another position is not read as a clear.
+    // clear_angle is the same frame with 0; another position is not read as a clear: it
+    // decodes with its angle (another master's, heard while listening) and encodes back.
     const DecodeContext v236 = canCtx(Generation::V2_35);
     QCOMPARE(candump(*can::encodeRequest(req(Command::ClearAngle), v236).data),
              candump(can::encodeSetPosition(1, 0)));
-    QVERIFY(!proto::decodeRequest(*can::frameOf(canFrame("141#95000000A08C0000")), v236).request);
+    QVERIFY(std::holds_alternative<proto::NoPayload>(
+        proto::decodeRequest(*can::frameOf(canFrame("141#9500000000000000")), v236)
+            .request->payload));
+    const proto::RequestDecodeResult set =
+        proto::decodeRequest(*can::frameOf(canFrame("141#95000000A08C0000")), v236);
+    QVERIFY(set.request);
+    QCOMPARE(set.request->command, Command::ClearAngle);
+    QCOMPARE(std::get<proto::PositionSet>(set.request->payload).angleRaw, 36000);
+    QCOMPARE(candump(*can::encodeRequest(*set.request, v236).data),
+             candump(canFrame("141#95000000A08C0000")));
+    QCOMPARE(proto::FieldText::request(*set.request, v236),
+             QStringLiteral("position := 360.00 deg")); // the Traffic view's words
+    QCOMPARE(proto::FieldJson::requestFields(*set.request, v236).value(QStringLiteral("angle_deg")),
+             QJsonValue(360.0)); // lkctl decode's
+    // The old generation's 0x95 carries no angle; RS485's only zeroes.
+    const DecodeContext old = canCtx(Generation::V2_3);
+    QVERIFY(!can::encodeRequest(*set.request, old).data);
+    QVERIFY(!proto::encodeRequest(
+                 *set.request,
+                 proto::DecodeContext{proto::Series::MG, Generation::V2_35, proto::Link::Rs485})
+                 .ok());
 }
 
 QTEST_APPLESS_MAIN(tst_CanFrames)

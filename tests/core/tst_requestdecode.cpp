@@ -109,6 +109,10 @@ struct Describe {
     {
         return QStringLiteral("control param %1 = %2").arg(v.paramId).arg(v.value());
     }
+    QString operator()(const proto::PositionSet &p) const
+    {
+        return QStringLiteral("position := %1").arg(p.angleRaw);
+    }
 };
 
 QString describe(const Request &r)
