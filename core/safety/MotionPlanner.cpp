@@ -51,14 +51,15 @@ double positiveMod(double v, double m)
 
 // How far a single-turn move travels from multi-turn angle `fromDeg`: to the target angle
 // within the turn, clockwise (+) or counter-clockwise (-), as the drive (and the simulator)
-// moves.
-double singleTurnTravelDeg(const protocol::SinglePositionCommand &c, double fromDeg)
+// do. The single-turn angle spans one output turn, `turnDeg` (0..36000 x ratio - 1 on a
+// geared drive: ERRATA, docs/V2.35.md, docs/CAN.md), so a move may take up to ratio rotor turns.
+double singleTurnTravelDeg(const protocol::SinglePositionCommand &c, double fromDeg, double turnDeg)
 {
-    const double current = positiveMod(fromDeg, 360.0);
-    const double target = c.angleRaw / 100.0; // divided: the double nearest the decimal
+    const double current = positiveMod(fromDeg, turnDeg);
+    const double target = positiveMod(c.angleRaw / 100.0, turnDeg); // divided: nearest double
     return c.direction == protocol::SpinDirection::Clockwise
-               ? positiveMod(target - current, 360.0)
-               : -positiveMod(current - target, 360.0);
+               ? positiveMod(target - current, turnDeg)
+               : -positiveMod(current - target, turnDeg);
 }
 
 // The one-output-turn and angle-window rules that need to know where the drive is.
@@ -84,12 +85,12 @@ std::optional<MotionPlan> checkDistance(const protocol::Request &r, const SoftLi
             target = *at.angleDeg + step;
         }
     } else if (const auto *c = std::get_if<protocol::SinglePositionCommand>(&r.payload)) {
-        // Less than one rotor turn by construction; with an angle range set, where it ends
+        // Less than one output turn by construction; with an angle range set, where it ends
         // (from the angle within the turn, in the direction given) must lie inside it.
         if (limits.minAngleDeg || limits.maxAngleDeg) {
             if (!at.angleDeg)
                 return refused(LimitKind::AngleUnknown, 0, 0, r);
-            target = *at.angleDeg + singleTurnTravelDeg(*c, *at.angleDeg);
+            target = *at.angleDeg + singleTurnTravelDeg(*c, *at.angleDeg, turn);
         }
     }
     if (target) {

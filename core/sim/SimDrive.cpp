@@ -366,12 +366,15 @@ double SimDrive::maxSpeedFor(const std::optional<quint32> &maxSpeedRaw) const
 
 double SimDrive::singleTurnTargetDeg(const protocol::SinglePositionCommand &c) const
 {
+    // The single-turn angle of a geared drive spans one output turn (0..36000 x ratio - 1,
+    // as 0x94 reports it: ERRATA, docs/V2.35.md, docs/CAN.md); its target lies in that turn.
+    const double turn = 360.0 * m_gearRatio;
     const double pos = m_physics.positionDeg();
-    const double current = positiveMod(pos - m_refDeg, 360.0);
-    const double target = c.angleRaw * protocol::kCentiUnits;
+    const double current = positiveMod(pos - m_refDeg, turn);
+    const double target = positiveMod(c.angleRaw * protocol::kCentiUnits, turn);
     const double delta = c.direction == protocol::SpinDirection::Clockwise
-                             ? positiveMod(target - current, 360.0)
-                             : -positiveMod(current - target, 360.0);
+                             ? positiveMod(target - current, turn)
+                             : -positiveMod(current - target, turn);
     return pos + delta;
 }
 

@@ -58,6 +58,7 @@ private slots:
     void incrementWithinOneOutputTurn();
     void incrementInsideTheAngleRange();
     void singleTurnEndInsideTheAngleRange();
+    void gearedSingleTurnSpansTheOutputTurn();
     void speedAndTorqueStayBounded();
 };
 
@@ -198,6 +199,24 @@ void tst_MotionPlanner::singleTurnEndInsideTheAngleRange()
              LimitKind::AngleBelowMin);
     QVERIFY(!safety::MotionPlanner::needsAngle(cw, limits720()));
     QVERIFY(safety::MotionPlanner::plan(cw, Series::MF, limits720(), {}).allowed());
+}
+
+// The single-turn angle of a geared drive spans one output turn (0..36000 x ratio - 1: ERRATA,
+// docs/V2.35.md, docs/CAN.md): a target may lie up to ratio rotor turns away.
+void tst_MotionPlanner::gearedSingleTurnSpansTheOutputTurn()
+{
+    safety::SoftLimits l = limits720();
+    l.minAngleDeg = -1000;
+    l.maxAngleDeg = 1000;
+    const safety::DrivePosition geared = at(400, 10); // within an output turn of 3600 deg
+    const protocol::Request cw =
+        req(protocol::build::singlePosition(1, protocol::SpinDirection::Clockwise, 350));
+    const safety::MotionPlan out = safety::MotionPlanner::plan(cw, Series::MG, l, geared);
+    QCOMPARE(out.verdict.kind, LimitKind::AngleAboveMax); // 3550 deg on, not 310
+    QCOMPARE(out.verdict.value, 3950.0);
+    const protocol::Request ccw =
+        req(protocol::build::singlePosition(1, protocol::SpinDirection::CounterClockwise, 350));
+    QVERIFY(safety::MotionPlanner::plan(ccw, Series::MG, l, geared).allowed()); // ends at 350
 }
 
 void tst_MotionPlanner::speedAndTorqueStayBounded()

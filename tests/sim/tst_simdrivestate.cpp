@@ -34,6 +34,7 @@ private slots:
     void firmwareQuirksAcknowledgeWithoutEffect();
     void readReplies_data();
     void readReplies();
+    void gearedSingleTurnSpansTheOutputTurn();
 };
 
 void tst_SimDriveState::temperatureRisesWithCurrent()
@@ -294,6 +295,22 @@ void tst_SimDriveState::readReplies()
     QVERIFY(highest > singleTurnRange * 0.9 || singleTurnRange > 36000);
     if (singleTurnRange > 36000)
         QVERIFY(highest > 36000); // geared: more than one rotor turn
+}
+
+// A geared drive's single-turn target lies within its output turn (0..36000 x ratio - 1), as
+// its single-turn angle does: from 400 deg, "350 deg clockwise" on an i10 drive ends at 3950.
+void tst_SimDriveState::gearedSingleTurnSpansTheOutputTurn()
+{
+    SimDrive d = makeDrive(Series::MG); // MG5010E-i10
+    d.setMultiTurnAngle(40000);
+    QCOMPARE(d.singleTurnRaw(), 40000u);
+    send(d, build::singlePosition(kId, protocol::SpinDirection::Clockwise, 350));
+    for (int i = 0; i < 800; ++i)
+        d.advance(0.01);
+    QVERIFY2(std::abs(d.multiTurnRaw() - 395000) < 50,
+             qPrintable(QString::number(d.multiTurnRaw())));
+    QVERIFY2(std::abs(int(d.singleTurnRaw()) - 35000) < 50,
+             qPrintable(QString::number(d.singleTurnRaw())));
 }
 
 QTEST_APPLESS_MAIN(tst_SimDriveState)
