@@ -120,8 +120,9 @@ void SimCanFront::onEvent(const protocol::ParseEvent &event, QList<SimReply> &ou
 bool SimCanFront::answerSetPosition(SimDrive &drive, const protocol::Frame &frame,
                                     const protocol::DecodeContext &context, QList<SimReply> &out)
 {
-    // CAN V2.36's 0x95 sets the current position to any angle (RAM), where RS485 and the
-    // codec's request model know only "to zero": an angle of 0 takes the common path.
+    // CAN V2.36's 0x95 sets the current position to any angle (RAM) and echoes the frame
+    // whole; the common path's reply (acknowledged) would carry zeros. An angle of 0 takes
+    // the common path: clear_angle, with its firmware quirks.
     if (frame.command != quint8(protocol::Command::ClearAngle) ||
         context.generation != protocol::Generation::V2_35)
         return false;
