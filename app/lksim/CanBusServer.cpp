@@ -1,6 +1,6 @@
 #include "CanBusServer.h"
 
-#include <protocol/CanLayout.h>
+#include <protocol/CanFrameTime.h>
 #include <protocol/CanRecord.h>
 
 #include <QtCore/QCoreApplication>

@@ -2,7 +2,7 @@
 
 #include "BusTiming.h"
 
-#include <protocol/CanLayout.h>
+#include <protocol/CanFrameTime.h>
 
 #include <algorithm>
 

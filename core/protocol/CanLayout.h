@@ -28,14 +28,6 @@ constexpr int kMultiMotorDrives = 4;
 constexpr qint16 kMultiMotorIqMax = 2000; ///< +-2000 = +-32 A per the old CAN document
 constexpr qint16 kSpeedIqLimitMax = 2048; ///< V2.36 0xA2 torque limit, iq units
 
-/// Bits of a classic base-format data frame with `dataBytes` bytes, interframe space
-/// included: 47 + 8 n.
-int frameBits(int dataBytes);
-/// The same with the most stuff bits the frame can carry: one per four bits of SOF..CRC.
-int frameBitsStuffed(int dataBytes);
-/// Seconds one LK frame (8 data bytes, worst-case stuffing) takes at `bitRate`.
-double frameSeconds(int bitRate);
-
 /// Which of the two documented ID bases a frame travels on.
 enum class IdBase {
     Base140, ///< every request; the old generation's replies (and V2.36 replies seen in practice)

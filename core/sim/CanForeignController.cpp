@@ -2,6 +2,7 @@
 
 #include "SimBus.h"
 #include "SimCanFront.h"
+#include "protocol/CanFrameTime.h"
 #include "protocol/CanLayout.h"
 #include "protocol/CanRecord.h"
 

@@ -5,7 +5,7 @@
 #include "sim/SimBus.h"
 #include "sim/SimCanFront.h"
 
-#include <protocol/CanLayout.h>
+#include <protocol/CanFrameTime.h>
 #include <protocol/CanRecord.h>
 
 #include <QtCore/QMetaObject>
