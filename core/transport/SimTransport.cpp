@@ -2,6 +2,8 @@
 
 #include <QtCore/QCoreApplication>
 
+#include "PreciseWake.h"
+
 #include "sim/SimBus.h"
 #include "sim/SimCanFront.h"
 
@@ -23,14 +25,15 @@ constexpr int kHousekeepingMs = 100;
 } // namespace
 
 SimTransport::SimTransport(std::unique_ptr<sim::SimBus> bus, QObject *parent)
-    : Transport(parent), m_bus(std::move(bus)), m_timer(new QTimer(this)),
-      m_housekeeping(new QTimer(this))
+    : Transport(parent), m_bus(std::move(bus)), m_wake(new PreciseWake(this)),
+      m_timer(new QTimer(this)), m_housekeeping(new QTimer(this))
 {
     Q_ASSERT(m_bus);
     m_clock.start();
     m_timer->setSingleShot(true);
     m_timer->setTimerType(Qt::PreciseTimer);
     connect(m_timer, &QTimer::timeout, this, &SimTransport::deliverDue);
+    connect(m_wake, &PreciseWake::woke, this, &SimTransport::deliverDue);
     m_housekeeping->setInterval(kHousekeepingMs);
     connect(m_housekeeping, &QTimer::timeout, this, &SimTransport::housekeeping);
 }
@@ -124,6 +127,7 @@ void SimTransport::close()
 {
     m_pending.clear();
     m_timer->stop();
+    m_wake->cancel();
     m_housekeeping->stop();
     setState(State::Closed);
 }
@@ -166,9 +170,18 @@ void SimTransport::schedule()
 {
     if (m_pending.empty()) {
         m_timer->stop();
+        m_wake->cancel();
         return;
     }
     const qint64 remaining = m_pending.front().dueNs - m_clock.nsecsElapsed();
+    if (remaining > 0 && m_wake->isValid()) {
+        // The thread sleeps until the reply is due, to the microsecond, as it sleeps until a
+        // real adapter's frame arrives: looking on every turn of the event loop instead kept
+        // a core busy (the whole bus thread of lkstudio --can sim).
+        m_timer->stop();
+        m_wake->wakeIn(remaining); // QElapsedTimer and the timerfd share CLOCK_MONOTONIC
+        return;
+    }
     if (remaining >= kNsPerMs) {
         // Whole milliseconds only, so the timer never fires late; the rest is polled.
         m_timer->start(static_cast<int>(remaining / kNsPerMs));
@@ -194,6 +207,7 @@ void SimTransport::postCheck()
 
 void SimTransport::deliverDue()
 {
+    ++m_wakeups;
     while (m_state == State::Open && !m_pending.empty() &&
            m_pending.front().dueNs <= m_clock.nsecsElapsed()) {
         const QByteArray bytes = m_pending.front().bytes;
@@ -218,6 +232,7 @@ void SimTransport::goDisconnected()
 {
     m_pending.clear();
     m_timer->stop();
+    m_wake->cancel();
     m_housekeeping->stop();
     // The cause first, as a serial port says it: the state's reason then names it.
     emit errorOccurred(

@@ -23,6 +23,8 @@ struct SimReply;
 
 namespace lk::transport {
 
+class PreciseWake;
+
 /// What a simulated link is made of: a plain value, the counterpart of SerialSettings.
 struct SimSettings {
     sim::SimBusSpec spec; ///< the drives
@@ -80,6 +82,9 @@ public:
     /// The simulated bus: drives, faults, counters. Use it only from this object's thread.
     sim::SimBus &bus() { return *m_bus; }
     int pendingReplies() const { return static_cast<int>(m_pending.size()); }
+    /// How often the due replies were looked for: a reply a wait should cost one or two,
+    /// not the thousands of event-loop turns of polling.
+    int wakeups() const { return m_wakeups; }
 
 private:
     struct Pending {
@@ -99,11 +104,13 @@ private:
     std::unique_ptr<sim::SimCanFront> m_canFront;
     protocol::Link m_link = protocol::Link::Rs485;
     QElapsedTimer m_clock;
-    QTimer *m_timer = nullptr;        ///< precise single-shot for waits of 1 ms or more
+    PreciseWake *m_wake = nullptr;    ///< the next reply's due time, to the microsecond
+    QTimer *m_timer = nullptr;        ///< without a timerfd: waits of 1 ms or more
     QTimer *m_housekeeping = nullptr; ///< disconnect flag and idle physics, 10 Hz while open
     std::deque<Pending> m_pending;    ///< in due order
     qint64 m_wireFreeNs = 0;          ///< when the emulated wire is next idle
     bool m_checkPosted = false;
+    int m_wakeups = 0;
     State m_state = State::Closed;
     int m_baud = kDefaultBaud;
     bool m_wireTime = false;

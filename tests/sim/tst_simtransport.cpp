@@ -50,6 +50,8 @@ private slots:
     void repliesInOrder();
     void delayHonoured_data();
     void delayHonoured();
+    void waitsWithoutSpinning_data();
+    void waitsWithoutSpinning();
     void closeDropsPending();
     void disconnectOnWrite();
     void disconnectWhileIdle();
@@ -157,6 +159,36 @@ void tst_SimTransport::delayHonoured()
         QVERIFY2(arrivedNs >= qint64(expectedMin * 1e9),
                  qPrintable(QStringLiteral("%1 ns").arg(arrivedNs)));
     }
+}
+
+void tst_SimTransport::waitsWithoutSpinning_data()
+{
+    QTest::addColumn<double>("replyDelay");
+    QTest::addColumn<int>("baud"); // 0 = no wire-time emulation
+    // Under a millisecond (what a CAN frame or a fast RS485 reply waits): QTimer cannot wait
+    // that precisely, and looking on every turn of the event loop kept a core busy.
+    QTest::newRow("0.2 ms") << 0.0002 << 0;
+    QTest::newRow("0.7 ms") << 0.0007 << 0;
+    QTest::newRow("wire 1 Mbaud") << 0.0002 << 1000000;
+    QTest::newRow("3 ms") << 0.003 << 0;
+}
+
+void tst_SimTransport::waitsWithoutSpinning()
+{
+    QFETCH(double, replyDelay);
+    QFETCH(int, baud);
+    auto t = openTransport(replyDelay, baud);
+    QSignalSpy bytes(t.get(), &Transport::bytesReceived);
+    constexpr int kRounds = 50;
+    const int before = t->wakeups();
+    for (int round = 0; round < kRounds; ++round) {
+        t->write(kRead1);
+        QVERIFY(bytes.size() > round || bytes.wait(kWaitMs));
+    }
+    // One look per reply when it is due; a few more if the clock and the wake-up disagree by
+    // a rounding. Polling looked hundreds of times per reply.
+    const int looks = t->wakeups() - before;
+    QVERIFY2(looks <= 3 * kRounds, qPrintable(QStringLiteral("%1 looks").arg(looks)));
 }
 
 void tst_SimTransport::closeDropsPending()

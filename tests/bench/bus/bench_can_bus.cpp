@@ -1,13 +1,21 @@
 // The engine on a CAN link (docs/CAN.md): BusSession over SimTransport with its drives behind
 // SimCanFront, emulating the wire time of CAN frames (8 data bytes, worst-case stuffing) at
 // the bit rate and answering after the V2.36 document's 0.25 ms, so that a transaction takes
-// what LinkTiming charges and a ratio of 1 would mean no host overhead.
+// what LinkTiming charges and a ratio of 1 would mean no host overhead. The bus thread sleeps
+// until each reply is due (a timerfd), as it sleeps until a real adapter's frame arrives: the
+// host's wake-up is part of every transaction, as it is on hardware and in bench_bus_poll.
 //
 // Prints one JSON line:
 //   poll_ratio_<rate>, poll_txn_per_s_<rate>,   read_state2 from 4 drives (two old CAN, two
 //   can_limit_per_s_<rate>                      V2.36): achieved / LinkTiming's CAN limit
 //   lost_frames_<rate>                          timeouts + late replies + unexpected frames,
 //                                               from the open on (warm-up included)
+//   host_overhead_us_<rate>                     1/achieved - 1/limit: the host's time per
+//                                               transaction (its wake-up, then the engine)
+//   wake_late_us_median, wake_late_us_p90       how late this machine wakes a thread from a
+//                                               timerfd set 0.38 ms ahead (a transaction's
+//                                               wait), 2000 times: the share of the overhead
+//                                               that is the machine's, not the engine's
 //   scan_ms_<rate>                              scan of IDs 1..32 with 4 drives, median of 5
 //   estop_first_ms, estop_last_ms (median, max) emergency stop with 4 drives turning: until
 //                                               the first and the last of them acknowledged
@@ -19,6 +27,7 @@
 #include <bus/LinkTiming.h>
 #include <protocol/RequestBuilder.h>
 #include <sim/SimBus.h>
+#include <transport/PreciseWake.h>
 #include <transport/SimTransport.h>
 
 #include <QtCore/QCoreApplication>
@@ -106,6 +115,8 @@ void pollFigures(int rate, bench::JsonLine &out)
     out.add(QStringLiteral("poll_ratio_") + r, achieved / limit);
     out.add(QStringLiteral("poll_txn_per_s_") + r, achieved, 0);
     out.add(QStringLiteral("can_limit_per_s_") + r, limit, 0);
+    out.add(QStringLiteral("host_overhead_us_") + r,
+            achieved > 0 ? 1e6 / achieved - 1e6 / limit : 0, 1);
     // Since the link opened, warm-up included.
     out.addInt(QStringLiteral("lost_frames_") + r,
                qint64(b.bus.timeouts + b.bus.lateReplies + b.bus.unexpectedFrames));
@@ -188,6 +199,30 @@ void estopFigures(bench::JsonLine &out)
     out.addInt(QStringLiteral("estop_runs"), qint64(all.size()));
 }
 
+/// The machine's own wake-up latency, beside which the host overhead above is read.
+void wakeFigures(bench::JsonLine &out)
+{
+    constexpr qint64 kWaitNs = 380000; // about a CAN transaction: two frames and 0.25 ms
+    transport::PreciseWake wake;
+    if (!wake.isValid())
+        return;
+    std::vector<double> lateUs;
+    QElapsedTimer clock;
+    bool woke = false;
+    QObject::connect(&wake, &transport::PreciseWake::woke, [&woke] { woke = true; });
+    for (int i = 0; i < 2000; ++i) {
+        woke = false;
+        clock.start();
+        wake.wakeIn(kWaitNs);
+        while (!woke)
+            QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+        lateUs.push_back(static_cast<double>(clock.nsecsElapsed() - kWaitNs) / 1e3);
+    }
+    std::sort(lateUs.begin(), lateUs.end());
+    out.add(QStringLiteral("wake_late_us_median"), bench::median(lateUs), 1);
+    out.add(QStringLiteral("wake_late_us_p90"), lateUs[lateUs.size() * 9 / 10], 1);
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -200,6 +235,7 @@ int main(int argc, char **argv)
     for (int rate : {1000000, 500000})
         scanFigure(rate, out);
     estopFigures(out);
+    wakeFigures(out);
     out.print();
     return 0;
 }
