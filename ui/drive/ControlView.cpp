@@ -14,6 +14,7 @@
 #include "SoftLimitsEditor.h"
 
 #include <bus/BusSession.h>
+#include <bus/NewestSample.h>
 #include <motor/ModelNameInfo.h>
 #include <panels/StatusColors.h>
 #include <protocol/RequestBuilder.h>
@@ -580,23 +581,18 @@ void ControlView::onTelemetry(const bus::TelemetryBatch &batch)
     m_driveState->noteTelemetry(batch);
     // Only the newest angle counts (targets start where the drive is now); setting the
     // targets' spin boxes once per sample of a batch cost the GUI thread for nothing.
-    for (auto it = batch.crbegin(); it != batch.crend(); ++it) {
-        if (it->id == driveId() && it->has(bus::TelemetryField::MultiTurn)) {
-            onAngle(it->id, it->multiTurnDeg);
-            break;
-        }
-    }
-    for (auto it = batch.crbegin(); it != batch.crend(); ++it) {
-        if (it->id != driveId() || !it->has(bus::TelemetryField::Speed))
-            continue;
-        QString text = tr("Now: %1 dps").arg(it->speedDps, 0, 'f', 0);
-        if (it->has(bus::TelemetryField::IqA))
-            text += tr(", iq %1 A").arg(it->iqA, 0, 'f', 2);
-        if (it->has(bus::TelemetryField::Power))
-            text += tr(", power %1").arg(it->power);
-        m_readout->setText(text);
+    if (const bus::TelemetrySample *s =
+            bus::newestSample(batch, driveId(), bus::TelemetryField::MultiTurn))
+        onAngle(s->id, s->multiTurnDeg);
+    const bus::TelemetrySample *s = bus::newestSample(batch, driveId(), bus::TelemetryField::Speed);
+    if (!s)
         return;
-    }
+    QString text = tr("Now: %1 dps").arg(s->speedDps, 0, 'f', 0);
+    if (s->has(bus::TelemetryField::IqA))
+        text += tr(", iq %1 A").arg(s->iqA, 0, 'f', 2);
+    if (s->has(bus::TelemetryField::Power))
+        text += tr(", power %1").arg(s->power);
+    m_readout->setText(text);
 }
 
 } // namespace lk::ui

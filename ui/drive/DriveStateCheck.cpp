@@ -1,5 +1,6 @@
 #include "DriveStateCheck.h"
 
+#include <bus/NewestSample.h>
 #include <protocol/RequestBuilder.h>
 
 namespace lk::ui {
@@ -107,14 +108,9 @@ void DriveStateCheck::noteTelemetry(const bus::TelemetryBatch &batch)
 {
     if (!applies())
         return;
-    // In arrival order: the last sample of the drive that carries the flag is the latest.
-    std::optional<bool> on;
-    for (const bus::TelemetrySample &s : batch) {
-        if (s.id == m_id && s.has(bus::TelemetryField::MotorOn))
-            on = s.motorOn;
-    }
-    if (on)
-        setMotorOn(on);
+    if (const bus::TelemetrySample *s =
+            bus::newestSample(batch, m_id, bus::TelemetryField::MotorOn))
+        setMotorOn(s->motorOn);
 }
 
 void DriveStateCheck::noteBrake(const protocol::BrakeState &state)
