@@ -142,11 +142,22 @@ int ListenCommand::stream(LiveBus &bus, const Plan &plan, ListenTable &table)
     StreamEnd end(bus, plan.durationS);
     qint64 rows = 0;
     bus::ListenStatistics stats;
+    // The report gives the first snapshot that comes after the end, and no row is printed
+    // after it: a batch emitted after that snapshot may hold replies it has not counted, and
+    // one pass of the event loop can deliver both.
+    bool reported = false;
     QObject context; // every connection below ends with it
     QObject::connect(&session, &bus::BusSession::listenStatisticsUpdated, &context,
-                     [&stats](const bus::ListenStatistics &s) { stats = s; });
+                     [&](const bus::ListenStatistics &s) {
+                         if (reported)
+                             return;
+                         stats = s;
+                         reported = end.stopped();
+                     });
     QObject::connect(&session, &bus::BusSession::telemetryReceived, &context,
                      [&](const bus::TelemetryBatch &batch) {
+                         if (reported)
+                             return;
                          for (const bus::TelemetrySample &s : batch) {
                              for (const QByteArray &row : table.add(s)) {
                                  console.out(row);
@@ -161,9 +172,8 @@ int ListenCommand::stream(LiveBus &bus, const Plan &plan, ListenTable &table)
     console.flush();
     end.startClock();
     end.wait();
-    // One more statistics snapshot, so that the figures cover the whole run.
-    const int before = int(stats.time * 1000);
-    bus.waitUntil([&] { return end.lost() || int(stats.time * 1000) != before; }, 2000);
+    // One more statistics snapshot, so that the figures cover the whole run and every row.
+    bus.waitUntil([&] { return end.lost() || reported; }, 2000);
     report(bus, rows, stats);
     return end.lost() ? kExitFailure : kExitOk;
 }
