@@ -303,6 +303,13 @@ void tst_CanTransport::overVirtualCan()
     QVERIFY(drive->connectDevice());
     QTRY_COMPARE(drive->state(), QCanBusDevice::ConnectedState);
     QCOMPARE(tool.state(), Transport::State::Open);
+    // The virtualcan server (in this process: the tool connected first) relays a frame only to
+    // the clients it has accepted, and it may accept the drive after the drive calls itself
+    // connected: a frame the tool wrote before that would never reach the drive (seen under
+    // ASan). A frame from the drive that reaches the tool shows the server knows the drive.
+    QVERIFY(drive->writeFrame(dataFrame(0x7FF, "00")));
+    QTRY_VERIFY(received.count() > 0);
+    received.clear();
 
     // The tool's request arrives at the drive as 141#9C00000000000000.
     tool.write(recordBytes(0x141, "9C00000000000000"));
