@@ -186,8 +186,8 @@ inline QString differenceFrom(int start, const Row &got, const Row &want, const 
 /// Where the listened rows begin among the expected ones: the first place where the first
 /// rows all match, up to the eighth compared by value (or all rows, when fewer); -1 when there
 /// is none. A row of a drive not learnt yet matches by drive alone and the drives take turns,
-/// so a probe of such rows alone could match a round early or late (seen under ASan: the
-/// ninth row, the first compared by value, then met the wrong log line).
+/// so a probe of such rows alone could match a round early or late (the likely cause of a
+/// failure under ASan, where the ninth row, the first compared by value, met another line).
 inline qsizetype alignment(const QList<Row> &got, const QList<Row> &want, const ModelLines &models)
 {
     constexpr int kByValue = 8;
